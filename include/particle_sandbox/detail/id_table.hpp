@@ -1,0 +1,34 @@
+#pragma once
+/// \file
+/// Slot table behind stable particle ids (an implementation detail of World, shown here only
+/// because World holds it by value).
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <particle_sandbox/particle_id.hpp>
+
+namespace psb::detail {
+
+/// Maps ids (slot + generation) to dense storage indices. A freed slot's generation is bumped,
+/// so stale ids are recognised; freed slots are reused last-in first-out.
+class IdTable {
+public:
+    /// A new id pointing at dense index `index`.
+    ParticleId allocate(std::uint32_t index);
+    /// Frees a live id.
+    void release(ParticleId id);
+    /// Points a live id at a new dense index (after a swap-remove moved it).
+    void relocate(ParticleId id, std::uint32_t index);
+    [[nodiscard]] std::optional<std::uint32_t> find(ParticleId id) const;
+    void clear();
+
+private:
+    static constexpr std::uint32_t kFree = UINT32_MAX;
+    std::vector<std::uint32_t> index_;       ///< per slot: dense index, or kFree
+    std::vector<std::uint32_t> generation_;  ///< per slot
+    std::vector<std::uint32_t> freeSlots_;
+};
+
+}  // namespace psb::detail

@@ -1,0 +1,29 @@
+#pragma once
+/// \file
+/// Conserved quantities, measured.
+
+#include <particle_sandbox/math.hpp>
+#include <particle_sandbox/particle_id.hpp>
+
+namespace psb {
+
+class World;
+
+/// Total kinetic energy Σ ½ m |v|², joules. Summed with compensation so that it is reliable to
+/// ~1e-15 relative even for a million particles.
+[[nodiscard]] double kineticEnergy(const World& world);
+
+/// Total linear momentum Σ m v, kg·m/s.
+[[nodiscard]] Vec2 momentum(const World& world);
+
+/// Momentum m v of one particle, kg·m/s; throws InvalidArgument for a dead id.
+[[nodiscard]] Vec2 momentum(const World& world, ParticleId id);
+
+/// Centre of mass, metres (the box centre for an empty world).
+[[nodiscard]] Vec2 centreOfMass(const World& world);
+
+/// Deepest overlap between any two particles right now, metres (all pairs; O(n²), for tests
+/// and small worlds).
+[[nodiscard]] double maxOverlapBruteForce(const World& world);
+
+}  // namespace psb

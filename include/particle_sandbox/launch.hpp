@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// Turning a mouse trajectory into a launch velocity.
+
+#include <span>
+#include <vector>
+
+#include <particle_sandbox/math.hpp>
+
+namespace psb {
+
+/// The original program's `calculate_vector(trajectory, scaling_factor, min_length)`, with its
+/// index bug fixed (the start point is sample 0 in both coordinates): the displacement from the
+/// first to the last sample divided by `scalingFactor`, or zero when there are fewer than
+/// `minLength` samples. Kept for reference and tests; the app uses launchVelocity.
+[[nodiscard]] Vec2 calculateVector(std::span<const Vec2> trajectory, double scalingFactor = 20.0,
+                                   std::size_t minLength = 10);
+
+/// One sample of a drag: where the pointer was (world metres) and when (seconds).
+struct TrajectorySample {
+    double time = 0.0;
+    Vec2 position = Vec2::Zero();
+};
+
+/// How a drag becomes a velocity.
+struct LaunchSettings {
+    double window = 0.1;       ///< only samples this many seconds before the last one count
+    double minDistance = 0.0;  ///< a displacement over the window shorter than this launches at rest, metres
+    double maxSpeed = 0.0;     ///< if > 0, the speed is clamped to this, m/s
+};
+
+/// Velocity (m/s) of the recent part of a drag: displacement between the oldest sample inside
+/// the window and the newest, divided by their time difference. Zero when there are fewer than
+/// two samples, when the time span is zero, or when the displacement is below minDistance.
+/// Samples must be in non-decreasing time order; non-finite samples are ignored.
+[[nodiscard]] Vec2 launchVelocity(std::span<const TrajectorySample> samples,
+                                  const LaunchSettings& settings = {});
+
+}  // namespace psb

@@ -1,0 +1,30 @@
+#pragma once
+/// \file
+/// What a step did and where its time went.
+
+#include <cstdint>
+
+namespace psb {
+
+/// Wall-clock milliseconds spent in each stage of the last call to World::step, summed over its
+/// substeps. A stage the world skipped (no gravity, no walls, ...) reads 0.
+struct StepProfile {
+    double gravity = 0.0;
+    double move = 0.0;
+    double findPairs = 0.0;
+    double resolve = 0.0;
+    double separate = 0.0;
+    double walls = 0.0;
+    double total = 0.0;
+};
+
+/// Running totals since the world was made (or since resetCounters).
+struct StepCounters {
+    std::uint64_t steps = 0;            ///< calls of the discrete step (substeps count each)
+    std::uint64_t collisions = 0;       ///< particle–particle collisions resolved (approaching pairs)
+    std::uint64_t wallCollisions = 0;   ///< wall rebounds (outward-moving particle turned inward)
+    double wallImpulse = 0.0;           ///< sum of |normal impulse| delivered by walls, kg·m/s
+    double maxOverlap = 0.0;            ///< deepest pair overlap found by detection, metres
+};
+
+}  // namespace psb

@@ -1,0 +1,104 @@
+#pragma once
+/// \file
+/// The particle world: a box, its material laws, its particles, and the step.
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include <particle_sandbox/detail/id_table.hpp>
+#include <particle_sandbox/math.hpp>
+#include <particle_sandbox/particle.hpp>
+#include <particle_sandbox/particle_arrays.hpp>
+#include <particle_sandbox/particle_id.hpp>
+#include <particle_sandbox/solver_settings.hpp>
+#include <particle_sandbox/step_profile.hpp>
+#include <particle_sandbox/world_def.hpp>
+
+namespace psb {
+
+struct StepContext;
+
+/// Owns the particles and advances them in time.
+///
+/// Every public function validates its arguments and throws psb::InvalidArgument, leaving the
+/// world unchanged, when one is out of range. Particles are reached through stable ids; the
+/// const ParticleArrays view is for fast read-only iteration (rendering, diagnostics).
+class World {
+public:
+    explicit World(const WorldDef& def = {}, const SolverSettings& solver = {});
+    ~World();
+    World(const World& other);
+    World& operator=(const World& other);
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+
+    // --- parameters ----------------------------------------------------------------------
+    [[nodiscard]] const WorldDef& def() const { return def_; }
+    [[nodiscard]] const SolverSettings& solver() const { return solver_; }
+    void setBox(double width, double height);
+    void setWalls(bool enabled);
+    void setGravity(const Vec2& gravity);
+    void setRestitution(double e);
+    void setFriction(double mu);
+    void setSolver(const SolverSettings& solver);
+
+    // --- particles -------------------------------------------------------------------------
+    /// Adds a particle; its position is taken as given (overlaps are allowed and separated by
+    /// the next step). Throws InvalidArgument on a non-finite value or a mass/radius <= 0.
+    ParticleId add(const ParticleDef& def);
+    /// Removes a particle; returns false if the id names no live particle.
+    bool remove(ParticleId id);
+    void clear();
+    [[nodiscard]] bool contains(ParticleId id) const;
+    [[nodiscard]] std::size_t size() const { return p_.size(); }
+    /// A copy of the particle's state; throws InvalidArgument for a dead id.
+    [[nodiscard]] Particle get(ParticleId id) const;
+    /// All live ids, in storage order.
+    [[nodiscard]] std::vector<ParticleId> ids() const { return p_.id; }
+    /// Storage index of a live particle (valid until the next add/remove), or nullopt.
+    [[nodiscard]] std::optional<std::size_t> indexOf(ParticleId id) const;
+
+    void setPosition(ParticleId id, const Vec2& position);
+    void setVelocity(ParticleId id, const Vec2& velocity);
+    void setMass(ParticleId id, double mass);
+    void setRadius(ParticleId id, double radius);
+    void setColor(ParticleId id, Color color);
+    /// A kinematic particle (one the user holds) is moved by its owner, not by collisions: it
+    /// pushes others as if its mass were infinite and is never pushed. It still stays in the box.
+    void setKinematic(ParticleId id, bool kinematic);
+    [[nodiscard]] bool isKinematic(ParticleId id) const;
+
+    /// The topmost particle (the last added among those) whose disc contains `point`.
+    [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
+
+    [[nodiscard]] const ParticleArrays& particles() const { return p_; }
+
+    // --- time ------------------------------------------------------------------------------
+    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode.
+    void step(double dt);
+    /// Advances by solver().dt.
+    void step() { step(solver_.dt); }
+    /// Simulated seconds since the world was made.
+    [[nodiscard]] double time() const { return time_; }
+
+    [[nodiscard]] const StepProfile& profile() const { return profile_; }
+    [[nodiscard]] const StepCounters& counters() const { return counters_; }
+    void resetCounters() { counters_ = {}; }
+
+private:
+    [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
+    void stepDiscrete(double dt);
+
+    WorldDef def_;
+    SolverSettings solver_;
+    ParticleArrays p_;
+    detail::IdTable ids_;
+    std::unique_ptr<StepContext> ctx_;
+    double time_ = 0.0;
+    StepProfile profile_;
+    StepCounters counters_;
+};
+
+}  // namespace psb

@@ -1,0 +1,76 @@
+#include <particle_sandbox/diagnostics.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include <particle_sandbox/world.hpp>
+
+namespace psb {
+namespace {
+
+/// Neumaier's compensated sum: the error stays ~1 ulp of the result however many terms.
+class CompensatedSum {
+public:
+    void add(double v) {
+        const double t = sum_ + v;
+        comp_ += std::abs(sum_) >= std::abs(v) ? (sum_ - t) + v : (v - t) + sum_;
+        sum_ = t;
+    }
+    [[nodiscard]] double value() const { return sum_ + comp_; }
+
+private:
+    double sum_ = 0.0;
+    double comp_ = 0.0;
+};
+
+}  // namespace
+
+double kineticEnergy(const World& world) {
+    const ParticleArrays& p = world.particles();
+    CompensatedSum sum;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        sum.add(0.5 * p.mass[i] * (p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]));
+    }
+    return sum.value();
+}
+
+Vec2 momentum(const World& world) {
+    const ParticleArrays& p = world.particles();
+    CompensatedSum sx, sy;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        sx.add(p.mass[i] * p.vx[i]);
+        sy.add(p.mass[i] * p.vy[i]);
+    }
+    return {sx.value(), sy.value()};
+}
+
+Vec2 momentum(const World& world, ParticleId id) {
+    const Particle q = world.get(id);
+    return q.mass * q.velocity;
+}
+
+Vec2 centreOfMass(const World& world) {
+    const ParticleArrays& p = world.particles();
+    CompensatedSum m, mx, my;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        m.add(p.mass[i]);
+        mx.add(p.mass[i] * p.x[i]);
+        my.add(p.mass[i] * p.y[i]);
+    }
+    if (!(m.value() > 0.0)) return {0.5 * world.def().width, 0.5 * world.def().height};
+    return {mx.value() / m.value(), my.value() / m.value()};
+}
+
+double maxOverlapBruteForce(const World& world) {
+    const ParticleArrays& p = world.particles();
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        for (std::size_t j = i + 1; j < p.size(); ++j) {
+            const double d = std::hypot(p.x[j] - p.x[i], p.y[j] - p.y[i]);
+            deepest = std::max(deepest, p.radius[i] + p.radius[j] - d);
+        }
+    }
+    return deepest;
+}
+
+}  // namespace psb

@@ -1,0 +1,55 @@
+#pragma once
+// The discrete step: the original program's one-move-one-collision-pass step, done right.
+//
+//   ┌───────────┐   ┌──────┐   ┌────────────┐   ┌─────────┐   ┌──────────┐   ┌───────┐
+//   │ gravity*  │ → │ move │ → │ find pairs │ → │ resolve │ → │ separate │ → │ walls*│
+//   └───────────┘   └──────┘   └────────────┘   └─────────┘   └──────────┘   └───────┘
+//   v += g·dt       r += v·dt   broadphase +     impulses on    push overlaps  clamp into
+//                               overlap test     approaching    apart by       the box, set
+//                                                pairs only     inverse mass   velocity sign
+//   (* skipped when the world has no gravity / no walls; friction math is compiled out of
+//    resolve and walls when the friction coefficient is zero.)
+//
+// Why walls come last. The original bounced off walls before resolving pairs, so the overlap
+// push could leave a particle outside the box. Running the wall stage after every stage that
+// moves particles guarantees that no particle ends a step outside the box. The price is that
+// a wall clamp can re-create a small overlap, which the next step's separate stage removes.
+//
+// Order dependence. Pairs are resolved one after another (Gauss–Seidel), so with three or more
+// particles in mutual contact the result depends on the order. We do not hide this with a
+// simultaneous (Jacobi) solve, which would conserve momentum but not energy and would get
+// Newton's cradle wrong. Instead the order is fixed: pairs are visited in ascending (i, j)
+// storage order whatever broadphase found them, so the same state always gives the same result.
+// A pair is resolved only while approaching, so visiting a pair after a neighbour already
+// turned it around does nothing, and restitution e = 1 conserves kinetic energy exactly
+// (to rounding) in every order.
+
+#include <particle_sandbox/particle_arrays.hpp>
+#include <particle_sandbox/step_profile.hpp>
+#include <particle_sandbox/world_def.hpp>
+
+#include "step_context.hpp"
+
+namespace psb::stages {
+
+void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt);
+void move(ParticleArrays& p, double dt);
+void findPairs(const ParticleArrays& p, StepContext& ctx);
+/// Velocity impulses for every approaching pair in ctx.pairs; updates collision counters and
+/// the deepest overlap seen.
+void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
+             StepCounters& counters);
+/// Pushes each overlapping pair of ctx.pairs apart along its normal, the push split by inverse
+/// mass so that momentum-weighted position (the centre of mass) does not move. Positions only:
+/// velocities, and so kinetic energy, are untouched.
+void separate(ParticleArrays& p, const StepContext& ctx);
+/// Clamps every particle into the box and makes outward velocity components inward (scaled by
+/// e). A particle already moving inward keeps its velocity.
+void walls(ParticleArrays& p, const WorldDef& def, StepCounters& counters);
+
+/// Runs the stages above in order for one step of `dt` seconds, timing each into `profile`
+/// (added to what it holds, so substeps accumulate).
+void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext& ctx,
+                  StepProfile& profile, StepCounters& counters);
+
+}  // namespace psb::stages

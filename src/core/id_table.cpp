@@ -1,0 +1,45 @@
+#include <particle_sandbox/detail/id_table.hpp>
+
+namespace psb::detail {
+
+ParticleId IdTable::allocate(std::uint32_t index) {
+    std::uint32_t slot;
+    if (!freeSlots_.empty()) {
+        slot = freeSlots_.back();
+        freeSlots_.pop_back();
+    } else {
+        slot = static_cast<std::uint32_t>(index_.size());
+        index_.push_back(kFree);
+        generation_.push_back(0);
+    }
+    index_[slot] = index;
+    return ParticleId{slot, generation_[slot]};
+}
+
+void IdTable::release(ParticleId id) {
+    index_[id.slot] = kFree;
+    ++generation_[id.slot];  // every id handed out for this slot so far is now stale
+    freeSlots_.push_back(id.slot);
+}
+
+void IdTable::relocate(ParticleId id, std::uint32_t index) { index_[id.slot] = index; }
+
+std::optional<std::uint32_t> IdTable::find(ParticleId id) const {
+    if (id.slot >= index_.size() || generation_[id.slot] != id.generation ||
+        index_[id.slot] == kFree) {
+        return std::nullopt;
+    }
+    return index_[id.slot];
+}
+
+void IdTable::clear() {
+    // Keep generations so that ids from before the clear stay stale.
+    freeSlots_.clear();
+    for (std::uint32_t s = static_cast<std::uint32_t>(index_.size()); s-- > 0;) {
+        if (index_[s] != kFree) ++generation_[s];
+        index_[s] = kFree;
+        freeSlots_.push_back(s);
+    }
+}
+
+}  // namespace psb::detail

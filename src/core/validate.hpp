@@ -1,0 +1,52 @@
+#pragma once
+// Argument checks shared by the core's public entry points. Each throws psb::InvalidArgument
+// with a message that names the function, the argument and the bad value.
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/math.hpp>
+
+namespace psb::detail {
+
+[[noreturn]] inline void fail(const char* where, const char* what, const std::string& problem) {
+    std::ostringstream os;
+    os << where << ": " << what << ' ' << problem;
+    throw InvalidArgument(os.str());
+}
+
+inline std::string got(double v) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "(got " << v << ")";
+    return os.str();
+}
+
+inline void requireFinite(double v, const char* where, const char* what) {
+    if (!std::isfinite(v)) fail(where, what, "must be finite " + got(v));
+}
+
+inline void requireFinite(const Vec2& v, const char* where, const char* what) {
+    if (!std::isfinite(v.x()) || !std::isfinite(v.y())) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "must be finite (got [" << v.x() << ", " << v.y() << "])";
+        fail(where, what, os.str());
+    }
+}
+
+inline void requirePositive(double v, const char* where, const char* what) {
+    if (!std::isfinite(v) || !(v > 0.0)) fail(where, what, "must be finite and > 0 " + got(v));
+}
+
+inline void requireInRange(double v, double lo, double hi, const char* where, const char* what) {
+    if (!std::isfinite(v) || v < lo || v > hi) {
+        std::ostringstream os;
+        os << "must be in [" << lo << ", " << hi << "] " << got(v);
+        fail(where, what, os.str());
+    }
+}
+
+}  // namespace psb::detail

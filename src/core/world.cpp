@@ -1,0 +1,252 @@
+#include <particle_sandbox/world.hpp>
+
+#include <cmath>
+#include <string>
+
+#include "discrete_step.hpp"
+#include "step_context.hpp"
+#include "validate.hpp"
+
+namespace psb {
+
+using detail::requireFinite;
+using detail::requireInRange;
+using detail::requirePositive;
+
+namespace {
+
+void validateDef(const WorldDef& def, const char* where) {
+    requirePositive(def.width, where, "width");
+    requirePositive(def.height, where, "height");
+    requireFinite(def.gravity, where, "gravity");
+    requireInRange(def.restitution, 0.0, 1.0, where, "restitution");
+    if (!std::isfinite(def.friction) || def.friction < 0.0) {
+        detail::fail(where, "friction", "must be finite and >= 0 " + detail::got(def.friction));
+    }
+}
+
+void validateSolver(const SolverSettings& s, const char* where) {
+    requirePositive(s.dt, where, "dt");
+    if (s.substeps < 1) {
+        detail::fail(where, "substeps", "must be >= 1 (got " + std::to_string(s.substeps) + ")");
+    }
+    if (s.mode == StepMode::Exact) {
+        detail::fail(where, "mode", "'exact' is not available in this version");
+    }
+    if (s.broadphase == BroadPhaseKind::Grid || s.broadphase == BroadPhaseKind::Quadtree) {
+        detail::fail(where, "broadphase",
+                     "'" + std::string(toString(s.broadphase)) +
+                         "' is not available in this version (use 'auto' or 'all-pairs')");
+    }
+}
+
+void validateParticle(const ParticleDef& d, const char* where) {
+    requireFinite(d.position, where, "position");
+    requireFinite(d.velocity, where, "velocity");
+    requirePositive(d.mass, where, "mass");
+    requirePositive(d.radius, where, "radius");
+}
+
+template <typename T>
+void swapRemove(std::vector<T>& v, std::size_t i) {
+    v[i] = v.back();
+    v.pop_back();
+}
+
+}  // namespace
+
+World::World(const WorldDef& def, const SolverSettings& solver)
+    : def_(def), solver_(solver), ctx_(std::make_unique<StepContext>()) {
+    validateDef(def, "World");
+    validateSolver(solver, "World");
+}
+
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+World::World(const World& other)
+    : def_(other.def_),
+      solver_(other.solver_),
+      p_(other.p_),
+      ids_(other.ids_),
+      ctx_(std::make_unique<StepContext>()),  // scratch is not state
+      time_(other.time_),
+      profile_(other.profile_),
+      counters_(other.counters_) {}
+
+World& World::operator=(const World& other) {
+    if (this != &other) *this = World(other);
+    return *this;
+}
+
+void World::setBox(double width, double height) {
+    WorldDef d = def_;
+    d.width = width;
+    d.height = height;
+    validateDef(d, "World::setBox");
+    def_ = d;
+}
+
+void World::setWalls(bool enabled) { def_.walls = enabled; }
+
+void World::setGravity(const Vec2& gravity) {
+    requireFinite(gravity, "World::setGravity", "gravity");
+    def_.gravity = gravity;
+}
+
+void World::setRestitution(double e) {
+    requireInRange(e, 0.0, 1.0, "World::setRestitution", "restitution");
+    def_.restitution = e;
+}
+
+void World::setFriction(double mu) {
+    WorldDef d = def_;
+    d.friction = mu;
+    validateDef(d, "World::setFriction");
+    def_.friction = mu;
+}
+
+void World::setSolver(const SolverSettings& solver) {
+    validateSolver(solver, "World::setSolver");
+    solver_ = solver;
+}
+
+ParticleId World::add(const ParticleDef& d) {
+    validateParticle(d, "World::add");
+    if (p_.size() >= UINT32_MAX - 1) detail::fail("World::add", "particle count", "is at its limit");
+    const auto index = static_cast<std::uint32_t>(p_.size());
+    const ParticleId id = ids_.allocate(index);
+    p_.x.push_back(d.position.x());
+    p_.y.push_back(d.position.y());
+    p_.vx.push_back(d.velocity.x());
+    p_.vy.push_back(d.velocity.y());
+    p_.invMass.push_back(1.0 / d.mass);
+    p_.radius.push_back(d.radius);
+    p_.mass.push_back(d.mass);
+    p_.color.push_back(d.color);
+    p_.id.push_back(id);
+    return id;
+}
+
+bool World::remove(ParticleId id) {
+    const auto found = ids_.find(id);
+    if (!found) return false;
+    const std::size_t i = *found;
+    const std::size_t last = p_.size() - 1;
+    if (i != last) ids_.relocate(p_.id[last], static_cast<std::uint32_t>(i));
+    ids_.release(id);
+    swapRemove(p_.x, i);
+    swapRemove(p_.y, i);
+    swapRemove(p_.vx, i);
+    swapRemove(p_.vy, i);
+    swapRemove(p_.invMass, i);
+    swapRemove(p_.radius, i);
+    swapRemove(p_.mass, i);
+    swapRemove(p_.color, i);
+    swapRemove(p_.id, i);
+    return true;
+}
+
+void World::clear() {
+    ids_.clear();
+    p_ = ParticleArrays{};
+}
+
+bool World::contains(ParticleId id) const { return ids_.find(id).has_value(); }
+
+std::optional<std::size_t> World::indexOf(ParticleId id) const {
+    const auto found = ids_.find(id);
+    if (!found) return std::nullopt;
+    return std::size_t{*found};
+}
+
+std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
+    const auto found = ids_.find(id);
+    if (!found) {
+        detail::fail(what, "id", "names no live particle (slot " + std::to_string(id.slot) +
+                                     ", generation " + std::to_string(id.generation) + ")");
+    }
+    return *found;
+}
+
+Particle World::get(ParticleId id) const {
+    const std::size_t i = indexOrThrow(id, "World::get");
+    return Particle{id,          Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
+                    p_.mass[i],  p_.radius[i],           p_.color[i]};
+}
+
+void World::setPosition(ParticleId id, const Vec2& position) {
+    requireFinite(position, "World::setPosition", "position");
+    const std::size_t i = indexOrThrow(id, "World::setPosition");
+    p_.x[i] = position.x();
+    p_.y[i] = position.y();
+}
+
+void World::setVelocity(ParticleId id, const Vec2& velocity) {
+    requireFinite(velocity, "World::setVelocity", "velocity");
+    const std::size_t i = indexOrThrow(id, "World::setVelocity");
+    p_.vx[i] = velocity.x();
+    p_.vy[i] = velocity.y();
+}
+
+void World::setMass(ParticleId id, double mass) {
+    requirePositive(mass, "World::setMass", "mass");
+    const std::size_t i = indexOrThrow(id, "World::setMass");
+    const bool kinematic = p_.invMass[i] == 0.0;
+    p_.mass[i] = mass;
+    p_.invMass[i] = kinematic ? 0.0 : 1.0 / mass;
+}
+
+void World::setRadius(ParticleId id, double radius) {
+    requirePositive(radius, "World::setRadius", "radius");
+    p_.radius[indexOrThrow(id, "World::setRadius")] = radius;
+}
+
+void World::setColor(ParticleId id, Color color) {
+    p_.color[indexOrThrow(id, "World::setColor")] = color;
+}
+
+void World::setKinematic(ParticleId id, bool kinematic) {
+    const std::size_t i = indexOrThrow(id, "World::setKinematic");
+    p_.invMass[i] = kinematic ? 0.0 : 1.0 / p_.mass[i];
+}
+
+bool World::isKinematic(ParticleId id) const {
+    return p_.isKinematic(indexOrThrow(id, "World::isKinematic"));
+}
+
+std::optional<ParticleId> World::pick(const Vec2& point) const {
+    if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return std::nullopt;
+    // Storage order is drawing order, so the topmost particle is the last one that contains it.
+    for (std::size_t i = p_.size(); i-- > 0;) {
+        const double dx = point.x() - p_.x[i], dy = point.y() - p_.y[i];
+        if (dx * dx + dy * dy <= p_.radius[i] * p_.radius[i]) return p_.id[i];
+    }
+    return std::nullopt;
+}
+
+void World::step(double dt) {
+    requirePositive(dt, "World::step", "dt");
+    profile_ = {};
+    switch (solver_.mode) {
+        case StepMode::Discrete:
+            stepDiscrete(dt);
+            break;
+        case StepMode::Substep: {
+            const double h = dt / solver_.substeps;
+            for (int k = 0; k < solver_.substeps; ++k) stepDiscrete(h);
+            break;
+        }
+        case StepMode::Exact:  // refused by validateSolver until the event-driven mode exists
+            break;
+    }
+    time_ += dt;
+}
+
+void World::stepDiscrete(double dt) {
+    if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
+    stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
+}
+
+}  // namespace psb

@@ -1,0 +1,43 @@
+#include <gtest/gtest.h>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace psb {
+namespace {
+
+TEST(Diagnostics, KineticEnergyAndMomentumOfKnownParticles) {
+    World w;
+    const ParticleId a = w.add({.position = {10.0, 10.0}, .velocity = {3.0, 4.0}, .mass = 2.0});
+    w.add({.position = {50.0, 10.0}, .velocity = {-1.0, 0.0}, .mass = 6.0});
+    EXPECT_DOUBLE_EQ(kineticEnergy(w), 0.5 * 2.0 * 25.0 + 0.5 * 6.0 * 1.0);
+    EXPECT_EQ(momentum(w), Vec2(0.0, 8.0));
+    EXPECT_EQ(momentum(w, a), Vec2(6.0, 8.0));
+    EXPECT_EQ(centreOfMass(w), Vec2(40.0, 10.0));
+}
+
+TEST(Diagnostics, EmptyWorldHasZeroTotalsAndCentreOfMassAtTheBoxCentre) {
+    World w;
+    EXPECT_EQ(kineticEnergy(w), 0.0);
+    EXPECT_EQ(momentum(w), Vec2(0.0, 0.0));
+    EXPECT_EQ(centreOfMass(w), Vec2(350.0, 350.0));
+}
+
+TEST(Diagnostics, CompensatedSumKeepsSmallTermsNextToAHugeOne) {
+    World w(WorldDef{.walls = false});
+    w.add({.velocity = {1e8, 0.0}, .mass = 1.0});  // 5e15 J
+    for (int k = 0; k < 1000; ++k) w.add({.position = {1.0 * k, 0.0}, .velocity = {1.0, 0.0}});
+    // 1000 terms of 0.5 J would each vanish into 5e15 with naive summation (ulp = 1).
+    EXPECT_EQ(kineticEnergy(w) - 5e15, 500.0);
+}
+
+TEST(Diagnostics, MaxOverlapBruteForce) {
+    World w;
+    w.add({.position = {10.0, 10.0}, .radius = 2.0});
+    w.add({.position = {13.0, 10.0}, .radius = 2.0});
+    w.add({.position = {100.0, 10.0}, .radius = 2.0});
+    EXPECT_DOUBLE_EQ(maxOverlapBruteForce(w), 1.0);
+}
+
+}  // namespace
+}  // namespace psb

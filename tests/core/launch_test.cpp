@@ -1,0 +1,82 @@
+// The launch vector: the original's calculate_vector with its index bug fixed, and the
+// time-windowed launch velocity the app uses.
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+#include <particle_sandbox/launch.hpp>
+
+namespace psb {
+namespace {
+
+TEST(CalculateVector, UsesTheFirstSampleForBothStartCoordinates) {
+    std::vector<Vec2> t;
+    for (int k = 0; k < 10; ++k) t.emplace_back(10.0 * k, 100.0 + 5.0 * k * k);
+    // The original took start y from t[1] (105) instead of t[0] (100).
+    EXPECT_EQ(calculateVector(t), Vec2((90.0 - 0.0) / 20.0, (505.0 - 100.0) / 20.0));
+}
+
+TEST(CalculateVector, TooShortTrajectoryGivesZero) {
+    std::vector<Vec2> t(9, Vec2(1.0, 2.0));
+    t.back() = Vec2(100.0, 100.0);
+    EXPECT_EQ(calculateVector(t), Vec2::Zero());
+    EXPECT_EQ(calculateVector({}), Vec2::Zero());
+    t.emplace_back(200.0, 2.0);
+    EXPECT_EQ(calculateVector(t, 1.0), Vec2(199.0, 0.0));
+}
+
+TEST(LaunchVelocity, SteadyDragGivesItsVelocity) {
+    std::vector<TrajectorySample> s;
+    for (int k = 0; k <= 30; ++k) s.push_back({k / 60.0, Vec2(100.0 + 2.0 * k, 50.0 - 1.0 * k)});
+    const Vec2 v = launchVelocity(s);
+    EXPECT_NEAR(v.x(), 120.0, 1e-9);
+    EXPECT_NEAR(v.y(), -60.0, 1e-9);
+}
+
+TEST(LaunchVelocity, OnlyTheRecentWindowCounts) {
+    std::vector<TrajectorySample> s;
+    // Half a second dragging right, then 0.2 s dragging down.
+    for (int k = 0; k <= 50; ++k) s.push_back({k * 0.01, Vec2(3.0 * k, 0.0)});
+    for (int k = 1; k <= 20; ++k) s.push_back({0.5 + k * 0.01, Vec2(150.0, 2.0 * k)});
+    const Vec2 v = launchVelocity(s, {.window = 0.1});
+    EXPECT_NEAR(v.x(), 0.0, 1e-9);
+    EXPECT_NEAR(v.y(), 200.0, 1e-9);
+}
+
+TEST(LaunchVelocity, PauseBeforeReleaseLaunchesAtRest) {
+    std::vector<TrajectorySample> s;
+    for (int k = 0; k <= 20; ++k) s.push_back({k * 0.01, Vec2(5.0 * k, 0.0)});
+    // Held still for 0.3 s: the last 100 ms show no movement.
+    for (int k = 1; k <= 30; ++k) s.push_back({0.2 + k * 0.01, Vec2(100.0, 0.0)});
+    EXPECT_EQ(launchVelocity(s), Vec2::Zero());
+}
+
+TEST(LaunchVelocity, ShortJitterBelowMinDistanceIsAtRest) {
+    const std::vector<TrajectorySample> s{{0.0, {10.0, 10.0}}, {0.05, {10.4, 10.2}}};
+    EXPECT_EQ(launchVelocity(s, {.minDistance = 1.0}), Vec2::Zero());
+    EXPECT_NE(launchVelocity(s, {.minDistance = 0.1}), Vec2::Zero());
+}
+
+TEST(LaunchVelocity, DegenerateInputsGiveZeroOrAreSkipped) {
+    constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(launchVelocity({}), Vec2::Zero());
+    const std::vector<TrajectorySample> one{{1.0, {3.0, 3.0}}};
+    EXPECT_EQ(launchVelocity(one), Vec2::Zero());
+    const std::vector<TrajectorySample> sameTime{{1.0, {3.0, 3.0}}, {1.0, {9.0, 3.0}}};
+    EXPECT_EQ(launchVelocity(sameTime), Vec2::Zero());
+    const std::vector<TrajectorySample> withNaN{
+        {0.0, {0.0, 0.0}}, {0.05, {kNaN, 1.0}}, {0.1, {10.0, 0.0}}, {kNaN, {1.0, 1.0}}};
+    EXPECT_NEAR(launchVelocity(withNaN).x(), 100.0, 1e-9);
+}
+
+TEST(LaunchVelocity, MaxSpeedClamps) {
+    const std::vector<TrajectorySample> s{{0.0, {0.0, 0.0}}, {0.01, {30.0, 40.0}}};
+    const Vec2 v = launchVelocity(s, {.maxSpeed = 100.0});
+    EXPECT_NEAR(v.norm(), 100.0, 1e-9);
+    EXPECT_NEAR(v.x() / v.y(), 0.75, 1e-12);
+}
+
+}  // namespace
+}  // namespace psb
