@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// Scene files: a world, how to step it, and its particles, as versioned JSON. The app and the
+/// headless runner share this one loader. The format is documented in docs/scenes.md.
+
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <particle_sandbox/particle.hpp>
+#include <particle_sandbox/solver_settings.hpp>
+#include <particle_sandbox/world.hpp>
+#include <particle_sandbox/world_def.hpp>
+
+namespace psb {
+
+/// A scene in memory: everything a scene file says, with any `generate` block already expanded
+/// into particles.
+struct Scene {
+    int version = 1;
+    std::string name;
+    std::string description;
+    WorldDef world;
+    SolverSettings solver;
+    std::vector<ParticleDef> particles;
+};
+
+/// A scene that cannot be read or is not valid. what() is one line for the user, naming the
+/// file, the JSON path and the problem, e.g.
+///   `gas.json: particles[3].mass: must be > 0 (got -1)`.
+class SceneError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// A save that failed (no permission, a directory in the way, disk full, ...). The file that
+/// was there before is left intact.
+class SaveError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Parses and validates scene JSON. `source` names the input in messages (a path or "<stdin>").
+/// Throws SceneError.
+[[nodiscard]] Scene parseScene(std::string_view json, std::string_view source);
+
+/// Reads and parses a scene file. Throws SceneError (also for a file that cannot be read).
+[[nodiscard]] Scene loadScene(const std::filesystem::path& path);
+
+/// Scene JSON for `scene`; doubles are written so that they read back bit for bit.
+[[nodiscard]] std::string serializeScene(const Scene& scene);
+
+/// Writes `scene` to `path` atomically: a temporary file beside it, flushed, then renamed over
+/// the target. Throws SaveError saying why; the old file is untouched on failure.
+void saveScene(const Scene& scene, const std::filesystem::path& path);
+
+/// A world built from a scene (its box, laws, solver settings and particles).
+[[nodiscard]] World makeWorld(const Scene& scene);
+
+/// A scene describing the world's current state.
+[[nodiscard]] Scene sceneFromWorld(const World& world, std::string name = {},
+                                   std::string description = {});
+
+}  // namespace psb
