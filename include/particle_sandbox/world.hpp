@@ -19,6 +19,9 @@
 namespace psb {
 
 struct StepContext;
+namespace exact {
+class ExactStepper;
+}
 
 /// Owns the particles and advances them in time.
 ///
@@ -26,7 +29,7 @@ struct StepContext;
 /// world unchanged, when one is out of range. Particles are reached through stable ids; the
 /// const ParticleArrays view is for fast read-only iteration (rendering, diagnostics).
 class World {
-public:
+  public:
     explicit World(const WorldDef& def = {}, const SolverSettings& solver = {});
     ~World();
     World(const World& other);
@@ -39,9 +42,11 @@ public:
     [[nodiscard]] const SolverSettings& solver() const { return solver_; }
     void setBox(double width, double height);
     void setWalls(bool enabled);
+    /// Throws InvalidArgument for a non-zero gravity while the solver's mode is Exact.
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
+    /// Throws InvalidArgument for mode Exact while the world has gravity.
     void setSolver(const SolverSettings& solver);
 
     // --- particles -------------------------------------------------------------------------
@@ -76,7 +81,9 @@ public:
     [[nodiscard]] const ParticleArrays& particles() const { return p_; }
 
     // --- time ------------------------------------------------------------------------------
-    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode.
+    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
+    /// every particle ends at its exact state at time() + dt; any change made to the world
+    /// between steps (particles, setters, box) is picked up by the next step.
     void step(double dt);
     /// Advances by solver().dt.
     void step() { step(solver_.dt); }
@@ -87,15 +94,17 @@ public:
     [[nodiscard]] const StepCounters& counters() const { return counters_; }
     void resetCounters() { counters_ = {}; }
 
-private:
+  private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
     void stepDiscrete(double dt);
+    void stepExact(double dt);
 
     WorldDef def_;
     SolverSettings solver_;
     ParticleArrays p_;
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;
+    std::unique_ptr<exact::ExactStepper> exact_;  // event state of the Exact mode, made on use
     double time_ = 0.0;
     StepProfile profile_;
     StepCounters counters_;

@@ -1,9 +1,11 @@
 #include <particle_sandbox/world.hpp>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "discrete_step.hpp"
+#include "exact_stepper.hpp"
 #include "step_context.hpp"
 #include "validate.hpp"
 
@@ -30,13 +32,23 @@ void validateSolver(const SolverSettings& s, const char* where) {
     if (s.substeps < 1) {
         detail::fail(where, "substeps", "must be >= 1 (got " + std::to_string(s.substeps) + ")");
     }
-    if (s.mode == StepMode::Exact) {
-        detail::fail(where, "mode", "'exact' is not available in this version");
-    }
     if (s.broadphase == BroadPhaseKind::Grid || s.broadphase == BroadPhaseKind::Quadtree) {
         detail::fail(where, "broadphase",
                      "'" + std::string(toString(s.broadphase)) +
                          "' is not available in this version (use 'auto' or 'all-pairs')");
+    }
+}
+
+// The exact mode flies particles in straight lines between events; under gravity they would fly
+// parabolas, which it does not predict.
+void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const char* where) {
+    if (s.mode == StepMode::Exact && (gravity.x() != 0.0 || gravity.y() != 0.0)) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "must be zero in 'exact' mode (got [" << gravity.x() << ", " << gravity.y()
+           << "]): the event-driven step does not support gravity; use 'discrete' or "
+              "'substep' for a world with gravity";
+        detail::fail(where, "gravity", os.str());
     }
 }
 
@@ -59,6 +71,7 @@ World::World(const WorldDef& def, const SolverSettings& solver)
     : def_(def), solver_(solver), ctx_(std::make_unique<StepContext>()) {
     validateDef(def, "World");
     validateSolver(solver, "World");
+    validateModeWithGravity(solver, def.gravity, "World");
 }
 
 World::~World() = default;
@@ -88,10 +101,13 @@ void World::setBox(double width, double height) {
     def_ = d;
 }
 
-void World::setWalls(bool enabled) { def_.walls = enabled; }
+void World::setWalls(bool enabled) {
+    def_.walls = enabled;
+}
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
+    validateModeWithGravity(solver_, gravity, "World::setGravity");
     def_.gravity = gravity;
 }
 
@@ -109,12 +125,14 @@ void World::setFriction(double mu) {
 
 void World::setSolver(const SolverSettings& solver) {
     validateSolver(solver, "World::setSolver");
+    validateModeWithGravity(solver, def_.gravity, "World::setSolver");
     solver_ = solver;
 }
 
 ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
-    if (p_.size() >= UINT32_MAX - 1) detail::fail("World::add", "particle count", "is at its limit");
+    if (p_.size() >= UINT32_MAX - 1)
+        detail::fail("World::add", "particle count", "is at its limit");
     const auto index = static_cast<std::uint32_t>(p_.size());
     const ParticleId id = ids_.allocate(index);
     p_.x.push_back(d.position.x());
@@ -153,7 +171,9 @@ void World::clear() {
     p_ = ParticleArrays{};
 }
 
-bool World::contains(ParticleId id) const { return ids_.find(id).has_value(); }
+bool World::contains(ParticleId id) const {
+    return ids_.find(id).has_value();
+}
 
 std::optional<std::size_t> World::indexOf(ParticleId id) const {
     const auto found = ids_.find(id);
@@ -164,16 +184,17 @@ std::optional<std::size_t> World::indexOf(ParticleId id) const {
 std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
     const auto found = ids_.find(id);
     if (!found) {
-        detail::fail(what, "id", "names no live particle (slot " + std::to_string(id.slot) +
-                                     ", generation " + std::to_string(id.generation) + ")");
+        detail::fail(what, "id",
+                     "names no live particle (slot " + std::to_string(id.slot) + ", generation " +
+                         std::to_string(id.generation) + ")");
     }
     return *found;
 }
 
 Particle World::get(ParticleId id) const {
     const std::size_t i = indexOrThrow(id, "World::get");
-    return Particle{id,          Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
-                    p_.mass[i],  p_.radius[i],           p_.color[i]};
+    return Particle{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
+                    p_.mass[i], p_.radius[i],           p_.color[i]};
 }
 
 void World::setPosition(ParticleId id, const Vec2& position) {
@@ -235,10 +256,12 @@ void World::step(double dt) {
             break;
         case StepMode::Substep: {
             const double h = dt / solver_.substeps;
-            for (int k = 0; k < solver_.substeps; ++k) stepDiscrete(h);
+            for (int k = 0; k < solver_.substeps; ++k)
+                stepDiscrete(h);
             break;
         }
-        case StepMode::Exact:  // refused by validateSolver until the event-driven mode exists
+        case StepMode::Exact:
+            stepExact(dt);
             break;
     }
     time_ += dt;
@@ -247,6 +270,14 @@ void World::step(double dt) {
 void World::stepDiscrete(double dt) {
     if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
     stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
+}
+
+void World::stepExact(double dt) {
+    // The stepper compares the world with what its last step left and rebuilds its event state
+    // on any difference, so every mutator (and a step in another mode) is picked up without
+    // each one having to remember to invalidate it.
+    if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
+    exact_->step(p_, def_, dt, profile_, counters_);
 }
 
 }  // namespace psb

@@ -1,0 +1,182 @@
+#pragma once
+// The exact step: event-driven hard discs. Every collision is resolved at the instant the two
+// discs touch, so there is no overlap beyond rounding and nothing tunnels, whatever dt is.
+//
+//   World::step(dt)
+//     │
+//     ├─ state stale? (first step, or anything in the world changed since the last step:
+//     │   add/remove, a setter, box/walls/restitution/friction)  ──yes──► rebuild
+//     │        rebuild: copy particles, clamp into the box, fill the cell list,
+//     │                 predict every particle's next event, fill the queue
+//     │
+//     ├─ event loop, while the earliest event is at or before t + dt:
+//     │
+//     │     EventQueue (4-ary heap, one entry per particle, ordered by (time, index))
+//     │        │ top = particle i, its one event:
+//     │        ▼
+//     │     ┌──────────────┬───────────────────────────────────────────────────────────────┐
+//     │     │ pair (i, j)  │ j's collision counter unchanged since the prediction?         │
+//     │     │              │   yes: advance i and j to the event, collide (contact.hpp),   │
+//     │     │              │        bump both counters, re-predict both                    │
+//     │     │              │   no:  j changed course since: the event is stale, re-predict i│
+//     │     │ wall         │ advance i, rebound (contact.hpp), bump counter, re-predict i  │
+//     │     │ cell face    │ advance i, move it to the next cell, re-predict i             │
+//     │     └──────────────┴───────────────────────────────────────────────────────────────┘
+//     │
+//     └─ sync: write every particle's position at t + dt into the world's arrays, and keep a
+//        snapshot of them to detect mutations before the next step
+//
+// Lazy advance (Lubachevsky 1991). Each particle keeps the position it had at its own last
+// update time; an event touches only its one or two particles, so an event costs a prediction
+// (the ~9 cells around a particle) and a heap update: O(log N), not O(N). Positions for the
+// outside world are computed at the end of the step and never fed back, so how dt is chopped
+// does not change the trajectory (only, in the last bits, the time t + dt itself).
+//
+// One event per particle (Smallenburg 2022). Predicting i keeps only its earliest event: a
+// wall, the face of its cell, or a pair. This is enough: any later event of i would come after
+// i's earliest one, at which point i is predicted again; and an event of i with j that j's own
+// collisions make wrong is caught by j's counter (every velocity change bumps it). A particle
+// that enters i's neighbourhood does so at a cell-face event of its own, after which it is
+// predicted against everything around it, i included.
+//
+// Rules for invalid states (Bannerman et al. 2014), so rounding never decides:
+//   - no event is scheduled before the current time (times of impact are durations >= 0);
+//   - an overlapping pair collides at once if it approaches and is left alone if it separates;
+//   - a disc past a wall collides with it at once if moving outward, else is left alone;
+//   - a collision whose pair turns out not to approach at its instant changes nothing.
+// Ties are broken by particle index (the queue's order), then by the order of prediction.
+//
+// Inelastic collapse. With e < 1 a cluster can collide infinitely often in finite time, and an
+// event-driven code then stalls. Restitution here follows a TC-like rule (Luding & McNamara
+// 1998, but on impact speed rather than time since the last contact): impacts slower than
+// kElasticBelowSpeed get an effective restitution rising linearly to 1 as the speed goes to 0,
+// e_eff = 1 − (1 − e)·u/u_c, so arbitrarily slow impacts lose arbitrarily little energy and no
+// geometric cascade of ever slower collisions can form.
+//
+// Held (kinematic) particles. Infinite mass, straight lines: they push and are not pushed
+// (contact.hpp's kinematic limit). A held particle that reaches a wall stops moving across it.
+// A free particle squeezed between a held one and a wall or another held one would collide
+// infinitely often; after kJamLimit collisions with held particles in one step it is allowed to
+// pass through held particles for the rest of that step.
+//
+// Particles that do not fit. A particle wider than the box along an axis stays on the box's
+// centre line on that axis (as in the discrete mode); the walls absorb at once any velocity it
+// gains across it. Such a particle makes the cells as large as the box: correct but O(N) per
+// event.
+//
+// Walls off: no wall events, particles fly free; the cell grid folds onto itself
+// (cell_list.hpp) so space is unbounded.
+//
+// Gravity is refused in this mode by World (flights would be parabolas, not lines).
+
+#include <cstdint>
+#include <vector>
+
+#include <particle_sandbox/particle_arrays.hpp>
+#include <particle_sandbox/step_profile.hpp>
+#include <particle_sandbox/world_def.hpp>
+
+#include "cell_list.hpp"
+#include "event_queue.hpp"
+
+namespace psb::exact {
+
+/// Impact speed (m/s) below which restitution rises linearly to 1 (see the design note).
+/// One millimetre per second: far below the speeds of the sandbox's scenes (metres per second),
+/// far above the rounding noise of their velocities.
+inline constexpr double kElasticBelowSpeed = 1e-3;
+
+/// Collisions with held particles after which a squeezed particle passes through them for the
+/// rest of the step.
+inline constexpr std::uint32_t kJamLimit = 1000;
+
+/// Events one step may process per particle (plus a fixed allowance) before the rest of the
+/// step is flown without collisions: a last-resort guard that keeps the app responsive. It is
+/// never reached by the scenes and tests; if it is, the next step starts from a rebuild, where
+/// the invalid-state rules above resolve any overlap left behind.
+inline constexpr std::uint64_t kMaxEventsPerParticlePerStep = 100000;
+
+/// One resolved collision, for tests and diagnostics. `j` is a particle index for a pair, or
+/// kWall + w for wall w (0 = left, 1 = right, 2 = top, 3 = bottom).
+struct CollisionRecord {
+    static constexpr std::uint32_t kWall = UINT32_MAX - 3;
+    double time;  ///< seconds since the stepper's last rebuild
+    std::uint32_t i;
+    std::uint32_t j;
+};
+
+class ExactStepper {
+  public:
+    /// Advances `p` by dt seconds: on return every particle is at its exact state at t + dt.
+    /// Rebuilds first if `p` or `def` differ from what the last step left. Updates the
+    /// counters (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events).
+    void step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
+              StepCounters& counters);
+
+    /// Forces a rebuild at the next step.
+    void invalidate() { stale_ = true; }
+
+    /// Appends every resolved collision to `log` (nullptr to stop). Indices are storage
+    /// indices of `p`; times restart from 0 at each rebuild.
+    void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
+
+    /// Events of each kind processed by the last step.
+    struct EventStats {
+        std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0;
+        bool budgetExhausted = false;
+    };
+    [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
+
+  private:
+    enum class Kind : std::uint8_t { None, Pair, Wall, Cell };
+
+    struct Body {
+        double x, y;             // centre at local time t, metres
+        double vx, vy;           // m/s
+        double t;                // local time, seconds since the last rebuild
+        double r;                // radius
+        double w;                // inverse mass, 0 = held
+        double m;                // mass
+        std::int64_t kx, ky;     // cell coordinates
+        std::uint32_t count;     // bumped at every velocity change
+        std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
+        bool pinX, pinY;         // does not fit between the walls along this axis
+    };
+
+    struct Event {
+        double time;
+        std::uint32_t partner;       // pair: the other particle
+        std::uint32_t partnerCount;  // pair: its counter when predicted
+        Kind kind;
+        std::int8_t side;  // wall: 0..3 (left, right, top, bottom); cell: 0..3 (-x, +x, -y, +y)
+    };
+
+    [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
+    void rebuild(ParticleArrays& p, const WorldDef& def);
+    void setUpGrid();
+    void advance(Body& b, double t) const;
+    void predict(std::uint32_t i);
+    void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
+    void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
+    void handleCell(std::uint32_t i, const Event& ev);
+    [[nodiscard]] double effectiveRestitution(double impactSpeed) const;
+    void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
+    void sync(ParticleArrays& p, double t);
+
+    WorldDef def_;
+    bool stale_ = true;
+    double clock_ = 0.0;  // seconds since the last rebuild
+    std::vector<Body> bodies_;
+    std::vector<Event> events_;
+    std::vector<ParticleId> ids_;
+    CellList cells_;
+    EventQueue queue_;
+    double maxOverlap_ = 0.0;
+    EventStats stats_;
+    std::vector<CollisionRecord>* log_ = nullptr;
+
+    // What the last step left in the world's arrays, to detect any change made between steps.
+    ParticleArrays snapshot_;
+};
+
+}  // namespace psb::exact
