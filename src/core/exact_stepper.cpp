@@ -64,8 +64,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     }
     setUpGrid();
     queue_.reset(n, kNever);
-    for (std::uint32_t i = 0; i < n; ++i)
-        predict(i);
+    for (std::uint32_t i = 0; i < n; ++i) predict(i, 0.0);
     stale_ = false;
 }
 
@@ -127,9 +126,12 @@ void ExactStepper::advance(Body& b, double t) const {
     }
 }
 
-void ExactStepper::predict(std::uint32_t i) {
+void ExactStepper::predict(std::uint32_t i, double now) {
     const Body& a = bodies_[i];
-    const double now = a.t;
+    // Where i is now. Its stored position stays that of its last velocity change: re-deriving
+    // it at every cell face would add a rounding error per face crossed.
+    const double ha = now - a.t;
+    const double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
     Event best{kNever, 0, 0, Kind::None, 0};
 
     if (def_.walls) {
@@ -137,8 +139,8 @@ void ExactStepper::predict(std::uint32_t i) {
         if (a.pinX) {
             if (a.vx != 0.0) best = {0.0, 0, 0, Kind::Wall, static_cast<std::int8_t>(a.vx > 0)};
         } else {
-            const double tl = wallImpactTime(a.x, a.vx, a.r, -1.0);
-            const double tr = wallImpactTime(a.x, a.vx, def_.width - a.r, 1.0);
+            const double tl = wallImpactTime(ax, a.vx, a.r, -1.0);
+            const double tr = wallImpactTime(ax, a.vx, def_.width - a.r, 1.0);
             if (tl < best.time) best = {tl, 0, 0, Kind::Wall, 0};
             if (tr < best.time) best = {tr, 0, 0, Kind::Wall, 1};
         }
@@ -147,8 +149,8 @@ void ExactStepper::predict(std::uint32_t i) {
                 best = {0.0, 0, 0, Kind::Wall, static_cast<std::int8_t>(a.vy > 0 ? 3 : 2)};
             }
         } else {
-            const double tt = wallImpactTime(a.y, a.vy, a.r, -1.0);
-            const double tb = wallImpactTime(a.y, a.vy, def_.height - a.r, 1.0);
+            const double tt = wallImpactTime(ay, a.vy, a.r, -1.0);
+            const double tb = wallImpactTime(ay, a.vy, def_.height - a.r, 1.0);
             if (tt < best.time) best = {tt, 0, 0, Kind::Wall, 2};
             if (tb < best.time) best = {tb, 0, 0, Kind::Wall, 3};
         }
@@ -157,13 +159,13 @@ void ExactStepper::predict(std::uint32_t i) {
     {
         // Cell faces; with walls the outer faces are never crossed (the wall comes first).
         int face;
-        const double tx = slabExitTime(a.x, a.vx, cells_.faceX(a.kx), cells_.faceX(a.kx + 1), face);
+        const double tx = slabExitTime(ax, a.vx, cells_.faceX(a.kx), cells_.faceX(a.kx + 1), face);
         const bool outerX =
             !cells_.wraps() && ((face < 0 && a.kx == 0) || (face > 0 && a.kx == cells_.nx() - 1));
         if (face != 0 && !outerX && tx < best.time) {
             best = {tx, 0, 0, Kind::Cell, static_cast<std::int8_t>(face < 0 ? 0 : 1)};
         }
-        const double ty = slabExitTime(a.y, a.vy, cells_.faceY(a.ky), cells_.faceY(a.ky + 1), face);
+        const double ty = slabExitTime(ay, a.vy, cells_.faceY(a.ky), cells_.faceY(a.ky + 1), face);
         const bool outerY =
             !cells_.wraps() && ((face < 0 && a.ky == 0) || (face > 0 && a.ky == cells_.ny() - 1));
         if (face != 0 && !outerY && ty < best.time) {
@@ -182,7 +184,7 @@ void ExactStepper::predict(std::uint32_t i) {
                 if (a.w == 0.0 && b.w == 0.0) continue;  // held particles pass through each other
                 if ((jammed && b.w == 0.0) || (a.w == 0.0 && b.heldHits >= kJamLimit)) continue;
                 const double h = now - b.t;
-                const double t = pairImpactTime(b.x + b.vx * h - a.x, b.y + b.vy * h - a.y,
+                const double t = pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay,
                                                 b.vx - a.vx, b.vy - a.vy, a.r + b.r);
                 if (t < best.time || (t == best.time && t != kNever && best.kind == Kind::Pair &&
                                       j < best.partner)) {
@@ -207,13 +209,13 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     const std::uint32_t j = ev.partner;
     Body& a = bodies_[i];
     Body& b = bodies_[j];
-    advance(a, ev.time);
     if (b.count != ev.partnerCount) {
         ++stats_.stale;  // j changed course after this was predicted
-        predict(i);
+        predict(i, ev.time);
         return;
     }
     ++stats_.pairs;
+    advance(a, ev.time);
     advance(b, ev.time);
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double d = std::sqrt(dx * dx + dy * dy);
@@ -238,8 +240,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         if (a.w == 0.0) ++b.heldHits;
         if (log_) log_->push_back({ev.time, i, j});
     }
-    predict(i);
-    predict(j);
+    predict(i, ev.time);
+    predict(j, ev.time);
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -271,12 +273,11 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if (log_) log_->push_back({ev.time, i, CollisionRecord::kWall + ev.side});
     }
     ++a.count;
-    predict(i);
+    predict(i, ev.time);
 }
 
 void ExactStepper::handleCell(std::uint32_t i, const Event& ev) {
     Body& a = bodies_[i];
-    advance(a, ev.time);
     ++stats_.cells;
     switch (ev.side) {
         case 0:
@@ -294,7 +295,7 @@ void ExactStepper::handleCell(std::uint32_t i, const Event& ev) {
     }
     cells_.erase(i);
     cells_.insert(i, cells_.cell(a.kx, a.ky));
-    predict(i);
+    predict(i, ev.time);
 }
 
 void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {

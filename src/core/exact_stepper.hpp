@@ -155,7 +155,7 @@ class ExactStepper {
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void setUpGrid();
     void advance(Body& b, double t) const;
-    void predict(std::uint32_t i);
+    void predict(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleCell(std::uint32_t i, const Event& ev);

@@ -21,10 +21,13 @@ inline constexpr double kNever = std::numeric_limits<double>::infinity();
 /// |dr + t·dv| = sigma, where dr = r_j − r_i and dv = v_j − v_i (metres, m/s) and sigma is the
 /// sum of the radii. Approaching pairs only (dr·dv < 0).
 ///
-/// With a = dv·dv, b = dr·dv, c = dr·dr − sigma², the smaller root (−b − √(b² − ac)) / a
-/// subtracts two nearly equal numbers when the pair is far apart or slow (|ac| << b²) and loses
-/// all its digits. Multiplying through by the conjugate gives the same root as
-/// c / (−b + √(b² − ac)), where −b > 0 and the square root add: no cancellation.
+/// With a = dv·dv, b = dr·dv, c = dr·dr − sigma², the smaller root is (−b − √(b² − ac)) / a.
+/// Two cancellations lurk there when the pair is far apart (|dr| >> sigma):
+///   - −b − √(…) subtracts two nearly equal numbers. Multiplying by the conjugate gives the
+///     same root as c / (−b + √(…)), where both terms are positive and add.
+///   - b² − ac is a small difference of two huge products. In 2-D, Lagrange's identity
+///     (dr·dv)² + (dr×dv)² = |dr|²|dv|² turns it into a·sigma² − (dr×dv)², which is exact up to
+///     the rounding of small terms (it only cancels for a truly grazing approach).
 [[nodiscard]] inline double pairImpactTime(double dx, double dy, double dvx, double dvy,
                                            double sigma) {
     const double b = dx * dvx + dy * dvy;
@@ -32,7 +35,8 @@ inline constexpr double kNever = std::numeric_limits<double>::infinity();
     const double c = dx * dx + dy * dy - sigma * sigma;
     if (c <= 0.0) return 0.0;  // overlapping (or touching) and approaching: collide now
     const double a = dvx * dvx + dvy * dvy;
-    const double disc = b * b - a * c;
+    const double cross = dx * dvy - dy * dvx;
+    const double disc = a * sigma * sigma - cross * cross;
     if (disc < 0.0) return kNever;  // closest approach wider than sigma: a miss
     return c / (-b + std::sqrt(disc));
 }
