@@ -40,12 +40,16 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     clock_ = 0.0;
     const auto n = static_cast<std::uint32_t>(p.size());
     bodies_.resize(n);
+    cold_.resize(n);
+    order_.resize(n);
     events_.assign(n, Event{kNever, 0, 0, Kind::None, 0});
     ids_ = p.id;
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
-        b = Body{p.x[i],    p.y[i], p.vx[i], p.vy[i], 0.0, p.radius[i], p.invMass[i],
-                 p.mass[i], 0,      0,       0,       0,   false,       false};
+        Cold& c = cold_[i];
+        b = Body{p.x[i], p.y[i], p.vx[i], p.vy[i], 0.0, p.radius[i], p.invMass[i], 0, 0};
+        c = Cold{p.mass[i], 0, 0, false, false};
+        order_[i] = i;
         if (def_.walls) {
             // Into the box, as the discrete mode's wall stage would; a particle too wide for
             // an axis sits on the centre line with no velocity across it.
@@ -58,14 +62,46 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
                 x = std::clamp(x, r, extent - r);
                 return false;
             };
-            b.pinX = place(b.x, b.vx, b.r, def_.width);
-            b.pinY = place(b.y, b.vy, b.r, def_.height);
+            c.pinX = place(b.x, b.vx, b.r, def_.width);
+            c.pinY = place(b.y, b.vy, b.r, def_.height);
         }
     }
     setUpGrid();
+    sortByCell();
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
+    }
     queue_.reset(n, kNever);
-    for (std::uint32_t i = 0; i < n; ++i) predict(i, 0.0);
+    for (std::uint32_t i = 0; i < n; ++i)
+        predict(i, 0.0);
     stale_ = false;
+}
+
+void ExactStepper::sortByCell() {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    const auto cellCount = static_cast<std::size_t>(cells_.nx() * cells_.ny());
+    std::vector<std::uint32_t> start(cellCount + 1, 0), cellOf(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cellOf[i] = cells_.cell(cold_[i].kx, cold_[i].ky);
+        ++start[cellOf[i] + 1];
+    }
+    for (std::size_t c = 0; c < cellCount; ++c)
+        start[c + 1] += start[c];
+    std::vector<Body> bodies(n);
+    std::vector<Cold> cold(n);
+    std::vector<std::uint32_t> order(n);
+    std::vector<ParticleId> ids(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint32_t k = start[cellOf[i]]++;
+        bodies[k] = bodies_[i];
+        cold[k] = cold_[i];
+        order[k] = order_[i];
+        ids[k] = ids_[i];
+    }
+    bodies_.swap(bodies);
+    cold_.swap(cold);
+    order_.swap(order);
+    ids_.swap(ids);
 }
 
 void ExactStepper::setUpGrid() {
@@ -110,10 +146,8 @@ void ExactStepper::setUpGrid() {
         cells_.reset(x0 - minSide, y0 - minSide, side, side, count(w), count(h), true, n);
     }
     for (std::uint32_t i = 0; i < n; ++i) {
-        Body& b = bodies_[i];
-        b.kx = cells_.coordX(b.x);
-        b.ky = cells_.coordY(b.y);
-        cells_.insert(i, cells_.cell(b.kx, b.ky));
+        cold_[i].kx = cells_.coordX(bodies_[i].x);
+        cold_[i].ky = cells_.coordY(bodies_[i].y);
     }
 }
 
@@ -128,6 +162,7 @@ void ExactStepper::advance(Body& b, double t) const {
 
 void ExactStepper::predict(std::uint32_t i, double now) {
     const Body& a = bodies_[i];
+    const Cold& ac = cold_[i];
     // Where i is now. Its stored position stays that of its last velocity change: re-deriving
     // it at every cell face would add a rounding error per face crossed.
     const double ha = now - a.t;
@@ -136,7 +171,7 @@ void ExactStepper::predict(std::uint32_t i, double now) {
 
     if (def_.walls) {
         // A pinned axis has no room: any velocity across it is absorbed at once.
-        if (a.pinX) {
+        if (ac.pinX) {
             if (a.vx != 0.0) best = {0.0, 0, 0, Kind::Wall, static_cast<std::int8_t>(a.vx > 0)};
         } else {
             const double tl = wallImpactTime(ax, a.vx, a.r, -1.0);
@@ -144,7 +179,7 @@ void ExactStepper::predict(std::uint32_t i, double now) {
             if (tl < best.time) best = {tl, 0, 0, Kind::Wall, 0};
             if (tr < best.time) best = {tr, 0, 0, Kind::Wall, 1};
         }
-        if (a.pinY) {
+        if (ac.pinY) {
             if (a.vy != 0.0 && 0.0 < best.time) {
                 best = {0.0, 0, 0, Kind::Wall, static_cast<std::int8_t>(a.vy > 0 ? 3 : 2)};
             }
@@ -159,15 +194,17 @@ void ExactStepper::predict(std::uint32_t i, double now) {
     {
         // Cell faces; with walls the outer faces are never crossed (the wall comes first).
         int face;
-        const double tx = slabExitTime(ax, a.vx, cells_.faceX(a.kx), cells_.faceX(a.kx + 1), face);
+        const double tx =
+            slabExitTime(ax, a.vx, cells_.faceX(ac.kx), cells_.faceX(ac.kx + 1), face);
         const bool outerX =
-            !cells_.wraps() && ((face < 0 && a.kx == 0) || (face > 0 && a.kx == cells_.nx() - 1));
+            !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
         if (face != 0 && !outerX && tx < best.time) {
             best = {tx, 0, 0, Kind::Cell, static_cast<std::int8_t>(face < 0 ? 0 : 1)};
         }
-        const double ty = slabExitTime(ay, a.vy, cells_.faceY(a.ky), cells_.faceY(a.ky + 1), face);
+        const double ty =
+            slabExitTime(ay, a.vy, cells_.faceY(ac.ky), cells_.faceY(ac.ky + 1), face);
         const bool outerY =
-            !cells_.wraps() && ((face < 0 && a.ky == 0) || (face > 0 && a.ky == cells_.ny() - 1));
+            !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
         if (face != 0 && !outerY && ty < best.time) {
             best = {ty, 0, 0, Kind::Cell, static_cast<std::int8_t>(face < 0 ? 2 : 3)};
         }
@@ -176,7 +213,7 @@ void ExactStepper::predict(std::uint32_t i, double now) {
     const bool jammed = a.heldHits >= kJamLimit;
     for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            const std::uint32_t c = cells_.cell(a.kx + dx, a.ky + dy);
+            const std::uint32_t c = cells_.cell(ac.kx + dx, ac.ky + dy);
             if (c == CellList::kNone) continue;
             for (std::uint32_t j = cells_.head(c); j != CellList::kNone; j = cells_.next(j)) {
                 if (j == i) continue;
@@ -228,17 +265,18 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     }
     const double approach = (a.vx - b.vx) * n.x + (a.vy - b.vy) * n.y;
     const double e = effectiveRestitution(approach);
-    const bool hit =
-        def_.friction > 0.0
-            ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, a.w, b.w, a.m, b.m, n, e, def_.friction)
-            : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, a.w, b.w, a.m, b.m, n, e, 0.0);
+    const bool hit = def_.friction > 0.0
+                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, a.w, b.w, cold_[i].m,
+                                              cold_[j].m, n, e, def_.friction)
+                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, a.w, b.w, cold_[i].m,
+                                               cold_[j].m, n, e, 0.0);
     if (hit) {
         ++counters.collisions;
         ++a.count;
         ++b.count;
         if (b.w == 0.0) ++a.heldHits;
         if (a.w == 0.0) ++b.heldHits;
-        if (log_) log_->push_back({ev.time, i, j});
+        if (log_) log_->push_back({ev.time, order_[i], order_[j]});
     }
     predict(i, ev.time);
     predict(j, ev.time);
@@ -252,7 +290,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     double& v = alongX ? a.vx : a.vy;
     double& vt = alongX ? a.vy : a.vx;
     const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
-    const bool pinned = alongX ? a.pinX : a.pinY;
+    const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
     double dv = 0.0;
     if (a.w == 0.0) {
         // A held particle stops moving across the wall; its owner sets its velocity again.
@@ -269,15 +307,15 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     }
     if (dv > 0.0) {
         ++counters.wallCollisions;
-        counters.wallImpulse += a.m * dv;
-        if (log_) log_->push_back({ev.time, i, CollisionRecord::kWall + ev.side});
+        counters.wallImpulse += cold_[i].m * dv;
+        if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
     }
     ++a.count;
     predict(i, ev.time);
 }
 
 void ExactStepper::handleCell(std::uint32_t i, const Event& ev) {
-    Body& a = bodies_[i];
+    Cold& a = cold_[i];
     ++stats_.cells;
     switch (ev.side) {
         case 0:
@@ -327,8 +365,9 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
 
 void ExactStepper::sync(ParticleArrays& p, double t) {
     const std::size_t n = bodies_.size();
-    for (std::size_t i = 0; i < n; ++i) {
-        const Body& b = bodies_[i];
+    for (std::size_t k = 0; k < n; ++k) {
+        const Body& b = bodies_[k];
+        const std::uint32_t i = order_[k];
         const double h = t - b.t;
         p.x[i] = b.x + b.vx * h;
         p.y[i] = b.y + b.vy * h;

@@ -130,17 +130,21 @@ class ExactStepper {
   private:
     enum class Kind : std::uint8_t { None, Pair, Wall, Cell };
 
-    struct Body {
-        double x, y;             // centre at local time t, metres
+    // What an event and a neighbour's prediction read, in one 64-byte line.
+    struct alignas(64) Body {
+        double x, y;             // centre at time t, metres
         double vx, vy;           // m/s
-        double t;                // local time, seconds since the last rebuild
+        double t;                // time of the last velocity change (or rebuild), seconds
         double r;                // radius
         double w;                // inverse mass, 0 = held
-        double m;                // mass
-        std::int64_t kx, ky;     // cell coordinates
         std::uint32_t count;     // bumped at every velocity change
         std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
-        bool pinX, pinY;         // does not fit between the walls along this axis
+    };
+    // What only the particle's own events read.
+    struct Cold {
+        double m;             // mass
+        std::int64_t kx, ky;  // cell coordinates
+        bool pinX, pinY;      // does not fit between the walls along this axis
     };
 
     struct Event {
@@ -154,6 +158,7 @@ class ExactStepper {
     [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void setUpGrid();
+    void sortByCell();
     void advance(Body& b, double t) const;
     void predict(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
@@ -166,7 +171,11 @@ class ExactStepper {
     WorldDef def_;
     bool stale_ = true;
     double clock_ = 0.0;  // seconds since the last rebuild
+    // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
+    // three short runs of memory; order_ maps this order back to the world's storage indices.
     std::vector<Body> bodies_;
+    std::vector<Cold> cold_;
+    std::vector<std::uint32_t> order_;
     std::vector<Event> events_;
     std::vector<ParticleId> ids_;
     CellList cells_;
