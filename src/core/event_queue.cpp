@@ -28,11 +28,11 @@ void EventQueue::siftUp(std::uint32_t k) {
         const std::uint32_t parent = (k - 1) / 4;
         if (!before(e, heap_[parent])) break;
         heap_[k] = heap_[parent];
-        slot_[heap_[k].particle] = k;
+        slot_[heap_[k].key] = k;
         k = parent;
     }
     heap_[k] = e;
-    slot_[e.particle] = k;
+    slot_[e.key] = k;
 }
 
 void EventQueue::siftDown(std::uint32_t k) {
@@ -48,11 +48,11 @@ void EventQueue::siftDown(std::uint32_t k) {
         }
         if (!before(heap_[best], e)) break;
         heap_[k] = heap_[best];
-        slot_[heap_[k].particle] = k;
+        slot_[heap_[k].key] = k;
         k = best;
     }
     heap_[k] = e;
-    slot_[e.particle] = k;
+    slot_[e.key] = k;
 }
 
 }  // namespace psb::exact

@@ -42,7 +42,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     bodies_.resize(n);
     cold_.resize(n);
     order_.resize(n);
-    events_.assign(n, Event{kNever, 0, 0, Kind::None, 0});
+    coll_.assign(n, Event{kNever, 0, 0, Kind::None, 0});
+    cellSide_.assign(n, 0);
     ids_ = p.id;
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
@@ -71,9 +72,11 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     for (std::uint32_t i = 0; i < n; ++i) {
         cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
     }
-    queue_.reset(n, kNever);
-    for (std::uint32_t i = 0; i < n; ++i)
-        predict(i, 0.0);
+    queue_.reset(2 * n, kNever);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        predictCollision(i, 0.0);
+        predictCell(i, 0.0);
+    }
     stale_ = false;
 }
 
@@ -160,7 +163,26 @@ void ExactStepper::advance(Body& b, double t) const {
     }
 }
 
-void ExactStepper::predict(std::uint32_t i, double now) {
+void ExactStepper::scanCell(std::uint32_t i, double now, double ax, double ay, std::uint32_t c,
+                            Event& best) const {
+    const Body& a = bodies_[i];
+    const bool jammed = a.heldHits >= kJamLimit;
+    for (std::uint32_t j = cells_.head(c); j != CellList::kNone; j = cells_.next(j)) {
+        if (j == i) continue;
+        const Body& b = bodies_[j];
+        if (a.w == 0.0 && b.w == 0.0) continue;  // held particles pass through each other
+        if ((jammed && b.w == 0.0) || (a.w == 0.0 && b.heldHits >= kJamLimit)) continue;
+        const double h = now - b.t;
+        const double t = now + pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay, b.vx - a.vx,
+                                              b.vy - a.vy, a.r + b.r);
+        if (t < best.time ||
+            (t == best.time && t != kNever && best.kind == Kind::Pair && j < best.partner)) {
+            best = {t, j, b.count, Kind::Pair, 0};
+        }
+    }
+}
+
+void ExactStepper::predictCollision(std::uint32_t i, double now) {
     const Body& a = bodies_[i];
     const Cold& ac = cold_[i];
     // Where i is now. Its stored position stays that of its last velocity change: re-deriving
@@ -171,69 +193,59 @@ void ExactStepper::predict(std::uint32_t i, double now) {
 
     if (def_.walls) {
         // A pinned axis has no room: any velocity across it is absorbed at once.
+        double tw[4] = {kNever, kNever, kNever, kNever};  // left, right, top, bottom
         if (ac.pinX) {
-            if (a.vx != 0.0) best = {0.0, 0, 0, Kind::Wall, static_cast<std::int8_t>(a.vx > 0)};
+            if (a.vx != 0.0) tw[a.vx > 0.0 ? 1 : 0] = 0.0;
         } else {
-            const double tl = wallImpactTime(ax, a.vx, a.r, -1.0);
-            const double tr = wallImpactTime(ax, a.vx, def_.width - a.r, 1.0);
-            if (tl < best.time) best = {tl, 0, 0, Kind::Wall, 0};
-            if (tr < best.time) best = {tr, 0, 0, Kind::Wall, 1};
+            tw[0] = wallImpactTime(ax, a.vx, a.r, -1.0);
+            tw[1] = wallImpactTime(ax, a.vx, def_.width - a.r, 1.0);
         }
         if (ac.pinY) {
-            if (a.vy != 0.0 && 0.0 < best.time) {
-                best = {0.0, 0, 0, Kind::Wall, static_cast<std::int8_t>(a.vy > 0 ? 3 : 2)};
-            }
+            if (a.vy != 0.0) tw[a.vy > 0.0 ? 3 : 2] = 0.0;
         } else {
-            const double tt = wallImpactTime(ay, a.vy, a.r, -1.0);
-            const double tb = wallImpactTime(ay, a.vy, def_.height - a.r, 1.0);
-            if (tt < best.time) best = {tt, 0, 0, Kind::Wall, 2};
-            if (tb < best.time) best = {tb, 0, 0, Kind::Wall, 3};
+            tw[2] = wallImpactTime(ay, a.vy, a.r, -1.0);
+            tw[3] = wallImpactTime(ay, a.vy, def_.height - a.r, 1.0);
+        }
+        for (std::int8_t side = 0; side < 4; ++side) {
+            // Durations >= 0 added to the current time: never an event in the past.
+            if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
         }
     }
-
-    {
-        // Cell faces; with walls the outer faces are never crossed (the wall comes first).
-        int face;
-        const double tx =
-            slabExitTime(ax, a.vx, cells_.faceX(ac.kx), cells_.faceX(ac.kx + 1), face);
-        const bool outerX =
-            !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
-        if (face != 0 && !outerX && tx < best.time) {
-            best = {tx, 0, 0, Kind::Cell, static_cast<std::int8_t>(face < 0 ? 0 : 1)};
-        }
-        const double ty =
-            slabExitTime(ay, a.vy, cells_.faceY(ac.ky), cells_.faceY(ac.ky + 1), face);
-        const bool outerY =
-            !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
-        if (face != 0 && !outerY && ty < best.time) {
-            best = {ty, 0, 0, Kind::Cell, static_cast<std::int8_t>(face < 0 ? 2 : 3)};
-        }
-    }
-
-    const bool jammed = a.heldHits >= kJamLimit;
     for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dx = -1; dx <= 1; ++dx) {
             const std::uint32_t c = cells_.cell(ac.kx + dx, ac.ky + dy);
-            if (c == CellList::kNone) continue;
-            for (std::uint32_t j = cells_.head(c); j != CellList::kNone; j = cells_.next(j)) {
-                if (j == i) continue;
-                const Body& b = bodies_[j];
-                if (a.w == 0.0 && b.w == 0.0) continue;  // held particles pass through each other
-                if ((jammed && b.w == 0.0) || (a.w == 0.0 && b.heldHits >= kJamLimit)) continue;
-                const double h = now - b.t;
-                const double t = pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay,
-                                                b.vx - a.vx, b.vy - a.vy, a.r + b.r);
-                if (t < best.time || (t == best.time && t != kNever && best.kind == Kind::Pair &&
-                                      j < best.partner)) {
-                    best = {t, j, b.count, Kind::Pair, 0};
-                }
-            }
+            if (c != CellList::kNone) scanCell(i, now, ax, ay, c, best);
         }
     }
-    // Durations >= 0 added to the current time: an event is never scheduled in the past.
-    if (best.kind != Kind::None) best.time += now;
-    events_[i] = best;
-    queue_.update(i, best.time);
+    coll_[i] = best;
+    queue_.update(2 * i, best.time);
+}
+
+void ExactStepper::predictCell(std::uint32_t i, double now) {
+    const Body& a = bodies_[i];
+    const Cold& ac = cold_[i];
+    const double ha = now - a.t;
+    const double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
+    double best = kNever;
+    std::int8_t side = 0;
+    // With walls the outer faces are never crossed (the wall comes first).
+    int face;
+    const double tx = slabExitTime(ax, a.vx, cells_.faceX(ac.kx), cells_.faceX(ac.kx + 1), face);
+    const bool outerX =
+        !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
+    if (face != 0 && !outerX) {
+        best = tx;
+        side = face < 0 ? 0 : 1;
+    }
+    const double ty = slabExitTime(ay, a.vy, cells_.faceY(ac.ky), cells_.faceY(ac.ky + 1), face);
+    const bool outerY =
+        !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
+    if (face != 0 && !outerY && ty < best) {
+        best = ty;
+        side = face < 0 ? 2 : 3;
+    }
+    cellSide_[i] = side;
+    queue_.update(2 * i + 1, now + best);
 }
 
 double ExactStepper::effectiveRestitution(double impactSpeed) const {
@@ -248,7 +260,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     Body& b = bodies_[j];
     if (b.count != ev.partnerCount) {
         ++stats_.stale;  // j changed course after this was predicted
-        predict(i, ev.time);
+        predictCollision(i, ev.time);
         return;
     }
     ++stats_.pairs;
@@ -278,8 +290,10 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         if (a.w == 0.0) ++b.heldHits;
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
     }
-    predict(i, ev.time);
-    predict(j, ev.time);
+    predictCollision(i, ev.time);
+    predictCollision(j, ev.time);
+    predictCell(i, ev.time);
+    predictCell(j, ev.time);
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -311,29 +325,55 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
     }
     ++a.count;
-    predict(i, ev.time);
+    predictCollision(i, ev.time);
+    predictCell(i, ev.time);
 }
 
-void ExactStepper::handleCell(std::uint32_t i, const Event& ev) {
+void ExactStepper::handleCell(std::uint32_t i, double now) {
     Cold& a = cold_[i];
     ++stats_.cells;
-    switch (ev.side) {
+    // The cells that just came into i's 3 × 3 neighbourhood: the far column (or row) in the
+    // direction of motion. Everything else around i was searched by its last full prediction,
+    // whose earliest result is still scheduled, so only these three can bring an earlier event.
+    std::int64_t fx[3], fy[3];
+    switch (cellSide_[i]) {
         case 0:
             --a.kx;
+            fx[0] = fx[1] = fx[2] = a.kx - 1;
+            fy[0] = a.ky - 1, fy[1] = a.ky, fy[2] = a.ky + 1;
             break;
         case 1:
             ++a.kx;
+            fx[0] = fx[1] = fx[2] = a.kx + 1;
+            fy[0] = a.ky - 1, fy[1] = a.ky, fy[2] = a.ky + 1;
             break;
         case 2:
             --a.ky;
+            fy[0] = fy[1] = fy[2] = a.ky - 1;
+            fx[0] = a.kx - 1, fx[1] = a.kx, fx[2] = a.kx + 1;
             break;
         default:
             ++a.ky;
+            fy[0] = fy[1] = fy[2] = a.ky + 1;
+            fx[0] = a.kx - 1, fx[1] = a.kx, fx[2] = a.kx + 1;
             break;
     }
     cells_.erase(i);
     cells_.insert(i, cells_.cell(a.kx, a.ky));
-    predict(i, ev.time);
+    predictCell(i, now);
+
+    const Body& b = bodies_[i];
+    const double h = now - b.t;
+    const double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
+    Event best = coll_[i];
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t c = cells_.cell(fx[k], fy[k]);
+        if (c != CellList::kNone) scanCell(i, now, ax, ay, c, best);
+    }
+    if (best.time < coll_[i].time) {
+        coll_[i] = best;
+        queue_.update(2 * i, best.time);
+    }
 }
 
 void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
@@ -346,16 +386,18 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
             stale_ = true;  // fly the rest freely; the next step rebuilds
             break;
         }
-        const Event ev = events_[top.particle];
+        const std::uint32_t i = top.key / 2;
+        if (top.key % 2 == 1) {
+            handleCell(i, top.time);
+            continue;
+        }
+        const Event ev = coll_[i];
         switch (ev.kind) {
             case Kind::Pair:
-                handlePair(top.particle, ev, counters);
+                handlePair(i, ev, counters);
                 break;
             case Kind::Wall:
-                handleWall(top.particle, ev, counters);
-                break;
-            case Kind::Cell:
-                handleCell(top.particle, ev);
+                handleWall(i, ev, counters);
                 break;
             case Kind::None:
                 return;  // unreachable: None events are at +infinity

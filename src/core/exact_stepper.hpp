@@ -128,7 +128,7 @@ class ExactStepper {
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
 
   private:
-    enum class Kind : std::uint8_t { None, Pair, Wall, Cell };
+    enum class Kind : std::uint8_t { None, Pair, Wall };
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
@@ -152,7 +152,7 @@ class ExactStepper {
         std::uint32_t partner;       // pair: the other particle
         std::uint32_t partnerCount;  // pair: its counter when predicted
         Kind kind;
-        std::int8_t side;  // wall: 0..3 (left, right, top, bottom); cell: 0..3 (-x, +x, -y, +y)
+        std::int8_t side;  // wall: 0..3 (left, right, top, bottom)
     };
 
     [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
@@ -160,10 +160,13 @@ class ExactStepper {
     void setUpGrid();
     void sortByCell();
     void advance(Body& b, double t) const;
-    void predict(std::uint32_t i, double now);
+    void scanCell(std::uint32_t i, double now, double ax, double ay, std::uint32_t c,
+                  Event& best) const;
+    void predictCollision(std::uint32_t i, double now);
+    void predictCell(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
-    void handleCell(std::uint32_t i, const Event& ev);
+    void handleCell(std::uint32_t i, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
     void sync(ParticleArrays& p, double t);
@@ -176,7 +179,8 @@ class ExactStepper {
     std::vector<Body> bodies_;
     std::vector<Cold> cold_;
     std::vector<std::uint32_t> order_;
-    std::vector<Event> events_;
+    std::vector<Event> coll_;            // each particle's next collision (pair or wall)
+    std::vector<std::int8_t> cellSide_;  // the face its next cell event crosses: -x, +x, -y, +y
     std::vector<ParticleId> ids_;
     CellList cells_;
     EventQueue queue_;

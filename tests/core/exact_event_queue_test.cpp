@@ -27,7 +27,7 @@ TEST(ExactEventQueue, TopIsTheEarliestEventAfterAnySequenceOfUpdates) {
         q.update(i, time[i]);
         const auto best = std::min_element(time.begin(), time.end());
         ASSERT_EQ(q.top().time, *best);
-        ASSERT_EQ(q.top().particle, static_cast<std::uint32_t>(best - time.begin()));
+        ASSERT_EQ(q.top().key, static_cast<std::uint32_t>(best - time.begin()));
         ASSERT_EQ(q.timeOf(i), time[i]);
     }
 }
@@ -39,8 +39,8 @@ TEST(ExactEventQueue, SimultaneousEventsComeOutInIndexOrder) {
         q.update(i, 2.5);
     std::vector<std::uint32_t> order;
     while (q.top().time == 2.5) {
-        order.push_back(q.top().particle);
-        q.update(q.top().particle, kInf);
+        order.push_back(q.top().key);
+        q.update(q.top().key, kInf);
     }
     EXPECT_EQ(order, (std::vector<std::uint32_t>{1, 3, 4, 5}));
 }
@@ -52,9 +52,9 @@ TEST(ExactEventQueue, PostponingTheTopRevealsTheNext) {
     q.update(1, 2.0);
     q.update(2, 3.0);
     q.update(0, 5.0);
-    EXPECT_EQ(q.top().particle, 1u);
+    EXPECT_EQ(q.top().key, 1u);
     q.update(2, 0.5);
-    EXPECT_EQ(q.top().particle, 2u);
+    EXPECT_EQ(q.top().key, 2u);
 }
 
 }  // namespace
