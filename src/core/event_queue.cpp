@@ -1,25 +1,147 @@
 #include "event_queue.hpp"
 
+#include <cmath>
+#include <limits>
+
 namespace psb::exact {
 
-void EventQueue::reset(std::uint32_t n, double time) {
-    heap_.resize(n);
-    slot_.resize(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        heap_[i] = {time, i};
-        slot_[i] = i;
-    }
+namespace {
+constexpr double kInf = std::numeric_limits<double>::infinity();
+}  // namespace
+
+void EventQueue::reset(std::uint32_t n, double bucketWidth, double origin) {
+    width_ = (std::isfinite(bucketWidth) && bucketWidth > 0.0) ? bucketWidth : 1.0;
+    origin_ = origin;
+    cur_ = 0;
+    time_.assign(n, kInf);
+    where_.assign(n, Where::Nowhere);
+    slot_.assign(n, 0);
+    heap_.clear();
+    buckets_.resize(kBuckets);
+    for (auto& b : buckets_)
+        b.clear();
+    overflow_.clear();
+    listed_ = 0;
+}
+
+std::int64_t EventQueue::bucketOf(double t) const {
+    const double b = std::floor((t - origin_) / width_);
+    // Far future (or past the range of the integers) is overflow; the past is the current
+    // bucket (callers never schedule before the last event taken, but rounding may).
+    constexpr double kFar = 4.0e18;
+    if (!(b < kFar)) return std::numeric_limits<std::int64_t>::max();
+    return static_cast<std::int64_t>(b);
 }
 
 void EventQueue::update(std::uint32_t i, double time) {
-    const std::uint32_t k = slot_[i];
-    const double old = heap_[k].time;
-    heap_[k].time = time;
-    if (time < old) {
-        siftUp(k);
-    } else {
-        siftDown(k);
+    if (where_[i] == Where::Heap) {
+        if (time != kInf && bucketOf(time) <= cur_) {
+            // Stays in the heap: re-key in place.
+            const std::uint32_t k = slot_[i];
+            const double old = heap_[k].time;
+            heap_[k].time = time;
+            time_[i] = time;
+            if (time < old) {
+                siftUp(k);
+            } else {
+                siftDown(k);
+            }
+            return;
+        }
+        heapRemove(i);
     }
+    // An entry left in a bucket or overflow list is now stale; it is skipped when drained.
+    where_[i] = Where::Nowhere;
+    time_[i] = time;
+    place(i);
+}
+
+void EventQueue::place(std::uint32_t i) {
+    const double t = time_[i];
+    if (t == kInf) {
+        where_[i] = Where::Nowhere;
+        return;
+    }
+    const std::int64_t b = bucketOf(t);
+    if (b <= cur_) {
+        heapPush(i);
+    } else if (b - cur_ < kBuckets) {
+        buckets_[static_cast<std::size_t>(b % kBuckets)].push_back(i);
+        where_[i] = Where::Bucket;
+        ++listed_;
+    } else {
+        overflow_.push_back(i);
+        where_[i] = Where::Overflow;
+    }
+}
+
+EventQueue::Entry EventQueue::top() {
+    while (heap_.empty()) {
+        if (!advance()) return {kInf, 0};
+    }
+    return heap_[0];
+}
+
+bool EventQueue::advance() {
+    if (listed_ == 0) {
+        // Nothing in the calendar: jump straight to the earliest overflow bucket.
+        std::int64_t first = std::numeric_limits<std::int64_t>::max();
+        for (std::uint32_t i : overflow_) {
+            if (where_[i] == Where::Overflow) {
+                const std::int64_t b = bucketOf(time_[i]);
+                if (b < first) first = b;
+            }
+        }
+        if (first == std::numeric_limits<std::int64_t>::max()) {
+            overflow_.clear();
+            return false;
+        }
+        cur_ = first;
+        redistributeOverflow();
+        return true;
+    }
+    ++cur_;
+    // The window now reaches one bucket further; an overflow entry always lies at least a
+    // full turn after the bucket current when it was filed, so checking at each turn suffices.
+    if (cur_ % kBuckets == 0) redistributeOverflow();
+    std::vector<std::uint32_t>& list = buckets_[static_cast<std::size_t>(cur_ % kBuckets)];
+    listed_ -= list.size();
+    for (std::uint32_t i : list) {
+        if (where_[i] == Where::Bucket && bucketOf(time_[i]) == cur_) heapPush(i);
+    }
+    list.clear();
+    return true;
+}
+
+void EventQueue::redistributeOverflow() {
+    std::vector<std::uint32_t> waiting;
+    waiting.swap(overflow_);
+    for (std::uint32_t i : waiting) {
+        if (where_[i] == Where::Overflow) {
+            where_[i] = Where::Nowhere;
+            place(i);
+        }
+    }
+}
+
+void EventQueue::heapPush(std::uint32_t i) {
+    where_[i] = Where::Heap;
+    heap_.push_back({time_[i], i});
+    const auto k = static_cast<std::uint32_t>(heap_.size() - 1);
+    slot_[i] = k;
+    siftUp(k);
+}
+
+void EventQueue::heapRemove(std::uint32_t i) {
+    const std::uint32_t k = slot_[i];
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    where_[i] = Where::Nowhere;
+    if (k == heap_.size()) return;
+    heap_[k] = last;
+    slot_[last.key] = k;
+    siftUp(k);
+    siftDown(slot_[last.key]);
 }
 
 void EventQueue::siftUp(std::uint32_t k) {
@@ -37,7 +159,7 @@ void EventQueue::siftUp(std::uint32_t k) {
 
 void EventQueue::siftDown(std::uint32_t k) {
     const Entry e = heap_[k];
-    const std::uint32_t n = size();
+    const auto n = static_cast<std::uint32_t>(heap_.size());
     for (;;) {
         const std::uint32_t first = 4 * k + 1;
         if (first >= n) break;

@@ -72,12 +72,25 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     for (std::uint32_t i = 0; i < n; ++i) {
         cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
     }
-    queue_.reset(2 * n, kNever);
+    queue_.reset(2 * n, bucketWidth());
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
         predictCell(i, 0.0);
     }
     stale_ = false;
+}
+
+double ExactStepper::bucketWidth() const {
+    // About 1/64 of the time a typical particle takes to cross a cell: the current bucket then
+    // holds a few percent of the 2N events, and the 256-bucket calendar spans ~4 crossings.
+    double v2 = 0.0;
+    for (const Body& b : bodies_)
+        v2 += b.vx * b.vx + b.vy * b.vy;
+    if (!(v2 > 0.0)) return 1.0;
+    const double vrms = std::sqrt(v2 / static_cast<double>(bodies_.size()));
+    const double side =
+        std::min(cells_.faceX(1) - cells_.faceX(0), cells_.faceY(1) - cells_.faceY(0));
+    return side / vrms / 64.0;
 }
 
 void ExactStepper::sortByCell() {
@@ -378,7 +391,7 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
 
 void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
     std::uint64_t processed = 0;
-    while (!queue_.empty()) {
+    for (;;) {
         const EventQueue::Entry top = queue_.top();
         if (!(top.time <= tEnd)) break;
         if (++processed > budget) {

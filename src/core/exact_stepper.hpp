@@ -11,7 +11,7 @@
 //     │
 //     ├─ event loop, while the earliest event is at or before t + dt:
 //     │
-//     │     EventQueue (4-ary heap, one entry per particle, ordered by (time, index))
+//     │     EventQueue (calendar + 4-ary heap, two keys per particle, ordered by (time, key))
 //     │        │ top = particle i, its one event:
 //     │        ▼
 //     │     ┌──────────────┬───────────────────────────────────────────────────────────────┐
@@ -159,6 +159,7 @@ class ExactStepper {
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void setUpGrid();
     void sortByCell();
+    [[nodiscard]] double bucketWidth() const;
     void advance(Body& b, double t) const;
     void scanCell(std::uint32_t i, double now, double ax, double ay, std::uint32_t c,
                   Event& best) const;
