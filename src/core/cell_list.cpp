@@ -1,5 +1,6 @@
 #include "cell_list.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace psb::exact {
@@ -42,6 +43,13 @@ std::uint32_t CellList::cell(std::int64_t kx, std::int64_t ky) const {
         return kNone;
     }
     return static_cast<std::uint32_t>(ky * nx_ + kx);
+}
+
+void CellList::clearMembers() {
+    std::fill(head_.begin(), head_.end(), kNone);
+    std::fill(next_.begin(), next_.end(), kNone);
+    std::fill(prev_.begin(), prev_.end(), kNone);
+    std::fill(cellOf_.begin(), cellOf_.end(), kNone);
 }
 
 void CellList::insert(std::uint32_t i, std::uint32_t c) {

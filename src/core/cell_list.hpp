@@ -47,6 +47,8 @@ class CellList {
     /// Cell index of coordinates (kx, ky), or kNone if outside a non-wrapping grid.
     [[nodiscard]] std::uint32_t cell(std::int64_t kx, std::int64_t ky) const;
 
+    /// Empties every cell, keeping the geometry.
+    void clearMembers();
     void insert(std::uint32_t i, std::uint32_t cell);
     void erase(std::uint32_t i);
     [[nodiscard]] std::uint32_t head(std::uint32_t cell) const { return head_[cell]; }

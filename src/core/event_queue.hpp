@@ -44,6 +44,7 @@ class EventQueue {
     /// The earliest entry; time +infinity when no key has a finite time.
     [[nodiscard]] Entry top();
     [[nodiscard]] double timeOf(std::uint32_t i) const { return time_[i]; }
+    [[nodiscard]] double bucketWidth() const { return width_; }
 
   private:
     enum class Where : std::uint8_t { Nowhere, Heap, Bucket, Overflow };

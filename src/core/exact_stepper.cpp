@@ -18,6 +18,8 @@ constexpr double kCellSlack = 1.0 + 1e-9;
 // Target cell side, in mean particle spacings sqrt(area / N). Larger cells mean fewer
 // cell-face events but more pair tests per prediction; measured on the dilute-gas benchmark.
 constexpr double kCellSpacings = 1.0;
+// Events per particle between two re-sorts of the particles into cell order.
+constexpr std::uint64_t kResortEvery = 8;
 
 template <typename T>
 bool sameArray(const std::vector<T>& a, const std::vector<T>& b) {
@@ -42,8 +44,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     bodies_.resize(n);
     cold_.resize(n);
     order_.resize(n);
-    coll_.assign(n, Event{kNever, 0, 0, Kind::None, 0});
-    cellSide_.assign(n, 0);
+    coll_.clear();
+    cellSide_.clear();
     ids_ = p.id;
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
@@ -69,6 +71,9 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     }
     setUpGrid();
     sortByCell();
+    coll_.assign(n, Event{kNever, 0, 0, Kind::None, 0});
+    cellSide_.assign(n, 0);
+    eventsSinceSort_ = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
     }
@@ -96,28 +101,43 @@ double ExactStepper::bucketWidth() const {
 void ExactStepper::sortByCell() {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     const auto cellCount = static_cast<std::size_t>(cells_.nx() * cells_.ny());
-    std::vector<std::uint32_t> start(cellCount + 1, 0), cellOf(n);
+    std::vector<std::uint32_t> start(cellCount + 1, 0), cellOf(n), to(n);
     for (std::uint32_t i = 0; i < n; ++i) {
         cellOf[i] = cells_.cell(cold_[i].kx, cold_[i].ky);
         ++start[cellOf[i] + 1];
     }
     for (std::size_t c = 0; c < cellCount; ++c)
         start[c + 1] += start[c];
-    std::vector<Body> bodies(n);
-    std::vector<Cold> cold(n);
-    std::vector<std::uint32_t> order(n);
-    std::vector<ParticleId> ids(n);
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint32_t k = start[cellOf[i]]++;
-        bodies[k] = bodies_[i];
-        cold[k] = cold_[i];
-        order[k] = order_[i];
-        ids[k] = ids_[i];
+    for (std::uint32_t i = 0; i < n; ++i)
+        to[i] = start[cellOf[i]]++;
+    const auto permute = [&](auto& v) {
+        std::remove_reference_t<decltype(v)> out(v.size());
+        for (std::uint32_t i = 0; i < n; ++i)
+            out[to[i]] = v[i];
+        v.swap(out);
+    };
+    permute(bodies_);
+    permute(cold_);
+    permute(order_);
+    permute(ids_);
+    if (coll_.size() == n) {
+        // Mid-run (a re-sort): carry the scheduled events over to the new indices.
+        std::vector<double> times(2 * static_cast<std::size_t>(n));
+        for (std::uint32_t i = 0; i < n; ++i) {
+            times[2 * to[i]] = queue_.timeOf(2 * i);
+            times[2 * to[i] + 1] = queue_.timeOf(2 * i + 1);
+            if (coll_[i].kind == Kind::Pair) coll_[i].partner = to[coll_[i].partner];
+        }
+        permute(coll_);
+        permute(cellSide_);
+        queue_.reset(2 * n, queue_.bucketWidth());
+        for (std::uint32_t k = 0; k < 2 * n; ++k)
+            queue_.update(k, times[k]);
+        cells_.clearMembers();
+        for (std::uint32_t i = 0; i < n; ++i) {
+            cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
+        }
     }
-    bodies_.swap(bodies);
-    cold_.swap(cold);
-    order_.swap(order);
-    ids_.swap(ids);
 }
 
 void ExactStepper::setUpGrid() {
@@ -398,6 +418,14 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
             stats_.budgetExhausted = true;
             stale_ = true;  // fly the rest freely; the next step rebuilds
             break;
+        }
+        if (++eventsSinceSort_ > kResortEvery * bodies_.size()) {
+            // Particles drift away from the neighbours they were stored next to; restoring
+            // cell order keeps each 3 × 3 search in a few cache lines. Indices only change:
+            // no position, velocity or event time is touched.
+            sortByCell();
+            eventsSinceSort_ = 0;
+            continue;
         }
         const std::uint32_t i = top.key / 2;
         if (top.key % 2 == 1) {

@@ -185,6 +185,7 @@ class ExactStepper {
     std::vector<ParticleId> ids_;
     CellList cells_;
     EventQueue queue_;
+    std::uint64_t eventsSinceSort_ = 0;
     double maxOverlap_ = 0.0;
     EventStats stats_;
     std::vector<CollisionRecord>* log_ = nullptr;
