@@ -15,9 +15,7 @@ void CellList::reset(double ox, double oy, double sx, double sy, std::int64_t nx
     ny_ = ny;
     wrap_ = wrap;
     head_.assign(static_cast<std::size_t>(nx * ny), kNone);
-    next_.assign(n, kNone);
-    prev_.assign(n, kNone);
-    cellOf_.assign(n, kNone);
+    link_.assign(n, Link{kNone, kNone, kNone});
 }
 
 std::int64_t CellList::coord(double v, double o, double s, std::int64_t n) const {
@@ -47,30 +45,25 @@ std::uint32_t CellList::cell(std::int64_t kx, std::int64_t ky) const {
 
 void CellList::clearMembers() {
     std::fill(head_.begin(), head_.end(), kNone);
-    std::fill(next_.begin(), next_.end(), kNone);
-    std::fill(prev_.begin(), prev_.end(), kNone);
-    std::fill(cellOf_.begin(), cellOf_.end(), kNone);
+    std::fill(link_.begin(), link_.end(), Link{kNone, kNone, kNone});
 }
 
 void CellList::insert(std::uint32_t i, std::uint32_t c) {
     const std::uint32_t h = head_[c];
-    next_[i] = h;
-    prev_[i] = kNone;
-    if (h != kNone) prev_[h] = i;
+    link_[i] = {h, kNone, c};
+    if (h != kNone) link_[h].prev = i;
     head_[c] = i;
-    cellOf_[i] = c;
 }
 
 void CellList::erase(std::uint32_t i) {
-    const std::uint32_t c = cellOf_[i];
-    const std::uint32_t a = prev_[i], b = next_[i];
-    if (a != kNone) {
-        next_[a] = b;
+    const Link l = link_[i];
+    if (l.prev != kNone) {
+        link_[l.prev].next = l.next;
     } else {
-        head_[c] = b;
+        head_[l.cell] = l.next;
     }
-    if (b != kNone) prev_[b] = a;
-    cellOf_[i] = kNone;
+    if (l.next != kNone) link_[l.next].prev = l.prev;
+    link_[i].cell = kNone;
 }
 
 }  // namespace psb::exact

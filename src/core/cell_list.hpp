@@ -52,7 +52,7 @@ class CellList {
     void insert(std::uint32_t i, std::uint32_t cell);
     void erase(std::uint32_t i);
     [[nodiscard]] std::uint32_t head(std::uint32_t cell) const { return head_[cell]; }
-    [[nodiscard]] std::uint32_t next(std::uint32_t i) const { return next_[i]; }
+    [[nodiscard]] std::uint32_t next(std::uint32_t i) const { return link_[i].next; }
 
   private:
     [[nodiscard]] std::int64_t coord(double v, double o, double s, std::int64_t n) const;
@@ -61,7 +61,10 @@ class CellList {
     std::int64_t nx_ = 1, ny_ = 1;
     bool wrap_ = false;
     std::vector<std::uint32_t> head_;
-    std::vector<std::uint32_t> next_, prev_, cellOf_;
+    struct Link {
+        std::uint32_t next, prev, cell;  // neighbours in the cell's list, and the cell
+    };
+    std::vector<Link> link_;  // one line holds a particle's whole membership
 };
 
 }  // namespace psb::exact

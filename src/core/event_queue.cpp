@@ -13,9 +13,7 @@ void EventQueue::reset(std::uint32_t n, double bucketWidth, double origin) {
     width_ = (std::isfinite(bucketWidth) && bucketWidth > 0.0) ? bucketWidth : 1.0;
     origin_ = origin;
     cur_ = 0;
-    time_.assign(n, kInf);
-    where_.assign(n, Where::Nowhere);
-    slot_.assign(n, 0);
+    rec_.assign(n, Record{kInf, 0, Where::Nowhere});
     heap_.clear();
     buckets_.resize(kBuckets);
     for (auto& b : buckets_)
@@ -34,13 +32,13 @@ std::int64_t EventQueue::bucketOf(double t) const {
 }
 
 void EventQueue::update(std::uint32_t i, double time) {
-    if (where_[i] == Where::Heap) {
+    if (rec_[i].where == Where::Heap) {
         if (time != kInf && bucketOf(time) <= cur_) {
             // Stays in the heap: re-key in place.
-            const std::uint32_t k = slot_[i];
+            const std::uint32_t k = rec_[i].slot;
             const double old = heap_[k].time;
             heap_[k].time = time;
-            time_[i] = time;
+            rec_[i].time = time;
             if (time < old) {
                 siftUp(k);
             } else {
@@ -51,15 +49,15 @@ void EventQueue::update(std::uint32_t i, double time) {
         heapRemove(i);
     }
     // An entry left in a bucket or overflow list is now stale; it is skipped when drained.
-    where_[i] = Where::Nowhere;
-    time_[i] = time;
+    rec_[i].where = Where::Nowhere;
+    rec_[i].time = time;
     place(i);
 }
 
 void EventQueue::place(std::uint32_t i) {
-    const double t = time_[i];
+    const double t = rec_[i].time;
     if (t == kInf) {
-        where_[i] = Where::Nowhere;
+        rec_[i].where = Where::Nowhere;
         return;
     }
     const std::int64_t b = bucketOf(t);
@@ -67,11 +65,11 @@ void EventQueue::place(std::uint32_t i) {
         heapPush(i);
     } else if (b - cur_ < kBuckets) {
         buckets_[static_cast<std::size_t>(b % kBuckets)].push_back(i);
-        where_[i] = Where::Bucket;
+        rec_[i].where = Where::Bucket;
         ++listed_;
     } else {
         overflow_.push_back(i);
-        where_[i] = Where::Overflow;
+        rec_[i].where = Where::Overflow;
     }
 }
 
@@ -87,8 +85,8 @@ bool EventQueue::advance() {
         // Nothing in the calendar: jump straight to the earliest overflow bucket.
         std::int64_t first = std::numeric_limits<std::int64_t>::max();
         for (std::uint32_t i : overflow_) {
-            if (where_[i] == Where::Overflow) {
-                const std::int64_t b = bucketOf(time_[i]);
+            if (rec_[i].where == Where::Overflow) {
+                const std::int64_t b = bucketOf(rec_[i].time);
                 if (b < first) first = b;
             }
         }
@@ -107,7 +105,7 @@ bool EventQueue::advance() {
     std::vector<std::uint32_t>& list = buckets_[static_cast<std::size_t>(cur_ % kBuckets)];
     listed_ -= list.size();
     for (std::uint32_t i : list) {
-        if (where_[i] == Where::Bucket && bucketOf(time_[i]) == cur_) heapPush(i);
+        if (rec_[i].where == Where::Bucket && bucketOf(rec_[i].time) == cur_) heapPush(i);
     }
     list.clear();
     return true;
@@ -117,31 +115,31 @@ void EventQueue::redistributeOverflow() {
     std::vector<std::uint32_t> waiting;
     waiting.swap(overflow_);
     for (std::uint32_t i : waiting) {
-        if (where_[i] == Where::Overflow) {
-            where_[i] = Where::Nowhere;
+        if (rec_[i].where == Where::Overflow) {
+            rec_[i].where = Where::Nowhere;
             place(i);
         }
     }
 }
 
 void EventQueue::heapPush(std::uint32_t i) {
-    where_[i] = Where::Heap;
-    heap_.push_back({time_[i], i});
+    rec_[i].where = Where::Heap;
+    heap_.push_back({rec_[i].time, i});
     const auto k = static_cast<std::uint32_t>(heap_.size() - 1);
-    slot_[i] = k;
+    rec_[i].slot = k;
     siftUp(k);
 }
 
 void EventQueue::heapRemove(std::uint32_t i) {
-    const std::uint32_t k = slot_[i];
+    const std::uint32_t k = rec_[i].slot;
     const Entry last = heap_.back();
     heap_.pop_back();
-    where_[i] = Where::Nowhere;
+    rec_[i].where = Where::Nowhere;
     if (k == heap_.size()) return;
     heap_[k] = last;
-    slot_[last.key] = k;
+    rec_[last.key].slot = k;
     siftUp(k);
-    siftDown(slot_[last.key]);
+    siftDown(rec_[last.key].slot);
 }
 
 void EventQueue::siftUp(std::uint32_t k) {
@@ -150,11 +148,11 @@ void EventQueue::siftUp(std::uint32_t k) {
         const std::uint32_t parent = (k - 1) / 4;
         if (!before(e, heap_[parent])) break;
         heap_[k] = heap_[parent];
-        slot_[heap_[k].key] = k;
+        rec_[heap_[k].key].slot = k;
         k = parent;
     }
     heap_[k] = e;
-    slot_[e.key] = k;
+    rec_[e.key].slot = k;
 }
 
 void EventQueue::siftDown(std::uint32_t k) {
@@ -170,11 +168,11 @@ void EventQueue::siftDown(std::uint32_t k) {
         }
         if (!before(heap_[best], e)) break;
         heap_[k] = heap_[best];
-        slot_[heap_[k].key] = k;
+        rec_[heap_[k].key].slot = k;
         k = best;
     }
     heap_[k] = e;
-    slot_[e.key] = k;
+    rec_[e.key].slot = k;
 }
 
 }  // namespace psb::exact

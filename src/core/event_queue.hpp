@@ -43,7 +43,7 @@ class EventQueue {
     void update(std::uint32_t i, double time);
     /// The earliest entry; time +infinity when no key has a finite time.
     [[nodiscard]] Entry top();
-    [[nodiscard]] double timeOf(std::uint32_t i) const { return time_[i]; }
+    [[nodiscard]] double timeOf(std::uint32_t i) const { return rec_[i].time; }
     [[nodiscard]] double bucketWidth() const { return width_; }
 
   private:
@@ -67,9 +67,12 @@ class EventQueue {
 
     double width_ = 1.0, origin_ = 0.0;
     std::int64_t cur_ = 0;  // the bucket whose events are in the heap
-    std::vector<double> time_;
-    std::vector<Where> where_;
-    std::vector<std::uint32_t> slot_;  // key -> position in heap_ (when Where::Heap)
+    struct Record {
+        double time;
+        std::uint32_t slot;  // position in heap_ (when Where::Heap)
+        Where where;
+    };
+    std::vector<Record> rec_;  // per key: 16 bytes, so a particle's two keys share a line
     std::vector<Entry> heap_;
     std::vector<std::vector<std::uint32_t>> buckets_;
     std::vector<std::uint32_t> overflow_;

@@ -44,14 +44,13 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     bodies_.resize(n);
     cold_.resize(n);
     order_.resize(n);
-    coll_.clear();
-    cellSide_.clear();
+
     ids_ = p.id;
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
         b = Body{p.x[i], p.y[i], p.vx[i], p.vy[i], 0.0, p.radius[i], p.invMass[i], 0, 0};
-        c = Cold{p.mass[i], 0, 0, false, false};
+        c = Cold{Event{kNever, 0, 0, Kind::None, 0}, p.mass[i], 0, 0, 0, false, false};
         order_[i] = i;
         if (def_.walls) {
             // Into the box, as the discrete mode's wall stage would; a particle too wide for
@@ -70,9 +69,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         }
     }
     setUpGrid();
-    sortByCell();
-    coll_.assign(n, Event{kNever, 0, 0, Kind::None, 0});
-    cellSide_.assign(n, 0);
+    sortByCell(false);
     eventsSinceSort_ = 0;
     for (std::uint32_t i = 0; i < n; ++i) {
         cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
@@ -98,7 +95,7 @@ double ExactStepper::bucketWidth() const {
     return side / vrms / 64.0;
 }
 
-void ExactStepper::sortByCell() {
+void ExactStepper::sortByCell(bool midRun) {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     const auto cellCount = static_cast<std::size_t>(cells_.nx() * cells_.ny());
     std::vector<std::uint32_t> start(cellCount + 1, 0), cellOf(n), to(n);
@@ -120,16 +117,16 @@ void ExactStepper::sortByCell() {
     permute(cold_);
     permute(order_);
     permute(ids_);
-    if (coll_.size() == n) {
-        // Mid-run (a re-sort): carry the scheduled events over to the new indices.
+    if (midRun) {
+        // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));
         for (std::uint32_t i = 0; i < n; ++i) {
             times[2 * to[i]] = queue_.timeOf(2 * i);
             times[2 * to[i] + 1] = queue_.timeOf(2 * i + 1);
-            if (coll_[i].kind == Kind::Pair) coll_[i].partner = to[coll_[i].partner];
         }
-        permute(coll_);
-        permute(cellSide_);
+        for (Cold& c : cold_) {
+            if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
+        }
         queue_.reset(2 * n, queue_.bucketWidth());
         for (std::uint32_t k = 0; k < 2 * n; ++k)
             queue_.update(k, times[k]);
@@ -250,7 +247,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
             if (c != CellList::kNone) scanCell(i, now, ax, ay, c, best);
         }
     }
-    coll_[i] = best;
+    cold_[i].coll = best;
     queue_.update(2 * i, best.time);
 }
 
@@ -277,7 +274,7 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
         best = ty;
         side = face < 0 ? 2 : 3;
     }
-    cellSide_[i] = side;
+    cold_[i].cellSide = side;
     queue_.update(2 * i + 1, now + best);
 }
 
@@ -369,7 +366,7 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     // direction of motion. Everything else around i was searched by its last full prediction,
     // whose earliest result is still scheduled, so only these three can bring an earlier event.
     std::int64_t fx[3], fy[3];
-    switch (cellSide_[i]) {
+    switch (cold_[i].cellSide) {
         case 0:
             --a.kx;
             fx[0] = fx[1] = fx[2] = a.kx - 1;
@@ -398,13 +395,13 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     const Body& b = bodies_[i];
     const double h = now - b.t;
     const double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
-    Event best = coll_[i];
+    Event best = cold_[i].coll;
     for (int k = 0; k < 3; ++k) {
         const std::uint32_t c = cells_.cell(fx[k], fy[k]);
         if (c != CellList::kNone) scanCell(i, now, ax, ay, c, best);
     }
-    if (best.time < coll_[i].time) {
-        coll_[i] = best;
+    if (best.time < cold_[i].coll.time) {
+        cold_[i].coll = best;
         queue_.update(2 * i, best.time);
     }
 }
@@ -423,7 +420,7 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
             // Particles drift away from the neighbours they were stored next to; restoring
             // cell order keeps each 3 × 3 search in a few cache lines. Indices only change:
             // no position, velocity or event time is touched.
-            sortByCell();
+            sortByCell(true);
             eventsSinceSort_ = 0;
             continue;
         }
@@ -432,7 +429,7 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
             handleCell(i, top.time);
             continue;
         }
-        const Event ev = coll_[i];
+        const Event ev = cold_[i].coll;
         switch (ev.kind) {
             case Kind::Pair:
                 handlePair(i, ev, counters);

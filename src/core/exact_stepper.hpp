@@ -140,13 +140,6 @@ class ExactStepper {
         std::uint32_t count;     // bumped at every velocity change
         std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
     };
-    // What only the particle's own events read.
-    struct Cold {
-        double m;             // mass
-        std::int64_t kx, ky;  // cell coordinates
-        bool pinX, pinY;      // does not fit between the walls along this axis
-    };
-
     struct Event {
         double time;
         std::uint32_t partner;       // pair: the other particle
@@ -155,10 +148,19 @@ class ExactStepper {
         std::int8_t side;  // wall: 0..3 (left, right, top, bottom)
     };
 
+    // What only the particle's own events read, in one line.
+    struct alignas(64) Cold {
+        Event coll;            // its next collision (pair or wall)
+        double m;              // mass
+        std::int64_t kx, ky;   // cell coordinates
+        std::int8_t cellSide;  // the face its next cell event crosses: -x, +x, -y, +y
+        bool pinX, pinY;       // does not fit between the walls along this axis
+    };
+
     [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void setUpGrid();
-    void sortByCell();
+    void sortByCell(bool midRun);
     [[nodiscard]] double bucketWidth() const;
     void advance(Body& b, double t) const;
     void scanCell(std::uint32_t i, double now, double ax, double ay, std::uint32_t c,
@@ -180,8 +182,6 @@ class ExactStepper {
     std::vector<Body> bodies_;
     std::vector<Cold> cold_;
     std::vector<std::uint32_t> order_;
-    std::vector<Event> coll_;            // each particle's next collision (pair or wall)
-    std::vector<std::int8_t> cellSide_;  // the face its next cell event crosses: -x, +x, -y, +y
     std::vector<ParticleId> ids_;
     CellList cells_;
     EventQueue queue_;
