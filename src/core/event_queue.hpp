@@ -44,6 +44,20 @@ class EventQueue {
     /// The earliest entry; time +infinity when no key has a finite time.
     [[nodiscard]] Entry top();
     [[nodiscard]] double timeOf(std::uint32_t i) const { return rec_[i].time; }
+    /// The key most likely to come out after top() (the earliest child of the heap's root), or
+    /// UINT32_MAX; a hint for prefetching, valid until the next update.
+    [[nodiscard]] std::uint32_t likelyNext() const {
+        const auto n = static_cast<std::uint32_t>(heap_.size());
+        std::uint32_t best = UINT32_MAX;
+        double t = 0.0;
+        for (std::uint32_t c = 1; c < 5 && c < n; ++c) {
+            if (best == UINT32_MAX || heap_[c].time < t) {
+                best = heap_[c].key;
+                t = heap_[c].time;
+            }
+        }
+        return best;
+    }
     [[nodiscard]] double bucketWidth() const { return width_; }
 
   private:

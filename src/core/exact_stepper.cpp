@@ -424,6 +424,12 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
             eventsSinceSort_ = 0;
             continue;
         }
+        // Events come in time order, which is random in space: the next particle's lines are
+        // almost never in cache. Start fetching them while this event is handled.
+        if (const std::uint32_t next = queue_.likelyNext(); next != UINT32_MAX) {
+            __builtin_prefetch(&bodies_[next / 2]);
+            __builtin_prefetch(&cold_[next / 2]);
+        }
         const std::uint32_t i = top.key / 2;
         if (top.key % 2 == 1) {
             handleCell(i, top.time);
