@@ -31,18 +31,6 @@ std::int64_t CellList::coord(double v, double o, double s, std::int64_t n) const
     return static_cast<std::int64_t>(k);
 }
 
-std::uint32_t CellList::cell(std::int64_t kx, std::int64_t ky) const {
-    if (wrap_) {
-        kx %= nx_;
-        if (kx < 0) kx += nx_;
-        ky %= ny_;
-        if (ky < 0) ky += ny_;
-    } else if (kx < 0 || kx >= nx_ || ky < 0 || ky >= ny_) {
-        return kNone;
-    }
-    return static_cast<std::uint32_t>(ky * nx_ + kx);
-}
-
 void CellList::clearMembers() {
     std::fill(head_.begin(), head_.end(), kNone);
     std::fill(link_.begin(), link_.end(), Link{kNone, kNone, kNone});

@@ -45,7 +45,17 @@ class CellList {
     [[nodiscard]] bool wraps() const { return wrap_; }
 
     /// Cell index of coordinates (kx, ky), or kNone if outside a non-wrapping grid.
-    [[nodiscard]] std::uint32_t cell(std::int64_t kx, std::int64_t ky) const;
+    [[nodiscard]] std::uint32_t cell(std::int64_t kx, std::int64_t ky) const {
+        if (wrap_) {
+            kx %= nx_;
+            if (kx < 0) kx += nx_;
+            ky %= ny_;
+            if (ky < 0) ky += ny_;
+        } else if (kx < 0 || kx >= nx_ || ky < 0 || ky >= ny_) {
+            return kNone;
+        }
+        return static_cast<std::uint32_t>(ky * nx_ + kx);
+    }
 
     /// Empties every cell, keeping the geometry.
     void clearMembers();

@@ -193,22 +193,44 @@ void ExactStepper::advance(Body& b, double t) const {
     }
 }
 
-void ExactStepper::scanCell(std::uint32_t i, double now, double ax, double ay, std::uint32_t c,
-                            Event& best) const {
+void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
+                             const std::uint32_t* cells, int cellCount, Event& best) const {
     const Body& a = bodies_[i];
     const bool jammed = a.heldHits >= kJamLimit;
-    for (std::uint32_t j = cells_.head(c); j != CellList::kNone; j = cells_.next(j)) {
-        if (j == i) continue;
-        const Body& b = bodies_[j];
-        if (a.w == 0.0 && b.w == 0.0) continue;  // held particles pass through each other
-        if ((jammed && b.w == 0.0) || (a.w == 0.0 && b.heldHits >= kJamLimit)) continue;
-        const double h = now - b.t;
-        const double t = now + pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay, b.vx - a.vx,
-                                              b.vy - a.vy, a.r + b.r);
-        if (t < best.time ||
-            (t == best.time && t != kNever && best.kind == Kind::Pair && j < best.partner)) {
-            best = {t, j, b.count, Kind::Pair, 0};
+    // Gather the members first and prefetch their bodies, so that the cache misses of a whole
+    // neighbourhood overlap instead of following one another.
+    constexpr int kBatch = 32;
+    std::uint32_t members[kBatch];
+    int k = 0;
+    std::uint32_t j = CellList::kNone;
+    for (;;) {
+        int count = 0;
+        while (count < kBatch) {
+            if (j == CellList::kNone) {
+                if (k == cellCount) break;
+                j = cells_.head(cells[k++]);
+                continue;
+            }
+            if (j != i) {
+                members[count++] = j;
+                __builtin_prefetch(&bodies_[j]);
+            }
+            j = cells_.next(j);
         }
+        for (int m = 0; m < count; ++m) {
+            const std::uint32_t q = members[m];
+            const Body& b = bodies_[q];
+            if (a.w == 0.0 && b.w == 0.0) continue;  // held particles pass through each other
+            if ((jammed && b.w == 0.0) || (a.w == 0.0 && b.heldHits >= kJamLimit)) continue;
+            const double h = now - b.t;
+            const double t = now + pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay,
+                                                  b.vx - a.vx, b.vy - a.vy, a.r + b.r);
+            if (t < best.time ||
+                (t == best.time && t != kNever && best.kind == Kind::Pair && q < best.partner)) {
+                best = {t, q, b.count, Kind::Pair, 0};
+            }
+        }
+        if (count < kBatch) return;
     }
 }
 
@@ -241,12 +263,15 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
             if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
         }
     }
+    std::uint32_t around[9];
+    int count = 0;
     for (std::int64_t dy = -1; dy <= 1; ++dy) {
         for (std::int64_t dx = -1; dx <= 1; ++dx) {
             const std::uint32_t c = cells_.cell(ac.kx + dx, ac.ky + dy);
-            if (c != CellList::kNone) scanCell(i, now, ax, ay, c, best);
+            if (c != CellList::kNone) around[count++] = c;
         }
     }
+    scanCells(i, now, ax, ay, around, count, best);
     cold_[i].coll = best;
     queue_.update(2 * i, best.time);
 }
@@ -396,10 +421,13 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     const double h = now - b.t;
     const double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
     Event best = cold_[i].coll;
+    std::uint32_t fresh[3];
+    int count = 0;
     for (int k = 0; k < 3; ++k) {
         const std::uint32_t c = cells_.cell(fx[k], fy[k]);
-        if (c != CellList::kNone) scanCell(i, now, ax, ay, c, best);
+        if (c != CellList::kNone) fresh[count++] = c;
     }
+    scanCells(i, now, ax, ay, fresh, count, best);
     if (best.time < cold_[i].coll.time) {
         cold_[i].coll = best;
         queue_.update(2 * i, best.time);

@@ -163,8 +163,8 @@ class ExactStepper {
     void sortByCell(bool midRun);
     [[nodiscard]] double bucketWidth() const;
     void advance(Body& b, double t) const;
-    void scanCell(std::uint32_t i, double now, double ax, double ay, std::uint32_t c,
-                  Event& best) const;
+    void scanCells(std::uint32_t i, double now, double ax, double ay, const std::uint32_t* cells,
+                   int cellCount, Event& best) const;
     void predictCollision(std::uint32_t i, double now);
     void predictCell(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
