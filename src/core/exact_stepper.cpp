@@ -178,6 +178,13 @@ void ExactStepper::setUpGrid() {
         };
         cells_.reset(x0 - minSide, y0 - minSide, side, side, count(w), count(h), true, n);
     }
+    // A particle may stray a skin's width out of its cell before it is moved to the next one:
+    // two touching discs are then still at most one cell apart (side >= dmax + 2 skin), and a
+    // particle that has just moved is a skin's width inside its new cell, so it does not
+    // flicker back and forth across a face.
+    const double sx = cells_.faceX(1) - cells_.faceX(0), sy = cells_.faceY(1) - cells_.faceY(0);
+    skinX_ = std::max(0.0, 0.5 * (sx - minSide));
+    skinY_ = std::max(0.0, 0.5 * (sy - minSide));
     for (std::uint32_t i = 0; i < n; ++i) {
         cold_[i].kx = cells_.coordX(bodies_[i].x);
         cold_[i].ky = cells_.coordY(bodies_[i].y);
@@ -285,14 +292,16 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     std::int8_t side = 0;
     // With walls the outer faces are never crossed (the wall comes first).
     int face;
-    const double tx = slabExitTime(ax, a.vx, cells_.faceX(ac.kx), cells_.faceX(ac.kx + 1), face);
+    const double tx = slabExitTime(ax, a.vx, cells_.faceX(ac.kx) - skinX_,
+                                   cells_.faceX(ac.kx + 1) + skinX_, face);
     const bool outerX =
         !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
     if (face != 0 && !outerX) {
         best = tx;
         side = face < 0 ? 0 : 1;
     }
-    const double ty = slabExitTime(ay, a.vy, cells_.faceY(ac.ky), cells_.faceY(ac.ky + 1), face);
+    const double ty = slabExitTime(ay, a.vy, cells_.faceY(ac.ky) - skinY_,
+                                   cells_.faceY(ac.ky + 1) + skinY_, face);
     const bool outerY =
         !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
     if (face != 0 && !outerY && ty < best) {

@@ -184,6 +184,7 @@ class ExactStepper {
     std::vector<std::uint32_t> order_;
     std::vector<ParticleId> ids_;
     CellList cells_;
+    double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
     EventQueue queue_;
     std::uint64_t eventsSinceSort_ = 0;
     double maxOverlap_ = 0.0;
