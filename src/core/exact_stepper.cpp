@@ -49,8 +49,11 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
-        b = Body{p.x[i], p.y[i], p.vx[i], p.vy[i], 0.0, p.radius[i], p.invMass[i], 0, 0};
-        c = Cold{Event{kNever, 0, 0, Kind::None, 0}, p.mass[i], 0, 0, 0, false, false};
+        b = Body{p.x[i],  p.y[i], p.vx[i],
+                 p.vy[i], 0.0,    p.radius[i],
+                 kNever,  0,      p.invMass[i] == 0.0 ? kHeld : 0u};
+        c = Cold{
+            Event{kNever, 0, 0, Kind::None, 0}, p.mass[i], 0, 0, 0, false, false, 0, p.invMass[i]};
         order_[i] = i;
         if (def_.walls) {
             // Into the box, as the discrete mode's wall stage would; a particle too wide for
@@ -203,7 +206,7 @@ void ExactStepper::advance(Body& b, double t) const {
 void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                              const std::uint32_t* cells, int cellCount, Event& best) const {
     const Body& a = bodies_[i];
-    const bool jammed = a.heldHits >= kJamLimit;
+    const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
     // neighbourhood overlap instead of following one another.
     constexpr int kBatch = 32;
@@ -227,13 +230,17 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
         for (int m = 0; m < count; ++m) {
             const std::uint32_t q = members[m];
             const Body& b = bodies_[q];
-            if (a.w == 0.0 && b.w == 0.0) continue;  // held particles pass through each other
-            if ((jammed && b.w == 0.0) || (a.w == 0.0 && b.heldHits >= kJamLimit)) continue;
+            const bool bHeld = (b.flags & kHeld) != 0;
+            if (aHeld && bHeld) continue;  // held particles pass through each other
+            if ((aJammed && bHeld) || (aHeld && (b.flags & kJammed))) continue;
             const double h = now - b.t;
             const double t = now + pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay,
                                                   b.vx - a.vx, b.vy - a.vy, a.r + b.r);
-            if (t < best.time ||
-                (t == best.time && t != kNever && best.kind == Kind::Pair && q < best.partner)) {
+            // Only a collision before q's own scheduled collision can happen as predicted: at
+            // that time q changes course or is predicted again against everything around it,
+            // i included (Smallenburg 2022). Skipping later ones saves stale events.
+            if (!(t < b.nextColl)) continue;
+            if (t < best.time || (t == best.time && best.kind == Kind::Pair && q < best.partner)) {
                 best = {t, q, b.count, Kind::Pair, 0};
             }
         }
@@ -280,6 +287,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     }
     scanCells(i, now, ax, ay, around, count, best);
     cold_[i].coll = best;
+    bodies_[i].nextColl = best.time;
     queue_.update(2 * i, best.time);
 }
 
@@ -342,16 +350,16 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     const double approach = (a.vx - b.vx) * n.x + (a.vy - b.vy) * n.y;
     const double e = effectiveRestitution(approach);
     const bool hit = def_.friction > 0.0
-                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, a.w, b.w, cold_[i].m,
-                                              cold_[j].m, n, e, def_.friction)
-                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, a.w, b.w, cold_[i].m,
-                                               cold_[j].m, n, e, 0.0);
+                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
+                                              cold_[i].m, cold_[j].m, n, e, def_.friction)
+                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
+                                               cold_[i].m, cold_[j].m, n, e, 0.0);
     if (hit) {
         ++counters.collisions;
         ++a.count;
         ++b.count;
-        if (b.w == 0.0) ++a.heldHits;
-        if (a.w == 0.0) ++b.heldHits;
+        if ((b.flags & kHeld) && ++cold_[i].heldHits >= kJamLimit) a.flags |= kJammed;
+        if ((a.flags & kHeld) && ++cold_[j].heldHits >= kJamLimit) b.flags |= kJammed;
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
     }
     predictCollision(i, ev.time);
@@ -370,7 +378,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
     const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
     double dv = 0.0;
-    if (a.w == 0.0) {
+    if (a.flags & kHeld) {
         // A held particle stops moving across the wall; its owner sets its velocity again.
         if (outward * v > 0.0) v = 0.0;
     } else if (pinned) {
@@ -439,6 +447,7 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     scanCells(i, now, ax, ay, fresh, count, best);
     if (best.time < cold_[i].coll.time) {
         cold_[i].coll = best;
+        bodies_[i].nextColl = best.time;
         queue_.update(2 * i, best.time);
     }
 }
@@ -516,7 +525,9 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     }
     stats_ = {};
     for (Body& b : bodies_)
-        b.heldHits = 0;
+        b.flags &= ~kJammed;
+    for (Cold& c : cold_)
+        c.heldHits = 0;
     maxOverlap_ = counters.maxOverlap;
     const double tEnd = clock_ + dt;
     const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);

@@ -132,14 +132,16 @@ class ExactStepper {
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
-        double x, y;             // centre at time t, metres
-        double vx, vy;           // m/s
-        double t;                // time of the last velocity change (or rebuild), seconds
-        double r;                // radius
-        double w;                // inverse mass, 0 = held
-        std::uint32_t count;     // bumped at every velocity change
-        std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
+        double x, y;          // centre at time t, metres
+        double vx, vy;        // m/s
+        double t;             // time of the last velocity change (or rebuild), seconds
+        double r;             // radius
+        double nextColl;      // time of its scheduled collision event (see scanCells)
+        std::uint32_t count;  // bumped at every velocity change
+        std::uint32_t flags;  // kHeld, kJammed
     };
+    static constexpr std::uint32_t kHeld = 1;    // kinematic: infinite mass
+    static constexpr std::uint32_t kJammed = 2;  // passes through held particles (jam guard)
     struct Event {
         double time;
         std::uint32_t partner;       // pair: the other particle
@@ -150,11 +152,13 @@ class ExactStepper {
 
     // What only the particle's own events read, in one line.
     struct alignas(64) Cold {
-        Event coll;            // its next collision (pair or wall)
-        double m;              // mass
-        std::int64_t kx, ky;   // cell coordinates
-        std::int8_t cellSide;  // the face its next cell event crosses: -x, +x, -y, +y
-        bool pinX, pinY;       // does not fit between the walls along this axis
+        Event coll;              // its next collision (pair or wall)
+        double m;                // mass
+        std::int64_t kx, ky;     // cell coordinates
+        std::int8_t cellSide;    // the face its next cell event crosses: -x, +x, -y, +y
+        bool pinX, pinY;         // does not fit between the walls along this axis
+        std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
+        double w;                // inverse mass, 0 = held
     };
 
     [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
