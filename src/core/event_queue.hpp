@@ -44,6 +44,8 @@ class EventQueue {
     /// The earliest entry; time +infinity when no key has a finite time.
     [[nodiscard]] Entry top();
     [[nodiscard]] double timeOf(std::uint32_t i) const { return rec_[i].time; }
+    /// Starts fetching key i's record (a hint; no effect on the order).
+    void prefetch(std::uint32_t i) const { __builtin_prefetch(&rec_[i]); }
     /// The key most likely to come out after top() (the earliest child of the heap's root), or
     /// UINT32_MAX; a hint for prefetching, valid until the next update.
     [[nodiscard]] std::uint32_t likelyNext() const {

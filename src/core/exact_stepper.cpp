@@ -328,6 +328,8 @@ double ExactStepper::effectiveRestitution(double impactSpeed) const {
 
 void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& counters) {
     const std::uint32_t j = ev.partner;
+    __builtin_prefetch(&cold_[j]);
+    queue_.prefetch(2 * j);
     Body& a = bodies_[i];
     Body& b = bodies_[j];
     if (b.count != ev.partnerCount) {
@@ -475,6 +477,7 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
         if (const std::uint32_t next = queue_.likelyNext(); next != UINT32_MAX) {
             __builtin_prefetch(&bodies_[next / 2]);
             __builtin_prefetch(&cold_[next / 2]);
+            queue_.prefetch(next);
         }
         const std::uint32_t i = top.key / 2;
         if (top.key % 2 == 1) {
