@@ -143,20 +143,8 @@ void ExactStepper::sortByCell(bool midRun) {
 void ExactStepper::setUpGrid() {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     double dmax = 0.0;
-    double x0 = 0.0, x1 = 0.0, y0 = 0.0, y1 = 0.0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const Body& b = bodies_[i];
+    for (const Body& b : bodies_)
         dmax = std::max(dmax, 2.0 * b.r);
-        if (i == 0) {
-            x0 = x1 = b.x;
-            y0 = y1 = b.y;
-        } else {
-            x0 = std::min(x0, b.x);
-            x1 = std::max(x1, b.x);
-            y0 = std::min(y0, b.y);
-            y1 = std::max(y1, b.y);
-        }
-    }
     const double minSide = std::max(dmax * kCellSlack, 1e-300);
     // At most a few cells per particle: enough for the 3 × 3 searches to see ~1 particle each,
     // and memory stays O(N) however large the box.
@@ -172,14 +160,28 @@ void ExactStepper::setUpGrid() {
         cells_.reset(0.0, 0.0, def_.width / static_cast<double>(nx),
                      def_.height / static_cast<double>(ny), nx, ny, false, n);
     } else {
-        // Unbounded: a folded grid over the particles' current extent (plus a cell each side).
-        const double w = x1 - x0 + 2.0 * minSide, h = y1 - y0 + 2.0 * minSide;
+        // Unbounded, so the grid folds onto itself (cell_list.hpp) and need not cover every
+        // particle: it is sized for the bulk of them (the middle 90 % along each axis), so
+        // that one particle flung far away does not make every cell huge.
+        const auto spread = [&](auto coord) {
+            if (n < 2) return 0.0;
+            std::vector<double> v(n);
+            for (std::uint32_t i = 0; i < n; ++i)
+                v[i] = coord(bodies_[i]);
+            const auto lo = v.begin() + n / 20, hi = v.begin() + (n - 1 - n / 20);
+            std::nth_element(v.begin(), lo, v.end());
+            const double a = *lo;
+            std::nth_element(v.begin(), hi, v.end());
+            return *hi - a;
+        };
+        const double w = spread([](const Body& b) { return b.x; }) + 2.0 * minSide;
+        const double h = spread([](const Body& b) { return b.y; }) + 2.0 * minSide;
         double side = std::max(minSide, kCellSpacings * std::sqrt(w * h / std::max(n, 1u)));
         side = std::max(side, std::sqrt(w * h / maxCells));
         const auto count = [&](double extent) {
             return std::max<std::int64_t>(3, static_cast<std::int64_t>(std::ceil(extent / side)));
         };
-        cells_.reset(x0 - minSide, y0 - minSide, side, side, count(w), count(h), true, n);
+        cells_.reset(0.0, 0.0, side, side, count(w), count(h), true, n);
     }
     // A particle may stray a skin's width out of its cell before it is moved to the next one:
     // two touching discs are then still at most one cell apart (side >= dmax + 2 skin), and a
