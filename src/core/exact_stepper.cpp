@@ -322,9 +322,16 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     queue_.update(2 * i + 1, now + best);
 }
 
-double ExactStepper::effectiveRestitution(double impactSpeed) const {
+bool ExactStepper::collidedWithin(const Body& b, double now) {
+    // t is the time of b's last velocity change; count > 0 says there was one since the last
+    // rebuild (t = 0 at a rebuild is not a collision).
+    return b.count > 0 && now - b.t < kContactDuration;
+}
+
+double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const {
     const double e = def_.restitution;
-    if (e >= 1.0 || impactSpeed >= kElasticBelowSpeed) return e;
+    if (e >= 1.0 || recent) return 1.0;
+    if (impactSpeed >= kElasticBelowSpeed) return e;
     return 1.0 - (1.0 - e) * (impactSpeed / kElasticBelowSpeed);
 }
 
@@ -340,6 +347,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         return;
     }
     ++stats_.pairs;
+    const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
     advance(a, ev.time);
     advance(b, ev.time);
     const double dx = b.x - a.x, dy = b.y - a.y;
@@ -352,7 +360,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         n = coincidentNormal(ids_[i], ids_[j]);
     }
     const double approach = (a.vx - b.vx) * n.x + (a.vy - b.vy) * n.y;
-    const double e = effectiveRestitution(approach);
+    const double e = effectiveRestitution(approach, recent);
     const bool hit = def_.friction > 0.0
                          ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
                                               cold_[i].m, cold_[j].m, n, e, def_.friction)
@@ -374,6 +382,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
     Body& a = bodies_[i];
+    const bool recent = collidedWithin(a, ev.time);
     advance(a, ev.time);
     ++stats_.walls;
     const bool alongX = ev.side < 2;
@@ -390,7 +399,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         v = 0.0;
     } else {
         double out = outward * v;
-        const double e = effectiveRestitution(out);
+        const double e = effectiveRestitution(out, recent);
         dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
                                  : reboundOffWall<false>(out, vt, e, 0.0);
         v = outward * out;

@@ -67,11 +67,15 @@
 // gives the same sequence.
 //
 // Inelastic collapse. With e < 1 a cluster can collide infinitely often in finite time, and an
-// event-driven code then stalls. Restitution here follows a TC-like rule (Luding & McNamara
-// 1998, but on impact speed rather than time since the last contact): impacts slower than
-// kElasticBelowSpeed get an effective restitution rising linearly to 1 as the speed goes to 0,
-// e_eff = 1 − (1 − e)·u/u_c, so arbitrarily slow impacts lose arbitrarily little energy and no
-// geometric cascade of ever slower collisions can form.
+// event-driven code then stalls; with e = 0 it does so at once (a pair leaves a collision
+// touching, at zero relative speed, so the next collision in the cluster is at zero gap). Two
+// guards make restitution tend to 1 where the collapse would happen:
+//   - the TC model (Luding & McNamara 1998): a particle that collided less than
+//     kContactDuration ago collides elastically, so a cascade of near-simultaneous collisions
+//     re-opens gaps instead of closing them;
+//   - impacts slower than kElasticBelowSpeed use e_eff = 1 − (1 − e)·u/u_c, rising linearly to
+//     1 as the speed goes to 0, so ever slower collisions lose ever less energy.
+// A cooling pile therefore settles to small speeds with a bounded number of events per step.
 //
 // Held (kinematic) particles. Infinite mass, straight lines: they push and are not pushed
 // (contact.hpp's kinematic limit). A held particle that reaches a wall stops moving across it.
@@ -100,6 +104,12 @@
 #include "event_queue.hpp"
 
 namespace psb::exact {
+
+/// The TC model's contact duration t_c (seconds): a collision of a particle that already
+/// collided less than t_c ago is elastic (see the design note). Ten microseconds: far below a
+/// frame (16 ms) and the free flight times of the sandbox's scenes, far above the time between
+/// the zero-gap collisions of a collapsing cluster.
+inline constexpr double kContactDuration = 1e-5;
 
 /// Impact speed (m/s) below which restitution rises linearly to 1 (see the design note).
 /// One millimetre per second: far below the speeds of the sandbox's scenes (metres per second),
@@ -194,7 +204,8 @@ class ExactStepper {
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleCell(std::uint32_t i, double now);
-    [[nodiscard]] double effectiveRestitution(double impactSpeed) const;
+    [[nodiscard]] static bool collidedWithin(const Body& b, double now);
+    [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
     void sync(ParticleArrays& p, double t);
 

@@ -6,7 +6,8 @@
 // and the rules below (Bannerman, Strobl, Formella & Pöschel 2014) define what happens there
 // instead of letting the sign of a rounding error decide:
 //   - a pair that overlaps and approaches collides now (duration 0);
-//   - a pair that overlaps and separates, or is at rest relative to each other, is left alone;
+//   - a pair that overlaps and separates, or is at rest relative to each other (up to a relative
+//     tolerance far above rounding), is left alone;
 //   - a disc past a wall and moving outward hits it now; one moving inward is left alone.
 
 #include <algorithm>
@@ -16,6 +17,11 @@
 namespace psb::exact {
 
 inline constexpr double kNever = std::numeric_limits<double>::infinity();
+
+/// Relative approach speed (as the cosine between dr and dv) below which a pair counts as not
+/// approaching: six orders of magnitude above rounding, and only ever met by a pair sliding
+/// past at a right angle, whose closest approach is then its current distance.
+inline constexpr double kApproachTolerance = 1e-10;
 
 /// Time until two discs moving in straight lines touch: the smaller root of
 /// |dr + t·dv| = sigma, where dr = r_j − r_i and dv = v_j − v_i (metres, m/s) and sigma is the
@@ -32,9 +38,16 @@ inline constexpr double kNever = std::numeric_limits<double>::infinity();
                                            double sigma) {
     const double b = dx * dvx + dy * dvy;
     if (!(b < 0.0)) return kNever;  // separating or relatively at rest: never collides
-    const double c = dx * dx + dy * dy - sigma * sigma;
-    if (c <= 0.0) return 0.0;  // overlapping (or touching) and approaching: collide now
     const double a = dvx * dvx + dvy * dvy;
+    const double r2 = dx * dx + dy * dy;
+    // Approaching only if clearly so: b < −kApproachTolerance·|dr|·|dv|. A pair that has just
+    // collided with e = 0 leaves touching, at a relative normal speed that is zero up to
+    // rounding; its sign is noise, and the collision code (which computes it another way) may
+    // disagree with ours. Without the tolerance such a pair is "approaching and touching",
+    // collides "now", changes nothing, and is predicted again at the same instant, forever.
+    if (b * b <= kApproachTolerance * kApproachTolerance * r2 * a) return kNever;
+    const double c = r2 - sigma * sigma;
+    if (c <= 0.0) return 0.0;  // overlapping (or touching) and approaching: collide now
     const double cross = dx * dvy - dy * dvx;
     const double disc = a * sigma * sigma - cross * cross;
     if (disc < 0.0) return kNever;  // closest approach wider than sigma: a miss

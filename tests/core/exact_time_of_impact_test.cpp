@@ -33,6 +33,12 @@ TEST(ExactTimeOfImpact, OverlappingPairCollidesNowIfApproachingOtherwiseNever) {
     EXPECT_EQ(pairImpactTime(2.0, 0.0, -1.0, 0.0, 2.0), 0.0);    // exactly touching
 }
 
+TEST(ExactTimeOfImpact, TouchingPairWithRoundingLevelApproachIsNotApproaching) {
+    // What a perfectly inelastic collision leaves: touching, relative normal speed ~1e-17.
+    EXPECT_EQ(pairImpactTime(2.0, 0.0, -1e-17, 0.3, 2.0), kNever);
+    EXPECT_EQ(pairImpactTime(2.0, 0.0, -1e-9, 0.0, 2.0), 0.0);  // slow but clearly approaching
+}
+
 TEST(ExactTimeOfImpact, StableRootKeepsItsDigitsWhereTheTextbookFormLosesThem) {
     // Far apart and slow: b² >> a·c, so (−b − √(b² − ac)) / a cancels catastrophically.
     const double dx = 1e8, dvx = -1e-3, sigma = 1.0;
