@@ -111,6 +111,9 @@ class TrackingParser : public DomParser {
 
     // A value begins inside the current container: advance the array index.
     bool value() {
+        if (++values_ > kMaxValues) {
+            fail("more than " + std::to_string(kMaxValues) + " JSON values");
+        }
         if (!frames_.empty() && frames_.back().array) {
             Frame& f = frames_.back();
             f.key = std::to_string(f.next++);
@@ -151,8 +154,13 @@ class TrackingParser : public DomParser {
         return p.empty() ? "(root)" : p;
     }
 
+    // A million particles take about 11 values each; beyond this a file is hostile, and its
+    // DOM (~100 bytes per value) would take gigabytes.
+    static constexpr std::size_t kMaxValues = 16'000'000;
+
     std::string_view text_;
     std::string_view source_;
+    std::size_t values_ = 0;
     std::vector<Frame> frames_;
 };
 
