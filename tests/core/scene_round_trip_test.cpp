@@ -2,11 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <bit>
 #include <cmath>
+#include <csignal>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -226,6 +228,35 @@ TEST(SceneSave, NoPermissionLeavesTheOldFileIntact) {
                                              dir.path().string() + " (Permission denied)");
     }
     fs::permissions(dir.path(), fs::perms::owner_all);
+    EXPECT_EQ(readFile(file), before);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
+}
+
+TEST(SceneSave, AWriteThatFailsHalfwayLeavesTheOldFileIntactAndNoTemporary) {
+    // A file-size limit makes write(2) fail part way, as a full disk would, even for root.
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    saveScene(defaultScene(), file);
+    const std::string before = readFile(file);
+
+    Scene big = defaultScene();
+    big.particles.resize(2000, big.particles[0]);
+    rlimit old{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+    rlimit small = old;
+    small.rlim_cur = 4096;
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);  // get EFBIG, not a signal
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    std::string message;
+    try {
+        saveScene(big, file);
+    } catch (const SaveError& e) {
+        message = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldHandler);
+
+    EXPECT_EQ(message, "cannot save " + file.string() + ": write failed (File too large)");
     EXPECT_EQ(readFile(file), before);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
 }
