@@ -140,8 +140,8 @@ class Reader {
                          std::int64_t hi) const {
         expectType(j, path, j.is_number_integer(), "an integer");
         if (j.is_number_unsigned() && j.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) {
-            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                           "] (got " + std::to_string(j.get<std::uint64_t>()) + ")");
+            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                           std::to_string(j.get<std::uint64_t>()) + ")");
         }
         const std::int64_t v = j.get<std::int64_t>();
         if (v < lo || v > hi) {
