@@ -188,6 +188,18 @@ TEST(SceneReader, NegativeZeroAndTinyNumbersReadExactly) {
     EXPECT_EQ(p.radius, 1e-300);
 }
 
+TEST(SceneReader, MessagesEscapeControlCharactersAndShortenHugeKeys) {
+    // "\u001b[2J" would clear the terminal the message is printed on.
+    EXPECT_EQ(messageOf(R"({"version": 1, "solver": {"mode": "\u001b[2J"}})"),
+              "s.json: solver.mode: unknown mode '\\x1b[2J' (expected one of: discrete, substep, "
+              "exact)");
+    const std::string key(100000, 'k');
+    EXPECT_EQ(messageOf(R"({"version": 1, ")" + key + R"(": 1})"),
+              "s.json: " + std::string(64, 'k') +
+                  "...: unknown key (expected one of: version, name, description, world, solver, "
+                  "particles, generate, allow_overlaps)");
+}
+
 TEST(JsonReader, LineAndColumnCountBytesFromOne) {
     const std::string_view text = "ab\ncd\n\nef";
     EXPECT_EQ(detail::positionOf(text, 0).line, 1u);
