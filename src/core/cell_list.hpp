@@ -7,8 +7,10 @@
 // particle between cells is O(1) (unlink, link). Particles change cell at cell-crossing events
 // that the stepper schedules like collisions; a particle's cell is the one those events say it
 // is in (integer coordinates kx, ky), never recomputed from its rounded position, so a centre a
-// few ulps past a face does not make it vanish from its neighbours' searches. Cells are made a
-// little wider than the largest diameter to absorb those ulps.
+// few ulps past a face does not make it vanish from its neighbours' searches. The stepper makes
+// cells wider than the largest diameter by twice a "skin" and moves a particle only once it is
+// a skin past a face (exact_stepper.hpp), so two touching discs are always in neighbouring
+// cells.
 //
 // Bounded and unbounded worlds. With walls the grid covers the box exactly (nx·sx = width) and
 // the outer faces are never crossed (the walls come first). Without walls particles fly

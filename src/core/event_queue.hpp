@@ -1,6 +1,6 @@
 #pragma once
 // The event queue of the exact mode: a fixed set of keys (the stepper uses two per particle:
-// its next collision and its next cell-face crossing), each with the time of its event.
+// its next collision and its next move to another cell), each with the time of its event.
 //
 // Why a fixed set of keys. The textbook queue holds every predicted pair event and marks stale
 // ones with counters; it grows with the number of predictions and spends much of its time
