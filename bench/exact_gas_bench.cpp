@@ -3,7 +3,7 @@
 // The scene: 100 000 discs of radius 1 m at packing fraction 0.1 in a square box with walls,
 // restitution 1, velocity components normally distributed (σ = 1 m/s). Each iteration advances
 // the world by 10 simulated seconds (about 10^5 collisions); the first steps after setup are
-// excluded (they build the cell list and the queue, and let the lattice start relax).
+// excluded (they build the cell list and the queue, and let the initial lattice relax).
 //
 //   build/bench/exact_gas_bench --benchmark_repetitions=5
 //
@@ -20,7 +20,7 @@
 
 namespace {
 
-psb::World dilueGas(int n, double packing, std::uint32_t seed) {
+psb::World diluteGas(int n, double packing, std::uint32_t seed) {
     const double r = 1.0;
     const double side = std::sqrt(n * std::numbers::pi * r * r / packing);
     psb::WorldDef def;
@@ -43,7 +43,7 @@ psb::World dilueGas(int n, double packing, std::uint32_t seed) {
 
 void BM_ExactDiluteGas(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
-    psb::World w = dilueGas(n, 0.1, 42);
+    psb::World w = diluteGas(n, 0.1, 42);
     w.step(20.0);  // build + relax: not timed
     w.resetCounters();
     for (auto _ : state) {
