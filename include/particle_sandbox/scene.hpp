@@ -31,14 +31,14 @@ struct Scene {
 /// file, the JSON path and the problem, e.g.
 ///   `gas.json: particles[3].mass: must be > 0 (got -1)`.
 class SceneError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 /// A save that failed (no permission, a directory in the way, disk full, ...). The file that
 /// was there before is left intact.
 class SaveError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 

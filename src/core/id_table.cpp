@@ -22,7 +22,9 @@ void IdTable::release(ParticleId id) {
     freeSlots_.push_back(id.slot);
 }
 
-void IdTable::relocate(ParticleId id, std::uint32_t index) { index_[id.slot] = index; }
+void IdTable::relocate(ParticleId id, std::uint32_t index) {
+    index_[id.slot] = index;
+}
 
 std::optional<std::uint32_t> IdTable::find(ParticleId id) const {
     if (id.slot >= index_.size() || generation_[id.slot] != id.generation ||
@@ -40,6 +42,16 @@ void IdTable::clear() {
         index_[s] = kFree;
         freeSlots_.push_back(s);
     }
+}
+
+void IdTable::reserve(std::size_t slots) {
+    index_.reserve(slots);
+    generation_.reserve(slots);
+}
+
+std::size_t IdTable::memoryBytes() const {
+    return sizeof(std::uint32_t) *
+           (index_.capacity() + generation_.capacity() + freeSlots_.capacity());
 }
 
 }  // namespace psb::detail

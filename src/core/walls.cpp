@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "discrete_step.hpp"
+#include "parallel.hpp"
 
 namespace psb::stages {
 namespace {
@@ -40,26 +41,42 @@ inline double wallAxis(double& x, double& v, double& vt, double r, double extent
 }
 
 template <bool kFriction>
-void wallsImpl(ParticleArrays& p, const WorldDef& def, StepCounters& counters) {
+void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
     const double e = def.restitution, mu = def.friction;
     const std::size_t n = p.size();
+    // The impulse sum depends on the order of its terms: one sequential sum per fixed block,
+    // added in block order below (rule 2 of parallel.hpp), so any thread count gives the same
+    // bits.
+    const std::size_t blocks = parallel::blockCount(n);
+    ctx.wallImpulseScratch.resize(blocks);
+    ctx.wallHitScratch.resize(blocks);
+    parallel::forBlocks(ctx.threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        std::uint64_t hits = 0;
+        double impulse = 0.0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const double r = p.radius[i];
+            if (p.invMass[i] == 0.0) {
+                // A held particle is clamped into the box but its velocity is its owner's.
+                double vx = 0.0, vy = 0.0, vt = 0.0;
+                wallAxis<false>(p.x[i], vx, vt, r, def.width, e, mu);
+                wallAxis<false>(p.y[i], vy, vt, r, def.height, e, mu);
+                continue;
+            }
+            const double jx = wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
+            const double jy = wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
+            if (jx > 0.0 || jy > 0.0) {
+                hits += (jx > 0.0) + (jy > 0.0);
+                impulse += p.mass[i] * (jx + jy);
+            }
+        }
+        ctx.wallHitScratch[b] = hits;
+        ctx.wallImpulseScratch[b] = impulse;
+    });
     std::uint64_t hits = 0;
     double impulse = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double r = p.radius[i];
-        if (p.invMass[i] == 0.0) {
-            // A held particle is clamped into the box but its velocity is its owner's.
-            double vx = 0.0, vy = 0.0, vt = 0.0;
-            wallAxis<false>(p.x[i], vx, vt, r, def.width, e, mu);
-            wallAxis<false>(p.y[i], vy, vt, r, def.height, e, mu);
-            continue;
-        }
-        const double jx = wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
-        const double jy = wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
-        if (jx > 0.0 || jy > 0.0) {
-            hits += (jx > 0.0) + (jy > 0.0);
-            impulse += p.mass[i] * (jx + jy);
-        }
+    for (std::size_t b = 0; b < blocks; ++b) {
+        hits += ctx.wallHitScratch[b];
+        impulse += ctx.wallImpulseScratch[b];
     }
     counters.wallCollisions += hits;
     counters.wallImpulse += impulse;
@@ -67,11 +84,11 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepCounters& counters) {
 
 }  // namespace
 
-void walls(ParticleArrays& p, const WorldDef& def, StepCounters& counters) {
+void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
     if (def.friction > 0.0) {
-        wallsImpl<true>(p, def, counters);
+        wallsImpl<true>(p, def, ctx, counters);
     } else {
-        wallsImpl<false>(p, def, counters);
+        wallsImpl<false>(p, def, ctx, counters);
     }
 }
 

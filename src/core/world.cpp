@@ -1,9 +1,14 @@
 #include <particle_sandbox/world.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <thread>
 
+#include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
+#include "particle_reorder.hpp"
+#include "stage_timer.hpp"
 #include "step_context.hpp"
 #include "validate.hpp"
 
@@ -33,11 +38,6 @@ void validateSolver(const SolverSettings& s, const char* where) {
     if (s.mode == StepMode::Exact) {
         detail::fail(where, "mode", "'exact' is not available in this version");
     }
-    if (s.broadphase == BroadPhaseKind::Grid || s.broadphase == BroadPhaseKind::Quadtree) {
-        detail::fail(where, "broadphase",
-                     "'" + std::string(toString(s.broadphase)) +
-                         "' is not available in this version (use 'auto' or 'all-pairs')");
-    }
 }
 
 void validateParticle(const ParticleDef& d, const char* where) {
@@ -45,6 +45,11 @@ void validateParticle(const ParticleDef& d, const char* where) {
     requireFinite(d.velocity, where, "velocity");
     requirePositive(d.mass, where, "mass");
     requirePositive(d.radius, where, "radius");
+}
+
+int hardwareThreads() {
+    const unsigned n = std::thread::hardware_concurrency();
+    return n == 0 ? 1 : static_cast<int>(std::min(n, 256u));
 }
 
 template <typename T>
@@ -56,7 +61,10 @@ void swapRemove(std::vector<T>& v, std::size_t i) {
 }  // namespace
 
 World::World(const WorldDef& def, const SolverSettings& solver)
-    : def_(def), solver_(solver), ctx_(std::make_unique<StepContext>()) {
+    : def_(def),
+      solver_(solver),
+      ctx_(std::make_unique<StepContext>()),
+      threads_(hardwareThreads()) {
     validateDef(def, "World");
     validateSolver(solver, "World");
 }
@@ -71,6 +79,9 @@ World::World(const World& other)
       p_(other.p_),
       ids_(other.ids_),
       ctx_(std::make_unique<StepContext>()),  // scratch is not state
+      threads_(other.threads_),
+      stepsUntilReorder_(other.stepsUntilReorder_),
+      broadPhaseUsed_(other.broadPhaseUsed_),
       time_(other.time_),
       profile_(other.profile_),
       counters_(other.counters_) {}
@@ -88,7 +99,9 @@ void World::setBox(double width, double height) {
     def_ = d;
 }
 
-void World::setWalls(bool enabled) { def_.walls = enabled; }
+void World::setWalls(bool enabled) {
+    def_.walls = enabled;
+}
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
@@ -114,7 +127,8 @@ void World::setSolver(const SolverSettings& solver) {
 
 ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
-    if (p_.size() >= UINT32_MAX - 1) detail::fail("World::add", "particle count", "is at its limit");
+    if (p_.size() >= UINT32_MAX - 1)
+        detail::fail("World::add", "particle count", "is at its limit");
     const auto index = static_cast<std::uint32_t>(p_.size());
     const ParticleId id = ids_.allocate(index);
     p_.x.push_back(d.position.x());
@@ -151,9 +165,55 @@ bool World::remove(ParticleId id) {
 void World::clear() {
     ids_.clear();
     p_ = ParticleArrays{};
+    stepsUntilReorder_ = 0;
 }
 
-bool World::contains(ParticleId id) const { return ids_.find(id).has_value(); }
+void World::setThreads(int n) {
+    if (n < 0 || n > 256) {
+        detail::fail("World::setThreads", "thread count",
+                     "must be 0 (all hardware threads) or 1..256 (got " + std::to_string(n) + ")");
+    }
+    threads_ = n == 0 ? hardwareThreads() : n;
+}
+
+BroadPhaseKind World::broadPhaseInUse() const {
+    if (broadPhaseUsed_) return *broadPhaseUsed_;
+    std::vector<ParticleStats> scratch;
+    return chooseBroadPhase(solver_.broadphase, p_, measureParticles(p_, 1, scratch));
+}
+
+void World::reserve(std::size_t n) {
+    p_.x.reserve(n);
+    p_.y.reserve(n);
+    p_.vx.reserve(n);
+    p_.vy.reserve(n);
+    p_.invMass.reserve(n);
+    p_.radius.reserve(n);
+    p_.mass.reserve(n);
+    p_.color.reserve(n);
+    p_.id.reserve(n);
+    ids_.reserve(n);
+}
+
+std::size_t World::memoryBytes() const {
+    std::size_t bytes =
+        sizeof(double) * (p_.x.capacity() + p_.y.capacity() + p_.vx.capacity() + p_.vy.capacity() +
+                          p_.invMass.capacity() + p_.radius.capacity() + p_.mass.capacity());
+    bytes += sizeof(Color) * p_.color.capacity() + sizeof(ParticleId) * p_.id.capacity();
+    bytes += ids_.memoryBytes();
+    if (ctx_) {
+        const StepContext& c = *ctx_;
+        bytes += sizeof(ContactPair) * c.pairs.capacity() + c.grid.memoryBytes() +
+                 c.quadtree.memoryBytes() + sizeof(ParticleStats) * c.statsScratch.capacity() +
+                 sizeof(double) * c.wallImpulseScratch.capacity() +
+                 sizeof(std::uint64_t) * c.wallHitScratch.capacity();
+    }
+    return bytes;
+}
+
+bool World::contains(ParticleId id) const {
+    return ids_.find(id).has_value();
+}
 
 std::optional<std::size_t> World::indexOf(ParticleId id) const {
     const auto found = ids_.find(id);
@@ -164,16 +224,17 @@ std::optional<std::size_t> World::indexOf(ParticleId id) const {
 std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
     const auto found = ids_.find(id);
     if (!found) {
-        detail::fail(what, "id", "names no live particle (slot " + std::to_string(id.slot) +
-                                     ", generation " + std::to_string(id.generation) + ")");
+        detail::fail(what, "id",
+                     "names no live particle (slot " + std::to_string(id.slot) + ", generation " +
+                         std::to_string(id.generation) + ")");
     }
     return *found;
 }
 
 Particle World::get(ParticleId id) const {
     const std::size_t i = indexOrThrow(id, "World::get");
-    return Particle{id,          Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
-                    p_.mass[i],  p_.radius[i],           p_.color[i]};
+    return Particle{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
+                    p_.mass[i], p_.radius[i],           p_.color[i]};
 }
 
 void World::setPosition(ParticleId id, const Vec2& position) {
@@ -229,23 +290,36 @@ std::optional<ParticleId> World::pick(const Vec2& point) const {
 void World::step(double dt) {
     requirePositive(dt, "World::step", "dt");
     profile_ = {};
+    if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
+    ctx_->threads = threads_;
+    ctx_->broadPhase = solver_.broadphase;
+    if (p_.size() >= kReorderMinParticles) {
+        if (stepsUntilReorder_ == 0) {
+            StageTimer t(profile_.reorder);
+            reorderByCell(p_, ids_, *ctx_);
+            stepsUntilReorder_ = kReorderInterval;
+        }
+        --stepsUntilReorder_;
+    }
     switch (solver_.mode) {
         case StepMode::Discrete:
             stepDiscrete(dt);
             break;
         case StepMode::Substep: {
             const double h = dt / solver_.substeps;
-            for (int k = 0; k < solver_.substeps; ++k) stepDiscrete(h);
+            for (int k = 0; k < solver_.substeps; ++k)
+                stepDiscrete(h);
             break;
         }
         case StepMode::Exact:  // refused by validateSolver until the event-driven mode exists
             break;
     }
+    profile_.total += profile_.reorder;
+    broadPhaseUsed_ = ctx_->broadPhaseUsed;
     time_ += dt;
 }
 
 void World::stepDiscrete(double dt) {
-    if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
     stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
 }
 

@@ -3,6 +3,7 @@
 /// Slot table behind stable particle ids (an implementation detail of World, shown here only
 /// because World holds it by value).
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -14,7 +15,7 @@ namespace psb::detail {
 /// Maps ids (slot + generation) to dense storage indices. A freed slot's generation is bumped,
 /// so stale ids are recognised; freed slots are reused last-in first-out.
 class IdTable {
-public:
+  public:
     /// A new id pointing at dense index `index`.
     ParticleId allocate(std::uint32_t index);
     /// Frees a live id.
@@ -23,8 +24,10 @@ public:
     void relocate(ParticleId id, std::uint32_t index);
     [[nodiscard]] std::optional<std::uint32_t> find(ParticleId id) const;
     void clear();
+    void reserve(std::size_t slots);
+    [[nodiscard]] std::size_t memoryBytes() const;
 
-private:
+  private:
     static constexpr std::uint32_t kFree = UINT32_MAX;
     std::vector<std::uint32_t> index_;       ///< per slot: dense index, or kFree
     std::vector<std::uint32_t> generation_;  ///< per slot

@@ -1,0 +1,199 @@
+#include "broad_phase_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "disc_overlap.hpp"
+#include "parallel.hpp"
+
+namespace psb {
+namespace {
+
+/// Relative slack added to the cell size and to query reaches so that rounding in
+/// (x - origin) / cell can never put two overlapping particles two cells apart.
+constexpr double kRelativeSlack = 1e-7;
+
+}  // namespace
+
+std::uint32_t GridBroadPhase::cellX(double x) const {
+    const double f = (x - originX_) * invCell_;
+    if (!(f > 0.0)) return 0;
+    if (f >= static_cast<double>(nx_ - 1)) return nx_ - 1;
+    return static_cast<std::uint32_t>(f);
+}
+
+std::uint32_t GridBroadPhase::cellY(double y) const {
+    const double f = (y - originY_) * invCell_;
+    if (!(f > 0.0)) return 0;
+    if (f >= static_cast<double>(ny_ - 1)) return ny_ - 1;
+    return static_cast<std::uint32_t>(f);
+}
+
+void GridBroadPhase::plan(const ParticleArrays& p, const ParticleStats& s) {
+    const std::size_t n = p.size();
+    large_.clear();
+    largeAbove_ = 2.0 * s.meanRadius;
+    smallMaxRadius_ = s.maxRadius;
+    if (s.maxRadius > largeAbove_) {
+        smallMaxRadius_ = 0.0;
+        const double* r = p.radius.data();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (r[i] > largeAbove_) {
+                large_.push_back(static_cast<std::uint32_t>(i));
+            } else {
+                smallMaxRadius_ = std::max(smallMaxRadius_, r[i]);
+            }
+        }
+    }
+    const std::size_t small = n - large_.size();
+    const double w = s.maxX - s.minX, h = s.maxY - s.minY;
+    // Twice the small radius, plus slack for rounding in the coordinates themselves.
+    double cell = 2.0 * smallMaxRadius_ * (1.0 + kRelativeSlack) +
+                  64.0 * s.maxAbsCoordinate * 2.220446049250313e-16;
+    const double maxCells = std::max(1.0, kCellsPerParticle * static_cast<double>(small));
+    cell = std::max({cell, std::sqrt(w * h / maxCells), 1e-300});
+    auto cellsFor = [&](double c) { return (std::floor(w / c) + 1.0) * (std::floor(h / c) + 1.0); };
+    while (cellsFor(cell) > maxCells)
+        cell *= 1.0625;
+    cell_ = cell;
+    invCell_ = 1.0 / cell;
+    originX_ = s.minX;
+    originY_ = s.minY;
+    nx_ = static_cast<std::uint32_t>(std::floor(w / cell)) + 1;
+    ny_ = static_cast<std::uint32_t>(std::floor(h / cell)) + 1;
+}
+
+void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, int threads) {
+    const std::size_t n = p.size();
+    plan(p, stats);
+    cellOf_.resize(n);
+    entries_.resize(n);
+    const std::size_t cells = cellCount();
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    std::uint32_t* cellOf = cellOf_.data();
+    const double largeAbove = large_.empty() ? INFINITY : largeAbove_;
+    parallel::forChunks(
+        parallel::chunksFor(threads, n), n, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                cellOf[i] = r[i] > largeAbove ? kLarge : cellY(y[i]) * nx_ + cellX(x[i]);
+            }
+        });
+    // Counting sort: histogram, inclusive prefix sum, backward scatter. Scattering from the
+    // last particle down with pre-decrement leaves cellStart[c] at the start of cell c and
+    // each cell's indices ascending.
+    cellStart_.assign(cells + 1, 0);
+    std::uint32_t* start = cellStart_.data();
+    for (std::size_t i = 0; i < n; ++i) {
+        if (cellOf[i] != kLarge) ++start[cellOf[i]];
+    }
+    std::uint32_t sum = 0;
+    for (std::size_t c = 0; c <= cells; ++c) {
+        sum += start[c];
+        start[c] = sum;
+    }
+    std::uint32_t* entries = entries_.data();
+    for (std::size_t i = n; i-- > 0;) {
+        const std::uint32_t c = cellOf[i];
+        if (c != kLarge) entries[--start[c]] = static_cast<std::uint32_t>(i);
+    }
+    std::copy(large_.begin(), large_.end(), entries_.begin() + static_cast<std::ptrdiff_t>(sum));
+}
+
+void GridBroadPhase::findLargePairs(const ParticleArrays& p) {
+    largePairs_.clear();
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    const std::uint32_t* start = cellStart_.data();
+    const std::uint32_t* entries = entries_.data();
+    for (std::size_t a = 0; a < large_.size(); ++a) {
+        const std::uint32_t l = large_[a];
+        // A small particle overlapping l has its centre within r_l + smallMax of l's centre.
+        const double reach = (r[l] + smallMaxRadius_) * (1.0 + kRelativeSlack) + cell_ * 1e-9;
+        const std::uint32_t x0 = cellX(x[l] - reach), x1 = cellX(x[l] + reach);
+        const std::uint32_t y0 = cellY(y[l] - reach), y1 = cellY(y[l] + reach);
+        for (std::uint32_t cy = y0; cy <= y1; ++cy) {
+            const std::uint32_t end = start[cy * nx_ + x1 + 1];
+            for (std::uint32_t k = start[cy * nx_ + x0]; k < end; ++k) {
+                const std::uint32_t j = entries[k];
+                const std::uint32_t lo = std::min(l, j), hi = std::max(l, j);
+                if (discsOverlap(x, y, r, lo, hi)) largePairs_.push_back({lo, hi});
+            }
+        }
+        for (std::size_t b = a + 1; b < large_.size(); ++b) {
+            const std::uint32_t m = large_[b];  // large_ is ascending, so l < m
+            if (discsOverlap(x, y, r, l, m)) largePairs_.push_back({l, m});
+        }
+    }
+    std::sort(largePairs_.begin(), largePairs_.end());
+}
+
+void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
+                               std::vector<ContactPair>& out) {
+    const std::size_t n = p.size();
+    const int chunks = parallel::chunksFor(threads, n);
+    if (chunkPairs_.size() < static_cast<std::size_t>(chunks)) {
+        chunkPairs_.resize(chunks);
+        chunkScratch_.resize(chunks);
+    }
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    const std::uint32_t* cellOf = cellOf_.data();
+    const std::uint32_t* start = cellStart_.data();
+    const std::uint32_t* entries = entries_.data();
+    const std::uint32_t nx = nx_, ny = ny_;
+    parallel::forChunks(chunks, n, [&](int c, std::size_t begin, std::size_t end) {
+        std::vector<ContactPair>& pairs = chunkPairs_[c];
+        std::vector<std::uint32_t>& partners = chunkScratch_[c];
+        pairs.clear();
+        for (std::size_t ii = begin; ii < end; ++ii) {
+            const std::uint32_t cell = cellOf[ii];
+            if (cell == kLarge) continue;
+            const auto i = static_cast<std::uint32_t>(ii);
+            const std::uint32_t cy = cell / nx, cx = cell - cy * nx;
+            const std::uint32_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < nx ? cx + 1 : cx;
+            const std::uint32_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < ny ? cy + 1 : cy;
+            const double xi = x[i], yi = y[i], ri = r[i];
+            for (std::uint32_t row = y0; row <= y1; ++row) {
+                const std::uint32_t kEnd = start[row * nx + x1 + 1];
+                for (std::uint32_t k = start[row * nx + x0]; k < kEnd; ++k) {
+                    const std::uint32_t j = entries[k];
+                    // Same arithmetic as discsOverlap(i, j), written out so xi stays in a
+                    // register.
+                    const double dx = x[j] - xi;
+                    const double dy = y[j] - yi;
+                    const double rs = ri + r[j];
+                    if (j > i && dx * dx + dy * dy < rs * rs) partners.push_back(j);
+                }
+            }
+            if (!partners.empty()) appendPartners(i, partners, pairs);
+        }
+    });
+    if (large_.empty()) {
+        concatenate(chunkPairs_, chunks, out);
+        return;
+    }
+    findLargePairs(p);
+    smallPairs_.clear();
+    concatenate(chunkPairs_, chunks, smallPairs_);
+    const std::size_t before = out.size();
+    out.resize(before + smallPairs_.size() + largePairs_.size());
+    std::merge(smallPairs_.begin(), smallPairs_.end(), largePairs_.begin(), largePairs_.end(),
+               out.begin() + static_cast<std::ptrdiff_t>(before));
+}
+
+std::size_t GridBroadPhase::memoryBytes() const {
+    std::size_t bytes = sizeof(std::uint32_t) * (cellOf_.capacity() + cellStart_.capacity() +
+                                                 entries_.capacity() + large_.capacity());
+    bytes += sizeof(ContactPair) * (largePairs_.capacity() + smallPairs_.capacity());
+    for (const auto& v : chunkPairs_)
+        bytes += sizeof(ContactPair) * v.capacity();
+    for (const auto& v : chunkScratch_)
+        bytes += sizeof(std::uint32_t) * v.capacity();
+    return bytes;
+}
+
+}  // namespace psb

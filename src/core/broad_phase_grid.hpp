@@ -1,0 +1,86 @@
+#pragma once
+// Uniform-grid broadphase, rebuilt every step by counting sort.
+//
+// Layout (the "cell start / cell entries" grid of GPU particle codes):
+//
+//   cellOf[i]      cell of particle i (row-major, cy * nx + cx), or kLarge       one per particle
+//   cellStart[c]   first slot of cell c in `entries`; cellStart[c + 1] is its end   cells + 1
+//   entries[k]     particle indices, sorted by cell, ascending within a cell       one per particle
+//                  (small particles first, then the large ones in index order)
+//
+// Building is one parallel pass (cell of each particle), one sequential histogram, one prefix
+// sum and one sequential backward scatter (which leaves each cell's indices ascending). Because
+// rows are row-major, the three cells of one stencil row are contiguous in `entries`, so the
+// 3×3 neighbourhood of a particle is three contiguous runs.
+//
+// Cell size. Cells are at least twice the largest "small" radius, so two overlapping small
+// particles are in the same or adjacent cells (with a relative margin for rounding; clamping
+// cell coordinates into the grid is 1-Lipschitz, so particles outside the box or far from the
+// rest stay correct, only slower). The cell count is capped at kCellsPerParticle per particle:
+// in a dilute scene the cells grow instead, which bounds memory at 4 bytes per cell.
+//
+// Large particles. A particle is "large" when its radius exceeds twice the mean radius. Large
+// particles stay out of the cells (so a few big discs do not force big cells on everyone); each
+// one queries the cells its disc can reach, and large–large pairs are tested directly. Their
+// pairs are sorted and merged into the small–small list.
+//
+// Output order. Each particle i looks only for partners j > i and sorts the few it finds, so
+// the pairs come out in ascending (i, j) order, exactly as all-pairs gives them. Queries run in
+// parallel over contiguous ranges of i (see parallel.hpp), each range into its own list.
+
+#include <cstdint>
+#include <vector>
+
+#include <particle_sandbox/particle_arrays.hpp>
+
+#include "contact_pair.hpp"
+#include "particle_stats.hpp"
+
+namespace psb {
+
+class GridBroadPhase {
+  public:
+    /// At most this many cells per small particle (memory: 4 bytes per cell).
+    static constexpr double kCellsPerParticle = 1.0;
+
+    /// Chooses the cell size and origin for `p` (described by `stats`) and sorts the particles
+    /// into cells. After build(), order() lists every particle index sorted by cell.
+    void build(const ParticleArrays& p, const ParticleStats& stats, int threads);
+    /// Appends every overlapping pair (i < j) of the particles given to build(), in ascending
+    /// (i, j) order.
+    void findPairs(const ParticleArrays& p, int threads, std::vector<ContactPair>& out);
+
+    /// Every particle index, sorted by cell (large particles last). Valid after build(); the
+    /// caller may consume it (World's reorder does), which invalidates the grid until the next
+    /// build().
+    [[nodiscard]] std::vector<std::uint32_t>& order() { return entries_; }
+    [[nodiscard]] double cellSize() const { return cell_; }
+    [[nodiscard]] std::size_t cellCount() const { return std::size_t{nx_} * ny_; }
+    [[nodiscard]] std::size_t largeCount() const { return large_.size(); }
+    /// Bytes held by this grid's scratch (capacities, not sizes).
+    [[nodiscard]] std::size_t memoryBytes() const;
+
+  private:
+    static constexpr std::uint32_t kLarge = UINT32_MAX;
+
+    [[nodiscard]] std::uint32_t cellX(double x) const;
+    [[nodiscard]] std::uint32_t cellY(double y) const;
+    void plan(const ParticleArrays& p, const ParticleStats& stats);
+    void findLargePairs(const ParticleArrays& p);
+
+    double originX_ = 0.0, originY_ = 0.0;
+    double cell_ = 1.0, invCell_ = 1.0;
+    std::uint32_t nx_ = 1, ny_ = 1;
+    double largeAbove_ = 0.0;  ///< radius above which a particle is large
+    double smallMaxRadius_ = 0.0;
+    std::vector<std::uint32_t> cellOf_;
+    std::vector<std::uint32_t> cellStart_;
+    std::vector<std::uint32_t> entries_;
+    std::vector<std::uint32_t> large_;
+    std::vector<ContactPair> largePairs_;
+    std::vector<ContactPair> smallPairs_;
+    std::vector<std::vector<ContactPair>> chunkPairs_;
+    std::vector<std::vector<std::uint32_t>> chunkScratch_;
+};
+
+}  // namespace psb
