@@ -15,6 +15,9 @@ constexpr double kRelativeSlack = 1e-7;
 
 }  // namespace
 
+// Cell coordinates are interior coordinates (0..nx-1); storage adds a border ring of empty
+// cells, so cell (cx, cy) lives at index (cy + 1) * (nx + 2) + cx + 1.
+
 std::uint32_t GridBroadPhase::cellX(double x) const {
     const double f = (x - originX_) * invCell_;
     if (!(f > 0.0)) return 0;
@@ -68,7 +71,8 @@ void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, 
     plan(p, stats);
     cellOf_.resize(n);
     entries_.resize(n);
-    const std::size_t cells = cellCount();
+    const std::size_t cells = std::size_t{nx_ + 2} * (ny_ + 2);
+    const std::uint32_t stride = nx_ + 2;
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
@@ -77,7 +81,8 @@ void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, 
     parallel::forChunks(
         parallel::chunksFor(threads, n), n, [&](int, std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
-                cellOf[i] = r[i] > largeAbove ? kLarge : cellY(y[i]) * nx_ + cellX(x[i]);
+                cellOf[i] =
+                    r[i] > largeAbove ? kLarge : (cellY(y[i]) + 1) * stride + cellX(x[i]) + 1;
             }
         });
     // Counting sort: histogram, inclusive prefix sum, backward scatter. Scattering from the
@@ -108,6 +113,7 @@ void GridBroadPhase::findLargePairs(const ParticleArrays& p) {
     const double* r = p.radius.data();
     const std::uint32_t* start = cellStart_.data();
     const std::uint32_t* entries = entries_.data();
+    const std::uint32_t stride = nx_ + 2;
     for (std::size_t a = 0; a < large_.size(); ++a) {
         const std::uint32_t l = large_[a];
         // A small particle overlapping l has its centre within r_l + smallMax of l's centre.
@@ -115,8 +121,9 @@ void GridBroadPhase::findLargePairs(const ParticleArrays& p) {
         const std::uint32_t x0 = cellX(x[l] - reach), x1 = cellX(x[l] + reach);
         const std::uint32_t y0 = cellY(y[l] - reach), y1 = cellY(y[l] + reach);
         for (std::uint32_t cy = y0; cy <= y1; ++cy) {
-            const std::uint32_t end = start[cy * nx_ + x1 + 1];
-            for (std::uint32_t k = start[cy * nx_ + x0]; k < end; ++k) {
+            const std::uint32_t row = (cy + 1) * stride + 1;
+            const std::uint32_t end = start[row + x1 + 1];
+            for (std::uint32_t k = start[row + x0]; k < end; ++k) {
                 const std::uint32_t j = entries[k];
                 const std::uint32_t lo = std::min(l, j), hi = std::max(l, j);
                 if (discsOverlap(x, y, r, lo, hi)) largePairs_.push_back({lo, hi});
@@ -127,16 +134,16 @@ void GridBroadPhase::findLargePairs(const ParticleArrays& p) {
             if (discsOverlap(x, y, r, l, m)) largePairs_.push_back({l, m});
         }
     }
-    std::sort(largePairs_.begin(), largePairs_.end());
 }
 
 void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
                                std::vector<ContactPair>& out) {
     const std::size_t n = p.size();
-    const int chunks = parallel::chunksFor(threads, n);
+    const std::size_t small = n - large_.size();
+    const int chunks = parallel::chunksFor(threads, small);
     if (chunkPairs_.size() < static_cast<std::size_t>(chunks)) {
         chunkPairs_.resize(chunks);
-        chunkScratch_.resize(chunks);
+        chunkFound_.resize(chunks);
     }
     const double* x = p.x.data();
     const double* y = p.y.data();
@@ -144,55 +151,65 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
     const std::uint32_t* cellOf = cellOf_.data();
     const std::uint32_t* start = cellStart_.data();
     const std::uint32_t* entries = entries_.data();
-    const std::uint32_t nx = nx_, ny = ny_;
-    parallel::forChunks(chunks, n, [&](int c, std::size_t begin, std::size_t end) {
+    const std::uint32_t stride = nx_ + 2;
+    // Chunks are ranges of slots (cell order), not of particle indices.
+    parallel::forChunks(chunks, small, [&](int c, std::size_t begin, std::size_t end) {
         std::vector<ContactPair>& pairs = chunkPairs_[c];
-        std::vector<std::uint32_t>& partners = chunkScratch_[c];
-        pairs.clear();
-        for (std::size_t ii = begin; ii < end; ++ii) {
-            const std::uint32_t cell = cellOf[ii];
-            if (cell == kLarge) continue;
-            const auto i = static_cast<std::uint32_t>(ii);
-            const std::uint32_t cy = cell / nx, cx = cell - cy * nx;
-            const std::uint32_t x0 = cx > 0 ? cx - 1 : 0, x1 = cx + 1 < nx ? cx + 1 : cx;
-            const std::uint32_t y0 = cy > 0 ? cy - 1 : 0, y1 = cy + 1 < ny ? cy + 1 : cy;
+        std::size_t found = 0;
+        for (std::size_t a = begin; a < end; ++a) {
+            const std::uint32_t i = entries[a];
+            const std::uint32_t cell = cellOf[i];
             const double xi = x[i], yi = y[i], ri = r[i];
-            for (std::uint32_t row = y0; row <= y1; ++row) {
-                const std::uint32_t kEnd = start[row * nx + x1 + 1];
-                for (std::uint32_t k = start[row * nx + x0]; k < kEnd; ++k) {
-                    const std::uint32_t j = entries[k];
-                    // Same arithmetic as discsOverlap(i, j), written out so xi stays in a
-                    // register.
-                    const double dx = x[j] - xi;
-                    const double dy = y[j] - yi;
-                    const double rs = ri + r[j];
-                    if (j > i && dx * dx + dy * dy < rs * rs) partners.push_back(j);
-                }
-            }
-            if (!partners.empty()) appendPartners(i, partners, pairs);
+            // Half stencil: the rest of this cell and the east cell (one contiguous run), then
+            // the three cells of the row below (another). The other four neighbours find this
+            // particle from their side. The border ring of empty cells spares bounds checks.
+            const std::uint32_t k0 = static_cast<std::uint32_t>(a + 1), k1 = start[cell + 2];
+            const std::uint32_t k2 = start[cell + stride - 1], k3 = start[cell + stride + 2];
+            const std::size_t most = found + (k1 - k0) + (k3 - k2);
+            if (pairs.size() < most) pairs.resize(2 * most);  // grows, then stays
+            ContactPair* buf = pairs.data();
+            // discsOverlap's arithmetic; it is symmetric in i and j to the last bit
+            // (x[i] - x[j] is exactly -(x[j] - x[i])), so which of the two comes first does
+            // not matter. Branch-free: most candidates miss.
+            auto test = [&](std::uint32_t k) {
+                const std::uint32_t j = entries[k];
+                const double dx = x[j] - xi;
+                const double dy = y[j] - yi;
+                const double rs = ri + r[j];
+                buf[found] = {std::min(i, j), std::max(i, j)};
+                found += static_cast<std::size_t>(dx * dx + dy * dy < rs * rs);
+            };
+            for (std::uint32_t k = k0; k < k1; ++k)
+                test(k);
+            for (std::uint32_t k = k2; k < k3; ++k)
+                test(k);
         }
+        chunkFound_[c] = found;
     });
-    if (large_.empty()) {
-        concatenate(chunkPairs_, chunks, out);
-        return;
-    }
-    findLargePairs(p);
-    smallPairs_.clear();
-    concatenate(chunkPairs_, chunks, smallPairs_);
     const std::size_t before = out.size();
-    out.resize(before + smallPairs_.size() + largePairs_.size());
-    std::merge(smallPairs_.begin(), smallPairs_.end(), largePairs_.begin(), largePairs_.end(),
-               out.begin() + static_cast<std::ptrdiff_t>(before));
+    std::size_t total = 0;
+    for (int c = 0; c < chunks; ++c)
+        total += chunkFound_[c];
+    if (!large_.empty()) {
+        findLargePairs(p);
+        total += largePairs_.size();
+    }
+    out.resize(before + total);
+    ContactPair* dst = out.data() + before;
+    for (int c = 0; c < chunks; ++c) {
+        dst = std::copy_n(chunkPairs_[c].data(), chunkFound_[c], dst);
+    }
+    std::copy(largePairs_.begin(), largePairs_.end(), dst);
+    // Found in cell order; the resolve stage needs ascending (i, j).
+    sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
 }
 
 std::size_t GridBroadPhase::memoryBytes() const {
     std::size_t bytes = sizeof(std::uint32_t) * (cellOf_.capacity() + cellStart_.capacity() +
                                                  entries_.capacity() + large_.capacity());
-    bytes += sizeof(ContactPair) * (largePairs_.capacity() + smallPairs_.capacity());
+    bytes += sizeof(ContactPair) * (largePairs_.capacity() + sortScratch_.capacity());
     for (const auto& v : chunkPairs_)
         bytes += sizeof(ContactPair) * v.capacity();
-    for (const auto& v : chunkScratch_)
-        bytes += sizeof(std::uint32_t) * v.capacity();
     return bytes;
 }
 

@@ -24,9 +24,15 @@
 // one queries the cells its disc can reach, and large–large pairs are tested directly. Their
 // pairs are sorted and merged into the small–small list.
 //
-// Output order. Each particle i looks only for partners j > i and sorts the few it finds, so
-// the pairs come out in ascending (i, j) order, exactly as all-pairs gives them. Queries run in
-// parallel over contiguous ranges of i (see parallel.hpp), each range into its own list.
+// Query. Slots are visited in cell order with a half stencil: the rest of the particle's own
+// cell plus the east cell (one contiguous run of `entries`), then the three cells of the row
+// below (another run). Each pair is tested exactly once and the loop is branch-free; per
+// particle that is two short loops and, in the gas benchmark, about 4.5 candidates.
+//
+// Output order. Pairs are found in cell order and then sorted into ascending (i, j) order, the
+// order all-pairs gives, by an LSD radix sort over the pair list (cost proportional to the
+// pairs, which are few in a gas). Queries run in parallel over contiguous slot ranges, each into
+// its own list; the sorted union is the same whatever the ranges (see parallel.hpp).
 
 #include <cstdint>
 #include <vector>
@@ -40,8 +46,9 @@ namespace psb {
 
 class GridBroadPhase {
   public:
-    /// At most this many cells per small particle (memory: 4 bytes per cell).
-    static constexpr double kCellsPerParticle = 1.0;
+    /// At most this many cells per small particle (memory: 4 bytes per cell). Two cells per
+    /// particle halves the candidates of one, for 4 more bytes per particle.
+    static constexpr double kCellsPerParticle = 2.0;
 
     /// Chooses the cell size and origin for `p` (described by `stats`) and sorts the particles
     /// into cells. After build(), order() lists every particle index sorted by cell.
@@ -78,9 +85,9 @@ class GridBroadPhase {
     std::vector<std::uint32_t> entries_;
     std::vector<std::uint32_t> large_;
     std::vector<ContactPair> largePairs_;
-    std::vector<ContactPair> smallPairs_;
-    std::vector<std::vector<ContactPair>> chunkPairs_;
-    std::vector<std::vector<std::uint32_t>> chunkScratch_;
+    std::vector<ContactPair> sortScratch_;
+    std::vector<std::vector<ContactPair>> chunkPairs_;  ///< used up to chunkFound_[c]
+    std::vector<std::size_t> chunkFound_;
 };
 
 }  // namespace psb

@@ -23,9 +23,8 @@ struct ContactPair {
 
 /// Appends (i, j) for each j in `partners` (all > i), in ascending j. The list is short (the
 /// partners of one particle), so insertion sort is the fast choice.
-inline void appendPartners(std::uint32_t i, std::vector<std::uint32_t>& partners,
+inline void appendPartners(std::uint32_t i, std::uint32_t* partners, std::size_t n,
                            std::vector<ContactPair>& out) {
-    const std::size_t n = partners.size();
     for (std::size_t a = 1; a < n; ++a) {
         const std::uint32_t v = partners[a];
         std::size_t b = a;
@@ -35,8 +34,19 @@ inline void appendPartners(std::uint32_t i, std::vector<std::uint32_t>& partners
     }
     for (std::size_t a = 0; a < n; ++a)
         out.push_back({i, partners[a]});
+}
+
+inline void appendPartners(std::uint32_t i, std::vector<std::uint32_t>& partners,
+                           std::vector<ContactPair>& out) {
+    appendPartners(i, partners.data(), partners.size(), out);
     partners.clear();
 }
+
+/// Sorts pairs[from..] into ascending (i, j) order; every index is below `indexLimit`. Pairs
+/// must be distinct (then any correct sort gives the same list). LSD radix sort on 11-bit
+/// digits of j, then of i, using `scratch`; short lists use insertion into std::sort.
+void sortPairs(std::vector<ContactPair>& pairs, std::size_t from, std::vector<ContactPair>& scratch,
+               std::uint32_t indexLimit);
 
 /// Appends the per-chunk lists to `out` in chunk order.
 inline void concatenate(const std::vector<std::vector<ContactPair>>& chunks, int count,
