@@ -79,7 +79,7 @@ void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, 
     std::uint32_t* cellOf = cellOf_.data();
     const double largeAbove = large_.empty() ? INFINITY : largeAbove_;
     parallel::forChunks(
-        parallel::chunksFor(threads, n), n, [&](int, std::size_t begin, std::size_t end) {
+        threads, parallel::chunksFor(threads, n), n, [&](int, std::size_t begin, std::size_t end) {
             for (std::size_t i = begin; i < end; ++i) {
                 cellOf[i] =
                     r[i] > largeAbove ? kLarge : (cellY(y[i]) + 1) * stride + cellX(x[i]) + 1;
@@ -153,7 +153,7 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
     const std::uint32_t* entries = entries_.data();
     const std::uint32_t stride = nx_ + 2;
     // Chunks are ranges of slots (cell order), not of particle indices.
-    parallel::forChunks(chunks, small, [&](int c, std::size_t begin, std::size_t end) {
+    parallel::forChunks(threads, chunks, small, [&](int c, std::size_t begin, std::size_t end) {
         std::vector<ContactPair>& pairs = chunkPairs_[c];
         std::size_t found = 0;
         for (std::size_t a = begin; a < end; ++a) {

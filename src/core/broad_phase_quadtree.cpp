@@ -43,7 +43,7 @@ void QuadtreeBroadPhase::build(const ParticleArrays& p, const ParticleStats& s, 
     {
         std::uint32_t* code = code_.data();
         std::uint32_t* order = order_.data();
-        parallel::forChunks(parallel::chunksFor(threads, n), n,
+        parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
                             [&](int, std::size_t begin, std::size_t end) {
                                 for (std::size_t i = begin; i < end; ++i) {
                                     code[i] = spreadBits(quantize(x[i], s.minX, scale)) |
@@ -145,7 +145,7 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
     const double* r = p.radius.data();
     const Node* nodes = nodes_.data();
     const std::uint32_t* order = order_.data();
-    parallel::forChunks(chunks, n, [&](int c, std::size_t begin, std::size_t end) {
+    parallel::forChunks(threads, chunks, n, [&](int c, std::size_t begin, std::size_t end) {
         std::vector<ContactPair>& pairs = chunkPairs_[c];
         std::vector<std::uint32_t>& partners = chunkScratch_[c];
         pairs.clear();

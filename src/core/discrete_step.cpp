@@ -13,7 +13,7 @@ void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads
     double* vx = p.vx.data();
     double* vy = p.vy.data();
     const double* w = p.invMass.data();
-    parallel::forChunks(parallel::chunksFor(threads, n), n,
+    parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
                         [=](int, std::size_t begin, std::size_t end) {
                             for (std::size_t i = begin; i < end; ++i) {
                                 // Kinematic particles (w == 0) are moved by their owner, not by
@@ -31,7 +31,7 @@ void move(ParticleArrays& p, double dt, int threads) {
     double* y = p.y.data();
     const double* vx = p.vx.data();
     const double* vy = p.vy.data();
-    parallel::forChunks(parallel::chunksFor(threads, n), n,
+    parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
                         [=](int, std::size_t begin, std::size_t end) {
                             for (std::size_t i = begin; i < end; ++i) {
                                 x[i] += vx[i] * dt;

@@ -1,9 +1,12 @@
 #pragma once
 // How the discrete step uses more than one core.
 //
-// Threading model. OpenMP from the compiler (libgomp), used only through the two helpers
-// below, both a static `parallel for`: no task queue, no work stealing, no scheduler of ours.
-// Without OpenMP the helpers run the loop on the calling thread.
+// Threading model. Intel oneTBB (Debian's libtbb-dev) through the two helpers below: a
+// parallel_for over a fixed list of chunks, run in a task arena limited to the World's thread
+// count. The calling thread works too and takes any chunk another thread has not started, so
+// a step does not stall when a worker is descheduled (this machine is shared; a fork-join
+// runtime whose master waits for every worker at each barrier lost whole time slices there).
+// Without TBB the helpers run the loop on the calling thread.
 //
 // Determinism. Results must not depend on the thread count, so every parallel loop obeys one
 // of two rules:
@@ -14,42 +17,74 @@
 //      into blocks of a fixed size (kBlock particles, independent of the thread count), each
 //      block is reduced sequentially, and the block results are combined on one thread in block
 //      order. Minima, maxima and integer counts are exact in any order.
-// Lists built in parallel (contact pairs) are written per chunk and concatenated in chunk
-// order; because each chunk covers an ascending range of first indices and sorts its own
-// output, the concatenation is the same ascending (i, j) list for any number of chunks.
+// Lists built in parallel (contact pairs) are written per chunk, concatenated in chunk order
+// and sorted; pairs are distinct, so the sorted list is the same for any chunking.
 // The resolve and separate stages stay sequential: Gauss–Seidel over the pair list in order.
 
 #include <algorithm>
 #include <cstddef>
+
+#ifdef PSB_HAVE_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+#endif
 
 namespace psb::parallel {
 
 /// Particles per block of an order-sensitive reduction (rule 2 above). Fixed: changing it
 /// changes rounding, never correctness.
 inline constexpr std::size_t kBlock = 8192;
-/// Below this many items per thread a parallel region costs more than it saves.
-inline constexpr std::size_t kMinPerThread = 4096;
+/// Below this many items per chunk a parallel loop costs more than it saves.
+inline constexpr std::size_t kMinPerChunk = 4096;
+/// Chunks per thread: more than one, so that a thread that finishes early (or a worker that
+/// starts late) evens out the load.
+inline constexpr int kChunksPerThread = 4;
 
-/// How many chunks `threads` threads should split `n` items into (>= 1).
+#ifdef PSB_HAVE_TBB
+/// The arena limiting parallel loops to `threads` threads (made on first use, then reused).
+tbb::task_arena& arenaFor(int threads);
+#endif
+
+/// How many chunks to split `n` items into for `threads` threads (1 means run inline).
 [[nodiscard]] inline int chunksFor(int threads, std::size_t n) {
-    const std::size_t useful = std::max<std::size_t>(1, n / kMinPerThread);
-    return static_cast<int>(std::clamp<std::size_t>(useful, 1, std::max(threads, 1)));
+    if (threads <= 1) return 1;
+    const std::size_t useful = std::max<std::size_t>(1, n / kMinPerChunk);
+    return static_cast<int>(
+        std::min<std::size_t>(useful, static_cast<std::size_t>(threads) * kChunksPerThread));
+}
+
+/// Runs body(k) for k in [0, count) on up to `threads` threads.
+template <typename F>
+void forEachIndex(int threads, std::size_t count, F&& body) {
+#ifdef PSB_HAVE_TBB
+    if (threads > 1 && count > 1) {
+        arenaFor(threads).execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::size_t>(0, count, 1),
+                [&](const tbb::blocked_range<std::size_t>& range) {
+                    for (std::size_t k = range.begin(); k != range.end(); ++k)
+                        body(k);
+                },
+                tbb::simple_partitioner());
+        });
+        return;
+    }
+#else
+    (void)threads;
+#endif
+    for (std::size_t k = 0; k < count; ++k)
+        body(k);
 }
 
 /// Splits [0, n) into `chunks` contiguous ranges and calls f(chunk, begin, end) for each, in
-/// parallel with one thread per chunk.
+/// parallel when chunks > 1 (the thread count is the one chunksFor was given).
 template <typename F>
-void forChunks(int chunks, std::size_t n, F&& f) {
-    if (chunks <= 1) {
-        f(0, std::size_t{0}, n);
-        return;
-    }
-#pragma omp parallel for schedule(static, 1) num_threads(chunks)
-    for (int c = 0; c < chunks; ++c) {
-        const std::size_t begin = n * static_cast<std::size_t>(c) / chunks;
-        const std::size_t end = n * static_cast<std::size_t>(c + 1) / chunks;
-        f(c, begin, end);
-    }
+void forChunks(int threads, int chunks, std::size_t n, F&& f) {
+    forEachIndex(threads, static_cast<std::size_t>(chunks), [&](std::size_t c) {
+        f(static_cast<int>(c), n * c / chunks, n * (c + 1) / chunks);
+    });
 }
 
 /// Calls f(block, begin, end) for each block of kBlock items of [0, n), spread over up to
@@ -57,15 +92,8 @@ void forChunks(int chunks, std::size_t n, F&& f) {
 template <typename F>
 void forBlocks(int threads, std::size_t n, F&& f) {
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    const int t = chunksFor(threads, n);
-    if (t <= 1) {
-        for (std::size_t b = 0; b < blocks; ++b)
-            f(b, b * kBlock, std::min(n, (b + 1) * kBlock));
-        return;
-    }
-#pragma omp parallel for schedule(static) num_threads(t)
-    for (std::size_t b = 0; b < blocks; ++b)
-        f(b, b * kBlock, std::min(n, (b + 1) * kBlock));
+    forEachIndex(threads, blocks,
+                 [&](std::size_t b) { f(b, b * kBlock, std::min(n, (b + 1) * kBlock)); });
 }
 
 /// Blocks forBlocks makes of n items.
