@@ -12,7 +12,8 @@ BroadPhaseKind chooseBroadPhase(BroadPhaseKind requested, const ParticleArrays& 
     std::size_t large = 0;
     for (const double r : p.radius)
         large += r > largeAbove;
-    return large * kLargeFraction > n ? BroadPhaseKind::Quadtree : BroadPhaseKind::Grid;
+    if (large * large <= kLargePairsPerParticle * n) return BroadPhaseKind::Grid;
+    return n < kAllPairsBelowForQuadtree ? BroadPhaseKind::AllPairs : BroadPhaseKind::Quadtree;
 }
 
 }  // namespace psb

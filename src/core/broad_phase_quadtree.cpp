@@ -71,6 +71,7 @@ void QuadtreeBroadPhase::build(const ParticleArrays& p, const ParticleStats& s, 
     // Breadth-first split: nodes_ doubles as the work queue.
     nodes_.clear();
     level_.clear();
+    leaves_.clear();
     nodes_.push_back({0, 0, 0, 0, 0, static_cast<std::uint32_t>(n), 0, 0});
     level_.push_back(0);
     depth_ = 0;
@@ -79,7 +80,10 @@ void QuadtreeBroadPhase::build(const ParticleArrays& p, const ParticleStats& s, 
         const std::uint32_t begin = nodes_[k].begin, end = nodes_[k].end;
         const int level = level_[k];
         depth_ = std::max(depth_, level);
-        if (end - begin <= kLeafSize || level >= kMaxDepth) continue;
+        if (end - begin <= kLeafSize || level >= kMaxDepth) {
+            leaves_.push_back(static_cast<std::uint32_t>(k));
+            continue;
+        }
         const int shift = 2 * (kMaxDepth - 1 - level);
         auto quadrant = [&](std::uint32_t idx) { return (code[idx] >> shift) & 3u; };
         const auto firstChild = static_cast<std::uint32_t>(nodes_.size());
@@ -135,51 +139,77 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
                                    std::vector<ContactPair>& out) {
     const std::size_t n = p.size();
     if (n < 2 || nodes_.empty()) return;
+    const std::size_t leafCount = leaves_.size();
     const int chunks = parallel::chunksFor(threads, n);
     if (chunkPairs_.size() < static_cast<std::size_t>(chunks)) {
         chunkPairs_.resize(chunks);
-        chunkScratch_.resize(chunks);
+        chunkFound_.resize(chunks);
     }
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
     const Node* nodes = nodes_.data();
     const std::uint32_t* order = order_.data();
-    parallel::forChunks(threads, chunks, n, [&](int c, std::size_t begin, std::size_t end) {
+    const std::uint32_t* leaves = leaves_.data();
+    parallel::forChunks(threads, chunks, leafCount, [&](int c, std::size_t begin, std::size_t end) {
         std::vector<ContactPair>& pairs = chunkPairs_[c];
-        std::vector<std::uint32_t>& partners = chunkScratch_[c];
-        pairs.clear();
+        std::size_t found = 0;
         // Breadth is at most 4 per level below the current node, so a fixed stack suffices.
         std::uint32_t stack[4 * (kMaxDepth + 1) + 1];
-        for (std::size_t ii = begin; ii < end; ++ii) {
-            const auto i = static_cast<std::uint32_t>(ii);
-            // The slack keeps the box test conservative under rounding; the exact test below
-            // decides.
-            const double pad = r[i] * (1.0 + 1e-12) + slack_;
-            const double qx0 = x[i] - pad, qx1 = x[i] + pad;
-            const double qy0 = y[i] - pad, qy1 = y[i] + pad;
+        for (std::size_t li = begin; li < end; ++li) {
+            const std::uint32_t self = leaves[li];
+            const Node& leaf = nodes[self];
+            // One traversal per leaf with the leaf's own bounds (plus rounding slack); the
+            // exact test decides.
+            const double qx0 = leaf.minX - slack_, qx1 = leaf.maxX + slack_;
+            const double qy0 = leaf.minY - slack_, qy1 = leaf.maxY + slack_;
             int top = 0;
             stack[top++] = 0;
             while (top > 0) {
-                const Node& node = nodes[stack[--top]];
+                const std::uint32_t k = stack[--top];
+                const Node& node = nodes[k];
                 if (node.minX > qx1 || node.maxX < qx0 || node.minY > qy1 || node.maxY < qy0) {
                     continue;
                 }
-                if (node.childCount == 0) {
-                    for (std::uint32_t m = node.begin; m < node.end; ++m) {
-                        const std::uint32_t j = order[m];
-                        if (j > i && discsOverlap(x, y, r, i, j)) partners.push_back(j);
+                if (node.childCount != 0) {
+                    for (std::uint32_t ch = 0; ch < node.childCount; ++ch) {
+                        stack[top++] = node.firstChild + ch;
                     }
-                } else {
-                    for (std::uint32_t k = 0; k < node.childCount; ++k) {
-                        stack[top++] = node.firstChild + k;
+                    continue;
+                }
+                // Each pair of leaves once: from the lower-numbered one.
+                if (k < self) continue;
+                const std::size_t most =
+                    found + std::size_t{leaf.end - leaf.begin} * (node.end - node.begin);
+                if (pairs.size() < most) pairs.resize(2 * most);  // grows, then stays
+                ContactPair* buf = pairs.data();
+                for (std::uint32_t a = leaf.begin; a < leaf.end; ++a) {
+                    const std::uint32_t i = order[a];
+                    const double xi = x[i], yi = y[i], ri = r[i];
+                    // Within one leaf, only the slots after a.
+                    for (std::uint32_t b = k == self ? a + 1 : node.begin; b < node.end; ++b) {
+                        const std::uint32_t j = order[b];
+                        // discsOverlap's arithmetic, symmetric in i and j to the last bit.
+                        const double dx = x[j] - xi;
+                        const double dy = y[j] - yi;
+                        const double rs = ri + r[j];
+                        buf[found] = {std::min(i, j), std::max(i, j)};
+                        found += static_cast<std::size_t>(dx * dx + dy * dy < rs * rs);
                     }
                 }
             }
-            if (!partners.empty()) appendPartners(i, partners, pairs);
         }
+        chunkFound_[c] = found;
     });
-    concatenate(chunkPairs_, chunks, out);
+    const std::size_t before = out.size();
+    std::size_t total = 0;
+    for (int c = 0; c < chunks; ++c)
+        total += chunkFound_[c];
+    out.resize(before + total);
+    ContactPair* dst = out.data() + before;
+    for (int c = 0; c < chunks; ++c)
+        dst = std::copy_n(chunkPairs_[c].data(), chunkFound_[c], dst);
+    sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
 }
 
 std::size_t QuadtreeBroadPhase::memoryBytes() const {
@@ -188,8 +218,8 @@ std::size_t QuadtreeBroadPhase::memoryBytes() const {
     bytes += level_.capacity() + sizeof(Node) * nodes_.capacity();
     for (const auto& v : chunkPairs_)
         bytes += sizeof(ContactPair) * v.capacity();
-    for (const auto& v : chunkScratch_)
-        bytes += sizeof(std::uint32_t) * v.capacity();
+    bytes +=
+        sizeof(std::uint32_t) * leaves_.capacity() + sizeof(ContactPair) * sortScratch_.capacity();
     return bytes;
 }
 

@@ -22,9 +22,14 @@
 // touches the node's bounds. No radius limit or cell size is involved, which is why `auto`
 // picks the quadtree when radii spread widely.
 //
-// Query and order. Particles are queried in storage order, in parallel over contiguous ranges
-// of i; each keeps partners j > i, sorts them, and appends (i, j): the list is in the same
-// ascending (i, j) order as all-pairs (see parallel.hpp for why chunking cannot change it).
+// Query. One traversal per leaf, not per particle: the leaf's disc bounds select the leaves it
+// can touch, and each pair of touching leaves is tested once (from the lower-numbered leaf),
+// every particle against every particle, branch-free. A leaf holds at most kLeafSize discs, so
+// the traversal is shared by up to that many particles.
+//
+// Order. Pairs come out leaf by leaf and are then radix-sorted into the ascending (i, j) order
+// all-pairs gives (sortPairs); leaves are split over threads in chunks (see parallel.hpp for why
+// chunking cannot change the list).
 
 #include <cstdint>
 #include <vector>
@@ -63,9 +68,11 @@ class QuadtreeBroadPhase {
     std::vector<std::uint8_t> level_;  ///< depth of each node (build only)
     std::vector<Node> nodes_;
     int depth_ = 0;
-    double slack_ = 0.0;  ///< absolute rounding slack for box tests, metres
-    std::vector<std::vector<ContactPair>> chunkPairs_;
-    std::vector<std::vector<std::uint32_t>> chunkScratch_;
+    double slack_ = 0.0;                 ///< absolute rounding slack for box tests, metres
+    std::vector<std::uint32_t> leaves_;  ///< node indices of the leaves
+    std::vector<ContactPair> sortScratch_;
+    std::vector<std::vector<ContactPair>> chunkPairs_;  ///< used up to chunkFound_[c]
+    std::vector<std::size_t> chunkFound_;
 };
 
 }  // namespace psb

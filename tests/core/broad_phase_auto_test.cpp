@@ -29,6 +29,25 @@ TEST(AutoBroadPhase, RadiiSpreadOverDecadesUseTheQuadtree) {
               BroadPhaseKind::Quadtree);
 }
 
+/// n particles of which `large` have radius 1 m and the rest 1 cm, on a line.
+ParticleArrays bimodal(std::size_t n, std::size_t large) {
+    ParticleArrays p;
+    for (std::size_t k = 0; k < n; ++k)
+        test::push(p, 3.0 * k, 0.0, k < large ? 1.0 : 0.01);
+    return p;
+}
+
+TEST(AutoBroadPhase, ManyLargeDiscsUseTheQuadtreeButAFewOnlyTheGrid) {
+    // 45 % large: L² = 2025 n >> 16 n.
+    EXPECT_EQ(autoFor(bimodal(10000, 4500)), BroadPhaseKind::Quadtree);
+    // L² = 160000 = 16 n: still the grid.
+    EXPECT_EQ(autoFor(bimodal(10000, 400)), BroadPhaseKind::Grid);
+}
+
+TEST(AutoBroadPhase, FewParticlesWithSpreadRadiiUseAllPairs) {
+    EXPECT_EQ(autoFor(bimodal(100, 45)), BroadPhaseKind::AllPairs);
+}
+
 TEST(AutoBroadPhase, AnExplicitChoiceIsKept) {
     const ParticleArrays p = test::makeLayout(test::Layout::Uniform, 10, 1);
     std::vector<ParticleStats> scratch;
