@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <particle_sandbox/solver_settings.hpp>
+#include <particle_sandbox/world.hpp>
 
 #include "broad_phase_all_pairs.hpp"
 #include "broad_phase_scenes.hpp"
@@ -86,6 +87,28 @@ TEST(Agreement, PairsExactlyAtTheTouchingDistanceAreNotContacts) {
         ASSERT_EQ(pairs.size(), 2u) << toString(k);
         EXPECT_EQ(pairs[0], (ContactPair{0, 2})) << toString(k);
         EXPECT_EQ(pairs[1], (ContactPair{1, 2})) << toString(k);
+    }
+}
+
+}  // namespace
+}  // namespace psb
+
+namespace psb {
+namespace {
+
+TEST(Agreement, TinyAndDegenerateWorldsStepWithEveryBroadphase) {
+    for (const BroadPhaseKind k :
+         {BroadPhaseKind::AllPairs, BroadPhaseKind::Grid, BroadPhaseKind::Quadtree}) {
+        for (std::size_t n = 0; n <= 3; ++n) {
+            World w({}, {.broadphase = k});
+            for (std::size_t i = 0; i < n; ++i) {
+                // All on one point: zero-size bounds, one cell, coincident centres.
+                w.add({.position = {5.0, 5.0}, .velocity = {1.0, 0.0}, .radius = 1.0});
+            }
+            w.step(0.01);
+            w.step(0.01);
+            EXPECT_EQ(w.counters().maxOverlap > 0.0, n >= 2) << toString(k) << " n = " << n;
+        }
     }
 }
 
