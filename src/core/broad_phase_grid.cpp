@@ -88,21 +88,46 @@ void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, 
     // Counting sort: histogram, inclusive prefix sum, backward scatter. Scattering from the
     // last particle down with pre-decrement leaves cellStart[c] at the start of cell c and
     // each cell's indices ascending.
-    cellStart_.assign(cells + 1, 0);
+    //
+    // In parallel, each part owns a contiguous range of cells and does every pass for its
+    // cells only: all parts read all of cellOf (4 bytes a particle, sequentially), but no cell
+    // is touched by two threads, and each cell's slots come out exactly as in one pass, so
+    // `entries` does not depend on the thread count.
+    cellStart_.resize(cells + 1);
     std::uint32_t* start = cellStart_.data();
-    for (std::size_t i = 0; i < n; ++i) {
-        if (cellOf[i] != kLarge) ++start[cellOf[i]];
-    }
-    std::uint32_t sum = 0;
-    for (std::size_t c = 0; c <= cells; ++c) {
-        sum += start[c];
-        start[c] = sum;
-    }
     std::uint32_t* entries = entries_.data();
-    for (std::size_t i = n; i-- > 0;) {
-        const std::uint32_t c = cellOf[i];
-        if (c != kLarge) entries[--start[c]] = static_cast<std::uint32_t>(i);
-    }
+    const int parts = parallel::chunksFor(threads, n) > 1 ? threads : 1;
+    partTotals_.assign(static_cast<std::size_t>(parts) + 1, 0);
+    auto cellBegin = [&](int part) { return (cells + 1) * part / parts; };
+    parallel::forEachIndex(threads, parts, [&](std::size_t part) {
+        const std::size_t lo = cellBegin(static_cast<int>(part));
+        const std::size_t hi = cellBegin(static_cast<int>(part) + 1);
+        std::fill(start + lo, start + hi, 0u);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t c = cellOf[i];  // kLarge is beyond every range
+            if (c - lo < hi - lo) ++start[c];
+        }
+        std::uint32_t sum = 0;
+        for (std::size_t c = lo; c < hi; ++c) {
+            sum += start[c];
+            start[c] = sum;
+        }
+        partTotals_[part + 1] = sum;
+    });
+    for (int part = 0; part < parts; ++part)
+        partTotals_[part + 1] += partTotals_[part];
+    parallel::forEachIndex(threads, parts, [&](std::size_t part) {
+        const std::size_t lo = cellBegin(static_cast<int>(part));
+        const std::size_t hi = cellBegin(static_cast<int>(part) + 1);
+        const std::uint32_t offset = partTotals_[part];
+        for (std::size_t c = lo; c < hi; ++c)
+            start[c] += offset;
+        for (std::size_t i = n; i-- > 0;) {
+            const std::size_t c = cellOf[i];
+            if (c - lo < hi - lo) entries[--start[c]] = static_cast<std::uint32_t>(i);
+        }
+    });
+    const std::uint32_t sum = partTotals_[parts];
     std::copy(large_.begin(), large_.end(), entries_.begin() + static_cast<std::ptrdiff_t>(sum));
 }
 

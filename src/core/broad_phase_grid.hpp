@@ -8,10 +8,11 @@
 //   entries[k]     particle indices, sorted by cell, ascending within a cell       one per particle
 //                  (small particles first, then the large ones in index order)
 //
-// Building is one parallel pass (cell of each particle), one sequential histogram, one prefix
-// sum and one sequential backward scatter (which leaves each cell's indices ascending). Because
-// rows are row-major, the three cells of one stencil row are contiguous in `entries`, so the
-// 3×3 neighbourhood of a particle is three contiguous runs.
+// Building is one pass for the cell of each particle, then a counting sort (histogram, prefix
+// sum, backward scatter, which leaves each cell's indices ascending); with several threads each
+// owns a range of cells, so the sort is parallel without atomics and its result is the same.
+// Because rows are row-major, the three cells of one stencil row are contiguous in `entries`, so
+// the 3×3 neighbourhood of a particle is three contiguous runs.
 //
 // Cell size. Cells are at least twice the largest "small" radius, so two overlapping small
 // particles are in the same or adjacent cells (with a relative margin for rounding; clamping
@@ -84,6 +85,7 @@ class GridBroadPhase {
     std::vector<std::uint32_t> cellStart_;
     std::vector<std::uint32_t> entries_;
     std::vector<std::uint32_t> large_;
+    std::vector<std::uint32_t> partTotals_;  ///< particles in the cell ranges before each part
     std::vector<ContactPair> largePairs_;
     std::vector<ContactPair> sortScratch_;
     std::vector<std::vector<ContactPair>> chunkPairs_;  ///< used up to chunkFound_[c]
