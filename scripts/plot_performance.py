@@ -20,6 +20,8 @@ NAME = re.compile(r"^(?P<family>[a-z0-9-]+)/(?P<rest>.*?)(/iterations:\d+)?(/rea
 def load(paths):
     """{name: [ns per particle-step, one per repetition]} and {name: counters}."""
     runs, counters = defaultdict(list), {}
+    global cpu_runs
+    cpu_runs = defaultdict(list)
     for path in paths:
         with open(path) as f:
             data = json.load(f)
@@ -31,6 +33,9 @@ def load(paths):
                 continue
             name = m.group("family") + "/" + m.group("rest")
             runs[name].append(1e9 / b["items_per_second"])
+            n = int(name.rsplit("/n:", 1)[1])
+            scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b.get("time_unit", "ns")]
+            cpu_runs[name].append(b["cpu_time"] * scale / n)
             counters[name] = b
     return runs, counters
 
@@ -46,7 +51,8 @@ def parse(name):
     parts = name.split("/")
     n = int(parts[-1].split(":")[1])
     if parts[0] == "gas":
-        return "gas", f"{parts[1]}, {parts[2].replace('threads:', '')} thread(s)", n
+        t = int(parts[2].replace("threads:", ""))
+        return "gas", f"{parts[1]}, {t} thread" + ("s" if t > 1 else ""), n
     if parts[0] == "box2d":
         return "box2d", "Box2D 2.4.1, 1 thread", n
     return "feature", parts[1], n
@@ -60,8 +66,9 @@ def svg(series, path):
     y0, y1 = math.floor(math.log10(min(ys))), math.ceil(math.log10(max(ys)))
     px = lambda n: left + (math.log10(n) - x0) / (x1 - x0) * (w - left - right)
     py = lambda v: h - bottom - (math.log10(v) - y0) / (y1 - y0) * (h - top - bottom)
-    colours = ["#1f77b4", "#aec7e8", "#d62728", "#ff9896", "#2ca02c", "#98df8a", "#9467bd",
-               "#8c564b", "#e377c2", "#7f7f7f"]
+    # One colour per broadphase; dashed lines for more than one thread.
+    colours = {"grid": "#1f77b4", "quadtree": "#2ca02c", "all-pairs": "#d62728",
+               "Box2D 2.4.1": "#444444"}
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{w}" height="{h}" '
            f'font-family="sans-serif" font-size="12">',
            f'<rect width="{w}" height="{h}" fill="white"/>']
@@ -83,15 +90,16 @@ def svg(series, path):
     out.append(f'<text transform="translate(16,{(top + h - bottom) / 2}) rotate(-90)" '
                f'text-anchor="middle">ns per particle-step (lower is better)</text>')
     for k, (label, pts) in enumerate(sorted(series.items())):
-        c = colours[k % len(colours)]
+        c = colours.get(label.split(",")[0], "#9467bd")
+        dash = ' stroke-dasharray="6,4"' if "threads" in label else ""
         pts = sorted(pts)
         d = " ".join(f"{px(n):.1f},{py(v):.1f}" for n, v in pts)
-        out.append(f'<polyline points="{d}" fill="none" stroke="{c}" stroke-width="2"/>')
+        out.append(f'<polyline points="{d}" fill="none" stroke="{c}" stroke-width="2"{dash}/>')
         for n, v in pts:
             out.append(f'<circle cx="{px(n):.1f}" cy="{py(v):.1f}" r="3" fill="{c}"/>')
         ly = top + 14 + 18 * k
         out.append(f'<line x1="{w - right + 10}" y1="{ly - 4}" x2="{w - right + 30}" '
-                   f'y2="{ly - 4}" stroke="{c}" stroke-width="2"/>')
+                   f'y2="{ly - 4}" stroke="{c}" stroke-width="2"{dash}/>')
         out.append(f'<text x="{w - right + 36}" y="{ly}">{label}</text>')
     out.append("</svg>")
     with open(path, "w") as f:
@@ -104,6 +112,8 @@ def main():
     runs, counters = load(sys.argv[2:])
     series = defaultdict(list)
     table = defaultdict(dict)
+    global label_names
+    label_names = {}
     features = {}
     for name, values in runs.items():
         kind, label, n = parse(name)
@@ -112,6 +122,7 @@ def main():
             features[label] = (med, min(values), max(values), counters[name])
             continue
         series[label].append((n, med))
+        label_names[(label, n)] = name
         table[label][n] = (med, min(values), max(values), counters[name])
     svg(series, sys.argv[1])
 
@@ -129,11 +140,28 @@ def main():
                 cells.append("")
         print(f"| {label} | " + " | ".join(cells) + " |")
 
+    print("\nOne thread, from the benchmark thread's CPU time instead of wall-clock time (time the "
+          "thread spent descheduled by other processes is not counted), million particle-steps "
+          "per second, median\n")
+    print("| broadphase | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
+    print("|---|" + "---|" * len(sizes))
+    for label in sorted(table):
+        if "threads" in label:
+            continue
+        cells = []
+        for n in sizes:
+            if n in table[label]:
+                cpu = median(cpu_runs[label_names[(label, n)]])
+                cells.append(f"{1e3 / cpu:.1f}")
+            else:
+                cells.append("")
+        print(f"| {label.split(',')[0]} | " + " | ".join(cells) + " |")
+
     print("\nBytes per particle (World::memoryBytes() / N: particle arrays, id table, step scratch)\n")
     print("| broadphase | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
     print("|---|" + "---|" * len(sizes))
     for label in sorted(table):
-        if "1 thread" not in label or "bytes_per_particle" not in next(iter(table[label].values()))[3]:
+        if "threads" in label or "bytes_per_particle" not in next(iter(table[label].values()))[3]:
             continue
         cells = [f"{table[label][n][3]['bytes_per_particle']:.1f}" if n in table[label] else ""
                  for n in sizes]

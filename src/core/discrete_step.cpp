@@ -79,6 +79,7 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
         StageTimer t(profile.findPairs);
         findPairs(p, ctx);
     }
+    profile.pairs += ctx.pairs.size();
     {
         StageTimer t(profile.resolve);
         resolve(p, def, ctx, counters);
