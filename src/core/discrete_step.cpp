@@ -25,28 +25,33 @@ void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads
                         });
 }
 
-void move(ParticleArrays& p, double dt, int threads) {
+void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>* bounds) {
     const std::size_t n = p.size();
     double* x = p.x.data();
     double* y = p.y.data();
     const double* vx = p.vx.data();
     const double* vy = p.vy.data();
-    parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
-                        [=](int, std::size_t begin, std::size_t end) {
-                            for (std::size_t i = begin; i < end; ++i) {
-                                x[i] += vx[i] * dt;
-                                y[i] += vy[i] * dt;
-                            }
-                        });
+    if (bounds) bounds->resize(parallel::blockCount(n));
+    parallel::forBlocks(threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            x[i] += vx[i] * dt;
+            y[i] += vy[i] * dt;
+        }
+        // Measured while the block is still in cache: one pass over memory, not two.
+        if (bounds) measureBlock(p, begin, end, (*bounds)[b]);
+    });
 }
 
 void findPairs(const ParticleArrays& p, StepContext& ctx) {
     ctx.pairs.clear();
+    const bool statsFresh = ctx.statsFresh;
+    ctx.statsFresh = false;
     if (p.size() < 2) {
         ctx.broadPhaseUsed = chooseBroadPhase(ctx.broadPhase, p, ParticleStats{});
         return;
     }
-    const ParticleStats stats = measureParticles(p, ctx.threads, ctx.statsScratch);
+    const ParticleStats stats = statsFresh ? combineBlocks(ctx.statsScratch, p.size())
+                                           : measureParticles(p, ctx.threads, ctx.statsScratch);
     ctx.broadPhaseUsed = chooseBroadPhase(ctx.broadPhase, p, stats);
     switch (ctx.broadPhaseUsed) {
         case BroadPhaseKind::Grid:
@@ -73,7 +78,8 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     }
     {
         StageTimer t(profile.move);
-        move(p, dt, ctx.threads);
+        move(p, dt, ctx.threads, &ctx.statsScratch);
+        ctx.statsFresh = p.size() > 0;
     }
     {
         StageTimer t(profile.findPairs);

@@ -7,40 +7,39 @@
 
 namespace psb {
 
-ParticleStats measureParticles(const ParticleArrays& p, int threads,
-                               std::vector<ParticleStats>& blockScratch) {
-    const std::size_t n = p.size();
-    ParticleStats s;
-    if (n == 0) return s;
+void measureBlock(const ParticleArrays& p, std::size_t begin, std::size_t end, ParticleStats& out) {
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
-    blockScratch.resize(parallel::blockCount(n));
-    // The radius sum is the only order-sensitive term: one sequential sum per fixed block,
-    // blocks added in order (rule 2 of parallel.hpp).
-    parallel::forBlocks(threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        double minX = x[begin], maxX = x[begin], minY = y[begin], maxY = y[begin];
-        double sumR = 0.0, maxR = 0.0;
-        for (std::size_t i = begin; i < end; ++i) {
-            minX = std::min(minX, x[i]);
-            maxX = std::max(maxX, x[i]);
-            minY = std::min(minY, y[i]);
-            maxY = std::max(maxY, y[i]);
-            sumR += r[i];
-            maxR = std::max(maxR, r[i]);
-        }
-        ParticleStats& o = blockScratch[b];
-        o.minX = minX;
-        o.maxX = maxX;
-        o.minY = minY;
-        o.maxY = maxY;
-        o.meanRadius = sumR;  // a sum until combined below
-        o.maxRadius = maxR;
-    });
-    s = blockScratch[0];
-    double sumR = blockScratch[0].meanRadius;
-    for (std::size_t b = 1; b < blockScratch.size(); ++b) {
-        const ParticleStats& o = blockScratch[b];
+    double minX = x[begin], maxX = x[begin], minY = y[begin], maxY = y[begin];
+    double sumR = 0.0, maxR = 0.0;
+    for (std::size_t i = begin; i < end; ++i) {
+        minX = std::min(minX, x[i]);
+        maxX = std::max(maxX, x[i]);
+        minY = std::min(minY, y[i]);
+        maxY = std::max(maxY, y[i]);
+        sumR += r[i];
+        maxR = std::max(maxR, r[i]);
+    }
+    out.count = end - begin;
+    out.minX = minX;
+    out.maxX = maxX;
+    out.minY = minY;
+    out.maxY = maxY;
+    out.meanRadius = sumR;  // a sum until combined
+    out.maxRadius = maxR;
+}
+
+ParticleStats combineBlocks(const std::vector<ParticleStats>& blocks, std::size_t n) {
+    ParticleStats s;
+    if (n == 0) return s;
+    // Blocks in order: the radius sum rounds the same way for any thread count (rule 2 of
+    // parallel.hpp).
+    const std::size_t count = parallel::blockCount(n);
+    s = blocks[0];
+    double sumR = blocks[0].meanRadius;
+    for (std::size_t b = 1; b < count; ++b) {
+        const ParticleStats& o = blocks[b];
         s.minX = std::min(s.minX, o.minX);
         s.maxX = std::max(s.maxX, o.maxX);
         s.minY = std::min(s.minY, o.minY);
@@ -53,6 +52,17 @@ ParticleStats measureParticles(const ParticleArrays& p, int threads,
     s.maxAbsCoordinate =
         std::max({std::abs(s.minX), std::abs(s.maxX), std::abs(s.minY), std::abs(s.maxY)});
     return s;
+}
+
+ParticleStats measureParticles(const ParticleArrays& p, int threads,
+                               std::vector<ParticleStats>& blockScratch) {
+    const std::size_t n = p.size();
+    if (n == 0) return {};
+    blockScratch.resize(parallel::blockCount(n));
+    parallel::forBlocks(threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        measureBlock(p, begin, end, blockScratch[b]);
+    });
+    return combineBlocks(blockScratch, n);
 }
 
 }  // namespace psb

@@ -23,4 +23,9 @@ struct ParticleStats {
 [[nodiscard]] ParticleStats measureParticles(const ParticleArrays& p, int threads,
                                              std::vector<ParticleStats>& blockScratch);
 
+/// The partial result of particles [begin, end) (end > begin), for combineBlocks.
+void measureBlock(const ParticleArrays& p, std::size_t begin, std::size_t end, ParticleStats& out);
+/// Combines the per-block results of parallel::forBlocks over n particles, in block order.
+[[nodiscard]] ParticleStats combineBlocks(const std::vector<ParticleStats>& blocks, std::size_t n);
+
 }  // namespace psb

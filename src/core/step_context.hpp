@@ -20,7 +20,8 @@ struct StepContext {
     std::vector<ContactPair> pairs;
     GridBroadPhase grid;
     QuadtreeBroadPhase quadtree;
-    std::vector<ParticleStats> statsScratch;
+    std::vector<ParticleStats> statsScratch;  ///< per-block bounds
+    bool statsFresh = false;  ///< statsScratch describes the current positions (set by move)
     std::vector<double> wallImpulseScratch;
     std::vector<std::uint64_t> wallHitScratch;
 };
