@@ -81,6 +81,7 @@ class GridBroadPhase {
     std::uint32_t nx_ = 1, ny_ = 1;
     double largeAbove_ = 0.0;  ///< radius above which a particle is large
     double smallMaxRadius_ = 0.0;
+    double equalRadius_ = 0.0;  ///< the radius of every particle when all are equal, else 0
     std::vector<std::uint32_t> cellOf_;
     std::vector<std::uint32_t> cellStart_;
     std::vector<std::uint32_t> entries_;

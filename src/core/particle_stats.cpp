@@ -12,7 +12,7 @@ void measureBlock(const ParticleArrays& p, std::size_t begin, std::size_t end, P
     const double* y = p.y.data();
     const double* r = p.radius.data();
     double minX = x[begin], maxX = x[begin], minY = y[begin], maxY = y[begin];
-    double sumR = 0.0, maxR = 0.0;
+    double sumR = 0.0, maxR = 0.0, minR = r[begin];
     for (std::size_t i = begin; i < end; ++i) {
         minX = std::min(minX, x[i]);
         maxX = std::max(maxX, x[i]);
@@ -20,6 +20,7 @@ void measureBlock(const ParticleArrays& p, std::size_t begin, std::size_t end, P
         maxY = std::max(maxY, y[i]);
         sumR += r[i];
         maxR = std::max(maxR, r[i]);
+        minR = std::min(minR, r[i]);
     }
     out.count = end - begin;
     out.minX = minX;
@@ -28,6 +29,7 @@ void measureBlock(const ParticleArrays& p, std::size_t begin, std::size_t end, P
     out.maxY = maxY;
     out.meanRadius = sumR;  // a sum until combined
     out.maxRadius = maxR;
+    out.minRadius = minR;
 }
 
 ParticleStats combineBlocks(const std::vector<ParticleStats>& blocks, std::size_t n) {
@@ -45,6 +47,7 @@ ParticleStats combineBlocks(const std::vector<ParticleStats>& blocks, std::size_
         s.minY = std::min(s.minY, o.minY);
         s.maxY = std::max(s.maxY, o.maxY);
         s.maxRadius = std::max(s.maxRadius, o.maxRadius);
+        s.minRadius = std::min(s.minRadius, o.minRadius);
         sumR += o.meanRadius;
     }
     s.count = n;

@@ -13,6 +13,7 @@ struct ParticleStats {
     std::size_t count = 0;
     double minX = 0.0, minY = 0.0, maxX = 0.0, maxY = 0.0;  ///< bounds of the centres, metres
     double meanRadius = 0.0;                                ///< metres
+    double minRadius = 0.0;                                 ///< metres
     double maxRadius = 0.0;                                 ///< metres
     double maxAbsCoordinate = 0.0;  ///< largest |coordinate| of a centre, metres (for rounding)
 };
