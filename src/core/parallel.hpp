@@ -4,8 +4,9 @@
 // Threading model. Intel oneTBB (Debian's libtbb-dev) through the two helpers below: a
 // parallel_for over a fixed list of chunks, run in a task arena limited to the World's thread
 // count. The calling thread works too and takes any chunk another thread has not started, so
-// a step does not stall when a worker is descheduled (this machine is shared; a fork-join
-// runtime whose master waits for every worker at each barrier lost whole time slices there).
+// a step does not stall when a worker is descheduled (on a machine shared with other work, a
+// fork-join runtime whose master waits for every worker at each barrier loses whole time
+// slices; we measured that with OpenMP before choosing TBB).
 // Without TBB the helpers run the loop on the calling thread.
 //
 // Determinism. Results must not depend on the thread count, so every parallel loop obeys one
@@ -18,7 +19,9 @@
 //      block is reduced sequentially, and the block results are combined on one thread in block
 //      order. Minima, maxima and integer counts are exact in any order.
 // Lists built in parallel (contact pairs) are written per chunk, concatenated in chunk order
-// and sorted; pairs are distinct, so the sorted list is the same for any chunking.
+// and sorted; pairs are distinct, so the sorted list is the same for any chunking. The grid's
+// counting sort splits cells, not particles, between threads, so each cell's slots are filled
+// by one thread in the same order as by a single pass.
 // The resolve and separate stages stay sequential: Gauss–Seidel over the pair list in order.
 
 #include <algorithm>
