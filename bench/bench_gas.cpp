@@ -1,14 +1,18 @@
 // The gas benchmark: particle-steps per second of the discrete step, per broadphase, thread
 // count and N, with memory per particle; and the cost of features a scene does not use.
 //
-// Names: gas/<broadphase>/threads:<t>/n:<N> and feature/<feature>:<off|on>/n:<N>. Counters:
+// Names: gas/<broadphase>/threads:<t>/n:<N>, spread/<broadphase>/span:1000/n:<N> and
+// feature/<feature>:<off|on>/n:<N>. Counters:
 // items_per_second = particle-steps per second; bytes_per_particle = World::memoryBytes() / N
 // (particle arrays, id table and step scratch, by capacity); <stage>_us = mean microseconds per
 // step spent in that stage.
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "gas_scene.hpp"
 
@@ -88,6 +92,38 @@ void feature(benchmark::State& state, Feature f, bool on, std::size_t n) {
     reportProfile(state, sum, w, n);
 }
 
+/// Radii log-uniform over `span` (largest 10 m), packing fraction 0.1, otherwise the gas: the
+/// scene that decides between grid and quadtree in `auto`.
+void spread(benchmark::State& state, BroadPhaseKind kind, double span, std::size_t n) {
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::normal_distribution<double> vel(0.0, 1.0);
+    std::vector<double> radius(n);
+    double area = 0.0;
+    for (double& r : radius) {
+        r = 10.0 * std::pow(span, u(rng)) / span;
+        area += 3.141592653589793 * r * r;
+    }
+    WorldDef def;
+    def.width = def.height = std::sqrt(area / kPackingFraction);
+    World w(def, {.dt = kDt, .broadphase = kind});
+    w.setThreads(1);
+    w.reserve(n);
+    for (const double r : radius) {
+        w.add({.position = {r + (def.width - 2 * r) * u(rng), r + (def.height - 2 * r) * u(rng)},
+               .velocity = {vel(rng), vel(rng)},
+               .mass = r * r,
+               .radius = r});
+    }
+    w.step();
+    StepProfile sum;
+    for (auto _ : state) {
+        w.step();
+        accumulate(sum, w.profile());
+    }
+    reportProfile(state, sum, w, n);
+}
+
 void registerAll() {
     const std::size_t sizes[] = {1000, 3000, 10000, 30000, 100000, 300000, 1000000};
     for (const BroadPhaseKind kind :
@@ -105,6 +141,18 @@ void registerAll() {
                 // whole number of intervals so that the reorder's cost is counted at its rate.
                 if (n >= kReorderMinParticles) b->Iterations(kReorderInterval);
             }
+        }
+    }
+    for (const BroadPhaseKind kind :
+         {BroadPhaseKind::Grid, BroadPhaseKind::Quadtree, BroadPhaseKind::Auto}) {
+        for (const std::size_t n : {10000, 100000}) {
+            const std::string name =
+                "spread/" + std::string(toString(kind)) + "/span:1000/n:" + std::to_string(n);
+            // The grid is slow here by design (that is the point); a few steps suffice.
+            benchmark::RegisterBenchmark(name.c_str(), spread, kind, 1000.0, n)
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond)
+                ->Iterations(4);
         }
     }
     const std::pair<Feature, const char*> features[] = {

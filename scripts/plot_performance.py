@@ -53,6 +53,8 @@ def parse(name):
     if parts[0] == "gas":
         t = int(parts[2].replace("threads:", ""))
         return "gas", f"{parts[1]}, {t} thread" + ("s" if t > 1 else ""), n
+    if parts[0] == "spread":
+        return "spread", f"{parts[1]}", n
     if parts[0] == "box2d":
         return "box2d", "Box2D 2.4.1, 1 thread", n
     return "feature", parts[1], n
@@ -115,57 +117,64 @@ def main():
     global label_names
     label_names = {}
     features = {}
+    spreads = {}
     for name, values in runs.items():
         kind, label, n = parse(name)
         med = median(values)
         if kind == "feature":
             features[label] = (med, min(values), max(values), counters[name])
             continue
+        if kind == "spread":
+            spreads[(label, n)] = (med, min(values), max(values), counters[name])
+            continue
         series[label].append((n, med))
         label_names[(label, n)] = name
         table[label][n] = (med, min(values), max(values), counters[name])
-    svg(series, sys.argv[1])
+    if series:
+        svg(series, sys.argv[1])
 
     sizes = sorted({n for row in table.values() for n in row})
-    print("Million particle-steps per second (median; min..max over repetitions in brackets)\n")
-    print("| broadphase, threads | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
-    print("|---|" + "---|" * len(sizes))
-    for label in sorted(table):
-        cells = []
-        for n in sizes:
-            if n in table[label]:
-                med, lo, hi, _ = table[label][n]
-                cells.append(f"{1e3 / med:.1f} [{1e3 / hi:.1f}..{1e3 / lo:.1f}]")
-            else:
-                cells.append("")
-        print(f"| {label} | " + " | ".join(cells) + " |")
+    if sizes:
+        print("Million particle-steps per second (median; min..max over repetitions in "
+              "brackets)\n")
+        print("| broadphase, threads | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
+        print("|---|" + "---|" * len(sizes))
+        for label in sorted(table):
+            cells = []
+            for n in sizes:
+                if n in table[label]:
+                    med, lo, hi, _ = table[label][n]
+                    cells.append(f"{1e3 / med:.1f} [{1e3 / hi:.1f}..{1e3 / lo:.1f}]")
+                else:
+                    cells.append("")
+            print(f"| {label} | " + " | ".join(cells) + " |")
 
-    print("\nOne thread, from the benchmark thread's CPU time instead of wall-clock time (time the "
-          "thread spent descheduled by other processes is not counted), million particle-steps "
-          "per second, median\n")
-    print("| broadphase | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
-    print("|---|" + "---|" * len(sizes))
-    for label in sorted(table):
-        if "threads" in label:
-            continue
-        cells = []
-        for n in sizes:
-            if n in table[label]:
-                cpu = median(cpu_runs[label_names[(label, n)]])
-                cells.append(f"{1e3 / cpu:.1f}")
-            else:
-                cells.append("")
-        print(f"| {label.split(',')[0]} | " + " | ".join(cells) + " |")
+        print("\nOne thread, from the benchmark thread's CPU time instead of wall-clock time (time the "
+              "thread spent descheduled by other processes is not counted), million particle-steps "
+              "per second, median\n")
+        print("| broadphase | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
+        print("|---|" + "---|" * len(sizes))
+        for label in sorted(table):
+            if "threads" in label:
+                continue
+            cells = []
+            for n in sizes:
+                if n in table[label]:
+                    cpu = median(cpu_runs[label_names[(label, n)]])
+                    cells.append(f"{1e3 / cpu:.1f}")
+                else:
+                    cells.append("")
+            print(f"| {label.split(',')[0]} | " + " | ".join(cells) + " |")
 
-    print("\nBytes per particle (World::memoryBytes() / N: particle arrays, id table, step scratch)\n")
-    print("| broadphase | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
-    print("|---|" + "---|" * len(sizes))
-    for label in sorted(table):
-        if "threads" in label or "bytes_per_particle" not in next(iter(table[label].values()))[3]:
-            continue
-        cells = [f"{table[label][n][3]['bytes_per_particle']:.1f}" if n in table[label] else ""
-                 for n in sizes]
-        print(f"| {label.split(',')[0]} | " + " | ".join(cells) + " |")
+        print("\nBytes per particle (World::memoryBytes() / N: particle arrays, id table, step scratch)\n")
+        print("| broadphase | " + " | ".join(f"N = {n:,}" for n in sizes) + " |")
+        print("|---|" + "---|" * len(sizes))
+        for label in sorted(table):
+            if "threads" in label or "bytes_per_particle" not in next(iter(table[label].values()))[3]:
+                continue
+            cells = [f"{table[label][n][3]['bytes_per_particle']:.1f}" if n in table[label] else ""
+                     for n in sizes]
+            print(f"| {label.split(',')[0]} | " + " | ".join(cells) + " |")
 
     grid = next((table[l] for l in table if l.startswith("grid, 1 ")), None)
     if grid and 10000 in grid and 1000000 in grid:
@@ -186,6 +195,20 @@ def main():
             f"N = {n:,}: grid 1 thread {box[n][0] / grid[n][0]:.1f}x"
             + (f", 2 threads {box[n][0] / grid2[n][0]:.1f}x" if grid2 and n in grid2 else "")
             for n in sorted(box) if n in grid))
+
+    if spreads:
+        ns = sorted({n for _, n in spreads})
+        print("\nRadii log-uniform over 1000x (largest 10 m), packing fraction 0.1, 1 thread: "
+              "million particle-steps per second, median [min..max] (label: broadphase used)\n")
+        print("| broadphase | " + " | ".join(f"N = {n:,}" for n in ns) + " |")
+        print("|---|" + "---|" * len(ns))
+        for label in sorted({l for l, _ in spreads}):
+            cells = []
+            for n in ns:
+                med, lo, hi, b = spreads[(label, n)]
+                cells.append(f"{1e3 / med:.2f} [{1e3 / hi:.2f}..{1e3 / lo:.2f}]"
+                             + (f" ({b.get('label', '')})" if label == "auto" else ""))
+            print(f"| {label} | " + " | ".join(cells) + " |")
 
     if features:
         print("\nFeature cost (N = 100,000, grid, 1 thread; ms per step, median [min..max]; "

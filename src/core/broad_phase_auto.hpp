@@ -10,10 +10,10 @@
 // large particles out of its cells and tests them against each other directly, about L²/2
 // tests per step, which is nothing for a few large discs among many small ones and dominates
 // when radii spread widely. The quadtree has no size limit (its node bounds cover the discs).
-// Thresholds from measurements on the development machine (docs/performance.md): grid beats
-// all-pairs from about 32 particles; with radii log-uniform over 10× to 1000× at packing
-// fraction 0.1, the quadtree beats the grid by 1.1× at 10^4 and by 8–25× at 10^5 particles, while
-// with 0.5 % large discs the grid is 3× faster than the quadtree.
+// Thresholds from measurements on the development machine (docs/performance.md): the grid
+// beats all-pairs from about 32 particles and is about 4× faster than the quadtree on a gas of
+// equal discs; with radii log-uniform over 1000× at packing fraction 0.1 (bench `spread/...`)
+// the quadtree step is 2× faster than the grid's at 10^4 particles and 20× at 10^5.
 
 #include <particle_sandbox/particle_arrays.hpp>
 #include <particle_sandbox/solver_settings.hpp>
