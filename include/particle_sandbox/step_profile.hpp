@@ -27,6 +27,7 @@ struct StepCounters {
     std::uint64_t wallCollisions = 0;  ///< wall rebounds (outward-moving particle turned inward)
     double wallImpulse = 0.0;          ///< sum of |normal impulse| delivered by walls, kg·m/s
     double maxOverlap = 0.0;           ///< deepest pair overlap found by detection, metres
+    std::uint64_t events = 0;          ///< exact mode: events processed (collisions, walls, cells)
 };
 
 }  // namespace psb

@@ -19,6 +19,9 @@
 namespace psb {
 
 struct StepContext;
+namespace exact {
+class ExactStepper;
+}
 
 /// Owns the particles and advances them in time.
 ///
@@ -39,9 +42,11 @@ class World {
     [[nodiscard]] const SolverSettings& solver() const { return solver_; }
     void setBox(double width, double height);
     void setWalls(bool enabled);
+    /// Throws InvalidArgument for a non-zero gravity while the solver's mode is Exact.
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
+    /// Throws InvalidArgument for mode Exact while the world has gravity.
     void setSolver(const SolverSettings& solver);
 
     // --- particles -------------------------------------------------------------------------
@@ -78,7 +83,9 @@ class World {
     [[nodiscard]] const ParticleArrays& particles() const { return p_; }
 
     // --- time ------------------------------------------------------------------------------
-    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode.
+    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
+    /// every particle ends at its exact state at time() + dt; any change made to the world
+    /// between steps (particles, setters, box) is picked up by the next step.
     void step(double dt);
     /// Advances by solver().dt.
     void step() { step(solver_.dt); }
@@ -104,12 +111,14 @@ class World {
   private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
     void stepDiscrete(double dt);
+    void stepExact(double dt);
 
     WorldDef def_;
     SolverSettings solver_;
     ParticleArrays p_;
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;
+    std::unique_ptr<exact::ExactStepper> exact_;  // event state of the Exact mode, made on use
     int threads_ = 1;
     unsigned stepsUntilReorder_ = 0;  ///< state, not scratch: it decides future storage order
     std::optional<BroadPhaseKind> broadPhaseUsed_;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact.hpp"
 #include "discrete_step.hpp"
 #include "parallel.hpp"
 
@@ -18,26 +19,27 @@ template <bool kFriction>
 inline double wallAxis(double& x, double& v, double& vt, double r, double extent, double e,
                        double mu) {
     const double lo = r, hi = extent - r;
-    double dv = 0.0;
     if (lo >= hi) {
         // As wide as the box or wider: it touches both walls at once, so the only place it can
         // be is the centre and the only velocity it can have along this axis is zero.
         x = 0.5 * extent;
-        dv = -v;
-    } else if (x < lo) {
+        const double dv = std::abs(v);
+        v = 0.0;
+        if constexpr (kFriction) vt -= std::copysign(std::min(std::abs(vt), mu * dv), vt);
+        return dv;
+    }
+    if (x < lo) {
         x = lo;
-        if (v < 0.0) dv = -(1.0 + e) * v;
-    } else if (x > hi) {
+        double out = -v;  // the left/top wall's outward normal points to -x
+        const double dv = reboundOffWall<kFriction>(out, vt, e, mu);
+        v = -out;
+        return dv;
+    }
+    if (x > hi) {
         x = hi;
-        if (v > 0.0) dv = -(1.0 + e) * v;
+        return reboundOffWall<kFriction>(v, vt, e, mu);
     }
-    if (dv == 0.0) return 0.0;
-    v += dv;
-    if constexpr (kFriction) {
-        const double cut = std::min(std::abs(vt), mu * std::abs(dv));
-        vt -= std::copysign(cut, vt);
-    }
-    return std::abs(dv);
+    return 0.0;
 }
 
 template <bool kFriction>

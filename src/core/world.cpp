@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 #include <thread>
 
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
+#include "exact_stepper.hpp"
 #include "particle_reorder.hpp"
 #include "stage_timer.hpp"
 #include "step_context.hpp"
@@ -35,8 +37,18 @@ void validateSolver(const SolverSettings& s, const char* where) {
     if (s.substeps < 1) {
         detail::fail(where, "substeps", "must be >= 1 (got " + std::to_string(s.substeps) + ")");
     }
-    if (s.mode == StepMode::Exact) {
-        detail::fail(where, "mode", "'exact' is not available in this version");
+}
+
+// The exact mode flies particles in straight lines between events; under gravity they would fly
+// parabolas, which it does not predict.
+void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const char* where) {
+    if (s.mode == StepMode::Exact && (gravity.x() != 0.0 || gravity.y() != 0.0)) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "must be zero in 'exact' mode (got [" << gravity.x() << ", " << gravity.y()
+           << "]): the event-driven step does not support gravity; use 'discrete' or "
+              "'substep' for a world with gravity";
+        detail::fail(where, "gravity", os.str());
     }
 }
 
@@ -67,6 +79,7 @@ World::World(const WorldDef& def, const SolverSettings& solver)
       threads_(hardwareThreads()) {
     validateDef(def, "World");
     validateSolver(solver, "World");
+    validateModeWithGravity(solver, def.gravity, "World");
 }
 
 World::~World() = default;
@@ -105,6 +118,7 @@ void World::setWalls(bool enabled) {
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
+    validateModeWithGravity(solver_, gravity, "World::setGravity");
     def_.gravity = gravity;
 }
 
@@ -122,6 +136,7 @@ void World::setFriction(double mu) {
 
 void World::setSolver(const SolverSettings& solver) {
     validateSolver(solver, "World::setSolver");
+    validateModeWithGravity(solver, def_.gravity, "World::setSolver");
     solver_ = solver;
 }
 
@@ -293,7 +308,9 @@ void World::step(double dt) {
     if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
     ctx_->threads = threads_;
     ctx_->broadPhase = solver_.broadphase;
-    if (p_.size() >= kReorderMinParticles) {
+    // The exact mode keeps its own copy in cell order; reordering the world's storage would only
+    // make it rebuild.
+    if (p_.size() >= kReorderMinParticles && solver_.mode != StepMode::Exact) {
         if (stepsUntilReorder_ == 0) {
             StageTimer t(profile_.reorder);
             reorderByCell(p_, ids_, *ctx_);
@@ -311,16 +328,25 @@ void World::step(double dt) {
                 stepDiscrete(h);
             break;
         }
-        case StepMode::Exact:  // refused by validateSolver until the event-driven mode exists
+        case StepMode::Exact:
+            stepExact(dt);
             break;
     }
     profile_.total += profile_.reorder;
-    broadPhaseUsed_ = ctx_->broadPhaseUsed;
+    if (solver_.mode != StepMode::Exact) broadPhaseUsed_ = ctx_->broadPhaseUsed;
     time_ += dt;
 }
 
 void World::stepDiscrete(double dt) {
     stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
+}
+
+void World::stepExact(double dt) {
+    // The stepper compares the world with what its last step left and rebuilds its event state
+    // on any difference, so every mutator (and a step in another mode) is picked up without
+    // each one having to remember to invalidate it.
+    if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
+    exact_->step(p_, def_, dt, profile_, counters_);
 }
 
 }  // namespace psb
