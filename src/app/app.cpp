@@ -153,7 +153,13 @@ int App::run() {
         const auto frameStart = std::chrono::steady_clock::now();
         const double real = std::chrono::duration<double>(frameStart - last).count();
         last = frameStart;
-        if (real > 0.0) fps_ = fps_ == 0.0 ? 1.0 / real : 0.95 * fps_ + 0.05 / real;
+        ++fpsFrames_;
+        fpsSeconds_ += real;
+        if (fpsSeconds_ >= 0.5) {
+            fps_ = fpsFrames_ / fpsSeconds_;
+            fpsFrames_ = 0;
+            fpsSeconds_ = 0.0;
+        }
         handleEvents();
         update(std::min(real, 0.25));
         render();

@@ -114,6 +114,8 @@ class App {
 
     // Frame statistics, smoothed for display.
     double fps_ = 0.0;
+    int fpsFrames_ = 0;
+    double fpsSeconds_ = 0.0;
     double stepMs_ = 0.0;
     double drawMs_ = 0.0;
     double lastStepMs_ = 0.0;
