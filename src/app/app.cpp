@@ -79,6 +79,7 @@ App::App(const AppOptions& options)
     SDL_GetRendererOutputSize(sdlRenderer_, &w, &h);
     camera_.setViewport(w, h);
 
+    paused_ = options_.startPaused;
     if (options_.benchParticles > 0) {
         setWorld(benchmarkWorld(options_.benchParticles), "benchmark");
     } else if (options_.scene) {

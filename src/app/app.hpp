@@ -42,6 +42,7 @@ struct AppOptions {
     int width = 800;                                              ///< window, pixels
     int height = 800;
     bool vsync = true;
+    bool startPaused = false;
     std::string renderDriver;  ///< SDL render driver name ("software", ...); SDL's choice if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;

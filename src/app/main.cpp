@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     cli.add_option("--window", window, "Window size in pixels, WIDTHxHEIGHT (default 800x800)");
     cli.add_option("--renderer", options.renderDriver,
                    "SDL render driver (software, opengl, opengles2, ...); SDL picks if omitted");
+    cli.add_flag("--paused", options.startPaused, "Start paused (Space resumes)");
     bool noVsync = false;
     cli.add_flag("--no-vsync", noVsync, "Do not wait for the display's refresh");
     cli.add_option("--bench", options.benchParticles,

@@ -1,0 +1,213 @@
+#!/usr/bin/env bash
+# End-to-end test of particle-sandbox: the real program in a virtual X display (Xvfb), driven
+# with real X input (xdotool), checked through its log, its window title and screenshots
+# (ImageMagick).
+#
+#   tests/e2e/sandbox_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
+#
+# It opens the built-in scene paused (so particles stay where the scene puts them), then:
+#   1. grabs a particle and flings it to the right     -> logged release velocity points right,
+#                                                         and it moves right when stepped
+#   2. grabs another and presses Delete while holding   -> deletion logged, count drops
+#   3. drags on empty space up and to the right         -> a new particle, which moves up-right
+#   4. turns the wheel over the window                  -> zoom grows, the wall moves on screen
+#   5. presses S                                        -> label text appears above particles
+#   6. presses Esc                                      -> the program exits cleanly
+# Screenshots and the log are left in OUTPUT_DIR.
+set -euo pipefail
+
+BIN=${1:?usage: sandbox_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
+OUT=${2:-$(pwd)/e2e-out}
+HERE=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$OUT"
+rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
+
+for tool in Xvfb xdotool import convert; do
+    if ! command -v "$tool" >/dev/null; then
+        "$HERE/../../scripts/install-deps.sh" --test
+        break
+    fi
+done
+
+fail() { echo "FAIL: $*" >&2; echo "(log and screenshots in $OUT)" >&2; exit 1; }
+pass() { echo "ok: $*"; }
+
+XVFB_PID=""
+APP_PID=""
+cleanup() {
+    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
+    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
+    wait 2>/dev/null || true
+}
+trap cleanup EXIT
+
+# --- a private X display ------------------------------------------------------------------
+Xvfb -displayfd 3 -screen 0 640x640x24 -nolisten tcp 3>"$OUT/display.txt" 2>"$OUT/xvfb.log" &
+XVFB_PID=$!
+for _ in $(seq 100); do [[ -s "$OUT/display.txt" ]] && break; sleep 0.05; done
+[[ -s "$OUT/display.txt" ]] || fail "Xvfb did not start"
+export DISPLAY=":$(cat "$OUT/display.txt")"
+export SDL_RENDER_DRIVER=software
+export SDL_AUDIODRIVER=dummy
+
+# --- the program --------------------------------------------------------------------------
+LOG="$OUT/stdout.log"
+"$BIN" --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" >"$LOG" 2>"$OUT/stderr.log" &
+APP_PID=$!
+WID=$(timeout 10 xdotool search --sync --onlyvisible --name "Particle Sandbox" | head -1) ||
+    fail "no window within 10 s"
+[[ -n "$WID" ]] || fail "no window"
+eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
+WX=$X
+WY=$Y
+xdotool windowfocus --sync "$WID" 2>/dev/null || true
+pass "window $WID at $WX,$WY size ${WIDTH}x$HEIGHT"
+
+# The camera starts fitted: a 700 m box in a 600 px window with a 10 px margin.
+ZOOM=$(awk 'BEGIN { print 580 / 700 }')
+sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" 'BEGIN { printf "%d", o + 10 + w * z + 0.5 }'; }
+sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" 'BEGIN { printf "%d", o + 10 + w * z + 0.5 }'; }
+
+wait_log() {  # wait_log REGEX [SECONDS]
+    local deadline=$((SECONDS + ${2:-5}))
+    while ! grep -Eq "$1" "$LOG"; do
+        ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
+        sleep 0.05
+    done
+}
+title() { xdotool getwindowname "$WID"; }
+wait_title() {  # wait_title REGEX
+    local deadline=$((SECONDS + 5))
+    until title | grep -Eq "$1"; do
+        ((SECONDS < deadline)) || fail "title '$(title)' never matched /$1/"
+        sleep 0.05
+    done
+}
+key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
+shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
+
+# Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart.
+drag() {
+    local x=$1 y=$2 dx=$3 dy=$4 n=$5 hold=${6:-}
+    xdotool mousemove --sync "$x" "$y"
+    sleep 0.1
+    xdotool mousedown 1
+    sleep 0.1
+    for ((i = 1; i <= n; i++)); do
+        xdotool mousemove "$((x + i * dx))" "$((y + i * dy))"
+        sleep 0.015
+    done
+    [[ -n "$hold" ]] && eval "$hold"
+    xdotool mouseup 1
+    sleep 0.2
+}
+
+# Centroid "x y count" of the pixels of colour R,G,B (±6 per channel) in a screenshot.
+centroid() {
+    convert "$1" -depth 8 txt:- | awk -v r="$2" -v g="$3" -v b="$4" -F'[ ,:()]+' '
+        NR > 1 {
+            # "x,y: (R,G,B) ..." -> fields x y R G B
+            if ($3 >= r - 6 && $3 <= r + 6 && $4 >= g - 6 && $4 <= g + 6 && $5 >= b - 6 && $5 <= b + 6) {
+                sx += $1; sy += $2; n++
+            }
+        }
+        END { if (n) printf "%.1f %.1f %d\n", sx / n, sy / n, n; else print "0 0 0" }'
+}
+# Pure white pixels inside a rectangle "WxH+X+Y" of a screenshot.
+white_in() {
+    convert "$1" -crop "$2" +repage -depth 8 txt:- | grep -c "#FFFFFF" || true
+}
+
+wait_title "6 particles - PAUSED"
+pass "title shows the count and PAUSED: $(title)"
+key a  # arrows off: they share the particles' colours and would move the centroids
+wait_log "Arrows off"
+shot 0-start
+
+# --- 1. fling: the 20 kg particle at (480, 480) m, violet (230, 130, 255) ------------------
+read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" 230 130 255)
+((fn0 > 500)) || fail "the violet particle is not on screen ($fn0 pixels)"
+drag "$(sx 480)" "$(sy 480)" 12 0 8
+wait_log "Released particle"
+line=$(grep "Released particle" "$LOG" | tail -1)
+grep -q "Grabbed particle at \[480.00, 480.00\]" "$LOG" || fail "did not grab the violet particle"
+vx=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1/' <<<"$line")
+vy=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\2/' <<<"$line")
+awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vx > 100 && vx > 5 * (vy < 0 ? -vy : vy)) }' ||
+    fail "fling velocity [$vx, $vy] does not point right: $line"
+pass "grab and fling: $line"
+
+# --- 2. delete while holding: the 8 kg particle at (350, 200) m ----------------------------
+drag "$(sx 350)" "$(sy 200)" 3 3 3 "xdotool key --window $WID Delete; sleep 0.2"
+wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
+wait_title "5 particles - PAUSED"
+pass "delete while holding: $(grep 'Deleted particle' "$LOG")"
+
+# --- 3. launch: drag on empty space at (100, 620) m, up and to the right -----------------
+drag "$(sx 100)" "$(sy 620)" 10 -10 8
+wait_log "Launched particle at"
+line=$(grep "Launched particle" "$LOG" | tail -1)
+read -r px py vx vy < <(sed -E 's/.*at \[([-0-9.]+), ([-0-9.]+)\] with velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3 \4/' <<<"$line")
+# The press point, to within a screen pixel (1.2 m at this zoom).
+awk -v x="$px" -v y="$py" -v vx="$vx" -v vy="$vy" \
+    'BEGIN { exit !((x - 100) ^ 2 < 2 && (y - 620) ^ 2 < 2 && vx > 100 && vy < -100) }' ||
+    fail "launch not at the press point or not up-right: $line"
+wait_title "6 particles - PAUSED"
+pass "launch: $line"
+shot 1-launched
+# A 10 kg launched particle is coloured (151, 200, 224).
+read -r lx0 ly0 ln0 < <(centroid "$OUT/1-launched.png" 151 200 224)
+read -r fx1 fy1 fn1 < <(centroid "$OUT/1-launched.png" 230 130 255)
+((ln0 > 200)) || fail "the launched particle is not on screen ($ln0 pixels)"
+for _ in 1 2 3 4 5 6 7 8 9 10; do key n; done  # ten single steps while paused
+shot 2-stepped
+read -r lx1 ly1 ln1 < <(centroid "$OUT/2-stepped.png" 151 200 224)
+read -r fx2 fy2 fn2 < <(centroid "$OUT/2-stepped.png" 230 130 255)
+awk -v x0="$lx0" -v y0="$ly0" -v x1="$lx1" -v y1="$ly1" \
+    'BEGIN { exit !(x1 - x0 > 5 && y0 - y1 > 5) }' ||
+    fail "the launched particle did not move up-right: ($lx0,$ly0) -> ($lx1,$ly1)"
+pass "launched particle moved from ($lx0, $ly0) to ($lx1, $ly1) px"
+awk -v x0="$fx1" -v x1="$fx2" 'BEGIN { exit !(x1 - x0 > 5) }' ||
+    fail "the flung particle did not move right: x $fx1 -> $fx2"
+pass "flung particle moved right from x = $fx1 to $fx2 px"
+
+# --- 4. wheel zoom about the cursor --------------------------------------------------------
+cx=$((WX + 300))
+cy=$((WY + 300))
+wall="3x40+$((WX + 7))+$((WY + 280))"  # a piece of the left wall, away from the HUD
+before=$(white_in "$OUT/2-stepped.png" "$wall")
+((before > 60)) || fail "the left wall is not where the fitted camera puts it ($before px)"
+xdotool mousemove --sync "$cx" "$cy"
+for _ in 1 2 3; do xdotool click 4; sleep 0.1; done
+wait_log "Zoom"
+shot 3-zoomed
+zooms=$(grep -c "\[I\] Zoom" "$LOG")
+last_zoom=$(grep "\[I\] Zoom" "$LOG" | tail -1 | sed -E 's/.*Zoom ([0-9.]+).*/\1/')
+awk -v z="$last_zoom" -v z0="$ZOOM" 'BEGIN { exit !(z > 1.4 * z0) }' ||
+    fail "zoom $last_zoom after $zooms notches is not above 1.4 x $ZOOM"
+after=$(white_in "$OUT/3-zoomed.png" "$wall")
+((after < before / 4)) || fail "the wall did not move on screen when zooming ($before -> $after px)"
+pass "wheel zoom: $zooms notches, zoom $ZOOM -> $last_zoom px/m, wall moved away"
+
+# --- 5. labels ----------------------------------------------------------------------------
+key f  # fit again
+inner="560x500+$((WX + 20))+$((WY + 80))"
+shot 4-fitted
+plain=$(white_in "$OUT/4-fitted.png" "$inner")
+key s
+wait_log "Labels on"
+shot 5-labels
+labelled=$(white_in "$OUT/5-labels.png" "$inner")
+((labelled > plain + 300)) || fail "S did not show labels ($plain -> $labelled white px)"
+pass "S shows labels ($plain -> $labelled white pixels)"
+
+# --- 6. quit ------------------------------------------------------------------------------
+key Escape
+for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+if kill -0 "$APP_PID" 2>/dev/null; then fail "Esc did not quit"; fi
+wait "$APP_PID" && status=0 || status=$?
+APP_PID=""
+((status == 0)) || fail "exit status $status"
+grep -q "Exiting" "$LOG" || fail "no exit line in the log"
+pass "Esc quits with status 0"
+echo "PASS"
