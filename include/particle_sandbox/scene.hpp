@@ -3,6 +3,7 @@
 /// Scene files: a world, how to step it, and its particles, as versioned JSON. The app and the
 /// headless runner share this one loader. The format is documented in docs/scenes.md.
 
+#include <cstddef>
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -25,7 +26,18 @@ struct Scene {
     WorldDef world;
     SolverSettings solver;
     std::vector<ParticleDef> particles;
+    /// Accept overlapping particles when loading. A file written by hand should not overlap, so
+    /// the loader refuses overlaps by default; a snapshot of a running world may hold the small
+    /// overlaps a step leaves behind, so sceneFromWorld sets this when it finds any.
+    bool allowOverlaps = false;
 };
+
+/// Limits that keep any input, however hostile, from exhausting memory or time.
+inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{256} << 20;  ///< 256 MiB
+inline constexpr std::size_t kMaxSceneParticles = 1'000'000;  ///< listed plus generated
+inline constexpr int kMaxSceneNesting = 64;                   ///< JSON object/array depth
+/// Largest magnitude accepted for any physical number in a scene (metres, m/s, kg, m/s²).
+inline constexpr double kMaxSceneMagnitude = 1e15;
 
 /// A scene that cannot be read or is not valid. what() is one line for the user, naming the
 /// file, the JSON path and the problem, e.g.
@@ -56,10 +68,14 @@ public:
 /// the target. Throws SaveError saying why; the old file is untouched on failure.
 void saveScene(const Scene& scene, const std::filesystem::path& path);
 
-/// A world built from a scene (its box, laws, solver settings and particles).
+/// A world built from a scene (its box, laws, solver settings and particles), particles added
+/// in the scene's order. Throws InvalidArgument for a scene the world refuses (parseScene has
+/// already checked everything a file can get wrong).
 [[nodiscard]] World makeWorld(const Scene& scene);
 
-/// A scene describing the world's current state.
+/// A scene describing the world's current state: its box, laws, solver settings and particles
+/// in storage order (a held particle is saved as a free one). Sets allowOverlaps when some
+/// particles overlap, so that the snapshot always loads back.
 [[nodiscard]] Scene sceneFromWorld(const World& world, std::string name = {},
                                    std::string description = {});
 

@@ -1,0 +1,61 @@
+#include "cli_app.hpp"
+
+#include <particle_sandbox/atomic_file.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "progress_bar.hpp"
+#include "report.hpp"
+#include "run_options.hpp"
+#include "runner.hpp"
+
+namespace psb::cli {
+
+int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+           bool errIsTerminal) {
+    RunOptions options;
+    try {
+        options = parseRunOptions(args);
+    } catch (const HelpRequested& help) {
+        out << help.what();
+        return kExitOk;
+    } catch (const UsageError& e) {
+        err << "particle-sim: error: " << e.what() << "\nRun 'particle-sim --help' for usage.\n";
+        return kExitUsage;
+    }
+
+    try {
+        const Scene scene = loadScene(options.scene);
+        World world;
+        RunReport report;
+        {
+            ProgressBar bar(err, errIsTerminal, options.progress);
+            report = runScene(
+                scene, options, world,
+                [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); });
+        }
+        if (options.save)
+            saveScene(sceneFromWorld(world, scene.name, scene.description), *options.save);
+        const std::string json = reportJson(report);
+        if (!options.report || *options.report == "-") {
+            out << json << std::flush;
+        } else {
+            writeFileAtomically(*options.report, json);
+        }
+        return kExitOk;
+    } catch (const UsageError& e) {
+        err << "particle-sim: error: " << e.what() << "\n";
+        return kExitUsage;
+    } catch (const SceneError& e) {
+        err << "particle-sim: error: " << e.what() << "\n";
+        return kExitFailure;
+    } catch (const SaveError& e) {
+        err << "particle-sim: error: " << e.what() << "\n";
+        return kExitFailure;
+    } catch (const std::exception& e) {
+        err << "particle-sim: error: " << e.what() << "\n";
+        return kExitFailure;
+    }
+}
+
+}  // namespace psb::cli

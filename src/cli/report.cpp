@@ -1,0 +1,33 @@
+#include "report.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace psb::cli {
+
+std::string reportJson(const RunReport& r) {
+    // nlohmann::ordered_json keeps the fields in the order a reader expects them.
+    nlohmann::ordered_json j;
+    j["mode"] = std::string(toString(r.solver.mode));
+    j["dt"] = r.solver.dt;
+    j["substeps"] = r.solver.substeps;
+    j["broadphase"] = std::string(toString(r.broadphaseUsed));
+    j["broadphase_requested"] = std::string(toString(r.solver.broadphase));
+    j["threads"] = r.threads;
+    j["particles"] = r.particles;
+    j["steps"] = r.steps;
+    j["sim_time"] = r.simTime;
+    j["wall_seconds"] = r.wallSeconds;
+    j["collisions"] = r.collisions;
+    j["wall_collisions"] = r.wallCollisions;
+    j["kinetic_energy"] = {{"initial", r.kineticEnergyInitial}, {"final", r.kineticEnergyFinal}};
+    j["momentum"] = {
+        {"initial", {r.momentumInitial.x(), r.momentumInitial.y()}},
+        {"final", {r.momentumFinal.x(), r.momentumFinal.y()}},
+    };
+    j["wall_impulse"] = r.wallImpulse;
+    j["max_overlap"] = r.maxOverlap;
+    j["escaped"] = r.escaped;
+    return j.dump(2) + "\n";
+}
+
+}  // namespace psb::cli

@@ -1,0 +1,151 @@
+#include "run_options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <charconv>
+#include <cmath>
+
+namespace psb::cli {
+namespace {
+
+constexpr const char* kDescription =
+    "Runs a Particle Sandbox scene without a window and reports what happened.\n"
+    "Options given here override the scene's \"solver\" block. The report (JSON) goes to\n"
+    "stdout unless --report names a file. Exit status: 0 done, 1 the scene or a file could\n"
+    "not be read or written, 2 bad command line.";
+
+constexpr const char* kFooter =
+    "Report fields: mode, dt, substeps, broadphase (the one used), threads, particles, steps,\n"
+    "sim_time, wall_seconds, collisions, wall_collisions, kinetic_energy {initial, final},\n"
+    "momentum {initial, final}, wall_impulse, max_overlap, escaped. See docs/scenes.md.";
+
+std::string joined(std::initializer_list<std::string_view> names) {
+    std::string s;
+    for (auto n : names)
+        s += (s.empty() ? "" : ", ") + std::string(n);
+    return s;
+}
+
+}  // namespace
+
+double parseFiniteNumber(const std::string& text, const std::string& option) {
+    double v = 0.0;
+    const char* first = text.data();
+    const char* last = first + text.size();
+    const auto [ptr, ec] = std::from_chars(first, last, v);
+    if (text.empty() || ec == std::errc::invalid_argument || ptr != last) {
+        throw UsageError(option + ": expected a number, got '" + text + "'");
+    }
+    if (ec == std::errc::result_out_of_range || !std::isfinite(v)) {
+        throw UsageError(option + ": must be a finite number, got '" + text + "'");
+    }
+    return v;
+}
+
+std::int64_t parseInteger(const std::string& text, const std::string& option, std::int64_t lo,
+                          std::int64_t hi) {
+    std::int64_t v = 0;
+    const char* first = text.data();
+    const char* last = first + text.size();
+    const auto [ptr, ec] = std::from_chars(first, last, v);
+    if (text.empty() || ec == std::errc::invalid_argument || ptr != last) {
+        throw UsageError(option + ": expected an integer, got '" + text + "'");
+    }
+    if (ec == std::errc::result_out_of_range || v < lo || v > hi) {
+        throw UsageError(option + ": must be in [" + std::to_string(lo) + ", " +
+                         std::to_string(hi) + "], got '" + text + "'");
+    }
+    return v;
+}
+
+std::uint64_t stepsFor(double duration, double dt) {
+    const double q = duration / dt;
+    if (!(q <= 1e15)) {
+        throw UsageError("--duration / --dt: " + std::to_string(q) +
+                         " steps is more than the limit of 1e15");
+    }
+    const double nearest = std::round(q);
+    if (std::abs(q - nearest) <= 1e-9 * std::max(1.0, q))
+        return static_cast<std::uint64_t>(nearest);
+    return static_cast<std::uint64_t>(std::ceil(q));
+}
+
+RunOptions parseRunOptions(const std::vector<std::string>& args) {
+    CLI::App app(kDescription, "particle-sim");
+    app.footer(kFooter);
+    app.set_help_flag("-h,--help", "Print this help and exit");
+
+    std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
+    bool progress = false;
+    app.add_option("SCENE", scene, "Scene file (JSON, see docs/scenes.md)")->required();
+    app.add_option("-d,--duration", duration, "Simulated time to run, seconds (>= 0)")
+        ->required()
+        ->type_name("SECONDS");
+    app.add_option("--mode", mode, "Step mode: " + joined({"discrete", "substep", "exact"}))
+        ->type_name("M");
+    app.add_option("--dt", dt, "Time step, seconds (> 0)")->type_name("S");
+    app.add_option("--substeps", substeps, "Substeps per step for --mode substep (>= 1)")
+        ->type_name("K");
+    app.add_option("--broadphase", broadphase,
+                   "Broadphase: " + joined({"auto", "all-pairs", "grid", "quadtree"}))
+        ->type_name("B");
+    app.add_option("--threads", threads, "Worker threads (>= 1; recorded in the report)")
+        ->type_name("N");
+    app.add_option("--report", report, "Write the JSON report to PATH, or '-' for stdout")
+        ->type_name("PATH|-");
+    app.add_option("--save", save, "Save the final state as a scene file")->type_name("PATH");
+    app.add_flag("--progress", progress,
+                 "Show a progress bar on stderr (only when stderr is a terminal; long runs "
+                 "show one anyway)");
+
+    // CLI11 wants argv-style input in reverse order.
+    std::vector<std::string> rest(args.size() > 1 ? args.begin() + 1 : args.end(), args.end());
+    std::reverse(rest.begin(), rest.end());
+    try {
+        app.parse(rest);
+    } catch (const CLI::CallForHelp&) {
+        throw HelpRequested(app.help());
+    } catch (const CLI::ParseError& e) {
+        throw UsageError(e.what());
+    }
+
+    RunOptions o;
+    o.scene = scene;
+    o.duration = parseFiniteNumber(duration, "--duration");
+    if (o.duration < 0.0) throw UsageError("--duration: must be >= 0, got '" + duration + "'");
+    if (!mode.empty()) {
+        o.mode = parseStepMode(mode);
+        if (!o.mode) {
+            throw UsageError("--mode: unknown mode '" + mode + "' (expected one of: " +
+                             joined({"discrete", "substep", "exact"}) + ")");
+        }
+    }
+    if (!dt.empty()) {
+        o.dt = parseFiniteNumber(dt, "--dt");
+        if (!(*o.dt > 0.0)) throw UsageError("--dt: must be > 0, got '" + dt + "'");
+    }
+    if (!substeps.empty()) {
+        o.substeps = static_cast<int>(parseInteger(substeps, "--substeps", 1, 100'000));
+    }
+    if (!broadphase.empty()) {
+        o.broadphase = parseBroadPhase(broadphase);
+        if (!o.broadphase) {
+            throw UsageError(
+                "--broadphase: unknown broadphase '" + broadphase +
+                "' (expected one of: " + joined({"auto", "all-pairs", "grid", "quadtree"}) + ")");
+        }
+    }
+    if (!threads.empty()) o.threads = static_cast<int>(parseInteger(threads, "--threads", 1, 1024));
+    if (app.count("--report") > 0) {
+        if (report.empty()) throw UsageError("--report: needs a path or '-'");
+        o.report = report;
+    }
+    if (app.count("--save") > 0) {
+        if (save.empty()) throw UsageError("--save: needs a path");
+        o.save = save;
+    }
+    o.progress = progress;
+    return o;
+}
+
+}  // namespace psb::cli

@@ -1,0 +1,56 @@
+#pragma once
+// The runner's command line: what particle-sim was asked to do, checked.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/solver_settings.hpp>
+
+namespace psb::cli {
+
+/// Everything the command line says. Solver fields left empty keep the scene's values.
+struct RunOptions {
+    std::filesystem::path scene;
+    double duration = 0.0;  ///< simulated seconds, finite and >= 0
+    std::optional<StepMode> mode;
+    std::optional<double> dt;  ///< seconds, finite and > 0
+    std::optional<int> substeps;
+    std::optional<BroadPhaseKind> broadphase;
+    int threads = 1;                    ///< requested worker threads, >= 1
+    std::optional<std::string> report;  ///< a path, or "-" for stdout; stdout when empty
+    std::optional<std::filesystem::path> save;
+    bool progress = false;
+};
+
+/// A command line that cannot be run; what() says which option and why.
+class UsageError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// `--help` was given; what() is the help text.
+class HelpRequested : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+/// Parses argv (argv[0] is the program name). Throws UsageError or HelpRequested.
+[[nodiscard]] RunOptions parseRunOptions(const std::vector<std::string>& args);
+
+/// Strict number parsing for options: the whole text must be a finite number (no NaN, no
+/// infinity, no overflow such as 1e999). Throws UsageError naming `option`.
+[[nodiscard]] double parseFiniteNumber(const std::string& text, const std::string& option);
+/// The whole text must be a decimal integer in [lo, hi]. Throws UsageError naming `option`.
+[[nodiscard]] std::int64_t parseInteger(const std::string& text, const std::string& option,
+                                        std::int64_t lo, std::int64_t hi);
+
+/// Steps of `dt` that cover `duration`: duration / dt rounded up, except that a quotient
+/// within 1e-9 (relative) of an integer counts as that integer, so 1 s at 0.01 s is 100 steps
+/// although 1 / 0.01 is 100.00000000000001 in doubles. Throws UsageError above 1e15 steps.
+[[nodiscard]] std::uint64_t stepsFor(double duration, double dt);
+
+}  // namespace psb::cli

@@ -1,0 +1,47 @@
+#pragma once
+// Running a scene headless and measuring what happened.
+
+#include <cstdint>
+#include <functional>
+
+#include <particle_sandbox/math.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "run_options.hpp"
+
+namespace psb::cli {
+
+/// What a run did: the content of the JSON report.
+struct RunReport {
+    SolverSettings solver;          ///< the settings used (scene overridden by options)
+    BroadPhaseKind broadphaseUsed;  ///< what `auto` resolved to
+    int threads = 1;                ///< as requested
+    std::uint64_t particles = 0;
+    std::uint64_t steps = 0;  ///< calls of World::step (each of dt seconds)
+    double simTime = 0.0;     ///< seconds
+    double wallSeconds = 0.0;
+    std::uint64_t collisions = 0;
+    std::uint64_t wallCollisions = 0;
+    double kineticEnergyInitial = 0.0, kineticEnergyFinal = 0.0;        ///< joules
+    Vec2 momentumInitial = Vec2::Zero(), momentumFinal = Vec2::Zero();  ///< kg·m/s
+    double wallImpulse = 0.0;                                           ///< kg·m/s
+    double maxOverlap = 0.0;                                            ///< metres
+    std::uint64_t escaped = 0;
+};
+
+/// The scene's solver block with the command line's overrides applied. Throws UsageError when
+/// the world refuses the result (e.g. a mode this build lacks), naming the option.
+[[nodiscard]] SolverSettings effectiveSolver(const Scene& scene, const RunOptions& options);
+
+/// Called after each step with (steps done, steps in all).
+using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
+
+/// Runs `scene` for stepsFor(options.duration, dt) steps of dt and returns the report. `world`
+/// receives the final state (for --save).
+[[nodiscard]] RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
+                                 const ProgressFn& progress = {});
+
+/// Particles whose centre lies outside the box [0, width] × [0, height].
+[[nodiscard]] std::uint64_t countEscaped(const World& world);
+
+}  // namespace psb::cli

@@ -1,0 +1,478 @@
+// Reading scene files: parseScene and loadScene.
+//
+// The reader trusts nothing. It walks the JSON DOM with the path of every value in hand, so
+// each error can name the file, the path (`particles[3].mass`) and the problem, and it checks
+// the whole scene (types, ranges, unknown keys, the box, overlaps, and whether World accepts
+// the solver settings) before a World is ever built from it. Messages are part of the
+// interface: tests/core/scene_corpus pins each one.
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <initializer_list>
+#include <numbers>
+#include <optional>
+
+#include <nlohmann/json.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "json_reader.hpp"
+#include "nearest_name.hpp"
+#include "overlap_check.hpp"
+#include "scene_generate.hpp"
+
+namespace psb {
+namespace {
+
+using json = nlohmann::json;
+using Keys = std::initializer_list<std::string_view>;
+
+constexpr int kVersion = 1;
+constexpr std::int64_t kMaxSubsteps = 100'000;
+
+/// Shortest text that reads back as the same double.
+std::string num(double v) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+std::string typeName(const json& j) {
+    switch (j.type()) {
+        case json::value_t::null:
+            return "null";
+        case json::value_t::object:
+            return "an object";
+        case json::value_t::array:
+            return "an array";
+        case json::value_t::string:
+            return "a string";
+        case json::value_t::boolean:
+            return "a boolean";
+        case json::value_t::number_integer:
+        case json::value_t::number_unsigned:
+            return "an integer";
+        case json::value_t::number_float:
+            return "a number";
+        default:
+            return "an unsupported value";
+    }
+}
+
+std::string member(const std::string& path, std::string_view key) {
+    return path.empty() ? std::string(key) : path + "." + std::string(key);
+}
+
+std::string element(const std::string& path, std::size_t i) {
+    return (path.empty() ? "(root)" : path) + "[" + std::to_string(i) + "]";
+}
+
+/// Reads values out of the DOM; every failure becomes a SceneError naming the source and path.
+class Reader {
+  public:
+    explicit Reader(std::string_view source) : source_(source) {}
+
+    [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+        throw SceneError(std::string(source_) + ": " + (path.empty() ? "(root)" : path) + ": " +
+                         problem);
+    }
+
+    void expectType(const json& j, const std::string& path, bool ok, const char* want) const {
+        if (!ok) fail(path, std::string("expected ") + want + ", got " + typeName(j));
+    }
+
+    const json& object(const json& j, const std::string& path, Keys known) const {
+        expectType(j, path, j.is_object(), "an object");
+        for (const auto& [key, value] : j.items()) {
+            if (std::find(known.begin(), known.end(), key) == known.end()) {
+                fail(member(path, key), "unknown key" + detail::suggestion(key, known));
+            }
+        }
+        return j;
+    }
+
+    static const json* find(const json& obj, std::string_view key) {
+        const auto it = obj.find(key);
+        return it == obj.end() ? nullptr : &*it;
+    }
+
+    const json& require(const json& obj, const std::string& path, std::string_view key) const {
+        const json* v = find(obj, key);
+        if (!v) fail(member(path, key), "required key is missing");
+        return *v;
+    }
+
+    /// A finite number of magnitude at most kMaxSceneMagnitude.
+    double number(const json& j, const std::string& path) const {
+        expectType(j, path, j.is_number(), "a number");
+        const double v = j.get<double>();
+        if (!std::isfinite(v) || std::abs(v) > kMaxSceneMagnitude) {
+            fail(path, "magnitude above " + num(kMaxSceneMagnitude) + " (got " + num(v) + ")");
+        }
+        return v;
+    }
+
+    double positive(const json& j, const std::string& path) const {
+        const double v = number(j, path);
+        if (!(v > 0.0)) fail(path, "must be > 0 (got " + num(v) + ")");
+        return v;
+    }
+
+    double nonNegative(const json& j, const std::string& path) const {
+        const double v = number(j, path);
+        if (v < 0.0) fail(path, "must be >= 0 (got " + num(v) + ")");
+        return v;
+    }
+
+    double inRange(const json& j, const std::string& path, double lo, double hi) const {
+        const double v = number(j, path);
+        if (v < lo || v > hi) {
+            fail(path, "must be in [" + num(lo) + ", " + num(hi) + "] (got " + num(v) + ")");
+        }
+        return v;
+    }
+
+    std::int64_t integer(const json& j, const std::string& path, std::int64_t lo,
+                         std::int64_t hi) const {
+        expectType(j, path, j.is_number_integer(), "an integer");
+        if (j.is_number_unsigned() && j.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) {
+            fail(path, "must be at most " + std::to_string(hi) + " (got " +
+                           std::to_string(j.get<std::uint64_t>()) + ")");
+        }
+        const std::int64_t v = j.get<std::int64_t>();
+        if (v < lo || v > hi) {
+            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                           std::to_string(v) + ")");
+        }
+        return v;
+    }
+
+    bool boolean(const json& j, const std::string& path) const {
+        expectType(j, path, j.is_boolean(), "true or false");
+        return j.get<bool>();
+    }
+
+    std::string string(const json& j, const std::string& path) const {
+        expectType(j, path, j.is_string(), "a string");
+        return j.get<std::string>();
+    }
+
+    const json& array(const json& j, const std::string& path, std::size_t size,
+                      const char* want) const {
+        expectType(j, path, j.is_array() && j.size() == size, want);
+        return j;
+    }
+
+    Vec2 vec2(const json& j, const std::string& path) const {
+        if (j.is_array() && j.size() != 2) {
+            fail(path,
+                 "expected an array of 2 numbers, got " + std::to_string(j.size()) + " elements");
+        }
+        array(j, path, 2, "an array of 2 numbers");
+        return {number(j[0], element(path, 0)), number(j[1], element(path, 1))};
+    }
+
+    Color color(const json& j, const std::string& path) const {
+        if (j.is_array() && j.size() != 3) {
+            fail(path, "expected [r, g, b], got " + std::to_string(j.size()) + " elements");
+        }
+        array(j, path, 3, "[r, g, b]");
+        auto channel = [&](std::size_t i) {
+            return static_cast<std::uint8_t>(integer(j[i], element(path, i), 0, 255));
+        };
+        return Color{channel(0), channel(1), channel(2)};
+    }
+
+  private:
+    std::string_view source_;
+};
+
+/// Where each particle of the scene came from, for messages: "particles[3]" or
+/// "generate[1] particle 17".
+struct Origin {
+    std::string block;  // "particles" or the generate block's path
+    std::size_t index;
+};
+
+std::string describe(const Origin& o) {
+    if (o.block == "particles") return element("particles", o.index);
+    return "particle " + std::to_string(o.index) + " of " + o.block;
+}
+
+void readWorld(const Reader& r, const json& j, WorldDef& w) {
+    const std::string path = "world";
+    r.object(j, path, {"width", "height", "walls", "gravity", "restitution", "friction"});
+    if (const json* v = Reader::find(j, "width")) w.width = r.positive(*v, "world.width");
+    if (const json* v = Reader::find(j, "height")) w.height = r.positive(*v, "world.height");
+    if (const json* v = Reader::find(j, "walls")) w.walls = r.boolean(*v, "world.walls");
+    if (const json* v = Reader::find(j, "gravity")) w.gravity = r.vec2(*v, "world.gravity");
+    if (const json* v = Reader::find(j, "restitution")) {
+        w.restitution = r.inRange(*v, "world.restitution", 0.0, 1.0);
+    }
+    if (const json* v = Reader::find(j, "friction")) {
+        w.friction = r.nonNegative(*v, "world.friction");
+    }
+}
+
+template <typename Parse>
+auto readName(const Reader& r, const json& j, const std::string& path, const char* what,
+              Parse parse, Keys known) {
+    const std::string name = r.string(j, path);
+    const auto value = parse(name);
+    if (!value) {
+        r.fail(path, std::string("unknown ") + what + " '" + name.substr(0, 64) + "'" +
+                         detail::suggestion(name, known));
+    }
+    return *value;
+}
+
+void readSolver(const Reader& r, const json& j, SolverSettings& s) {
+    r.object(j, "solver", {"mode", "dt", "substeps", "broadphase"});
+    if (const json* v = Reader::find(j, "mode")) {
+        s.mode = readName(r, *v, "solver.mode", "mode", &parseStepMode,
+                          {"discrete", "substep", "exact"});
+    }
+    if (const json* v = Reader::find(j, "dt")) s.dt = r.positive(*v, "solver.dt");
+    if (const json* v = Reader::find(j, "substeps")) {
+        s.substeps = static_cast<int>(r.integer(*v, "solver.substeps", 1, kMaxSubsteps));
+    }
+    if (const json* v = Reader::find(j, "broadphase")) {
+        s.broadphase = readName(r, *v, "solver.broadphase", "broadphase", &parseBroadPhase,
+                                {"auto", "all-pairs", "grid", "quadtree"});
+    }
+}
+
+/// Asks World itself whether it accepts the solver settings, one field at a time, so that a
+/// mode or broadphase this build lacks is reported at its JSON path with World's reason.
+void checkWorldAccepts(const Reader& r, const WorldDef& def, const SolverSettings& s) {
+    auto refusal = [&](const SolverSettings& probe) -> std::optional<std::string> {
+        try {
+            World w(def, probe);
+        } catch (const InvalidArgument& e) {
+            return std::string(e.what());
+        }
+        return std::nullopt;
+    };
+    SolverSettings mode{};
+    mode.mode = s.mode;
+    if (auto why = refusal(mode))
+        r.fail("solver.mode", "not available in this build (" + *why + ")");
+    SolverSettings broad{};
+    broad.broadphase = s.broadphase;
+    if (auto why = refusal(broad)) {
+        r.fail("solver.broadphase", "not available in this build (" + *why + ")");
+    }
+    if (auto why = refusal(s)) r.fail("solver", "refused (" + *why + ")");
+}
+
+ParticleDef readParticle(const Reader& r, const json& j, const std::string& path) {
+    r.object(j, path, {"x", "y", "vx", "vy", "mass", "radius", "color"});
+    ParticleDef d;
+    d.position = {r.number(r.require(j, path, "x"), member(path, "x")),
+                  r.number(r.require(j, path, "y"), member(path, "y"))};
+    if (const json* v = Reader::find(j, "vx")) d.velocity.x() = r.number(*v, member(path, "vx"));
+    if (const json* v = Reader::find(j, "vy")) d.velocity.y() = r.number(*v, member(path, "vy"));
+    d.mass = r.positive(r.require(j, path, "mass"), member(path, "mass"));
+    d.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
+    if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
+    return d;
+}
+
+/// Reads one generate block and appends its particles.
+void readGenerate(const Reader& r, const json& j, const std::string& path, const WorldDef& world,
+                  std::vector<ParticleDef>& out, std::vector<Origin>& origins) {
+    r.object(
+        j, path,
+        {"count", "packing", "radius", "mass", "region", "temperature", "speed", "color", "seed"});
+    detail::GenerateSpec spec;
+    spec.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
+    if (const json* v = Reader::find(j, "mass")) spec.mass = r.positive(*v, member(path, "mass"));
+
+    spec.x0 = 0.0;
+    spec.y0 = 0.0;
+    spec.x1 = world.width;
+    spec.y1 = world.height;
+    if (const json* v = Reader::find(j, "region")) {
+        const std::string rp = member(path, "region");
+        if (v->is_array() && v->size() != 4) {
+            r.fail(rp, "expected [x0, y0, x1, y1], got " + std::to_string(v->size()) + " elements");
+        }
+        r.array(*v, rp, 4, "[x0, y0, x1, y1]");
+        spec.x0 = r.number((*v)[0], element(rp, 0));
+        spec.y0 = r.number((*v)[1], element(rp, 1));
+        spec.x1 = r.number((*v)[2], element(rp, 2));
+        spec.y1 = r.number((*v)[3], element(rp, 3));
+        if (!(spec.x0 < spec.x1) || !(spec.y0 < spec.y1)) {
+            r.fail(rp, "needs x0 < x1 and y0 < y1");
+        }
+        if (world.walls &&
+            (spec.x0 < 0.0 || spec.y0 < 0.0 || spec.x1 > world.width || spec.y1 > world.height)) {
+            r.fail(rp, "reaches outside the " + num(world.width) + " x " + num(world.height) +
+                           " m box");
+        }
+    }
+
+    const json* count = Reader::find(j, "count");
+    const json* packing = Reader::find(j, "packing");
+    if ((count != nullptr) == (packing != nullptr)) {
+        r.fail(path, "needs exactly one of 'count' and 'packing'");
+    }
+    const std::uint64_t room = kMaxSceneParticles - out.size();
+    std::string countPath;
+    if (count) {
+        countPath = member(path, "count");
+        spec.count = static_cast<std::uint64_t>(
+            r.integer(*count, countPath, 0, static_cast<std::int64_t>(kMaxSceneParticles)));
+    } else {
+        countPath = member(path, "packing");
+        const double phi = r.inRange(*packing, countPath, 0.0, 1.0);
+        const double area = (spec.x1 - spec.x0) * (spec.y1 - spec.y0);
+        const double n = std::floor(phi * area / (std::numbers::pi * spec.radius * spec.radius));
+        if (n > static_cast<double>(kMaxSceneParticles)) {
+            r.fail(countPath, "gives " + num(n) + " particles, more than the limit of " +
+                                  std::to_string(kMaxSceneParticles));
+        }
+        spec.count = static_cast<std::uint64_t>(n);
+    }
+    if (spec.count > room) {
+        r.fail(countPath, "the scene would hold " + std::to_string(out.size() + spec.count) +
+                              " particles, more than the limit of " +
+                              std::to_string(kMaxSceneParticles));
+    }
+    const std::uint64_t capacity = detail::latticeCapacity(spec);
+    if (spec.count > capacity) {
+        r.fail(countPath, std::to_string(spec.count) + " particles of radius " + num(spec.radius) +
+                              " m do not fit in the region (at most " + std::to_string(capacity) +
+                              ")");
+    }
+
+    const json* temperature = Reader::find(j, "temperature");
+    const json* speed = Reader::find(j, "speed");
+    if (temperature && speed) r.fail(path, "give at most one of 'temperature' and 'speed'");
+    if (temperature) spec.temperature = r.nonNegative(*temperature, member(path, "temperature"));
+    if (speed) spec.speed = r.nonNegative(*speed, member(path, "speed"));
+    if (const json* v = Reader::find(j, "color")) spec.color = r.color(*v, member(path, "color"));
+    if (const json* v = Reader::find(j, "seed")) {
+        spec.seed = static_cast<std::uint64_t>(r.integer(*v, member(path, "seed"), 0, INT64_MAX));
+    }
+
+    std::vector<ParticleDef> made = detail::generateParticles(spec);
+    for (std::size_t k = 0; k < made.size(); ++k) {
+        out.push_back(made[k]);
+        origins.push_back({path, k});
+    }
+}
+
+void checkPlacement(const Reader& r, const Scene& s, const std::vector<Origin>& origins) {
+    const WorldDef& w = s.world;
+    if (w.walls) {
+        for (std::size_t i = 0; i < s.particles.size(); ++i) {
+            const ParticleDef& d = s.particles[i];
+            const double x = d.position.x(), y = d.position.y(), rad = d.radius;
+            // The wall stage's own test: the centre must lie in [r, extent - r].
+            if (x < rad || x > w.width - rad || y < rad || y > w.height - rad) {
+                r.fail(describe(origins[i]),
+                       "not inside the " + num(w.width) + " x " + num(w.height) + " m box (x = " +
+                           num(x) + ", y = " + num(y) + ", radius = " + num(rad) + ")");
+            }
+        }
+    }
+    if (s.allowOverlaps) return;
+    if (const auto pair = detail::findOverlap(s.particles)) {
+        const auto [i, k] = *pair;
+        const ParticleDef &a = s.particles[i], &b = s.particles[k];
+        const double distance = (b.position - a.position).norm();
+        r.fail(describe(origins[i]), "overlaps " + describe(origins[k]) + " (centres " +
+                                         num(distance) + " m apart, radii sum to " +
+                                         num(a.radius + b.radius) + " m)");
+    }
+}
+
+}  // namespace
+
+Scene parseScene(std::string_view text, std::string_view source) {
+    if (text.size() > kMaxSceneFileBytes) {
+        throw SceneError(std::string(source) + ": larger than the limit of " +
+                         std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
+    }
+    const json root = detail::readJson(text, source);
+    const Reader r(source);
+    r.object(root, "",
+             {"version", "name", "description", "world", "solver", "particles", "generate",
+              "allow_overlaps"});
+
+    Scene s;
+    const json& version = r.require(root, "", "version");
+    {
+        const std::int64_t v = r.integer(version, "version", INT64_MIN, INT64_MAX);
+        if (v != kVersion) {
+            r.fail("version", "unsupported version " + std::to_string(v) +
+                                  " (this build reads version " + std::to_string(kVersion) + ")");
+        }
+        s.version = kVersion;
+    }
+    if (const json* v = Reader::find(root, "name")) s.name = r.string(*v, "name");
+    if (const json* v = Reader::find(root, "description")) {
+        s.description = r.string(*v, "description");
+    }
+    if (const json* v = Reader::find(root, "allow_overlaps")) {
+        s.allowOverlaps = r.boolean(*v, "allow_overlaps");
+    }
+    if (const json* v = Reader::find(root, "world")) readWorld(r, *v, s.world);
+    if (const json* v = Reader::find(root, "solver")) readSolver(r, *v, s.solver);
+    checkWorldAccepts(r, s.world, s.solver);
+
+    std::vector<Origin> origins;
+    if (const json* v = Reader::find(root, "particles")) {
+        r.expectType(*v, "particles", v->is_array(), "an array");
+        if (v->size() > kMaxSceneParticles) {
+            r.fail("particles", "holds " + std::to_string(v->size()) +
+                                    " particles, more than the limit of " +
+                                    std::to_string(kMaxSceneParticles));
+        }
+        s.particles.reserve(v->size());
+        for (std::size_t i = 0; i < v->size(); ++i) {
+            s.particles.push_back(readParticle(r, (*v)[i], element("particles", i)));
+            origins.push_back({"particles", i});
+        }
+    }
+    if (const json* v = Reader::find(root, "generate")) {
+        if (v->is_array()) {
+            for (std::size_t k = 0; k < v->size(); ++k) {
+                readGenerate(r, (*v)[k], element("generate", k), s.world, s.particles, origins);
+            }
+        } else {
+            r.expectType(*v, "generate", v->is_object(), "an object or an array of objects");
+            readGenerate(r, *v, "generate", s.world, s.particles, origins);
+        }
+    }
+    checkPlacement(r, s, origins);
+    return s;
+}
+
+Scene loadScene(const std::filesystem::path& path) {
+    const std::string source = path.string();
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        throw SceneError(source + ": is a directory, not a scene file");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(source + ": cannot open (" + std::strerror(errno) + ")");
+    std::string text;
+    char buf[1 << 16];
+    while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+        text.append(buf, static_cast<std::size_t>(in.gcount()));
+        if (text.size() > kMaxSceneFileBytes) {
+            throw SceneError(source + ": larger than the limit of " +
+                             std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
+        }
+    }
+    if (in.bad()) throw SceneError(source + ": read error");
+    return parseScene(text, source);
+}
+
+}  // namespace psb

@@ -1,0 +1,37 @@
+// Between scenes and worlds: makeWorld and sceneFromWorld.
+
+#include <particle_sandbox/scene.hpp>
+
+#include "overlap_check.hpp"
+
+namespace psb {
+
+World makeWorld(const Scene& scene) {
+    World world(scene.world, scene.solver);
+    for (const ParticleDef& d : scene.particles)
+        world.add(d);
+    return world;
+}
+
+Scene sceneFromWorld(const World& world, std::string name, std::string description) {
+    Scene s;
+    s.name = std::move(name);
+    s.description = std::move(description);
+    s.world = world.def();
+    s.solver = world.solver();
+    const ParticleArrays& p = world.particles();
+    s.particles.reserve(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        ParticleDef d;
+        d.position = {p.x[i], p.y[i]};
+        d.velocity = {p.vx[i], p.vy[i]};
+        d.mass = p.mass[i];
+        d.radius = p.radius[i];
+        d.color = p.color[i];
+        s.particles.push_back(d);
+    }
+    s.allowOverlaps = detail::findOverlap(s.particles).has_value();
+    return s;
+}
+
+}  // namespace psb

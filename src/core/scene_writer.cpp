@@ -1,0 +1,111 @@
+// Writing scene files: serializeScene and saveScene.
+//
+// Doubles are written in the shortest form that reads back as the same double
+// (std::to_chars), always with a '.' or an exponent so that a JSON reader takes them as floats:
+// "-0.0" keeps the sign of a negative zero, which "-0" (an integer) would lose. Save then load
+// therefore reproduces every bit of the state. One particle per line keeps files diffable.
+
+#include <charconv>
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+#include <particle_sandbox/atomic_file.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
+
+namespace psb {
+namespace {
+
+void appendNumber(std::string& out, double v, const char* what) {
+    if (!std::isfinite(v)) {
+        throw InvalidArgument(std::string("serializeScene: ") + what + " is not finite");
+    }
+    char buf[40];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    const std::string_view text(buf, static_cast<std::size_t>(r.ptr - buf));
+    out += text;
+    if (text.find_first_of(".e") == std::string_view::npos) out += ".0";
+}
+
+void appendString(std::string& out, const std::string& s) {
+    // nlohmann escapes control characters and quotes; invalid UTF-8 is replaced, not thrown.
+    out += nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+void appendColor(std::string& out, Color c) {
+    out +=
+        '[' + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ']';
+}
+
+}  // namespace
+
+std::string serializeScene(const Scene& s) {
+    std::string out;
+    out.reserve(512 + 160 * s.particles.size());
+    out += "{\n  \"name\": ";
+    appendString(out, s.name);
+    out += ",\n  \"description\": ";
+    appendString(out, s.description);
+    out += ",\n  \"version\": " + std::to_string(s.version);
+
+    const WorldDef& w = s.world;
+    out += ",\n  \"world\": {\"width\": ";
+    appendNumber(out, w.width, "world.width");
+    out += ", \"height\": ";
+    appendNumber(out, w.height, "world.height");
+    out += w.walls ? ", \"walls\": true" : ", \"walls\": false";
+    out += ", \"gravity\": [";
+    appendNumber(out, w.gravity.x(), "world.gravity");
+    out += ", ";
+    appendNumber(out, w.gravity.y(), "world.gravity");
+    out += "], \"restitution\": ";
+    appendNumber(out, w.restitution, "world.restitution");
+    out += ", \"friction\": ";
+    appendNumber(out, w.friction, "world.friction");
+    out += "}";
+
+    const SolverSettings& v = s.solver;
+    out += ",\n  \"solver\": {\"mode\": \"";
+    out += toString(v.mode);
+    out += "\", \"dt\": ";
+    appendNumber(out, v.dt, "solver.dt");
+    out += ", \"substeps\": " + std::to_string(v.substeps) + ", \"broadphase\": \"";
+    out += toString(v.broadphase);
+    out += "\"}";
+    if (s.allowOverlaps) out += ",\n  \"allow_overlaps\": true";
+
+    out += ",\n  \"particles\": [";
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+        const ParticleDef& p = s.particles[i];
+        out += i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ";
+        appendNumber(out, p.position.x(), "particle x");
+        out += ", \"y\": ";
+        appendNumber(out, p.position.y(), "particle y");
+        out += ", \"vx\": ";
+        appendNumber(out, p.velocity.x(), "particle vx");
+        out += ", \"vy\": ";
+        appendNumber(out, p.velocity.y(), "particle vy");
+        out += ", \"mass\": ";
+        appendNumber(out, p.mass, "particle mass");
+        out += ", \"radius\": ";
+        appendNumber(out, p.radius, "particle radius");
+        out += ", \"color\": ";
+        appendColor(out, p.color);
+        out += '}';
+    }
+    out += s.particles.empty() ? "]\n}\n" : "\n  ]\n}\n";
+    return out;
+}
+
+void saveScene(const Scene& scene, const std::filesystem::path& path) {
+    std::string text;
+    try {
+        text = serializeScene(scene);
+    } catch (const InvalidArgument& e) {
+        throw SaveError("cannot save " + path.string() + ": " + e.what());
+    }
+    writeFileAtomically(path, text);
+}
+
+}  // namespace psb
