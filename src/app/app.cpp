@@ -7,10 +7,12 @@
 #include <stdexcept>
 
 #include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/scene.hpp>
 
 #include "assets.hpp"
-#include "default_scene.hpp"
+#include "benchmark_scene.hpp"
 #include "hud.hpp"
+#include "scene_io.hpp"
 
 namespace psb::app {
 
@@ -41,6 +43,19 @@ std::string fmt(const char* format, double a, double b) {
 App::App(const AppOptions& options)
     : options_(options),
       rng_(options.seed != 0 ? options.seed : static_cast<std::uint32_t>(std::random_device{}())) {
+    // The scene first: a bad file is reported before any window opens.
+    if (options_.benchParticles > 0) {
+        world_ = benchmarkWorld(options_.benchParticles);
+        sceneName_ = "benchmark";
+    } else {
+        const Scene scene = psb::app::openScene(options_.scene);
+        world_ = makeWorld(scene);
+        sceneFile_ = options_.scene;
+        sceneName_ = scene.name.empty() && sceneFile_ ? sceneFile_->stem().string() : scene.name;
+    }
+    presets_ = presetScenes();
+    paused_ = options_.startPaused;
+
     if (!options_.renderDriver.empty()) {
         SDL_SetHint(SDL_HINT_RENDER_DRIVER, options_.renderDriver.c_str());
     }
@@ -79,15 +94,7 @@ App::App(const AppOptions& options)
     SDL_GetRendererOutputSize(sdlRenderer_, &w, &h);
     camera_.setViewport(w, h);
 
-    paused_ = options_.startPaused;
-    if (options_.benchParticles > 0) {
-        setWorld(benchmarkWorld(options_.benchParticles), "benchmark");
-    } else if (options_.scene) {
-        throw std::runtime_error("cannot open " + options_.scene->string() +
-                                 ": this build has no scene loader yet");
-    } else {
-        setWorld(defaultWorld(), "default");
-    }
+    fit();
 }
 
 App::~App() {
@@ -125,12 +132,25 @@ void App::setWorld(World world, std::string name) {
     fit();
 }
 
+void App::openScene(const std::optional<std::filesystem::path>& file) {
+    try {
+        const Scene scene = psb::app::openScene(file);
+        std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
+        setWorld(makeWorld(scene), name);
+        sceneFile_ = file;
+        say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
+            ": " + name + " (" + std::to_string(world_.size()) + " particles)");
+    } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
+        say(std::string("Cannot open scene: ") + e.what(), "[E] ");
+    }
+}
+
 void App::fit() {
     camera_.fit(world_.def().width, world_.def().height);
 }
 
-void App::say(std::string text, bool log) {
-    if (log) logLine("[I] " + text);
+void App::say(std::string text, const char* logPrefix) {
+    if (logPrefix != nullptr) logLine(logPrefix + text);
     messages_.push_back({std::move(text), now() + 3.0});
     if (messages_.size() > 4) messages_.erase(messages_.begin());
 }
@@ -304,10 +324,41 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
             say(buf);
             break;
         }
+        case SDLK_r:
+            openScene(sceneFile_);
+            break;
+        case SDLK_p:
+            if (presets_.empty()) {
+                say("No preset scenes found (assets/scenes)");
+            } else {
+                openScene(presets_[preset_ % presets_.size()]);
+                preset_ = (preset_ + 1) % presets_.size();
+            }
+            break;
+        case SDLK_1:
+        case SDLK_2:
+        case SDLK_3:
+        case SDLK_4:
+        case SDLK_5:
+        case SDLK_6:
+        case SDLK_7:
+        case SDLK_8:
+        case SDLK_9: {
+            const auto k = static_cast<std::size_t>(key.keysym.sym - SDLK_1);
+            if (k < presets_.size()) {
+                openScene(presets_[k]);
+                preset_ = (k + 1) % presets_.size();
+            } else {
+                say("No preset " + std::to_string(k + 1) + " (there are " +
+                    std::to_string(presets_.size()) + ")");
+            }
+            break;
+        }
         case SDLK_LEFTBRACKET:
         case SDLK_RIGHTBRACKET: {
             spawn_.changeMass(key.keysym.sym == SDLK_LEFTBRACKET ? -1.0 : 1.0);
-            say(fmt("New particles: %.0f kg, radius %.1f m", spawn_.mass, spawn_.radius()), false);
+            say(fmt("New particles: %.0f kg, radius %.1f m", spawn_.mass, spawn_.radius()),
+                nullptr);
             break;
         }
         case SDLK_LEFT:
@@ -334,7 +385,7 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
 void App::deleteHeld() {
     if (const auto p = interaction_.deleteHeld(world_)) {
         logLine(deletionLogLine(*p));
-        say("Deleted a particle", false);
+        say("Deleted a particle", nullptr);
     }
 }
 
@@ -373,7 +424,11 @@ void App::spawnRandom() {
 }
 
 void App::save() {
-    say("Saving needs the scene writer, which this build does not have yet");
+    try {
+        say(saveWorld(world_, sceneName_, options_.saveTo));
+    } catch (const std::exception& e) {  // SaveError; the old file is intact
+        say(std::string("Save failed: ") + e.what(), "[E] ");
+    }
 }
 
 void App::stepOnce() {
@@ -435,7 +490,6 @@ void App::render() {
     hud.paused = paused_;
     hud.stepMs = stepMs_;
     hud.drawMs = drawMs_;
-    hud.sceneName = sceneName_;
     std::vector<std::string> lines = hudLines(hud);
     if (drawStats_.labelsSuppressed) lines.emplace_back("Labels hidden: too many on screen");
 
@@ -446,7 +500,7 @@ void App::render() {
         for (const auto& l : ls)
             w = std::max(w, hudFont_->measure(l));
         boxes.quad(x - 4, y - 2, x + static_cast<float>(w) + 4,
-                   y + lh * static_cast<float>(ls.size()) + 2, SDL_Color{0, 0, 0, 170});
+                   y + lh * static_cast<float>(ls.size()) + 2, SDL_Color{0, 0, 0, 150});
         for (std::size_t k = 0; k < ls.size(); ++k) {
             hudFont_->layout(ls[k], x, y + lh * static_cast<float>(k),
                              SDL_Color{230, 230, 230, 255}, text);
@@ -467,7 +521,7 @@ void App::render() {
     boxes.draw(sdlRenderer_, nullptr);
     hudFont_->draw(text);
 
-    const std::string title = windowTitle(world_.size(), paused_);
+    const std::string title = windowTitle(world_.size(), paused_, sceneName_);
     if (title != title_) {
         SDL_SetWindowTitle(window_, title.c_str());
         title_ = title;

@@ -80,9 +80,13 @@ class App {
     void deleteHeld();
     void save();
     void setWorld(World world, std::string name);
+    /// Opens `file` (the built-in scene when nullopt) and makes it current; on failure says
+    /// why and keeps the world as it is.
+    void openScene(const std::optional<std::filesystem::path>& file);
     void fit();
     void afterCameraMove();
-    void say(std::string text, bool log = true);
+    /// Shows `text` on screen for a few seconds and, unless `logPrefix` is null, logs it.
+    void say(std::string text, const char* logPrefix = "[I] ");
     [[nodiscard]] double now() const;
     [[nodiscard]] Vec2 pointerWorld() const;
     [[nodiscard]] LaunchSettings launchSettings() const;
@@ -96,6 +100,9 @@ class App {
 
     World world_;
     std::string sceneName_;
+    std::optional<std::filesystem::path> sceneFile_;  ///< where world_ came from; none = built-in
+    std::vector<std::filesystem::path> presets_;
+    std::size_t preset_ = 0;  ///< the preset P shows next
     Camera camera_;
     Interaction interaction_;
     SpawnSettings spawn_;

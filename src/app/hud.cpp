@@ -4,33 +4,28 @@
 
 namespace psb::app {
 
-std::string windowTitle(std::size_t particles, bool paused) {
+std::string windowTitle(std::size_t particles, bool paused, const std::string& scene) {
     std::string t = "Particle Sandbox - " + std::to_string(particles) +
                     (particles == 1 ? " particle" : " particles");
     if (paused) t += " - PAUSED";
+    if (!scene.empty()) t += " - " + scene;
     return t;
 }
 
 std::vector<std::string> hudLines(const HudData& d) {
     char buf[160];
     std::vector<std::string> lines;
-    std::snprintf(buf, sizeof buf, "FPS %.0f   step %.2f ms   draw %.2f ms", d.fps, d.stepMs,
+    std::snprintf(buf, sizeof buf, "FPS %.0f | step %.2f ms | draw %.2f ms", d.fps, d.stepMs,
                   d.drawMs);
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "Time %.2f s   speed x%g%s", d.simTime, d.timeScale,
-                  d.paused ? "   PAUSED" : "");
+    std::snprintf(buf, sizeof buf, "Time %.2f s x%g | %zu particles%s", d.simTime, d.timeScale,
+                  d.particles, d.paused ? " | PAUSED" : "");
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "Particles %zu", d.particles);
+    std::snprintf(buf, sizeof buf, "KE %.4g J | p [%.4g, %.4g] kg m/s", d.kineticEnergy,
+                  d.momentum.x(), d.momentum.y());
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "Kinetic energy %.4g J", d.kineticEnergy);
+    std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.1f m | H: help", d.spawnMass, d.spawnRadius);
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "Momentum [%.4g, %.4g] kg m/s", d.momentum.x(), d.momentum.y());
-    lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "New particle: %.0f kg, radius %.1f m   ([ ])", d.spawnMass,
-                  d.spawnRadius);
-    lines.emplace_back(buf);
-    if (!d.sceneName.empty()) lines.push_back("Scene: " + d.sceneName);
-    lines.emplace_back("H: help");
     return lines;
 }
 

@@ -24,11 +24,12 @@ struct HudData {
     bool paused = false;
     double stepMs = 0.0;  ///< wall-clock ms of simulation per frame
     double drawMs = 0.0;  ///< wall-clock ms of drawing per frame
-    std::string sceneName;
 };
 
-/// The window title: `Particle Sandbox - N particles`, plus ` - PAUSED`.
-[[nodiscard]] std::string windowTitle(std::size_t particles, bool paused);
+/// The window title: `Particle Sandbox - N particles`, plus ` - PAUSED`, plus ` - SCENE`
+/// when a scene name is given.
+[[nodiscard]] std::string windowTitle(std::size_t particles, bool paused,
+                                      const std::string& scene = {});
 
 /// The status lines, top to bottom.
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);

@@ -10,6 +10,7 @@ namespace {
 TEST(Hud, TitleShowsTheCountAndPaused) {
     EXPECT_EQ(windowTitle(6, false), "Particle Sandbox - 6 particles");
     EXPECT_EQ(windowTitle(1, true), "Particle Sandbox - 1 particle - PAUSED");
+    EXPECT_EQ(windowTitle(2, false, "Gas"), "Particle Sandbox - 2 particles - Gas");
 }
 
 TEST(Hud, LinesShowFpsTimeCountEnergyAndMomentumWithUnits) {
@@ -28,9 +29,9 @@ TEST(Hud, LinesShowFpsTimeCountEnergyAndMomentumWithUnits) {
     EXPECT_TRUE(has("FPS 60"));
     EXPECT_TRUE(has("Time 12.35 s"));
     EXPECT_TRUE(has("PAUSED"));
-    EXPECT_TRUE(has("Particles 42"));
-    EXPECT_TRUE(has("Kinetic energy 1234 J"));
-    EXPECT_TRUE(has("Momentum [3, -4] kg m/s"));
+    EXPECT_TRUE(has("42 particles"));
+    EXPECT_TRUE(has("KE 1234 J"));
+    EXPECT_TRUE(has("p [3, -4] kg m/s"));
 }
 
 TEST(Hud, HelpListsEveryControl) {

@@ -6,13 +6,16 @@
 #   tests/e2e/sandbox_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
 # It opens the built-in scene paused (so particles stay where the scene puts them), then:
-#   1. grabs a particle and flings it to the right     -> logged release velocity points right,
-#                                                         and it moves right when stepped
+#   0. bad command lines                               -> a clear message and a non-zero exit
+#   1. grabs a particle and flings it downwards        -> logged release velocity points down,
+#                                                         and it moves down when stepped
 #   2. grabs another and presses Delete while holding   -> deletion logged, count drops
 #   3. drags on empty space up and to the right         -> a new particle, which moves up-right
 #   4. turns the wheel over the window                  -> zoom grows, the wall moves on screen
 #   5. presses S                                        -> label text appears above particles
-#   6. presses Esc                                      -> the program exits cleanly
+#   6. presses Ctrl+S                                   -> a scene file with the launched
+#                                                         particle, moving up-right
+#   7. presses Esc                                      -> the program exits cleanly
 # Screenshots and the log are left in OUTPUT_DIR.
 set -euo pipefail
 
@@ -40,6 +43,22 @@ cleanup() {
     wait 2>/dev/null || true
 }
 trap cleanup EXIT
+
+# --- 0. bad command lines fail clearly, before any window -------------------------------
+set +e
+"$BIN" --help >"$OUT/help.txt" 2>&1
+help_status=$?
+"$BIN" "$OUT/no-such-scene.json" >/dev/null 2>"$OUT/bad-scene.txt"
+scene_status=$?
+"$BIN" --window 12x >/dev/null 2>"$OUT/bad-window.txt"
+window_status=$?
+set -e
+((help_status == 0)) && grep -q -- "--save-to" "$OUT/help.txt" || fail "--help"
+((scene_status != 0)) && grep -q "no-such-scene.json" "$OUT/bad-scene.txt" ||
+    fail "a missing scene file: status $scene_status, message '$(cat "$OUT/bad-scene.txt")'"
+((window_status != 0)) && grep -q -- "--window" "$OUT/bad-window.txt" ||
+    fail "a bad --window: status $window_status"
+pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
 
 # --- a private X display ------------------------------------------------------------------
 Xvfb -displayfd 3 -screen 0 640x640x24 -nolisten tcp 3>"$OUT/display.txt" 2>"$OUT/xvfb.log" &
@@ -124,21 +143,23 @@ key a  # arrows off: they share the particles' colours and would move the centro
 wait_log "Arrows off"
 shot 0-start
 
-# --- 1. fling: the 20 kg particle at (480, 480) m, violet (230, 130, 255) ------------------
-read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" 230 130 255)
-((fn0 > 500)) || fail "the violet particle is not on screen ($fn0 pixels)"
-drag "$(sx 480)" "$(sy 480)" 12 0 8
+# The built-in scene (psb::defaultScene): six particles in the upper half of the box.
+# --- 1. fling: the 18 kg particle at (520, 160) m, yellow (255, 210, 110), downwards -------
+FLUNG="255 210 110"
+read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" $FLUNG)
+((fn0 > 500)) || fail "the yellow particle is not on screen ($fn0 pixels)"
+drag "$(sx 520)" "$(sy 160)" 0 12 8
 wait_log "Released particle"
 line=$(grep "Released particle" "$LOG" | tail -1)
-grep -q "Grabbed particle at \[480.00, 480.00\]" "$LOG" || fail "did not grab the violet particle"
+grep -q "Grabbed particle at \[520.00, 160.00\]" "$LOG" || fail "did not grab the yellow particle"
 vx=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1/' <<<"$line")
 vy=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\2/' <<<"$line")
-awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vx > 100 && vx > 5 * (vy < 0 ? -vy : vy)) }' ||
-    fail "fling velocity [$vx, $vy] does not point right: $line"
+awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 100 && vy > 5 * (vx < 0 ? -vx : vx)) }' ||
+    fail "fling velocity [$vx, $vy] does not point down: $line"
 pass "grab and fling: $line"
 
-# --- 2. delete while holding: the 8 kg particle at (350, 200) m ----------------------------
-drag "$(sx 350)" "$(sy 200)" 3 3 3 "xdotool key --window $WID Delete; sleep 0.2"
+# --- 2. delete while holding: the 8 kg particle at (250, 260) m ----------------------------
+drag "$(sx 250)" "$(sy 260)" 3 3 3 "xdotool key --window $WID Delete; sleep 0.2"
 wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
 wait_title "5 particles - PAUSED"
 pass "delete while holding: $(grep 'Deleted particle' "$LOG")"
@@ -157,19 +178,19 @@ pass "launch: $line"
 shot 1-launched
 # A 10 kg launched particle is coloured (151, 200, 224).
 read -r lx0 ly0 ln0 < <(centroid "$OUT/1-launched.png" 151 200 224)
-read -r fx1 fy1 fn1 < <(centroid "$OUT/1-launched.png" 230 130 255)
+read -r fx1 fy1 fn1 < <(centroid "$OUT/1-launched.png" $FLUNG)
 ((ln0 > 200)) || fail "the launched particle is not on screen ($ln0 pixels)"
 for _ in 1 2 3 4 5 6 7 8 9 10; do key n; done  # ten single steps while paused
 shot 2-stepped
 read -r lx1 ly1 ln1 < <(centroid "$OUT/2-stepped.png" 151 200 224)
-read -r fx2 fy2 fn2 < <(centroid "$OUT/2-stepped.png" 230 130 255)
+read -r fx2 fy2 fn2 < <(centroid "$OUT/2-stepped.png" $FLUNG)
 awk -v x0="$lx0" -v y0="$ly0" -v x1="$lx1" -v y1="$ly1" \
     'BEGIN { exit !(x1 - x0 > 5 && y0 - y1 > 5) }' ||
     fail "the launched particle did not move up-right: ($lx0,$ly0) -> ($lx1,$ly1)"
 pass "launched particle moved from ($lx0, $ly0) to ($lx1, $ly1) px"
-awk -v x0="$fx1" -v x1="$fx2" 'BEGIN { exit !(x1 - x0 > 5) }' ||
-    fail "the flung particle did not move right: x $fx1 -> $fx2"
-pass "flung particle moved right from x = $fx1 to $fx2 px"
+awk -v y0="$fy1" -v y1="$fy2" 'BEGIN { exit !(y1 - y0 > 5) }' ||
+    fail "the flung particle did not move down: y $fy1 -> $fy2"
+pass "flung particle moved down from y = $fy1 to $fy2 px"
 
 # --- 4. wheel zoom about the cursor --------------------------------------------------------
 cx=$((WX + 300))
@@ -201,7 +222,19 @@ labelled=$(white_in "$OUT/5-labels.png" "$inner")
 ((labelled > plain + 300)) || fail "S did not show labels ($plain -> $labelled white px)"
 pass "S shows labels ($plain -> $labelled white pixels)"
 
-# --- 6. quit ------------------------------------------------------------------------------
+# --- 6. save ------------------------------------------------------------------------------
+key ctrl+s
+wait_log "Saved 6 particles to"
+[[ -s "$OUT/saved.json" ]] || fail "Ctrl+S wrote no file"
+# One particle per line; the launched one is the only 10 kg particle.
+launched=$(grep '"mass": 10.0,' "$OUT/saved.json") || fail "no launched particle in the saved scene"
+read -r svx svy < <(sed -E 's/.*"vx": ([-0-9.e+]+), "vy": ([-0-9.e+]+),.*/\1 \2/' <<<"$launched")
+awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 100 && vy < -100) }' ||
+    fail "saved launched particle does not move up-right: $launched"
+((  $(grep -c '"mass":' "$OUT/saved.json") == 6 )) || fail "saved scene does not hold 6 particles"
+pass "Ctrl+S saved the scene; launched particle: vx $svx, vy $svy m/s"
+
+# --- 7. quit ------------------------------------------------------------------------------
 key Escape
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
 if kill -0 "$APP_PID" 2>/dev/null; then fail "Esc did not quit"; fi

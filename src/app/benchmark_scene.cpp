@@ -1,36 +1,10 @@
-#include "default_scene.hpp"
+#include "benchmark_scene.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <random>
 
 namespace psb::app {
-
-World defaultWorld() {
-    SolverSettings solver;
-    solver.dt = 1.0 / 120.0;
-    World world(WorldDef{}, solver);
-    // Masses and radii follow the original's spawn rule (radius = 2.5 m per kg); velocities
-    // are in its range of ±300 m/s (±5 pixels per frame at 60 frames per second).
-    const struct {
-        double x, y, vx, vy, mass;
-        Color color;
-    } seeds[] = {
-        {150, 150, 180, 60, 12, {255, 120, 120}},   {350, 200, -120, 150, 8, {120, 255, 140}},
-        {550, 150, -60, -200, 16, {120, 160, 255}}, {200, 450, 240, -90, 6, {255, 220, 110}},
-        {480, 480, -150, -30, 20, {230, 130, 255}}, {350, 600, 30, -240, 4, {120, 240, 240}},
-    };
-    for (const auto& s : seeds) {
-        ParticleDef d;
-        d.position = {s.x, s.y};
-        d.velocity = {s.vx, s.vy};
-        d.mass = s.mass;
-        d.radius = 2.5 * s.mass;
-        d.color = s.color;
-        world.add(d);
-    }
-    return world;
-}
 
 World benchmarkWorld(std::size_t count, std::uint32_t seed) {
     constexpr double kRadius = 2.0, kFraction = 0.2;

@@ -1,5 +1,5 @@
 #pragma once
-// Worlds the app can make without reading a file.
+// The world the frame-time benchmark draws.
 
 #include <cstddef>
 #include <cstdint>
@@ -7,10 +7,6 @@
 #include <particle_sandbox/world.hpp>
 
 namespace psb::app {
-
-/// A handful of particles in the original's 700 m box, moving: what the window opens on when
-/// no scene is given.
-[[nodiscard]] World defaultWorld();
 
 /// `count` equal particles (radius 2 m, mass 1 kg) on a jittered lattice in a square box sized
 /// for an area fraction of about 0.2, never overlapping, with random velocities up to 50 m/s.
