@@ -55,9 +55,16 @@ App::App(const AppOptions& options)
     }
     presets_ = presetScenes();
     paused_ = options_.startPaused;
+    view_.arrows = options_.arrows;
 
     if (!options_.renderDriver.empty()) {
         SDL_SetHint(SDL_HINT_RENDER_DRIVER, options_.renderDriver.c_str());
+        // By default SDL shows a software renderer's frames through an OpenGL texture; on a
+        // machine without a GPU (Xvfb, llvmpipe) that upload costs more than the drawing.
+        // The environment variable still wins (SDL_HINT_DEFAULT priority).
+        if (options_.renderDriver == "software") {
+            SDL_SetHintWithPriority(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0", SDL_HINT_DEFAULT);
+        }
     }
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         throw std::runtime_error(std::string("cannot start SDL video: ") + SDL_GetError());

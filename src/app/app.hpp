@@ -43,6 +43,7 @@ struct AppOptions {
     int height = 800;
     bool vsync = true;
     bool startPaused = false;
+    bool arrows = true;        ///< velocity arrows shown at start (A toggles)
     std::string renderDriver;  ///< SDL render driver name ("software", ...); SDL's choice if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;

@@ -13,20 +13,21 @@ void GeometryBatch::quad(float x0, float y0, float x1, float y1, SDL_Color c, fl
         indices_.push_back(base + k);
 }
 
-void GeometryBatch::triangle(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_Color color) {
+void GeometryBatch::triangle(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_Color color,
+                             SDL_FPoint uv) {
     const int base = static_cast<int>(vertices_.size());
-    vertices_.push_back({a, color, {0.f, 0.f}});
-    vertices_.push_back({b, color, {0.f, 0.f}});
-    vertices_.push_back({c, color, {0.f, 0.f}});
+    vertices_.push_back({a, color, uv});
+    vertices_.push_back({b, color, uv});
+    vertices_.push_back({c, color, uv});
     for (int k : {0, 1, 2})
         indices_.push_back(base + k);
 }
 
 void GeometryBatch::polygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoint d,
-                             SDL_Color color) {
+                             SDL_Color color, SDL_FPoint uv) {
     const int base = static_cast<int>(vertices_.size());
     for (SDL_FPoint p : {a, b, c, d})
-        vertices_.push_back({p, color, {0.f, 0.f}});
+        vertices_.push_back({p, color, uv});
     for (int k : {0, 1, 2, 0, 2, 3})
         indices_.push_back(base + k);
 }

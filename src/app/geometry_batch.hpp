@@ -22,10 +22,12 @@ class GeometryBatch {
     /// (normalised texture coordinates; ignored when drawn without a texture).
     void quad(float x0, float y0, float x1, float y1, SDL_Color c, float u0 = 0.f, float v0 = 0.f,
               float u1 = 1.f, float v1 = 1.f);
-    /// A filled triangle (pixels), untextured.
-    void triangle(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_Color color);
-    /// A filled convex quadrilateral a-b-c-d (pixels), untextured.
-    void polygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoint d, SDL_Color color);
+    /// A filled triangle (pixels), every vertex at texture coordinate `uv`.
+    void triangle(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_Color color,
+                  SDL_FPoint uv = {0.f, 0.f});
+    /// A filled convex quadrilateral a-b-c-d (pixels), every vertex at texture coordinate `uv`.
+    void polygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoint d, SDL_Color color,
+                  SDL_FPoint uv = {0.f, 0.f});
 
     /// One SDL_RenderGeometry call (texture may be null). Returns SDL's result (0 on success).
     int draw(SDL_Renderer* renderer, SDL_Texture* texture) const;

@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
     cli.add_option("--renderer", options.renderDriver,
                    "SDL render driver (software, opengl, opengles2, ...); SDL picks if omitted");
     cli.add_flag("--paused", options.startPaused, "Start paused (Space resumes)");
+    bool noArrows = false;
+    cli.add_flag("--no-arrows", noArrows, "Start with the velocity arrows hidden (A shows them)");
     bool noVsync = false;
     cli.add_flag("--no-vsync", noVsync, "Do not wait for the display's refresh");
     cli.add_option("--bench", options.benchParticles,
@@ -60,6 +62,7 @@ int main(int argc, char** argv) {
     }
     if (!scene.empty()) options.scene = scene;
     options.saveTo = saveTo;
+    options.arrows = !noArrows;
     options.vsync = !noVsync && options.benchParticles == 0;
 
     try {
