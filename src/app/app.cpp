@@ -502,19 +502,20 @@ void App::render() {
 
     GeometryBatch boxes, text;
     const float lh = static_cast<float>(hudFont_->lineHeight());
-    const auto panel = [&](const std::vector<std::string>& ls, float x, float y) {
+    const auto panel = [&](const std::vector<std::string>& ls, float x, float y,
+                           Uint8 alpha = 150) {
         int w = 0;
         for (const auto& l : ls)
             w = std::max(w, hudFont_->measure(l));
         boxes.quad(x - 4, y - 2, x + static_cast<float>(w) + 4,
-                   y + lh * static_cast<float>(ls.size()) + 2, SDL_Color{0, 0, 0, 150});
+                   y + lh * static_cast<float>(ls.size()) + 2, SDL_Color{0, 0, 0, alpha});
         for (std::size_t k = 0; k < ls.size(); ++k) {
             hudFont_->layout(ls[k], x, y + lh * static_cast<float>(k),
                              SDL_Color{230, 230, 230, 255}, text);
         }
     };
     panel(lines, 8, 6);
-    if (showHelp_) panel(helpLines(), 40, 40 + lh * static_cast<float>(lines.size()));
+    if (showHelp_) panel(helpLines(), 40, 40 + lh * static_cast<float>(lines.size()), 225);
     const double t = now();
     std::erase_if(messages_, [t](const Message& m) { return m.until < t; });
     if (!messages_.empty()) {

@@ -162,7 +162,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                 const float bottom = static_cast<float>(c.y() - p.radius[i] * zoom) - 2.f;
                 const float top = bottom - 4.f * lh;
                 labelBoxes_.quad(x - 2.f, top - 1.f, x + static_cast<float>(width) + 2.f, bottom,
-                                 SDL_Color{0, 0, 0, 200});
+                                 SDL_Color{0, 0, 0, 150});
                 for (int k = 0; k < 4; ++k) {
                     labelFont_->layout(lines[k], x, top + static_cast<float>(k) * lh,
                                        SDL_Color{255, 255, 255, 255}, labelText_);
