@@ -479,10 +479,7 @@ void App::render() {
         SDL_SetRenderDrawColor(sdlRenderer_, 200, 200, 200, 255);
         SDL_RenderDrawLineF(sdlRenderer_, static_cast<float>(a.x()), static_cast<float>(a.y()),
                             static_cast<float>(b.x()), static_cast<float>(b.y()));
-        const float r = static_cast<float>(camera_.toScreen(spawn_.radius()));
-        const SDL_FRect box{static_cast<float>(a.x()) - r, static_cast<float>(a.y()) - r, 2 * r,
-                            2 * r};
-        SDL_RenderDrawRectF(sdlRenderer_, &box);
+        renderer_->drawGhost(camera_, interaction_.pressPoint(), spawn_.radius());
     }
 
     HudData hud;

@@ -70,6 +70,16 @@ void Renderer::drawWalls(const World& world, const Camera& camera) {
     SDL_RenderFillRectsF(renderer_, rects, 4);
 }
 
+void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius) {
+    const Vec2 c = camera.worldToScreen(centre);
+    const double r = std::max(1.0, camera.toScreen(radius));
+    GeometryBatch ghost;
+    ghost.quad(static_cast<float>(c.x() - r), static_cast<float>(c.y() - r),
+               static_cast<float>(c.x() + r), static_cast<float>(c.y() + r),
+               SDL_Color{200, 200, 200, 90});
+    ghost.draw(renderer_, circle_);
+}
+
 DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOptions& options) {
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);

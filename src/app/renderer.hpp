@@ -51,6 +51,9 @@ class Renderer {
     /// Clears to black and draws the box walls, the particles and the enabled overlays.
     DrawStats draw(const World& world, const Camera& camera, const ViewOptions& options);
 
+    /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
+    void drawGhost(const Camera& camera, const Vec2& centre, double radius);
+
   private:
     void drawWalls(const World& world, const Camera& camera);
 
