@@ -11,7 +11,7 @@ namespace psb {
 /// negative mass or radius, restitution outside [0, 1], an unknown particle id, ...). The message
 /// names the argument and the offending value; the world is left unchanged.
 class InvalidArgument : public std::invalid_argument {
-public:
+  public:
     using std::invalid_argument::invalid_argument;
 };
 

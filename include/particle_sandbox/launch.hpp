@@ -24,9 +24,10 @@ struct TrajectorySample {
 
 /// How a drag becomes a velocity.
 struct LaunchSettings {
-    double window = 0.1;       ///< only samples this many seconds before the last one count
-    double minDistance = 0.0;  ///< a displacement over the window shorter than this launches at rest, metres
-    double maxSpeed = 0.0;     ///< if > 0, the speed is clamped to this, m/s
+    double window = 0.1;  ///< only samples this many seconds before the last one count
+    double minDistance =
+        0.0;  ///< a displacement over the window shorter than this launches at rest, metres
+    double maxSpeed = 0.0;  ///< if > 0, the speed is clamped to this, m/s
 };
 
 /// Velocity (m/s) of the recent part of a drag: displacement between the oldest sample inside

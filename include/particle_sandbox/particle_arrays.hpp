@@ -16,11 +16,11 @@ namespace psb {
 /// removed (the last one moves into the hole), so outside the core reach particles through
 /// `id[i]` and World's id-based API. World hands out only a const reference to this struct.
 struct ParticleArrays {
-    std::vector<double> x, y;    ///< centre, metres
-    std::vector<double> vx, vy;  ///< velocity, metres per second
-    std::vector<double> invMass; ///< 1 / mass, 1/kg; 0 for a kinematic (held) particle
-    std::vector<double> radius;  ///< metres
-    std::vector<double> mass;    ///< kilograms (kept even while kinematic)
+    std::vector<double> x, y;     ///< centre, metres
+    std::vector<double> vx, vy;   ///< velocity, metres per second
+    std::vector<double> invMass;  ///< 1 / mass, 1/kg; 0 for a kinematic (held) particle
+    std::vector<double> radius;   ///< metres
+    std::vector<double> mass;     ///< kilograms (kept even while kinematic)
     std::vector<Color> color;
     std::vector<ParticleId> id;  ///< the stable id of the particle stored at each index
 

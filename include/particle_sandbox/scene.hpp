@@ -43,14 +43,14 @@ inline constexpr double kMaxSceneMagnitude = 1e15;
 /// file, the JSON path and the problem, e.g.
 ///   `gas.json: particles[3].mass: must be > 0 (got -1)`.
 class SceneError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
 /// A save that failed (no permission, a directory in the way, disk full, ...). The file that
 /// was there before is left intact.
 class SaveError : public std::runtime_error {
-public:
+  public:
     using std::runtime_error::runtime_error;
 };
 
@@ -61,11 +61,13 @@ public:
 /// Reads and parses a scene file. Throws SceneError (also for a file that cannot be read).
 [[nodiscard]] Scene loadScene(const std::filesystem::path& path);
 
-/// Scene JSON for `scene`; doubles are written so that they read back bit for bit.
+/// Scene JSON for `scene`; doubles are written so that they read back bit for bit. Throws
+/// InvalidArgument if a number is not finite (JSON cannot hold it).
 [[nodiscard]] std::string serializeScene(const Scene& scene);
 
 /// Writes `scene` to `path` atomically: a temporary file beside it, flushed, then renamed over
-/// the target. Throws SaveError saying why; the old file is untouched on failure.
+/// the target (see writeFileAtomically in atomic_file.hpp). Throws SaveError saying why
+/// (including a non-finite number in the scene); the old file is untouched on failure.
 void saveScene(const Scene& scene, const std::filesystem::path& path);
 
 /// A world built from a scene (its box, laws, solver settings and particles), particles added

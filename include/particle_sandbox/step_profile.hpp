@@ -20,11 +20,11 @@ struct StepProfile {
 
 /// Running totals since the world was made (or since resetCounters).
 struct StepCounters {
-    std::uint64_t steps = 0;            ///< calls of the discrete step (substeps count each)
-    std::uint64_t collisions = 0;       ///< particle–particle collisions resolved (approaching pairs)
-    std::uint64_t wallCollisions = 0;   ///< wall rebounds (outward-moving particle turned inward)
-    double wallImpulse = 0.0;           ///< sum of |normal impulse| delivered by walls, kg·m/s
-    double maxOverlap = 0.0;            ///< deepest pair overlap found by detection, metres
+    std::uint64_t steps = 0;       ///< calls of the discrete step (substeps count each)
+    std::uint64_t collisions = 0;  ///< particle–particle collisions resolved (approaching pairs)
+    std::uint64_t wallCollisions = 0;  ///< wall rebounds (outward-moving particle turned inward)
+    double wallImpulse = 0.0;          ///< sum of |normal impulse| delivered by walls, kg·m/s
+    double maxOverlap = 0.0;           ///< deepest pair overlap found by detection, metres
 };
 
 }  // namespace psb

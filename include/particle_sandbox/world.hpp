@@ -26,7 +26,7 @@ struct StepContext;
 /// world unchanged, when one is out of range. Particles are reached through stable ids; the
 /// const ParticleArrays view is for fast read-only iteration (rendering, diagnostics).
 class World {
-public:
+  public:
     explicit World(const WorldDef& def = {}, const SolverSettings& solver = {});
     ~World();
     World(const World& other);
@@ -87,7 +87,7 @@ public:
     [[nodiscard]] const StepCounters& counters() const { return counters_; }
     void resetCounters() { counters_ = {}; }
 
-private:
+  private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
     void stepDiscrete(double dt);
 

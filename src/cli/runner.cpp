@@ -8,19 +8,30 @@
 namespace psb::cli {
 namespace {
 
-/// THREADS — the single place where --threads reaches the world. The core has no threading
-/// API yet, so every run is single-threaded whatever was asked; the report records the
-/// request. When World gains a thread-count setter, call it here and nowhere else.
-void applyThreads(World& world, int threads) {
-    (void)world;
-    (void)threads;
+/// THREADS — the single place where --threads reaches the world. A core without a thread
+/// setter (World::setThreads) runs single-threaded whatever was asked, and the report records
+/// the request; a core with one gets the count here. The template makes the check happen at
+/// compile time, so this file builds against either core.
+template <typename W>
+void applyThreads(W& world, int threads) {
+    if constexpr (requires { world.setThreads(threads); }) {
+        world.setThreads(threads);
+    } else {
+        (void)world;
+        (void)threads;
+    }
 }
 
-/// What `auto` resolves to. This build has only the all-pairs broadphase; when World reports
-/// the broadphase it chose, read it here.
-BroadPhaseKind broadphaseUsed(const World& world) {
-    const BroadPhaseKind asked = world.solver().broadphase;
-    return asked == BroadPhaseKind::Auto ? BroadPhaseKind::AllPairs : asked;
+/// The broadphase the world used, `auto` resolved: World::broadPhaseInUse() where the core has
+/// it; otherwise all-pairs, the only broadphase such a core has.
+template <typename W>
+BroadPhaseKind broadphaseUsed(const W& world) {
+    if constexpr (requires { world.broadPhaseInUse(); }) {
+        return world.broadPhaseInUse();
+    } else {
+        const BroadPhaseKind asked = world.solver().broadphase;
+        return asked == BroadPhaseKind::Auto ? BroadPhaseKind::AllPairs : asked;
+    }
 }
 
 }  // namespace
@@ -74,7 +85,6 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
 
     RunReport r;
     r.solver = s.solver;
-    r.broadphaseUsed = broadphaseUsed(world);
     r.threads = options.threads;
     r.particles = world.size();
     r.steps = stepsFor(options.duration, s.solver.dt);
@@ -88,6 +98,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     }
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
+    r.broadphaseUsed = broadphaseUsed(world);  // after the run: what the steps used
     const StepCounters& c = world.counters();
     r.simTime = world.time();
     r.collisions = c.collisions;

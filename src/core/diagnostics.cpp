@@ -10,7 +10,7 @@ namespace {
 
 /// Neumaier's compensated sum: the error stays ~1 ulp of the result however many terms.
 class CompensatedSum {
-public:
+  public:
     void add(double v) {
         const double t = sum_ + v;
         comp_ += std::abs(sum_) >= std::abs(v) ? (sum_ - t) + v : (v - t) + sum_;
@@ -18,7 +18,7 @@ public:
     }
     [[nodiscard]] double value() const { return sum_ + comp_; }
 
-private:
+  private:
     double sum_ = 0.0;
     double comp_ = 0.0;
 };

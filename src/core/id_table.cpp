@@ -22,7 +22,9 @@ void IdTable::release(ParticleId id) {
     freeSlots_.push_back(id.slot);
 }
 
-void IdTable::relocate(ParticleId id, std::uint32_t index) { index_[id.slot] = index; }
+void IdTable::relocate(ParticleId id, std::uint32_t index) {
+    index_[id.slot] = index;
+}
 
 std::optional<std::uint32_t> IdTable::find(ParticleId id) const {
     if (id.slot >= index_.size() || generation_[id.slot] != id.generation ||

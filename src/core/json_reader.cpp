@@ -18,6 +18,7 @@ struct Frame {
     std::size_t next = 0;        // arrays: index of the next element
     std::string key;             // objects: the key just read
     std::set<std::string> keys;  // objects: keys seen so far
+    bool inValue = false;        // between a key (or an element's start) and its value's end
 };
 
 /// nlohmann's DOM builder plus path tracking. nlohmann::json::sax_parse is a template on the
@@ -27,19 +28,19 @@ class TrackingParser : public DomParser {
     TrackingParser(json& result, std::string_view text, std::string_view source)
         : DomParser(result, /*allow_exceptions=*/false), text_(text), source_(source) {}
 
-    bool null() { return value() && DomParser::null(); }
-    bool boolean(bool v) { return value() && DomParser::boolean(v); }
+    bool null() { return value() && done(DomParser::null()); }
+    bool boolean(bool v) { return value() && done(DomParser::boolean(v)); }
     bool number_integer(json::number_integer_t v) {
-        return value() && DomParser::number_integer(v);
+        return value() && done(DomParser::number_integer(v));
     }
     bool number_unsigned(json::number_unsigned_t v) {
-        return value() && DomParser::number_unsigned(v);
+        return value() && done(DomParser::number_unsigned(v));
     }
     bool number_float(json::number_float_t v, const std::string& s) {
-        return value() && DomParser::number_float(v, s);
+        return value() && done(DomParser::number_float(v, s));
     }
-    bool string(std::string& v) { return value() && DomParser::string(v); }
-    bool binary(json::binary_t& v) { return value() && DomParser::binary(v); }
+    bool string(std::string& v) { return value() && done(DomParser::string(v)); }
+    bool binary(json::binary_t& v) { return value() && done(DomParser::binary(v)); }
 
     bool start_object(std::size_t n) {
         open(false);
@@ -47,7 +48,7 @@ class TrackingParser : public DomParser {
     }
     bool end_object() {
         frames_.pop_back();
-        return DomParser::end_object();
+        return done(DomParser::end_object());
     }
     bool start_array(std::size_t n) {
         open(true);
@@ -55,11 +56,12 @@ class TrackingParser : public DomParser {
     }
     bool end_array() {
         frames_.pop_back();
-        return DomParser::end_array();
+        return done(DomParser::end_array());
     }
     bool key(std::string& k) {
         Frame& f = frames_.back();
         f.key = k;
+        f.inValue = true;
         if (!f.keys.insert(k).second) fail(path() + ": duplicate key");
         return DomParser::key(k);
     }
@@ -77,6 +79,20 @@ class TrackingParser : public DomParser {
             what.starts_with("parse error") && colon != std::string::npos) {
             what.erase(0, colon + 2);
         }
+        // Invalid UTF-8 or control characters quoted from the input must not reach a terminal.
+        std::string clean;
+        for (const char c : what) {
+            const auto u = static_cast<unsigned char>(c);
+            if (u < 0x20 || u >= 0x7f) {
+                static constexpr char kHex[] = "0123456789abcdef";
+                clean += "\\x";
+                clean += kHex[u >> 4];
+                clean += kHex[u & 15];
+            } else {
+                clean += c;
+            }
+        }
+        what = clean;
         // `position` counts the bytes read, so the offending byte is the last one read; a number
         // that overflows (error 406) has been read whole, so point at its first digit instead.
         std::size_t offset = position == 0 ? 0 : position - 1;
@@ -84,7 +100,7 @@ class TrackingParser : public DomParser {
         const TextPosition at = positionOf(text_, offset);
         std::string where =
             "line " + std::to_string(at.line) + ", column " + std::to_string(at.column);
-        if (!frames_.empty()) where += " (" + path() + ")";
+        if (const std::string p = path(); p != "(root)") where += " (" + p + ")";
         fail(where + ": " + what);
     }
 
@@ -95,11 +111,21 @@ class TrackingParser : public DomParser {
 
     // A value begins inside the current container: advance the array index.
     bool value() {
+        if (++values_ > kMaxValues) {
+            fail("more than " + std::to_string(kMaxValues) + " JSON values");
+        }
         if (!frames_.empty() && frames_.back().array) {
             Frame& f = frames_.back();
             f.key = std::to_string(f.next++);
+            f.inValue = true;
         }
         return true;
+    }
+
+    // A value ended: a later syntax error is no longer inside it.
+    bool done(bool ok) {
+        if (!frames_.empty()) frames_.back().inValue = false;
+        return ok;
     }
 
     void open(bool array) {
@@ -112,13 +138,15 @@ class TrackingParser : public DomParser {
         frames_.push_back(std::move(f));
     }
 
-    // The path of the value being read, e.g. particles[3].mass ("(root)" at the top).
+    // The path of the value being read, e.g. particles[3].mass ("(root)" at the top); between
+    // values, the path of the container.
     [[nodiscard]] std::string path() const {
         std::string p;
         for (const Frame& f : frames_) {
+            if (!f.inValue) break;
             if (f.array) {
-                if (f.next > 0) p += "[" + f.key + "]";
-            } else if (!f.key.empty() || !f.keys.empty()) {
+                p += "[" + f.key + "]";
+            } else {
                 if (!p.empty()) p += '.';
                 p += f.key;
             }
@@ -126,8 +154,13 @@ class TrackingParser : public DomParser {
         return p.empty() ? "(root)" : p;
     }
 
+    // A million particles take about 11 values each; beyond this a file is hostile, and its
+    // DOM (~100 bytes per value) would take gigabytes.
+    static constexpr std::size_t kMaxValues = 16'000'000;
+
     std::string_view text_;
     std::string_view source_;
+    std::size_t values_ = 0;
     std::vector<Frame> frames_;
 };
 

@@ -20,7 +20,8 @@ Vec2 launchVelocity(std::span<const TrajectorySample> samples, const LaunchSetti
     };
     // Newest finite sample.
     std::size_t last = samples.size();
-    while (last > 0 && !finite(samples[last - 1])) --last;
+    while (last > 0 && !finite(samples[last - 1]))
+        --last;
     if (last == 0) return Vec2::Zero();
     const TrajectorySample& newest = samples[last - 1];
 

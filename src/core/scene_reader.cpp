@@ -64,7 +64,28 @@ std::string typeName(const json& j) {
 }
 
 std::string member(const std::string& path, std::string_view key) {
-    return path.empty() ? std::string(key) : path + "." + std::string(key);
+    // Keys come from the file: a megabyte-long key must not make a megabyte-long message.
+    std::string k(key.substr(0, 64));
+    if (key.size() > 64) k += "...";
+    return path.empty() ? k : path + "." + k;
+}
+
+/// Control characters from the file (possible in keys and names) are shown escaped, so that
+/// a message can never drive the terminal it is printed on.
+std::string printable(const std::string& text) {
+    std::string out;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (u < 0x20 || u == 0x7f) {
+            static constexpr char kHex[] = "0123456789abcdef";
+            out += "\\x";
+            out += kHex[u >> 4];
+            out += kHex[u & 15];
+        } else {
+            out += c;
+        }
+    }
+    return out;
 }
 
 std::string element(const std::string& path, std::size_t i) {
@@ -77,8 +98,8 @@ class Reader {
     explicit Reader(std::string_view source) : source_(source) {}
 
     [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
-        throw SceneError(std::string(source_) + ": " + (path.empty() ? "(root)" : path) + ": " +
-                         problem);
+        throw SceneError(std::string(source_) + ": " +
+                         printable((path.empty() ? "(root)" : path) + ": " + problem));
     }
 
     void expectType(const json& j, const std::string& path, bool ok, const char* want) const {
@@ -140,7 +161,7 @@ class Reader {
                          std::int64_t hi) const {
         expectType(j, path, j.is_number_integer(), "an integer");
         if (j.is_number_unsigned() && j.get<std::uint64_t>() > static_cast<std::uint64_t>(hi)) {
-            fail(path, "must be at most " + std::to_string(hi) + " (got " +
+            fail(path, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
                            std::to_string(j.get<std::uint64_t>()) + ")");
         }
         const std::int64_t v = j.get<std::int64_t>();

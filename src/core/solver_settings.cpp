@@ -36,9 +36,15 @@ auto parse(const Table& table, std::string_view name)
 
 }  // namespace
 
-std::string_view toString(StepMode mode) { return nameOf(kModes, mode); }
-std::string_view toString(BroadPhaseKind kind) { return nameOf(kBroadPhases, kind); }
-std::optional<StepMode> parseStepMode(std::string_view name) { return parse(kModes, name); }
+std::string_view toString(StepMode mode) {
+    return nameOf(kModes, mode);
+}
+std::string_view toString(BroadPhaseKind kind) {
+    return nameOf(kBroadPhases, kind);
+}
+std::optional<StepMode> parseStepMode(std::string_view name) {
+    return parse(kModes, name);
+}
 std::optional<BroadPhaseKind> parseBroadPhase(std::string_view name) {
     return parse(kBroadPhases, name);
 }

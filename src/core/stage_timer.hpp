@@ -6,7 +6,7 @@
 namespace psb {
 
 class StageTimer {
-public:
+  public:
     explicit StageTimer(double& accumulatorMs)
         : out_(accumulatorMs), start_(std::chrono::steady_clock::now()) {}
     ~StageTimer() {
@@ -16,7 +16,7 @@ public:
     StageTimer(const StageTimer&) = delete;
     StageTimer& operator=(const StageTimer&) = delete;
 
-private:
+  private:
     double& out_;
     std::chrono::steady_clock::time_point start_;
 };

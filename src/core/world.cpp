@@ -88,7 +88,9 @@ void World::setBox(double width, double height) {
     def_ = d;
 }
 
-void World::setWalls(bool enabled) { def_.walls = enabled; }
+void World::setWalls(bool enabled) {
+    def_.walls = enabled;
+}
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
@@ -114,7 +116,8 @@ void World::setSolver(const SolverSettings& solver) {
 
 ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
-    if (p_.size() >= UINT32_MAX - 1) detail::fail("World::add", "particle count", "is at its limit");
+    if (p_.size() >= UINT32_MAX - 1)
+        detail::fail("World::add", "particle count", "is at its limit");
     const auto index = static_cast<std::uint32_t>(p_.size());
     const ParticleId id = ids_.allocate(index);
     p_.x.push_back(d.position.x());
@@ -153,7 +156,9 @@ void World::clear() {
     p_ = ParticleArrays{};
 }
 
-bool World::contains(ParticleId id) const { return ids_.find(id).has_value(); }
+bool World::contains(ParticleId id) const {
+    return ids_.find(id).has_value();
+}
 
 std::optional<std::size_t> World::indexOf(ParticleId id) const {
     const auto found = ids_.find(id);
@@ -164,16 +169,17 @@ std::optional<std::size_t> World::indexOf(ParticleId id) const {
 std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
     const auto found = ids_.find(id);
     if (!found) {
-        detail::fail(what, "id", "names no live particle (slot " + std::to_string(id.slot) +
-                                     ", generation " + std::to_string(id.generation) + ")");
+        detail::fail(what, "id",
+                     "names no live particle (slot " + std::to_string(id.slot) + ", generation " +
+                         std::to_string(id.generation) + ")");
     }
     return *found;
 }
 
 Particle World::get(ParticleId id) const {
     const std::size_t i = indexOrThrow(id, "World::get");
-    return Particle{id,          Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
-                    p_.mass[i],  p_.radius[i],           p_.color[i]};
+    return Particle{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
+                    p_.mass[i], p_.radius[i],           p_.color[i]};
 }
 
 void World::setPosition(ParticleId id, const Vec2& position) {
@@ -235,7 +241,8 @@ void World::step(double dt) {
             break;
         case StepMode::Substep: {
             const double h = dt / solver_.substeps;
-            for (int k = 0; k < solver_.substeps; ++k) stepDiscrete(h);
+            for (int k = 0; k < solver_.substeps; ++k)
+                stepDiscrete(h);
             break;
         }
         case StepMode::Exact:  // refused by validateSolver until the event-driven mode exists

@@ -27,10 +27,10 @@ TEST(Collision, FormulaWithUnitRestitutionIsTheOriginalsOperationForOperation) {
 
 TEST(Collision, HeadOnEqualMassesExchangeVelocities) {
     World w = openWorld();
-    const ParticleId a = w.add({.position = {0.0, 0.0}, .velocity = {2.0, 0.0}, .mass = 5.0,
-                                .radius = 1.0});
-    const ParticleId b = w.add({.position = {1.99, 0.0}, .velocity = {-3.0, 0.0}, .mass = 5.0,
-                                .radius = 1.0});
+    const ParticleId a =
+        w.add({.position = {0.0, 0.0}, .velocity = {2.0, 0.0}, .mass = 5.0, .radius = 1.0});
+    const ParticleId b =
+        w.add({.position = {1.99, 0.0}, .velocity = {-3.0, 0.0}, .mass = 5.0, .radius = 1.0});
     w.step(1e-3);
     EXPECT_NEAR(w.get(a).velocity.x(), -3.0, 1e-15);
     EXPECT_NEAR(w.get(b).velocity.x(), 2.0, 1e-15);
@@ -137,8 +137,10 @@ TEST(Collision, ThousandCoincidentParticlesSpreadWithoutNaN) {
     WorldDef def;
     def.width = def.height = 200.0;
     World w(def);
-    for (int k = 0; k < 1000; ++k) w.add({.position = {100.0, 100.0}, .radius = 1.0});
-    for (int s = 0; s < 200; ++s) w.step(0.01);
+    for (int k = 0; k < 1000; ++k)
+        w.add({.position = {100.0, 100.0}, .radius = 1.0});
+    for (int s = 0; s < 200; ++s)
+        w.step(0.01);
     const ParticleArrays& p = w.particles();
     ASSERT_EQ(w.size(), 1000u);
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -151,7 +153,8 @@ TEST(Collision, ThousandCoincidentParticlesSpreadWithoutNaN) {
     for (std::size_t i = 0; i < p.size(); ++i) {
         quadrant[(p.x[i] > 100.0 ? 1 : 0) + (p.y[i] > 100.0 ? 2 : 0)]++;
     }
-    for (int q : quadrant) EXPECT_GT(q, 100);
+    for (int q : quadrant)
+        EXPECT_GT(q, 100);
 }
 
 TEST(Collision, FrictionReducesTangentialSlipWithoutAddingEnergy) {

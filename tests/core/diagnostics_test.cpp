@@ -26,7 +26,8 @@ TEST(Diagnostics, EmptyWorldHasZeroTotalsAndCentreOfMassAtTheBoxCentre) {
 TEST(Diagnostics, CompensatedSumKeepsSmallTermsNextToAHugeOne) {
     World w(WorldDef{.walls = false});
     w.add({.velocity = {1e8, 0.0}, .mass = 1.0});  // 5e15 J
-    for (int k = 0; k < 1000; ++k) w.add({.position = {1.0 * k, 0.0}, .velocity = {1.0, 0.0}});
+    for (int k = 0; k < 1000; ++k)
+        w.add({.position = {1.0 * k, 0.0}, .velocity = {1.0, 0.0}});
     // 1000 terms of 0.5 J would each vanish into 5e15 with naive summation (ulp = 1).
     EXPECT_EQ(kineticEnergy(w) - 5e15, 500.0);
 }

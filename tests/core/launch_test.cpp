@@ -13,7 +13,8 @@ namespace {
 
 TEST(CalculateVector, UsesTheFirstSampleForBothStartCoordinates) {
     std::vector<Vec2> t;
-    for (int k = 0; k < 10; ++k) t.emplace_back(10.0 * k, 100.0 + 5.0 * k * k);
+    for (int k = 0; k < 10; ++k)
+        t.emplace_back(10.0 * k, 100.0 + 5.0 * k * k);
     // The original took start y from t[1] (105) instead of t[0] (100).
     EXPECT_EQ(calculateVector(t), Vec2((90.0 - 0.0) / 20.0, (505.0 - 100.0) / 20.0));
 }
@@ -29,7 +30,8 @@ TEST(CalculateVector, TooShortTrajectoryGivesZero) {
 
 TEST(LaunchVelocity, SteadyDragGivesItsVelocity) {
     std::vector<TrajectorySample> s;
-    for (int k = 0; k <= 30; ++k) s.push_back({k / 60.0, Vec2(100.0 + 2.0 * k, 50.0 - 1.0 * k)});
+    for (int k = 0; k <= 30; ++k)
+        s.push_back({k / 60.0, Vec2(100.0 + 2.0 * k, 50.0 - 1.0 * k)});
     const Vec2 v = launchVelocity(s);
     EXPECT_NEAR(v.x(), 120.0, 1e-9);
     EXPECT_NEAR(v.y(), -60.0, 1e-9);
@@ -38,8 +40,10 @@ TEST(LaunchVelocity, SteadyDragGivesItsVelocity) {
 TEST(LaunchVelocity, OnlyTheRecentWindowCounts) {
     std::vector<TrajectorySample> s;
     // Half a second dragging right, then 0.2 s dragging down.
-    for (int k = 0; k <= 50; ++k) s.push_back({k * 0.01, Vec2(3.0 * k, 0.0)});
-    for (int k = 1; k <= 20; ++k) s.push_back({0.5 + k * 0.01, Vec2(150.0, 2.0 * k)});
+    for (int k = 0; k <= 50; ++k)
+        s.push_back({k * 0.01, Vec2(3.0 * k, 0.0)});
+    for (int k = 1; k <= 20; ++k)
+        s.push_back({0.5 + k * 0.01, Vec2(150.0, 2.0 * k)});
     const Vec2 v = launchVelocity(s, {.window = 0.1});
     EXPECT_NEAR(v.x(), 0.0, 1e-9);
     EXPECT_NEAR(v.y(), 200.0, 1e-9);
@@ -47,9 +51,11 @@ TEST(LaunchVelocity, OnlyTheRecentWindowCounts) {
 
 TEST(LaunchVelocity, PauseBeforeReleaseLaunchesAtRest) {
     std::vector<TrajectorySample> s;
-    for (int k = 0; k <= 20; ++k) s.push_back({k * 0.01, Vec2(5.0 * k, 0.0)});
+    for (int k = 0; k <= 20; ++k)
+        s.push_back({k * 0.01, Vec2(5.0 * k, 0.0)});
     // Held still for 0.3 s: the last 100 ms show no movement.
-    for (int k = 1; k <= 30; ++k) s.push_back({0.2 + k * 0.01, Vec2(100.0, 0.0)});
+    for (int k = 1; k <= 30; ++k)
+        s.push_back({0.2 + k * 0.01, Vec2(100.0, 0.0)});
     EXPECT_EQ(launchVelocity(s), Vec2::Zero());
 }
 

@@ -84,7 +84,9 @@ TEST(Walls, LongRandomRunKeepsEveryParticleInsideAndTheCountFixed) {
     std::uniform_real_distribution<double> ux(20.0, 280.0), uy(20.0, 180.0), uv(-300.0, 300.0),
         ur(0.5, 8.0), um(0.1, 50.0);
     for (int k = 0; k < 150; ++k) {
-        w.add({.position = {ux(rng), uy(rng)}, .velocity = {uv(rng), uv(rng)}, .mass = um(rng),
+        w.add({.position = {ux(rng), uy(rng)},
+               .velocity = {uv(rng), uv(rng)},
+               .mass = um(rng),
                .radius = ur(rng)});
     }
     const double k0 = kineticEnergy(w);

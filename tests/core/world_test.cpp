@@ -57,11 +57,17 @@ TEST(World, RejectsBadParticlesAndLeavesTheWorldUnchanged) {
     World w;
     w.add({.position = {5.0, 5.0}});
     const ParticleDef bad[] = {
-        {.position = {kNaN, 1.0}},  {.velocity = {1.0, kInf}}, {.mass = 0.0},
-        {.mass = -1.0},             {.mass = kNaN},            {.radius = 0.0},
-        {.radius = -2.0},           {.radius = kInf},
+        {.position = {kNaN, 1.0}},
+        {.velocity = {1.0, kInf}},
+        {.mass = 0.0},
+        {.mass = -1.0},
+        {.mass = kNaN},
+        {.radius = 0.0},
+        {.radius = -2.0},
+        {.radius = kInf},
     };
-    for (const ParticleDef& d : bad) EXPECT_THROW(w.add(d), InvalidArgument);
+    for (const ParticleDef& d : bad)
+        EXPECT_THROW(w.add(d), InvalidArgument);
     EXPECT_EQ(w.size(), 1u);
 }
 
@@ -107,7 +113,8 @@ TEST(World, PickReturnsTheTopmostParticleUnderThePoint) {
 TEST(World, GravityAcceleratesDownwardAndIsSkippedWhenZero) {
     World w(WorldDef{.width = 1000.0, .height = 1000.0, .gravity = {0.0, 9.81}});
     const ParticleId p = w.add({.position = {500.0, 100.0}});
-    for (int k = 0; k < 100; ++k) w.step(0.01);
+    for (int k = 0; k < 100; ++k)
+        w.step(0.01);
     EXPECT_NEAR(w.get(p).velocity.y(), 9.81, 1e-12);
     EXPECT_GT(w.profile().gravity, 0.0);
 

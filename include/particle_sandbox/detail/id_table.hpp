@@ -14,7 +14,7 @@ namespace psb::detail {
 /// Maps ids (slot + generation) to dense storage indices. A freed slot's generation is bumped,
 /// so stale ids are recognised; freed slots are reused last-in first-out.
 class IdTable {
-public:
+  public:
     /// A new id pointing at dense index `index`.
     ParticleId allocate(std::uint32_t index);
     /// Frees a live id.
@@ -24,7 +24,7 @@ public:
     [[nodiscard]] std::optional<std::uint32_t> find(ParticleId id) const;
     void clear();
 
-private:
+  private:
     static constexpr std::uint32_t kFree = UINT32_MAX;
     std::vector<std::uint32_t> index_;       ///< per slot: dense index, or kFree
     std::vector<std::uint32_t> generation_;  ///< per slot

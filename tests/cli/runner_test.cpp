@@ -1,0 +1,157 @@
+// particle-sim's runs and reports, checked against values worked out by hand.
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "cli_app.hpp"
+#include "report.hpp"
+#include "runner.hpp"
+
+namespace psb::cli {
+namespace {
+
+RunReport run(std::string_view json, double duration, RunOptions o = {}) {
+    o.duration = duration;
+    World w;
+    return runScene(parseScene(json, "test"), o, w);
+}
+
+TEST(Runner, OneParticleBouncingBetweenTwoWallsIsCountedExactly) {
+    // A 10 m box, r = 1, 2 kg at x = 5 moving +4 m/s, dt = 0.25 s: 1 m per step, all exact in
+    // binary. Steps 1-4 reach x = 9 (touching, no bounce); step 5 crosses to 10 and is clamped
+    // to 9 with v = -4 (impulse 2 kg · 8 m/s = 16); steps 6-13 reach x = 1; step 14 crosses to
+    // 0 and bounces (another 16); steps 15-16 reach x = 3.
+    const RunReport r = run(R"({"version": 1, "world": {"width": 10, "height": 10},
+        "solver": {"dt": 0.25},
+        "particles": [{"x": 5, "y": 5, "vx": 4, "mass": 2, "radius": 1}]})",
+                            4.0);
+    EXPECT_EQ(r.steps, 16u);
+    EXPECT_EQ(r.simTime, 4.0);
+    EXPECT_EQ(r.particles, 1u);
+    EXPECT_EQ(r.wallCollisions, 2u);
+    EXPECT_EQ(r.wallImpulse, 32.0);
+    EXPECT_EQ(r.collisions, 0u);
+    EXPECT_EQ(r.maxOverlap, 0.0);
+    EXPECT_EQ(r.kineticEnergyInitial, 16.0);  // ½ · 2 · 4²
+    EXPECT_EQ(r.kineticEnergyFinal, 16.0);
+    EXPECT_EQ(r.momentumInitial, Vec2(8.0, 0.0));
+    EXPECT_EQ(r.momentumFinal, Vec2(8.0, 0.0));
+    EXPECT_EQ(r.escaped, 0u);
+}
+
+TEST(Runner, HeadOnEqualMassesCollideOnceAtTheOverlapDetectionSaw) {
+    // Centres 4 m apart closing at 2 m/s, r = 1, dt = 0.5: touching (not overlapping) after
+    // step 2, overlapping by 1 m after step 3, when the velocities swap. Momentum is zero
+    // throughout, kinetic energy 2 · ½ · 1 · 1² = 1 J before and after.
+    const RunReport r = run(R"({"version": 1, "world": {"width": 20, "height": 10},
+        "solver": {"dt": 0.5},
+        "particles": [{"x": 3, "y": 5, "vx": 1, "mass": 1, "radius": 1},
+                      {"x": 7, "y": 5, "vx": -1, "mass": 1, "radius": 1}]})",
+                            2.0);
+    EXPECT_EQ(r.steps, 4u);
+    EXPECT_EQ(r.collisions, 1u);
+    EXPECT_EQ(r.maxOverlap, 1.0);
+    EXPECT_EQ(r.wallCollisions, 0u);
+    EXPECT_EQ(r.kineticEnergyInitial, 1.0);
+    EXPECT_EQ(r.kineticEnergyFinal, 1.0);
+    EXPECT_EQ(r.momentumFinal, Vec2(0.0, 0.0));
+}
+
+TEST(Runner, ParticlesLeavingAWalllessBoxAreCountedAsEscaped) {
+    const RunReport r = run(R"({"version": 1, "world": {"width": 10, "height": 10, "walls": false},
+        "solver": {"dt": 0.5},
+        "particles": [{"x": 5, "y": 5, "vx": 4, "mass": 1, "radius": 1},
+                      {"x": 5, "y": 2, "mass": 1, "radius": 1}]})",
+                            2.0);
+    EXPECT_EQ(r.escaped, 1u);  // x = 13 after 2 s
+    EXPECT_EQ(r.wallCollisions, 0u);
+}
+
+TEST(Runner, OptionsOverrideTheScenesSolverBlock) {
+    RunOptions o;
+    o.mode = StepMode::Substep;
+    o.dt = 0.125;
+    o.substeps = 3;
+    o.broadphase = BroadPhaseKind::AllPairs;
+    o.threads = 2;
+    const RunReport r = run(R"({"version": 1, "solver": {"dt": 0.5}})", 1.0, o);
+    EXPECT_EQ(r.solver.mode, StepMode::Substep);
+    EXPECT_EQ(r.solver.dt, 0.125);
+    EXPECT_EQ(r.solver.substeps, 3);
+    EXPECT_EQ(r.broadphaseUsed, BroadPhaseKind::AllPairs);
+    EXPECT_EQ(r.threads, 2);
+    EXPECT_EQ(r.steps, 8u);
+}
+
+TEST(Runner, ModesTheWorldRefusesAreUsageErrorsNamingTheOption) {
+    RunOptions o;
+    o.mode = StepMode::Exact;
+    try {
+        (void)run(R"({"version": 1})", 1.0, o);
+    } catch (const UsageError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("--mode exact: not available in this build (", 0), 0u)
+            << e.what();
+    }
+}
+
+TEST(Report, HasEveryFieldWithItsValue) {
+    RunOptions o;
+    o.threads = 3;
+    const RunReport r = run(R"({"version": 1, "world": {"width": 10, "height": 10},
+        "solver": {"dt": 0.25},
+        "particles": [{"x": 5, "y": 5, "vx": 4, "mass": 2, "radius": 1}]})",
+                            4.0, o);
+    const auto j = nlohmann::json::parse(reportJson(r));
+    EXPECT_EQ(j.at("mode"), "discrete");
+    EXPECT_EQ(j.at("dt"), 0.25);
+    EXPECT_EQ(j.at("substeps"), 1);
+    EXPECT_EQ(j.at("broadphase"), "all-pairs");  // what auto resolves to in this build
+    EXPECT_EQ(j.at("threads"), 3);
+    EXPECT_EQ(j.at("particles"), 1);
+    EXPECT_EQ(j.at("steps"), 16);
+    EXPECT_EQ(j.at("sim_time"), 4.0);
+    EXPECT_GE(j.at("wall_seconds").get<double>(), 0.0);
+    EXPECT_EQ(j.at("collisions"), 0);
+    EXPECT_EQ(j.at("wall_collisions"), 2);
+    EXPECT_EQ(j.at("kinetic_energy").at("initial"), 16.0);
+    EXPECT_EQ(j.at("kinetic_energy").at("final"), 16.0);
+    EXPECT_EQ(j.at("momentum").at("initial"), nlohmann::json::array({8.0, 0.0}));
+    EXPECT_EQ(j.at("momentum").at("final"), nlohmann::json::array({8.0, 0.0}));
+    EXPECT_EQ(j.at("wall_impulse"), 32.0);
+    EXPECT_EQ(j.at("max_overlap"), 0.0);
+    EXPECT_EQ(j.at("escaped"), 0);
+}
+
+TEST(CliApp, ExitCodesSeparateBadCommandLinesFromBadScenes) {
+    std::ostringstream out, err;
+    EXPECT_EQ(runCli({"particle-sim", "--help"}, out, err, false), kExitOk);
+    EXPECT_NE(out.str().find("Usage:"), std::string::npos);
+    EXPECT_EQ(runCli({"particle-sim", "x.json"}, out, err, false), kExitUsage);
+    err.str("");
+    EXPECT_EQ(runCli({"particle-sim", "no/such.json", "--duration", "1"}, out, err, false),
+              kExitFailure);
+    EXPECT_EQ(err.str(),
+              "particle-sim: error: no/such.json: cannot open (No such file or directory)\n");
+}
+
+TEST(CliApp, NoProgressBarWhenStderrIsNotATerminal) {
+    std::ostringstream out, err;
+    const std::string scene = std::string(PSB_ASSETS_DIR) + "/scenes/01-original.json";
+    EXPECT_EQ(runCli({"particle-sim", scene, "--duration", "1", "--progress"}, out, err, false),
+              kExitOk);
+    EXPECT_EQ(err.str(), "");
+    EXPECT_TRUE(nlohmann::json::accept(out.str()));
+    // On a terminal the bar is drawn (and ends its line).
+    std::ostringstream out2, err2;
+    EXPECT_EQ(runCli({"particle-sim", scene, "--duration", "1", "--progress"}, out2, err2, true),
+              kExitOk);
+    EXPECT_NE(err2.str().find("100%"), std::string::npos);
+    EXPECT_EQ(err2.str().back(), '\n');
+}
+
+}  // namespace
+}  // namespace psb::cli

@@ -1,0 +1,116 @@
+// The shipped presets and the built-in default scene.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+namespace psb {
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(PSB_ASSETS_DIR) / "scenes";
+
+TEST(Presets, ThereAreSevenNumberedPresetsInOrder) {
+    const auto files = sceneFiles(kScenes);
+    ASSERT_EQ(files.size(), 7u);
+    const char* expected[] = {"01-original.json",          "02-newtons-cradle.json",
+                              "03-billiards-break.json",   "04-gas-in-a-box.json",
+                              "05-mass-ratio.json",        "06-bullet-into-crowd.json",
+                              "07-pile-under-gravity.json"};
+    for (std::size_t i = 0; i < files.size(); ++i)
+        EXPECT_EQ(files[i].filename(), expected[i]);
+}
+
+TEST(Presets, EachStartsWithItsNameAndDescription) {
+    for (const auto& file : sceneFiles(kScenes)) {
+        SCOPED_TRACE(file.filename().string());
+        std::ifstream in(file);
+        std::string first, second, third;
+        std::getline(in, first);
+        std::getline(in, second);
+        std::getline(in, third);
+        EXPECT_EQ(first, "{");
+        EXPECT_EQ(second.rfind("  \"name\": \"", 0), 0u) << second;
+        EXPECT_EQ(third.rfind("  \"description\": \"", 0), 0u) << third;
+        const Scene s = loadScene(file);
+        EXPECT_FALSE(s.name.empty());
+        EXPECT_GT(s.description.size(), 60u);
+    }
+}
+
+TEST(Presets, AllLoadAndRunKeepingEveryParticleInTheBox) {
+    for (const auto& file : sceneFiles(kScenes)) {
+        SCOPED_TRACE(file.filename().string());
+        const Scene s = loadScene(file);
+        ASSERT_GT(s.particles.size(), 0u);
+        World w = makeWorld(s);
+        const double e0 = kineticEnergy(w);
+        for (int k = 0; k < 30; ++k)
+            w.step();
+        EXPECT_EQ(w.size(), s.particles.size());
+        const ParticleArrays& p = w.particles();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(p.x[i]) && std::isfinite(p.y[i]));
+            ASSERT_GE(p.x[i], p.radius[i]);
+            ASSERT_LE(p.x[i], s.world.width - p.radius[i]);
+        }
+        // Elastic presets without gravity keep their kinetic energy (to rounding).
+        if (s.world.restitution == 1.0 && s.world.gravity.isZero() && s.world.friction == 0.0) {
+            EXPECT_NEAR(kineticEnergy(w), e0, 1e-12 * e0);
+        }
+    }
+}
+
+TEST(Presets, GasInABoxHasThousandsOfParticles) {
+    EXPECT_GE(loadScene(kScenes / "04-gas-in-a-box.json").particles.size(), 1000u);
+}
+
+TEST(Presets, ThePileHasGravityAndInelasticCollisions) {
+    const Scene s = loadScene(kScenes / "07-pile-under-gravity.json");
+    EXPECT_GT(s.world.gravity.y(), 0.0);
+    EXPECT_LT(s.world.restitution, 1.0);
+}
+
+TEST(Presets, NewtonsCradleSendsOffOnlyTheLastBall) {
+    World w = makeWorld(loadScene(kScenes / "02-newtons-cradle.json"));
+    for (int k = 0; k < 240; ++k)
+        w.step();  // 1 s: the striker has hit the row
+    const ParticleArrays& p = w.particles();
+    for (std::size_t i = 0; i + 1 < p.size(); ++i)
+        EXPECT_EQ(p.vx[i], 0.0) << i;
+    EXPECT_EQ(p.vx[p.size() - 1], 200.0);
+}
+
+TEST(Presets, TheDefaultSceneIsTheOriginalsAndMatchesItsFile) {
+    const Scene s = defaultScene();
+    EXPECT_EQ(s.world.width, 700.0);
+    EXPECT_EQ(s.world.height, 700.0);
+    EXPECT_TRUE(s.world.walls);
+    EXPECT_TRUE(s.world.gravity.isZero());
+    EXPECT_EQ(s.world.restitution, 1.0);
+    ASSERT_GE(s.particles.size(), 3u);
+    ASSERT_LE(s.particles.size(), 10u);
+    for (const ParticleDef& p : s.particles) {
+        EXPECT_GE(p.mass, 3.0);
+        EXPECT_LE(p.mass, 20.0);
+        EXPECT_EQ(p.radius, 2.5 * p.mass);
+        EXPECT_LE(std::abs(p.velocity.x()), 300.0);
+        EXPECT_LE(std::abs(p.velocity.y()), 300.0);
+    }
+    // Valid by the loader's own rules (inside, no overlaps), and the same as the shipped file.
+    EXPECT_EQ(serializeScene(parseScene(serializeScene(s), "default")), serializeScene(s));
+    EXPECT_EQ(serializeScene(loadScene(kScenes / "01-original.json")), serializeScene(s));
+}
+
+TEST(Presets, SceneFilesOfAMissingDirectoryIsEmpty) {
+    EXPECT_TRUE(sceneFiles("no/such/directory").empty());
+}
+
+}  // namespace
+}  // namespace psb

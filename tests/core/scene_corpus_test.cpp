@@ -1,0 +1,187 @@
+// The loader's bad-scene corpus: every file under scene_corpus/bad must be refused with
+// exactly the message in this table (after "<path>: "), and every file under
+// scene_corpus/good must load. The messages are part of the interface: a change here is a
+// change users see.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include <particle_sandbox/scene.hpp>
+
+namespace psb {
+namespace {
+
+const std::filesystem::path kCorpus = std::filesystem::path(PSB_TEST_DATA_DIR) / "scene_corpus";
+
+// clang-format off
+const std::map<std::string, std::string> kExpected = {
+    {"allow_overlaps_string.json",
+     R"(allow_overlaps: expected true or false, got a string)"},
+    {"broadphase_unknown.json",
+     R"(solver.broadphase: unknown broadphase 'kd-tree' (expected one of: auto, all-pairs, grid, quadtree))"},
+    {"color_out_of_range.json",
+     R"(particles[0].color[1]: must be in [0, 255] (got 256))"},
+    {"color_two_channels.json",
+     R"(particles[0].color: expected [r, g, b], got 2 elements)"},
+    {"dt_negative.json",
+     R"(solver.dt: must be > 0 (got -0.01))"},
+    {"duplicate_key.json",
+     R"(world.width: duplicate key)"},
+    {"friction_negative.json",
+     R"(world.friction: must be >= 0 (got -1))"},
+    {"generate_count_and_packing.json",
+     R"(generate: needs exactly one of 'count' and 'packing')"},
+    {"generate_count_negative.json",
+     R"(generate.count: must be in [0, 1000000] (got -5))"},
+    {"generate_count_too_large.json",
+     R"(generate.count: must be in [0, 1000000] (got 2000000))"},
+    {"generate_does_not_fit.json",
+     R"(generate.count: 100 particles of radius 5 m do not fit in the region (at most 81))"},
+    {"generate_missing_radius.json",
+     R"(generate.radius: required key is missing)"},
+    {"generate_neither_count_nor_packing.json",
+     R"(generate: needs exactly one of 'count' and 'packing')"},
+    {"generate_not_object.json",
+     R"(generate: expected an object or an array of objects, got an integer)"},
+    {"generate_overlaps_listed.json",
+     R"(particles[0]: overlaps particle 0 of generate[0] (centres 1.885985685141033 m apart, radii sum to 20 m))"},
+    {"generate_packing_too_many.json",
+     R"(generate.packing: gives 779859221 particles, more than the limit of 1000000)"},
+    {"generate_region_inverted.json",
+     R"(generate.region: needs x0 < x1 and y0 < y1)"},
+    {"generate_region_outside.json",
+     R"(generate.region: reaches outside the 700 x 700 m box)"},
+    {"generate_seed_negative.json",
+     R"(generate.seed: must be in [0, 9223372036854775807] (got -1))"},
+    {"generate_temperature_and_speed.json",
+     R"(generate: give at most one of 'temperature' and 'speed')"},
+    {"gravity_not_array.json",
+     R"(world.gravity: expected an array of 2 numbers, got a number)"},
+    {"gravity_three_numbers.json",
+     R"(world.gravity: expected an array of 2 numbers, got 3 elements)"},
+    {"height_boolean.json",
+     R"(world.height: expected a number, got a boolean)"},
+    {"huge_value.json",
+     R"(world.height: magnitude above 1e+15 (got 1e+300))"},
+    {"mode_unknown.json",
+     R"(solver.mode: unknown mode 'substeps' (did you mean 'substep'?))"},
+    {"name_not_string.json",
+     R"(name: expected a string, got an integer)"},
+    {"nested_too_deep.json",
+     R"(nested deeper than 64 levels)"},
+    {"number_overflow.json",
+     R"(line 3, column 22 (world.width): number overflow parsing '1e999')"},
+    {"particle_mass_negative.json",
+     R"(particles[3].mass: must be > 0 (got -1))"},
+    {"particle_missing_mass.json",
+     R"(particles[1].mass: required key is missing)"},
+    {"particle_near_key.json",
+     R"(particles[0].raduis: unknown key (did you mean 'radius'?))"},
+    {"particle_not_object.json",
+     R"(particles[1]: expected an object, got an array)"},
+    {"particle_outside_box.json",
+     R"(particles[1]: not inside the 700 x 700 m box (x = 699.5, y = 10, radius = 1))"},
+    {"particle_overlap.json",
+     R"(particles[1]: overlaps particles[2] (centres 8 m apart, radii sum to 10 m))"},
+    {"particle_radius_zero.json",
+     R"(particles[0].radius: must be > 0 (got 0))"},
+    {"particle_unknown_key.json",
+     R"(particles[0].velocity: unknown key (expected one of: x, y, vx, vy, mass, radius, color))"},
+    {"particle_x_null.json",
+     R"(particles[0].x: expected a number, got null)"},
+    {"particles_not_array.json",
+     R"(particles: expected an array, got an object)"},
+    {"restitution_above_one.json",
+     R"(world.restitution: must be in [0, 1] (got 1.5))"},
+    {"restitution_negative.json",
+     R"(world.restitution: must be in [0, 1] (got -0.1))"},
+    {"root_not_object.json",
+     R"((root): expected an object, got an array)"},
+    {"substeps_fraction.json",
+     R"(solver.substeps: expected an integer, got a number)"},
+    {"substeps_huge.json",
+     R"(solver.substeps: must be in [1, 100000] (got 18446744073709551615))"},
+    {"substeps_zero.json",
+     R"(solver.substeps: must be in [1, 100000] (got 0))"},
+    {"syntax_control_character.json",
+     R"(line 3, column 15 (name): syntax error while parsing value - invalid string: control character U+0009 (HT) must be escaped to \u0009 or \t; last read: '"tab<U+0009>')"},
+    {"syntax_empty_file.json",
+     R"(line 1, column 1: syntax error while parsing value - unexpected end of input; expected '[', '{', or a literal)"},
+    {"syntax_invalid_utf8.json",
+     R"(line 3, column 16 (name): syntax error while parsing value - invalid string: ill-formed UTF-8 byte; last read: '"caf\xe9"')"},
+    {"syntax_missing_colon.json",
+     R"(line 3, column 12 (name): syntax error while parsing object separator - unexpected string literal; expected ':')"},
+    {"syntax_trailing_comma.json",
+     R"(line 4, column 1: syntax error while parsing object key - unexpected '}'; expected string literal)"},
+    {"syntax_truncated.json",
+     R"(line 4, column 20 (particles[0]): syntax error while parsing object - unexpected end of input; expected '}')"},
+    {"unknown_key_far.json",
+     R"(world.colour: unknown key (expected one of: width, height, walls, gravity, restitution, friction))"},
+    {"unknown_key_top.json",
+     R"(partciles: unknown key (did you mean 'particles'?))"},
+    {"unknown_key_world.json",
+     R"(world.gravty: unknown key (did you mean 'gravity'?))"},
+    {"version_missing.json",
+     R"(version: required key is missing)"},
+    {"version_string.json",
+     R"(version: expected an integer, got a string)"},
+    {"version_unsupported.json",
+     R"(version: unsupported version 2 (this build reads version 1))"},
+    {"walls_string.json",
+     R"(world.walls: expected true or false, got a string)"},
+    {"width_string.json",
+     R"(world.width: expected a number, got a string)"},
+    {"width_zero.json",
+     R"(world.width: must be > 0 (got 0))"},
+    {"world_not_object.json",
+     R"(world: expected an object, got an array)"},
+};
+// clang-format on
+
+std::vector<std::filesystem::path> filesIn(const std::filesystem::path& dir) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+TEST(SceneCorpus, EveryBadSceneIsRefusedWithItsExactMessage) {
+    const auto files = filesIn(kCorpus / "bad");
+    ASSERT_EQ(files.size(), kExpected.size()) << "every corpus file needs a row in kExpected";
+    for (const auto& file : files) {
+        SCOPED_TRACE(file.filename().string());
+        const auto row = kExpected.find(file.filename().string());
+        ASSERT_NE(row, kExpected.end()) << "no expected message for this file";
+        try {
+            (void)loadScene(file);
+            ADD_FAILURE() << "loaded, but must be refused";
+        } catch (const SceneError& e) {
+            EXPECT_EQ(std::string(e.what()), file.string() + ": " + row->second);
+        }
+    }
+}
+
+TEST(SceneCorpus, EveryGoodSceneLoads) {
+    for (const auto& file : filesIn(kCorpus / "good")) {
+        SCOPED_TRACE(file.filename().string());
+        EXPECT_NO_THROW((void)loadScene(file));
+    }
+}
+
+TEST(SceneCorpus, TheSameTextGivesTheSameMessageWhateverTheSourceName) {
+    // parseScene names the source it is given; loadScene passes the path.
+    try {
+        (void)parseScene(R"({"version": 1, "world": {"width": -1}})", "<stdin>");
+        FAIL();
+    } catch (const SceneError& e) {
+        EXPECT_STREQ(e.what(), "<stdin>: world.width: must be > 0 (got -1)");
+    }
+}
+
+}  // namespace
+}  // namespace psb

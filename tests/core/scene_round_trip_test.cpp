@@ -1,0 +1,288 @@
+// Save then load reproduces the state bit for bit, and saving is atomic.
+
+#include <gtest/gtest.h>
+
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <bit>
+#include <cmath>
+#include <csignal>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+namespace psb {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool sameBits(double a, double b) {
+    return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+void expectIdentical(const Scene& a, const Scene& b) {
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.description, b.description);
+    EXPECT_TRUE(sameBits(a.world.width, b.world.width));
+    EXPECT_TRUE(sameBits(a.world.height, b.world.height));
+    EXPECT_EQ(a.world.walls, b.world.walls);
+    EXPECT_TRUE(sameBits(a.world.gravity.x(), b.world.gravity.x()));
+    EXPECT_TRUE(sameBits(a.world.gravity.y(), b.world.gravity.y()));
+    EXPECT_TRUE(sameBits(a.world.restitution, b.world.restitution));
+    EXPECT_TRUE(sameBits(a.world.friction, b.world.friction));
+    EXPECT_EQ(a.solver.mode, b.solver.mode);
+    EXPECT_TRUE(sameBits(a.solver.dt, b.solver.dt));
+    EXPECT_EQ(a.solver.substeps, b.solver.substeps);
+    EXPECT_EQ(a.solver.broadphase, b.solver.broadphase);
+    EXPECT_EQ(a.allowOverlaps, b.allowOverlaps);
+    ASSERT_EQ(a.particles.size(), b.particles.size());
+    for (std::size_t i = 0; i < a.particles.size(); ++i) {
+        const ParticleDef &p = a.particles[i], &q = b.particles[i];
+        EXPECT_TRUE(sameBits(p.position.x(), q.position.x())) << i;
+        EXPECT_TRUE(sameBits(p.position.y(), q.position.y())) << i;
+        EXPECT_TRUE(sameBits(p.velocity.x(), q.velocity.x())) << i;
+        EXPECT_TRUE(sameBits(p.velocity.y(), q.velocity.y())) << i;
+        EXPECT_TRUE(sameBits(p.mass, q.mass)) << i;
+        EXPECT_TRUE(sameBits(p.radius, q.radius)) << i;
+        EXPECT_EQ(p.color, q.color) << i;
+    }
+}
+
+/// A fresh, empty directory under the system's temporary directory.
+class TempDir {
+  public:
+    TempDir() {
+        std::string pattern = (fs::temp_directory_path() / "psb-scene-test-XXXXXX").string();
+        path_ = ::mkdtemp(pattern.data());
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
+        fs::remove_all(path_, ec);
+    }
+    [[nodiscard]] const fs::path& path() const { return path_; }
+
+  private:
+    fs::path path_;
+};
+
+std::string readFile(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+TEST(SceneRoundTrip, AwkwardDoublesSurviveSerializeAndParseBitForBit) {
+    Scene s;
+    s.name = "quotes \" and \\ backslashes\nand a newline";
+    s.description = "caf\xc3\xa9";
+    s.world.width = 0.1 + 0.2;  // 0.30000000000000004
+    s.world.gravity = {1.0 / 3.0, -9.81};
+    s.world.restitution = std::nextafter(1.0, 0.0);
+    s.solver.dt = 1.0 / 60.0;
+    s.particles.push_back({.position = {0.1, 0.2},
+                           .velocity = {-0.0, 5e-324},
+                           .mass = 1e-300,
+                           .radius = 0.05,
+                           .color = {0, 128, 255}});
+    s.particles.push_back({.position = {0.25, 0.2},
+                           .velocity = {123456789.123456789, -1e-7},
+                           .mass = 3.0,
+                           .radius = 0.01});
+    const Scene back = parseScene(serializeScene(s), "mem");
+    expectIdentical(s, back);
+    EXPECT_TRUE(std::signbit(back.particles[0].velocity.x()));  // -0.0 stays negative
+}
+
+TEST(SceneRoundTrip, SerializingTwiceGivesTheSameText) {
+    const std::string once = serializeScene(defaultScene());
+    EXPECT_EQ(serializeScene(parseScene(once, "mem")), once);
+}
+
+TEST(SceneRoundTrip, ARunningWorldSavedAndLoadedContinuesExactlyAsIfUninterrupted) {
+    Scene start = parseScene(R"({"version": 1, "world": {"gravity": [0, 9.81], "restitution": 0.9},
+        "generate": {"count": 300, "radius": 6, "speed": 200, "seed": 11}})",
+                             "mem");
+    World a = makeWorld(start);
+    for (int k = 0; k < 50; ++k)
+        a.step();
+
+    TempDir dir;
+    const fs::path file = dir.path() / "snap.json";
+    saveScene(sceneFromWorld(a, "snap"), file);
+    World b = makeWorld(loadScene(file));
+    for (int k = 0; k < 50; ++k) {
+        a.step();
+        b.step();
+    }
+    const ParticleArrays &pa = a.particles(), &pb = b.particles();
+    ASSERT_EQ(pa.size(), pb.size());
+    for (std::size_t i = 0; i < pa.size(); ++i) {
+        ASSERT_TRUE(sameBits(pa.x[i], pb.x[i]) && sameBits(pa.y[i], pb.y[i]) &&
+                    sameBits(pa.vx[i], pb.vx[i]) && sameBits(pa.vy[i], pb.vy[i]))
+            << "particle " << i;
+    }
+}
+
+TEST(SceneRoundTrip, ASnapshotWithOverlapsIsMarkedSoThatItLoads) {
+    World w;
+    w.add({.position = {100.0, 100.0}, .radius = 10.0});
+    w.add({.position = {105.0, 100.0}, .radius = 10.0});
+    const Scene s = sceneFromWorld(w);
+    EXPECT_TRUE(s.allowOverlaps);
+    EXPECT_EQ(parseScene(serializeScene(s), "mem").particles.size(), 2u);
+    World apart;
+    apart.add({.position = {100.0, 100.0}, .radius = 10.0});
+    EXPECT_FALSE(sceneFromWorld(apart).allowOverlaps);
+}
+
+TEST(SceneRoundTrip, MakeWorldKeepsTheSceneOrderAndSettings) {
+    const Scene s = defaultScene();
+    const World w = makeWorld(s);
+    ASSERT_EQ(w.size(), s.particles.size());
+    EXPECT_EQ(w.def().width, s.world.width);
+    EXPECT_EQ(w.solver().dt, s.solver.dt);
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+        EXPECT_EQ(w.particles().x[i], s.particles[i].position.x());
+        EXPECT_EQ(w.particles().mass[i], s.particles[i].mass);
+    }
+}
+
+TEST(SceneSave, ReplacesTheFileAndLeavesNoTemporaryBehind) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    saveScene(defaultScene(), file);
+    Scene other = defaultScene();
+    other.name = "second";
+    saveScene(other, file);
+    EXPECT_EQ(loadScene(file).name, "second");
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
+}
+
+TEST(SceneSave, AMissingDirectoryIsReportedAndNothingIsCreated) {
+    TempDir dir;
+    const fs::path file = dir.path() / "missing" / "scene.json";
+    try {
+        saveScene(defaultScene(), file);
+        FAIL();
+    } catch (const SaveError& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot save " + file.string() + ": directory " +
+                                             (dir.path() / "missing").string() + " does not exist");
+    }
+    EXPECT_FALSE(fs::exists(dir.path() / "missing"));
+}
+
+TEST(SceneSave, ADirectoryInTheWayIsReportedAndLeftAlone) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    fs::create_directory(file);
+    try {
+        saveScene(defaultScene(), file);
+        FAIL();
+    } catch (const SaveError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "cannot save " + file.string() + ": a directory is in the way");
+    }
+    EXPECT_TRUE(fs::is_directory(file));
+}
+
+TEST(SceneSave, AParentThatIsAFileIsReported) {
+    TempDir dir;
+    std::ofstream(dir.path() / "plain") << "x";
+    const fs::path file = dir.path() / "plain" / "scene.json";
+    try {
+        saveScene(defaultScene(), file);
+        FAIL();
+    } catch (const SaveError& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot save " + file.string() + ": " +
+                                             (dir.path() / "plain").string() +
+                                             " is not a directory");
+    }
+    EXPECT_EQ(readFile(dir.path() / "plain"), "x");
+}
+
+TEST(SceneSave, NoPermissionLeavesTheOldFileIntact) {
+    if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    saveScene(defaultScene(), file);
+    const std::string before = readFile(file);
+    fs::permissions(dir.path(), fs::perms::owner_read | fs::perms::owner_exec);
+    Scene other = defaultScene();
+    other.name = "must not be written";
+    try {
+        saveScene(other, file);
+        FAIL();
+    } catch (const SaveError& e) {
+        EXPECT_EQ(std::string(e.what()), "cannot save " + file.string() +
+                                             ": cannot create a temporary file in " +
+                                             dir.path().string() + " (Permission denied)");
+    }
+    fs::permissions(dir.path(), fs::perms::owner_all);
+    EXPECT_EQ(readFile(file), before);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
+}
+
+TEST(SceneSave, AWriteThatFailsHalfwayLeavesTheOldFileIntactAndNoTemporary) {
+    // A file-size limit makes write(2) fail part way, as a full disk would, even for root.
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    saveScene(defaultScene(), file);
+    const std::string before = readFile(file);
+
+    Scene big = defaultScene();
+    big.particles.resize(2000, big.particles[0]);
+    rlimit old{};
+    ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old), 0);
+    rlimit small = old;
+    small.rlim_cur = 4096;
+    const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);  // get EFBIG, not a signal
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    std::string message;
+    try {
+        saveScene(big, file);
+    } catch (const SaveError& e) {
+        message = e.what();
+    }
+    ::setrlimit(RLIMIT_FSIZE, &old);
+    std::signal(SIGXFSZ, oldHandler);
+
+    EXPECT_EQ(message, "cannot save " + file.string() + ": write failed (File too large)");
+    EXPECT_EQ(readFile(file), before);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), fs::directory_iterator{}), 1);
+}
+
+TEST(SceneSave, ADirectoryThatRefusesNewFilesIsReportedEvenForRoot) {
+    // /proc accepts no new files, whoever asks; the reason comes from the system.
+    try {
+        saveScene(defaultScene(), "/proc/psb-scene.json");
+        FAIL();
+    } catch (const SaveError& e) {
+        const std::string prefix =
+            "cannot save /proc/psb-scene.json: cannot create a temporary file in /proc (";
+        EXPECT_EQ(std::string(e.what()).substr(0, prefix.size()), prefix) << e.what();
+    }
+}
+
+TEST(SceneSave, ANonFiniteValueIsRefusedBeforeTheFileIsTouched) {
+    TempDir dir;
+    const fs::path file = dir.path() / "scene.json";
+    saveScene(defaultScene(), file);
+    const std::string before = readFile(file);
+    Scene bad = defaultScene();
+    bad.particles[2].velocity.x() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(saveScene(bad, file), SaveError);
+    EXPECT_EQ(readFile(file), before);
+}
+
+}  // namespace
+}  // namespace psb
