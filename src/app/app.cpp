@@ -54,6 +54,7 @@ App::App(const AppOptions& options)
         sceneName_ = scene.name.empty() && sceneFile_ ? sceneFile_->stem().string() : scene.name;
     }
     presets_ = presetScenes();
+    view_.arrowSeconds = arrowSecondsFor(world_);
     paused_ = options_.startPaused;
     view_.arrows = options_.arrows;
 
@@ -135,6 +136,7 @@ void App::setWorld(World world, std::string name) {
     interaction_.reset();
     world_ = std::move(world);
     sceneName_ = std::move(name);
+    view_.arrowSeconds = arrowSecondsFor(world_);
     accumulator_ = 0.0;
     fit();
 }
@@ -462,6 +464,9 @@ void App::update(double realSeconds) {
         stepOnce();
     }
     stepRequested_ = false;
+    // Arrows shorten when the motion speeds up (a bullet scattering a crowd) but never grow
+    // back on their own, so their lengths stay comparable over time; opening a scene resets it.
+    view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
     // Show the held particle exactly at the hand, paused or not.
     interaction_.applyHold(world_, now(), launchSettings());
     lastStepMs_ = msSince(t0);
@@ -491,6 +496,7 @@ void App::render() {
     hud.momentum = momentum(world_);
     hud.spawnMass = spawn_.mass;
     hud.spawnRadius = spawn_.radius();
+    hud.arrowSeconds = view_.arrows ? view_.arrowSeconds : 0.0;
     hud.paused = paused_;
     hud.stepMs = stepMs_;
     hud.drawMs = drawMs_;

@@ -24,8 +24,13 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "KE %.4g J | p [%.4g, %.4g] kg m/s", d.kineticEnergy,
                   d.momentum.x(), d.momentum.y());
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.1f m | H: help", d.spawnMass, d.spawnRadius);
-    lines.emplace_back(buf);
+    std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.3g m", d.spawnMass, d.spawnRadius);
+    std::string last = buf;
+    if (d.arrowSeconds > 0.0) {
+        std::snprintf(buf, sizeof buf, " | arrow = %.3g s of motion", d.arrowSeconds);
+        last += buf;
+    }
+    lines.push_back(last + " | H: help");
     return lines;
 }
 

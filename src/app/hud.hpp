@@ -21,6 +21,7 @@ struct HudData {
     Vec2 momentum = Vec2::Zero();  ///< kg·m/s
     double spawnMass = 0.0;        ///< kg
     double spawnRadius = 0.0;      ///< m
+    double arrowSeconds = 0.0;     ///< arrow length per unit speed, s; 0 when arrows are off
     bool paused = false;
     double stepMs = 0.0;  ///< wall-clock ms of simulation per frame
     double drawMs = 0.0;  ///< wall-clock ms of drawing per frame

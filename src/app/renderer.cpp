@@ -53,9 +53,10 @@ void Renderer::drawWalls(const World& world, const Camera& camera) {
     const WorldDef& d = world.def();
     const Vec2 a = camera.worldToScreen(Vec2::Zero());
     const Vec2 b = camera.worldToScreen(Vec2(d.width, d.height));
-    // The original's walls thicken with zoom; here 3 m thick, at least one pixel, drawn
-    // outside the box so they never cover a particle touching them.
-    const float t = static_cast<float>(std::max(1.0, camera.toScreen(3.0)));
+    // The original's walls thicken with zoom; here 0.4 % of the box's smaller side, at least
+    // two pixels, drawn outside the box so they never cover a particle touching them.
+    const double thickness = camera.toScreen(0.004 * std::min(d.width, d.height));
+    const float t = static_cast<float>(std::max(2.0, thickness));
     const float x0 = static_cast<float>(a.x()), y0 = static_cast<float>(a.y());
     const float x1 = static_cast<float>(b.x()), y1 = static_cast<float>(b.y());
     const SDL_FRect rects[4] = {{x0 - t, y0 - t, x1 - x0 + 2 * t, t},
@@ -68,6 +69,21 @@ void Renderer::drawWalls(const World& world, const Camera& camera) {
         SDL_SetRenderDrawColor(renderer_, 70, 70, 70, 255);  // an open box: only a hint
     }
     SDL_RenderFillRectsF(renderer_, rects, 4);
+}
+
+double arrowSecondsFor(const World& world) {
+    constexpr double kOriginal = 1.0 / 3.0;
+    const ParticleArrays& p = world.particles();
+    if (p.size() == 0) return kOriginal;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        sum += p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+    const double vrms = std::sqrt(sum / static_cast<double>(p.size()));
+    if (!(vrms > 0.0) || !std::isfinite(vrms)) return kOriginal;
+    const double w = world.def().width, h = world.def().height;
+    const double spacing = std::sqrt(w * h / static_cast<double>(p.size()));
+    const double longest = std::min(0.2 * std::min(w, h), 0.75 * spacing);  // metres
+    return std::min(kOriginal, longest / vrms);
 }
 
 void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius) {
@@ -103,7 +119,8 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         const double r = std::max(0.75, p.radius[i] * zoom);
         // Arrows can reach beyond the disc, so cull with the arrow's reach when shown.
         const double reach =
-            options.arrows ? std::max(r, zoom * kArrowSeconds * std::hypot(p.vx[i], p.vy[i])) : r;
+            options.arrows ? std::max(r, zoom * options.arrowSeconds * std::hypot(p.vx[i], p.vy[i]))
+                           : r;
         if (s.x() + reach < 0 || s.x() - reach > w || s.y() + reach < 0 || s.y() - reach > h) {
             continue;
         }
@@ -119,7 +136,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     if (options.arrows) {
         for (std::size_t i : visible) {
             const double speed = std::hypot(p.vx[i], p.vy[i]);
-            const double len = zoom * kArrowSeconds * speed;  // pixels from the centre
+            const double len = zoom * options.arrowSeconds * speed;  // pixels from the centre
             const double r = p.radius[i] * zoom;
             if (len <= r + 1.0) continue;  // the arrow would end inside the disc
             const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);

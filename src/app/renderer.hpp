@@ -24,7 +24,16 @@ class Font;
 struct ViewOptions {
     bool arrows = true;   ///< velocity arrows
     bool labels = false;  ///< XVel, YVel, Momentum, Mass above each particle
+    /// Arrow length per unit speed, seconds: an arrow reaches where the particle will be after
+    /// this time. The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
+    double arrowSeconds = 1.0 / 3.0;
 };
+
+/// An arrow scale for `world` (seconds, see ViewOptions::arrowSeconds): the original's 1/3 s,
+/// shortened when that would make the root-mean-square arrow longer than a fifth of the box or
+/// three quarters of the mean spacing between particles (a dense gas would be hidden under its
+/// arrows).
+[[nodiscard]] double arrowSecondsFor(const World& world);
 
 /// What the last draw() did, for the HUD.
 struct DrawStats {
@@ -35,9 +44,6 @@ struct DrawStats {
 
 class Renderer {
   public:
-    /// Arrow length per unit speed: seconds (an arrow shows where the particle will be in
-    /// this time). The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
-    static constexpr double kArrowSeconds = 1.0 / 3.0;
     /// Above this many particles on screen, labels are not drawn (they would cover the view).
     static constexpr std::size_t kMaxLabels = 400;
 

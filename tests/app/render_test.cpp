@@ -205,11 +205,36 @@ TEST_F(RenderTest, WallsAreDrawnAroundTheBox) {
     def.width = 300.0;
     def.height = 300.0;
     const World w(def);
-    camera_.set(1.0, Vec2(-50, -50));  // box from (50, 50) to (350, 350) on screen
+    // Box from (50, 50) to (350, 350) on screen; walls 2 px thick (at least), outside.
+    camera_.set(1.0, Vec2(-50, -50));
     draw(w, {});
-    EXPECT_TRUE(isColor(pixel(200, 48), 255, 255, 255));
-    EXPECT_TRUE(isColor(pixel(351, 200), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(200, 49), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(350, 200), 255, 255, 255));
     EXPECT_TRUE(isColor(pixel(200, 200), 0, 0, 0));
+}
+
+TEST(ArrowScale, IsTheOriginalsThirdOfASecondForAFewParticles) {
+    World w;  // 700 m box
+    ParticleDef d;
+    d.velocity = {300.0, 0.0};
+    d.position = {100.0, 100.0};
+    w.add(d);
+    EXPECT_DOUBLE_EQ(arrowSecondsFor(w), 1.0 / 3.0);
+    EXPECT_DOUBLE_EQ(arrowSecondsFor(World{}), 1.0 / 3.0);  // nothing moves: nothing to scale
+}
+
+TEST(ArrowScale, ShortensSoADenseGasIsNotHiddenUnderItsArrows) {
+    World w;  // 700 m box, 4900 particles: mean spacing 10 m
+    for (int i = 0; i < 70; ++i) {
+        for (int j = 0; j < 70; ++j) {
+            ParticleDef d;
+            d.position = {5.0 + 10.0 * i, 5.0 + 10.0 * j};
+            d.velocity = {100.0, 0.0};
+            w.add(d);
+        }
+    }
+    // The root-mean-square arrow is three quarters of the spacing: 7.5 m at 100 m/s.
+    EXPECT_NEAR(arrowSecondsFor(w), 0.075, 1e-12);
 }
 
 }  // namespace

@@ -25,14 +25,24 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$OUT"
 rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
 
-for tool in Xvfb xdotool import convert; do
+for tool in Xvfb xdpyinfo xdotool import convert; do
     if ! command -v "$tool" >/dev/null; then
         "$HERE/../../scripts/install-deps.sh" --test
         break
     fi
 done
 
-fail() { echo "FAIL: $*" >&2; echo "(log and screenshots in $OUT)" >&2; exit 1; }
+fail() {
+    echo "FAIL: $*" >&2
+    for f in stderr.log xvfb.log; do
+        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
+    done
+    if [[ -n "${APP_PID:-}" ]] && ! kill -0 "$APP_PID" 2>/dev/null; then
+        echo "(the program is no longer running)" >&2
+    fi
+    echo "(log and screenshots in $OUT)" >&2
+    exit 1
+}
 pass() { echo "ok: $*"; }
 
 XVFB_PID=""
@@ -61,18 +71,34 @@ set -e
 pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
 
 # --- a private X display ------------------------------------------------------------------
-Xvfb -displayfd 3 -screen 0 640x640x24 -nolisten tcp 3>"$OUT/display.txt" 2>"$OUT/xvfb.log" &
-XVFB_PID=$!
-for _ in $(seq 100); do [[ -s "$OUT/display.txt" ]] && break; sleep 0.05; done
-[[ -s "$OUT/display.txt" ]] || fail "Xvfb did not start"
-export DISPLAY=":$(cat "$OUT/display.txt")"
+# A random high display number, not Xvfb -displayfd: servers started at the same moment with
+# -displayfd can end up sharing a display (and each other's input) on a busy machine.
+for _ in $(seq 30); do
+    n=$((200 + RANDOM % 700))
+    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n ]] && continue
+    Xvfb ":$n" -screen 0 640x640x24 -nolisten tcp 2>"$OUT/xvfb.log" &
+    XVFB_PID=$!
+    for _ in $(seq 100); do
+        kill -0 "$XVFB_PID" 2>/dev/null || break
+        xdpyinfo -display ":$n" >/dev/null 2>&1 && break
+        sleep 0.05
+    done
+    if kill -0 "$XVFB_PID" 2>/dev/null && xdpyinfo -display ":$n" >/dev/null 2>&1; then
+        export DISPLAY=":$n"
+        break
+    fi
+    kill "$XVFB_PID" 2>/dev/null || true
+    XVFB_PID=""
+done
+[[ -n "$XVFB_PID" ]] || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 
 # --- the program --------------------------------------------------------------------------
 LOG="$OUT/stdout.log"
 "$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" >"$LOG" 2>"$OUT/stderr.log" &
 APP_PID=$!
-WID=$(timeout 10 xdotool search --sync --onlyvisible --name "Particle Sandbox" | head -1) ||
+WID=$(timeout 10 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
+    head -1) ||
     fail "no window within 10 s"
 [[ -n "$WID" ]] || fail "no window"
 eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
@@ -104,19 +130,20 @@ wait_title() {  # wait_title REGEX
 key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
 shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
 
-# Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart.
+# Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart, as
+# one xdotool command chain so that process start-up under load cannot stretch the timing (the
+# app releases a particle at rest if the hand paused for 100 ms). An optional 6th argument is a
+# further chain (e.g. a key press) run while the button is still down.
 drag() {
     local x=$1 y=$2 dx=$3 dy=$4 n=$5 hold=${6:-}
-    xdotool mousemove --sync "$x" "$y"
-    sleep 0.1
-    xdotool mousedown 1
-    sleep 0.1
+    local chain=(mousemove --sync "$x" "$y" sleep 0.1 mousedown 1 sleep 0.1)
     for ((i = 1; i <= n; i++)); do
-        xdotool mousemove "$((x + i * dx))" "$((y + i * dy))"
-        sleep 0.015
+        chain+=(mousemove "$((x + i * dx))" "$((y + i * dy))" sleep 0.015)
     done
-    [[ -n "$hold" ]] && eval "$hold"
-    xdotool mouseup 1
+    # shellcheck disable=SC2206
+    [[ -n "$hold" ]] && chain+=($hold)
+    chain+=(mouseup 1)
+    xdotool "${chain[@]}"
     sleep 0.2
 }
 
@@ -158,7 +185,7 @@ awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 100 && vy > 5 * (vx < 0 ? -vx :
 pass "grab and fling: $line"
 
 # --- 2. delete while holding: the 8 kg particle at (250, 260) m ----------------------------
-drag "$(sx 250)" "$(sy 260)" 3 3 3 "xdotool key --window $WID Delete; sleep 0.2"
+drag "$(sx 250)" "$(sy 260)" 3 3 3 "key --window $WID Delete sleep 0.2"
 wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
 wait_title "5 particles - PAUSED"
 pass "delete while holding: $(grep 'Deleted particle' "$LOG")"
