@@ -53,6 +53,7 @@ cleanup() {
     wait 2>/dev/null || true
 }
 trap cleanup EXIT
+trap 'echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
