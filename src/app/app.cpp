@@ -155,7 +155,14 @@ void App::openScene(const std::optional<std::filesystem::path>& file) {
 }
 
 void App::fit() {
-    camera_.fit(world_.def().width, world_.def().height);
+    // Keep the HUD's four lines clear of the box.
+    const double hudHeight = 4.0 * hudFont_->lineHeight() + 10.0;
+    camera_.fit(world_.def().width, world_.def().height, 10.0, hudHeight);
+    const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "[I] View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",
+                  camera_.zoom(), topLeft.x(), topLeft.y());
+    logLine(buf);
 }
 
 void App::say(std::string text, const char* logPrefix) {

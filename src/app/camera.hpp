@@ -41,9 +41,10 @@ class Camera {
     /// Moves the view so the world slides by `pixels` on screen (a drag to the right moves the
     /// world to the right).
     void panPixels(const Vec2& pixels);
-    /// Centres a `width` × `height` metre box in the viewport with `marginPixels` around it, and
-    /// resets the zoom limits around that zoom (1/50 to 500 times it).
-    void fit(double width, double height, double marginPixels = 10.0);
+    /// Centres a `width` × `height` metre box in the viewport with `marginPixels` around it,
+    /// below a band of `topInsetPixels` kept free (for the HUD), and resets the zoom limits
+    /// around that zoom (1/50 to 500 times it).
+    void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0);
 
   private:
     int width_ = 800;

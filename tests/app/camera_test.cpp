@@ -76,6 +76,16 @@ TEST(Camera, FitCentresTheBoxWithAMargin) {
     EXPECT_NEAR((topLeft.x() + bottomRight.x()) / 2.0, 500.0, kTol);
 }
 
+TEST(Camera, FitKeepsATopInsetFreeForTheHud) {
+    Camera c;
+    c.setViewport(600, 600);
+    c.fit(700.0, 700.0, 10.0, 80.0);
+    EXPECT_NEAR(c.zoom(), 500.0 / 700.0, 1e-12);  // 600 - 80 - 2 * 10 pixels of height
+    EXPECT_NEAR(c.worldToScreen(Vec2(0, 0)).y(), 90.0, kTol);
+    EXPECT_NEAR(c.worldToScreen(Vec2(0, 700)).y(), 590.0, kTol);
+    EXPECT_NEAR(c.worldToScreen(Vec2(350, 0)).x(), 300.0, kTol);
+}
+
 TEST(Camera, PanMovesTheWorldWithTheDrag) {
     Camera c;
     c.setViewport(800, 800);

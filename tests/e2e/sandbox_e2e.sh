@@ -53,7 +53,7 @@ cleanup() {
     wait 2>/dev/null || true
 }
 trap cleanup EXIT
-trap 'echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
+trap '[[ $- == *e* ]] && echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
@@ -108,10 +108,13 @@ WY=$Y
 xdotool windowfocus --sync "$WID" 2>/dev/null || true
 pass "window $WID at $WX,$WY size ${WIDTH}x$HEIGHT"
 
-# The camera starts fitted: a 700 m box in a 600 px window with a 10 px margin.
-ZOOM=$(awk 'BEGIN { print 580 / 700 }')
-sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" 'BEGIN { printf "%d", o + 10 + w * z + 0.5 }'; }
-sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" 'BEGIN { printf "%d", o + 10 + w * z + 0.5 }'; }
+# The camera starts fitted to the box; the program logs the mapping it chose.
+for _ in $(seq 100); do grep -q "\[I\] View: zoom" "$LOG" && break; sleep 0.05; done
+view=$(grep "\[I\] View: zoom" "$LOG" | head -1) || fail "no view line in the log"
+read -r ZOOM BX BY < <(sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/' <<<"$view")
+sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
+sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
+pass "fitted view: zoom $ZOOM px/m, box top-left at ($BX, $BY) px in the window"
 
 wait_log() {  # wait_log REGEX [SECONDS]
     local deadline=$((SECONDS + ${2:-5}))
@@ -222,9 +225,11 @@ pass "flung particle moved down from y = $fy1 to $fy2 px"
 # --- 4. wheel zoom about the cursor --------------------------------------------------------
 cx=$((WX + 300))
 cy=$((WY + 300))
-wall="3x40+$((WX + 7))+$((WY + 280))"  # a piece of the left wall, away from the HUD
+# A piece of the left wall (at least 2 px wide, just left of the box), halfway down: at least
+# one column of it must be white.
+wall="2x40+$((WX + ${BX%.*} - 2))+$((WY + ${BY%.*} + 230))"
 before=$(white_in "$OUT/2-stepped.png" "$wall")
-((before > 60)) || fail "the left wall is not where the fitted camera puts it ($before px)"
+((before >= 35)) || fail "the left wall is not where the fitted camera puts it ($before px)"
 xdotool mousemove --sync "$cx" "$cy"
 for _ in 1 2 3; do xdotool click 4; sleep 0.1; done
 wait_log "Zoom"
@@ -239,7 +244,8 @@ pass "wheel zoom: $zooms notches, zoom $ZOOM -> $last_zoom px/m, wall moved away
 
 # --- 5. labels ----------------------------------------------------------------------------
 key f  # fit again
-inner="560x500+$((WX + 20))+$((WY + 80))"
+side=$(awk -v z="$ZOOM" 'BEGIN { printf "%d", 700 * z - 12 }')  # inside the walls
+inner="${side}x${side}+$((WX + ${BX%.*} + 6))+$((WY + ${BY%.*} + 6))"
 shot 4-fitted
 plain=$(white_in "$OUT/4-fitted.png" "$inner")
 key s
