@@ -54,6 +54,7 @@ App::App(const AppOptions& options)
         sceneName_ = scene.name.empty() && sceneFile_ ? sceneFile_->stem().string() : scene.name;
     }
     presets_ = presetScenes();
+    const std::filesystem::path font = findAsset("fonts/DejaVuSansMono.ttf");  // before a window
     view_.arrowSeconds = arrowSecondsFor(world_);
     paused_ = options_.startPaused;
     view_.arrows = options_.arrows;
@@ -86,9 +87,8 @@ App::App(const AppOptions& options)
         throw std::runtime_error("cannot create a renderer: " + why);
     }
     try {
-        hudFont_ = std::make_unique<Font>(sdlRenderer_, findAsset("fonts/DejaVuSansMono.ttf"), 14);
-        labelFont_ =
-            std::make_unique<Font>(sdlRenderer_, findAsset("fonts/DejaVuSansMono.ttf"), 12);
+        hudFont_ = std::make_unique<Font>(sdlRenderer_, font, 14);
+        labelFont_ = std::make_unique<Font>(sdlRenderer_, font, 12);
         renderer_ = std::make_unique<Renderer>(sdlRenderer_, labelFont_.get());
     } catch (...) {
         hudFont_.reset();
@@ -127,7 +127,8 @@ LaunchSettings App::launchSettings() const {
     s.window = 0.1;
     // A hand that moved less than 4 pixels in the last 100 ms was holding still.
     s.minDistance = camera_.toWorld(4.0);
-    // Faster than two box sizes per second would tunnel through everything.
+    // A flick faster than two box sizes per second is a slip of the hand, and would tunnel
+    // through particles in one step.
     s.maxSpeed = 2.0 * std::max(world_.def().width, world_.def().height);
     return s;
 }
@@ -293,7 +294,14 @@ void App::handleEvent(const SDL_Event& e) {
 
 void App::handleKey(const SDL_KeyboardEvent& key) {
     const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
-    switch (key.keysym.sym) {
+    const SDL_Keycode sym = key.keysym.sym;
+    // A held key repeats only where repeating makes sense (pan, single step, spawn mass); a
+    // held Space or S must not flicker.
+    const bool repeatable = sym == SDLK_LEFT || sym == SDLK_RIGHT || sym == SDLK_UP ||
+                            sym == SDLK_DOWN || sym == SDLK_n || sym == SDLK_LEFTBRACKET ||
+                            sym == SDLK_RIGHTBRACKET;
+    if (key.repeat != 0 && !repeatable) return;
+    switch (sym) {
         case SDLK_ESCAPE:
             running_ = false;
             break;
