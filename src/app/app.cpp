@@ -56,6 +56,7 @@ App::App(const AppOptions& options)
     presets_ = presetScenes();
     const std::filesystem::path font = findAsset("fonts/DejaVuSansMono.ttf");  // before a window
     view_.arrowSeconds = arrowSecondsFor(world_);
+    spawn_.lengthScale = std::min(world_.def().width, world_.def().height) / 700.0;
     paused_ = options_.startPaused;
     view_.arrows = options_.arrows;
 
@@ -138,6 +139,7 @@ void App::setWorld(World world, std::string name) {
     world_ = std::move(world);
     sceneName_ = std::move(name);
     view_.arrowSeconds = arrowSecondsFor(world_);
+    spawn_.lengthScale = std::min(world_.def().width, world_.def().height) / 700.0;
     accumulator_ = 0.0;
     fit();
 }
@@ -281,8 +283,10 @@ void App::handleEvent(const SDL_Event& e) {
                 SDL_GetMouseState(&x, &y);
                 mouse_ = Vec2(x, y);
                 camera_.zoomAbout(mouse_, std::pow(kWheelZoomStep, notches));
-                logLine(fmt("[I] Zoom %.4f px/m about [%.0f, ", camera_.zoom(), mouse_.x()) +
-                        std::to_string(y) + "]");
+                char buf[96];
+                std::snprintf(buf, sizeof buf, "[I] Zoom %.4f px/m about [%d, %d]", camera_.zoom(),
+                              x, y);
+                logLine(buf);
                 afterCameraMove();
             }
             break;
@@ -381,7 +385,7 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
         case SDLK_LEFTBRACKET:
         case SDLK_RIGHTBRACKET: {
             spawn_.changeMass(key.keysym.sym == SDLK_LEFTBRACKET ? -1.0 : 1.0);
-            say(fmt("New particles: %.0f kg, radius %.1f m", spawn_.mass, spawn_.radius()),
+            say(fmt("New particles: %.0f kg, radius %.3g m", spawn_.mass, spawn_.radius()),
                 nullptr);
             break;
         }
@@ -418,12 +422,12 @@ void App::spawnRandom() {
     // The original: mass a random integer 3..20 kg, radius 2.5 m per kg, somewhere in the upper
     // part of the box, colour channels 100..255. Its velocity components were random integers
     // -5..5 pixels per frame at 60 frames per second, i.e. up to 300 m/s in its 700 m box; here
-    // they are uniform in -300..300 m/s, scaled with the box width for other boxes.
+    // they are uniform in -300..300 m/s. Lengths and speeds scale with the box for other boxes.
     std::uniform_int_distribution<int> massDist(3, 20), channel(100, 255);
-    const double mass = massDist(rng_), radius = 2.5 * mass;
+    const double mass = massDist(rng_), radius = 2.5 * mass * spawn_.lengthScale;
     std::uniform_real_distribution<double> x(radius, std::max(radius, d.width - radius));
     std::uniform_real_distribution<double> y(radius, std::max(radius, d.height / 2.0));
-    const double vmax = 300.0 * d.width / 700.0;
+    const double vmax = 300.0 * spawn_.lengthScale;
     std::uniform_real_distribution<double> v(-vmax, vmax);
     const Vec2 want(x(rng_), y(rng_));
     const auto spot = findFreeSpot(world_, want, radius);

@@ -28,8 +28,11 @@ struct SpawnSettings {
     static constexpr double kMinMass = 1.0;   ///< kg
     static constexpr double kMaxMass = 40.0;  ///< kg
     double mass = 10.0;                       ///< kg
-    /// The original's rule: radius = 2.5 metres per kilogram of mass.
-    [[nodiscard]] double radius() const { return 2.5 * mass; }
+    /// Lengths relative to the original's 700 m box: a scene's smaller box side / 700 m, so a
+    /// billiard table gets billiard-sized particles.
+    double lengthScale = 1.0;
+    /// The original's rule, radius = 2.5 metres per kilogram of mass, times lengthScale.
+    [[nodiscard]] double radius() const { return 2.5 * mass * lengthScale; }
     void changeMass(double delta);
 };
 

@@ -273,6 +273,14 @@ TEST(FindFreeSpot, ClampsIntoTheBox) {
     EXPECT_EQ(*s, Vec2(20, 20));
 }
 
+TEST(SpawnSettings, RadiusFollowsTheOriginalsRuleScaledWithTheBox) {
+    SpawnSettings s;
+    s.mass = 8.0;
+    EXPECT_DOUBLE_EQ(s.radius(), 20.0);  // 2.5 m per kg in the original's 700 m box
+    s.lengthScale = 2.0 / 700.0;         // a 2 m box
+    EXPECT_NEAR(s.radius(), 20.0 * 2.0 / 700.0, 1e-15);
+}
+
 TEST(SpawnSettings, MassStaysInItsRange) {
     SpawnSettings s;
     for (int k = 0; k < 100; ++k)
