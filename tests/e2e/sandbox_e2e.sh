@@ -9,7 +9,8 @@
 #   0. bad command lines                               -> a clear message and a non-zero exit
 #   1. grabs a particle and flings it downwards        -> logged release velocity points down,
 #                                                         and it moves down when stepped
-#   2. grabs another and presses Delete while holding   -> deletion logged, count drops
+#   2. grabs another, presses A twice and Delete while  -> both toggles and the deletion logged,
+#      holding                                             count drops
 #   3. drags on empty space up and to the right         -> a new particle, which moves up-right
 #   4. turns the wheel over the window                  -> zoom grows, the wall moves on screen
 #   5. presses S                                        -> label text appears above particles
@@ -98,9 +99,13 @@ export SDL_AUDIODRIVER=dummy
 LOG="$OUT/stdout.log"
 "$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" >"$LOG" 2>"$OUT/stderr.log" &
 APP_PID=$!
-WID=$(timeout 10 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
-    head -1) ||
-    fail "no window within 10 s"
+WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
+    head -1) || {
+    ps -o pid,stat,etime,wchan:30,args -p "$APP_PID" >&2 || true
+    for t in /proc/"$APP_PID"/task/*; do echo "thread $t: $(cat "$t/wchan" 2>/dev/null)" >&2; done
+    xdotool search --name "Particle Sandbox" >&2 || true
+    fail "no window within 20 s (display $DISPLAY)"
+}
 [[ -n "$WID" ]] || fail "no window"
 eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
 WX=$X
@@ -189,10 +194,15 @@ awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 100 && vy > 5 * (vx < 0 ? -vx :
 pass "grab and fling: $line"
 
 # --- 2. delete while holding: the 8 kg particle at (250, 260) m ----------------------------
-drag "$(sx 250)" "$(sy 260)" 3 3 3 "key --window $WID Delete sleep 0.2"
+# While holding, other keys still work: A twice (arrows on, then off again), then Delete.
+drag "$(sx 250)" "$(sy 260)" 3 3 3 \
+    "key --window $WID a sleep 0.1 key --window $WID a sleep 0.1 key --window $WID Delete sleep 0.2"
 wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
 wait_title "5 particles - PAUSED"
-pass "delete while holding: $(grep 'Deleted particle' "$LOG")"
+held=$(sed -n '/Grabbed particle at \[250.00, 260.00\]/,/Deleted particle/p' "$LOG")
+grep -q "Arrows on" <<<"$held" && grep -q "Arrows off" <<<"$held" ||
+    fail "keys pressed while holding were not handled: $held"
+pass "keys while holding (A, A) handled; delete while holding: $(grep 'Deleted particle' "$LOG")"
 
 # --- 3. launch: drag on empty space at (100, 620) m, up and to the right -----------------
 drag "$(sx 100)" "$(sy 620)" 10 -10 8
