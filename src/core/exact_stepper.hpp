@@ -94,6 +94,7 @@
 // Gravity is refused in this mode by World (flights would be parabolas, not lines).
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include <particle_sandbox/particle_arrays.hpp>
@@ -172,6 +173,7 @@ class ExactStepper {
     };
     static constexpr std::uint32_t kHeld = 1;    // kinematic: infinite mass
     static constexpr std::uint32_t kJammed = 2;  // passes through held particles (jam guard)
+    static constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
     struct Event {
         double time;
         std::uint32_t partner;       // pair: the other particle
@@ -198,7 +200,11 @@ class ExactStepper {
     [[nodiscard]] double bucketWidth() const;
     void advance(Body& b, double t) const;
     void scanCells(std::uint32_t i, double now, double ax, double ay, const std::uint32_t* cells,
-                   int cellCount, Event& best) const;
+                   int cellCount, Event& best);
+    void recordPlacedOverlaps();
+    [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
+        return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+    }
     void predictCollision(std::uint32_t i, double now);
     void predictCell(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
@@ -225,6 +231,9 @@ class ExactStepper {
     double maxOverlap_ = 0.0;
     EventStats stats_;
     std::vector<CollisionRecord>* log_ = nullptr;
+    // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
+    // storage indices (order_), with the contact distance they keep until they are found apart.
+    std::unordered_map<std::uint64_t, double> overlapContact_;
 
     // What the last step left in the world's arrays, to detect any change made between steps.
     ParticleArrays snapshot_;
