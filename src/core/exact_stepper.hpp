@@ -59,6 +59,10 @@
 // Rules for invalid states (Bannerman et al. 2014), so rounding never decides:
 //   - no event is scheduled before the current time (times of impact are durations >= 0);
 //   - an overlapping pair collides at once if it approaches and is left alone if it separates;
+//   - but a pair already overlapping at a rebuild was placed so (rounding leaves a few ulps at
+//     most): its contact distance is the distance it was placed at until a prediction finds it
+//     apart. The rule above alone would be a ratchet (every drift apart kept), squeezing the
+//     overlaps of a box too full for its discs into the others' gaps until the pile jams;
 //   - a disc past a wall collides with it at once if moving outward, else is left alone;
 //   - a collision whose pair turns out not to approach at its instant changes nothing.
 // Ties: events at the same instant are handled in key order (particle index, collision before
