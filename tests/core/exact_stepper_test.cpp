@@ -158,23 +158,7 @@ TEST(ExactMode, PerfectlyInelasticPairLeavesTogetherAndTheStepEnds) {
 }
 
 TEST(ExactMode, SameWorldSameStepsSameBits) {
-    const auto hash = [](const World& w) {
-        std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the raw state
-        const auto mix = [&](double v) {
-            std::uint64_t bits;
-            std::memcpy(&bits, &v, sizeof bits);
-            for (int k = 0; k < 8; ++k)
-                h = (h ^ ((bits >> (8 * k)) & 0xff)) * 1099511628211ull;
-        };
-        const ParticleArrays& p = w.particles();
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            mix(p.x[i]);
-            mix(p.y[i]);
-            mix(p.vx[i]);
-            mix(p.vy[i]);
-        }
-        return h;
-    };
+    const auto hash = [](const World& w) { return test::stateHash(w); };
     World a = exactGas(300, 50.0, 0.5, 1.0, 0.8, 17);
     World b = exactGas(300, 50.0, 0.5, 1.0, 0.8, 17);
     for (int k = 0; k < 50; ++k) {
