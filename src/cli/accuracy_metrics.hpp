@@ -40,8 +40,9 @@ struct RunTotals {
     double simTime = 0.0;      ///< seconds
     double wallSeconds = 0.0;  ///< time spent in World::step only
     std::uint64_t particles = 0;
-    std::uint64_t steps = 0;  ///< discrete (sub)steps, or exact frames
-    std::uint64_t collisions = 0;
+    std::uint64_t steps = 0;       ///< discrete (sub)steps, or exact frames
+    std::uint64_t collisions = 0;  ///< particle–particle
+    std::uint64_t wallCollisions = 0;
     std::uint64_t missed = 0;  ///< summed MoveCheck::missed (0 for exact)
     double maxOverlapOverRadius = 0.0;
     double kineticEnergyInitial = 0.0;  ///< joules
