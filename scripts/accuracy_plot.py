@@ -20,7 +20,11 @@ METRICS = [
      if r["_exact_collisions"] > 0 else float("nan")),
     ("max overlap / radius", lambda r: num(r["max_overlap_over_r"])),
     ("KE error (of KE(0))", lambda r: num(r["ke_error"])),
+    ("|pressure / exact - 1|", lambda r: abs(num(r["pressure_vs_exact"]) - 1.0)),
 ]
+# Chaotic scenes agree with exact only statistically: a dotted grey line marks 1/sqrt(count),
+# the relative noise of a count of independent events, for the count the measure rests on.
+NOISE = {0: "collisions", 4: "wall_collisions"}
 COLORS = {"discrete": "#d62728", "substep": "#1f77b4", "exact": "#2ca02c"}
 PW, PH = 230, 170          # panel size
 ML, MT, MR, MB = 55, 22, 12, 32  # panel margins
@@ -53,6 +57,7 @@ def main(argv):
         if r["scene"] not in scenes:
             scenes.append(r["scene"])
     exact_coll = {r["scene"]: num(r["collisions"]) for r in rows if r["mode"] == "exact"}
+    exact_rows = {r["scene"]: r for r in rows if r["mode"] == "exact"}
     for r in rows:
         r["_exact_collisions"] = exact_coll.get(r["scene"], 0.0)
         r["_cost"] = num(r["wall_s_per_sim_s"])
@@ -70,8 +75,8 @@ def main(argv):
         out.append(f'<circle cx="{lx}" cy="36" r="4" fill="{color}"/>'
                    f'<text x="{lx + 8}" y="40">{mode}</text>')
         lx += 90
-    out.append(f'<text x="{lx}" y="40">hollow: zero or below {FLOOR:g} (drawn at the floor)'
-               '</text>')
+    out.append(f'<text x="{lx}" y="40">hollow: zero or below {FLOOR:g} (drawn at the floor); '
+               'grey dotted: 1/sqrt(exact count), the statistical noise of a count</text>')
     for mi, (title, _) in enumerate(METRICS):
         out.append(f'<text x="{LEFT + mi * PW + ML + (PW - ML - MR) / 2}" y="{TOP - 4}" '
                    f'text-anchor="middle" font-size="11">{title}</text>')
@@ -97,6 +102,12 @@ def main(argv):
 
             out.append(f'<rect x="{x0}" y="{y0}" width="{w}" height="{h}" fill="none" '
                        'stroke="#999"/>')
+            if mi in NOISE and scene in exact_rows:
+                count = num(exact_rows[scene][NOISE[mi]])
+                if count > 0 and 10.0 ** ylo <= count ** -0.5 <= 10.0 ** yhi:
+                    y = py(count ** -0.5)
+                    out.append(f'<line x1="{x0}" y1="{y:.1f}" x2="{x0 + w}" y2="{y:.1f}" '
+                               'stroke="#888" stroke-dasharray="1,2"/>')
             xstep = max(1, (xhi - xlo + 3) // 4)
             for e in range(xlo, xhi + 1, xstep):
                 x = px(10.0 ** e)

@@ -20,7 +20,7 @@ std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root) {
         {"dense-gas", bench / "dense-gas.json", 4.0},
         {"newtons-cradle", assets / "02-newtons-cradle.json", 2.0},
         {"bullet-into-crowd", assets / "06-bullet-into-crowd.json", 0.4},
-        {"mass-ratio-pair", bench / "mass-ratio-pair.json", 5.0},
+        {"mass-ratio-pair", bench / "mass-ratio-pair.json", 20.0},
         {"inelastic-gas", bench / "inelastic-gas.json", 4.0},
     };
 }
@@ -99,9 +99,14 @@ std::vector<AccuracyRow> runSweep(const std::vector<AccuracyScene>& scenes, cons
         const double duration = as.duration * plan.durationScale;
         auto measure = [&](StepMode mode, double dt, int k) {
             RunTotals t = runMeasured(scene, mode, dt, k, duration);
-            for (int rep = 1; rep < plan.repeats; ++rep) {
-                t.wallSeconds = std::min(
-                    t.wallSeconds, runMeasured(scene, mode, dt, k, duration, false).wallSeconds);
+            // Runs of a millisecond are at the mercy of one preemption: repeat those until
+            // 20 ms have been timed (at most 50 runs), and keep the fastest.
+            double timed = t.wallSeconds;
+            for (int rep = 1; rep < plan.repeats || (plan.repeats > 1 && timed < 0.02 && rep < 50);
+                 ++rep) {
+                const double w = runMeasured(scene, mode, dt, k, duration, false).wallSeconds;
+                t.wallSeconds = std::min(t.wallSeconds, w);
+                timed += w;
             }
             return t;
         };
@@ -153,9 +158,9 @@ std::string accuracyCsv(const std::vector<AccuracyRow>& rows) {
         o << r.scene << ',' << toString(r.mode) << ',' << full(r.dt) << ',' << r.substeps << ','
           << t.particles << ',' << t.steps << ',' << full(t.simTime) << ',' << full(t.wallSeconds)
           << ',' << full(e.wallSecondsPerSimSecond) << ',' << full(e.nsPerParticleStep) << ','
-          << t.collisions << ',' << full(e.collisionRatio) << ',' << e.missed << ','
-          << full(e.maxOverlapOverRadius) << ',' << full(e.kineticEnergyError) << ','
-          << full(wallPressure(t)) << ',' << full(e.pressureRatio) << '\n';
+          << t.collisions << ',' << t.wallCollisions << ',' << full(e.collisionRatio) << ','
+          << e.missed << ',' << full(e.maxOverlapOverRadius) << ',' << full(e.kineticEnergyError)
+          << ',' << full(wallPressure(t)) << ',' << full(e.pressureRatio) << '\n';
     }
     return o.str();
 }
