@@ -100,9 +100,9 @@ std::vector<AccuracyRow> runSweep(const std::vector<AccuracyScene>& scenes, cons
         auto measure = [&](StepMode mode, double dt, int k) {
             RunTotals t = runMeasured(scene, mode, dt, k, duration);
             // Runs of a millisecond are at the mercy of one preemption: repeat those until
-            // 20 ms have been timed (at most 50 runs), and keep the fastest.
+            // 0.1 s has been timed (at most 50 runs), and keep the fastest.
             double timed = t.wallSeconds;
-            for (int rep = 1; rep < plan.repeats || (plan.repeats > 1 && timed < 0.02 && rep < 50);
+            for (int rep = 1; rep < plan.repeats || (plan.repeats > 1 && timed < 0.1 && rep < 50);
                  ++rep) {
                 const double w = runMeasured(scene, mode, dt, k, duration, false).wallSeconds;
                 t.wallSeconds = std::min(t.wallSeconds, w);

@@ -37,7 +37,7 @@ struct SweepPlan {
     std::vector<int> substeps;      ///< substep k at the frame dt
     double durationScale = 1.0;     ///< scales every scene's duration (a quick smoke run)
     /// Each run is timed this many times and the fastest kept (the machine is shared; the
-    /// fastest is the least disturbed), runs shorter than that more often, until 20 ms of
+    /// fastest is the least disturbed), short runs more often, until 0.1 s of
     /// them were timed (at most 50). Only the first run checks the moves.
     int repeats = 1;
 };
