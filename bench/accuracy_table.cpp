@@ -1,5 +1,5 @@
 // accuracy-table: the work–precision sweep of docs/accuracy.md. Runs the standard scenes in
-// every mode over a range of step sizes and writes accuracy.csv and accuracy.md to the output
+// every mode over a range of step sizes and writes accuracy.csv and accuracy-table.md to the output
 // directory; scripts/accuracy_plot.py draws the SVG from the CSV.
 //
 //   accuracy-table [--quick] [--out DIR] [--root DIR] [--scene NAME]...
@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
                              r.substeps, r.errors.wallSecondsPerSimSecond);
             });
         if (!writeFile(out / "accuracy.csv", accuracyCsv(rows))) return 1;
-        if (!writeFile(out / "accuracy.md", accuracyMarkdown(rows))) return 1;
+        if (!writeFile(out / "accuracy-table.md", accuracyMarkdown(rows))) return 1;
     } catch (const std::exception& e) {
         std::cerr << "accuracy-table: error: " << e.what() << "\n";
         return 1;

@@ -80,6 +80,7 @@ ErrorMeasures compareToExact(const RunTotals& run, const RunTotals& exact) {
     const double pe = wallPressure(exact);
     e.pressureRatio = pe > 0.0 ? wallPressure(run) / pe : nan;
     e.wallSecondsPerSimSecond = run.simTime > 0.0 ? run.wallSeconds / run.simTime : nan;
+    e.cpuSecondsPerSimSecond = run.simTime > 0.0 ? run.cpuSeconds / run.simTime : nan;
     const double work = static_cast<double>(run.particles) * static_cast<double>(run.steps);
     e.nsPerParticleStep = work > 0.0 ? run.wallSeconds * 1e9 / work : nan;
     return e;

@@ -39,6 +39,7 @@ struct MoveCheck {
 struct RunTotals {
     double simTime = 0.0;      ///< seconds
     double wallSeconds = 0.0;  ///< time spent in World::step only
+    double cpuSeconds = 0.0;   ///< process CPU time in World::step only
     std::uint64_t particles = 0;
     std::uint64_t steps = 0;       ///< discrete (sub)steps, or exact frames
     std::uint64_t collisions = 0;  ///< particle–particle
@@ -65,7 +66,8 @@ struct ErrorMeasures {
     double kineticEnergyError = 0.0;
     double pressureRatio = 0.0;  ///< wall pressure / exact wall pressure (NaN if exact's is 0)
     double wallSecondsPerSimSecond = 0.0;
-    double nsPerParticleStep = 0.0;  ///< wall ns / (particles × steps)
+    double cpuSecondsPerSimSecond = 0.0;  ///< the same in CPU time: less sensitive to load
+    double nsPerParticleStep = 0.0;       ///< wall ns / (particles × steps)
 };
 
 [[nodiscard]] ErrorMeasures compareToExact(const RunTotals& run, const RunTotals& exact);

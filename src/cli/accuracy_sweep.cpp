@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <sstream>
 
 #include <particle_sandbox/diagnostics.hpp>
@@ -62,6 +63,7 @@ RunTotals runMeasured(const Scene& scene, StepMode mode, double dt, int substeps
     const std::uint64_t frames = stepsFor(duration, dt);
     using Clock = std::chrono::steady_clock;
     Clock::duration spent{};
+    std::clock_t cpu = 0;
     for (std::uint64_t f = 0; f < frames; ++f) {
         for (int sub = 0; sub < k; ++sub) {
             if (!exact && checkMoves) {
@@ -69,12 +71,15 @@ RunTotals runMeasured(const Scene& scene, StepMode mode, double dt, int substeps
                 r.missed += c.missed;
                 r.maxOverlapOverRadius = std::max(r.maxOverlapOverRadius, c.maxOverlapOverRadius);
             }
+            const std::clock_t c0 = std::clock();
             const auto t0 = Clock::now();
             world.step(h);
             spent += Clock::now() - t0;
+            cpu += std::clock() - c0;
         }
     }
     r.wallSeconds = std::chrono::duration<double>(spent).count();
+    r.cpuSeconds = static_cast<double>(cpu) / CLOCKS_PER_SEC;
     const StepCounters& c = world.counters();
     r.simTime = world.time();
     r.steps = exact ? frames : c.steps;
@@ -104,9 +109,10 @@ std::vector<AccuracyRow> runSweep(const std::vector<AccuracyScene>& scenes, cons
             double timed = t.wallSeconds;
             for (int rep = 1; rep < plan.repeats || (plan.repeats > 1 && timed < 0.1 && rep < 50);
                  ++rep) {
-                const double w = runMeasured(scene, mode, dt, k, duration, false).wallSeconds;
-                t.wallSeconds = std::min(t.wallSeconds, w);
-                timed += w;
+                const RunTotals again = runMeasured(scene, mode, dt, k, duration, false);
+                t.wallSeconds = std::min(t.wallSeconds, again.wallSeconds);
+                t.cpuSeconds = std::min(t.cpuSeconds, again.cpuSeconds);
+                timed += again.wallSeconds;
             }
             return t;
         };
@@ -148,7 +154,7 @@ std::string full(double v) {
 
 std::string accuracyCsv(const std::vector<AccuracyRow>& rows) {
     std::ostringstream o;
-    o << "scene,mode,dt_s,substeps,particles,steps,sim_s,wall_s,wall_s_per_sim_s,"
+    o << "scene,mode,dt_s,substeps,particles,steps,sim_s,wall_s,wall_s_per_sim_s,cpu_s_per_sim_s,"
          "ns_per_particle_step,collisions,wall_collisions,collisions_vs_exact,missed,max_overlap_"
          "over_r,"
          "ke_error,wall_pressure_n_per_m,pressure_vs_exact\n";
@@ -157,26 +163,29 @@ std::string accuracyCsv(const std::vector<AccuracyRow>& rows) {
         const ErrorMeasures& e = r.errors;
         o << r.scene << ',' << toString(r.mode) << ',' << full(r.dt) << ',' << r.substeps << ','
           << t.particles << ',' << t.steps << ',' << full(t.simTime) << ',' << full(t.wallSeconds)
-          << ',' << full(e.wallSecondsPerSimSecond) << ',' << full(e.nsPerParticleStep) << ','
-          << t.collisions << ',' << t.wallCollisions << ',' << full(e.collisionRatio) << ','
-          << e.missed << ',' << full(e.maxOverlapOverRadius) << ',' << full(e.kineticEnergyError)
-          << ',' << full(wallPressure(t)) << ',' << full(e.pressureRatio) << '\n';
+          << ',' << full(e.wallSecondsPerSimSecond) << ',' << full(e.cpuSecondsPerSimSecond) << ','
+          << full(e.nsPerParticleStep) << ',' << t.collisions << ',' << t.wallCollisions << ','
+          << full(e.collisionRatio) << ',' << e.missed << ',' << full(e.maxOverlapOverRadius) << ','
+          << full(e.kineticEnergyError) << ',' << full(wallPressure(t)) << ','
+          << full(e.pressureRatio) << '\n';
     }
     return o.str();
 }
 
 std::string accuracyMarkdown(const std::vector<AccuracyRow>& rows) {
     std::ostringstream o;
-    o << "| scene | mode | dt (ms) | k | wall s / sim s | ns / particle-step | collisions / exact"
+    o << "| scene | mode | dt (ms) | k | wall s / sim s | CPU s / sim s | ns / particle-step | "
+         "collisions / exact"
          " | missed | max overlap / r | KE error | pressure / exact |\n"
-         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const AccuracyRow& r : rows) {
         const ErrorMeasures& e = r.errors;
         o << "| " << r.scene << " | " << toString(r.mode) << " | " << num(r.dt * 1e3, "—") << " | "
           << r.substeps << " | " << num(e.wallSecondsPerSimSecond, "—") << " | "
-          << num(e.nsPerParticleStep, "—") << " | " << num(e.collisionRatio, "—") << " | "
-          << e.missed << " | " << num(e.maxOverlapOverRadius, "—") << " | "
-          << num(e.kineticEnergyError, "—") << " | " << num(e.pressureRatio, "—") << " |\n";
+          << num(e.cpuSecondsPerSimSecond, "—") << " | " << num(e.nsPerParticleStep, "—") << " | "
+          << num(e.collisionRatio, "—") << " | " << e.missed << " | "
+          << num(e.maxOverlapOverRadius, "—") << " | " << num(e.kineticEnergyError, "—") << " | "
+          << num(e.pressureRatio, "—") << " |\n";
     }
     return o.str();
 }
