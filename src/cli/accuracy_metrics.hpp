@@ -39,7 +39,7 @@ struct MoveCheck {
 struct RunTotals {
     double simTime = 0.0;      ///< seconds
     double wallSeconds = 0.0;  ///< time spent in World::step only
-    double cpuSeconds = 0.0;   ///< process CPU time in World::step only
+    double cpuSeconds = 0.0;   ///< process CPU time of the stepping (NaN: not measured)
     std::uint64_t particles = 0;
     std::uint64_t steps = 0;       ///< discrete (sub)steps, or exact frames
     std::uint64_t collisions = 0;  ///< particle–particle
