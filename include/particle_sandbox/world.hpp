@@ -62,7 +62,8 @@ class World {
     [[nodiscard]] Particle get(ParticleId id) const;
     /// All live ids, in storage order.
     [[nodiscard]] std::vector<ParticleId> ids() const { return p_.id; }
-    /// Storage index of a live particle (valid until the next add/remove), or nullopt.
+    /// Storage index of a live particle (valid until the next add, remove or step: large worlds
+    /// reorder their storage during steps), or nullopt.
     [[nodiscard]] std::optional<std::size_t> indexOf(ParticleId id) const;
 
     void setPosition(ParticleId id, const Vec2& position);
@@ -75,7 +76,8 @@ class World {
     void setKinematic(ParticleId id, bool kinematic);
     [[nodiscard]] bool isKinematic(ParticleId id) const;
 
-    /// The topmost particle (the last added among those) whose disc contains `point`.
+    /// The topmost particle (the one drawn last: highest storage index) whose disc contains
+    /// `point`. Until a world reaches 4096 particles storage order is insertion order.
     [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
 
     [[nodiscard]] const ParticleArrays& particles() const { return p_; }
@@ -89,6 +91,18 @@ class World {
     void step() { step(solver_.dt); }
     /// Simulated seconds since the world was made.
     [[nodiscard]] double time() const { return time_; }
+
+    /// Threads the step may use: n >= 1, or 0 for one per hardware thread (the default).
+    /// Results are bit-identical for every thread count.
+    void setThreads(int n);
+    [[nodiscard]] int threads() const { return threads_; }
+    /// The broadphase the last step used (`auto` resolved); before the first step, the one the
+    /// next step would use.
+    [[nodiscard]] BroadPhaseKind broadPhaseInUse() const;
+    /// Reserves storage for `n` particles, so that adding up to `n` allocates nothing.
+    void reserve(std::size_t n);
+    /// Bytes held by the particle arrays, the id table and the step's scratch (capacities).
+    [[nodiscard]] std::size_t memoryBytes() const;
 
     [[nodiscard]] const StepProfile& profile() const { return profile_; }
     [[nodiscard]] const StepCounters& counters() const { return counters_; }
@@ -105,6 +119,9 @@ class World {
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;
     std::unique_ptr<exact::ExactStepper> exact_;  // event state of the Exact mode, made on use
+    int threads_ = 1;
+    unsigned stepsUntilReorder_ = 0;  ///< state, not scratch: it decides future storage order
+    std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
     StepProfile profile_;
     StepCounters counters_;
