@@ -28,11 +28,11 @@ std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root) {
 }
 
 SweepPlan fullPlan() {
-    return {{4.0, 2.0, 1.0, 0.5, 0.25, 0.125, 0.0625}, {2, 4, 8, 16, 32}, 1.0};
+    return {{4.0, 2.0, 1.0, 0.5, 0.25, 0.125, 0.0625}, {2, 4, 8, 16, 32}, 1.0, 3};
 }
 
 SweepPlan quickPlan() {
-    return {{1.0, 0.5}, {2}, 0.05};
+    return {{1.0, 0.5}, {2}, 0.05, 1};
 }
 
 namespace {
