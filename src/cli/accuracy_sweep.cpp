@@ -22,6 +22,7 @@ std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root) {
         {"dense-gas", bench / "dense-gas.json", 4.0},
         {"newtons-cradle", assets / "02-newtons-cradle.json", 2.0},
         {"bullet-into-crowd", assets / "06-bullet-into-crowd.json", 0.4},
+        {"bullet-through-row", bench / "bullet-through-row.json", 0.2},
         {"mass-ratio-pair", bench / "mass-ratio-pair.json", 20.0},
         {"inelastic-gas", bench / "inelastic-gas.json", 4.0},
     };
