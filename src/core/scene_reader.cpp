@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -32,7 +33,6 @@ using json = nlohmann::json;
 using Keys = std::initializer_list<std::string_view>;
 
 constexpr int kVersion = 1;
-constexpr std::int64_t kMaxSubsteps = 100'000;
 
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
@@ -140,6 +140,16 @@ class Reader {
     double positive(const json& j, const std::string& path) const {
         const double v = number(j, path);
         if (!(v > 0.0)) fail(path, "must be > 0 (got " + num(v) + ")");
+        return v;
+    }
+
+    /// A mass: positive and at least the smallest normal double, so that World can use 1/m.
+    double mass(const json& j, const std::string& path) const {
+        const double v = positive(j, path);
+        if (v < std::numeric_limits<double>::min()) {
+            fail(path, "must be at least " + num(std::numeric_limits<double>::min()) +
+                           " (got " + num(v) + ")");
+        }
         return v;
     }
 
@@ -259,7 +269,7 @@ void readSolver(const Reader& r, const json& j, SolverSettings& s) {
     }
     if (const json* v = Reader::find(j, "dt")) s.dt = r.positive(*v, "solver.dt");
     if (const json* v = Reader::find(j, "substeps")) {
-        s.substeps = static_cast<int>(r.integer(*v, "solver.substeps", 1, kMaxSubsteps));
+        s.substeps = static_cast<int>(r.integer(*v, "solver.substeps", 1, psb::kMaxSubsteps));
     }
     if (const json* v = Reader::find(j, "broadphase")) {
         s.broadphase = readName(r, *v, "solver.broadphase", "broadphase", &parseBroadPhase,
@@ -297,7 +307,7 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
                   r.number(r.require(j, path, "y"), member(path, "y"))};
     if (const json* v = Reader::find(j, "vx")) d.velocity.x() = r.number(*v, member(path, "vx"));
     if (const json* v = Reader::find(j, "vy")) d.velocity.y() = r.number(*v, member(path, "vy"));
-    d.mass = r.positive(r.require(j, path, "mass"), member(path, "mass"));
+    d.mass = r.mass(r.require(j, path, "mass"), member(path, "mass"));
     d.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
     if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
     return d;
@@ -311,7 +321,7 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
         {"count", "packing", "radius", "mass", "region", "temperature", "speed", "color", "seed"});
     detail::GenerateSpec spec;
     spec.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
-    if (const json* v = Reader::find(j, "mass")) spec.mass = r.positive(*v, member(path, "mass"));
+    if (const json* v = Reader::find(j, "mass")) spec.mass = r.mass(*v, member(path, "mass"));
 
     spec.x0 = 0.0;
     spec.y0 = 0.0;

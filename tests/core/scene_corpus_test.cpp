@@ -77,6 +77,8 @@ const std::map<std::string, std::string> kExpected = {
      R"(line 3, column 22 (world.width): number overflow parsing '1e999')"},
     {"particle_mass_negative.json",
      R"(particles[3].mass: must be > 0 (got -1))"},
+    {"particle_mass_subnormal.json",
+     R"(particles[1].mass: must be at least 2.2250738585072014e-308 (got 1e-320))"},
     {"particle_missing_mass.json",
      R"(particles[1].mass: required key is missing)"},
     {"particle_near_key.json",
