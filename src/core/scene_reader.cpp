@@ -147,8 +147,8 @@ class Reader {
     double mass(const json& j, const std::string& path) const {
         const double v = positive(j, path);
         if (v < std::numeric_limits<double>::min()) {
-            fail(path, "must be at least " + num(std::numeric_limits<double>::min()) +
-                           " (got " + num(v) + ")");
+            fail(path, "must be at least " + num(std::numeric_limits<double>::min()) + " (got " +
+                           num(v) + ")");
         }
         return v;
     }

@@ -47,8 +47,8 @@ inline void requirePositive(double v, const char* where, const char* what) {
 inline void requireMass(double v, const char* where, const char* what) {
     requirePositive(v, where, what);
     if (v < std::numeric_limits<double>::min()) {
-        fail(where, what, "must be at least 2.2250738585072014e-308 so that its inverse is finite " +
-                              got(v));
+        fail(where, what,
+             "must be at least 2.2250738585072014e-308 so that its inverse is finite " + got(v));
     }
 }
 

@@ -4,10 +4,10 @@
 //
 // A real full disk needs a small file system, and making one needs mount(2). Instead each case
 // runs saveScene in a child process that has installed a seccomp filter making exactly one
-// system call fail with the chosen errno on every descriptor but the standard ones; the kernel
-// then returns that error to the real code path, as a full disk would. This works as root and
-// in containers (seccomp needs no privilege once no_new_privs is set). The child reports the
-// SaveError message through shared memory, so it makes no system call after the save.
+// system call fail with the chosen errno (on the temporary file's descriptor, or on any path);
+// the kernel then returns that error to the real code path, as a full disk would. This works as
+// root and in containers (seccomp needs no privilege once no_new_privs is set). The child reports
+// the SaveError message through shared memory, so it makes no system call after the save.
 
 #include <gtest/gtest.h>
 
@@ -68,9 +68,9 @@ std::string readFile(const fs::path& p) {
 #ifdef PSB_HAVE_SECCOMP
 
 /// Installs a filter under which the listed system calls fail with `err` when their first
-/// argument (a descriptor, or a directory descriptor for renameat) is above 2 or is AT_FDCWD;
+/// argument equals `fd`, or, with fd < 0, when it is above 2 (a path pointer, AT_FDCWD);
 /// everything else is allowed. Returns false if the kernel refuses the filter.
-bool failSyscalls(std::initializer_list<long> calls, int err) {
+bool failSyscalls(std::initializer_list<long> calls, int err, int fd) {
     std::vector<sock_filter> f;
     auto stmt = [&](std::uint16_t code, std::uint32_t k) { f.push_back(BPF_STMT(code, k)); };
     auto jump = [&](std::uint16_t code, std::uint32_t k, std::uint8_t jt, std::uint8_t jf) {
@@ -84,7 +84,11 @@ bool failSyscalls(std::initializer_list<long> calls, int err) {
         // Matching call: go on to the argument test; else try the next call.
         jump(BPF_JMP | BPF_JEQ | BPF_K, static_cast<std::uint32_t>(nr), 0, 4);
         stmt(BPF_LD | BPF_W | BPF_ABS, offsetof(seccomp_data, args[0]));  // low 32 bits
-        jump(BPF_JMP | BPF_JGT | BPF_K, 2, 1, 0);  // unsigned: AT_FDCWD (-100) is above 2 too
+        if (fd >= 0) {
+            jump(BPF_JMP | BPF_JEQ | BPF_K, static_cast<std::uint32_t>(fd), 1, 0);
+        } else {
+            jump(BPF_JMP | BPF_JGT | BPF_K, 2, 1, 0);  // unsigned: AT_FDCWD (-100) is above 2
+        }
         stmt(BPF_RET | BPF_K, SECCOMP_RET_ALLOW);
         stmt(BPF_RET | BPF_K, SECCOMP_RET_ERRNO | (static_cast<std::uint32_t>(err) & 0xffff));
     }
@@ -101,8 +105,14 @@ struct Outcome {
     std::string message;
 };
 
+/// Which descriptor a call's first argument must be for the fault to hit.
+enum class Target {
+    TemporaryFile,  ///< the descriptor the save will open next (write, fsync, close)
+    AnyPath,        ///< calls that take a path or AT_FDCWD first (open, rename)
+};
+
 Outcome saveUnderFault(const Scene& scene, const fs::path& file, std::initializer_list<long> calls,
-                       int err) {
+                       int err, Target target) {
     struct Shared {
         int state;  // 0 nothing, 1 no filter, 2 saved, 3 SaveError
         char message[1024];
@@ -113,7 +123,15 @@ Outcome saveUnderFault(const Scene& scene, const fs::path& file, std::initialize
     auto* shared = new (mem) Shared{};
     const pid_t pid = ::fork();
     if (pid == 0) {
-        if (!failSyscalls(calls, err)) {
+        // The save's temporary file gets the lowest free descriptor. Hitting only that one
+        // keeps the sanitizers' own pipes and files working (ASan probes memory by writing it
+        // to a pipe, and stops if that write fails with anything but EFAULT).
+        int fd = -1;
+        if (target == Target::TemporaryFile) {
+            fd = ::dup(0);
+            ::close(fd);
+        }
+        if (!failSyscalls(calls, err, fd)) {
             shared->state = 1;
             ::_exit(0);
         }
@@ -146,9 +164,10 @@ class SceneSaveFault : public testing::Test {
         next_.name = "must not be written";
     }
 
-    /// Saves under the fault and checks the outcome; returns the message.
-    void expectFailure(std::initializer_list<long> calls, int err, const std::string& why) {
-        const Outcome o = saveUnderFault(next_, file_, calls, err);
+    /// Saves under the fault and checks the message, the old file and the directory.
+    void expectFailure(std::initializer_list<long> calls, int err, const std::string& why,
+                       Target target = Target::TemporaryFile) {
+        const Outcome o = saveUnderFault(next_, file_, calls, err, target);
         if (!o.filterInstalled) GTEST_SKIP() << "the kernel refused a seccomp filter";
         ASSERT_TRUE(o.threw) << "the save succeeded although it could not";
         EXPECT_EQ(o.message, "cannot save " + file_.string() + ": " + why);
@@ -182,14 +201,15 @@ TEST_F(SceneSaveFault, AnErrorDeferredToCloseLeavesTheOldFile) {
 
 TEST_F(SceneSaveFault, ARenameThatFailsLeavesTheOldFileAndRemovesTheTemporary) {
     expectFailure({SYS_rename, SYS_renameat, SYS_renameat2}, ENOSPC,
-                  "rename failed (No space left on device)");
+                  "rename failed (No space left on device)", Target::AnyPath);
 }
 
 TEST_F(SceneSaveFault, AFullDirectoryThatTakesNoNewFileIsReported) {
     // Creating the temporary needs a directory entry, which a full disk may refuse.
-    expectFailure({SYS_open, SYS_openat}, ENOSPC,
-                  "cannot create a temporary file in " + dir_.path().string() +
-                      " (No space left on device)");
+    expectFailure(
+        {SYS_open, SYS_openat}, ENOSPC,
+        "cannot create a temporary file in " + dir_.path().string() + " (No space left on device)",
+        Target::AnyPath);
 }
 
 #else

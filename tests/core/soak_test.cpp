@@ -94,11 +94,11 @@ std::string soakName(const testing::TestParamInfo<SoakMode>& info) {
 }
 
 // One line per step mode; the broadphase is the one the core picks for the preset.
-INSTANTIATE_TEST_SUITE_P(
-    Modes, Soak,
-    testing::Values(SoakMode{"discrete", {.mode = StepMode::Discrete}},
-                    SoakMode{"substep", {.mode = StepMode::Substep, .substeps = 4}}),
-    soakName);
+INSTANTIATE_TEST_SUITE_P(Modes, Soak,
+                         testing::Values(SoakMode{"discrete", {.mode = StepMode::Discrete}},
+                                         SoakMode{"substep",
+                                                  {.mode = StepMode::Substep, .substeps = 4}}),
+                         soakName);
 
 }  // namespace
 }  // namespace psb
