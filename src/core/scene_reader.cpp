@@ -362,8 +362,13 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
         countPath = member(path, "packing");
         const double phi = r.inRange(*packing, countPath, 0.0, 1.0);
         const double area = (spec.x1 - spec.x0) * (spec.y1 - spec.y0);
-        const double n = std::floor(phi * area / (std::numbers::pi * spec.radius * spec.radius));
-        if (n > static_cast<double>(kMaxSceneParticles)) {
+        // A radius below ~1e-154 squares to 0, and so can a tiny region's area: 0 / 0 must
+        // not give NaN, which the integer cast below would turn into undefined behaviour.
+        const double n =
+            (phi == 0.0 || area == 0.0)
+                ? 0.0
+                : std::floor(phi * area / (std::numbers::pi * spec.radius * spec.radius));
+        if (!(n <= static_cast<double>(kMaxSceneParticles))) {
             r.fail(countPath, "gives " + num(n) + " particles, more than the limit of " +
                                   std::to_string(kMaxSceneParticles));
         }
@@ -384,7 +389,18 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
     const json* temperature = Reader::find(j, "temperature");
     const json* speed = Reader::find(j, "speed");
     if (temperature && speed) r.fail(path, "give at most one of 'temperature' and 'speed'");
-    if (temperature) spec.temperature = r.nonNegative(*temperature, member(path, "temperature"));
+    if (temperature) {
+        const std::string tp = member(path, "temperature");
+        spec.temperature = r.nonNegative(*temperature, tp);
+        // Each velocity component is sqrt(kT/m) times a Box-Muller normal, which never exceeds
+        // sqrt(-2 ln 2^-53) < 9 in size: a thermal speed of at most kMaxSceneMagnitude / 10
+        // keeps every velocity within the limit (a huge kT over a tiny mass gave infinity).
+        const double thermal = std::sqrt(*spec.temperature) / std::sqrt(spec.mass);
+        if (!(thermal <= kMaxSceneMagnitude / 10.0)) {
+            r.fail(tp, "gives a thermal speed sqrt(kT/m) of " + num(thermal) +
+                           " m/s, above the limit of " + num(kMaxSceneMagnitude / 10.0) + " m/s");
+        }
+    }
     if (speed) spec.speed = r.nonNegative(*speed, member(path, "speed"));
     if (const json* v = Reader::find(j, "color")) spec.color = r.color(*v, member(path, "color"));
     if (const json* v = Reader::find(j, "seed")) {

@@ -57,6 +57,8 @@ const std::map<std::string, std::string> kExpected = {
      R"(generate.region: reaches outside the 700 x 700 m box)"},
     {"generate_seed_negative.json",
      R"(generate.seed: must be in [0, 9223372036854775807] (got -1))"},
+    {"generate_temperature_too_hot.json",
+     R"(generate.temperature: gives a thermal speed sqrt(kT/m) of 3.162277660168379e+157 m/s, above the limit of 1e+14 m/s)"},
     {"generate_temperature_and_speed.json",
      R"(generate: give at most one of 'temperature' and 'speed')"},
     {"gravity_not_array.json",

@@ -26,7 +26,7 @@ namespace psb {
 namespace {
 
 constexpr std::uint64_t kParticleSteps = 10'000'000;
-constexpr std::size_t kStride = 4;  // 1000 of the preset's 4000 particles
+constexpr std::size_t kStride = 2;  // 2000 of the preset's 4000 particles
 
 struct SoakMode {
     const char* name;
