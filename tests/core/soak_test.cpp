@@ -7,8 +7,9 @@
 // on); the particle count constant; kinetic energy never above its initial value by more than
 // 1e-9 relative (e = 1, no gravity).
 //
-// The preset holds 4000 particles; every k-th of them is kept so that the all-pairs broadphase
-// (O(N²) per step) finishes in minutes: N = 4000 / kStride particles for 10^7 / N steps.
+// The preset holds 4000 particles; every kStride-th of them is kept so that the all-pairs
+// broadphase (O(N²) per step) finishes in about a minute: N = 4000 / kStride particles for
+// 10^7 / N steps. With a grid broadphase, kStride = 1 runs the preset as it is.
 // Labelled `soak` (tests/CMakeLists.txt); docs/testing.md has the timings.
 
 #include <gtest/gtest.h>
