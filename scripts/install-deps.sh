@@ -10,6 +10,7 @@ packages=(
   libeigen3-dev libsdl2-dev libsdl2-ttf-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
+  libtbb-dev libbox2d-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(xvfb xauth xdotool imagemagick x11-utils)

@@ -15,7 +15,9 @@ struct StepProfile {
     double resolve = 0.0;
     double separate = 0.0;
     double walls = 0.0;
+    double reorder = 0.0;  ///< sorting storage by grid cell (every few steps in large worlds)
     double total = 0.0;
+    std::uint64_t pairs = 0;  ///< overlapping pairs the broadphase found (summed over substeps)
 };
 
 /// Running totals since the world was made (or since resetCounters).
@@ -25,6 +27,7 @@ struct StepCounters {
     std::uint64_t wallCollisions = 0;  ///< wall rebounds (outward-moving particle turned inward)
     double wallImpulse = 0.0;          ///< sum of |normal impulse| delivered by walls, kg·m/s
     double maxOverlap = 0.0;           ///< deepest pair overlap found by detection, metres
+    std::uint64_t events = 0;          ///< exact mode: events processed (collisions, walls, cells)
 };
 
 }  // namespace psb

@@ -19,6 +19,9 @@
 namespace psb {
 
 struct StepContext;
+namespace exact {
+class ExactStepper;
+}
 
 /// Owns the particles and advances them in time.
 ///
@@ -42,11 +45,12 @@ class World {
     /// (a particle wider than the box sits at its centre).
     void setBox(double width, double height);
     void setWalls(bool enabled);
+    /// Throws InvalidArgument for a non-zero gravity while the solver's mode is Exact.
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
-    /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], or
-    /// a mode or broadphase this build does not have.
+    /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], a
+    /// mode or broadphase this build does not have, or mode Exact while the world has gravity.
     void setSolver(const SolverSettings& solver);
 
     // --- particles -------------------------------------------------------------------------
@@ -63,7 +67,8 @@ class World {
     [[nodiscard]] Particle get(ParticleId id) const;
     /// All live ids, in storage order.
     [[nodiscard]] std::vector<ParticleId> ids() const { return p_.id; }
-    /// Storage index of a live particle (valid until the next add/remove), or nullopt.
+    /// Storage index of a live particle (valid until the next add, remove or step: large worlds
+    /// reorder their storage during steps), or nullopt.
     [[nodiscard]] std::optional<std::size_t> indexOf(ParticleId id) const;
 
     void setPosition(ParticleId id, const Vec2& position);
@@ -76,18 +81,33 @@ class World {
     void setKinematic(ParticleId id, bool kinematic);
     [[nodiscard]] bool isKinematic(ParticleId id) const;
 
-    /// The topmost particle (the last added among those) whose disc contains `point`.
+    /// The topmost particle (the one drawn last: highest storage index) whose disc contains
+    /// `point`. Until a world reaches 4096 particles storage order is insertion order.
     [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
 
     [[nodiscard]] const ParticleArrays& particles() const { return p_; }
 
     // --- time ------------------------------------------------------------------------------
-    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode.
+    /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
+    /// every particle ends at its exact state at time() + dt; any change made to the world
+    /// between steps (particles, setters, box) is picked up by the next step.
     void step(double dt);
     /// Advances by solver().dt.
     void step() { step(solver_.dt); }
     /// Simulated seconds since the world was made.
     [[nodiscard]] double time() const { return time_; }
+
+    /// Threads the step may use: n >= 1, or 0 for one per hardware thread (the default).
+    /// Results are bit-identical for every thread count.
+    void setThreads(int n);
+    [[nodiscard]] int threads() const { return threads_; }
+    /// The broadphase the last step used (`auto` resolved); before the first step, the one the
+    /// next step would use.
+    [[nodiscard]] BroadPhaseKind broadPhaseInUse() const;
+    /// Reserves storage for `n` particles, so that adding up to `n` allocates nothing.
+    void reserve(std::size_t n);
+    /// Bytes held by the particle arrays, the id table and the step's scratch (capacities).
+    [[nodiscard]] std::size_t memoryBytes() const;
 
     [[nodiscard]] const StepProfile& profile() const { return profile_; }
     [[nodiscard]] const StepCounters& counters() const { return counters_; }
@@ -96,12 +116,17 @@ class World {
   private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
     void stepDiscrete(double dt);
+    void stepExact(double dt);
 
     WorldDef def_;
     SolverSettings solver_;
     ParticleArrays p_;
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;
+    std::unique_ptr<exact::ExactStepper> exact_;  // event state of the Exact mode, made on use
+    int threads_ = 1;
+    unsigned stepsUntilReorder_ = 0;  ///< state, not scratch: it decides future storage order
+    std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
     StepProfile profile_;
     StepCounters counters_;

@@ -6,7 +6,7 @@
 
 #include <particle_sandbox/particle_arrays.hpp>
 
-#include "step_context.hpp"
+#include "contact_pair.hpp"
 
 namespace psb {
 

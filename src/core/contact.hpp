@@ -2,6 +2,8 @@
 // The physics of one particle–particle contact: its normal, the velocity change it causes and
 // the positional push that removes its overlap.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include <particle_sandbox/particle_id.hpp>
@@ -41,6 +43,73 @@ struct NormalVelocities {
 /// moving at v1n): body 1 is unchanged, body 2 rebounds off it.
 [[nodiscard]] inline double collideNormalWithKinematic(double v1n, double v2n, double e) {
     return -e * v2n + (1.0 + e) * v1n;
+}
+
+/// The velocity change of one contact between discs i and j along the unit normal n (from i to
+/// j), shared by every stepper so that the discrete, substep and exact modes apply the same
+/// physics. `w` are inverse masses (0 = kinematic, infinite mass), `m` masses, `e` the
+/// restitution and, when kFriction, `mu` the Coulomb coefficient. Only an approaching pair
+/// collides: returns false, changing nothing, when the pair already separates (or is at rest
+/// relative to each other along n) or both are kinematic.
+template <bool kFriction>
+inline bool collideDiscs(double& vxi, double& vyi, double& vxj, double& vyj, double wi, double wj,
+                         double mi, double mj, Normal n, double e, double mu) {
+    if (wi == 0.0 && wj == 0.0) return false;  // two held particles: nothing can give
+    const double vni = vxi * n.x + vyi * n.y;
+    const double vnj = vxj * n.x + vyj * n.y;
+    // A pair that overlaps but already separates was resolved before (or was placed
+    // overlapping); swapping its velocities again is what made the original's particles stick.
+    if (vnj - vni >= 0.0) return false;
+
+    double ni, nj;  // new normal components
+    if (wi == 0.0) {
+        ni = vni;
+        nj = collideNormalWithKinematic(vni, vnj, e);
+    } else if (wj == 0.0) {
+        nj = vnj;
+        ni = collideNormalWithKinematic(vnj, vni, e);
+    } else {
+        const NormalVelocities after = collideNormal(mi, mj, vni, vnj, e);
+        ni = after.v1n;
+        nj = after.v2n;
+    }
+    const double dvi = ni - vni, dvj = nj - vnj;
+    vxi += dvi * n.x;
+    vyi += dvi * n.y;
+    vxj += dvj * n.x;
+    vyj += dvj * n.y;
+
+    if constexpr (kFriction) {
+        // Coulomb friction on the tangential relative velocity: the impulse that would stop the
+        // sliding, capped at mu times the normal impulse. The discs do not spin, so the sticking
+        // limit is equal tangential velocities.
+        const double jn = wj > 0.0 ? dvj / wj : -dvi / wi;  // normal impulse on j, >= 0
+        const double tx = -n.y, ty = n.x;
+        const double vt = (vxj - vxi) * tx + (vyj - vyi) * ty;
+        const double limit = mu * jn;
+        const double jt = std::clamp(-vt / (wi + wj), -limit, limit);
+        vxi -= jt * wi * tx;
+        vyi -= jt * wi * ty;
+        vxj += jt * wj * tx;
+        vyj += jt * wj * ty;
+    }
+    return true;
+}
+
+/// A rebound off a fixed wall: `v` is the velocity component along the wall's outward normal
+/// (> 0 means moving into the wall), `vt` the component along the wall. Turns v inward with
+/// speed e·|v| and, when kFriction, reduces |vt| by at most mu times the normal velocity change.
+/// Returns the normal velocity change per unit mass, >= 0 (0 when v <= 0: nothing to do).
+template <bool kFriction>
+inline double reboundOffWall(double& v, double& vt, double e, double mu) {
+    if (!(v > 0.0)) return 0.0;
+    const double dv = (1.0 + e) * v;
+    v -= dv;
+    if constexpr (kFriction) {
+        const double cut = std::min(std::abs(vt), mu * dv);
+        vt -= std::copysign(cut, vt);
+    }
+    return dv;
 }
 
 }  // namespace psb

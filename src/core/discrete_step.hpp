@@ -32,8 +32,19 @@
 
 namespace psb::stages {
 
-void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt);
-void move(ParticleArrays& p, double dt);
+// The element-wise stages (gravity, move, walls, and the broadphases' per-particle passes) run
+// on ctx.threads threads; resolve and separate are sequential. parallel.hpp says why the result
+// does not depend on the thread count.
+
+void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads = 1);
+/// Moves every particle by v·dt. With `bounds`, also measures the moved particles per block
+/// (for combineBlocks), saving the broadphase a pass over memory.
+void move(ParticleArrays& p, double dt, int threads = 1,
+          std::vector<ParticleStats>* bounds = nullptr);
+/// Fills ctx.pairs with the overlapping pairs in ascending (i, j) order, using the broadphase
+/// ctx.broadPhase asks for (Auto resolved by broad_phase_auto.hpp); records the one used in
+/// ctx.broadPhaseUsed. Uses the bounds move() measured when ctx.statsFresh says they are of
+/// these positions.
 void findPairs(const ParticleArrays& p, StepContext& ctx);
 /// Velocity impulses for every approaching pair in ctx.pairs; updates collision counters and
 /// the deepest overlap seen.
@@ -45,7 +56,7 @@ void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
 void separate(ParticleArrays& p, const StepContext& ctx);
 /// Clamps every particle into the box and makes outward velocity components inward (scaled by
 /// e). A particle already moving inward keeps its velocity.
-void walls(ParticleArrays& p, const WorldDef& def, StepCounters& counters);
+void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters);
 
 /// Runs the stages above in order for one step of `dt` seconds, timing each into `profile`
 /// (added to what it holds, so substeps accumulate).

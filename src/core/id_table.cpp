@@ -44,4 +44,14 @@ void IdTable::clear() {
     }
 }
 
+void IdTable::reserve(std::size_t slots) {
+    index_.reserve(slots);
+    generation_.reserve(slots);
+}
+
+std::size_t IdTable::memoryBytes() const {
+    return sizeof(std::uint32_t) *
+           (index_.capacity() + generation_.capacity() + freeSlots_.capacity());
+}
+
 }  // namespace psb::detail

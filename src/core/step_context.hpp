@@ -4,18 +4,26 @@
 #include <cstdint>
 #include <vector>
 
+#include <particle_sandbox/solver_settings.hpp>
+
+#include "broad_phase_grid.hpp"
+#include "broad_phase_quadtree.hpp"
+#include "contact_pair.hpp"
+#include "particle_stats.hpp"
+
 namespace psb {
 
-/// Two storage indices whose discs overlap, i < j. Broadphases emit pairs in ascending
-/// (i, j) order so that resolution order, and therefore the result, does not depend on which
-/// broadphase found them.
-struct ContactPair {
-    std::uint32_t i;
-    std::uint32_t j;
-};
-
 struct StepContext {
+    int threads = 1;  ///< threads the parallel stages may use (>= 1)
+    BroadPhaseKind broadPhase = BroadPhaseKind::Auto;          ///< as the solver settings ask
+    BroadPhaseKind broadPhaseUsed = BroadPhaseKind::AllPairs;  ///< what the last step used
     std::vector<ContactPair> pairs;
+    GridBroadPhase grid;
+    QuadtreeBroadPhase quadtree;
+    std::vector<ParticleStats> statsScratch;  ///< per-block bounds
+    bool statsFresh = false;  ///< statsScratch describes the current positions (set by move)
+    std::vector<double> wallImpulseScratch;
+    std::vector<std::uint64_t> wallHitScratch;
 };
 
 }  // namespace psb

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact.hpp"
 #include "discrete_step.hpp"
+#include "parallel.hpp"
 
 namespace psb::stages {
 namespace {
@@ -17,49 +19,96 @@ template <bool kFriction>
 inline double wallAxis(double& x, double& v, double& vt, double r, double extent, double e,
                        double mu) {
     const double lo = r, hi = extent - r;
-    double dv = 0.0;
     if (lo >= hi) {
         // As wide as the box or wider: it touches both walls at once, so the only place it can
         // be is the centre and the only velocity it can have along this axis is zero.
         x = 0.5 * extent;
-        dv = -v;
-    } else if (x < lo) {
+        const double dv = std::abs(v);
+        v = 0.0;
+        if constexpr (kFriction) vt -= std::copysign(std::min(std::abs(vt), mu * dv), vt);
+        return dv;
+    }
+    if (x < lo) {
         x = lo;
-        if (v < 0.0) dv = -(1.0 + e) * v;
-    } else if (x > hi) {
+        double out = -v;  // the left/top wall's outward normal points to -x
+        const double dv = reboundOffWall<kFriction>(out, vt, e, mu);
+        v = -out;
+        return dv;
+    }
+    if (x > hi) {
         x = hi;
-        if (v > 0.0) dv = -(1.0 + e) * v;
+        return reboundOffWall<kFriction>(v, vt, e, mu);
     }
-    if (dv == 0.0) return 0.0;
-    v += dv;
-    if constexpr (kFriction) {
-        const double cut = std::min(std::abs(vt), mu * std::abs(dv));
-        vt -= std::copysign(cut, vt);
-    }
-    return std::abs(dv);
+    return 0.0;
 }
 
 template <bool kFriction>
-void wallsImpl(ParticleArrays& p, const WorldDef& def, StepCounters& counters) {
+void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
     const double e = def.restitution, mu = def.friction;
     const std::size_t n = p.size();
+    // The impulse sum depends on the order of its terms: one sequential sum per fixed block,
+    // added in block order below (rule 2 of parallel.hpp), so any thread count gives the same
+    // bits.
+    const std::size_t blocks = parallel::blockCount(n);
+    ctx.wallImpulseScratch.resize(blocks);
+    ctx.wallHitScratch.resize(blocks);
+    parallel::forBlocks(ctx.threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        std::uint64_t hits = 0;
+        double impulse = 0.0;
+        const double* px = p.x.data();
+        const double* py = p.y.data();
+        const double* pr = p.radius.data();
+        const double w = def.width, h = def.height;
+        // Nearly every particle is inside, where wallAxis changes nothing on either axis. Test
+        // runs of 16 without a branch per particle (the compiler vectorises this) and visit a
+        // run one by one only if one of them is out.
+        constexpr std::size_t kRun = 16;
+        for (std::size_t run = begin; run < end; run += kRun) {
+            const std::size_t runEnd = std::min(end, run + kRun);
+            // Inside on both axes <=> every margin below is >= 0 and the box is wider than
+            // the disc (the same comparisons wallAxis makes, as differences so that min()
+            // vectorises).
+            double margin = 1.0, room = 1.0;
+            for (std::size_t i = run; i < runEnd; ++i) {
+                const double r = pr[i], wr = w - r, hr = h - r;
+                double a = px[i] - r, b2 = wr - px[i], c = py[i] - r, d = hr - py[i];
+                double f = wr - r, g = hr - r;
+                a = a < b2 ? a : b2;
+                c = c < d ? c : d;
+                a = a < c ? a : c;
+                f = f < g ? f : g;
+                margin = margin < a ? margin : a;
+                room = room < f ? room : f;
+            }
+            const bool outside = !((margin >= 0.0) & (room > 0.0));
+            if (!outside) continue;
+            for (std::size_t i = run; i < runEnd; ++i) {
+                const double r = pr[i];
+                if (p.invMass[i] == 0.0) {
+                    // A held particle is clamped into the box but its velocity is its owner's.
+                    double vx = 0.0, vy = 0.0, vt = 0.0;
+                    wallAxis<false>(p.x[i], vx, vt, r, def.width, e, mu);
+                    wallAxis<false>(p.y[i], vy, vt, r, def.height, e, mu);
+                    continue;
+                }
+                const double jx =
+                    wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
+                const double jy =
+                    wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
+                if (jx > 0.0 || jy > 0.0) {
+                    hits += (jx > 0.0) + (jy > 0.0);
+                    impulse += p.mass[i] * (jx + jy);
+                }
+            }
+        }
+        ctx.wallHitScratch[b] = hits;
+        ctx.wallImpulseScratch[b] = impulse;
+    });
     std::uint64_t hits = 0;
     double impulse = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const double r = p.radius[i];
-        if (p.invMass[i] == 0.0) {
-            // A held particle is clamped into the box but its velocity is its owner's.
-            double vx = 0.0, vy = 0.0, vt = 0.0;
-            wallAxis<false>(p.x[i], vx, vt, r, def.width, e, mu);
-            wallAxis<false>(p.y[i], vy, vt, r, def.height, e, mu);
-            continue;
-        }
-        const double jx = wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
-        const double jy = wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
-        if (jx > 0.0 || jy > 0.0) {
-            hits += (jx > 0.0) + (jy > 0.0);
-            impulse += p.mass[i] * (jx + jy);
-        }
+    for (std::size_t b = 0; b < blocks; ++b) {
+        hits += ctx.wallHitScratch[b];
+        impulse += ctx.wallImpulseScratch[b];
     }
     counters.wallCollisions += hits;
     counters.wallImpulse += impulse;
@@ -67,11 +116,11 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepCounters& counters) {
 
 }  // namespace
 
-void walls(ParticleArrays& p, const WorldDef& def, StepCounters& counters) {
+void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
     if (def.friction > 0.0) {
-        wallsImpl<true>(p, def, counters);
+        wallsImpl<true>(p, def, ctx, counters);
     } else {
-        wallsImpl<false>(p, def, counters);
+        wallsImpl<false>(p, def, ctx, counters);
     }
 }
 

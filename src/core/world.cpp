@@ -1,9 +1,16 @@
 #include <particle_sandbox/world.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
+#include <thread>
 
+#include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
+#include "exact_stepper.hpp"
+#include "particle_reorder.hpp"
+#include "stage_timer.hpp"
 #include "step_context.hpp"
 #include "validate.hpp"
 
@@ -37,13 +44,18 @@ void validateSolver(const SolverSettings& s, const char* where) {
     if (toString(s.broadphase) == "?") {
         detail::fail(where, "broadphase", "is not a known broadphase");
     }
-    if (s.mode == StepMode::Exact) {
-        detail::fail(where, "mode", "'exact' is not available in this version");
-    }
-    if (s.broadphase == BroadPhaseKind::Grid || s.broadphase == BroadPhaseKind::Quadtree) {
-        detail::fail(where, "broadphase",
-                     "'" + std::string(toString(s.broadphase)) +
-                         "' is not available in this version (use 'auto' or 'all-pairs')");
+}
+
+// The exact mode flies particles in straight lines between events; under gravity they would fly
+// parabolas, which it does not predict.
+void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const char* where) {
+    if (s.mode == StepMode::Exact && (gravity.x() != 0.0 || gravity.y() != 0.0)) {
+        std::ostringstream os;
+        os.precision(17);
+        os << "must be zero in 'exact' mode (got [" << gravity.x() << ", " << gravity.y()
+           << "]): the event-driven step does not support gravity; use 'discrete' or "
+              "'substep' for a world with gravity";
+        detail::fail(where, "gravity", os.str());
     }
 }
 
@@ -52,6 +64,11 @@ void validateParticle(const ParticleDef& d, const char* where) {
     requireFinite(d.velocity, where, "velocity");
     detail::requireMass(d.mass, where, "mass");
     requirePositive(d.radius, where, "radius");
+}
+
+int hardwareThreads() {
+    const unsigned n = std::thread::hardware_concurrency();
+    return n == 0 ? 1 : static_cast<int>(std::min(n, 256u));
 }
 
 template <typename T>
@@ -63,9 +80,13 @@ void swapRemove(std::vector<T>& v, std::size_t i) {
 }  // namespace
 
 World::World(const WorldDef& def, const SolverSettings& solver)
-    : def_(def), solver_(solver), ctx_(std::make_unique<StepContext>()) {
+    : def_(def),
+      solver_(solver),
+      ctx_(std::make_unique<StepContext>()),
+      threads_(hardwareThreads()) {
     validateDef(def, "World");
     validateSolver(solver, "World");
+    validateModeWithGravity(solver, def.gravity, "World");
 }
 
 World::~World() = default;
@@ -78,6 +99,9 @@ World::World(const World& other)
       p_(other.p_),
       ids_(other.ids_),
       ctx_(std::make_unique<StepContext>()),  // scratch is not state
+      threads_(other.threads_),
+      stepsUntilReorder_(other.stepsUntilReorder_),
+      broadPhaseUsed_(other.broadPhaseUsed_),
       time_(other.time_),
       profile_(other.profile_),
       counters_(other.counters_) {}
@@ -101,6 +125,7 @@ void World::setWalls(bool enabled) {
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
+    validateModeWithGravity(solver_, gravity, "World::setGravity");
     def_.gravity = gravity;
 }
 
@@ -118,6 +143,7 @@ void World::setFriction(double mu) {
 
 void World::setSolver(const SolverSettings& solver) {
     validateSolver(solver, "World::setSolver");
+    validateModeWithGravity(solver, def_.gravity, "World::setSolver");
     solver_ = solver;
 }
 
@@ -161,6 +187,50 @@ bool World::remove(ParticleId id) {
 void World::clear() {
     ids_.clear();
     p_ = ParticleArrays{};
+    stepsUntilReorder_ = 0;
+}
+
+void World::setThreads(int n) {
+    if (n < 0 || n > 256) {
+        detail::fail("World::setThreads", "thread count",
+                     "must be 0 (all hardware threads) or 1..256 (got " + std::to_string(n) + ")");
+    }
+    threads_ = n == 0 ? hardwareThreads() : n;
+}
+
+BroadPhaseKind World::broadPhaseInUse() const {
+    if (broadPhaseUsed_) return *broadPhaseUsed_;
+    std::vector<ParticleStats> scratch;
+    return chooseBroadPhase(solver_.broadphase, p_, measureParticles(p_, 1, scratch));
+}
+
+void World::reserve(std::size_t n) {
+    p_.x.reserve(n);
+    p_.y.reserve(n);
+    p_.vx.reserve(n);
+    p_.vy.reserve(n);
+    p_.invMass.reserve(n);
+    p_.radius.reserve(n);
+    p_.mass.reserve(n);
+    p_.color.reserve(n);
+    p_.id.reserve(n);
+    ids_.reserve(n);
+}
+
+std::size_t World::memoryBytes() const {
+    std::size_t bytes =
+        sizeof(double) * (p_.x.capacity() + p_.y.capacity() + p_.vx.capacity() + p_.vy.capacity() +
+                          p_.invMass.capacity() + p_.radius.capacity() + p_.mass.capacity());
+    bytes += sizeof(Color) * p_.color.capacity() + sizeof(ParticleId) * p_.id.capacity();
+    bytes += ids_.memoryBytes();
+    if (ctx_) {
+        const StepContext& c = *ctx_;
+        bytes += sizeof(ContactPair) * c.pairs.capacity() + c.grid.memoryBytes() +
+                 c.quadtree.memoryBytes() + sizeof(ParticleStats) * c.statsScratch.capacity() +
+                 sizeof(double) * c.wallImpulseScratch.capacity() +
+                 sizeof(std::uint64_t) * c.wallHitScratch.capacity();
+    }
+    return bytes;
 }
 
 bool World::contains(ParticleId id) const {
@@ -242,6 +312,19 @@ std::optional<ParticleId> World::pick(const Vec2& point) const {
 void World::step(double dt) {
     requirePositive(dt, "World::step", "dt");
     profile_ = {};
+    if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
+    ctx_->threads = threads_;
+    ctx_->broadPhase = solver_.broadphase;
+    // The exact mode keeps its own copy in cell order; reordering the world's storage would only
+    // make it rebuild.
+    if (p_.size() >= kReorderMinParticles && solver_.mode != StepMode::Exact) {
+        if (stepsUntilReorder_ == 0) {
+            StageTimer t(profile_.reorder);
+            reorderByCell(p_, ids_, *ctx_);
+            stepsUntilReorder_ = kReorderInterval;
+        }
+        --stepsUntilReorder_;
+    }
     switch (solver_.mode) {
         case StepMode::Discrete:
             stepDiscrete(dt);
@@ -252,15 +335,25 @@ void World::step(double dt) {
                 stepDiscrete(h);
             break;
         }
-        case StepMode::Exact:  // refused by validateSolver until the event-driven mode exists
+        case StepMode::Exact:
+            stepExact(dt);
             break;
     }
+    profile_.total += profile_.reorder;
+    if (solver_.mode != StepMode::Exact) broadPhaseUsed_ = ctx_->broadPhaseUsed;
     time_ += dt;
 }
 
 void World::stepDiscrete(double dt) {
-    if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
     stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
+}
+
+void World::stepExact(double dt) {
+    // The stepper compares the world with what its last step left and rebuilds its event state
+    // on any difference, so every mutator (and a step in another mode) is picked up without
+    // each one having to remember to invalidate it.
+    if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
+    exact_->step(p_, def_, dt, profile_, counters_);
 }
 
 }  // namespace psb

@@ -3,6 +3,7 @@
 /// Slot table behind stable particle ids (an implementation detail of World, shown here only
 /// because World holds it by value).
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -23,6 +24,8 @@ class IdTable {
     void relocate(ParticleId id, std::uint32_t index);
     [[nodiscard]] std::optional<std::uint32_t> find(ParticleId id) const;
     void clear();
+    void reserve(std::size_t slots);
+    [[nodiscard]] std::size_t memoryBytes() const;
 
   private:
     static constexpr std::uint32_t kFree = UINT32_MAX;

@@ -1,0 +1,254 @@
+#include "broad_phase_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "disc_overlap.hpp"
+#include "parallel.hpp"
+
+namespace psb {
+namespace {
+
+/// Relative slack added to the cell size and to query reaches so that rounding in
+/// (x - origin) / cell can never put two overlapping particles two cells apart.
+constexpr double kRelativeSlack = 1e-7;
+
+}  // namespace
+
+// Cell coordinates are interior coordinates (0..nx-1); storage adds a border ring of empty
+// cells, so cell (cx, cy) lives at index (cy + 1) * (nx + 2) + cx + 1.
+
+std::uint32_t GridBroadPhase::cellX(double x) const {
+    const double f = (x - originX_) * invCell_;
+    if (!(f > 0.0)) return 0;
+    if (f >= static_cast<double>(nx_ - 1)) return nx_ - 1;
+    return static_cast<std::uint32_t>(f);
+}
+
+std::uint32_t GridBroadPhase::cellY(double y) const {
+    const double f = (y - originY_) * invCell_;
+    if (!(f > 0.0)) return 0;
+    if (f >= static_cast<double>(ny_ - 1)) return ny_ - 1;
+    return static_cast<std::uint32_t>(f);
+}
+
+void GridBroadPhase::plan(const ParticleArrays& p, const ParticleStats& s) {
+    const std::size_t n = p.size();
+    large_.clear();
+    largeAbove_ = 2.0 * s.meanRadius;
+    smallMaxRadius_ = s.maxRadius;
+    equalRadius_ = s.minRadius == s.maxRadius ? s.maxRadius : 0.0;
+    if (s.maxRadius > largeAbove_) {
+        smallMaxRadius_ = 0.0;
+        const double* r = p.radius.data();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (r[i] > largeAbove_) {
+                large_.push_back(static_cast<std::uint32_t>(i));
+            } else {
+                smallMaxRadius_ = std::max(smallMaxRadius_, r[i]);
+            }
+        }
+    }
+    const std::size_t small = n - large_.size();
+    const double w = s.maxX - s.minX, h = s.maxY - s.minY;
+    // Twice the small radius, plus slack for rounding in the coordinates themselves.
+    double cell = 2.0 * smallMaxRadius_ * (1.0 + kRelativeSlack) +
+                  64.0 * s.maxAbsCoordinate * 2.220446049250313e-16;
+    const double maxCells = std::max(1.0, kCellsPerParticle * static_cast<double>(small));
+    cell = std::max({cell, std::sqrt(w * h / maxCells), 1e-300});
+    auto cellsFor = [&](double c) { return (std::floor(w / c) + 1.0) * (std::floor(h / c) + 1.0); };
+    while (cellsFor(cell) > maxCells)
+        cell *= 1.0625;
+    cell_ = cell;
+    invCell_ = 1.0 / cell;
+    originX_ = s.minX;
+    originY_ = s.minY;
+    nx_ = static_cast<std::uint32_t>(std::floor(w / cell)) + 1;
+    ny_ = static_cast<std::uint32_t>(std::floor(h / cell)) + 1;
+}
+
+void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, int threads) {
+    const std::size_t n = p.size();
+    plan(p, stats);
+    cellOf_.resize(n);
+    entries_.resize(n);
+    const std::size_t cells = std::size_t{nx_ + 2} * (ny_ + 2);
+    const std::uint32_t stride = nx_ + 2;
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    std::uint32_t* cellOf = cellOf_.data();
+    const double largeAbove = large_.empty() ? INFINITY : largeAbove_;
+    parallel::forChunks(
+        threads, parallel::chunksFor(threads, n), n, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                cellOf[i] =
+                    r[i] > largeAbove ? kLarge : (cellY(y[i]) + 1) * stride + cellX(x[i]) + 1;
+            }
+        });
+    // Counting sort: histogram, inclusive prefix sum, backward scatter. Scattering from the
+    // last particle down with pre-decrement leaves cellStart[c] at the start of cell c and
+    // each cell's indices ascending.
+    //
+    // In parallel, each part owns a contiguous range of cells and does every pass for its
+    // cells only: all parts read all of cellOf (4 bytes a particle, sequentially), but no cell
+    // is touched by two threads, and each cell's slots come out exactly as in one pass, so
+    // `entries` does not depend on the thread count.
+    cellStart_.resize(cells + 1);
+    std::uint32_t* start = cellStart_.data();
+    std::uint32_t* entries = entries_.data();
+    const int parts = parallel::chunksFor(threads, n) > 1 ? threads : 1;
+    partTotals_.assign(static_cast<std::size_t>(parts) + 1, 0);
+    auto cellBegin = [&](int part) { return (cells + 1) * part / parts; };
+    parallel::forEachIndex(threads, parts, [&](std::size_t part) {
+        const std::size_t lo = cellBegin(static_cast<int>(part));
+        const std::size_t hi = cellBegin(static_cast<int>(part) + 1);
+        std::fill(start + lo, start + hi, 0u);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t c = cellOf[i];  // kLarge is beyond every range
+            if (c - lo < hi - lo) ++start[c];
+        }
+        std::uint32_t sum = 0;
+        for (std::size_t c = lo; c < hi; ++c) {
+            sum += start[c];
+            start[c] = sum;
+        }
+        partTotals_[part + 1] = sum;
+    });
+    for (int part = 0; part < parts; ++part)
+        partTotals_[part + 1] += partTotals_[part];
+    parallel::forEachIndex(threads, parts, [&](std::size_t part) {
+        const std::size_t lo = cellBegin(static_cast<int>(part));
+        const std::size_t hi = cellBegin(static_cast<int>(part) + 1);
+        const std::uint32_t offset = partTotals_[part];
+        for (std::size_t c = lo; c < hi; ++c)
+            start[c] += offset;
+        for (std::size_t i = n; i-- > 0;) {
+            const std::size_t c = cellOf[i];
+            if (c - lo < hi - lo) entries[--start[c]] = static_cast<std::uint32_t>(i);
+        }
+    });
+    const std::uint32_t sum = partTotals_[parts];
+    std::copy(large_.begin(), large_.end(), entries_.begin() + static_cast<std::ptrdiff_t>(sum));
+}
+
+void GridBroadPhase::findLargePairs(const ParticleArrays& p) {
+    largePairs_.clear();
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    const std::uint32_t* start = cellStart_.data();
+    const std::uint32_t* entries = entries_.data();
+    const std::uint32_t stride = nx_ + 2;
+    for (std::size_t a = 0; a < large_.size(); ++a) {
+        const std::uint32_t l = large_[a];
+        // A small particle overlapping l has its centre within r_l + smallMax of l's centre.
+        const double reach = (r[l] + smallMaxRadius_) * (1.0 + kRelativeSlack) + cell_ * 1e-9;
+        const std::uint32_t x0 = cellX(x[l] - reach), x1 = cellX(x[l] + reach);
+        const std::uint32_t y0 = cellY(y[l] - reach), y1 = cellY(y[l] + reach);
+        for (std::uint32_t cy = y0; cy <= y1; ++cy) {
+            const std::uint32_t row = (cy + 1) * stride + 1;
+            const std::uint32_t end = start[row + x1 + 1];
+            for (std::uint32_t k = start[row + x0]; k < end; ++k) {
+                const std::uint32_t j = entries[k];
+                const std::uint32_t lo = std::min(l, j), hi = std::max(l, j);
+                if (discsOverlap(x, y, r, lo, hi)) largePairs_.push_back({lo, hi});
+            }
+        }
+        for (std::size_t b = a + 1; b < large_.size(); ++b) {
+            const std::uint32_t m = large_[b];  // large_ is ascending, so l < m
+            if (discsOverlap(x, y, r, l, m)) largePairs_.push_back({l, m});
+        }
+    }
+}
+
+void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
+                               std::vector<ContactPair>& out) {
+    const std::size_t n = p.size();
+    const std::size_t small = n - large_.size();
+    const int chunks = parallel::chunksFor(threads, small);
+    if (chunkPairs_.size() < static_cast<std::size_t>(chunks)) {
+        chunkPairs_.resize(chunks);
+        chunkFound_.resize(chunks);
+    }
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    const std::uint32_t* cellOf = cellOf_.data();
+    const std::uint32_t* start = cellStart_.data();
+    const std::uint32_t* entries = entries_.data();
+    const std::uint32_t stride = nx_ + 2;
+    // Chunks are ranges of slots (cell order), not of particle indices.
+    // kEqualRadii: every particle has the same radius (common: gases, most presets), so the
+    // contact distance is one constant and the query reads no radius at all. Same arithmetic:
+    // r + r is exactly the constant.
+    const double contact = equalRadius_ + equalRadius_;
+    auto query = [&]<bool kEqualRadii>(int c, std::size_t begin, std::size_t end) {
+        std::vector<ContactPair>& pairs = chunkPairs_[c];
+        std::size_t found = 0;
+        for (std::size_t a = begin; a < end; ++a) {
+            const std::uint32_t i = entries[a];
+            const std::uint32_t cell = cellOf[i];
+            const double xi = x[i], yi = y[i], ri = r[i];
+            // Half stencil: the rest of this cell and the east cell (one contiguous run), then
+            // the three cells of the row below (another). The other four neighbours find this
+            // particle from their side. The border ring of empty cells spares bounds checks.
+            const std::uint32_t k0 = static_cast<std::uint32_t>(a + 1), k1 = start[cell + 2];
+            const std::uint32_t k2 = start[cell + stride - 1], k3 = start[cell + stride + 2];
+            const std::size_t most = found + (k1 - k0) + (k3 - k2);
+            if (pairs.size() < most) pairs.resize(2 * most);  // grows, then stays
+            ContactPair* buf = pairs.data();
+            // discsOverlap's arithmetic; it is symmetric in i and j to the last bit
+            // (x[i] - x[j] is exactly -(x[j] - x[i])), so which of the two comes first does
+            // not matter. Branch-free: most candidates miss.
+            auto test = [&](std::uint32_t k) {
+                const std::uint32_t j = entries[k];
+                const double dx = x[j] - xi;
+                const double dy = y[j] - yi;
+                const double rs = kEqualRadii ? contact : ri + r[j];
+                buf[found] = {std::min(i, j), std::max(i, j)};
+                found += static_cast<std::size_t>(dx * dx + dy * dy < rs * rs);
+            };
+            for (std::uint32_t k = k0; k < k1; ++k)
+                test(k);
+            for (std::uint32_t k = k2; k < k3; ++k)
+                test(k);
+        }
+        chunkFound_[c] = found;
+    };
+    const bool equalRadii = equalRadius_ > 0.0;
+    parallel::forChunks(threads, chunks, small, [&](int c, std::size_t begin, std::size_t end) {
+        if (equalRadii) {
+            query.template operator()<true>(c, begin, end);
+        } else {
+            query.template operator()<false>(c, begin, end);
+        }
+    });
+    const std::size_t before = out.size();
+    std::size_t total = 0;
+    for (int c = 0; c < chunks; ++c)
+        total += chunkFound_[c];
+    if (!large_.empty()) {
+        findLargePairs(p);
+        total += largePairs_.size();
+    }
+    out.resize(before + total);
+    ContactPair* dst = out.data() + before;
+    for (int c = 0; c < chunks; ++c) {
+        dst = std::copy_n(chunkPairs_[c].data(), chunkFound_[c], dst);
+    }
+    std::copy(largePairs_.begin(), largePairs_.end(), dst);
+    // Found in cell order; the resolve stage needs ascending (i, j).
+    sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
+}
+
+std::size_t GridBroadPhase::memoryBytes() const {
+    std::size_t bytes = sizeof(std::uint32_t) * (cellOf_.capacity() + cellStart_.capacity() +
+                                                 entries_.capacity() + large_.capacity());
+    bytes += sizeof(ContactPair) * (largePairs_.capacity() + sortScratch_.capacity());
+    for (const auto& v : chunkPairs_)
+        bytes += sizeof(ContactPair) * v.capacity();
+    return bytes;
+}
+
+}  // namespace psb

@@ -1,0 +1,58 @@
+#pragma once
+// The broadphases' output: overlapping pairs by storage index, and helpers to keep the list in
+// the canonical ascending (i, j) order.
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+namespace psb {
+
+/// Two storage indices whose discs overlap, i < j. Broadphases emit pairs in ascending
+/// (i, j) order so that resolution order, and therefore the result, does not depend on which
+/// broadphase found them.
+struct ContactPair {
+    std::uint32_t i;
+    std::uint32_t j;
+
+    friend bool operator==(ContactPair a, ContactPair b) = default;
+    friend bool operator<(ContactPair a, ContactPair b) {
+        return a.i != b.i ? a.i < b.i : a.j < b.j;
+    }
+};
+
+/// Appends (i, j) for each j in `partners` (all > i), in ascending j. The list is short (the
+/// partners of one particle), so insertion sort is the fast choice.
+inline void appendPartners(std::uint32_t i, std::uint32_t* partners, std::size_t n,
+                           std::vector<ContactPair>& out) {
+    for (std::size_t a = 1; a < n; ++a) {
+        const std::uint32_t v = partners[a];
+        std::size_t b = a;
+        for (; b > 0 && partners[b - 1] > v; --b)
+            partners[b] = partners[b - 1];
+        partners[b] = v;
+    }
+    for (std::size_t a = 0; a < n; ++a)
+        out.push_back({i, partners[a]});
+}
+
+inline void appendPartners(std::uint32_t i, std::vector<std::uint32_t>& partners,
+                           std::vector<ContactPair>& out) {
+    appendPartners(i, partners.data(), partners.size(), out);
+    partners.clear();
+}
+
+/// Sorts pairs[from..] into ascending (i, j) order; every index is below `indexLimit`. Pairs
+/// must be distinct (then any correct sort gives the same list). LSD radix sort on 11-bit
+/// digits of j, then of i, using `scratch`; short lists use insertion into std::sort.
+void sortPairs(std::vector<ContactPair>& pairs, std::size_t from, std::vector<ContactPair>& scratch,
+               std::uint32_t indexLimit);
+
+/// Appends the per-chunk lists to `out` in chunk order.
+inline void concatenate(const std::vector<std::vector<ContactPair>>& chunks, int count,
+                        std::vector<ContactPair>& out) {
+    for (int c = 0; c < count; ++c)
+        out.insert(out.end(), chunks[c].begin(), chunks[c].end());
+}
+
+}  // namespace psb

@@ -1,0 +1,560 @@
+// The exact (event-driven) step; the design note is in exact_stepper.hpp.
+
+#include "exact_stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact.hpp"
+#include "exact_time_of_impact.hpp"
+#include "stage_timer.hpp"
+
+namespace psb::exact {
+namespace {
+
+// Cells a little wider than the largest diameter, so that a centre a few ulps outside the cell
+// its events say it is in is still found by its neighbours' 3 × 3 searches.
+constexpr double kCellSlack = 1.0 + 1e-9;
+// Target cell side, in mean particle spacings sqrt(area / N). Larger cells mean fewer
+// cell-face events but more pair tests per prediction; measured on the dilute-gas benchmark.
+constexpr double kCellSpacings = 1.0;
+// Events per particle between two re-sorts of the particles into cell order.
+constexpr std::uint64_t kResortEvery = 8;
+
+template <typename T>
+bool sameArray(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
+
+}  // namespace
+
+bool ExactStepper::matches(const ParticleArrays& p, const WorldDef& def) const {
+    return def.width == def_.width && def.height == def_.height && def.walls == def_.walls &&
+           def.restitution == def_.restitution && def.friction == def_.friction &&
+           sameArray(p.x, snapshot_.x) && sameArray(p.y, snapshot_.y) &&
+           sameArray(p.vx, snapshot_.vx) && sameArray(p.vy, snapshot_.vy) &&
+           sameArray(p.invMass, snapshot_.invMass) && sameArray(p.mass, snapshot_.mass) &&
+           sameArray(p.radius, snapshot_.radius) && sameArray(p.id, snapshot_.id);
+}
+
+void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
+    def_ = def;
+    clock_ = 0.0;
+    const auto n = static_cast<std::uint32_t>(p.size());
+    bodies_.resize(n);
+    cold_.resize(n);
+    order_.resize(n);
+
+    ids_ = p.id;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        Body& b = bodies_[i];
+        Cold& c = cold_[i];
+        b = Body{p.x[i],  p.y[i], p.vx[i],
+                 p.vy[i], 0.0,    p.radius[i],
+                 kNever,  0,      p.invMass[i] == 0.0 ? kHeld : 0u};
+        c = Cold{
+            Event{kNever, 0, 0, Kind::None, 0}, p.mass[i], 0, 0, 0, false, false, 0, p.invMass[i]};
+        order_[i] = i;
+        if (def_.walls) {
+            // Into the box, as the discrete mode's wall stage would; a particle too wide for
+            // an axis sits on the centre line with no velocity across it.
+            const auto place = [](double& x, double& v, double r, double extent) {
+                if (r >= extent - r) {
+                    x = 0.5 * extent;
+                    v = 0.0;
+                    return true;
+                }
+                x = std::clamp(x, r, extent - r);
+                return false;
+            };
+            c.pinX = place(b.x, b.vx, b.r, def_.width);
+            c.pinY = place(b.y, b.vy, b.r, def_.height);
+        }
+    }
+    setUpGrid();
+    sortByCell(false);
+    eventsSinceSort_ = 0;
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
+    }
+    queue_.reset(2 * n, bucketWidth());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        predictCollision(i, 0.0);
+        predictCell(i, 0.0);
+    }
+    stale_ = false;
+}
+
+double ExactStepper::bucketWidth() const {
+    // About 1/64 of the time a typical particle takes to cross a cell: the current bucket then
+    // holds a few percent of the 2N events, and the 256-bucket calendar spans ~4 crossings.
+    double v2 = 0.0;
+    for (const Body& b : bodies_)
+        v2 += b.vx * b.vx + b.vy * b.vy;
+    if (!(v2 > 0.0)) return 1.0;
+    const double vrms = std::sqrt(v2 / static_cast<double>(bodies_.size()));
+    const double side =
+        std::min(cells_.faceX(1) - cells_.faceX(0), cells_.faceY(1) - cells_.faceY(0));
+    return side / vrms / 64.0;
+}
+
+void ExactStepper::sortByCell(bool midRun) {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    const auto cellCount = static_cast<std::size_t>(cells_.nx() * cells_.ny());
+    std::vector<std::uint32_t> start(cellCount + 1, 0), cellOf(n), to(n);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cellOf[i] = cells_.cell(cold_[i].kx, cold_[i].ky);
+        ++start[cellOf[i] + 1];
+    }
+    for (std::size_t c = 0; c < cellCount; ++c)
+        start[c + 1] += start[c];
+    for (std::uint32_t i = 0; i < n; ++i)
+        to[i] = start[cellOf[i]]++;
+    const auto permute = [&](auto& v) {
+        std::remove_reference_t<decltype(v)> out(v.size());
+        for (std::uint32_t i = 0; i < n; ++i)
+            out[to[i]] = v[i];
+        v.swap(out);
+    };
+    permute(bodies_);
+    permute(cold_);
+    permute(order_);
+    permute(ids_);
+    if (midRun) {
+        // Carry the scheduled events over to the new indices.
+        std::vector<double> times(2 * static_cast<std::size_t>(n));
+        for (std::uint32_t i = 0; i < n; ++i) {
+            times[2 * to[i]] = queue_.timeOf(2 * i);
+            times[2 * to[i] + 1] = queue_.timeOf(2 * i + 1);
+        }
+        for (Cold& c : cold_) {
+            if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
+        }
+        queue_.reset(2 * n, queue_.bucketWidth());
+        for (std::uint32_t k = 0; k < 2 * n; ++k)
+            queue_.update(k, times[k]);
+        cells_.clearMembers();
+        for (std::uint32_t i = 0; i < n; ++i) {
+            cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
+        }
+    }
+}
+
+void ExactStepper::setUpGrid() {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    double dmax = 0.0;
+    for (const Body& b : bodies_)
+        dmax = std::max(dmax, 2.0 * b.r);
+    const double minSide = std::max(dmax * kCellSlack, 1e-300);
+    // At most a few cells per particle: enough for the 3 × 3 searches to see ~1 particle each,
+    // and memory stays O(N) however large the box.
+    const double maxCells = 4.0 * n + 64.0;
+    if (def_.walls) {
+        const double area = def_.width * def_.height;
+        double side = std::max(minSide, kCellSpacings * std::sqrt(area / std::max(n, 1u)));
+        side = std::max(side, std::sqrt(area / maxCells));
+        const auto count = [&](double extent) {
+            return std::max<std::int64_t>(1, static_cast<std::int64_t>(extent / side));
+        };
+        const std::int64_t nx = count(def_.width), ny = count(def_.height);
+        cells_.reset(0.0, 0.0, def_.width / static_cast<double>(nx),
+                     def_.height / static_cast<double>(ny), nx, ny, false, n);
+    } else {
+        // Unbounded, so the grid folds onto itself (cell_list.hpp) and need not cover every
+        // particle: it is sized for the bulk of them (the middle 90 % along each axis), so
+        // that one particle flung far away does not make every cell huge.
+        const auto spread = [&](auto coord) {
+            if (n < 2) return 0.0;
+            std::vector<double> v(n);
+            for (std::uint32_t i = 0; i < n; ++i)
+                v[i] = coord(bodies_[i]);
+            const auto lo = v.begin() + n / 20, hi = v.begin() + (n - 1 - n / 20);
+            std::nth_element(v.begin(), lo, v.end());
+            const double a = *lo;
+            std::nth_element(v.begin(), hi, v.end());
+            return *hi - a;
+        };
+        const double w = spread([](const Body& b) { return b.x; }) + 2.0 * minSide;
+        const double h = spread([](const Body& b) { return b.y; }) + 2.0 * minSide;
+        double side = std::max(minSide, kCellSpacings * std::sqrt(w * h / std::max(n, 1u)));
+        side = std::max(side, std::sqrt(w * h / maxCells));
+        const auto count = [&](double extent) {
+            return std::max<std::int64_t>(3, static_cast<std::int64_t>(std::ceil(extent / side)));
+        };
+        cells_.reset(0.0, 0.0, side, side, count(w), count(h), true, n);
+    }
+    // A particle may stray a skin's width out of its cell before it is moved to the next one:
+    // two touching discs are then still at most one cell apart (side >= dmax + 2 skin), and a
+    // particle that has just moved is a skin's width inside its new cell, so it does not
+    // flicker back and forth across a face.
+    const double sx = cells_.faceX(1) - cells_.faceX(0), sy = cells_.faceY(1) - cells_.faceY(0);
+    skinX_ = std::max(0.0, 0.5 * (sx - minSide));
+    skinY_ = std::max(0.0, 0.5 * (sy - minSide));
+    for (std::uint32_t i = 0; i < n; ++i) {
+        cold_[i].kx = cells_.coordX(bodies_[i].x);
+        cold_[i].ky = cells_.coordY(bodies_[i].y);
+    }
+}
+
+void ExactStepper::advance(Body& b, double t) const {
+    const double h = t - b.t;
+    if (h != 0.0) {
+        b.x += b.vx * h;
+        b.y += b.vy * h;
+        b.t = t;
+    }
+}
+
+void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
+                             const std::uint32_t* cells, int cellCount, Event& best) const {
+    const Body& a = bodies_[i];
+    const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
+    // Gather the members first and prefetch their bodies, so that the cache misses of a whole
+    // neighbourhood overlap instead of following one another.
+    constexpr int kBatch = 32;
+    std::uint32_t members[kBatch];
+    int k = 0;
+    std::uint32_t j = CellList::kNone;
+    for (;;) {
+        int count = 0;
+        while (count < kBatch) {
+            if (j == CellList::kNone) {
+                if (k == cellCount) break;
+                j = cells_.head(cells[k++]);
+                continue;
+            }
+            if (j != i) {
+                members[count++] = j;
+                __builtin_prefetch(&bodies_[j]);
+            }
+            j = cells_.next(j);
+        }
+        for (int m = 0; m < count; ++m) {
+            const std::uint32_t q = members[m];
+            const Body& b = bodies_[q];
+            const bool bHeld = (b.flags & kHeld) != 0;
+            if (aHeld && bHeld) continue;  // held particles pass through each other
+            if ((aJammed && bHeld) || (aHeld && (b.flags & kJammed))) continue;
+            const double h = now - b.t;
+            const double t = now + pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay,
+                                                  b.vx - a.vx, b.vy - a.vy, a.r + b.r);
+            // Only a collision before q's own scheduled collision can happen as predicted: at
+            // that time q changes course or is predicted again against everything around it,
+            // i included (Smallenburg 2022). Skipping later ones saves stale events.
+            if (!(t < b.nextColl)) continue;
+            if (t < best.time || (t == best.time && best.kind == Kind::Pair && q < best.partner)) {
+                best = {t, q, b.count, Kind::Pair, 0};
+            }
+        }
+        if (count < kBatch) return;
+    }
+}
+
+void ExactStepper::predictCollision(std::uint32_t i, double now) {
+    const Body& a = bodies_[i];
+    const Cold& ac = cold_[i];
+    // Where i is now. Its stored position stays that of its last velocity change: re-deriving
+    // it at every cell face would add a rounding error per face crossed.
+    const double ha = now - a.t;
+    const double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
+    Event best{kNever, 0, 0, Kind::None, 0};
+
+    if (def_.walls) {
+        // A pinned axis has no room: any velocity across it is absorbed at once.
+        double tw[4] = {kNever, kNever, kNever, kNever};  // left, right, top, bottom
+        if (ac.pinX) {
+            if (a.vx != 0.0) tw[a.vx > 0.0 ? 1 : 0] = 0.0;
+        } else {
+            tw[0] = wallImpactTime(ax, a.vx, a.r, -1.0);
+            tw[1] = wallImpactTime(ax, a.vx, def_.width - a.r, 1.0);
+        }
+        if (ac.pinY) {
+            if (a.vy != 0.0) tw[a.vy > 0.0 ? 3 : 2] = 0.0;
+        } else {
+            tw[2] = wallImpactTime(ay, a.vy, a.r, -1.0);
+            tw[3] = wallImpactTime(ay, a.vy, def_.height - a.r, 1.0);
+        }
+        for (std::int8_t side = 0; side < 4; ++side) {
+            // Durations >= 0 added to the current time: never an event in the past.
+            if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
+        }
+    }
+    std::uint32_t around[9];
+    int count = 0;
+    for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        for (std::int64_t dx = -1; dx <= 1; ++dx) {
+            const std::uint32_t c = cells_.cell(ac.kx + dx, ac.ky + dy);
+            if (c != CellList::kNone) around[count++] = c;
+        }
+    }
+    scanCells(i, now, ax, ay, around, count, best);
+    cold_[i].coll = best;
+    bodies_[i].nextColl = best.time;
+    queue_.update(2 * i, best.time);
+}
+
+void ExactStepper::predictCell(std::uint32_t i, double now) {
+    const Body& a = bodies_[i];
+    const Cold& ac = cold_[i];
+    const double ha = now - a.t;
+    const double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
+    double best = kNever;
+    std::int8_t side = 0;
+    // With walls the outer faces are never crossed (the wall comes first).
+    int face;
+    const double tx = slabExitTime(ax, a.vx, cells_.faceX(ac.kx) - skinX_,
+                                   cells_.faceX(ac.kx + 1) + skinX_, face);
+    const bool outerX =
+        !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
+    if (face != 0 && !outerX) {
+        best = tx;
+        side = face < 0 ? 0 : 1;
+    }
+    const double ty = slabExitTime(ay, a.vy, cells_.faceY(ac.ky) - skinY_,
+                                   cells_.faceY(ac.ky + 1) + skinY_, face);
+    const bool outerY =
+        !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
+    if (face != 0 && !outerY && ty < best) {
+        best = ty;
+        side = face < 0 ? 2 : 3;
+    }
+    cold_[i].cellSide = side;
+    queue_.update(2 * i + 1, now + best);
+}
+
+bool ExactStepper::collidedWithin(const Body& b, double now) {
+    // t is the time of b's last velocity change; count > 0 says there was one since the last
+    // rebuild (t = 0 at a rebuild is not a collision).
+    return b.count > 0 && now - b.t < kContactDuration;
+}
+
+double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const {
+    const double e = def_.restitution;
+    if (e >= 1.0 || recent) return 1.0;
+    if (impactSpeed >= kElasticBelowSpeed) return e;
+    return 1.0 - (1.0 - e) * (impactSpeed / kElasticBelowSpeed);
+}
+
+void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& counters) {
+    const std::uint32_t j = ev.partner;
+    __builtin_prefetch(&cold_[j]);
+    queue_.prefetch(2 * j);
+    Body& a = bodies_[i];
+    Body& b = bodies_[j];
+    if (b.count != ev.partnerCount) {
+        ++stats_.stale;  // j changed course after this was predicted
+        predictCollision(i, ev.time);
+        return;
+    }
+    ++stats_.pairs;
+    const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
+    advance(a, ev.time);
+    advance(b, ev.time);
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double d = std::sqrt(dx * dx + dy * dy);
+    maxOverlap_ = std::max(maxOverlap_, a.r + b.r - d);
+    Normal n;
+    if (d > 0.0 && std::isfinite(dx / d) && std::isfinite(dy / d)) {
+        n = {dx / d, dy / d};
+    } else {
+        n = coincidentNormal(ids_[i], ids_[j]);
+    }
+    const double approach = (a.vx - b.vx) * n.x + (a.vy - b.vy) * n.y;
+    const double e = effectiveRestitution(approach, recent);
+    const bool hit = def_.friction > 0.0
+                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
+                                              cold_[i].m, cold_[j].m, n, e, def_.friction)
+                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
+                                               cold_[i].m, cold_[j].m, n, e, 0.0);
+    if (hit) {
+        ++counters.collisions;
+        ++a.count;
+        ++b.count;
+        if ((b.flags & kHeld) && ++cold_[i].heldHits >= kJamLimit) a.flags |= kJammed;
+        if ((a.flags & kHeld) && ++cold_[j].heldHits >= kJamLimit) b.flags |= kJammed;
+        if (log_) log_->push_back({ev.time, order_[i], order_[j]});
+    }
+    predictCollision(i, ev.time);
+    predictCollision(j, ev.time);
+    predictCell(i, ev.time);
+    predictCell(j, ev.time);
+}
+
+void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
+    Body& a = bodies_[i];
+    const bool recent = collidedWithin(a, ev.time);
+    advance(a, ev.time);
+    ++stats_.walls;
+    const bool alongX = ev.side < 2;
+    double& v = alongX ? a.vx : a.vy;
+    double& vt = alongX ? a.vy : a.vx;
+    const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
+    const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
+    double dv = 0.0;
+    if (a.flags & kHeld) {
+        // A held particle stops moving across the wall; its owner sets its velocity again.
+        if (outward * v > 0.0) v = 0.0;
+    } else if (pinned) {
+        dv = std::abs(v);
+        v = 0.0;
+    } else {
+        double out = outward * v;
+        const double e = effectiveRestitution(out, recent);
+        dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
+                                 : reboundOffWall<false>(out, vt, e, 0.0);
+        v = outward * out;
+    }
+    if (dv > 0.0) {
+        ++counters.wallCollisions;
+        counters.wallImpulse += cold_[i].m * dv;
+        if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
+    }
+    ++a.count;
+    predictCollision(i, ev.time);
+    predictCell(i, ev.time);
+}
+
+void ExactStepper::handleCell(std::uint32_t i, double now) {
+    Cold& a = cold_[i];
+    ++stats_.cells;
+    // The cells that just came into i's 3 × 3 neighbourhood: the far column (or row) in the
+    // direction of motion. Everything else around i was searched by its last full prediction,
+    // whose earliest result is still scheduled, so only these three can bring an earlier event.
+    std::int64_t fx[3], fy[3];
+    switch (cold_[i].cellSide) {
+        case 0:
+            --a.kx;
+            fx[0] = fx[1] = fx[2] = a.kx - 1;
+            fy[0] = a.ky - 1, fy[1] = a.ky, fy[2] = a.ky + 1;
+            break;
+        case 1:
+            ++a.kx;
+            fx[0] = fx[1] = fx[2] = a.kx + 1;
+            fy[0] = a.ky - 1, fy[1] = a.ky, fy[2] = a.ky + 1;
+            break;
+        case 2:
+            --a.ky;
+            fy[0] = fy[1] = fy[2] = a.ky - 1;
+            fx[0] = a.kx - 1, fx[1] = a.kx, fx[2] = a.kx + 1;
+            break;
+        default:
+            ++a.ky;
+            fy[0] = fy[1] = fy[2] = a.ky + 1;
+            fx[0] = a.kx - 1, fx[1] = a.kx, fx[2] = a.kx + 1;
+            break;
+    }
+    cells_.erase(i);
+    cells_.insert(i, cells_.cell(a.kx, a.ky));
+    predictCell(i, now);
+
+    const Body& b = bodies_[i];
+    const double h = now - b.t;
+    const double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
+    Event best = cold_[i].coll;
+    std::uint32_t fresh[3];
+    int count = 0;
+    for (int k = 0; k < 3; ++k) {
+        const std::uint32_t c = cells_.cell(fx[k], fy[k]);
+        if (c != CellList::kNone) fresh[count++] = c;
+    }
+    scanCells(i, now, ax, ay, fresh, count, best);
+    if (best.time < cold_[i].coll.time) {
+        cold_[i].coll = best;
+        bodies_[i].nextColl = best.time;
+        queue_.update(2 * i, best.time);
+    }
+}
+
+void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
+    std::uint64_t processed = 0;
+    for (;;) {
+        const EventQueue::Entry top = queue_.top();
+        if (!(top.time <= tEnd)) break;
+        if (++processed > budget) {
+            stats_.budgetExhausted = true;
+            stale_ = true;  // fly the rest freely; the next step rebuilds
+            break;
+        }
+        if (++eventsSinceSort_ > kResortEvery * bodies_.size()) {
+            // Particles drift away from the neighbours they were stored next to; restoring
+            // cell order keeps each 3 × 3 search in a few cache lines. Indices only change:
+            // no position, velocity or event time is touched.
+            sortByCell(true);
+            eventsSinceSort_ = 0;
+            continue;
+        }
+        // Events come in time order, which is random in space: the next particle's lines are
+        // almost never in cache. Start fetching them while this event is handled.
+        if (const std::uint32_t next = queue_.likelyNext(); next != UINT32_MAX) {
+            __builtin_prefetch(&bodies_[next / 2]);
+            __builtin_prefetch(&cold_[next / 2]);
+            queue_.prefetch(next);
+        }
+        const std::uint32_t i = top.key / 2;
+        if (top.key % 2 == 1) {
+            handleCell(i, top.time);
+            continue;
+        }
+        const Event ev = cold_[i].coll;
+        switch (ev.kind) {
+            case Kind::Pair:
+                handlePair(i, ev, counters);
+                break;
+            case Kind::Wall:
+                handleWall(i, ev, counters);
+                break;
+            case Kind::None:
+                return;  // unreachable: None events are at +infinity
+        }
+    }
+}
+
+void ExactStepper::sync(ParticleArrays& p, double t) {
+    const std::size_t n = bodies_.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Body& b = bodies_[k];
+        const std::uint32_t i = order_[k];
+        const double h = t - b.t;
+        p.x[i] = b.x + b.vx * h;
+        p.y[i] = b.y + b.vy * h;
+        p.vx[i] = b.vx;
+        p.vy[i] = b.vy;
+    }
+    snapshot_.x = p.x;
+    snapshot_.y = p.y;
+    snapshot_.vx = p.vx;
+    snapshot_.vy = p.vy;
+    snapshot_.invMass = p.invMass;
+    snapshot_.mass = p.mass;
+    snapshot_.radius = p.radius;
+    snapshot_.id = p.id;
+}
+
+void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
+                        StepCounters& counters) {
+    StageTimer total(profile.total);
+    if (stale_ || !matches(p, def)) {
+        StageTimer t(profile.findPairs);
+        rebuild(p, def);
+    }
+    stats_ = {};
+    for (Body& b : bodies_)
+        b.flags &= ~kJammed;
+    for (Cold& c : cold_)
+        c.heldHits = 0;
+    maxOverlap_ = counters.maxOverlap;
+    const double tEnd = clock_ + dt;
+    const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
+    {
+        StageTimer t(profile.resolve);
+        runEvents(tEnd, counters, budget);
+    }
+    clock_ = tEnd;
+    counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
+    counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale;
+    ++counters.steps;
+    StageTimer t(profile.move);
+    sync(p, tEnd);
+}
+
+}  // namespace psb::exact
