@@ -3,7 +3,7 @@
 # three trees (docs/testing.md explains each and lists measured durations):
 #   release  build/test   Release: unit, rendering, end-to-end under Xvfb, the soak run
 #   asan     build/asan   ASan + UBSan + LeakSanitizer, -O1 -g: the same tests except those
-#                         labelled e2e, bench or soak (why: see below)
+#                         labelled e2e or bench (why: see below)
 #   fuzz     build/fuzz   clang + libFuzzer: each fuzz target for PSB_FUZZ_SECONDS (default 60)
 # Any failure, sanitizer report or fuzzer crash fails the script.
 #   scripts/test.sh [CTEST ARGS...]     extra arguments go to the release and asan ctest runs
@@ -38,11 +38,9 @@ if [[ $stages == *" asan "* ]]; then
   # Left out, and why:
   #   e2e   drives the real program under Xvfb with xdotool and timed waits tuned to Release
   #         frame times; the code it exercises runs under the sanitizers in app_tests.
-  #   bench timings under ASan mean nothing; the benchmark smoke run is in the release stage.
-  #   soak  10^7 particle-steps per mode is minutes in Release and several times that under
-  #         ASan; the release stage runs it, and the same step code runs here in every other
-  #         core test (the extremes matrix included).
-  ctest --test-dir build/asan --output-on-failure -j"$jobs" -LE 'e2e|bench|soak' "$@"
+  #   bench timings under ASan mean nothing (and the tree is built without benchmarks); the
+  #         benchmark smoke run is in the release stage.
+  ctest --test-dir build/asan --output-on-failure -j"$jobs" -LE 'e2e|bench' "$@"
 fi
 
 if [[ $stages == *" fuzz "* ]]; then
