@@ -6,35 +6,7 @@
 #include <particle_sandbox/error.hpp>
 
 namespace psb::cli {
-namespace {
-
-/// THREADS — the single place where --threads reaches the world. A core without a thread
-/// setter (World::setThreads) runs single-threaded whatever was asked, and the report records
-/// the request; a core with one gets the count here. The template makes the check happen at
-/// compile time, so this file builds against either core.
-template <typename W>
-void applyThreads(W& world, int threads) {
-    if constexpr (requires { world.setThreads(threads); }) {
-        world.setThreads(threads);
-    } else {
-        (void)world;
-        (void)threads;
-    }
-}
-
-/// The broadphase the world used, `auto` resolved: World::broadPhaseInUse() where the core has
-/// it; otherwise all-pairs, the only broadphase such a core has.
-template <typename W>
-BroadPhaseKind broadphaseUsed(const W& world) {
-    if constexpr (requires { world.broadPhaseInUse(); }) {
-        return world.broadPhaseInUse();
-    } else {
-        const BroadPhaseKind asked = world.solver().broadphase;
-        return asked == BroadPhaseKind::Auto ? BroadPhaseKind::AllPairs : asked;
-    }
-}
-
-}  // namespace
+namespace {}  // namespace
 
 SolverSettings effectiveSolver(const Scene& scene, const RunOptions& o) {
     SolverSettings s = scene.solver;
@@ -52,14 +24,14 @@ SolverSettings effectiveSolver(const Scene& scene, const RunOptions& o) {
     };
     SolverSettings mode{};
     mode.mode = s.mode;
-    if (auto why = refused(mode))
-        throw UsageError("--mode " + std::string(toString(s.mode)) +
-                         ": not available in this build (" + *why + ")");
+    if (auto why = refused(mode)) {
+        throw UsageError("--mode " + std::string(toString(s.mode)) + ": refused (" + *why + ")");
+    }
     SolverSettings broad{};
     broad.broadphase = s.broadphase;
     if (auto why = refused(broad)) {
-        throw UsageError("--broadphase " + std::string(toString(s.broadphase)) +
-                         ": not available in this build (" + *why + ")");
+        throw UsageError("--broadphase " + std::string(toString(s.broadphase)) + ": refused (" +
+                         *why + ")");
     }
     if (auto why = refused(s)) throw UsageError("solver settings refused (" + *why + ")");
     return s;
@@ -81,7 +53,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     Scene s = scene;
     s.solver = effectiveSolver(scene, options);
     world = makeWorld(s);
-    applyThreads(world, options.threads);
+    world.setThreads(options.threads);
 
     RunReport r;
     r.solver = s.solver;
@@ -98,7 +70,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     }
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    r.broadphaseUsed = broadphaseUsed(world);  // after the run: what the steps used
+    r.broadphaseUsed = world.broadPhaseInUse();  // after the run: what the steps used
     const StepCounters& c = world.counters();
     r.simTime = world.time();
     r.collisions = c.collisions;

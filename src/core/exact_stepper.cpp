@@ -77,6 +77,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     for (std::uint32_t i = 0; i < n; ++i) {
         cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
     }
+    recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
@@ -154,7 +155,11 @@ void ExactStepper::setUpGrid() {
         double side = std::max(minSide, kCellSpacings * std::sqrt(area / std::max(n, 1u)));
         side = std::max(side, std::sqrt(area / maxCells));
         const auto count = [&](double extent) {
-            return std::max<std::int64_t>(1, static_cast<std::int64_t>(extent / side));
+            // Three cells or fewer: the 3 × 3 search of the middle one already sees the whole
+            // width, so one cell sees as much from everywhere and has no faces to cross (in a
+            // nearly empty box, cell moves would otherwise outnumber collisions two to one).
+            const auto k = static_cast<std::int64_t>(extent / side);
+            return k <= 3 ? std::int64_t{1} : k;
         };
         const std::int64_t nx = count(def_.width), ny = count(def_.height);
         cells_.reset(0.0, 0.0, def_.width / static_cast<double>(nx),
@@ -196,6 +201,37 @@ void ExactStepper::setUpGrid() {
     }
 }
 
+void ExactStepper::recordPlacedOverlaps() {
+    // A pair that overlaps here was placed so from outside (spawned, dragged, clamped into a
+    // box too small for its lattice): rounding alone leaves overlaps of a few ulps only. Its
+    // contact distance is the distance it was placed at, until it is found apart (scanCells).
+    // Colliding it at whatever distance it happens to have instead would be a ratchet: every
+    // time it drifts apart the gain is kept, so in a box too full for its discs the overlaps
+    // are squeezed out into the gaps of everyone else until the pile jams and the collision
+    // rate diverges.
+    overlapContact_.clear();
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Body& a = bodies_[i];
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+                const std::uint32_t c = cells_.cell(cold_[i].kx + dx, cold_[i].ky + dy);
+                if (c == CellList::kNone) continue;
+                for (std::uint32_t q = cells_.head(c); q != CellList::kNone; q = cells_.next(q)) {
+                    Body& b = bodies_[q];
+                    if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) continue;
+                    const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
+                    const double d2 = rx * rx + ry * ry;
+                    if (!(d2 < sigma * sigma)) continue;
+                    overlapContact_[pairKey(order_[i], order_[q])] = std::sqrt(d2);
+                    bodies_[i].flags |= kPlacedOverlapping;
+                    b.flags |= kPlacedOverlapping;
+                }
+            }
+        }
+    }
+}
+
 void ExactStepper::advance(Body& b, double t) const {
     const double h = t - b.t;
     if (h != 0.0) {
@@ -206,7 +242,7 @@ void ExactStepper::advance(Body& b, double t) const {
 }
 
 void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
-                             const std::uint32_t* cells, int cellCount, Event& best) const {
+                             const std::uint32_t* cells, int cellCount, Event& best) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
@@ -236,8 +272,20 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             if (aHeld && bHeld) continue;  // held particles pass through each other
             if ((aJammed && bHeld) || (aHeld && (b.flags & kJammed))) continue;
             const double h = now - b.t;
-            const double t = now + pairImpactTime(b.x + b.vx * h - ax, b.y + b.vy * h - ay,
-                                                  b.vx - a.vx, b.vy - a.vy, a.r + b.r);
+            const double rx = b.x + b.vx * h - ax, ry = b.y + b.vy * h - ay;
+            double sigma = a.r + b.r;
+            if (a.flags & b.flags & kPlacedOverlapping) {
+                const auto it = overlapContact_.find(pairKey(order_[i], order_[q]));
+                if (it != overlapContact_.end()) {
+                    // Apart at last: from now on the pair is an ordinary one.
+                    if (rx * rx + ry * ry >= sigma * sigma) {
+                        overlapContact_.erase(it);
+                    } else {
+                        sigma = it->second;
+                    }
+                }
+            }
+            const double t = now + pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma);
             // Only a collision before q's own scheduled collision can happen as predicted: at
             // that time q changes course or is predicted again against everything around it,
             // i included (Smallenburg 2022). Skipping later ones saves stale events.

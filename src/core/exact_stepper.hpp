@@ -59,6 +59,10 @@
 // Rules for invalid states (Bannerman et al. 2014), so rounding never decides:
 //   - no event is scheduled before the current time (times of impact are durations >= 0);
 //   - an overlapping pair collides at once if it approaches and is left alone if it separates;
+//   - but a pair already overlapping at a rebuild was placed so (rounding leaves a few ulps at
+//     most): its contact distance is the distance it was placed at until a prediction finds it
+//     apart. The rule above alone would be a ratchet (every drift apart kept), squeezing the
+//     overlaps of a box too full for its discs into the others' gaps until the pile jams;
 //   - a disc past a wall collides with it at once if moving outward, else is left alone;
 //   - a collision whose pair turns out not to approach at its instant changes nothing.
 // Ties: events at the same instant are handled in key order (particle index, collision before
@@ -94,6 +98,7 @@
 // Gravity is refused in this mode by World (flights would be parabolas, not lines).
 
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include <particle_sandbox/particle_arrays.hpp>
@@ -172,6 +177,7 @@ class ExactStepper {
     };
     static constexpr std::uint32_t kHeld = 1;    // kinematic: infinite mass
     static constexpr std::uint32_t kJammed = 2;  // passes through held particles (jam guard)
+    static constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
     struct Event {
         double time;
         std::uint32_t partner;       // pair: the other particle
@@ -198,7 +204,11 @@ class ExactStepper {
     [[nodiscard]] double bucketWidth() const;
     void advance(Body& b, double t) const;
     void scanCells(std::uint32_t i, double now, double ax, double ay, const std::uint32_t* cells,
-                   int cellCount, Event& best) const;
+                   int cellCount, Event& best);
+    void recordPlacedOverlaps();
+    [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
+        return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+    }
     void predictCollision(std::uint32_t i, double now);
     void predictCell(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
@@ -225,6 +235,9 @@ class ExactStepper {
     double maxOverlap_ = 0.0;
     EventStats stats_;
     std::vector<CollisionRecord>* log_ = nullptr;
+    // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
+    // storage indices (order_), with the contact distance they keep until they are found apart.
+    std::unordered_map<std::uint64_t, double> overlapContact_;
 
     // What the last step left in the world's arrays, to detect any change made between steps.
     ParticleArrays snapshot_;

@@ -290,12 +290,11 @@ void checkWorldAccepts(const Reader& r, const WorldDef& def, const SolverSetting
     };
     SolverSettings mode{};
     mode.mode = s.mode;
-    if (auto why = refusal(mode))
-        r.fail("solver.mode", "not available in this build (" + *why + ")");
+    if (auto why = refusal(mode)) r.fail("solver.mode", "refused (" + *why + ")");
     SolverSettings broad{};
     broad.broadphase = s.broadphase;
     if (auto why = refusal(broad)) {
-        r.fail("solver.broadphase", "not available in this build (" + *why + ")");
+        r.fail("solver.broadphase", "refused (" + *why + ")");
     }
     if (auto why = refusal(s)) r.fail("solver", "refused (" + *why + ")");
 }

@@ -91,9 +91,12 @@ TEST(Runner, ModesTheWorldRefusesAreUsageErrorsNamingTheOption) {
     RunOptions o;
     o.mode = StepMode::Exact;
     try {
-        (void)run(R"({"version": 1})", 1.0, o);
+        (void)run(R"({"version": 1, "world": {"gravity": [0, 9.81]}})", 1.0, o);
+        FAIL() << "exact mode with gravity was accepted";
     } catch (const UsageError& e) {
-        EXPECT_EQ(std::string(e.what()).rfind("--mode exact: not available in this build (", 0), 0u)
+        EXPECT_EQ(
+            std::string(e.what()).rfind("--mode exact: refused (World: gravity must be zero", 0),
+            0u)
             << e.what();
     }
 }

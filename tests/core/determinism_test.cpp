@@ -9,32 +9,12 @@
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "test_util.hpp"
+
 namespace psb {
 namespace {
 
-std::uint64_t fnv(std::uint64_t h, const void* data, std::size_t bytes) {
-    const auto* b = static_cast<const unsigned char*>(data);
-    for (std::size_t k = 0; k < bytes; ++k)
-        h = (h ^ b[k]) * 1099511628211ull;
-    return h;
-}
-
-/// Bits of every particle (in storage order, with its id) and of the counters.
-std::uint64_t stateHash(const World& w) {
-    const ParticleArrays& p = w.particles();
-    std::uint64_t h = 1469598103934665603ull;
-    h = fnv(h, p.x.data(), p.size() * sizeof(double));
-    h = fnv(h, p.y.data(), p.size() * sizeof(double));
-    h = fnv(h, p.vx.data(), p.size() * sizeof(double));
-    h = fnv(h, p.vy.data(), p.size() * sizeof(double));
-    h = fnv(h, p.id.data(), p.size() * sizeof(ParticleId));
-    const StepCounters& c = w.counters();
-    h = fnv(h, &c.collisions, sizeof c.collisions);
-    h = fnv(h, &c.wallCollisions, sizeof c.wallCollisions);
-    h = fnv(h, &c.wallImpulse, sizeof c.wallImpulse);
-    h = fnv(h, &c.maxOverlap, sizeof c.maxOverlap);
-    return h;
-}
+using test::stateHash;
 
 struct Scene {
     std::size_t n = 10000;

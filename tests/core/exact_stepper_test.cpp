@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
+#include <random>
 #include <string>
 
 #include <particle_sandbox/diagnostics.hpp>
@@ -156,23 +158,7 @@ TEST(ExactMode, PerfectlyInelasticPairLeavesTogetherAndTheStepEnds) {
 }
 
 TEST(ExactMode, SameWorldSameStepsSameBits) {
-    const auto hash = [](const World& w) {
-        std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the raw state
-        const auto mix = [&](double v) {
-            std::uint64_t bits;
-            std::memcpy(&bits, &v, sizeof bits);
-            for (int k = 0; k < 8; ++k)
-                h = (h ^ ((bits >> (8 * k)) & 0xff)) * 1099511628211ull;
-        };
-        const ParticleArrays& p = w.particles();
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            mix(p.x[i]);
-            mix(p.y[i]);
-            mix(p.vx[i]);
-            mix(p.vy[i]);
-        }
-        return h;
-    };
+    const auto hash = [](const World& w) { return test::stateHash(w); };
     World a = exactGas(300, 50.0, 0.5, 1.0, 0.8, 17);
     World b = exactGas(300, 50.0, 0.5, 1.0, 0.8, 17);
     for (int k = 0; k < 50; ++k) {
@@ -349,6 +335,107 @@ TEST(ExactMode, OverlappingSeparatingPairIsLeftAlone) {
     EXPECT_EQ(w.counters().collisions, 0u);
     EXPECT_EQ(w.get(a).velocity.x(), -1.0);
     EXPECT_EQ(w.get(b).velocity.x(), 1.0);
+}
+
+TEST(ExactMode, PairPlacedOverlappingKeepsTheDistanceItWasPlacedAt) {
+    // Two discs of radius 1 placed 1.5 m apart in a box 3.8 m long: there is no room for them
+    // to be 2 m apart. They keep colliding at 1.5 m, with 0.3 m to move in. Colliding them at
+    // whatever distance they drifted to instead would close that room collision by collision
+    // until they collided infinitely often.
+    WorldDef def;
+    def.width = 3.8;
+    def.height = 10.0;
+    World w(def, {.mode = StepMode::Exact});
+    const ParticleId a = w.add({.position = {1.0, 5.0}});
+    const ParticleId b = w.add({.position = {2.5, 5.0}, .velocity = {1.0, 0.0}});
+    double closest = 2.0;
+    for (int s = 0; s < 1000; ++s) {
+        w.step(0.01);
+        closest = std::min(closest, w.get(b).position.x() - w.get(a).position.x());
+    }
+    EXPECT_GE(closest, 1.5 - 1e-12);
+    // One round trip of the momentum takes 0.6 s (b to its wall and back, then a bounces off
+    // its wall, where it already is, straight back into b): two pair and two wall collisions.
+    EXPECT_GE(w.counters().collisions, 30u);
+    EXPECT_LE(w.counters().collisions, 36u);
+    EXPECT_GE(w.counters().wallCollisions, 30u);
+    EXPECT_LE(w.counters().wallCollisions, 36u);
+    EXPECT_LT(w.counters().events, 200u);
+    EXPECT_NEAR(std::abs(w.get(a).velocity.x()) + std::abs(w.get(b).velocity.x()), 1.0, 1e-12);
+}
+
+TEST(ExactMode, PairPlacedOverlappingIsOrdinaryOnceApart) {
+    // Placed 1.5 m apart, b flies off, bounces off a held disc and comes back: the pair has
+    // been apart, so it now touches at 2 m (at t = 2.5 s), not at the 1.5 m it was placed at.
+    World w = openExactWorld();
+    const ParticleId a = w.add({.position = {0.0, 0.0}});
+    const ParticleId b = w.add({.position = {1.5, 0.0}, .velocity = {1.0, 0.0}});
+    const ParticleId wall = w.add({.position = {5.0, 0.0}});
+    w.setKinematic(wall, true);
+    w.step(2.6);
+    EXPECT_EQ(w.counters().collisions, 2u);
+    EXPECT_EQ(w.get(b).velocity.x(), 0.0);
+    EXPECT_EQ(w.get(a).velocity.x(), -1.0);
+    EXPECT_NEAR(w.get(b).position.x(), 2.0, 1e-12);
+    EXPECT_NEAR(w.get(a).position.x(), -0.1, 1e-12);
+}
+
+/// A hexagonal lattice at packing fraction 0.85 in a box `cols` spacings wide and `rows` row
+/// pitches high: with walls the rows do not fit (a staggered row needs cols − 1/2 spacings plus
+/// a diameter), so the discs at the row ends are clamped into the box overlapping their
+/// neighbours by up to 0.42 m, and no arrangement of the discs without overlap is near.
+World boxTooFullForItsLattice(int cols, int rows, double e, std::uint32_t seed) {
+    const double r = 1.0;
+    const double spacing = std::sqrt(2.0 * std::numbers::pi * r * r / (std::sqrt(3.0) * 0.85));
+    WorldDef def;
+    def.width = cols * spacing;
+    def.height = rows * spacing * std::sqrt(3.0) / 2.0;
+    def.restitution = e;
+    World w(def, {.mode = StepMode::Exact});
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g(0.0, 1.0);
+    for (int row = 0; row < rows; ++row) {
+        for (int col = 0; col < cols; ++col) {
+            const double x = (col + 0.25 + 0.5 * (row % 2)) * spacing;
+            const double y = (row + 0.5) * spacing * std::sqrt(3.0) / 2.0;
+            w.add({.position = {x, y}, .velocity = {g(rng), g(rng)}, .radius = r});
+        }
+    }
+    return w;
+}
+
+TEST(ExactMode, BoxTooFullForItsDiscsKeepsAFiniteCollisionRate) {
+    // The overlaps the discs were placed with must not be squeezed out into the gaps of the
+    // others until the pile jams (the collision rate then diverges and a step never ends).
+    World w = boxTooFullForItsLattice(6, 6, 1.0, 3);
+    const double k0 = kineticEnergy(w);
+    std::uint64_t worstEvents = 0;
+    for (int s = 0; s < 5000; ++s) {
+        const std::uint64_t before = w.counters().events;
+        w.step(0.01);
+        worstEvents = std::max(worstEvents, w.counters().events - before);
+    }
+    // ~15 collisions per disc per second at these gaps: under 1 event per disc per step on
+    // average; bursts stay within a few times that.
+    EXPECT_LT(worstEvents, 36u * 10u);
+    EXPECT_GT(w.counters().collisions, 5000u);
+    EXPECT_LT(relErr(kineticEnergy(w), k0), 1e-10);
+}
+
+TEST(ExactMode, BoxTooFullForItsDiscsWithAHeldDiscOrInelasticSettles) {
+    World held = boxTooFullForItsLattice(6, 6, 1.0, 4);
+    held.setKinematic(held.particles().id[14], true);
+    held.setVelocity(held.particles().id[14], {0.0, 0.0});
+    World inelastic = boxTooFullForItsLattice(6, 6, 0.5, 4);
+    for (World* w : {&held, &inelastic}) {
+        std::uint64_t worstEvents = 0;
+        for (int s = 0; s < 2000; ++s) {
+            const std::uint64_t before = w->counters().events;
+            w->step(0.01);
+            worstEvents = std::max(worstEvents, w->counters().events - before);
+        }
+        EXPECT_LT(worstEvents, 36u * 10u) << "e " << w->def().restitution;
+    }
 }
 
 TEST(ExactMode, NewtonsCradlePassesTheImpulseDownTheLine) {

@@ -2,41 +2,22 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
 #include <cstdint>
 #include <filesystem>
 
 #include <particle_sandbox/scene.hpp>
 
+#include "test_util.hpp"
+
 namespace psb {
 namespace {
 
 /// FNV-1a over the bits of every position and velocity, in storage order.
-std::uint64_t stateHash(const World& w) {
-    std::uint64_t h = 0xcbf29ce484222325ULL;
-    auto mix = [&h](double v) {
-        std::uint64_t bits = std::bit_cast<std::uint64_t>(v);
-        for (int k = 0; k < 8; ++k) {
-            h ^= bits & 0xff;
-            h *= 0x100000001b3ULL;
-            bits >>= 8;
-        }
-    };
-    const ParticleArrays& p = w.particles();
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        mix(p.x[i]);
-        mix(p.y[i]);
-        mix(p.vx[i]);
-        mix(p.vy[i]);
-    }
-    return h;
-}
-
 std::uint64_t hashAfter(const Scene& scene, int steps) {
     World w = makeWorld(scene);
     for (int k = 0; k < steps; ++k)
         w.step();
-    return stateHash(w);
+    return test::stateHash(w);
 }
 
 TEST(SceneDeterminism, TheSameSceneGivesABitIdenticalStateAfterManySteps) {

@@ -134,18 +134,19 @@ TEST(SceneReader, OverlapMessageNamesTheLowestPairEvenAmongMany) {
               "radii sum to 10 m)");
 }
 
-TEST(SceneReader, ModesAndBroadphasesTheWorldRefusesAreReportedAtTheirPath) {
-    // Until the exact mode and the grid/quadtree broadphases exist, World refuses them; the
-    // loader must say so at the JSON path. Once they exist they simply load.
+TEST(SceneReader, ASolverTheWorldRefusesIsReportedAtItsPath) {
+    // The event-driven mode refuses gravity; the loader says so at solver.mode.
+    const std::string message = messageOf(
+        R"({"version": 1, "world": {"gravity": [0, 9.81]}, "solver": {"mode": "exact"}})");
+    const std::string want = "s.json: solver.mode: refused (World: gravity must be zero";
+    EXPECT_EQ(message.substr(0, want.size()), want) << message;
+    // Every mode and broadphase name the format lists loads in a world that allows it.
     for (const char* field :
-         {R"("mode": "exact")", R"("broadphase": "grid")", R"("broadphase": "quadtree")"}) {
-        const std::string message =
-            messageOf(std::string(R"({"version": 1, "solver": {)") + field + "}}");
-        if (message == "(loaded)") continue;
-        const std::string path = std::string(field).find("mode") != std::string::npos
-                                     ? "s.json: solver.mode: not available in this build ("
-                                     : "s.json: solver.broadphase: not available in this build (";
-        EXPECT_EQ(message.substr(0, path.size()), path) << message;
+         {R"("mode": "exact")", R"("mode": "substep")", R"("broadphase": "grid")",
+          R"("broadphase": "quadtree")", R"("broadphase": "all-pairs")"}) {
+        EXPECT_EQ(messageOf(std::string(R"({"version": 1, "solver": {)") + field + "}}"),
+                  "(loaded)")
+            << field;
     }
 }
 

@@ -2,6 +2,9 @@
 // Small helpers shared by the core tests.
 
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #include <particle_sandbox/world.hpp>
 
@@ -21,6 +24,32 @@ inline World openWorld(double restitution = 1.0, double friction = 0.0) {
 inline double relErr(double got, double want) {
     const double scale = std::max(std::abs(want), 1e-300);
     return std::abs(got - want) / scale;
+}
+
+/// FNV-1a over raw bytes.
+inline std::uint64_t fnv1a(std::uint64_t h, const void* data, std::size_t bytes) {
+    const auto* b = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < bytes; ++k)
+        h = (h ^ b[k]) * 1099511628211ull;
+    return h;
+}
+
+/// A hash of the bits of every particle's position, velocity and id (in storage order) and of
+/// the running counters: equal hashes mean bit-identical states.
+inline std::uint64_t stateHash(const World& w) {
+    const ParticleArrays& p = w.particles();
+    std::uint64_t h = 1469598103934665603ull;
+    h = fnv1a(h, p.x.data(), p.size() * sizeof(double));
+    h = fnv1a(h, p.y.data(), p.size() * sizeof(double));
+    h = fnv1a(h, p.vx.data(), p.size() * sizeof(double));
+    h = fnv1a(h, p.vy.data(), p.size() * sizeof(double));
+    h = fnv1a(h, p.id.data(), p.size() * sizeof(ParticleId));
+    const StepCounters& c = w.counters();
+    h = fnv1a(h, &c.collisions, sizeof c.collisions);
+    h = fnv1a(h, &c.wallCollisions, sizeof c.wallCollisions);
+    h = fnv1a(h, &c.wallImpulse, sizeof c.wallImpulse);
+    h = fnv1a(h, &c.maxOverlap, sizeof c.maxOverlap);
+    return h;
 }
 
 }  // namespace psb::test

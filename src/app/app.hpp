@@ -1,0 +1,135 @@
+#pragma once
+// The interactive sandbox: a window, a world, and a loop of three verbs.
+//
+//   while running:
+//     handleEvents()   SDL events -> commands on the camera, the interaction, the toggles
+//     update(dt_real)  fixed-step simulation driven by an accumulator (scaled by the time
+//                      speed), the held particle placed at the hand before every step
+//     render()         a const view of the world, the HUD and the overlays, then present
+//
+// The world advances in steps of its solver's dt whatever the frame rate; when a frame is so
+// slow that catching up would take longer than the frame itself, the backlog is dropped (the
+// simulation slows down instead of spiralling). While paused the loop sleeps in
+// SDL_WaitEventTimeout, so an idle paused window costs no CPU, and still redraws after every
+// event so panning, zooming and spawning show.
+//
+// No globals: everything the loop touches is a member.
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <SDL.h>
+
+#include <particle_sandbox/launch.hpp>
+#include <particle_sandbox/world.hpp>
+
+#include "camera.hpp"
+#include "interaction.hpp"
+#include "renderer.hpp"
+#include "text.hpp"
+
+namespace psb::app {
+
+/// The command line, parsed.
+struct AppOptions {
+    std::optional<std::filesystem::path> scene;  ///< scene file to open; the default if none
+    std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Ctrl+S writes
+    int width = 800;                                              ///< window, pixels
+    int height = 800;
+    bool vsync = true;
+    bool startPaused = false;
+    bool arrows = true;        ///< velocity arrows shown at start (A toggles)
+    std::string renderDriver;  ///< SDL render driver name ("software", ...); SDL's choice if empty
+    std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
+    int benchFrames = 300;
+    std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
+};
+
+class App {
+  public:
+    /// Opens the window and loads the scene. Throws std::runtime_error with a message for the
+    /// user when SDL, the fonts or the scene cannot be set up.
+    explicit App(const AppOptions& options);
+    ~App();
+    App(const App&) = delete;
+    App& operator=(const App&) = delete;
+
+    /// Runs until the window is closed or ESC; returns the process exit code.
+    int run();
+    /// Runs the benchmark frames (see AppOptions) and prints mean step and draw times.
+    int runBenchmark();
+
+  private:
+    struct Message {
+        std::string text;
+        double until;  ///< seconds (SDL ticks)
+    };
+
+    void handleEvents();
+    void handleEvent(const SDL_Event& e);
+    void handleKey(const SDL_KeyboardEvent& key);
+    void update(double realSeconds);
+    void render();
+
+    void stepOnce();
+    void spawnRandom();
+    void deleteHeld();
+    void save();
+    void setWorld(World world, std::string name);
+    /// Opens `file` (the built-in scene when nullopt) and makes it current; on failure says
+    /// why and keeps the world as it is.
+    void openScene(const std::optional<std::filesystem::path>& file);
+    void fit();
+    void afterCameraMove();
+    /// Shows `text` on screen for a few seconds and, unless `logPrefix` is null, logs it.
+    void say(std::string text, const char* logPrefix = "[I] ");
+    [[nodiscard]] double now() const;
+    [[nodiscard]] Vec2 pointerWorld() const;
+    [[nodiscard]] LaunchSettings launchSettings() const;
+
+    AppOptions options_;
+    SDL_Window* window_ = nullptr;
+    SDL_Renderer* sdlRenderer_ = nullptr;
+    std::unique_ptr<Font> hudFont_;
+    std::unique_ptr<Font> labelFont_;
+    std::unique_ptr<Renderer> renderer_;
+
+    World world_;
+    std::string sceneName_;
+    std::optional<std::filesystem::path> sceneFile_;  ///< where world_ came from; none = built-in
+    std::vector<std::filesystem::path> presets_;
+    std::size_t preset_ = 0;  ///< the preset P shows next
+    Camera camera_;
+    Interaction interaction_;
+    SpawnSettings spawn_;
+    ViewOptions view_;
+    std::mt19937 rng_;
+
+    bool running_ = true;
+    bool paused_ = false;
+    bool showHelp_ = false;
+    bool stepRequested_ = false;
+    bool panning_ = false;
+    double timeScale_ = 1.0;
+    double accumulator_ = 0.0;
+    Vec2 mouse_ = Vec2::Zero();  ///< pointer, screen pixels
+    std::vector<Message> messages_;
+    std::string title_;
+
+    // Frame statistics, smoothed for display.
+    double fps_ = 0.0;
+    int fpsFrames_ = 0;
+    double fpsSeconds_ = 0.0;
+    double stepMs_ = 0.0;
+    double drawMs_ = 0.0;
+    double lastStepMs_ = 0.0;
+    double lastDrawMs_ = 0.0;
+    DrawStats drawStats_;
+};
+
+}  // namespace psb::app

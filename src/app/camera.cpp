@@ -1,0 +1,47 @@
+#include "camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace psb::app {
+
+void Camera::setViewport(int width, int height) {
+    width_ = std::max(width, 1);
+    height_ = std::max(height, 1);
+}
+
+void Camera::set(double zoom, const Vec2& offset) {
+    if (std::isfinite(zoom) && zoom > 0.0) zoom_ = std::clamp(zoom, minZoom_, maxZoom_);
+    if (offset.allFinite()) offset_ = offset;
+}
+
+void Camera::zoomAbout(const Vec2& screenPoint, double factor) {
+    if (!std::isfinite(factor) || factor <= 0.0 || !screenPoint.allFinite()) return;
+    const Vec2 anchor = screenToWorld(screenPoint);
+    zoom_ = std::clamp(zoom_ * factor, minZoom_, maxZoom_);
+    // Keep `anchor` under `screenPoint`: screenPoint = (anchor - offset) * zoom.
+    offset_ = anchor - screenPoint / zoom_;
+}
+
+void Camera::panPixels(const Vec2& pixels) {
+    if (pixels.allFinite()) offset_ -= pixels / zoom_;
+}
+
+void Camera::fit(double width, double height, double marginPixels, double topInsetPixels) {
+    if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
+        return;
+    }
+    // The inset is given up only when the window is tall enough to spare it.
+    const double inset = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
+    const double usableW = std::max(1.0, width_ - 2.0 * marginPixels);
+    const double usableH = std::max(1.0, height_ - inset - 2.0 * marginPixels);
+    const double z = std::min(usableW / width, usableH / height);
+    minZoom_ = z / 50.0;
+    maxZoom_ = z * 500.0;
+    zoom_ = z;
+    // The box's centre maps to the centre of the area below the inset.
+    const Vec2 centre(width / 2.0, height / 2.0);
+    offset_ = centre - Vec2(width_ / 2.0, inset + (height_ - inset) / 2.0) / zoom_;
+}
+
+}  // namespace psb::app

@@ -1,0 +1,58 @@
+#pragma once
+// The camera: the one place where coordinates cross between the screen (pixels, origin at the
+// window's top-left, y down) and the world (metres, origin at the box's top-left, y down).
+//
+//   screen = (world - offset) * zoom        world = screen / zoom + offset
+//
+// This is the original program's mapping; what changes is how zoom moves. The original added
+// ±0.1 per wheel notch about the top-left corner and could drift to ~1e-17, after which nothing
+// could be grabbed. Here zoom is multiplicative, happens about a chosen screen point (the
+// cursor), and is clamped to limits set relative to the zoom that fits the box.
+
+#include <particle_sandbox/math.hpp>
+
+namespace psb::app {
+
+class Camera {
+  public:
+    /// Size of the drawable area, pixels (> 0; smaller values are clamped to 1).
+    void setViewport(int width, int height);
+    [[nodiscard]] int viewportWidth() const { return width_; }
+    [[nodiscard]] int viewportHeight() const { return height_; }
+
+    [[nodiscard]] Vec2 worldToScreen(const Vec2& world) const { return (world - offset_) * zoom_; }
+    [[nodiscard]] Vec2 screenToWorld(const Vec2& screen) const { return screen / zoom_ + offset_; }
+    /// A world length (metres) in pixels, and back.
+    [[nodiscard]] double toScreen(double metres) const { return metres * zoom_; }
+    [[nodiscard]] double toWorld(double pixels) const { return pixels / zoom_; }
+
+    /// Pixels per metre.
+    [[nodiscard]] double zoom() const { return zoom_; }
+    /// World point shown at the screen's top-left corner, metres.
+    [[nodiscard]] const Vec2& offset() const { return offset_; }
+    [[nodiscard]] double minZoom() const { return minZoom_; }
+    [[nodiscard]] double maxZoom() const { return maxZoom_; }
+
+    /// Sets zoom and offset directly (zoom clamped to the limits).
+    void set(double zoom, const Vec2& offset);
+    /// Multiplies the zoom by `factor`, clamped to the limits, keeping the world point under
+    /// `screenPoint` where it is on screen.
+    void zoomAbout(const Vec2& screenPoint, double factor);
+    /// Moves the view so the world slides by `pixels` on screen (a drag to the right moves the
+    /// world to the right).
+    void panPixels(const Vec2& pixels);
+    /// Centres a `width` × `height` metre box in the viewport with `marginPixels` around it,
+    /// below a band of `topInsetPixels` kept free (for the HUD), and resets the zoom limits
+    /// around that zoom (1/50 to 500 times it).
+    void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0);
+
+  private:
+    int width_ = 800;
+    int height_ = 800;
+    double zoom_ = 1.0;
+    Vec2 offset_ = Vec2::Zero();
+    double minZoom_ = 1e-3;
+    double maxZoom_ = 1e3;
+};
+
+}  // namespace psb::app

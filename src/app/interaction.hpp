@@ -1,0 +1,107 @@
+#pragma once
+// What the left mouse button does to the world, kept free of SDL so it can be tested without a
+// window. The app feeds it world-space pointer positions with timestamps; it grabs, moves,
+// flings, launches and deletes particles through World's id-based API.
+//
+// Fixes to the original's mouse handling, each covered by a test:
+// - Grabbing is edge-triggered: only the press grabs, and only the topmost particle under the
+//   pointer (World::pick, in world units, so the whole disc is grabbable at every zoom).
+// - The grab offset is kept: the particle does not jump to the cursor, and its velocity is the
+//   pointer's velocity, so an off-centre grab does not drift after release.
+// - The held particle is kinematic: collisions cannot push it, it pushes others with the
+//   velocity of the hand, and the world keeps it inside the box.
+// - Release velocity is psb::launchVelocity over the last ~100 ms of samples, so a particle
+//   dropped after the hand stopped is released at rest.
+
+#include <deque>
+#include <optional>
+#include <string>
+
+#include <particle_sandbox/launch.hpp>
+#include <particle_sandbox/particle.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace psb::app {
+
+/// What a newly launched particle is made of; the HUD shows it and keys change it.
+struct SpawnSettings {
+    static constexpr double kMinMass = 1.0;   ///< kg
+    static constexpr double kMaxMass = 40.0;  ///< kg
+    double mass = 10.0;                       ///< kg
+    /// Lengths relative to the original's 700 m box: a scene's smaller box side / 700 m, so a
+    /// billiard table gets billiard-sized particles.
+    double lengthScale = 1.0;
+    /// The original's rule, radius = 2.5 metres per kilogram of mass, times lengthScale.
+    [[nodiscard]] double radius() const { return 2.5 * mass * lengthScale; }
+    void changeMass(double delta);
+};
+
+/// A free place for a disc of `radius` metres near `desired`: `desired` itself (clamped into
+/// the box when walls are on) if no particle overlaps it there, otherwise the nearest free spot
+/// found on rings of growing radius around it (within about 20 radii). nullopt when there is
+/// none, or when the disc does not fit in the box at all.
+[[nodiscard]] std::optional<Vec2> findFreeSpot(const World& world, const Vec2& desired,
+                                               double radius);
+
+/// The line the original printed when a held particle was deleted, with units.
+[[nodiscard]] std::string deletionLogLine(const Particle& p);
+
+/// What a release did.
+struct ReleaseResult {
+    enum class Kind {
+        None,      ///< nothing was held or being launched
+        Flung,     ///< a held particle was let go with `velocity`
+        Launched,  ///< a new particle was made at `position` with `velocity`
+        Refused,   ///< no free spot for the new particle; `message` says so
+    };
+    Kind kind = Kind::None;
+    ParticleId id;
+    Vec2 position = Vec2::Zero();  ///< metres
+    Vec2 velocity = Vec2::Zero();  ///< m/s
+    std::string message;
+};
+
+class Interaction {
+  public:
+    enum class Mode { Idle, Holding, Launching };
+
+    /// How long pointer samples are kept, seconds (longer than any launch window).
+    static constexpr double kHistorySeconds = 0.5;
+
+    /// The left button went down at `point` (world metres) at `time` (seconds, any clock that
+    /// the later calls share). Grabs the topmost particle there, or starts a launch drag.
+    void press(World& world, const Vec2& point, double time);
+    /// The pointer is now at `point` (a motion, or the camera moved under a still pointer).
+    void moveTo(const Vec2& point, double time);
+    /// Puts the held particle where the hand is (pointer + grab offset, kept in the box) with
+    /// the hand's current velocity. The app calls it before every step and every frame.
+    void applyHold(World& world, double now, const LaunchSettings& launch) const;
+    /// The left button went up.
+    ReleaseResult release(World& world, const Vec2& point, double time, const SpawnSettings& spawn,
+                          const LaunchSettings& launch);
+    /// Deletes the held particle (Backspace/Delete while holding); returns its last state.
+    std::optional<Particle> deleteHeld(World& world);
+    /// Forgets everything (the world was replaced). Does not touch any world.
+    void reset();
+
+    [[nodiscard]] Mode mode() const { return mode_; }
+    [[nodiscard]] ParticleId held() const { return held_; }
+    /// Where the current press happened, metres.
+    [[nodiscard]] const Vec2& pressPoint() const { return pressPoint_; }
+    /// The latest pointer position, metres.
+    [[nodiscard]] Vec2 pointer() const;
+    /// The hand's velocity at `now` (m/s): launchVelocity over the samples plus the pointer's
+    /// position at `now`, so a hand that stopped has zero velocity.
+    [[nodiscard]] Vec2 handVelocity(double now, const LaunchSettings& launch) const;
+
+  private:
+    void record(const Vec2& point, double time);
+
+    Mode mode_ = Mode::Idle;
+    ParticleId held_;
+    Vec2 grabOffset_ = Vec2::Zero();
+    Vec2 pressPoint_ = Vec2::Zero();
+    std::deque<TrajectorySample> samples_;
+};
+
+}  // namespace psb::app

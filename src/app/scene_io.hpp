@@ -1,0 +1,28 @@
+#pragma once
+// The app's side of scene files: what it opens, the presets its keys switch between, and the
+// Ctrl+S snapshot. Parsing, validation and atomic writing are the core's (scene.hpp).
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace psb::app {
+
+/// The scene in `file`, or the built-in default scene (psb::defaultScene) when there is none.
+/// Throws SceneError naming the file and the problem.
+[[nodiscard]] Scene openScene(const std::optional<std::filesystem::path>& file);
+
+/// The preset scene files shipped in assets/scenes/, in file-name order (01-..., 02-...);
+/// empty when that directory cannot be found.
+[[nodiscard]] std::vector<std::filesystem::path> presetScenes();
+
+/// Saves `world` as a scene named `name` to `path`, atomically (psb::saveScene): the old file
+/// survives any failure. Returns a line for the user; throws SaveError saying why it failed.
+std::string saveWorld(const World& world, const std::string& name,
+                      const std::filesystem::path& path);
+
+}  // namespace psb::app

@@ -1,0 +1,99 @@
+#include "text.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include <SDL_ttf.h>
+
+namespace psb::app {
+
+Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelSize)
+    : renderer_(renderer) {
+    // TTF_Init is reference counted, so each Font holds one reference.
+    if (TTF_Init() != 0) throw std::runtime_error(std::string("TTF_Init: ") + TTF_GetError());
+    font_ = TTF_OpenFont(path.string().c_str(), pixelSize);
+    if (font_ == nullptr) {
+        const std::string why = TTF_GetError();
+        TTF_Quit();
+        throw std::runtime_error("cannot open font " + path.string() + ": " + why);
+    }
+    lineHeight_ = TTF_FontLineSkip(font_);
+
+    // Render each glyph, then pack them in one row of an atlas surface.
+    std::array<SDL_Surface*, kLast - kFirst + 1> images{};
+    int width = 0, height = 1;
+    for (int c = kFirst; c <= kLast; ++c) {
+        SDL_Surface* s =
+            TTF_RenderGlyph32_Blended(font_, static_cast<Uint32>(c), SDL_Color{255, 255, 255, 255});
+        images[c - kFirst] = s;
+        int minx = 0, maxx = 0, miny = 0, maxy = 0, advance = 0;
+        TTF_GlyphMetrics32(font_, static_cast<Uint32>(c), &minx, &maxx, &miny, &maxy, &advance);
+        glyphs_[c - kFirst].advance = advance;
+        if (s != nullptr) {
+            glyphs_[c - kFirst].atlas = {width, 0, s->w, s->h};
+            width += s->w + 1;
+            height = std::max(height, s->h);
+        }
+    }
+    SDL_Surface* atlas =
+        SDL_CreateRGBSurfaceWithFormat(0, std::max(width, 1), height, 32, SDL_PIXELFORMAT_ARGB8888);
+    if (atlas == nullptr) throw std::runtime_error(std::string("glyph atlas: ") + SDL_GetError());
+    SDL_FillRect(atlas, nullptr, SDL_MapRGBA(atlas->format, 255, 255, 255, 0));
+    for (int c = kFirst; c <= kLast; ++c) {
+        SDL_Surface* s = images[c - kFirst];
+        if (s == nullptr) continue;
+        SDL_SetSurfaceBlendMode(s, SDL_BLENDMODE_NONE);
+        SDL_Rect dst = glyphs_[c - kFirst].atlas;
+        SDL_BlitSurface(s, nullptr, atlas, &dst);
+        SDL_FreeSurface(s);
+    }
+    atlasW_ = atlas->w;
+    atlasH_ = atlas->h;
+    atlas_ = SDL_CreateTextureFromSurface(renderer_, atlas);
+    SDL_FreeSurface(atlas);
+    if (atlas_ == nullptr) {
+        TTF_CloseFont(font_);
+        TTF_Quit();
+        throw std::runtime_error(std::string("glyph atlas texture: ") + SDL_GetError());
+    }
+    SDL_SetTextureBlendMode(atlas_, SDL_BLENDMODE_BLEND);
+}
+
+Font::~Font() {
+    SDL_DestroyTexture(atlas_);
+    TTF_CloseFont(font_);
+    TTF_Quit();
+}
+
+const Font::Glyph& Font::glyph(char c) const {
+    const int code = static_cast<unsigned char>(c);
+    return glyphs_[(code >= kFirst && code <= kLast ? code : '?') - kFirst];
+}
+
+int Font::measure(std::string_view text) const {
+    int w = 0;
+    for (char c : text)
+        w += glyph(c).advance;
+    return w;
+}
+
+void Font::layout(std::string_view text, float x, float y, SDL_Color color,
+                  GeometryBatch& batch) const {
+    const float iw = 1.0f / static_cast<float>(atlasW_), ih = 1.0f / static_cast<float>(atlasH_);
+    for (char c : text) {
+        const Glyph& g = glyph(c);
+        if (g.atlas.w > 0 && c != ' ') {
+            const SDL_Rect& r = g.atlas;
+            batch.quad(x, y, x + static_cast<float>(r.w), y + static_cast<float>(r.h), color,
+                       static_cast<float>(r.x) * iw, static_cast<float>(r.y) * ih,
+                       static_cast<float>(r.x + r.w) * iw, static_cast<float>(r.y + r.h) * ih);
+        }
+        x += static_cast<float>(g.advance);
+    }
+}
+
+void Font::draw(const GeometryBatch& batch) const {
+    batch.draw(renderer_, atlas_);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,295 @@
+// Grab, fling, launch and delete, driven with synthetic pointer samples (world metres,
+// seconds), no window involved.
+
+#include <gtest/gtest.h>
+
+#include <particle_sandbox/diagnostics.hpp>
+
+#include "interaction.hpp"
+
+namespace psb::app {
+namespace {
+
+World boxWorld() {
+    SolverSettings s;
+    s.dt = 0.01;
+    return World(WorldDef{}, s);  // 700 m × 700 m, walls on
+}
+
+ParticleId addAt(World& w, Vec2 pos, double radius = 10.0, double mass = 2.0) {
+    ParticleDef d;
+    d.position = pos;
+    d.radius = radius;
+    d.mass = mass;
+    return w.add(d);
+}
+
+LaunchSettings launch() {
+    LaunchSettings s;
+    s.window = 0.1;
+    s.minDistance = 1.0;
+    return s;
+}
+
+/// Moves the pointer in a straight line from `from` at `t0` with velocity `v`, one sample
+/// every 10 ms for `steps` samples; returns the time of the last sample.
+double drag(Interaction& in, Vec2 from, double t0, Vec2 v, int steps) {
+    double t = t0;
+    for (int k = 1; k <= steps; ++k) {
+        t = t0 + 0.01 * k;
+        in.moveTo(from + v * (t - t0), t);
+    }
+    return t;
+}
+
+TEST(Interaction, PressOnAParticleGrabsItAndMakesItKinematic) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(105, 100), 0.0);
+    EXPECT_EQ(in.mode(), Interaction::Mode::Holding);
+    EXPECT_EQ(in.held(), id);
+    EXPECT_TRUE(w.isKinematic(id));
+}
+
+TEST(Interaction, GrabHitTestUsesTheWholeDiscInWorldUnits) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100}, 10.0);
+    Interaction in;
+    // 9.9 m from the centre of a 10 m disc: inside, whatever the zoom.
+    in.press(w, Vec2(109.9, 100), 0.0);
+    EXPECT_EQ(in.held(), id);
+    in.release(w, Vec2(109.9, 100), 0.5, {}, launch());
+    in.press(w, Vec2(110.1, 100), 1.0);
+    EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
+}
+
+TEST(Interaction, GrabTakesTheTopmostOfOverlappingParticles) {
+    World w = boxWorld();
+    addAt(w, {100, 100});
+    const ParticleId top = addAt(w, {105, 100});
+    Interaction in;
+    in.press(w, Vec2(103, 100), 0.0);
+    EXPECT_EQ(in.held(), top);
+}
+
+TEST(Interaction, OnlyThePressGrabsSweepingOverOthersCollectsNothing) {
+    World w = boxWorld();
+    const ParticleId a = addAt(w, {100, 100});
+    const ParticleId b = addAt(w, {300, 100});
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    drag(in, Vec2(100, 100), 0.0, Vec2(1000, 0), 20);  // passes over b
+    in.applyHold(w, 0.2, launch());
+    EXPECT_EQ(in.held(), a);
+    EXPECT_FALSE(w.isKinematic(b));
+    in.press(w, Vec2(300, 100), 0.25);  // a second press while holding is ignored
+    EXPECT_EQ(in.held(), a);
+}
+
+TEST(Interaction, HeldParticleKeepsItsGrabOffset) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(106, 97), 0.0);  // off centre by (6, -3)
+    in.applyHold(w, 0.0, launch());
+    EXPECT_NEAR(w.get(id).position.x(), 100.0, 1e-12);  // no jump to the cursor
+    EXPECT_NEAR(w.get(id).position.y(), 100.0, 1e-12);
+    in.moveTo(Vec2(206, 147), 0.05);
+    in.applyHold(w, 0.05, launch());
+    EXPECT_NEAR(w.get(id).position.x(), 200.0, 1e-12);
+    EXPECT_NEAR(w.get(id).position.y(), 150.0, 1e-12);
+}
+
+TEST(Interaction, ReleaseFlingsWithTheVelocityOfTheLast100ms) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    // Slow for 0.3 s, then 200 m/s to the right and 50 m/s down for the last 0.1 s.
+    double t = drag(in, Vec2(100, 100), 0.0, Vec2(10, 0), 30);
+    const Vec2 p = in.pointer();
+    t = drag(in, p, t, Vec2(200, 50), 10);
+    const ReleaseResult r = in.release(w, in.pointer(), t, {}, launch());
+    ASSERT_EQ(r.kind, ReleaseResult::Kind::Flung);
+    EXPECT_NEAR(r.velocity.x(), 200.0, 1e-6);
+    EXPECT_NEAR(r.velocity.y(), 50.0, 1e-6);
+    EXPECT_NEAR(w.get(id).velocity.x(), 200.0, 1e-6);
+    EXPECT_FALSE(w.isKinematic(id));
+    EXPECT_EQ(in.mode(), Interaction::Mode::Idle);
+}
+
+TEST(Interaction, AHandThatStoppedReleasesAtRest) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    const double t = drag(in, Vec2(100, 100), 0.0, Vec2(300, 0), 10);
+    // Released 0.3 s after the last motion: nothing moved in the last 100 ms.
+    in.release(w, in.pointer(), t + 0.3, {}, launch());
+    EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
+}
+
+TEST(Interaction, AMoveBelowTheMinimumDistanceReleasesAtRest) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    const double t = drag(in, Vec2(100, 100), 0.0, Vec2(5, 0), 10);  // 0.5 m in 100 ms
+    in.release(w, in.pointer(), t, {}, launch());                    // minDistance 1 m
+    EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
+}
+
+TEST(Interaction, OffCentreGrabDoesNotDriftAfterRelease) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(108, 104), 0.0);
+    in.release(w, Vec2(108, 104), 0.5, {}, launch());
+    EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
+    w.step(0.01);
+    EXPECT_NEAR(w.get(id).position.x(), 100.0, 1e-12);
+    EXPECT_NEAR(w.get(id).position.y(), 100.0, 1e-12);
+}
+
+TEST(Interaction, HeldParticlePushesOthersAndIsNotPushed) {
+    World w = boxWorld();
+    const ParticleId held = addAt(w, {100, 100}, 10.0, 1.0);
+    const ParticleId other = addAt(w, {125, 100}, 10.0, 1000.0);
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    double t = 0.0;
+    for (int k = 1; k <= 10; ++k) {  // move right at 100 m/s into the heavy particle
+        t = 0.01 * k;
+        in.moveTo(Vec2(100 + 100 * t, 100), t);
+        in.applyHold(w, t, launch());
+        w.step(0.01);
+    }
+    in.applyHold(w, t, launch());
+    EXPECT_NEAR(w.get(held).position.x(), 110.0, 1e-9);  // exactly where the hand put it
+    EXPECT_GT(w.get(other).velocity.x(), 0.0);           // the heavy one was pushed away
+}
+
+TEST(Interaction, HeldParticleStaysInTheBox) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100}, 10.0);
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    in.moveTo(Vec2(-500, 900), 0.1);
+    in.applyHold(w, 0.1, launch());
+    EXPECT_NEAR(w.get(id).position.x(), 10.0, 1e-12);
+    EXPECT_NEAR(w.get(id).position.y(), 690.0, 1e-12);
+}
+
+TEST(Interaction, DragOnEmptySpaceLaunchesFromThePressPointWithTheDragVelocity) {
+    World w = boxWorld();
+    Interaction in;
+    SpawnSettings spawn;
+    spawn.mass = 4.0;
+    in.press(w, Vec2(200, 300), 0.0);
+    EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
+    const double t = drag(in, Vec2(200, 300), 0.0, Vec2(-120, 80), 15);
+    const ReleaseResult r = in.release(w, in.pointer(), t, spawn, launch());
+    ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
+    ASSERT_EQ(w.size(), 1u);
+    const Particle p = w.get(r.id);
+    EXPECT_NEAR(p.position.x(), 200.0, 1e-12);
+    EXPECT_NEAR(p.position.y(), 300.0, 1e-12);
+    EXPECT_NEAR(p.velocity.x(), -120.0, 1e-6);
+    EXPECT_NEAR(p.velocity.y(), 80.0, 1e-6);
+    EXPECT_DOUBLE_EQ(p.mass, 4.0);
+    EXPECT_DOUBLE_EQ(p.radius, 10.0);  // 2.5 m per kg
+}
+
+TEST(Interaction, ALaunchNeverOverlapsAnotherParticle) {
+    World w = boxWorld();
+    SpawnSettings spawn;  // 10 kg, radius 25 m
+    // A press on empty space just beside a particle: the new one would overlap it.
+    addAt(w, {300, 300}, 20.0);
+    Interaction in;
+    in.press(w, Vec2(330, 300), 0.0);
+    const ReleaseResult r = in.release(w, Vec2(330, 300), 0.05, spawn, launch());
+    ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
+    EXPECT_NEAR(maxOverlapBruteForce(w), 0.0, 1e-12);
+    // The nearest free spot: touching distance (45 m) plus at most one ring step (12.5 m).
+    const double d = (r.position - Vec2(330, 300)).norm();
+    EXPECT_LE(d, 45.0 - 30.0 + 12.5 + 1e-9);
+}
+
+TEST(Interaction, ALaunchWithNoRoomIsRefusedWithAMessage) {
+    WorldDef def;
+    def.width = 60.0;
+    def.height = 60.0;
+    World w(def);
+    addAt(w, {30, 30}, 25.0);
+    Interaction in;
+    in.press(w, Vec2(5, 5), 0.0);  // outside the disc, but the box is full
+    const ReleaseResult r = in.release(w, Vec2(5, 5), 0.05, SpawnSettings{}, launch());
+    EXPECT_EQ(r.kind, ReleaseResult::Kind::Refused);
+    EXPECT_FALSE(r.message.empty());
+    EXPECT_EQ(w.size(), 1u);
+}
+
+TEST(Interaction, DeleteWhileHeldRemovesOnlyThatParticle) {
+    World w = boxWorld();
+    const ParticleId a = addAt(w, {100, 100});
+    const ParticleId b = addAt(w, {300, 100});
+    Interaction in;
+    in.press(w, Vec2(300, 100), 0.0);
+    const auto gone = in.deleteHeld(w);
+    ASSERT_TRUE(gone.has_value());
+    EXPECT_EQ(gone->id, b);
+    EXPECT_FALSE(w.contains(b));
+    EXPECT_TRUE(w.contains(a));
+    EXPECT_EQ(in.mode(), Interaction::Mode::Idle);
+    // Nothing held: nothing deleted, and the release that follows does nothing.
+    EXPECT_FALSE(in.deleteHeld(w).has_value());
+    EXPECT_EQ(in.release(w, Vec2(300, 100), 0.1, {}, launch()).kind, ReleaseResult::Kind::None);
+    EXPECT_EQ(w.size(), 1u);
+}
+
+TEST(Interaction, DeletionLogLineNamesPositionVelocityAndMassWithUnits) {
+    Particle p;
+    p.position = {350.0, 120.5};
+    p.velocity = {12.3, -4.0};
+    p.mass = 10.0;
+    EXPECT_EQ(deletionLogLine(p),
+              "[I] Deleted particle at [350.00, 120.50] with x velocity 12.30 m/s, y velocity "
+              "-4.00 m/s and mass 10.00 kg!");
+}
+
+TEST(FindFreeSpot, ReturnsTheDesiredPointWhenItIsFree) {
+    World w = boxWorld();
+    addAt(w, {100, 100}, 10.0);
+    const auto s = findFreeSpot(w, Vec2(400, 400), 20.0);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_EQ(*s, Vec2(400, 400));
+}
+
+TEST(FindFreeSpot, ClampsIntoTheBox) {
+    World w = boxWorld();
+    const auto s = findFreeSpot(w, Vec2(-50, 10), 20.0);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_EQ(*s, Vec2(20, 20));
+}
+
+TEST(SpawnSettings, RadiusFollowsTheOriginalsRuleScaledWithTheBox) {
+    SpawnSettings s;
+    s.mass = 8.0;
+    EXPECT_DOUBLE_EQ(s.radius(), 20.0);  // 2.5 m per kg in the original's 700 m box
+    s.lengthScale = 2.0 / 700.0;         // a 2 m box
+    EXPECT_NEAR(s.radius(), 20.0 * 2.0 / 700.0, 1e-15);
+}
+
+TEST(SpawnSettings, MassStaysInItsRange) {
+    SpawnSettings s;
+    for (int k = 0; k < 100; ++k)
+        s.changeMass(-1.0);
+    EXPECT_DOUBLE_EQ(s.mass, SpawnSettings::kMinMass);
+    for (int k = 0; k < 100; ++k)
+        s.changeMass(1.0);
+    EXPECT_DOUBLE_EQ(s.mass, SpawnSettings::kMaxMass);
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,241 @@
+// Rendering with SDL's software renderer into an offscreen surface: no window, no display.
+// Camera: zoom 1 pixel per metre, offset 0, so world metres are surface pixels.
+
+#include <gtest/gtest.h>
+
+#include <memory>
+
+#include <SDL.h>
+
+#include "assets.hpp"
+#include "camera.hpp"
+#include "renderer.hpp"
+#include "text.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr int kSize = 400;
+
+class RenderTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        surface_ = SDL_CreateRGBSurfaceWithFormat(0, kSize, kSize, 32, SDL_PIXELFORMAT_ARGB8888);
+        ASSERT_NE(surface_, nullptr) << SDL_GetError();
+        sdl_ = SDL_CreateSoftwareRenderer(surface_);
+        ASSERT_NE(sdl_, nullptr) << SDL_GetError();
+        font_ = std::make_unique<Font>(sdl_, findAsset("fonts/DejaVuSansMono.ttf"), 12);
+        renderer_ = std::make_unique<Renderer>(sdl_, font_.get());
+        camera_.setViewport(kSize, kSize);
+        camera_.set(1.0, Vec2::Zero());
+    }
+    void TearDown() override {
+        renderer_.reset();
+        font_.reset();
+        if (sdl_ != nullptr) SDL_DestroyRenderer(sdl_);
+        if (surface_ != nullptr) SDL_FreeSurface(surface_);
+    }
+
+    DrawStats draw(const World& w, ViewOptions o) {
+        const DrawStats s = renderer_->draw(w, camera_, o);
+        SDL_RenderPresent(sdl_);
+        return s;
+    }
+
+    SDL_Color pixel(int x, int y) const {
+        const auto* row = static_cast<const Uint8*>(surface_->pixels) + y * surface_->pitch;
+        const Uint32 v = reinterpret_cast<const Uint32*>(row)[x];
+        SDL_Color c{};
+        SDL_GetRGBA(v, surface_->format, &c.r, &c.g, &c.b, &c.a);
+        return c;
+    }
+
+    /// Pixels in [x0,x1)×[y0,y1) whose channels are all at least `min`.
+    int brightPixels(int x0, int y0, int x1, int y1, int min = 200) const {
+        int n = 0;
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const SDL_Color c = pixel(x, y);
+                n += c.r >= min && c.g >= min && c.b >= min;
+            }
+        }
+        return n;
+    }
+
+    static World worldWith(Vec2 pos, Vec2 vel, double radius, Color color) {
+        WorldDef def;
+        def.width = 1000.0;  // walls outside the surface
+        def.height = 1000.0;
+        World w(def);
+        ParticleDef d;
+        d.position = pos;
+        d.velocity = vel;
+        d.radius = radius;
+        d.mass = 2.0;
+        d.color = color;
+        w.add(d);
+        return w;
+    }
+
+    SDL_Surface* surface_ = nullptr;
+    SDL_Renderer* sdl_ = nullptr;
+    std::unique_ptr<Font> font_;
+    std::unique_ptr<Renderer> renderer_;
+    Camera camera_;
+};
+
+bool isColor(SDL_Color c, Uint8 r, Uint8 g, Uint8 b, int tol = 8) {
+    return std::abs(c.r - r) <= tol && std::abs(c.g - g) <= tol && std::abs(c.b - b) <= tol;
+}
+
+TEST_F(RenderTest, AParticleColoursThePixelsOfItsDisc) {
+    const World w = worldWith({150, 200}, Vec2::Zero(), 20.0, {255, 0, 0});
+    draw(w, {});
+    EXPECT_TRUE(isColor(pixel(150, 200), 255, 0, 0));
+    EXPECT_TRUE(isColor(pixel(150 + 15, 200), 255, 0, 0));  // inside the rim
+    EXPECT_TRUE(isColor(pixel(150, 200 - 15), 255, 0, 0));
+    EXPECT_TRUE(isColor(pixel(150 + 25, 200), 0, 0, 0));       // just outside
+    EXPECT_TRUE(isColor(pixel(150 + 16, 200 + 16), 0, 0, 0));  // the disc's corner is empty
+    EXPECT_TRUE(isColor(pixel(300, 300), 0, 0, 0));
+}
+
+TEST_F(RenderTest, TheCameraPlacesTheDisc) {
+    const World w = worldWith({150, 200}, Vec2::Zero(), 20.0, {0, 255, 0});
+    camera_.set(2.0, Vec2(100, 150));  // (150, 200) -> (100, 100), radius 40 px
+    draw(w, {});
+    EXPECT_TRUE(isColor(pixel(100, 100), 0, 255, 0));
+    EXPECT_TRUE(isColor(pixel(135, 100), 0, 255, 0));
+    EXPECT_TRUE(isColor(pixel(145, 100), 0, 0, 0));
+}
+
+TEST_F(RenderTest, ManyParticlesAreDrawn) {
+    WorldDef def;
+    def.width = 1000.0;
+    def.height = 1000.0;
+    World w(def);
+    for (int i = 0; i < 10; ++i) {
+        for (int j = 0; j < 10; ++j) {
+            ParticleDef d;
+            d.position = {20.0 + 35.0 * i, 20.0 + 35.0 * j};
+            d.radius = 5.0;
+            d.color = {0, 0, 255};
+            w.add(d);
+        }
+    }
+    const DrawStats s = draw(w, {});
+    EXPECT_EQ(s.drawn, 100u);
+    for (int i = 0; i < 10; ++i) {
+        EXPECT_TRUE(isColor(pixel(20 + 35 * i, 20 + 35 * (9 - i)), 0, 0, 255)) << i;
+    }
+}
+
+TEST_F(RenderTest, AnArrowPointsAlongTheVelocity) {
+    // 300 m/s for 1/3 s: the tip is 100 px from the centre.
+    const World right = worldWith({200, 200}, {300, 0}, 10.0, {255, 255, 0});
+    ViewOptions o;
+    o.arrows = true;
+    draw(right, o);
+    EXPECT_TRUE(isColor(pixel(200 + 50, 200), 255, 255, 0));  // on the shaft
+    EXPECT_TRUE(isColor(pixel(200 + 95, 200), 255, 255, 0));  // in the head
+    EXPECT_TRUE(isColor(pixel(200 + 105, 200), 0, 0, 0));     // beyond the tip
+    EXPECT_TRUE(isColor(pixel(200 - 50, 200), 0, 0, 0));      // not behind
+    EXPECT_TRUE(isColor(pixel(200, 200 - 50), 0, 0, 0));
+
+    const World up = worldWith({200, 200}, {0, -300}, 10.0, {255, 255, 0});
+    draw(up, o);
+    EXPECT_TRUE(isColor(pixel(200, 200 - 50), 255, 255, 0));
+    EXPECT_TRUE(isColor(pixel(200 + 50, 200), 0, 0, 0));
+
+    o.arrows = false;
+    draw(up, o);
+    EXPECT_TRUE(isColor(pixel(200, 200 - 50), 0, 0, 0));
+}
+
+TEST_F(RenderTest, AnArrowHeadIsFilledAndWiderThanTheShaft) {
+    const World w = worldWith({100, 200}, {600, 0}, 10.0, {255, 255, 255});
+    draw(w, {});
+    // Tip at x = 300; the 12 px head with ±30° flanks is ±5.8 px wide 10 px behind the tip.
+    EXPECT_TRUE(isColor(pixel(290, 200 + 4), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(290, 200 - 4), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(250, 200 + 5), 0, 0, 0));  // the shaft is thin
+}
+
+TEST_F(RenderTest, NoArrowWhenItWouldEndInsideTheDisc) {
+    // 30 m/s -> 10 px, inside a 20 m disc: nothing outside the disc.
+    const World w = worldWith({200, 200}, {30, 0}, 20.0, {255, 0, 0});
+    draw(w, {});
+    EXPECT_EQ(brightPixels(0, 0, kSize, kSize, 1), 0);  // red fails the "all channels" test
+    int red = 0;
+    for (int x = 222; x < 260; ++x)
+        red += pixel(x, 200).r > 0;
+    EXPECT_EQ(red, 0);
+}
+
+TEST_F(RenderTest, LabelsAppearOnlyWhenTheOverlayIsOn) {
+    const World w = worldWith({200, 250}, {12, -3}, 20.0, {255, 0, 0});
+    ViewOptions o;
+    o.arrows = false;
+    o.labels = false;
+    draw(w, o);
+    // The four lines stack above the disc (top of the disc at y = 230).
+    EXPECT_EQ(brightPixels(100, 150, 300, 230), 0);
+    o.labels = true;
+    const DrawStats s = draw(w, o);
+    EXPECT_EQ(s.labelled, 1u);
+    EXPECT_GT(brightPixels(100, 150, 300, 230), 100);
+    EXPECT_EQ(brightPixels(100, 280, 300, 400), 0);  // nothing below the disc
+}
+
+TEST_F(RenderTest, LabelsKeepTheirPixelSizeAtAnyZoom) {
+    const World w = worldWith({200, 250}, Vec2::Zero(), 20.0, {255, 0, 0});
+    ViewOptions o;
+    o.labels = true;
+    camera_.set(0.05, Vec2(200 - 200 / 0.05, 250 - 250 / 0.05));  // the disc is 1 px wide
+    draw(w, o);
+    const int far = brightPixels(100, 150, 300, 250);
+    camera_.set(1.0, Vec2::Zero());
+    draw(w, o);
+    const int near = brightPixels(100, 150, 300, 230);
+    EXPECT_GT(far, 100);
+    EXPECT_NEAR(far, near, near * 0.2);
+}
+
+TEST_F(RenderTest, WallsAreDrawnAroundTheBox) {
+    WorldDef def;
+    def.width = 300.0;
+    def.height = 300.0;
+    const World w(def);
+    // Box from (50, 50) to (350, 350) on screen; walls 2 px thick (at least), outside.
+    camera_.set(1.0, Vec2(-50, -50));
+    draw(w, {});
+    EXPECT_TRUE(isColor(pixel(200, 49), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(350, 200), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(200, 200), 0, 0, 0));
+}
+
+TEST(ArrowScale, IsTheOriginalsThirdOfASecondForAFewParticles) {
+    World w;  // 700 m box
+    ParticleDef d;
+    d.velocity = {300.0, 0.0};
+    d.position = {100.0, 100.0};
+    w.add(d);
+    EXPECT_DOUBLE_EQ(arrowSecondsFor(w), 1.0 / 3.0);
+    EXPECT_DOUBLE_EQ(arrowSecondsFor(World{}), 1.0 / 3.0);  // nothing moves: nothing to scale
+}
+
+TEST(ArrowScale, ShortensSoADenseGasIsNotHiddenUnderItsArrows) {
+    World w;  // 700 m box, 4900 particles: mean spacing 10 m
+    for (int i = 0; i < 70; ++i) {
+        for (int j = 0; j < 70; ++j) {
+            ParticleDef d;
+            d.position = {5.0 + 10.0 * i, 5.0 + 10.0 * j};
+            d.velocity = {100.0, 0.0};
+            w.add(d);
+        }
+    }
+    // The root-mean-square arrow is three quarters of the spacing: 7.5 m at 100 m/s.
+    EXPECT_NEAR(arrowSecondsFor(w), 0.075, 1e-12);
+}
+
+}  // namespace
+}  // namespace psb::app

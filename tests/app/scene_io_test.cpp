@@ -1,0 +1,95 @@
+// What the app opens and saves: the built-in scene, the presets, and the Ctrl+S snapshot.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <particle_sandbox/scene.hpp>
+
+#include "scene_io.hpp"
+
+namespace psb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SceneIo : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() /
+               ("psb-app-scene-io-" +
+                std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "-" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+std::string readAll(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+TEST_F(SceneIo, WithoutAFileTheBuiltInSceneOpens) {
+    const Scene s = openScene(std::nullopt);
+    EXPECT_EQ(s.particles.size(), 6u);
+    EXPECT_DOUBLE_EQ(s.world.width, 700.0);
+}
+
+TEST_F(SceneIo, AMissingFileIsASceneErrorNamingIt) {
+    try {
+        (void)openScene(dir_ / "nope.json");
+        FAIL() << "no error";
+    } catch (const SceneError& e) {
+        EXPECT_NE(std::string(e.what()).find("nope.json"), std::string::npos) << e.what();
+    }
+}
+
+TEST_F(SceneIo, TheShippedPresetsAreFound) {
+    const auto presets = presetScenes();
+    ASSERT_FALSE(presets.empty());
+    EXPECT_EQ(presets.front().filename(), "01-original.json");
+}
+
+TEST_F(SceneIo, SavedWorldLoadsBackWithTheSameParticles) {
+    World w;
+    ParticleDef d;
+    d.position = {100.0, 200.0};
+    d.velocity = {1.5, -2.25};
+    d.mass = 3.0;
+    d.radius = 7.5;
+    const ParticleId held = w.add(d);
+    d.position = {400.0, 200.0};
+    w.add(d);
+    w.setKinematic(held, true);  // a held particle is saved as a free one
+    const fs::path path = dir_ / "snap.json";
+    const std::string message = saveWorld(w, "snap", path);
+    EXPECT_NE(message.find("2 particles"), std::string::npos) << message;
+    const Scene s = loadScene(path);
+    ASSERT_EQ(s.particles.size(), 2u);
+    EXPECT_EQ(s.particles[0].position, Vec2(100.0, 200.0));
+    EXPECT_EQ(s.particles[0].velocity, Vec2(1.5, -2.25));
+    EXPECT_EQ(s.name, "snap");
+}
+
+TEST_F(SceneIo, AFailedSaveSaysWhyAndLeavesTheOldFileIntact) {
+    const fs::path old = dir_ / "keep.json";
+    std::ofstream(old) << "old contents";
+    World w;
+    // A regular file where a directory should be: the save cannot succeed.
+    EXPECT_THROW(saveWorld(w, "x", old / "inside.json"), SaveError);
+    EXPECT_EQ(readAll(old), "old contents");
+    // A directory where the file should be.
+    fs::create_directories(dir_ / "adir");
+    EXPECT_THROW(saveWorld(w, "x", dir_ / "adir"), SaveError);
+    EXPECT_TRUE(fs::is_directory(dir_ / "adir"));
+}
+
+}  // namespace
+}  // namespace psb::app

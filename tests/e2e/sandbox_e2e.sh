@@ -1,0 +1,290 @@
+#!/usr/bin/env bash
+# End-to-end test of particle-sandbox: the real program in a virtual X display (Xvfb), driven
+# with real X input (xdotool), checked through its log, its window title and screenshots
+# (ImageMagick).
+#
+#   tests/e2e/sandbox_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
+#
+# It opens the built-in scene paused (so particles stay where the scene puts them), then:
+#   0. bad command lines                               -> a clear message and a non-zero exit
+#   1. grabs a particle and flings it downwards        -> logged release velocity points down,
+#                                                         and it moves down when stepped
+#   2. grabs another, presses A twice and Delete while  -> both toggles and the deletion logged,
+#      holding                                             count drops
+#   3. drags on empty space up and to the right         -> a new particle, which moves up-right
+#   4. turns the wheel over the window                  -> zoom grows, the wall moves on screen
+#   5. presses S                                        -> label text appears above particles
+#   6. presses Ctrl+S                                   -> a scene file with the launched
+#                                                         particle, moving up-right
+#   7. presses Esc                                      -> the program exits cleanly
+# Screenshots and the log are left in OUTPUT_DIR.
+set -euo pipefail
+
+BIN=${1:?usage: sandbox_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
+OUT=${2:-$(pwd)/e2e-out}
+HERE=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$OUT"
+rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
+
+for tool in Xvfb xdpyinfo xdotool import convert; do
+    if ! command -v "$tool" >/dev/null; then
+        "$HERE/../../scripts/install-deps.sh" --test
+        break
+    fi
+done
+
+fail() {
+    echo "FAIL: $*" >&2
+    for f in stderr.log xvfb.log; do
+        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
+    done
+    if [[ -n "${APP_PID:-}" ]] && ! kill -0 "$APP_PID" 2>/dev/null; then
+        echo "(the program is no longer running)" >&2
+    fi
+    echo "(log and screenshots in $OUT)" >&2
+    exit 1
+}
+pass() { echo "ok: $*"; }
+
+XVFB_PID=""
+APP_PID=""
+cleanup() {
+    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
+    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
+    wait 2>/dev/null || true
+}
+trap cleanup EXIT
+trap '[[ $- == *e* ]] && echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
+
+# --- 0. bad command lines fail clearly, before any window -------------------------------
+set +e
+"$BIN" --help >"$OUT/help.txt" 2>&1
+help_status=$?
+"$BIN" "$OUT/no-such-scene.json" >/dev/null 2>"$OUT/bad-scene.txt"
+scene_status=$?
+"$BIN" --window 12x >/dev/null 2>"$OUT/bad-window.txt"
+window_status=$?
+set -e
+((help_status == 0)) && grep -q -- "--save-to" "$OUT/help.txt" || fail "--help"
+((scene_status != 0)) && grep -q "no-such-scene.json" "$OUT/bad-scene.txt" ||
+    fail "a missing scene file: status $scene_status, message '$(cat "$OUT/bad-scene.txt")'"
+((window_status != 0)) && grep -q -- "--window" "$OUT/bad-window.txt" ||
+    fail "a bad --window: status $window_status"
+pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
+
+# --- a private X display ------------------------------------------------------------------
+# A random high display number, not Xvfb -displayfd: servers started at the same moment with
+# -displayfd can end up sharing a display (and each other's input) on a busy machine.
+for _ in $(seq 30); do
+    n=$((200 + RANDOM % 700))
+    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n ]] && continue
+    Xvfb ":$n" -screen 0 640x640x24 -nolisten tcp 2>"$OUT/xvfb.log" &
+    XVFB_PID=$!
+    for _ in $(seq 100); do
+        kill -0 "$XVFB_PID" 2>/dev/null || break
+        xdpyinfo -display ":$n" >/dev/null 2>&1 && break
+        sleep 0.05
+    done
+    if kill -0 "$XVFB_PID" 2>/dev/null && xdpyinfo -display ":$n" >/dev/null 2>&1; then
+        export DISPLAY=":$n"
+        break
+    fi
+    kill "$XVFB_PID" 2>/dev/null || true
+    XVFB_PID=""
+done
+[[ -n "$XVFB_PID" ]] || fail "could not start Xvfb"
+export SDL_AUDIODRIVER=dummy
+
+# --- the program --------------------------------------------------------------------------
+LOG="$OUT/stdout.log"
+"$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" >"$LOG" 2>"$OUT/stderr.log" &
+APP_PID=$!
+WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
+    head -1) || {
+    ps -o pid,stat,etime,wchan:30,args -p "$APP_PID" >&2 || true
+    for t in /proc/"$APP_PID"/task/*; do echo "thread $t: $(cat "$t/wchan" 2>/dev/null)" >&2; done
+    xdotool search --name "Particle Sandbox" >&2 || true
+    fail "no window within 20 s (display $DISPLAY)"
+}
+[[ -n "$WID" ]] || fail "no window"
+eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
+WX=$X
+WY=$Y
+xdotool windowfocus --sync "$WID" 2>/dev/null || true
+pass "window $WID at $WX,$WY size ${WIDTH}x$HEIGHT"
+
+# The camera starts fitted to the box; the program logs the mapping it chose.
+for _ in $(seq 100); do grep -q "\[I\] View: zoom" "$LOG" && break; sleep 0.05; done
+view=$(grep "\[I\] View: zoom" "$LOG" | head -1) || fail "no view line in the log"
+read -r ZOOM BX BY < <(sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/' <<<"$view")
+sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
+sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
+pass "fitted view: zoom $ZOOM px/m, box top-left at ($BX, $BY) px in the window"
+
+wait_log() {  # wait_log REGEX [SECONDS]
+    local deadline=$((SECONDS + ${2:-5}))
+    while ! grep -Eq "$1" "$LOG"; do
+        ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
+        sleep 0.05
+    done
+}
+title() { xdotool getwindowname "$WID"; }
+wait_title() {  # wait_title REGEX
+    local deadline=$((SECONDS + 5))
+    until title | grep -Eq "$1"; do
+        ((SECONDS < deadline)) || fail "title '$(title)' never matched /$1/"
+        sleep 0.05
+    done
+}
+key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
+shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
+
+# Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart, as
+# one xdotool command chain so that process start-up under load cannot stretch the timing (the
+# app releases a particle at rest if the hand paused for 100 ms). An optional 6th argument is a
+# further chain (e.g. a key press) run while the button is still down.
+drag() {
+    local x=$1 y=$2 dx=$3 dy=$4 n=$5 hold=${6:-}
+    local chain=(mousemove --sync "$x" "$y" sleep 0.1 mousedown 1 sleep 0.1)
+    for ((i = 1; i <= n; i++)); do
+        chain+=(mousemove "$((x + i * dx))" "$((y + i * dy))" sleep 0.015)
+    done
+    # shellcheck disable=SC2206
+    [[ -n "$hold" ]] && chain+=($hold)
+    chain+=(mouseup 1)
+    xdotool "${chain[@]}"
+    sleep 0.2
+}
+
+# Centroid "x y count" of the pixels of colour R,G,B (±6 per channel) in a screenshot.
+centroid() {
+    convert "$1" -depth 8 txt:- | awk -v r="$2" -v g="$3" -v b="$4" -F'[ ,:()]+' '
+        NR > 1 {
+            # "x,y: (R,G,B) ..." -> fields x y R G B
+            if ($3 >= r - 6 && $3 <= r + 6 && $4 >= g - 6 && $4 <= g + 6 && $5 >= b - 6 && $5 <= b + 6) {
+                sx += $1; sy += $2; n++
+            }
+        }
+        END { if (n) printf "%.1f %.1f %d\n", sx / n, sy / n, n; else print "0 0 0" }'
+}
+# Pure white pixels inside a rectangle "WxH+X+Y" of a screenshot.
+white_in() {
+    convert "$1" -crop "$2" +repage -depth 8 txt:- | grep -c "#FFFFFF" || true
+}
+
+wait_title "6 particles - PAUSED"
+pass "title shows the count and PAUSED: $(title)"
+key a  # arrows off: they share the particles' colours and would move the centroids
+wait_log "Arrows off"
+shot 0-start
+
+# The built-in scene (psb::defaultScene): six particles in the upper half of the box.
+# --- 1. fling: the 18 kg particle at (520, 160) m, yellow (255, 210, 110), downwards -------
+FLUNG="255 210 110"
+read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" $FLUNG)
+((fn0 > 500)) || fail "the yellow particle is not on screen ($fn0 pixels)"
+drag "$(sx 520)" "$(sy 160)" 0 12 8
+wait_log "Released particle"
+line=$(grep "Released particle" "$LOG" | tail -1)
+grep -q "Grabbed particle at \[520.00, 160.00\]" "$LOG" || fail "did not grab the yellow particle"
+vx=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1/' <<<"$line")
+vy=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\2/' <<<"$line")
+awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 100 && vy > 5 * (vx < 0 ? -vx : vx)) }' ||
+    fail "fling velocity [$vx, $vy] does not point down: $line"
+pass "grab and fling: $line"
+
+# --- 2. delete while holding: the 8 kg particle at (250, 260) m ----------------------------
+# While holding, other keys still work: A twice (arrows on, then off again), then Delete.
+drag "$(sx 250)" "$(sy 260)" 3 3 3 \
+    "key --window $WID a sleep 0.1 key --window $WID a sleep 0.1 key --window $WID Delete sleep 0.2"
+wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
+wait_title "5 particles - PAUSED"
+held=$(sed -n '/Grabbed particle at \[250.00, 260.00\]/,/Deleted particle/p' "$LOG")
+grep -q "Arrows on" <<<"$held" && grep -q "Arrows off" <<<"$held" ||
+    fail "keys pressed while holding were not handled: $held"
+pass "keys while holding (A, A) handled; delete while holding: $(grep 'Deleted particle' "$LOG")"
+
+# --- 3. launch: drag on empty space at (100, 620) m, up and to the right -----------------
+drag "$(sx 100)" "$(sy 620)" 10 -10 8
+wait_log "Launched particle at"
+line=$(grep "Launched particle" "$LOG" | tail -1)
+read -r px py vx vy < <(sed -E 's/.*at \[([-0-9.]+), ([-0-9.]+)\] with velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3 \4/' <<<"$line")
+# The press point, to within a screen pixel (1.2 m at this zoom).
+awk -v x="$px" -v y="$py" -v vx="$vx" -v vy="$vy" \
+    'BEGIN { exit !((x - 100) ^ 2 < 2 && (y - 620) ^ 2 < 2 && vx > 100 && vy < -100) }' ||
+    fail "launch not at the press point or not up-right: $line"
+wait_title "6 particles - PAUSED"
+pass "launch: $line"
+shot 1-launched
+# A 10 kg launched particle is coloured (151, 200, 224).
+read -r lx0 ly0 ln0 < <(centroid "$OUT/1-launched.png" 151 200 224)
+read -r fx1 fy1 fn1 < <(centroid "$OUT/1-launched.png" $FLUNG)
+((ln0 > 200)) || fail "the launched particle is not on screen ($ln0 pixels)"
+for _ in 1 2 3 4 5 6 7 8 9 10; do key n; done  # ten single steps while paused
+shot 2-stepped
+read -r lx1 ly1 ln1 < <(centroid "$OUT/2-stepped.png" 151 200 224)
+read -r fx2 fy2 fn2 < <(centroid "$OUT/2-stepped.png" $FLUNG)
+awk -v x0="$lx0" -v y0="$ly0" -v x1="$lx1" -v y1="$ly1" \
+    'BEGIN { exit !(x1 - x0 > 5 && y0 - y1 > 5) }' ||
+    fail "the launched particle did not move up-right: ($lx0,$ly0) -> ($lx1,$ly1)"
+pass "launched particle moved from ($lx0, $ly0) to ($lx1, $ly1) px"
+awk -v y0="$fy1" -v y1="$fy2" 'BEGIN { exit !(y1 - y0 > 5) }' ||
+    fail "the flung particle did not move down: y $fy1 -> $fy2"
+pass "flung particle moved down from y = $fy1 to $fy2 px"
+
+# --- 4. wheel zoom about the cursor --------------------------------------------------------
+cx=$((WX + 300))
+cy=$((WY + 300))
+# A piece of the left wall (at least 2 px wide, just left of the box), halfway down: at least
+# one column of it must be white.
+wall="2x40+$((WX + ${BX%.*} - 2))+$((WY + ${BY%.*} + 230))"
+before=$(white_in "$OUT/2-stepped.png" "$wall")
+((before >= 35)) || fail "the left wall is not where the fitted camera puts it ($before px)"
+xdotool mousemove --sync "$cx" "$cy"
+for _ in 1 2 3; do xdotool click 4; sleep 0.1; done
+wait_log "Zoom"
+shot 3-zoomed
+zooms=$(grep -c "\[I\] Zoom" "$LOG")
+last_zoom=$(grep "\[I\] Zoom" "$LOG" | tail -1 | sed -E 's/.*Zoom ([0-9.]+).*/\1/')
+awk -v z="$last_zoom" -v z0="$ZOOM" 'BEGIN { exit !(z > 1.4 * z0) }' ||
+    fail "zoom $last_zoom after $zooms notches is not above 1.4 x $ZOOM"
+after=$(white_in "$OUT/3-zoomed.png" "$wall")
+((after < before / 4)) || fail "the wall did not move on screen when zooming ($before -> $after px)"
+pass "wheel zoom: $zooms notches, zoom $ZOOM -> $last_zoom px/m, wall moved away"
+
+# --- 5. labels ----------------------------------------------------------------------------
+key f  # fit again
+side=$(awk -v z="$ZOOM" 'BEGIN { printf "%d", 700 * z - 12 }')  # inside the walls
+inner="${side}x${side}+$((WX + ${BX%.*} + 6))+$((WY + ${BY%.*} + 6))"
+shot 4-fitted
+plain=$(white_in "$OUT/4-fitted.png" "$inner")
+key s
+wait_log "Labels on"
+shot 5-labels
+labelled=$(white_in "$OUT/5-labels.png" "$inner")
+((labelled > plain + 300)) || fail "S did not show labels ($plain -> $labelled white px)"
+pass "S shows labels ($plain -> $labelled white pixels)"
+
+# --- 6. save ------------------------------------------------------------------------------
+key ctrl+s
+wait_log "Saved 6 particles to"
+[[ -s "$OUT/saved.json" ]] || fail "Ctrl+S wrote no file"
+# One particle per line; the launched one is the only 10 kg particle.
+launched=$(grep '"mass": 10.0,' "$OUT/saved.json") || fail "no launched particle in the saved scene"
+read -r svx svy < <(sed -E 's/.*"vx": ([-0-9.e+]+), "vy": ([-0-9.e+]+),.*/\1 \2/' <<<"$launched")
+awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 100 && vy < -100) }' ||
+    fail "saved launched particle does not move up-right: $launched"
+((  $(grep -c '"mass":' "$OUT/saved.json") == 6 )) || fail "saved scene does not hold 6 particles"
+pass "Ctrl+S saved the scene; launched particle: vx $svx, vy $svy m/s"
+
+# --- 7. quit ------------------------------------------------------------------------------
+# The window may be gone before xdotool sends the key release: that error is expected.
+xdotool key --window "$WID" Escape 2>/dev/null || true
+for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+if kill -0 "$APP_PID" 2>/dev/null; then fail "Esc did not quit"; fi
+wait "$APP_PID" && status=0 || status=$?
+APP_PID=""
+((status == 0)) || fail "exit status $status"
+grep -q "Exiting" "$LOG" || fail "no exit line in the log"
+pass "Esc quits with status 0"
+echo "PASS"
