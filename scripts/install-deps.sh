@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Particle Sandbox needs, skipping those already present.
 #   scripts/install-deps.sh          build dependencies (compiler, CMake, libraries)
-#   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick)
+#   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick, and
+#                                    clang with libFuzzer for the fuzz targets)
 set -euo pipefail
 
 packages=(
@@ -13,6 +14,7 @@ packages=(
 )
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(xvfb xauth xdotool imagemagick x11-utils)
+  packages+=(clang libclang-rt-14-dev)
 fi
 
 missing=()

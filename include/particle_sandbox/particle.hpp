@@ -12,7 +12,7 @@ namespace psb {
 struct ParticleDef {
     Vec2 position = Vec2::Zero();  ///< centre, metres
     Vec2 velocity = Vec2::Zero();  ///< metres per second
-    double mass = 1.0;             ///< kilograms, finite and > 0
+    double mass = 1.0;             ///< kilograms, finite and >= DBL_MIN (so 1/mass is finite)
     double radius = 1.0;           ///< metres, finite and > 0
     Color color{};
 };

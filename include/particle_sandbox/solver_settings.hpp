@@ -22,11 +22,14 @@ enum class BroadPhaseKind {
     Quadtree,  ///< region quadtree
 };
 
+/// Most substeps per step: beyond this one step(dt) would take minutes, not milliseconds.
+inline constexpr int kMaxSubsteps = 100'000;
+
 /// The solver block of a scene.
 struct SolverSettings {
     StepMode mode = StepMode::Discrete;
     double dt = 0.01;  ///< seconds, finite and > 0
-    int substeps = 1;  ///< >= 1; used by StepMode::Substep
+    int substeps = 1;  ///< in [1, kMaxSubsteps]; used by StepMode::Substep
     BroadPhaseKind broadphase = BroadPhaseKind::Auto;
 };
 

@@ -40,18 +40,23 @@ class World {
     // --- parameters ----------------------------------------------------------------------
     [[nodiscard]] const WorldDef& def() const { return def_; }
     [[nodiscard]] const SolverSettings& solver() const { return solver_; }
+    /// Resizes the box (metres, finite and > 0). Particles it no longer contains are allowed:
+    /// with walls on, the next step's wall stage brings each centre back into [r, extent - r]
+    /// (a particle wider than the box sits at its centre).
     void setBox(double width, double height);
     void setWalls(bool enabled);
     /// Throws InvalidArgument for a non-zero gravity while the solver's mode is Exact.
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
-    /// Throws InvalidArgument for mode Exact while the world has gravity.
+    /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], a
+    /// mode or broadphase this build does not have, or mode Exact while the world has gravity.
     void setSolver(const SolverSettings& solver);
 
     // --- particles -------------------------------------------------------------------------
     /// Adds a particle; its position is taken as given (overlaps are allowed and separated by
-    /// the next step). Throws InvalidArgument on a non-finite value or a mass/radius <= 0.
+    /// the next step). Throws InvalidArgument on a non-finite value, a radius <= 0 or a mass
+    /// below the smallest normal double (its inverse would be infinite).
     ParticleId add(const ParticleDef& def);
     /// Removes a particle; returns false if the id names no live particle.
     bool remove(ParticleId id);

@@ -125,7 +125,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         if (!(*o.dt > 0.0)) throw UsageError("--dt: must be > 0, got '" + dt + "'");
     }
     if (!substeps.empty()) {
-        o.substeps = static_cast<int>(parseInteger(substeps, "--substeps", 1, 100'000));
+        o.substeps = static_cast<int>(parseInteger(substeps, "--substeps", 1, kMaxSubsteps));
     }
     if (!broadphase.empty()) {
         o.broadphase = parseBroadPhase(broadphase);

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -32,7 +33,6 @@ using json = nlohmann::json;
 using Keys = std::initializer_list<std::string_view>;
 
 constexpr int kVersion = 1;
-constexpr std::int64_t kMaxSubsteps = 100'000;
 
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
@@ -140,6 +140,16 @@ class Reader {
     double positive(const json& j, const std::string& path) const {
         const double v = number(j, path);
         if (!(v > 0.0)) fail(path, "must be > 0 (got " + num(v) + ")");
+        return v;
+    }
+
+    /// A mass: positive and at least the smallest normal double, so that World can use 1/m.
+    double mass(const json& j, const std::string& path) const {
+        const double v = positive(j, path);
+        if (v < std::numeric_limits<double>::min()) {
+            fail(path, "must be at least " + num(std::numeric_limits<double>::min()) + " (got " +
+                           num(v) + ")");
+        }
         return v;
     }
 
@@ -259,7 +269,7 @@ void readSolver(const Reader& r, const json& j, SolverSettings& s) {
     }
     if (const json* v = Reader::find(j, "dt")) s.dt = r.positive(*v, "solver.dt");
     if (const json* v = Reader::find(j, "substeps")) {
-        s.substeps = static_cast<int>(r.integer(*v, "solver.substeps", 1, kMaxSubsteps));
+        s.substeps = static_cast<int>(r.integer(*v, "solver.substeps", 1, psb::kMaxSubsteps));
     }
     if (const json* v = Reader::find(j, "broadphase")) {
         s.broadphase = readName(r, *v, "solver.broadphase", "broadphase", &parseBroadPhase,
@@ -296,7 +306,7 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
                   r.number(r.require(j, path, "y"), member(path, "y"))};
     if (const json* v = Reader::find(j, "vx")) d.velocity.x() = r.number(*v, member(path, "vx"));
     if (const json* v = Reader::find(j, "vy")) d.velocity.y() = r.number(*v, member(path, "vy"));
-    d.mass = r.positive(r.require(j, path, "mass"), member(path, "mass"));
+    d.mass = r.mass(r.require(j, path, "mass"), member(path, "mass"));
     d.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
     if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
     return d;
@@ -310,7 +320,7 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
         {"count", "packing", "radius", "mass", "region", "temperature", "speed", "color", "seed"});
     detail::GenerateSpec spec;
     spec.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
-    if (const json* v = Reader::find(j, "mass")) spec.mass = r.positive(*v, member(path, "mass"));
+    if (const json* v = Reader::find(j, "mass")) spec.mass = r.mass(*v, member(path, "mass"));
 
     spec.x0 = 0.0;
     spec.y0 = 0.0;
@@ -351,8 +361,13 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
         countPath = member(path, "packing");
         const double phi = r.inRange(*packing, countPath, 0.0, 1.0);
         const double area = (spec.x1 - spec.x0) * (spec.y1 - spec.y0);
-        const double n = std::floor(phi * area / (std::numbers::pi * spec.radius * spec.radius));
-        if (n > static_cast<double>(kMaxSceneParticles)) {
+        // A radius below ~1e-154 squares to 0, and so can a tiny region's area: 0 / 0 must
+        // not give NaN, which the integer cast below would turn into undefined behaviour.
+        const double n =
+            (phi == 0.0 || area == 0.0)
+                ? 0.0
+                : std::floor(phi * area / (std::numbers::pi * spec.radius * spec.radius));
+        if (!(n <= static_cast<double>(kMaxSceneParticles))) {
             r.fail(countPath, "gives " + num(n) + " particles, more than the limit of " +
                                   std::to_string(kMaxSceneParticles));
         }
@@ -373,7 +388,18 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
     const json* temperature = Reader::find(j, "temperature");
     const json* speed = Reader::find(j, "speed");
     if (temperature && speed) r.fail(path, "give at most one of 'temperature' and 'speed'");
-    if (temperature) spec.temperature = r.nonNegative(*temperature, member(path, "temperature"));
+    if (temperature) {
+        const std::string tp = member(path, "temperature");
+        spec.temperature = r.nonNegative(*temperature, tp);
+        // Each velocity component is sqrt(kT/m) times a Box-Muller normal, which never exceeds
+        // sqrt(-2 ln 2^-53) < 9 in size: a thermal speed of at most kMaxSceneMagnitude / 10
+        // keeps every velocity within the limit (a huge kT over a tiny mass gave infinity).
+        const double thermal = std::sqrt(*spec.temperature) / std::sqrt(spec.mass);
+        if (!(thermal <= kMaxSceneMagnitude / 10.0)) {
+            r.fail(tp, "gives a thermal speed sqrt(kT/m) of " + num(thermal) +
+                           " m/s, above the limit of " + num(kMaxSceneMagnitude / 10.0) + " m/s");
+        }
+    }
     if (speed) spec.speed = r.nonNegative(*speed, member(path, "speed"));
     if (const json* v = Reader::find(j, "color")) spec.color = r.color(*v, member(path, "color"));
     if (const json* v = Reader::find(j, "seed")) {

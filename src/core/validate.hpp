@@ -3,6 +3,7 @@
 // with a message that names the function, the argument and the bad value.
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -39,6 +40,16 @@ inline void requireFinite(const Vec2& v, const char* where, const char* what) {
 
 inline void requirePositive(double v, const char* where, const char* what) {
     if (!std::isfinite(v) || !(v > 0.0)) fail(where, what, "must be finite and > 0 " + got(v));
+}
+
+/// A mass: finite, > 0, and not so small that its inverse (which the solver divides by and
+/// multiplies with) overflows to infinity, i.e. at least the smallest normal double.
+inline void requireMass(double v, const char* where, const char* what) {
+    requirePositive(v, where, what);
+    if (v < std::numeric_limits<double>::min()) {
+        fail(where, what,
+             "must be at least 2.2250738585072014e-308 so that its inverse is finite " + got(v));
+    }
 }
 
 inline void requireInRange(double v, double lo, double hi, const char* where, const char* what) {

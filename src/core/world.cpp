@@ -34,8 +34,15 @@ void validateDef(const WorldDef& def, const char* where) {
 
 void validateSolver(const SolverSettings& s, const char* where) {
     requirePositive(s.dt, where, "dt");
-    if (s.substeps < 1) {
-        detail::fail(where, "substeps", "must be >= 1 (got " + std::to_string(s.substeps) + ")");
+    if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
+        detail::fail(where, "substeps",
+                     "must be in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
+                         std::to_string(s.substeps) + ")");
+    }
+    // An enumerator outside the lists (a cast from an integer) would make step() do nothing.
+    if (toString(s.mode) == "?") detail::fail(where, "mode", "is not a known step mode");
+    if (toString(s.broadphase) == "?") {
+        detail::fail(where, "broadphase", "is not a known broadphase");
     }
 }
 
@@ -55,7 +62,7 @@ void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const
 void validateParticle(const ParticleDef& d, const char* where) {
     requireFinite(d.position, where, "position");
     requireFinite(d.velocity, where, "velocity");
-    requirePositive(d.mass, where, "mass");
+    detail::requireMass(d.mass, where, "mass");
     requirePositive(d.radius, where, "radius");
 }
 
@@ -267,7 +274,7 @@ void World::setVelocity(ParticleId id, const Vec2& velocity) {
 }
 
 void World::setMass(ParticleId id, double mass) {
-    requirePositive(mass, "World::setMass", "mass");
+    detail::requireMass(mass, "World::setMass", "mass");
     const std::size_t i = indexOrThrow(id, "World::setMass");
     const bool kinematic = p_.invMass[i] == 0.0;
     p_.mass[i] = mass;
