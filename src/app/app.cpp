@@ -12,6 +12,7 @@
 #include "assets.hpp"
 #include "benchmark_scene.hpp"
 #include "hud.hpp"
+#include "overlay.hpp"
 #include "scene_io.hpp"
 
 namespace psb::app {
@@ -104,6 +105,7 @@ App::App(const AppOptions& options)
     camera_.setViewport(w, h);
 
     fit();
+    userAction();
 }
 
 App::~App() {
@@ -142,6 +144,7 @@ void App::setWorld(World world, std::string name) {
     spawn_.lengthScale = std::min(world_.def().width, world_.def().height) / 700.0;
     accumulator_ = 0.0;
     fit();
+    userAction();
 }
 
 void App::openScene(const std::optional<std::filesystem::path>& file) {
@@ -158,14 +161,30 @@ void App::openScene(const std::optional<std::filesystem::path>& file) {
 }
 
 void App::fit() {
-    // Keep the HUD's four lines clear of the box.
-    const double hudHeight = 4.0 * hudFont_->lineHeight() + 10.0;
+    // Keep the HUD's lines clear of the box.
+    const double hudHeight =
+        static_cast<double>(hudLines(HudData{}).size()) * hudFont_->lineHeight() + 10.0;
     camera_.fit(world_.def().width, world_.def().height, 10.0, hudHeight);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "[I] View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",
                   camera_.zoom(), topLeft.x(), topLeft.y());
     logLine(buf);
+}
+
+void App::userAction() {
+    accuracy_.resetReference(kineticEnergy(world_));
+}
+
+void App::switchMode() {
+    const ModeSwitch r = switchToNextMode(world_);
+    // A refusal is shown and logged; the world keeps stepping in its mode.
+    say(r.message, r.changed ? "[I] " : "[W] ");
+    if (!r.detail.empty()) logLine("[W] " + r.detail);
+    if (r.changed) {
+        accumulator_ = 0.0;
+        userAction();
+    }
 }
 
 void App::say(std::string text, const char* logPrefix) {
@@ -246,6 +265,7 @@ void App::handleEvent(const SDL_Event& e) {
                     const Particle p = world_.get(interaction_.held());
                     logLine(fmt("[I] Grabbed particle at [%.2f, %.2f]", p.position.x(),
                                 p.position.y()));
+                    userAction();
                 }
             } else if (e.button.button == SDL_BUTTON_RIGHT ||
                        e.button.button == SDL_BUTTON_MIDDLE) {
@@ -271,6 +291,7 @@ void App::handleEvent(const SDL_Event& e) {
                 if (r.kind == K::Flung) logLine("[I] Released particle " + at + " " + v);
                 if (r.kind == K::Launched) logLine("[I] Launched particle " + at + " " + v);
                 if (r.kind == K::Refused) say(r.message);
+                if (r.kind == K::Flung || r.kind == K::Launched) userAction();
             } else if (e.button.button == SDL_BUTTON_RIGHT ||
                        e.button.button == SDL_BUTTON_MIDDLE) {
                 panning_ = false;
@@ -330,6 +351,14 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
             break;
         case SDLK_h:
             showHelp_ = !showHelp_;
+            break;
+        case SDLK_t:
+            switchMode();
+            break;
+        case SDLK_o:
+        case SDLK_F3:
+            showProfile_ = !showProfile_;
+            say(showProfile_ ? "Profile on" : "Profile off");
             break;
         case SDLK_f:
             fit();
@@ -414,6 +443,7 @@ void App::deleteHeld() {
     if (const auto p = interaction_.deleteHeld(world_)) {
         logLine(deletionLogLine(*p));
         say("Deleted a particle", nullptr);
+        userAction();
     }
 }
 
@@ -443,6 +473,7 @@ void App::spawnRandom() {
     def.color = {static_cast<std::uint8_t>(channel(rng_)), static_cast<std::uint8_t>(channel(rng_)),
                  static_cast<std::uint8_t>(channel(rng_))};
     world_.add(def);
+    userAction();
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "[I] Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass "
@@ -467,6 +498,7 @@ void App::stepOnce() {
 void App::update(double realSeconds) {
     const auto t0 = std::chrono::steady_clock::now();
     const double dt = world_.solver().dt;
+    accuracy_.beginSteps(world_);
     if (!paused_) {
         accumulator_ += realSeconds * timeScale_;
         while (accumulator_ >= dt) {
@@ -483,6 +515,7 @@ void App::update(double realSeconds) {
         stepOnce();
     }
     stepRequested_ = false;
+    accuracy_.endSteps(world_);
     // Arrows shorten when the motion speeds up (a bullet scattering a crowd) but never grow
     // back on their own, so their lengths stay comparable over time; opening a scene resets it.
     view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
@@ -519,37 +552,35 @@ void App::render() {
     hud.paused = paused_;
     hud.stepMs = stepMs_;
     hud.drawMs = drawMs_;
-    std::vector<std::string> lines = hudLines(hud);
-    if (drawStats_.labelsSuppressed) lines.emplace_back("Labels hidden: too many on screen");
+    hud.mode = modeName(world_.solver());
+    // The exact mode finds its events through its own cell lists, not the broadphase.
+    hud.broadphase = world_.solver().mode == StepMode::Exact
+                         ? std::string("event cells")
+                         : std::string(toString(world_.broadPhaseInUse()));
+    hud.threads = world_.threads();
+    hud.maxOverlap = accuracy_.overlap();
+    hud.keDrift = accuracy_.drift(hud.kineticEnergy);
 
-    GeometryBatch boxes, text;
-    const float lh = static_cast<float>(hudFont_->lineHeight());
-    const auto panel = [&](const std::vector<std::string>& ls, float x, float y,
-                           Uint8 alpha = 150) {
-        int w = 0;
-        for (const auto& l : ls)
-            w = std::max(w, hudFont_->measure(l));
-        boxes.quad(x - 4, y - 2, x + static_cast<float>(w) + 4,
-                   y + lh * static_cast<float>(ls.size()) + 2, SDL_Color{0, 0, 0, alpha});
-        for (std::size_t k = 0; k < ls.size(); ++k) {
-            hudFont_->layout(ls[k], x, y + lh * static_cast<float>(k),
-                             SDL_Color{230, 230, 230, 255}, text);
-        }
-    };
-    panel(lines, 8, 6);
-    if (showHelp_) panel(helpLines(), 40, 40 + lh * static_cast<float>(lines.size()), 225);
+    Overlays o;
+    o.hud = hudLines(hud);
+    if (drawStats_.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
+    o.showHelp = showHelp_;
+    if (showHelp_) o.help = helpLines();
+    o.showProfile = showProfile_;
+    if (showProfile_) {
+        ProfileData pd;
+        pd.profile = world_.profile();
+        pd.mode = world_.solver().mode;
+        pd.eventsPerStep = accuracy_.eventsPerStep();
+        pd.frameStepMs = lastStepMs_;
+        pd.frameDrawMs = lastDrawMs_;
+        o.profile = profileLines(pd);
+    }
     const double t = now();
     std::erase_if(messages_, [t](const Message& m) { return m.until < t; });
-    if (!messages_.empty()) {
-        std::vector<std::string> ms;
-        for (const auto& m : messages_)
-            ms.push_back(m.text);
-        panel(
-            ms, 8,
-            static_cast<float>(camera_.viewportHeight()) - 8 - lh * static_cast<float>(ms.size()));
-    }
-    boxes.draw(sdlRenderer_, nullptr);
-    hudFont_->draw(text);
+    for (const auto& m : messages_)
+        o.messages.push_back(m.text);
+    drawOverlays(sdlRenderer_, *hudFont_, o, camera_.viewportWidth(), camera_.viewportHeight());
 
     const std::string title = windowTitle(world_.size(), paused_, sceneName_);
     if (title != title_) {

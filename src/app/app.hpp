@@ -28,6 +28,7 @@
 #include <particle_sandbox/launch.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "accuracy.hpp"
 #include "camera.hpp"
 #include "interaction.hpp"
 #include "renderer.hpp"
@@ -85,6 +86,9 @@ class App {
     /// why and keeps the world as it is.
     void openScene(const std::optional<std::filesystem::path>& file);
     void fit();
+    void switchMode();
+    /// The user changed the world: the kinetic energy drift is measured from here on.
+    void userAction();
     void afterCameraMove();
     /// Shows `text` on screen for a few seconds and, unless `logPrefix` is null, logs it.
     void say(std::string text, const char* logPrefix = "[I] ");
@@ -113,6 +117,7 @@ class App {
     bool running_ = true;
     bool paused_ = false;
     bool showHelp_ = false;
+    bool showProfile_ = false;
     bool stepRequested_ = false;
     bool panning_ = false;
     double timeScale_ = 1.0;
@@ -130,6 +135,7 @@ class App {
     double lastStepMs_ = 0.0;
     double lastDrawMs_ = 0.0;
     DrawStats drawStats_;
+    AccuracyMonitor accuracy_;
 };
 
 }  // namespace psb::app

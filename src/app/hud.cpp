@@ -1,5 +1,6 @@
 #include "hud.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace psb::app {
@@ -24,6 +25,16 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "KE %.4g J | p [%.4g, %.4g] kg m/s", d.kineticEnergy,
                   d.momentum.x(), d.momentum.y());
     lines.emplace_back(buf);
+    std::snprintf(buf, sizeof buf, "Mode %s | %s | %d thread%s", d.mode.c_str(),
+                  d.broadphase.c_str(), d.threads, d.threads == 1 ? "" : "s");
+    lines.emplace_back(buf);
+    if (std::isnan(d.keDrift)) {
+        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift n/a", d.maxOverlap);
+    } else {
+        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift %+.2e since last action",
+                      d.maxOverlap, d.keDrift);
+    }
+    lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.3g m", d.spawnMass, d.spawnRadius);
     std::string last = buf;
     if (d.arrowSeconds > 0.0) {
@@ -31,6 +42,41 @@ std::vector<std::string> hudLines(const HudData& d) {
         last += buf;
     }
     lines.push_back(last + " | H: help");
+    return lines;
+}
+
+std::vector<std::string> profileLines(const ProfileData& d) {
+    const StepProfile& p = d.profile;
+    char buf[96];
+    std::vector<std::string> lines{"Profile, last step (ms)"};
+    const auto row = [&](const char* name, double ms) {
+        std::snprintf(buf, sizeof buf, "%-22s %8.3f", name, ms);
+        lines.emplace_back(buf);
+    };
+    if (d.mode == StepMode::Exact) {
+        // The exact stepper reports its rebuild of the event state under findPairs, the event
+        // loop under resolve and bringing every particle to the step's end under move.
+        row("rebuild events", p.findPairs);
+        row("process events", p.resolve);
+        row("sync to step end", p.move);
+        row("total", p.total);
+        std::snprintf(buf, sizeof buf, "%-22s %8.0f", "events per step", d.eventsPerStep);
+        lines.emplace_back(buf);
+    } else {
+        row("gravity", p.gravity);
+        row("move", p.move);
+        row("find pairs", p.findPairs);
+        row("resolve", p.resolve);
+        row("separate", p.separate);
+        row("walls", p.walls);
+        row("reorder", p.reorder);
+        row("total", p.total);
+        std::snprintf(buf, sizeof buf, "%-22s %8llu", "pairs",
+                      static_cast<unsigned long long>(p.pairs));
+        lines.emplace_back(buf);
+    }
+    row("frame: step", d.frameStepMs);
+    row("frame: draw", d.frameDrawMs);
     return lines;
 }
 
@@ -51,6 +97,8 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {", / .", "slow down / speed up time"},
         {"P / 1-9", "next preset / preset by number"},
         {"R", "reload the scene"},
+        {"T", "next stepping mode: discrete, substep, exact"},
+        {"O / F3", "show / hide the profile overlay"},
         {"Ctrl+S", "save the world as a scene"},
         {"H", "show / hide this help"},
         {"Esc", "quit"},

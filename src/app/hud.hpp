@@ -8,6 +8,8 @@
 #include <vector>
 
 #include <particle_sandbox/math.hpp>
+#include <particle_sandbox/solver_settings.hpp>
+#include <particle_sandbox/step_profile.hpp>
 
 namespace psb::app {
 
@@ -23,8 +25,22 @@ struct HudData {
     double spawnRadius = 0.0;      ///< m
     double arrowSeconds = 0.0;     ///< arrow length per unit speed, s; 0 when arrows are off
     bool paused = false;
-    double stepMs = 0.0;  ///< wall-clock ms of simulation per frame
-    double drawMs = 0.0;  ///< wall-clock ms of drawing per frame
+    double stepMs = 0.0;      ///< wall-clock ms of simulation per frame
+    double drawMs = 0.0;      ///< wall-clock ms of drawing per frame
+    std::string mode;         ///< stepping mode, e.g. "substep x4"
+    std::string broadphase;   ///< the broadphase in use ("grid", ...; the exact mode's cells)
+    int threads = 1;          ///< threads the step may use
+    double maxOverlap = 0.0;  ///< deepest overlap met by the last frame's steps, m
+    double keDrift = 0.0;     ///< relative KE drift since the last user action; NaN: none
+};
+
+/// What the profile overlay shows.
+struct ProfileData {
+    StepProfile profile;  ///< the last step's stages (World::profile())
+    StepMode mode = StepMode::Discrete;
+    double eventsPerStep = 0.0;  ///< exact mode: events per step
+    double frameStepMs = 0.0;    ///< wall-clock ms of simulation in the last frame
+    double frameDrawMs = 0.0;    ///< wall-clock ms of drawing in the last frame
 };
 
 /// The window title: `Particle Sandbox - N particles`, plus ` - PAUSED`, plus ` - SCENE`
@@ -34,6 +50,9 @@ struct HudData {
 
 /// The status lines, top to bottom.
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);
+
+/// The profile overlay, one line per stage then the frame's step and draw times.
+[[nodiscard]] std::vector<std::string> profileLines(const ProfileData& d);
 
 /// Every control, as (keys, what it does), in the order the help overlay shows them.
 [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& controls();

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "hud.hpp"
 
@@ -38,6 +40,64 @@ TEST(Hud, HelpListsEveryControl) {
     const auto lines = helpLines();
     EXPECT_EQ(lines.size(), controls().size() + 2);
     for (const char* key : {"M", "S", "A", "Space", "Wheel", "Ctrl+S", "Esc", "H"}) {
+        EXPECT_TRUE(std::any_of(controls().begin(), controls().end(), [&](const auto& c) {
+            return c.first == key;
+        })) << key;
+    }
+}
+
+bool anyContains(const std::vector<std::string>& lines, const std::string& s) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.find(s) != std::string::npos; });
+}
+
+TEST(Hud, LinesShowModeBroadphaseThreadsOverlapAndDrift) {
+    HudData d;
+    d.mode = "substep x4";
+    d.broadphase = "grid";
+    d.threads = 2;
+    d.maxOverlap = 0.0123;
+    d.keDrift = -2.5e-4;
+    const auto lines = hudLines(d);
+    EXPECT_TRUE(anyContains(lines, "Mode substep x4 | grid | 2 threads"));
+    EXPECT_TRUE(anyContains(lines, "Overlap max 0.0123 m"));
+    EXPECT_TRUE(anyContains(lines, "KE drift -2.50e-04 since last action"));
+    d.keDrift = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_TRUE(anyContains(hudLines(d), "KE drift n/a"));
+}
+
+TEST(Hud, ProfileListsEveryStageAndTheFrameTimes) {
+    ProfileData d;
+    d.profile.gravity = 0.125;
+    d.profile.findPairs = 1.5;
+    d.profile.reorder = 0.25;
+    d.profile.total = 3.0;
+    d.profile.pairs = 1234;
+    d.frameStepMs = 6.0;
+    d.frameDrawMs = 4.5;
+    const auto lines = profileLines(d);
+    for (const char* stage : {"gravity", "move", "find pairs", "resolve", "separate", "walls",
+                              "reorder", "total", "frame: step", "frame: draw"}) {
+        EXPECT_TRUE(anyContains(lines, stage)) << stage;
+    }
+    EXPECT_TRUE(anyContains(lines, "1.500"));
+    EXPECT_TRUE(anyContains(lines, "1234"));
+    EXPECT_TRUE(anyContains(lines, "4.500"));
+}
+
+TEST(Hud, ProfileInExactModeNamesTheEventStages) {
+    ProfileData d;
+    d.mode = StepMode::Exact;
+    d.eventsPerStep = 420;
+    const auto lines = profileLines(d);
+    EXPECT_TRUE(anyContains(lines, "process events"));
+    EXPECT_TRUE(anyContains(lines, "events per step"));
+    EXPECT_TRUE(anyContains(lines, "420"));
+    EXPECT_FALSE(anyContains(lines, "separate"));
+}
+
+TEST(Hud, HelpListsTheModeAndProfileKeys) {
+    for (const char* key : {"T", "O / F3"}) {
         EXPECT_TRUE(std::any_of(controls().begin(), controls().end(), [&](const auto& c) {
             return c.first == key;
         })) << key;

@@ -9,6 +9,7 @@
 
 #include "assets.hpp"
 #include "camera.hpp"
+#include "overlay.hpp"
 #include "renderer.hpp"
 #include "text.hpp"
 
@@ -211,6 +212,28 @@ TEST_F(RenderTest, WallsAreDrawnAroundTheBox) {
     EXPECT_TRUE(isColor(pixel(200, 49), 255, 255, 255));
     EXPECT_TRUE(isColor(pixel(350, 200), 255, 255, 255));
     EXPECT_TRUE(isColor(pixel(200, 200), 0, 0, 0));
+}
+
+TEST_F(RenderTest, TheProfileOverlayDrawsTextOnlyWhenOn) {
+    Overlays o;
+    o.hud = {"FPS 60"};
+    o.profile = {"Profile, last step (ms)", "find pairs               1.500",
+                 "total                    3.000"};
+    const auto drawOverlay = [&] {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        drawOverlays(sdl_, *font_, o, kSize, kSize);
+        SDL_RenderPresent(sdl_);
+    };
+    o.showProfile = false;
+    drawOverlay();
+    // The profile goes to the top-right corner; the short HUD line stays at the top-left.
+    EXPECT_EQ(brightPixels(kSize / 2, 0, kSize, 80), 0);
+    EXPECT_GT(brightPixels(0, 0, 100, 30), 10);
+    o.showProfile = true;
+    drawOverlay();
+    EXPECT_GT(brightPixels(kSize / 2, 0, kSize, 80), 100);
+    EXPECT_EQ(brightPixels(kSize / 2, 100, kSize, kSize), 0);  // nothing below its three lines
 }
 
 TEST(ArrowScale, IsTheOriginalsThirdOfASecondForAFewParticles) {
