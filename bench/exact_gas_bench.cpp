@@ -1,9 +1,9 @@
 // Exact (event-driven) mode on a dilute 2-D gas: collisions resolved per second on one core.
 //
-// The scene: 100 000 (and 10 000) discs of radius 1 m at packing fraction 0.1 in a square box with walls,
-// restitution 1, velocity components normally distributed (σ = 1 m/s). Each iteration advances
-// the world by 10 simulated seconds (about 10^5 collisions); the first steps after setup are
-// excluded (they build the cell list and the queue, and let the initial lattice relax).
+// The scene: 100 000 (and 10 000) discs of radius 1 m at packing fraction 0.1 in a square box with
+// walls, restitution 1, velocity components normally distributed (σ = 1 m/s). Each iteration
+// advances the world by 10 simulated seconds (about 10^5 collisions); the first steps after setup
+// are excluded (they build the cell list and the queue, and let the initial lattice relax).
 //
 //   build/bench/exact_gas_bench --benchmark_repetitions=5
 //

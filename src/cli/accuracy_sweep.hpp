@@ -28,7 +28,8 @@ struct AccuracyScene {
     double duration = 1.0;       ///< simulated seconds
 };
 
-/// The standard scenes (the six of the issue, plus a bullet at 10^4 times the speed of a row); `root` is the source tree (files under assets/scenes, bench/scenes).
+/// The standard scenes (the six of the issue, plus a bullet at 10^4 times the speed of a row);
+/// `root` is the source tree (files under assets/scenes, bench/scenes).
 [[nodiscard]] std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root);
 
 /// Which step sizes to try.
