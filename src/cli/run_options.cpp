@@ -110,6 +110,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     }
 
     RunOptions o;
+    if (scene.empty()) throw UsageError("SCENE: the path is empty");
     o.scene = scene;
     o.duration = parseFiniteNumber(duration, "--duration");
     if (o.duration < 0.0) throw UsageError("--duration: must be >= 0, got '" + duration + "'");

@@ -28,6 +28,11 @@ TEST(RunOptionsEdges, AnOptionGivenTwiceIsRefusedNamingIt) {
               "--duration: At Most 1 required but received 2");
 }
 
+TEST(RunOptionsEdges, AnEmptySceneIsRefused) {
+    // Found by the run_options fuzzer: `particle-sim "" -d 2` was accepted.
+    EXPECT_EQ(usageError({"", "-d", "2"}), "SCENE: the path is empty");
+}
+
 TEST(RunOptionsEdges, AnOptionWithoutItsValueIsRefusedNamingIt) {
     EXPECT_EQ(usageError({"s", "--duration", "1", "--dt"}), "--dt: 1 required S missing");
     EXPECT_EQ(usageError({"s", "--duration", "1", "--mode="}), "--mode: 1 required M missing");
