@@ -13,6 +13,7 @@
 #include <string>
 
 #include "gas_scene.hpp"
+#include "run_benchmarks.hpp"
 
 namespace psb::bench {
 namespace {
@@ -73,9 +74,5 @@ void registerAll() {
 
 int main(int argc, char** argv) {
     psb::bench::registerAll();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return psb::bench::runBenchmarks(argc, argv);
 }

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "gas_scene.hpp"
+#include "run_benchmarks.hpp"
 
 // The reorder schedule is a core detail; the benchmark needs its period.
 #include "particle_reorder.hpp"
@@ -51,8 +52,8 @@ void accumulate(StepProfile& sum, const StepProfile& p) {
     sum.total += p.total;
 }
 
-void gas(benchmark::State& state, BroadPhaseKind kind, int threads, std::size_t n) {
-    World w = makeGasWorld(n, kind, threads);
+/// Warms `w` up, then times one step per benchmark iteration and reports the profile.
+void timeSteps(benchmark::State& state, World& w, std::size_t n) {
     for (int k = 0; k < kWarmup; ++k)
         w.step();
     StepProfile sum;
@@ -61,6 +62,11 @@ void gas(benchmark::State& state, BroadPhaseKind kind, int threads, std::size_t 
         accumulate(sum, w.profile());
     }
     reportProfile(state, sum, w, n);
+}
+
+void gas(benchmark::State& state, BroadPhaseKind kind, int threads, std::size_t n) {
+    World w = makeGasWorld(n, kind, threads);
+    timeSteps(state, w, n);
 }
 
 enum class Feature { Gravity, Friction, Walls };
@@ -82,14 +88,7 @@ void feature(benchmark::State& state, Feature f, bool on, std::size_t n) {
             w.setWalls(on);
             break;
     }
-    for (int k = 0; k < kWarmup; ++k)
-        w.step();
-    StepProfile sum;
-    for (auto _ : state) {
-        w.step();
-        accumulate(sum, w.profile());
-    }
-    reportProfile(state, sum, w, n);
+    timeSteps(state, w, n);
 }
 
 /// Radii log-uniform over `span` (largest 10 m), packing fraction 0.1, otherwise the gas: the
@@ -115,13 +114,7 @@ void spread(benchmark::State& state, BroadPhaseKind kind, double span, std::size
                .mass = r * r,
                .radius = r});
     }
-    w.step();
-    StepProfile sum;
-    for (auto _ : state) {
-        w.step();
-        accumulate(sum, w.profile());
-    }
-    reportProfile(state, sum, w, n);
+    timeSteps(state, w, n);
 }
 
 void registerAll() {
@@ -175,9 +168,5 @@ void registerAll() {
 
 int main(int argc, char** argv) {
     psb::bench::registerAll();
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return psb::bench::runBenchmarks(argc, argv);
 }

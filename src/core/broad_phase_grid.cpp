@@ -193,10 +193,7 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
     const std::size_t n = p.size();
     const std::size_t small = n - large_.size();
     const int chunks = parallel::chunksFor(threads, small);
-    if (chunkPairs_.size() < static_cast<std::size_t>(chunks)) {
-        chunkPairs_.resize(chunks);
-        chunkFound_.resize(chunks);
-    }
+    chunks_.prepare(chunks);
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
@@ -210,7 +207,6 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
     // r + r is exactly the constant.
     const double contact = equalRadius_ + equalRadius_;
     auto query = [&]<bool kEqualRadii>(int c, std::size_t begin, std::size_t end) {
-        std::vector<ContactPair>& pairs = chunkPairs_[c];
         std::size_t found = 0;
         for (std::size_t a = begin; a < end; ++a) {
             const std::uint32_t i = entries[a];
@@ -221,9 +217,7 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
             // particle from their side. The border ring of empty cells spares bounds checks.
             const std::uint32_t k0 = static_cast<std::uint32_t>(a + 1), k1 = start[cell + 2];
             const std::uint32_t k2 = start[cell + stride - 1], k3 = start[cell + stride + 2];
-            const std::size_t most = found + (k1 - k0) + (k3 - k2);
-            if (pairs.size() < most) pairs.resize(2 * most);  // grows, then stays
-            ContactPair* buf = pairs.data();
+            ContactPair* buf = chunks_.room(c, found + (k1 - k0) + (k3 - k2));
             // discsOverlap's arithmetic; it is symmetric in i and j to the last bit
             // (x[i] - x[j] is exactly -(x[j] - x[i])), so which of the two comes first does
             // not matter. Branch-free: most candidates miss.
@@ -240,7 +234,7 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
             for (std::uint32_t k = k2; k < k3; ++k)
                 test(k);
         }
-        chunkFound_[c] = found;
+        chunks_.setFound(c, found);
     };
     const bool equalRadii = equalRadius_ > 0.0;
     parallel::forChunks(threads, chunks, small, [&](int c, std::size_t begin, std::size_t end) {
@@ -251,18 +245,13 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
         }
     });
     const std::size_t before = out.size();
-    std::size_t total = 0;
-    for (int c = 0; c < chunks; ++c)
-        total += chunkFound_[c];
+    std::size_t total = chunks_.total();
     if (!large_.empty()) {
         findLargePairs(p);
         total += largePairs_.size();
     }
     out.resize(before + total);
-    ContactPair* dst = out.data() + before;
-    for (int c = 0; c < chunks; ++c) {
-        dst = std::copy_n(chunkPairs_[c].data(), chunkFound_[c], dst);
-    }
+    ContactPair* dst = chunks_.copyTo(out.data() + before);
     std::copy(largePairs_.begin(), largePairs_.end(), dst);
     // Found in cell order; the resolve stage needs ascending (i, j).
     sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
@@ -272,9 +261,7 @@ std::size_t GridBroadPhase::memoryBytes() const {
     std::size_t bytes = sizeof(std::uint32_t) * (cellOf_.capacity() + cellStart_.capacity() +
                                                  entries_.capacity() + large_.capacity());
     bytes += sizeof(ContactPair) * (largePairs_.capacity() + sortScratch_.capacity());
-    for (const auto& v : chunkPairs_)
-        bytes += sizeof(ContactPair) * v.capacity();
-    return bytes;
+    return bytes + chunks_.memoryBytes();
 }
 
 }  // namespace psb

@@ -46,6 +46,7 @@
 #include <particle_sandbox/particle_arrays.hpp>
 
 #include "contact_pair.hpp"
+#include "pair_chunks.hpp"
 #include "particle_stats.hpp"
 
 namespace psb {
@@ -94,8 +95,7 @@ class GridBroadPhase {
     std::vector<std::uint32_t> partTotals_;  ///< particles in the cell ranges before each part
     std::vector<ContactPair> largePairs_;
     std::vector<ContactPair> sortScratch_;
-    std::vector<std::vector<ContactPair>> chunkPairs_;  ///< used up to chunkFound_[c]
-    std::vector<std::size_t> chunkFound_;
+    PairChunks chunks_;
 };
 
 }  // namespace psb

@@ -141,10 +141,7 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
     if (n < 2 || nodes_.empty()) return;
     const std::size_t leafCount = leaves_.size();
     const int chunks = parallel::chunksFor(threads, n);
-    if (chunkPairs_.size() < static_cast<std::size_t>(chunks)) {
-        chunkPairs_.resize(chunks);
-        chunkFound_.resize(chunks);
-    }
+    chunks_.prepare(chunks);
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
@@ -152,7 +149,6 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
     const std::uint32_t* order = order_.data();
     const std::uint32_t* leaves = leaves_.data();
     parallel::forChunks(threads, chunks, leafCount, [&](int c, std::size_t begin, std::size_t end) {
-        std::vector<ContactPair>& pairs = chunkPairs_[c];
         std::size_t found = 0;
         // Breadth is at most 4 per level below the current node, so a fixed stack suffices.
         std::uint32_t stack[4 * (kMaxDepth + 1) + 1];
@@ -179,10 +175,8 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
                 }
                 // Each pair of leaves once: from the lower-numbered one.
                 if (k < self) continue;
-                const std::size_t most =
-                    found + std::size_t{leaf.end - leaf.begin} * (node.end - node.begin);
-                if (pairs.size() < most) pairs.resize(2 * most);  // grows, then stays
-                ContactPair* buf = pairs.data();
+                ContactPair* buf = chunks_.room(
+                    c, found + std::size_t{leaf.end - leaf.begin} * (node.end - node.begin));
                 for (std::uint32_t a = leaf.begin; a < leaf.end; ++a) {
                     const std::uint32_t i = order[a];
                     const double xi = x[i], yi = y[i], ri = r[i];
@@ -199,16 +193,11 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
                 }
             }
         }
-        chunkFound_[c] = found;
+        chunks_.setFound(c, found);
     });
     const std::size_t before = out.size();
-    std::size_t total = 0;
-    for (int c = 0; c < chunks; ++c)
-        total += chunkFound_[c];
-    out.resize(before + total);
-    ContactPair* dst = out.data() + before;
-    for (int c = 0; c < chunks; ++c)
-        dst = std::copy_n(chunkPairs_[c].data(), chunkFound_[c], dst);
+    out.resize(before + chunks_.total());
+    chunks_.copyTo(out.data() + before);
     sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
 }
 
@@ -216,8 +205,7 @@ std::size_t QuadtreeBroadPhase::memoryBytes() const {
     std::size_t bytes = sizeof(std::uint32_t) * (code_.capacity() + order_.capacity() +
                                                  codeTmp_.capacity() + orderTmp_.capacity());
     bytes += level_.capacity() + sizeof(Node) * nodes_.capacity();
-    for (const auto& v : chunkPairs_)
-        bytes += sizeof(ContactPair) * v.capacity();
+    bytes += chunks_.memoryBytes();
     bytes +=
         sizeof(std::uint32_t) * leaves_.capacity() + sizeof(ContactPair) * sortScratch_.capacity();
     return bytes;

@@ -37,6 +37,7 @@
 #include <particle_sandbox/particle_arrays.hpp>
 
 #include "contact_pair.hpp"
+#include "pair_chunks.hpp"
 #include "particle_stats.hpp"
 
 namespace psb {
@@ -71,8 +72,7 @@ class QuadtreeBroadPhase {
     double slack_ = 0.0;                 ///< absolute rounding slack for box tests, metres
     std::vector<std::uint32_t> leaves_;  ///< node indices of the leaves
     std::vector<ContactPair> sortScratch_;
-    std::vector<std::vector<ContactPair>> chunkPairs_;  ///< used up to chunkFound_[c]
-    std::vector<std::size_t> chunkFound_;
+    PairChunks chunks_;
 };
 
 }  // namespace psb

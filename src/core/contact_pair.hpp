@@ -48,11 +48,4 @@ inline void appendPartners(std::uint32_t i, std::vector<std::uint32_t>& partners
 void sortPairs(std::vector<ContactPair>& pairs, std::size_t from, std::vector<ContactPair>& scratch,
                std::uint32_t indexLimit);
 
-/// Appends the per-chunk lists to `out` in chunk order.
-inline void concatenate(const std::vector<std::vector<ContactPair>>& chunks, int count,
-                        std::vector<ContactPair>& out) {
-    for (int c = 0; c < count; ++c)
-        out.insert(out.end(), chunks[c].begin(), chunks[c].end());
-}
-
 }  // namespace psb

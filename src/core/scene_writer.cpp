@@ -28,6 +28,12 @@ void appendNumber(std::string& out, double v, const char* what) {
     if (text.find_first_of(".e") == std::string_view::npos) out += ".0";
 }
 
+/// Appends `prefix` (the text before the value: separator and key) and then the number.
+void appendField(std::string& out, const char* prefix, double v, const char* what) {
+    out += prefix;
+    appendNumber(out, v, what);
+}
+
 void appendString(std::string& out, const std::string& s) {
     // nlohmann escapes control characters and quotes; invalid UTF-8 is replaced, not thrown.
     out += nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
@@ -50,19 +56,13 @@ std::string serializeScene(const Scene& s) {
     out += ",\n  \"version\": " + std::to_string(s.version);
 
     const WorldDef& w = s.world;
-    out += ",\n  \"world\": {\"width\": ";
-    appendNumber(out, w.width, "world.width");
-    out += ", \"height\": ";
-    appendNumber(out, w.height, "world.height");
+    appendField(out, ",\n  \"world\": {\"width\": ", w.width, "world.width");
+    appendField(out, ", \"height\": ", w.height, "world.height");
     out += w.walls ? ", \"walls\": true" : ", \"walls\": false";
-    out += ", \"gravity\": [";
-    appendNumber(out, w.gravity.x(), "world.gravity");
-    out += ", ";
-    appendNumber(out, w.gravity.y(), "world.gravity");
-    out += "], \"restitution\": ";
-    appendNumber(out, w.restitution, "world.restitution");
-    out += ", \"friction\": ";
-    appendNumber(out, w.friction, "world.friction");
+    appendField(out, ", \"gravity\": [", w.gravity.x(), "world.gravity");
+    appendField(out, ", ", w.gravity.y(), "world.gravity");
+    appendField(out, "], \"restitution\": ", w.restitution, "world.restitution");
+    appendField(out, ", \"friction\": ", w.friction, "world.friction");
     out += "}";
 
     const SolverSettings& v = s.solver;
@@ -78,18 +78,13 @@ std::string serializeScene(const Scene& s) {
     out += ",\n  \"particles\": [";
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
         const ParticleDef& p = s.particles[i];
-        out += i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ";
-        appendNumber(out, p.position.x(), "particle x");
-        out += ", \"y\": ";
-        appendNumber(out, p.position.y(), "particle y");
-        out += ", \"vx\": ";
-        appendNumber(out, p.velocity.x(), "particle vx");
-        out += ", \"vy\": ";
-        appendNumber(out, p.velocity.y(), "particle vy");
-        out += ", \"mass\": ";
-        appendNumber(out, p.mass, "particle mass");
-        out += ", \"radius\": ";
-        appendNumber(out, p.radius, "particle radius");
+        appendField(out, i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ", p.position.x(),
+                    "particle x");
+        appendField(out, ", \"y\": ", p.position.y(), "particle y");
+        appendField(out, ", \"vx\": ", p.velocity.x(), "particle vx");
+        appendField(out, ", \"vy\": ", p.velocity.y(), "particle vy");
+        appendField(out, ", \"mass\": ", p.mass, "particle mass");
+        appendField(out, ", \"radius\": ", p.radius, "particle radius");
         out += ", \"color\": ";
         appendColor(out, p.color);
         out += '}';

@@ -19,10 +19,14 @@
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "test_util.hpp"
+
 namespace psb {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readFile;
+using test::TempDir;
 
 bool sameBits(double a, double b) {
     return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
@@ -57,29 +61,6 @@ void expectIdentical(const Scene& a, const Scene& b) {
 }
 
 /// A fresh, empty directory under the system's temporary directory.
-class TempDir {
-  public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "psb-scene-test-XXXXXX").string();
-        path_ = ::mkdtemp(pattern.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, ec);
-        fs::remove_all(path_, ec);
-    }
-    [[nodiscard]] const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
-};
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
 
 TEST(SceneRoundTrip, AwkwardDoublesSurviveSerializeAndParseBitForBit) {
     Scene s;
@@ -116,7 +97,7 @@ TEST(SceneRoundTrip, ARunningWorldSavedAndLoadedContinuesExactlyAsIfUninterrupte
     for (int k = 0; k < 50; ++k)
         a.step();
 
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "snap.json";
     saveScene(sceneFromWorld(a, "snap"), file);
     World b = makeWorld(loadScene(file));
@@ -158,7 +139,7 @@ TEST(SceneRoundTrip, MakeWorldKeepsTheSceneOrderAndSettings) {
 }
 
 TEST(SceneSave, ReplacesTheFileAndLeavesNoTemporaryBehind) {
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "scene.json";
     saveScene(defaultScene(), file);
     Scene other = defaultScene();
@@ -169,7 +150,7 @@ TEST(SceneSave, ReplacesTheFileAndLeavesNoTemporaryBehind) {
 }
 
 TEST(SceneSave, AMissingDirectoryIsReportedAndNothingIsCreated) {
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "missing" / "scene.json";
     try {
         saveScene(defaultScene(), file);
@@ -182,7 +163,7 @@ TEST(SceneSave, AMissingDirectoryIsReportedAndNothingIsCreated) {
 }
 
 TEST(SceneSave, ADirectoryInTheWayIsReportedAndLeftAlone) {
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "scene.json";
     fs::create_directory(file);
     try {
@@ -196,7 +177,7 @@ TEST(SceneSave, ADirectoryInTheWayIsReportedAndLeftAlone) {
 }
 
 TEST(SceneSave, AParentThatIsAFileIsReported) {
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     std::ofstream(dir.path() / "plain") << "x";
     const fs::path file = dir.path() / "plain" / "scene.json";
     try {
@@ -212,7 +193,7 @@ TEST(SceneSave, AParentThatIsAFileIsReported) {
 
 TEST(SceneSave, NoPermissionLeavesTheOldFileIntact) {
     if (::geteuid() == 0) GTEST_SKIP() << "root ignores directory permissions";
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "scene.json";
     saveScene(defaultScene(), file);
     const std::string before = readFile(file);
@@ -234,7 +215,7 @@ TEST(SceneSave, NoPermissionLeavesTheOldFileIntact) {
 
 TEST(SceneSave, AWriteThatFailsHalfwayLeavesTheOldFileIntactAndNoTemporary) {
     // A file-size limit makes write(2) fail part way, as a full disk would, even for root.
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "scene.json";
     saveScene(defaultScene(), file);
     const std::string before = readFile(file);
@@ -274,7 +255,7 @@ TEST(SceneSave, ADirectoryThatRefusesNewFilesIsReportedEvenForRoot) {
 }
 
 TEST(SceneSave, ANonFiniteValueIsRefusedBeforeTheFileIsTouched) {
-    TempDir dir;
+    TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "scene.json";
     saveScene(defaultScene(), file);
     const std::string before = readFile(file);

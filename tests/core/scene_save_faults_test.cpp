@@ -37,33 +37,14 @@
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "test_util.hpp"
+
 namespace psb {
 namespace {
 
 namespace fs = std::filesystem;
-
-class TempDir {
-  public:
-    TempDir() {
-        std::string pattern = (fs::temp_directory_path() / "psb-save-fault-XXXXXX").string();
-        path_ = ::mkdtemp(pattern.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path_, ec);
-    }
-    [[nodiscard]] const fs::path& path() const { return path_; }
-
-  private:
-    fs::path path_;
-};
-
-std::string readFile(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::readFile;
+using test::TempDir;
 
 #ifdef PSB_HAVE_SECCOMP
 
@@ -176,7 +157,7 @@ class SceneSaveFault : public testing::Test {
             << "a temporary file was left behind";
     }
 
-    TempDir dir_;
+    TempDir dir_{"psb-save-fault"};
     fs::path file_;
     std::string before_;
     Scene next_;

@@ -5,6 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <stdlib.h>  // mkdtemp
 
 #include <particle_sandbox/world.hpp>
 
@@ -50,6 +57,38 @@ inline std::uint64_t stateHash(const World& w) {
     h = fnv1a(h, &c.wallImpulse, sizeof c.wallImpulse);
     h = fnv1a(h, &c.maxOverlap, sizeof c.maxOverlap);
     return h;
+}
+
+/// A fresh directory under the system's temporary directory, removed with everything in it
+/// (after giving the owner back every permission a test took away).
+class TempDir {
+  public:
+    explicit TempDir(const std::string& prefix) {
+        std::string pattern =
+            (std::filesystem::temp_directory_path() / (prefix + "-XXXXXX")).string();
+        if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("mkdtemp failed");
+        path_ = pattern;
+    }
+    ~TempDir() {
+        std::error_code ec;
+        std::filesystem::permissions(path_, std::filesystem::perms::owner_all,
+                                     std::filesystem::perm_options::add, ec);
+        std::filesystem::remove_all(path_, ec);
+    }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    [[nodiscard]] const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+};
+
+/// The whole content of a file (empty if it cannot be read).
+inline std::string readFile(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
 }
 
 }  // namespace psb::test
