@@ -592,33 +592,10 @@ void App::sampleAnalysis() {
     if (view_.trails != TrailMode::Off) trails_.update(world_);
 }
 
-void App::drawAnalysis() {
-    if (view_.momentum) {
-        momentumView_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_.arrowSeconds);
-    }
-    const float w = static_cast<float>(camera_.viewportWidth());
-    const float h = static_cast<float>(camera_.viewportHeight());
-    float bottom = h - 8;  // the panels stack up from the bottom-right corner
-    if (view_.plots) {
-        bottom -= static_cast<float>(PlotPanel::height());
-        double mass = 0.0;
-        for (const double m : world_.particles().mass)
-            mass += m;
-        plotPanel_.draw(sdlRenderer_, *labelFont_, series_, w - PlotPanel::kWidth - 8, bottom,
-                        mass);
-        bottom -= 6;
-    }
-    if (view_.speeds) {
-        bottom = std::max(8.0f, bottom - SpeedHistogramPanel::kHeight);
-        speedPanel_.draw(sdlRenderer_, *labelFont_, world_.particles(),
-                         w - SpeedHistogramPanel::kWidth - 8, bottom);
-    }
-}
-
 void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
     drawStats_ = renderer_->draw(world_, camera_, view_, &trails_, selectedParticle());
-    drawAnalysis();
+    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_);
 
     // A launch in progress: a ghost disc at the press point and a line to the pointer.
     if (interaction_.mode() == Interaction::Mode::Launching) {

@@ -30,12 +30,10 @@
 #include <particle_sandbox/world.hpp>
 
 #include "accuracy.hpp"
+#include "analysis_overlays.hpp"
 #include "camera.hpp"
 #include "interaction.hpp"
-#include "momentum_view.hpp"
-#include "plot_panel.hpp"
 #include "renderer.hpp"
-#include "speed_histogram.hpp"
 #include "text.hpp"
 #include "trails.hpp"
 
@@ -109,8 +107,6 @@ class App {
     void toggleSpeedHistogram();
     /// Feeds the time series and the trails after the frame's steps.
     void sampleAnalysis();
-    /// Draws the momentum view and the panels that are on (the trails go with the discs).
-    void drawAnalysis();
     /// The particle whose trail TrailMode::Selected shows: the one held, or none.
     [[nodiscard]] ParticleId selectedParticle() const;
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
@@ -162,9 +158,7 @@ class App {
     TimeSeries series_{kSeriesSamples};
     std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
     Trails trails_;
-    MomentumView momentumView_;
-    PlotPanel plotPanel_;
-    SpeedHistogramPanel speedPanel_;
+    AnalysisOverlays analysis_;
 };
 
 }  // namespace psb::app

@@ -101,7 +101,8 @@ void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& w
     char buf[96];
     std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
                   total.capped ? " (arrow capped)" : "");
-    font.layout(buf, x + 10, y + 8, kTotalMomentumColor, text_);
+    font.layout(buf, x + 10, y - 10 - static_cast<float>(font.lineHeight()), kTotalMomentumColor,
+                text_);
     font.draw(text_);
 }
 

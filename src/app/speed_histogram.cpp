@@ -26,6 +26,7 @@ double SpeedHistogram::expectedDensity(double v) const {
 }
 
 SpeedHistogram speedHistogram(const ParticleArrays& p, std::size_t bins) {
+    std::vector<double> speeds;
     SpeedHistogram h;
     h.counts.assign(std::max<std::size_t>(bins, 1), 0);
     h.particles = p.size();
@@ -40,9 +41,13 @@ SpeedHistogram speedHistogram(const ParticleArrays& p, std::size_t bins) {
     }
     h.masses.assign(masses.begin(), masses.end());
     h.kT = energy / static_cast<double>(p.size());
-    const double lightest = h.masses.front().first;
-    const double cap = h.kT > 0.0 ? 5.0 * std::sqrt(h.kT / lightest) : fastest;
-    h.vmax = std::min(fastest, cap);
+    // Twice the 99th percentile speed: a gas keeps its tail, a bullet goes off scale.
+    speeds.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        speeds[i] = std::hypot(p.vx[i], p.vy[i]);
+    const auto q = speeds.begin() + static_cast<std::ptrdiff_t>(p.size() * 99 / 100);
+    std::nth_element(speeds.begin(), q, speeds.end());
+    h.vmax = std::min(fastest, 2.0 * *q);
     if (!(h.vmax > 0.0) || !std::isfinite(h.vmax)) h.vmax = 1.0;
     const double width = h.binWidth();
     for (std::size_t i = 0; i < p.size(); ++i) {

@@ -41,9 +41,9 @@ struct SpeedHistogram {
     [[nodiscard]] double expectedDensity(double v) const;
 };
 
-/// Bins the speeds of `p` into `bins` bins over [0, vmax]: vmax is the fastest particle,
-/// but at most 5 thermal speeds √(kT / m) of the lightest mass (one bullet must not squash
-/// the gas into the first bin); faster ones count as overflow.
+/// Bins the speeds of `p` into `bins` bins over [0, vmax]: vmax is the fastest particle, but at
+/// most twice the 99th percentile speed (one bullet must not squash the gas into the first
+/// bin); faster ones count as overflow.
 [[nodiscard]] SpeedHistogram speedHistogram(const ParticleArrays& p, std::size_t bins);
 
 /// Histogram colours, for the tests to look for.

@@ -37,9 +37,8 @@ void Trails::reset() {
 
 void Trails::update(const World& world) {
     if (world.time() == lastTime_) return;
-    if (frames_++ % kSampleFrames != 0) return;
     lastTime_ = world.time();
-    sample(world);
+    if (frames_++ % kSampleFrames == 0) sample(world);
 }
 
 void Trails::sample(const World& world) {
