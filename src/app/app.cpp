@@ -60,9 +60,11 @@ App::App(const AppOptions& options)
     spawn_.lengthScale = std::min(world_.def().width, world_.def().height) / 700.0;
     paused_ = options_.startPaused;
     view_.arrows = options_.arrows;
-    if (options_.benchOverlays) {
-        view_.momentum = view_.plots = view_.speeds = true;
-        view_.trails = TrailMode::All;
+    for (const char c : options_.benchOverlays) {
+        view_.momentum = view_.momentum || c == 'V';
+        view_.plots = view_.plots || c == 'K';
+        view_.speeds = view_.speeds || c == 'D';
+        if (c == 'L') view_.trails = TrailMode::All;
     }
 
     if (!options_.renderDriver.empty()) {
@@ -688,7 +690,8 @@ int App::runBenchmark() {
         "frame %.3f ms (%.1f fps)%s\n",
         world_.size(), options_.benchFrames, camera_.viewportWidth(), camera_.viewportHeight(),
         info.name != nullptr ? info.name : "?", step / n, draw / n, (step + draw) / n,
-        1000.0 * n / (step + draw), options_.benchOverlays ? ", overlays V L:all K D" : "");
+        1000.0 * n / (step + draw),
+        overlayFlags().empty() ? "" : (", overlays " + overlayFlags()).c_str());
     std::fflush(stdout);
     return 0;
 }

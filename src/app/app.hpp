@@ -51,8 +51,9 @@ struct AppOptions {
     std::string renderDriver;  ///< SDL render driver name ("software", ...); SDL's choice if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;
-    bool benchOverlays = false;  ///< the benchmark draws V, L (all), K and D too
-    std::uint32_t seed = 0;      ///< random spawns; 0 = from the clock
+    /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
+    std::string benchOverlays;
+    std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
 };
 
 class App {
