@@ -60,6 +60,12 @@ App::App(const AppOptions& options)
     spawn_.lengthScale = std::min(world_.def().width, world_.def().height) / 700.0;
     paused_ = options_.startPaused;
     view_.arrows = options_.arrows;
+    for (const char c : options_.benchOverlays) {
+        view_.momentum = view_.momentum || c == 'V';
+        view_.plots = view_.plots || c == 'K';
+        view_.speeds = view_.speeds || c == 'D';
+        if (c == 'L') view_.trails = TrailMode::All;
+    }
 
     if (!options_.renderDriver.empty()) {
         SDL_SetHint(SDL_HINT_RENDER_DRIVER, options_.renderDriver.c_str());
@@ -143,6 +149,9 @@ void App::setWorld(World world, std::string name) {
     view_.arrowSeconds = arrowSecondsFor(world_);
     spawn_.lengthScale = std::min(world_.def().width, world_.def().height) / 700.0;
     accumulator_ = 0.0;
+    series_.clear();
+    collisions_ = 0;
+    trails_.reset();
     fit();
     userAction();
 }
@@ -352,6 +361,18 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
         case SDLK_h:
             showHelp_ = !showHelp_;
             break;
+        case SDLK_v:
+            toggleMomentumView();
+            break;
+        case SDLK_l:
+            cycleTrails();
+            break;
+        case SDLK_k:
+            togglePlots();
+            break;
+        case SDLK_d:
+            toggleSpeedHistogram();
+            break;
         case SDLK_t:
             switchMode();
             break;
@@ -521,13 +542,62 @@ void App::update(double realSeconds) {
     view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
     // Show the held particle exactly at the hand, paused or not.
     interaction_.applyHold(world_, now(), launchSettings());
+    sampleAnalysis();
     lastStepMs_ = msSince(t0);
     stepMs_ = 0.95 * stepMs_ + 0.05 * lastStepMs_;
 }
 
+void App::toggleMomentumView() {
+    view_.momentum = !view_.momentum;
+    say(view_.momentum ? "Momentum view on" : "Momentum view off");
+}
+
+void App::cycleTrails() {
+    view_.trails = nextTrailMode(view_.trails);
+    if (view_.trails == TrailMode::Off) trails_.reset();
+    say(std::string("Trails: ") + toString(view_.trails));
+}
+
+void App::togglePlots() {
+    view_.plots = !view_.plots;
+    say(view_.plots ? "Plots on" : "Plots off");
+}
+
+void App::toggleSpeedHistogram() {
+    view_.speeds = !view_.speeds;
+    say(view_.speeds ? "Speed distribution on" : "Speed distribution off");
+}
+
+ParticleId App::selectedParticle() const {
+    return interaction_.mode() == Interaction::Mode::Holding ? interaction_.held() : kNullParticle;
+}
+
+std::string App::overlayFlags() const {
+    std::string f;
+    const auto add = [&f](const std::string& s) { f += (f.empty() ? "" : " ") + s; };
+    if (view_.momentum) add("V");
+    if (view_.trails != TrailMode::Off) add(std::string("L:") + toString(view_.trails));
+    if (view_.plots) add("K");
+    if (view_.speeds) add("D");
+    return f;
+}
+
+void App::sampleAnalysis() {
+    // Always recorded (three compensated sums over the particles), so the plots and the centre
+    // of mass path have a history the moment they are switched on.
+    // The accuracy monitor clears the world's counters before each frame's steps, so they hold
+    // this frame's collisions; the series wants a running total.
+    collisions_ += world_.counters().collisions;
+    ObservablesSample sample = sampleObservables(world_);
+    sample.collisions = collisions_;
+    series_.record(sample);
+    if (view_.trails != TrailMode::Off) trails_.update(world_);
+}
+
 void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
-    drawStats_ = renderer_->draw(world_, camera_, view_);
+    drawStats_ = renderer_->draw(world_, camera_, view_, &trails_, selectedParticle());
+    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_);
 
     // A launch in progress: a ghost disc at the press point and a line to the pointer.
     if (interaction_.mode() == Interaction::Mode::Launching) {
@@ -553,6 +623,7 @@ void App::render() {
     hud.stepMs = stepMs_;
     hud.drawMs = drawMs_;
     hud.mode = modeName(world_.solver());
+    hud.overlays = overlayFlags();
     // The exact mode finds its events through its own cell lists, not the broadphase.
     hud.broadphase = world_.solver().mode == StepMode::Exact
                          ? std::string("event cells")
@@ -603,7 +674,9 @@ int App::runBenchmark() {
         while (SDL_PollEvent(&e) != 0)
             handleEvent(e);
         const auto t0 = std::chrono::steady_clock::now();
+        world_.resetCounters();  // as a frame of update() does (see sampleAnalysis)
         world_.step();
+        sampleAnalysis();
         const double s = msSince(t0);
         render();
         if (f >= warmup) {
@@ -614,10 +687,11 @@ int App::runBenchmark() {
     const double n = options_.benchFrames;
     std::printf(
         "bench: %zu particles, %d frames, %dx%d, renderer %s: step %.3f ms, draw %.3f ms, "
-        "frame %.3f ms (%.1f fps)\n",
+        "frame %.3f ms (%.1f fps)%s\n",
         world_.size(), options_.benchFrames, camera_.viewportWidth(), camera_.viewportHeight(),
         info.name != nullptr ? info.name : "?", step / n, draw / n, (step + draw) / n,
-        1000.0 * n / (step + draw));
+        1000.0 * n / (step + draw),
+        overlayFlags().empty() ? "" : (", overlays " + overlayFlags()).c_str());
     std::fflush(stdout);
     return 0;
 }

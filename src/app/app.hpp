@@ -26,13 +26,16 @@
 #include <SDL.h>
 
 #include <particle_sandbox/launch.hpp>
+#include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "accuracy.hpp"
+#include "analysis_overlays.hpp"
 #include "camera.hpp"
 #include "interaction.hpp"
 #include "renderer.hpp"
 #include "text.hpp"
+#include "trails.hpp"
 
 namespace psb::app {
 
@@ -48,6 +51,8 @@ struct AppOptions {
     std::string renderDriver;  ///< SDL render driver name ("software", ...); SDL's choice if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;
+    /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
+    std::string benchOverlays;
     std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
 };
 
@@ -96,6 +101,18 @@ class App {
     [[nodiscard]] Vec2 pointerWorld() const;
     [[nodiscard]] LaunchSettings launchSettings() const;
 
+    // Analysis overlays (V, L, K, D).
+    void toggleMomentumView();
+    void cycleTrails();
+    void togglePlots();
+    void toggleSpeedHistogram();
+    /// Feeds the time series and the trails after the frame's steps.
+    void sampleAnalysis();
+    /// The particle whose trail TrailMode::Selected shows: the one held, or none.
+    [[nodiscard]] ParticleId selectedParticle() const;
+    /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
+    [[nodiscard]] std::string overlayFlags() const;
+
     AppOptions options_;
     SDL_Window* window_ = nullptr;
     SDL_Renderer* sdlRenderer_ = nullptr;
@@ -136,6 +153,13 @@ class App {
     double lastDrawMs_ = 0.0;
     DrawStats drawStats_;
     AccuracyMonitor accuracy_;
+
+    /// About 68 s of frames at 60 fps for the plots and the centre of mass path.
+    static constexpr std::size_t kSeriesSamples = 4096;
+    TimeSeries series_{kSeriesSamples};
+    std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
+    Trails trails_;
+    AnalysisOverlays analysis_;
 };
 
 }  // namespace psb::app

@@ -28,6 +28,7 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "Mode %s | %s | %d thread%s", d.mode.c_str(),
                   d.broadphase.c_str(), d.threads, d.threads == 1 ? "" : "s");
     lines.emplace_back(buf);
+    if (!d.overlays.empty()) lines.back() += " | on: " + d.overlays;
     if (std::isnan(d.keDrift)) {
         std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift n/a", d.maxOverlap);
     } else {
@@ -100,6 +101,10 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"T", "next stepping mode: discrete, substep, exact"},
         {"O / F3", "show / hide the profile overlay"},
         {"Ctrl+S", "save the world as a scene"},
+        {"V", "momentum view: m v arrows, centre of mass and its path, total momentum"},
+        {"L", "path traces: off / held particle / all"},
+        {"K", "plots: kinetic energy, momentum, collision rate against time"},
+        {"D", "speed histogram against 2-D Maxwell-Boltzmann"},
         {"H", "show / hide this help"},
         {"Esc", "quit"},
     };

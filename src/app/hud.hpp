@@ -32,6 +32,7 @@ struct HudData {
     int threads = 1;          ///< threads the step may use
     double maxOverlap = 0.0;  ///< deepest overlap met by the last frame's steps, m
     double keDrift = 0.0;     ///< relative KE drift since the last user action; NaN: none
+    std::string overlays;     ///< analysis overlays that are on, e.g. "V L:all K D"; "" none
 };
 
 /// What the profile overlay shows.

@@ -47,6 +47,14 @@ int main(int argc, char** argv) {
     cli.add_option("--frames", options.benchFrames, "Frames for --bench")
         ->check(CLI::Range(1, 1'000'000))
         ->capture_default_str();
+    cli.add_option("--bench-overlays", options.benchOverlays,
+                   "With --bench: also draw these overlays, by key: any of V (momentum), L (all "
+                   "trails), K (plots), D (speed histogram), e.g. VLKD")
+        ->check([](const std::string& keys) {
+            return keys.find_first_not_of("VLKD") == std::string::npos && !keys.empty()
+                       ? std::string()
+                       : "expected letters from VLKD, got '" + keys + "'";
+        });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
     try {
         cli.parse(argc, argv);

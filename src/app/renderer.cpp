@@ -96,11 +96,13 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
     ghost.draw(renderer_, circle_);
 }
 
-DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOptions& options) {
+DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOptions& options,
+                         Trails* trails, ParticleId selected) {
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
     drawWalls(world, camera);
+    if (trails != nullptr) trails->draw(renderer_, world, camera, options.trails, selected);
 
     discs_.clear();
     arrows_.clear();

@@ -15,6 +15,7 @@
 
 #include "camera.hpp"
 #include "geometry_batch.hpp"
+#include "trails.hpp"
 
 namespace psb::app {
 
@@ -27,6 +28,11 @@ struct ViewOptions {
     /// Arrow length per unit speed, seconds: an arrow reaches where the particle will be after
     /// this time. The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
     double arrowSeconds = 1.0 / 3.0;
+    // Analysis overlays (see docs/app.md, "Seeing the physics").
+    bool momentum = false;              ///< V: momentum arrows, centre of mass, Σ m v
+    TrailMode trails = TrailMode::Off;  ///< L: path traces
+    bool plots = false;                 ///< K: energy, momentum and collision rate against time
+    bool speeds = false;                ///< D: speed histogram against Maxwell–Boltzmann
 };
 
 /// An arrow scale for `world` (seconds, see ViewOptions::arrowSeconds): the original's 1/3 s,
@@ -54,8 +60,11 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Clears to black and draws the box walls, the particles and the enabled overlays.
-    DrawStats draw(const World& world, const Camera& camera, const ViewOptions& options);
+    /// Clears to black and draws the box walls, the particles and the enabled overlays. When
+    /// `trails` is given they are drawn under the discs as options.trails says, `selected`
+    /// naming the particle of TrailMode::Selected.
+    DrawStats draw(const World& world, const Camera& camera, const ViewOptions& options,
+                   Trails* trails = nullptr, ParticleId selected = kNullParticle);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius);

@@ -8,6 +8,7 @@
 #include "report.hpp"
 #include "run_options.hpp"
 #include "runner.hpp"
+#include "time_series_csv.hpp"
 
 namespace psb::cli {
 
@@ -28,12 +29,15 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         const Scene scene = loadScene(options.scene);
         World world;
         RunReport report;
+        TimeSeries series(1);
         {
             ProgressBar bar(err, errIsTerminal, options.progress);
             report = runScene(
                 scene, options, world,
-                [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); });
+                [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); },
+                options.timeseries ? &series : nullptr);
         }
+        if (options.timeseries) writeFileAtomically(*options.timeseries, timeSeriesCsv(series));
         if (options.save)
             saveScene(sceneFromWorld(world, scene.name, scene.description), *options.save);
         const std::string json = reportJson(report);

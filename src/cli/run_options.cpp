@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 
 namespace psb::cli {
 namespace {
@@ -17,7 +18,9 @@ constexpr const char* kDescription =
 constexpr const char* kFooter =
     "Report fields: mode, dt, substeps, broadphase (the one used), threads, particles, steps,\n"
     "sim_time, wall_seconds, collisions, wall_collisions, kinetic_energy {initial, final},\n"
-    "momentum {initial, final}, wall_impulse, max_overlap, escaped. See docs/scenes.md.";
+    "momentum {initial, final}, wall_impulse, max_overlap, escaped. See docs/scenes.md.\n"
+    "--timeseries columns: time_s, kinetic_energy_J, momentum_x_kg_m_per_s,\n"
+    "momentum_y_kg_m_per_s, com_x_m, com_y_m, collisions, collision_rate_per_s.";
 
 std::string joined(std::initializer_list<std::string_view> names) {
     std::string s;
@@ -76,6 +79,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     app.set_help_flag("-h,--help", "Print this help and exit");
 
     std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
+    std::string timeseries, timeseriesEvery;
     bool progress = false;
     app.add_option("SCENE", scene, "Scene file (JSON, see docs/scenes.md)")->required();
     app.add_option("-d,--duration", duration, "Simulated time to run, seconds (>= 0)")
@@ -94,6 +98,14 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     app.add_option("--report", report, "Write the JSON report to PATH, or '-' for stdout")
         ->type_name("PATH|-");
     app.add_option("--save", save, "Save the final state as a scene file")->type_name("PATH");
+    app.add_option("--timeseries", timeseries,
+                   "Write kinetic energy, momentum, centre of mass and collision rate against "
+                   "simulated time as CSV to PATH")
+        ->type_name("PATH");
+    app.add_option("--timeseries-every", timeseriesEvery,
+                   "A --timeseries row every N steps (default 1; the initial and final states "
+                   "always)")
+        ->type_name("N");
     app.add_flag("--progress", progress,
                  "Show a progress bar on stderr (only when stderr is a terminal; long runs "
                  "show one anyway)");
@@ -144,6 +156,15 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     if (app.count("--save") > 0) {
         if (save.empty()) throw UsageError("--save: needs a path");
         o.save = save;
+    }
+    if (app.count("--timeseries") > 0) {
+        if (timeseries.empty()) throw UsageError("--timeseries: needs a path");
+        o.timeseries = timeseries;
+    }
+    if (!timeseriesEvery.empty()) {
+        o.timeseriesEvery = parseInteger(timeseriesEvery, "--timeseries-every", 1,
+                                         std::numeric_limits<std::int64_t>::max());
+        if (!o.timeseries) throw UsageError("--timeseries-every: needs --timeseries PATH");
     }
     o.progress = progress;
     return o;

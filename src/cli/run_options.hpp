@@ -23,6 +23,10 @@ struct RunOptions {
     int threads = 1;                    ///< requested worker threads, >= 1
     std::optional<std::string> report;  ///< a path, or "-" for stdout; stdout when empty
     std::optional<std::filesystem::path> save;
+    /// Where to write the observables as CSV (see time_series_csv.hpp); none: not written.
+    std::optional<std::filesystem::path> timeseries;
+    /// A --timeseries row every this many steps (>= 1); the first and the last step always.
+    std::int64_t timeseriesEvery = 1;
     bool progress = false;
 };
 

@@ -1,9 +1,12 @@
 #include "runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
+
+#include "time_series_csv.hpp"
 
 namespace psb::cli {
 namespace {}  // namespace
@@ -49,7 +52,7 @@ std::uint64_t countEscaped(const World& world) {
 }
 
 RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
-                   const ProgressFn& progress) {
+                   const ProgressFn& progress, TimeSeries* series) {
     Scene s = scene;
     s.solver = effectiveSolver(scene, options);
     world = makeWorld(s);
@@ -63,9 +66,25 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.kineticEnergyInitial = kineticEnergy(world);
     r.momentumInitial = momentum(world);
 
+    const auto every =
+        static_cast<std::uint64_t>(std::max<std::int64_t>(1, options.timeseriesEvery));
+    if (series != nullptr) {
+        // The initial state, each every-th step, and the last step when it is not one of those.
+        const std::uint64_t rows = 1 + r.steps / every + (r.steps % every != 0 ? 1 : 0);
+        if (rows > kMaxTimeSeriesRows) {
+            throw UsageError("--timeseries-every: " + std::to_string(rows) +
+                             " rows is more than the limit of " +
+                             std::to_string(kMaxTimeSeriesRows) + "; use --timeseries-every " +
+                             std::to_string(r.steps / (kMaxTimeSeriesRows - 2) + 1) + " or more");
+        }
+        *series = TimeSeries(static_cast<std::size_t>(rows));
+        series->record(world);
+    }
+
     const auto start = std::chrono::steady_clock::now();
     for (std::uint64_t k = 0; k < r.steps; ++k) {
         world.step(s.solver.dt);
+        if (series != nullptr && ((k + 1) % every == 0 || k + 1 == r.steps)) series->record(world);
         if (progress) progress(k + 1, r.steps);
     }
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

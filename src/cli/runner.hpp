@@ -6,6 +6,7 @@
 
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/time_series.hpp>
 
 #include "run_options.hpp"
 
@@ -37,9 +38,12 @@ struct RunReport {
 using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
 
 /// Runs `scene` for stepsFor(options.duration, dt) steps of dt and returns the report. `world`
-/// receives the final state (for --save).
+/// receives the final state (for --save). When `series` is given it is replaced by one sized
+/// for the whole run and receives the initial state, every options.timeseriesEvery-th step and
+/// the final state; a run that would need more than kMaxTimeSeriesRows samples throws
+/// UsageError naming --timeseries-every before any step.
 [[nodiscard]] RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
-                                 const ProgressFn& progress = {});
+                                 const ProgressFn& progress = {}, TimeSeries* series = nullptr);
 
 /// Particles whose centre lies outside the box [0, width] × [0, height].
 [[nodiscard]] std::uint64_t countEscaped(const World& world);

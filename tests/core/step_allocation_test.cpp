@@ -8,6 +8,7 @@
 #include <new>
 #include <random>
 
+#include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/world.hpp>
 
 namespace {
@@ -70,6 +71,20 @@ TEST(SteadyState, StepsAllocateNothing) {
                 << toString(kind) << ", " << threads << " thread(s)";
         }
     }
+}
+
+TEST(SteadyState, RecordingATimeSeriesAllocatesNothing) {
+    World w = gas(2000, BroadPhaseKind::Auto, 1);
+    TimeSeries series(16);
+    for (int k = 0; k < 40; ++k)
+        w.step(0.01);  // warm-up: the step's scratch reaches its size
+    const std::size_t before = gAllocations.load();
+    for (int k = 0; k < 40; ++k) {  // wraps the ring more than twice
+        w.step(0.01);
+        ASSERT_TRUE(series.record(w));
+    }
+    EXPECT_EQ(gAllocations.load() - before, 0u);
+    EXPECT_EQ(series.size(), 16u);
 }
 
 }  // namespace

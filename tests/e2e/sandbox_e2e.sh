@@ -16,7 +16,11 @@
 #   5. presses S                                        -> label text appears above particles
 #   6. presses Ctrl+S                                   -> a scene file with the launched
 #                                                         particle, moving up-right
-#   7. presses Esc                                      -> the program exits cleanly
+#   7. presses V, L, L, K, D, steps, then V, K, D again -> the momentum view, trails, plots and
+#                                                         speed histogram appear in their colours
+#                                                         (logged, and named in the HUD), then
+#                                                         go away
+#   8. presses Esc                                      -> the program exits cleanly
 # Screenshots and the log are left in OUTPUT_DIR.
 set -euo pipefail
 
@@ -277,7 +281,54 @@ awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 100 && vy < -100) }' ||
 ((  $(grep -c '"mass":' "$OUT/saved.json") == 6 )) || fail "saved scene does not hold 6 particles"
 pass "Ctrl+S saved the scene; launched particle: vx $svx, vy $svy m/s"
 
-# --- 7. quit ------------------------------------------------------------------------------
+# --- 7. analysis overlays ----------------------------------------------------------------
+# Pixels of one exact colour (hex, as ImageMagick prints it) in the window.
+color_in() {
+    convert "$1" -crop "${WIDTH}x${HEIGHT}+${WX}+${WY}" +repage -depth 8 txt:- | grep -ci "$2" ||
+        true
+}
+YELLOW="#FFFF00" CYAN="#00E6FF" PLOT_RED="#FF5A5A" BARS="#4682E6"
+key s  # labels off
+wait_log "Labels off"
+shot 6-before-overlays
+for c in $YELLOW $PLOT_RED $BARS; do
+    (($(color_in "$OUT/6-before-overlays.png" "$c") == 0)) || fail "$c on screen before any overlay"
+done
+# V alone first: in this small window the panels cover much of the box.
+key v
+wait_log "Momentum view on"
+for _ in 1 2 3 4 5 6 7 8 9 10; do key n; done  # steps: samples for the path and the plots
+shot 7-momentum
+yellow=$(color_in "$OUT/7-momentum.png" "$YELLOW")
+cyan=$(color_in "$OUT/7-momentum.png" "$CYAN")
+((yellow > 30 && cyan > 10)) || fail "V: total momentum $yellow, centre of mass $cyan px"
+key l
+key l
+key k
+key d
+wait_log "Speed distribution on"
+for want in "Trails: selected" "Trails: all" "Plots on"; do
+    grep -q "$want" "$LOG" || fail "no '$want' in the log"
+done
+for _ in 1 2 3 4 5 6 7 8 9 10; do key n; done
+shot 7-overlays
+plot=$(color_in "$OUT/7-overlays.png" "$PLOT_RED")
+bars=$(color_in "$OUT/7-overlays.png" "$BARS")
+((plot > 20)) || fail "K: $plot px of the energy plot's colour"
+((bars > 200)) || fail "D: $bars px of histogram bars"
+pass "V, L, K, D: total momentum $yellow px, centre of mass $cyan px, energy plot $plot px, bars $bars px"
+key v
+key k
+key d
+wait_log "Speed distribution off"
+shot 8-overlays-off
+for c in $YELLOW $PLOT_RED $BARS; do
+    n=$(color_in "$OUT/8-overlays-off.png" "$c")
+    ((n == 0)) || fail "$c still on screen ($n px) after V, K, D off"
+done
+pass "V, K, D again hide their overlays"
+
+# --- 8. quit ------------------------------------------------------------------------------
 # The window may be gone before xdotool sends the key release: that error is expected.
 xdotool key --window "$WID" Escape 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done

@@ -1,0 +1,34 @@
+#pragma once
+// The analysis overlays drawn over the world (see docs/app.md, "Seeing the physics"): the
+// momentum view (V), the plots panel (K) and the speed histogram (D), each drawn only when its
+// ViewOptions toggle is on. The panels stack up from the bottom-right corner of the viewport.
+// The path traces (L) are drawn by the Renderer, under the discs.
+
+#include <SDL.h>
+
+#include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/world.hpp>
+
+#include "camera.hpp"
+#include "momentum_view.hpp"
+#include "plot_panel.hpp"
+#include "renderer.hpp"
+#include "speed_histogram.hpp"
+
+namespace psb::app {
+
+class Font;
+
+class AnalysisOverlays {
+  public:
+    /// Draws what `view` switches on; `series` feeds the plots and the centre of mass path.
+    void draw(SDL_Renderer* renderer, const Font& font, const World& world, const Camera& camera,
+              const TimeSeries& series, const ViewOptions& view);
+
+  private:
+    MomentumView momentum_;
+    PlotPanel plots_;
+    SpeedHistogramPanel speeds_;
+};
+
+}  // namespace psb::app

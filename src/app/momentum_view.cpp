@@ -1,0 +1,109 @@
+#include "momentum_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <particle_sandbox/diagnostics.hpp>
+
+#include "text.hpp"
+
+namespace psb::app {
+namespace {
+
+SDL_FPoint pt(const Vec2& v) {
+    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
+}
+
+/// A filled arrow from `a` to `b` (pixels): a shaft `halfWidth` px either side and a head of at
+/// most `head` px with ±30° flanks.
+void appendArrow(GeometryBatch& batch, const Vec2& a, const Vec2& b, double head, double halfWidth,
+                 SDL_Color c) {
+    const Vec2 d = b - a;
+    const double len = d.norm();
+    if (!(len > 1.0)) return;
+    const Vec2 u = d / len, n(-u.y(), u.x());
+    const double h = std::min(head, len);
+    const double hw = h * 0.57735;  // tan 30°
+    const Vec2 base = b - h * u;
+    batch.triangle(pt(b), pt(base + hw * n), pt(base - hw * n), c);
+    if (len > h) {
+        batch.polygon4(pt(a + halfWidth * n), pt(base + halfWidth * n), pt(base - halfWidth * n),
+                       pt(a - halfWidth * n), c);
+    }
+}
+
+double meanMass(const ParticleArrays& p) {
+    double m = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+        m += p.mass[i];
+    return p.size() > 0 ? m / static_cast<double>(p.size()) : 1.0;
+}
+
+}  // namespace
+
+TotalMomentumArrow totalMomentumArrow(const World& world, double arrowSeconds) {
+    TotalMomentumArrow a;
+    a.from = centreOfMass(world);
+    const Vec2 total = momentum(world);
+    Vec2 d = arrowSeconds * total / meanMass(world.particles());
+    const double cap = 0.4 * std::min(world.def().width, world.def().height);
+    if (d.norm() > cap) {
+        d *= cap / d.norm();
+        a.capped = true;
+    }
+    a.to = a.from + d;
+    return a;
+}
+
+void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& world,
+                        const Camera& camera, const TimeSeries& series, double arrowSeconds) {
+    const ParticleArrays& p = world.particles();
+    arrows_.clear();
+    text_.clear();
+    const double scale = arrowSeconds / meanMass(p);  // metres per kg·m/s
+    const double w = camera.viewportWidth(), h = camera.viewportHeight();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+        const Vec2 tip = camera.worldToScreen(
+            Vec2(p.x[i] + scale * p.mass[i] * p.vx[i], p.y[i] + scale * p.mass[i] * p.vy[i]));
+        if (std::max(c.x(), tip.x()) < 0 || std::min(c.x(), tip.x()) > w ||
+            std::max(c.y(), tip.y()) < 0 || std::min(c.y(), tip.y()) > h) {
+            continue;
+        }
+        appendArrow(arrows_, c, tip, 9.0, 0.75, kMomentumArrowColor);
+    }
+
+    // The centre of mass's path, one polyline.
+    path_.clear();
+    for (std::size_t k = 0; k < series.size(); ++k)
+        path_.push_back(pt(camera.worldToScreen(series[k].centreOfMass)));
+    const TotalMomentumArrow total = totalMomentumArrow(world, arrowSeconds);
+    const Vec2 com = camera.worldToScreen(total.from);
+    path_.push_back(pt(com));
+
+    // The marker: a ring of four quads around a cross, 7 px, so it reads at every zoom.
+    const SDL_Color cm = kCentreOfMassColor;
+    const float x = static_cast<float>(com.x()), y = static_cast<float>(com.y());
+    arrows_.quad(x - 7, y - 1, x + 7, y + 1, cm);
+    arrows_.quad(x - 1, y - 7, x + 1, y + 7, cm);
+    appendArrow(arrows_, com, camera.worldToScreen(total.to), 16.0, 2.0, kTotalMomentumColor);
+
+    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
+    arrows_.draw(renderer, nullptr);
+    if (path_.size() >= 2) {
+        SDL_SetRenderDrawColor(renderer, cm.r, cm.g, cm.b, 255);
+        SDL_RenderDrawLinesF(renderer, path_.data(), static_cast<int>(path_.size()));
+    }
+    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_BLEND);
+
+    const Vec2 P = momentum(world);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
+                  total.capped ? " (arrow capped)" : "");
+    font.layout(buf, x + 10, y - 10 - static_cast<float>(font.lineHeight()), kTotalMomentumColor,
+                text_);
+    font.draw(text_);
+}
+
+}  // namespace psb::app

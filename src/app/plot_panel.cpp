@@ -1,0 +1,163 @@
+#include "plot_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "text.hpp"
+
+namespace psb::app {
+
+double niceStep(double lo, double hi, int maxTicks) {
+    const double span = hi - lo;
+    if (!(span > 0.0) || !std::isfinite(span)) return 1.0;
+    const double rough = span / std::max(1, maxTicks - 1);
+    const double p = std::pow(10.0, std::floor(std::log10(rough)));
+    for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+        if (m * p >= rough) return m * p;
+    }
+    return 10.0 * p;
+}
+
+std::vector<double> niceTicks(double lo, double hi, int maxTicks) {
+    const double step = niceStep(lo, hi, maxTicks);
+    std::vector<double> ticks;
+    for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + 1e-9 * step; t += step) {
+        ticks.push_back(std::abs(t) < 1e-12 * step ? 0.0 : t);
+        if (ticks.size() > static_cast<std::size_t>(maxTicks) + 1) break;
+    }
+    return ticks;
+}
+
+PlotRange plotRange(double dataMin, double dataMax, double minSpan) {
+    if (!std::isfinite(dataMin) || !std::isfinite(dataMax)) return {};
+    if (!(minSpan > 0.0) || !std::isfinite(minSpan)) minSpan = 1.0;
+    double lo = dataMin, hi = dataMax;
+    if (hi - lo < minSpan) {
+        const double mid = 0.5 * (lo + hi);
+        lo = mid - 0.5 * minSpan;
+        hi = mid + 0.5 * minSpan;
+    }
+    const double step = niceStep(lo, hi, 4);
+    return {std::floor(lo / step) * step, std::ceil(hi / step) * step};
+}
+
+std::string tickLabel(double v, double step) {
+    char buf[32];
+    const double mag = std::max(std::abs(v), step);
+    // Digits down to the step's decade, at least 2, at most 8.
+    const int digits = std::clamp(
+        static_cast<int>(std::floor(std::log10(mag)) - std::floor(std::log10(step))) + 1, 2, 8);
+    if (mag >= 1e-3 && mag < 1e5) {
+        const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step))));
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    } else {
+        std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
+    }
+    return buf;
+}
+
+void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series, float x,
+                     float y, double totalMass) {
+    boxes_.clear();
+    text_.clear();
+    const float lh = static_cast<float>(font.lineHeight());
+    boxes_.quad(x, y, x + kWidth, y + static_cast<float>(height()), SDL_Color{0, 0, 0, 190});
+
+    struct Plot {
+        const char* title;
+        double (*value)(const ObservablesSample&);
+        SDL_Color color;
+    };
+    const Plot plots[4] = {
+        {"kinetic energy (J)", [](const ObservablesSample& s) { return s.kineticEnergy; },
+         kEnergyPlotColor},
+        {"momentum px (kg m/s)", [](const ObservablesSample& s) { return s.momentum.x(); },
+         kMomentumXPlotColor},
+        {"momentum py (kg m/s)", [](const ObservablesSample& s) { return s.momentum.y(); },
+         kMomentumYPlotColor},
+        {"collision rate (1/s)", [](const ObservablesSample& s) { return s.collisionRate; },
+         kRatePlotColor},
+    };
+
+    const std::size_t n = series.size();
+    double meanEnergy = 0.0;
+    for (std::size_t k = 0; k < n; ++k)
+        meanEnergy += series[k].kineticEnergy;
+    if (n > 0) meanEnergy /= static_cast<double>(n);
+    const double momentumScale = std::sqrt(2.0 * std::max(totalMass, 0.0) * meanEnergy);
+    const double t0 = n > 0 ? series[0].time : 0.0;
+    const double t1 = n > 1 ? series.back().time : t0 + 1.0;
+
+    const float left = x + 78, right = x + kWidth - 8;     // plot area, pixels
+    std::vector<std::pair<SDL_Color, std::size_t>> lines;  // colour, end index in line_
+    line_.clear();
+    for (int k = 0; k < 4; ++k) {
+        const Plot& pl = plots[k];
+        const float top = y + 6 + static_cast<float>(k) * kPlotHeight + lh;
+        const float bottom = top + kPlotHeight - 2 * lh - 8;
+        font.layout(pl.title, left, top - lh - 1, pl.color, text_);
+        // Axes: left and bottom, grey.
+        const SDL_Color axis{150, 150, 150, 255};
+        boxes_.quad(left - 1, top, left, bottom, axis);
+        boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+        if (n < 2) continue;
+
+        double lo = pl.value(series[0]), hi = lo;
+        for (std::size_t s = 1; s < n; ++s) {
+            const double v = pl.value(series[s]);
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        PlotRange r;
+        if (k == 0) {
+            r = plotRange(lo, hi, 0.01 * std::max(std::abs(meanEnergy), 1e-300));
+        } else if (k < 3) {
+            r = plotRange(lo, hi, 0.01 * std::max(momentumScale, 1e-300));
+        } else {
+            r = plotRange(0.0, std::max(hi, 1.0), 1.0);  // a rate starts at 0
+        }
+        const auto sy = [&](double v) {
+            return bottom - static_cast<float>((v - r.lo) / (r.hi - r.lo)) * (bottom - top);
+        };
+        const auto sx = [&](double t) {
+            return left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
+        };
+        const double step = niceStep(r.lo, r.hi, 4);
+        for (const double t : niceTicks(r.lo, r.hi, 4)) {
+            const float ty = sy(t);
+            boxes_.quad(left - 4, ty, left - 1, ty + 1, axis);
+            const std::string label = tickLabel(t, step);
+            font.layout(label, left - 6 - static_cast<float>(font.measure(label)), ty - lh / 2,
+                        SDL_Color{200, 200, 200, 255}, text_);
+        }
+        for (std::size_t s = 0; s < n; ++s)
+            line_.push_back({sx(series[s].time), sy(pl.value(series[s]))});
+        lines.emplace_back(pl.color, line_.size());
+    }
+    // The time axis of the last plot carries the labels: simulated seconds.
+    if (n >= 2) {
+        const float bottom = y + 6 + 3.0f * kPlotHeight + lh + kPlotHeight - 2 * lh - 8;
+        const double step = niceStep(t0, t1, 4);
+        for (const double t : niceTicks(t0, t1, 4)) {
+            const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
+            boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, SDL_Color{150, 150, 150, 255});
+            const std::string label = tickLabel(t, step);
+            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4,
+                        SDL_Color{200, 200, 200, 255}, text_);
+        }
+        font.layout("t (s)", x + 8, bottom + 4, SDL_Color{200, 200, 200, 255}, text_);
+    }
+
+    boxes_.draw(renderer, nullptr);
+    std::size_t begin = 0;
+    for (const auto& [color, end] : lines) {
+        SDL_SetRenderDrawColor(renderer, color.r, color.g, color.b, 255);
+        SDL_RenderDrawLinesF(renderer, line_.data() + begin, static_cast<int>(end - begin));
+        begin = end;
+    }
+    font.draw(text_);
+}
+
+}  // namespace psb::app

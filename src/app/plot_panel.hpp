@@ -1,0 +1,65 @@
+#pragma once
+// The plots panel (the K key): total kinetic energy (J), momentum px and py (kg m/s) and the
+// collision rate (1/s) against simulated time, from the app's TimeSeries.
+//
+// Each y range is fitted to the data but never narrower than a floor tied to the quantity's
+// own size: 1 % of the mean kinetic energy, 1 % of the momentum scale √(2 M E) (the largest
+// |Σ m v| the energy allows), so a conserved quantity drawn with rounding noise of 1e-15 is a
+// flat line in the middle of its plot instead of full-height wiggles; an inelastic gas's energy
+// visibly steps down.
+
+#include <string>
+#include <vector>
+
+#include <SDL.h>
+
+#include <particle_sandbox/time_series.hpp>
+
+#include "geometry_batch.hpp"
+
+namespace psb::app {
+
+class Font;
+
+/// A plot's y range, in the quantity's unit.
+struct PlotRange {
+    double lo = 0.0;
+    double hi = 1.0;
+};
+
+/// [dataMin, dataMax] widened symmetrically to at least `minSpan` (> 0), then rounded out to
+/// tick steps (see niceTicks).
+[[nodiscard]] PlotRange plotRange(double dataMin, double dataMax, double minSpan);
+
+/// Tick values in [lo, hi]: multiples of 1, 2 or 5 × 10^k, at most `maxTicks` of them.
+[[nodiscard]] std::vector<double> niceTicks(double lo, double hi, int maxTicks);
+/// The step niceTicks uses.
+[[nodiscard]] double niceStep(double lo, double hi, int maxTicks);
+
+/// `v` with as many significant digits as a tick `step` needs, e.g. 4038789 with step 20000 ->
+/// "4.04e+06"; 0.5 -> "0.5".
+[[nodiscard]] std::string tickLabel(double v, double step);
+
+/// Plot colours, for the tests to look for.
+inline constexpr SDL_Color kEnergyPlotColor{255, 90, 90, 255};
+inline constexpr SDL_Color kMomentumXPlotColor{90, 200, 255, 255};
+inline constexpr SDL_Color kMomentumYPlotColor{120, 255, 120, 255};
+inline constexpr SDL_Color kRatePlotColor{255, 200, 60, 255};
+
+class PlotPanel {
+  public:
+    static constexpr int kWidth = 330;       ///< pixels
+    static constexpr int kPlotHeight = 100;  ///< pixels per plot, title and axis included
+
+    /// Draws the four plots with their top-left corner at (x, y), pixels; `totalMass` (kg) sets
+    /// the momentum plots' floor. Nothing but the frame when `series` has fewer than 2 samples.
+    void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series, float x, float y,
+              double totalMass);
+    [[nodiscard]] static int height() { return 4 * kPlotHeight + 8; }
+
+  private:
+    GeometryBatch boxes_, text_;
+    std::vector<SDL_FPoint> line_;
+};
+
+}  // namespace psb::app

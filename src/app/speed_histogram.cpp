@@ -1,0 +1,143 @@
+#include "speed_histogram.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "plot_panel.hpp"
+#include "text.hpp"
+
+namespace psb::app {
+
+double rayleighDensity(double v, double kT, double m) {
+    if (!(v >= 0.0) || !(kT > 0.0) || !(m > 0.0)) return 0.0;
+    const double a = m / kT;
+    return a * v * std::exp(-0.5 * a * v * v);
+}
+
+double SpeedHistogram::expectedDensity(double v) const {
+    if (particles == 0) return 0.0;
+    double f = 0.0;
+    for (const auto& [m, n] : masses)
+        f += static_cast<double>(n) * rayleighDensity(v, kT, m);
+    return f / static_cast<double>(particles);
+}
+
+SpeedHistogram speedHistogram(const ParticleArrays& p, std::size_t bins) {
+    std::vector<double> speeds;
+    SpeedHistogram h;
+    h.counts.assign(std::max<std::size_t>(bins, 1), 0);
+    h.particles = p.size();
+    if (p.size() == 0) return h;
+    double energy = 0.0, fastest = 0.0;
+    std::map<double, std::size_t> masses;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double v2 = p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
+        energy += 0.5 * p.mass[i] * v2;
+        fastest = std::max(fastest, std::sqrt(v2));
+        ++masses[p.mass[i]];
+    }
+    h.masses.assign(masses.begin(), masses.end());
+    h.kT = energy / static_cast<double>(p.size());
+    // Twice the 99th percentile speed: a gas keeps its tail, a bullet goes off scale.
+    speeds.resize(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        speeds[i] = std::hypot(p.vx[i], p.vy[i]);
+    const auto q = speeds.begin() + static_cast<std::ptrdiff_t>(p.size() * 99 / 100);
+    std::nth_element(speeds.begin(), q, speeds.end());
+    h.vmax = std::min(fastest, 2.0 * *q);
+    if (!(h.vmax > 0.0) || !std::isfinite(h.vmax)) h.vmax = 1.0;
+    const double width = h.binWidth();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double v = std::hypot(p.vx[i], p.vy[i]);
+        if (v > h.vmax) {
+            ++h.overflow;
+            continue;
+        }
+        // The fastest particle sits exactly at vmax: it belongs to the last bin.
+        const auto b = std::min(h.counts.size() - 1, static_cast<std::size_t>(v / width));
+        ++h.counts[b];
+    }
+    return h;
+}
+
+void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
+                               float x, float y) {
+    boxes_.clear();
+    text_.clear();
+    curve_.clear();
+    const SpeedHistogram h = speedHistogram(p, kBins);
+    const float lh = static_cast<float>(font.lineHeight());
+    boxes_.quad(x, y, x + kWidth, y + kHeight, SDL_Color{0, 0, 0, 190});
+    const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
+    const float left = x + 62, right = x + kWidth - 10;
+    const float top = y + 6 + 2 * lh, bottom = y + kHeight - 2 * lh - 6;
+
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "speeds: %zu particles%s", h.particles,
+                  h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
+    font.layout(buf, x + 8, y + 4, kHistogramBarColor, text_);
+    std::snprintf(buf, sizeof buf, "2-D Maxwell-Boltzmann, kT = %.4g J", h.kT);
+    font.layout(buf, x + 8, y + 4 + lh, kRayleighCurveColor, text_);
+    boxes_.quad(left - 1, top, left, bottom, axis);
+    boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+
+    // Densities, s/m: a bin's count / (N · width), so bars and curve share one axis.
+    const double n = static_cast<double>(std::max<std::size_t>(h.particles, 1));
+    const double width = h.binWidth();
+    double top_density = 0.0;
+    for (const std::size_t c : h.counts)
+        top_density = std::max(top_density, static_cast<double>(c) / (n * width));
+    constexpr int kCurvePoints = 96;
+    for (int k = 0; k <= kCurvePoints; ++k)
+        top_density = std::max(top_density, h.expectedDensity(h.vmax * k / kCurvePoints));
+    const PlotRange r = plotRange(0.0, top_density > 0.0 ? top_density : 1.0, 1e-300);
+    const auto sy = [&](double d) {
+        return bottom - static_cast<float>(d / r.hi) * (bottom - top);
+    };
+    const auto sx = [&](double v) {
+        return left + static_cast<float>(v / h.vmax) * (right - left);
+    };
+    for (std::size_t b = 0; b < h.counts.size(); ++b) {
+        if (h.counts[b] == 0) continue;
+        const double d = static_cast<double>(h.counts[b]) / (n * width);
+        boxes_.quad(sx(static_cast<double>(b) * width) + 1, sy(d),
+                    sx(static_cast<double>(b + 1) * width), bottom, kHistogramBarColor);
+    }
+    for (int k = 0; k <= kCurvePoints; ++k) {
+        const double v = h.vmax * k / kCurvePoints;
+        curve_.push_back({sx(v), sy(h.expectedDensity(v))});
+    }
+
+    const double ystep = niceStep(0.0, r.hi, 4);
+    for (const double t : niceTicks(0.0, r.hi, 4)) {
+        const float ty = sy(t);
+        boxes_.quad(left - 4, ty, left - 1, ty + 1, axis);
+        const std::string label = tickLabel(t, ystep);
+        font.layout(label, left - 6 - static_cast<float>(font.measure(label)), ty - lh / 2, grey,
+                    text_);
+    }
+    const double xstep = niceStep(0.0, h.vmax, 5);
+    for (const double t : niceTicks(0.0, h.vmax, 5)) {
+        const float tx = sx(t);
+        boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
+        const std::string label = tickLabel(t, xstep);
+        font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4, grey,
+                    text_);
+    }
+    font.layout("speed (m/s)", right - static_cast<float>(font.measure("speed (m/s)")),
+                bottom + 4 + lh, grey, text_);
+    font.layout("density (s/m)", x + 8, bottom + 4 + lh, grey, text_);
+
+    boxes_.draw(renderer, nullptr);
+    if (h.particles > 0) {
+        SDL_SetRenderDrawColor(renderer, kRayleighCurveColor.r, kRayleighCurveColor.g,
+                               kRayleighCurveColor.b, 255);
+        SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
+    }
+    font.draw(text_);
+}
+
+}  // namespace psb::app

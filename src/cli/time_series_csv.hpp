@@ -1,0 +1,23 @@
+#pragma once
+// particle-sim --timeseries: a run's observables as CSV, one row per sample.
+
+#include <cstdint>
+#include <string>
+
+#include <particle_sandbox/time_series.hpp>
+
+namespace psb::cli {
+
+/// The header line: column names with their units after the last underscore.
+inline constexpr const char* kTimeSeriesCsvHeader =
+    "time_s,kinetic_energy_J,momentum_x_kg_m_per_s,momentum_y_kg_m_per_s,com_x_m,com_y_m,"
+    "collisions,collision_rate_per_s";
+
+/// Most rows --timeseries writes (about 1 GB of text); a run that would write more is refused.
+inline constexpr std::uint64_t kMaxTimeSeriesRows = 10'000'000;
+
+/// The header and one row per sample of `series`, oldest first, each line ending in '\n'.
+/// Doubles are written with 17 significant digits, so they read back bit-exact.
+[[nodiscard]] std::string timeSeriesCsv(const TimeSeries& series);
+
+}  // namespace psb::cli

@@ -1,0 +1,116 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace psb {
+namespace {
+
+ObservablesSample at(double time, std::uint64_t collisions) {
+    ObservablesSample s;
+    s.time = time;
+    s.collisions = collisions;
+    return s;
+}
+
+TEST(TimeSeries, SampleHoldsTheWorldsTotals) {
+    World w;
+    w.add({.position = {10.0, 10.0}, .velocity = {3.0, 4.0}, .mass = 2.0});
+    w.add({.position = {50.0, 10.0}, .velocity = {-1.0, 0.0}, .mass = 6.0});
+    const ObservablesSample s = sampleObservables(w);
+    EXPECT_EQ(s.time, 0.0);
+    EXPECT_DOUBLE_EQ(s.kineticEnergy, 28.0);  // ½·2·25 + ½·6·1
+    EXPECT_EQ(s.momentum, Vec2(0.0, 8.0));
+    EXPECT_EQ(s.centreOfMass, Vec2(40.0, 10.0));
+    EXPECT_EQ(s.collisions, 0u);
+    EXPECT_EQ(s.collisionRate, 0.0);
+}
+
+TEST(TimeSeries, RateIsCollisionsPerSimulatedSecondOverTheInterval) {
+    TimeSeries series(8);
+    ASSERT_TRUE(series.record(at(0.0, 0)));
+    ASSERT_TRUE(series.record(at(0.5, 10)));
+    ASSERT_TRUE(series.record(at(1.5, 13)));
+    EXPECT_EQ(series[0].collisionRate, 0.0);
+    EXPECT_DOUBLE_EQ(series[1].collisionRate, 20.0);  // 10 in 0.5 s
+    EXPECT_DOUBLE_EQ(series[2].collisionRate, 3.0);   // 3 in 1 s
+}
+
+TEST(TimeSeries, RingKeepsTheNewestSamplesOldestFirst) {
+    TimeSeries series(3);
+    for (int k = 0; k < 7; ++k)
+        ASSERT_TRUE(series.record(at(k, 2 * static_cast<std::uint64_t>(k))));
+    ASSERT_EQ(series.size(), 3u);
+    EXPECT_EQ(series.capacity(), 3u);
+    EXPECT_EQ(series.recorded(), 7u);
+    EXPECT_EQ(series[0].time, 4.0);
+    EXPECT_EQ(series[1].time, 5.0);
+    EXPECT_EQ(series.back().time, 6.0);
+    EXPECT_DOUBLE_EQ(series.back().collisionRate, 2.0);
+}
+
+TEST(TimeSeries, AnUnchangedClockRecordsNothing) {
+    TimeSeries series(4);
+    ASSERT_TRUE(series.record(at(1.0, 5)));
+    EXPECT_FALSE(series.record(at(1.0, 5)));
+    EXPECT_EQ(series.size(), 1u);
+}
+
+TEST(TimeSeries, AClockGoingBackwardsStartsANewSeries) {
+    TimeSeries series(4);
+    ASSERT_TRUE(series.record(at(1.0, 5)));
+    ASSERT_TRUE(series.record(at(2.0, 9)));
+    ASSERT_TRUE(series.record(at(0.0, 0)));  // a new world
+    ASSERT_EQ(series.size(), 1u);
+    EXPECT_EQ(series[0].time, 0.0);
+    EXPECT_EQ(series[0].collisionRate, 0.0);
+    ASSERT_TRUE(series.record(at(1.0, 0)));
+    ASSERT_TRUE(series.record(at(2.0, 0)));
+    ASSERT_TRUE(series.record(at(3.0, 0)));  // the counters were reset under the series
+    EXPECT_EQ(series.size(), 4u);
+}
+
+TEST(TimeSeries, ElasticBoxKeepsItsEnergyAndCountsItsCollisions) {
+    // 60 equal discs in a closed box with e = 1: the discrete step conserves energy in every
+    // collision and wall rebound, so every sample's KE equals the first to rounding.
+    World w(WorldDef{.width = 100.0, .height = 100.0});
+    for (int k = 0; k < 60; ++k) {
+        const double x = 8.0 + 12.0 * (k % 8), y = 8.0 + 12.0 * (k / 8);
+        w.add({.position = {x, y},
+               .velocity = {std::cos(1.7 * k) * 20.0, std::sin(2.3 * k) * 20.0},
+               .radius = 2.0});
+    }
+    TimeSeries series(1000);
+    ASSERT_TRUE(series.record(w));
+    for (int k = 0; k < 500; ++k) {
+        w.step(0.01);
+        ASSERT_TRUE(series.record(w));
+    }
+    const double e0 = series[0].kineticEnergy;
+    double rateIntegral = 0.0;
+    for (std::size_t k = 0; k < series.size(); ++k) {
+        EXPECT_NEAR(series[k].kineticEnergy, e0, 1e-12 * e0) << "sample " << k;
+        if (k > 0) rateIntegral += series[k].collisionRate * (series[k].time - series[k - 1].time);
+    }
+    EXPECT_GT(series.back().collisions, 0u);
+    EXPECT_EQ(series.back().collisions, w.counters().collisions);
+    // Σ rate·Δt gives back the count.
+    EXPECT_NEAR(rateIntegral, static_cast<double>(series.back().collisions), 1e-6);
+}
+
+TEST(TimeSeries, ExactModeCountsCollisionsToo) {
+    World w(WorldDef{.width = 20.0, .height = 10.0}, SolverSettings{.mode = StepMode::Exact});
+    w.add({.position = {5.0, 5.0}, .velocity = {1.0, 0.0}, .radius = 1.0});
+    w.add({.position = {15.0, 5.0}, .velocity = {-1.0, 0.0}, .radius = 1.0});
+    TimeSeries series(16);
+    ASSERT_TRUE(series.record(w));
+    w.step(5.0);  // they meet at t = 4 s
+    ASSERT_TRUE(series.record(w));
+    EXPECT_EQ(series.back().collisions, 1u);
+    EXPECT_DOUBLE_EQ(series.back().collisionRate, 0.2);
+}
+
+}  // namespace
+}  // namespace psb
