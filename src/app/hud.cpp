@@ -28,6 +28,9 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "Mode %s | %s | %d thread%s", d.mode.c_str(),
                   d.broadphase.c_str(), d.threads, d.threads == 1 ? "" : "s");
     lines.emplace_back(buf);
+    std::snprintf(buf, sizeof buf, "Restitution %.2f | gravity %s", d.restitution,
+                  d.gravity.c_str());
+    lines.emplace_back(buf);
     if (std::isnan(d.keDrift)) {
         std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift n/a", d.maxOverlap);
     } else {
@@ -84,6 +87,9 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
     static const std::vector<std::pair<std::string, std::string>> list = {
         {"Left drag on a particle", "grab it; release to fling it"},
         {"Left drag on empty space", "launch a new particle with the drag's velocity"},
+        {"Left click on a particle", "select it: outline and inspector panel"},
+        {"Left click on empty space", "clear the selection"},
+        {"Enter (selected)", "edit mass, radius, vx, vy; Tab next, Enter apply, Esc cancel"},
         {"Backspace / Delete (holding)", "delete the held particle"},
         {"M", "spawn a random particle"},
         {"[ / ]", "lighter / heavier new particles"},
@@ -96,12 +102,15 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"N", "one step (while paused)"},
         {", / .", "slow down / speed up time"},
         {"P / 1-9", "next preset / preset by number"},
-        {"R", "reload the scene"},
+        {"R", "reset the scene to how it was loaded"},
+        {"E / Shift+E", "restitution down / up by 0.05"},
+        {"G", "gravity on / off"},
         {"T", "next stepping mode: discrete, substep, exact"},
         {"O / F3", "show / hide the profile overlay"},
         {"Ctrl+S", "save the world as a scene"},
+        {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
-        {"Esc", "quit"},
+        {"Esc", "quit (cancel, while editing)"},
     };
     return list;
 }
