@@ -53,7 +53,8 @@ int main(int argc, char** argv) {
     cli.add_flag("--no-arrows", noArrows, "Start with the velocity arrows hidden (A shows them)");
     bool noVsync = false;
     cli.add_flag("--no-vsync", noVsync, "Do not wait for the display's refresh");
-    cli.add_option("--bench", options.benchParticles,
+    long long bench = 0;  // signed, so that -5 is reported as -5 rather than wrapped
+    cli.add_option("--bench", bench,
                    "Frame-time benchmark: open N particles (1 to 200000), run --frames frames, "
                    "print the mean step and draw times and exit");
     cli.add_option("--frames", options.benchFrames, "Frames for --bench")
@@ -72,10 +73,12 @@ int main(int argc, char** argv) {
         return badOption("--window: expected WIDTHxHEIGHT between 200 and 10000 pixels, got '" +
                          window + "'");
     }
-    if (cli.count("--bench") > 0 &&
-        (options.benchParticles < 1 || options.benchParticles > kMaxBenchParticles)) {
-        return badOption("--bench: expected 1 to " + std::to_string(kMaxBenchParticles) +
-                         " particles, got " + std::to_string(options.benchParticles));
+    if (cli.count("--bench") > 0) {
+        if (bench < 1 || bench > static_cast<long long>(kMaxBenchParticles)) {
+            return badOption("--bench: expected 1 to " + std::to_string(kMaxBenchParticles) +
+                             " particles, got " + std::to_string(bench));
+        }
+        options.benchParticles = static_cast<std::size_t>(bench);
     }
     // A path the app cannot write to is reported now, not at the first Ctrl+S or F12.
     if (std::filesystem::is_directory(saveTo)) {
