@@ -516,8 +516,12 @@ void App::closeEditPrompt() {
 }
 
 void App::handleEditKey(const SDL_KeyboardEvent& key) {
-    // Characters arrive as SDL_TEXTINPUT; here only the keys that steer the prompt.
+    // Characters arrive as SDL_TEXTINPUT; here only the keys that steer the prompt, and F12,
+    // which types nothing and may well be wanted for a picture of the prompt.
     switch (key.keysym.sym) {
+        case SDLK_F12:
+            screenshotRequested_ = true;
+            break;
         case SDLK_ESCAPE:
             closeEditPrompt();
             say("Edit cancelled");

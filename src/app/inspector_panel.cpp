@@ -29,7 +29,7 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
         return lines;
     }
     lines.emplace_back("");
-    lines.emplace_back("Edit: Tab next field, Enter apply, Esc cancel");
+    lines.emplace_back("Edit  Tab: next  Enter: apply  Esc: cancel");
     for (int k = 0; k < kEditFields; ++k) {
         const auto f = static_cast<EditField>(k);
         const bool active = f == prompt.field();

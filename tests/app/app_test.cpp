@@ -150,6 +150,9 @@ TEST_F(AppTest, TheEditPromptTakesLettersAndEscWithoutTogglingOrQuitting) {
     key(app, SDLK_r);     // would reset the scene
     EXPECT_EQ(app.world().def().restitution, before.restitution);
     EXPECT_EQ(app.world().def().gravity, before.gravity);
+    key(app, SDLK_F12);  // no text: still a screenshot
+    app.frame(0.0);
+    EXPECT_TRUE(app.lastScreenshot().has_value());
     key(app, SDLK_ESCAPE);
     EXPECT_FALSE(app.editing());
     EXPECT_TRUE(app.running());
