@@ -54,8 +54,8 @@ App::App(const AppOptions& options)
     } else {
         const Scene scene = psb::app::openScene(options_.scene);
         world_ = makeWorld(scene);
-        sceneFile_ = options_.scene;
-        sceneName_ = scene.name.empty() && sceneFile_ ? sceneFile_->stem().string() : scene.name;
+        sceneName_ =
+            scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
     }
     loadedWorld_ = world_;
     presets_ = presetScenes();
@@ -161,7 +161,6 @@ void App::openScene(const std::optional<std::filesystem::path>& file) {
         const Scene scene = psb::app::openScene(file);
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
         setWorld(makeWorld(scene), name);
-        sceneFile_ = file;
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)");
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses

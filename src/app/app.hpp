@@ -140,7 +140,6 @@ class App {
     World world_;
     World loadedWorld_;  ///< world_ as it was loaded, for R
     std::string sceneName_;
-    std::optional<std::filesystem::path> sceneFile_;  ///< where world_ came from; none = built-in
     std::vector<std::filesystem::path> presets_;
     std::size_t preset_ = 0;  ///< the preset P shows next
     Camera camera_;
