@@ -89,7 +89,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Left drag on empty space", "launch a new particle with the drag's velocity"},
         {"Left click on a particle", "select it: outline and inspector panel"},
         {"Left click on empty space", "clear the selection"},
-        {"Enter (selected)", "edit mass, radius, vx, vy; Tab next, Enter apply, Esc cancel"},
+        {"Enter (selected)", "edit it (Tab: next field, Esc: cancel)"},
         {"Backspace / Delete (holding)", "delete the held particle"},
         {"M", "spawn a random particle"},
         {"[ / ]", "lighter / heavier new particles"},
