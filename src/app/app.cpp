@@ -12,8 +12,11 @@
 #include "assets.hpp"
 #include "benchmark_scene.hpp"
 #include "hud.hpp"
+#include "inspector_panel.hpp"
 #include "overlay.hpp"
+#include "physics_controls.hpp"
 #include "scene_io.hpp"
+#include "screenshot.hpp"
 
 namespace psb::app {
 
@@ -51,9 +54,10 @@ App::App(const AppOptions& options)
     } else {
         const Scene scene = psb::app::openScene(options_.scene);
         world_ = makeWorld(scene);
-        sceneFile_ = options_.scene;
-        sceneName_ = scene.name.empty() && sceneFile_ ? sceneFile_->stem().string() : scene.name;
+        sceneName_ =
+            scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
     }
+    loadedWorld_ = world_;
     presets_ = presetScenes();
     const std::filesystem::path font = findAsset("fonts/DejaVuSansMono.ttf");  // before a window
     view_.arrowSeconds = arrowSecondsFor(world_);
@@ -79,6 +83,8 @@ App::App(const AppOptions& options)
     if (SDL_Init(SDL_INIT_VIDEO) != 0) {
         throw std::runtime_error(std::string("cannot start SDL video: ") + SDL_GetError());
     }
+    // SDL starts with text input on; it is wanted only while the edit prompt is open.
+    SDL_StopTextInput();
     window_ = SDL_CreateWindow("Particle Sandbox", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED,
                                options_.width, options_.height, SDL_WINDOW_RESIZABLE);
     if (window_ == nullptr) {
@@ -144,6 +150,9 @@ LaunchSettings App::launchSettings() const {
 
 void App::setWorld(World world, std::string name) {
     interaction_.reset();
+    selection_.clear();
+    closeEditPrompt();
+    loadedWorld_ = world;
     world_ = std::move(world);
     sceneName_ = std::move(name);
     view_.arrowSeconds = arrowSecondsFor(world_);
@@ -161,7 +170,6 @@ void App::openScene(const std::optional<std::filesystem::path>& file) {
         const Scene scene = psb::app::openScene(file);
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
         setWorld(makeWorld(scene), name);
-        sceneFile_ = file;
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)");
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
@@ -266,6 +274,9 @@ void App::handleEvent(const SDL_Event& e) {
         case SDL_KEYDOWN:
             handleKey(e.key);
             break;
+        case SDL_TEXTINPUT:
+            if (prompt_.active()) prompt_.type(e.text.text);
+            break;
         case SDL_MOUSEBUTTONDOWN:
             mouse_ = Vec2(e.button.x, e.button.y);
             if (e.button.button == SDL_BUTTON_LEFT) {
@@ -300,6 +311,7 @@ void App::handleEvent(const SDL_Event& e) {
                 if (r.kind == K::Flung) logLine("[I] Released particle " + at + " " + v);
                 if (r.kind == K::Launched) logLine("[I] Launched particle " + at + " " + v);
                 if (r.kind == K::Refused) say(r.message);
+                if (r.kind == K::Clicked) click(r);
                 if (r.kind == K::Flung || r.kind == K::Launched) userAction();
             } else if (e.button.button == SDL_BUTTON_RIGHT ||
                        e.button.button == SDL_BUTTON_MIDDLE) {
@@ -327,7 +339,12 @@ void App::handleEvent(const SDL_Event& e) {
 }
 
 void App::handleKey(const SDL_KeyboardEvent& key) {
+    if (prompt_.active()) {
+        handleEditKey(key);
+        return;
+    }
     const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
+    const bool shift = (key.keysym.mod & KMOD_SHIFT) != 0;
     const SDL_Keycode sym = key.keysym.sym;
     // A held key repeats only where repeating makes sense (pan, single step, spawn mass); a
     // held Space or S must not flicker.
@@ -403,7 +420,20 @@ void App::handleKey(const SDL_KeyboardEvent& key) {
             break;
         }
         case SDLK_r:
-            openScene(sceneFile_);
+            resetScene();
+            break;
+        case SDLK_e:
+            changeRestitution(shift ? +1 : -1);
+            break;
+        case SDLK_g:
+            toggleGravity();
+            break;
+        case SDLK_F12:
+            screenshotRequested_ = true;
+            break;
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER:
+            openEditPrompt();
             break;
         case SDLK_p:
             if (presets_.empty()) {
@@ -465,7 +495,118 @@ void App::deleteHeld() {
         logLine(deletionLogLine(*p));
         say("Deleted a particle", nullptr);
         userAction();
+        checkSelection();
     }
+}
+
+void App::click(const ReleaseResult& r) {
+    if (!r.id.isNull()) {
+        if (prompt_.target() != r.id) closeEditPrompt();
+        selection_.select(r.id);
+        logLine(selectionLogLine(world_.get(r.id)));
+    } else if (selection_.id()) {
+        selection_.clear();
+        closeEditPrompt();
+        say("Selection cleared");
+    }
+}
+
+void App::checkSelection() {
+    if (selection_.forgetIfGone(world_)) {
+        closeEditPrompt();
+        say("Selection cleared: the particle was deleted");
+    }
+}
+
+void App::openEditPrompt() {
+    const auto id = selection_.id();
+    if (!id) {
+        say("Click a particle to select it, then Enter edits it");
+        return;
+    }
+    prompt_.open(world_.get(*id));
+    SDL_StartTextInput();
+    logLine("[I] Editing particle " + std::to_string(id->slot));
+}
+
+void App::closeEditPrompt() {
+    if (!prompt_.active()) return;
+    prompt_.close();
+    SDL_StopTextInput();
+}
+
+void App::handleEditKey(const SDL_KeyboardEvent& key) {
+    // Characters arrive as SDL_TEXTINPUT; here only the keys that steer the prompt, and F12,
+    // which types nothing and may well be wanted for a picture of the prompt.
+    switch (key.keysym.sym) {
+        case SDLK_F12:
+            screenshotRequested_ = true;
+            break;
+        case SDLK_ESCAPE:
+            closeEditPrompt();
+            say("Edit cancelled");
+            break;
+        case SDLK_TAB:
+            if ((key.keysym.mod & KMOD_SHIFT) != 0) {
+                prompt_.previousField();
+            } else {
+                prompt_.nextField();
+            }
+            break;
+        case SDLK_BACKSPACE:
+            prompt_.backspace();
+            break;
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER: {
+            if (key.repeat != 0) break;
+            const EditResult r = applyEdit(world_, prompt_.target(), prompt_.texts());
+            if (r.applied) {
+                closeEditPrompt();
+                say(r.message);
+                userAction();
+            } else {
+                // The prompt stays open with its text, so the value can be corrected.
+                prompt_.setError(r.message);
+                say("Edit refused: " + r.message, "[W] ");
+            }
+            break;
+        }
+        default:
+            break;
+    }
+}
+
+void App::resetScene() {
+    World loaded = loadedWorld_;
+    setWorld(std::move(loaded), sceneName_);
+    say("Reset to the scene as loaded: " + std::to_string(world_.size()) + " particles");
+}
+
+void App::changeRestitution(int direction) {
+    const ControlChange c = stepRestitution(world_, direction);
+    say(c.message);
+    if (c.changed) userAction();
+}
+
+void App::toggleGravity() {
+    const ControlChange c = psb::app::toggleGravity(world_, loadedWorld_.def().gravity);
+    say(c.message, c.changed ? "[I] " : "[W] ");
+    if (c.changed) userAction();
+}
+
+void App::writeScreenshot() {
+    screenshotRequested_ = false;
+    try {
+        lastScreenshot_ = saveScreenshot(sdlRenderer_, options_.screenshotDir);
+        say("Saved screenshot " + lastScreenshot_->string());
+    } catch (const std::exception& e) {  // SaveError, or the pixels could not be read
+        say(std::string("Screenshot failed: ") + e.what(), "[E] ");
+    }
+}
+
+void App::frame(double realSeconds) {
+    update(realSeconds);
+    render();
 }
 
 void App::spawnRandom() {
@@ -542,6 +683,7 @@ void App::update(double realSeconds) {
     view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
     // Show the held particle exactly at the hand, paused or not.
     interaction_.applyHold(world_, now(), launchSettings());
+    checkSelection();
     sampleAnalysis();
     lastStepMs_ = msSince(t0);
     stepMs_ = 0.95 * stepMs_ + 0.05 * lastStepMs_;
@@ -569,6 +711,8 @@ void App::toggleSpeedHistogram() {
 }
 
 ParticleId App::selectedParticle() const {
+    // The clicked particle; while none is selected, the one in the hand.
+    if (const auto id = selection_.id(); id && world_.contains(*id)) return *id;
     return interaction_.mode() == Interaction::Mode::Holding ? interaction_.held() : kNullParticle;
 }
 
@@ -598,6 +742,9 @@ void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
     drawStats_ = renderer_->draw(world_, camera_, view_, &trails_, selectedParticle());
     analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_);
+    std::optional<Particle> selected;
+    if (const auto id = selection_.id(); id && world_.contains(*id)) selected = world_.get(*id);
+    if (selected) drawSelectionOutline(sdlRenderer_, camera_, *selected);
 
     // A launch in progress: a ghost disc at the press point and a line to the pointer.
     if (interaction_.mode() == Interaction::Mode::Launching) {
@@ -631,6 +778,8 @@ void App::render() {
     hud.threads = world_.threads();
     hud.maxOverlap = accuracy_.overlap();
     hud.keDrift = accuracy_.drift(hud.kineticEnergy);
+    hud.restitution = world_.def().restitution;
+    hud.gravity = gravityText(world_.def().gravity);
 
     Overlays o;
     o.hud = hudLines(hud);
@@ -651,7 +800,9 @@ void App::render() {
     std::erase_if(messages_, [t](const Message& m) { return m.until < t; });
     for (const auto& m : messages_)
         o.messages.push_back(m.text);
+    if (selected) o.inspector = inspectorLines(*selected, prompt_);
     drawOverlays(sdlRenderer_, *hudFont_, o, camera_.viewportWidth(), camera_.viewportHeight());
+    if (screenshotRequested_) writeScreenshot();
 
     const std::string title = windowTitle(world_.size(), paused_, sceneName_);
     if (title != title_) {

@@ -32,8 +32,10 @@
 #include "accuracy.hpp"
 #include "analysis_overlays.hpp"
 #include "camera.hpp"
+#include "edit_prompt.hpp"
 #include "interaction.hpp"
 #include "renderer.hpp"
+#include "selection.hpp"
 #include "text.hpp"
 #include "trails.hpp"
 
@@ -43,6 +45,7 @@ namespace psb::app {
 struct AppOptions {
     std::optional<std::filesystem::path> scene;  ///< scene file to open; the default if none
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Ctrl+S writes
+    std::filesystem::path screenshotDir = ".";                    ///< where F12 writes
     int width = 800;                                              ///< window, pixels
     int height = 800;
     bool vsync = true;
@@ -70,6 +73,23 @@ class App {
     /// Runs the benchmark frames (see AppOptions) and prints mean step and draw times.
     int runBenchmark();
 
+    /// The particle the user clicked last (nullopt when none, or once it is deleted).
+    [[nodiscard]] std::optional<ParticleId> selected() const { return selection_.id(); }
+
+    // Driving the app without run()'s loop, for the tests.
+    /// Handles one event as run() does.
+    void processEvent(const SDL_Event& e) { handleEvent(e); }
+    /// The rest of one loop iteration: update by `realSeconds` of real time, then render.
+    void frame(double realSeconds);
+    [[nodiscard]] const World& world() const { return world_; }
+    [[nodiscard]] const Camera& camera() const { return camera_; }
+    [[nodiscard]] bool running() const { return running_; }
+    [[nodiscard]] bool editing() const { return prompt_.active(); }
+    /// The file the last F12 wrote.
+    [[nodiscard]] const std::optional<std::filesystem::path>& lastScreenshot() const {
+        return lastScreenshot_;
+    }
+
   private:
     struct Message {
         std::string text;
@@ -83,6 +103,20 @@ class App {
     void render();
 
     void stepOnce();
+    /// A click: select the particle clicked on, or clear the selection on empty space.
+    void click(const ReleaseResult& r);
+    /// The selected particle is gone: forget it (and close its edit prompt), saying so.
+    void checkSelection();
+    void openEditPrompt();
+    /// A key while the edit prompt is open: nothing else sees it.
+    void handleEditKey(const SDL_KeyboardEvent& key);
+    void closeEditPrompt();
+    /// R: the world as it was loaded, from the copy kept at load.
+    void resetScene();
+    void changeRestitution(int direction);
+    void toggleGravity();
+    /// Writes the frame being rendered (called between drawing and present).
+    void writeScreenshot();
     void spawnRandom();
     void deleteHeld();
     void save();
@@ -108,7 +142,8 @@ class App {
     void toggleSpeedHistogram();
     /// Feeds the time series and the trails after the frame's steps.
     void sampleAnalysis();
-    /// The particle whose trail TrailMode::Selected shows: the one held, or none.
+    /// The particle whose trail TrailMode::Selected shows: the clicked one, else the one held,
+    /// else none.
     [[nodiscard]] ParticleId selectedParticle() const;
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
     [[nodiscard]] std::string overlayFlags() const;
@@ -121,12 +156,14 @@ class App {
     std::unique_ptr<Renderer> renderer_;
 
     World world_;
+    World loadedWorld_;  ///< world_ as it was loaded, for R
     std::string sceneName_;
-    std::optional<std::filesystem::path> sceneFile_;  ///< where world_ came from; none = built-in
     std::vector<std::filesystem::path> presets_;
     std::size_t preset_ = 0;  ///< the preset P shows next
     Camera camera_;
     Interaction interaction_;
+    Selection selection_;
+    EditPrompt prompt_;
     SpawnSettings spawn_;
     ViewOptions view_;
     std::mt19937 rng_;
@@ -136,6 +173,8 @@ class App {
     bool showHelp_ = false;
     bool showProfile_ = false;
     bool stepRequested_ = false;
+    bool screenshotRequested_ = false;
+    std::optional<std::filesystem::path> lastScreenshot_;
     bool panning_ = false;
     double timeScale_ = 1.0;
     double accumulator_ = 0.0;

@@ -29,6 +29,9 @@ std::vector<std::string> hudLines(const HudData& d) {
                   d.broadphase.c_str(), d.threads, d.threads == 1 ? "" : "s");
     lines.emplace_back(buf);
     if (!d.overlays.empty()) lines.back() += " | on: " + d.overlays;
+    std::snprintf(buf, sizeof buf, "Restitution %.2f | gravity %s", d.restitution,
+                  d.gravity.c_str());
+    lines.emplace_back(buf);
     if (std::isnan(d.keDrift)) {
         std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift n/a", d.maxOverlap);
     } else {
@@ -85,6 +88,9 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
     static const std::vector<std::pair<std::string, std::string>> list = {
         {"Left drag on a particle", "grab it; release to fling it"},
         {"Left drag on empty space", "launch a new particle with the drag's velocity"},
+        {"Left click on a particle", "select it: outline and inspector panel"},
+        {"Left click on empty space", "clear the selection"},
+        {"Enter (selected)", "edit it (Tab: next field, Esc: cancel)"},
         {"Backspace / Delete (holding)", "delete the held particle"},
         {"M", "spawn a random particle"},
         {"[ / ]", "lighter / heavier new particles"},
@@ -97,16 +103,19 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"N", "one step (while paused)"},
         {", / .", "slow down / speed up time"},
         {"P / 1-9", "next preset / preset by number"},
-        {"R", "reload the scene"},
+        {"R", "reset the scene to how it was loaded"},
+        {"E / Shift+E", "restitution down / up by 0.05"},
+        {"G", "gravity on / off"},
         {"T", "next stepping mode: discrete, substep, exact"},
         {"O / F3", "show / hide the profile overlay"},
         {"Ctrl+S", "save the world as a scene"},
         {"V", "momentum view: m v arrows, centre of mass and its path, total momentum"},
-        {"L", "path traces: off / held particle / all"},
+        {"L", "path traces: off / selected particle / all"},
         {"K", "plots: kinetic energy, momentum, collision rate against time"},
         {"D", "speed histogram against 2-D Maxwell-Boltzmann"},
+        {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
-        {"Esc", "quit"},
+        {"Esc", "quit (cancel, while editing)"},
     };
     return list;
 }

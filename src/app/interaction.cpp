@@ -103,6 +103,7 @@ void Interaction::record(const Vec2& point, double time) {
     if (!point.allFinite() || !std::isfinite(time)) return;
     // launchVelocity needs non-decreasing times; a sample from the past is dropped.
     if (!samples_.empty() && time < samples_.back().time) return;
+    travel_ = std::max(travel_, (point - pressPoint_).norm());
     samples_.push_back({time, point});
     while (samples_.size() > 2 && samples_.back().time - samples_.front().time > kHistorySeconds) {
         samples_.pop_front();
@@ -113,10 +114,14 @@ void Interaction::press(World& world, const Vec2& point, double time) {
     if (mode_ != Mode::Idle) return;  // a second press while one is active is ignored
     samples_.clear();
     pressPoint_ = point;
+    pressTime_ = time;
+    travel_ = 0.0;
     record(point, time);
     if (const auto id = world.pick(point)) {
         held_ = *id;
-        grabOffset_ = world.get(*id).position - point;
+        const Particle p = world.get(*id);
+        grabOffset_ = p.position - point;
+        velocityAtPress_ = p.velocity;
         world.setKinematic(*id, true);
         mode_ = Mode::Holding;
     } else {
@@ -154,7 +159,18 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
     if (mode_ == Mode::Idle) return result;
     record(point, time);
     const Vec2 v = handVelocity(time, launch);
-    if (mode_ == Mode::Holding && world.contains(held_)) {
+    const bool click = travel_ < launch.minDistance && time - pressTime_ <= kClickSeconds;
+    if (click) {
+        result.kind = ReleaseResult::Kind::Clicked;
+        result.position = pressPoint_;
+        if (mode_ == Mode::Holding && world.contains(held_)) {
+            applyHold(world, time, launch);
+            world.setVelocity(held_, velocityAtPress_);
+            world.setKinematic(held_, false);
+            result.id = held_;
+            result.velocity = velocityAtPress_;
+        }
+    } else if (mode_ == Mode::Holding && world.contains(held_)) {
         applyHold(world, time, launch);
         world.setVelocity(held_, v);
         world.setKinematic(held_, false);
@@ -200,6 +216,8 @@ void Interaction::reset() {
     mode_ = Mode::Idle;
     held_ = kNullParticle;
     grabOffset_ = Vec2::Zero();
+    travel_ = 0.0;
+    velocityAtPress_ = Vec2::Zero();
     samples_.clear();
 }
 

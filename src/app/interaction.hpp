@@ -12,6 +12,13 @@
 //   velocity of the hand, and the world keeps it inside the box.
 // - Release velocity is psb::launchVelocity over the last ~100 ms of samples, so a particle
 //   dropped after the hand stopped is released at rest.
+//
+// A click (press and release within kClickSeconds, the pointer never further from the press
+// point than the launch's minDistance, the same 4-pixel threshold that decides "at rest") is
+// not a drag: on a particle it selects it and gives back the velocity it had at the press, so
+// inspecting a moving particle does not stop it; on empty space it launches nothing (the app
+// clears the selection). A longer still press keeps the old meaning: a particle is released at
+// rest, and empty space gets a particle at rest.
 
 #include <deque>
 #include <optional>
@@ -53,6 +60,7 @@ struct ReleaseResult {
         Flung,     ///< a held particle was let go with `velocity`
         Launched,  ///< a new particle was made at `position` with `velocity`
         Refused,   ///< no free spot for the new particle; `message` says so
+        Clicked,   ///< a click: on the particle `id`, or on empty space when `id` is null
     };
     Kind kind = Kind::None;
     ParticleId id;
@@ -67,6 +75,8 @@ class Interaction {
 
     /// How long pointer samples are kept, seconds (longer than any launch window).
     static constexpr double kHistorySeconds = 0.5;
+    /// Longest press that can still be a click, seconds.
+    static constexpr double kClickSeconds = 0.3;
 
     /// The left button went down at `point` (world metres) at `time` (seconds, any clock that
     /// the later calls share). Grabs the topmost particle there, or starts a launch drag.
@@ -101,6 +111,9 @@ class Interaction {
     ParticleId held_;
     Vec2 grabOffset_ = Vec2::Zero();
     Vec2 pressPoint_ = Vec2::Zero();
+    double pressTime_ = 0.0;               ///< seconds
+    double travel_ = 0.0;                  ///< farthest the pointer went from the press point, m
+    Vec2 velocityAtPress_ = Vec2::Zero();  ///< of the held particle, m/s
     std::deque<TrajectorySample> samples_;
 };
 

@@ -35,6 +35,11 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o, i
         panel(o.messages, 8,
               static_cast<float>(height) - 8 - lh * static_cast<float>(o.messages.size()));
     }
+    if (!o.inspector.empty()) {
+        const float w = widthOf(o.inspector);
+        panel(o.inspector, std::max(8.0f, static_cast<float>(width) - 8 - w),
+              static_cast<float>(height) - 8 - lh * static_cast<float>(o.inspector.size()), 200);
+    }
     boxes.draw(renderer, nullptr);
     font.draw(text);
 }

@@ -1,7 +1,8 @@
 #pragma once
 // The text panels drawn over the world: the HUD (top-left), the help (below it), the profile
-// (top-right) and short messages (bottom-left). Each is a translucent box with lines of text;
-// all boxes are one draw call and all text one more.
+// (top-right), short messages (bottom-left) and the selected particle's inspector
+// (bottom-right). Each is a translucent box with lines of text; all boxes are one draw call and
+// all text one more.
 
 #include <string>
 #include <vector>
@@ -17,6 +18,7 @@ struct Overlays {
     std::vector<std::string> help;
     std::vector<std::string> profile;
     std::vector<std::string> messages;
+    std::vector<std::string> inspector;  ///< empty: nothing selected
     bool showHelp = false;
     bool showProfile = false;
 };

@@ -208,7 +208,8 @@ TEST(Interaction, ALaunchNeverOverlapsAnotherParticle) {
     addAt(w, {300, 300}, 20.0);
     Interaction in;
     in.press(w, Vec2(330, 300), 0.0);
-    const ReleaseResult r = in.release(w, Vec2(330, 300), 0.05, spawn, launch());
+    // A still press longer than a click places a particle at rest.
+    const ReleaseResult r = in.release(w, Vec2(330, 300), 0.5, spawn, launch());
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     EXPECT_NEAR(maxOverlapBruteForce(w), 0.0, 1e-12);
     // The nearest free spot: touching distance (45 m) plus at most one ring step (12.5 m).
@@ -224,10 +225,67 @@ TEST(Interaction, ALaunchWithNoRoomIsRefusedWithAMessage) {
     addAt(w, {30, 30}, 25.0);
     Interaction in;
     in.press(w, Vec2(5, 5), 0.0);  // outside the disc, but the box is full
-    const ReleaseResult r = in.release(w, Vec2(5, 5), 0.05, SpawnSettings{}, launch());
+    const ReleaseResult r = in.release(w, Vec2(5, 5), 0.5, SpawnSettings{}, launch());
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Refused);
     EXPECT_FALSE(r.message.empty());
     EXPECT_EQ(w.size(), 1u);
+}
+
+TEST(Interaction, AClickOnAParticleSelectsItAndKeepsItsVelocity) {
+    World w = boxWorld();
+    ParticleDef d;
+    d.position = {100, 100};
+    d.velocity = {30, -40};
+    d.radius = 10.0;
+    const ParticleId id = w.add(d);
+    Interaction in;
+    in.press(w, Vec2(104, 100), 0.0);
+    in.moveTo(Vec2(104.5, 100), 0.05);  // 0.5 m: under the 1 m threshold
+    const ReleaseResult r = in.release(w, Vec2(104.5, 100), 0.1, {}, launch());
+    EXPECT_EQ(r.kind, ReleaseResult::Kind::Clicked);
+    EXPECT_EQ(r.id, id);
+    EXPECT_EQ(w.get(id).velocity, Vec2(30, -40));
+    EXPECT_FALSE(w.isKinematic(id));
+    EXPECT_EQ(in.mode(), Interaction::Mode::Idle);
+}
+
+TEST(Interaction, AClickOnEmptySpaceLaunchesNothing) {
+    World w = boxWorld();
+    Interaction in;
+    in.press(w, Vec2(200, 200), 0.0);
+    const ReleaseResult r = in.release(w, Vec2(200, 200), 0.1, {}, launch());
+    EXPECT_EQ(r.kind, ReleaseResult::Kind::Clicked);
+    EXPECT_TRUE(r.id.isNull());
+    EXPECT_EQ(w.size(), 0u);
+}
+
+TEST(Interaction, APressThatMovedPastTheThresholdIsADragNotAClick) {
+    // Out 3 m and back to the press point within 0.1 s: the way back does not make it a click.
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    in.moveTo(Vec2(103, 100), 0.03);
+    in.moveTo(Vec2(100, 100), 0.06);
+    EXPECT_EQ(in.release(w, Vec2(100, 100), 0.1, {}, launch()).kind, ReleaseResult::Kind::Flung);
+    EXPECT_TRUE(w.contains(id));
+    in.press(w, Vec2(300, 300), 1.0);
+    in.moveTo(Vec2(303, 300), 1.03);
+    EXPECT_EQ(in.release(w, Vec2(300, 300), 1.1, {}, launch()).kind, ReleaseResult::Kind::Launched);
+}
+
+TEST(Interaction, AStillPressLongerThanAClickReleasesTheParticleAtRest) {
+    World w = boxWorld();
+    ParticleDef d;
+    d.position = {100, 100};
+    d.velocity = {30, -40};
+    d.radius = 10.0;
+    const ParticleId id = w.add(d);
+    Interaction in;
+    in.press(w, Vec2(100, 100), 0.0);
+    const double t = Interaction::kClickSeconds + 0.01;
+    EXPECT_EQ(in.release(w, Vec2(100, 100), t, {}, launch()).kind, ReleaseResult::Kind::Flung);
+    EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
 TEST(Interaction, DeleteWhileHeldRemovesOnlyThatParticle) {

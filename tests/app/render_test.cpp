@@ -9,6 +9,7 @@
 
 #include "assets.hpp"
 #include "camera.hpp"
+#include "inspector_panel.hpp"
 #include "overlay.hpp"
 #include "renderer.hpp"
 #include "text.hpp"
@@ -234,6 +235,43 @@ TEST_F(RenderTest, TheProfileOverlayDrawsTextOnlyWhenOn) {
     drawOverlay();
     EXPECT_GT(brightPixels(kSize / 2, 0, kSize, 80), 100);
     EXPECT_EQ(brightPixels(kSize / 2, 100, kSize, kSize), 0);  // nothing below its three lines
+}
+
+TEST_F(RenderTest, TheSelectionOutlineRingsTheDiscOutsideItsRim) {
+    const World w = worldWith({200, 200}, Vec2::Zero(), 20.0, {0, 0, 255});
+    ViewOptions o;
+    o.arrows = false;
+    renderer_->draw(w, camera_, o);
+    drawSelectionOutline(sdl_, camera_, w.get(w.ids()[0]));
+    SDL_RenderPresent(sdl_);
+    // Rings 3 and 4 px outside the 20 px rim, in the outline's yellow; the disc stays blue.
+    for (const auto& [x, y] :
+         {std::pair{223, 200}, std::pair{177, 200}, std::pair{200, 223}, std::pair{200, 177}}) {
+        EXPECT_TRUE(isColor(pixel(x, y), 255, 230, 0, 40)) << x << "," << y;
+    }
+    EXPECT_TRUE(isColor(pixel(200, 200), 0, 0, 255));
+    EXPECT_TRUE(isColor(pixel(212, 200), 0, 0, 255));
+    EXPECT_TRUE(isColor(pixel(230, 200), 0, 0, 0));
+}
+
+TEST_F(RenderTest, TheInspectorPanelIsDrawnBottomRightOnlyWithASelection) {
+    Overlays o;
+    o.hud = {"FPS 60"};
+    const auto drawOverlay = [&] {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        drawOverlays(sdl_, *font_, o, kSize, kSize);
+        SDL_RenderPresent(sdl_);
+    };
+    drawOverlay();
+    EXPECT_EQ(brightPixels(kSize / 2, kSize / 2, kSize, kSize), 0);
+    Particle p;
+    p.position = {1, 2};
+    p.velocity = {3, 4};
+    o.inspector = inspectorLines(p, EditPrompt{});
+    drawOverlay();
+    EXPECT_GT(brightPixels(kSize / 2, kSize / 2, kSize, kSize), 300);
+    EXPECT_EQ(brightPixels(0, kSize / 2, kSize / 4, kSize), 0);  // not bottom-left
 }
 
 TEST(ArrowScale, IsTheOriginalsThirdOfASecondForAFewParticles) {

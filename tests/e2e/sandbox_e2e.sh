@@ -16,11 +16,20 @@
 #   5. presses S                                        -> label text appears above particles
 #   6. presses Ctrl+S                                   -> a scene file with the launched
 #                                                         particle, moving up-right
-#   7. presses V, L, L, K, D, steps, then V, K, D again -> the momentum view, trails, plots and
+#   7. presses V, L, L, K, D, steps, then V, K, D, L    -> the momentum view, trails, plots and
 #                                                         speed histogram appear in their colours
 #                                                         (logged, and named in the HUD), then
 #                                                         go away
-#   8. presses Esc                                      -> the program exits cleanly
+#   8. presses T three times                            -> substep, exact, discrete logged
+#   9. presses R                                        -> the scene as loaded: 6 particles
+#  10. clicks a particle                                -> selected (log), outlined (pixels)
+#  11. Enter, types 2e1 (letters go to the prompt), Enter -> mass edited to 20 kg, E not seen;
+#      Enter, -1, Enter, Esc                            -> refused with a message, cancelled
+#  12. presses E, Shift+E, G, G, T T G (exact), T       -> restitution and gravity logged,
+#                                                         gravity refused in exact mode
+#  13. presses F12                                      -> a PNG of the window's size
+#  14. presses R, clicks the edited particle again      -> its mass is the loaded 12 kg
+#  15. presses Esc                                      -> the program exits cleanly
 # Screenshots and the log are left in OUTPUT_DIR.
 set -euo pipefail
 
@@ -68,12 +77,20 @@ help_status=$?
 scene_status=$?
 "$BIN" --window 12x >/dev/null 2>"$OUT/bad-window.txt"
 window_status=$?
+"$BIN" --bogus >/dev/null 2>"$OUT/bad-option.txt"
+option_status=$?
+"$BIN" --save-to "$OUT/no/such/dir/save.json" >/dev/null 2>"$OUT/bad-save-to.txt"
+save_to_status=$?
 set -e
 ((help_status == 0)) && grep -q -- "--save-to" "$OUT/help.txt" || fail "--help"
 ((scene_status != 0)) && grep -q "no-such-scene.json" "$OUT/bad-scene.txt" ||
     fail "a missing scene file: status $scene_status, message '$(cat "$OUT/bad-scene.txt")'"
-((window_status != 0)) && grep -q -- "--window" "$OUT/bad-window.txt" ||
+((window_status == 2)) && grep -q -- "--window" "$OUT/bad-window.txt" ||
     fail "a bad --window: status $window_status"
+((option_status == 2)) && grep -q -- "--bogus" "$OUT/bad-option.txt" ||
+    fail "an unknown option: status $option_status, message '$(cat "$OUT/bad-option.txt")'"
+((save_to_status == 2)) && grep -q "does not exist" "$OUT/bad-save-to.txt" ||
+    fail "--save-to into a missing directory: status $save_to_status"
 pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
 
 # --- a private X display ------------------------------------------------------------------
@@ -101,7 +118,8 @@ export SDL_AUDIODRIVER=dummy
 
 # --- the program --------------------------------------------------------------------------
 LOG="$OUT/stdout.log"
-"$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" >"$LOG" 2>"$OUT/stderr.log" &
+"$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" \
+    --screenshot-dir "$OUT" >"$LOG" 2>"$OUT/stderr.log" &
 APP_PID=$!
 WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
     head -1) || {
@@ -129,6 +147,13 @@ wait_log() {  # wait_log REGEX [SECONDS]
     local deadline=$((SECONDS + ${2:-5}))
     while ! grep -Eq "$1" "$LOG"; do
         ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
+        sleep 0.05
+    done
+}
+wait_count() {  # wait_count REGEX N: until N lines match
+    local deadline=$((SECONDS + 5))
+    while (($(grep -Ec "$1" "$LOG" || true) < $2)); do
+        ((SECONDS < deadline)) || fail "timed out waiting for $2 log lines /$1/"
         sleep 0.05
     done
 }
@@ -327,8 +352,90 @@ for c in $YELLOW $PLOT_RED $BARS; do
     ((n == 0)) || fail "$c still on screen ($n px) after V, K, D off"
 done
 pass "V, K, D again hide their overlays"
+key l  # trails: all -> off, so that later pixel checks see no trails
+wait_log "Trails: off"
 
-# --- 8. quit ------------------------------------------------------------------------------
+# --- 8. stepping modes ----------------------------------------------------------------------
+key t
+wait_log "\[I\] Mode: substep x4"
+key t
+wait_log "\[I\] Mode: exact"
+key t
+wait_log "\[I\] Mode: discrete"
+pass "T cycles the modes: $(grep -o 'Mode: [a-z0-9 ]*' "$LOG" | paste -sd, -)"
+
+# --- 9. reset to the scene as loaded ------------------------------------------------------
+key r
+wait_log "\[I\] Reset to the scene as loaded: 6 particles"
+wait_title "6 particles - PAUSED"
+pass "R resets: $(grep 'Reset to the scene' "$LOG" | tail -1)"
+
+# --- 10. select: a click on the 12 kg particle at (150, 120) m -------------------------------
+# One xdotool chain, so that the press and release are well within a click's 0.3 s.
+xdotool mousemove --sync "$(sx 150)" "$(sy 120)" sleep 0.1 click 1
+wait_log "\[I\] Selected particle [0-9]+ at \[150.00, 120.00\] m with velocity \[180.00, 120.00\] m/s, mass 12 kg, radius 30 m"
+shot 6-selected
+read -r _ _ outline < <(centroid "$OUT/6-selected.png" 255 230 0)
+((outline > 50)) || fail "no selection outline on screen ($outline pixels)"
+pass "click selects: $(grep 'Selected particle' "$LOG" | tail -1) (outline $outline px)"
+
+# --- 11. edit its mass through the prompt ---------------------------------------------------
+key Return
+wait_log "\[I\] Editing particle"
+# "2e1" is 20; its E must reach the prompt, not lower the restitution.
+xdotool type --window "$WID" --delay 50 "2e1"
+key Return
+wait_log "\[I\] Edited particle [0-9]+: mass 20 kg, radius 30 m, velocity \[180, 120\] m/s"
+grep -q "Restitution" "$LOG" && fail "a letter typed into the prompt toggled a control"
+key Return
+xdotool type --window "$WID" --delay 50 " -1"  # a leading space: xdotool would take -1 for an option
+key Return
+wait_log "\[W\] Edit refused: mass: must be > 0 kg, got -1"
+key Escape
+wait_log "\[I\] Edit cancelled"
+sleep 0.3
+kill -0 "$APP_PID" 2>/dev/null || fail "Esc in the edit prompt quit the program"
+pass "edit: $(grep 'Edited particle' "$LOG" | tail -1); refusal and Esc handled"
+
+# --- 12. restitution and gravity ------------------------------------------------------------
+key e
+wait_log "\[I\] Restitution 0.95"
+key shift+e
+wait_log "\[I\] Restitution 1.00"
+key g
+wait_log "\[I\] Gravity \[0, 343.4\] m/s\^2"
+key g
+wait_log "\[I\] Gravity off"
+key t
+key t
+wait_count "\[I\] Mode: exact" 2
+key g
+wait_log "\[W\] Gravity refused: the exact mode has none"
+key t
+wait_count "\[I\] Mode: discrete" 2
+pass "E, Shift+E, G, G; G refused in exact mode"
+
+# --- 13. screenshot -------------------------------------------------------------------------
+key F12
+wait_log "\[I\] Saved screenshot "
+png=$(grep "Saved screenshot" "$LOG" | tail -1 | sed -E 's/.*Saved screenshot (.*)$/\1/')
+[[ -s "$png" ]] || fail "F12 wrote no file at '$png'"
+[[ $(basename "$png") =~ ^particle-sandbox-[0-9]{8}-[0-9]{6}(-[0-9]+)?\.png$ ]] ||
+    fail "screenshot name $(basename "$png")"
+size=$(identify -format "%wx%h" "$png")
+[[ "$size" == "${WIDTH}x$HEIGHT" ]] || fail "screenshot is $size, the window ${WIDTH}x$HEIGHT"
+pass "F12: $(basename "$png"), $size"
+
+# --- 14. R again undoes the edit ------------------------------------------------------------
+key r
+wait_count "Reset to the scene as loaded" 2
+xdotool mousemove --sync "$(sx 150)" "$(sy 120)" sleep 0.1 click 1
+wait_count "Selected particle" 2
+grep "Selected particle" "$LOG" | tail -1 | grep -q "mass 12 kg" ||
+    fail "after R the particle is not as loaded: $(grep 'Selected particle' "$LOG" | tail -1)"
+pass "R restores the edited particle's 12 kg"
+
+# --- 15. quit -----------------------------------------------------------------------------
 # The window may be gone before xdotool sends the key release: that error is expected.
 xdotool key --window "$WID" Escape 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done

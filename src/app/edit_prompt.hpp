@@ -1,0 +1,89 @@
+#pragma once
+// Editing the selected particle from the keyboard, without SDL (the app feeds it the text of
+// SDL_TEXTINPUT events and the Tab, Backspace, Enter and Esc keys).
+//
+// The prompt holds four text fields, mass (kg), radius (m), vx and vy (m/s), filled with the
+// particle's values when it opens. Tab moves to the next field; the first character typed into
+// a field just entered replaces its text (as if it were selected). Enter hands the four texts
+// to applyEdit, which applies all of them or none.
+//
+// What applyEdit accepts, so that an edit can never put the world in a state it would refuse
+// from a scene file:
+// - every field a finite decimal number (NaN, inf, "12kg" and empty fields are refused);
+// - mass a positive normal double (World::setMass's rule), radius > 0;
+// - speed at most kMaxEditSpeedBoxes box sizes per second, and a finite kinetic energy;
+// - a radius that fits the box when walls are on. A disc that would then reach past a wall is
+//   moved inward just enough (the wall stage would push it there at the next step anyway);
+// - no new overlap: a disc that grows (or was moved inward) may not overlap a neighbour more
+//   than it did before. Such an edit is refused with the neighbour's position, not resolved by
+//   moving particles the user did not touch.
+// A refusal changes nothing and says which field is wrong and why.
+
+#include <array>
+#include <string>
+#include <string_view>
+
+#include <particle_sandbox/particle.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace psb::app {
+
+enum class EditField { Mass, Radius, Vx, Vy };
+inline constexpr int kEditFields = 4;
+
+/// Fastest velocity an edit may give, in box sizes (the larger side) per second: beyond this a
+/// particle crosses the box many times in one step.
+inline constexpr double kMaxEditSpeedBoxes = 1000.0;
+
+/// "mass", "radius", "vx", "vy".
+[[nodiscard]] const char* fieldName(EditField f);
+/// "kg", "m", "m/s".
+[[nodiscard]] const char* fieldUnit(EditField f);
+
+class EditPrompt {
+  public:
+    /// Longest text a field takes, characters.
+    static constexpr std::size_t kMaxLength = 32;
+
+    /// Opens the prompt on `p`, its fields holding p's values, the mass field active.
+    void open(const Particle& p);
+    void close();
+    [[nodiscard]] bool active() const { return active_; }
+    /// The particle being edited (null when closed).
+    [[nodiscard]] ParticleId target() const { return target_; }
+
+    void nextField();
+    void previousField();
+    /// Adds printable ASCII characters of `text` to the active field (others are dropped).
+    void type(std::string_view text);
+    void backspace();
+
+    [[nodiscard]] EditField field() const { return field_; }
+    [[nodiscard]] const std::string& text(EditField f) const {
+        return texts_[static_cast<std::size_t>(f)];
+    }
+    [[nodiscard]] const std::array<std::string, kEditFields>& texts() const { return texts_; }
+    /// Why the last Enter was refused; empty when it was not.
+    [[nodiscard]] const std::string& error() const { return error_; }
+    void setError(std::string why) { error_ = std::move(why); }
+
+  private:
+    bool active_ = false;
+    bool fresh_ = false;  ///< the active field was just entered: typing replaces its text
+    ParticleId target_;
+    EditField field_ = EditField::Mass;
+    std::array<std::string, kEditFields> texts_;
+    std::string error_;
+};
+
+struct EditResult {
+    bool applied = false;
+    std::string message;  ///< what changed, or why nothing did
+};
+
+/// Parses, validates (see the top of this file) and applies `texts` (mass, radius, vx, vy) to
+/// particle `id` of `world`, all or nothing. Never throws for bad text or values.
+EditResult applyEdit(World& world, ParticleId id,
+                     const std::array<std::string, kEditFields>& texts);
+
+}  // namespace psb::app

@@ -1,0 +1,284 @@
+// The whole App under SDL's dummy video driver: events in, world and files out. Covers what
+// lives in the App itself: click routing, the edit prompt taking the keyboard, R, F12.
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+#include <stb_image.h>
+#include <unistd.h>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "../core/test_util.hpp"
+#include "app.hpp"
+
+namespace psb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class AppTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        dir_ = fs::temp_directory_path() / ("psb-app-" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    [[nodiscard]] AppOptions options() const {
+        AppOptions o;
+        o.renderDriver = "software";
+        o.width = o.height = 400;
+        o.vsync = false;
+        o.startPaused = true;
+        o.seed = 3;
+        o.saveTo = dir_ / "save.json";
+        o.screenshotDir = dir_;
+        return o;
+    }
+
+    static void key(App& app, SDL_Keycode sym, Uint16 mod = KMOD_NONE) {
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = sym;
+        e.key.keysym.mod = mod;
+        app.processEvent(e);
+    }
+    /// A letter as the keyboard delivers it: the key, then its text (while text input is on).
+    static void typeText(App& app, const char* text) {
+        for (const char* c = text; *c != '\0'; ++c) {
+            if (*c >= 'a' && *c <= 'z') key(app, static_cast<SDL_Keycode>(*c));
+            SDL_Event e{};
+            e.type = SDL_TEXTINPUT;
+            e.text.text[0] = *c;
+            app.processEvent(e);
+        }
+    }
+    static void button(App& app, Uint32 type, Vec2 screen, Uint32 ms) {
+        SDL_Event e{};
+        e.type = type;
+        e.button.button = SDL_BUTTON_LEFT;
+        e.button.x = static_cast<Sint32>(std::lround(screen.x()));
+        e.button.y = static_cast<Sint32>(std::lround(screen.y()));
+        e.button.timestamp = ms;
+        app.processEvent(e);
+    }
+    static void motion(App& app, Vec2 screen, Uint32 ms) {
+        SDL_Event e{};
+        e.type = SDL_MOUSEMOTION;
+        e.motion.x = static_cast<Sint32>(std::lround(screen.x()));
+        e.motion.y = static_cast<Sint32>(std::lround(screen.y()));
+        e.motion.timestamp = ms;
+        app.processEvent(e);
+    }
+    /// A click at world point `at`: press and release 50 ms later, without moving.
+    static void click(App& app, Vec2 at, Uint32 ms) {
+        const Vec2 s = app.camera().worldToScreen(at);
+        button(app, SDL_MOUSEBUTTONDOWN, s, ms);
+        button(app, SDL_MOUSEBUTTONUP, s, ms + 50);
+    }
+    /// A 100 ms drag of 40 px right from world point `at`.
+    static void drag(App& app, Vec2 at, Uint32 ms) {
+        const Vec2 s = app.camera().worldToScreen(at);
+        button(app, SDL_MOUSEBUTTONDOWN, s, ms);
+        for (int k = 1; k <= 10; ++k)
+            motion(app, s + Vec2(4.0 * k, 0), ms + 10 * k);
+        button(app, SDL_MOUSEBUTTONUP, s + Vec2(40, 0), ms + 100);
+    }
+    static ParticleId idAt(const App& app, Vec2 at) {
+        const auto id = app.world().pick(at);
+        EXPECT_TRUE(id.has_value());
+        return id.value_or(kNullParticle);
+    }
+
+    fs::path dir_;
+};
+
+// The built-in scene: the 18 kg particle at (520, 160) m, radius 45 m; (100, 620) is empty.
+const Vec2 kYellow(520, 160), kEmpty(100, 620);
+
+TEST_F(AppTest, AClickSelectsAndAClickOnEmptySpaceDeselects) {
+    App app(options());
+    EXPECT_FALSE(app.selected().has_value());
+    const ParticleId id = idAt(app, kYellow);
+    const Vec2 v = app.world().get(id).velocity;
+    click(app, kYellow, 1000);
+    ASSERT_TRUE(app.selected().has_value());
+    EXPECT_EQ(*app.selected(), id);
+    EXPECT_EQ(app.world().get(id).velocity, v);  // inspecting does not stop it
+    EXPECT_EQ(app.world().size(), 6u);
+    click(app, kEmpty, 2000);
+    EXPECT_FALSE(app.selected().has_value());
+    EXPECT_EQ(app.world().size(), 6u);  // a click launches nothing
+}
+
+TEST_F(AppTest, DragsStillLaunchAndFling) {
+    App app(options());
+    click(app, kYellow, 1000);
+    drag(app, kEmpty, 2000);
+    EXPECT_EQ(app.world().size(), 7u);
+    EXPECT_TRUE(app.selected().has_value());  // a drag does not change the selection
+    const ParticleId id = idAt(app, Vec2(250, 260));
+    drag(app, Vec2(250, 260), 3000);
+    EXPECT_GT(app.world().get(id).velocity.x(), 100.0);
+}
+
+TEST_F(AppTest, DeletingTheSelectedParticleClearsTheSelection) {
+    App app(options());
+    click(app, kYellow, 1000);
+    ASSERT_TRUE(app.selected().has_value());
+    button(app, SDL_MOUSEBUTTONDOWN, app.camera().worldToScreen(kYellow), 2000);
+    key(app, SDLK_DELETE);
+    button(app, SDL_MOUSEBUTTONUP, app.camera().worldToScreen(kYellow), 2500);
+    EXPECT_EQ(app.world().size(), 5u);
+    EXPECT_FALSE(app.selected().has_value());
+}
+
+TEST_F(AppTest, TheEditPromptTakesLettersAndEscWithoutTogglingOrQuitting) {
+    App app(options());
+    click(app, kYellow, 1000);
+    key(app, SDLK_RETURN);
+    ASSERT_TRUE(app.editing());
+    const WorldDef before = app.world().def();
+    typeText(app, "eg");  // would lower restitution and turn gravity on
+    key(app, SDLK_r);     // would reset the scene
+    EXPECT_EQ(app.world().def().restitution, before.restitution);
+    EXPECT_EQ(app.world().def().gravity, before.gravity);
+    key(app, SDLK_F12);  // no text: still a screenshot
+    app.frame(0.0);
+    EXPECT_TRUE(app.lastScreenshot().has_value());
+    key(app, SDLK_ESCAPE);
+    EXPECT_FALSE(app.editing());
+    EXPECT_TRUE(app.running());
+    EXPECT_DOUBLE_EQ(app.world().get(*app.selected()).mass, 18.0);  // cancelled
+    key(app, SDLK_ESCAPE);
+    EXPECT_FALSE(app.running());
+}
+
+TEST_F(AppTest, EnterAppliesAnEditAndARefusedOneChangesNothing) {
+    App app(options());
+    click(app, kYellow, 1000);
+    const ParticleId id = *app.selected();
+    key(app, SDLK_RETURN);
+    typeText(app, "25");
+    key(app, SDLK_TAB);
+    key(app, SDLK_TAB);
+    typeText(app, "-7");  // vx
+    key(app, SDLK_RETURN);
+    EXPECT_FALSE(app.editing());
+    EXPECT_DOUBLE_EQ(app.world().get(id).mass, 25.0);
+    EXPECT_DOUBLE_EQ(app.world().get(id).velocity.x(), -7.0);
+
+    key(app, SDLK_RETURN);
+    key(app, SDLK_TAB);
+    typeText(app, "-1");  // radius
+    const std::uint64_t before = test::stateHash(app.world());
+    key(app, SDLK_RETURN);
+    EXPECT_TRUE(app.editing());  // open, to correct the value
+    EXPECT_EQ(test::stateHash(app.world()), before);
+    EXPECT_DOUBLE_EQ(app.world().get(id).radius, 45.0);
+}
+
+TEST_F(AppTest, ERestitutionAndGGravityWithTheExactModeRefusingGravity) {
+    App app(options());
+    key(app, SDLK_e);
+    EXPECT_DOUBLE_EQ(app.world().def().restitution, 0.95);
+    key(app, SDLK_e, KMOD_LSHIFT);
+    key(app, SDLK_e, KMOD_LSHIFT);
+    EXPECT_DOUBLE_EQ(app.world().def().restitution, 1.0);
+    key(app, SDLK_g);
+    EXPECT_NEAR(app.world().def().gravity.y(), 9.81 * 35.0, 1e-9);
+    key(app, SDLK_t);  // substep
+    key(app, SDLK_t);  // exact: refused while gravity is on
+    EXPECT_EQ(app.world().solver().mode, StepMode::Substep);
+    key(app, SDLK_g);  // off
+    key(app, SDLK_t);
+    ASSERT_EQ(app.world().solver().mode, StepMode::Exact);
+    key(app, SDLK_g);  // refused
+    EXPECT_EQ(app.world().def().gravity, Vec2::Zero());
+    EXPECT_EQ(app.world().solver().mode, StepMode::Exact);
+    key(app, SDLK_SPACE);
+    app.frame(0.1);  // it still steps
+    EXPECT_GT(app.world().time(), 0.0);
+}
+
+TEST_F(AppTest, RRestoresTheWorldAsLoadedAfterStepsSpawnsDeletionsAndEdits) {
+    App app(options());
+    const std::uint64_t loaded = test::stateHash(app.world());
+    const SolverSettings solver = app.world().solver();
+
+    key(app, SDLK_SPACE);
+    app.frame(0.2);  // twelve steps
+    key(app, SDLK_SPACE);
+    key(app, SDLK_m);         // spawn
+    drag(app, kEmpty, 1000);  // launch
+    const Vec2 at = app.world().get(app.world().ids()[3]).position;
+    click(app, at, 2000);
+    key(app, SDLK_RETURN);
+    typeText(app, "30");
+    key(app, SDLK_RETURN);
+    const Vec2 other = app.world().get(app.world().ids()[0]).position;
+    button(app, SDL_MOUSEBUTTONDOWN, app.camera().worldToScreen(other), 3000);
+    key(app, SDLK_DELETE);
+    button(app, SDL_MOUSEBUTTONUP, app.camera().worldToScreen(other), 3500);
+    key(app, SDLK_e);
+    key(app, SDLK_g);
+    key(app, SDLK_t);
+    ASSERT_NE(test::stateHash(app.world()), loaded);
+
+    key(app, SDLK_r);
+    EXPECT_EQ(test::stateHash(app.world()), loaded);
+    EXPECT_EQ(app.world().size(), 6u);
+    EXPECT_EQ(app.world().time(), 0.0);
+    EXPECT_EQ(app.world().def().restitution, 1.0);
+    EXPECT_EQ(app.world().def().gravity, Vec2::Zero());
+    EXPECT_EQ(app.world().solver().mode, solver.mode);
+    EXPECT_FALSE(app.selected().has_value());
+}
+
+TEST_F(AppTest, RRestoresTheSceneAsLoadedEvenIfItsFileChanged) {
+    const fs::path file = dir_ / "scene.json";
+    Scene s = defaultScene();
+    s.particles.resize(2);
+    saveScene(s, file);
+    AppOptions o = options();
+    o.scene = file;
+    App app(o);
+    const std::uint64_t loaded = test::stateHash(app.world());
+    s.particles.resize(1);  // the file changes under the running app
+    saveScene(s, file);
+    key(app, SDLK_m);
+    key(app, SDLK_r);
+    EXPECT_EQ(app.world().size(), 2u);
+    EXPECT_EQ(test::stateHash(app.world()), loaded);
+}
+
+TEST_F(AppTest, F12WritesTheWindowAsAPng) {
+    App app(options());
+    key(app, SDLK_F12);
+    app.frame(0.0);
+    ASSERT_TRUE(app.lastScreenshot().has_value());
+    EXPECT_EQ(app.lastScreenshot()->parent_path(), dir_);
+    int w = 0, h = 0, n = 0;
+    unsigned char* px = stbi_load(app.lastScreenshot()->c_str(), &w, &h, &n, 3);
+    ASSERT_NE(px, nullptr) << stbi_failure_reason();
+    EXPECT_EQ(w, app.camera().viewportWidth());
+    EXPECT_EQ(h, app.camera().viewportHeight());
+    // The yellow particle's centre is drawn in its colour (255, 210, 110).
+    const Vec2 c = app.camera().worldToScreen(kYellow);
+    const std::size_t i = 3 * (static_cast<std::size_t>(std::lround(c.y())) * w +
+                               static_cast<std::size_t>(std::lround(c.x())));
+    EXPECT_NEAR(px[i], 255, 8);
+    EXPECT_NEAR(px[i + 1], 210, 8);
+    EXPECT_NEAR(px[i + 2], 110, 8);
+    stbi_image_free(px);
+}
+
+}  // namespace
+}  // namespace psb::app
