@@ -90,6 +90,34 @@ TEST(Trails, ResetForgetsEveryTrailAndAPausedWorldAddsNothing) {
     EXPECT_EQ(t.length(id), 0u);
 }
 
+TEST(Trails, ImageLinesAreClippedAndOnlyTheirRectangleIsCleared) {
+    TrailImage img;
+    img.resize(100, 50);
+    // From far off screen on the left to (20, 10): clipped, drawn from x = 0 to 20 on row 10.
+    img.line(-1e6f, 10.2f, 20.2f, 10.2f, 0xff102030u);
+    const SDL_Rect r = img.dirty();
+    EXPECT_EQ(r.x, 0);
+    EXPECT_EQ(r.y, 10);
+    EXPECT_EQ(r.w, 21);
+    EXPECT_EQ(r.h, 1);
+    for (int x = 0; x <= 20; ++x)
+        EXPECT_EQ(img.at(x, 10), 0xff102030u) << "x = " << x;
+    EXPECT_EQ(img.at(21, 10), 0u);
+    // Where lines cross, the more opaque colour stays, whichever comes last.
+    img.line(5.5f, 5.5f, 5.5f, 15.5f, 0x40ffffffu);
+    EXPECT_EQ(img.at(5, 10), 0xff102030u);
+    EXPECT_EQ(img.at(5, 14), 0x40ffffffu);
+    // Entirely outside: nothing.
+    img.line(200.0f, 10.0f, 300.0f, 40.0f, 0xffffffffu);
+    EXPECT_EQ(img.dirty().w, 21);  // x 0..20, y 5..15: the two lines above
+    EXPECT_EQ(img.dirty().h, 11);
+    img.clear();
+    EXPECT_EQ(img.dirty().w, 0);
+    for (int y = 0; y < 50; ++y)
+        for (int x = 0; x < 100; ++x)
+            ASSERT_EQ(img.at(x, y), 0u);
+}
+
 TEST(Trails, ModesCycleOffSelectedAll) {
     EXPECT_EQ(nextTrailMode(TrailMode::Off), TrailMode::Selected);
     EXPECT_EQ(nextTrailMode(TrailMode::Selected), TrailMode::All);
@@ -310,7 +338,7 @@ TEST_F(OverlayRenderTest, TrailsFollowThePathAndOnlyWhenOn) {
         int n = 0;  // any shade of the particle's red left of its disc
         for (int x = 95; x < 290; ++x) {
             const SDL_Color c = pixel(x, y);
-            n += c.r > 50 && c.g <= 20 && c.b <= 20;
+            n += c.r > 20 && c.g <= 20 && c.b <= 20;  // the tail is 15 % of 250
         }
         return n;
     };
