@@ -597,17 +597,6 @@ void App::sampleAnalysis() {
 void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
     drawStats_ = renderer_->draw(world_, camera_, view_, &trails_, selectedParticle());
-    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_);
-
-    // A launch in progress: a ghost disc at the press point and a line to the pointer.
-    if (interaction_.mode() == Interaction::Mode::Launching) {
-        const Vec2 a = camera_.worldToScreen(interaction_.pressPoint());
-        const Vec2 b = camera_.worldToScreen(interaction_.pointer());
-        SDL_SetRenderDrawColor(sdlRenderer_, 200, 200, 200, 255);
-        SDL_RenderDrawLineF(sdlRenderer_, static_cast<float>(a.x()), static_cast<float>(a.y()),
-                            static_cast<float>(b.x()), static_cast<float>(b.y()));
-        renderer_->drawGhost(camera_, interaction_.pressPoint(), spawn_.radius());
-    }
 
     HudData hud;
     hud.fps = fps_;
@@ -651,7 +640,29 @@ void App::render() {
     std::erase_if(messages_, [t](const Message& m) { return m.until < t; });
     for (const auto& m : messages_)
         o.messages.push_back(m.text);
-    drawOverlays(sdlRenderer_, *hudFont_, o, camera_.viewportWidth(), camera_.viewportHeight());
+    LayoutRequest req;
+    req.width = camera_.viewportWidth();
+    req.height = camera_.viewportHeight();
+    req.hud = textBoxSize(*hudFont_, o.hud);
+    if (showProfile_) req.profile = textBoxSize(*hudFont_, o.profile);
+    if (view_.momentum)
+        req.legend = textBoxSize(*labelFont_, momentumLegend(world_, view_.arrowSeconds));
+    req.messages = textBoxSize(*hudFont_, o.messages);
+    req.plots = view_.plots;
+    req.speeds = view_.speeds;
+    const PanelLayout layout = layoutPanels(req);
+    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_, layout);
+    // A launch in progress: a ghost disc at the press point and a line to the pointer.
+    if (interaction_.mode() == Interaction::Mode::Launching) {
+        const Vec2 a = camera_.worldToScreen(interaction_.pressPoint());
+        const Vec2 b = camera_.worldToScreen(interaction_.pointer());
+        SDL_SetRenderDrawColor(sdlRenderer_, 200, 200, 200, 255);
+        SDL_RenderDrawLineF(sdlRenderer_, static_cast<float>(a.x()), static_cast<float>(a.y()),
+                            static_cast<float>(b.x()), static_cast<float>(b.y()));
+        renderer_->drawGhost(camera_, interaction_.pressPoint(), spawn_.radius());
+    }
+
+    drawOverlays(sdlRenderer_, *hudFont_, o, layout);
 
     const std::string title = windowTitle(world_.size(), paused_, sceneName_);
     if (title != title_) {
