@@ -1,7 +1,7 @@
 #pragma once
 // The analysis overlays drawn over the world (see docs/app.md, "Seeing the physics"): the
 // momentum view (V), the plots panel (K) and the speed histogram (D), each drawn only when its
-// ViewOptions toggle is on. The panels stack up from the bottom-right corner of the viewport.
+// ViewOptions toggle is on, in the boxes of a PanelLayout.
 // The path traces (L) are drawn by the Renderer, under the discs.
 
 #include <SDL.h>
@@ -11,6 +11,7 @@
 
 #include "camera.hpp"
 #include "momentum_view.hpp"
+#include "panel_layout.hpp"
 #include "plot_panel.hpp"
 #include "renderer.hpp"
 #include "speed_histogram.hpp"
@@ -21,9 +22,10 @@ class Font;
 
 class AnalysisOverlays {
   public:
-    /// Draws what `view` switches on; `series` feeds the plots and the centre of mass path.
+    /// Draws what `view` switches on, the panels in `layout`'s boxes (a panel whose box is
+    /// empty is not drawn); `series` feeds the plots and the centre of mass path.
     void draw(SDL_Renderer* renderer, const Font& font, const World& world, const Camera& camera,
-              const TimeSeries& series, const ViewOptions& view);
+              const TimeSeries& series, const ViewOptions& view, const PanelLayout& layout);
 
   private:
     MomentumView momentum_;

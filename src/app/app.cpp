@@ -741,20 +741,9 @@ void App::sampleAnalysis() {
 void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
     drawStats_ = renderer_->draw(world_, camera_, view_, &trails_, selectedParticle());
-    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_);
     std::optional<Particle> selected;
     if (const auto id = selection_.id(); id && world_.contains(*id)) selected = world_.get(*id);
     if (selected) drawSelectionOutline(sdlRenderer_, camera_, *selected);
-
-    // A launch in progress: a ghost disc at the press point and a line to the pointer.
-    if (interaction_.mode() == Interaction::Mode::Launching) {
-        const Vec2 a = camera_.worldToScreen(interaction_.pressPoint());
-        const Vec2 b = camera_.worldToScreen(interaction_.pointer());
-        SDL_SetRenderDrawColor(sdlRenderer_, 200, 200, 200, 255);
-        SDL_RenderDrawLineF(sdlRenderer_, static_cast<float>(a.x()), static_cast<float>(a.y()),
-                            static_cast<float>(b.x()), static_cast<float>(b.y()));
-        renderer_->drawGhost(camera_, interaction_.pressPoint(), spawn_.radius());
-    }
 
     HudData hud;
     hud.fps = fps_;
@@ -801,7 +790,30 @@ void App::render() {
     for (const auto& m : messages_)
         o.messages.push_back(m.text);
     if (selected) o.inspector = inspectorLines(*selected, prompt_);
-    drawOverlays(sdlRenderer_, *hudFont_, o, camera_.viewportWidth(), camera_.viewportHeight());
+    LayoutRequest req;
+    req.width = camera_.viewportWidth();
+    req.height = camera_.viewportHeight();
+    req.hud = textBoxSize(*hudFont_, o.hud);
+    if (showProfile_) req.profile = textBoxSize(*hudFont_, o.profile);
+    if (view_.momentum)
+        req.legend = textBoxSize(*labelFont_, momentumLegend(world_, view_.arrowSeconds));
+    req.messages = textBoxSize(*hudFont_, o.messages);
+    req.inspector = textBoxSize(*hudFont_, o.inspector);
+    req.plots = view_.plots;
+    req.speeds = view_.speeds;
+    const PanelLayout layout = layoutPanels(req);
+    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_, layout);
+    // A launch in progress: a ghost disc at the press point and a line to the pointer.
+    if (interaction_.mode() == Interaction::Mode::Launching) {
+        const Vec2 a = camera_.worldToScreen(interaction_.pressPoint());
+        const Vec2 b = camera_.worldToScreen(interaction_.pointer());
+        SDL_SetRenderDrawColor(sdlRenderer_, 200, 200, 200, 255);
+        SDL_RenderDrawLineF(sdlRenderer_, static_cast<float>(a.x()), static_cast<float>(a.y()),
+                            static_cast<float>(b.x()), static_cast<float>(b.y()));
+        renderer_->drawGhost(camera_, interaction_.pressPoint(), spawn_.radius());
+    }
+
+    drawOverlays(sdlRenderer_, *hudFont_, o, layout);
     if (screenshotRequested_) writeScreenshot();
 
     const std::string title = windowTitle(world_.size(), paused_, sceneName_);

@@ -56,8 +56,17 @@ TotalMomentumArrow totalMomentumArrow(const World& world, double arrowSeconds) {
     return a;
 }
 
+std::vector<std::string> momentumLegend(const World& world, double arrowSeconds) {
+    const Vec2 P = momentum(world);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
+                  totalMomentumArrow(world, arrowSeconds).capped ? " (arrow capped)" : "");
+    return {buf, "m v per particle", "centre of mass and its path"};
+}
+
 void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& world,
-                        const Camera& camera, const TimeSeries& series, double arrowSeconds) {
+                        const Camera& camera, const TimeSeries& series, double arrowSeconds,
+                        const SDL_Rect& legend) {
     const ParticleArrays& p = world.particles();
     arrows_.clear();
     text_.clear();
@@ -97,12 +106,20 @@ void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& w
     }
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_BLEND);
 
-    const Vec2 P = momentum(world);
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
-                  total.capped ? " (arrow capped)" : "");
-    font.layout(buf, x + 10, y - 10 - static_cast<float>(font.lineHeight()), kTotalMomentumColor,
-                text_);
+    if (legend.w <= 0) return;
+    // The legend sits in the panel column (see PanelLayout), each line in the colour it names.
+    GeometryBatch& box = arrows_;
+    box.clear();
+    const float lx = static_cast<float>(legend.x), ly = static_cast<float>(legend.y);
+    box.quad(lx, ly, lx + static_cast<float>(legend.w), ly + static_cast<float>(legend.h),
+             SDL_Color{0, 0, 0, 190});
+    box.draw(renderer, nullptr);
+    const std::vector<std::string> lines = momentumLegend(world, arrowSeconds);
+    const SDL_Color colors[3] = {kTotalMomentumColor, kMomentumArrowColor, kCentreOfMassColor};
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        font.layout(lines[k], lx + 4, ly + 2 + static_cast<float>(k * font.lineHeight()), colors[k],
+                    text_);
+    }
     font.draw(text_);
 }
 

@@ -8,6 +8,9 @@
 // total would be N times longer on that scale, so its arrow is capped at 40 % of the box's
 // smaller side and labelled with its value.
 
+#include <string>
+#include <vector>
+
 #include <SDL.h>
 
 #include <particle_sandbox/time_series.hpp>
@@ -35,12 +38,16 @@ struct TotalMomentumArrow {
 /// The total momentum arrow for `world` at `arrowSeconds` (see the file comment).
 [[nodiscard]] TotalMomentumArrow totalMomentumArrow(const World& world, double arrowSeconds);
 
+/// The legend's lines: the total momentum's value, then what the colours mean.
+[[nodiscard]] std::vector<std::string> momentumLegend(const World& world, double arrowSeconds);
+
 class MomentumView {
   public:
     /// Draws the per-particle arrows, the centre of mass path from `series` (its samples'
-    /// centreOfMass, oldest first), the marker and the total arrow with its value in `font`.
+    /// centreOfMass, oldest first), the marker, the total arrow, and the legend in `legend`
+    /// (pixels; not drawn when w == 0).
     void draw(SDL_Renderer* renderer, const Font& font, const World& world, const Camera& camera,
-              const TimeSeries& series, double arrowSeconds);
+              const TimeSeries& series, double arrowSeconds, const SDL_Rect& legend);
 
   private:
     GeometryBatch arrows_, text_;

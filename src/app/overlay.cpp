@@ -6,40 +6,40 @@
 
 namespace psb::app {
 
-void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o, int width,
-                  int height) {
+SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines) {
+    if (lines.empty()) return {0, 0};
+    int w = 0;
+    for (const auto& l : lines)
+        w = std::max(w, font.measure(l));
+    return {w + 8, font.lineHeight() * static_cast<int>(lines.size()) + 4};
+}
+
+void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
+                  const PanelLayout& layout) {
     GeometryBatch boxes, text;
     const float lh = static_cast<float>(font.lineHeight());
-    const auto widthOf = [&](const std::vector<std::string>& ls) {
-        int w = 0;
-        for (const auto& l : ls)
-            w = std::max(w, font.measure(l));
-        return static_cast<float>(w);
-    };
-    const auto panel = [&](const std::vector<std::string>& ls, float x, float y,
+    const auto panel = [&](const std::vector<std::string>& ls, const SDL_Rect& box,
                            Uint8 alpha = 150) {
-        boxes.quad(x - 4, y - 2, x + widthOf(ls) + 4, y + lh * static_cast<float>(ls.size()) + 2,
+        if (box.w <= 0 || ls.empty()) return;
+        boxes.quad(static_cast<float>(box.x), static_cast<float>(box.y),
+                   static_cast<float>(box.x + box.w), static_cast<float>(box.y + box.h),
                    SDL_Color{0, 0, 0, alpha});
         for (std::size_t k = 0; k < ls.size(); ++k) {
-            font.layout(ls[k], x, y + lh * static_cast<float>(k), SDL_Color{230, 230, 230, 255},
-                        text);
+            font.layout(ls[k], static_cast<float>(box.x + 4),
+                        static_cast<float>(box.y + 2) + lh * static_cast<float>(k),
+                        SDL_Color{230, 230, 230, 255}, text);
         }
     };
-    panel(o.hud, 8, 6);
-    if (o.showHelp) panel(o.help, 40, 40 + lh * static_cast<float>(o.hud.size()), 225);
-    if (o.showProfile && !o.profile.empty()) {
-        const float w = widthOf(o.profile);
-        panel(o.profile, std::max(8.0f, static_cast<float>(width) - 8 - w), 6, 200);
+    panel(o.hud, layout.hud);
+    if (o.showProfile) panel(o.profile, layout.profile, 200);
+    panel(o.messages, layout.messages);
+    if (o.showHelp) {
+        // The help is asked for and read, then closed: it covers the other panels meanwhile.
+        const SDL_Point size = textBoxSize(font, o.help);
+        const int y = layout.hud.y + layout.hud.h + kPanelGap;
+        panel(o.help, SDL_Rect{36, y, size.x, size.y}, 225);
     }
-    if (!o.messages.empty()) {
-        panel(o.messages, 8,
-              static_cast<float>(height) - 8 - lh * static_cast<float>(o.messages.size()));
-    }
-    if (!o.inspector.empty()) {
-        const float w = widthOf(o.inspector);
-        panel(o.inspector, std::max(8.0f, static_cast<float>(width) - 8 - w),
-              static_cast<float>(height) - 8 - lh * static_cast<float>(o.inspector.size()), 200);
-    }
+    panel(o.inspector, layout.inspector, 200);
     boxes.draw(renderer, nullptr);
     font.draw(text);
 }

@@ -9,6 +9,7 @@
 
 #include <SDL.h>
 
+#include "panel_layout.hpp"
 #include "text.hpp"
 
 namespace psb::app {
@@ -23,9 +24,12 @@ struct Overlays {
     bool showProfile = false;
 };
 
-/// Draws the panels of `o` onto `renderer`, whose output is `width` × `height` pixels. The help
-/// and the profile are drawn only when switched on.
-void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o, int width,
-                  int height);
+/// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
+[[nodiscard]] SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines);
+
+/// Draws the panels of `o` onto `renderer` in the boxes of `layout` (a box with w == 0 is not
+/// drawn). The help is drawn over everything when switched on.
+void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
+                  const PanelLayout& layout);
 
 }  // namespace psb::app

@@ -58,12 +58,15 @@ std::string tickLabel(double v, double step) {
     return buf;
 }
 
-void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series, float x,
-                     float y, double totalMass) {
+void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
+                     const SDL_Rect& box, int rows, int rowHeight, double totalMass) {
     boxes_.clear();
     text_.clear();
+    rows = std::clamp(rows, 1, 4);
     const float lh = static_cast<float>(font.lineHeight());
-    boxes_.quad(x, y, x + kWidth, y + static_cast<float>(height()), SDL_Color{0, 0, 0, 190});
+    const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
+    const float width = static_cast<float>(box.w), rowH = static_cast<float>(rowHeight);
+    boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), SDL_Color{0, 0, 0, 190});
 
     struct Plot {
         const char* title;
@@ -90,13 +93,13 @@ void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     const double t0 = n > 0 ? series[0].time : 0.0;
     const double t1 = n > 1 ? series.back().time : t0 + 1.0;
 
-    const float left = x + 78, right = x + kWidth - 8;     // plot area, pixels
+    const float left = x + 78, right = x + width - 8;      // plot area, pixels
     std::vector<std::pair<SDL_Color, std::size_t>> lines;  // colour, end index in line_
     line_.clear();
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < rows; ++k) {
         const Plot& pl = plots[k];
-        const float top = y + 6 + static_cast<float>(k) * kPlotHeight + lh;
-        const float bottom = top + kPlotHeight - 2 * lh - 8;
+        const float top = y + 6 + static_cast<float>(k) * rowH + lh;
+        const float bottom = top + rowH - 2 * lh - 8;
         font.layout(pl.title, left, top - lh - 1, pl.color, text_);
         // Axes: left and bottom, grey.
         const SDL_Color axis{150, 150, 150, 255};
@@ -138,7 +141,7 @@ void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     }
     // The time axis of the last plot carries the labels: simulated seconds.
     if (n >= 2) {
-        const float bottom = y + 6 + 3.0f * kPlotHeight + lh + kPlotHeight - 2 * lh - 8;
+        const float bottom = y + 6 + static_cast<float>(rows - 1) * rowH + lh + rowH - 2 * lh - 8;
         const double step = niceStep(t0, t1, 4);
         for (const double t : niceTicks(t0, t1, 4)) {
             const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);

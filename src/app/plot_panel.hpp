@@ -48,14 +48,11 @@ inline constexpr SDL_Color kRatePlotColor{255, 200, 60, 255};
 
 class PlotPanel {
   public:
-    static constexpr int kWidth = 330;       ///< pixels
-    static constexpr int kPlotHeight = 100;  ///< pixels per plot, title and axis included
-
-    /// Draws the four plots with their top-left corner at (x, y), pixels; `totalMass` (kg) sets
-    /// the momentum plots' floor. Nothing but the frame when `series` has fewer than 2 samples.
-    void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series, float x, float y,
-              double totalMass);
-    [[nodiscard]] static int height() { return 4 * kPlotHeight + 8; }
+    /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
+    /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
+    /// momentum plots' floor. Nothing but the frame when `series` has fewer than 2 samples.
+    void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
+              const SDL_Rect& box, int rows, int rowHeight, double totalMass);
 
   private:
     GeometryBatch boxes_, text_;

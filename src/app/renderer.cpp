@@ -47,6 +47,28 @@ Renderer::Renderer(SDL_Renderer* renderer, const Font* labelFont)
 
 Renderer::~Renderer() {
     SDL_DestroyTexture(circle_);
+    if (trailTexture_ != nullptr) SDL_DestroyTexture(trailTexture_);
+}
+
+void Renderer::drawTrails(const TrailImage& image) {
+    const SDL_Rect r = image.dirty();
+    if (r.w <= 0 || r.h <= 0) return;
+    if (trailTexture_ == nullptr || trailWidth_ != image.width() ||
+        trailHeight_ != image.height()) {
+        if (trailTexture_ != nullptr) SDL_DestroyTexture(trailTexture_);
+        trailTexture_ =
+            SDL_CreateTexture(renderer_, SDL_PIXELFORMAT_ARGB8888, SDL_TEXTUREACCESS_STREAMING,
+                              image.width(), image.height());
+        if (trailTexture_ == nullptr) return;  // no trails rather than no frame
+        SDL_SetTextureBlendMode(trailTexture_, SDL_BLENDMODE_BLEND);
+        trailWidth_ = image.width();
+        trailHeight_ = image.height();
+    }
+    // Only the rectangle that holds trail pixels is uploaded and copied.
+    const std::uint32_t* first =
+        image.pixels() + static_cast<std::size_t>(r.y) * image.width() + r.x;
+    SDL_UpdateTexture(trailTexture_, &r, first, image.width() * 4);
+    SDL_RenderCopy(renderer_, trailTexture_, &r, &r);
 }
 
 void Renderer::drawWalls(const World& world, const Camera& camera) {
@@ -102,7 +124,9 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
     drawWalls(world, camera);
-    if (trails != nullptr) trails->draw(renderer_, world, camera, options.trails, selected);
+    if (trails != nullptr && options.trails != TrailMode::Off) {
+        drawTrails(trails->rasterise(world, camera, options.trails, selected));
+    }
 
     discs_.clear();
     arrows_.clear();

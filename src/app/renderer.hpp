@@ -71,11 +71,14 @@ class Renderer {
 
   private:
     void drawWalls(const World& world, const Camera& camera);
+    void drawTrails(const TrailImage& image);
 
     SDL_Renderer* renderer_;
     const Font* labelFont_;
     SDL_Texture* circle_ = nullptr;
     GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
+    SDL_Texture* trailTexture_ = nullptr;  // streaming, the viewport's size
+    int trailWidth_ = 0, trailHeight_ = 0;
 };
 
 }  // namespace psb::app

@@ -52,12 +52,11 @@ inline constexpr SDL_Color kRayleighCurveColor{255, 255, 255, 255};
 
 class SpeedHistogramPanel {
   public:
-    static constexpr int kWidth = 330;   ///< pixels
-    static constexpr int kHeight = 210;  ///< pixels
     static constexpr std::size_t kBins = 32;
 
-    /// Draws the histogram of `p` with its top-left corner at (x, y), pixels.
-    void draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p, float x, float y);
+    /// Draws the histogram of `p` in `box` (pixels, see PanelLayout).
+    void draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
+              const SDL_Rect& box);
 
   private:
     GeometryBatch boxes_, text_;

@@ -1,6 +1,8 @@
 #include "trails.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cmath>
 
 namespace psb::app {
 
@@ -80,54 +82,138 @@ Vec2 Trails::point(ParticleId id, std::size_t k) const {
     return {xs_[at], ys_[at]};
 }
 
-void Trails::drawOne(SDL_Renderer* renderer, const World& world, const Camera& camera,
-                     std::size_t index) {
+void TrailImage::resize(int width, int height) {
+    if (width == width_ && height == height_) return;
+    width_ = std::max(width, 0);
+    height_ = std::max(height, 0);
+    pixels_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0u);
+    minX_ = minY_ = INT_MAX;
+    maxX_ = maxY_ = -1;
+}
+
+void TrailImage::clear() {
+    for (int y = minY_; y <= maxY_; ++y) {
+        std::uint32_t* row = pixels_.data() + static_cast<std::size_t>(y) * width_;
+        std::fill(row + minX_, row + maxX_ + 1, 0u);
+    }
+    minX_ = minY_ = INT_MAX;
+    maxX_ = maxY_ = -1;
+}
+
+SDL_Rect TrailImage::dirty() const {
+    if (maxX_ < 0) return {};
+    return {minX_, minY_, maxX_ - minX_ + 1, maxY_ - minY_ + 1};
+}
+
+void TrailImage::line(float x0, float y0, float x1, float y1, std::uint32_t argb) {
+    const float xmax = static_cast<float>(width_) - 0.5f;
+    const float ymax = static_cast<float>(height_) - 0.5f;
+    const auto inside = [&](float x, float y) {
+        return x >= 0.0f && x <= xmax && y >= 0.0f && y <= ymax;
+    };
+    float dx = x1 - x0, dy = y1 - y0;
+    if (!inside(x0, y0) || !inside(x1, y1)) {
+        // Liang-Barsky: clip to the image so a trail far off screen costs nothing.
+        float t0 = 0.0f, t1 = 1.0f;
+        const float p[4] = {-dx, dx, -dy, dy};
+        const float q[4] = {x0, xmax - x0, y0, ymax - y0};
+        for (int k = 0; k < 4; ++k) {
+            if (p[k] == 0.0f) {
+                if (q[k] < 0.0f) return;
+                continue;
+            }
+            const float r = q[k] / p[k];
+            if (p[k] < 0.0f) {
+                if (r > t1) return;
+                t0 = std::max(t0, r);
+            } else {
+                if (r < t0) return;
+                t1 = std::min(t1, r);
+            }
+        }
+        x1 = x0 + t1 * dx;
+        y1 = y0 + t1 * dy;
+        x0 += t0 * dx;
+        y0 += t0 * dy;
+        dx = x1 - x0;
+        dy = y1 - y0;
+    }
+    // A DDA along the major axis, one pixel per step, both end pixels included.
+    const int steps = static_cast<int>(std::max(std::abs(dx), std::abs(dy))) + 1;
+    const float sx = dx / static_cast<float>(steps), sy = dy / static_cast<float>(steps);
+    float x = x0, y = y0;
+    for (int k = 0; k <= steps; ++k, x += sx, y += sy) {
+        const int ix = std::min(static_cast<int>(x), width_ - 1);
+        const int iy = std::min(static_cast<int>(y), height_ - 1);
+        std::uint32_t& px = pixels_[static_cast<std::size_t>(iy) * width_ + ix];
+        if ((argb >> 24) > (px >> 24)) px = argb;  // the newer (more opaque) trail wins
+    }
+    minX_ = std::min(minX_, static_cast<int>(std::min(x0, x1)));
+    minY_ = std::min(minY_, static_cast<int>(std::min(y0, y1)));
+    maxX_ = std::max(maxX_, std::min(static_cast<int>(std::max(x0, x1)), width_ - 1));
+    maxY_ = std::max(maxY_, std::min(static_cast<int>(std::max(y0, y1)), height_ - 1));
+}
+
+void Trails::rasteriseOne(const World& world, const Camera& camera, std::size_t index) {
     const ParticleArrays& p = world.particles();
     const ParticleId id = p.id[index];
     if (!has(id)) return;
     const std::size_t n = count_[id.slot];
-    line_.clear();
-    for (std::size_t k = 0; k < n; ++k) {
-        const Vec2 s = camera.worldToScreen(point(id, k));
-        line_.push_back({static_cast<float>(s.x()), static_cast<float>(s.y())});
-    }
-    const Vec2 now = camera.worldToScreen(Vec2(p.x[index], p.y[index]));
-    line_.push_back({static_cast<float>(now.x()), static_cast<float>(now.y())});
-    // Bands share their end points so the polyline has no gaps; the oldest band is dimmest.
-    const std::size_t segments = line_.size() - 1;
     const Color c = p.color[index];
-    for (int b = 0; b < kBands; ++b) {
-        const std::size_t from = segments * static_cast<std::size_t>(b) / kBands;
-        const std::size_t to = segments * static_cast<std::size_t>(b + 1) / kBands;
-        if (to <= from) continue;
-        const double f = 0.25 + 0.75 * (b + 1) / static_cast<double>(kBands);
-        SDL_SetRenderDrawColor(renderer, static_cast<Uint8>(c.r * f), static_cast<Uint8>(c.g * f),
-                               static_cast<Uint8>(c.b * f), 255);
-        SDL_RenderDrawLinesF(renderer, line_.data() + from, static_cast<int>(to - from + 1));
+    const std::uint32_t rgb = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+    // Screen = (world - offset) * zoom, in floats: a trail is only drawn.
+    const Vec2 o = camera.worldToScreen(Vec2::Zero());
+    const float zoom = static_cast<float>(camera.zoom());
+    const float ox = static_cast<float>(o.x()), oy = static_cast<float>(o.y());
+    const float* xs = xs_.data() + static_cast<std::size_t>(id.slot) * kLength;
+    const float* ys = ys_.data() + static_cast<std::size_t>(id.slot) * kLength;
+    const std::size_t oldest = (head_[id.slot] + kLength - n) % kLength;
+    float ax = ox + zoom * xs[oldest], ay = oy + zoom * ys[oldest];
+    // Points 0..n-1 are the ring, oldest first; point n is the particle now.
+    for (std::size_t k = 1; k <= n; ++k) {
+        const std::size_t at = (oldest + k) % kLength;
+        const float bx = k < n ? ox + zoom * xs[at] : ox + zoom * static_cast<float>(p.x[index]);
+        const float by = k < n ? oy + zoom * ys[at] : oy + zoom * static_cast<float>(p.y[index]);
+        const float dx = bx - ax, dy = by - ay;
+        // Steps shorter than kMinSegment px join the next one: a slow particle's trail is not
+        // redrawn pixel by pixel.
+        if (k < n && dx * dx + dy * dy < kMinSegment * kMinSegment) continue;
+        const float f =
+            kTailAlpha + (1.0f - kTailAlpha) * static_cast<float>(k) / static_cast<float>(n);
+        image_.line(ax, ay, bx, by, (static_cast<std::uint32_t>(255.0f * f) << 24) | rgb);
+        ax = bx;
+        ay = by;
     }
 }
 
-std::size_t Trails::draw(SDL_Renderer* renderer, const World& world, const Camera& camera,
-                         TrailMode mode, ParticleId selected) {
-    if (mode == TrailMode::Off) return 0;
-    // Dimmed colours on black instead of alpha: opaque lines skip the blend per pixel.
-    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
-    std::size_t drawn = 0;
+const TrailImage& Trails::rasterise(const World& world, const Camera& camera, TrailMode mode,
+                                    ParticleId selected, std::size_t* drawn) {
+    image_.resize(camera.viewportWidth(), camera.viewportHeight());
+    image_.clear();
+    std::size_t count = 0;
     if (mode == TrailMode::Selected) {
-        if (const auto i = world.indexOf(selected)) {
-            drawOne(renderer, world, camera, *i);
-            drawn = has(selected) ? 1 : 0;
+        if (const auto i = world.indexOf(selected); i && has(selected)) {
+            rasteriseOne(world, camera, *i);
+            count = 1;
         }
-    } else {
+    } else if (mode == TrailMode::All) {
         const ParticleArrays& p = world.particles();
         for (std::size_t i = 0; i < p.size(); ++i) {
+            // Rows are in id order, particles in space order: fetch a row a few trails ahead.
+            if (i + 8 < p.size() && p.id[i + 8].slot < generation_.size()) {
+                const std::size_t row = static_cast<std::size_t>(p.id[i + 8].slot) * kLength;
+                __builtin_prefetch(xs_.data() + row);
+                __builtin_prefetch(xs_.data() + row + 16);
+                __builtin_prefetch(ys_.data() + row);
+                __builtin_prefetch(ys_.data() + row + 16);
+            }
             if (!has(p.id[i])) continue;
-            drawOne(renderer, world, camera, i);
-            ++drawn;
+            rasteriseOne(world, camera, i);
+            ++count;
         }
     }
-    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_BLEND);
-    return drawn;
+    if (drawn != nullptr) *drawn = count;
+    return image_;
 }
 
 }  // namespace psb::app

@@ -8,9 +8,13 @@
 // changed (the particle was deleted and the slot reused) starts an empty trail, a dead id is
 // never drawn, and a new scene resets everything.
 //
-// Each trail is drawn as kBands polylines of fading colour; the lines are SDL's
-// (SDL_RenderDrawLinesF: Bresenham on the software renderer), whose cost grows with the pixels
-// drawn, where thin triangles would each scan their whole bounding box.
+// Drawing: every trail is rasterised on the CPU into one ARGB image the size of the viewport
+// (a DDA line per step, its alpha fading from tail to head), which the Renderer shows with one
+// blended texture copy of the rectangle that holds trail pixels. SDL's software renderer pays a
+// fixed price per line call (about 0.4 us) and per triangle (about 0.25 us, and a temporary
+// surface per blended triangle), so 10^4 trails of 31 steps cost 17 ms as line calls and over
+// 20 ms as thin quads even after merging straight runs; as pixels they cost the pixels drawn
+// plus one copy (see docs/app.md, "Frame time").
 
 #include <cstddef>
 #include <cstdint>
@@ -33,11 +37,40 @@ enum class TrailMode { Off, Selected, All };
 /// "off", "selected", "all".
 [[nodiscard]] const char* toString(TrailMode mode);
 
+/// The trails' pixels: `width` × `height` ARGB8888 words (alpha not premultiplied), zero
+/// where no trail is, and the rectangle that holds every non-zero pixel.
+class TrailImage {
+  public:
+    /// Makes the image `width` × `height` pixels (all clear); a no-op when it already is.
+    void resize(int width, int height);
+    /// Clears the pixels drawn since the last clear.
+    void clear();
+    /// A one-pixel line from (x0, y0) to (x1, y1), pixels, clipped to the image. Where lines
+    /// cross, the more opaque colour stays.
+    void line(float x0, float y0, float x1, float y1, std::uint32_t argb);
+
+    [[nodiscard]] int width() const { return width_; }
+    [[nodiscard]] int height() const { return height_; }
+    [[nodiscard]] const std::uint32_t* pixels() const { return pixels_.data(); }
+    /// The pixel at (x, y); both inside the image.
+    [[nodiscard]] std::uint32_t at(int x, int y) const {
+        return pixels_[static_cast<std::size_t>(y) * width_ + x];
+    }
+    /// Holds every drawn pixel; w == 0 when nothing is drawn.
+    [[nodiscard]] SDL_Rect dirty() const;
+
+  private:
+    std::vector<std::uint32_t> pixels_;
+    int width_ = 0, height_ = 0;
+    int minX_ = 0, minY_ = 0, maxX_ = -1, maxY_ = -1;  // inclusive bounds of the drawn pixels
+};
+
 class Trails {
   public:
-    static constexpr int kLength = 32;       ///< positions kept per particle
-    static constexpr int kSampleFrames = 2;  ///< frames between samples
-    static constexpr int kBands = 4;         ///< fading steps from tail to head
+    static constexpr int kLength = 32;          ///< positions kept per particle
+    static constexpr int kSampleFrames = 2;     ///< frames between samples
+    static constexpr float kMinSegment = 0.5f;  ///< shorter steps join the next one, pixels
+    static constexpr float kTailAlpha = 0.15f;  ///< the oldest step's opacity (the head's is 1)
 
     /// Forgets every trail (a new scene).
     void reset();
@@ -52,25 +85,26 @@ class Trails {
     /// The k-th stored position of `id`, 0 = the oldest; k < length(id). Metres.
     [[nodiscard]] Vec2 point(ParticleId id, std::size_t k) const;
 
-    /// Draws the trails of `mode` (the one of `selected` for Selected; none when it is null),
-    /// each ending at its particle's current position. Returns the number of trails drawn.
-    std::size_t draw(SDL_Renderer* renderer, const World& world, const Camera& camera,
-                     TrailMode mode, ParticleId selected);
+    /// Draws the trails of `mode` (the one of `selected` for Selected; none when it is null)
+    /// into the image, the size of the camera's viewport, each ending at its particle's current
+    /// position; `drawn` (when given) receives the number of trails drawn. Allocates only when
+    /// the viewport or the world grows.
+    const TrailImage& rasterise(const World& world, const Camera& camera, TrailMode mode,
+                                ParticleId selected, std::size_t* drawn = nullptr);
 
   private:
     [[nodiscard]] bool has(ParticleId id) const {
         return id.slot < generation_.size() && generation_[id.slot] == id.generation &&
                count_[id.slot] > 0;
     }
-    void drawOne(SDL_Renderer* renderer, const World& world, const Camera& camera,
-                 std::size_t index);
+    void rasteriseOne(const World& world, const Camera& camera, std::size_t index);
 
     // Row `slot` of xs_/ys_ holds kLength positions (float metres: a trail is only drawn),
     // head_ the next write position, count_ how many are valid.
     std::vector<float> xs_, ys_;
     std::vector<std::uint32_t> generation_;
     std::vector<std::uint8_t> head_, count_;
-    std::vector<SDL_FPoint> line_;  // scratch for one trail's screen points
+    TrailImage image_;
     double lastTime_ = -1.0;
     int frames_ = 0;
 };

@@ -90,6 +90,34 @@ TEST(Trails, ResetForgetsEveryTrailAndAPausedWorldAddsNothing) {
     EXPECT_EQ(t.length(id), 0u);
 }
 
+TEST(Trails, ImageLinesAreClippedAndOnlyTheirRectangleIsCleared) {
+    TrailImage img;
+    img.resize(100, 50);
+    // From far off screen on the left to (20, 10): clipped, drawn from x = 0 to 20 on row 10.
+    img.line(-1e6f, 10.2f, 20.2f, 10.2f, 0xff102030u);
+    const SDL_Rect r = img.dirty();
+    EXPECT_EQ(r.x, 0);
+    EXPECT_EQ(r.y, 10);
+    EXPECT_EQ(r.w, 21);
+    EXPECT_EQ(r.h, 1);
+    for (int x = 0; x <= 20; ++x)
+        EXPECT_EQ(img.at(x, 10), 0xff102030u) << "x = " << x;
+    EXPECT_EQ(img.at(21, 10), 0u);
+    // Where lines cross, the more opaque colour stays, whichever comes last.
+    img.line(5.5f, 5.5f, 5.5f, 15.5f, 0x40ffffffu);
+    EXPECT_EQ(img.at(5, 10), 0xff102030u);
+    EXPECT_EQ(img.at(5, 14), 0x40ffffffu);
+    // Entirely outside: nothing.
+    img.line(200.0f, 10.0f, 300.0f, 40.0f, 0xffffffffu);
+    EXPECT_EQ(img.dirty().w, 21);  // x 0..20, y 5..15: the two lines above
+    EXPECT_EQ(img.dirty().h, 11);
+    img.clear();
+    EXPECT_EQ(img.dirty().w, 0);
+    for (int y = 0; y < 50; ++y)
+        for (int x = 0; x < 100; ++x)
+            ASSERT_EQ(img.at(x, y), 0u);
+}
+
 TEST(Trails, ModesCycleOffSelectedAll) {
     EXPECT_EQ(nextTrailMode(TrailMode::Off), TrailMode::Selected);
     EXPECT_EQ(nextTrailMode(TrailMode::Selected), TrailMode::All);
@@ -227,8 +255,19 @@ class OverlayRenderTest : public ::testing::Test {
     void draw(const World& w, const TimeSeries& series, Trails* trails = nullptr,
               ParticleId selected = kNullParticle) {
         renderer_->draw(w, camera_, view_, trails, selected);
-        overlays_.draw(sdl_, *font_, w, camera_, series, view_);
+        overlays_.draw(sdl_, *font_, w, camera_, series, view_, layout());
         SDL_RenderPresent(sdl_);
+    }
+
+    /// The panels' boxes for the current view, with no HUD.
+    PanelLayout layout() const {
+        LayoutRequest r;
+        r.width = kSize;
+        r.height = kSize;
+        r.plots = view_.plots;
+        r.speeds = view_.speeds;
+        if (view_.momentum) r.legend = {300, 50};
+        return layoutPanels(r);
     }
 
     SDL_Color pixel(int x, int y) const {
@@ -283,9 +322,14 @@ TEST_F(OverlayRenderTest, MomentumViewDrawsParticleArrowsTheTotalAndTheCentreOfM
     draw(w, series);
     EXPECT_GT(count(kMomentumArrowColor, 96, 455, 105, 490), 10);  // above the left disc
     EXPECT_GT(count(kMomentumArrowColor, 296, 455, 305, 490), 10);
-    EXPECT_GT(count(kTotalMomentumColor, 195, 410, 206, 480), 40);   // 100 px up from the CoM
-    EXPECT_GT(count(kCentreOfMassColor, 192, 497, 209, 504), 10);    // the cross
-    EXPECT_EQ(count(kTotalMomentumColor, 0, 520, kSize, kSize), 0);  // nothing below
+    EXPECT_GT(count(kTotalMomentumColor, 195, 410, 206, 480), 40);  // 100 px up from the CoM
+    EXPECT_GT(count(kCentreOfMassColor, 192, 497, 209, 504), 10);   // the cross
+    EXPECT_EQ(count(kTotalMomentumColor, 0, 520, layout().legend.x, kSize), 0);  // nothing below
+    // The legend, top-right: the total's value in its colour.
+    const SDL_Rect legend = layout().legend;
+    EXPECT_GT(
+        count(kTotalMomentumColor, legend.x, legend.y, legend.x + legend.w, legend.y + legend.h),
+        20);
 
     view_.momentum = false;
     draw(w, series);
@@ -310,7 +354,7 @@ TEST_F(OverlayRenderTest, TrailsFollowThePathAndOnlyWhenOn) {
         int n = 0;  // any shade of the particle's red left of its disc
         for (int x = 95; x < 290; ++x) {
             const SDL_Color c = pixel(x, y);
-            n += c.r > 50 && c.g <= 20 && c.b <= 20;
+            n += c.r > 20 && c.g <= 20 && c.b <= 20;  // the tail is 15 % of 250
         }
         return n;
     };
@@ -335,11 +379,14 @@ TEST_F(OverlayRenderTest, TrailsFollowThePathAndOnlyWhenOn) {
 }
 
 TEST_F(OverlayRenderTest, PlotsShowAConservedEnergyFlatAndALosingOneFalling) {
-    // The panel's energy plot is the top one: its area is the panel's top ~100 px at the right.
-    const int x0 = kSize - PlotPanel::kWidth - 8, y0 = kSize - 8 - PlotPanel::height();
+    // The panel's energy plot is the top one: its area is the panel's top ~100 px.
     World w = bigBox();
     w.add(disc({100.0, 100.0}, {0.0, 0.0}));
     view_.plots = true;
+    const SDL_Rect box = layout().plots;
+    ASSERT_EQ(layout().plotRows, 4);
+    ASSERT_EQ(layout().plotRowHeight, 100);
+    const int x0 = box.x, y0 = box.y, x1 = box.x + box.w;
     TimeSeries flat(300);
     for (int k = 0; k < 300; ++k) {
         ObservablesSample s;
@@ -349,10 +396,10 @@ TEST_F(OverlayRenderTest, PlotsShowAConservedEnergyFlatAndALosingOneFalling) {
         flat.record(s);
     }
     draw(w, flat);
-    EXPECT_LE(rows(kEnergyPlotColor, x0 + 80, y0 + 20, x0 + PlotPanel::kWidth, y0 + 100), 2);
-    EXPECT_GT(count(kEnergyPlotColor, x0 + 80, y0 + 20, x0 + PlotPanel::kWidth, y0 + 100), 200);
+    EXPECT_LE(rows(kEnergyPlotColor, x0 + 80, y0 + 20, x1, y0 + 100), 2);
+    EXPECT_GT(count(kEnergyPlotColor, x0 + 80, y0 + 20, x1, y0 + 100), 200);
     // The rate plot: 100 collisions per 0.01 s.
-    EXPECT_GT(count(kRatePlotColor, x0 + 80, y0 + 300, x0 + PlotPanel::kWidth, y0 + 400), 200);
+    EXPECT_GT(count(kRatePlotColor, x0 + 80, y0 + 300, x1, y0 + 400), 200);
 
     TimeSeries falling(300);
     for (int k = 0; k < 300; ++k) {
@@ -362,7 +409,7 @@ TEST_F(OverlayRenderTest, PlotsShowAConservedEnergyFlatAndALosingOneFalling) {
         falling.record(s);
     }
     draw(w, falling);
-    EXPECT_GT(rows(kEnergyPlotColor, x0 + 80, y0 + 20, x0 + PlotPanel::kWidth, y0 + 100), 30);
+    EXPECT_GT(rows(kEnergyPlotColor, x0 + 80, y0 + 20, x1, y0 + 100), 30);
 
     view_.plots = false;
     draw(w, falling);
@@ -375,8 +422,8 @@ TEST_F(OverlayRenderTest, SpeedHistogramDrawsBarsAndTheCurveOnlyWhenOn) {
     TimeSeries series(4);
     view_.speeds = true;
     draw(w, series);
-    const int x0 = kSize - SpeedHistogramPanel::kWidth - 8;
-    const int y0 = kSize - 8 - SpeedHistogramPanel::kHeight;
+    const int x0 = layout().speeds.x, y0 = layout().speeds.y;
+    ASSERT_EQ(layout().speeds.h, 210);
     EXPECT_GT(count(kHistogramBarColor, x0 + 60, y0 + 30, kSize, kSize - 30), 2000);
     // White: the curve (the font is grey or coloured).
     EXPECT_GT(count(kRayleighCurveColor, x0 + 60, y0 + 30, kSize, kSize - 40, 0), 60);

@@ -223,7 +223,12 @@ TEST_F(RenderTest, TheProfileOverlayDrawsTextOnlyWhenOn) {
     const auto drawOverlay = [&] {
         SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
         SDL_RenderClear(sdl_);
-        drawOverlays(sdl_, *font_, o, kSize, kSize);
+        LayoutRequest req;
+        req.width = kSize;
+        req.height = kSize;
+        req.hud = textBoxSize(*font_, o.hud);
+        if (o.showProfile) req.profile = textBoxSize(*font_, o.profile);
+        drawOverlays(sdl_, *font_, o, layoutPanels(req));
         SDL_RenderPresent(sdl_);
     };
     o.showProfile = false;
@@ -260,7 +265,12 @@ TEST_F(RenderTest, TheInspectorPanelIsDrawnBottomRightOnlyWithASelection) {
     const auto drawOverlay = [&] {
         SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
         SDL_RenderClear(sdl_);
-        drawOverlays(sdl_, *font_, o, kSize, kSize);
+        LayoutRequest req;
+        req.width = kSize;
+        req.height = kSize;
+        req.hud = textBoxSize(*font_, o.hud);
+        req.inspector = textBoxSize(*font_, o.inspector);
+        drawOverlays(sdl_, *font_, o, layoutPanels(req));
         SDL_RenderPresent(sdl_);
     };
     drawOverlay();

@@ -1,0 +1,83 @@
+#include "panel_layout.hpp"
+
+#include <algorithm>
+
+namespace psb::app {
+
+bool overlaps(const SDL_Rect& a, const SDL_Rect& b) {
+    if (a.w <= 0 || a.h <= 0 || b.w <= 0 || b.h <= 0) return false;
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+PanelLayout layoutPanels(const LayoutRequest& r) {
+    PanelLayout l;
+    const int m = kPanelMargin, gap = kPanelGap;
+    const int right = r.width - m;
+    if (r.hud.x > 0 && r.hud.y > 0) l.hud = {4, 4, r.hud.x, r.hud.y};
+    const int hudRight = l.hud.w > 0 ? l.hud.x + l.hud.w : 0;
+    const int hudBottom = l.hud.w > 0 ? l.hud.y + l.hud.h : 0;
+
+    // A box right-aligned in the column, below `top` and below the HUD where they would share
+    // columns of pixels.
+    const auto place = [&](SDL_Point size, int top) {
+        const int x = std::max(m, right - size.x);
+        const int y = x < hudRight + gap ? std::max(top, hudBottom + gap) : top;
+        return SDL_Rect{x, y, size.x, size.y};
+    };
+    int bottom = r.height - m;
+    if (r.messages.x > 0 && r.messages.y > 0 && bottom - r.messages.y > hudBottom) {
+        l.messages = {4, bottom - r.messages.y, r.messages.x, r.messages.y};
+    }
+
+    // The inspector is what the user just asked for by clicking: it goes first, at the bottom.
+    if (r.inspector.x > 0 && r.inspector.y > 0 && r.inspector.x <= r.width - 2 * m) {
+        const SDL_Rect box{std::max(m, right - r.inspector.x), bottom - r.inspector.y,
+                           r.inspector.x, r.inspector.y};
+        if (box.y > hudBottom + gap && !overlaps(box, l.messages) && !overlaps(box, l.hud)) {
+            l.inspector = box;
+            bottom = box.y - gap;
+        }
+    }
+
+    int top = 4;
+    for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
+        if (size.x <= 0 || size.y <= 0 || size.x > r.width - 2 * m) continue;
+        const SDL_Rect box = place(size, top);
+        if (box.y + box.h > bottom || overlaps(box, l.messages)) continue;  // no room: left out
+        *out = box;
+        top = box.y + box.h + gap;
+    }
+    if (!r.plots && !r.speeds) return l;
+
+    const int width = std::clamp(r.width - 2 * m, 0, kPanelMaxWidth);
+    if (width < kPanelMinWidth) return l;
+    const SDL_Rect column = place({width, 0}, top);
+    top = column.y;
+    if (overlaps({column.x, top, width, bottom - top}, l.messages)) {
+        bottom = l.messages.y - gap;
+    }
+    int room = bottom - top;
+    const int plotsMin = kPlotRowMinHeight + 8;  // one row plus the panel's padding
+    if (r.speeds) {
+        // The histogram takes what is left after the plots' smallest useful size (one row),
+        // within its own limits.
+        const int want = r.plots ? std::min(kSpeedsMaxHeight, room - plotsMin - gap)
+                                 : std::min(kSpeedsMaxHeight, room);
+        if (want >= kSpeedsMinHeight) {
+            l.speeds = {column.x, bottom - want, width, want};
+            bottom -= want + gap;
+            room = bottom - top;
+        }
+    }
+    if (r.plots && room >= plotsMin) {
+        const int rows = std::clamp((room - 8) / kPlotRowMinHeight, 1, 4);
+        const int rowHeight = std::min(kPlotRowMaxHeight, (room - 8) / rows);
+        const int h = rows * rowHeight + 8;
+        l.plots = {column.x, bottom - h, width, h};
+        l.plotRows = rows;
+        l.plotRowHeight = rowHeight;
+    }
+    return l;
+}
+
+}  // namespace psb::app

@@ -1,0 +1,55 @@
+#pragma once
+// Where the text and analysis panels go, as a pure function of the window size and what each
+// panel would need: the HUD at the top-left, then a column at the right edge holding, from the
+// top, the profile and the momentum legend, and from the bottom the selected particle's
+// inspector, the speed histogram and the plots. The column starts below the HUD when the window is
+// too narrow for both side by side, panels shrink to the room there is (the plots drop their least
+// important rows first: rate, then py, then px), and a panel that does not fit at its smallest is
+// left out. No two rectangles returned overlap.
+
+#include <SDL.h>
+
+namespace psb::app {
+
+/// What to lay out; sizes in pixels, {0, 0} for a panel that is off.
+struct LayoutRequest {
+    int width = 0;              ///< the window
+    int height = 0;             ///< the window
+    SDL_Point hud{0, 0};        ///< the HUD's box (text plus padding)
+    SDL_Point profile{0, 0};    ///< the profile overlay's box
+    SDL_Point legend{0, 0};     ///< the momentum legend's box
+    SDL_Point messages{0, 0};   ///< the messages' box, at the bottom-left
+    SDL_Point inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
+    bool plots = false;         ///< K
+    bool speeds = false;        ///< D
+};
+
+/// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
+struct PanelLayout {
+    SDL_Rect hud{};
+    SDL_Rect profile{};
+    SDL_Rect legend{};
+    SDL_Rect messages{};
+    SDL_Rect inspector{};
+    SDL_Rect plots{};
+    SDL_Rect speeds{};
+    int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
+    int plotRowHeight = 0;  ///< pixels per plot
+};
+
+inline constexpr int kPanelMargin = 8;         ///< from the window's edges, pixels
+inline constexpr int kPanelGap = 6;            ///< between panels, pixels
+inline constexpr int kPanelMaxWidth = 330;     ///< plots and histogram, pixels
+inline constexpr int kPanelMinWidth = 220;     ///< plots and histogram, pixels
+inline constexpr int kPlotRowMaxHeight = 100;  ///< pixels
+inline constexpr int kPlotRowMinHeight = 64;   ///< pixels
+inline constexpr int kSpeedsMaxHeight = 210;   ///< pixels
+inline constexpr int kSpeedsMinHeight = 130;   ///< pixels
+
+/// Lays out the panels `r` asks for.
+[[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);
+
+/// Whether two rectangles share a pixel (an empty one never does).
+[[nodiscard]] bool overlaps(const SDL_Rect& a, const SDL_Rect& b);
+
+}  // namespace psb::app
