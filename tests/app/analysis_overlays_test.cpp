@@ -14,6 +14,7 @@
 #include "analysis_overlays.hpp"
 #include "assets.hpp"
 #include "camera.hpp"
+#include "offscreen_test.hpp"
 #include "renderer.hpp"
 #include "speed_histogram.hpp"
 #include "text.hpp"
@@ -231,25 +232,13 @@ TEST(SpeedHistogram, EmptyWorldHasNoCounts) {
 
 // --- drawing --------------------------------------------------------------------------------
 
-class OverlayRenderTest : public ::testing::Test {
+class OverlayRenderTest : public OffscreenTest {
   protected:
+    OverlayRenderTest() : OffscreenTest(kSize) {}
     void SetUp() override {
-        surface_ = SDL_CreateRGBSurfaceWithFormat(0, kSize, kSize, 32, SDL_PIXELFORMAT_ARGB8888);
-        ASSERT_NE(surface_, nullptr) << SDL_GetError();
-        sdl_ = SDL_CreateSoftwareRenderer(surface_);
-        ASSERT_NE(sdl_, nullptr) << SDL_GetError();
-        font_ = std::make_unique<Font>(sdl_, findAsset("fonts/DejaVuSansMono.ttf"), 12);
-        renderer_ = std::make_unique<Renderer>(sdl_, font_.get());
-        camera_.setViewport(kSize, kSize);
-        camera_.set(1.0, Vec2::Zero());
+        OffscreenTest::SetUp();
         view_.arrows = false;
         view_.arrowSeconds = 1.0 / 3.0;
-    }
-    void TearDown() override {
-        renderer_.reset();
-        font_.reset();
-        if (sdl_ != nullptr) SDL_DestroyRenderer(sdl_);
-        if (surface_ != nullptr) SDL_FreeSurface(surface_);
     }
 
     void draw(const World& w, const TimeSeries& series, Trails* trails = nullptr,
@@ -270,13 +259,6 @@ class OverlayRenderTest : public ::testing::Test {
         return layoutPanels(r);
     }
 
-    SDL_Color pixel(int x, int y) const {
-        const auto* row = static_cast<const Uint8*>(surface_->pixels) + y * surface_->pitch;
-        const Uint32 v = reinterpret_cast<const Uint32*>(row)[x];
-        SDL_Color c{};
-        SDL_GetRGBA(v, surface_->format, &c.r, &c.g, &c.b, &c.a);
-        return c;
-    }
     static bool near(SDL_Color a, SDL_Color b, int tol = 12) {
         return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol &&
                std::abs(a.b - b.b) <= tol;
@@ -301,12 +283,7 @@ class OverlayRenderTest : public ::testing::Test {
         return n;
     }
 
-    SDL_Surface* surface_ = nullptr;
-    SDL_Renderer* sdl_ = nullptr;
-    std::unique_ptr<Font> font_;
-    std::unique_ptr<Renderer> renderer_;
     AnalysisOverlays overlays_;
-    Camera camera_;
     ViewOptions view_;
 };
 

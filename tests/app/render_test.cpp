@@ -10,6 +10,7 @@
 #include "assets.hpp"
 #include "camera.hpp"
 #include "inspector_panel.hpp"
+#include "offscreen_test.hpp"
 #include "overlay.hpp"
 #include "renderer.hpp"
 #include "text.hpp"
@@ -19,37 +20,14 @@ namespace {
 
 constexpr int kSize = 400;
 
-class RenderTest : public ::testing::Test {
+class RenderTest : public OffscreenTest {
   protected:
-    void SetUp() override {
-        surface_ = SDL_CreateRGBSurfaceWithFormat(0, kSize, kSize, 32, SDL_PIXELFORMAT_ARGB8888);
-        ASSERT_NE(surface_, nullptr) << SDL_GetError();
-        sdl_ = SDL_CreateSoftwareRenderer(surface_);
-        ASSERT_NE(sdl_, nullptr) << SDL_GetError();
-        font_ = std::make_unique<Font>(sdl_, findAsset("fonts/DejaVuSansMono.ttf"), 12);
-        renderer_ = std::make_unique<Renderer>(sdl_, font_.get());
-        camera_.setViewport(kSize, kSize);
-        camera_.set(1.0, Vec2::Zero());
-    }
-    void TearDown() override {
-        renderer_.reset();
-        font_.reset();
-        if (sdl_ != nullptr) SDL_DestroyRenderer(sdl_);
-        if (surface_ != nullptr) SDL_FreeSurface(surface_);
-    }
+    RenderTest() : OffscreenTest(kSize) {}
 
     DrawStats draw(const World& w, ViewOptions o) {
         const DrawStats s = renderer_->draw(w, camera_, o);
         SDL_RenderPresent(sdl_);
         return s;
-    }
-
-    SDL_Color pixel(int x, int y) const {
-        const auto* row = static_cast<const Uint8*>(surface_->pixels) + y * surface_->pitch;
-        const Uint32 v = reinterpret_cast<const Uint32*>(row)[x];
-        SDL_Color c{};
-        SDL_GetRGBA(v, surface_->format, &c.r, &c.g, &c.b, &c.a);
-        return c;
     }
 
     /// Pixels in [x0,x1)×[y0,y1) whose channels are all at least `min`.
@@ -78,12 +56,6 @@ class RenderTest : public ::testing::Test {
         w.add(d);
         return w;
     }
-
-    SDL_Surface* surface_ = nullptr;
-    SDL_Renderer* sdl_ = nullptr;
-    std::unique_ptr<Font> font_;
-    std::unique_ptr<Renderer> renderer_;
-    Camera camera_;
 };
 
 bool isColor(SDL_Color c, Uint8 r, Uint8 g, Uint8 b, int tol = 8) {
