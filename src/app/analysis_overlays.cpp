@@ -3,10 +3,12 @@
 namespace psb::app {
 
 void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const World& world,
-                            const Camera& camera, const TimeSeries& series, const ViewOptions& view,
+                            const ObservablesSample& now, const Camera& camera,
+                            const TimeSeries& series, const ViewOptions& view,
                             const PanelLayout& layout) {
     if (view.momentum) {
-        momentum_.draw(renderer, font, world, camera, series, view.arrowSeconds, layout.legend);
+        momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds,
+                       layout.legend);
     }
     if (view.plots && layout.plots.w > 0) {
         double mass = 0.0;

@@ -23,9 +23,11 @@ class Font;
 class AnalysisOverlays {
   public:
     /// Draws what `view` switches on, the panels in `layout`'s boxes (a panel whose box is
-    /// empty is not drawn); `series` feeds the plots and the centre of mass path.
-    void draw(SDL_Renderer* renderer, const Font& font, const World& world, const Camera& camera,
-              const TimeSeries& series, const ViewOptions& view, const PanelLayout& layout);
+    /// empty is not drawn); `now` is the world's current sample, `series` feeds the plots and
+    /// the centre of mass path.
+    void draw(SDL_Renderer* renderer, const Font& font, const World& world,
+              const ObservablesSample& now, const Camera& camera, const TimeSeries& series,
+              const ViewOptions& view, const PanelLayout& layout);
 
   private:
     MomentumView momentum_;

@@ -732,9 +732,9 @@ void App::sampleAnalysis() {
     // The accuracy monitor clears the world's counters before each frame's steps, so they hold
     // this frame's collisions; the series wants a running total.
     collisions_ += world_.counters().collisions;
-    ObservablesSample sample = sampleObservables(world_);
-    sample.collisions = collisions_;
-    series_.record(sample);
+    now_ = sampleObservables(world_);
+    now_.collisions = collisions_;
+    series_.record(now_);
     if (view_.trails != TrailMode::Off) trails_.update(world_);
 }
 
@@ -750,8 +750,8 @@ void App::render() {
     hud.simTime = world_.time();
     hud.timeScale = timeScale_;
     hud.particles = world_.size();
-    hud.kineticEnergy = kineticEnergy(world_);
-    hud.momentum = momentum(world_);
+    hud.kineticEnergy = now_.kineticEnergy;
+    hud.momentum = now_.momentum;
     hud.spawnMass = spawn_.mass;
     hud.spawnRadius = spawn_.radius();
     hud.arrowSeconds = view_.arrows ? view_.arrowSeconds : 0.0;
@@ -796,13 +796,13 @@ void App::render() {
     req.hud = textBoxSize(*hudFont_, o.hud);
     if (showProfile_) req.profile = textBoxSize(*hudFont_, o.profile);
     if (view_.momentum)
-        req.legend = textBoxSize(*labelFont_, momentumLegend(world_, view_.arrowSeconds));
+        req.legend = textBoxSize(*labelFont_, momentumLegend(world_, now_, view_.arrowSeconds));
     req.messages = textBoxSize(*hudFont_, o.messages);
     req.inspector = textBoxSize(*hudFont_, o.inspector);
     req.plots = view_.plots;
     req.speeds = view_.speeds;
     const PanelLayout layout = layoutPanels(req);
-    analysis_.draw(sdlRenderer_, *labelFont_, world_, camera_, series_, view_, layout);
+    analysis_.draw(sdlRenderer_, *labelFont_, world_, now_, camera_, series_, view_, layout);
     // A launch in progress: a ghost disc at the press point and a line to the pointer.
     if (interaction_.mode() == Interaction::Mode::Launching) {
         const Vec2 a = camera_.worldToScreen(interaction_.pressPoint());

@@ -197,6 +197,9 @@ class App {
     static constexpr std::size_t kSeriesSamples = 4096;
     TimeSeries series_{kSeriesSamples};
     std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
+    /// The world's observables as update() left it, summed once a frame for the HUD, the
+    /// momentum view and series_.
+    ObservablesSample now_;
     Trails trails_;
     AnalysisOverlays analysis_;
 };

@@ -42,10 +42,11 @@ double meanMass(const ParticleArrays& p) {
 
 }  // namespace
 
-TotalMomentumArrow totalMomentumArrow(const World& world, double arrowSeconds) {
+TotalMomentumArrow totalMomentumArrow(const World& world, const ObservablesSample& now,
+                                      double arrowSeconds) {
     TotalMomentumArrow a;
-    a.from = centreOfMass(world);
-    const Vec2 total = momentum(world);
+    a.from = now.centreOfMass;
+    const Vec2 total = now.momentum;
     Vec2 d = arrowSeconds * total / meanMass(world.particles());
     const double cap = 0.4 * std::min(world.def().width, world.def().height);
     if (d.norm() > cap) {
@@ -56,17 +57,18 @@ TotalMomentumArrow totalMomentumArrow(const World& world, double arrowSeconds) {
     return a;
 }
 
-std::vector<std::string> momentumLegend(const World& world, double arrowSeconds) {
-    const Vec2 P = momentum(world);
+std::vector<std::string> momentumLegend(const World& world, const ObservablesSample& now,
+                                        double arrowSeconds) {
+    const Vec2 P = now.momentum;
     char buf[96];
     std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
-                  totalMomentumArrow(world, arrowSeconds).capped ? " (arrow capped)" : "");
+                  totalMomentumArrow(world, now, arrowSeconds).capped ? " (arrow capped)" : "");
     return {buf, "m v per particle", "centre of mass and its path"};
 }
 
 void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& world,
-                        const Camera& camera, const TimeSeries& series, double arrowSeconds,
-                        const SDL_Rect& legend) {
+                        const ObservablesSample& now, const Camera& camera,
+                        const TimeSeries& series, double arrowSeconds, const SDL_Rect& legend) {
     const ParticleArrays& p = world.particles();
     arrows_.clear();
     text_.clear();
@@ -87,7 +89,7 @@ void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& w
     path_.clear();
     for (std::size_t k = 0; k < series.size(); ++k)
         path_.push_back(pt(camera.worldToScreen(series[k].centreOfMass)));
-    const TotalMomentumArrow total = totalMomentumArrow(world, arrowSeconds);
+    const TotalMomentumArrow total = totalMomentumArrow(world, now, arrowSeconds);
     const Vec2 com = camera.worldToScreen(total.from);
     path_.push_back(pt(com));
 
@@ -114,7 +116,7 @@ void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& w
     box.quad(lx, ly, lx + static_cast<float>(legend.w), ly + static_cast<float>(legend.h),
              SDL_Color{0, 0, 0, 190});
     box.draw(renderer, nullptr);
-    const std::vector<std::string> lines = momentumLegend(world, arrowSeconds);
+    const std::vector<std::string> lines = momentumLegend(world, now, arrowSeconds);
     const SDL_Color colors[3] = {kTotalMomentumColor, kMomentumArrowColor, kCentreOfMassColor};
     for (std::size_t k = 0; k < lines.size(); ++k) {
         font.layout(lines[k], lx + 4, ly + 2 + static_cast<float>(k * font.lineHeight()), colors[k],

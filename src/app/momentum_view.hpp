@@ -35,19 +35,25 @@ struct TotalMomentumArrow {
     bool capped = false;       ///< shortened to 40 % of the box's smaller side
 };
 
-/// The total momentum arrow for `world` at `arrowSeconds` (see the file comment).
-[[nodiscard]] TotalMomentumArrow totalMomentumArrow(const World& world, double arrowSeconds);
+/// The total momentum arrow for `world` at `arrowSeconds` (see the file comment); `now` is the
+/// world's current sample (its momentum and centre of mass), so that they are summed once a frame.
+[[nodiscard]] TotalMomentumArrow totalMomentumArrow(const World& world,
+                                                    const ObservablesSample& now,
+                                                    double arrowSeconds);
 
 /// The legend's lines: the total momentum's value, then what the colours mean.
-[[nodiscard]] std::vector<std::string> momentumLegend(const World& world, double arrowSeconds);
+[[nodiscard]] std::vector<std::string> momentumLegend(const World& world,
+                                                      const ObservablesSample& now,
+                                                      double arrowSeconds);
 
 class MomentumView {
   public:
     /// Draws the per-particle arrows, the centre of mass path from `series` (its samples'
     /// centreOfMass, oldest first), the marker, the total arrow, and the legend in `legend`
     /// (pixels; not drawn when w == 0).
-    void draw(SDL_Renderer* renderer, const Font& font, const World& world, const Camera& camera,
-              const TimeSeries& series, double arrowSeconds, const SDL_Rect& legend);
+    void draw(SDL_Renderer* renderer, const Font& font, const World& world,
+              const ObservablesSample& now, const Camera& camera, const TimeSeries& series,
+              double arrowSeconds, const SDL_Rect& legend);
 
   private:
     GeometryBatch arrows_, text_;

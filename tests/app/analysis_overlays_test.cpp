@@ -244,7 +244,7 @@ class OverlayRenderTest : public OffscreenTest {
     void draw(const World& w, const TimeSeries& series, Trails* trails = nullptr,
               ParticleId selected = kNullParticle) {
         renderer_->draw(w, camera_, view_, trails, selected);
-        overlays_.draw(sdl_, *font_, w, camera_, series, view_, layout());
+        overlays_.draw(sdl_, *font_, w, sampleObservables(w), camera_, series, view_, layout());
         SDL_RenderPresent(sdl_);
     }
 

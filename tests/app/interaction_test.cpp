@@ -231,13 +231,18 @@ TEST(Interaction, ALaunchWithNoRoomIsRefusedWithAMessage) {
     EXPECT_EQ(w.size(), 1u);
 }
 
-TEST(Interaction, AClickOnAParticleSelectsItAndKeepsItsVelocity) {
-    World w = boxWorld();
+/// A 10 m particle at (100, 100) m moving at (30, -40) m/s.
+ParticleId addMoving(World& w) {
     ParticleDef d;
     d.position = {100, 100};
     d.velocity = {30, -40};
     d.radius = 10.0;
-    const ParticleId id = w.add(d);
+    return w.add(d);
+}
+
+TEST(Interaction, AClickOnAParticleSelectsItAndKeepsItsVelocity) {
+    World w = boxWorld();
+    const ParticleId id = addMoving(w);
     Interaction in;
     in.press(w, Vec2(104, 100), 0.0);
     in.moveTo(Vec2(104.5, 100), 0.05);  // 0.5 m: under the 1 m threshold
@@ -276,11 +281,7 @@ TEST(Interaction, APressThatMovedPastTheThresholdIsADragNotAClick) {
 
 TEST(Interaction, AStillPressLongerThanAClickReleasesTheParticleAtRest) {
     World w = boxWorld();
-    ParticleDef d;
-    d.position = {100, 100};
-    d.velocity = {30, -40};
-    d.radius = 10.0;
-    const ParticleId id = w.add(d);
+    const ParticleId id = addMoving(w);
     Interaction in;
     in.press(w, Vec2(100, 100), 0.0);
     const double t = Interaction::kClickSeconds + 0.01;

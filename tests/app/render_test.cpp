@@ -30,6 +30,20 @@ class RenderTest : public OffscreenTest {
         return s;
     }
 
+    /// Clears to black and draws the text panels of `o` where the app's layout puts them.
+    void drawPanels(const Overlays& o) {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        LayoutRequest req;
+        req.width = kSize;
+        req.height = kSize;
+        req.hud = textBoxSize(*font_, o.hud);
+        if (o.showProfile) req.profile = textBoxSize(*font_, o.profile);
+        req.inspector = textBoxSize(*font_, o.inspector);
+        drawOverlays(sdl_, *font_, o, layoutPanels(req));
+        SDL_RenderPresent(sdl_);
+    }
+
     /// Pixels in [x0,x1)×[y0,y1) whose channels are all at least `min`.
     int brightPixels(int x0, int y0, int x1, int y1, int min = 200) const {
         int n = 0;
@@ -192,17 +206,7 @@ TEST_F(RenderTest, TheProfileOverlayDrawsTextOnlyWhenOn) {
     o.hud = {"FPS 60"};
     o.profile = {"Profile, last step (ms)", "find pairs               1.500",
                  "total                    3.000"};
-    const auto drawOverlay = [&] {
-        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
-        SDL_RenderClear(sdl_);
-        LayoutRequest req;
-        req.width = kSize;
-        req.height = kSize;
-        req.hud = textBoxSize(*font_, o.hud);
-        if (o.showProfile) req.profile = textBoxSize(*font_, o.profile);
-        drawOverlays(sdl_, *font_, o, layoutPanels(req));
-        SDL_RenderPresent(sdl_);
-    };
+    const auto drawOverlay = [&] { drawPanels(o); };
     o.showProfile = false;
     drawOverlay();
     // The profile goes to the top-right corner; the short HUD line stays at the top-left.
@@ -234,17 +238,7 @@ TEST_F(RenderTest, TheSelectionOutlineRingsTheDiscOutsideItsRim) {
 TEST_F(RenderTest, TheInspectorPanelIsDrawnBottomRightOnlyWithASelection) {
     Overlays o;
     o.hud = {"FPS 60"};
-    const auto drawOverlay = [&] {
-        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
-        SDL_RenderClear(sdl_);
-        LayoutRequest req;
-        req.width = kSize;
-        req.height = kSize;
-        req.hud = textBoxSize(*font_, o.hud);
-        req.inspector = textBoxSize(*font_, o.inspector);
-        drawOverlays(sdl_, *font_, o, layoutPanels(req));
-        SDL_RenderPresent(sdl_);
-    };
+    const auto drawOverlay = [&] { drawPanels(o); };
     drawOverlay();
     EXPECT_EQ(brightPixels(kSize / 2, kSize / 2, kSize, kSize), 0);
     Particle p;
