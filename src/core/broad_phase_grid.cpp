@@ -78,12 +78,14 @@ void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, 
     const double* y = p.y.data();
     const double* r = p.radius.data();
     std::uint32_t* cellOf = cellOf_.data();
-    cellStart_.resize(cells + 1);
-    std::uint32_t* start = cellStart_.data();
-    std::uint32_t* entries = entries_.data();
-    const int parts = parallel::chunksFor(threads, n) > 1 ? threads : 1;
-    partTotals_.assign(static_cast<std::size_t>(parts) + 1, 0);
-    auto cellBegin = [&](int part) { return (cells + 1) * part / parts; };
+    const double largeAbove = large_.empty() ? INFINITY : largeAbove_;
+    parallel::forChunks(
+        threads, parallel::chunksFor(threads, n), n, [&](int, std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                cellOf[i] =
+                    r[i] > largeAbove ? kLarge : (cellY(y[i]) + 1) * stride + cellX(x[i]) + 1;
+            }
+        });
     // Counting sort: histogram, inclusive prefix sum, backward scatter. Scattering from the
     // last particle down with pre-decrement leaves cellStart[c] at the start of cell c and
     // each cell's indices ascending.
@@ -91,49 +93,21 @@ void GridBroadPhase::build(const ParticleArrays& p, const ParticleStats& stats, 
     // In parallel, each part owns a contiguous range of cells and does every pass for its
     // cells only: all parts read all of cellOf (4 bytes a particle, sequentially), but no cell
     // is touched by two threads, and each cell's slots come out exactly as in one pass, so
-    // `entries` does not depend on the thread count. With one part the histogram is counted in
-    // the pass that computes the cells, which saves a pass over memory (it matters at 10^6).
-    auto cellOfParticle = [&](std::size_t i) {
-        return (cellY(y[i]) + 1) * stride + cellX(x[i]) + 1;
-    };
-    if (parts == 1) {
-        std::fill(start, start + cells + 1, 0u);
-        if (large_.empty()) {
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::uint32_t c = cellOfParticle(i);
-                cellOf[i] = c;
-                ++start[c];
-            }
-        } else {
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::uint32_t c = r[i] > largeAbove_ ? kLarge : cellOfParticle(i);
-                cellOf[i] = c;
-                if (c != kLarge) ++start[c];
-            }
-        }
-    } else {
-        // Radii are read only when some particles are large: in a gas they never are.
-        const bool anyLarge = !large_.empty();
-        parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
-                            [&](int, std::size_t begin, std::size_t end) {
-                                for (std::size_t i = begin; i < end; ++i) {
-                                    cellOf[i] =
-                                        anyLarge && r[i] > largeAbove_ ? kLarge : cellOfParticle(i);
-                                }
-                            });
-        parallel::forEachIndex(threads, parts, [&](std::size_t part) {
-            const std::size_t lo = cellBegin(static_cast<int>(part));
-            const std::size_t hi = cellBegin(static_cast<int>(part) + 1);
-            std::fill(start + lo, start + hi, 0u);
-            for (std::size_t i = 0; i < n; ++i) {
-                const std::size_t c = cellOf[i];  // kLarge is beyond every range
-                if (c - lo < hi - lo) ++start[c];
-            }
-        });
-    }
+    // `entries` does not depend on the thread count.
+    cellStart_.resize(cells + 1);
+    std::uint32_t* start = cellStart_.data();
+    std::uint32_t* entries = entries_.data();
+    const int parts = parallel::chunksFor(threads, n) > 1 ? threads : 1;
+    partTotals_.assign(static_cast<std::size_t>(parts) + 1, 0);
+    auto cellBegin = [&](int part) { return (cells + 1) * part / parts; };
     parallel::forEachIndex(threads, parts, [&](std::size_t part) {
         const std::size_t lo = cellBegin(static_cast<int>(part));
         const std::size_t hi = cellBegin(static_cast<int>(part) + 1);
+        std::fill(start + lo, start + hi, 0u);
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t c = cellOf[i];  // kLarge is beyond every range
+            if (c - lo < hi - lo) ++start[c];
+        }
         std::uint32_t sum = 0;
         for (std::size_t c = lo; c < hi; ++c) {
             sum += start[c];

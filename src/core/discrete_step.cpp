@@ -25,20 +25,13 @@ void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads
                         });
 }
 
-void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>* bounds,
-          const WorldDef* wallsOf, StepContext* ctx) {
+void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>* bounds) {
     const std::size_t n = p.size();
     double* x = p.x.data();
     double* y = p.y.data();
     const double* vx = p.vx.data();
     const double* vy = p.vy.data();
     if (bounds) bounds->resize(parallel::blockCount(n));
-    std::uint8_t* runs = nullptr;
-    if (wallsOf && ctx) {
-        ctx->wallRuns.resize((n + kWallRun - 1) / kWallRun);
-        runs = ctx->wallRuns.data();
-        ctx->wallRunsFresh = true;
-    }
     parallel::forBlocks(threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
         for (std::size_t i = begin; i < end; ++i) {
             x[i] += vx[i] * dt;
@@ -46,7 +39,6 @@ void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>*
         }
         // Measured while the block is still in cache: one pass over memory, not two.
         if (bounds) measureBlock(p, begin, end, (*bounds)[b]);
-        if (runs) flagRunsOutside(p, *wallsOf, begin, end, runs);
     });
 }
 
@@ -86,7 +78,7 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     }
     {
         StageTimer t(profile.move);
-        move(p, dt, ctx.threads, &ctx.statsScratch, def.walls ? &def : nullptr, &ctx);
+        move(p, dt, ctx.threads, &ctx.statsScratch);
         ctx.statsFresh = p.size() > 0;
     }
     {

@@ -10,11 +10,6 @@
 //   (* skipped when the world has no gravity / no walls; friction math is compiled out of
 //    resolve and walls when the friction coefficient is zero.)
 //
-// Wall runs. move() also flags each run of 16 particles that ended outside the box, so the wall
-// stage visits only those runs and the runs of particles the separate stage pushed, instead of
-// reading every particle again (tests/core/discrete_step_test.cpp checks the result is the
-// same to the bit as a full pass).
-//
 // Why walls come last. The original bounced off walls before resolving pairs, so the overlap
 // push could leave a particle outside the box. Running the wall stage after every stage that
 // moves particles guarantees that no particle ends a step outside the box. The price is that
@@ -33,7 +28,6 @@
 #include <particle_sandbox/step_profile.hpp>
 #include <particle_sandbox/world_def.hpp>
 
-#include "parallel.hpp"
 #include "step_context.hpp"
 
 namespace psb::stages {
@@ -44,12 +38,9 @@ namespace psb::stages {
 
 void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads = 1);
 /// Moves every particle by v·dt. With `bounds`, also measures the moved particles per block
-/// (for combineBlocks), saving the broadphase a pass over memory. With `wallsOf`, also flags
-/// the runs of particles that ended outside that world's box (ctx.wallRuns), saving the wall
-/// stage its pass over memory.
+/// (for combineBlocks), saving the broadphase a pass over memory.
 void move(ParticleArrays& p, double dt, int threads = 1,
-          std::vector<ParticleStats>* bounds = nullptr, const WorldDef* wallsOf = nullptr,
-          StepContext* ctx = nullptr);
+          std::vector<ParticleStats>* bounds = nullptr);
 /// Fills ctx.pairs with the overlapping pairs in ascending (i, j) order, using the broadphase
 /// ctx.broadPhase asks for (Auto resolved by broad_phase_auto.hpp); records the one used in
 /// ctx.broadPhaseUsed. Uses the bounds move() measured when ctx.statsFresh says they are of
@@ -63,19 +54,8 @@ void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
 /// mass so that momentum-weighted position (the centre of mass) does not move. Positions only:
 /// velocities, and so kinetic energy, are untouched.
 void separate(ParticleArrays& p, const StepContext& ctx);
-/// Particles per run of the wall test: a run is checked as a whole, branch-free, and visited
-/// particle by particle only when one of its particles may be outside. Divides parallel::kBlock.
-inline constexpr std::size_t kWallRun = 16;
-static_assert(parallel::kBlock % kWallRun == 0, "a block is a whole number of runs");
-/// Sets runs[k] to 1 if a particle of run k (particles [16k, 16k + 16)) within [begin, end) is
-/// outside def's box, else 0. `begin` is a multiple of kWallRun.
-void flagRunsOutside(const ParticleArrays& p, const WorldDef& def, std::size_t begin,
-                     std::size_t end, std::uint8_t* runs);
 /// Clamps every particle into the box and makes outward velocity components inward (scaled by
-/// e). A particle already moving inward keeps its velocity. When ctx.wallRunsFresh (move()
-/// flagged the runs after moving), only the flagged runs and the runs of the particles in
-/// ctx.pairs are visited; the result is the same as visiting every run, because no other stage
-/// moves a particle between the two.
+/// e). A particle already moving inward keeps its velocity.
 void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters);
 
 /// Runs the stages above in order for one step of `dt` seconds, timing each into `profile`

@@ -22,10 +22,6 @@ struct StepContext {
     QuadtreeBroadPhase quadtree;
     std::vector<ParticleStats> statsScratch;  ///< per-block bounds
     bool statsFresh = false;  ///< statsScratch describes the current positions (set by move)
-    /// One flag per run of kWallRun particles: some particle of the run was outside the box
-    /// after move (see walls()). Valid while wallRunsFresh.
-    std::vector<std::uint8_t> wallRuns;
-    bool wallRunsFresh = false;
     std::vector<double> wallImpulseScratch;
     std::vector<std::uint64_t> wallHitScratch;
 };

@@ -1,5 +1,5 @@
 // The discrete step's pipeline against the same stages run one by one in their plainest form:
-// the shortcuts the pipeline takes (bounds measured during move, wall runs flagged during move)
+// the shortcut the pipeline takes (particle bounds measured during move, for the broadphase)
 // must not change a single bit of the result.
 
 #include <gtest/gtest.h>
@@ -61,11 +61,11 @@ TEST(DiscreteStep, PipelineMatchesTheStagesRunOneByOneBitForBit) {
             stages::discreteStep(fast, def, 0.01, fastCtx, profile, fastCounters);
 
             stages::applyGravity(plain, def.gravity, 0.01, threads);
-            stages::move(plain, 0.01, threads);  // no bounds, no wall flags
+            stages::move(plain, 0.01, threads);  // no bounds: the broadphase measures
             stages::findPairs(plain, plainCtx);
             stages::resolve(plain, def, plainCtx, plainCounters);
             stages::separate(plain, plainCtx);
-            stages::walls(plain, def, plainCtx, plainCounters);  // every run tested
+            stages::walls(plain, def, plainCtx, plainCounters);
 
             ASSERT_TRUE(sameBits(fast.x, plain.x)) << "step " << s << ", threads " << threads;
             ASSERT_TRUE(sameBits(fast.y, plain.y)) << "step " << s;
