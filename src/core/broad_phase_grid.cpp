@@ -199,12 +199,87 @@ void GridBroadPhase::findLargePairs(const ParticleArrays& p) {
     }
 }
 
-void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
-                               std::vector<ContactPair>& out) {
-    const std::size_t n = p.size();
-    const std::size_t small = n - large_.size();
-    const int chunks = parallel::chunksFor(threads, small);
-    chunks_.prepare(chunks);
+namespace {
+
+/// A slot's centre and radius, wherever the query reads them from.
+struct SlotDisc {
+    double x, y, r;
+};
+
+/// Tests slot `a` (in cell `cell`, disc `di`) against the later slots of its half stencil:
+/// the rest of its cell and the east cell (one contiguous run of slots), then the three cells
+/// of the row below (another run). The other four neighbours find it from their side; the
+/// border ring of empty cells spares bounds checks. `at(k)` gives slot k's disc. Writes the
+/// overlapping slot pairs (a, k) after the `found` already in the buffer `room(most)` returns,
+/// and returns the new count.
+template <bool kEqualRadii, std::uint32_t kWindowOwn, std::uint32_t kWindowBelow, typename At,
+          typename Room>
+inline std::size_t testStencil(std::uint32_t a, std::uint32_t cell, SlotDisc di,
+                               const std::uint32_t* start, std::uint32_t stride, double contact,
+                               At at, Room room, std::size_t found) {
+    const std::uint32_t k0 = a + 1, k1 = start[cell + 2];
+    const std::uint32_t k2 = start[cell + stride - 1], k3 = start[cell + stride + 2];
+    ContactPair* buf = room(found + kWindowOwn + kWindowBelow + (k1 - k0) + (k3 - k2));
+    // discsOverlap's arithmetic; it is symmetric in i and j to the last bit
+    // (x[i] - x[j] is exactly -(x[j] - x[i])), so which of the two comes first does not
+    // matter. Branch-free: most candidates miss, and a slot outside its run is masked out.
+    auto test = [&](std::uint32_t k, bool inRun) {
+        const SlotDisc dj = at(k);
+        const double dx = dj.x - di.x;
+        const double dy = dj.y - di.y;
+        const double rs = kEqualRadii ? contact : di.r + dj.r;
+        buf[found] = {a, k};
+        found += static_cast<std::size_t>(inRun & (dx * dx + dy * dy < rs * rs));
+    };
+    for (std::uint32_t t = 0; t < kWindowOwn; ++t)
+        test(k0 + t, k0 + t < k1);
+    for (std::uint32_t t = 0; t < kWindowBelow; ++t)
+        test(k2 + t, k2 + t < k3);
+    for (std::uint32_t k = k0 + kWindowOwn; k < k1; ++k)
+        test(k, true);
+    for (std::uint32_t k = k2 + kWindowBelow; k < k3; ++k)
+        test(k, true);
+    return found;
+}
+
+}  // namespace
+
+void GridBroadPhase::Band::gather(const ParticleArrays& p, const std::uint32_t* entries,
+                                  const std::uint32_t* cellOf, std::size_t a, std::size_t b,
+                                  std::size_t reach, bool radii) {
+    const double* px = p.x.data();
+    const double* py = p.y.data();
+    const double* pr = p.radius.data();
+    double* bx = x.data();
+    double* by = y.data();
+    double* br = r.data();
+    std::uint32_t* bc = cell.data();
+    for (std::size_t s = a; s < b; ++s) {
+        const std::uint32_t i = entries[s];
+        bx[s - a] = px[i];
+        by[s - a] = py[i];
+        bc[s - a] = cellOf[i];
+    }
+    for (std::size_t s = b; s < reach; ++s) {
+        const std::uint32_t i = entries[s];
+        bx[s - a] = px[i];
+        by[s - a] = py[i];
+    }
+
+    if (radii) {
+        for (std::size_t s = a; s < reach; ++s)
+            br[s - a] = pr[entries[s]];
+    }
+    // Slots a window may read past the reach (always masked out).
+    for (std::size_t k = reach - a; k < reach - a + kPadding; ++k) {
+        bx[k] = by[k] = 0.0;
+        if (radii) br[k] = 0.0;
+    }
+}
+
+template <bool kEqualRadii>
+void GridBroadPhase::queryChunk(const ParticleArrays& p, int c, std::size_t begin, std::size_t end,
+                                std::size_t bandSlots) {
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
@@ -212,52 +287,80 @@ void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
     const std::uint32_t* start = cellStart_.data();
     const std::uint32_t* entries = entries_.data();
     const std::uint32_t stride = map_.nx + 2;
-    // Chunks are ranges of slots (cell order), not of particle indices.
     // kEqualRadii: every particle has the same radius (common: gases, most presets), so the
-    // contact distance is one constant and the query reads no radius at all. Same arithmetic:
-    // r + r is exactly the constant.
+    // contact distance is one constant and no radius is read. Same arithmetic: r + r is
+    // exactly the constant.
     const double contact = equalRadius_ + equalRadius_;
-    auto query = [&]<bool kEqualRadii>(int c, std::size_t begin, std::size_t end) {
-        std::size_t found = 0;
-        for (std::size_t a = begin; a < end; ++a) {
-            const std::uint32_t i = entries[a];
-            const std::uint32_t cell = cellOf[i];
-            const double xi = x[i], yi = y[i], ri = r[i];
-            // Half stencil: the rest of this cell and the east cell (one contiguous run), then
-            // the three cells of the row below (another). The other four neighbours find this
-            // particle from their side. The border ring of empty cells spares bounds checks.
-            const std::uint32_t k0 = static_cast<std::uint32_t>(a + 1), k1 = start[cell + 2];
-            const std::uint32_t k2 = start[cell + stride - 1], k3 = start[cell + stride + 2];
-            ContactPair* buf =
-                chunks_.room(c, found + kWindowOwn + kWindowBelow + (k1 - k0) + (k3 - k2));
-            // discsOverlap's arithmetic; it is symmetric in i and j to the last bit
-            // (x[i] - x[j] is exactly -(x[j] - x[i])), so which of the two comes first does
-            // not matter. Branch-free: most candidates miss.
-            auto test = [&](std::uint32_t k, bool inRun) {
-                const std::uint32_t j = entries[k];
-                const double dx = x[j] - xi;
-                const double dy = y[j] - yi;
-                const double rs = kEqualRadii ? contact : ri + r[j];
-                buf[found] = {std::min(i, j), std::max(i, j)};
-                found += static_cast<std::size_t>(inRun & (dx * dx + dy * dy < rs * rs));
-            };
-            for (std::uint32_t t = 0; t < kWindowOwn; ++t)
-                test(k0 + t, k0 + t < k1);
-            for (std::uint32_t t = 0; t < kWindowBelow; ++t)
-                test(k2 + t, k2 + t < k3);
-            for (std::uint32_t k = k0 + kWindowOwn; k < k1; ++k)
-                test(k, true);
-            for (std::uint32_t k = k2 + kWindowBelow; k < k3; ++k)
-                test(k, true);
-        }
-        chunks_.setFound(c, found);
+    // The slots any stencil of slots [a, b) reaches end here (cells ascend with the slots).
+    auto reachOf = [&](std::size_t b) {
+        return std::size_t{start[cellOf[entries[b - 1]] + stride + 2]};
     };
+    auto room = [&](std::size_t most) { return chunks_.room(c, most); };
+    Band& band = bands_[static_cast<std::size_t>(c)];
+    const std::size_t capacity = 2 * bandSlots;
+    band.makeRoom(capacity + kPadding, !kEqualRadii);
+    std::size_t found = 0;
+    for (std::size_t a = begin; a < end;) {
+        const std::size_t b = std::min(end, a + bandSlots);
+        const std::size_t reach = reachOf(b);
+        if (reach - a > capacity) {
+            // Rows far longer than a band (a thin strip of particles): query these slots where
+            // the particles are.
+            for (std::size_t s = a; s < b; ++s) {
+                const std::uint32_t i = entries[s];
+                found = testStencil<kEqualRadii, kWindowOwn, kWindowBelow>(
+                    static_cast<std::uint32_t>(s), cellOf[i], {x[i], y[i], r[i]}, start, stride,
+                    contact,
+                    [&](std::uint32_t k) {
+                        const std::uint32_t j = entries[k];
+                        return SlotDisc{x[j], y[j], kEqualRadii ? 0.0 : r[j]};
+                    },
+                    room, found);
+            }
+            a = b;
+            continue;
+        }
+        band.gather(p, entries, cellOf, a, b, reach, !kEqualRadii);
+        const double* bx = band.x.data();
+        const double* by = band.y.data();
+        const double* br = band.r.data();
+        const std::uint32_t* bc = band.cell.data();
+        const std::uint32_t first = static_cast<std::uint32_t>(a);
+        auto at = [&](std::uint32_t k) {
+            return SlotDisc{bx[k - first], by[k - first], kEqualRadii ? 0.0 : br[k - first]};
+        };
+        for (std::size_t s = a; s < b; ++s) {
+            const std::uint32_t slot = static_cast<std::uint32_t>(s);
+            found = testStencil<kEqualRadii, kWindowOwn, kWindowBelow>(
+                slot, bc[s - a], at(slot), start, stride, contact, at, room, found);
+        }
+        a = b;
+    }
+    // Slot pairs to particle pairs, lower index first.
+    ContactPair* buf = chunks_.room(c, found);
+    for (std::size_t f = 0; f < found; ++f) {
+        const std::uint32_t i = entries[buf[f].i], j = entries[buf[f].j];
+        buf[f] = {std::min(i, j), std::max(i, j)};
+    }
+    chunks_.setFound(c, found);
+}
+
+void GridBroadPhase::findPairs(const ParticleArrays& p, int threads,
+                               std::vector<ContactPair>& out) {
+    const std::size_t n = p.size();
+    const std::size_t small = n - large_.size();
+    // Chunks are ranges of slots (cell order), not of particle indices.
+    const int chunks = parallel::chunksFor(threads, small);
+    chunks_.prepare(chunks);
+    if (bands_.size() < static_cast<std::size_t>(chunks)) bands_.resize(chunks);
+    const std::size_t bandSlots = std::clamp<std::size_t>(
+        small / (kBandsPerChunk * static_cast<std::size_t>(chunks)), kMinBand, kMaxBand);
     const bool equalRadii = equalRadius_ > 0.0;
     parallel::forChunks(threads, chunks, small, [&](int c, std::size_t begin, std::size_t end) {
         if (equalRadii) {
-            query.template operator()<true>(c, begin, end);
+            queryChunk<true>(p, c, begin, end, bandSlots);
         } else {
-            query.template operator()<false>(c, begin, end);
+            queryChunk<false>(p, c, begin, end, bandSlots);
         }
     });
     const std::size_t before = out.size();
@@ -277,6 +380,8 @@ std::size_t GridBroadPhase::memoryBytes() const {
     std::size_t bytes = sizeof(std::uint32_t) * (cellOf_.capacity() + cellStart_.capacity() +
                                                  entries_.capacity() + large_.capacity());
     bytes += sizeof(ContactPair) * (largePairs_.capacity() + sortScratch_.capacity());
+    for (const Band& band : bands_)
+        bytes += band.memoryBytes();
     return bytes + chunks_.memoryBytes();
 }
 

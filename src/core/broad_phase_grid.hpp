@@ -43,10 +43,19 @@
 // particle) a run holds about one particle, so loops over runs of varying length would
 // mispredict their exit about twice per particle; instead the first kWindowOwn and kWindowBelow
 // slots of the two runs are tested unconditionally, each result masked by whether the slot is
-// in its run (the slots past the end of `entries` are padding), and only the rare longer run
-// loops over the rest. With no branch to mispredict, the loads of successive particles overlap,
-// which is what keeps the query fast once the arrays no longer fit in the caches. When all
-// radii are equal the contact distance is a constant and no radius is read.
+// in its run, and only the rare longer run loops over the rest. When all radii are equal the
+// contact distance is a constant and no radius is read.
+//
+// Bands. Reading a candidate's position through `entries` is a chain of dependent loads
+// (slot, particle index, position), and once the arrays outgrow the caches every link can
+// miss. So each query chunk walks its slots in bands of up to kMaxBand slots: a simple loop
+// first copies the positions of the band and of every slot its stencils reach (about one row
+// more) into a small buffer in slot order, with the band's cells, and the stencil tests then
+// read only that buffer, sequentially. The copy is one pass of independent loads that the
+// processor overlaps freely. Tests record slot pairs, turned into particle pairs at the end of
+// the chunk (pairs are few). A band whose stencils reach more than twice its length (rows far
+// longer than a band, as in a thin strip of particles) is tested in place instead, so the
+// buffer stays small: at most 2·kMaxBand slots, 20 bytes a slot (28 with radii), per chunk.
 //
 // Output order. Pairs are found in cell order and then sorted into ascending (i, j) order, the
 // order all-pairs gives, by an LSD radix sort over the pair list (cost proportional to the
@@ -141,7 +150,36 @@ class GridBroadPhase {
     /// A kept plan's cells may be at most this much larger than a fresh plan's.
     static constexpr double kCoarserPlan = 1.125;
 
+    /// A chunk's copy of one band of slots for the query: centres (and radii, when they differ)
+    /// in slot order for the band and every slot its stencils reach, cells for the band.
+    struct Band {
+        std::vector<double> x, y, r;
+        std::vector<std::uint32_t> cell;
+        /// Room for `slots` slots; grows, then stays.
+        void makeRoom(std::size_t slots, bool radii) {
+            if (x.size() < slots) {
+                x.resize(slots);
+                y.resize(slots);
+                cell.resize(slots);
+            }
+            if (radii && r.size() < slots) r.resize(slots);
+        }
+        /// Copies slots [a, reach) (cells of [a, b)), then kPadding zero slots.
+        void gather(const ParticleArrays& p, const std::uint32_t* entries,
+                    const std::uint32_t* cellOf, std::size_t a, std::size_t b, std::size_t reach,
+                    bool radii);
+        [[nodiscard]] std::size_t memoryBytes() const {
+            return sizeof(double) * (x.capacity() + y.capacity() + r.capacity()) +
+                   sizeof(std::uint32_t) * cell.capacity();
+        }
+    };
+    /// Bands per chunk when the chunk is short, and the shortest and longest band, in slots.
+    static constexpr std::size_t kBandsPerChunk = 16, kMinBand = 16, kMaxBand = 4096;
+
     void plan(const ParticleArrays& p, const ParticleStats& stats);
+    template <bool kEqualRadii>
+    void queryChunk(const ParticleArrays& p, int c, std::size_t begin, std::size_t end,
+                    std::size_t bandSlots);
     [[nodiscard]] bool planStillFits(const ParticleStats& stats, std::size_t n) const;
     void findLargePairs(const ParticleArrays& p);
 
@@ -154,12 +192,13 @@ class GridBroadPhase {
     double equalRadius_ = 0.0;  ///< the radius of every particle when all are equal, else 0
     std::vector<std::uint32_t> cellOf_;
     std::vector<std::uint32_t> cellStart_;
-    std::vector<std::uint32_t> entries_;  ///< plus padding for the query's fixed windows
+    std::vector<std::uint32_t> entries_;  ///< plus kPadding slots for the query's fixed windows
     std::vector<std::uint32_t> large_;
     std::vector<std::uint32_t> partTotals_;  ///< particles in the cell ranges before each part
     std::vector<ContactPair> largePairs_;
     std::vector<ContactPair> sortScratch_;
     PairChunks chunks_;
+    std::vector<Band> bands_;  ///< one per query chunk
 };
 
 }  // namespace psb

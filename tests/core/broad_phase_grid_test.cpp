@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include "broad_phase_all_pairs.hpp"
 #include "broad_phase_grid.hpp"
 #include "broad_phase_scenes.hpp"
@@ -117,6 +119,24 @@ TEST(Grid, PlansAfreshWhenParticlesSpreadOutOrRadiiGrow) {
     pairs.clear();
     grid.findPairs(p, 1, pairs);
     EXPECT_EQ(pairs, allPairs(p));
+}
+
+// Rows of a thousand particles, far longer than the query's bands: those slots are tested
+// where the particles are, and every pair is still found.
+TEST(Grid, AThinStripWithRowsLongerThanABandStillFindsEveryPair) {
+    ParticleArrays p;
+    std::mt19937_64 rng(14);
+    std::uniform_real_distribution<double> ux(0.0, 1500.0), uy(0.0, 3.0);
+    for (int k = 0; k < 3000; ++k)
+        test::push(p, ux(rng), uy(rng), 0.5);
+    GridBroadPhase grid;
+    grid.build(p, statsOf(p), 1);
+    // Cells under 1.5 m in a 3 m strip: at most three rows, so about a thousand slots a row.
+    ASSERT_LT(grid.cellSize(), 1.5);
+    std::vector<ContactPair> pairs;
+    grid.findPairs(p, 1, pairs);
+    EXPECT_EQ(pairs, allPairs(p));
+    EXPECT_GT(pairs.size(), 500u);
 }
 
 TEST(Grid, OffersNoCellsToMoveWhenItsPlanSetLargeParticlesApart) {
