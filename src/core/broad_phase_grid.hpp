@@ -174,7 +174,7 @@ class GridBroadPhase {
         }
     };
     /// Bands per chunk when the chunk is short, and the shortest and longest band, in slots.
-    static constexpr std::size_t kBandsPerChunk = 16, kMinBand = 16, kMaxBand = 4096;
+    static constexpr std::size_t kBandsPerChunk = 32, kMinBand = 16, kMaxBand = 4096;
 
     void plan(const ParticleArrays& p, const ParticleStats& stats);
     template <bool kEqualRadii>
