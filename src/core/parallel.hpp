@@ -93,15 +93,12 @@ void forChunks(int threads, int chunks, std::size_t n, F&& f) {
 
 /// Calls f(block, begin, end) for each block of kBlock items of [0, n), spread over up to
 /// `threads` threads. The block boundaries do not depend on `threads`; the blocks are handed out
-/// in contiguous groups, a few per thread (as forChunks), so that small n still balances and
-/// large n does not pay a task per block.
+/// in contiguous groups, as many as chunksFor gives chunks, so that small n runs inline, 10^4
+/// items still balance and large n does not pay a task per block.
 template <typename F>
 void forBlocks(int threads, std::size_t n, F&& f) {
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    const std::size_t groups =
-        threads <= 1
-            ? 1
-            : std::min<std::size_t>(blocks, static_cast<std::size_t>(threads) * kChunksPerThread);
+    const std::size_t groups = std::min(blocks, static_cast<std::size_t>(chunksFor(threads, n)));
     forEachIndex(threads, groups, [&](std::size_t g) {
         for (std::size_t b = blocks * g / groups; b < blocks * (g + 1) / groups; ++b)
             f(b, b * kBlock, std::min(n, (b + 1) * kBlock));
