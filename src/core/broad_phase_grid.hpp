@@ -46,16 +46,21 @@
 // in its run, and only the rare longer run loops over the rest. When all radii are equal the
 // contact distance is a constant and no radius is read.
 //
+// Slot pairs. A test records the pair of slots (a, k), not of particle indices, so the value
+// it stores is ready at once instead of waiting for the candidate's index to load; slot pairs
+// become particle pairs at the end of the chunk (pairs are few). Worth 1.5 to 2 ns a
+// particle-step in the gas benchmark.
+//
 // Bands. Reading a candidate's position through `entries` is a chain of dependent loads
-// (slot, particle index, position), and once the arrays outgrow the caches every link can
-// miss. So each query chunk walks its slots in bands of up to kMaxBand slots: a simple loop
-// first copies the positions of the band and of every slot its stencils reach (about one row
-// more) into a small buffer in slot order, with the band's cells, and the stencil tests then
-// read only that buffer, sequentially. The copy is one pass of independent loads that the
-// processor overlaps freely. Tests record slot pairs, turned into particle pairs at the end of
-// the chunk (pairs are few). A band whose stencils reach more than twice its length (rows far
-// longer than a band, as in a thin strip of particles) is tested in place instead, so the
-// buffer stays small: at most 2·kMaxBand slots, 20 bytes a slot (28 with radii), per chunk.
+// (slot, particle index, position), and once the arrays outgrow the caches a link can miss. So
+// each query chunk walks its slots in bands of up to kMaxBand slots: a simple loop first copies
+// the positions of the band and of every slot its stencils reach (about one row more) into a
+// small buffer in slot order, with the band's cells, and the stencil tests then read only that
+// buffer. The copy is one pass of independent loads that the processor overlaps freely. At 10^6
+// particles this saves about 1 ns a particle-step; in cache it neither gains nor loses. A band
+// whose stencils reach more than twice its length (rows far longer than a band, as in a thin
+// strip of particles) is tested in place instead, so the buffer stays small: at most
+// 2·kMaxBand slots, 20 bytes a slot (28 with radii), per chunk.
 //
 // Output order. Pairs are found in cell order and then sorted into ascending (i, j) order, the
 // order all-pairs gives, by an LSD radix sort over the pair list (cost proportional to the
