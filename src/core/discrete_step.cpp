@@ -1,5 +1,7 @@
 #include "discrete_step.hpp"
 
+#include <optional>
+
 #include "broad_phase_all_pairs.hpp"
 #include "broad_phase_auto.hpp"
 #include "parallel.hpp"
@@ -25,7 +27,8 @@ void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads
                         });
 }
 
-void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>* bounds) {
+void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>* bounds,
+          const GridBroadPhase::MoveCells* cells) {
     const std::size_t n = p.size();
     double* x = p.x.data();
     double* y = p.y.data();
@@ -33,9 +36,20 @@ void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>*
     const double* vy = p.vy.data();
     if (bounds) bounds->resize(parallel::blockCount(n));
     parallel::forBlocks(threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        for (std::size_t i = begin; i < end; ++i) {
-            x[i] += vx[i] * dt;
-            y[i] += vy[i] * dt;
+        if (cells) {
+            // The cell of each particle as it moves, under the grid's last plan.
+            const GridBroadPhase::CellMap map = cells->map;
+            std::uint32_t* cellOf = cells->cellOf;
+            for (std::size_t i = begin; i < end; ++i) {
+                x[i] += vx[i] * dt;
+                y[i] += vy[i] * dt;
+                cellOf[i] = map.cellOf(x[i], y[i]);
+            }
+        } else {
+            for (std::size_t i = begin; i < end; ++i) {
+                x[i] += vx[i] * dt;
+                y[i] += vy[i] * dt;
+            }
         }
         // Measured while the block is still in cache: one pass over memory, not two.
         if (bounds) measureBlock(p, begin, end, (*bounds)[b]);
@@ -44,8 +58,8 @@ void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>*
 
 void findPairs(const ParticleArrays& p, StepContext& ctx) {
     ctx.pairs.clear();
-    const bool statsFresh = ctx.statsFresh;
-    ctx.statsFresh = false;
+    const bool statsFresh = ctx.statsFresh, cellsFresh = ctx.cellsFresh;
+    ctx.statsFresh = ctx.cellsFresh = false;
     if (p.size() < 2) {
         ctx.broadPhaseUsed = chooseBroadPhase(ctx.broadPhase, p, ParticleStats{});
         return;
@@ -55,7 +69,7 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     ctx.broadPhaseUsed = chooseBroadPhase(ctx.broadPhase, p, stats);
     switch (ctx.broadPhaseUsed) {
         case BroadPhaseKind::Grid:
-            ctx.grid.build(p, stats, ctx.threads);
+            ctx.grid.build(p, stats, ctx.threads, cellsFresh);
             ctx.grid.findPairs(p, ctx.threads, ctx.pairs);
             break;
         case BroadPhaseKind::Quadtree:
@@ -78,8 +92,14 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     }
     {
         StageTimer t(profile.move);
-        move(p, dt, ctx.threads, &ctx.statsScratch);
+        // While the grid is in use, move also writes each particle's cell under the grid's last
+        // plan, which findPairs keeps while it fits (broad_phase_grid.hpp, plan reuse).
+        const auto cells = ctx.broadPhaseUsed == BroadPhaseKind::Grid
+                               ? ctx.grid.cellsForMove(p.size())
+                               : std::nullopt;
+        move(p, dt, ctx.threads, &ctx.statsScratch, cells ? &*cells : nullptr);
         ctx.statsFresh = p.size() > 0;
+        ctx.cellsFresh = cells.has_value();
     }
     {
         StageTimer t(profile.findPairs);

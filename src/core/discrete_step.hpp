@@ -38,13 +38,15 @@ namespace psb::stages {
 
 void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads = 1);
 /// Moves every particle by v·dt. With `bounds`, also measures the moved particles per block
-/// (for combineBlocks), saving the broadphase a pass over memory.
+/// (for combineBlocks), and with `cells`, writes each particle's grid cell: both while the
+/// particle is in cache, saving the broadphase passes over memory.
 void move(ParticleArrays& p, double dt, int threads = 1,
-          std::vector<ParticleStats>* bounds = nullptr);
+          std::vector<ParticleStats>* bounds = nullptr,
+          const GridBroadPhase::MoveCells* cells = nullptr);
 /// Fills ctx.pairs with the overlapping pairs in ascending (i, j) order, using the broadphase
 /// ctx.broadPhase asks for (Auto resolved by broad_phase_auto.hpp); records the one used in
-/// ctx.broadPhaseUsed. Uses the bounds move() measured when ctx.statsFresh says they are of
-/// these positions.
+/// ctx.broadPhaseUsed. Uses the bounds and grid cells move() wrote when ctx.statsFresh and
+/// ctx.cellsFresh say they are of these positions.
 void findPairs(const ParticleArrays& p, StepContext& ctx);
 /// Velocity impulses for every approaching pair in ctx.pairs; updates collision counters and
 /// the deepest overlap seen.

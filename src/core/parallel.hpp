@@ -37,8 +37,9 @@
 namespace psb::parallel {
 
 /// Particles per block of an order-sensitive reduction (rule 2 above). Fixed: changing it
-/// changes rounding, never correctness.
-inline constexpr std::size_t kBlock = 8192;
+/// changes rounding, never correctness. Small, so that the blocks of a world of ten thousand
+/// particles still share out evenly between threads (forBlocks groups them).
+inline constexpr std::size_t kBlock = 1024;
 /// Below this many items per chunk a parallel loop costs more than it saves.
 inline constexpr std::size_t kMinPerChunk = 4096;
 /// Chunks per thread: more than one, so that a thread that finishes early (or a worker that
@@ -91,12 +92,17 @@ void forChunks(int threads, int chunks, std::size_t n, F&& f) {
 }
 
 /// Calls f(block, begin, end) for each block of kBlock items of [0, n), spread over up to
-/// `threads` threads. The block boundaries do not depend on `threads`.
+/// `threads` threads. The block boundaries do not depend on `threads`; the blocks are handed out
+/// in contiguous groups, as many as chunksFor gives chunks, so that small n runs inline, 10^4
+/// items still balance and large n does not pay a task per block.
 template <typename F>
 void forBlocks(int threads, std::size_t n, F&& f) {
     const std::size_t blocks = (n + kBlock - 1) / kBlock;
-    forEachIndex(threads, blocks,
-                 [&](std::size_t b) { f(b, b * kBlock, std::min(n, (b + 1) * kBlock)); });
+    const std::size_t groups = std::min(blocks, static_cast<std::size_t>(chunksFor(threads, n)));
+    forEachIndex(threads, groups, [&](std::size_t g) {
+        for (std::size_t b = blocks * g / groups; b < blocks * (g + 1) / groups; ++b)
+            f(b, b * kBlock, std::min(n, (b + 1) * kBlock));
+    });
 }
 
 /// Blocks forBlocks makes of n items.

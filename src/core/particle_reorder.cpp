@@ -1,6 +1,7 @@
 #include "particle_reorder.hpp"
 
 #include <cstdint>
+#include <span>
 
 namespace psb {
 
@@ -10,7 +11,7 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
     if (n < 2 || n >= (std::size_t{1} << 31)) return;
     const ParticleStats stats = measureParticles(p, ctx.threads, ctx.statsScratch);
     ctx.grid.build(p, stats, ctx.threads);
-    std::vector<std::uint32_t>& perm = ctx.grid.order();  // slot k receives old particle perm[k]
+    const std::span<std::uint32_t> perm = ctx.grid.order();  // slot k receives old particle perm[k]
     constexpr std::uint32_t kDone = 0x80000000u;
 
     auto copy = [&p](std::size_t dst, std::size_t src) {

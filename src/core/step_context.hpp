@@ -22,6 +22,7 @@ struct StepContext {
     QuadtreeBroadPhase quadtree;
     std::vector<ParticleStats> statsScratch;  ///< per-block bounds
     bool statsFresh = false;  ///< statsScratch describes the current positions (set by move)
+    bool cellsFresh = false;  ///< move wrote the grid's cells for the current positions
     std::vector<double> wallImpulseScratch;
     std::vector<std::uint64_t> wallHitScratch;
 };

@@ -82,5 +82,47 @@ TEST(DiscreteStep, PipelineMatchesTheStagesRunOneByOneBitForBit) {
     }
 }
 
+// Walls off, so the cloud spreads and the grid has to give up its plan now and then; halfway the
+// radii grow, which forces a new plan too. Between those, move writes the cells.
+TEST(DiscreteStep, PipelineMatchesTheStagesWhileTheGridReplans) {
+    WorldDef def;
+    def.width = 120.0;
+    def.height = 90.0;
+    def.walls = false;
+    for (const int threads : {1, 2}) {
+        ParticleArrays fast = crowdedBox(def, 20000, 9);
+        ParticleArrays plain = fast;
+        StepContext fastCtx, plainCtx;
+        fastCtx.threads = plainCtx.threads = threads;
+        fastCtx.broadPhase = plainCtx.broadPhase = BroadPhaseKind::Grid;
+        StepProfile profile;
+        StepCounters fastCounters, plainCounters;
+        int kept = 0, replanned = 0;
+        for (int s = 0; s < 40; ++s) {
+            if (s == 20) {
+                for (double& r : fast.radius)
+                    r *= 1.7;
+                plain.radius = fast.radius;
+            }
+            stages::discreteStep(fast, def, 0.01, fastCtx, profile, fastCounters);
+            (fastCtx.grid.keptPlan() ? kept : replanned) += 1;
+
+            stages::move(plain, 0.01, threads);
+            stages::findPairs(plain, plainCtx);
+            stages::resolve(plain, def, plainCtx, plainCounters);
+            stages::separate(plain, plainCtx);
+
+            ASSERT_TRUE(sameBits(fast.x, plain.x)) << "step " << s << ", threads " << threads;
+            ASSERT_TRUE(sameBits(fast.y, plain.y)) << "step " << s;
+            ASSERT_TRUE(sameBits(fast.vx, plain.vx)) << "step " << s;
+            ASSERT_TRUE(sameBits(fast.vy, plain.vy)) << "step " << s;
+            ASSERT_EQ(fastCounters.collisions, plainCounters.collisions) << "step " << s;
+        }
+        EXPECT_GT(kept, 10) << "move wrote the cells and the grid kept its plan";
+        EXPECT_GT(replanned, 2) << "the spreading cloud and the radius change forced new plans";
+        EXPECT_GT(fastCounters.collisions, 100u);
+    }
+}
+
 }  // namespace
 }  // namespace psb
