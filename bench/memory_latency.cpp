@@ -43,9 +43,9 @@ void BM_PointerChase(benchmark::State& state) {
             at = cycle[at].next;
         benchmark::DoNotOptimize(at);
     }
-    state.counters["ns/load"] = benchmark::Counter(
-        static_cast<double>(state.iterations()) * kLoads * 1e-9,
-        benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["ns/load"] =
+        benchmark::Counter(static_cast<double>(state.iterations()) * kLoads * 1e-9,
+                           benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_PointerChase)
     ->ArgName("KiB")
