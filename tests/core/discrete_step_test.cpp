@@ -41,6 +41,26 @@ bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
+/// Two copies of one crowded box, with a grid step context each: `fast` goes through the
+/// pipeline, `plain` through the stages one by one.
+struct Twins {
+    Twins(const WorldDef& def, std::uint64_t seed, int threads)
+        : fast(crowdedBox(def, 20000, seed)), plain(fast) {
+        // Enough particles for several parallel blocks, so that flags cross block boundaries.
+        fastCtx.threads = plainCtx.threads = threads;
+        fastCtx.broadPhase = plainCtx.broadPhase = BroadPhaseKind::Grid;
+    }
+    /// Positions and velocities of the two copies agree to the last bit.
+    [[nodiscard]] bool same() const {
+        return sameBits(fast.x, plain.x) && sameBits(fast.y, plain.y) &&
+               sameBits(fast.vx, plain.vx) && sameBits(fast.vy, plain.vy);
+    }
+    ParticleArrays fast, plain;
+    StepContext fastCtx, plainCtx;
+    StepProfile profile;
+    StepCounters fastCounters, plainCounters;
+};
+
 TEST(DiscreteStep, PipelineMatchesTheStagesRunOneByOneBitForBit) {
     WorldDef def;
     def.width = 120.0;
@@ -48,14 +68,8 @@ TEST(DiscreteStep, PipelineMatchesTheStagesRunOneByOneBitForBit) {
     def.restitution = 0.9;
     def.gravity = Vec2(0.0, 9.81);
     for (const int threads : {1, 2}) {
-        // Enough particles for several parallel blocks, so that flags cross block boundaries.
-        ParticleArrays fast = crowdedBox(def, 20000, 7);
-        ParticleArrays plain = fast;
-        StepContext fastCtx, plainCtx;
-        fastCtx.threads = plainCtx.threads = threads;
-        fastCtx.broadPhase = plainCtx.broadPhase = BroadPhaseKind::Grid;
-        StepProfile profile;
-        StepCounters fastCounters, plainCounters;
+        Twins t(def, 7, threads);
+        auto& [fast, plain, fastCtx, plainCtx, profile, fastCounters, plainCounters] = t;
         std::uint64_t wallHits = 0;
         for (int s = 0; s < 40; ++s) {
             stages::discreteStep(fast, def, 0.01, fastCtx, profile, fastCounters);
@@ -67,10 +81,7 @@ TEST(DiscreteStep, PipelineMatchesTheStagesRunOneByOneBitForBit) {
             stages::separate(plain, plainCtx);
             stages::walls(plain, def, plainCtx, plainCounters);
 
-            ASSERT_TRUE(sameBits(fast.x, plain.x)) << "step " << s << ", threads " << threads;
-            ASSERT_TRUE(sameBits(fast.y, plain.y)) << "step " << s;
-            ASSERT_TRUE(sameBits(fast.vx, plain.vx)) << "step " << s;
-            ASSERT_TRUE(sameBits(fast.vy, plain.vy)) << "step " << s;
+            ASSERT_TRUE(t.same()) << "step " << s << ", threads " << threads;
             ASSERT_EQ(fastCounters.wallCollisions, plainCounters.wallCollisions) << "step " << s;
             ASSERT_EQ(fastCounters.wallImpulse, plainCounters.wallImpulse) << "step " << s;
             ASSERT_EQ(fastCounters.collisions, plainCounters.collisions) << "step " << s;
@@ -90,13 +101,8 @@ TEST(DiscreteStep, PipelineMatchesTheStagesWhileTheGridReplans) {
     def.height = 90.0;
     def.walls = false;
     for (const int threads : {1, 2}) {
-        ParticleArrays fast = crowdedBox(def, 20000, 9);
-        ParticleArrays plain = fast;
-        StepContext fastCtx, plainCtx;
-        fastCtx.threads = plainCtx.threads = threads;
-        fastCtx.broadPhase = plainCtx.broadPhase = BroadPhaseKind::Grid;
-        StepProfile profile;
-        StepCounters fastCounters, plainCounters;
+        Twins t(def, 9, threads);
+        auto& [fast, plain, fastCtx, plainCtx, profile, fastCounters, plainCounters] = t;
         int kept = 0, replanned = 0;
         for (int s = 0; s < 40; ++s) {
             if (s == 20) {
@@ -112,10 +118,7 @@ TEST(DiscreteStep, PipelineMatchesTheStagesWhileTheGridReplans) {
             stages::resolve(plain, def, plainCtx, plainCounters);
             stages::separate(plain, plainCtx);
 
-            ASSERT_TRUE(sameBits(fast.x, plain.x)) << "step " << s << ", threads " << threads;
-            ASSERT_TRUE(sameBits(fast.y, plain.y)) << "step " << s;
-            ASSERT_TRUE(sameBits(fast.vx, plain.vx)) << "step " << s;
-            ASSERT_TRUE(sameBits(fast.vy, plain.vy)) << "step " << s;
+            ASSERT_TRUE(t.same()) << "step " << s << ", threads " << threads;
             ASSERT_EQ(fastCounters.collisions, plainCounters.collisions) << "step " << s;
         }
         EXPECT_GT(kept, 10) << "move wrote the cells and the grid kept its plan";
