@@ -16,12 +16,12 @@ int main() {
     exact.mode = psb::StepMode::Exact;
     psb::World world(box, exact);
 
-    const double m1 = 1.0, m2 = 3.0;  // kilograms
+    const double m1 = 1.0, m2 = 3.0;   // kilograms
     const double u1 = 2.0, u2 = -1.0;  // metres per second
-    const auto a = world.add({.position = {3.0, 1.0}, .velocity = {u1, 0.0}, .mass = m1,
-                              .radius = 0.25});
-    const auto b = world.add({.position = {6.0, 1.0}, .velocity = {u2, 0.0}, .mass = m2,
-                              .radius = 0.5});
+    const auto a =
+        world.add({.position = {3.0, 1.0}, .velocity = {u1, 0.0}, .mass = m1, .radius = 0.25});
+    const auto b =
+        world.add({.position = {6.0, 1.0}, .velocity = {u2, 0.0}, .mass = m2, .radius = 0.5});
     const double energyBefore = psb::kineticEnergy(world);
     const double momentumBefore = psb::momentum(world).x();
 

@@ -4,9 +4,13 @@
 
 namespace psb {
 
-std::string_view projectVersion() { return PSB_PROJECT_VERSION; }
+std::string_view projectVersion() {
+    return PSB_PROJECT_VERSION;
+}
 
-std::string_view gitRevision() { return PSB_GIT_REVISION; }
+std::string_view gitRevision() {
+    return PSB_GIT_REVISION;
+}
 
 std::string versionLine(std::string_view program) {
     std::string line(program);
