@@ -57,17 +57,7 @@ fail() {
     echo "(log and screenshots in $OUT)" >&2
     exit 1
 }
-pass() { echo "ok: $*"; }
-
-XVFB_PID=""
-APP_PID=""
-cleanup() {
-    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
-    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
-    wait 2>/dev/null || true
-}
-trap cleanup EXIT
-trap '[[ $- == *e* ]] && echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
+source "$HERE/harness.sh"
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
@@ -94,7 +84,6 @@ set -e
 pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
 
 # --- a private X display ------------------------------------------------------------------
-source "$HERE/xvfb.sh"
 start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 

@@ -28,16 +28,7 @@ VERSION=$(sed -n 's/^CMAKE_PROJECT_VERSION:STATIC=//p' "$BUILD/CMakeCache.txt")
 [[ -n $VERSION ]] || { echo "FAIL: no project version in $BUILD/CMakeCache.txt" >&2; exit 1; }
 
 fail() { echo "FAIL: $*" >&2; echo "(logs in $OUT)" >&2; exit 1; }
-pass() { echo "ok: $*"; }
-XVFB_PID=""
-APP_PID=""
-cleanup() {
-    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
-    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
-    wait 2>/dev/null || true
-}
-trap cleanup EXIT
-trap '[[ $- == *e* ]] && echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
+source "$SRC/tests/e2e/harness.sh"
 
 # --- 1. the staging install ---------------------------------------------------------------
 cmake --install "$BUILD" --prefix "$STAGE" >"$OUT/install.log"
@@ -117,7 +108,6 @@ grep -Eq '"collisions": [1-9]' report.json || fail "the cradle run reports no co
 pass "particle-sim ran the installed Newton's cradle: $(grep -o '"collisions": [0-9]*' report.json)"
 
 # --- 5. the sandbox under Xvfb ------------------------------------------------------------
-source "$SRC/tests/e2e/xvfb.sh"
 start_xvfb "$OUT/xvfb.log" 640x560x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 env -u PSB_ASSETS_DIR "$STAGE/bin/particle-sandbox" \

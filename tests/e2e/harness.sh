@@ -1,5 +1,20 @@
-# Sourced by the end-to-end scripts. start_xvfb LOG [SCREEN] starts a private X server
-# (default screen 640x640x24), sets XVFB_PID and exports DISPLAY; returns 1 if none started.
+# Sourced by the end-to-end scripts (sandbox_e2e.sh, tests/install/install_test.sh), which
+# define fail() themselves: pass(), the ERR trap that names the failing line, the clean-up at
+# exit of the program under test (APP_PID) and of the X server (XVFB_PID), and start_xvfb.
+pass() { echo "ok: $*"; }
+
+XVFB_PID=""
+APP_PID=""
+cleanup() {
+    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
+    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
+    wait 2>/dev/null || true
+}
+trap cleanup EXIT
+trap '[[ $- == *e* ]] && echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
+
+# start_xvfb LOG [SCREEN] starts a private X server (default screen 640x640x24), sets XVFB_PID
+# and exports DISPLAY; returns 1 if none started.
 # A random high display number, not Xvfb -displayfd: servers started at the same moment with
 # -displayfd can end up sharing a display (and each other's input) on a busy machine.
 start_xvfb() {
