@@ -57,6 +57,9 @@ for size in 16 22 24 32 48 64 128 256 512; do
     got=$(identify -format '%wx%h' "$STAGE/share/icons/hicolor/${size}x$size/apps/particle-sandbox.png")
     [[ $got == "${size}x$size" ]] || fail "the ${size}x$size icon is $got"
 done
+# The changelog's latest entry is this version (a version bump needs its entry).
+top=$(zcat "$STAGE/share/doc/particle-sandbox/changelog.gz" | head -1)
+[[ $top == "particle-sandbox ($VERSION) "* ]] || fail "changelog.gz starts '$top', not version $VERSION"
 # The README's links into docs/ resolve in the installed copy.
 while read -r link; do
     [[ -e $STAGE/share/doc/particle-sandbox/$link ]] || fail "README links $link, not installed"
