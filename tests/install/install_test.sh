@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs a built tree as a user or a packager would, and checks the result from the outside:
 #
-#   tests/install/install_test.sh BUILD_DIR [OUTPUT_DIR]
+#   tests/install/install_test.sh BUILD_DIR [OUTPUT_DIR]     (BUILD_DIR: a whole build, app included)
 #
 #   1. cmake --install into a staging prefix: every file where desktops, man and CMake look
 #   2. the desktop entry passes desktop-file-validate; its Exec and Icon exist in the prefix
