@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Particle Sandbox needs, skipping those already present.
 #   scripts/install-deps.sh          build dependencies (compiler, CMake, libraries)
-#   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick, and
-#                                    clang with libFuzzer for the fuzz targets)
+#   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick,
+#                                    clang with libFuzzer for the fuzz targets, and for the
+#                                    install test man, desktop-file-validate, file (which
+#                                    CPack's dependency scan uses), lintian and mmdebstrap)
 set -euo pipefail
 
 packages=(
@@ -15,6 +17,7 @@ packages=(
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(xvfb xauth xdotool imagemagick x11-utils)
   packages+=(clang libclang-rt-14-dev)
+  packages+=(man-db desktop-file-utils file lintian mmdebstrap)
 fi
 
 missing=()

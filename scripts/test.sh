@@ -1,17 +1,21 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds everything with warnings as errors, and runs every test, in
-# three trees (docs/testing.md explains each and lists measured durations):
+# four stages over three trees (docs/testing.md explains each and lists measured durations):
 #   release  build/test   Release: unit, rendering, end-to-end under Xvfb, the soak run
+#   install  build/test   the same tree installed into a staging prefix and packaged as .debs,
+#                         checked from outside (tests/install/install_test.sh)
 #   asan     build/asan   ASan + UBSan + LeakSanitizer, -O1 -g: the same tests except those
 #                         labelled e2e or bench (why: see below)
 #   fuzz     build/fuzz   clang + libFuzzer: each fuzz target for PSB_FUZZ_SECONDS (default 60)
 # Any failure, sanitizer report or fuzzer crash fails the script.
 #   scripts/test.sh [CTEST ARGS...]     extra arguments go to the release and asan ctest runs
 #   PSB_TEST_STAGES="release asan" scripts/test.sh   runs only the stages named
+#   PSB_SKIP_CLEAN_ROOT=1 scripts/test.sh   the install stage without its clean-root install
+#                                           (which downloads Debian packages)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-stages=" ${PSB_TEST_STAGES:-release asan fuzz} "
+stages=" ${PSB_TEST_STAGES:-release install asan fuzz} "
 jobs=$(nproc)
 scripts/install-deps.sh --test
 
@@ -22,6 +26,14 @@ if [[ $stages == *" release "* ]]; then
   cmake -S . -B build/test -DCMAKE_BUILD_TYPE=Release -DPSB_WARNINGS_AS_ERRORS=ON >/dev/null
   cmake --build build/test -j"$jobs"
   ctest --test-dir build/test --output-on-failure -j"$jobs" "$@"
+fi
+
+if [[ $stages == *" install "* ]]; then
+  stage "install, package and run from outside"
+  # The release tree again (a no-op after the release stage), so the stage also runs alone.
+  cmake -S . -B build/test -DCMAKE_BUILD_TYPE=Release -DPSB_WARNINGS_AS_ERRORS=ON >/dev/null
+  cmake --build build/test -j"$jobs"
+  tests/install/install_test.sh build/test build/test/install-test
 fi
 
 if [[ $stages == *" asan "* ]]; then

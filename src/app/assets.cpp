@@ -18,13 +18,26 @@ std::vector<std::filesystem::path> assetDirectories() {
         const std::filesystem::path exeDir(base);
         SDL_free(base);
         dirs.push_back(exeDir / "assets");
-        dirs.push_back(exeDir / ".." / "share" / "particle-sandbox" / "assets");
+#ifdef PSB_INSTALL_ASSETS_FROM_BINDIR
+        dirs.push_back((exeDir / PSB_INSTALL_ASSETS_FROM_BINDIR).lexically_normal());
+#endif
     }
 #ifdef PSB_SOURCE_ASSETS_DIR
     dirs.emplace_back(PSB_SOURCE_ASSETS_DIR);
 #endif
     dirs.emplace_back("assets");
     return dirs;
+}
+
+std::optional<std::filesystem::path> assetDirectory() {
+    for (const auto& dir : assetDirectories()) {
+        std::error_code ec;
+        if (std::filesystem::is_directory(dir / "fonts", ec) &&
+            std::filesystem::is_directory(dir / "scenes", ec)) {
+            return dir;
+        }
+    }
+    return std::nullopt;
 }
 
 std::filesystem::path findAsset(std::string_view relative) {

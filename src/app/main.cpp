@@ -8,6 +8,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app.hpp"
+#include "assets.hpp"
+#include "build_info.hpp"
 #include "output_directory.hpp"
 
 namespace {
@@ -40,6 +42,11 @@ int main(int argc, char** argv) {
         "Particle Sandbox: fling, launch and watch elastic circles collide.\n"
         "Press H in the window for the controls.",
         "particle-sandbox"};
+    cli.set_version_flag("--version", psb::versionLine("particle-sandbox"),
+                         "Print the version (and git revision) and exit");
+    const auto assets = psb::app::assetDirectory();
+    cli.footer(assets ? "Preset scenes (P, 1-9) and fonts are read from " + assets->string()
+                      : std::string("No fonts or preset scenes found; set PSB_ASSETS_DIR."));
     std::string scene, window, saveTo = options.saveTo.string();
     std::string screenshotDir = options.screenshotDir.string();
     cli.add_option("SCENE", scene, "Scene file (JSON) to open; a built-in scene if omitted");

@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "build_info.hpp"
+
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -77,6 +79,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     CLI::App app(kDescription, "particle-sim");
     app.footer(kFooter);
     app.set_help_flag("-h,--help", "Print this help and exit");
+    app.set_version_flag("--version", versionLine("particle-sim"),
+                         "Print the version (and git revision) and exit");
 
     std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
     std::string timeseries, timeseriesEvery;
@@ -117,6 +121,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         app.parse(rest);
     } catch (const CLI::CallForHelp&) {
         throw HelpRequested(app.help());
+    } catch (const CLI::CallForVersion& version) {
+        throw HelpRequested(std::string(version.what()) + "\n");
     } catch (const CLI::ParseError& e) {
         throw UsageError(e.what());
     }

@@ -36,7 +36,7 @@ class UsageError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// `--help` was given; what() is the help text.
+/// `--help` or `--version` was given; what() is the text to print (on stdout, exit status 0).
 class HelpRequested : public std::runtime_error {
   public:
     using std::runtime_error::runtime_error;

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "build_info.hpp"
 #include "run_options.hpp"
 
 namespace psb::cli {
@@ -99,6 +100,17 @@ TEST(RunOptions, HelpIsNotAnError) {
                                    "--threads", "--report", "--save", "--progress"}) {
             EXPECT_NE(text.find(option), std::string::npos) << option;
         }
+    }
+}
+
+TEST(RunOptions, VersionNeedsNoSceneAndNamesTheProgramAndVersion) {
+    try {
+        (void)parse({"--version"});
+        FAIL();
+    } catch (const HelpRequested& version) {
+        const std::string text = version.what();
+        EXPECT_EQ(text.rfind("particle-sim " + std::string(psb::projectVersion()), 0), 0u) << text;
+        EXPECT_EQ(text.back(), '\n');
     }
 }
 

@@ -57,17 +57,7 @@ fail() {
     echo "(log and screenshots in $OUT)" >&2
     exit 1
 }
-pass() { echo "ok: $*"; }
-
-XVFB_PID=""
-APP_PID=""
-cleanup() {
-    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
-    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
-    wait 2>/dev/null || true
-}
-trap cleanup EXIT
-trap '[[ $- == *e* ]] && echo "FAIL: line $LINENO: $BASH_COMMAND exited with $?" >&2' ERR
+source "$HERE/harness.sh"
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
@@ -94,26 +84,7 @@ set -e
 pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
 
 # --- a private X display ------------------------------------------------------------------
-# A random high display number, not Xvfb -displayfd: servers started at the same moment with
-# -displayfd can end up sharing a display (and each other's input) on a busy machine.
-for _ in $(seq 30); do
-    n=$((200 + RANDOM % 700))
-    [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n ]] && continue
-    Xvfb ":$n" -screen 0 640x640x24 -nolisten tcp 2>"$OUT/xvfb.log" &
-    XVFB_PID=$!
-    for _ in $(seq 100); do
-        kill -0 "$XVFB_PID" 2>/dev/null || break
-        xdpyinfo -display ":$n" >/dev/null 2>&1 && break
-        sleep 0.05
-    done
-    if kill -0 "$XVFB_PID" 2>/dev/null && xdpyinfo -display ":$n" >/dev/null 2>&1; then
-        export DISPLAY=":$n"
-        break
-    fi
-    kill "$XVFB_PID" 2>/dev/null || true
-    XVFB_PID=""
-done
-[[ -n "$XVFB_PID" ]] || fail "could not start Xvfb"
+start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 
 # --- the program --------------------------------------------------------------------------
