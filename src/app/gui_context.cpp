@@ -95,6 +95,13 @@ void GuiContext::loadFont(const GuiOptions& options, float pixelScale) {
 bool GuiContext::handleEvent(const SDL_Event& event) {
     makeCurrent();
     if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
+    if (event.type == SDL_MOUSEMOTION) {
+        mouse_ = ImVec2(static_cast<float>(event.motion.x), static_cast<float>(event.motion.y));
+    } else if (event.type == SDL_MOUSEBUTTONDOWN || event.type == SDL_MOUSEBUTTONUP) {
+        mouse_ = ImVec2(static_cast<float>(event.button.x), static_cast<float>(event.button.y));
+    } else if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_LEAVE) {
+        mouse_.reset();
+    }
     const ImGuiIO& io = ImGui::GetIO();
     switch (event.type) {
         case SDL_MOUSEMOTION:
@@ -117,6 +124,12 @@ void GuiContext::beginFrame() {
     makeCurrent();
     if (!platform_) throw std::logic_error("GuiContext::beginFrame(): no window; give a size");
     ImGui_ImplSDL2_NewFrame();
+    // The 1.86 backend polls SDL's global mouse state, which on X11 can lag the events (under
+    // Xvfb with XTest input it still held the start position when the click came); the last
+    // event's position is the one the app itself acts on.
+    if (mouse_ && (SDL_GetMouseFocus() == window_ || ImGui::IsAnyMouseDown())) {
+        ImGui::GetIO().MousePos = *mouse_;
+    }
     // Debian's 1.86 backend takes the scale from SDL_GL_GetDrawableSize, which is the window
     // size for a window without OpenGL; the renderer's output size is the one drawn into.
     const float scale = windowPixelScale(window_, sdl_);

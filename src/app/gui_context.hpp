@@ -18,13 +18,13 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include <SDL.h>
 
-#include "imgui_renderer.hpp"
+#include <imgui.h>
 
-struct ImGuiContext;
-struct ImGuiIO;
+#include "imgui_renderer.hpp"
 
 namespace psb::app {
 
@@ -71,7 +71,8 @@ class GuiContext {
     SDL_Window* window_ = nullptr;
     SDL_Renderer* sdl_ = nullptr;
     ImGuiContext* context_ = nullptr;
-    bool platform_ = false;  // the SDL2 platform backend is initialised
+    bool platform_ = false;        // the SDL2 platform backend is initialised
+    std::optional<ImVec2> mouse_;  // window points, from the last mouse event
     std::unique_ptr<ImGuiRenderer> renderer_;
 };
 
