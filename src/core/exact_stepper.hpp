@@ -155,6 +155,11 @@ class ExactStepper {
     /// indices of `p`; times restart from 0 at each rebuild.
     void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
 
+    /// Bytes held by the event state (particles in cell order, cells, queue, the snapshot of
+    /// what the last step left): what a copy of a world in this mode carries besides its own
+    /// arrays.
+    [[nodiscard]] std::size_t memoryBytes() const;
+
     /// Events of each kind processed by the last step.
     struct EventStats {
         std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0;
