@@ -1,0 +1,198 @@
+#include "timeline.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+namespace psb::app {
+
+Timeline::Timeline(const TimelineSettings& settings) : settings_(settings) {
+    if (!(settings_.horizonSeconds > 0.0)) {
+        throw std::invalid_argument("Timeline: horizon must be > 0 seconds (got " +
+                                    std::to_string(settings_.horizonSeconds) + ")");
+    }
+    if (settings_.budgetBytes == 0) throw std::invalid_argument("Timeline: budget must be > 0");
+    spacing_ = settings_.horizonSeconds;
+}
+
+void Timeline::stepped(double dt) {
+    pendingSteps_.push_back(dt);
+}
+
+void Timeline::edited() {
+    pendingEdit_ = true;
+}
+
+bool Timeline::matchesReported(const World& world) const {
+    const Frame& last = frames_.back();
+    double t = last.time;
+    for (double dt : pendingSteps_)
+        t += dt;  // the additions World::step makes, in its order: equal bit for bit
+    return t == world.time() && (pendingEdit_ || world.size() == last.particles);
+}
+
+void Timeline::storeKey(Frame& f, const World& world) {
+    f.key = std::make_unique<const World>(world);
+    f.keyBytes = world.stateBytes();
+    bytes_ += f.keyBytes;
+    ++keyframes_;
+    lastKeyTime_ = f.time;
+}
+
+std::int64_t Timeline::record(const World& world) {
+    const bool honest = frames_.empty() || matchesReported(world);
+    const bool advanced = !frames_.empty() && world.time() != frames_.back().time;
+    if (!frames_.empty() && !advanced && !pendingEdit_ && honest) {
+        pendingSteps_.clear();
+        return lastFrame();
+    }
+    if (!honest) ++unreported_;
+
+    // The rule: room for the horizon's keyframes plus the one before it, the newest and the
+    // rebuilt world of seek().
+    const std::size_t keyBytes = std::max<std::size_t>(world.stateBytes(), 1);
+    const std::size_t slots = settings_.budgetBytes / keyBytes;
+    spacing_ = settings_.horizonSeconds / static_cast<double>(slots > 4 ? slots - 3 : 1);
+
+    if (!frames_.empty() && !advanced) {
+        // Edits while paused: the latest frame now ends in the edited state.
+        Frame& f = frames_.back();
+        bytes_ -= sizeof(double) * f.steps.capacity();
+        f.steps = {};
+        if (f.key) {
+            bytes_ -= f.keyBytes;
+            --keyframes_;
+        }
+        f.particles = world.size();
+        storeKey(f, world);
+        if (cursorFrame_ == lastFrame()) cursorFrame_ = -1;
+    } else {
+        Frame f;
+        f.time = world.time();
+        f.particles = world.size();
+        const bool due =
+            frames_.empty() || pendingEdit_ || !honest || world.time() - lastKeyTime_ >= spacing_;
+        if (due) {
+            storeKey(f, world);
+        } else {
+            f.steps = pendingSteps_;
+            bytes_ += sizeof(double) * f.steps.capacity();
+        }
+        frames_.push_back(std::move(f));
+    }
+    pendingSteps_.clear();
+    pendingEdit_ = false;
+    trim();
+    return lastFrame();
+}
+
+void Timeline::dropOldest() {
+    // Drops the first keyframe and the frames that replay from it, up to the next keyframe.
+    do {
+        Frame& f = frames_.front();
+        bytes_ -= sizeof(double) * f.steps.capacity();
+        if (f.key) {
+            bytes_ -= f.keyBytes;
+            --keyframes_;
+        }
+        frames_.pop_front();
+        ++first_;
+    } while (!frames_.empty() && !frames_.front().key);
+    if (cursorFrame_ < first_) cursorFrame_ = -1;
+}
+
+void Timeline::trim() {
+    const double latest = frames_.back().time;
+    while (keyframes_ >= 2) {
+        std::size_t second = 1;
+        while (!frames_[second].key)
+            ++second;
+        const bool reachesWithout = frames_[second].time <= latest - settings_.horizonSeconds;
+        if (!reachesWithout && memoryBytes() <= settings_.budgetBytes) break;
+        dropOldest();
+    }
+}
+
+std::size_t Timeline::indexOf(std::int64_t frame) const {
+    if (frames_.empty() || frame < first_ || frame > lastFrame()) {
+        throw std::out_of_range("Timeline: frame " + std::to_string(frame) + " is not held (" +
+                                (frames_.empty() ? std::string("none are")
+                                                 : "held: " + std::to_string(first_) + " to " +
+                                                       std::to_string(lastFrame())) +
+                                ")");
+    }
+    return static_cast<std::size_t>(frame - first_);
+}
+
+double Timeline::timeOf(std::int64_t frame) const {
+    return frames_[indexOf(frame)].time;
+}
+
+std::int64_t Timeline::frameAt(double seconds) const {
+    if (frames_.empty()) throw std::out_of_range("Timeline: no frames");
+    const auto after = std::upper_bound(frames_.begin(), frames_.end(), seconds,
+                                        [](double t, const Frame& f) { return t < f.time; });
+    if (after == frames_.begin()) return first_;
+    return first_ + static_cast<std::int64_t>(after - frames_.begin()) - 1;
+}
+
+double Timeline::coveredSeconds() const {
+    return frames_.empty() ? 0.0 : frames_.back().time - frames_.front().time;
+}
+
+const World& Timeline::seek(std::int64_t frame) {
+    const std::size_t target = indexOf(frame);
+    std::size_t key = target;
+    while (!frames_[key].key)
+        --key;  // the first frame is always a keyframe
+    std::size_t at = key;
+    if (cursor_ && cursorFrame_ >= first_ + static_cast<std::int64_t>(key) &&
+        cursorFrame_ <= frame) {
+        at = static_cast<std::size_t>(cursorFrame_ - first_);  // carry on from the last seek
+    } else {
+        cursor_ = std::make_unique<World>(*frames_[key].key);
+    }
+    lastReplayed_ = target - at;
+    for (std::size_t j = at + 1; j <= target; ++j) {
+        for (double dt : frames_[j].steps)
+            cursor_->step(dt);
+    }
+    cursorFrame_ = frame;
+    return *cursor_;
+}
+
+void Timeline::discardAfter(std::int64_t frame) {
+    const std::size_t keep = indexOf(frame) + 1;
+    while (frames_.size() > keep) {
+        Frame& f = frames_.back();
+        bytes_ -= sizeof(double) * f.steps.capacity();
+        if (f.key) {
+            bytes_ -= f.keyBytes;
+            --keyframes_;
+        }
+        frames_.pop_back();
+    }
+    if (cursorFrame_ > frame) {
+        cursor_.reset();
+        cursorFrame_ = -1;
+    }
+    pendingSteps_.clear();
+    pendingEdit_ = false;
+    for (std::size_t i = frames_.size(); i-- > 0;) {
+        if (frames_[i].key) {
+            lastKeyTime_ = frames_[i].time;
+            break;
+        }
+    }
+}
+
+std::size_t Timeline::memoryBytes() const {
+    std::size_t bytes =
+        bytes_ + sizeof(Frame) * frames_.size() + sizeof(double) * pendingSteps_.capacity();
+    // The rebuilt world: its state and its step scratch (World::memoryBytes counts the arrays
+    // again, so this errs high).
+    if (cursor_) bytes += cursor_->stateBytes() + cursor_->memoryBytes();
+    return bytes;
+}
+
+}  // namespace psb::app
