@@ -57,12 +57,7 @@ std::int64_t Timeline::record(const World& world) {
     if (!frames_.empty() && !advanced) {
         // Edits while paused: the latest frame now ends in the edited state.
         Frame& f = frames_.back();
-        bytes_ -= sizeof(double) * f.steps.capacity();
-        f.steps = {};
-        if (f.key) {
-            bytes_ -= f.keyBytes;
-            --keyframes_;
-        }
+        forget(f);
         f.particles = world.size();
         storeKey(f, world);
         if (cursorFrame_ == lastFrame()) cursorFrame_ = -1;
@@ -86,15 +81,20 @@ std::int64_t Timeline::record(const World& world) {
     return lastFrame();
 }
 
+void Timeline::forget(Frame& f) {
+    bytes_ -= sizeof(double) * f.steps.capacity();
+    f.steps = {};
+    if (f.key) {
+        bytes_ -= f.keyBytes;
+        --keyframes_;
+        f.key.reset();
+    }
+}
+
 void Timeline::dropOldest() {
     // Drops the first keyframe and the frames that replay from it, up to the next keyframe.
     do {
-        Frame& f = frames_.front();
-        bytes_ -= sizeof(double) * f.steps.capacity();
-        if (f.key) {
-            bytes_ -= f.keyBytes;
-            --keyframes_;
-        }
+        forget(frames_.front());
         frames_.pop_front();
         ++first_;
     } while (!frames_.empty() && !frames_.front().key);
@@ -164,12 +164,7 @@ const World& Timeline::seek(std::int64_t frame) {
 void Timeline::discardAfter(std::int64_t frame) {
     const std::size_t keep = indexOf(frame) + 1;
     while (frames_.size() > keep) {
-        Frame& f = frames_.back();
-        bytes_ -= sizeof(double) * f.steps.capacity();
-        if (f.key) {
-            bytes_ -= f.keyBytes;
-            --keyframes_;
-        }
+        forget(frames_.back());
         frames_.pop_back();
     }
     if (cursorFrame_ > frame) {

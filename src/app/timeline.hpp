@@ -113,6 +113,8 @@ class Timeline {
     [[nodiscard]] std::size_t indexOf(std::int64_t frame) const;
     [[nodiscard]] bool matchesReported(const World& world) const;
     void storeKey(Frame& f, const World& world);
+    /// Takes a frame's steps and keyframe out of the accounting (and frees them).
+    void forget(Frame& f);
     void dropOldest();
     void trim();
 

@@ -67,6 +67,18 @@ World gas(StepMode mode, int n = 150) {
     return w;
 }
 
+/// One 60 Hz frame as the app runs it: the world is stepped by its solver dt as often as the
+/// accumulated time allows, each step reported, then the frame is recorded.
+std::int64_t frame(World& world, Timeline& timeline, double& accumulator) {
+    accumulator += 1.0 / 60.0;
+    while (accumulator >= world.solver().dt) {
+        world.step();
+        timeline.stepped(world.solver().dt);
+        accumulator -= world.solver().dt;
+    }
+    return timeline.record(world);
+}
+
 /// Runs `frames` frames the way the app does (a 60 Hz frame steps the world by its solver dt
 /// as often as the accumulated time allows), recording each, with the user's edits of
 /// `edit(world, frame)` (which returns whether it changed anything). Keeps a copy of the world
@@ -78,13 +90,8 @@ std::vector<World> run(World& world, Timeline& timeline, int frames, Edit edit) 
     double accumulator = 0.0;
     for (int f = 0; f < frames; ++f) {
         if (edit(world, f)) timeline.edited();
-        accumulator += 1.0 / 60.0;
-        while (accumulator >= world.solver().dt) {
-            world.step();
-            timeline.stepped(world.solver().dt);
-            accumulator -= world.solver().dt;
-        }
-        EXPECT_EQ(timeline.record(world), start + static_cast<std::int64_t>(reference.size()));
+        EXPECT_EQ(frame(world, timeline, accumulator),
+                  start + static_cast<std::int64_t>(reference.size()));
         reference.push_back(world);
     }
     return reference;
@@ -237,19 +244,7 @@ TEST(Timeline, ActingFromThePastDiscardsTheOldFuture) {
     timeline.edited();
     timeline.record(resumed);  // the paused edit replaces frame 50
     EXPECT_EQ(timeline.lastFrame(), 50);
-    Timeline& t = timeline;
-    std::vector<World> branch;
-    double accumulator = 0.0;
-    for (int f = 0; f < 20; ++f) {
-        accumulator += 1.0 / 60.0;
-        while (accumulator >= resumed.solver().dt) {
-            resumed.step();
-            t.stepped(resumed.solver().dt);
-            accumulator -= resumed.solver().dt;
-        }
-        t.record(resumed);
-        branch.push_back(resumed);
-    }
+    const std::vector<World> branch = run(resumed, timeline, 20, noEdits);
     EXPECT_EQ(timeline.lastFrame(), 70);
     EXPECT_EQ(timeline.unreportedChanges(), 0u);
     EXPECT_TRUE(identical(timeline.seek(70), branch.back()));
@@ -284,13 +279,7 @@ TEST(Timeline, KeepsTheHorizonWithinTheBudget) {
     std::size_t peak = 0;
     double accumulator = 0.0;
     for (int f = 0; f < 60 * 25; ++f) {  // 25 s
-        accumulator += 1.0 / 60.0;
-        while (accumulator >= world.solver().dt) {
-            world.step();
-            timeline.stepped(world.solver().dt);
-            accumulator -= world.solver().dt;
-        }
-        timeline.record(world);
+        frame(world, timeline, accumulator);
         peak = std::max(peak, timeline.memoryBytes());
     }
     EXPECT_LE(peak, s.budgetBytes);
