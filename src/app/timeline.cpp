@@ -12,6 +12,10 @@ Timeline::Timeline(const TimelineSettings& settings) : settings_(settings) {
                                     std::to_string(settings_.horizonSeconds) + ")");
     }
     if (settings_.budgetBytes == 0) throw std::invalid_argument("Timeline: budget must be > 0");
+    if (!(settings_.minSpacingSeconds >= 0.0) ||
+        settings_.minSpacingSeconds > settings_.horizonSeconds) {
+        throw std::invalid_argument("Timeline: the least keyframe spacing must be in [0, horizon]");
+    }
     spacing_ = settings_.horizonSeconds;
 }
 
@@ -52,7 +56,8 @@ std::int64_t Timeline::record(const World& world) {
     // rebuilt world of seek().
     const std::size_t keyBytes = std::max<std::size_t>(world.stateBytes(), 1);
     const std::size_t slots = settings_.budgetBytes / keyBytes;
-    spacing_ = settings_.horizonSeconds / static_cast<double>(slots > 4 ? slots - 3 : 1);
+    spacing_ = std::max(settings_.minSpacingSeconds,
+                        settings_.horizonSeconds / static_cast<double>(slots > 4 ? slots - 3 : 1));
 
     if (!frames_.empty() && !advanced) {
         // Edits while paused: the latest frame now ends in the edited state.

@@ -35,8 +35,11 @@
 // each), the step lists, and the one rebuilt world of seek(). Keyframes are spaced so that
 // the horizon fits the budget with room for two more:
 //
-//   spacing = horizon / max(1, budget / keyframeBytes - 3)        seconds of simulated time
+//   spacing = max(minSpacing, horizon / max(1, budget / keyframeBytes - 3))   simulated seconds
 //
+// (minSpacing, 0.1 s by default, because a keyframe per frame would make every frame pay for a
+// copy of the world to save the re-simulation of a few frames when stepping back; at 60 frames
+// per second it bounds a step back to re-simulating 5 frames when the budget allows)
 // and after every record the oldest frames are dropped while the history would still reach
 // back `horizon` seconds without them, then while the budget is exceeded (which only frequent
 // edits cause: each is a keyframe). coveredSeconds() says how far back the history reaches.
@@ -55,6 +58,7 @@ namespace psb::app {
 struct TimelineSettings {
     double horizonSeconds = 10.0;                  ///< simulated seconds kept, at least
     std::size_t budgetBytes = 200u * 1000 * 1000;  ///< everything the timeline holds
+    double minSpacingSeconds = 0.1;  ///< simulated seconds between keyframes, at least (0: none)
 };
 
 class Timeline {

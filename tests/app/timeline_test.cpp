@@ -292,6 +292,21 @@ TEST(Timeline, KeepsTheHorizonWithinTheBudget) {
     EXPECT_NEAR(oldest.time(), world.time() - timeline.coveredSeconds(), 1e-9);
 }
 
+TEST(Timeline, KeyframesAreATenthOfASecondApartWhenTheBudgetAllowsMore) {
+    World world = gas(StepMode::Discrete);
+    Timeline timeline;                   // 200 MB: room for a keyframe every frame
+    run(world, timeline, 120, noEdits);  // 2 s
+    EXPECT_EQ(timeline.keyframeSpacing(), 0.1);
+    EXPECT_GE(timeline.keyframeCount(), 15u);
+    EXPECT_LE(timeline.keyframeCount(), 21u);
+    std::size_t longest = 0;
+    for (std::int64_t f = timeline.lastFrame(); f >= 0; --f) {
+        timeline.seek(f);
+        longest = std::max(longest, timeline.lastSeekReplayed());
+    }
+    EXPECT_LE(longest, 6u);
+}
+
 TEST(Timeline, EditsEveryFrameShortenTheHistoryNotTheBudget) {
     World world = gas(StepMode::Discrete, 1000);
     world.setBox(120.0, 120.0);
@@ -322,6 +337,8 @@ TEST(Timeline, RefusesWhatItDoesNotHold) {
     EXPECT_THROW(timeline.seek(-1), std::out_of_range);
     EXPECT_THROW(timeline.discardAfter(9), std::out_of_range);
     EXPECT_THROW(Timeline({.horizonSeconds = 0.0}), std::invalid_argument);
+    EXPECT_THROW(Timeline({.minSpacingSeconds = -1.0}), std::invalid_argument);
+    EXPECT_THROW(Timeline({.budgetBytes = 0}), std::invalid_argument);
     try {
         timeline.seek(7);
     } catch (const std::out_of_range& e) {
