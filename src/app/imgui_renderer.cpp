@@ -39,6 +39,10 @@ bool clipRect(const ImVec4& clip, ImVec2 origin, ImVec2 scale, int targetW, int 
 
 ImGuiRenderer::ImGuiRenderer(SDL_Renderer* renderer) : renderer_(renderer) {
     if (renderer_ == nullptr) throw std::runtime_error("ImGuiRenderer: no SDL renderer");
+    ImGuiIO& io = ImGui::GetIO();
+    io.BackendRendererName = "particle-sandbox SDL_Renderer";
+    // Draw lists past 65 536 vertices keep 16-bit indices, relative to each command's VtxOffset.
+    io.BackendFlags |= ImGuiBackendFlags_RendererHasVtxOffset;
     rebuildFontTexture();
 }
 

@@ -27,8 +27,9 @@ namespace psb::app {
 
 class ImGuiRenderer {
   public:
-    /// Makes the font atlas texture of the current ImGui context's fonts on `renderer` and
-    /// stores it as the atlas's texture id. Throws std::runtime_error with SDL's reason.
+    /// The renderer backend of the current ImGui context: makes the font atlas texture of its
+    /// fonts on `renderer` and stores it as the atlas's texture id. Throws std::runtime_error
+    /// with SDL's reason. Every member works on the current context.
     explicit ImGuiRenderer(SDL_Renderer* renderer);
     ~ImGuiRenderer();
     ImGuiRenderer(const ImGuiRenderer&) = delete;

@@ -173,6 +173,25 @@ TEST_F(ImGuiRendererTest, PixelScaleDrawsPointsAsSeveralPixels) {
     EXPECT_TRUE(same(pixel(330, 100), kClear)) << str(pixel(330, 100));
 }
 
+TEST_F(ImGuiRendererTest, DrawListsBeyondSixteenBitIndicesAreDrawnWhole) {
+    clear();
+    gui_->beginFrame(kSize, kSize);
+    fixedWindow(ImVec2(0, 0), ImVec2(kSize, kSize));
+    ImDrawList& list = *ImGui::GetWindowDrawList();
+    // 18 000 one-pixel squares (72 000 vertices) on a 150-pixel-wide band; the last one red.
+    for (int k = 0; k < 18000; ++k) {
+        const float x = static_cast<float>(k % 150), y = static_cast<float>(k / 150);
+        list.AddRectFilled(ImVec2(x, y), ImVec2(x + 1, y + 1),
+                           k == 17999 ? IM_COL32(255, 0, 0, 255) : IM_COL32(0, 255, 0, 255));
+    }
+    ImGui::End();
+    finish();
+    EXPECT_GT(ImGui::GetDrawData()->TotalVtxCount, 65536);
+    EXPECT_TRUE(same(pixel(149, 119), SDL_Color{255, 0, 0, 255})) << str(pixel(149, 119));
+    EXPECT_TRUE(same(pixel(10, 100), SDL_Color{0, 255, 0, 255})) << str(pixel(10, 100));
+    EXPECT_TRUE(same(pixel(10, 125), kPanelBlue)) << str(pixel(10, 125));
+}
+
 TEST_F(ImGuiRendererTest, ImageShowsTheSdlTextureItNames) {
     SDL_Texture* tex =
         SDL_CreateTexture(sdl_, SDL_PIXELFORMAT_RGBA32, SDL_TEXTUREACCESS_STATIC, 4, 4);
