@@ -78,6 +78,42 @@ TEST_F(GuiContextTest, ClicksOverAPanelAreTakenAndClicksElsewhereAreNot) {
     EXPECT_FALSE(gui.handleEvent(quit));
 }
 
+TEST_F(GuiContextTest, KeysGoToATextFieldBeingTypedIn) {
+    GuiContext gui(sdl_);
+    char path[64] = "scene.json";
+    ImVec2 field;
+    const auto frameWithField = [&] {
+        gui.beginFrame(kSize, kSize);
+        ImGui::SetNextWindowPos(ImVec2(20, 20));
+        ImGui::SetNextWindowSize(ImVec2(200, 80));
+        ImGui::Begin("Save", nullptr, ImGuiWindowFlags_NoSavedSettings);
+        ImGui::InputText("path", path, sizeof path);
+        field = ImVec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) / 2 - 30,
+                       (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) / 2);
+        ImGui::End();
+        EXPECT_EQ(gui.endFrame(), 0);
+    };
+    frameWithField();
+    SDL_Event key{};
+    key.type = SDL_KEYDOWN;
+    key.key.keysym.sym = SDLK_r;
+    EXPECT_FALSE(gui.handleEvent(key)) << "R resets the scene while nothing is being typed";
+    ImGuiIO& io = gui.io();
+    io.MousePos = field;
+    frameWithField();
+    io.MouseDown[0] = true;
+    frameWithField();
+    io.MouseDown[0] = false;
+    frameWithField();
+    frameWithField();
+    EXPECT_TRUE(gui.wantsKeyboard());
+    EXPECT_TRUE(gui.handleEvent(key)) << "R is a letter of the file name being typed";
+    SDL_Event text{};
+    text.type = SDL_TEXTINPUT;
+    text.text.text[0] = 'r';
+    EXPECT_TRUE(gui.handleEvent(text));
+}
+
 TEST_F(GuiContextTest, TwoContextsKeepTheirOwnState) {
     GuiContext a(sdl_);
     GuiContext b(sdl_);
