@@ -44,6 +44,7 @@ void Timeline::storeKey(Frame& f, const World& world) {
 }
 
 std::int64_t Timeline::record(const World& world) {
+    if (!frames_.empty() && world.time() < frames_.back().time) restart();
     const bool honest = frames_.empty() || matchesReported(world);
     const bool advanced = !frames_.empty() && world.time() != frames_.back().time;
     if (!frames_.empty() && !advanced && !pendingEdit_ && honest) {
@@ -94,6 +95,17 @@ void Timeline::forget(Frame& f) {
         --keyframes_;
         f.key.reset();
     }
+}
+
+void Timeline::restart() {
+    const std::int64_t next = lastFrame() + 1;
+    while (!frames_.empty()) {
+        forget(frames_.back());
+        frames_.pop_back();
+    }
+    first_ = next;  // frame numbers are never reused
+    cursor_.reset();
+    cursorFrame_ = -1;
 }
 
 void Timeline::dropOldest() {

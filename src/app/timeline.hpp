@@ -24,7 +24,9 @@
 //   when the user acts from frame f ...... discardAfter(f), then carry on from a copy of
 //                                          seek(f): the frames after f are another future now
 // Edits made while paused on the latest frame replace that frame's stored state (the frame
-// before still shows the past); undoing an edit is the undo history's job, not this.
+// before still shows the past); undoing an edit is the undo history's job, not this. A world
+// whose clock went back (reset to the scene as loaded, another scene opened) starts a new
+// history, numbered on from the old one: stepping back does not cross a reset (undo does).
 //
 // record() checks what it is told: if world.time() is not the last frame's time plus the
 // reported steps, or the particle count changed with no edit reported, something changed the
@@ -120,6 +122,8 @@ class Timeline {
     /// Takes a frame's steps and keyframe out of the accounting (and frees them).
     void forget(Frame& f);
     void dropOldest();
+    /// Forgets every frame: the world's clock went back.
+    void restart();
     void trim();
 
     TimelineSettings settings_;

@@ -252,6 +252,23 @@ TEST(Timeline, ActingFromThePastDiscardsTheOldFuture) {
     EXPECT_FALSE(identical(timeline.seek(60), ref[60]));  // the new future, not the old one
 }
 
+TEST(Timeline, AResetStartsANewHistory) {
+    const World loaded = gas(StepMode::Exact);
+    World world = loaded;
+    Timeline timeline = sparseTimeline(world);
+    run(world, timeline, 30, noEdits);
+    world = loaded;  // R: the scene as loaded, at time 0
+    timeline.edited();
+    EXPECT_EQ(timeline.record(world), 30);
+    EXPECT_EQ(timeline.firstFrame(), 30);
+    EXPECT_EQ(timeline.coveredSeconds(), 0.0);
+    const std::vector<World> after = run(world, timeline, 10, noEdits);
+    EXPECT_EQ(timeline.lastFrame(), 40);
+    EXPECT_TRUE(identical(timeline.seek(35), after[4]));
+    EXPECT_THROW(timeline.seek(29), std::out_of_range);
+    EXPECT_EQ(timeline.frameAt(0.0), 30);
+}
+
 TEST(Timeline, AChangeNobodyReportedIsStillRecordedRight) {
     World world = gas(StepMode::Discrete);
     Timeline timeline = sparseTimeline(world);
