@@ -13,11 +13,11 @@
 // Counters: memory_MB (Timeline::memoryBytes after the run), covered_s (seconds of history
 // held), keyframes, spacing_s (between scheduled keyframes), step_back_ms (CPU time of one
 // step back, mean over the pass), worst_ms (CPU time of the slowest step back of the pass),
-// step_back_wall_ms (mean wall time: what the user waits on this machine), replayed_max (most frames one step back
-// re-simulated), record_us (CPU time Timeline::record added to a frame, mean), frame_ms (CPU
-// time of a frame's steps, mean, for scale; one thread), rss_growth_MB (how much the process's resident memory grew over the
-// recorded run: the world, the timeline and allocator slack, a check on memory_MB). Wall-clock
-// figures: on a loaded machine compare ratios.
+// step_back_wall_ms (mean wall time: what the user waits on this machine), replayed_max (most
+// frames one step back re-simulated), record_us (CPU time Timeline::record added to a frame, mean),
+// frame_ms (CPU time of a frame's steps, mean, for scale; one thread), rss_growth_MB (how much the
+// process's resident memory grew over the recorded run: the world, the timeline and allocator
+// slack, a check on memory_MB). Wall-clock figures: on a loaded machine compare ratios.
 
 #include <benchmark/benchmark.h>
 

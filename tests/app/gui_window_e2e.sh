@@ -21,8 +21,8 @@ done
 APP_PID=""
 XVFB_PID=""
 cleanup() {
-    [[ -n "$APP_PID" ]] && kill "$APP_PID" 2>/dev/null || true
-    [[ -n "$XVFB_PID" ]] && kill "$XVFB_PID" 2>/dev/null || true
+    if [[ -n "$APP_PID" ]]; then kill "$APP_PID" 2>/dev/null || true; fi
+    if [[ -n "$XVFB_PID" ]]; then kill "$XVFB_PID" 2>/dev/null || true; fi
     wait 2>/dev/null || true
 }
 trap cleanup EXIT
@@ -42,7 +42,7 @@ wait_log() {  # wait_log REGEX
     done
 }
 
-# shellcheck source=../e2e/xvfb.sh
+# shellcheck source-path=SCRIPTDIR source=../e2e/xvfb.sh
 source "$HERE/../e2e/xvfb.sh"
 start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

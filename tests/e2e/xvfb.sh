@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the end-to-end scripts: start_xvfb LOGFILE starts a private Xvfb on a random free
 # display, exports DISPLAY and sets XVFB_PID (the caller kills it). Returns 1 when none starts.
 # A random high display number, not Xvfb -displayfd: servers started at the same moment with
