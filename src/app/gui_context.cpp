@@ -84,7 +84,8 @@ void GuiContext::loadFont(const GuiOptions& options, float pixelScale) {
     }
     ImGuiIO& io = ImGui::GetIO();
     ImFontConfig config;
-    config.OversampleH = 2;
+    config.OversampleH = 1;
+    config.PixelSnapH = true;
     if (io.Fonts->AddFontFromFileTTF(options.font.string().c_str(), options.fontPixels * pixelScale,
                                      &config) == nullptr) {
         throw std::runtime_error("GuiContext: cannot load font " + options.font.string());

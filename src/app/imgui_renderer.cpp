@@ -35,6 +35,43 @@ bool clipRect(const ImVec4& clip, ImVec2 origin, ImVec2 scale, int targetW, int 
     return true;
 }
 
+bool sameColor(const SDL_Color& a, const SDL_Color& b) {
+    return a.r == b.r && a.g == b.g && a.b == b.b && a.a == b.a;
+}
+
+bool isWhole(float v) {
+    return v == std::floor(v);
+}
+
+// The two triangles (a, b, c), (a, c, d) ImGui's PrimRect and PrimRectUV make for an
+// axis-aligned rectangle of one colour (backgrounds, frames, glyphs, images): a at the top left,
+// b top right, c bottom right, d bottom left. Only rectangles on whole pixels are taken, so a
+// rectangle fill covers exactly the pixels the triangles would. Returns the a and c vertices.
+bool rectAt(const SDL_Vertex* v, const ImDrawIdx* i, const SDL_Vertex*& a, const SDL_Vertex*& c) {
+    if (i[3] != i[0] || i[4] != i[2]) return false;
+    const SDL_Vertex &va = v[i[0]], &vb = v[i[1]], &vc = v[i[2]], &vd = v[i[5]];
+    const SDL_FPoint &pa = va.position, &pb = vb.position, &pc = vc.position, &pd = vd.position;
+    if (pa.y != pb.y || pb.x != pc.x || pc.y != pd.y || pd.x != pa.x) return false;
+    if (!(pa.x < pc.x && pa.y < pc.y)) return false;
+    if (!isWhole(pa.x) || !isWhole(pa.y) || !isWhole(pc.x) || !isWhole(pc.y)) return false;
+    if (!sameColor(va.color, vb.color) || !sameColor(va.color, vc.color) ||
+        !sameColor(va.color, vd.color)) {
+        return false;
+    }
+    const SDL_FPoint &ta = va.tex_coord, &tb = vb.tex_coord, &tc = vc.tex_coord, &td = vd.tex_coord;
+    if (ta.y != tb.y || tb.x != tc.x || tc.y != td.y || td.x != ta.x) return false;
+    a = &va;
+    c = &vc;
+    return true;
+}
+
+// `uv` × `size` when that is a whole number of texels (to rounding), else -1.
+int texel(float uv, int size) {
+    const float t = uv * static_cast<float>(size);
+    const float r = std::round(t);
+    return std::abs(t - r) < 1e-3f ? static_cast<int>(r) : -1;
+}
+
 }  // namespace
 
 ImGuiRenderer::ImGuiRenderer(SDL_Renderer* renderer) : renderer_(renderer) {
@@ -72,6 +109,73 @@ void ImGuiRenderer::rebuildFontTexture() {
                                  std::to_string(h) + " font texture: " + reason);
     }
     atlas.SetTexID(font_);
+    white_ = SDL_FPoint{atlas.TexUvWhitePixel.x, atlas.TexUvWhitePixel.y};
+    fontW_ = w;
+    fontH_ = h;
+}
+
+bool ImGuiRenderer::drawRect(const SDL_Vertex& topLeft, const SDL_Vertex& bottomRight,
+                             SDL_Texture* texture) {
+    const SDL_Color& c = topLeft.color;
+    const SDL_FPoint &p0 = topLeft.position, &p1 = bottomRight.position;
+    const SDL_Rect dst{static_cast<int>(p0.x), static_cast<int>(p0.y),
+                       static_cast<int>(p1.x - p0.x), static_cast<int>(p1.y - p0.y)};
+    const SDL_FPoint &t0 = topLeft.tex_coord, &t1 = bottomRight.tex_coord;
+    if (texture == font_ && t0.x == white_.x && t0.y == white_.y && t1.x == white_.x &&
+        t1.y == white_.y) {
+        // An opaque fill is a copy of the colour; blending it would give the same pixels at
+        // several times the cost in SDL's software renderer.
+        SDL_SetRenderDrawBlendMode(renderer_,
+                                   c.a == 255 ? SDL_BLENDMODE_NONE : SDL_BLENDMODE_BLEND);
+        SDL_SetRenderDrawColor(renderer_, c.r, c.g, c.b, c.a);
+        return SDL_RenderFillRect(renderer_, &dst) == 0;
+    }
+    if (texture == nullptr) return false;
+    int w = fontW_, h = fontH_;
+    if (texture != font_ && SDL_QueryTexture(texture, nullptr, nullptr, &w, &h) != 0) return false;
+    const int x0 = texel(t0.x, w), y0 = texel(t0.y, h), x1 = texel(t1.x, w), y1 = texel(t1.y, h);
+    // Only an unscaled copy: SDL's scaled copy would sample differently from the geometry.
+    if (x0 < 0 || y0 < 0 || x1 - x0 != dst.w || y1 - y0 != dst.h) return false;
+    const SDL_Rect src{x0, y0, dst.w, dst.h};
+    Uint8 r = 255, g = 255, b = 255, a = 255;
+    SDL_GetTextureColorMod(texture, &r, &g, &b);
+    SDL_GetTextureAlphaMod(texture, &a);
+    SDL_SetTextureColorMod(texture, c.r, c.g, c.b);
+    SDL_SetTextureAlphaMod(texture, c.a);
+    const bool ok = SDL_RenderCopy(renderer_, texture, &src, &dst) == 0;
+    SDL_SetTextureColorMod(texture, r, g, b);
+    SDL_SetTextureAlphaMod(texture, a);
+    return ok;
+}
+
+int ImGuiRenderer::drawCommand(const SDL_Vertex* vertices, int count, const ImDrawIdx* indices,
+                               std::size_t n, SDL_Texture* texture) {
+    int failures = 0;
+    const auto geometry = [&](std::size_t from, std::size_t to) {
+        if (to == from) return;
+        failures +=
+            SDL_RenderGeometryRaw(renderer_, texture, &vertices->position.x, sizeof(SDL_Vertex),
+                                  &vertices->color, sizeof(SDL_Vertex), &vertices->tex_coord.x,
+                                  sizeof(SDL_Vertex), count, indices + from,
+                                  static_cast<int>(to - from), sizeof(ImDrawIdx)) != 0;
+    };
+    // Rectangles (a panel's background, frames, glyphs) are filled or copied as rectangles, the
+    // rest drawn as triangles, in ImGui's order: SDL's software renderer blends a textured
+    // triangle pixel by pixel, and an opaque background then costs as much as the rest.
+    std::size_t pending = 0, k = 0;
+    while (k + 6 <= n) {
+        const SDL_Vertex *a = nullptr, *c = nullptr;
+        if (rectAt(vertices, indices + k, a, c)) {
+            geometry(pending, k);
+            if (!drawRect(*a, *c, texture)) geometry(k, k + 6);
+            k += 6;
+            pending = k;
+        } else {
+            k += 3;
+        }
+    }
+    geometry(pending, n);
+    return failures;
 }
 
 int ImGuiRenderer::render(const ImDrawData& data) {
@@ -89,6 +193,10 @@ int ImGuiRenderer::render(const ImDrawData& data) {
     const bool oldClipOn = SDL_RenderIsClipEnabled(renderer_) == SDL_TRUE;
     SDL_RenderGetViewport(renderer_, &oldViewport);
     SDL_RenderGetClipRect(renderer_, &oldClip);
+    Uint8 oldR = 0, oldG = 0, oldB = 0, oldA = 0;
+    SDL_BlendMode oldBlend = SDL_BLENDMODE_NONE;
+    SDL_GetRenderDrawColor(renderer_, &oldR, &oldG, &oldB, &oldA);
+    SDL_GetRenderDrawBlendMode(renderer_, &oldBlend);
     SDL_RenderSetViewport(renderer_, nullptr);
 
     int failures = 0;
@@ -115,19 +223,17 @@ int ImGuiRenderer::render(const ImDrawData& data) {
             SDL_Rect clip{};
             if (!clipRect(cmd.ClipRect, origin, scale, targetW, targetH, clip)) continue;
             SDL_RenderSetClipRect(renderer_, &clip);
-            const SDL_Vertex* first = vertices_.data() + cmd.VtxOffset;
-            const int count = list.VtxBuffer.Size - static_cast<int>(cmd.VtxOffset);
-            const int rc = SDL_RenderGeometryRaw(
-                renderer_, static_cast<SDL_Texture*>(cmd.GetTexID()), &first->position.x,
-                sizeof(SDL_Vertex), &first->color, sizeof(SDL_Vertex), &first->tex_coord.x,
-                sizeof(SDL_Vertex), count, list.IdxBuffer.Data + cmd.IdxOffset,
-                static_cast<int>(cmd.ElemCount), sizeof(ImDrawIdx));
-            failures += rc != 0;
+            failures += drawCommand(vertices_.data() + cmd.VtxOffset,
+                                    list.VtxBuffer.Size - static_cast<int>(cmd.VtxOffset),
+                                    list.IdxBuffer.Data + cmd.IdxOffset, cmd.ElemCount,
+                                    static_cast<SDL_Texture*>(cmd.GetTexID()));
         }
     }
 
     SDL_RenderSetViewport(renderer_, &oldViewport);
     SDL_RenderSetClipRect(renderer_, oldClipOn ? &oldClip : nullptr);
+    SDL_SetRenderDrawColor(renderer_, oldR, oldG, oldB, oldA);
+    SDL_SetRenderDrawBlendMode(renderer_, oldBlend);
     return failures;
 }
 

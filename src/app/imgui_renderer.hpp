@@ -17,11 +17,11 @@
 // renderer's output size over the window size (2 on a high-DPI window); when the caller has set
 // SDL_RenderSetScale, SDL scales the geometry itself and it is not scaled twice.
 
+#include <cstddef>
 #include <vector>
 
 #include <SDL.h>
-
-struct ImDrawData;
+#include <imgui.h>
 
 namespace psb::app {
 
@@ -46,9 +46,17 @@ class ImGuiRenderer {
 
   private:
     void destroyFontTexture();
+    /// Draws one command's `n` indices (into `vertices`, `count` of them). Returns failures.
+    int drawCommand(const SDL_Vertex* vertices, int count, const ImDrawIdx* indices, std::size_t n,
+                    SDL_Texture* texture);
+    /// The rectangle from `topLeft` to `bottomRight` (one colour; texture coordinates at the two
+    /// corners) filled or copied; false when it cannot be drawn that way exactly.
+    bool drawRect(const SDL_Vertex& topLeft, const SDL_Vertex& bottomRight, SDL_Texture* texture);
 
     SDL_Renderer* renderer_;
     SDL_Texture* font_ = nullptr;
+    SDL_FPoint white_{};  // the atlas's white pixel: shapes sample only it, glyphs do not
+    int fontW_ = 0, fontH_ = 0;
     std::vector<SDL_Vertex> vertices_;  // one command list's vertices, converted
 };
 

@@ -125,6 +125,46 @@ TEST_F(ImGuiRendererTest, TextIsDrawnFromTheFontAtlas) {
     EXPECT_GT(blue, area / 3) << blue << " blue of " << area;
 }
 
+TEST_F(ImGuiRendererTest, TranslucentShapesBlendAndOpaqueOnesCover) {
+    clear();
+    gui_->beginFrame(kSize, kSize);
+    fixedWindow(ImVec2(0, 0), ImVec2(kSize, kSize));
+    ImDrawList& list = *ImGui::GetWindowDrawList();
+    list.AddRectFilled(ImVec2(0, 0), ImVec2(200, 100), IM_COL32(255, 0, 0, 255));
+    list.AddRectFilled(ImVec2(50, 0), ImVec2(150, 100), IM_COL32(0, 0, 255, 128));  // half blue
+    list.AddRectFilled(ImVec2(50.5f, 50.5f), ImVec2(60.5f, 60.5f),
+                       IM_COL32(0, 255, 0, 255));  // off the pixel grid: drawn as triangles
+    ImGui::End();
+    finish();
+    EXPECT_TRUE(same(pixel(20, 20), SDL_Color{255, 0, 0, 255})) << str(pixel(20, 20));
+    EXPECT_TRUE(same(pixel(100, 20), SDL_Color{127, 0, 128, 255}, 2)) << str(pixel(100, 20));
+    EXPECT_TRUE(same(pixel(55, 55), SDL_Color{0, 255, 0, 255})) << str(pixel(55, 55));
+}
+
+TEST_F(ImGuiRendererTest, TextTakesItsColour) {
+    clear();
+    gui_->beginFrame(kSize, kSize);
+    fixedWindow(ImVec2(20, 20), ImVec2(240, 160));
+    ImGui::TextColored(ImVec4(1.f, 1.f, 0.f, 1.f), "Energy kept");
+    const ImVec2 t0 = ImGui::GetItemRectMin(), t1 = ImGui::GetItemRectMax();
+    ImGui::End();
+    finish();
+    int yellow = 0, white = 0;
+    for (int y = static_cast<int>(t0.y); y < static_cast<int>(t1.y); ++y) {
+        for (int x = static_cast<int>(t0.x); x < static_cast<int>(t1.x); ++x) {
+            const SDL_Color c = pixel(x, y);
+            yellow += c.r > 200 && c.g > 200 && c.b < 60;
+            white += c.r > 200 && c.g > 200 && c.b > 200;
+        }
+    }
+    EXPECT_GT(yellow, 30);
+    EXPECT_EQ(white, 0);
+    Uint8 r = 0, g = 0, b = 0, a = 0;
+    SDL_GetTextureColorMod(gui_->renderer().fontTexture(), &r, &g, &b);
+    SDL_GetTextureAlphaMod(gui_->renderer().fontTexture(), &a);
+    EXPECT_EQ(r + g + b + a, 4 * 255) << "the atlas's colour modulation is put back";
+}
+
 TEST_F(ImGuiRendererTest, DrawingStaysInsideTheWindowsClipRect) {
     clear();
     gui_->beginFrame(kSize, kSize);
@@ -220,9 +260,11 @@ TEST_F(ImGuiRendererTest, ImageShowsTheSdlTextureItNames) {
     EXPECT_TRUE(same(pixel(static_cast<int>(i0.x) + 70, static_cast<int>(i0.y) + 32), kPanelBlue));
 }
 
-TEST_F(ImGuiRendererTest, CallersViewportAndClipRectAreRestored) {
+TEST_F(ImGuiRendererTest, CallersClipRectDrawColourAndBlendModeAreRestored) {
     const SDL_Rect clip{5, 6, 70, 80};
     SDL_RenderSetClipRect(sdl_, &clip);
+    SDL_SetRenderDrawColor(sdl_, 1, 2, 3, 4);
+    SDL_SetRenderDrawBlendMode(sdl_, SDL_BLENDMODE_ADD);
     gui_->beginFrame(kSize, kSize);
     fixedWindow(ImVec2(20, 20), ImVec2(100, 100));
     ImGui::Button("Go");
@@ -235,6 +277,16 @@ TEST_F(ImGuiRendererTest, CallersViewportAndClipRectAreRestored) {
     EXPECT_EQ(after.y, clip.y);
     EXPECT_EQ(after.w, clip.w);
     EXPECT_EQ(after.h, clip.h);
+
+    Uint8 r = 0, g = 0, b = 0, a = 0;
+    SDL_GetRenderDrawColor(sdl_, &r, &g, &b, &a);
+    EXPECT_EQ(r, 1);
+    EXPECT_EQ(g, 2);
+    EXPECT_EQ(b, 3);
+    EXPECT_EQ(a, 4);
+    SDL_BlendMode mode = SDL_BLENDMODE_NONE;
+    SDL_GetRenderDrawBlendMode(sdl_, &mode);
+    EXPECT_EQ(mode, SDL_BLENDMODE_ADD);
 
     SDL_RenderSetClipRect(sdl_, nullptr);
     gui_->beginFrame(kSize, kSize);
