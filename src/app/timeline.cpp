@@ -20,7 +20,44 @@ Timeline::Timeline(const TimelineSettings& settings) : settings_(settings) {
 }
 
 void Timeline::stepped(double dt) {
-    pendingSteps_.push_back(dt);
+    pending_.push_back({Op::Kind::Step, {}, dt, 0.0});
+}
+
+void Timeline::setPosition(World& world, ParticleId id, const Vec2& position) {
+    world.setPosition(id, position);
+    pending_.push_back({Op::Kind::SetPosition, id, position.x(), position.y()});
+    pendingReplayable_ = true;
+}
+
+void Timeline::setVelocity(World& world, ParticleId id, const Vec2& velocity) {
+    world.setVelocity(id, velocity);
+    pending_.push_back({Op::Kind::SetVelocity, id, velocity.x(), velocity.y()});
+    pendingReplayable_ = true;
+}
+
+void Timeline::setKinematic(World& world, ParticleId id, bool kinematic) {
+    world.setKinematic(id, kinematic);
+    pending_.push_back({Op::Kind::SetKinematic, id, kinematic ? 1.0 : 0.0, 0.0});
+    pendingReplayable_ = true;
+}
+
+void Timeline::replay(World& world, const std::vector<Op>& log) {
+    for (const Op& op : log) {
+        switch (op.kind) {
+            case Op::Kind::Step:
+                world.step(op.a);
+                break;
+            case Op::Kind::SetPosition:
+                world.setPosition(op.id, Vec2(op.a, op.b));
+                break;
+            case Op::Kind::SetVelocity:
+                world.setVelocity(op.id, Vec2(op.a, op.b));
+                break;
+            case Op::Kind::SetKinematic:
+                world.setKinematic(op.id, op.a != 0.0);
+                break;
+        }
+    }
 }
 
 void Timeline::edited() {
@@ -30,8 +67,9 @@ void Timeline::edited() {
 bool Timeline::matchesReported(const World& world) const {
     const Frame& last = frames_.back();
     double t = last.time;
-    for (double dt : pendingSteps_)
-        t += dt;  // the additions World::step makes, in its order: equal bit for bit
+    for (const Op& op : pending_) {
+        if (op.kind == Op::Kind::Step) t += op.a;  // World::step's additions, in its order
+    }
     return t == world.time() && (pendingEdit_ || world.size() == last.particles);
 }
 
@@ -47,8 +85,8 @@ std::int64_t Timeline::record(const World& world) {
     if (!frames_.empty() && world.time() < frames_.back().time) restart();
     const bool honest = frames_.empty() || matchesReported(world);
     const bool advanced = !frames_.empty() && world.time() != frames_.back().time;
-    if (!frames_.empty() && !advanced && !pendingEdit_ && honest) {
-        pendingSteps_.clear();
+    if (!frames_.empty() && !advanced && !pendingEdit_ && !pendingReplayable_ && honest) {
+        pending_.clear();
         return lastFrame();
     }
     if (!honest) ++unreported_;
@@ -61,7 +99,8 @@ std::int64_t Timeline::record(const World& world) {
                         settings_.horizonSeconds / static_cast<double>(slots > 4 ? slots - 3 : 1));
 
     if (!frames_.empty() && !advanced) {
-        // Edits while paused: the latest frame now ends in the edited state.
+        // Edits while paused (a particle dragged too): the latest frame now ends in the edited
+        // state.
         Frame& f = frames_.back();
         forget(f);
         f.particles = world.size();
@@ -76,20 +115,21 @@ std::int64_t Timeline::record(const World& world) {
         if (due) {
             storeKey(f, world);
         } else {
-            f.steps = pendingSteps_;
-            bytes_ += sizeof(double) * f.steps.capacity();
+            f.log = pending_;
+            bytes_ += sizeof(Op) * f.log.capacity();
         }
         frames_.push_back(std::move(f));
     }
-    pendingSteps_.clear();
+    pending_.clear();
     pendingEdit_ = false;
+    pendingReplayable_ = false;
     trim();
     return lastFrame();
 }
 
 void Timeline::forget(Frame& f) {
-    bytes_ -= sizeof(double) * f.steps.capacity();
-    f.steps = {};
+    bytes_ -= sizeof(Op) * f.log.capacity();
+    f.log = {};
     if (f.key) {
         bytes_ -= f.keyBytes;
         --keyframes_;
@@ -170,10 +210,8 @@ const World& Timeline::seek(std::int64_t frame) {
         cursor_ = std::make_unique<World>(*frames_[key].key);
     }
     lastReplayed_ = target - at;
-    for (std::size_t j = at + 1; j <= target; ++j) {
-        for (double dt : frames_[j].steps)
-            cursor_->step(dt);
-    }
+    for (std::size_t j = at + 1; j <= target; ++j)
+        replay(*cursor_, frames_[j].log);
     cursorFrame_ = frame;
     return *cursor_;
 }
@@ -188,8 +226,9 @@ void Timeline::discardAfter(std::int64_t frame) {
         cursor_.reset();
         cursorFrame_ = -1;
     }
-    pendingSteps_.clear();
+    pending_.clear();
     pendingEdit_ = false;
+    pendingReplayable_ = false;
     for (std::size_t i = frames_.size(); i-- > 0;) {
         if (frames_[i].key) {
             lastKeyTime_ = frames_[i].time;
@@ -199,8 +238,7 @@ void Timeline::discardAfter(std::int64_t frame) {
 }
 
 std::size_t Timeline::memoryBytes() const {
-    std::size_t bytes =
-        bytes_ + sizeof(Frame) * frames_.size() + sizeof(double) * pendingSteps_.capacity();
+    std::size_t bytes = bytes_ + sizeof(Frame) * frames_.size() + sizeof(Op) * pending_.capacity();
     // The rebuilt world: its state and its step scratch (World::memoryBytes counts the arrays
     // again, so this errs high).
     if (cursor_) bytes += cursor_->stateBytes() + cursor_->memoryBytes();

@@ -4,18 +4,23 @@
 //
 // How. The step is deterministic and a World copy carries all of the world's state (the exact
 // mode's event state included, world.hpp), so the past is stored as keyframes (copies of the
-// world) and, for the frames between them, the list of step lengths that led there. A past
-// frame is rebuilt by copying the keyframe at or before it and re-running those steps: the
-// result is the state the world had then, bit for bit. Edits (anything that changes the world
-// other than a step) are not replayed: the frame they happen in is stored as a keyframe.
+// world) and, for the frames between them, a log of what led there: the steps, and the edits
+// made through the timeline's own setters (a held particle moved, pushed, let go). A past frame
+// is rebuilt by copying the keyframe at or before it and replaying the log: the same calls on
+// the same state give the state the world had then, bit for bit. Any other edit is not
+// replayed: the frame it happens in is stored as a keyframe.
 //
 //   frames:   K  .  .  .  .  K  .  .  E  .  .  K  .  .  .      K keyframe (every `spacing` s)
-//   steps:       ▲ each "." holds its dt list    E keyframe forced by an edit
-//   seek(f):  copy the K at or before f, step through the frames up to f
+//   log:         ▲ each "." holds its steps and    E keyframe forced by an edit
+//                  replayable edits, in order
+//   seek(f):  copy the K at or before f, replay the frames' logs up to f
 //
 // What the session calls:
 //   after each world.step(dt) ............ stepped(dt)
-//   after any other change to the world .. edited()       (spawn, delete, drag, edit, settings,
+//   to move, push or hold a particle ..... setPosition / setVelocity / setKinematic(world, ...)
+//                                          instead of World's own (a drag then costs a few bytes
+//                                          a step, not a copy of the world a frame)
+//   after any other change to the world .. edited()       (spawn, delete, edit, settings,
 //                                                          clear, reset, load: anything)
 //   at the end of every frame ............ record(world)  (nothing is stored for a frame in
 //                                                          which nothing happened)
@@ -31,7 +36,8 @@
 // record() checks what it is told: if world.time() is not the last frame's time plus the
 // reported steps, or the particle count changed with no edit reported, something changed the
 // world unreported; the frame is then stored as a keyframe (so the history stays right) and
-// unreportedChanges() counts it.
+// unreportedChanges() counts it. A change made with World's own setters and not reported is
+// not seen: the history would then replay without it.
 //
 // Memory budget (the rule). Everything the timeline holds counts: keyframes (World::stateBytes
 // each), the step lists, and the one rebuilt world of seek(). Keyframes are spaced so that
@@ -44,7 +50,8 @@
 // per second it bounds a step back to re-simulating 5 frames when the budget allows)
 // and after every record the oldest frames are dropped while the history would still reach
 // back `horizon` seconds without them, then while the budget is exceeded (which only frequent
-// edits cause: each is a keyframe). coveredSeconds() says how far back the history reaches.
+// edits through edited() cause: each is a keyframe). coveredSeconds() says how far back the
+// history reaches.
 // A step back costs one keyframe copy plus at most `spacing` seconds of re-simulation.
 
 #include <cstddef>
@@ -69,8 +76,14 @@ class Timeline {
 
     /// The world was advanced by world.step(dt).
     void stepped(double dt);
-    /// The world was changed other than by a step.
+    /// The world was changed other than by a step or the setters below.
     void edited();
+
+    /// World::setPosition / setVelocity / setKinematic, logged so that a past frame replays
+    /// them instead of needing a keyframe. They throw (and log nothing) as World's do.
+    void setPosition(World& world, ParticleId id, const Vec2& position);
+    void setVelocity(World& world, ParticleId id, const Vec2& velocity);
+    void setKinematic(World& world, ParticleId id, bool kinematic);
     /// Ends a frame: stores what happened since the last record (nothing, when nothing did).
     /// Returns the index of the latest frame.
     std::int64_t record(const World& world);
@@ -108,10 +121,17 @@ class Timeline {
     [[nodiscard]] std::size_t lastSeekReplayed() const { return lastReplayed_; }
 
   private:
+    // One logged call: a step (a = dt) or a replayable edit (a, b = the vector or the flag).
+    struct Op {
+        enum class Kind : std::uint8_t { Step, SetPosition, SetVelocity, SetKinematic };
+        Kind kind = Kind::Step;
+        ParticleId id{};
+        double a = 0.0, b = 0.0;
+    };
     struct Frame {
         double time = 0.0;                 // world.time() at the end of the frame
         std::size_t particles = 0;         // world.size() then
-        std::vector<double> steps;         // the dt of each step since the previous frame
+        std::vector<Op> log;               // what happened since the previous frame, in order
         std::unique_ptr<const World> key;  // a keyframe's copy of the world
         std::size_t keyBytes = 0;
     };
@@ -119,7 +139,7 @@ class Timeline {
     [[nodiscard]] std::size_t indexOf(std::int64_t frame) const;
     [[nodiscard]] bool matchesReported(const World& world) const;
     void storeKey(Frame& f, const World& world);
-    /// Takes a frame's steps and keyframe out of the accounting (and frees them).
+    /// Takes a frame's log and keyframe out of the accounting (and frees them).
     void forget(Frame& f);
     void dropOldest();
     /// Forgets every frame: the world's clock went back.
@@ -129,7 +149,10 @@ class Timeline {
     TimelineSettings settings_;
     std::deque<Frame> frames_;
     std::int64_t first_ = 0;
-    std::vector<double> pendingSteps_;
+    static void replay(World& world, const std::vector<Op>& log);
+
+    std::vector<Op> pending_;         // logged since the last record
+    bool pendingReplayable_ = false;  // pending_ holds edits, not only steps
     bool pendingEdit_ = false;
     double lastKeyTime_ = 0.0;
     double spacing_ = 0.0;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <random>
 #include <stdexcept>
@@ -17,6 +18,8 @@
 
 namespace psb::app {
 namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 template <typename T>
 bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
@@ -191,6 +194,41 @@ TEST_P(TimelineModes, EditsBetweenFramesAreRecorded) {
     EXPECT_EQ(timeline.seek(90).def().restitution, 0.7);
 }
 
+TEST_P(TimelineModes, ADragThroughTheTimelinesSettersIsReplayedWithoutKeyframes) {
+    World world = gas(GetParam());
+    Timeline timeline = sparseTimeline(world);
+    const ParticleId held = world.ids()[3];
+    std::vector<World> ref;
+    double accumulator = 0.0;
+    for (int f = 0; f < 120; ++f) {
+        if (f == 10) timeline.setKinematic(world, held, true);
+        accumulator += 1.0 / 60.0;
+        while (accumulator >= world.solver().dt) {
+            if (f >= 10 && f < 90) {  // the hand moves the held particle before every step
+                const double t = world.time();
+                timeline.setPosition(world, held, Vec2(20.0 + 8.0 * std::sin(3.0 * t), 20.0));
+                timeline.setVelocity(world, held, Vec2(24.0 * std::cos(3.0 * t), 0.0));
+            }
+            world.step();
+            timeline.stepped(world.solver().dt);
+            accumulator -= world.solver().dt;
+        }
+        if (f == 90) {  // let go with a fling
+            timeline.setKinematic(world, held, false);
+            timeline.setVelocity(world, held, Vec2(0.0, -30.0));
+        }
+        timeline.record(world);
+        ref.push_back(world);
+    }
+    EXPECT_EQ(timeline.unreportedChanges(), 0u);
+    EXPECT_LE(timeline.keyframeCount(), 10u) << "the drag needed no keyframes";
+    EXPECT_TRUE(ref[50].isKinematic(held));
+    for (std::int64_t f = timeline.lastFrame(); f >= 0; --f) {
+        ASSERT_TRUE(identical(timeline.seek(f), ref[static_cast<std::size_t>(f)]))
+            << "frame " << f << " in " << toString(GetParam());
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllModes, TimelineModes,
                          ::testing::Values(StepMode::Discrete, StepMode::Substep, StepMode::Exact),
                          [](const auto& p) { return std::string(toString(p.param)); });
@@ -269,6 +307,23 @@ TEST(Timeline, AResetStartsANewHistory) {
     EXPECT_EQ(timeline.frameAt(0.0), 30);
 }
 
+TEST(Timeline, ADragWhilePausedChangesTheLatestFrame) {
+    World world = gas(StepMode::Exact);
+    Timeline timeline = sparseTimeline(world);
+    const std::vector<World> ref = run(world, timeline, 20, noEdits);
+    const ParticleId held = world.ids()[0];
+    timeline.setKinematic(world, held, true);
+    for (int k = 0; k < 5; ++k) {  // paused: no steps, the particle follows the hand
+        timeline.setPosition(world, held, Vec2(5.0 + k, 5.0));
+        EXPECT_EQ(timeline.record(world), 19);
+    }
+    EXPECT_TRUE(identical(timeline.seek(19), world));
+    EXPECT_TRUE(identical(timeline.seek(18), ref[18]));
+    EXPECT_THROW(timeline.setPosition(world, held, Vec2(kNaN, 0.0)), std::exception);
+    EXPECT_EQ(timeline.record(world), 19);
+    EXPECT_TRUE(identical(timeline.seek(19), world)) << "a refused edit is not logged";
+}
+
 TEST(Timeline, AChangeNobodyReportedIsStillRecordedRight) {
     World world = gas(StepMode::Discrete);
     Timeline timeline = sparseTimeline(world);
@@ -341,6 +396,23 @@ TEST(Timeline, EditsEveryFrameShortenTheHistoryNotTheBudget) {
     }
     EXPECT_LT(timeline.coveredSeconds(), s.horizonSeconds);
     EXPECT_GT(timeline.coveredSeconds(), 0.3);
+}
+
+TEST(Timeline, ATenSecondDragThroughTheSettersKeepsTheHorizon) {
+    World world = gas(StepMode::Discrete, 1000);
+    world.setBox(120.0, 120.0);
+    const TimelineSettings s{.horizonSeconds = 10.0, .budgetBytes = 3u * 1000 * 1000};
+    Timeline timeline(s);
+    const ParticleId held = world.ids()[0];
+    timeline.setKinematic(world, held, true);
+    for (int f = 0; f < 720; ++f) {  // 12 s, the particle held and moved every step
+        timeline.setPosition(world, held, Vec2(20.0 + 0.1 * (f % 100), 20.0));
+        world.step(1.0 / 60.0);
+        timeline.stepped(1.0 / 60.0);
+        timeline.record(world);
+        ASSERT_LE(timeline.memoryBytes(), s.budgetBytes) << "frame " << f;
+    }
+    EXPECT_GE(timeline.coveredSeconds(), s.horizonSeconds);
 }
 
 TEST(Timeline, RefusesWhatItDoesNotHold) {
