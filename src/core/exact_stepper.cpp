@@ -606,7 +606,6 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
 }
 
 std::size_t ExactStepper::memoryBytes() const {
-    const ParticleArrays& s = snapshot_;
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
@@ -615,9 +614,6 @@ std::size_t ExactStepper::memoryBytes() const {
     // pointer per bucket.
     bytes += overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(double) + sizeof(void*)) +
              overlapContact_.bucket_count() * sizeof(void*);
-    bytes += sizeof(double) * (s.x.capacity() + s.y.capacity() + s.vx.capacity() + s.vy.capacity() +
-                               s.invMass.capacity() + s.radius.capacity() + s.mass.capacity()) +
-             sizeof(Color) * s.color.capacity() + sizeof(ParticleId) * s.id.capacity();
     return bytes;
 }
 
