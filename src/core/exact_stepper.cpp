@@ -614,6 +614,9 @@ std::size_t ExactStepper::memoryBytes() const {
     // pointer per bucket.
     bytes += overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(double) + sizeof(void*)) +
              overlapContact_.bucket_count() * sizeof(void*);
+    // A copy of the particle arrays as the last step left them (to see changes made between
+    // steps), counted by particle so that this errs high, not low, where none is kept.
+    bytes += bodies_.capacity() * (7 * sizeof(double) + sizeof(Color) + sizeof(ParticleId));
     return bytes;
 }
 

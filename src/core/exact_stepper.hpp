@@ -155,9 +155,9 @@ class ExactStepper {
     /// indices of `p`; times restart from 0 at each rebuild.
     void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
 
-    /// Bytes held by the event state's per-particle records, cells, queue and placed overlaps:
-    /// most of what a copy of a world in this mode carries besides its own arrays (smaller
-    /// scratch and bookkeeping vectors are left out, so this is a lower bound).
+    /// Bytes held by the event state (per-particle records, cells, queue, placed overlaps, the
+    /// arrays as the last step left them): what a copy of a world in this mode carries besides
+    /// its own arrays. Small bookkeeping vectors are left out.
     [[nodiscard]] std::size_t memoryBytes() const;
 
     /// Events of each kind processed by the last step.
