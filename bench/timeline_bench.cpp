@@ -78,14 +78,15 @@ Recorded& recorded(psb::StepMode mode) {
     if (mode != psb::StepMode::Exact) w.setGravity(psb::Vec2(0.0, 9.81));
     w.setSolver({.mode = mode, .dt = psb::bench::kDt, .substeps = 4});
     for (int k = 0; k < 20; ++k)
-        w.step();  // the random placement's overlaps are separated before recording starts
+        w.step(w.solver()
+                   .dt);  // the random placement's overlaps are separated before recording starts
     constexpr int kFrames = 12 * 60;
     double accumulator = 0.0, stepMs = 0.0, recordMs = 0.0;
     for (int f = 0; f < kFrames; ++f) {
         accumulator += 1.0 / 60.0;
         const double c0 = cpuMs();
         while (accumulator >= w.solver().dt) {
-            w.step();
+            w.step(w.solver().dt);
             slot->timeline.stepped(w.solver().dt);
             accumulator -= w.solver().dt;
         }

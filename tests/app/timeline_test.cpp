@@ -75,7 +75,7 @@ World gas(StepMode mode, int n = 150) {
 std::int64_t frame(World& world, Timeline& timeline, double& accumulator) {
     accumulator += 1.0 / 60.0;
     while (accumulator >= world.solver().dt) {
-        world.step();
+        world.step(world.solver().dt);
         timeline.stepped(world.solver().dt);
         accumulator -= world.solver().dt;
     }
@@ -140,7 +140,7 @@ bool userEdits(World& w, int f) {
 /// rebuilding a frame re-simulates up to 15 frames.
 Timeline sparseTimeline(const World& world) {
     World probe = world;
-    probe.step();  // the exact mode's event state exists after a step
+    probe.step(probe.solver().dt);  // the exact mode's event state exists after a step
     return Timeline({.horizonSeconds = 10.0, .budgetBytes = 40 * probe.stateBytes()});
 }
 
@@ -171,8 +171,8 @@ TEST_P(TimelineModes, ARebuiltFrameStepsOnLikeTheWorldDid) {
         World a = timeline.seek(f);
         World b = ref[static_cast<std::size_t>(f)];
         for (int k = 0; k < 40; ++k) {
-            a.step();
-            b.step();
+            a.step(a.solver().dt);
+            b.step(b.solver().dt);
         }
         EXPECT_TRUE(identical(a, b)) << "frame " << f << " in " << toString(GetParam());
     }
@@ -209,7 +209,7 @@ TEST_P(TimelineModes, ADragThroughTheTimelinesSettersIsReplayedWithoutKeyframes)
                 timeline.setPosition(world, held, Vec2(20.0 + 8.0 * std::sin(3.0 * t), 20.0));
                 timeline.setVelocity(world, held, Vec2(24.0 * std::cos(3.0 * t), 0.0));
             }
-            world.step();
+            world.step(world.solver().dt);
             timeline.stepped(world.solver().dt);
             accumulator -= world.solver().dt;
         }
@@ -328,11 +328,11 @@ TEST(Timeline, AChangeNobodyReportedIsStillRecordedRight) {
     World world = gas(StepMode::Discrete);
     Timeline timeline = sparseTimeline(world);
     std::vector<World> ref = run(world, timeline, 10, noEdits);
-    world.step();  // not reported
+    world.step(world.solver().dt);  // not reported
     timeline.record(world);
     ref.push_back(world);
     world.add({.position = {5.0, 5.0}});  // not reported either
-    world.step();
+    world.step(world.solver().dt);
     timeline.stepped(world.solver().dt);
     timeline.record(world);
     ref.push_back(world);

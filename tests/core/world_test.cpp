@@ -179,22 +179,22 @@ TEST(World, ACopyStepsBitForBitLikeTheOriginalInEveryMode) {
     for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         World a = denseGas(mode);
         for (int k = 0; k < 30; ++k)
-            a.step();
+            a.step(a.solver().dt);
         World b = a;
         EXPECT_EQ(test::stateHash(b), test::stateHash(a)) << toString(mode);
         for (int k = 0; k < 60; ++k) {
-            a.step();
-            b.step();
+            a.step(a.solver().dt);
+            b.step(b.solver().dt);
         }
         EXPECT_GT(a.counters().collisions, 100u) << toString(mode);
         EXPECT_EQ(test::stateHash(b), test::stateHash(a)) << toString(mode);
         EXPECT_EQ(b.time(), a.time());
         // Assignment too, onto a world that had stepped in another mode.
         World c = denseGas(StepMode::Discrete);
-        c.step();
+        c.step(c.solver().dt);
         c = a;
-        a.step();
-        c.step();
+        a.step(a.solver().dt);
+        c.step(c.solver().dt);
         EXPECT_EQ(test::stateHash(c), test::stateHash(a)) << toString(mode);
     }
 }
@@ -203,7 +203,7 @@ TEST(World, StateBytesCountTheExactModesEventState) {
     World w = denseGas(StepMode::Exact);
     const std::size_t before = w.stateBytes();
     EXPECT_GE(before, 400u * (7 * sizeof(double) + sizeof(Color) + sizeof(ParticleId)));
-    w.step();
+    w.step(w.solver().dt);
     EXPECT_GT(w.stateBytes(), before + 400u * 128u);  // two 64-byte lines per particle at least
 }
 
