@@ -9,7 +9,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libsdl2-dev libsdl2-ttf-dev libstb-dev
+  libeigen3-dev libsdl2-dev libsdl2-ttf-dev libstb-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev
   libtbb-dev libbox2d-dev

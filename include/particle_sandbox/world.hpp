@@ -32,6 +32,8 @@ class World {
   public:
     explicit World(const WorldDef& def = {}, const SolverSettings& solver = {});
     ~World();
+    /// A copy is the same world: stepped alike, it stays bit-identical to the original (the
+    /// exact mode's event state is copied too, so the copy does not rebuild it).
     World(const World& other);
     World& operator=(const World& other);
     World(World&&) noexcept;
@@ -108,6 +110,9 @@ class World {
     void reserve(std::size_t n);
     /// Bytes held by the particle arrays, the id table and the step's scratch (capacities).
     [[nodiscard]] std::size_t memoryBytes() const;
+    /// Bytes a copy of this world holds (a copy carries state, not scratch): the particle
+    /// arrays, the id table and, once the exact mode has stepped, its event state.
+    [[nodiscard]] std::size_t stateBytes() const;
 
     [[nodiscard]] const StepProfile& profile() const { return profile_; }
     [[nodiscard]] const StepCounters& counters() const { return counters_; }

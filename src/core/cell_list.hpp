@@ -61,6 +61,10 @@ class CellList {
 
     /// Empties every cell, keeping the geometry.
     void clearMembers();
+    /// Bytes held (capacities of the cell heads and the membership links).
+    [[nodiscard]] std::size_t memoryBytes() const {
+        return sizeof(std::uint32_t) * head_.capacity() + sizeof(Link) * link_.capacity();
+    }
     void insert(std::uint32_t i, std::uint32_t cell);
     void erase(std::uint32_t i);
     [[nodiscard]] std::uint32_t head(std::uint32_t cell) const { return head_[cell]; }

@@ -24,6 +24,7 @@
 // Ties. The heap orders entries by (time, key): events at the same time are handled in
 // ascending key order, so the same state always gives the same sequence.
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -61,6 +62,15 @@ class EventQueue {
         return best;
     }
     [[nodiscard]] double bucketWidth() const { return width_; }
+    /// Bytes held (capacities of the records, the heap and the bucket lists).
+    [[nodiscard]] std::size_t memoryBytes() const {
+        std::size_t bytes = sizeof(Record) * rec_.capacity() + sizeof(Entry) * heap_.capacity() +
+                            sizeof(std::uint32_t) * overflow_.capacity() +
+                            sizeof(std::vector<std::uint32_t>) * buckets_.capacity();
+        for (const auto& b : buckets_)
+            bytes += sizeof(std::uint32_t) * b.capacity();
+        return bytes;
+    }
 
   private:
     enum class Where : std::uint8_t { Nowhere, Heap, Bucket, Overflow };

@@ -605,4 +605,19 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     sync(p, tEnd);
 }
 
+std::size_t ExactStepper::memoryBytes() const {
+    std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
+                        sizeof(std::uint32_t) * order_.capacity() +
+                        sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
+                        queue_.memoryBytes();
+    // An unordered_map node holds the key, the value and the next pointer; the table one
+    // pointer per bucket.
+    bytes += overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(double) + sizeof(void*)) +
+             overlapContact_.bucket_count() * sizeof(void*);
+    // A copy of the particle arrays as the last step left them (to see changes made between
+    // steps), counted by particle so that this errs high, not low, where none is kept.
+    bytes += bodies_.capacity() * (7 * sizeof(double) + sizeof(Color) + sizeof(ParticleId));
+    return bytes;
+}
+
 }  // namespace psb::exact

@@ -155,6 +155,11 @@ class ExactStepper {
     /// indices of `p`; times restart from 0 at each rebuild.
     void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
 
+    /// Bytes held by the event state (per-particle records, cells, queue, placed overlaps, the
+    /// arrays as the last step left them): what a copy of a world in this mode carries besides
+    /// its own arrays. Small bookkeeping vectors are left out.
+    [[nodiscard]] std::size_t memoryBytes() const;
+
     /// Events of each kind processed by the last step.
     struct EventStats {
         std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0;

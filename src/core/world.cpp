@@ -99,12 +99,17 @@ World::World(const World& other)
       p_(other.p_),
       ids_(other.ids_),
       ctx_(std::make_unique<StepContext>()),  // scratch is not state
+      // The exact mode's event state is state: a rebuild from the arrays alone would continue
+      // from rounded positions, and the copy would drift from the original in the last bits.
+      exact_(other.exact_ ? std::make_unique<exact::ExactStepper>(*other.exact_) : nullptr),
       threads_(other.threads_),
       stepsUntilReorder_(other.stepsUntilReorder_),
       broadPhaseUsed_(other.broadPhaseUsed_),
       time_(other.time_),
       profile_(other.profile_),
-      counters_(other.counters_) {}
+      counters_(other.counters_) {
+    if (exact_) exact_->setLog(nullptr);  // the original's log stays the original's
+}
 
 World& World::operator=(const World& other) {
     if (this != &other) *this = World(other);
@@ -230,6 +235,15 @@ std::size_t World::memoryBytes() const {
                  sizeof(double) * c.wallImpulseScratch.capacity() +
                  sizeof(std::uint64_t) * c.wallHitScratch.capacity();
     }
+    return bytes;
+}
+
+std::size_t World::stateBytes() const {
+    std::size_t bytes = sizeof(double) * (p_.x.size() + p_.y.size() + p_.vx.size() + p_.vy.size() +
+                                          p_.invMass.size() + p_.radius.size() + p_.mass.size()) +
+                        sizeof(Color) * p_.color.size() + sizeof(ParticleId) * p_.id.size() +
+                        ids_.memoryBytes();
+    if (exact_) bytes += exact_->memoryBytes();
     return bytes;
 }
 

@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/world.hpp>
+
+#include "test_util.hpp"
 
 namespace psb {
 namespace {
@@ -152,6 +155,56 @@ TEST(World, CopyIsIndependent) {
     b.step(1.0);
     EXPECT_EQ(a.get(p).position.x(), 10.0);
     EXPECT_EQ(b.get(p).position.x(), 11.0);
+}
+
+// A dense gas in which every step has collisions: what a copy must carry is then exercised.
+World denseGas(StepMode mode) {
+    WorldDef def;
+    def.width = def.height = 60.0;
+    def.restitution = 0.9;
+    World w(def, {.mode = mode, .dt = 0.01, .substeps = 3});
+    w.setThreads(1);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> u(1.0, 59.0);
+    std::normal_distribution<double> v(0.0, 4.0);
+    for (int k = 0; k < 400; ++k) {
+        w.add({.position = {u(rng), u(rng)},
+               .velocity = {v(rng), v(rng)},
+               .radius = 0.5 + 0.002 * k});
+    }
+    return w;
+}
+
+TEST(World, ACopyStepsBitForBitLikeTheOriginalInEveryMode) {
+    for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
+        World a = denseGas(mode);
+        for (int k = 0; k < 30; ++k)
+            a.step(a.solver().dt);
+        World b = a;
+        EXPECT_EQ(test::stateHash(b), test::stateHash(a)) << toString(mode);
+        for (int k = 0; k < 60; ++k) {
+            a.step(a.solver().dt);
+            b.step(b.solver().dt);
+        }
+        EXPECT_GT(a.counters().collisions, 100u) << toString(mode);
+        EXPECT_EQ(test::stateHash(b), test::stateHash(a)) << toString(mode);
+        EXPECT_EQ(b.time(), a.time());
+        // Assignment too, onto a world that had stepped in another mode.
+        World c = denseGas(StepMode::Discrete);
+        c.step(c.solver().dt);
+        c = a;
+        a.step(a.solver().dt);
+        c.step(c.solver().dt);
+        EXPECT_EQ(test::stateHash(c), test::stateHash(a)) << toString(mode);
+    }
+}
+
+TEST(World, StateBytesCountTheExactModesEventState) {
+    World w = denseGas(StepMode::Exact);
+    const std::size_t before = w.stateBytes();
+    EXPECT_GE(before, 400u * (7 * sizeof(double) + sizeof(Color) + sizeof(ParticleId)));
+    w.step(w.solver().dt);
+    EXPECT_GT(w.stateBytes(), before + 400u * 128u);  // two 64-byte lines per particle at least
 }
 
 TEST(SolverSettings, NamesRoundTrip) {
