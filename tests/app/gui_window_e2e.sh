@@ -18,14 +18,8 @@ for tool in Xvfb xdpyinfo xdotool import convert; do
     command -v "$tool" >/dev/null || { "$HERE/../../scripts/install-deps.sh" --test; break; }
 done
 
-APP_PID=""
-XVFB_PID=""
-cleanup() {
-    if [[ -n "$APP_PID" ]]; then kill "$APP_PID" 2>/dev/null || true; fi
-    if [[ -n "$XVFB_PID" ]]; then kill "$XVFB_PID" 2>/dev/null || true; fi
-    wait 2>/dev/null || true
-}
-trap cleanup EXIT
+# shellcheck source-path=SCRIPTDIR source=../e2e/harness.sh
+source "$HERE/../e2e/harness.sh"
 LOG="$OUT/stdout.log"
 fail() {
     echo "FAIL: $*" >&2
@@ -33,7 +27,6 @@ fail() {
     cat "$LOG" "$OUT/stderr.log" >&2 2>/dev/null || true
     exit 1
 }
-pass() { echo "ok: $*"; }
 wait_log() {  # wait_log REGEX
     local deadline=$((SECONDS + 10))
     until grep -Eq "$1" "$LOG"; do
@@ -42,9 +35,7 @@ wait_log() {  # wait_log REGEX
     done
 }
 
-# shellcheck source-path=SCRIPTDIR source=../e2e/xvfb.sh
-source "$HERE/../e2e/xvfb.sh"
-start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
+start_xvfb "$OUT/xvfb.log" 640x480x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 
 "$BIN" "$OUT/window.png" >"$LOG" 2>"$OUT/stderr.log" &
