@@ -1,9 +1,11 @@
 #pragma once
 // Switching the stepping mode from the keyboard, and the live accuracy indicators of the HUD.
 //
-// Mode switch: discrete -> substep -> exact -> discrete. The world validates the choice
-// (exact mode refuses gravity with psb::InvalidArgument); a refusal is reported as a message and
-// the world keeps its mode, so a key press can never take the app down.
+// Mode switch: discrete -> substep -> exact -> discrete. Which modes a world takes is the
+// world's to say (World::setSolver throws psb::InvalidArgument for settings it refuses; the
+// exact mode has refused gravity), so the switch asks it: a mode the world refuses is skipped
+// with the world's reason, and the switch moves on to the one after, so a key press always
+// changes the mode when any other mode is possible, and can never take the app down.
 //
 // Indicators, both O(1) or O(N) per frame and nothing more:
 // - Largest overlap: the world's counters already record the deepest overlap its detection met
@@ -32,12 +34,13 @@ inline constexpr int kAppSubsteps = 4;
 
 struct ModeSwitch {
     bool changed = false;
-    std::string message;  ///< for the screen: the new mode, or a short reason for the refusal
-    std::string detail;   ///< for the log: the world's full message on a refusal
+    std::string message;  ///< for the screen: the new mode, and the modes skipped and why
+    std::string skipped;  ///< the modes the world refused, e.g. "exact"; empty when none
+    std::string detail;   ///< for the log: the world's full messages for the skipped modes
 };
 
-/// Moves `world` to the next mode. On refusal (exact with gravity) the world is unchanged and
-/// the message says why.
+/// Moves `world` to the next mode it accepts, skipping (and naming) those it refuses. When it
+/// refuses every other mode the world is unchanged and the message says why.
 ModeSwitch switchToNextMode(World& world);
 
 /// "discrete", "substep x4", "exact".

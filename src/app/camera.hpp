@@ -42,9 +42,18 @@ class Camera {
     /// world to the right).
     void panPixels(const Vec2& pixels);
     /// Centres a `width` × `height` metre box in the viewport with `marginPixels` around it,
-    /// below a band of `topInsetPixels` kept free (for the HUD), and resets the zoom limits
-    /// around that zoom (1/50 to 500 times it).
-    void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0);
+    /// between a band of `topInsetPixels` kept free above (for the HUD), one of
+    /// `bottomInsetPixels` below (the messages) and a column of `rightInsetPixels` at the right
+    /// (the panels), and resets the zoom limits around that zoom (1/50 to 500 times it). A band
+    /// is given up as far as needed to keep the box at least a third of the viewport.
+    void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0,
+             double bottomInsetPixels = 0.0, double rightInsetPixels = 0.0);
+    /// The screen rectangle of the world box [0, width] × [0, height]: top-left and size, pixels.
+    struct ScreenBox {
+        Vec2 topLeft;
+        Vec2 size;
+    };
+    [[nodiscard]] ScreenBox boxOnScreen(double width, double height) const;
 
   private:
     int width_ = 800;

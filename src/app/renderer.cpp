@@ -93,21 +93,6 @@ void Renderer::drawWalls(const World& world, const Camera& camera) {
     SDL_RenderFillRectsF(renderer_, rects, 4);
 }
 
-double arrowSecondsFor(const World& world) {
-    constexpr double kOriginal = 1.0 / 3.0;
-    const ParticleArrays& p = world.particles();
-    if (p.size() == 0) return kOriginal;
-    double sum = 0.0;
-    for (std::size_t i = 0; i < p.size(); ++i)
-        sum += p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i];
-    const double vrms = std::sqrt(sum / static_cast<double>(p.size()));
-    if (!(vrms > 0.0) || !std::isfinite(vrms)) return kOriginal;
-    const double w = world.def().width, h = world.def().height;
-    const double spacing = std::sqrt(w * h / static_cast<double>(p.size()));
-    const double longest = std::min(0.2 * std::min(w, h), 0.75 * spacing);  // metres
-    return std::min(kOriginal, longest / vrms);
-}
-
 void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius) {
     const Vec2 c = camera.worldToScreen(centre);
     const double r = std::max(1.0, camera.toScreen(radius));
@@ -119,7 +104,7 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
 }
 
 DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOptions& options,
-                         Trails* trails, ParticleId selected) {
+                         Trails* trails, ParticleId selected, const RenderAvoid* avoid) {
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
@@ -144,9 +129,10 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         // Tiny discs stay visible as about one pixel.
         const double r = std::max(0.75, p.radius[i] * zoom);
         // Arrows can reach beyond the disc, so cull with the arrow's reach when shown.
-        const double reach =
-            options.arrows ? std::max(r, zoom * options.arrowSeconds * std::hypot(p.vx[i], p.vy[i]))
-                           : r;
+        const double reach = options.arrows
+                                 ? std::max(r, arrowPixels(std::hypot(p.vx[i], p.vy[i]),
+                                                           options.arrowSeconds, zoom, r))
+                                 : r;
         if (s.x() + reach < 0 || s.x() - reach > w || s.y() + reach < 0 || s.y() - reach > h) {
             continue;
         }
@@ -162,9 +148,9 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     if (options.arrows) {
         for (std::size_t i : visible) {
             const double speed = std::hypot(p.vx[i], p.vy[i]);
-            const double len = zoom * options.arrowSeconds * speed;  // pixels from the centre
             const double r = p.radius[i] * zoom;
-            if (len <= r + 1.0) continue;  // the arrow would end inside the disc
+            const double len = arrowPixels(speed, options.arrowSeconds, zoom, r);  // from centre
+            if (len <= r) continue;  // not moving: no arrow
             const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);
             const Vec2 n(-u.y(), u.x());
             const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
@@ -197,7 +183,17 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         if (visible.size() > kMaxLabels) {
             stats.labelsSuppressed = true;
         } else {
-            const float lh = static_cast<float>(labelFont_->lineHeight());
+            const int lh = labelFont_->lineHeight();
+            std::vector<SDL_Rect> placed;
+            const auto free = [&](const SDL_Rect& r) {
+                for (const SDL_Rect& o : placed)
+                    if (SDL_HasIntersection(&r, &o)) return false;
+                if (avoid != nullptr) {
+                    for (const SDL_Rect& o : *avoid)
+                        if (SDL_HasIntersection(&r, &o)) return false;
+                }
+                return r.x >= 0 && r.y >= 0 && r.x + r.w <= w && r.y + r.h <= h;
+            };
             char lines[4][64];
             for (std::size_t i : visible) {
                 const double vx = p.vx[i], vy = p.vy[i], m = p.mass[i];
@@ -209,15 +205,35 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                 int width = 0;
                 for (const auto& l : lines)
                     width = std::max(width, labelFont_->measure(l));
-                // Fixed pixel size at every zoom, stacked just above the disc.
+                // A box of fixed pixel size at every zoom, at whole pixels, 2 px clear of the
+                // disc: above it, else below, right, left.
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
-                const float x = static_cast<float>(c.x()) - static_cast<float>(width) / 2.f;
-                const float bottom = static_cast<float>(c.y() - p.radius[i] * zoom) - 2.f;
-                const float top = bottom - 4.f * lh;
-                labelBoxes_.quad(x - 2.f, top - 1.f, x + static_cast<float>(width) + 2.f, bottom,
-                                 SDL_Color{0, 0, 0, 150});
+                const int cx = static_cast<int>(std::lround(c.x()));
+                const int cy = static_cast<int>(std::lround(c.y()));
+                const int r = static_cast<int>(std::ceil(p.radius[i] * zoom)) + 2;
+                const int bw = width + 4, bh = 4 * lh + 1;
+                const SDL_Rect candidates[4] = {{cx - bw / 2, cy - r - bh, bw, bh},
+                                                {cx - bw / 2, cy + r, bw, bh},
+                                                {cx + r, cy - bh / 2, bw, bh},
+                                                {cx - r - bw, cy - bh / 2, bw, bh}};
+                const SDL_Rect* box = nullptr;
+                for (const SDL_Rect& cand : candidates) {
+                    if (free(cand)) {
+                        box = &cand;
+                        break;
+                    }
+                }
+                if (box == nullptr) {
+                    ++stats.labelsCrowded;
+                    continue;
+                }
+                placed.push_back(*box);
+                labelBoxes_.quad(static_cast<float>(box->x), static_cast<float>(box->y),
+                                 static_cast<float>(box->x + box->w),
+                                 static_cast<float>(box->y + box->h), SDL_Color{0, 0, 0, 150});
                 for (int k = 0; k < 4; ++k) {
-                    labelFont_->layout(lines[k], x, top + static_cast<float>(k) * lh,
+                    labelFont_->layout(lines[k], static_cast<float>(box->x + 2),
+                                       static_cast<float>(box->y + 1 + k * lh),
                                        SDL_Color{255, 255, 255, 255}, labelText_);
                 }
                 ++stats.labelled;

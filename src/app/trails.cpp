@@ -6,30 +6,6 @@
 
 namespace psb::app {
 
-TrailMode nextTrailMode(TrailMode mode) {
-    switch (mode) {
-        case TrailMode::Off:
-            return TrailMode::Selected;
-        case TrailMode::Selected:
-            return TrailMode::All;
-        case TrailMode::All:
-            break;
-    }
-    return TrailMode::Off;
-}
-
-const char* toString(TrailMode mode) {
-    switch (mode) {
-        case TrailMode::Off:
-            return "off";
-        case TrailMode::Selected:
-            return "selected";
-        case TrailMode::All:
-            break;
-    }
-    return "all";
-}
-
 void Trails::reset() {
     std::fill(count_.begin(), count_.end(), std::uint8_t{0});
     std::fill(head_.begin(), head_.end(), std::uint8_t{0});

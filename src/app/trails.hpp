@@ -26,16 +26,9 @@
 #include <particle_sandbox/world.hpp>
 
 #include "camera.hpp"
+#include "view_options.hpp"
 
 namespace psb::app {
-
-/// What L shows.
-enum class TrailMode { Off, Selected, All };
-
-/// Off -> Selected -> All -> Off.
-[[nodiscard]] TrailMode nextTrailMode(TrailMode mode);
-/// "off", "selected", "all".
-[[nodiscard]] const char* toString(TrailMode mode);
 
 /// The trails' pixels: `width` × `height` ARGB8888 words (alpha not premultiplied), zero
 /// where no trail is, and the rectangle that holds every non-zero pixel.

@@ -148,11 +148,21 @@ TEST_F(RenderTest, AnArrowHeadIsFilledAndWiderThanTheShaft) {
     EXPECT_TRUE(isColor(pixel(250, 200 + 5), 0, 0, 0));  // the shaft is thin
 }
 
-TEST_F(RenderTest, NoArrowWhenItWouldEndInsideTheDisc) {
-    // 30 m/s -> 10 px, inside a 20 m disc: nothing outside the disc.
+TEST_F(RenderTest, ASlowBigParticleStillShowsAnArrowBeyondItsRim) {
+    // 30 m/s -> 10 px at 1/3 s, inside a 20 m disc: before, no arrow at all. Now it reaches
+    // kMinArrowPixels past the rim.
     const World w = worldWith({200, 200}, {30, 0}, 20.0, {255, 0, 0});
     draw(w, {});
-    EXPECT_EQ(brightPixels(0, 0, kSize, kSize, 1), 0);  // red fails the "all channels" test
+    int red = 0;
+    for (int x = 222; x < 260; ++x)
+        red += pixel(x, 200).r > 0;
+    EXPECT_GE(red, static_cast<int>(kMinArrowPixels) - 3);
+    EXPECT_EQ(pixel(200 + 20 + static_cast<int>(kMinArrowPixels) + 3, 200).r, 0);  // no longer
+}
+
+TEST_F(RenderTest, AParticleAtRestHasNoArrow) {
+    const World w = worldWith({200, 200}, {0, 0}, 20.0, {255, 0, 0});
+    draw(w, {});
     int red = 0;
     for (int x = 222; x < 260; ++x)
         red += pixel(x, 200).r > 0;
