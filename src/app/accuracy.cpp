@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
 
 namespace psb::app {
@@ -73,6 +74,10 @@ void AccuracyMonitor::endSteps(const World& world) {
     if (c.steps == 0) return;  // nothing stepped (paused): keep the last figures
     overlap_ = c.maxOverlap;
     eventsPerStep_ = static_cast<double>(c.events) / static_cast<double>(c.steps);
+}
+
+void AccuracyMonitor::measureState(const World& world) {
+    stateOverlap_ = maxOverlap(world);
 }
 
 double AccuracyMonitor::drift(double kineticEnergy) const {

@@ -8,15 +8,16 @@
 // changes the mode when any other mode is possible, and can never take the app down.
 //
 // Indicators, both O(1) or O(N) per frame and nothing more:
-// - Largest overlap: the world's counters already record the deepest overlap its detection met
-//   (StepCounters::maxOverlap, taken from the broadphase pairs the step finds anyway, and from
-//   the exact stepper's own checks). The counter is a running maximum, so the monitor resets
-//   the counters before each frame's steps and reads them after: the figure is the deepest
-//   overlap of this frame's steps, at no cost beyond the step itself.
+// - Largest overlap: the deeper of what this frame's steps met (StepCounters::maxOverlap, a
+//   running maximum the monitor clears before the steps) and the overlap of the state as drawn
+//   (psb::maxOverlap, one broadphase pass), so that pairs placed overlapping by a drag, a spawn
+//   or an edit show while paused and in the exact mode, whose events meet overlaps only at
+//   collisions.
 // - Kinetic energy drift: (KE - KE_ref) / KE_ref, where KE_ref is taken at the last user
 //   action (grab, release, launch, spawn, delete, mode change, scene load). KE itself is the
 //   O(N) sum the HUD shows anyway.
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -55,19 +56,23 @@ class AccuracyMonitor {
     void beginSteps(World& world);
     /// After a frame's steps: records the overlap and events of those steps (if any ran).
     void endSteps(const World& world);
+    /// The state as it will be drawn: records its deepest overlap now.
+    void measureState(const World& world);
 
     /// Relative drift of `kineticEnergy` from the reference; NaN without a reference or when
     /// the reference is 0 (nothing moving).
     [[nodiscard]] double drift(double kineticEnergy) const;
     [[nodiscard]] double referenceEnergy() const { return reference_; }
-    /// Deepest overlap met by the last frame that stepped, metres.
-    [[nodiscard]] double overlap() const { return overlap_; }
+    /// Deepest overlap met by the last frame that stepped or present in the state measured
+    /// last, metres.
+    [[nodiscard]] double overlap() const { return std::max(overlap_, stateOverlap_); }
     /// Exact-mode events processed per step in the last frame that stepped.
     [[nodiscard]] double eventsPerStep() const { return eventsPerStep_; }
 
   private:
     double reference_ = -1.0;  // < 0: none yet
     double overlap_ = 0.0;
+    double stateOverlap_ = 0.0;
     double eventsPerStep_ = 0.0;
 };
 

@@ -591,6 +591,7 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
     // Show the held particle exactly at the hand, paused or not.
     interaction_.applyHold(world_, now, launchSettings());
+    accuracy_.measureState(world_);
     checkSelection();
     // Always recorded (three compensated sums over the particles), so the plots and the centre
     // of mass path have a history the moment they are switched on. The accuracy monitor clears

@@ -249,6 +249,24 @@ TEST_F(SessionTest, MFindsRoomInTheGasPreset) {
     EXPECT_NEAR(maxOverlapBruteForce(s.world()), 0.0, 1e-12);
 }
 
+TEST_F(SessionTest, AParticleDraggedIntoAnotherWhilePausedShowsItsOverlap) {
+    for (const StepMode mode : {StepMode::Discrete, StepMode::Exact}) {
+        Session s = session();
+        while (s.world().solver().mode != mode)
+            s.apply(cmd::NextMode{});
+        s.update(0.0, 0.0);
+        ASSERT_EQ(s.accuracy().overlap(), 0.0);
+        // The yellow disc (5.2, 1.6), r 0.45, dragged onto the orange one (6.0, 3.3), r 0.375.
+        const Camera& c = s.camera();
+        s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
+        s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.8, 3.0)), 1.2});
+        s.update(0.0, 1.2);
+        const double truth = maxOverlapBruteForce(s.world());
+        EXPECT_GT(truth, 0.3);
+        EXPECT_NEAR(s.accuracy().overlap(), truth, 1e-12) << toString(mode);
+    }
+}
+
 TEST_F(SessionTest, TheEditPromptTakesTheKeyboard) {
     Session s = session();
     const Vec2 yellow(5.2, 1.6);
