@@ -22,6 +22,17 @@ class Camera {
 
     [[nodiscard]] Vec2 worldToScreen(const Vec2& world) const { return (world - offset_) * zoom_; }
     [[nodiscard]] Vec2 screenToWorld(const Vec2& screen) const { return screen / zoom_ + offset_; }
+    /// worldToScreen as a scale and a shift, screen = origin + scale × world, for code that maps
+    /// many points in floats (the trails): the same mapping, stated once here.
+    struct Transform {
+        float scale = 1.0f;
+        float originX = 0.0f;
+        float originY = 0.0f;
+    };
+    [[nodiscard]] Transform transform() const {
+        const Vec2 o = worldToScreen(Vec2::Zero());
+        return {static_cast<float>(zoom_), static_cast<float>(o.x()), static_cast<float>(o.y())};
+    }
     /// A world length (metres) in pixels, and back.
     [[nodiscard]] double toScreen(double metres) const { return metres * zoom_; }
     [[nodiscard]] double toWorld(double pixels) const { return pixels / zoom_; }

@@ -127,7 +127,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Vec2 s = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
         // Tiny discs stay visible as about one pixel.
-        const double r = std::max(0.75, p.radius[i] * zoom);
+        const double r = std::max(0.75, camera.toScreen(p.radius[i]));
         // Arrows can reach beyond the disc, so cull with the arrow's reach when shown.
         const double reach = options.arrows
                                  ? std::max(r, arrowPixels(std::hypot(p.vx[i], p.vy[i]),
@@ -148,7 +148,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     if (options.arrows) {
         for (std::size_t i : visible) {
             const double speed = std::hypot(p.vx[i], p.vy[i]);
-            const double r = p.radius[i] * zoom;
+            const double r = camera.toScreen(p.radius[i]);
             const double len = arrowPixels(speed, options.arrowSeconds, zoom, r);  // from centre
             if (len <= r) continue;  // not moving: no arrow
             const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);
@@ -210,7 +210,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
                 const int cx = static_cast<int>(std::lround(c.x()));
                 const int cy = static_cast<int>(std::lround(c.y()));
-                const int r = static_cast<int>(std::ceil(p.radius[i] * zoom)) + 2;
+                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + 2;
                 const int bw = width + 4, bh = 4 * lh + 1;
                 const SDL_Rect candidates[4] = {{cx - bw / 2, cy - r - bh, bw, bh},
                                                 {cx - bw / 2, cy + r, bw, bh},

@@ -137,10 +137,9 @@ void Trails::rasteriseOne(const World& world, const Camera& camera, std::size_t 
     const std::size_t n = count_[id.slot];
     const Color c = p.color[index];
     const std::uint32_t rgb = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
-    // Screen = (world - offset) * zoom, in floats: a trail is only drawn.
-    const Vec2 o = camera.worldToScreen(Vec2::Zero());
-    const float zoom = static_cast<float>(camera.zoom());
-    const float ox = static_cast<float>(o.x()), oy = static_cast<float>(o.y());
+    // The camera's mapping in floats: a trail is only drawn.
+    const Camera::Transform t = camera.transform();
+    const float zoom = t.scale, ox = t.originX, oy = t.originY;
     const float* xs = xs_.data() + static_cast<std::size_t>(id.slot) * kLength;
     const float* ys = ys_.data() + static_cast<std::size_t>(id.slot) * kLength;
     const std::size_t oldest = (head_[id.slot] + kLength - n) % kLength;

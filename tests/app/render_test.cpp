@@ -184,6 +184,50 @@ TEST_F(RenderTest, LabelsAppearOnlyWhenTheOverlayIsOn) {
     EXPECT_EQ(brightPixels(100, 280, 300, 400), 0);  // nothing below the disc
 }
 
+TEST_F(RenderTest, TextAtAFractionOfAPixelIsDrawnAsAtTheWholePixel) {
+    // The "1800.00" drawn as "18CC.C0": glyph quads at x + 0.5 were resampled.
+    const auto image = [&](float x, float y) {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        GeometryBatch b;
+        font_->layout("Momentum: 1800.00", x, y, SDL_Color{255, 255, 255, 255}, b);
+        font_->draw(b);
+        SDL_RenderPresent(sdl_);
+        std::vector<Uint8> v;
+        for (int yy = 90; yy < 130; ++yy)
+            for (int xx = 0; xx < 200; ++xx)
+                v.push_back(pixel(xx, yy).r);
+        return v;
+    };
+    const auto whole = image(20.0f, 100.0f);
+    EXPECT_EQ(image(20.4f, 100.4f), whole);
+    EXPECT_EQ(image(19.6f, 99.7f), whole);
+}
+
+TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
+    WorldDef def;
+    def.width = def.height = kSize;
+    World w(def);
+    for (const double x : {150.0, 185.0, 220.0}) {
+        ParticleDef d;
+        d.position = {x, 250};
+        d.radius = 10.0;
+        w.add(d);
+    }
+    ViewOptions o;
+    o.arrows = false;
+    o.labels = true;
+    // Nothing may be drawn above y = 200 (a panel there).
+    const RenderAvoid avoid{SDL_Rect{0, 0, kSize, 200}};
+    const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, &avoid);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(brightPixels(0, 0, kSize, 200), 0);
+    // Three 150 px wide labels cannot all sit side by side at 35 px spacing: those that fit are
+    // drawn, the rest counted, and none is drawn over another.
+    EXPECT_EQ(s.labelled + s.labelsCrowded, 3u);
+    EXPECT_GE(s.labelled, 2u);
+}
+
 TEST_F(RenderTest, LabelsKeepTheirPixelSizeAtAnyZoom) {
     const World w = worldWith({200, 250}, Vec2::Zero(), 20.0, {255, 0, 0});
     ViewOptions o;
