@@ -63,8 +63,10 @@ void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {
     const SDL_Vertex tri[3] = {pt(tip), pt(base + 8.0 * n), pt(base - 8.0 * n)};
     SDL_RenderGeometry(sdl_, nullptr, tri, 3, nullptr, 0);
     const int w = hudFont_.measure(m.label);
-    // The label on the screen's side of the arrow, kept inside the window.
-    const Vec2 at = m.at - 20.0 * u;
+    // The label beside the arrow on the screen's side, clear of it, kept inside the window.
+    const double half = std::abs(u.x()) * (w / 2.0 + 4.0) +
+                        std::abs(u.y()) * (hudFont_.lineHeight() / 2.0 + 4.0);
+    const Vec2 at = m.at - (14.0 + half) * u;
     float x = static_cast<float>(at.x()) - static_cast<float>(w) / 2.f;
     float y = static_cast<float>(at.y()) - static_cast<float>(hudFont_.lineHeight()) / 2.f;
     int vw = 0, vh = 0;

@@ -29,6 +29,7 @@
 #                                                         gravity refused in exact mode
 #  13. presses F12                                      -> a PNG of the window's size
 #  14. presses R, clicks the edited particle again      -> its mass is the loaded 12 kg
+#  14b. presses Right 16 times, then F                -> a marker points to the box, F fits
 #  15. presses H, Esc; M, Esc; Esc                      -> help closed, a question about the
 #                                                         unsaved change, then a clean exit
 # Screenshots and the log are left in OUTPUT_DIR.
@@ -116,6 +117,12 @@ for _ in $(seq 30); do
 done
 [[ -n "$XVFB_PID" ]] || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
+
+# --- the renderer: without --renderer, OpenGL on a software rasteriser (Xvfb's llvmpipe)
+# gives way to SDL's software renderer, and the program says so --------------------------------
+bench=$("$BIN" --bench 50 --frames 3 2>&1) || fail "--bench without --renderer: $bench"
+grep -q "renderer software" <<<"$bench" || fail "SDL's OpenGL renderer on llvmpipe kept: $bench"
+pass "renderer chosen: $(grep -m1 'Renderer:' <<<"$bench")"
 
 # --- the program --------------------------------------------------------------------------
 LOG="$OUT/stdout.log"
@@ -458,6 +465,16 @@ wait_count "Selected particle" 2
 grep "Selected particle" "$LOG" | tail -1 | grep -q "mass 12 kg" ||
     fail "after R the particle is not as loaded: $(grep 'Selected particle' "$LOG" | tail -1)"
 pass "R restores the edited particle's 12 kg"
+
+# --- 14b. pan the box off screen: a marker at the edge points to it; F brings it back ----------
+for _ in $(seq 16); do xdotool key --window "$WID" Right; done
+shot 9-panned-away
+marker=$(color_in "$OUT/9-panned-away.png" "#FFE600")
+((marker > 30)) || fail "no marker for the off-screen box ($marker px)"
+key f
+shot 9-fitted-again
+((  $(white_in "$OUT/9-fitted-again.png" "$wall") >= 35 )) || fail "F did not bring the box back"
+pass "box off screen: a $marker px marker points to it; F fits it again"
 
 # --- 15. quit -----------------------------------------------------------------------------
 # Esc closes the help first; with unsaved changes it asks; a second Esc quits.
