@@ -58,6 +58,8 @@ class AccuracyMonitor {
     void endSteps(const World& world);
     /// The state as it will be drawn: records its deepest overlap now.
     void measureState(const World& world);
+    /// The steps' detection covers the state: forget the last measurement.
+    void clearState() { stateOverlap_ = 0.0; }
 
     /// Relative drift of `kineticEnergy` from the reference; NaN without a reference or when
     /// the reference is 0 (nothing moving).

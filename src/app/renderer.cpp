@@ -122,6 +122,11 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
     const double zoom = camera.zoom();
     DrawStats stats;
+    const double spacing =
+        p.size() > 0
+            ? std::sqrt(world.def().width * world.def().height / static_cast<double>(p.size()))
+            : world.def().width;
+    const double minExtra = minArrowExtra(camera.toScreen(spacing));
     std::vector<std::size_t> visible;
     visible.reserve(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {
@@ -131,7 +136,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         // Arrows can reach beyond the disc, so cull with the arrow's reach when shown.
         const double reach = options.arrows
                                  ? std::max(r, arrowPixels(std::hypot(p.vx[i], p.vy[i]),
-                                                           options.arrowSeconds, zoom, r))
+                                                           options.arrowSeconds, zoom, r, minExtra))
                                  : r;
         if (s.x() + reach < 0 || s.x() - reach > w || s.y() + reach < 0 || s.y() - reach > h) {
             continue;
@@ -149,7 +154,8 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         for (std::size_t i : visible) {
             const double speed = std::hypot(p.vx[i], p.vy[i]);
             const double r = camera.toScreen(p.radius[i]);
-            const double len = arrowPixels(speed, options.arrowSeconds, zoom, r);  // from centre
+            const double len =
+                arrowPixels(speed, options.arrowSeconds, zoom, r, minExtra);  // from centre
             if (len <= r) continue;  // not moving: no arrow
             const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);
             const Vec2 n(-u.y(), u.x());

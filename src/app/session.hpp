@@ -203,6 +203,7 @@ class Session {
     bool running_ = true;
     bool quitPending_ = false;
     bool dirty_ = false;
+    bool changedSinceMeasure_ = true;  ///< the world changed other than by stepping
     bool screenshotRequested_ = false;
     std::optional<std::filesystem::path> lastSave_;
 

@@ -40,8 +40,16 @@ struct ViewOptions {
 [[nodiscard]] double arrowSecondsFor(const World& world);
 
 /// The on-screen length of a particle's arrow from its centre, pixels: `seconds` × speed ×
-/// `zoom`, lengthened to reach kMinArrowPixels beyond the rim (`radiusPixels`) when the particle
-/// moves by half a pixel or more over `seconds`; 0 when it does not (no arrow).
-[[nodiscard]] double arrowPixels(double speed, double seconds, double zoom, double radiusPixels);
+/// `zoom`. With a minimum of 2 pixels or more (`minExtraPixels`, see minArrowExtra), a particle
+/// that moves half a pixel or more over `seconds` gets an arrow reaching at least that far past
+/// its rim (`radiusPixels`); below 2 pixels a minimum would not read, and an arrow that ends
+/// within a pixel of the rim is not drawn. 0: no arrow.
+[[nodiscard]] double arrowPixels(double speed, double seconds, double zoom, double radiusPixels,
+                                 double minExtraPixels);
+
+/// The minimum arrow beyond the rim for a world whose mean particle spacing is `spacingPixels`
+/// on screen: kMinArrowPixels, or half the spacing when that is less (a dense gas is not
+/// covered by minimum arrows).
+[[nodiscard]] double minArrowExtra(double spacingPixels);
 
 }  // namespace psb::app
