@@ -6,6 +6,11 @@
 // quads over one anti-aliased circle texture tinted by vertex colour, arrows are untextured
 // triangles, labels are glyph quads over the font atlas with their black boxes in one more
 // batch. Particles outside the viewport are skipped before any geometry is built.
+//
+// Discs a few pixels across are not worth two triangles each: SDL's software rasteriser pays a
+// fixed price per triangle (0.25-0.5 us), which at 5·10⁴ particles is most of a frame. They are
+// written as pixels into one image with their arrows as one-pixel lines (the trails' method),
+// and the image is shown with one texture copy.
 
 #include <cstddef>
 #include <vector>
@@ -59,16 +64,25 @@ class Renderer {
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius);
 
+    /// Discs smaller than this on screen (radius, pixels) and their arrows are drawn as pixels
+    /// into one image (see the top of this file).
+    static constexpr double kSmallDiscPixels = 2.5;
+
   private:
+    /// A streaming texture the size of an image, and the image copied through it.
+    struct ImageLayer {
+        SDL_Texture* texture = nullptr;
+        int width = 0, height = 0;
+    };
     void drawWalls(const World& world, const Camera& camera);
-    void drawTrails(const TrailImage& image);
+    void drawImage(const TrailImage& image, ImageLayer& layer);
 
     SDL_Renderer* renderer_;
     const Font* labelFont_;
     SDL_Texture* circle_ = nullptr;
     GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
-    SDL_Texture* trailTexture_ = nullptr;  // streaming, the viewport's size
-    int trailWidth_ = 0, trailHeight_ = 0;
+    ImageLayer trailLayer_, smallLayer_;
+    TrailImage small_;  ///< discs under kSmallDiscPixels and their arrows
 };
 
 }  // namespace psb::app

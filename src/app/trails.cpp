@@ -81,6 +81,28 @@ SDL_Rect TrailImage::dirty() const {
     return {minX_, minY_, maxX_ - minX_ + 1, maxY_ - minY_ + 1};
 }
 
+void TrailImage::disc(float cx, float cy, float r, std::uint32_t argb) {
+    const float reach = r + 0.5f;
+    const int x0 = std::max(0, static_cast<int>(std::floor(cx - reach)));
+    const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(cx + reach)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(cy - reach)));
+    const int y1 = std::min(height_ - 1, static_cast<int>(std::floor(cy + reach)));
+    if (x0 > x1 || y0 > y1) return;
+    const int ix = static_cast<int>(std::floor(cx)), iy = static_cast<int>(std::floor(cy));
+    for (int y = y0; y <= y1; ++y) {
+        const float dy = static_cast<float>(y) + 0.5f - cy;
+        std::uint32_t* row = pixels_.data() + static_cast<std::size_t>(y) * width_;
+        for (int x = x0; x <= x1; ++x) {
+            const float dx = static_cast<float>(x) + 0.5f - cx;
+            if (dx * dx + dy * dy <= reach * reach || (x == ix && y == iy)) row[x] = argb;
+        }
+    }
+    minX_ = std::min(minX_, x0);
+    minY_ = std::min(minY_, y0);
+    maxX_ = std::max(maxX_, x1);
+    maxY_ = std::max(maxY_, y1);
+}
+
 void TrailImage::line(float x0, float y0, float x1, float y1, std::uint32_t argb) {
     const float xmax = static_cast<float>(width_) - 0.5f;
     const float ymax = static_cast<float>(height_) - 0.5f;
