@@ -82,7 +82,8 @@ class Renderer {
     SDL_Texture* circle_ = nullptr;
     GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
     ImageLayer trailLayer_, smallLayer_;
-    TrailImage small_;  ///< discs under kSmallDiscPixels and their arrows
+    TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
+    std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none
 };
 
 }  // namespace psb::app

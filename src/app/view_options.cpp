@@ -44,14 +44,6 @@ double arrowSecondsFor(const World& world) {
     return std::min(kOriginal, longest / vrms);
 }
 
-double arrowPixels(double speed, double seconds, double zoom, double radiusPixels,
-                   double minExtraPixels) {
-    const double len = seconds * speed * zoom;
-    if (!(len >= 0.5) || !std::isfinite(len)) return 0.0;
-    if (minExtraPixels >= 2.0) return std::max(len, radiusPixels + minExtraPixels);
-    return len > radiusPixels + 1.0 ? len : 0.0;
-}
-
 double minArrowExtra(double spacingPixels) {
     return std::isfinite(spacingPixels) ? std::min(kMinArrowPixels, 0.5 * spacingPixels)
                                         : kMinArrowPixels;

@@ -3,6 +3,9 @@
 // toggles of the keys A, S, V, L, K, D and the arrow scale. No SDL, so the session and its
 // tests can use it without a window.
 
+#include <algorithm>
+#include <cmath>
+
 #include <particle_sandbox/world.hpp>
 
 namespace psb::app {
@@ -44,8 +47,13 @@ struct ViewOptions {
 /// that moves half a pixel or more over `seconds` gets an arrow reaching at least that far past
 /// its rim (`radiusPixels`); below 2 pixels a minimum would not read, and an arrow that ends
 /// within a pixel of the rim is not drawn. 0: no arrow.
-[[nodiscard]] double arrowPixels(double speed, double seconds, double zoom, double radiusPixels,
-                                 double minExtraPixels);
+[[nodiscard]] inline double arrowPixels(double speed, double seconds, double zoom,
+                                        double radiusPixels, double minExtraPixels) {
+    const double len = seconds * speed * zoom;
+    if (!(len >= 0.5) || !std::isfinite(len)) return 0.0;
+    if (minExtraPixels >= 2.0) return std::max(len, radiusPixels + minExtraPixels);
+    return len > radiusPixels + 1.0 ? len : 0.0;
+}
 
 /// The minimum arrow beyond the rim for a world whose mean particle spacing is `spacingPixels`
 /// on screen: kMinArrowPixels, or half the spacing when that is less (a dense gas is not
