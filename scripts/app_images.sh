@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # Makes the app's pictures in docs/images, each the app's own F12 screenshot under Xvfb:
+#   sandbox.png  the built-in scene (7 m box, 1 px = 1 cm), paused, labels on (S), 800x800
 #   help.png     the built-in scene, paused, with the help overlay (H), 720x720 window
 #   inspect.png  the built-in scene, paused, the 18 kg particle selected by a click and its
 #                edit prompt open with 25 typed (Enter, 2, 5), 600x600 window scaled to 75 %
@@ -35,21 +36,26 @@ shoot_and_quit() {
     wait "$pid"
 }
 
-mkdir -p "$WORK/help" "$WORK/inspect"
+mkdir -p "$WORK/sandbox" "$WORK/help" "$WORK/inspect"
+start 800x800 "$WORK/sandbox"
+xdotool key --window "$wid" s
+shoot_and_quit "$WORK/sandbox" 1
+
 start 720x720 "$WORK/help"
 xdotool key --window "$wid" h
-shoot_and_quit "$WORK/help" 1
+shoot_and_quit "$WORK/help" 2  # Esc closes the help, then quits
 
 start 600x600 "$WORK/inspect"
-# The 18 kg particle at (520, 160) m.
-px=$(awk -v z="$zoom" -v b="$bx" -v o="$X" 'BEGIN { printf "%d", o + b + 520 * z }')
-py=$(awk -v z="$zoom" -v b="$by" -v o="$Y" 'BEGIN { printf "%d", o + b + 160 * z }')
+# The 18 kg particle at (5.2, 1.6) m.
+px=$(awk -v z="$zoom" -v b="$bx" -v o="$X" 'BEGIN { printf "%d", o + b + 5.2 * z }')
+py=$(awk -v z="$zoom" -v b="$by" -v o="$Y" 'BEGIN { printf "%d", o + b + 1.6 * z }')
 xdotool mousemove --sync "$px" "$py" sleep 0.1 click 1
 sleep 0.3
 xdotool key --window "$wid" Return sleep 0.2 type --window "$wid" --delay 50 "25"
 shoot_and_quit "$WORK/inspect" 2
 DRIVE
-BIN=$BIN WORK=$WORK xvfb-run -a -s "-screen 0 800x800x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
+BIN=$BIN WORK=$WORK xvfb-run -a -s "-screen 0 900x900x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
+convert "$WORK"/sandbox/particle-sandbox-*.png -strip "$OUT/sandbox.png"
 convert "$WORK"/help/particle-sandbox-*.png -strip "$OUT/help.png"
 convert "$WORK"/inspect/particle-sandbox-*.png -resize 75% -strip "$OUT/inspect.png"
-echo "wrote $OUT/help.png and $OUT/inspect.png"
+echo "wrote $OUT/sandbox.png, $OUT/help.png and $OUT/inspect.png"

@@ -56,8 +56,7 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.3g m", d.spawnMass, d.spawnRadius);
     std::string last = buf;
     if (d.arrowSeconds > 0.0) {
-        std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion (1 m/s = %.3g m)",
-                      d.arrowSeconds, d.arrowSeconds);
+        std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
         last += buf;
     }
     lines.push_back(last + " | H: help");
@@ -102,7 +101,7 @@ std::vector<std::string> profileLines(const ProfileData& d) {
 const std::vector<std::pair<std::string, std::string>>& controls() {
     static const std::vector<std::pair<std::string, std::string>> list = {
         {"Left drag on a particle", "grab it; release to fling it"},
-        {"Left drag on empty space", "launch a new particle with the drag's velocity"},
+        {"Left drag on empty space", "launch a particle: the drag is its arrow"},
         {"Left click on a particle", "select it: outline and inspector panel"},
         {"Left click on empty space", "clear the selection"},
         {"Enter (selected)", "edit it (Tab: next field, Esc: cancel)"},
@@ -130,7 +129,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"D", "speed histogram against Maxwell-Boltzmann"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
-        {"Esc", "quit (cancel, while editing)"},
+        {"Esc", "close help / edit; quit (asks if unsaved)"},
     };
     return list;
 }
