@@ -210,8 +210,7 @@ void Session::apply(const Command& command) {
             } else if constexpr (std::is_same_v<T, cmd::ToggleHelp>) {
                 showHelp_ = !showHelp_;
             } else if constexpr (std::is_same_v<T, cmd::ToggleProfile>) {
-                showProfile_ = !showProfile_;
-                say(showProfile_ ? "Profile on" : "Profile off");
+                togglePanel(showProfile_, "Profile on", "Profile off");
             } else if constexpr (std::is_same_v<T, cmd::ToggleMomentum>) {
                 view_.momentum = !view_.momentum;
                 say(view_.momentum ? "Momentum view on" : "Momentum view off");
@@ -522,7 +521,8 @@ void Session::quit() {
 
 void Session::fit() {
     const ViewInsets& in = options_.insets;
-    const bool column = view_.plots || view_.speeds;
+    // The momentum legend is three short lines: it does not cost the box a column.
+    const bool column = view_.plots || view_.speeds || showProfile_;
     camera_.fit(world_.def().width, world_.def().height, 10.0, in.top, in.bottom,
                 column ? in.panelColumn : 0.0);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());

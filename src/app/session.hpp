@@ -45,7 +45,8 @@ struct Notice {
 [[nodiscard]] const char* logPrefix(Notice::Level level);
 
 /// Pixels the camera keeps free around the box when it fits it: the HUD above, the messages
-/// below, the panel column at the right while plots or the speed histogram are on.
+/// below, the panel column at the right while a panel of it (plots, speed histogram, profile) is
+/// on.
 struct ViewInsets {
     double top = 0.0;
     double bottom = 0.0;
