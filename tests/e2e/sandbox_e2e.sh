@@ -16,7 +16,8 @@
 #   5. presses S                                        -> label text appears above particles
 #   6. presses Ctrl+S                                   -> a scene file with the launched
 #                                                         particle, moving up-right
-#   7. presses V, L, L, K, D, steps, then V, K, D, L    -> the momentum view, trails, plots and
+#   7. presses V, L, L, K, D, steps, then V, K, D, L    -> the box refits beside the panels; the
+#                                                         momentum view, trails, plots and
 #                                                         speed histogram appear in their colours
 #                                                         (logged, and named in the HUD), then
 #                                                         go away
@@ -345,9 +346,17 @@ cyan=$(color_in "$OUT/7-momentum.png" "$CYAN")
 ((yellow > 30 && cyan > 10)) || fail "V: total momentum $yellow, centre of mass $cyan px"
 key l
 key l
+views=$(grep -c "\[I\] View: zoom" "$LOG")
 key k
 key d
 wait_log "Speed distribution on"
+# The panels sit beside the box: the fitted view made room for their column at the right.
+wait_count "\[I\] View: zoom" $((views + 2))
+read -r z2 bx2 < <(grep "\[I\] View: zoom" "$LOG" | tail -1 |
+    sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), .*/\1 \2/')
+box_right=$(awk -v z="$z2" -v b="$bx2" 'BEGIN { printf "%d", b + 7 * z + 0.5 }')
+((box_right <= WIDTH - 330)) || fail "with K and D on the box reaches x = $box_right of $WIDTH"
+pass "K, D: the box refits to end at x = $box_right, the panels beside it"
 for want in "Trails: selected" "Trails: all" "Plots on"; do
     grep -q "$want" "$LOG" || fail "no '$want' in the log"
 done
