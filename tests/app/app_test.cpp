@@ -16,20 +16,16 @@
 
 #include "../core/test_util.hpp"
 #include "app.hpp"
+#include "temp_dir_test.hpp"
 
 namespace psb::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-class AppTest : public ::testing::Test {
+class AppTest : public TempDirTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("psb-app-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    AppTest() : TempDirTest("psb-app") {}
 
     [[nodiscard]] AppOptions options() const {
         AppOptions o;
@@ -96,8 +92,6 @@ class AppTest : public ::testing::Test {
         EXPECT_TRUE(id.has_value());
         return id.value_or(kNullParticle);
     }
-
-    fs::path dir_;
 };
 
 // The built-in scene: the 18 kg particle at (5.2, 1.6) m, radius 45 cm; (1.0, 6.2) is empty.

@@ -16,20 +16,16 @@
 #include "assets.hpp"
 #include "panel_layout.hpp"
 #include "session.hpp"
+#include "temp_dir_test.hpp"
 
 namespace psb::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SessionTest : public ::testing::Test {
+class SessionTest : public TempDirTest {
   protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("psb-session-" + std::to_string(::getpid()));
-        fs::remove_all(dir_);
-        fs::create_directories(dir_);
-    }
-    void TearDown() override { fs::remove_all(dir_); }
+    SessionTest() : TempDirTest("psb-session") {}
 
     [[nodiscard]] SessionOptions options() const {
         SessionOptions o;
@@ -59,8 +55,6 @@ class SessionTest : public ::testing::Test {
         }
         s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1 + hold});
     }
-
-    fs::path dir_;
 };
 
 TEST_F(SessionTest, TheDefaultSceneIsAtHumanScale) {
