@@ -82,6 +82,30 @@ SDL_Rect TrailImage::dirty() const {
 }
 
 void TrailImage::disc(float cx, float cy, float r, std::uint32_t argb) {
+    if (r < 1.0f && cx >= 1.0f && cy >= 1.0f && cx < static_cast<float>(width_ - 1) &&
+        cy < static_cast<float>(height_ - 1)) {
+        // A disc under a pixel's radius (the common case in dense scenes): the pixel under the
+        // centre and those of its eight neighbours within r + 0.5 of the centre, without the
+        // general bounding-box loop.
+        const int ix = static_cast<int>(cx), iy = static_cast<int>(cy);
+        const float fx = cx - static_cast<float>(ix) - 0.5f;
+        const float fy = cy - static_cast<float>(iy) - 0.5f;
+        const float reach2 = (r + 0.5f) * (r + 0.5f);
+        std::uint32_t* centre = pixels_.data() + static_cast<std::size_t>(iy) * width_ + ix;
+        for (int j = -1; j <= 1; ++j) {
+            const float dy = static_cast<float>(j) - fy;
+            std::uint32_t* row = centre + static_cast<std::ptrdiff_t>(j) * width_;
+            for (int i = -1; i <= 1; ++i) {
+                const float dx = static_cast<float>(i) - fx;
+                if (dx * dx + dy * dy <= reach2 || (i == 0 && j == 0)) row[i] = argb;
+            }
+        }
+        minX_ = std::min(minX_, ix - 1);
+        minY_ = std::min(minY_, iy - 1);
+        maxX_ = std::max(maxX_, ix + 1);
+        maxY_ = std::max(maxY_, iy + 1);
+        return;
+    }
     const float reach = r + 0.5f;
     const int x0 = std::max(0, static_cast<int>(std::floor(cx - reach)));
     const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(cx + reach)));
