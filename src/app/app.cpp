@@ -9,6 +9,7 @@
 
 #include "assets.hpp"
 #include "benchmark_scene.hpp"
+#include "clock.hpp"
 #include "hud.hpp"
 #include "panel_layout.hpp"
 #include "scene_io.hpp"
@@ -22,10 +23,6 @@ namespace {
 /// this many lines.
 constexpr std::size_t kShownMessages = 2;
 constexpr double kMessageSeconds = 3.0;
-
-double msSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 void logLine(const std::string& line) {
     std::fputs(line.c_str(), stdout);
@@ -89,7 +86,7 @@ App::App(const AppOptions& options) : options_(options) {
 }
 
 double App::now() const {
-    return static_cast<double>(SDL_GetTicks64()) / 1000.0;
+    return ticksToSeconds(SDL_GetTicks64());
 }
 
 void App::flushNotices() {

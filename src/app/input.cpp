@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "clock.hpp"
+
 namespace psb::app {
 
 namespace {
@@ -135,7 +137,7 @@ std::vector<Command> Input::translate(const SDL_Event& e, bool editing, double p
         case SDL_MOUSEBUTTONDOWN:
             mouse_ = at(e.button.x, e.button.y);
             if (e.button.button == SDL_BUTTON_LEFT) {
-                return {cmd::PointerDown{mouse_, e.button.timestamp / 1000.0}};
+                return {cmd::PointerDown{mouse_, ticksToSeconds(e.button.timestamp)}};
             }
             if (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE) {
                 panning_ = true;
@@ -146,13 +148,13 @@ std::vector<Command> Input::translate(const SDL_Event& e, bool editing, double p
             std::vector<Command> out;
             if (panning_) out.emplace_back(cmd::Pan{m - mouse_});
             mouse_ = m;
-            out.emplace_back(cmd::PointerMove{m, e.motion.timestamp / 1000.0});
+            out.emplace_back(cmd::PointerMove{m, ticksToSeconds(e.motion.timestamp)});
             return out;
         }
         case SDL_MOUSEBUTTONUP:
             mouse_ = at(e.button.x, e.button.y);
             if (e.button.button == SDL_BUTTON_LEFT) {
-                return {cmd::PointerUp{mouse_, e.button.timestamp / 1000.0}};
+                return {cmd::PointerUp{mouse_, ticksToSeconds(e.button.timestamp)}};
             }
             if (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE) {
                 panning_ = false;

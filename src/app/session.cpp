@@ -9,16 +9,13 @@
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "clock.hpp"
 #include "physics_controls.hpp"
 #include "scene_io.hpp"
 
 namespace psb::app {
 
 namespace {
-
-double msSince(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 std::string fmt(const char* format, double a, double b) {
     char buf[128];
