@@ -220,6 +220,44 @@ TEST_F(SessionTest, AFittedViewLeavesTheMessagesBandAndThePanelColumnFree) {
     EXPECT_GT(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);  // room back
 }
 
+TEST_F(SessionTest, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
+    // The layout the app draws (HUD and messages sized as the 14 px font makes them) against
+    // the box the fitted camera shows, with the plots, the histogram and the profile on.
+    Session s = session();
+    s.apply(cmd::TogglePlots{});
+    s.apply(cmd::ToggleSpeeds{});
+    s.apply(cmd::ToggleProfile{});
+    for (const auto& [w, h] : {std::pair{800, 600},
+                               {900, 800},
+                               {1024, 768},
+                               {1280, 720},
+                               {1366, 768},
+                               {1600, 900},
+                               {1920, 1080},
+                               {800, 1200}}) {
+        s.apply(cmd::Resize{w, h});
+        const auto b = s.camera().boxOnScreen(7.0, 7.0);
+        const SDL_Rect box{static_cast<int>(b.topLeft.x()), static_cast<int>(b.topLeft.y()),
+                           static_cast<int>(b.size.x()), static_cast<int>(b.size.y())};
+        LayoutRequest req;
+        req.width = w;
+        req.height = h;
+        req.hud = {560, 129};
+        req.profile = {260, 220};
+        req.messages = {400, 40};
+        req.plots = req.speeds = true;
+        const PanelLayout l = layoutPanels(req);
+        for (const SDL_Rect& panel : {l.plots, l.speeds, l.profile, l.messages}) {
+            EXPECT_FALSE(overlaps(panel, box))
+                << w << "x" << h << ": panel at " << panel.x << "," << panel.y << " " << panel.w
+                << "x" << panel.h << ", box " << box.x << "," << box.y << " " << box.w << "x"
+                << box.h;
+        }
+        EXPECT_GT(l.plots.w, 0) << w << "x" << h;
+        EXPECT_GT(box.w, w / 3) << w << "x" << h;  // the box still gets a good part
+    }
+}
+
 TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
     Session s = session();
     const double before = s.camera().zoom();
