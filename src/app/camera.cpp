@@ -47,6 +47,18 @@ void Camera::fit(double width, double height, double marginPixels, double topIns
     offset_ = centre - Vec2((width_ - right) / 2.0, top + (height_ - top - bottom) / 2.0) / zoom_;
 }
 
+void Camera::keepNear(double width, double height) {
+    const ScreenBox b = boxOnScreen(width, height);
+    // Screen x of the box's left edge may lie in [-W - size, 2W]: some of it within a viewport.
+    const auto shift = [](double lo, double size, double extent) {
+        const double minLo = -extent - size, maxLo = 2.0 * extent;
+        return lo < minLo ? minLo - lo : lo > maxLo ? maxLo - lo : 0.0;
+    };
+    const Vec2 d(shift(b.topLeft.x(), b.size.x(), width_),
+                 shift(b.topLeft.y(), b.size.y(), height_));
+    if (d != Vec2::Zero()) panPixels(d);
+}
+
 Camera::ScreenBox Camera::boxOnScreen(double width, double height) const {
     return {worldToScreen(Vec2::Zero()), Vec2(toScreen(width), toScreen(height))};
 }

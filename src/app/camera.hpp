@@ -59,6 +59,10 @@ class Camera {
     /// is given up as far as needed to keep the box at least a third of the viewport.
     void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0,
              double bottomInsetPixels = 0.0, double rightInsetPixels = 0.0);
+    /// Moves the view back as little as needed so that the box [0, width] × [0, height] stays
+    /// within one viewport of the screen (panning has a limit: the box can go off screen, where
+    /// a marker points to it, but never far away).
+    void keepNear(double width, double height);
     /// The screen rectangle of the world box [0, width] × [0, height]: top-left and size, pixels.
     struct ScreenBox {
         Vec2 topLeft;

@@ -184,6 +184,7 @@ void Session::apply(const Command& command) {
                 deleteHeld();
             } else if constexpr (std::is_same_v<T, cmd::Pan>) {
                 camera_.panPixels(c.pixels);
+                camera_.keepNear(world_.def().width, world_.def().height);
                 afterCameraMove();
             } else if constexpr (std::is_same_v<T, cmd::Zoom>) {
                 camera_.zoomAbout(c.screen, c.factor);
