@@ -45,12 +45,11 @@ const char* logPrefix(Notice::Level level) {
 }
 
 Session::Session(World world, std::string sceneName, SessionOptions options)
-    : options_(std::move(options)), world_(std::move(world)), paused_(options_.paused) {
+    : options_(std::move(options)), paused_(options_.paused) {
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
-    World w = world_;
-    setWorld(std::move(w), std::move(sceneName));
+    setWorld(std::move(world), std::move(sceneName));
 }
 
 void Session::setWorld(World world, std::string name) {
