@@ -67,7 +67,8 @@ App::App(const AppOptions& options) : options_(options) {
     // Keep the HUD's lines clear of the box above it, the messages below it, and (while they
     // are on) the panels beside it.
     const int lh = sdl_->hudFont().lineHeight();
-    s.insets.top = static_cast<double>(hudLines(HudData{}).size()) * lh + 10.0;
+    // One spare line for the HUD's notes about labels left out.
+    s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
     s.insets.bottom = static_cast<double>(kShownMessages) * lh + 4.0 + kPanelMargin;
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
     session_.emplace(std::move(world), std::move(name), std::move(s));
@@ -206,6 +207,7 @@ void App::render() {
     lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont());
     const DrawStats drawn = draw_->draw(lastFrame_);
     stats_.labelsSuppressed = drawn.labelsSuppressed;
+    stats_.labelsCrowded = drawn.labelsCrowded;
     if (session_->takeScreenshotRequest()) writeScreenshot();
     sdl_->setTitle(lastFrame_.title);
     sdl_->present();

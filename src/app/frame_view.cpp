@@ -105,6 +105,10 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     Overlays& o = f.overlays;
     o.hud = hudLines(hudData(session, stats));
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
+    if (stats.labelsCrowded > 0 && session.view().labels) {
+        o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
+                        " left out where they would overlap (zoom in)");
+    }
     o.showHelp = session.helpShown();
     if (o.showHelp) o.help = helpLines();
     o.showProfile = session.profileShown();

@@ -62,6 +62,7 @@ struct FrameStats {
     double lastStepMs = 0.0;        ///< the last frame's
     double lastDrawMs = 0.0;        ///< the last frame's
     bool labelsSuppressed = false;  ///< the last draw had too many particles for labels
+    std::size_t labelsCrowded = 0;  ///< labels the last draw left out for want of room
     std::string renderer;           ///< the render driver in use
     std::vector<std::string> messages;
 };
