@@ -36,7 +36,7 @@ shoot_and_quit() {
     sleep 0.3
     xdotool key --window "$wid" F12
     until grep -q "Saved screenshot" "$1/log"; do sleep 0.05; done
-    for ((k = 1; k < $2; ++k)); do xdotool key --window "$wid" Escape; sleep 0.2; done
+    for ((k = 1; k < $2; ++k)); do xdotool key --window "$wid" Escape 2>/dev/null || true; sleep 0.2; done
     # The window may be gone before xdotool sends the key release.
     xdotool key --window "$wid" Escape 2>/dev/null || true
     wait "$pid"

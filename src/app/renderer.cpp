@@ -230,9 +230,23 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         } else {
             const int lh = labelFont_->lineHeight();
             std::vector<SDL_Rect> placed;
+            // Discs' boxes: a label keeps off other particles where it can.
+            std::vector<SDL_Rect> discBoxes;
+            discBoxes.reserve(visible.size());
+            for (std::size_t i : visible) {
+                const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i])));
+                discBoxes.push_back({static_cast<int>(std::lround(c.x())) - r,
+                                     static_cast<int>(std::lround(c.y())) - r, 2 * r, 2 * r});
+            }
+            bool avoidDiscs = true;
             const auto free = [&](const SDL_Rect& r) {
                 for (const SDL_Rect& o : placed)
                     if (SDL_HasIntersection(&r, &o)) return false;
+                if (avoidDiscs) {
+                    for (const SDL_Rect& o : discBoxes)
+                        if (SDL_HasIntersection(&r, &o)) return false;
+                }
                 if (avoid != nullptr) {
                     for (const SDL_Rect& o : *avoid)
                         if (SDL_HasIntersection(&r, &o)) return false;
@@ -261,12 +275,17 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                                                 {cx - bw / 2, cy + r, bw, bh},
                                                 {cx + r, cy - bh / 2, bw, bh},
                                                 {cx - r - bw, cy - bh / 2, bw, bh}};
+                // First a place clear of every disc, else one clear of labels and panels only.
                 const SDL_Rect* box = nullptr;
-                for (const SDL_Rect& cand : candidates) {
-                    if (free(cand)) {
-                        box = &cand;
-                        break;
+                for (const bool discs : {true, false}) {
+                    avoidDiscs = discs;
+                    for (const SDL_Rect& cand : candidates) {
+                        if (free(cand)) {
+                            box = &cand;
+                            break;
+                        }
                     }
+                    if (box != nullptr) break;
                 }
                 if (box == nullptr) {
                     ++stats.labelsCrowded;
