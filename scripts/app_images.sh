@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Makes the app's pictures in docs/images, each the app's own F12 screenshot under Xvfb:
+#   sandbox.png  the built-in scene (7 m box, 1 px = 1 cm), paused, labels on (S), 800x800
+#   overlays-momentum.png  the built-in scene running 4 s with V and all trails (L, L), 720x720
+#   overlays-gas.png       04-gas-in-a-box after 13 s with K and D, arrows off, 900x720
 #   help.png     the built-in scene, paused, with the help overlay (H), 720x720 window
 #   inspect.png  the built-in scene, paused, the 18 kg particle selected by a click and its
 #                edit prompt open with 25 typed (Enter, 2, 5), 600x600 window scaled to 75 %
@@ -15,41 +18,64 @@ trap 'rm -rf "$WORK"' EXIT
 
 cat >"$WORK/drive.sh" <<'DRIVE'
 set -euo pipefail
-# start SIZE SHOT_DIR: the app, paused, on the built-in scene; sets pid, wid, X, Y, zoom, bx, by.
+# start SIZE SHOT_DIR [ARGS...]: the app (paused on the built-in scene unless ARGS say
+# otherwise); sets pid, wid, X, Y, zoom, bx, by.
 start() {
-    "$BIN" --renderer software --window "$1" --paused --screenshot-dir "$2" >"$2/log" &
+    local size=$1 dir=$2
+    shift 2
+    [[ $# -gt 0 ]] || set -- --paused
+    "$BIN" --renderer software --window "$size" --screenshot-dir "$dir" "$@" >"$dir/log" &
     pid=$!
     wid=$(timeout 20 xdotool search --sync --onlyvisible --pid "$pid" --name "Particle Sandbox" | head -1)
     eval "$(xdotool getwindowgeometry --shell "$wid")"
-    until grep -q "View: zoom" "$2/log"; do sleep 0.05; done
-    read -r zoom bx by < <(sed -nE 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/p' "$2/log" | head -1)
+    until grep -q "View: zoom" "$dir/log"; do sleep 0.05; done
+    read -r zoom bx by < <(sed -nE 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/p' "$dir/log" | head -1)
 }
 # shoot_and_quit SHOT_DIR ESCAPES
 shoot_and_quit() {
     sleep 0.3
     xdotool key --window "$wid" F12
     until grep -q "Saved screenshot" "$1/log"; do sleep 0.05; done
-    for ((k = 1; k < $2; ++k)); do xdotool key --window "$wid" Escape; sleep 0.2; done
+    for ((k = 1; k < $2; ++k)); do xdotool key --window "$wid" Escape 2>/dev/null || true; sleep 0.2; done
     # The window may be gone before xdotool sends the key release.
     xdotool key --window "$wid" Escape 2>/dev/null || true
     wait "$pid"
 }
 
-mkdir -p "$WORK/help" "$WORK/inspect"
+mkdir -p "$WORK/sandbox" "$WORK/help" "$WORK/inspect" "$WORK/momentum" "$WORK/gas"
+start 720x720 "$WORK/momentum" --seed 1
+for k in v l l; do xdotool key --window "$wid" "$k"; sleep 0.1; done
+sleep 4
+xdotool key --window "$wid" space  # paused: nothing to lose, one Esc quits
+shoot_and_quit "$WORK/momentum" 1
+
+start 900x720 "$WORK/gas" "$ASSETS/scenes/04-gas-in-a-box.json" --no-arrows
+for k in k d; do xdotool key --window "$wid" "$k"; sleep 0.1; done
+sleep 13
+shoot_and_quit "$WORK/gas" 1
+
+start 800x800 "$WORK/sandbox"
+xdotool key --window "$wid" s
+shoot_and_quit "$WORK/sandbox" 1
+
 start 720x720 "$WORK/help"
 xdotool key --window "$wid" h
-shoot_and_quit "$WORK/help" 1
+shoot_and_quit "$WORK/help" 2  # Esc closes the help, then quits
 
 start 600x600 "$WORK/inspect"
-# The 18 kg particle at (520, 160) m.
-px=$(awk -v z="$zoom" -v b="$bx" -v o="$X" 'BEGIN { printf "%d", o + b + 520 * z }')
-py=$(awk -v z="$zoom" -v b="$by" -v o="$Y" 'BEGIN { printf "%d", o + b + 160 * z }')
+# The 18 kg particle at (5.2, 1.6) m.
+px=$(awk -v z="$zoom" -v b="$bx" -v o="$X" 'BEGIN { printf "%d", o + b + 5.2 * z }')
+py=$(awk -v z="$zoom" -v b="$by" -v o="$Y" 'BEGIN { printf "%d", o + b + 1.6 * z }')
 xdotool mousemove --sync "$px" "$py" sleep 0.1 click 1
 sleep 0.3
 xdotool key --window "$wid" Return sleep 0.2 type --window "$wid" --delay 50 "25"
 shoot_and_quit "$WORK/inspect" 2
 DRIVE
-BIN=$BIN WORK=$WORK xvfb-run -a -s "-screen 0 800x800x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
+ASSETS=$(cd "$(dirname "$0")/../assets" && pwd)
+BIN=$BIN WORK=$WORK ASSETS=$ASSETS xvfb-run -a -s "-screen 0 1000x900x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
+convert "$WORK"/sandbox/particle-sandbox-*.png -strip "$OUT/sandbox.png"
+convert "$WORK"/momentum/particle-sandbox-*.png -strip "$OUT/overlays-momentum.png"
+convert "$WORK"/gas/particle-sandbox-*.png -strip "$OUT/overlays-gas.png"
 convert "$WORK"/help/particle-sandbox-*.png -strip "$OUT/help.png"
 convert "$WORK"/inspect/particle-sandbox-*.png -resize 75% -strip "$OUT/inspect.png"
-echo "wrote $OUT/help.png and $OUT/inspect.png"
+echo "wrote sandbox, overlays-momentum, overlays-gas, help and inspect .png in $OUT"

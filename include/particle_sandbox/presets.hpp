@@ -10,10 +10,10 @@
 
 namespace psb {
 
-/// The original program's opening scene, fixed: a 700 m × 700 m box with walls, no gravity,
-/// e = 1, and a handful of particles of 3..20 kg with radius 2.5 m/kg × mass, speeds up to
-/// 300 m/s (the original's ±5 px per frame at 60 frames per second), placed without overlaps.
-/// Always the same scene; assets/scenes/01-original.json holds the same particles.
+/// The original program's opening scene, fixed, at 1 pixel = 1 cm: a 7 m × 7 m box with walls,
+/// no gravity, e = 1, and a handful of particles of 3..20 kg with radius 2.5 cm/kg × mass,
+/// speeds up to 3 m/s (the original's ±5 px per frame at 60 frames per second), placed without
+/// overlaps. Always the same scene; assets/scenes/01-original.json holds the same particles.
 [[nodiscard]] Scene defaultScene();
 
 /// The scene files (`*.json`) directly inside `directory`, sorted by file name, so that the

@@ -2,6 +2,7 @@
 
 #include <limits>
 
+#include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
 
 namespace psb::app {
@@ -24,20 +25,40 @@ std::string modeName(const SolverSettings& solver) {
     return name;
 }
 
+namespace {
+
+/// A short reason for the screen from the world's message.
+std::string shortReason(const std::string& what) {
+    if (what.find("gravity") != std::string::npos) return "it has no gravity";
+    return "the world refused it";
+}
+
+}  // namespace
+
 ModeSwitch switchToNextMode(World& world) {
-    SolverSettings s = world.solver();
-    s.mode = nextMode(s.mode);
-    if (s.mode == StepMode::Substep && s.substeps < 2) s.substeps = kAppSubsteps;
-    try {
-        world.setSolver(s);
-    } catch (const InvalidArgument& e) {
-        const std::string why = std::string(e.what()).find("gravity") != std::string::npos
-                                    ? "it does not support gravity"
-                                    : "the world refused it";
-        return {false, "Exact mode refused (" + why + "); mode stays " + modeName(world.solver()),
-                e.what()};
+    ModeSwitch r;
+    const StepMode start = world.solver().mode;
+    std::string reasons;
+    for (StepMode m = nextMode(start); m != start; m = nextMode(m)) {
+        SolverSettings s = world.solver();
+        s.mode = m;
+        if (s.mode == StepMode::Substep && s.substeps < 2) s.substeps = kAppSubsteps;
+        try {
+            world.setSolver(s);
+        } catch (const InvalidArgument& e) {
+            const std::string name(toString(m));
+            r.skipped += (r.skipped.empty() ? "" : ", ") + name;
+            reasons += (reasons.empty() ? "" : "; ") + name + " skipped: " + shortReason(e.what());
+            r.detail += (r.detail.empty() ? "" : " | ") + name + ": " + e.what();
+            continue;
+        }
+        r.changed = true;
+        r.message = "Mode: " + modeName(world.solver());
+        if (!reasons.empty()) r.message += " (" + reasons + ")";
+        return r;
     }
-    return {true, "Mode: " + modeName(world.solver()), {}};
+    r.message = "Mode stays " + modeName(world.solver()) + " (" + reasons + ")";
+    return r;
 }
 
 void AccuracyMonitor::resetReference(double kineticEnergy) {
@@ -53,6 +74,10 @@ void AccuracyMonitor::endSteps(const World& world) {
     if (c.steps == 0) return;  // nothing stepped (paused): keep the last figures
     overlap_ = c.maxOverlap;
     eventsPerStep_ = static_cast<double>(c.events) / static_cast<double>(c.steps);
+}
+
+void AccuracyMonitor::measureState(const World& world) {
+    stateOverlap_ = maxOverlap(world);
 }
 
 double AccuracyMonitor::drift(double kineticEnergy) const {

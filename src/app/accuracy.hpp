@@ -1,20 +1,23 @@
 #pragma once
 // Switching the stepping mode from the keyboard, and the live accuracy indicators of the HUD.
 //
-// Mode switch: discrete -> substep -> exact -> discrete. The world validates the choice
-// (exact mode refuses gravity with psb::InvalidArgument); a refusal is reported as a message and
-// the world keeps its mode, so a key press can never take the app down.
+// Mode switch: discrete -> substep -> exact -> discrete. Which modes a world takes is the
+// world's to say (World::setSolver throws psb::InvalidArgument for settings it refuses; the
+// exact mode has refused gravity), so the switch asks it: a mode the world refuses is skipped
+// with the world's reason, and the switch moves on to the one after, so a key press always
+// changes the mode when any other mode is possible, and can never take the app down.
 //
 // Indicators, both O(1) or O(N) per frame and nothing more:
-// - Largest overlap: the world's counters already record the deepest overlap its detection met
-//   (StepCounters::maxOverlap, taken from the broadphase pairs the step finds anyway, and from
-//   the exact stepper's own checks). The counter is a running maximum, so the monitor resets
-//   the counters before each frame's steps and reads them after: the figure is the deepest
-//   overlap of this frame's steps, at no cost beyond the step itself.
+// - Largest overlap: the deeper of what this frame's steps met (StepCounters::maxOverlap, a
+//   running maximum the monitor clears before the steps) and the overlap of the state as drawn
+//   (psb::maxOverlap, one broadphase pass), so that pairs placed overlapping by a drag, a spawn
+//   or an edit show while paused and in the exact mode, whose events meet overlaps only at
+//   collisions.
 // - Kinetic energy drift: (KE - KE_ref) / KE_ref, where KE_ref is taken at the last user
 //   action (grab, release, launch, spawn, delete, mode change, scene load). KE itself is the
 //   O(N) sum the HUD shows anyway.
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -32,12 +35,13 @@ inline constexpr int kAppSubsteps = 4;
 
 struct ModeSwitch {
     bool changed = false;
-    std::string message;  ///< for the screen: the new mode, or a short reason for the refusal
-    std::string detail;   ///< for the log: the world's full message on a refusal
+    std::string message;  ///< for the screen: the new mode, and the modes skipped and why
+    std::string skipped;  ///< the modes the world refused, e.g. "exact"; empty when none
+    std::string detail;   ///< for the log: the world's full messages for the skipped modes
 };
 
-/// Moves `world` to the next mode. On refusal (exact with gravity) the world is unchanged and
-/// the message says why.
+/// Moves `world` to the next mode it accepts, skipping (and naming) those it refuses. When it
+/// refuses every other mode the world is unchanged and the message says why.
 ModeSwitch switchToNextMode(World& world);
 
 /// "discrete", "substep x4", "exact".
@@ -52,19 +56,25 @@ class AccuracyMonitor {
     void beginSteps(World& world);
     /// After a frame's steps: records the overlap and events of those steps (if any ran).
     void endSteps(const World& world);
+    /// The state as it will be drawn: records its deepest overlap now.
+    void measureState(const World& world);
+    /// The steps' detection covers the state: forget the last measurement.
+    void clearState() { stateOverlap_ = 0.0; }
 
     /// Relative drift of `kineticEnergy` from the reference; NaN without a reference or when
     /// the reference is 0 (nothing moving).
     [[nodiscard]] double drift(double kineticEnergy) const;
     [[nodiscard]] double referenceEnergy() const { return reference_; }
-    /// Deepest overlap met by the last frame that stepped, metres.
-    [[nodiscard]] double overlap() const { return overlap_; }
+    /// Deepest overlap met by the last frame that stepped or present in the state measured
+    /// last, metres.
+    [[nodiscard]] double overlap() const { return std::max(overlap_, stateOverlap_); }
     /// Exact-mode events processed per step in the last frame that stepped.
     [[nodiscard]] double eventsPerStep() const { return eventsPerStep_; }
 
   private:
     double reference_ = -1.0;  // < 0: none yet
     double overlap_ = 0.0;
+    double stateOverlap_ = 0.0;
     double eventsPerStep_ = 0.0;
 };
 

@@ -27,21 +27,40 @@ void Camera::panPixels(const Vec2& pixels) {
     if (pixels.allFinite()) offset_ -= pixels / zoom_;
 }
 
-void Camera::fit(double width, double height, double marginPixels, double topInsetPixels) {
+void Camera::fit(double width, double height, double marginPixels, double topInsetPixels,
+                 double bottomInsetPixels, double rightInsetPixels) {
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
         return;
     }
-    // The inset is given up only when the window is tall enough to spare it.
-    const double inset = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
-    const double usableW = std::max(1.0, width_ - 2.0 * marginPixels);
-    const double usableH = std::max(1.0, height_ - inset - 2.0 * marginPixels);
+    // The insets are given up only when the window is big enough to spare them.
+    const double top = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
+    const double bottom = std::clamp(bottomInsetPixels, 0.0, height_ / 3.0);
+    const double right = std::clamp(rightInsetPixels, 0.0, 2.0 * width_ / 3.0);
+    const double usableW = std::max(1.0, width_ - right - 2.0 * marginPixels);
+    const double usableH = std::max(1.0, height_ - top - bottom - 2.0 * marginPixels);
     const double z = std::min(usableW / width, usableH / height);
     minZoom_ = z / 50.0;
     maxZoom_ = z * 500.0;
     zoom_ = z;
-    // The box's centre maps to the centre of the area below the inset.
+    // The box's centre maps to the centre of the area the insets leave.
     const Vec2 centre(width / 2.0, height / 2.0);
-    offset_ = centre - Vec2(width_ / 2.0, inset + (height_ - inset) / 2.0) / zoom_;
+    offset_ = centre - Vec2((width_ - right) / 2.0, top + (height_ - top - bottom) / 2.0) / zoom_;
+}
+
+void Camera::keepNear(double width, double height) {
+    const ScreenBox b = boxOnScreen(width, height);
+    // Screen x of the box's left edge may lie in [-W - size, 2W]: some of it within a viewport.
+    const auto shift = [](double lo, double size, double extent) {
+        const double minLo = -extent - size, maxLo = 2.0 * extent;
+        return lo < minLo ? minLo - lo : lo > maxLo ? maxLo - lo : 0.0;
+    };
+    const Vec2 d(shift(b.topLeft.x(), b.size.x(), width_),
+                 shift(b.topLeft.y(), b.size.y(), height_));
+    if (d != Vec2::Zero()) panPixels(d);
+}
+
+Camera::ScreenBox Camera::boxOnScreen(double width, double height) const {
+    return {worldToScreen(Vec2::Zero()), Vec2(toScreen(width), toScreen(height))};
 }
 
 }  // namespace psb::app

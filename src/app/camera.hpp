@@ -22,6 +22,17 @@ class Camera {
 
     [[nodiscard]] Vec2 worldToScreen(const Vec2& world) const { return (world - offset_) * zoom_; }
     [[nodiscard]] Vec2 screenToWorld(const Vec2& screen) const { return screen / zoom_ + offset_; }
+    /// worldToScreen as a scale and a shift, screen = origin + scale × world, for code that maps
+    /// many points in floats (the trails): the same mapping, stated once here.
+    struct Transform {
+        float scale = 1.0f;
+        float originX = 0.0f;
+        float originY = 0.0f;
+    };
+    [[nodiscard]] Transform transform() const {
+        const Vec2 o = worldToScreen(Vec2::Zero());
+        return {static_cast<float>(zoom_), static_cast<float>(o.x()), static_cast<float>(o.y())};
+    }
     /// A world length (metres) in pixels, and back.
     [[nodiscard]] double toScreen(double metres) const { return metres * zoom_; }
     [[nodiscard]] double toWorld(double pixels) const { return pixels / zoom_; }
@@ -42,9 +53,22 @@ class Camera {
     /// world to the right).
     void panPixels(const Vec2& pixels);
     /// Centres a `width` × `height` metre box in the viewport with `marginPixels` around it,
-    /// below a band of `topInsetPixels` kept free (for the HUD), and resets the zoom limits
-    /// around that zoom (1/50 to 500 times it).
-    void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0);
+    /// between a band of `topInsetPixels` kept free above (for the HUD), one of
+    /// `bottomInsetPixels` below (the messages) and a column of `rightInsetPixels` at the right
+    /// (the panels), and resets the zoom limits around that zoom (1/50 to 500 times it). A band
+    /// is given up as far as needed to keep the box at least a third of the viewport.
+    void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0,
+             double bottomInsetPixels = 0.0, double rightInsetPixels = 0.0);
+    /// Moves the view back as little as needed so that the box [0, width] × [0, height] stays
+    /// within one viewport of the screen (panning has a limit: the box can go off screen, where
+    /// a marker points to it, but never far away).
+    void keepNear(double width, double height);
+    /// The screen rectangle of the world box [0, width] × [0, height]: top-left and size, pixels.
+    struct ScreenBox {
+        Vec2 topLeft;
+        Vec2 size;
+    };
+    [[nodiscard]] ScreenBox boxOnScreen(double width, double height) const;
 
   private:
     int width_ = 800;

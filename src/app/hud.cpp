@@ -16,10 +16,24 @@ std::string windowTitle(std::size_t particles, bool paused, const std::string& s
 std::vector<std::string> hudLines(const HudData& d) {
     char buf[160];
     std::vector<std::string> lines;
-    std::snprintf(buf, sizeof buf, "FPS %.0f | step %.2f ms | draw %.2f ms", d.fps, d.stepMs,
-                  d.drawMs);
+    if (d.paused) {
+        std::snprintf(buf, sizeof buf, "Paused: redrawn on input | step %.2f ms | draw %.2f ms",
+                      d.stepMs, d.drawMs);
+    } else {
+        std::snprintf(buf, sizeof buf, "FPS %.0f | step %.2f ms | draw %.2f ms", d.fps, d.stepMs,
+                      d.drawMs);
+    }
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "Time %.2f s x%g | %zu particles%s", d.simTime, d.timeScale,
+    if (!d.renderer.empty()) lines.back() += " | " + d.renderer;
+    // Below 95 % of the speed asked for, the reached speed is what the user sees.
+    char speed[64];
+    if (!d.paused && d.reachedTimeScale < 0.95 * d.timeScale) {
+        std::snprintf(speed, sizeof speed, "x%.2g of x%g asked (steps too slow)",
+                      d.reachedTimeScale, d.timeScale);
+    } else {
+        std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
+    }
+    std::snprintf(buf, sizeof buf, "Time %.2f s %s | %zu particles%s", d.simTime, speed,
                   d.particles, d.paused ? " | PAUSED" : "");
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "KE %.4g J | p [%.4g, %.4g] kg m/s", d.kineticEnergy,
@@ -42,7 +56,7 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.3g m", d.spawnMass, d.spawnRadius);
     std::string last = buf;
     if (d.arrowSeconds > 0.0) {
-        std::snprintf(buf, sizeof buf, " | arrow = %.3g s of motion", d.arrowSeconds);
+        std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
         last += buf;
     }
     lines.push_back(last + " | H: help");
@@ -87,7 +101,7 @@ std::vector<std::string> profileLines(const ProfileData& d) {
 const std::vector<std::pair<std::string, std::string>>& controls() {
     static const std::vector<std::pair<std::string, std::string>> list = {
         {"Left drag on a particle", "grab it; release to fling it"},
-        {"Left drag on empty space", "launch a new particle with the drag's velocity"},
+        {"Left drag on empty space", "launch a particle: the drag is its arrow"},
         {"Left click on a particle", "select it: outline and inspector panel"},
         {"Left click on empty space", "clear the selection"},
         {"Enter (selected)", "edit it (Tab: next field, Esc: cancel)"},
@@ -115,7 +129,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"D", "speed histogram against Maxwell-Boltzmann"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
-        {"Esc", "quit (cancel, while editing)"},
+        {"Esc", "close help / edit; quit (asks if unsaved)"},
     };
     return list;
 }

@@ -17,7 +17,9 @@ namespace psb::app {
 struct HudData {
     double fps = 0.0;
     double simTime = 0.0;    ///< seconds
-    double timeScale = 1.0;  ///< simulated seconds per real second
+    double timeScale = 1.0;  ///< simulated seconds per real second asked for
+    /// Simulated seconds per real second reached (below timeScale when the steps cannot keep up).
+    double reachedTimeScale = 1.0;
     std::size_t particles = 0;
     double kineticEnergy = 0.0;    ///< J
     Vec2 momentum = Vec2::Zero();  ///< kg·m/s
@@ -27,6 +29,7 @@ struct HudData {
     bool paused = false;
     double stepMs = 0.0;          ///< wall-clock ms of simulation per frame
     double drawMs = 0.0;          ///< wall-clock ms of drawing per frame
+    std::string renderer;         ///< the render driver, e.g. "software"; "" not shown
     std::string mode;             ///< stepping mode, e.g. "substep x4"
     std::string broadphase;       ///< the broadphase in use ("grid", ...; the exact mode's cells)
     int threads = 1;              ///< threads the step may use
@@ -51,7 +54,9 @@ struct ProfileData {
 [[nodiscard]] std::string windowTitle(std::size_t particles, bool paused,
                                       const std::string& scene = {});
 
-/// The status lines, top to bottom.
+/// The status lines, top to bottom. While paused the loop sleeps until an event, so the first
+/// line gives the cost of a frame instead of a frame rate that only counts redraws; a time speed
+/// the steps cannot keep up with shows what is reached.
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);
 
 /// The profile overlay, one line per stage then the frame's step and draw times.

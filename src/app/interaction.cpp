@@ -90,6 +90,29 @@ std::optional<Vec2> findFreeSpot(const World& world, const Vec2& desired, double
     return std::nullopt;
 }
 
+double spawnLengthScale(const World& world) {
+    const ParticleArrays& p = world.particles();
+    const WorldDef& d = world.def();
+    const double boxScale = std::min(d.width, d.height) / 700.0;
+    if (p.size() == 0) return boxScale;
+    std::vector<double> radii(p.radius.begin(), p.radius.end());
+    const auto mid = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
+    std::nth_element(radii.begin(), mid, radii.end());
+    const double median = *mid;
+    // 10 kg at 2.5 length units per kg: 25 units.
+    return median > 0.0 && std::isfinite(median) ? median / 25.0 : boxScale;
+}
+
+double maxLaunchSpeed(const WorldDef& def) {
+    return kMaxLaunchBoxesPerSecond * std::max(def.width, def.height);
+}
+
+CappedVelocity capSpeed(const Vec2& v, double maxSpeed) {
+    const double speed = v.norm();
+    if (maxSpeed > 0.0 && speed > maxSpeed) return {v * (maxSpeed / speed), true};
+    return {v, false};
+}
+
 std::string deletionLogLine(const Particle& p) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
@@ -153,12 +176,23 @@ void Interaction::applyHold(World& world, double now, const LaunchSettings& laun
     world.setVelocity(held_, handVelocity(now, launch));
 }
 
+CappedVelocity Interaction::launchVelocityNow(const LaunchSettings& launch,
+                                              double launchSeconds) const {
+    const Vec2 drag = pointer() - pressPoint_;
+    if (!(launchSeconds > 0.0) || drag.norm() < launch.minDistance) return {};
+    return capSpeed(drag / launchSeconds, launch.maxSpeed);
+}
+
 ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
-                                   const SpawnSettings& spawn, const LaunchSettings& launch) {
+                                   const SpawnSettings& spawn, const LaunchSettings& launch,
+                                   double launchSeconds) {
     ReleaseResult result;
     if (mode_ == Mode::Idle) return result;
     record(point, time);
-    const Vec2 v = handVelocity(time, launch);
+    LaunchSettings uncapped = launch;
+    uncapped.maxSpeed = 0.0;
+    const CappedVelocity hand = capSpeed(handVelocity(time, uncapped), launch.maxSpeed);
+    const Vec2 v = hand.velocity;
     const bool click = travel_ < launch.minDistance && time - pressTime_ <= kClickSeconds;
     if (click) {
         result.kind = ReleaseResult::Kind::Clicked;
@@ -178,11 +212,13 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
         result.id = held_;
         result.position = world.get(held_).position;
         result.velocity = v;
+        result.capped = hand.capped;
     } else if (mode_ == Mode::Launching) {
         if (const auto spot = findFreeSpot(world, pressPoint_, spawn.radius())) {
+            const CappedVelocity launched = launchVelocityNow(launch, launchSeconds);
             ParticleDef def;
             def.position = *spot;
-            def.velocity = v;
+            def.velocity = launched.velocity;
             def.mass = spawn.mass;
             def.radius = spawn.radius();
             // A colour that depends on the mass, light enough to read on black.
@@ -193,7 +229,8 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
             result.kind = ReleaseResult::Kind::Launched;
             result.id = world.add(def);
             result.position = *spot;
-            result.velocity = v;
+            result.velocity = launched.velocity;
+            result.capped = launched.capped;
         } else {
             result.kind = ReleaseResult::Kind::Refused;
             result.position = pressPoint_;

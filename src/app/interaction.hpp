@@ -10,8 +10,14 @@
 //   pointer's velocity, so an off-centre grab does not drift after release.
 // - The held particle is kinematic: collisions cannot push it, it pushes others with the
 //   velocity of the hand, and the world keeps it inside the box.
-// - Release velocity is psb::launchVelocity over the last ~100 ms of samples, so a particle
-//   dropped after the hand stopped is released at rest.
+// - A held particle is flung with the hand's velocity: psb::launchVelocity over the last ~100 ms
+//   of samples, so a particle dropped after the hand stopped is released at rest.
+// - A new particle is launched like the original's launch vector: its velocity is the drag from
+//   the press point to the release point divided by a launch time (the app passes the arrow
+//   scale, so the preview line from the ghost disc to the pointer is exactly the velocity arrow
+//   the particle will have). Dragging out and stopping still launches it.
+// - Both speeds are capped at LaunchSettings::maxSpeed; ReleaseResult::capped says when the cap
+//   applied, so the app can say so.
 //
 // A click (press and release within kClickSeconds, the pointer never further from the press
 // point than the launch's minDistance, the same 4-pixel threshold that decides "at rest") is
@@ -43,6 +49,18 @@ struct SpawnSettings {
     void changeMass(double delta);
 };
 
+/// The length scale of new particles in `world` (see SpawnSettings::lengthScale): a 10 kg
+/// particle gets the median radius of the world's particles, so spawns and launches fit dense
+/// scenes and tiny ones; in an empty world, the smaller box side / 700 m (the original's box at
+/// 1 px = 1 m, so a 7 m box gives the original's particles at 1 px = 1 cm).
+[[nodiscard]] double spawnLengthScale(const World& world);
+
+/// Flings and launches faster than this many box widths (the larger side) per second are cut to
+/// it: faster is a slip of the hand, and would cross the box in a handful of steps.
+inline constexpr double kMaxLaunchBoxesPerSecond = 2.0;
+/// kMaxLaunchBoxesPerSecond for a box `def`, m/s.
+[[nodiscard]] double maxLaunchSpeed(const WorldDef& def);
+
 /// A free place for a disc of `radius` metres near `desired`: `desired` itself (clamped into
 /// the box when walls are on) if no particle overlaps it there, otherwise the nearest free spot
 /// found on rings of growing radius around it (within about 20 radii). nullopt when there is
@@ -66,8 +84,16 @@ struct ReleaseResult {
     ParticleId id;
     Vec2 position = Vec2::Zero();  ///< metres
     Vec2 velocity = Vec2::Zero();  ///< m/s
+    bool capped = false;           ///< the speed was cut to LaunchSettings::maxSpeed
     std::string message;
 };
+
+/// `v` cut to `maxSpeed` (m/s) when longer and maxSpeed > 0; `capped` says whether it was.
+struct CappedVelocity {
+    Vec2 velocity = Vec2::Zero();
+    bool capped = false;
+};
+[[nodiscard]] CappedVelocity capSpeed(const Vec2& v, double maxSpeed);
 
 class Interaction {
   public:
@@ -86,9 +112,14 @@ class Interaction {
     /// Puts the held particle where the hand is (pointer + grab offset, kept in the box) with
     /// the hand's current velocity. The app calls it before every step and every frame.
     void applyHold(World& world, double now, const LaunchSettings& launch) const;
-    /// The left button went up.
+    /// The left button went up. A launch gives the new particle (release - press) /
+    /// `launchSeconds`.
     ReleaseResult release(World& world, const Vec2& point, double time, const SpawnSettings& spawn,
-                          const LaunchSettings& launch);
+                          const LaunchSettings& launch, double launchSeconds);
+    /// The velocity a launch released at the current pointer would give (zero for a drag
+    /// shorter than launch.minDistance), capped like release() caps it.
+    [[nodiscard]] CappedVelocity launchVelocityNow(const LaunchSettings& launch,
+                                                   double launchSeconds) const;
     /// Deletes the held particle (Backspace/Delete while holding); returns its last state.
     std::optional<Particle> deleteHeld(World& world);
     /// Forgets everything (the world was replaced). Does not touch any world.

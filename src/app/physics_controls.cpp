@@ -25,9 +25,8 @@ ControlChange stepRestitution(World& world, int direction) {
     return {e != before, buf};
 }
 
-Vec2 appGravity(const WorldDef& def) {
-    const double side = std::min(def.width, def.height);
-    return {0.0, kEarthGravity * std::max(1.0, side / kHumanScaleBox)};
+Vec2 appGravity() {
+    return {0.0, kEarthGravity};
 }
 
 std::string gravityText(const Vec2& g) {
@@ -42,7 +41,7 @@ ControlChange toggleGravity(World& world, const Vec2& sceneGravity) {
         world.setGravity(Vec2::Zero());
         return {true, "Gravity off"};
     }
-    const Vec2 g = sceneGravity != Vec2::Zero() ? sceneGravity : appGravity(world.def());
+    const Vec2 g = sceneGravity != Vec2::Zero() ? sceneGravity : appGravity();
     try {
         world.setGravity(g);
     } catch (const InvalidArgument&) {

@@ -3,13 +3,10 @@
 // the screen and leaves the world unchanged when the change is refused.
 //
 // Gravity: G switches it off, or on to the scene's own gravity when the scene as loaded had one,
-// otherwise to appGravity(): Earth's 9.81 m/s² downwards in a box of human scale (up to 20 m),
-// scaled up with the box beyond that. A 700 m box is the original's 700-pixel window rather than
-// a real 700 m, and under 9.81 m/s² a fall across it would take 12 s; scaled, a fall across any
-// box larger than 20 m takes the 2 s it takes across a 20 m box.
+// otherwise to Earth's 9.81 m/s² downwards. It is never scaled with the box: scenes are at the
+// scale of what they show (the default is the original's at 1 px = 1 cm, a 7 m box).
 //
-// The exact mode has no gravity (World::setGravity throws), so G in exact mode is refused with a
-// message naming the mode keys, as T refuses the exact mode while gravity is on.
+// A mode the world refuses gravity in refuses G with a message naming the mode keys.
 
 #include <string>
 
@@ -19,8 +16,6 @@ namespace psb::app {
 
 /// Change per E / Shift+E press.
 inline constexpr double kRestitutionStep = 0.05;
-/// Largest box side (m) that gets Earth's gravity unscaled.
-inline constexpr double kHumanScaleBox = 20.0;
 inline constexpr double kEarthGravity = 9.81;  ///< m/s²
 
 struct ControlChange {
@@ -33,8 +28,8 @@ struct ControlChange {
 /// Changes the world's restitution by one step down (-1) or up (+1).
 ControlChange stepRestitution(World& world, int direction);
 
-/// The gravity G turns on for a world without a scene gravity, m/s² (y down).
-[[nodiscard]] Vec2 appGravity(const WorldDef& def);
+/// The gravity G turns on for a world without a scene gravity: 9.81 m/s² down (y down).
+[[nodiscard]] Vec2 appGravity();
 /// Gravity off when it is on; otherwise `sceneGravity` if it is not zero, else appGravity.
 ControlChange toggleGravity(World& world, const Vec2& sceneGravity);
 

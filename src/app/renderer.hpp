@@ -6,8 +6,14 @@
 // quads over one anti-aliased circle texture tinted by vertex colour, arrows are untextured
 // triangles, labels are glyph quads over the font atlas with their black boxes in one more
 // batch. Particles outside the viewport are skipped before any geometry is built.
+//
+// Discs a few pixels across are not worth two triangles each: SDL's software rasteriser pays a
+// fixed price per triangle (0.25-0.5 us), which at 5·10⁴ particles is most of a frame. They are
+// written as pixels into one image with their arrows as one-pixel lines (the trails' method),
+// and the image is shown with one texture copy.
 
 #include <cstddef>
+#include <vector>
 
 #include <SDL.h>
 
@@ -16,35 +22,20 @@
 #include "camera.hpp"
 #include "geometry_batch.hpp"
 #include "trails.hpp"
+#include "view_options.hpp"
 
 namespace psb::app {
 
 class Font;
 
-/// What to draw besides the discs.
-struct ViewOptions {
-    bool arrows = true;   ///< velocity arrows
-    bool labels = false;  ///< XVel, YVel, Momentum, Mass above each particle
-    /// Arrow length per unit speed, seconds: an arrow reaches where the particle will be after
-    /// this time. The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
-    double arrowSeconds = 1.0 / 3.0;
-    // Analysis overlays (see docs/app.md, "Seeing the physics").
-    bool momentum = false;              ///< V: momentum arrows, centre of mass, Σ m v
-    TrailMode trails = TrailMode::Off;  ///< L: path traces
-    bool plots = false;                 ///< K: energy, momentum and collision rate against time
-    bool speeds = false;                ///< D: speed histogram against Maxwell–Boltzmann
-};
-
-/// An arrow scale for `world` (seconds, see ViewOptions::arrowSeconds): the original's 1/3 s,
-/// shortened when that would make the root-mean-square arrow longer than a fifth of the box or
-/// three quarters of the mean spacing between particles (a dense gas would be hidden under its
-/// arrows).
-[[nodiscard]] double arrowSecondsFor(const World& world);
+/// Screen rectangles labels keep clear of (the HUD and the panels), pixels.
+using RenderAvoid = std::vector<SDL_Rect>;
 
 /// What the last draw() did, for the HUD.
 struct DrawStats {
     std::size_t drawn = 0;          ///< particles inside the viewport
     std::size_t labelled = 0;       ///< particles that got labels
+    std::size_t labelsCrowded = 0;  ///< particles whose label found no free place
     bool labelsSuppressed = false;  ///< too many particles on screen for labels
 };
 
@@ -62,23 +53,37 @@ class Renderer {
 
     /// Clears to black and draws the box walls, the particles and the enabled overlays. When
     /// `trails` is given they are drawn under the discs as options.trails says, `selected`
-    /// naming the particle of TrailMode::Selected.
+    /// naming the particle of TrailMode::Selected. Labels go at whole pixels (glyphs drawn at
+    /// fractions of a pixel are resampled into garble), above, below, right or left of their
+    /// disc, wherever they overlap neither another label nor a rectangle of `avoid`; a label
+    /// with no such place is left out.
     DrawStats draw(const World& world, const Camera& camera, const ViewOptions& options,
-                   Trails* trails = nullptr, ParticleId selected = kNullParticle);
+                   Trails* trails = nullptr, ParticleId selected = kNullParticle,
+                   const RenderAvoid* avoid = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius);
 
+    /// Discs smaller than this on screen (radius, pixels) and their arrows are drawn as pixels
+    /// into one image (see the top of this file).
+    static constexpr double kSmallDiscPixels = 2.5;
+
   private:
+    /// A streaming texture the size of an image, and the image copied through it.
+    struct ImageLayer {
+        SDL_Texture* texture = nullptr;
+        int width = 0, height = 0;
+    };
     void drawWalls(const World& world, const Camera& camera);
-    void drawTrails(const TrailImage& image);
+    void drawImage(const TrailImage& image, ImageLayer& layer);
 
     SDL_Renderer* renderer_;
     const Font* labelFont_;
     SDL_Texture* circle_ = nullptr;
     GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
-    SDL_Texture* trailTexture_ = nullptr;  // streaming, the viewport's size
-    int trailWidth_ = 0, trailHeight_ = 0;
+    ImageLayer trailLayer_, smallLayer_;
+    TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
+    std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none
 };
 
 }  // namespace psb::app

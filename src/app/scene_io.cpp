@@ -20,10 +20,25 @@ std::vector<std::filesystem::path> presetScenes() {
     return {};
 }
 
+std::filesystem::path freeSavePath(const std::filesystem::path& path) {
+    std::error_code ec;
+    std::filesystem::path p = std::filesystem::absolute(path, ec);
+    if (ec) p = path;
+    if (!std::filesystem::exists(p, ec)) return p;
+    const std::string stem = p.stem().string(), ext = p.extension().string();
+    for (int k = 2;; ++k) {
+        std::filesystem::path candidate = p.parent_path() / (stem + "-" + std::to_string(k) + ext);
+        if (!std::filesystem::exists(candidate, ec)) return candidate;
+    }
+}
+
 std::string saveWorld(const World& world, const std::string& name,
                       const std::filesystem::path& path) {
     saveScene(sceneFromWorld(world, name), path);
-    return "Saved " + std::to_string(world.size()) + " particles to " + path.string();
+    std::error_code ec;
+    const std::filesystem::path shown = std::filesystem::absolute(path, ec);
+    return "Saved " + std::to_string(world.size()) + " particles to " +
+           (ec ? path : shown).string();
 }
 
 }  // namespace psb::app

@@ -20,8 +20,14 @@ namespace psb::app {
 /// empty when that directory cannot be found.
 [[nodiscard]] std::vector<std::filesystem::path> presetScenes();
 
+/// Where a save aimed at `path` goes without losing an earlier one: `path` itself when no file
+/// is there, else the first free of stem-2.ext, stem-3.ext, ... beside it; made absolute, so the
+/// message names the file wherever the program was started.
+[[nodiscard]] std::filesystem::path freeSavePath(const std::filesystem::path& path);
+
 /// Saves `world` as a scene named `name` to `path`, atomically (psb::saveScene): the old file
-/// survives any failure. Returns a line for the user; throws SaveError saying why it failed.
+/// survives any failure. Returns a line for the user naming the absolute path; throws SaveError
+/// saying why it failed.
 std::string saveWorld(const World& world, const std::string& name,
                       const std::filesystem::path& path);
 

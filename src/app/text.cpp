@@ -1,5 +1,6 @@
 #include "text.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -80,6 +81,10 @@ int Font::measure(std::string_view text) const {
 void Font::layout(std::string_view text, float x, float y, SDL_Color color,
                   GeometryBatch& batch) const {
     const float iw = 1.0f / static_cast<float>(atlasW_), ih = 1.0f / static_cast<float>(atlasH_);
+    // Glyphs one to one with screen pixels: drawn at a fraction of a pixel, the renderer
+    // resamples them and thin strokes vanish or double ("1800.00" read as "18CC.C0").
+    x = std::round(x);
+    y = std::round(y);
     for (char c : text) {
         const Glyph& g = glyph(c);
         if (g.atlas.w > 0 && c != ' ') {

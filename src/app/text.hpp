@@ -29,8 +29,8 @@ class Font {
     [[nodiscard]] int lineHeight() const { return lineHeight_; }
     /// Width of `text` in pixels.
     [[nodiscard]] int measure(std::string_view text) const;
-    /// Appends the quads of `text` with its top-left corner at (x, y), pixels. Characters
-    /// outside printable ASCII show as '?'.
+    /// Appends the quads of `text` with its top-left corner at (x, y), pixels, rounded to whole
+    /// pixels. Characters outside printable ASCII show as '?'.
     void layout(std::string_view text, float x, float y, SDL_Color color,
                 GeometryBatch& batch) const;
     /// Draws a batch built with layout() (one SDL_RenderGeometry call).

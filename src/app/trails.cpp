@@ -6,30 +6,6 @@
 
 namespace psb::app {
 
-TrailMode nextTrailMode(TrailMode mode) {
-    switch (mode) {
-        case TrailMode::Off:
-            return TrailMode::Selected;
-        case TrailMode::Selected:
-            return TrailMode::All;
-        case TrailMode::All:
-            break;
-    }
-    return TrailMode::Off;
-}
-
-const char* toString(TrailMode mode) {
-    switch (mode) {
-        case TrailMode::Off:
-            return "off";
-        case TrailMode::Selected:
-            return "selected";
-        case TrailMode::All:
-            break;
-    }
-    return "all";
-}
-
 void Trails::reset() {
     std::fill(count_.begin(), count_.end(), std::uint8_t{0});
     std::fill(head_.begin(), head_.end(), std::uint8_t{0});
@@ -105,6 +81,52 @@ SDL_Rect TrailImage::dirty() const {
     return {minX_, minY_, maxX_ - minX_ + 1, maxY_ - minY_ + 1};
 }
 
+void TrailImage::disc(float cx, float cy, float r, std::uint32_t argb) {
+    if (r < 1.0f && cx >= 1.0f && cy >= 1.0f && cx < static_cast<float>(width_ - 1) &&
+        cy < static_cast<float>(height_ - 1)) {
+        // A disc under a pixel's radius (the common case in dense scenes): the pixel under the
+        // centre and those of its eight neighbours within r + 0.5 of the centre, without the
+        // general bounding-box loop.
+        const int ix = static_cast<int>(cx), iy = static_cast<int>(cy);
+        const float fx = cx - static_cast<float>(ix) - 0.5f;
+        const float fy = cy - static_cast<float>(iy) - 0.5f;
+        const float reach2 = (r + 0.5f) * (r + 0.5f);
+        std::uint32_t* centre = pixels_.data() + static_cast<std::size_t>(iy) * width_ + ix;
+        for (int j = -1; j <= 1; ++j) {
+            const float dy = static_cast<float>(j) - fy;
+            std::uint32_t* row = centre + static_cast<std::ptrdiff_t>(j) * width_;
+            for (int i = -1; i <= 1; ++i) {
+                const float dx = static_cast<float>(i) - fx;
+                if (dx * dx + dy * dy <= reach2 || (i == 0 && j == 0)) row[i] = argb;
+            }
+        }
+        minX_ = std::min(minX_, ix - 1);
+        minY_ = std::min(minY_, iy - 1);
+        maxX_ = std::max(maxX_, ix + 1);
+        maxY_ = std::max(maxY_, iy + 1);
+        return;
+    }
+    const float reach = r + 0.5f;
+    const int x0 = std::max(0, static_cast<int>(std::floor(cx - reach)));
+    const int x1 = std::min(width_ - 1, static_cast<int>(std::floor(cx + reach)));
+    const int y0 = std::max(0, static_cast<int>(std::floor(cy - reach)));
+    const int y1 = std::min(height_ - 1, static_cast<int>(std::floor(cy + reach)));
+    if (x0 > x1 || y0 > y1) return;
+    const int ix = static_cast<int>(std::floor(cx)), iy = static_cast<int>(std::floor(cy));
+    for (int y = y0; y <= y1; ++y) {
+        const float dy = static_cast<float>(y) + 0.5f - cy;
+        std::uint32_t* row = pixels_.data() + static_cast<std::size_t>(y) * width_;
+        for (int x = x0; x <= x1; ++x) {
+            const float dx = static_cast<float>(x) + 0.5f - cx;
+            if (dx * dx + dy * dy <= reach * reach || (x == ix && y == iy)) row[x] = argb;
+        }
+    }
+    minX_ = std::min(minX_, x0);
+    minY_ = std::min(minY_, y0);
+    maxX_ = std::max(maxX_, x1);
+    maxY_ = std::max(maxY_, y1);
+}
+
 void TrailImage::line(float x0, float y0, float x1, float y1, std::uint32_t argb) {
     const float xmax = static_cast<float>(width_) - 0.5f;
     const float ymax = static_cast<float>(height_) - 0.5f;
@@ -161,10 +183,9 @@ void Trails::rasteriseOne(const World& world, const Camera& camera, std::size_t 
     const std::size_t n = count_[id.slot];
     const Color c = p.color[index];
     const std::uint32_t rgb = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
-    // Screen = (world - offset) * zoom, in floats: a trail is only drawn.
-    const Vec2 o = camera.worldToScreen(Vec2::Zero());
-    const float zoom = static_cast<float>(camera.zoom());
-    const float ox = static_cast<float>(o.x()), oy = static_cast<float>(o.y());
+    // The camera's mapping in floats: a trail is only drawn.
+    const Camera::Transform t = camera.transform();
+    const float zoom = t.scale, ox = t.originX, oy = t.originY;
     const float* xs = xs_.data() + static_cast<std::size_t>(id.slot) * kLength;
     const float* ys = ys_.data() + static_cast<std::size_t>(id.slot) * kLength;
     const std::size_t oldest = (head_[id.slot] + kLength - n) % kLength;

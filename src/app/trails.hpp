@@ -26,16 +26,9 @@
 #include <particle_sandbox/world.hpp>
 
 #include "camera.hpp"
+#include "view_options.hpp"
 
 namespace psb::app {
-
-/// What L shows.
-enum class TrailMode { Off, Selected, All };
-
-/// Off -> Selected -> All -> Off.
-[[nodiscard]] TrailMode nextTrailMode(TrailMode mode);
-/// "off", "selected", "all".
-[[nodiscard]] const char* toString(TrailMode mode);
 
 /// The trails' pixels: `width` × `height` ARGB8888 words (alpha not premultiplied), zero
 /// where no trail is, and the rectangle that holds every non-zero pixel.
@@ -45,6 +38,9 @@ class TrailImage {
     void resize(int width, int height);
     /// Clears the pixels drawn since the last clear.
     void clear();
+    /// A filled disc of radius `r` pixels centred at (cx, cy): the pixels whose centres lie
+    /// within r + 0.5 of it, and at least the pixel under the centre; clipped to the image.
+    void disc(float cx, float cy, float r, std::uint32_t argb);
     /// A one-pixel line from (x0, y0) to (x1, y1), pixels, clipped to the image. Where lines
     /// cross, the more opaque colour stays.
     void line(float x0, float y0, float x1, float y1, std::uint32_t argb);

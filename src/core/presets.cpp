@@ -11,32 +11,36 @@ Scene defaultScene() {
     Scene s;
     s.name = "The original's default";
     s.description =
-        "A handful of particles in a 700 m box with walls, no gravity and perfectly elastic "
-        "collisions (e = 1), as the original program started: mass 3..20 kg, radius 2.5 m per "
-        "kg, speeds up to 300 m/s. Kinetic energy and momentum stay constant.";
-    s.world = WorldDef{};  // 700 × 700 m, walls, no gravity, e = 1, no friction
+        "A handful of particles in a 7 m box with walls, no gravity and perfectly elastic "
+        "collisions (e = 1): the original program's opening scene at 1 pixel = 1 cm, mass "
+        "3..20 kg, radius 2.5 cm per kg, speeds up to 3 m/s. Kinetic energy and momentum stay "
+        "constant.";
+    s.world = WorldDef{};
+    s.world.width = 7.0;  // the original's 700-pixel window at 1 px = 1 cm
+    s.world.height = 7.0;
     s.solver.mode = StepMode::Discrete;
     s.solver.dt = 1.0 / 60.0;  // the original's frame
     s.solver.substeps = 1;
     s.solver.broadphase = BroadPhaseKind::Auto;
     struct Seed {
-        double x, y, vx, vy, mass;
+        double x, y, vx, vy, mass, radius;  // radius 2.5 cm per kg, written out exactly
         Color color;
     };
-    // Velocities are the original's per-frame integers (-5..5 px/frame) times 60 frames/s.
+    // Positions in metres (the original's pixels / 100); velocities are the original's
+    // per-frame integers (-5..5 px/frame) times 60 frames/s, in m/s at 1 px = 1 cm.
     constexpr Seed kSeeds[] = {
-        {150.0, 120.0, 180.0, 120.0, 12.0, {230, 120, 140}},
-        {320.0, 90.0, -240.0, 60.0, 5.0, {120, 200, 255}},
-        {520.0, 160.0, -60.0, 240.0, 18.0, {255, 210, 110}},
-        {250.0, 260.0, 300.0, -180.0, 8.0, {150, 255, 160}},
-        {430.0, 300.0, -120.0, -300.0, 3.0, {210, 150, 255}},
-        {600.0, 330.0, 0.0, -120.0, 15.0, {255, 160, 100}},
+        {1.5, 1.2, 1.8, 1.2, 12.0, 0.3, {230, 120, 140}},
+        {3.2, 0.9, -2.4, 0.6, 5.0, 0.125, {120, 200, 255}},
+        {5.2, 1.6, -0.6, 2.4, 18.0, 0.45, {255, 210, 110}},
+        {2.5, 2.6, 3.0, -1.8, 8.0, 0.2, {150, 255, 160}},
+        {4.3, 3.0, -1.2, -3.0, 3.0, 0.075, {210, 150, 255}},
+        {6.0, 3.3, 0.0, -1.2, 15.0, 0.375, {255, 160, 100}},
     };
     for (const Seed& k : kSeeds) {
         s.particles.push_back(ParticleDef{.position = {k.x, k.y},
                                           .velocity = {k.vx, k.vy},
                                           .mass = k.mass,
-                                          .radius = 2.5 * k.mass,
+                                          .radius = k.radius,
                                           .color = k.color});
     }
     return s;

@@ -412,3 +412,36 @@ TEST_F(OverlayRenderTest, SpeedHistogramDrawsBarsAndTheCurveOnlyWhenOn) {
 
 }  // namespace
 }  // namespace psb::app
+
+namespace psb::app {
+namespace {
+
+TEST(TrailImage, ADiscCoversThePixelsWithinHalfAPixelOfItsRimAndTheOneUnderItsCentre) {
+    // Small discs (the renderer's pixel path) and larger ones, at many sub-pixel offsets.
+    for (const float r : {0.75f, 0.9f, 1.3f, 2.2f}) {
+        for (float cx = 5.0f; cx < 6.0f; cx += 0.23f) {
+            for (float cy = 5.0f; cy < 6.0f; cy += 0.31f) {
+                TrailImage img;
+                img.resize(12, 12);
+                img.disc(cx, cy, r, 0xFF102030u);
+                for (int y = 0; y < 12; ++y) {
+                    for (int x = 0; x < 12; ++x) {
+                        const float dx = static_cast<float>(x) + 0.5f - cx;
+                        const float dy = static_cast<float>(y) + 0.5f - cy;
+                        const bool in = dx * dx + dy * dy <= (r + 0.5f) * (r + 0.5f) ||
+                                        (x == static_cast<int>(cx) && y == static_cast<int>(cy));
+                        EXPECT_EQ(img.at(x, y) != 0u, in)
+                            << "r " << r << " centre " << cx << ", " << cy << " pixel " << x
+                            << ", " << y;
+                    }
+                }
+                const SDL_Rect d = img.dirty();
+                EXPECT_LE(d.x, static_cast<int>(cx));
+                EXPECT_GE(d.x + d.w, static_cast<int>(cx) + 1);
+            }
+        }
+    }
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -98,5 +98,24 @@ TEST(Camera, PanMovesTheWorldWithTheDrag) {
     EXPECT_NEAR(after.y() - before.y(), -20.0, kTol);
 }
 
+TEST(Camera, PanningKeepsTheBoxWithinOneViewportOfTheScreen) {
+    Camera c;
+    c.setViewport(800, 600);
+    c.fit(7.0, 7.0);
+    for (int k = 0; k < 1000; ++k) {
+        c.panPixels(Vec2(-50, 30));
+        c.keepNear(7.0, 7.0);
+    }
+    const Camera::ScreenBox b = c.boxOnScreen(7.0, 7.0);
+    EXPECT_GE(b.topLeft.x() + b.size.x(), -800.0 - 1e-9);  // at most a viewport to the left
+    EXPECT_LE(b.topLeft.y(), 2.0 * 600.0 + 1e-9);          // and one below
+    EXPECT_LT(b.topLeft.x() + b.size.x(), 0.0);            // but off screen: the marker's case
+    // Panning back brings it into view again.
+    for (int k = 0; k < 40; ++k)
+        c.panPixels(Vec2(50, -30));
+    const Camera::ScreenBox back = c.boxOnScreen(7.0, 7.0);
+    EXPECT_GT(back.topLeft.x() + back.size.x(), 0.0);
+}
+
 }  // namespace
 }  // namespace psb::app

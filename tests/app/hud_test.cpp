@@ -28,12 +28,35 @@ TEST(Hud, LinesShowFpsTimeCountEnergyAndMomentumWithUnits) {
         return std::any_of(lines.begin(), lines.end(),
                            [&](const std::string& l) { return l.find(s) != std::string::npos; });
     };
-    EXPECT_TRUE(has("FPS 60"));
+    // Paused, the loop sleeps until input: a frame rate would count redraws, not speed.
+    EXPECT_FALSE(has("FPS"));
+    EXPECT_TRUE(has("Paused: redrawn on input"));
     EXPECT_TRUE(has("Time 12.35 s"));
     EXPECT_TRUE(has("PAUSED"));
     EXPECT_TRUE(has("42 particles"));
     EXPECT_TRUE(has("KE 1234 J"));
     EXPECT_TRUE(has("p [3, -4] kg m/s"));
+    d.paused = false;
+    const auto running = hudLines(d);
+    EXPECT_EQ(running.front().rfind("FPS 60 |", 0), 0u) << running.front();
+}
+
+TEST(Hud, ATimeSpeedTheStepsCannotReachShowsTheSpeedReached) {
+    HudData d;
+    d.timeScale = 8.0;
+    d.reachedTimeScale = 3.1;
+    EXPECT_NE(hudLines(d)[1].find("x3.1 of x8 asked"), std::string::npos) << hudLines(d)[1];
+    d.reachedTimeScale = 7.9;  // within 5 %: what was asked is what is seen
+    EXPECT_NE(hudLines(d)[1].find("x8 |"), std::string::npos) << hudLines(d)[1];
+    EXPECT_EQ(hudLines(d)[1].find("asked"), std::string::npos);
+}
+
+TEST(Hud, TheArrowScaleIsShownWhileArrowsAreOn) {
+    HudData d;
+    d.arrowSeconds = 0.25;
+    EXPECT_NE(hudLines(d).back().find("arrow: 0.25 s of motion"), std::string::npos);
+    d.arrowSeconds = 0.0;
+    EXPECT_EQ(hudLines(d).back().find("arrow"), std::string::npos);
 }
 
 TEST(Hud, HelpListsEveryControl) {

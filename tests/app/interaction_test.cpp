@@ -59,7 +59,7 @@ TEST(Interaction, GrabHitTestUsesTheWholeDiscInWorldUnits) {
     // 9.9 m from the centre of a 10 m disc: inside, whatever the zoom.
     in.press(w, Vec2(109.9, 100), 0.0);
     EXPECT_EQ(in.held(), id);
-    in.release(w, Vec2(109.9, 100), 0.5, {}, launch());
+    in.release(w, Vec2(109.9, 100), 0.5, {}, launch(), 1.0);
     in.press(w, Vec2(110.1, 100), 1.0);
     EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
 }
@@ -110,7 +110,7 @@ TEST(Interaction, ReleaseFlingsWithTheVelocityOfTheLast100ms) {
     double t = drag(in, Vec2(100, 100), 0.0, Vec2(10, 0), 30);
     const Vec2 p = in.pointer();
     t = drag(in, p, t, Vec2(200, 50), 10);
-    const ReleaseResult r = in.release(w, in.pointer(), t, {}, launch());
+    const ReleaseResult r = in.release(w, in.pointer(), t, {}, launch(), 1.0);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Flung);
     EXPECT_NEAR(r.velocity.x(), 200.0, 1e-6);
     EXPECT_NEAR(r.velocity.y(), 50.0, 1e-6);
@@ -126,7 +126,7 @@ TEST(Interaction, AHandThatStoppedReleasesAtRest) {
     in.press(w, Vec2(100, 100), 0.0);
     const double t = drag(in, Vec2(100, 100), 0.0, Vec2(300, 0), 10);
     // Released 0.3 s after the last motion: nothing moved in the last 100 ms.
-    in.release(w, in.pointer(), t + 0.3, {}, launch());
+    in.release(w, in.pointer(), t + 0.3, {}, launch(), 1.0);
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
@@ -136,7 +136,7 @@ TEST(Interaction, AMoveBelowTheMinimumDistanceReleasesAtRest) {
     Interaction in;
     in.press(w, Vec2(100, 100), 0.0);
     const double t = drag(in, Vec2(100, 100), 0.0, Vec2(5, 0), 10);  // 0.5 m in 100 ms
-    in.release(w, in.pointer(), t, {}, launch());                    // minDistance 1 m
+    in.release(w, in.pointer(), t, {}, launch(), 1.0);               // minDistance 1 m
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
@@ -145,7 +145,7 @@ TEST(Interaction, OffCentreGrabDoesNotDriftAfterRelease) {
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
     in.press(w, Vec2(108, 104), 0.0);
-    in.release(w, Vec2(108, 104), 0.5, {}, launch());
+    in.release(w, Vec2(108, 104), 0.5, {}, launch(), 1.0);
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
     w.step(0.01);
     EXPECT_NEAR(w.get(id).position.x(), 100.0, 1e-12);
@@ -189,7 +189,8 @@ TEST(Interaction, DragOnEmptySpaceLaunchesFromThePressPointWithTheDragVelocity) 
     in.press(w, Vec2(200, 300), 0.0);
     EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
     const double t = drag(in, Vec2(200, 300), 0.0, Vec2(-120, 80), 15);
-    const ReleaseResult r = in.release(w, in.pointer(), t, spawn, launch());
+    // 0.15 s of drag at (-120, 80) m/s: with a launch time of 0.15 s the velocity is the drag's.
+    const ReleaseResult r = in.release(w, in.pointer(), t, spawn, launch(), 0.15);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     ASSERT_EQ(w.size(), 1u);
     const Particle p = w.get(r.id);
@@ -201,6 +202,43 @@ TEST(Interaction, DragOnEmptySpaceLaunchesFromThePressPointWithTheDragVelocity) 
     EXPECT_DOUBLE_EQ(p.radius, 10.0);  // 2.5 m per kg
 }
 
+TEST(Interaction, DraggingOutAndStoppingLaunchesWithTheDragVectorNotAtRest) {
+    World w = boxWorld();
+    Interaction in;
+    in.press(w, Vec2(200, 300), 0.0);
+    in.moveTo(Vec2(260, 220), 0.05);  // out 100 m, then the hand holds still for half a second
+    const ReleaseResult r = in.release(w, Vec2(260, 220), 0.55, {}, launch(), 0.5);
+    ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
+    EXPECT_NEAR(r.velocity.x(), 120.0, 1e-9);  // (60, -80) m / 0.5 s
+    EXPECT_NEAR(r.velocity.y(), -160.0, 1e-9);
+    EXPECT_FALSE(r.capped);
+}
+
+TEST(Interaction, APreviewGivesTheVelocityTheLaunchWillHave) {
+    World w = boxWorld();
+    Interaction in;
+    in.press(w, Vec2(200, 300), 0.0);
+    in.moveTo(Vec2(230, 260), 0.05);
+    const CappedVelocity preview = in.launchVelocityNow(launch(), 0.25);
+    const ReleaseResult r = in.release(w, Vec2(230, 260), 0.9, {}, launch(), 0.25);
+    EXPECT_EQ(r.velocity, preview.velocity);
+    EXPECT_NEAR(preview.velocity.x(), 120.0, 1e-9);
+}
+
+TEST(Interaction, ACappedLaunchSaysSo) {
+    World w = boxWorld();
+    Interaction in;
+    LaunchSettings l = launch();
+    l.maxSpeed = 50.0;
+    in.press(w, Vec2(100, 100), 0.0);
+    in.moveTo(Vec2(400, 500), 0.1);  // 500 m in a launch time of 1 s: 500 m/s
+    const ReleaseResult r = in.release(w, Vec2(400, 500), 0.2, {}, l, 1.0);
+    ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
+    EXPECT_TRUE(r.capped);
+    EXPECT_NEAR(r.velocity.norm(), 50.0, 1e-9);
+    EXPECT_NEAR(r.velocity.x() / r.velocity.y(), 0.75, 1e-12);  // direction kept
+}
+
 TEST(Interaction, ALaunchNeverOverlapsAnotherParticle) {
     World w = boxWorld();
     SpawnSettings spawn;  // 10 kg, radius 25 m
@@ -209,7 +247,7 @@ TEST(Interaction, ALaunchNeverOverlapsAnotherParticle) {
     Interaction in;
     in.press(w, Vec2(330, 300), 0.0);
     // A still press longer than a click places a particle at rest.
-    const ReleaseResult r = in.release(w, Vec2(330, 300), 0.5, spawn, launch());
+    const ReleaseResult r = in.release(w, Vec2(330, 300), 0.5, spawn, launch(), 1.0);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     EXPECT_NEAR(maxOverlapBruteForce(w), 0.0, 1e-12);
     // The nearest free spot: touching distance (45 m) plus at most one ring step (12.5 m).
@@ -225,7 +263,7 @@ TEST(Interaction, ALaunchWithNoRoomIsRefusedWithAMessage) {
     addAt(w, {30, 30}, 25.0);
     Interaction in;
     in.press(w, Vec2(5, 5), 0.0);  // outside the disc, but the box is full
-    const ReleaseResult r = in.release(w, Vec2(5, 5), 0.5, SpawnSettings{}, launch());
+    const ReleaseResult r = in.release(w, Vec2(5, 5), 0.5, SpawnSettings{}, launch(), 1.0);
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Refused);
     EXPECT_FALSE(r.message.empty());
     EXPECT_EQ(w.size(), 1u);
@@ -246,7 +284,7 @@ TEST(Interaction, AClickOnAParticleSelectsItAndKeepsItsVelocity) {
     Interaction in;
     in.press(w, Vec2(104, 100), 0.0);
     in.moveTo(Vec2(104.5, 100), 0.05);  // 0.5 m: under the 1 m threshold
-    const ReleaseResult r = in.release(w, Vec2(104.5, 100), 0.1, {}, launch());
+    const ReleaseResult r = in.release(w, Vec2(104.5, 100), 0.1, {}, launch(), 1.0);
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Clicked);
     EXPECT_EQ(r.id, id);
     EXPECT_EQ(w.get(id).velocity, Vec2(30, -40));
@@ -258,7 +296,7 @@ TEST(Interaction, AClickOnEmptySpaceLaunchesNothing) {
     World w = boxWorld();
     Interaction in;
     in.press(w, Vec2(200, 200), 0.0);
-    const ReleaseResult r = in.release(w, Vec2(200, 200), 0.1, {}, launch());
+    const ReleaseResult r = in.release(w, Vec2(200, 200), 0.1, {}, launch(), 1.0);
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Clicked);
     EXPECT_TRUE(r.id.isNull());
     EXPECT_EQ(w.size(), 0u);
@@ -272,11 +310,13 @@ TEST(Interaction, APressThatMovedPastTheThresholdIsADragNotAClick) {
     in.press(w, Vec2(100, 100), 0.0);
     in.moveTo(Vec2(103, 100), 0.03);
     in.moveTo(Vec2(100, 100), 0.06);
-    EXPECT_EQ(in.release(w, Vec2(100, 100), 0.1, {}, launch()).kind, ReleaseResult::Kind::Flung);
+    EXPECT_EQ(in.release(w, Vec2(100, 100), 0.1, {}, launch(), 1.0).kind,
+              ReleaseResult::Kind::Flung);
     EXPECT_TRUE(w.contains(id));
     in.press(w, Vec2(300, 300), 1.0);
     in.moveTo(Vec2(303, 300), 1.03);
-    EXPECT_EQ(in.release(w, Vec2(300, 300), 1.1, {}, launch()).kind, ReleaseResult::Kind::Launched);
+    EXPECT_EQ(in.release(w, Vec2(300, 300), 1.1, {}, launch(), 1.0).kind,
+              ReleaseResult::Kind::Launched);
 }
 
 TEST(Interaction, AStillPressLongerThanAClickReleasesTheParticleAtRest) {
@@ -285,7 +325,7 @@ TEST(Interaction, AStillPressLongerThanAClickReleasesTheParticleAtRest) {
     Interaction in;
     in.press(w, Vec2(100, 100), 0.0);
     const double t = Interaction::kClickSeconds + 0.01;
-    EXPECT_EQ(in.release(w, Vec2(100, 100), t, {}, launch()).kind, ReleaseResult::Kind::Flung);
+    EXPECT_EQ(in.release(w, Vec2(100, 100), t, {}, launch(), 1.0).kind, ReleaseResult::Kind::Flung);
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
@@ -303,7 +343,8 @@ TEST(Interaction, DeleteWhileHeldRemovesOnlyThatParticle) {
     EXPECT_EQ(in.mode(), Interaction::Mode::Idle);
     // Nothing held: nothing deleted, and the release that follows does nothing.
     EXPECT_FALSE(in.deleteHeld(w).has_value());
-    EXPECT_EQ(in.release(w, Vec2(300, 100), 0.1, {}, launch()).kind, ReleaseResult::Kind::None);
+    EXPECT_EQ(in.release(w, Vec2(300, 100), 0.1, {}, launch(), 1.0).kind,
+              ReleaseResult::Kind::None);
     EXPECT_EQ(w.size(), 1u);
 }
 

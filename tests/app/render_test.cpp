@@ -148,11 +148,21 @@ TEST_F(RenderTest, AnArrowHeadIsFilledAndWiderThanTheShaft) {
     EXPECT_TRUE(isColor(pixel(250, 200 + 5), 0, 0, 0));  // the shaft is thin
 }
 
-TEST_F(RenderTest, NoArrowWhenItWouldEndInsideTheDisc) {
-    // 30 m/s -> 10 px, inside a 20 m disc: nothing outside the disc.
+TEST_F(RenderTest, ASlowBigParticleStillShowsAnArrowBeyondItsRim) {
+    // 30 m/s -> 10 px at 1/3 s, inside a 20 m disc: before, no arrow at all. Now it reaches
+    // kMinArrowPixels past the rim.
     const World w = worldWith({200, 200}, {30, 0}, 20.0, {255, 0, 0});
     draw(w, {});
-    EXPECT_EQ(brightPixels(0, 0, kSize, kSize, 1), 0);  // red fails the "all channels" test
+    int red = 0;
+    for (int x = 222; x < 260; ++x)
+        red += pixel(x, 200).r > 0;
+    EXPECT_GE(red, static_cast<int>(kMinArrowPixels) - 3);
+    EXPECT_EQ(pixel(200 + 20 + static_cast<int>(kMinArrowPixels) + 3, 200).r, 0);  // no longer
+}
+
+TEST_F(RenderTest, AParticleAtRestHasNoArrow) {
+    const World w = worldWith({200, 200}, {0, 0}, 20.0, {255, 0, 0});
+    draw(w, {});
     int red = 0;
     for (int x = 222; x < 260; ++x)
         red += pixel(x, 200).r > 0;
@@ -172,6 +182,50 @@ TEST_F(RenderTest, LabelsAppearOnlyWhenTheOverlayIsOn) {
     EXPECT_EQ(s.labelled, 1u);
     EXPECT_GT(brightPixels(100, 150, 300, 230), 100);
     EXPECT_EQ(brightPixels(100, 280, 300, 400), 0);  // nothing below the disc
+}
+
+TEST_F(RenderTest, TextAtAFractionOfAPixelIsDrawnAsAtTheWholePixel) {
+    // The "1800.00" drawn as "18CC.C0": glyph quads at x + 0.5 were resampled.
+    const auto image = [&](float x, float y) {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        GeometryBatch b;
+        font_->layout("Momentum: 1800.00", x, y, SDL_Color{255, 255, 255, 255}, b);
+        font_->draw(b);
+        SDL_RenderPresent(sdl_);
+        std::vector<Uint8> v;
+        for (int yy = 90; yy < 130; ++yy)
+            for (int xx = 0; xx < 200; ++xx)
+                v.push_back(pixel(xx, yy).r);
+        return v;
+    };
+    const auto whole = image(20.0f, 100.0f);
+    EXPECT_EQ(image(20.4f, 100.4f), whole);
+    EXPECT_EQ(image(19.6f, 99.7f), whole);
+}
+
+TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
+    WorldDef def;
+    def.width = def.height = kSize;
+    World w(def);
+    for (const double x : {150.0, 185.0, 220.0}) {
+        ParticleDef d;
+        d.position = {x, 250};
+        d.radius = 10.0;
+        w.add(d);
+    }
+    ViewOptions o;
+    o.arrows = false;
+    o.labels = true;
+    // Nothing may be drawn above y = 200 (a panel there).
+    const RenderAvoid avoid{SDL_Rect{0, 0, kSize, 200}};
+    const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, &avoid);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(brightPixels(0, 0, kSize, 200), 0);
+    // Three 150 px wide labels cannot all sit side by side at 35 px spacing: those that fit are
+    // drawn, the rest counted, and none is drawn over another.
+    EXPECT_EQ(s.labelled + s.labelsCrowded, 3u);
+    EXPECT_GE(s.labelled, 2u);
 }
 
 TEST_F(RenderTest, LabelsKeepTheirPixelSizeAtAnyZoom) {

@@ -39,7 +39,7 @@ std::string readAll(const fs::path& p) {
 TEST_F(SceneIo, WithoutAFileTheBuiltInSceneOpens) {
     const Scene s = openScene(std::nullopt);
     EXPECT_EQ(s.particles.size(), 6u);
-    EXPECT_DOUBLE_EQ(s.world.width, 700.0);
+    EXPECT_DOUBLE_EQ(s.world.width, 7.0);
 }
 
 TEST_F(SceneIo, AMissingFileIsASceneErrorNamingIt) {

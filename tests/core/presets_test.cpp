@@ -89,8 +89,8 @@ TEST(Presets, NewtonsCradleSendsOffOnlyTheLastBall) {
 
 TEST(Presets, TheDefaultSceneIsTheOriginalsAndMatchesItsFile) {
     const Scene s = defaultScene();
-    EXPECT_EQ(s.world.width, 700.0);
-    EXPECT_EQ(s.world.height, 700.0);
+    EXPECT_EQ(s.world.width, 7.0);  // the original's 700 px at 1 px = 1 cm
+    EXPECT_EQ(s.world.height, 7.0);
     EXPECT_TRUE(s.world.walls);
     EXPECT_TRUE(s.world.gravity.isZero());
     EXPECT_EQ(s.world.restitution, 1.0);
@@ -99,9 +99,9 @@ TEST(Presets, TheDefaultSceneIsTheOriginalsAndMatchesItsFile) {
     for (const ParticleDef& p : s.particles) {
         EXPECT_GE(p.mass, 3.0);
         EXPECT_LE(p.mass, 20.0);
-        EXPECT_EQ(p.radius, 2.5 * p.mass);
-        EXPECT_LE(std::abs(p.velocity.x()), 300.0);
-        EXPECT_LE(std::abs(p.velocity.y()), 300.0);
+        EXPECT_DOUBLE_EQ(p.radius, 0.025 * p.mass);  // 7.5 to 50 cm
+        EXPECT_LE(std::abs(p.velocity.x()), 3.0);
+        EXPECT_LE(std::abs(p.velocity.y()), 3.0);
     }
     // Valid by the loader's own rules (inside, no overlaps), and the same as the shipped file.
     EXPECT_EQ(serializeScene(parseScene(serializeScene(s), "default")), serializeScene(s));

@@ -16,7 +16,8 @@
 #   5. presses S                                        -> label text appears above particles
 #   6. presses Ctrl+S                                   -> a scene file with the launched
 #                                                         particle, moving up-right
-#   7. presses V, L, L, K, D, steps, then V, K, D, L    -> the momentum view, trails, plots and
+#   7. presses V, L, L, K, D, steps, then V, K, D, L    -> the box refits beside the panels; the
+#                                                         momentum view, trails, plots and
 #                                                         speed histogram appear in their colours
 #                                                         (logged, and named in the HUD), then
 #                                                         go away
@@ -29,7 +30,9 @@
 #                                                         gravity refused in exact mode
 #  13. presses F12                                      -> a PNG of the window's size
 #  14. presses R, clicks the edited particle again      -> its mass is the loaded 12 kg
-#  15. presses Esc                                      -> the program exits cleanly
+#  14b. presses Right 16 times, then F                -> a marker points to the box, F fits
+#  15. presses H, Esc; M, Esc; Esc                      -> help closed, a question about the
+#                                                         unsaved change, then a clean exit
 # Screenshots and the log are left in OUTPUT_DIR.
 set -euo pipefail
 
@@ -86,6 +89,12 @@ pass "bad command lines: $(head -1 "$OUT/bad-scene.txt")"
 # --- a private X display ------------------------------------------------------------------
 start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
+
+# --- the renderer: without --renderer, OpenGL on a software rasteriser (Xvfb's llvmpipe)
+# gives way to SDL's software renderer, and the program says so --------------------------------
+bench=$("$BIN" --bench 50 --frames 3 2>&1) || fail "--bench without --renderer: $bench"
+grep -q "renderer software" <<<"$bench" || fail "SDL's OpenGL renderer on llvmpipe kept: $bench"
+pass "renderer chosen: $(grep -m1 'Renderer:' <<<"$bench")"
 
 # --- the program --------------------------------------------------------------------------
 LOG="$OUT/stdout.log"
@@ -179,39 +188,42 @@ wait_log "Arrows off"
 shot 0-start
 
 # The built-in scene (psb::defaultScene): six particles in the upper half of the box.
-# --- 1. fling: the 18 kg particle at (520, 160) m, yellow (255, 210, 110), downwards -------
+# --- 1. fling: the 18 kg particle at (5.2, 1.6) m, yellow (255, 210, 110), downwards -------
 FLUNG="255 210 110"
 read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" $FLUNG)
 ((fn0 > 500)) || fail "the yellow particle is not on screen ($fn0 pixels)"
-drag "$(sx 520)" "$(sy 160)" 0 12 8
+drag "$(sx 5.2)" "$(sy 1.6)" 0 12 8
 wait_log "Released particle"
 line=$(grep "Released particle" "$LOG" | tail -1)
-grep -q "Grabbed particle at \[520.00, 160.00\]" "$LOG" || fail "did not grab the yellow particle"
+grep -q "Grabbed particle at \[5.20, 1.60\]" "$LOG" || fail "did not grab the yellow particle"
 vx=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1/' <<<"$line")
 vy=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\2/' <<<"$line")
-awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 100 && vy > 5 * (vx < 0 ? -vx : vx)) }' ||
+awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 1 && vy > 5 * (vx < 0 ? -vx : vx)) }' ||
     fail "fling velocity [$vx, $vy] does not point down: $line"
 pass "grab and fling: $line"
 
-# --- 2. delete while holding: the 8 kg particle at (250, 260) m ----------------------------
+# --- 2. delete while holding: the 8 kg particle at (2.5, 2.6) m ----------------------------
 # While holding, other keys still work: A twice (arrows on, then off again), then Delete.
-drag "$(sx 250)" "$(sy 260)" 3 3 3 \
+drag "$(sx 2.5)" "$(sy 2.6)" 3 3 3 \
     "key --window $WID a sleep 0.1 key --window $WID a sleep 0.1 key --window $WID Delete sleep 0.2"
 wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
 wait_title "5 particles - PAUSED"
-held=$(sed -n '/Grabbed particle at \[250.00, 260.00\]/,/Deleted particle/p' "$LOG")
+held=$(sed -n '/Grabbed particle at \[2.50, 2.60\]/,/Deleted particle/p' "$LOG")
 grep -q "Arrows on" <<<"$held" && grep -q "Arrows off" <<<"$held" ||
     fail "keys pressed while holding were not handled: $held"
 pass "keys while holding (A, A) handled; delete while holding: $(grep 'Deleted particle' "$LOG")"
 
-# --- 3. launch: drag on empty space at (100, 620) m, up and to the right -----------------
-drag "$(sx 100)" "$(sy 620)" 10 -10 8
+# --- 3. launch: drag on empty space at (1.0, 6.2) m, up and to the right -----------------
+# The hand stops for 0.4 s before the release: the launch is the drag's vector (press to
+# release), not the hand's last 100 ms, so the particle still leaves up and to the right.
+drag "$(sx 1.0)" "$(sy 6.2)" 10 -10 8 "sleep 0.4"
 wait_log "Launched particle at"
 line=$(grep "Launched particle" "$LOG" | tail -1)
 read -r px py vx vy < <(sed -E 's/.*at \[([-0-9.]+), ([-0-9.]+)\] with velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3 \4/' <<<"$line")
-# The press point, to within a screen pixel (1.2 m at this zoom).
+# The press point, to within a screen pixel (under 2 cm at this zoom); the drag's 80 px up-right
+# over the arrow time (1/3 s) is several m/s.
 awk -v x="$px" -v y="$py" -v vx="$vx" -v vy="$vy" \
-    'BEGIN { exit !((x - 100) ^ 2 < 2 && (y - 620) ^ 2 < 2 && vx > 100 && vy < -100) }' ||
+    'BEGIN { exit !((x - 1.0) ^ 2 < 0.0009 && (y - 6.2) ^ 2 < 0.0009 && vx > 1 && vy < -1) }' ||
     fail "launch not at the press point or not up-right: $line"
 wait_title "6 particles - PAUSED"
 pass "launch: $line"
@@ -254,7 +266,7 @@ pass "wheel zoom: $zooms notches, zoom $ZOOM -> $last_zoom px/m, wall moved away
 
 # --- 5. labels ----------------------------------------------------------------------------
 key f  # fit again
-side=$(awk -v z="$ZOOM" 'BEGIN { printf "%d", 700 * z - 12 }')  # inside the walls
+side=$(awk -v z="$ZOOM" 'BEGIN { printf "%d", 7 * z - 12 }')  # inside the walls
 inner="${side}x${side}+$((WX + ${BX%.*} + 6))+$((WY + ${BY%.*} + 6))"
 shot 4-fitted
 plain=$(white_in "$OUT/4-fitted.png" "$inner")
@@ -267,15 +279,20 @@ pass "S shows labels ($plain -> $labelled white pixels)"
 
 # --- 6. save ------------------------------------------------------------------------------
 key ctrl+s
-wait_log "Saved 6 particles to"
+wait_log "Saved 6 particles to /.*/saved.json"  # the full path
 [[ -s "$OUT/saved.json" ]] || fail "Ctrl+S wrote no file"
 # One particle per line; the launched one is the only 10 kg particle.
 launched=$(grep '"mass": 10.0,' "$OUT/saved.json") || fail "no launched particle in the saved scene"
 read -r svx svy < <(sed -E 's/.*"vx": ([-0-9.e+]+), "vy": ([-0-9.e+]+),.*/\1 \2/' <<<"$launched")
-awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 100 && vy < -100) }' ||
+awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 1 && vy < -1) }' ||
     fail "saved launched particle does not move up-right: $launched"
 ((  $(grep -c '"mass":' "$OUT/saved.json") == 6 )) || fail "saved scene does not hold 6 particles"
-pass "Ctrl+S saved the scene; launched particle: vx $svx, vy $svy m/s"
+first_save=$(md5sum <"$OUT/saved.json")
+key ctrl+s  # again: a new file beside it, the first one kept
+wait_log "Saved 6 particles to /.*/saved-2.json"
+[[ -s "$OUT/saved-2.json" && $(md5sum <"$OUT/saved.json") == "$first_save" ]] ||
+    fail "a second Ctrl+S did not keep the first save"
+pass "Ctrl+S saved the scene; launched particle: vx $svx, vy $svy m/s; a second save went beside it"
 
 # --- 7. analysis overlays ----------------------------------------------------------------
 # Pixels of one exact colour (hex, as ImageMagick prints it) in the window.
@@ -300,9 +317,17 @@ cyan=$(color_in "$OUT/7-momentum.png" "$CYAN")
 ((yellow > 30 && cyan > 10)) || fail "V: total momentum $yellow, centre of mass $cyan px"
 key l
 key l
+views=$(grep -c "\[I\] View: zoom" "$LOG")
 key k
 key d
 wait_log "Speed distribution on"
+# The panels sit beside the box: the fitted view made room for their column at the right.
+wait_count "\[I\] View: zoom" $((views + 2))
+read -r z2 bx2 < <(grep "\[I\] View: zoom" "$LOG" | tail -1 |
+    sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), .*/\1 \2/')
+box_right=$(awk -v z="$z2" -v b="$bx2" 'BEGIN { printf "%d", b + 7 * z + 0.5 }')
+((box_right <= WIDTH - 330)) || fail "with K and D on the box reaches x = $box_right of $WIDTH"
+pass "K, D: the box refits to end at x = $box_right, the panels beside it"
 for want in "Trails: selected" "Trails: all" "Plots on"; do
     grep -q "$want" "$LOG" || fail "no '$want' in the log"
 done
@@ -341,10 +366,10 @@ wait_log "\[I\] Reset to the scene as loaded: 6 particles"
 wait_title "6 particles - PAUSED"
 pass "R resets: $(grep 'Reset to the scene' "$LOG" | tail -1)"
 
-# --- 10. select: a click on the 12 kg particle at (150, 120) m -------------------------------
+# --- 10. select: a click on the 12 kg particle at (1.5, 1.2) m -------------------------------
 # One xdotool chain, so that the press and release are well within a click's 0.3 s.
-xdotool mousemove --sync "$(sx 150)" "$(sy 120)" sleep 0.1 click 1
-wait_log "\[I\] Selected particle [0-9]+ at \[150.00, 120.00\] m with velocity \[180.00, 120.00\] m/s, mass 12 kg, radius 30 m"
+xdotool mousemove --sync "$(sx 1.5)" "$(sy 1.2)" sleep 0.1 click 1
+wait_log "\[I\] Selected particle [0-9]+ at \[1.50, 1.20\] m with velocity \[1.80, 1.20\] m/s, mass 12 kg, radius 0.3 m"
 shot 6-selected
 read -r _ _ outline < <(centroid "$OUT/6-selected.png" 255 230 0)
 ((outline > 50)) || fail "no selection outline on screen ($outline pixels)"
@@ -356,7 +381,7 @@ wait_log "\[I\] Editing particle"
 # "2e1" is 20; its E must reach the prompt, not lower the restitution.
 xdotool type --window "$WID" --delay 50 "2e1"
 key Return
-wait_log "\[I\] Edited particle [0-9]+: mass 20 kg, radius 30 m, velocity \[180, 120\] m/s"
+wait_log "\[I\] Edited particle [0-9]+: mass 20 kg, radius 0.3 m, velocity \[1.8, 1.2\] m/s"
 grep -q "Restitution" "$LOG" && fail "a letter typed into the prompt toggled a control"
 key Return
 xdotool type --window "$WID" --delay 50 " -1"  # a leading space: xdotool would take -1 for an option
@@ -374,17 +399,32 @@ wait_log "\[I\] Restitution 0.95"
 key shift+e
 wait_log "\[I\] Restitution 1.00"
 key g
-wait_log "\[I\] Gravity \[0, 343.4\] m/s\^2"
+wait_log "\[I\] Gravity \[0, 9.81\] m/s\^2"  # Earth's, not scaled by the box
+# T with gravity on always moves on: substep, then exact or (if the world refuses exact with
+# gravity) discrete with the reason.
+last_mode() { grep -E '\] Mode: ' "$LOG" | tail -1; }
+key t
+wait_count "\] Mode: substep" 2
+modes=$(grep -c '\] Mode: ' "$LOG")
+key t
+wait_count "\] Mode: " $((modes + 1))
+last_mode | grep -Eq "Mode: (exact|discrete \(exact skipped: it has no gravity\))" ||
+    fail "T with gravity on in substep: $(last_mode)"
+pass "T with gravity on: $(grep -E '\] Mode: ' "$LOG" | tail -2 | paste -sd, -)"
+for _ in 1 2 3; do last_mode | grep -q "Mode: discrete" && break; key t; done
 key g
 wait_log "\[I\] Gravity off"
+modes=$(grep -c '\] Mode: ' "$LOG")
 key t
 key t
-wait_count "\[I\] Mode: exact" 2
+wait_count "\] Mode: " $((modes + 2))
+last_mode | grep -q "Mode: exact" || fail "T T did not reach exact: $(last_mode)"
 key g
-wait_log "\[W\] Gravity refused: the exact mode has none"
+wait_log "Gravity (refused: the exact mode has none|\[0, 9.81\] m/s\^2)"
+grep -q "Gravity refused" "$LOG" || key g  # gravity accepted in exact mode: off again
 key t
-wait_count "\[I\] Mode: discrete" 2
-pass "E, Shift+E, G, G; G refused in exact mode"
+wait_count "\] Mode: discrete" 3
+pass "E, Shift+E, G, T with gravity, G in exact mode"
 
 # --- 13. screenshot -------------------------------------------------------------------------
 key F12
@@ -400,13 +440,35 @@ pass "F12: $(basename "$png"), $size"
 # --- 14. R again undoes the edit ------------------------------------------------------------
 key r
 wait_count "Reset to the scene as loaded" 2
-xdotool mousemove --sync "$(sx 150)" "$(sy 120)" sleep 0.1 click 1
+xdotool mousemove --sync "$(sx 1.5)" "$(sy 1.2)" sleep 0.1 click 1
 wait_count "Selected particle" 2
 grep "Selected particle" "$LOG" | tail -1 | grep -q "mass 12 kg" ||
     fail "after R the particle is not as loaded: $(grep 'Selected particle' "$LOG" | tail -1)"
 pass "R restores the edited particle's 12 kg"
 
+# --- 14b. pan the box off screen: a marker at the edge points to it; F brings it back ----------
+for _ in $(seq 16); do xdotool key --window "$WID" Right; done
+shot 9-panned-away
+marker=$(color_in "$OUT/9-panned-away.png" "#FFE600")
+((marker > 30)) || fail "no marker for the off-screen box ($marker px)"
+key f
+shot 9-fitted-again
+((  $(white_in "$OUT/9-fitted-again.png" "$wall") >= 35 )) || fail "F did not bring the box back"
+pass "box off screen: a $marker px marker points to it; F fits it again"
+
 # --- 15. quit -----------------------------------------------------------------------------
+# Esc closes the help first; with unsaved changes it asks; a second Esc quits.
+key h
+key Escape
+sleep 0.3
+kill -0 "$APP_PID" 2>/dev/null || fail "Esc with the help open quit the program"
+key m
+wait_log "Spawned particle"
+key Escape
+wait_log "\[W\] Unsaved changes: Esc again quits without saving"
+sleep 0.3
+kill -0 "$APP_PID" 2>/dev/null || fail "Esc with unsaved changes quit without asking"
+pass "Esc closes the help, then asks before losing unsaved changes"
 # The window may be gone before xdotool sends the key release: that error is expected.
 xdotool key --window "$WID" Escape 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done

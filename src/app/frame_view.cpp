@@ -1,0 +1,144 @@
+#include "frame_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "hud.hpp"
+#include "inspector_panel.hpp"
+#include "momentum_view.hpp"
+#include "physics_controls.hpp"
+#include "session.hpp"
+#include "text.hpp"
+
+namespace psb::app {
+
+namespace {
+
+HudData hudData(const Session& session, const FrameStats& stats) {
+    const World& world = session.world();
+    HudData hud;
+    hud.fps = stats.fps;
+    hud.simTime = world.time();
+    hud.timeScale = session.timeScale();
+    hud.reachedTimeScale = session.reachedTimeScale();
+    hud.particles = world.size();
+    hud.kineticEnergy = session.observables().kineticEnergy;
+    hud.momentum = session.observables().momentum;
+    hud.spawnMass = session.spawn().mass;
+    hud.spawnRadius = session.spawn().radius();
+    hud.arrowSeconds = session.view().arrows ? session.view().arrowSeconds : 0.0;
+    hud.paused = session.paused();
+    hud.stepMs = stats.stepMs;
+    hud.drawMs = stats.drawMs;
+    hud.renderer = stats.renderer;
+    hud.mode = modeName(world.solver());
+    hud.overlays = session.overlayFlags();
+    // The exact mode finds its events through its own cell lists, not the broadphase.
+    hud.broadphase = world.solver().mode == StepMode::Exact
+                         ? std::string("event cells")
+                         : std::string(toString(world.broadPhaseInUse()));
+    hud.threads = world.threads();
+    hud.maxOverlap = session.accuracy().overlap();
+    hud.keDrift = session.accuracy().drift(hud.kineticEnergy);
+    hud.restitution = world.def().restitution;
+    hud.gravity = gravityText(world.def().gravity);
+    return hud;
+}
+
+std::string speedLabel(const CappedVelocity& v) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.2f m/s%s", v.velocity.norm(),
+                  v.capped ? " (capped: 2 box widths/s)" : "");
+    return buf;
+}
+
+}  // namespace
+
+std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, double height) {
+    const Camera::ScreenBox b = camera.boxOnScreen(width, height);
+    const double w = camera.viewportWidth(), h = camera.viewportHeight();
+    const bool visible = b.topLeft.x() + b.size.x() >= 0.0 && b.topLeft.x() <= w &&
+                         b.topLeft.y() + b.size.y() >= 0.0 && b.topLeft.y() <= h;
+    if (visible) return std::nullopt;
+    const Vec2 centre(w / 2.0, h / 2.0);
+    const Vec2 boxCentre = b.topLeft + b.size / 2.0;
+    const Vec2 d = boxCentre - centre;
+    const double n = d.norm();
+    if (!(n > 0.0) || !std::isfinite(n)) return std::nullopt;
+    const Vec2 u = d / n;
+    // The ray from the centre towards the box leaves the screen (less a margin) at `at`.
+    const double margin = 24.0;
+    const double tx = std::abs(u.x()) > 1e-12 ? (w / 2.0 - margin) / std::abs(u.x()) : 1e300;
+    const double ty = std::abs(u.y()) > 1e-12 ? (h / 2.0 - margin) / std::abs(u.y()) : 1e300;
+    BoxMarkerView m;
+    m.at = centre + std::min(tx, ty) * u;
+    m.direction = u;
+    m.label = "box this way (F fits)";
+    return m;
+}
+
+FrameView buildFrame(const Session& session, const FrameStats& stats, const Font& hudFont,
+                     const Font& labelFont) {
+    const World& world = session.world();
+    FrameView f;
+    f.world = &world;
+    f.camera = &session.camera();
+    f.series = &session.series();
+    f.now = session.observables();
+    f.view = session.view();
+    f.sceneGeneration = session.sceneGeneration();
+    f.trailParticle = session.trailParticle();
+    f.selected = session.selected();
+    if (session.interaction().mode() == Interaction::Mode::Launching) {
+        LaunchPreviewView l;
+        const CappedVelocity v = session.launchPreview();
+        l.from = session.interaction().pressPoint();
+        // The velocity arrow the particle will have: arrowSeconds of its motion.
+        l.to = l.from + v.velocity * session.view().arrowSeconds;
+        l.radius = session.spawn().radius();
+        l.label = speedLabel(v);
+        f.launch = l;
+    }
+    f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
+
+    Overlays& o = f.overlays;
+    o.hud = hudLines(hudData(session, stats));
+    if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
+    if (stats.labelsCrowded > 0 && session.view().labels) {
+        o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
+                        " left out where they would overlap (zoom in)");
+    }
+    o.showHelp = session.helpShown();
+    if (o.showHelp) o.help = helpLines();
+    o.showProfile = session.profileShown();
+    if (o.showProfile) {
+        ProfileData pd;
+        pd.profile = world.profile();
+        pd.mode = world.solver().mode;
+        pd.eventsPerStep = session.accuracy().eventsPerStep();
+        pd.frameStepMs = stats.lastStepMs;
+        pd.frameDrawMs = stats.lastDrawMs;
+        o.profile = profileLines(pd);
+    }
+    o.messages = stats.messages;
+    if (f.selected) o.inspector = inspectorLines(*f.selected, session.prompt());
+
+    LayoutRequest req;
+    req.width = session.camera().viewportWidth();
+    req.height = session.camera().viewportHeight();
+    req.hud = textBoxSize(hudFont, o.hud);
+    if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
+    if (f.view.momentum) {
+        req.legend = textBoxSize(labelFont, momentumLegend(world, f.now, f.view.arrowSeconds));
+    }
+    req.messages = textBoxSize(hudFont, o.messages);
+    req.inspector = textBoxSize(hudFont, o.inspector);
+    req.plots = f.view.plots;
+    req.speeds = f.view.speeds;
+    f.layout = layoutPanels(req);
+    f.title = windowTitle(world.size(), session.paused(), session.sceneName());
+    return f;
+}
+
+}  // namespace psb::app

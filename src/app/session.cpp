@@ -1,0 +1,616 @@
+#include "session.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <type_traits>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "clock.hpp"
+#include "physics_controls.hpp"
+#include "scene_io.hpp"
+
+namespace psb::app {
+
+namespace {
+
+std::string fmt(const char* format, double a, double b) {
+    char buf[128];
+    std::snprintf(buf, sizeof buf, format, a, b);
+    return buf;
+}
+
+/// A stepping speed (simulated per real second) for the HUD and messages: "x2", "x0.25".
+std::string speedText(double s) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "x%g", s);
+    return buf;
+}
+
+}  // namespace
+
+const char* logPrefix(Notice::Level level) {
+    switch (level) {
+        case Notice::Level::Warning:
+            return "[W] ";
+        case Notice::Level::Error:
+            return "[E] ";
+        case Notice::Level::Info:
+            break;
+    }
+    return "[I] ";
+}
+
+Session::Session(World world, std::string sceneName, SessionOptions options)
+    : options_(std::move(options)), paused_(options_.paused) {
+    rng_.seed(options_.seed);
+    view_.arrows = options_.arrows;
+    camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
+    setWorld(std::move(world), std::move(sceneName));
+}
+
+void Session::setWorld(World world, std::string name) {
+    interaction_.reset();
+    selection_.clear();
+    closeEdit();
+    loaded_ = world;
+    world_ = std::move(world);
+    sceneName_ = std::move(name);
+    ++generation_;
+    view_.arrowSeconds = arrowSecondsFor(world_);
+    spawn_.lengthScale = spawnLengthScale(world_);
+    accumulator_ = 0.0;
+    series_.clear();
+    collisions_ = 0;
+    now_ = sampleObservables(world_);
+    dirty_ = false;
+    quitPending_ = false;
+    changedSinceMeasure_ = true;
+    fit();
+    accuracy_.resetReference(kineticEnergy(world_));
+}
+
+std::vector<Notice> Session::takeNotices() {
+    std::vector<Notice> out;
+    out.swap(notices_);
+    return out;
+}
+
+bool Session::takeScreenshotRequest() {
+    const bool r = screenshotRequested_;
+    screenshotRequested_ = false;
+    return r;
+}
+
+void Session::say(std::string text, Notice::Level level) {
+    notices_.push_back({level, std::move(text), true, true});
+}
+
+void Session::log(std::string text, Notice::Level level) {
+    notices_.push_back({level, std::move(text), false, true});
+}
+
+void Session::userAction() {
+    accuracy_.resetReference(kineticEnergy(world_));
+    dirty_ = true;
+    changedSinceMeasure_ = true;
+}
+
+void Session::afterCameraMove() {
+    fitted_ = false;
+    if (interaction_.mode() != Interaction::Mode::Idle) {
+        interaction_.moveTo(pointerWorld(), pointerTime_);
+    }
+}
+
+LaunchSettings Session::launchSettings() const {
+    LaunchSettings s;
+    s.window = 0.1;
+    // A hand that moved less than 4 pixels in the last 100 ms was holding still.
+    s.minDistance = camera_.toWorld(4.0);
+    s.maxSpeed = maxLaunchSpeed(world_.def());
+    return s;
+}
+
+CappedVelocity Session::launchPreview() const {
+    if (interaction_.mode() != Interaction::Mode::Launching) return {};
+    return interaction_.launchVelocityNow(launchSettings(), view_.arrowSeconds);
+}
+
+std::optional<Particle> Session::selected() const {
+    if (const auto id = selection_.id(); id && world_.contains(*id)) return world_.get(*id);
+    return std::nullopt;
+}
+
+ParticleId Session::trailParticle() const {
+    if (const auto id = selection_.id(); id && world_.contains(*id)) return *id;
+    return interaction_.mode() == Interaction::Mode::Holding ? interaction_.held() : kNullParticle;
+}
+
+std::string Session::overlayFlags() const {
+    std::string f;
+    const auto add = [&f](const std::string& s) { f += (f.empty() ? "" : " ") + s; };
+    if (view_.momentum) add("V");
+    if (view_.trails != TrailMode::Off) add(std::string("L:") + toString(view_.trails));
+    if (view_.plots) add("K");
+    if (view_.speeds) add("D");
+    return f;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The one place commands are applied.
+
+void Session::apply(const Command& command) {
+    // A pending quit question is answered by the next Back or Quit; anything else cancels it.
+    const bool answersQuit =
+        std::holds_alternative<cmd::Back>(command) || std::holds_alternative<cmd::Quit>(command);
+    const bool passive = std::holds_alternative<cmd::PointerMove>(command) ||
+                         std::holds_alternative<cmd::Resize>(command);
+    if (quitPending_ && !answersQuit && !passive) {
+        quitPending_ = false;
+        say("Quit cancelled");
+    }
+    // While the edit prompt is open it takes the keyboard: only its own commands, the pointer,
+    // the view's geometry, a screenshot and leaving reach the session.
+    if (prompt_.active()) {
+        const bool allowed = std::visit(
+            [](const auto& c) {
+                using T = std::decay_t<decltype(c)>;
+                return std::is_same_v<T, cmd::EditType> || std::is_same_v<T, cmd::EditField> ||
+                       std::is_same_v<T, cmd::EditBackspace> || std::is_same_v<T, cmd::EditApply> ||
+                       std::is_same_v<T, cmd::Back> || std::is_same_v<T, cmd::Quit> ||
+                       std::is_same_v<T, cmd::Screenshot> || std::is_same_v<T, cmd::Resize> ||
+                       std::is_same_v<T, cmd::PointerDown> || std::is_same_v<T, cmd::PointerMove> ||
+                       std::is_same_v<T, cmd::PointerUp> || std::is_same_v<T, cmd::Zoom> ||
+                       std::is_same_v<T, cmd::Pan>;
+            },
+            command);
+        if (!allowed) return;
+    }
+    std::visit(
+        [this](const auto& c) {
+            using T = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<T, cmd::PointerDown>) {
+                pointerDown(c);
+            } else if constexpr (std::is_same_v<T, cmd::PointerMove>) {
+                pointerMove(c);
+            } else if constexpr (std::is_same_v<T, cmd::PointerUp>) {
+                pointerUp(c);
+            } else if constexpr (std::is_same_v<T, cmd::DeleteHeld>) {
+                deleteHeld();
+            } else if constexpr (std::is_same_v<T, cmd::Pan>) {
+                camera_.panPixels(c.pixels);
+                camera_.keepNear(world_.def().width, world_.def().height);
+                afterCameraMove();
+            } else if constexpr (std::is_same_v<T, cmd::Zoom>) {
+                camera_.zoomAbout(c.screen, c.factor);
+                char buf[96];
+                std::snprintf(buf, sizeof buf, "Zoom %.4f px/m about [%.0f, %.0f]", camera_.zoom(),
+                              c.screen.x(), c.screen.y());
+                log(buf);
+                afterCameraMove();
+            } else if constexpr (std::is_same_v<T, cmd::Fit>) {
+                fit();
+                afterCameraMove();
+                fitted_ = true;
+            } else if constexpr (std::is_same_v<T, cmd::Resize>) {
+                resize(c.width, c.height);
+            } else if constexpr (std::is_same_v<T, cmd::ToggleArrows>) {
+                view_.arrows = !view_.arrows;
+                say(view_.arrows ? "Arrows on" : "Arrows off");
+            } else if constexpr (std::is_same_v<T, cmd::ToggleLabels>) {
+                view_.labels = !view_.labels;
+                say(view_.labels ? "Labels on" : "Labels off");
+            } else if constexpr (std::is_same_v<T, cmd::ToggleHelp>) {
+                showHelp_ = !showHelp_;
+            } else if constexpr (std::is_same_v<T, cmd::ToggleProfile>) {
+                togglePanel(showProfile_, "Profile on", "Profile off");
+            } else if constexpr (std::is_same_v<T, cmd::ToggleMomentum>) {
+                view_.momentum = !view_.momentum;
+                say(view_.momentum ? "Momentum view on" : "Momentum view off");
+            } else if constexpr (std::is_same_v<T, cmd::CycleTrails>) {
+                view_.trails = nextTrailMode(view_.trails);
+                say(std::string("Trails: ") + toString(view_.trails));
+            } else if constexpr (std::is_same_v<T, cmd::TogglePlots>) {
+                togglePanel(view_.plots, "Plots on", "Plots off");
+            } else if constexpr (std::is_same_v<T, cmd::ToggleSpeeds>) {
+                togglePanel(view_.speeds, "Speed distribution on", "Speed distribution off");
+            } else if constexpr (std::is_same_v<T, cmd::TogglePause>) {
+                paused_ = !paused_;
+                accumulator_ = 0.0;
+                say(paused_ ? "Paused" : "Resumed");
+            } else if constexpr (std::is_same_v<T, cmd::SingleStep>) {
+                if (paused_) stepRequested_ = true;
+            } else if constexpr (std::is_same_v<T, cmd::ScaleTime>) {
+                timeScale_ = std::clamp(timeScale_ * c.factor, kMinTimeScale, kMaxTimeScale);
+                reached_ = timeScale_;
+                say("Time speed " + speedText(timeScale_));
+            } else if constexpr (std::is_same_v<T, cmd::SpawnRandom>) {
+                spawnRandom();
+            } else if constexpr (std::is_same_v<T, cmd::ChangeSpawnMass>) {
+                changeSpawnMass(c.direction);
+            } else if constexpr (std::is_same_v<T, cmd::ChangeRestitution>) {
+                changeRestitution(c.direction);
+            } else if constexpr (std::is_same_v<T, cmd::ToggleGravity>) {
+                toggleGravity();
+            } else if constexpr (std::is_same_v<T, cmd::NextMode>) {
+                nextMode();
+            } else if constexpr (std::is_same_v<T, cmd::Reset>) {
+                reset();
+            } else if constexpr (std::is_same_v<T, cmd::OpenPreset>) {
+                openPreset(c.index);
+            } else if constexpr (std::is_same_v<T, cmd::OpenFile>) {
+                openFile(c.file);
+            } else if constexpr (std::is_same_v<T, cmd::OpenEdit>) {
+                openEdit();
+            } else if constexpr (std::is_same_v<T, cmd::EditType>) {
+                prompt_.type(c.text);
+            } else if constexpr (std::is_same_v<T, cmd::EditField>) {
+                if (c.back) {
+                    prompt_.previousField();
+                } else {
+                    prompt_.nextField();
+                }
+            } else if constexpr (std::is_same_v<T, cmd::EditBackspace>) {
+                prompt_.backspace();
+            } else if constexpr (std::is_same_v<T, cmd::EditApply>) {
+                applyEdit();
+            } else if constexpr (std::is_same_v<T, cmd::Save>) {
+                save();
+            } else if constexpr (std::is_same_v<T, cmd::Screenshot>) {
+                screenshotRequested_ = true;
+            } else if constexpr (std::is_same_v<T, cmd::Back>) {
+                back();
+            } else if constexpr (std::is_same_v<T, cmd::Quit>) {
+                quit();
+            } else {
+                static_assert(sizeof(T) == 0, "a command without a handler");
+            }
+        },
+        command);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The hand.
+
+void Session::pointerDown(const cmd::PointerDown& c) {
+    pointer_ = c.screen;
+    pointerTime_ = c.time;
+    interaction_.press(world_, pointerWorld(), c.time);
+    if (interaction_.mode() == Interaction::Mode::Holding) {
+        const Particle p = world_.get(interaction_.held());
+        log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
+        // The energy is measured from the grab; a click that only selects changes nothing.
+        accuracy_.resetReference(kineticEnergy(world_));
+    }
+}
+
+void Session::pointerMove(const cmd::PointerMove& c) {
+    pointer_ = c.screen;
+    pointerTime_ = c.time;
+    interaction_.moveTo(pointerWorld(), c.time);
+}
+
+void Session::pointerUp(const cmd::PointerUp& c) {
+    pointer_ = c.screen;
+    pointerTime_ = c.time;
+    const ReleaseResult r = interaction_.release(world_, pointerWorld(), c.time, spawn_,
+                                                 launchSettings(), view_.arrowSeconds);
+    using K = ReleaseResult::Kind;
+    const std::string at = fmt("at [%.2f, %.2f]", r.position.x(), r.position.y());
+    const std::string v = fmt("with velocity [%.2f, %.2f] m/s", r.velocity.x(), r.velocity.y());
+    if (r.kind == K::Flung) log("Released particle " + at + " " + v);
+    if (r.kind == K::Launched) log("Launched particle " + at + " " + v);
+    if ((r.kind == K::Flung || r.kind == K::Launched) && r.capped) {
+        say(fmt("Speed capped at %.3g m/s (%g box widths per second)", r.velocity.norm(),
+                kMaxLaunchBoxesPerSecond));
+    }
+    if (r.kind == K::Refused) say(r.message);
+    if (r.kind == K::Clicked) click(r);
+    if (r.kind == K::Flung || r.kind == K::Launched) userAction();
+}
+
+void Session::click(const ReleaseResult& r) {
+    if (!r.id.isNull()) {
+        if (prompt_.target() != r.id) closeEdit();
+        selection_.select(r.id);
+        std::string line = selectionLogLine(world_.get(r.id));
+        log(line.substr(4));  // without its "[I] "
+    } else if (selection_.id()) {
+        selection_.clear();
+        closeEdit();
+        say("Selection cleared");
+    }
+}
+
+void Session::deleteHeld() {
+    if (const auto p = interaction_.deleteHeld(world_)) {
+        log(deletionLogLine(*p).substr(4));
+        notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
+        userAction();
+        checkSelection();
+    }
+}
+
+void Session::checkSelection() {
+    if (selection_.forgetIfGone(world_)) {
+        closeEdit();
+        say("Selection cleared: the particle was deleted");
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The world.
+
+void Session::spawnRandom() {
+    const WorldDef& d = world_.def();
+    // The original: mass a random integer 3..20 kg, radius 2.5 cm per kg at its scale of
+    // 1 px = 1 cm (spawnLengthScale follows the scene), somewhere in the upper part of the box,
+    // colour channels 100..255, velocity components up to 5 px per frame at 60 frames per second
+    // (3 m/s), scaled with the box.
+    std::uniform_int_distribution<int> massDist(3, 20), channel(100, 255);
+    const double mass = massDist(rng_), radius = 2.5 * mass * spawn_.lengthScale;
+    std::uniform_real_distribution<double> x(radius, std::max(radius, d.width - radius));
+    std::uniform_real_distribution<double> y(radius, std::max(radius, d.height / 2.0));
+    const double vmax = 3.0 * std::min(d.width, d.height) / 7.0;
+    std::uniform_real_distribution<double> v(-vmax, vmax);
+    const Vec2 want(x(rng_), y(rng_));
+    const auto spot = findFreeSpot(world_, want, radius);
+    if (!spot) {
+        say("No room for a new particle");
+        return;
+    }
+    ParticleDef def;
+    def.position = *spot;
+    def.velocity = {v(rng_), v(rng_)};
+    def.mass = mass;
+    def.radius = radius;
+    def.color = {static_cast<std::uint8_t>(channel(rng_)), static_cast<std::uint8_t>(channel(rng_)),
+                 static_cast<std::uint8_t>(channel(rng_))};
+    world_.add(def);
+    userAction();
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass "
+                  "%.0f kg",
+                  spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass);
+    log(buf);
+}
+
+void Session::changeSpawnMass(int direction) {
+    spawn_.changeMass(direction < 0 ? -1.0 : 1.0);
+    notices_.push_back({Notice::Level::Info,
+                        fmt("New particles: %.0f kg, radius %.3g m", spawn_.mass, spawn_.radius()),
+                        true, false});
+}
+
+void Session::nextMode() {
+    const ModeSwitch r = switchToNextMode(world_);
+    say(r.message, r.skipped.empty() ? Notice::Level::Info : Notice::Level::Warning);
+    if (!r.detail.empty()) log(r.detail, Notice::Level::Warning);
+    if (r.changed) {
+        accumulator_ = 0.0;
+        userAction();
+    }
+}
+
+void Session::toggleGravity() {
+    const ControlChange c = psb::app::toggleGravity(world_, loaded_.def().gravity);
+    say(c.message, c.changed ? Notice::Level::Info : Notice::Level::Warning);
+    if (c.changed) userAction();
+}
+
+void Session::changeRestitution(int direction) {
+    const ControlChange c = stepRestitution(world_, direction);
+    say(c.message);
+    if (c.changed) userAction();
+}
+
+void Session::reset() {
+    World loaded = loaded_;
+    setWorld(std::move(loaded), sceneName_);
+    say("Reset to the scene as loaded: " + std::to_string(world_.size()) + " particles");
+}
+
+void Session::openPreset(int index) {
+    const auto& presets = options_.presets;
+    if (presets.empty()) {
+        say("No preset scenes found (assets/scenes)");
+        return;
+    }
+    std::size_t k = nextPreset_ % presets.size();
+    if (index >= 0) {
+        if (static_cast<std::size_t>(index) >= presets.size()) {
+            say("No preset " + std::to_string(index + 1) + " (there are " +
+                std::to_string(presets.size()) + ")");
+            return;
+        }
+        k = static_cast<std::size_t>(index);
+    }
+    openFile(presets[k]);
+    nextPreset_ = (k + 1) % presets.size();
+}
+
+void Session::openFile(const std::optional<std::filesystem::path>& file) {
+    try {
+        const Scene scene = psb::app::openScene(file);
+        std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
+        setWorld(makeWorld(scene), name);
+        say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
+            ": " + name + " (" + std::to_string(world_.size()) + " particles)");
+    } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
+        say(std::string("Cannot open scene: ") + e.what(), Notice::Level::Error);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The edit prompt.
+
+void Session::openEdit() {
+    const auto id = selection_.id();
+    if (!id) {
+        say("Click a particle to select it, then Enter edits it");
+        return;
+    }
+    prompt_.open(world_.get(*id));
+    log("Editing particle " + std::to_string(id->slot));
+}
+
+void Session::closeEdit() {
+    if (prompt_.active()) prompt_.close();
+}
+
+void Session::applyEdit() {
+    const EditResult r = psb::app::applyEdit(world_, prompt_.target(), prompt_.texts());
+    if (r.applied) {
+        closeEdit();
+        say(r.message);
+        userAction();
+    } else {
+        // The prompt stays open with its text, so the value can be corrected.
+        prompt_.setError(r.message);
+        say("Edit refused: " + r.message, Notice::Level::Warning);
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files and leaving.
+
+void Session::save() {
+    try {
+        const std::filesystem::path path = freeSavePath(options_.saveTo);
+        say(saveWorld(world_, sceneName_, path));
+        lastSave_ = path;
+        dirty_ = false;
+    } catch (const std::exception& e) {  // SaveError; the old file is intact
+        say(std::string("Save failed: ") + e.what(), Notice::Level::Error);
+    }
+}
+
+void Session::back() {
+    if (quitPending_) {
+        running_ = false;
+    } else if (showHelp_) {
+        showHelp_ = false;
+    } else if (prompt_.active()) {
+        closeEdit();
+        say("Edit cancelled");
+    } else {
+        quit();
+    }
+}
+
+void Session::quit() {
+    if (!dirty_ || quitPending_) {
+        running_ = false;
+        return;
+    }
+    quitPending_ = true;
+    say("Unsaved changes: Esc again quits without saving, Ctrl+S saves, any other key stays",
+        Notice::Level::Warning);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The view.
+
+void Session::fit() {
+    const ViewInsets& in = options_.insets;
+    // The momentum legend is three short lines: it does not cost the box a column.
+    const bool column = view_.plots || view_.speeds || showProfile_;
+    camera_.fit(world_.def().width, world_.def().height, 10.0, in.top, in.bottom,
+                column ? in.panelColumn : 0.0);
+    const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",
+                  camera_.zoom(), topLeft.x(), topLeft.y());
+    log(buf);
+    fitted_ = true;
+}
+
+void Session::resize(int width, int height) {
+    if (width == camera_.viewportWidth() && height == camera_.viewportHeight()) return;
+    // A fitted view stays fitted; a view the user moved keeps its centre where it was.
+    const Vec2 centre =
+        camera_.screenToWorld(Vec2(camera_.viewportWidth() / 2.0, camera_.viewportHeight() / 2.0));
+    camera_.setViewport(width, height);
+    if (fitted_) {
+        fit();
+    } else {
+        camera_.set(camera_.zoom(), centre - Vec2(width / 2.0, height / 2.0) / camera_.zoom());
+    }
+}
+
+void Session::togglePanel(bool& flag, const char* on, const char* off) {
+    flag = !flag;
+    say(flag ? on : off);
+    // The panel column sits beside the box: a fitted view makes room for it (or takes it back).
+    if (fitted_) fit();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Time.
+
+void Session::stepOnce(double now) {
+    interaction_.applyHold(world_, now, launchSettings());
+    world_.step();
+}
+
+void Session::update(double realSeconds, double now, double budgetMs) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const double dt = world_.solver().dt;
+    const double simBefore = world_.time();
+    accuracy_.beginSteps(world_);
+    if (!paused_) {
+        accumulator_ += realSeconds * timeScale_;
+        while (accumulator_ >= dt) {
+            stepOnce(now);
+            accumulator_ -= dt;
+            // Catching up must not take longer than a frame, or each frame would fall further
+            // behind: drop the backlog and let the simulation run slower than real time.
+            if (msSince(t0) > budgetMs) {
+                accumulator_ = 0.0;
+                break;
+            }
+        }
+        if (realSeconds > 0.0) {
+            // Smoothed over about half a second at 60 frames per second.
+            const double rate = (world_.time() - simBefore) / realSeconds;
+            reached_ += 0.1 * (rate - reached_);
+        }
+    } else if (stepRequested_) {
+        stepOnce(now);
+    }
+    stepRequested_ = false;
+    accuracy_.endSteps(world_);
+    // Arrows shorten when the motion speeds up (a bullet scattering a crowd) but never grow
+    // back on their own, so their lengths stay comparable over time; opening a scene resets it.
+    view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
+    // Show the held particle exactly at the hand, paused or not.
+    interaction_.applyHold(world_, now, launchSettings());
+    // The state as drawn is measured when the steps' own detection did not see it: nothing
+    // stepped (paused, or a held particle moved), the exact mode (its events meet overlaps only
+    // at collisions), or the user changed the world since. Running in discrete or substep mode
+    // the steps' maximum already bounds it, and a broadphase pass a frame would cost ~2 ms at
+    // 5·10⁴ particles.
+    if (world_.counters().steps == 0 || world_.solver().mode == StepMode::Exact ||
+        changedSinceMeasure_) {
+        accuracy_.measureState(world_);
+        changedSinceMeasure_ = false;
+    } else {
+        accuracy_.clearState();
+    }
+    checkSelection();
+    // Always recorded (three compensated sums over the particles), so the plots and the centre
+    // of mass path have a history the moment they are switched on. The accuracy monitor clears
+    // the world's counters before each frame's steps; the series wants a running total.
+    collisions_ += world_.counters().collisions;
+    now_ = sampleObservables(world_);
+    now_.collisions = collisions_;
+    series_.record(now_);
+    lastStepMs_ = msSince(t0);
+}
+
+}  // namespace psb::app

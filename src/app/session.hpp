@@ -1,0 +1,221 @@
+#pragma once
+// The sandbox without a window: the world, the scene as it was loaded, the presets, the
+// camera and view toggles, the hand (grab, fling, launch), the selection and its edit prompt,
+// the spawn rules and the clock that steps the world. It knows no SDL and is tested without one.
+//
+// Everything that changes it is a Command handed to apply(); apply() is the one place where a
+// user's intent becomes a change, so keys, the mouse, tests and on-screen controls share it,
+// and an undo history or time step-back can be added by recording there (each command that
+// changes the world calls userAction(), the natural point to take a snapshot). update() is the
+// only other mutator: it advances the world by real time.
+//
+// What the session has to say (a mode refused, a file saved) comes out as Notices, which the app
+// shows for a few seconds and logs; the session itself keeps no clock of its own.
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/world.hpp>
+
+#include "accuracy.hpp"
+#include "camera.hpp"
+#include "command.hpp"
+#include "edit_prompt.hpp"
+#include "interaction.hpp"
+#include "selection.hpp"
+#include "view_options.hpp"
+
+namespace psb::app {
+
+/// Something the session says: shown on screen (`show`) and/or written to the log (`log`).
+struct Notice {
+    enum class Level { Info, Warning, Error };
+    Level level = Level::Info;
+    std::string text;
+    bool show = true;
+    bool log = true;
+};
+
+/// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
+[[nodiscard]] const char* logPrefix(Notice::Level level);
+
+/// Pixels the camera keeps free around the box when it fits it: the HUD above, the messages
+/// below, the panel column at the right while a panel of it (plots, speed histogram, profile) is
+/// on.
+struct ViewInsets {
+    double top = 0.0;
+    double bottom = 0.0;
+    double panelColumn = 0.0;
+};
+
+struct SessionOptions {
+    std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
+    std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
+    std::uint32_t seed = 1;                                       ///< random spawns
+    bool paused = false;
+    bool arrows = true;
+    int viewportWidth = 800;  ///< pixels
+    int viewportHeight = 800;
+    ViewInsets insets;
+};
+
+/// Real time the world may spend catching up in one update, ms: more, and every frame would
+/// fall further behind.
+inline constexpr double kStepBudgetMs = 30.0;
+
+class Session {
+  public:
+    static constexpr double kMinTimeScale = 1.0 / 16.0, kMaxTimeScale = 8.0;
+
+    Session(World world, std::string sceneName, SessionOptions options);
+
+    /// Applies one command: the only way anything but time changes the session.
+    void apply(const Command& command);
+    /// Advances the world by `realSeconds` of real time (times the time speed) in fixed steps
+    /// of its dt, spending at most `budgetMs` of wall-clock time (the backlog is then dropped);
+    /// `now` is the pointer clock, for the held particle's velocity. While paused only a
+    /// requested single step runs.
+    void update(double realSeconds, double now, double budgetMs = kStepBudgetMs);
+
+    /// What the session said since the last call.
+    [[nodiscard]] std::vector<Notice> takeNotices();
+    /// True once after a Screenshot command: the app writes the next frame.
+    [[nodiscard]] bool takeScreenshotRequest();
+
+    [[nodiscard]] const World& world() const { return world_; }
+    [[nodiscard]] const World& loadedWorld() const { return loaded_; }
+    [[nodiscard]] const std::string& sceneName() const { return sceneName_; }
+    /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
+    /// (trails) start over.
+    [[nodiscard]] std::uint64_t sceneGeneration() const { return generation_; }
+    [[nodiscard]] const Camera& camera() const { return camera_; }
+    [[nodiscard]] const ViewOptions& view() const { return view_; }
+    [[nodiscard]] bool helpShown() const { return showHelp_; }
+    [[nodiscard]] bool profileShown() const { return showProfile_; }
+    [[nodiscard]] const Interaction& interaction() const { return interaction_; }
+    [[nodiscard]] const Selection& selection() const { return selection_; }
+    [[nodiscard]] const EditPrompt& prompt() const { return prompt_; }
+    [[nodiscard]] const SpawnSettings& spawn() const { return spawn_; }
+    [[nodiscard]] const AccuracyMonitor& accuracy() const { return accuracy_; }
+    [[nodiscard]] const TimeSeries& series() const { return series_; }
+    /// The world's observables as the last update left them (summed once a frame).
+    [[nodiscard]] const ObservablesSample& observables() const { return now_; }
+    [[nodiscard]] bool paused() const { return paused_; }
+    /// Requested simulated seconds per real second.
+    [[nodiscard]] double timeScale() const { return timeScale_; }
+    /// Simulated seconds per real second the last updates reached (smoothed); below
+    /// timeScale() when the steps cannot keep up.
+    [[nodiscard]] double reachedTimeScale() const { return reached_; }
+    /// Wall-clock ms of simulation in the last update.
+    [[nodiscard]] double lastStepMs() const { return lastStepMs_; }
+    [[nodiscard]] bool running() const { return running_; }
+    /// Quit was asked with unsaved changes: the next Back or Quit quits.
+    [[nodiscard]] bool quitPending() const { return quitPending_; }
+    /// The user changed the world since it was opened or last saved.
+    [[nodiscard]] bool unsavedChanges() const { return dirty_; }
+    /// The file the last Save wrote (absolute).
+    [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const { return lastSave_; }
+
+    /// The selected particle, while it exists.
+    [[nodiscard]] std::optional<Particle> selected() const;
+    /// The particle whose trail TrailMode::Selected shows: the selected one, else the one held.
+    [[nodiscard]] ParticleId trailParticle() const;
+    /// How the hand turns drags into velocities at the current zoom and scene.
+    [[nodiscard]] LaunchSettings launchSettings() const;
+    /// A launch in progress: the velocity releasing now would give.
+    [[nodiscard]] CappedVelocity launchPreview() const;
+    /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
+    [[nodiscard]] std::string overlayFlags() const;
+
+    /// Replaces the world (a scene opened elsewhere, the benchmark); it becomes the scene as
+    /// loaded.
+    void setWorld(World world, std::string name);
+
+  private:
+    // One function per command family; apply() dispatches.
+    void pointerDown(const cmd::PointerDown& c);
+    void pointerMove(const cmd::PointerMove& c);
+    void pointerUp(const cmd::PointerUp& c);
+    void click(const ReleaseResult& r);
+    void deleteHeld();
+    void spawnRandom();
+    void changeSpawnMass(int direction);
+    void nextMode();
+    void toggleGravity();
+    void changeRestitution(int direction);
+    void reset();
+    void openPreset(int index);
+    void openFile(const std::optional<std::filesystem::path>& file);
+    void openEdit();
+    void applyEdit();
+    void closeEdit();
+    void save();
+    void back();
+    void quit();
+    void fit();
+    void resize(int width, int height);
+    void togglePanel(bool& flag, const char* on, const char* off);
+
+    void stepOnce(double now);
+    /// The selected particle is gone: forget it (and close its edit prompt), saying so.
+    void checkSelection();
+    /// The user changed the world: the energy drift is measured from here on, and there are
+    /// unsaved changes.
+    void userAction();
+    /// The hand did not move but the world under it did: the held particle follows the cursor.
+    void afterCameraMove();
+    void say(std::string text, Notice::Level level = Notice::Level::Info);
+    void log(std::string text, Notice::Level level = Notice::Level::Info);
+    [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(pointer_); }
+
+    SessionOptions options_;
+    World world_;
+    World loaded_;  ///< world_ as it was loaded, for Reset
+    std::string sceneName_;
+    std::uint64_t generation_ = 0;
+    std::size_t nextPreset_ = 0;
+
+    Camera camera_;
+    bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
+    ViewOptions view_;
+    bool showHelp_ = false;
+    bool showProfile_ = false;
+
+    Interaction interaction_;
+    Selection selection_;
+    EditPrompt prompt_;
+    SpawnSettings spawn_;
+    std::mt19937 rng_;
+    Vec2 pointer_ = Vec2::Zero();  ///< screen pixels
+    double pointerTime_ = 0.0;     ///< seconds, of the last pointer command
+
+    bool paused_ = false;
+    bool stepRequested_ = false;
+    double timeScale_ = 1.0;
+    double reached_ = 1.0;
+    double accumulator_ = 0.0;
+    double lastStepMs_ = 0.0;
+
+    bool running_ = true;
+    bool quitPending_ = false;
+    bool dirty_ = false;
+    bool changedSinceMeasure_ = true;  ///< the world changed other than by stepping
+    bool screenshotRequested_ = false;
+    std::optional<std::filesystem::path> lastSave_;
+
+    AccuracyMonitor accuracy_;
+    /// About 68 s of frames at 60 fps for the plots and the centre of mass path.
+    static constexpr std::size_t kSeriesSamples = 4096;
+    TimeSeries series_{kSeriesSamples};
+    std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
+    ObservablesSample now_;
+
+    std::vector<Notice> notices_;
+};
+
+}  // namespace psb::app

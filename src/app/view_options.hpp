@@ -1,0 +1,63 @@
+#pragma once
+// What the view shows, as plain data the session holds and the drawing layer reads: the
+// toggles of the keys A, S, V, L, K, D and the arrow scale. No SDL, so the session and its
+// tests can use it without a window.
+
+#include <algorithm>
+#include <cmath>
+
+#include <particle_sandbox/world.hpp>
+
+namespace psb::app {
+
+/// What L shows.
+enum class TrailMode { Off, Selected, All };
+
+/// Off -> Selected -> All -> Off.
+[[nodiscard]] TrailMode nextTrailMode(TrailMode mode);
+/// "off", "selected", "all".
+[[nodiscard]] const char* toString(TrailMode mode);
+
+/// A moving particle's arrow reaches at least this far beyond its rim, pixels, so that big slow
+/// particles show one (the HUD names the arrow scale, so a short arrow still reads as a speed).
+inline constexpr double kMinArrowPixels = 10.0;
+
+/// What to draw besides the discs.
+struct ViewOptions {
+    bool arrows = true;   ///< velocity arrows
+    bool labels = false;  ///< XVel, YVel, Momentum, Mass beside each particle
+    /// Arrow length per unit speed, seconds: an arrow reaches where the particle will be after
+    /// this time. The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
+    double arrowSeconds = 1.0 / 3.0;
+    // Analysis overlays (see docs/app.md, "Seeing the physics").
+    bool momentum = false;              ///< V: momentum arrows, centre of mass, Σ m v
+    TrailMode trails = TrailMode::Off;  ///< L: path traces
+    bool plots = false;                 ///< K: energy, momentum and collision rate against time
+    bool speeds = false;                ///< D: speed histogram against Maxwell–Boltzmann
+};
+
+/// An arrow scale for `world` (seconds, see ViewOptions::arrowSeconds): the original's 1/3 s,
+/// shortened when that would make the root-mean-square arrow longer than a fifth of the box or
+/// three quarters of the mean spacing between particles (a dense gas would be hidden under its
+/// arrows).
+[[nodiscard]] double arrowSecondsFor(const World& world);
+
+/// The on-screen length of a particle's arrow from its centre, pixels: `seconds` × speed ×
+/// `zoom`. With a minimum of 2 pixels or more (`minExtraPixels`, see minArrowExtra), a particle
+/// that moves half a pixel or more over `seconds` gets an arrow reaching at least that far past
+/// its rim (`radiusPixels`); below 2 pixels a minimum would not read, and an arrow that ends
+/// within a pixel of the rim is not drawn. 0: no arrow.
+[[nodiscard]] inline double arrowPixels(double speed, double seconds, double zoom,
+                                        double radiusPixels, double minExtraPixels) {
+    const double len = seconds * speed * zoom;
+    if (!(len >= 0.5) || !std::isfinite(len)) return 0.0;
+    if (minExtraPixels >= 2.0) return std::max(len, radiusPixels + minExtraPixels);
+    return len > radiusPixels + 1.0 ? len : 0.0;
+}
+
+/// The minimum arrow beyond the rim for a world whose mean particle spacing is `spacingPixels`
+/// on screen: kMinArrowPixels, or half the spacing when that is less (a dense gas is not
+/// covered by minimum arrows).
+[[nodiscard]] double minArrowExtra(double spacingPixels);
+
+}  // namespace psb::app

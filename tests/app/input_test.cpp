@@ -1,0 +1,109 @@
+// The key map and the mouse: SDL events to commands, without a window.
+
+#include <gtest/gtest.h>
+
+#include "frame_view.hpp"
+#include "input.hpp"
+#include "sdl_context.hpp"
+
+namespace psb::app {
+namespace {
+
+SDL_KeyboardEvent keyEvent(SDL_Keycode sym, Uint16 mod = KMOD_NONE, Uint8 repeat = 0) {
+    SDL_KeyboardEvent k{};
+    k.type = SDL_KEYDOWN;
+    k.keysym.sym = sym;
+    k.keysym.mod = mod;
+    k.repeat = repeat;
+    return k;
+}
+
+template <class T>
+bool is(const std::vector<Command>& c) {
+    return c.size() == 1 && std::holds_alternative<T>(c.front());
+}
+
+TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
+    EXPECT_TRUE(is<cmd::ToggleLabels>(commandsForKey(keyEvent(SDLK_s), false)));
+    EXPECT_TRUE(is<cmd::Save>(commandsForKey(keyEvent(SDLK_s, KMOD_LCTRL), false)));
+    EXPECT_TRUE(is<cmd::NextMode>(commandsForKey(keyEvent(SDLK_t), false)));
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), false)));
+    EXPECT_TRUE(is<cmd::DeleteHeld>(commandsForKey(keyEvent(SDLK_DELETE), false)));
+    EXPECT_TRUE(is<cmd::SpawnRandom>(commandsForKey(keyEvent(SDLK_m), false)));
+    const auto e = commandsForKey(keyEvent(SDLK_e, KMOD_LSHIFT), false);
+    ASSERT_TRUE(is<cmd::ChangeRestitution>(e));
+    EXPECT_EQ(std::get<cmd::ChangeRestitution>(e.front()).direction, +1);
+    const auto preset = commandsForKey(keyEvent(SDLK_3), false);
+    ASSERT_TRUE(is<cmd::OpenPreset>(preset));
+    EXPECT_EQ(std::get<cmd::OpenPreset>(preset.front()).index, 2);
+}
+
+TEST(Input, OnlyPanStepAndMassKeysRepeat) {
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_SPACE, KMOD_NONE, 1), false).empty());
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_NONE, 1), false)));
+    EXPECT_TRUE(is<cmd::SingleStep>(commandsForKey(keyEvent(SDLK_n, KMOD_NONE, 1), false)));
+}
+
+TEST(Input, WhileEditingOnlyThePromptsKeysMeanAnything) {
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_g), true).empty());
+    EXPECT_TRUE(is<cmd::EditField>(commandsForKey(keyEvent(SDLK_TAB), true)));
+    EXPECT_TRUE(is<cmd::EditApply>(commandsForKey(keyEvent(SDLK_RETURN), true)));
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), true)));
+    EXPECT_TRUE(is<cmd::Screenshot>(commandsForKey(keyEvent(SDLK_F12), true)));
+}
+
+TEST(Input, MouseCoordinatesAreScaledToDrawablePixels) {
+    Input in;
+    SDL_Event e{};
+    e.type = SDL_MOUSEBUTTONDOWN;
+    e.button.button = SDL_BUTTON_LEFT;
+    e.button.x = 100;
+    e.button.y = 50;
+    e.button.timestamp = 2000;
+    const auto c = in.translate(e, false, 2.0, SDL_Point{1600, 1600});  // a high-DPI screen
+    ASSERT_TRUE(is<cmd::PointerDown>(c));
+    EXPECT_EQ(std::get<cmd::PointerDown>(c.front()).screen, Vec2(200, 100));
+    EXPECT_DOUBLE_EQ(std::get<cmd::PointerDown>(c.front()).time, 2.0);
+}
+
+TEST(Input, ARightDragPans) {
+    Input in;
+    SDL_Event e{};
+    e.type = SDL_MOUSEBUTTONDOWN;
+    e.button.button = SDL_BUTTON_RIGHT;
+    e.button.x = 10;
+    e.button.y = 10;
+    EXPECT_TRUE(in.translate(e, false, 1.0, SDL_Point{800, 800}).empty());
+    SDL_Event m{};
+    m.type = SDL_MOUSEMOTION;
+    m.motion.x = 30;
+    m.motion.y = 5;
+    const auto c = in.translate(m, false, 1.0, SDL_Point{800, 800});
+    ASSERT_EQ(c.size(), 2u);
+    ASSERT_TRUE(std::holds_alternative<cmd::Pan>(c.front()));
+    EXPECT_EQ(std::get<cmd::Pan>(c.front()).pixels, Vec2(20, -5));
+}
+
+TEST(Renderer, AnOpenGLSoftwareRasteriserIsRecognised) {
+    EXPECT_TRUE(isSoftwareRasteriser("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(isSoftwareRasteriser("softpipe"));
+    EXPECT_FALSE(isSoftwareRasteriser("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+    EXPECT_FALSE(isSoftwareRasteriser(""));
+}
+
+TEST(BoxMarker, ShownOnlyWhenTheBoxIsOffScreenAndPointsToIt) {
+    Camera c;
+    c.setViewport(800, 600);
+    c.fit(7.0, 7.0);
+    EXPECT_FALSE(boxMarker(c, 7.0, 7.0).has_value());
+    c.panPixels(Vec2(-5000, 0));  // the box far to the left
+    const auto m = boxMarker(c, 7.0, 7.0);
+    ASSERT_TRUE(m.has_value());
+    EXPECT_LT(m->direction.x(), -0.99);
+    EXPECT_GE(m->at.x(), 0.0);
+    EXPECT_LT(m->at.x(), 50.0);  // at the left edge
+    EXPECT_NE(m->label.find("F"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,330 @@
+// The session without a window: commands in, world, view and notices out. Each defect of the
+// issue that lives in the session has a test here that failed before its fix.
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <algorithm>
+#include <filesystem>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "../core/test_util.hpp"
+#include "assets.hpp"
+#include "panel_layout.hpp"
+#include "session.hpp"
+#include "temp_dir_test.hpp"
+
+namespace psb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SessionTest : public TempDirTest {
+  protected:
+    SessionTest() : TempDirTest("psb-session") {}
+
+    [[nodiscard]] SessionOptions options() const {
+        SessionOptions o;
+        o.saveTo = dir_ / "save.json";
+        o.seed = 3;
+        o.paused = true;
+        o.viewportWidth = 800;
+        o.viewportHeight = 800;
+        o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
+        return o;
+    }
+    [[nodiscard]] Session session() const {
+        return Session(makeWorld(defaultScene()), "default", options());
+    }
+    static bool said(const std::vector<Notice>& notices, const std::string& text) {
+        return std::any_of(notices.begin(), notices.end(),
+                           [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
+    }
+    /// A drag with the left button from world point `from` to `to`, 10 moves over 100 ms,
+    /// then the hand holds still for `hold` seconds before the release.
+    static void drag(Session& s, Vec2 from, Vec2 to, double t0, double hold = 0.0) {
+        const Camera& c = s.camera();
+        s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
+        for (int k = 1; k <= 10; ++k) {
+            s.apply(
+                cmd::PointerMove{c.worldToScreen(from + (to - from) * (k / 10.0)), t0 + 0.01 * k});
+        }
+        s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1 + hold});
+    }
+};
+
+TEST_F(SessionTest, TheDefaultSceneIsAtHumanScale) {
+    const Session s = session();
+    const World& w = s.world();
+    EXPECT_DOUBLE_EQ(w.def().width, 7.0);  // the original's 700 px at 1 px = 1 cm
+    EXPECT_DOUBLE_EQ(w.def().height, 7.0);
+    const ParticleArrays& p = w.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        EXPECT_GE(p.radius[i], 0.075);
+        EXPECT_LE(p.radius[i], 0.5);
+        EXPECT_GE(p.mass[i], 3.0);
+        EXPECT_LE(p.mass[i], 20.0);
+        EXPECT_LE(std::hypot(p.vx[i], p.vy[i]), 5.0);  // a few m/s
+    }
+    // New particles follow the scene: 10 kg at the median radius, tens of centimetres.
+    EXPECT_GT(s.spawn().radius(), 0.1);
+    EXPECT_LT(s.spawn().radius(), 0.5);
+}
+
+TEST_F(SessionTest, GravityIsEarthsInTheDefaultScene) {
+    Session s = session();
+    s.apply(cmd::ToggleGravity{});
+    EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 9.81));
+}
+
+TEST_F(SessionTest, CommandsAreTheOnlyWayInAndEachSaysWhatItDid) {
+    Session s = session();
+    (void)s.takeNotices();
+    s.apply(cmd::ToggleLabels{});
+    EXPECT_TRUE(s.view().labels);
+    s.apply(cmd::ToggleArrows{});
+    EXPECT_FALSE(s.view().arrows);
+    s.apply(cmd::ScaleTime{2.0});
+    EXPECT_DOUBLE_EQ(s.timeScale(), 2.0);
+    s.apply(cmd::ScaleTime{1e9});
+    EXPECT_DOUBLE_EQ(s.timeScale(), Session::kMaxTimeScale);
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(said(n, "Labels on"));
+    EXPECT_TRUE(said(n, "Arrows off"));
+    EXPECT_TRUE(said(n, "Time speed x8"));
+    EXPECT_TRUE(s.takeNotices().empty());  // taken once
+}
+
+TEST_F(SessionTest, PausedTheWorldStepsOnlyOnASingleStep) {
+    Session s = session();
+    s.update(1.0, 0.0);
+    EXPECT_EQ(s.world().time(), 0.0);
+    s.apply(cmd::SingleStep{});
+    s.update(0.0, 0.0);
+    EXPECT_DOUBLE_EQ(s.world().time(), s.world().solver().dt);
+}
+
+TEST_F(SessionTest, ModeCyclingAlwaysMovesOnAndSaysWhyAModeWasSkipped) {
+    Session s = session();
+    s.apply(cmd::ToggleGravity{});
+    std::vector<StepMode> seen;
+    for (int k = 0; k < 3; ++k) {
+        const StepMode before = s.world().solver().mode;
+        s.apply(cmd::NextMode{});
+        EXPECT_NE(s.world().solver().mode, before) << "press " << k;
+        seen.push_back(s.world().solver().mode);
+    }
+    // With a world that refuses exact mode under gravity, the message names the skip.
+    const auto n = s.takeNotices();
+    if (std::find(seen.begin(), seen.end(), StepMode::Exact) == seen.end()) {
+        EXPECT_TRUE(said(n, "exact skipped")) << "no reason given for the skipped mode";
+    }
+}
+
+TEST_F(SessionTest, EscClosesTheHelpFirstAndAsksBeforeLosingUnsavedChanges) {
+    Session s = session();
+    s.apply(cmd::ToggleHelp{});
+    s.apply(cmd::Back{});
+    EXPECT_FALSE(s.helpShown());
+    EXPECT_TRUE(s.running());
+    s.apply(cmd::SpawnRandom{});  // an unsaved change
+    ASSERT_TRUE(s.unsavedChanges());
+    s.apply(cmd::Back{});
+    EXPECT_TRUE(s.running());
+    EXPECT_TRUE(s.quitPending());
+    EXPECT_TRUE(said(s.takeNotices(), "Unsaved changes"));
+    s.apply(cmd::ToggleLabels{});  // any other command: stay
+    EXPECT_FALSE(s.quitPending());
+    s.apply(cmd::Back{});
+    s.apply(cmd::Back{});  // asked, answered
+    EXPECT_FALSE(s.running());
+}
+
+TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
+    Session s = session();
+    s.apply(cmd::Back{});
+    EXPECT_FALSE(s.running());
+    Session t = session();
+    t.apply(cmd::SpawnRandom{});
+    t.apply(cmd::Save{});
+    EXPECT_FALSE(t.unsavedChanges());
+    t.apply(cmd::Quit{});
+    EXPECT_FALSE(t.running());
+}
+
+TEST_F(SessionTest, SavingNeverOverwritesAnEarlierSaveAndNamesTheFullPath) {
+    Session s = session();
+    s.apply(cmd::Save{});
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Save{});
+    const auto n = s.takeNotices();
+    ASSERT_TRUE(fs::exists(dir_ / "save.json"));
+    ASSERT_TRUE(fs::exists(dir_ / "save-2.json"));
+    EXPECT_EQ(loadScene(dir_ / "save.json").particles.size(), 6u);  // the first is kept
+    EXPECT_EQ(loadScene(dir_ / "save-2.json").particles.size(), 7u);
+    EXPECT_TRUE(said(n, (dir_ / "save-2.json").string()));
+    EXPECT_TRUE(s.lastSave()->is_absolute());
+}
+
+TEST_F(SessionTest, ALaunchDraggedOutAndHeldStillHasTheDragsVelocityAsPreviewed) {
+    Session s = session();
+    const Vec2 from(1.0, 6.0), to(1.6, 5.4);  // empty space, 0.85 m up and right
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(from), 1.0});
+    s.apply(cmd::PointerMove{c.worldToScreen(to), 1.05});
+    const CappedVelocity preview = s.launchPreview();
+    s.apply(cmd::PointerUp{c.worldToScreen(to), 1.6});  // half a second still: at rest before
+    ASSERT_EQ(s.world().size(), 7u);
+    const Particle p = s.world().get(s.world().ids().back());
+    const Vec2 expected = (to - from) / s.view().arrowSeconds;
+    EXPECT_NEAR(p.velocity.x(), expected.x(), 0.02);
+    EXPECT_NEAR(p.velocity.y(), expected.y(), 0.02);
+    EXPECT_GT(p.velocity.norm(), 1.0);
+    EXPECT_EQ(p.velocity, preview.velocity);
+}
+
+TEST_F(SessionTest, ACappedLaunchIsShown) {
+    Session s = session();
+    s.apply(cmd::Zoom{Vec2(400, 400), 1.0 / 40.0});  // far out, so a drag spans many boxes
+    (void)s.takeNotices();
+    const Vec2 from(-30.0, 3.0), to(40.0, 3.0);
+    drag(s, from, to, 1.0);
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(said(n, "Speed capped at 14 m/s")) << (n.empty() ? "" : n.back().text);
+}
+
+TEST_F(SessionTest, TheHudCanShowTheTimeSpeedReached) {
+    Session s = session();
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::ScaleTime{8.0});
+    for (int k = 0; k < 60; ++k)
+        s.update(0.1, 0.0, 0.0);  // a budget of 0 ms: one step a frame
+    // One dt of 1/60 s per 0.1 s of real time: x0.17 reached of x8 asked.
+    EXPECT_NEAR(s.reachedTimeScale(), s.world().solver().dt / 0.1, 0.02);
+    EXPECT_LT(s.reachedTimeScale(), s.timeScale());
+}
+
+TEST_F(SessionTest, AFittedViewLeavesTheMessagesBandAndThePanelColumnFree) {
+    Session s = session();
+    const auto box = [&] { return s.camera().boxOnScreen(7.0, 7.0); };
+    const ViewInsets in = options().insets;
+    EXPECT_LE(box().topLeft.y() + box().size.y(), 800.0 - in.bottom);
+    EXPECT_GE(box().topLeft.y(), in.top);
+    s.apply(cmd::TogglePlots{});
+    EXPECT_LE(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);
+    s.apply(cmd::TogglePlots{});
+    EXPECT_GT(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);  // room back
+}
+
+TEST_F(SessionTest, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
+    // The layout the app draws (HUD and messages sized as the 14 px font makes them) against
+    // the box the fitted camera shows, with the plots, the histogram and the profile on.
+    Session s = session();
+    s.apply(cmd::TogglePlots{});
+    s.apply(cmd::ToggleSpeeds{});
+    s.apply(cmd::ToggleProfile{});
+    for (const auto& [w, h] : {std::pair{800, 600},
+                               {900, 800},
+                               {1024, 768},
+                               {1280, 720},
+                               {1366, 768},
+                               {1600, 900},
+                               {1920, 1080},
+                               {800, 1200}}) {
+        s.apply(cmd::Resize{w, h});
+        const auto b = s.camera().boxOnScreen(7.0, 7.0);
+        const SDL_Rect box{static_cast<int>(b.topLeft.x()), static_cast<int>(b.topLeft.y()),
+                           static_cast<int>(b.size.x()), static_cast<int>(b.size.y())};
+        LayoutRequest req;
+        req.width = w;
+        req.height = h;
+        req.hud = {560, 129};
+        req.profile = {260, 220};
+        req.messages = {400, 40};
+        req.plots = req.speeds = true;
+        const PanelLayout l = layoutPanels(req);
+        for (const SDL_Rect& panel : {l.plots, l.speeds, l.profile, l.messages}) {
+            EXPECT_FALSE(overlaps(panel, box))
+                << w << "x" << h << ": panel at " << panel.x << "," << panel.y << " " << panel.w
+                << "x" << panel.h << ", box " << box.x << "," << box.y << " " << box.w << "x"
+                << box.h;
+        }
+        EXPECT_GT(l.plots.w, 0) << w << "x" << h;
+        EXPECT_GT(box.w, w / 3) << w << "x" << h;  // the box still gets a good part
+    }
+}
+
+TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
+    Session s = session();
+    const double before = s.camera().zoom();
+    s.apply(cmd::Resize{1200, 1200});
+    EXPECT_GT(s.camera().zoom(), 1.4 * before);
+    const auto b = s.camera().boxOnScreen(7.0, 7.0);
+    EXPECT_NEAR(b.topLeft.x() + b.size.x() / 2.0, 600.0, 1.0);
+    // A view the user moved keeps its zoom.
+    s.apply(cmd::Pan{Vec2(30, 0)});
+    const double z = s.camera().zoom();
+    s.apply(cmd::Resize{900, 900});
+    EXPECT_DOUBLE_EQ(s.camera().zoom(), z);
+}
+
+TEST_F(SessionTest, MFindsRoomInTheGasPreset) {
+    Session s(makeWorld(loadScene(findAsset("scenes/04-gas-in-a-box.json"))), "gas", options());
+    const std::size_t n = s.world().size();
+    for (int k = 0; k < 10; ++k)
+        s.apply(cmd::SpawnRandom{});
+    EXPECT_GE(s.world().size() - n, 8u);
+    EXPECT_NEAR(maxOverlapBruteForce(s.world()), 0.0, 1e-12);
+}
+
+TEST_F(SessionTest, AParticleDraggedIntoAnotherWhilePausedShowsItsOverlap) {
+    for (const StepMode mode : {StepMode::Discrete, StepMode::Exact}) {
+        Session s = session();
+        while (s.world().solver().mode != mode)
+            s.apply(cmd::NextMode{});
+        s.update(0.0, 0.0);
+        ASSERT_EQ(s.accuracy().overlap(), 0.0);
+        // The yellow disc (5.2, 1.6), r 0.45, dragged onto the orange one (6.0, 3.3), r 0.375.
+        const Camera& c = s.camera();
+        s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
+        s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.8, 3.0)), 1.2});
+        s.update(0.0, 1.2);
+        const double truth = maxOverlapBruteForce(s.world());
+        EXPECT_GT(truth, 0.3);
+        EXPECT_NEAR(s.accuracy().overlap(), truth, 1e-12) << toString(mode);
+    }
+}
+
+TEST_F(SessionTest, TheEditPromptTakesTheKeyboard) {
+    Session s = session();
+    const Vec2 yellow(5.2, 1.6);
+    s.apply(cmd::PointerDown{s.camera().worldToScreen(yellow), 1.0});
+    s.apply(cmd::PointerUp{s.camera().worldToScreen(yellow), 1.05});
+    ASSERT_TRUE(s.selection().id().has_value());
+    s.apply(cmd::OpenEdit{});
+    ASSERT_TRUE(s.prompt().active());
+    s.apply(cmd::ToggleGravity{});  // a key that is not the prompt's: ignored
+    EXPECT_EQ(s.world().def().gravity, Vec2::Zero());
+    s.apply(cmd::Back{});  // closes the prompt, does not quit
+    EXPECT_FALSE(s.prompt().active());
+    EXPECT_TRUE(s.running());
+}
+
+TEST_F(SessionTest, ResetRestoresTheSceneAsLoaded) {
+    Session s = session();
+    const std::uint64_t loaded = test::stateHash(s.world());
+    const std::uint64_t generation = s.sceneGeneration();
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::ChangeRestitution{-1});
+    s.apply(cmd::Reset{});
+    EXPECT_EQ(test::stateHash(s.world()), loaded);
+    EXPECT_NE(s.sceneGeneration(), generation);
+    EXPECT_FALSE(s.unsavedChanges());
+}
+
+}  // namespace
+}  // namespace psb::app
