@@ -22,6 +22,13 @@ class World;
 /// Centre of mass, metres (the box centre for an empty world).
 [[nodiscard]] Vec2 centreOfMass(const World& world);
 
+/// Deepest overlap r_i + r_j − |x_j − x_i| between any two particles of the current state,
+/// metres; 0 when no two discs overlap. Uses the broadphase the discrete step would use (grid or
+/// quadtree, about one step's pair search), so it is cheap enough to ask every frame. Unlike
+/// StepCounters::maxOverlap, which records overlaps met by the step's collision detection, this
+/// sees a pair however it came to overlap (placed, dragged, resized).
+[[nodiscard]] double maxOverlap(const World& world);
+
 /// Deepest overlap between any two particles right now, metres (all pairs; O(n²), for tests
 /// and small worlds).
 [[nodiscard]] double maxOverlapBruteForce(const World& world);

@@ -5,6 +5,9 @@
 
 #include <particle_sandbox/world.hpp>
 
+#include "discrete_step.hpp"
+#include "step_context.hpp"
+
 namespace psb {
 namespace {
 
@@ -59,6 +62,20 @@ Vec2 centreOfMass(const World& world) {
     }
     if (!(m.value() > 0.0)) return {0.5 * world.def().width, 0.5 * world.def().height};
     return {mx.value() / m.value(), my.value() / m.value()};
+}
+
+double maxOverlap(const World& world) {
+    const ParticleArrays& p = world.particles();
+    StepContext ctx;
+    ctx.threads = world.threads();
+    ctx.broadPhase = BroadPhaseKind::Auto;  // the fast choice for these particles
+    stages::findPairs(p, ctx);
+    double deepest = 0.0;
+    for (const ContactPair& c : ctx.pairs) {
+        const double d = std::hypot(p.x[c.j] - p.x[c.i], p.y[c.j] - p.y[c.i]);
+        deepest = std::max(deepest, p.radius[c.i] + p.radius[c.j] - d);
+    }
+    return deepest;
 }
 
 double maxOverlapBruteForce(const World& world) {

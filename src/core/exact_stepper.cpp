@@ -210,6 +210,7 @@ void ExactStepper::recordPlacedOverlaps() {
     // are squeezed out into the gaps of everyone else until the pile jams and the collision
     // rate diverges.
     overlapContact_.clear();
+    placedOverlap_ = 0.0;
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     for (std::uint32_t i = 0; i < n; ++i) {
         const Body& a = bodies_[i];
@@ -224,6 +225,7 @@ void ExactStepper::recordPlacedOverlaps() {
                     const double d2 = rx * rx + ry * ry;
                     if (!(d2 < sigma * sigma)) continue;
                     overlapContact_[pairKey(order_[i], order_[q])] = std::sqrt(d2);
+                    placedOverlap_ = std::max(placedOverlap_, sigma - std::sqrt(d2));
                     bodies_[i].flags |= kPlacedOverlapping;
                     b.flags |= kPlacedOverlapping;
                 }
@@ -584,6 +586,9 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     if (stale_ || !matches(p, def)) {
         StageTimer t(profile.findPairs);
         rebuild(p, def);
+        // Pairs placed overlapping are part of the state: report them, not only the overlaps
+        // met at collisions (which rounding keeps at a few ulps).
+        counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
     }
     stats_ = {};
     for (Body& b : bodies_)

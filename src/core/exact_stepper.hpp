@@ -238,6 +238,7 @@ class ExactStepper {
     // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
     // storage indices (order_), with the contact distance they keep until they are found apart.
     std::unordered_map<std::uint64_t, double> overlapContact_;
+    double placedOverlap_ = 0.0;  // the deepest of those overlaps, metres
 
     // What the last step left in the world's arrays, to detect any change made between steps.
     ParticleArrays snapshot_;

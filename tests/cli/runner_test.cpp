@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sstream>
+#include <string>
 
 #include <nlohmann/json.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -41,6 +42,22 @@ TEST(Runner, OneParticleBouncingBetweenTwoWallsIsCountedExactly) {
     EXPECT_EQ(r.momentumInitial, Vec2(8.0, 0.0));
     EXPECT_EQ(r.momentumFinal, Vec2(8.0, 0.0));
     EXPECT_EQ(r.escaped, 0u);
+}
+
+TEST(Runner, MaxOverlapReportsAPairPlacedOverlappingInEveryMode) {
+    // Two discs placed 0.5 m deep, at rest: nothing collides, the overlap is in the state.
+    for (const char* mode : {"discrete", "substep", "exact"}) {
+        const RunReport r = run(std::string(R"({"version": 1, "allow_overlaps": true,
+            "world": {"width": 20, "height": 10},
+            "solver": {"dt": 0.5, "mode": ")") +
+                                    mode + R"("},
+            "particles": [{"x": 5, "y": 5, "mass": 1, "radius": 1},
+                          {"x": 6.5, "y": 5, "mass": 1, "radius": 1}]})",
+                                1.0);
+        EXPECT_EQ(r.collisions, 0u) << mode;
+        EXPECT_GE(r.maxOverlap, 0.5) << mode;
+        EXPECT_LE(r.maxOverlap, 0.5 + 1e-12) << mode;
+    }
 }
 
 TEST(Runner, HeadOnEqualMassesCollideOnceAtTheOverlapDetectionSaw) {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <random>
+
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -38,6 +40,38 @@ TEST(Diagnostics, MaxOverlapBruteForce) {
     w.add({.position = {13.0, 10.0}, .radius = 2.0});
     w.add({.position = {100.0, 10.0}, .radius = 2.0});
     EXPECT_DOUBLE_EQ(maxOverlapBruteForce(w), 1.0);
+}
+
+TEST(Diagnostics, MaxOverlapSeesAPairPlacedOverlapping) {
+    for (const StepMode mode : {StepMode::Discrete, StepMode::Exact}) {
+        World w(WorldDef{}, {.mode = mode});
+        EXPECT_EQ(maxOverlap(w), 0.0);
+        w.add({.position = {10.0, 10.0}, .radius = 2.0});
+        w.add({.position = {100.0, 10.0}, .radius = 2.0});
+        EXPECT_EQ(maxOverlap(w), 0.0);  // apart
+        w.add({.position = {13.0, 10.0}, .radius = 2.0});
+        EXPECT_DOUBLE_EQ(maxOverlap(w), 1.0);
+        const ParticleId big = w.add({.position = {100.0, 40.0}, .radius = 28.0});
+        EXPECT_DOUBLE_EQ(maxOverlap(w), 1.0);  // the big one touches (30 m = 28 + 2) only
+        w.setRadius(big, 31.5);
+        EXPECT_DOUBLE_EQ(maxOverlap(w), 3.5);  // an edited radius
+    }
+}
+
+TEST(Diagnostics, MaxOverlapAgreesWithBruteForceOnMixedSizes) {
+    // 3000 discs, radii from 0.5 to 20 m (the grid sets the large ones apart; with many of them
+    // the quadtree is used): both answers must be the same number.
+    for (const int large : {3, 400}) {
+        World w(WorldDef{.width = 800.0, .height = 800.0});
+        std::mt19937 rng(7u + static_cast<unsigned>(large));
+        std::uniform_real_distribution<double> pos(0.0, 800.0), small(0.5, 1.5), big(5.0, 20.0);
+        for (int k = 0; k < 3000; ++k) {
+            w.add({.position = {pos(rng), pos(rng)}, .radius = k < large ? big(rng) : small(rng)});
+        }
+        const double brute = maxOverlapBruteForce(w);
+        EXPECT_GT(brute, 1.0);
+        EXPECT_EQ(maxOverlap(w), brute) << large << " large discs";
+    }
 }
 
 }  // namespace

@@ -333,6 +333,8 @@ TEST(ExactMode, OverlappingSeparatingPairIsLeftAlone) {
     const ParticleId b = w.add({.position = {1.5, 0.0}, .velocity = {1.0, 0.0}});
     w.step(1.0);
     EXPECT_EQ(w.counters().collisions, 0u);
+    // Never collided, yet placed 0.5 m deep: the counters report the state's overlap.
+    EXPECT_EQ(w.counters().maxOverlap, 0.5);
     EXPECT_EQ(w.get(a).velocity.x(), -1.0);
     EXPECT_EQ(w.get(b).velocity.x(), 1.0);
 }
