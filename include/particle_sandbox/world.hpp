@@ -28,6 +28,11 @@ class ExactStepper;
 /// Every public function validates its arguments and throws psb::InvalidArgument, leaving the
 /// world unchanged, when one is out of range. Particles are reached through stable ids; the
 /// const ParticleArrays view is for fast read-only iteration (rendering, diagnostics).
+///
+/// In Exact mode a step leaves the particles' new state inside the event-driven stepper and
+/// the first read after it (particles(), get(), pick(), a copy, any mutation) writes it into
+/// the arrays, once; steps nobody reads in between cost no work per particle. Reading is
+/// therefore not safe from several threads at once right after an exact step.
 class World {
   public:
     explicit World(const WorldDef& def = {}, const SolverSettings& solver = {});
@@ -85,7 +90,10 @@ class World {
     /// `point`. Until a world reaches 4096 particles storage order is insertion order.
     [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
 
-    [[nodiscard]] const ParticleArrays& particles() const { return p_; }
+    [[nodiscard]] const ParticleArrays& particles() const {
+        settle();
+        return p_;
+    }
 
     // --- time ------------------------------------------------------------------------------
     /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
@@ -115,12 +123,17 @@ class World {
 
   private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
+    /// Writes the state an exact step left in its stepper into p_, if it owes one.
+    void settle() const;
+    /// Called by every function that changes what a step reads (particles, box, laws): settles
+    /// first, then tells the exact stepper to rebuild at its next step.
+    void changed();
     void stepDiscrete(double dt);
     void stepExact(double dt);
 
     WorldDef def_;
     SolverSettings solver_;
-    ParticleArrays p_;
+    mutable ParticleArrays p_;  ///< mutable: settle() fills in what an exact step left owed
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;
     std::unique_ptr<exact::ExactStepper> exact_;  // event state of the Exact mode, made on use

@@ -21,21 +21,7 @@ constexpr double kCellSpacings = 1.0;
 // Events per particle between two re-sorts of the particles into cell order.
 constexpr std::uint64_t kResortEvery = 8;
 
-template <typename T>
-bool sameArray(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
-}
-
 }  // namespace
-
-bool ExactStepper::matches(const ParticleArrays& p, const WorldDef& def) const {
-    return def.width == def_.width && def.height == def_.height && def.walls == def_.walls &&
-           def.restitution == def_.restitution && def.friction == def_.friction &&
-           sameArray(p.x, snapshot_.x) && sameArray(p.y, snapshot_.y) &&
-           sameArray(p.vx, snapshot_.vx) && sameArray(p.vy, snapshot_.vy) &&
-           sameArray(p.invMass, snapshot_.invMass) && sameArray(p.mass, snapshot_.mass) &&
-           sameArray(p.radius, snapshot_.radius) && sameArray(p.id, snapshot_.id);
-}
 
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     def_ = def;
@@ -46,6 +32,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     order_.resize(n);
 
     ids_ = p.id;
+    heldHit_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -131,6 +118,8 @@ void ExactStepper::sortByCell(bool midRun) {
         for (Cold& c : cold_) {
             if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
         }
+        for (std::uint32_t& i : heldHit_)
+            i = to[i];
         queue_.reset(2 * n, queue_.bucketWidth());
         for (std::uint32_t k = 0; k < 2 * n; ++k)
             queue_.update(k, times[k]);
@@ -420,14 +409,19 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         ++counters.collisions;
         ++a.count;
         ++b.count;
-        if ((b.flags & kHeld) && ++cold_[i].heldHits >= kJamLimit) a.flags |= kJammed;
-        if ((a.flags & kHeld) && ++cold_[j].heldHits >= kJamLimit) b.flags |= kJammed;
+        if (b.flags & kHeld) countHeldHit(i);
+        if (a.flags & kHeld) countHeldHit(j);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
     }
     predictCollision(i, ev.time);
     predictCollision(j, ev.time);
     predictCell(i, ev.time);
     predictCell(j, ev.time);
+}
+
+void ExactStepper::countHeldHit(std::uint32_t i) {
+    if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
+    if (cold_[i].heldHits >= kJamLimit) bodies_[i].flags |= kJammed;
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -559,31 +553,35 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
     }
 }
 
-void ExactStepper::sync(ParticleArrays& p, double t) {
+void ExactStepper::sync(ParticleArrays& p) {
+    // One pass in the stepper's order; every particle's state at the end of the last step.
     const std::size_t n = bodies_.size();
+    const double t = clock_;
+    const Body* bodies = bodies_.data();
+    const std::uint32_t* order = order_.data();
+    double* x = p.x.data();
+    double* y = p.y.data();
+    double* vx = p.vx.data();
+    double* vy = p.vy.data();
     for (std::size_t k = 0; k < n; ++k) {
-        const Body& b = bodies_[k];
-        const std::uint32_t i = order_[k];
+        const Body& b = bodies[k];
+        const std::uint32_t i = order[k];
         const double h = t - b.t;
-        p.x[i] = b.x + b.vx * h;
-        p.y[i] = b.y + b.vy * h;
-        p.vx[i] = b.vx;
-        p.vy[i] = b.vy;
+        x[i] = b.x + b.vx * h;
+        y[i] = b.y + b.vy * h;
+        vx[i] = b.vx;
+        vy[i] = b.vy;
     }
-    snapshot_.x = p.x;
-    snapshot_.y = p.y;
-    snapshot_.vx = p.vx;
-    snapshot_.vy = p.vy;
-    snapshot_.invMass = p.invMass;
-    snapshot_.mass = p.mass;
-    snapshot_.radius = p.radius;
-    snapshot_.id = p.id;
+    syncOwed_ = false;
 }
 
 void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
                         StepCounters& counters) {
     StageTimer total(profile.total);
-    if (stale_ || !matches(p, def)) {
+    if (stale_) {
+        // The world's arrays must hold the current state before they are read back in (after
+        // an exhausted budget the stepper invalidates itself with a sync still owed).
+        if (syncOwed_) sync(p);
         StageTimer t(profile.findPairs);
         rebuild(p, def);
         // Pairs placed overlapping are part of the state: report them, not only the overlaps
@@ -591,10 +589,12 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
         counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
     }
     stats_ = {};
-    for (Body& b : bodies_)
-        b.flags &= ~kJammed;
-    for (Cold& c : cold_)
-        c.heldHits = 0;
+    // The jam guard counts per step: clear only the particles it counted in the last one.
+    for (const std::uint32_t i : heldHit_) {
+        bodies_[i].flags &= ~kJammed;
+        cold_[i].heldHits = 0;
+    }
+    heldHit_.clear();
     maxOverlap_ = counters.maxOverlap;
     const double tEnd = clock_ + dt;
     const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
@@ -603,11 +603,10 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
         runEvents(tEnd, counters, budget);
     }
     clock_ = tEnd;
+    syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
     counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale;
     ++counters.steps;
-    StageTimer t(profile.move);
-    sync(p, tEnd);
 }
 
 }  // namespace psb::exact

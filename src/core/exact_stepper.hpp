@@ -4,7 +4,7 @@
 //
 //   World::step(dt)
 //     │
-//     ├─ state stale? (first step, or anything in the world changed since the last step:
+//     ├─ state stale? (first step, or World said something changed since the last step:
 //     │   add/remove, a setter, box/walls/restitution/friction, a step in another mode)
 //     │        ──yes──► rebuild: copy particles, clamp into the box, sort them into cell
 //     │                 order, predict every particle's two events, fill the queue
@@ -26,13 +26,15 @@
 //     │     │               │ into its 3 × 3 neighbourhood for an earlier collision           │
 //     │     └───────────────┴─────────────────────────────────────────────────────────────────┘
 //     │
-//     └─ sync: write every particle's state at t + dt into the world's arrays, and keep a
-//        snapshot of them to detect any change before the next step
+//     └─ nothing else: the world's arrays are written only when someone reads them
+//        (World::particles(), get(), a mutation, ...): sync() writes every particle's
+//        state at the end of the last step in one pass. A run of frames that nobody looks
+//        at costs its events and nothing per particle.
 //
 // Lazy advance (Lubachevsky 1991). Each particle keeps the position it had at its last
 // velocity change; an event touches only its one or two particles, so an event costs a search
 // of the cells around a particle and an O(1)–O(log N) queue update, not O(N). Positions for
-// the outside world are computed at the end of the step and never fed back, so how dt is
+// the outside world are computed when it reads them (sync) and never fed back, so how dt is
 // chopped does not change the trajectory (only, in the last bits, the time t + dt itself).
 //
 // Two scheduled events per particle (after Smallenburg 2022). A particle's collision key holds
@@ -142,13 +144,21 @@ struct CollisionRecord {
 
 class ExactStepper {
   public:
-    /// Advances `p` by dt seconds: on return every particle is at its exact state at t + dt.
-    /// Rebuilds first if `p` or `def` differ from what the last step left. Updates the
-    /// counters (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events).
+    /// Advances the event state by dt seconds. Rebuilds it from `p` and `def` first if
+    /// invalidate() was called since the last step (or there was none). Does not write `p`:
+    /// the state at the end of the step is owed to it until sync(). Updates the counters
+    /// (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events).
     void step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
               StepCounters& counters);
 
-    /// Forces a rebuild at the next step.
+    /// Whether `p` has not yet received the state of the last step.
+    [[nodiscard]] bool owesSync() const { return syncOwed_; }
+    /// Writes every particle's position and velocity at the end of the last step into `p`
+    /// (the arrays the last rebuild read): one pass over the particles.
+    void sync(ParticleArrays& p);
+
+    /// Forces a rebuild at the next step: the world calls it whenever it changes anything the
+    /// stepper read (particles, box, walls, material laws), after taking the owed sync.
     void invalidate() { stale_ = true; }
 
     /// Appends every resolved collision to `log` (nullptr to stop). Indices are storage
@@ -197,7 +207,6 @@ class ExactStepper {
         double w;                // inverse mass, 0 = held
     };
 
-    [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void setUpGrid();
     void sortByCell(bool midRun);
@@ -217,7 +226,7 @@ class ExactStepper {
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
-    void sync(ParticleArrays& p, double t);
+    void countHeldHit(std::uint32_t i);
 
     WorldDef def_;
     bool stale_ = true;
@@ -239,9 +248,9 @@ class ExactStepper {
     // storage indices (order_), with the contact distance they keep until they are found apart.
     std::unordered_map<std::uint64_t, double> overlapContact_;
     double placedOverlap_ = 0.0;  // the deepest of those overlaps, metres
-
-    // What the last step left in the world's arrays, to detect any change made between steps.
-    ParticleArrays snapshot_;
+    bool syncOwed_ = false;       // the world's arrays do not hold the state at clock_ yet
+    // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
+    std::vector<std::uint32_t> heldHit_;
 };
 
 }  // namespace psb::exact

@@ -96,7 +96,7 @@ World& World::operator=(World&&) noexcept = default;
 World::World(const World& other)
     : def_(other.def_),
       solver_(other.solver_),
-      p_(other.p_),
+      p_(other.particles()),  // with what an exact step still owes it
       ids_(other.ids_),
       ctx_(std::make_unique<StepContext>()),  // scratch is not state
       threads_(other.threads_),
@@ -116,21 +116,25 @@ void World::setBox(double width, double height) {
     d.width = width;
     d.height = height;
     validateDef(d, "World::setBox");
+    changed();
     def_ = d;
 }
 
 void World::setWalls(bool enabled) {
+    changed();
     def_.walls = enabled;
 }
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
     validateModeWithGravity(solver_, gravity, "World::setGravity");
+    changed();
     def_.gravity = gravity;
 }
 
 void World::setRestitution(double e) {
     requireInRange(e, 0.0, 1.0, "World::setRestitution", "restitution");
+    changed();
     def_.restitution = e;
 }
 
@@ -138,12 +142,14 @@ void World::setFriction(double mu) {
     WorldDef d = def_;
     d.friction = mu;
     validateDef(d, "World::setFriction");
+    changed();
     def_.friction = mu;
 }
 
 void World::setSolver(const SolverSettings& solver) {
     validateSolver(solver, "World::setSolver");
     validateModeWithGravity(solver, def_.gravity, "World::setSolver");
+    changed();
     solver_ = solver;
 }
 
@@ -151,6 +157,7 @@ ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
     if (p_.size() >= UINT32_MAX - 1)
         detail::fail("World::add", "particle count", "is at its limit");
+    changed();
     const auto index = static_cast<std::uint32_t>(p_.size());
     const ParticleId id = ids_.allocate(index);
     p_.x.push_back(d.position.x());
@@ -168,6 +175,7 @@ ParticleId World::add(const ParticleDef& d) {
 bool World::remove(ParticleId id) {
     const auto found = ids_.find(id);
     if (!found) return false;
+    changed();
     const std::size_t i = *found;
     const std::size_t last = p_.size() - 1;
     if (i != last) ids_.relocate(p_.id[last], static_cast<std::uint32_t>(i));
@@ -185,6 +193,7 @@ bool World::remove(ParticleId id) {
 }
 
 void World::clear() {
+    changed();
     ids_.clear();
     p_ = ParticleArrays{};
     stepsUntilReorder_ = 0;
@@ -200,6 +209,7 @@ void World::setThreads(int n) {
 
 BroadPhaseKind World::broadPhaseInUse() const {
     if (broadPhaseUsed_) return *broadPhaseUsed_;
+    settle();
     std::vector<ParticleStats> scratch;
     return chooseBroadPhase(solver_.broadphase, p_, measureParticles(p_, 1, scratch));
 }
@@ -255,6 +265,7 @@ std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
 
 Particle World::get(ParticleId id) const {
     const std::size_t i = indexOrThrow(id, "World::get");
+    settle();
     return Particle{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
                     p_.mass[i], p_.radius[i],           p_.color[i]};
 }
@@ -262,6 +273,7 @@ Particle World::get(ParticleId id) const {
 void World::setPosition(ParticleId id, const Vec2& position) {
     requireFinite(position, "World::setPosition", "position");
     const std::size_t i = indexOrThrow(id, "World::setPosition");
+    changed();
     p_.x[i] = position.x();
     p_.y[i] = position.y();
 }
@@ -269,6 +281,7 @@ void World::setPosition(ParticleId id, const Vec2& position) {
 void World::setVelocity(ParticleId id, const Vec2& velocity) {
     requireFinite(velocity, "World::setVelocity", "velocity");
     const std::size_t i = indexOrThrow(id, "World::setVelocity");
+    changed();
     p_.vx[i] = velocity.x();
     p_.vy[i] = velocity.y();
 }
@@ -276,6 +289,7 @@ void World::setVelocity(ParticleId id, const Vec2& velocity) {
 void World::setMass(ParticleId id, double mass) {
     detail::requireMass(mass, "World::setMass", "mass");
     const std::size_t i = indexOrThrow(id, "World::setMass");
+    changed();
     const bool kinematic = p_.invMass[i] == 0.0;
     p_.mass[i] = mass;
     p_.invMass[i] = kinematic ? 0.0 : 1.0 / mass;
@@ -283,7 +297,9 @@ void World::setMass(ParticleId id, double mass) {
 
 void World::setRadius(ParticleId id, double radius) {
     requirePositive(radius, "World::setRadius", "radius");
-    p_.radius[indexOrThrow(id, "World::setRadius")] = radius;
+    const std::size_t i = indexOrThrow(id, "World::setRadius");
+    changed();
+    p_.radius[i] = radius;
 }
 
 void World::setColor(ParticleId id, Color color) {
@@ -292,6 +308,7 @@ void World::setColor(ParticleId id, Color color) {
 
 void World::setKinematic(ParticleId id, bool kinematic) {
     const std::size_t i = indexOrThrow(id, "World::setKinematic");
+    changed();
     p_.invMass[i] = kinematic ? 0.0 : 1.0 / p_.mass[i];
 }
 
@@ -301,6 +318,7 @@ bool World::isKinematic(ParticleId id) const {
 
 std::optional<ParticleId> World::pick(const Vec2& point) const {
     if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return std::nullopt;
+    settle();
     // Storage order is drawing order, so the topmost particle is the last one that contains it.
     for (std::size_t i = p_.size(); i-- > 0;) {
         const double dx = point.x() - p_.x[i], dy = point.y() - p_.y[i];
@@ -317,6 +335,9 @@ void World::step(double dt) {
     ctx_->broadPhase = solver_.broadphase;
     // The exact mode keeps its own copy in cell order; reordering the world's storage would only
     // make it rebuild.
+    // A step in another mode works on the arrays: they must hold the state, and the exact
+    // stepper must rebuild from what that step leaves.
+    if (solver_.mode != StepMode::Exact) changed();
     if (p_.size() >= kReorderMinParticles && solver_.mode != StepMode::Exact) {
         if (stepsUntilReorder_ == 0) {
             StageTimer t(profile_.reorder);
@@ -344,14 +365,22 @@ void World::step(double dt) {
     time_ += dt;
 }
 
+void World::settle() const {
+    if (exact_ && exact_->owesSync()) exact_->sync(p_);
+}
+
+void World::changed() {
+    settle();
+    if (exact_) exact_->invalidate();
+}
+
 void World::stepDiscrete(double dt) {
     stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
 }
 
 void World::stepExact(double dt) {
-    // The stepper compares the world with what its last step left and rebuilds its event state
-    // on any difference, so every mutator (and a step in another mode) is picked up without
-    // each one having to remember to invalidate it.
+    // Every function that changes what the stepper read calls changed(), which makes it
+    // rebuild at this step; otherwise it carries on from its own state.
     if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
     exact_->step(p_, def_, dt, profile_, counters_);
 }
