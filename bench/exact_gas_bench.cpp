@@ -23,6 +23,8 @@
 #include <numbers>
 #include <random>
 
+#include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/scene_builders.hpp>
 #include <particle_sandbox/world.hpp>
 
 namespace {
@@ -104,6 +106,37 @@ void BM_ExactLongStep(benchmark::State& state) {
     }
     report(state, w);
 }
+
+// Mixed sizes, per collision: 4000 discs of radius 1 m at packing 0.2, alone, with one disc of
+// radius R (same areal density, so R² kg; state.range(0) = R, 0 for none), or with radii
+// log-uniform from 1 to 10 m (range(0) = -10). One step of 20 s per iteration: the cost of the
+// neighbour search per collision, apart from the cost of frames (measured above).
+void BM_ExactMixedSizes(benchmark::State& state) {
+    const auto r = static_cast<double>(state.range(0));
+    psb::Scene scene;
+    if (r > 0.0) {
+        scene = psb::scenes::brownian(4000, r, r * r, 0.2, 3);
+    } else {
+        scene = psb::scenes::gas(
+            {.count = 4000, .radius = 1.0, .maxRadius = -r, .packing = 0.2, .seed = 3});
+    }
+    scene.solver.mode = psb::StepMode::Exact;
+    psb::World w = psb::makeWorld(scene);
+    w.step(5.0);  // build + relax: not timed
+    w.resetCounters();
+    for (auto _ : state) {
+        w.step(2.0 * kSimulated);
+    }
+    report(state, w);
+}
+
+BENCHMARK(BM_ExactMixedSizes)
+    ->Arg(0)
+    ->Arg(10)
+    ->Arg(30)
+    ->Arg(-10)
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 
 BENCHMARK(BM_ExactFramesRunner)
     ->Arg(10000)

@@ -95,12 +95,14 @@ std::vector<Record> bruteForce(ParticleArrays p, const WorldDef& def, double tEn
     }
 }
 
-ParticleArrays smallSystem(std::uint32_t seed, int n, double side) {
+/// n discs at random in a side × side box, radii log-uniform in [rMin, rMax].
+ParticleArrays smallSystem(std::uint32_t seed, int n, double side, double rMin = 0.4,
+                           double rMax = 1.2) {
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     ParticleArrays p;
     while (static_cast<int>(p.size()) < n) {
-        const double r = 0.4 + 0.8 * u(rng);
+        const double r = rMin * std::pow(rMax / rMin, u(rng));
         const double x = r + (side - 2 * r) * u(rng), y = r + (side - 2 * r) * u(rng);
         bool free = true;
         for (std::size_t k = 0; k < p.size(); ++k) {
@@ -126,12 +128,13 @@ ParticleArrays smallSystem(std::uint32_t seed, int n, double side) {
 // collision, so each system is compared over its first events only, across many systems.
 constexpr std::size_t kCompared = 16;
 
-void expectSameSequence(std::uint32_t seed, double e) {
+void expectSameSequence(std::uint32_t seed, double e, int n = 6, double side = 12.0,
+                        double rMin = 0.4, double rMax = 1.2) {
     WorldDef def;
-    def.width = 12.0;
-    def.height = 12.0;
+    def.width = side;
+    def.height = side;
     def.restitution = e;
-    ParticleArrays p = smallSystem(seed, 6, def.width);
+    ParticleArrays p = smallSystem(seed, n, def.width, rMin, rMax);
     const double tEnd = 15.0;
     const std::vector<Record> want = bruteForce(p, def, tEnd);
 
@@ -164,6 +167,13 @@ TEST(ExactReference, ElasticCollisionSequenceMatchesBruteForceReprediction) {
 TEST(ExactReference, InelasticCollisionSequenceMatchesBruteForceReprediction) {
     for (std::uint32_t seed = 101; seed <= 140; ++seed)
         expectSameSequence(seed, 0.7);
+}
+
+TEST(ExactReference, MixedSizesCollisionSequenceMatchesBruteForceReprediction) {
+    // Radii over a factor of 20 (five size levels, fine cells sized by the smallest), in a box
+    // wide enough for many fine cells: the levels' searches must find every collision.
+    for (std::uint32_t seed = 201; seed <= 230; ++seed)
+        expectSameSequence(seed, 1.0, 40, 80.0, 0.4, 8.0);
 }
 
 }  // namespace

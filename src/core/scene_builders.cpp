@@ -1,0 +1,245 @@
+#include <particle_sandbox/scene_builders.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <unordered_map>
+#include <vector>
+
+#include "validate.hpp"
+
+namespace psb::scenes {
+namespace {
+
+/// SplitMix64: fully specified, so a seed gives the same scene on every platform (up to the
+/// libm functions of the Gaussian).
+class Random {
+  public:
+    explicit Random(std::uint64_t seed) : state_(seed) {}
+    std::uint64_t next() {
+        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return z ^ (z >> 31);
+    }
+    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    double normal() {
+        const double u1 = 1.0 - uniform(), u2 = uniform();
+        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
+    }
+
+  private:
+    std::uint64_t state_;
+};
+
+/// Finds overlaps among discs placed so far: a hash of square cells as wide as the largest
+/// diameter, so a new disc is tested against the 3 × 3 cells around it.
+class Placer {
+  public:
+    explicit Placer(double cell) : cell_(cell) {}
+    [[nodiscard]] bool fits(const std::vector<ParticleDef>& placed, Vec2 c, double r) const {
+        const std::int64_t cx = coord(c.x()), cy = coord(c.y());
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+                const auto it = cells_.find(key(cx + dx, cy + dy));
+                if (it == cells_.end()) continue;
+                for (const std::size_t k : it->second) {
+                    const double s = placed[k].radius + r;
+                    if ((placed[k].position - c).squaredNorm() < s * s) return false;
+                }
+            }
+        }
+        return true;
+    }
+    void add(std::size_t k, Vec2 c) { cells_[key(coord(c.x()), coord(c.y()))].push_back(k); }
+
+  private:
+    [[nodiscard]] std::int64_t coord(double v) const {
+        return static_cast<std::int64_t>(std::floor(v / cell_));
+    }
+    static std::uint64_t key(std::int64_t x, std::int64_t y) {
+        return (static_cast<std::uint64_t>(x) << 32) ^ static_cast<std::uint64_t>(y & 0xffffffff);
+    }
+    double cell_;
+    std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells_;
+};
+
+Scene boxScene(double width, double height) {
+    Scene s;
+    s.world.width = width;
+    s.world.height = height;
+    s.world.walls = true;
+    s.world.restitution = 1.0;
+    return s;
+}
+
+Vec2 thermalVelocity(Random& rng, double temperature, double mass) {
+    const double sigma = std::sqrt(temperature / mass);
+    const double vx = sigma * rng.normal();
+    return {vx, sigma * rng.normal()};
+}
+
+}  // namespace
+
+Scene gas(const GasSpec& spec) {
+    const char* where = "scenes::gas";
+    if (spec.count == 0) detail::fail(where, "count", "must be at least 1");
+    detail::requirePositive(spec.radius, where, "radius");
+    detail::requireMass(spec.mass, where, "mass");
+    detail::requireFinite(spec.temperature, where, "temperature");
+    if (!(spec.temperature >= 0.0)) detail::fail(where, "temperature", "must be >= 0");
+    detail::requireInRange(spec.packing, 1e-12, 0.5, where, "packing");
+    const bool mixed = spec.maxRadius > spec.radius;
+    if (mixed) detail::requireFinite(spec.maxRadius, where, "maxRadius");
+
+    Random rng(spec.seed);
+    // Radii first, so that the box is sized for the area they cover.
+    std::vector<double> radii(spec.count, spec.radius);
+    if (mixed) {
+        const double ratio = spec.maxRadius / spec.radius;
+        for (double& r : radii)
+            r = spec.radius * std::pow(ratio, rng.uniform());
+        std::sort(radii.begin(), radii.end(), std::greater<>());  // largest placed first
+    }
+    double area = 0.0;
+    for (const double r : radii)
+        area += std::numbers::pi * r * r;
+    const double side = std::sqrt(area / spec.packing);
+    Scene s = boxScene(side, side);
+    s.name = "Gas";
+    s.particles.reserve(spec.count);
+    const auto disc = [&](Vec2 c, double r) {
+        ParticleDef d;
+        d.position = c;
+        d.radius = r;
+        d.mass = spec.mass * (r / spec.radius) * (r / spec.radius);
+        d.velocity = thermalVelocity(rng, spec.temperature, d.mass);
+        d.color = spec.color;
+        return d;
+    };
+    if (!mixed) {
+        // A jittered square lattice: no trial and error, never an overlap.
+        const auto perRow =
+            static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(spec.count))));
+        const double pitch = side / static_cast<double>(perRow);
+        const double slack = std::max(0.0, pitch - 2.0 * spec.radius * (1.0 + 1e-9));
+        for (std::size_t k = 0; k < spec.count; ++k) {
+            const double jx = (rng.uniform() - 0.5) * slack, jy = (rng.uniform() - 0.5) * slack;
+            const Vec2 c{(static_cast<double>(k % perRow) + 0.5) * pitch + jx,
+                         (static_cast<double>(k / perRow) + 0.5) * pitch + jy};
+            s.particles.push_back(disc(c, spec.radius));
+        }
+        return s;
+    }
+    Placer placer(2.0 * radii.front());
+    for (const double r : radii) {
+        bool placed = false;
+        for (int attempt = 0; attempt < 100000 && !placed; ++attempt) {
+            const Vec2 c{r + (side - 2.0 * r) * rng.uniform(),
+                         r + (side - 2.0 * r) * rng.uniform()};
+            if (!placer.fits(s.particles, c, r)) continue;
+            placer.add(s.particles.size(), c);
+            s.particles.push_back(disc(c, r));
+            placed = true;
+        }
+        if (!placed) detail::fail(where, "packing", "is too dense to place the discs at random");
+    }
+    return s;
+}
+
+Scene brownian(std::size_t count, double bigRadius, double bigMass, double packing,
+               std::uint64_t seed) {
+    const char* where = "scenes::brownian";
+    if (count == 0) detail::fail(where, "count", "must be at least 1");
+    detail::requirePositive(bigRadius, where, "bigRadius");
+    detail::requireMass(bigMass, where, "bigMass");
+    detail::requireInRange(packing, 1e-12, 0.5, where, "packing");
+    // The light discs cover `packing` of the area the heavy one leaves them.
+    const double r = 1.0, bigArea = std::numbers::pi * bigRadius * bigRadius;
+    const double side =
+        std::sqrt(static_cast<double>(count) * std::numbers::pi * r * r / packing + bigArea);
+    Scene s = boxScene(side, side);
+    s.name = "Brownian motion";
+    s.description =
+        "One heavy disc in a gas of light ones at the same temperature: pushed at random by their "
+        "collisions it wanders (Brownian motion), and in the long run its mean kinetic energy "
+        "equals a light disc's (equipartition).";
+    ParticleDef big;
+    big.position = {0.5 * side, 0.5 * side};
+    big.radius = bigRadius;
+    big.mass = bigMass;
+    big.color = {230, 120, 60};
+    // A jittered square lattice with the sites under the heavy disc left out, made finer until
+    // enough sites remain.
+    const double free = 1.0 - bigArea / (side * side);
+    for (auto perRow =
+             static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) / free)));
+         ; ++perRow) {
+        const double pitch = side / static_cast<double>(perRow);
+        if (pitch <= 2.0 * r) detail::fail(where, "packing", "is too dense for the lattice");
+        const double slack = pitch - 2.0 * r * (1.0 + 1e-9);
+        Random rng(seed);
+        std::vector<ParticleDef> out{big};
+        for (std::size_t k = 0; k < perRow * perRow && out.size() <= count; ++k) {
+            const double jx = (rng.uniform() - 0.5) * slack, jy = (rng.uniform() - 0.5) * slack;
+            ParticleDef d;
+            d.position = {(static_cast<double>(k % perRow) + 0.5) * pitch + jx,
+                          (static_cast<double>(k / perRow) + 0.5) * pitch + jy};
+            d.velocity = thermalVelocity(rng, 1.0, 1.0);
+            d.radius = r;
+            d.color = {150, 170, 190};
+            const double reach = (bigRadius + r) * (1.0 + 1e-9);
+            if ((d.position - big.position).squaredNorm() >= reach * reach) out.push_back(d);
+        }
+        if (out.size() == count + 1) {
+            s.particles = std::move(out);
+            return s;
+        }
+    }
+}
+
+Scene hexagonalLattice(int cols, int rows, double radius, double fraction, std::uint64_t seed) {
+    const char* where = "scenes::hexagonalLattice";
+    if (cols < 1 || rows < 1) detail::fail(where, "cols, rows", "must be at least 1");
+    detail::requirePositive(radius, where, "radius");
+    detail::requireInRange(fraction, 1e-12, 0.9069, where, "fraction");
+    const double spacing =
+        std::sqrt(2.0 * std::numbers::pi * radius * radius / (std::sqrt(3.0) * fraction));
+    Scene s = boxScene(cols * spacing, rows * spacing * std::sqrt(3.0) / 2.0);
+    s.name = "Hexagonal lattice";
+    Random rng(seed);
+    for (int row = 0; row < rows; ++row) {
+        for (int col = 0; col < cols; ++col) {
+            ParticleDef d;
+            d.position = {(col + 0.25 + 0.5 * (row % 2)) * spacing,
+                          (row + 0.5) * spacing * std::sqrt(3.0) / 2.0};
+            const double vx = rng.normal();
+            d.velocity = {vx, rng.normal()};
+            d.radius = radius;
+            s.particles.push_back(d);
+        }
+    }
+    return s;
+}
+
+Scene cradle(int balls, double gap, double speed) {
+    const char* where = "scenes::cradle";
+    if (balls < 1) detail::fail(where, "balls", "must be at least 1");
+    detail::requirePositive(gap, where, "gap");
+    detail::requireFinite(speed, where, "speed");
+    Scene s = boxScene(1e6, 1e6);
+    s.world.walls = false;
+    s.name = "Newton's cradle";
+    ParticleDef striker;
+    striker.position = {-2.0 - gap, 0.0};
+    striker.velocity = {speed, 0.0};
+    s.particles.push_back(striker);
+    for (int k = 0; k < balls; ++k) {
+        ParticleDef d;
+        d.position = {2.0 * k, 0.0};
+        s.particles.push_back(d);
+    }
+    return s;
+}
+
+}  // namespace psb::scenes
