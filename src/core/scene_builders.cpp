@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "scene_generate.hpp"
 #include "validate.hpp"
 
 namespace psb::scenes {
@@ -118,16 +119,19 @@ Scene gas(const GasSpec& spec) {
         return d;
     };
     if (!mixed) {
-        // A jittered square lattice: no trial and error, never an overlap.
-        const auto perRow =
-            static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(spec.count))));
-        const double pitch = side / static_cast<double>(perRow);
-        const double slack = std::max(0.0, pitch - 2.0 * spec.radius * (1.0 + 1e-9));
-        for (std::size_t k = 0; k < spec.count; ++k) {
-            const double jx = (rng.uniform() - 0.5) * slack, jy = (rng.uniform() - 0.5) * slack;
-            const Vec2 c{(static_cast<double>(k % perRow) + 0.5) * pitch + jx,
-                         (static_cast<double>(k / perRow) + 0.5) * pitch + jy};
-            s.particles.push_back(disc(c, spec.radius));
+        // The generate block's lattice (scene_generate.hpp): no trial and error, no overlap.
+        detail::GenerateSpec g;
+        g.count = spec.count;
+        g.radius = spec.radius;
+        g.mass = spec.mass;
+        g.x1 = side;
+        g.y1 = side;
+        g.temperature = spec.temperature;
+        g.color = spec.color;
+        g.seed = spec.seed;
+        s.particles = detail::generateParticles(g);
+        if (s.particles.size() != spec.count) {
+            detail::fail(where, "packing", "is too dense for the lattice");
         }
         return s;
     }
@@ -154,10 +158,10 @@ Scene brownian(std::size_t count, double bigRadius, double bigMass, double packi
     detail::requirePositive(bigRadius, where, "bigRadius");
     detail::requireMass(bigMass, where, "bigMass");
     detail::requireInRange(packing, 1e-12, 0.5, where, "packing");
-    // The light discs cover `packing` of the area the heavy one leaves them.
-    const double r = 1.0, bigArea = std::numbers::pi * bigRadius * bigRadius;
+    // The light discs (1 m, 1 kg, kT = 1 J) cover `packing` of the area the heavy one leaves.
+    const double bigArea = std::numbers::pi * bigRadius * bigRadius;
     const double side =
-        std::sqrt(static_cast<double>(count) * std::numbers::pi * r * r / packing + bigArea);
+        std::sqrt(static_cast<double>(count) * std::numbers::pi / packing + bigArea);
     Scene s = boxScene(side, side);
     s.name = "Brownian motion";
     s.description =
@@ -169,33 +173,38 @@ Scene brownian(std::size_t count, double bigRadius, double bigMass, double packi
     big.radius = bigRadius;
     big.mass = bigMass;
     big.color = {230, 120, 60};
-    // A jittered square lattice with the sites under the heavy disc left out, made finer until
-    // enough sites remain.
-    const double free = 1.0 - bigArea / (side * side);
-    for (auto perRow =
-             static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(count) / free)));
-         ; ++perRow) {
-        const double pitch = side / static_cast<double>(perRow);
-        if (pitch <= 2.0 * r) detail::fail(where, "packing", "is too dense for the lattice");
-        const double slack = pitch - 2.0 * r * (1.0 + 1e-9);
-        Random rng(seed);
-        std::vector<ParticleDef> out{big};
-        for (std::size_t k = 0; k < perRow * perRow && out.size() <= count; ++k) {
-            const double jx = (rng.uniform() - 0.5) * slack, jy = (rng.uniform() - 0.5) * slack;
-            ParticleDef d;
-            d.position = {(static_cast<double>(k % perRow) + 0.5) * pitch + jx,
-                          (static_cast<double>(k / perRow) + 0.5) * pitch + jy};
-            d.velocity = thermalVelocity(rng, 1.0, 1.0);
-            d.radius = r;
-            d.color = {150, 170, 190};
-            const double reach = (bigRadius + r) * (1.0 + 1e-9);
-            if ((d.position - big.position).squaredNorm() >= reach * reach) out.push_back(d);
-        }
-        if (out.size() == count + 1) {
-            s.particles = std::move(out);
-            return s;
-        }
+    // The generate block's gas over the whole box, with enough more discs that those under the
+    // heavy one can be left out.
+    detail::GenerateSpec g;
+    g.radius = 1.0;
+    g.x1 = side;
+    g.y1 = side;
+    g.temperature = 1.0;
+    g.color = Color{150, 170, 190};
+    g.seed = seed;
+    const double margin = std::numbers::pi * (bigRadius + 2.0) * (bigRadius + 2.0) / (side * side);
+    g.count = std::min(
+        detail::latticeCapacity(g),
+        static_cast<std::uint64_t>(std::ceil(static_cast<double>(count) * (1.0 + 2.0 * margin))) +
+            16);
+    std::vector<ParticleDef> around;
+    for (const ParticleDef& d : detail::generateParticles(g)) {
+        const double reach = bigRadius + d.radius;
+        if ((d.position - big.position).squaredNorm() > reach * reach) around.push_back(d);
     }
+    // Leave out the surplus evenly (sites come sorted by column), so the gas fills the box.
+    s.particles.push_back(big);
+    const std::size_t surplus = around.size() > count ? around.size() - count : 0;
+    for (std::size_t k = 0, dropped = 0; k < around.size(); ++k) {
+        if (dropped < surplus && k * surplus >= dropped * around.size()) {
+            ++dropped;
+            continue;
+        }
+        s.particles.push_back(around[k]);
+    }
+    if (s.particles.size() != count + 1) detail::fail(where, "packing", "is too dense");
+    s.trails = {0};
+    return s;
 }
 
 Scene hexagonalLattice(int cols, int rows, double radius, double fraction, std::uint64_t seed) {

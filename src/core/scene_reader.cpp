@@ -299,8 +299,8 @@ void checkWorldAccepts(const Reader& r, const WorldDef& def, const SolverSetting
     if (auto why = refusal(s)) r.fail("solver", "refused (" + *why + ")");
 }
 
-ParticleDef readParticle(const Reader& r, const json& j, const std::string& path) {
-    r.object(j, path, {"x", "y", "vx", "vy", "mass", "radius", "color"});
+ParticleDef readParticle(const Reader& r, const json& j, const std::string& path, bool& trail) {
+    r.object(j, path, {"x", "y", "vx", "vy", "mass", "radius", "color", "trail"});
     ParticleDef d;
     d.position = {r.number(r.require(j, path, "x"), member(path, "x")),
                   r.number(r.require(j, path, "y"), member(path, "y"))};
@@ -309,6 +309,8 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
     d.mass = r.mass(r.require(j, path, "mass"), member(path, "mass"));
     d.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
     if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
+    trail = false;
+    if (const json* v = Reader::find(j, "trail")) trail = r.boolean(*v, member(path, "trail"));
     return d;
 }
 
@@ -482,7 +484,9 @@ Scene parseScene(std::string_view text, std::string_view source) {
         }
         s.particles.reserve(v->size());
         for (std::size_t i = 0; i < v->size(); ++i) {
-            s.particles.push_back(readParticle(r, (*v)[i], element("particles", i)));
+            bool trail = false;
+            s.particles.push_back(readParticle(r, (*v)[i], element("particles", i), trail));
+            if (trail) s.trails.push_back(i);
             origins.push_back({"particles", i});
         }
     }
