@@ -128,7 +128,6 @@ class World {
     /// Called by every function that changes what a step reads (particles, box, laws): settles
     /// first, then tells the exact stepper to rebuild at its next step.
     void changed();
-    void stepDiscrete(double dt);
     void stepExact(double dt);
 
     WorldDef def_;
@@ -141,7 +140,7 @@ class World {
     unsigned stepsUntilReorder_ = 0;  ///< state, not scratch: it decides future storage order
     std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
-    StepProfile profile_;
+    mutable StepProfile profile_;  ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
 };
 

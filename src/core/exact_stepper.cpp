@@ -755,11 +755,14 @@ void ExactStepper::sync(ParticleArrays& p) {
 void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
                         StepCounters& counters) {
     StageTimer total(profile.total);
+    double& rebuildMs = profile.stage("rebuild");
+    double& eventsMs = profile.stage("events");
+    profile.stage("sync");  // added by World when the state is read
     if (stale_) {
         // The world's arrays must hold the current state before they are read back in (after
         // an exhausted budget the stepper invalidates itself with a sync still owed).
         if (syncOwed_) sync(p);
-        StageTimer t(profile.findPairs);
+        StageTimer t(rebuildMs);
         rebuild(p, def);
         // Pairs placed overlapping are part of the state: report them, not only the overlaps
         // met at collisions (which rounding keeps at a few ulps).
@@ -776,7 +779,7 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     const double tEnd = clock_ + dt;
     const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
     {
-        StageTimer t(profile.resolve);
+        StageTimer t(eventsMs);
         runEvents(tEnd, counters, budget);
     }
     clock_ = tEnd;

@@ -9,7 +9,6 @@
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
 #include "exact_stepper.hpp"
-#include "particle_reorder.hpp"
 #include "stage_timer.hpp"
 #include "step_context.hpp"
 #include "validate.hpp"
@@ -333,49 +332,40 @@ void World::step(double dt) {
     if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
     ctx_->threads = threads_;
     ctx_->broadPhase = solver_.broadphase;
-    // The exact mode keeps its own copy in cell order; reordering the world's storage would only
-    // make it rebuild.
     // A step in another mode works on the arrays: they must hold the state, and the exact
-    // stepper must rebuild from what that step leaves.
-    if (solver_.mode != StepMode::Exact) changed();
-    if (p_.size() >= kReorderMinParticles && solver_.mode != StepMode::Exact) {
-        if (stepsUntilReorder_ == 0) {
-            StageTimer t(profile_.reorder);
-            reorderByCell(p_, ids_, *ctx_);
-            stepsUntilReorder_ = kReorderInterval;
-        }
-        --stepsUntilReorder_;
-    }
+    // stepper must rebuild from what that step leaves. The exact mode keeps its own copy in
+    // cell order, so it never reorders the world's storage.
     switch (solver_.mode) {
         case StepMode::Discrete:
-            stepDiscrete(dt);
+        case StepMode::Substep:
+            changed();
+            stages::discreteSteps(p_, ids_, def_, dt,
+                                  solver_.mode == StepMode::Substep ? solver_.substeps : 1, *ctx_,
+                                  stepsUntilReorder_, profile_, counters_);
             break;
-        case StepMode::Substep: {
-            const double h = dt / solver_.substeps;
-            for (int k = 0; k < solver_.substeps; ++k)
-                stepDiscrete(h);
-            break;
-        }
         case StepMode::Exact:
             stepExact(dt);
             break;
     }
-    profile_.total += profile_.reorder;
     if (solver_.mode != StepMode::Exact) broadPhaseUsed_ = ctx_->broadPhaseUsed;
     time_ += dt;
 }
 
 void World::settle() const {
-    if (exact_ && exact_->owesSync()) exact_->sync(p_);
+    if (exact_ && exact_->owesSync()) {
+        double ms = 0.0;
+        {
+            StageTimer t(ms);
+            exact_->sync(p_);
+        }
+        profile_.stage("sync") += ms;
+        profile_.total += ms;
+    }
 }
 
 void World::changed() {
     settle();
     if (exact_) exact_->invalidate();
-}
-
-void World::stepDiscrete(double dt) {
-    stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
 }
 
 void World::stepExact(double dt) {
