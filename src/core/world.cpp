@@ -1,5 +1,7 @@
 #include <particle_sandbox/world.hpp>
 
+#include <particle_sandbox/validation.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -16,45 +18,16 @@
 namespace psb {
 
 using detail::requireFinite;
-using detail::requireInRange;
 using detail::requirePositive;
 
 namespace {
 
-void validateDef(const WorldDef& def, const char* where) {
-    requirePositive(def.width, where, "width");
-    requirePositive(def.height, where, "height");
-    requireFinite(def.gravity, where, "gravity");
-    requireInRange(def.restitution, 0.0, 1.0, where, "restitution");
-    if (!std::isfinite(def.friction) || def.friction < 0.0) {
-        detail::fail(where, "friction", "must be finite and >= 0 " + detail::got(def.friction));
-    }
-}
-
-void validateSolver(const SolverSettings& s, const char* where) {
-    requirePositive(s.dt, where, "dt");
-    if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
-        detail::fail(where, "substeps",
-                     "must be in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
-                         std::to_string(s.substeps) + ")");
-    }
-    // An enumerator outside the lists (a cast from an integer) would make step() do nothing.
-    if (toString(s.mode) == "?") detail::fail(where, "mode", "is not a known step mode");
-    if (toString(s.broadphase) == "?") {
-        detail::fail(where, "broadphase", "is not a known broadphase");
-    }
-}
-
-// The exact mode flies particles in straight lines between events; under gravity they would fly
-// parabolas, which it does not predict.
-void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const char* where) {
-    if (s.mode == StepMode::Exact && (gravity.x() != 0.0 || gravity.y() != 0.0)) {
-        std::ostringstream os;
-        os.precision(17);
-        os << "must be zero in 'exact' mode (got [" << gravity.x() << ", " << gravity.y()
-           << "]): the event-driven step does not support gravity; use 'discrete' or "
-              "'substep' for a world with gravity";
-        detail::fail(where, "gravity", os.str());
+/// Throws InvalidArgument for the first problem validate() finds.
+void require(const WorldDef& def, const SolverSettings& solver, const char* where) {
+    const std::vector<SettingProblem> problems = validate(def, solver);
+    if (!problems.empty()) {
+        const std::string setting(problems.front().setting);
+        detail::fail(where, setting.c_str(), problems.front().message);
     }
 }
 
@@ -83,9 +56,7 @@ World::World(const WorldDef& def, const SolverSettings& solver)
       solver_(solver),
       ctx_(std::make_unique<StepContext>()),
       threads_(hardwareThreads()) {
-    validateDef(def, "World");
-    validateSolver(solver, "World");
-    validateModeWithGravity(solver, def.gravity, "World");
+    require(def, solver, "World");
 }
 
 World::~World() = default;
@@ -114,7 +85,7 @@ void World::setBox(double width, double height) {
     WorldDef d = def_;
     d.width = width;
     d.height = height;
-    validateDef(d, "World::setBox");
+    require(d, solver_, "World::setBox");
     changed();
     def_ = d;
 }
@@ -125,14 +96,17 @@ void World::setWalls(bool enabled) {
 }
 
 void World::setGravity(const Vec2& gravity) {
-    requireFinite(gravity, "World::setGravity", "gravity");
-    validateModeWithGravity(solver_, gravity, "World::setGravity");
+    WorldDef d = def_;
+    d.gravity = gravity;
+    require(d, solver_, "World::setGravity");
     changed();
     def_.gravity = gravity;
 }
 
 void World::setRestitution(double e) {
-    requireInRange(e, 0.0, 1.0, "World::setRestitution", "restitution");
+    WorldDef d = def_;
+    d.restitution = e;
+    require(d, solver_, "World::setRestitution");
     changed();
     def_.restitution = e;
 }
@@ -140,14 +114,13 @@ void World::setRestitution(double e) {
 void World::setFriction(double mu) {
     WorldDef d = def_;
     d.friction = mu;
-    validateDef(d, "World::setFriction");
+    require(d, solver_, "World::setFriction");
     changed();
     def_.friction = mu;
 }
 
 void World::setSolver(const SolverSettings& solver) {
-    validateSolver(solver, "World::setSolver");
-    validateModeWithGravity(solver, def_.gravity, "World::setSolver");
+    require(def_, solver, "World::setSolver");
     changed();
     solver_ = solver;
 }
