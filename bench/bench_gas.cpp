@@ -17,9 +17,6 @@
 #include "gas_scene.hpp"
 #include "run_benchmarks.hpp"
 
-// The reorder schedule is a core detail; the benchmark needs its period.
-#include "particle_reorder.hpp"
-
 namespace psb::bench {
 namespace {
 
@@ -50,10 +47,10 @@ void accumulate(StepProfile& sum, const StepProfile& p) {
 /// Warms `w` up, then times one step per benchmark iteration and reports the profile.
 void timeSteps(benchmark::State& state, World& w, std::size_t n) {
     for (int k = 0; k < kWarmup; ++k)
-        w.step();
+        w.step(w.solver().dt);
     StepProfile sum;
     for (auto _ : state) {
-        w.step();
+        w.step(w.solver().dt);
         accumulate(sum, w.profile());
     }
     reportProfile(state, sum, w, n);

@@ -22,6 +22,10 @@ struct GasSpec {
     double temperature = 1.0;  ///< kT, joules: each velocity component ~ N(0, kT / m)
     std::uint64_t seed = 42;
     Color color{140, 200, 255};
+    /// One radius only: centres uniform at random in the box, overlaps allowed (the discrete
+    /// mode's first steps push them apart), drawn with std::mt19937_64 — the discrete gas
+    /// benchmark's start. Otherwise discs never overlap.
+    bool overlapping = false;
 };
 
 /// Discs of one radius sit on a jittered square lattice (never overlapping); mixed radii are

@@ -18,6 +18,12 @@
 
 namespace psb {
 
+/// Worlds of at least this many particles sort their storage by grid cell (for memory
+/// locality) in the discrete and substep modes, once every kReorderInterval steps, starting
+/// with their first step; storage indices change then, ids stay valid.
+inline constexpr std::size_t kReorderMinParticles = 4096;
+inline constexpr unsigned kReorderInterval = 32;
+
 struct StepContext;
 namespace exact {
 class ExactStepper;
@@ -99,9 +105,12 @@ class World {
     /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
     /// every particle ends at its exact state at time() + dt; any change made to the world
     /// between steps (particles, setters, box) is picked up by the next step.
+    ///
+    /// The argument is the one source of truth for how far a step goes: the world keeps no step
+    /// length of its own. SolverSettings::dt is the scene's frame length, the dt its driver (the
+    /// app, particle-sim) passes here, `world.step(world.solver().dt)`; World validates it with
+    /// the rest of the settings and never reads it otherwise.
     void step(double dt);
-    /// Advances by solver().dt.
-    void step() { step(solver_.dt); }
     /// Simulated seconds since the world was made.
     [[nodiscard]] double time() const { return time_; }
 

@@ -654,7 +654,7 @@ void App::save() {
 
 void App::stepOnce() {
     interaction_.applyHold(world_, now(), launchSettings());
-    world_.step();
+    world_.step(world_.solver().dt);
 }
 
 void App::update(double realSeconds) {
@@ -838,7 +838,7 @@ int App::runBenchmark() {
             handleEvent(e);
         const auto t0 = std::chrono::steady_clock::now();
         world_.resetCounters();  // as a frame of update() does (see sampleAnalysis)
-        world_.step();
+        world_.step(world_.solver().dt);
         sampleAnalysis();
         const double s = msSince(t0);
         render();

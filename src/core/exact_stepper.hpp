@@ -52,8 +52,9 @@
 // across a face: about half as many cell moves as with plain cells at the same search cost.
 //
 // Size levels. Cells sized by the largest disc would make a gas with one big disc search
-// cells hundreds of small discs wide. Instead radii fall into levels by factors of two from the
-// smallest (level 0: r <= 2 r_min, level 1: r <= 4 r_min, ..., empty levels dropped). The fine
+// cells hundreds of small discs wide. Instead radii fall into levels: level 0 holds every disc
+// up to 1.25 mean spacings across (the cells are about a spacing wide anyway) or twice the
+// smallest radius, whichever is larger, and levels above it double (empty ones dropped). The fine
 // grid is sized by level 0 alone, and every particle, whatever its level, has a fine cell and
 // makes fine cell moves. Particles of levels a and b are neighbours when their fine cells are
 // at most reach(a, b) apart along each axis, the distance at which two such discs can still
@@ -237,7 +238,7 @@ class ExactStepper {
     void advance(Body& b, double t) const;
     void scanCells(std::uint32_t i, double now, double ax, double ay, const CellList& list,
                    const std::uint32_t* cells, int cellCount, Event& best);
-    void assignLevels(double& fineDiameter);
+    void assignLevels(double spacing, double& fineDiameter);
     void setUpLevels();
     [[nodiscard]] bool populous(std::uint8_t level) const;
     [[nodiscard]] bool populousUpperLevel() const;

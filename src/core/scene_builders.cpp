@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <unordered_map>
 #include <vector>
 
@@ -102,9 +103,12 @@ Scene gas(const GasSpec& spec) {
             r = spec.radius * std::pow(ratio, rng.uniform());
         std::sort(radii.begin(), radii.end(), std::greater<>());  // largest placed first
     }
-    double area = 0.0;
-    for (const double r : radii)
-        area += std::numbers::pi * r * r;
+    double area = static_cast<double>(spec.count) * std::numbers::pi * spec.radius * spec.radius;
+    if (mixed) {
+        area = 0.0;
+        for (const double r : radii)
+            area += std::numbers::pi * r * r;
+    }
     const double side = std::sqrt(area / spec.packing);
     Scene s = boxScene(side, side);
     s.name = "Gas";
@@ -118,6 +122,24 @@ Scene gas(const GasSpec& spec) {
         d.color = spec.color;
         return d;
     };
+    if (spec.overlapping && !mixed) {
+        std::mt19937_64 mt(spec.seed);
+        std::uniform_real_distribution<double> pos(spec.radius, side - spec.radius);
+        std::normal_distribution<double> vel(0.0, std::sqrt(spec.temperature / spec.mass));
+        for (std::size_t k = 0; k < spec.count; ++k) {
+            ParticleDef d;
+            const double x = pos(mt);
+            d.position = {x, pos(mt)};
+            const double vx = vel(mt);
+            d.velocity = {vx, vel(mt)};
+            d.mass = spec.mass;
+            d.radius = spec.radius;
+            d.color = spec.color;
+            s.particles.push_back(d);
+        }
+        s.allowOverlaps = true;
+        return s;
+    }
     if (!mixed) {
         // The generate block's lattice (scene_generate.hpp): no trial and error, no overlap.
         detail::GenerateSpec g;

@@ -170,10 +170,68 @@ TEST(ExactReference, InelasticCollisionSequenceMatchesBruteForceReprediction) {
 }
 
 TEST(ExactReference, MixedSizesCollisionSequenceMatchesBruteForceReprediction) {
-    // Radii over a factor of 20 (five size levels, fine cells sized by the smallest), in a box
-    // wide enough for many fine cells: the levels' searches must find every collision.
-    for (std::uint32_t seed = 201; seed <= 230; ++seed)
-        expectSameSequence(seed, 1.0, 40, 80.0, 0.4, 8.0);
+    // 200 small discs (0.3-0.45 m) and one each of 2, 4 and 8 m in a 40 m box: the cells are
+    // sized by the small ones' spacing, and the big three sit in three size levels above them.
+    // The levels' searches must find the same collisions as trying every pair.
+    for (std::uint32_t seed = 201; seed <= 210; ++seed) {
+        WorldDef def;
+        def.width = 40.0;
+        def.height = 40.0;
+        ParticleArrays p;
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        const auto fits = [&](double x, double y, double r) {
+            for (std::size_t k = 0; k < p.size(); ++k) {
+                const double dx = p.x[k] - x, dy = p.y[k] - y, s = p.radius[k] + r + 0.01;
+                if (dx * dx + dy * dy < s * s) return false;
+            }
+            return true;
+        };
+        const auto add = [&](double r) {
+            for (;;) {
+                const double x = r + (40.0 - 2 * r) * u(rng), y = r + (40.0 - 2 * r) * u(rng);
+                if (!fits(x, y, r)) continue;
+                const double m = r * r;
+                p.x.push_back(x);
+                p.y.push_back(y);
+                p.vx.push_back(6.0 * u(rng) - 3.0);
+                p.vy.push_back(6.0 * u(rng) - 3.0);
+                p.invMass.push_back(1.0 / m);
+                p.mass.push_back(m);
+                p.radius.push_back(r);
+                p.color.push_back({});
+                p.id.push_back({static_cast<std::uint32_t>(p.size()), 0});
+                return;
+            }
+        };
+        for (const double r : {8.0, 4.0, 2.0})
+            add(r);
+        for (int k = 0; k < 200; ++k)
+            add(0.3 + 0.15 * u(rng));
+        const double tEnd = 0.3;
+        const std::vector<Record> want = bruteForce(p, def, tEnd);
+        std::vector<CollisionRecord> log;
+        ExactStepper stepper;
+        stepper.setLog(&log);
+        StepProfile profile;
+        StepCounters counters;
+        stepper.step(p, def, tEnd, profile, counters);
+        ASSERT_GE(want.size(), kCompared) << "seed " << seed;
+        ASSERT_GE(log.size(), kCompared) << "seed " << seed;
+        std::size_t big = 0;
+        for (std::size_t k = 0; k < kCompared; ++k) {
+            const CollisionRecord& g = log[k];
+            const bool wall = g.j >= CollisionRecord::kWall;
+            const std::uint32_t a = wall ? g.i : std::min(g.i, g.j);
+            const std::uint32_t b = wall ? g.j : std::max(g.i, g.j);
+            if (!wall && a < 3) ++big;
+            ASSERT_EQ(a, want[k].a) << "seed " << seed << " event " << k;
+            ASSERT_EQ(b, want[k].b) << "seed " << seed << " event " << k;
+            ASSERT_NEAR(g.time, want[k].time, 1e-9 * (1.0 + want[k].time))
+                << "seed " << seed << " event " << k;
+        }
+        RecordProperty("big_disc_collisions_seed_" + std::to_string(seed), static_cast<int>(big));
+    }
 }
 
 TEST(ExactReference, BulletThroughARowMatchesBruteForceReprediction) {

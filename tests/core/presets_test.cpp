@@ -53,7 +53,7 @@ TEST(Presets, AllLoadAndRunKeepingEveryParticleInTheBox) {
         World w = makeWorld(s);
         const double e0 = kineticEnergy(w);
         for (int k = 0; k < 30; ++k)
-            w.step();
+            w.step(w.solver().dt);
         EXPECT_EQ(w.size(), s.particles.size());
         const ParticleArrays& p = w.particles();
         for (std::size_t i = 0; i < p.size(); ++i) {
@@ -101,7 +101,7 @@ TEST(Presets, BrownianMotionIsOneHeavyDiscWithItsTrailInAGas) {
 TEST(Presets, NewtonsCradleSendsOffOnlyTheLastBall) {
     World w = makeWorld(loadScene(kScenes / "02-newtons-cradle.json"));
     for (int k = 0; k < 240; ++k)
-        w.step();  // 1 s: the striker has hit the row
+        w.step(w.solver().dt);  // 1 s: the striker has hit the row
     const ParticleArrays& p = w.particles();
     for (std::size_t i = 0; i + 1 < p.size(); ++i)
         EXPECT_EQ(p.vx[i], 0.0) << i;
