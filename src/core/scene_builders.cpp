@@ -13,26 +13,9 @@
 namespace psb::scenes {
 namespace {
 
-/// SplitMix64: fully specified, so a seed gives the same scene on every platform (up to the
-/// libm functions of the Gaussian).
-class Random {
-  public:
-    explicit Random(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    double normal() {
-        const double u1 = 1.0 - uniform(), u2 = uniform();
-        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    }
-
-  private:
-    std::uint64_t state_;
-};
+// SplitMix64 (scene_generate.hpp): fully specified, so a seed gives the same scene on every
+// platform (up to the libm functions of the Gaussian).
+using Random = detail::SplitMix64;
 
 /// Finds overlaps among discs placed so far: a hash of square cells as wide as the largest
 /// diameter, so a new disc is tested against the 3 × 3 cells around it.
