@@ -40,7 +40,9 @@ struct GasSpec {
                              double bigMass = 100.0, double packing = 0.2, std::uint64_t seed = 7);
 
 /// A hexagonal lattice of `cols` × `rows` discs of radius `radius` at packing `fraction`, in
-/// a box of exactly its size, velocity components N(0, 1) m/s (a dense, jammed scene).
+/// a box of exactly its size, velocity components N(0, 1) m/s drawn with std::mt19937_64 (a
+/// dense, jammed scene: staggered rows need more width than the box has, so the walls clamp
+/// the row ends into overlaps).
 [[nodiscard]] Scene hexagonalLattice(int cols, int rows, double radius, double fraction,
                                      std::uint64_t seed = 5);
 

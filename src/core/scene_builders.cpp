@@ -221,18 +221,22 @@ Scene hexagonalLattice(int cols, int rows, double radius, double fraction, std::
         std::sqrt(2.0 * std::numbers::pi * radius * radius / (std::sqrt(3.0) * fraction));
     Scene s = boxScene(cols * spacing, rows * spacing * std::sqrt(3.0) / 2.0);
     s.name = "Hexagonal lattice";
-    Random rng(seed);
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<double> g(0.0, 1.0);
     for (int row = 0; row < rows; ++row) {
         for (int col = 0; col < cols; ++col) {
             ParticleDef d;
             d.position = {(col + 0.25 + 0.5 * (row % 2)) * spacing,
                           (row + 0.5) * spacing * std::sqrt(3.0) / 2.0};
-            const double vx = rng.normal();
-            d.velocity = {vx, rng.normal()};
+            const double vx = g(rng);
+            d.velocity = {vx, g(rng)};
             d.radius = radius;
             s.particles.push_back(d);
         }
     }
+    // Rows are staggered: the box is the lattice's size, so the row ends are clamped into it
+    // overlapping their neighbours (a jammed pile, on purpose).
+    s.allowOverlaps = true;
     return s;
 }
 

@@ -444,11 +444,14 @@ TEST(ExactMode, BoxTooFullForItsDiscsWithAHeldDiscOrInelasticSettles) {
 }
 
 TEST(ExactMode, NewtonsCradlePassesTheImpulseDownTheLine) {
-    World w = openExactWorld();
-    const ParticleId first = w.add({.position = {-10.0, 0.0}, .velocity = {1.0, 0.0}});
-    std::vector<ParticleId> row;
-    for (int k = 0; k < 5; ++k)
-        row.push_back(w.add({.position = {2.0 * k, 0.0}}));
+    Scene cradle = scenes::cradle(5, 8.0, 1.0);  // striker at x = -10, row at 0, 2, ..., 8
+    cradle.solver.mode = StepMode::Exact;
+    World w = makeWorld(cradle);
+    const std::vector<ParticleId> ids = w.ids();
+    const ParticleId first = ids[0];
+    const std::vector<ParticleId> row(ids.begin() + 1, ids.end());
+    ASSERT_EQ(row.size(), 5u);
+    ASSERT_EQ(w.get(first).position, Vec2(-10.0, 0.0));
     w.step(12.0);
     EXPECT_NEAR(w.get(first).velocity.x(), 0.0, 1e-12);
     for (int k = 0; k < 4; ++k)
