@@ -204,7 +204,10 @@ void ExactStepper::setUpLevels() {
             const double sigma = (levelRadius_[a] + levelRadius_[b]) * kCellSlack;
             const double kx = 1.0 + std::floor((sigma + 2.0 * skinX_) / sx);
             const double ky = 1.0 + std::floor((sigma + 2.0 * skinY_) / sy);
-            reach_[a * levelCount_ + b] = static_cast<std::int64_t>(std::max(kx, ky));
+            // Capped far beyond any grid (a range wider than the grid is clipped to it), so that
+            // a disc of any size gives a representable reach.
+            reach_[a * levelCount_ + b] =
+                static_cast<std::int64_t>(std::min(std::max(kx, ky), 1e15));
         }
     }
     upper_.resize(levelCount_ - 1u);

@@ -562,5 +562,30 @@ TEST(ExactModeStatistics, HeavyDiscInAGasReachesEquipartition) {
                 stdError, light);
 }
 
+TEST(ExactMode, StateIsWrittenBackWhenReadAndReadingChangesNothing) {
+    // Two equal worlds: one read after every frame (as the app draws), one never read until
+    // the end (as the runner steps), then both mutated and stepped again. Same bits.
+    World read = exactGas(400, 120.0, 0.5, 1.5, 1.0, 9);
+    World unread = read;
+    double sum = 0.0;
+    for (int k = 0; k < 120; ++k) {
+        read.step(1.0 / 60.0);
+        for (const double x : read.particles().x)
+            sum += x;
+        unread.step(1.0 / 60.0);
+    }
+    EXPECT_GT(read.profile().ms("sync"), 0.0);
+    EXPECT_EQ(unread.profile().ms("sync"), 0.0);  // nothing read since the last step
+    EXPECT_EQ(test::stateHash(read), test::stateHash(unread));
+    EXPECT_GT(sum, 0.0);
+    // A mutation right after unread steps must see every other particle where it is now.
+    for (World* w : {&read, &unread}) {
+        w->setVelocity(w->ids()[7], {3.0, -2.0});
+        for (int k = 0; k < 60; ++k)
+            w->step(1.0 / 60.0);
+    }
+    EXPECT_EQ(test::stateHash(read), test::stateHash(unread));
+}
+
 }  // namespace
 }  // namespace psb
