@@ -3,9 +3,7 @@
 // and mass 1 kg in a square box at packing fraction 0.1, velocity components drawn from
 // N(0, 1) m/s, e = 1, no friction, no gravity, stepped with dt = 0.01 s.
 
-#include <cmath>
 #include <cstdint>
-#include <random>
 #include <vector>
 
 #include <particle_sandbox/scene.hpp>
@@ -18,12 +16,6 @@ inline constexpr double kRadius = 1.0;
 inline constexpr double kMass = 1.0;
 inline constexpr double kPackingFraction = 0.1;
 inline constexpr double kDt = 0.01;
-
-/// Side of the square box holding n discs at the packing fraction, metres.
-inline double gasBoxSide(std::size_t n) {
-    return std::sqrt(static_cast<double>(n) * 3.141592653589793 * kRadius * kRadius /
-                     kPackingFraction);
-}
 
 struct GasState {
     double side = 0.0;
