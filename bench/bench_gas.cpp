@@ -17,9 +17,6 @@
 #include "gas_scene.hpp"
 #include "run_benchmarks.hpp"
 
-// The reorder schedule is a core detail; the benchmark needs its period.
-#include "particle_reorder.hpp"
-
 namespace psb::bench {
 namespace {
 
@@ -32,33 +29,28 @@ void reportProfile(benchmark::State& state, const StepProfile& sum, const World&
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
     state.counters["bytes_per_particle"] =
         static_cast<double>(w.memoryBytes()) / static_cast<double>(n);
-    state.counters["find_pairs_us"] = 1e3 * sum.findPairs / steps;
-    state.counters["resolve_separate_us"] = 1e3 * (sum.resolve + sum.separate) / steps;
-    state.counters["move_us"] = 1e3 * sum.move / steps;
-    state.counters["gravity_us"] = 1e3 * sum.gravity / steps;
-    state.counters["walls_us"] = 1e3 * sum.walls / steps;
-    state.counters["reorder_us"] = 1e3 * sum.reorder / steps;
+    state.counters["find_pairs_us"] = 1e3 * sum.ms("find pairs") / steps;
+    state.counters["resolve_separate_us"] = 1e3 * (sum.ms("resolve") + sum.ms("separate")) / steps;
+    state.counters["move_us"] = 1e3 * sum.ms("move") / steps;
+    state.counters["gravity_us"] = 1e3 * sum.ms("gravity") / steps;
+    state.counters["walls_us"] = 1e3 * sum.ms("walls") / steps;
+    state.counters["reorder_us"] = 1e3 * sum.ms("reorder") / steps;
     state.SetLabel(std::string(toString(w.broadPhaseInUse())));
 }
 
 void accumulate(StepProfile& sum, const StepProfile& p) {
-    sum.gravity += p.gravity;
-    sum.move += p.move;
-    sum.findPairs += p.findPairs;
-    sum.resolve += p.resolve;
-    sum.separate += p.separate;
-    sum.walls += p.walls;
-    sum.reorder += p.reorder;
+    for (int k = 0; k < p.stageCount; ++k)
+        sum.stage(p.stages[k].name) += p.stages[k].ms;
     sum.total += p.total;
 }
 
 /// Warms `w` up, then times one step per benchmark iteration and reports the profile.
 void timeSteps(benchmark::State& state, World& w, std::size_t n) {
     for (int k = 0; k < kWarmup; ++k)
-        w.step();
+        w.step(w.solver().dt);
     StepProfile sum;
     for (auto _ : state) {
-        w.step();
+        w.step(w.solver().dt);
         accumulate(sum, w.profile());
     }
     reportProfile(state, sum, w, n);

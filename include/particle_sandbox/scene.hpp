@@ -30,6 +30,9 @@ struct Scene {
     /// the loader refuses overlaps by default; a snapshot of a running world may hold the small
     /// overlaps a step leaves behind, so sceneFromWorld sets this when it finds any.
     bool allowOverlaps = false;
+    /// Indices into `particles` of those whose trail the app shows from the start (a particle's
+    /// "trail": true), ascending. A property of the view: the world does not keep it.
+    std::vector<std::size_t> trails;
 };
 
 /// Limits that keep any input, however hostile, from exhausting memory or time.

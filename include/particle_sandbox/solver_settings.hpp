@@ -28,7 +28,9 @@ inline constexpr int kMaxSubsteps = 100'000;
 /// The solver block of a scene.
 struct SolverSettings {
     StepMode mode = StepMode::Discrete;
-    double dt = 0.01;  ///< seconds, finite and > 0
+    /// The scene's frame length, seconds, finite and > 0: what the app and particle-sim pass
+    /// to World::step. World itself takes the step length only as step()'s argument.
+    double dt = 0.01;
     int substeps = 1;  ///< in [1, kMaxSubsteps]; used by StepMode::Substep
     BroadPhaseKind broadphase = BroadPhaseKind::Auto;
 };

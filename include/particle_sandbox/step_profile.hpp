@@ -2,22 +2,50 @@
 /// \file
 /// What a step did and where its time went.
 
+#include <array>
 #include <cstdint>
+#include <string_view>
 
 namespace psb {
 
-/// Wall-clock milliseconds spent in each stage of the last call to World::step, summed over its
-/// substeps. A stage the world skipped (no gravity, no walls, ...) reads 0.
+/// One timed stage of a step: its name and the wall-clock milliseconds it took.
+struct StageTime {
+    std::string_view name;
+    double ms = 0.0;
+};
+
+/// The stages of the last call to World::step, each under the name its stepper gives it, in
+/// the order they run, summed over substeps:
+///   - discrete and substep: "reorder" (sorting storage by grid cell, every few steps in
+///     large worlds), "gravity", "move", "find pairs", "resolve", "separate", "walls";
+///   - exact: "rebuild" (the event state made afresh after a change), "events" (the event
+///     loop), "sync" (writing the state into the world's arrays, done at the first read after
+///     the step, so it is added when that read happens).
+/// Every stage of the mode is listed, a skipped one (no gravity, no walls, no rebuild) at 0.
 struct StepProfile {
-    double gravity = 0.0;
-    double move = 0.0;
-    double findPairs = 0.0;
-    double resolve = 0.0;
-    double separate = 0.0;
-    double walls = 0.0;
-    double reorder = 0.0;  ///< sorting storage by grid cell (every few steps in large worlds)
-    double total = 0.0;
+    static constexpr int kMaxStages = 8;
+    std::array<StageTime, kMaxStages> stages{};
+    int stageCount = 0;
+    double total = 0.0;       ///< milliseconds, every stage together
     std::uint64_t pairs = 0;  ///< overlapping pairs the broadphase found (summed over substeps)
+
+    /// Milliseconds of the stage called `name`, 0 if the last step had none.
+    [[nodiscard]] double ms(std::string_view name) const {
+        for (int k = 0; k < stageCount; ++k) {
+            if (stages[k].name == name) return stages[k].ms;
+        }
+        return 0.0;
+    }
+    /// The accumulator of stage `name`, added at the end if it is not listed yet (a stepper
+    /// lists its stages in pipeline order; at most kMaxStages).
+    double& stage(std::string_view name) {
+        for (int k = 0; k < stageCount; ++k) {
+            if (stages[k].name == name) return stages[k].ms;
+        }
+        if (stageCount == kMaxStages) return stages[kMaxStages - 1].ms;  // never by design
+        stages[stageCount] = {name, 0.0};
+        return stages[stageCount++].ms;
+    }
 };
 
 /// Running totals since the world was made (or since resetCounters).

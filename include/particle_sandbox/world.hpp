@@ -18,6 +18,12 @@
 
 namespace psb {
 
+/// Worlds of at least this many particles sort their storage by grid cell (for memory
+/// locality) in the discrete and substep modes, once every kReorderInterval steps, starting
+/// with their first step; storage indices change then, ids stay valid.
+inline constexpr std::size_t kReorderMinParticles = 4096;
+inline constexpr unsigned kReorderInterval = 32;
+
 struct StepContext;
 namespace exact {
 class ExactStepper;
@@ -28,6 +34,11 @@ class ExactStepper;
 /// Every public function validates its arguments and throws psb::InvalidArgument, leaving the
 /// world unchanged, when one is out of range. Particles are reached through stable ids; the
 /// const ParticleArrays view is for fast read-only iteration (rendering, diagnostics).
+///
+/// In Exact mode a step leaves the particles' new state inside the event-driven stepper and
+/// the first read after it (particles(), get(), pick(), a copy, any mutation) writes it into
+/// the arrays, once; steps nobody reads in between cost no work per particle. Reading is
+/// therefore not safe from several threads at once right after an exact step.
 class World {
   public:
     explicit World(const WorldDef& def = {}, const SolverSettings& solver = {});
@@ -87,15 +98,21 @@ class World {
     /// `point`. Until a world reaches 4096 particles storage order is insertion order.
     [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
 
-    [[nodiscard]] const ParticleArrays& particles() const { return p_; }
+    [[nodiscard]] const ParticleArrays& particles() const {
+        settle();
+        return p_;
+    }
 
     // --- time ------------------------------------------------------------------------------
     /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
     /// every particle ends at its exact state at time() + dt; any change made to the world
     /// between steps (particles, setters, box) is picked up by the next step.
+    ///
+    /// The argument is the one source of truth for how far a step goes: the world keeps no step
+    /// length of its own. SolverSettings::dt is the scene's frame length, the dt its driver (the
+    /// app, particle-sim) passes here, `world.step(world.solver().dt)`; World validates it with
+    /// the rest of the settings and never reads it otherwise.
     void step(double dt);
-    /// Advances by solver().dt.
-    void step() { step(solver_.dt); }
     /// Simulated seconds since the world was made.
     [[nodiscard]] double time() const { return time_; }
 
@@ -120,12 +137,16 @@ class World {
 
   private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
-    void stepDiscrete(double dt);
+    /// Writes the state an exact step left in its stepper into p_, if it owes one.
+    void settle() const;
+    /// Called by every function that changes what a step reads (particles, box, laws): settles
+    /// first, then tells the exact stepper to rebuild at its next step.
+    void changed();
     void stepExact(double dt);
 
     WorldDef def_;
     SolverSettings solver_;
-    ParticleArrays p_;
+    mutable ParticleArrays p_;  ///< mutable: settle() fills in what an exact step left owed
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;
     std::unique_ptr<exact::ExactStepper> exact_;  // event state of the Exact mode, made on use
@@ -133,7 +154,7 @@ class World {
     unsigned stepsUntilReorder_ = 0;  ///< state, not scratch: it decides future storage order
     std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
-    StepProfile profile_;
+    mutable StepProfile profile_;  ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
 };
 

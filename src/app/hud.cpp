@@ -71,24 +71,16 @@ std::vector<std::string> profileLines(const ProfileData& d) {
         std::snprintf(buf, sizeof buf, "%-22s %8.3f", name, ms);
         lines.emplace_back(buf);
     };
+    // Each mode's stepper names its own stages (step_profile.hpp).
+    for (int k = 0; k < p.stageCount; ++k) {
+        const std::string name(p.stages[k].name);
+        row(name.c_str(), p.stages[k].ms);
+    }
+    row("total", p.total);
     if (d.mode == StepMode::Exact) {
-        // The exact stepper reports its rebuild of the event state under findPairs, the event
-        // loop under resolve and bringing every particle to the step's end under move.
-        row("rebuild events", p.findPairs);
-        row("process events", p.resolve);
-        row("sync to step end", p.move);
-        row("total", p.total);
         std::snprintf(buf, sizeof buf, "%-22s %8.0f", "events per step", d.eventsPerStep);
         lines.emplace_back(buf);
     } else {
-        row("gravity", p.gravity);
-        row("move", p.move);
-        row("find pairs", p.findPairs);
-        row("resolve", p.resolve);
-        row("separate", p.separate);
-        row("walls", p.walls);
-        row("reorder", p.reorder);
-        row("total", p.total);
         std::snprintf(buf, sizeof buf, "%-22s %8llu", "pairs",
                       static_cast<unsigned long long>(p.pairs));
         lines.emplace_back(buf);

@@ -555,7 +555,7 @@ void Session::togglePanel(bool& flag, const char* on, const char* off) {
 
 void Session::stepOnce(double now) {
     interaction_.applyHold(world_, now, launchSettings());
-    world_.step();
+    world_.step(world_.solver().dt);
 }
 
 void Session::update(double realSeconds, double now, double budgetMs) {

@@ -5,6 +5,7 @@
 
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
+#include <particle_sandbox/validation.hpp>
 
 #include "time_series_csv.hpp"
 
@@ -17,26 +18,23 @@ SolverSettings effectiveSolver(const Scene& scene, const RunOptions& o) {
     if (o.dt) s.dt = *o.dt;
     if (o.substeps) s.substeps = *o.substeps;
     if (o.broadphase) s.broadphase = *o.broadphase;
-    auto refused = [&](const SolverSettings& probe) -> std::optional<std::string> {
-        try {
-            World w(scene.world, probe);
-        } catch (const InvalidArgument& e) {
-            return std::string(e.what());
+    // World's own reasons, each named after the option that caused it: the mode (also for a
+    // value refused in combination with it), the broadphase, then anything else.
+    const std::vector<SettingProblem> problems = validate(scene.world, s);
+    const auto why = [](const SettingProblem& p) { return "World: " + describe(p); };
+    for (const SettingProblem& p : problems) {
+        if (p.setting == "mode" || p.because == "mode") {
+            throw UsageError("--mode " + std::string(toString(s.mode)) + ": refused (" + why(p) +
+                             ")");
         }
-        return std::nullopt;
-    };
-    SolverSettings mode{};
-    mode.mode = s.mode;
-    if (auto why = refused(mode)) {
-        throw UsageError("--mode " + std::string(toString(s.mode)) + ": refused (" + *why + ")");
     }
-    SolverSettings broad{};
-    broad.broadphase = s.broadphase;
-    if (auto why = refused(broad)) {
-        throw UsageError("--broadphase " + std::string(toString(s.broadphase)) + ": refused (" +
-                         *why + ")");
+    for (const SettingProblem& p : problems) {
+        if (p.setting == "broadphase") {
+            throw UsageError("--broadphase " + std::string(toString(s.broadphase)) + ": refused (" +
+                             why(p) + ")");
+        }
     }
-    if (auto why = refused(s)) throw UsageError("solver settings refused (" + *why + ")");
+    if (!problems.empty()) throw UsageError("solver settings refused (" + why(problems[0]) + ")");
     return s;
 }
 

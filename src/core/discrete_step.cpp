@@ -5,6 +5,7 @@
 #include "broad_phase_all_pairs.hpp"
 #include "broad_phase_auto.hpp"
 #include "parallel.hpp"
+#include "particle_reorder.hpp"
 #include "stage_timer.hpp"
 
 namespace psb::stages {
@@ -86,12 +87,19 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
 void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext& ctx,
                   StepProfile& profile, StepCounters& counters) {
     StageTimer total(profile.total);
+    // Every stage is listed, in pipeline order, even when skipped.
+    double& gravityMs = profile.stage("gravity");
+    double& moveMs = profile.stage("move");
+    double& findPairsMs = profile.stage("find pairs");
+    double& resolveMs = profile.stage("resolve");
+    double& separateMs = profile.stage("separate");
+    double& wallsMs = profile.stage("walls");
     if (def.gravity.x() != 0.0 || def.gravity.y() != 0.0) {
-        StageTimer t(profile.gravity);
+        StageTimer t(gravityMs);
         applyGravity(p, def.gravity, dt, ctx.threads);
     }
     {
-        StageTimer t(profile.move);
+        StageTimer t(moveMs);
         // While the grid is in use, move also writes each particle's cell under the grid's last
         // plan, which findPairs keeps while it fits (broad_phase_grid.hpp, plan reuse).
         const auto cells = ctx.broadPhaseUsed == BroadPhaseKind::Grid
@@ -102,23 +110,41 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
         ctx.cellsFresh = cells.has_value();
     }
     {
-        StageTimer t(profile.findPairs);
+        StageTimer t(findPairsMs);
         findPairs(p, ctx);
     }
     profile.pairs += ctx.pairs.size();
     {
-        StageTimer t(profile.resolve);
+        StageTimer t(resolveMs);
         resolve(p, def, ctx, counters);
     }
     {
-        StageTimer t(profile.separate);
+        StageTimer t(separateMs);
         separate(p, ctx);
     }
     if (def.walls) {
-        StageTimer t(profile.walls);
+        StageTimer t(wallsMs);
         walls(p, def, ctx, counters);
     }
     ++counters.steps;
+}
+
+void discreteSteps(ParticleArrays& p, detail::IdTable& ids, const WorldDef& def, double dt,
+                   int substeps, StepContext& ctx, unsigned& stepsUntilReorder,
+                   StepProfile& profile, StepCounters& counters) {
+    double& reorderMs = profile.stage("reorder");
+    if (p.size() >= kReorderMinParticles) {
+        if (stepsUntilReorder == 0) {
+            StageTimer t(reorderMs);
+            reorderByCell(p, ids, ctx);
+            stepsUntilReorder = kReorderInterval;
+        }
+        --stepsUntilReorder;
+    }
+    const double h = dt / substeps;
+    for (int k = 0; k < substeps; ++k)
+        discreteStep(p, def, h, ctx, profile, counters);
+    profile.total += reorderMs;
 }
 
 }  // namespace psb::stages

@@ -1,6 +1,7 @@
 #pragma once
 // The discrete step: the original program's one-move-one-collision-pass step, done right.
 //
+//   (reorder*) then, per substep:
 //   ┌───────────┐   ┌──────┐   ┌────────────┐   ┌─────────┐   ┌──────────┐   ┌───────┐
 //   │ gravity*  │ → │ move │ → │ find pairs │ → │ resolve │ → │ separate │ → │ walls*│
 //   └───────────┘   └──────┘   └────────────┘   └─────────┘   └──────────┘   └───────┘
@@ -24,6 +25,7 @@
 // turned it around does nothing, and restitution e = 1 conserves kinetic energy exactly
 // (to rounding) in every order.
 
+#include <particle_sandbox/detail/id_table.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
 #include <particle_sandbox/step_profile.hpp>
 #include <particle_sandbox/world_def.hpp>
@@ -64,5 +66,12 @@ void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounter
 /// (added to what it holds, so substeps accumulate).
 void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext& ctx,
                   StepProfile& profile, StepCounters& counters);
+
+/// One World::step in the discrete or substep mode: the storage reorder when it is due
+/// (particle_reorder.hpp; counted in calls of this function, stepsUntilReorder is the world's
+/// state), then `substeps` discrete steps of dt / substeps.
+void discreteSteps(ParticleArrays& p, detail::IdTable& ids, const WorldDef& def, double dt,
+                   int substeps, StepContext& ctx, unsigned& stepsUntilReorder,
+                   StepProfile& profile, StepCounters& counters);
 
 }  // namespace psb::stages

@@ -20,22 +20,25 @@ constexpr double kCellSlack = 1.0 + 1e-9;
 constexpr double kCellSpacings = 1.0;
 // Events per particle between two re-sorts of the particles into cell order.
 constexpr std::uint64_t kResortEvery = 8;
+// Discs up to this many mean spacings across stay in level 0 (one level as before levels
+// existed): cells sized by them cost little more than cells a spacing wide. Measured on the
+// 1:10 mix of exact_gas_bench (radii 1-10 m, packing 0.2, spacing 18 m): one level was faster
+// than levels split at twice the smallest radius.
+constexpr double kLevelZeroSpacings = 1.25;
+// A level above 0 with fewer than one particle per kSparseCells fine cells is sparse (a few big
+// discs); a populous one gets cells of its own size and a thinner skin (setUpLevels).
+constexpr double kSparseCells = 32.0;
+// The skin, as a fraction of the cell, when a populous level lies above level 0 (0.1 and 0.05
+// measured on the 1:10 mix of exact_gas_bench; 0.05 was ~7 % faster).
+constexpr double kCrowdedSkin = 0.05;
 
-template <typename T>
-bool sameArray(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+// Rounds towards minus infinity (cell coordinates may be negative when the grid wraps).
+std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
+    const std::int64_t q = a / b;
+    return (a % b != 0 && (a < 0) != (b < 0)) ? q - 1 : q;
 }
 
 }  // namespace
-
-bool ExactStepper::matches(const ParticleArrays& p, const WorldDef& def) const {
-    return def.width == def_.width && def.height == def_.height && def.walls == def_.walls &&
-           def.restitution == def_.restitution && def.friction == def_.friction &&
-           sameArray(p.x, snapshot_.x) && sameArray(p.y, snapshot_.y) &&
-           sameArray(p.vx, snapshot_.vx) && sameArray(p.vy, snapshot_.vy) &&
-           sameArray(p.invMass, snapshot_.invMass) && sameArray(p.mass, snapshot_.mass) &&
-           sameArray(p.radius, snapshot_.radius) && sameArray(p.id, snapshot_.id);
-}
 
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     def_ = def;
@@ -46,14 +49,23 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     order_.resize(n);
 
     ids_ = p.id;
+    heldHit_.clear();
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
         b = Body{p.x[i],  p.y[i], p.vx[i],
                  p.vy[i], 0.0,    p.radius[i],
                  kNever,  0,      p.invMass[i] == 0.0 ? kHeld : 0u};
-        c = Cold{
-            Event{kNever, 0, 0, Kind::None, 0}, p.mass[i], 0, 0, 0, false, false, 0, p.invMass[i]};
+        c = Cold{Event{kNever, 0, 0, Kind::None, 0},
+                 p.mass[i],
+                 0,
+                 0,
+                 0,
+                 false,
+                 false,
+                 0,
+                 0,
+                 p.invMass[i]};
         order_[i] = i;
         if (def_.walls) {
             // Into the box, as the discrete mode's wall stage would; a particle too wide for
@@ -74,9 +86,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     setUpGrid();
     sortByCell(false);
     eventsSinceSort_ = 0;
-    for (std::uint32_t i = 0; i < n; ++i) {
-        cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
-    }
+    for (std::uint32_t i = 0; i < n; ++i)
+        insertMember(i);
     recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -131,21 +142,194 @@ void ExactStepper::sortByCell(bool midRun) {
         for (Cold& c : cold_) {
             if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
         }
+        for (std::uint32_t& i : heldHit_)
+            i = to[i];
         queue_.reset(2 * n, queue_.bucketWidth());
         for (std::uint32_t k = 0; k < 2 * n; ++k)
             queue_.update(k, times[k]);
         cells_.clearMembers();
-        for (std::uint32_t i = 0; i < n; ++i) {
-            cells_.insert(i, cells_.cell(cold_[i].kx, cold_[i].ky));
+        for (Level& l : upper_)
+            l.cells.clearMembers();
+        for (std::uint32_t i = 0; i < n; ++i)
+            insertMember(i);
+    }
+}
+
+void ExactStepper::assignLevels(double spacing, double& fineDiameter) {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    double rmin = kNever;
+    for (const Body& b : bodies_)
+        rmin = std::min(rmin, b.r);
+    // Level 0 holds every disc the cells would be wide enough for anyway (cells are about a
+    // mean spacing wide): up to kLevelZeroSpacings spacings across, and at least twice the
+    // smallest radius. Above it, levels by factors of two; empty levels are dropped.
+    const double level0 = std::max(2.0 * rmin, 0.5 * kLevelZeroSpacings * spacing);
+    constexpr int kMaxRaw = 64;
+    std::uint8_t raw[kMaxRaw + 1] = {};
+    const auto rawLevel = [&](double r) {
+        int l = 0;
+        for (double limit = level0; r > limit && l < kMaxRaw; limit *= 2.0)
+            ++l;
+        return l;
+    };
+    for (const Body& b : bodies_)
+        raw[rawLevel(b.r)] = 1;
+    std::uint8_t compact[kMaxRaw + 1];
+    std::uint8_t count = 0;
+    for (int l = 0; l <= kMaxRaw; ++l) {
+        compact[l] = count;
+        if (raw[l]) ++count;
+    }
+    levelCount_ = std::max<std::uint8_t>(count, 1);
+    levelRadius_.assign(levelCount_, 0.0);
+    levelMembers_.assign(levelCount_, 0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const std::uint8_t l = compact[rawLevel(bodies_[i].r)];
+        cold_[i].level = l;
+        levelRadius_[l] = std::max(levelRadius_[l], bodies_[i].r);
+        ++levelMembers_[l];
+    }
+    fineDiameter = 2.0 * levelRadius_[0];
+}
+
+void ExactStepper::setUpLevels() {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    const double sx = cells_.faceX(1) - cells_.faceX(0), sy = cells_.faceY(1) - cells_.faceY(0);
+    reach_.assign(std::size_t{levelCount_} * levelCount_, 1);
+    for (std::uint8_t a = 0; a < levelCount_; ++a) {
+        for (std::uint8_t b = 0; b < levelCount_; ++b) {
+            if (a == 0 && b == 0) continue;  // the cells are sized for it: the 3 × 3 search
+            // Centres in cells k apart along x are at least (k − 1)·sx − 2·skin apart: they can
+            // touch only if that is at most the sum of the radii.
+            const double sigma = (levelRadius_[a] + levelRadius_[b]) * kCellSlack;
+            const double kx = 1.0 + std::floor((sigma + 2.0 * skinX_) / sx);
+            const double ky = 1.0 + std::floor((sigma + 2.0 * skinY_) / sy);
+            // Capped far beyond any grid (a range wider than the grid is clipped to it), so that
+            // a disc of any size gives a representable reach.
+            reach_[a * levelCount_ + b] =
+                static_cast<std::int64_t>(std::min(std::max(kx, ky), 1e15));
         }
+    }
+    upper_.resize(levelCount_ - 1u);
+    for (std::uint8_t l = 1; l < levelCount_; ++l) {
+        Level& level = upper_[l - 1];
+        // A sparse level (a few big discs) is listed in blocks as wide as a small disc's reach
+        // to it, so that a small disc reads a few empty lists, not (2 reach + 1)²; a populous
+        // one in the fine cells themselves, so that no one tests more candidates than its
+        // reach holds (a head read costs far less than a candidate's test).
+        level.block = populous(l) ? 1 : 2 * reach(0, l) + 1;
+        const auto blocks = [&](std::int64_t cells) {
+            return std::max<std::int64_t>(1, (cells + level.block - 1) / level.block);
+        };
+        const auto b = static_cast<double>(level.block);
+        level.cells.reset(0.0, 0.0, sx * b, sy * b, blocks(cells_.nx()), blocks(cells_.ny()),
+                          cells_.wraps(), n);
+    }
+}
+
+bool ExactStepper::populous(std::uint8_t level) const {
+    // More than one particle in kSparseCells fine cells.
+    return static_cast<double>(levelMembers_[level]) * kSparseCells >=
+           static_cast<double>(cells_.nx() * cells_.ny());
+}
+
+bool ExactStepper::populousUpperLevel() const {
+    for (std::uint8_t l = 1; l < levelCount_; ++l) {
+        if (populous(l)) return true;
+    }
+    return false;
+}
+
+std::uint32_t ExactStepper::memberCell(std::uint32_t i) const {
+    const Cold& c = cold_[i];
+    if (c.level == 0) return cells_.cell(c.kx, c.ky);
+    const Level& l = upper_[c.level - 1];
+    return l.cells.cell(floorDiv(c.kx, l.block), floorDiv(c.ky, l.block));
+}
+
+void ExactStepper::insertMember(std::uint32_t i) {
+    const std::uint8_t level = cold_[i].level;
+    CellList& list = level == 0 ? cells_ : upper_[level - 1].cells;
+    list.insert(i, memberCell(i));
+}
+
+template <typename F>
+void ExactStepper::forCells(std::uint8_t level, std::int64_t x0, std::int64_t x1, std::int64_t y0,
+                            std::int64_t y1, F&& f) const {
+    const CellList& list = listOf(level);
+    if (level > 0) {
+        const std::int64_t b = upper_[level - 1].block;
+        x0 = floorDiv(x0, b);
+        x1 = floorDiv(x1, b);
+        y0 = floorDiv(y0, b);
+        y1 = floorDiv(y1, b);
+    }
+    if (list.wraps()) {
+        // A range wider than the grid would visit cells twice.
+        x1 = std::min(x1, x0 + list.nx() - 1);
+        y1 = std::min(y1, y0 + list.ny() - 1);
+    } else {
+        x0 = std::max<std::int64_t>(x0, 0);
+        y0 = std::max<std::int64_t>(y0, 0);
+        x1 = std::min(x1, list.nx() - 1);
+        y1 = std::min(y1, list.ny() - 1);
+    }
+    for (std::int64_t ky = y0; ky <= y1; ++ky) {
+        for (std::int64_t kx = x0; kx <= x1; ++kx) {
+            const std::uint32_t c = list.cell(kx, ky);
+            if (c != CellList::kNone) f(c);
+        }
+    }
+}
+
+void ExactStepper::scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
+                             std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
+                             Event& best) {
+    const CellList& list = listOf(level);
+    constexpr int kCells = 16;
+    std::uint32_t cells[kCells];
+    int count = 0;
+    forCells(level, x0, x1, y0, y1, [&](std::uint32_t c) {
+        cells[count++] = c;
+        if (count == kCells) {
+            scanCells(i, now, ax, ay, list, cells, count, best);
+            count = 0;
+        }
+    });
+    if (count > 0) scanCells(i, now, ax, ay, list, cells, count, best);
+}
+
+void ExactStepper::scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best) {
+    const Cold& c = cold_[i];
+    for (std::uint8_t l = 0; l < levelCount_; ++l) {
+        const std::int64_t k = reach(c.level, l);
+        scanBlock(i, now, ax, ay, l, c.kx - k, c.kx + k, c.ky - k, c.ky + k, best);
     }
 }
 
 void ExactStepper::setUpGrid() {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
+    // Unbounded, so the grid folds onto itself (cell_list.hpp) and need not cover every
+    // particle: it is sized for the bulk of them (the middle 90 % along each axis), so
+    // that one particle flung far away does not make every cell huge.
+    const auto spread = [&](auto coord) {
+        if (n < 2) return 0.0;
+        std::vector<double> v(n);
+        for (std::uint32_t i = 0; i < n; ++i)
+            v[i] = coord(bodies_[i]);
+        const auto lo = v.begin() + n / 20, hi = v.begin() + (n - 1 - n / 20);
+        std::nth_element(v.begin(), lo, v.end());
+        const double a = *lo;
+        std::nth_element(v.begin(), hi, v.end());
+        return *hi - a;
+    };
+    double bulkW = def_.width, bulkH = def_.height;
+    if (!def_.walls) {
+        bulkW = spread([](const Body& b) { return b.x; });
+        bulkH = spread([](const Body& b) { return b.y; });
+    }
     double dmax = 0.0;
-    for (const Body& b : bodies_)
-        dmax = std::max(dmax, 2.0 * b.r);
+    assignLevels(std::sqrt(bulkW * bulkH / std::max(n, 1u)), dmax);
     const double minSide = std::max(dmax * kCellSlack, 1e-300);
     // At most a few cells per particle: enough for the 3 × 3 searches to see ~1 particle each,
     // and memory stays O(N) however large the box.
@@ -165,22 +349,8 @@ void ExactStepper::setUpGrid() {
         cells_.reset(0.0, 0.0, def_.width / static_cast<double>(nx),
                      def_.height / static_cast<double>(ny), nx, ny, false, n);
     } else {
-        // Unbounded, so the grid folds onto itself (cell_list.hpp) and need not cover every
-        // particle: it is sized for the bulk of them (the middle 90 % along each axis), so
-        // that one particle flung far away does not make every cell huge.
-        const auto spread = [&](auto coord) {
-            if (n < 2) return 0.0;
-            std::vector<double> v(n);
-            for (std::uint32_t i = 0; i < n; ++i)
-                v[i] = coord(bodies_[i]);
-            const auto lo = v.begin() + n / 20, hi = v.begin() + (n - 1 - n / 20);
-            std::nth_element(v.begin(), lo, v.end());
-            const double a = *lo;
-            std::nth_element(v.begin(), hi, v.end());
-            return *hi - a;
-        };
-        const double w = spread([](const Body& b) { return b.x; }) + 2.0 * minSide;
-        const double h = spread([](const Body& b) { return b.y; }) + 2.0 * minSide;
+        const double w = bulkW + 2.0 * minSide;
+        const double h = bulkH + 2.0 * minSide;
         double side = std::max(minSide, kCellSpacings * std::sqrt(w * h / std::max(n, 1u)));
         side = std::max(side, std::sqrt(w * h / maxCells));
         const auto count = [&](double extent) {
@@ -195,10 +365,18 @@ void ExactStepper::setUpGrid() {
     const double sx = cells_.faceX(1) - cells_.faceX(0), sy = cells_.faceY(1) - cells_.faceY(0);
     skinX_ = std::max(0.0, 0.5 * (sx - minSide));
     skinY_ = std::max(0.0, 0.5 * (sy - minSide));
+    if (populousUpperLevel()) {
+        // Every reach across levels grows by twice the skin: with many particles above level
+        // 0 (cells sized by their spacing, not by level 0's discs), a skin of a tenth of the
+        // cell keeps most reaches at one cell (the 3 × 3 search) for a few more cell moves.
+        skinX_ = std::min(skinX_, kCrowdedSkin * sx);
+        skinY_ = std::min(skinY_, kCrowdedSkin * sy);
+    }
     for (std::uint32_t i = 0; i < n; ++i) {
         cold_[i].kx = cells_.coordX(bodies_[i].x);
         cold_[i].ky = cells_.coordY(bodies_[i].y);
     }
+    setUpLevels();
 }
 
 void ExactStepper::recordPlacedOverlaps() {
@@ -214,11 +392,12 @@ void ExactStepper::recordPlacedOverlaps() {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     for (std::uint32_t i = 0; i < n; ++i) {
         const Body& a = bodies_[i];
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-            for (std::int64_t dx = -1; dx <= 1; ++dx) {
-                const std::uint32_t c = cells_.cell(cold_[i].kx + dx, cold_[i].ky + dy);
-                if (c == CellList::kNone) continue;
-                for (std::uint32_t q = cells_.head(c); q != CellList::kNone; q = cells_.next(q)) {
+        const Cold& ac = cold_[i];
+        for (std::uint8_t l = 0; l < levelCount_; ++l) {
+            const CellList& list = listOf(l);
+            const std::int64_t k = reach(ac.level, l);
+            forCells(l, ac.kx - k, ac.kx + k, ac.ky - k, ac.ky + k, [&](std::uint32_t c) {
+                for (std::uint32_t q = list.head(c); q != CellList::kNone; q = list.next(q)) {
                     Body& b = bodies_[q];
                     if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) continue;
                     const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
@@ -229,7 +408,7 @@ void ExactStepper::recordPlacedOverlaps() {
                     bodies_[i].flags |= kPlacedOverlapping;
                     b.flags |= kPlacedOverlapping;
                 }
-            }
+            });
         }
     }
 }
@@ -244,7 +423,8 @@ void ExactStepper::advance(Body& b, double t) const {
 }
 
 void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
-                             const std::uint32_t* cells, int cellCount, Event& best) {
+                             const CellList& list, const std::uint32_t* cells, int cellCount,
+                             Event& best) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
@@ -258,14 +438,14 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
         while (count < kBatch) {
             if (j == CellList::kNone) {
                 if (k == cellCount) break;
-                j = cells_.head(cells[k++]);
+                j = list.head(cells[k++]);
                 continue;
             }
             if (j != i) {
                 members[count++] = j;
                 __builtin_prefetch(&bodies_[j]);
             }
-            j = cells_.next(j);
+            j = list.next(j);
         }
         for (int m = 0; m < count; ++m) {
             const std::uint32_t q = members[m];
@@ -329,15 +509,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
             if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
         }
     }
-    std::uint32_t around[9];
-    int count = 0;
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            const std::uint32_t c = cells_.cell(ac.kx + dx, ac.ky + dy);
-            if (c != CellList::kNone) around[count++] = c;
-        }
-    }
-    scanCells(i, now, ax, ay, around, count, best);
+    scanNeighbours(i, now, ax, ay, best);
     cold_[i].coll = best;
     bodies_[i].nextColl = best.time;
     queue_.update(2 * i, best.time);
@@ -420,14 +592,19 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         ++counters.collisions;
         ++a.count;
         ++b.count;
-        if ((b.flags & kHeld) && ++cold_[i].heldHits >= kJamLimit) a.flags |= kJammed;
-        if ((a.flags & kHeld) && ++cold_[j].heldHits >= kJamLimit) b.flags |= kJammed;
+        if (b.flags & kHeld) countHeldHit(i);
+        if (a.flags & kHeld) countHeldHit(j);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
     }
     predictCollision(i, ev.time);
     predictCollision(j, ev.time);
     predictCell(i, ev.time);
     predictCell(j, ev.time);
+}
+
+void ExactStepper::countHeldHit(std::uint32_t i) {
+    if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
+    if (cold_[i].heldHits >= kJamLimit) bodies_[i].flags |= kJammed;
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -467,49 +644,59 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
 void ExactStepper::handleCell(std::uint32_t i, double now) {
     Cold& a = cold_[i];
     ++stats_.cells;
-    // The cells that just came into i's 3 × 3 neighbourhood: the far column (or row) in the
-    // direction of motion. Everything else around i was searched by its last full prediction,
-    // whose earliest result is still scheduled, so only these three can bring an earlier event.
-    std::int64_t fx[3], fy[3];
-    switch (cold_[i].cellSide) {
+    const std::uint32_t oldCell = memberCell(i);
+    const std::int8_t side = a.cellSide;  // predictCell below overwrites it
+    switch (side) {
         case 0:
             --a.kx;
-            fx[0] = fx[1] = fx[2] = a.kx - 1;
-            fy[0] = a.ky - 1, fy[1] = a.ky, fy[2] = a.ky + 1;
             break;
         case 1:
             ++a.kx;
-            fx[0] = fx[1] = fx[2] = a.kx + 1;
-            fy[0] = a.ky - 1, fy[1] = a.ky, fy[2] = a.ky + 1;
             break;
         case 2:
             --a.ky;
-            fy[0] = fy[1] = fy[2] = a.ky - 1;
-            fx[0] = a.kx - 1, fx[1] = a.kx, fx[2] = a.kx + 1;
             break;
         default:
             ++a.ky;
-            fy[0] = fy[1] = fy[2] = a.ky + 1;
-            fx[0] = a.kx - 1, fx[1] = a.kx, fx[2] = a.kx + 1;
             break;
     }
-    cells_.erase(i);
-    cells_.insert(i, cells_.cell(a.kx, a.ky));
+    if (a.level == 0) {
+        cells_.erase(i);
+        cells_.insert(i, cells_.cell(a.kx, a.ky));
+    } else if (const std::uint32_t cell = memberCell(i); cell != oldCell) {
+        CellList& list = upper_[a.level - 1].cells;
+        list.erase(i);
+        list.insert(i, cell);
+    }
     predictCell(i, now);
 
+    // The cells that just came within reach at each level: the far column (or row) in the
+    // direction of motion (for two of level 0, the three cells that just came into i's 3 × 3
+    // neighbourhood). Everything else within reach was searched by i's last full prediction,
+    // whose earliest result is still scheduled, so only these can bring an earlier event.
     const Body& b = bodies_[i];
     const double h = now - b.t;
     const double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
-    Event best = cold_[i].coll;
-    std::uint32_t fresh[3];
-    int count = 0;
-    for (int k = 0; k < 3; ++k) {
-        const std::uint32_t c = cells_.cell(fx[k], fy[k]);
-        if (c != CellList::kNone) fresh[count++] = c;
+    Event best = a.coll;
+    for (std::uint8_t l = 0; l < levelCount_; ++l) {
+        const std::int64_t k = reach(a.level, l);
+        switch (side) {
+            case 0:
+                scanBlock(i, now, ax, ay, l, a.kx - k, a.kx - k, a.ky - k, a.ky + k, best);
+                break;
+            case 1:
+                scanBlock(i, now, ax, ay, l, a.kx + k, a.kx + k, a.ky - k, a.ky + k, best);
+                break;
+            case 2:
+                scanBlock(i, now, ax, ay, l, a.kx - k, a.kx + k, a.ky - k, a.ky - k, best);
+                break;
+            default:
+                scanBlock(i, now, ax, ay, l, a.kx - k, a.kx + k, a.ky + k, a.ky + k, best);
+                break;
+        }
     }
-    scanCells(i, now, ax, ay, fresh, count, best);
-    if (best.time < cold_[i].coll.time) {
-        cold_[i].coll = best;
+    if (best.time < a.coll.time) {
+        a.coll = best;
         bodies_[i].nextColl = best.time;
         queue_.update(2 * i, best.time);
     }
@@ -559,55 +746,63 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
     }
 }
 
-void ExactStepper::sync(ParticleArrays& p, double t) {
+void ExactStepper::sync(ParticleArrays& p) {
+    // One pass in the stepper's order; every particle's state at the end of the last step.
     const std::size_t n = bodies_.size();
+    const double t = clock_;
+    const Body* bodies = bodies_.data();
+    const std::uint32_t* order = order_.data();
+    double* x = p.x.data();
+    double* y = p.y.data();
+    double* vx = p.vx.data();
+    double* vy = p.vy.data();
     for (std::size_t k = 0; k < n; ++k) {
-        const Body& b = bodies_[k];
-        const std::uint32_t i = order_[k];
+        const Body& b = bodies[k];
+        const std::uint32_t i = order[k];
         const double h = t - b.t;
-        p.x[i] = b.x + b.vx * h;
-        p.y[i] = b.y + b.vy * h;
-        p.vx[i] = b.vx;
-        p.vy[i] = b.vy;
+        x[i] = b.x + b.vx * h;
+        y[i] = b.y + b.vy * h;
+        vx[i] = b.vx;
+        vy[i] = b.vy;
     }
-    snapshot_.x = p.x;
-    snapshot_.y = p.y;
-    snapshot_.vx = p.vx;
-    snapshot_.vy = p.vy;
-    snapshot_.invMass = p.invMass;
-    snapshot_.mass = p.mass;
-    snapshot_.radius = p.radius;
-    snapshot_.id = p.id;
+    syncOwed_ = false;
 }
 
 void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
                         StepCounters& counters) {
     StageTimer total(profile.total);
-    if (stale_ || !matches(p, def)) {
-        StageTimer t(profile.findPairs);
+    double& rebuildMs = profile.stage("rebuild");
+    double& eventsMs = profile.stage("events");
+    profile.stage("sync");  // added by World when the state is read
+    if (stale_) {
+        // The world's arrays must hold the current state before they are read back in (after
+        // an exhausted budget the stepper invalidates itself with a sync still owed).
+        if (syncOwed_) sync(p);
+        StageTimer t(rebuildMs);
         rebuild(p, def);
         // Pairs placed overlapping are part of the state: report them, not only the overlaps
         // met at collisions (which rounding keeps at a few ulps).
         counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
     }
     stats_ = {};
-    for (Body& b : bodies_)
-        b.flags &= ~kJammed;
-    for (Cold& c : cold_)
-        c.heldHits = 0;
+    // The jam guard counts per step: clear only the particles it counted in the last one.
+    for (const std::uint32_t i : heldHit_) {
+        bodies_[i].flags &= ~kJammed;
+        cold_[i].heldHits = 0;
+    }
+    heldHit_.clear();
     maxOverlap_ = counters.maxOverlap;
     const double tEnd = clock_ + dt;
     const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
     {
-        StageTimer t(profile.resolve);
+        StageTimer t(eventsMs);
         runEvents(tEnd, counters, budget);
     }
     clock_ = tEnd;
+    syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
     counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale;
     ++counters.steps;
-    StageTimer t(profile.move);
-    sync(p, tEnd);
 }
 
 std::size_t ExactStepper::memoryBytes() const {
@@ -615,13 +810,12 @@ std::size_t ExactStepper::memoryBytes() const {
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
                         queue_.memoryBytes();
+    for (const Level& level : upper_)
+        bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one
     // pointer per bucket.
     bytes += overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(double) + sizeof(void*)) +
              overlapContact_.bucket_count() * sizeof(void*);
-    // A copy of the particle arrays as the last step left them (to see changes made between
-    // steps), counted by particle so that this errs high, not low, where none is kept.
-    bytes += bodies_.capacity() * (7 * sizeof(double) + sizeof(Color) + sizeof(ParticleId));
     return bytes;
 }
 

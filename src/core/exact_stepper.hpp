@@ -4,7 +4,7 @@
 //
 //   World::step(dt)
 //     │
-//     ├─ state stale? (first step, or anything in the world changed since the last step:
+//     ├─ state stale? (first step, or World said something changed since the last step:
 //     │   add/remove, a setter, box/walls/restitution/friction, a step in another mode)
 //     │        ──yes──► rebuild: copy particles, clamp into the box, sort them into cell
 //     │                 order, predict every particle's two events, fill the queue
@@ -26,13 +26,15 @@
 //     │     │               │ into its 3 × 3 neighbourhood for an earlier collision           │
 //     │     └───────────────┴─────────────────────────────────────────────────────────────────┘
 //     │
-//     └─ sync: write every particle's state at t + dt into the world's arrays, and keep a
-//        snapshot of them to detect any change before the next step
+//     └─ nothing else: the world's arrays are written only when someone reads them
+//        (World::particles(), get(), a mutation, ...): sync() writes every particle's
+//        state at the end of the last step in one pass. A run of frames that nobody looks
+//        at costs its events and nothing per particle.
 //
 // Lazy advance (Lubachevsky 1991). Each particle keeps the position it had at its last
 // velocity change; an event touches only its one or two particles, so an event costs a search
 // of the cells around a particle and an O(1)–O(log N) queue update, not O(N). Positions for
-// the outside world are computed at the end of the step and never fed back, so how dt is
+// the outside world are computed when it reads them (sync) and never fed back, so how dt is
 // chopped does not change the trajectory (only, in the last bits, the time t + dt itself).
 //
 // Two scheduled events per particle (after Smallenburg 2022). A particle's collision key holds
@@ -43,11 +45,26 @@
 // of i, which searches the newly adjacent cells. A candidate (i, j) later than j's own scheduled
 // collision is not even kept: j is predicted again against everything around it by then.
 //
-// Cells with a skin. Cells are at least one largest diameter plus twice a skin wide, and a
-// particle moves to the next cell only once its centre is a skin's width past the face (not at
-// the face). Two touching discs are then still in neighbouring cells, and a particle that just
-// moved is a skin inside its new cell, so it does not flicker across a face: about half as
-// many cell moves as with plain cells at the same search cost.
+// Cells with a skin. Cells are at least one largest diameter (of level 0, below) plus twice a
+// skin wide, and a particle moves to the next cell only once its centre is a skin's width past
+// the face (not at the face). Two touching discs of level 0 are then still in neighbouring
+// cells, and a particle that just moved is a skin inside its new cell, so it does not flicker
+// across a face: about half as many cell moves as with plain cells at the same search cost.
+//
+// Size levels. Cells sized by the largest disc would make a gas with one big disc search
+// cells hundreds of small discs wide. Instead radii fall into levels: level 0 holds every disc
+// up to 1.25 mean spacings across (the cells are about a spacing wide anyway) or twice the
+// smallest radius, whichever is larger, and levels above it double (empty ones dropped). The fine
+// grid is sized by level 0 alone, and every particle, whatever its level, has a fine cell and
+// makes fine cell moves. Particles of levels a and b are neighbours when their fine cells are
+// at most reach(a, b) apart along each axis, the distance at which two such discs can still
+// touch (1 for two of level 0: the 3 × 3 search). The relation is symmetric and changes only
+// at a cell move of one of the two, which searches the strip of cells that just came within
+// reach, at every level: that is all the argument above needs. Level 0 is listed in the fine
+// cells; level l > 0 in cells of block × block fine cells (block = 2 reach(0, l) + 1), so that
+// a small disc looks at a few cells of each upper level, and a big disc's search is the
+// (2 reach + 1)² fine cells around it, mostly inside the disc itself and so empty. A scene of
+// one size has one level and runs the code it ran before levels existed, bit for bit.
 //
 // Memory. Events come in time order, which is random in space, so at 10^5 particles nearly
 // every particle an event touches is a cache miss. What an event reads about a neighbour is one
@@ -142,22 +159,30 @@ struct CollisionRecord {
 
 class ExactStepper {
   public:
-    /// Advances `p` by dt seconds: on return every particle is at its exact state at t + dt.
-    /// Rebuilds first if `p` or `def` differ from what the last step left. Updates the
-    /// counters (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events).
+    /// Advances the event state by dt seconds. Rebuilds it from `p` and `def` first if
+    /// invalidate() was called since the last step (or there was none). Does not write `p`:
+    /// the state at the end of the step is owed to it until sync(). Updates the counters
+    /// (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events).
     void step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
               StepCounters& counters);
 
-    /// Forces a rebuild at the next step.
+    /// Whether `p` has not yet received the state of the last step.
+    [[nodiscard]] bool owesSync() const { return syncOwed_; }
+    /// Writes every particle's position and velocity at the end of the last step into `p`
+    /// (the arrays the last rebuild read): one pass over the particles.
+    void sync(ParticleArrays& p);
+
+    /// Forces a rebuild at the next step: the world calls it whenever it changes anything the
+    /// stepper read (particles, box, walls, material laws), after taking the owed sync.
     void invalidate() { stale_ = true; }
 
     /// Appends every resolved collision to `log` (nullptr to stop). Indices are storage
     /// indices of `p`; times restart from 0 at each rebuild.
     void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
 
-    /// Bytes held by the event state (per-particle records, cells, queue, placed overlaps, the
-    /// arrays as the last step left them): what a copy of a world in this mode carries besides
-    /// its own arrays. Small bookkeeping vectors are left out.
+    /// Bytes held by the event state (per-particle records, every level's cells, the queue,
+    /// placed overlaps): what a copy of a world in this mode carries besides its own arrays.
+    /// Small bookkeeping vectors are left out.
     [[nodiscard]] std::size_t memoryBytes() const;
 
     /// Events of each kind processed by the last step.
@@ -198,18 +223,44 @@ class ExactStepper {
         std::int64_t kx, ky;     // cell coordinates
         std::int8_t cellSide;    // the face its next cell event crosses: -x, +x, -y, +y
         bool pinX, pinY;         // does not fit between the walls along this axis
+        std::uint8_t level;      // its size class (see Size levels)
         std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
         double w;                // inverse mass, 0 = held
     };
+    static_assert(sizeof(Cold) == 64);
 
-    [[nodiscard]] bool matches(const ParticleArrays& p, const WorldDef& def) const;
+    // A size class above level 0: its members are listed in cells of block × block fine cells
+    // (cells_ is level 0's list and the fine grid everyone's cell moves follow).
+    struct Level {
+        CellList cells;
+        std::int64_t block = 1;
+    };
+
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void setUpGrid();
     void sortByCell(bool midRun);
     [[nodiscard]] double bucketWidth() const;
     void advance(Body& b, double t) const;
-    void scanCells(std::uint32_t i, double now, double ax, double ay, const std::uint32_t* cells,
-                   int cellCount, Event& best);
+    void scanCells(std::uint32_t i, double now, double ax, double ay, const CellList& list,
+                   const std::uint32_t* cells, int cellCount, Event& best);
+    void assignLevels(double spacing, double& fineDiameter);
+    void setUpLevels();
+    [[nodiscard]] bool populous(std::uint8_t level) const;
+    [[nodiscard]] bool populousUpperLevel() const;
+    [[nodiscard]] std::int64_t reach(std::uint8_t a, std::uint8_t b) const {
+        return reach_[a * levelCount_ + b];
+    }
+    [[nodiscard]] const CellList& listOf(std::uint8_t level) const {
+        return level == 0 ? cells_ : upper_[level - 1].cells;
+    }
+    [[nodiscard]] std::uint32_t memberCell(std::uint32_t i) const;
+    void insertMember(std::uint32_t i);
+    template <typename F>
+    void forCells(std::uint8_t level, std::int64_t x0, std::int64_t x1, std::int64_t y0,
+                  std::int64_t y1, F&& f) const;
+    void scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
+                   std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, Event& best);
+    void scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best);
     void recordPlacedOverlaps();
     [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
         return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
@@ -222,7 +273,7 @@ class ExactStepper {
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
-    void sync(ParticleArrays& p, double t);
+    void countHeldHit(std::uint32_t i);
 
     WorldDef def_;
     bool stale_ = true;
@@ -233,8 +284,15 @@ class ExactStepper {
     std::vector<Cold> cold_;
     std::vector<std::uint32_t> order_;
     std::vector<ParticleId> ids_;
-    CellList cells_;
+    CellList cells_;                    // level 0's members; the fine grid of every cell move
     double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
+    std::vector<Level> upper_;          // levels 1, 2, ...
+    std::uint8_t levelCount_ = 1;
+    // reach_[a · levelCount_ + b]: how many fine cells apart (per axis) a particle of level a
+    // and one of level b may be and still touch; 1 for two of level 0.
+    std::vector<std::int64_t> reach_;
+    std::vector<double> levelRadius_;          // largest radius of each level
+    std::vector<std::uint32_t> levelMembers_;  // particles of each level
     EventQueue queue_;
     std::uint64_t eventsSinceSort_ = 0;
     double maxOverlap_ = 0.0;
@@ -244,9 +302,9 @@ class ExactStepper {
     // storage indices (order_), with the contact distance they keep until they are found apart.
     std::unordered_map<std::uint64_t, double> overlapContact_;
     double placedOverlap_ = 0.0;  // the deepest of those overlaps, metres
-
-    // What the last step left in the world's arrays, to detect any change made between steps.
-    ParticleArrays snapshot_;
+    bool syncOwed_ = false;       // the world's arrays do not hold the state at clock_ yet
+    // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
+    std::vector<std::uint32_t> heldHit_;
 };
 
 }  // namespace psb::exact

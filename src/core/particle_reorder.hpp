@@ -16,13 +16,14 @@
 
 #include <particle_sandbox/detail/id_table.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
+#include <particle_sandbox/world.hpp>
 
 #include "step_context.hpp"
 
 namespace psb {
 
-inline constexpr std::size_t kReorderMinParticles = 4096;
-inline constexpr unsigned kReorderInterval = 32;
+// kReorderMinParticles and kReorderInterval are public (world.hpp): benchmarks time whole
+// intervals.
 
 /// Sorts `p` by grid cell in place and relocates every moved id in `ids`. Uses ctx's grid as
 /// scratch (its pair lists are invalid afterwards until the next build).

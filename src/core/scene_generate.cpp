@@ -8,34 +8,6 @@
 namespace psb::detail {
 namespace {
 
-/// SplitMix64 (Steele, Lea & Flood 2014): tiny, fast, fully specified, good enough here.
-class SplitMix64 {
-  public:
-    explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (state_ += 0x9E3779B97F4A7C15ULL);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return z ^ (z >> 31);
-    }
-    /// Uniform in [0, 1), 53 random bits.
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    /// Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; the bias is below 2^-64·n).
-    std::uint64_t below(std::uint64_t n) {
-        __extension__ using U128 = unsigned __int128;
-        return static_cast<std::uint64_t>((static_cast<U128>(next()) * n) >> 64);
-    }
-    /// Standard normal by Box–Muller (one of the pair; simplicity over speed).
-    double normal() {
-        const double u1 = 1.0 - uniform();  // (0, 1]: log stays finite
-        const double u2 = uniform();
-        return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * std::numbers::pi * u2);
-    }
-
-  private:
-    std::uint64_t state_;
-};
-
 // Per axis at most 2^31 sites, so a site index (ix · ny + iy) fits in 64 bits.
 constexpr double kMaxSitesPerAxis = 2147483648.0;
 

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/validation.hpp>
 
 #include "json_reader.hpp"
 #include "nearest_name.hpp"
@@ -277,30 +278,23 @@ void readSolver(const Reader& r, const json& j, SolverSettings& s) {
     }
 }
 
-/// Asks World itself whether it accepts the solver settings, one field at a time, so that a
-/// mode or broadphase this build lacks is reported at its JSON path with World's reason.
+/// Asks the core whether a World would accept the settings (validate(), no world made), so that
+/// a mode or broadphase this build lacks, or a combination it refuses, is reported at its JSON
+/// path with World's reason.
 void checkWorldAccepts(const Reader& r, const WorldDef& def, const SolverSettings& s) {
-    auto refusal = [&](const SolverSettings& probe) -> std::optional<std::string> {
-        try {
-            World w(def, probe);
-        } catch (const InvalidArgument& e) {
-            return std::string(e.what());
-        }
-        return std::nullopt;
-    };
-    SolverSettings mode{};
-    mode.mode = s.mode;
-    if (auto why = refusal(mode)) r.fail("solver.mode", "refused (" + *why + ")");
-    SolverSettings broad{};
-    broad.broadphase = s.broadphase;
-    if (auto why = refusal(broad)) {
-        r.fail("solver.broadphase", "refused (" + *why + ")");
+    const std::vector<SettingProblem> problems = validate(def, s);
+    const auto why = [](const SettingProblem& p) { return "refused (World: " + describe(p) + ")"; };
+    for (const SettingProblem& p : problems) {
+        if (p.setting == "mode" || p.because == "mode") r.fail("solver.mode", why(p));
     }
-    if (auto why = refusal(s)) r.fail("solver", "refused (" + *why + ")");
+    for (const SettingProblem& p : problems) {
+        if (p.setting == "broadphase") r.fail("solver.broadphase", why(p));
+    }
+    if (!problems.empty()) r.fail("solver", why(problems.front()));
 }
 
-ParticleDef readParticle(const Reader& r, const json& j, const std::string& path) {
-    r.object(j, path, {"x", "y", "vx", "vy", "mass", "radius", "color"});
+ParticleDef readParticle(const Reader& r, const json& j, const std::string& path, bool& trail) {
+    r.object(j, path, {"x", "y", "vx", "vy", "mass", "radius", "color", "trail"});
     ParticleDef d;
     d.position = {r.number(r.require(j, path, "x"), member(path, "x")),
                   r.number(r.require(j, path, "y"), member(path, "y"))};
@@ -309,6 +303,8 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
     d.mass = r.mass(r.require(j, path, "mass"), member(path, "mass"));
     d.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
     if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
+    trail = false;
+    if (const json* v = Reader::find(j, "trail")) trail = r.boolean(*v, member(path, "trail"));
     return d;
 }
 
@@ -482,7 +478,9 @@ Scene parseScene(std::string_view text, std::string_view source) {
         }
         s.particles.reserve(v->size());
         for (std::size_t i = 0; i < v->size(); ++i) {
-            s.particles.push_back(readParticle(r, (*v)[i], element("particles", i)));
+            bool trail = false;
+            s.particles.push_back(readParticle(r, (*v)[i], element("particles", i), trail));
+            if (trail) s.trails.push_back(i);
             origins.push_back({"particles", i});
         }
     }

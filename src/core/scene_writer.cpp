@@ -5,6 +5,7 @@
 // "-0.0" keeps the sign of a negative zero, which "-0" (an integer) would lose. Save then load
 // therefore reproduces every bit of the state. One particle per line keeps files diffable.
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -87,6 +88,9 @@ std::string serializeScene(const Scene& s) {
         appendField(out, ", \"radius\": ", p.radius, "particle radius");
         out += ", \"color\": ";
         appendColor(out, p.color);
+        if (std::find(s.trails.begin(), s.trails.end(), i) != s.trails.end()) {
+            out += ", \"trail\": true";
+        }
         out += '}';
     }
     out += s.particles.empty() ? "]\n}\n" : "\n  ]\n}\n";

@@ -1,5 +1,7 @@
 #include <particle_sandbox/world.hpp>
 
+#include <particle_sandbox/validation.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -9,7 +11,6 @@
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
 #include "exact_stepper.hpp"
-#include "particle_reorder.hpp"
 #include "stage_timer.hpp"
 #include "step_context.hpp"
 #include "validate.hpp"
@@ -17,45 +18,16 @@
 namespace psb {
 
 using detail::requireFinite;
-using detail::requireInRange;
 using detail::requirePositive;
 
 namespace {
 
-void validateDef(const WorldDef& def, const char* where) {
-    requirePositive(def.width, where, "width");
-    requirePositive(def.height, where, "height");
-    requireFinite(def.gravity, where, "gravity");
-    requireInRange(def.restitution, 0.0, 1.0, where, "restitution");
-    if (!std::isfinite(def.friction) || def.friction < 0.0) {
-        detail::fail(where, "friction", "must be finite and >= 0 " + detail::got(def.friction));
-    }
-}
-
-void validateSolver(const SolverSettings& s, const char* where) {
-    requirePositive(s.dt, where, "dt");
-    if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
-        detail::fail(where, "substeps",
-                     "must be in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
-                         std::to_string(s.substeps) + ")");
-    }
-    // An enumerator outside the lists (a cast from an integer) would make step() do nothing.
-    if (toString(s.mode) == "?") detail::fail(where, "mode", "is not a known step mode");
-    if (toString(s.broadphase) == "?") {
-        detail::fail(where, "broadphase", "is not a known broadphase");
-    }
-}
-
-// The exact mode flies particles in straight lines between events; under gravity they would fly
-// parabolas, which it does not predict.
-void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const char* where) {
-    if (s.mode == StepMode::Exact && (gravity.x() != 0.0 || gravity.y() != 0.0)) {
-        std::ostringstream os;
-        os.precision(17);
-        os << "must be zero in 'exact' mode (got [" << gravity.x() << ", " << gravity.y()
-           << "]): the event-driven step does not support gravity; use 'discrete' or "
-              "'substep' for a world with gravity";
-        detail::fail(where, "gravity", os.str());
+/// Throws InvalidArgument for the first problem validate() finds.
+void require(const WorldDef& def, const SolverSettings& solver, const char* where) {
+    const std::vector<SettingProblem> problems = validate(def, solver);
+    if (!problems.empty()) {
+        const std::string setting(problems.front().setting);
+        detail::fail(where, setting.c_str(), problems.front().message);
     }
 }
 
@@ -84,9 +56,7 @@ World::World(const WorldDef& def, const SolverSettings& solver)
       solver_(solver),
       ctx_(std::make_unique<StepContext>()),
       threads_(hardwareThreads()) {
-    validateDef(def, "World");
-    validateSolver(solver, "World");
-    validateModeWithGravity(solver, def.gravity, "World");
+    require(def, solver, "World");
 }
 
 World::~World() = default;
@@ -96,7 +66,7 @@ World& World::operator=(World&&) noexcept = default;
 World::World(const World& other)
     : def_(other.def_),
       solver_(other.solver_),
-      p_(other.p_),
+      p_(other.particles()),  // with what an exact step still owes it
       ids_(other.ids_),
       ctx_(std::make_unique<StepContext>()),  // scratch is not state
       // The exact mode's event state is state: a rebuild from the arrays alone would continue
@@ -120,35 +90,43 @@ void World::setBox(double width, double height) {
     WorldDef d = def_;
     d.width = width;
     d.height = height;
-    validateDef(d, "World::setBox");
+    require(d, solver_, "World::setBox");
+    changed();
     def_ = d;
 }
 
 void World::setWalls(bool enabled) {
+    changed();
     def_.walls = enabled;
 }
 
 void World::setGravity(const Vec2& gravity) {
-    requireFinite(gravity, "World::setGravity", "gravity");
-    validateModeWithGravity(solver_, gravity, "World::setGravity");
+    WorldDef d = def_;
+    d.gravity = gravity;
+    require(d, solver_, "World::setGravity");
+    changed();
     def_.gravity = gravity;
 }
 
 void World::setRestitution(double e) {
-    requireInRange(e, 0.0, 1.0, "World::setRestitution", "restitution");
+    WorldDef d = def_;
+    d.restitution = e;
+    require(d, solver_, "World::setRestitution");
+    changed();
     def_.restitution = e;
 }
 
 void World::setFriction(double mu) {
     WorldDef d = def_;
     d.friction = mu;
-    validateDef(d, "World::setFriction");
+    require(d, solver_, "World::setFriction");
+    changed();
     def_.friction = mu;
 }
 
 void World::setSolver(const SolverSettings& solver) {
-    validateSolver(solver, "World::setSolver");
-    validateModeWithGravity(solver, def_.gravity, "World::setSolver");
+    require(def_, solver, "World::setSolver");
+    changed();
     solver_ = solver;
 }
 
@@ -156,6 +134,7 @@ ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
     if (p_.size() >= UINT32_MAX - 1)
         detail::fail("World::add", "particle count", "is at its limit");
+    changed();
     const auto index = static_cast<std::uint32_t>(p_.size());
     const ParticleId id = ids_.allocate(index);
     p_.x.push_back(d.position.x());
@@ -173,6 +152,7 @@ ParticleId World::add(const ParticleDef& d) {
 bool World::remove(ParticleId id) {
     const auto found = ids_.find(id);
     if (!found) return false;
+    changed();
     const std::size_t i = *found;
     const std::size_t last = p_.size() - 1;
     if (i != last) ids_.relocate(p_.id[last], static_cast<std::uint32_t>(i));
@@ -190,6 +170,7 @@ bool World::remove(ParticleId id) {
 }
 
 void World::clear() {
+    changed();
     ids_.clear();
     p_ = ParticleArrays{};
     stepsUntilReorder_ = 0;
@@ -205,6 +186,7 @@ void World::setThreads(int n) {
 
 BroadPhaseKind World::broadPhaseInUse() const {
     if (broadPhaseUsed_) return *broadPhaseUsed_;
+    settle();
     std::vector<ParticleStats> scratch;
     return chooseBroadPhase(solver_.broadphase, p_, measureParticles(p_, 1, scratch));
 }
@@ -269,6 +251,7 @@ std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
 
 Particle World::get(ParticleId id) const {
     const std::size_t i = indexOrThrow(id, "World::get");
+    settle();
     return Particle{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
                     p_.mass[i], p_.radius[i],           p_.color[i]};
 }
@@ -276,6 +259,7 @@ Particle World::get(ParticleId id) const {
 void World::setPosition(ParticleId id, const Vec2& position) {
     requireFinite(position, "World::setPosition", "position");
     const std::size_t i = indexOrThrow(id, "World::setPosition");
+    changed();
     p_.x[i] = position.x();
     p_.y[i] = position.y();
 }
@@ -283,6 +267,7 @@ void World::setPosition(ParticleId id, const Vec2& position) {
 void World::setVelocity(ParticleId id, const Vec2& velocity) {
     requireFinite(velocity, "World::setVelocity", "velocity");
     const std::size_t i = indexOrThrow(id, "World::setVelocity");
+    changed();
     p_.vx[i] = velocity.x();
     p_.vy[i] = velocity.y();
 }
@@ -290,6 +275,7 @@ void World::setVelocity(ParticleId id, const Vec2& velocity) {
 void World::setMass(ParticleId id, double mass) {
     detail::requireMass(mass, "World::setMass", "mass");
     const std::size_t i = indexOrThrow(id, "World::setMass");
+    changed();
     const bool kinematic = p_.invMass[i] == 0.0;
     p_.mass[i] = mass;
     p_.invMass[i] = kinematic ? 0.0 : 1.0 / mass;
@@ -297,7 +283,9 @@ void World::setMass(ParticleId id, double mass) {
 
 void World::setRadius(ParticleId id, double radius) {
     requirePositive(radius, "World::setRadius", "radius");
-    p_.radius[indexOrThrow(id, "World::setRadius")] = radius;
+    const std::size_t i = indexOrThrow(id, "World::setRadius");
+    changed();
+    p_.radius[i] = radius;
 }
 
 void World::setColor(ParticleId id, Color color) {
@@ -306,6 +294,7 @@ void World::setColor(ParticleId id, Color color) {
 
 void World::setKinematic(ParticleId id, bool kinematic) {
     const std::size_t i = indexOrThrow(id, "World::setKinematic");
+    changed();
     p_.invMass[i] = kinematic ? 0.0 : 1.0 / p_.mass[i];
 }
 
@@ -315,6 +304,7 @@ bool World::isKinematic(ParticleId id) const {
 
 std::optional<ParticleId> World::pick(const Vec2& point) const {
     if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return std::nullopt;
+    settle();
     // Storage order is drawing order, so the topmost particle is the last one that contains it.
     for (std::size_t i = p_.size(); i-- > 0;) {
         const double dx = point.x() - p_.x[i], dy = point.y() - p_.y[i];
@@ -329,43 +319,45 @@ void World::step(double dt) {
     if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
     ctx_->threads = threads_;
     ctx_->broadPhase = solver_.broadphase;
-    // The exact mode keeps its own copy in cell order; reordering the world's storage would only
-    // make it rebuild.
-    if (p_.size() >= kReorderMinParticles && solver_.mode != StepMode::Exact) {
-        if (stepsUntilReorder_ == 0) {
-            StageTimer t(profile_.reorder);
-            reorderByCell(p_, ids_, *ctx_);
-            stepsUntilReorder_ = kReorderInterval;
-        }
-        --stepsUntilReorder_;
-    }
+    // A step in another mode works on the arrays: they must hold the state, and the exact
+    // stepper must rebuild from what that step leaves. The exact mode keeps its own copy in
+    // cell order, so it never reorders the world's storage.
     switch (solver_.mode) {
         case StepMode::Discrete:
-            stepDiscrete(dt);
+        case StepMode::Substep:
+            changed();
+            stages::discreteSteps(p_, ids_, def_, dt,
+                                  solver_.mode == StepMode::Substep ? solver_.substeps : 1, *ctx_,
+                                  stepsUntilReorder_, profile_, counters_);
             break;
-        case StepMode::Substep: {
-            const double h = dt / solver_.substeps;
-            for (int k = 0; k < solver_.substeps; ++k)
-                stepDiscrete(h);
-            break;
-        }
         case StepMode::Exact:
             stepExact(dt);
             break;
     }
-    profile_.total += profile_.reorder;
     if (solver_.mode != StepMode::Exact) broadPhaseUsed_ = ctx_->broadPhaseUsed;
     time_ += dt;
 }
 
-void World::stepDiscrete(double dt) {
-    stages::discreteStep(p_, def_, dt, *ctx_, profile_, counters_);
+void World::settle() const {
+    if (exact_ && exact_->owesSync()) {
+        double ms = 0.0;
+        {
+            StageTimer t(ms);
+            exact_->sync(p_);
+        }
+        profile_.stage("sync") += ms;
+        profile_.total += ms;
+    }
+}
+
+void World::changed() {
+    settle();
+    if (exact_) exact_->invalidate();
 }
 
 void World::stepExact(double dt) {
-    // The stepper compares the world with what its last step left and rebuilds its event state
-    // on any difference, so every mutator (and a step in another mode) is picked up without
-    // each one having to remember to invalidate it.
+    // Every function that changes what the stepper read calls changed(), which makes it
+    // rebuild at this step; otherwise it carries on from its own state.
     if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
     exact_->step(p_, def_, dt, profile_, counters_);
 }

@@ -88,7 +88,7 @@ TEST(ModeSwitch, AModeTheWorldRefusesIsSkippedWithTheReasonAndTheCycleMovesOn) {
         EXPECT_NE(r.detail.find("gravity"), std::string::npos) << r.detail;
     }
     // The world still steps in its new mode, and the next press moves on again.
-    EXPECT_NO_THROW(w.step());
+    EXPECT_NO_THROW(w.step(w.solver().dt));
     EXPECT_TRUE(switchToNextMode(w).changed);
 }
 
@@ -123,7 +123,7 @@ TEST(AccuracyMonitor, DriftStartsAtZeroAfterAnActionInAnEnergyChangingWorld) {
     AccuracyMonitor m;
     m.resetReference(kineticEnergy(w));
     for (int k = 0; k < 20; ++k)
-        w.step();
+        w.step(w.solver().dt);
     EXPECT_GT(std::abs(m.drift(kineticEnergy(w))), 1e-3);
     m.resetReference(kineticEnergy(w));
     EXPECT_EQ(m.drift(kineticEnergy(w)), 0.0);
@@ -140,7 +140,7 @@ TEST(AccuracyMonitor, OverlapCoversOnlyTheLastFrameThatStepped) {
     w.add(b);
     AccuracyMonitor m;
     m.beginSteps(w);
-    w.step();
+    w.step(w.solver().dt);
     m.endSteps(w);
     EXPECT_NEAR(m.overlap(), 3.0, 1e-9);
     // A paused frame (no step) keeps the figure.
@@ -149,7 +149,7 @@ TEST(AccuracyMonitor, OverlapCoversOnlyTheLastFrameThatStepped) {
     EXPECT_NEAR(m.overlap(), 3.0, 1e-9);
     // The next stepping frame finds them apart: the cumulative counter would still say 3 m.
     m.beginSteps(w);
-    w.step();
+    w.step(w.solver().dt);
     m.endSteps(w);
     EXPECT_LT(m.overlap(), 1e-9);
 }
@@ -163,7 +163,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     s.substeps = 4;
     w.setSolver(s);
     for (int k = 0; k < 5; ++k)
-        w.step();
+        w.step(w.solver().dt);
 
     // Grab a particle and drag it right through the gas for half a second.
     Interaction in;
@@ -179,7 +179,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
         t = 0.01 * k;
         in.moveTo(start + Vec2(200.0 * t, 0.0), t);
         in.applyHold(w, t, ls);
-        w.step();
+        w.step(w.solver().dt);
     }
     // A step carries the held particle on with the hand's velocity; the app places it at the
     // hand again before drawing and before the next step.
@@ -192,7 +192,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     d.velocity = {-30, -10};
     d.radius = 5.0;
     const ParticleId added = w.add(d);
-    w.step();
+    w.step(w.solver().dt);
     EXPECT_LT(w.get(added).position.x(), 650.0);
 
     // Delete the held particle, then keep stepping.
@@ -201,7 +201,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     EXPECT_EQ(w.size(), before - 1);
     EXPECT_FALSE(w.contains(target));
     for (int k = 0; k < 20; ++k)
-        w.step();
+        w.step(w.solver().dt);
     for (std::size_t i = 0; i < w.size(); ++i) {
         EXPECT_TRUE(std::isfinite(w.particles().x[i]));
         EXPECT_TRUE(std::isfinite(w.particles().y[i]));

@@ -202,7 +202,7 @@ TEST(ApplyEdit, InExactModeTheEventQueueFollowsTheEdit) {
     };
     World edited = build({0, 0}, 10.0);
     for (int k = 0; k < 50; ++k)
-        edited.step();
+        edited.step(edited.solver().dt);
     const ParticleId target = edited.ids()[1];
     const Particle now = edited.get(target);
     // Toward the first particle, larger: the collision comes much earlier than predicted.
@@ -217,8 +217,8 @@ TEST(ApplyEdit, InExactModeTheEventQueueFollowsTheEdit) {
     EXPECT_EQ(fresh.get(fresh.ids()[1]).velocity, Vec2(-120, 0));
     EXPECT_NE(now.velocity, Vec2(-120, 0));
     for (int k = 0; k < 200; ++k) {
-        edited.step();
-        fresh.step();
+        edited.step(edited.solver().dt);
+        fresh.step(fresh.solver().dt);
     }
     EXPECT_GT(edited.counters().collisions, 0u);
     const auto ie = edited.ids(), iff = fresh.ids();

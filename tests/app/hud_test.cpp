@@ -91,9 +91,12 @@ TEST(Hud, LinesShowModeBroadphaseThreadsOverlapAndDrift) {
 
 TEST(Hud, ProfileListsEveryStageAndTheFrameTimes) {
     ProfileData d;
-    d.profile.gravity = 0.125;
-    d.profile.findPairs = 1.5;
-    d.profile.reorder = 0.25;
+    for (const char* stage :
+         {"reorder", "gravity", "move", "find pairs", "resolve", "separate", "walls"})
+        d.profile.stage(stage);
+    d.profile.stage("gravity") = 0.125;
+    d.profile.stage("find pairs") = 1.5;
+    d.profile.stage("reorder") = 0.25;
     d.profile.total = 3.0;
     d.profile.pairs = 1234;
     d.frameStepMs = 6.0;
@@ -112,8 +115,12 @@ TEST(Hud, ProfileInExactModeNamesTheEventStages) {
     ProfileData d;
     d.mode = StepMode::Exact;
     d.eventsPerStep = 420;
+    for (const char* stage : {"rebuild", "events", "sync"})
+        d.profile.stage(stage);
     const auto lines = profileLines(d);
-    EXPECT_TRUE(anyContains(lines, "process events"));
+    EXPECT_TRUE(anyContains(lines, "rebuild"));
+    EXPECT_TRUE(anyContains(lines, "events"));
+    EXPECT_TRUE(anyContains(lines, "sync"));
     EXPECT_TRUE(anyContains(lines, "events per step"));
     EXPECT_TRUE(anyContains(lines, "420"));
     EXPECT_FALSE(anyContains(lines, "separate"));

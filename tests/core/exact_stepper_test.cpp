@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <numbers>
 #include <random>
@@ -12,6 +13,8 @@
 
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/scene_builders.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "exact_test_util.hpp"
@@ -441,11 +444,14 @@ TEST(ExactMode, BoxTooFullForItsDiscsWithAHeldDiscOrInelasticSettles) {
 }
 
 TEST(ExactMode, NewtonsCradlePassesTheImpulseDownTheLine) {
-    World w = openExactWorld();
-    const ParticleId first = w.add({.position = {-10.0, 0.0}, .velocity = {1.0, 0.0}});
-    std::vector<ParticleId> row;
-    for (int k = 0; k < 5; ++k)
-        row.push_back(w.add({.position = {2.0 * k, 0.0}}));
+    Scene cradle = scenes::cradle(5, 8.0, 1.0);  // striker at x = -10, row at 0, 2, ..., 8
+    cradle.solver.mode = StepMode::Exact;
+    World w = makeWorld(cradle);
+    const std::vector<ParticleId> ids = w.ids();
+    const ParticleId first = ids[0];
+    const std::vector<ParticleId> row(ids.begin() + 1, ids.end());
+    ASSERT_EQ(row.size(), 5u);
+    ASSERT_EQ(w.get(first).position, Vec2(-10.0, 0.0));
     w.step(12.0);
     EXPECT_NEAR(w.get(first).velocity.x(), 0.0, 1e-12);
     for (int k = 0; k < 4; ++k)
@@ -506,6 +512,79 @@ TEST(ExactMode, EmptyWorldJustAdvancesTime) {
     w.step(0.25);
     EXPECT_DOUBLE_EQ(w.time(), 0.75);
     EXPECT_EQ(w.counters().events, 0u);
+}
+
+TEST(ExactModeStatistics, HeavyDiscInAGasReachesEquipartition) {
+    // Brownian motion: one disc of 10 kg (r = 5 m) among 1000 discs of 1 kg (r = 1 m). In
+    // equilibrium every disc has the same mean kinetic energy, kT (two degrees of freedom), so
+    // the heavy disc's long-run mean must equal the light discs' mean. Its kinetic energy is
+    // correlated over its velocity relaxation time, so the statistical error of its mean comes
+    // from batch means: 40 batches, each many relaxation times long, are close to independent.
+    Scene scene = scenes::brownian(1000, 5.0, 10.0, 0.2, 11);
+    scene.solver.mode = StepMode::Exact;
+    World w = makeWorld(scene);
+    const ParticleId heavy = w.ids()[0];
+    ASSERT_EQ(w.get(heavy).mass, 10.0);
+    w.step(200.0);  // the heavy disc starts at rest: let it heat up first
+
+    constexpr int kBatches = 40, kSamplesPerBatch = 100;
+    constexpr double kSampleEvery = 0.5;  // seconds: 50 s per batch
+    std::vector<double> batchMean;
+    double lightSum = 0.0;
+    for (int b = 0; b < kBatches; ++b) {
+        double sum = 0.0;
+        for (int k = 0; k < kSamplesPerBatch; ++k) {
+            w.step(kSampleEvery);
+            const Particle p = w.get(heavy);
+            const double ke = 0.5 * p.mass * p.velocity.squaredNorm();
+            sum += ke;
+            lightSum += (kineticEnergy(w) - ke) / static_cast<double>(w.size() - 1);
+        }
+        batchMean.push_back(sum / kSamplesPerBatch);
+    }
+    double mean = 0.0;
+    for (const double m : batchMean)
+        mean += m / kBatches;
+    double var = 0.0;
+    for (const double m : batchMean)
+        var += (m - mean) * (m - mean) / (kBatches - 1);
+    const double stdError = std::sqrt(var / kBatches);
+    const double light = lightSum / (kBatches * kSamplesPerBatch);
+
+    // The light discs' mean is kT to within a part in a thousand (1000 discs, energy kept).
+    EXPECT_NEAR(light, 1.0, 0.01);
+    // The error is small enough for the comparison to mean something, and the heavy disc's
+    // mean is within four standard errors of the light discs'.
+    EXPECT_LT(stdError, 0.15 * light);
+    EXPECT_NEAR(mean, light, 4.0 * stdError)
+        << "heavy " << mean << " ± " << stdError << ", light " << light;
+    std::printf("heavy disc mean KE %.4f J +- %.4f (batch means), light discs %.4f J\n", mean,
+                stdError, light);
+}
+
+TEST(ExactMode, StateIsWrittenBackWhenReadAndReadingChangesNothing) {
+    // Two equal worlds: one read after every frame (as the app draws), one never read until
+    // the end (as the runner steps), then both mutated and stepped again. Same bits.
+    World read = exactGas(400, 120.0, 0.5, 1.5, 1.0, 9);
+    World unread = read;
+    double sum = 0.0;
+    for (int k = 0; k < 120; ++k) {
+        read.step(1.0 / 60.0);
+        for (const double x : read.particles().x)
+            sum += x;
+        unread.step(1.0 / 60.0);
+    }
+    EXPECT_GT(read.profile().ms("sync"), 0.0);
+    EXPECT_EQ(unread.profile().ms("sync"), 0.0);  // nothing read since the last step
+    EXPECT_EQ(test::stateHash(read), test::stateHash(unread));
+    EXPECT_GT(sum, 0.0);
+    // A mutation right after unread steps must see every other particle where it is now.
+    for (World* w : {&read, &unread}) {
+        w->setVelocity(w->ids()[7], {3.0, -2.0});
+        for (int k = 0; k < 60; ++k)
+            w->step(1.0 / 60.0);
+    }
+    EXPECT_EQ(test::stateHash(read), test::stateHash(unread));
 }
 
 }  // namespace

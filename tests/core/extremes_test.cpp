@@ -14,6 +14,8 @@
 
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/scene_builders.hpp>
 #include <particle_sandbox/world.hpp>
 
 namespace psb {
@@ -224,22 +226,10 @@ TEST_P(Extremes, AParticleLargerThanTheBoxOrExactlyItsSize) {
 
 TEST_P(Extremes, DensePackingJammedFor1e5Steps) {
     // A hexagonal lattice at packing fraction 0.85 (close packing is 0.9069), shaken.
-    const double r = 1.0;
-    const double fraction = 0.85;
-    const double spacing = std::sqrt(2.0 * std::numbers::pi * r * r / (std::sqrt(3.0) * fraction));
-    const int cols = 10, rows = 12;
-    const double width = cols * spacing;
-    const double height = rows * spacing * std::sqrt(3.0) / 2.0;
-    World w = makeWorld({.width = width, .height = height});
-    std::mt19937_64 rng(5);
-    std::normal_distribution<double> g(0.0, 1.0);
-    for (int row = 0; row < rows; ++row) {
-        for (int col = 0; col < cols; ++col) {
-            const double x = (col + 0.25 + 0.5 * (row % 2)) * spacing;
-            const double y = (row + 0.5) * spacing * std::sqrt(3.0) / 2.0;
-            w.add({.position = {x, y}, .velocity = {g(rng), g(rng)}, .radius = r});
-        }
-    }
+    const psb::Scene lattice = scenes::hexagonalLattice(10, 12, 1.0, 0.85, 5);
+    World w = makeWorld(lattice.world);
+    for (const ParticleDef& d : lattice.particles)
+        w.add(d);
     runChecked(w, 100000, 0.01);
     EXPECT_GT(w.counters().collisions, 10000u);
 }

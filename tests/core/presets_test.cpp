@@ -10,19 +10,20 @@
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/scene_builders.hpp>
 
 namespace psb {
 namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(PSB_ASSETS_DIR) / "scenes";
 
-TEST(Presets, ThereAreSevenNumberedPresetsInOrder) {
+TEST(Presets, ThereAreEightNumberedPresetsInOrder) {
     const auto files = sceneFiles(kScenes);
-    ASSERT_EQ(files.size(), 7u);
-    const char* expected[] = {"01-original.json",          "02-newtons-cradle.json",
-                              "03-billiards-break.json",   "04-gas-in-a-box.json",
-                              "05-mass-ratio.json",        "06-bullet-into-crowd.json",
-                              "07-pile-under-gravity.json"};
+    ASSERT_EQ(files.size(), 8u);
+    const char* expected[] = {"01-original.json",           "02-newtons-cradle.json",
+                              "03-billiards-break.json",    "04-gas-in-a-box.json",
+                              "05-mass-ratio.json",         "06-bullet-into-crowd.json",
+                              "07-pile-under-gravity.json", "08-brownian-motion.json"};
     for (std::size_t i = 0; i < files.size(); ++i)
         EXPECT_EQ(files[i].filename(), expected[i]);
 }
@@ -52,7 +53,7 @@ TEST(Presets, AllLoadAndRunKeepingEveryParticleInTheBox) {
         World w = makeWorld(s);
         const double e0 = kineticEnergy(w);
         for (int k = 0; k < 30; ++k)
-            w.step();
+            w.step(w.solver().dt);
         EXPECT_EQ(w.size(), s.particles.size());
         const ParticleArrays& p = w.particles();
         for (std::size_t i = 0; i < p.size(); ++i) {
@@ -77,10 +78,30 @@ TEST(Presets, ThePileHasGravityAndInelasticCollisions) {
     EXPECT_LT(s.world.restitution, 1.0);
 }
 
+TEST(Presets, BrownianMotionIsOneHeavyDiscWithItsTrailInAGas) {
+    const Scene s = loadScene(kScenes / "08-brownian-motion.json");
+    EXPECT_EQ(s.solver.mode, StepMode::Exact);
+    ASSERT_EQ(s.trails, std::vector<std::size_t>{0});
+    EXPECT_EQ(s.particles[0].mass, 64.0);
+    EXPECT_EQ(s.particles[0].radius, 8.0);
+    ASSERT_EQ(s.particles.size(), 1501u);
+    for (std::size_t i = 1; i < s.particles.size(); ++i) {
+        EXPECT_EQ(s.particles[i].mass, 1.0);
+        EXPECT_EQ(s.particles[i].radius, 1.0);
+    }
+    // The file is what the builder makes (apart from the solver, set for the preset).
+    Scene built = scenes::brownian(1500, 8.0, 64.0, 0.2, 7);
+    ASSERT_EQ(built.particles.size(), s.particles.size());
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+        EXPECT_EQ(built.particles[i].position, s.particles[i].position) << i;
+        EXPECT_EQ(built.particles[i].velocity, s.particles[i].velocity) << i;
+    }
+}
+
 TEST(Presets, NewtonsCradleSendsOffOnlyTheLastBall) {
     World w = makeWorld(loadScene(kScenes / "02-newtons-cradle.json"));
     for (int k = 0; k < 240; ++k)
-        w.step();  // 1 s: the striker has hit the row
+        w.step(w.solver().dt);  // 1 s: the striker has hit the row
     const ParticleArrays& p = w.particles();
     for (std::size_t i = 0; i + 1 < p.size(); ++i)
         EXPECT_EQ(p.vx[i], 0.0) << i;

@@ -94,7 +94,7 @@ const std::map<std::string, std::string> kExpected = {
     {"particle_radius_zero.json",
      R"(particles[0].radius: must be > 0 (got 0))"},
     {"particle_unknown_key.json",
-     R"(particles[0].velocity: unknown key (expected one of: x, y, vx, vy, mass, radius, color))"},
+     R"(particles[0].velocity: unknown key (expected one of: x, y, vx, vy, mass, radius, color, trail))"},
     {"particle_x_null.json",
      R"(particles[0].x: expected a number, got null)"},
     {"particles_not_array.json",

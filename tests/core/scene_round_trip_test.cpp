@@ -95,15 +95,15 @@ TEST(SceneRoundTrip, ARunningWorldSavedAndLoadedContinuesExactlyAsIfUninterrupte
                              "mem");
     World a = makeWorld(start);
     for (int k = 0; k < 50; ++k)
-        a.step();
+        a.step(a.solver().dt);
 
     TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "snap.json";
     saveScene(sceneFromWorld(a, "snap"), file);
     World b = makeWorld(loadScene(file));
     for (int k = 0; k < 50; ++k) {
-        a.step();
-        b.step();
+        a.step(a.solver().dt);
+        b.step(b.solver().dt);
     }
     const ParticleArrays &pa = a.particles(), &pb = b.particles();
     ASSERT_EQ(pa.size(), pb.size());

@@ -65,7 +65,7 @@ TEST_P(Soak, GasPresetKeepsEveryInvariantFor1e7ParticleSteps) {
     double kMax = k0;
 
     for (std::uint64_t s = 0; s < steps; ++s) {
-        w.step();
+        w.step(w.solver().dt);
         ASSERT_EQ(w.size(), n) << "step " << s;
         const ParticleArrays& p = w.particles();
         for (std::size_t i = 0; i < n; ++i) {

@@ -8,8 +8,11 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include <particle_sandbox/error.hpp>
+#include <particle_sandbox/validation.hpp>
 #include <particle_sandbox/world.hpp>
 
 namespace psb {
@@ -128,6 +131,48 @@ TEST(WorldArguments, SwitchingWallsOnBringsParticlesOutsideBackIn) {
     w.setWalls(true);
     w.step(0.01);
     expectAllFiniteAndInside(w);
+}
+
+}  // namespace
+}  // namespace psb
+
+namespace psb {
+namespace {
+
+TEST(Validate, AcceptsWhatWorldAcceptsAndListsEveryProblemWithoutThrowing) {
+    EXPECT_TRUE(validate(WorldDef{}, SolverSettings{}).empty());
+    WorldDef def;
+    def.width = -1.0;
+    def.restitution = std::numeric_limits<double>::quiet_NaN();
+    def.gravity = {0.0, 9.81};
+    SolverSettings s;
+    s.mode = StepMode::Exact;
+    s.dt = 0.0;
+    s.substeps = 0;
+    s.broadphase = static_cast<BroadPhaseKind>(42);
+    std::vector<SettingProblem> problems;
+    EXPECT_NO_THROW(problems = validate(def, s));
+    std::vector<std::string_view> settings;
+    for (const SettingProblem& p : problems)
+        settings.push_back(p.setting);
+    const std::vector<std::string_view> want{"width",    "restitution", "dt",
+                                             "substeps", "broadphase",  "gravity"};
+    EXPECT_EQ(settings, want);
+    EXPECT_EQ(problems.back().because, "mode");
+    EXPECT_EQ(describe(problems.front()), "width must be finite and > 0 (got -1)");
+}
+
+TEST(Validate, WorldThrowsTheFirstProblemWithTheSameWords) {
+    const WorldDef def{.width = 10.0, .height = 10.0, .gravity = {0.0, 1.0}};
+    const SolverSettings s{.mode = StepMode::Exact};
+    const std::vector<SettingProblem> problems = validate(def, s);
+    ASSERT_EQ(problems.size(), 1u);
+    try {
+        World w(def, s);
+        ADD_FAILURE() << "World accepted what validate refused";
+    } catch (const InvalidArgument& e) {
+        EXPECT_EQ(std::string(e.what()), "World: " + describe(problems.front()));
+    }
 }
 
 }  // namespace

@@ -119,12 +119,12 @@ TEST(World, GravityAcceleratesDownwardAndIsSkippedWhenZero) {
     for (int k = 0; k < 100; ++k)
         w.step(0.01);
     EXPECT_NEAR(w.get(p).velocity.y(), 9.81, 1e-12);
-    EXPECT_GT(w.profile().gravity, 0.0);
+    EXPECT_GT(w.profile().ms("gravity"), 0.0);
 
     World still;
     still.add({.position = {50.0, 50.0}});
     still.step(0.01);
-    EXPECT_EQ(still.profile().gravity, 0.0);
+    EXPECT_EQ(still.profile().ms("gravity"), 0.0);
 }
 
 TEST(World, SubstepsOfAFreeFlightLandWhereOneStepDoes) {

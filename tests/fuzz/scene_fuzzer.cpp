@@ -56,7 +56,7 @@ void checkSteps(const psb::Scene& s) {
     solver.substeps = std::min(solver.substeps, 4);  // the substep loop is not what is fuzzed
     world.setSolver(solver);
     for (int k = 0; k < 3; ++k)
-        world.step();
+        world.step(world.solver().dt);
     const psb::ParticleArrays& p = world.particles();
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]) || !std::isfinite(p.vx[i]) ||

@@ -1,0 +1,72 @@
+#include <particle_sandbox/validation.hpp>
+
+#include <cmath>
+#include <sstream>
+
+#include "validate.hpp"
+
+namespace psb {
+namespace {
+
+class Problems {
+  public:
+    void add(std::string_view setting, std::string message, std::string_view because = {}) {
+        out_.push_back({setting, std::move(message), because});
+    }
+    void positive(std::string_view setting, double v) {
+        if (!std::isfinite(v) || !(v > 0.0))
+            add(setting, "must be finite and > 0 " + detail::got(v));
+    }
+    [[nodiscard]] std::vector<SettingProblem> take() { return std::move(out_); }
+
+  private:
+    std::vector<SettingProblem> out_;
+};
+
+std::string vec2(const Vec2& v) {
+    std::ostringstream os;
+    os.precision(17);
+    os << '[' << v.x() << ", " << v.y() << ']';
+    return os.str();
+}
+
+}  // namespace
+
+std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& s) {
+    Problems p;
+    p.positive("width", def.width);
+    p.positive("height", def.height);
+    if (!std::isfinite(def.gravity.x()) || !std::isfinite(def.gravity.y())) {
+        p.add("gravity", "must be finite (got " + vec2(def.gravity) + ")");
+    }
+    if (!std::isfinite(def.restitution) || def.restitution < 0.0 || def.restitution > 1.0) {
+        p.add("restitution", "must be in [0, 1] " + detail::got(def.restitution));
+    }
+    if (!std::isfinite(def.friction) || def.friction < 0.0) {
+        p.add("friction", "must be finite and >= 0 " + detail::got(def.friction));
+    }
+    p.positive("dt", s.dt);
+    if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
+        p.add("substeps", "must be in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
+                              std::to_string(s.substeps) + ")");
+    }
+    // An enumerator outside the lists (a cast from an integer) would make step() do nothing.
+    if (toString(s.mode) == "?") p.add("mode", "is not a known step mode");
+    if (toString(s.broadphase) == "?") p.add("broadphase", "is not a known broadphase");
+    // The exact mode flies particles in straight lines between events; under gravity they
+    // would fly parabolas, which it does not predict.
+    if (s.mode == StepMode::Exact && (def.gravity.x() != 0.0 || def.gravity.y() != 0.0)) {
+        p.add("gravity",
+              "must be zero in 'exact' mode (got " + vec2(def.gravity) +
+                  "): the event-driven step does not support gravity; use 'discrete' or "
+                  "'substep' for a world with gravity",
+              "mode");
+    }
+    return p.take();
+}
+
+std::string describe(const SettingProblem& problem) {
+    return std::string(problem.setting) + ' ' + problem.message;
+}
+
+}  // namespace psb
