@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <thread>
 
@@ -46,19 +45,6 @@ void validateSolver(const SolverSettings& s, const char* where) {
     }
 }
 
-// The exact mode flies particles in straight lines between events; under gravity they would fly
-// parabolas, which it does not predict.
-void validateModeWithGravity(const SolverSettings& s, const Vec2& gravity, const char* where) {
-    if (s.mode == StepMode::Exact && (gravity.x() != 0.0 || gravity.y() != 0.0)) {
-        std::ostringstream os;
-        os.precision(17);
-        os << "must be zero in 'exact' mode (got [" << gravity.x() << ", " << gravity.y()
-           << "]): the event-driven step does not support gravity; use 'discrete' or "
-              "'substep' for a world with gravity";
-        detail::fail(where, "gravity", os.str());
-    }
-}
-
 void validateParticle(const ParticleDef& d, const char* where) {
     requireFinite(d.position, where, "position");
     requireFinite(d.velocity, where, "velocity");
@@ -86,7 +72,6 @@ World::World(const WorldDef& def, const SolverSettings& solver)
       threads_(hardwareThreads()) {
     validateDef(def, "World");
     validateSolver(solver, "World");
-    validateModeWithGravity(solver, def.gravity, "World");
 }
 
 World::~World() = default;
@@ -125,7 +110,6 @@ void World::setWalls(bool enabled) {
 
 void World::setGravity(const Vec2& gravity) {
     requireFinite(gravity, "World::setGravity", "gravity");
-    validateModeWithGravity(solver_, gravity, "World::setGravity");
     def_.gravity = gravity;
 }
 
@@ -143,7 +127,6 @@ void World::setFriction(double mu) {
 
 void World::setSolver(const SolverSettings& solver) {
     validateSolver(solver, "World::setSolver");
-    validateModeWithGravity(solver, def_.gravity, "World::setSolver");
     solver_ = solver;
 }
 
