@@ -571,6 +571,13 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     double& vt = alongX ? a.vy : a.vx;
     const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
     const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
+    if (gravity_ && !pinned) {
+        // At the wall by definition of the event: a parabola's root can leave the centre a few
+        // ulps past it, which a particle resting there would keep.
+        double& x = alongX ? a.x : a.y;
+        const double extent = alongX ? def_.width : def_.height;
+        x = std::clamp(x, a.r, extent - a.r);
+    }
     double dv = 0.0;
     if (a.flags & kHeld) {
         // A held particle stops moving across the wall; its owner sets its velocity again.
@@ -693,7 +700,7 @@ bool ExactStepper::supported(std::uint32_t i) const {
     bool left = false, right = false;
     for (int k = 0; k < count; ++k) {
         const double d = offset(k);
-        if (std::abs(d) <= slack) return true;
+        if (std::abs(d) <= std::max(slack, kRestSlope)) return true;
         if (d < 0.0 && d > lo) lo = d, left = true;
         if (d > 0.0 && d < hi) hi = d, right = true;
     }
