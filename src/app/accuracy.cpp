@@ -31,10 +31,8 @@ ModeSwitch switchToNextMode(World& world) {
     try {
         world.setSolver(s);
     } catch (const InvalidArgument& e) {
-        const std::string why = std::string(e.what()).find("gravity") != std::string::npos
-                                    ? "it does not support gravity"
-                                    : "the world refused it";
-        return {false, "Exact mode refused (" + why + "); mode stays " + modeName(world.solver()),
+        return {false,
+                "Mode refused (the world refused it); mode stays " + modeName(world.solver()),
                 e.what()};
     }
     return {true, "Mode: " + modeName(world.solver()), {}};

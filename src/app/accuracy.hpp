@@ -1,9 +1,9 @@
 #pragma once
 // Switching the stepping mode from the keyboard, and the live accuracy indicators of the HUD.
 //
-// Mode switch: discrete -> substep -> exact -> discrete. The world validates the choice
-// (exact mode refuses gravity with psb::InvalidArgument); a refusal is reported as a message and
-// the world keeps its mode, so a key press can never take the app down.
+// Mode switch: discrete -> substep -> exact -> discrete. The world validates the choice; a
+// refusal (psb::InvalidArgument) is reported as a message and the world keeps its mode, so a
+// key press can never take the app down.
 //
 // Indicators, both O(1) or O(N) per frame and nothing more:
 // - Largest overlap: the world's counters already record the deepest overlap its detection met
@@ -36,8 +36,7 @@ struct ModeSwitch {
     std::string detail;   ///< for the log: the world's full message on a refusal
 };
 
-/// Moves `world` to the next mode. On refusal (exact with gravity) the world is unchanged and
-/// the message says why.
+/// Moves `world` to the next mode. On refusal the world is unchanged and the message says why.
 ModeSwitch switchToNextMode(World& world);
 
 /// "discrete", "substep x4", "exact".

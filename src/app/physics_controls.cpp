@@ -4,10 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include <particle_sandbox/error.hpp>
-
-#include "accuracy.hpp"
-
 namespace psb::app {
 
 double steppedRestitution(double e, int direction) {
@@ -43,12 +39,7 @@ ControlChange toggleGravity(World& world, const Vec2& sceneGravity) {
         return {true, "Gravity off"};
     }
     const Vec2 g = sceneGravity != Vec2::Zero() ? sceneGravity : appGravity(world.def());
-    try {
-        world.setGravity(g);
-    } catch (const InvalidArgument&) {
-        return {false, "Gravity refused: the " + modeName(world.solver()) +
-                           " mode has none (T switches to discrete or substep)"};
-    }
+    world.setGravity(g);
     return {true, "Gravity " + gravityText(g)};
 }
 

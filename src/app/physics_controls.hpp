@@ -8,8 +8,7 @@
 // a real 700 m, and under 9.81 m/s² a fall across it would take 12 s; scaled, a fall across any
 // box larger than 20 m takes the 2 s it takes across a 20 m box.
 //
-// The exact mode has no gravity (World::setGravity throws), so G in exact mode is refused with a
-// message naming the mode keys, as T refuses the exact mode while gravity is on.
+// Every mode has gravity, the exact one included.
 
 #include <string>
 

@@ -64,6 +64,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.particles = world.size();
     r.steps = stepsFor(options.duration, s.solver.dt);
     r.kineticEnergyInitial = kineticEnergy(world);
+    r.gravity = !world.def().gravity.isZero();
+    r.potentialEnergyInitial = potentialEnergy(world);
     r.momentumInitial = momentum(world);
 
     const auto every =
@@ -97,6 +99,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.wallImpulse = c.wallImpulse;
     r.maxOverlap = c.maxOverlap;
     r.kineticEnergyFinal = kineticEnergy(world);
+    r.potentialEnergyFinal = potentialEnergy(world);
     r.momentumFinal = momentum(world);
     r.escaped = countEscaped(world);
     return r;

@@ -59,19 +59,16 @@ TEST(ModeSwitch, KeepsTheScenesOwnSubstepCount) {
     EXPECT_EQ(w.solver().substeps, 7);
 }
 
-TEST(ModeSwitch, ExactWithGravityIsRefusedAndThePreviousModeKept) {
+TEST(ModeSwitch, ExactWithGravityIsAcceptedAndSteps) {
     World w = gas(Vec2(0.0, 9.81));
     ASSERT_TRUE(switchToNextMode(w).changed);  // discrete -> substep
     const ModeSwitch r = switchToNextMode(w);
-    EXPECT_FALSE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Substep);
-    EXPECT_NE(r.message.find("does not support gravity"), std::string::npos) << r.message;
-    EXPECT_NE(r.message.find("stays substep x4"), std::string::npos) << r.message;
-    EXPECT_NE(r.detail.find("gravity"), std::string::npos) << r.detail;
-    // The world still steps in its mode, and the next press starts the cycle again.
+    EXPECT_TRUE(r.changed);
+    EXPECT_EQ(w.solver().mode, StepMode::Exact);
+    EXPECT_EQ(r.message, "Mode: exact");
     EXPECT_NO_THROW(w.step());
-    EXPECT_EQ(w.counters().steps, static_cast<std::uint64_t>(kAppSubsteps));
-    EXPECT_FALSE(switchToNextMode(w).changed);
+    EXPECT_EQ(w.counters().steps, 1u);
+    EXPECT_TRUE(switchToNextMode(w).changed);  // back to discrete
 }
 
 TEST(AccuracyMonitor, DriftIsRelativeToTheLastReference) {

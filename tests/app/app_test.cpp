@@ -185,7 +185,7 @@ TEST_F(AppTest, EnterAppliesAnEditAndARefusedOneChangesNothing) {
     EXPECT_DOUBLE_EQ(app.world().get(id).radius, 45.0);
 }
 
-TEST_F(AppTest, ERestitutionAndGGravityWithTheExactModeRefusingGravity) {
+TEST_F(AppTest, ERestitutionAndGGravityInEveryMode) {
     App app(options());
     key(app, SDLK_e);
     EXPECT_DOUBLE_EQ(app.world().def().restitution, 0.95);
@@ -195,13 +195,12 @@ TEST_F(AppTest, ERestitutionAndGGravityWithTheExactModeRefusingGravity) {
     key(app, SDLK_g);
     EXPECT_NEAR(app.world().def().gravity.y(), 9.81 * 35.0, 1e-9);
     key(app, SDLK_t);  // substep
-    key(app, SDLK_t);  // exact: refused while gravity is on
-    EXPECT_EQ(app.world().solver().mode, StepMode::Substep);
+    key(app, SDLK_t);  // exact, with gravity on
+    EXPECT_EQ(app.world().solver().mode, StepMode::Exact);
     key(app, SDLK_g);  // off
-    key(app, SDLK_t);
-    ASSERT_EQ(app.world().solver().mode, StepMode::Exact);
-    key(app, SDLK_g);  // refused
     EXPECT_EQ(app.world().def().gravity, Vec2::Zero());
+    key(app, SDLK_g);  // on again, in the exact mode
+    EXPECT_NEAR(app.world().def().gravity.y(), 9.81 * 35.0, 1e-9);
     EXPECT_EQ(app.world().solver().mode, StepMode::Exact);
     key(app, SDLK_SPACE);
     app.frame(0.1);  // it still steps

@@ -25,8 +25,8 @@
 #  10. clicks a particle                                -> selected (log), outlined (pixels)
 #  11. Enter, types 2e1 (letters go to the prompt), Enter -> mass edited to 20 kg, E not seen;
 #      Enter, -1, Enter, Esc                            -> refused with a message, cancelled
-#  12. presses E, Shift+E, G, G, T T G (exact), T       -> restitution and gravity logged,
-#                                                         gravity refused in exact mode
+#  12. presses E, Shift+E, G, G, T T G G (exact), T     -> restitution and gravity logged,
+#                                                         gravity on and off in exact mode
 #  13. presses F12                                      -> a PNG of the window's size
 #  14. presses R, clicks the edited particle again      -> its mass is the loaded 12 kg
 #  15. presses Esc                                      -> the program exits cleanly
@@ -410,10 +410,12 @@ key t
 key t
 wait_count "\[I\] Mode: exact" 2
 key g
-wait_log "\[W\] Gravity refused: the exact mode has none"
+wait_count "\[I\] Gravity \[0, 343.4\] m/s\^2" 2
+key g
+wait_count "\[I\] Gravity off" 2
 key t
 wait_count "\[I\] Mode: discrete" 2
-pass "E, Shift+E, G, G; G refused in exact mode"
+pass "E, Shift+E, G, G; G in exact mode"
 
 # --- 13. screenshot -------------------------------------------------------------------------
 key F12
