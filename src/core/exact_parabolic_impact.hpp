@@ -174,6 +174,10 @@ inline int quadraticRootsIn(double c0, double c1, double c2, double lo, double h
         return pa < 0.0 && pa * pa > kPressTolerance * kPressTolerance * (x * x + y * y) * a2;
     };
 
+    // An acceleration too small to square (below ~1e-154 m/s²) changes nothing a double can
+    // see: the straight-line answer.
+    if (!(c4 > 0.0)) return pairImpactTime(px, py, qx, qy, sigma);
+
     // No root beyond a bound of the quartic's roots (Cauchy's, on the monic form).
     double hi = horizon;
     if (!(hi < kNever)) {
