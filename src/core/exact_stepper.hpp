@@ -110,12 +110,14 @@
 //   - a wall that gravity presses a particle into: a rebound slower than restSpeed_ ends with
 //     the particle resting on the wall (its velocity and acceleration across the wall zero); it
 //     still slides along it;
-//   - a particle slower than restSpeed_ after an event, within restGap_ of supports (walls,
-//     sleeping particles, held particles at rest) whose contact normals span gravity (it
-//     cannot slide off), falls asleep: zero velocity, no acceleration, no cell events;
-//   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or
-//     by a particle that already hit sleepers kWakeAfterHits times in this step: one wedged
-//     between sleepers) wakes, with every sleeper it supported (transitively: the ones resting
+//   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
+//     acceleration, no cell events) if the supports within restGap_ (walls, sleepers, held
+//     particles at rest) hold it: one whose contact normal is within kRestSlope of gravity, or
+//     two on either side of it, each normal's cone widened by the friction angle atan(mu);
+//     a particle woken less than kContactDuration ago does not fall asleep again;
+//   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
+//     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
+//     wakes, with every sleeper it supported (transitively: the ones resting
 //     on it); slower hits bounce off it as off an infinitely heavy disc;
 //   - a pair that gravity presses together (one falls and the other does not: it is asleep,
 //     held or resting on a wall) and that leaves a collision slower than restSpeed_ / 2 leaves
@@ -128,6 +130,7 @@
 // waking a sleeper lets it fall at most that far, which reaches only restSpeed_ and does not
 // wake what is under it. A rebuild (any change to the world) wakes everything; a settled pile
 // settles again in a few events per particle, so a removed support lets the ones above fall.
+// Limit: a frictionless pile, or one with e = 0, does not settle yet (docs/exact.md).
 
 #include <cstdint>
 #include <unordered_map>
