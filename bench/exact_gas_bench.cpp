@@ -14,38 +14,15 @@
 
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-#include <numbers>
-#include <random>
-
 #include <particle_sandbox/world.hpp>
+
+#include "exact_gas_scene.hpp"
 
 namespace {
 
-psb::World diluteGas(int n, double packing, std::uint32_t seed) {
-    const double r = 1.0;
-    const double side = std::sqrt(n * std::numbers::pi * r * r / packing);
-    psb::WorldDef def;
-    def.width = side;
-    def.height = side;
-    def.restitution = 1.0;
-    psb::World w(def, {.mode = psb::StepMode::Exact});
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::normal_distribution<double> speed(0.0, 1.0);
-    const int perRow = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-    const double pitch = side / perRow, slack = pitch - 2.0 * r;
-    for (int k = 0; k < n; ++k) {
-        const double x = (k % perRow + 0.5) * pitch + (unit(rng) - 0.5) * slack;
-        const double y = (k / perRow + 0.5) * pitch + (unit(rng) - 0.5) * slack;
-        w.add({.position = {x, y}, .velocity = {speed(rng), speed(rng)}, .radius = r});
-    }
-    return w;
-}
-
 void BM_ExactDiluteGas(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
-    psb::World w = diluteGas(n, 0.1, 42);
+    psb::World w = psb::bench::exactDiluteGas(n, 0.1, 42);
     w.step(20.0);  // build + relax: not timed
     w.resetCounters();
     for (auto _ : state) {

@@ -14,36 +14,17 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
-#include <numbers>
-#include <random>
 
 #include <particle_sandbox/world.hpp>
 
+#include "exact_gas_scene.hpp"
+
 namespace {
 
-psb::World diluteGas(int n, bool gravity) {
-    const double r = 1.0, packing = 0.1;
-    const double side = std::sqrt(n * std::numbers::pi * r * r / packing);
-    psb::WorldDef def;
-    def.width = side;
-    def.height = side;
-    if (gravity) def.gravity = {0.0, 1.0 / (5.0 * side)};
-    psb::World w(def, {.mode = psb::StepMode::Exact});
-    std::mt19937 rng(42);
-    std::uniform_real_distribution<double> unit(0.0, 1.0);
-    std::normal_distribution<double> speed(0.0, 1.0);
-    const int perRow = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-    const double pitch = side / perRow, slack = pitch - 2.0 * r;
-    for (int k = 0; k < n; ++k) {
-        const double x = (k % perRow + 0.5) * pitch + (unit(rng) - 0.5) * slack;
-        const double y = (k / perRow + 0.5) * pitch + (unit(rng) - 0.5) * slack;
-        w.add({.position = {x, y}, .velocity = {speed(rng), speed(rng)}, .radius = r});
-    }
-    return w;
-}
-
 void BM_DiluteGasPerCollision(benchmark::State& state) {
-    psb::World w = diluteGas(static_cast<int>(state.range(0)), state.range(1) != 0);
+    const int n = static_cast<int>(state.range(0));
+    const double g = state.range(1) != 0 ? 1.0 / (5.0 * psb::bench::exactGasSide(n, 0.1)) : 0.0;
+    psb::World w = psb::bench::exactDiluteGas(n, 0.1, 42, g);
     w.step(20.0);  // build + relax: not timed
     w.resetCounters();
     for (auto _ : state) {

@@ -670,20 +670,13 @@ bool ExactStepper::supported(std::uint32_t i) const {
         if (a.y - a.r <= restGap_) add(0.0, -1.0);
         if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
     }
-    const Cold& ac = cold_[i];
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-        for (std::int64_t dx = -1; dx <= 1; ++dx) {
-            const std::uint32_t c = cells_.cell(ac.kx + dx, ac.ky + dy);
-            if (c == CellList::kNone) continue;
-            for (std::uint32_t q = cells_.head(c); q != CellList::kNone; q = cells_.next(q)) {
-                const Body& b = bodies_[q];
-                if (q == i || !isStatic(b)) continue;
-                const double rx = b.x - a.x, ry = b.y - a.y;  // b does not move: b.x is now
-                const double d = std::sqrt(rx * rx + ry * ry);
-                if (d > 0.0 && d - (a.r + b.r) <= restGap_) add(rx / d, ry / d);
-            }
-        }
-    }
+    forEachAround(i, [&](std::uint32_t q) {
+        const Body& b = bodies_[q];
+        if (q == i || !isStatic(b)) return;
+        const double rx = b.x - a.x, ry = b.y - a.y;  // b does not move: b.x is now
+        const double d = std::sqrt(rx * rx + ry * ry);
+        if (d > 0.0 && d - (a.r + b.r) <= restGap_) add(rx / d, ry / d);
+    });
     // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
     // than that does not slide off it. Without friction gravity must lie strictly between the
     // normals (or along one, to within 1e-9 rad).
@@ -736,25 +729,18 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         const std::uint32_t p = wakeStack_.back();
         wakeStack_.pop_back();
         const Body& a = bodies_[p];
-        const Cold& pc = cold_[p];
-        for (std::int64_t dy = -1; dy <= 1; ++dy) {
-            for (std::int64_t dx = -1; dx <= 1; ++dx) {
-                const std::uint32_t c = cells_.cell(pc.kx + dx, pc.ky + dy);
-                if (c == CellList::kNone) continue;
-                for (std::uint32_t q = cells_.head(c); q != CellList::kNone; q = cells_.next(q)) {
-                    const Body& b = bodies_[q];
-                    if (!(b.flags & kAsleep)) continue;
-                    const double rx = b.x - a.x, ry = b.y - a.y;  // from p up to q
-                    if (gx_ * rx + gy_ * ry >= 0.0) continue;     // q is not above p
-                    const double reach = a.r + b.r + restGap_;
-                    if (rx * rx + ry * ry > reach * reach) continue;
-                    rouse(q);
-                    predictCollision(q, now);
-                    predictCell(q, now);
-                    wakeStack_.push_back(q);
-                }
-            }
-        }
+        forEachAround(p, [&](std::uint32_t q) {
+            const Body& b = bodies_[q];
+            if (!(b.flags & kAsleep)) return;
+            const double rx = b.x - a.x, ry = b.y - a.y;  // from p up to q
+            if (gx_ * rx + gy_ * ry >= 0.0) return;       // q is not above p
+            const double reach = a.r + b.r + restGap_;
+            if (rx * rx + ry * ry > reach * reach) return;
+            rouse(q);
+            predictCollision(q, now);
+            predictCell(q, now);
+            wakeStack_.push_back(q);
+        });
     }
 }
 

@@ -273,6 +273,18 @@ class ExactStepper {
     [[nodiscard]] static double pairTimeUnderGravity(const Body& a, const Motion& am, const Body& b,
                                                      const Motion& bm, double sigma,
                                                      double horizon);
+    // Calls f(q) for every particle q in the 3 × 3 cells around i (i included).
+    template <typename F>
+    void forEachAround(std::uint32_t i, F&& f) const {
+        for (std::int64_t dy = -1; dy <= 1; ++dy) {
+            for (std::int64_t dx = -1; dx <= 1; ++dx) {
+                const std::uint32_t c = cells_.cell(cold_[i].kx + dx, cold_[i].ky + dy);
+                if (c == CellList::kNone) continue;
+                for (std::uint32_t q = cells_.head(c); q != CellList::kNone; q = cells_.next(q))
+                    f(q);
+            }
+        }
+    }
     [[nodiscard]] bool supported(std::uint32_t i) const;
     [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
         return now - wokeAt_[i] >= kContactDuration;
