@@ -19,6 +19,8 @@ constexpr double kCellSlack = 1.0 + 1e-9;
 // Target cell side, in mean particle spacings sqrt(area / N). Larger cells mean fewer
 // cell-face events but more pair tests per prediction; measured on the dilute-gas benchmark.
 constexpr double kCellSpacings = 1.0;
+// A relative velocity below this fraction of the pair's own speeds is rounding (gravity only).
+constexpr double kRoundingVelocity = 1e-9;
 // Events per particle between two re-sorts of the particles into cell order.
 constexpr std::uint64_t kResortEvery = 8;
 
@@ -295,8 +297,16 @@ double ExactStepper::pairTimeUnderGravity(const Body& a, const Motion& am, const
     const double rx = bm.x - am.x, ry = bm.y - am.y;
     const double dvx = bm.vx - am.vx, dvy = bm.vy - am.vy;
     const double rax = bm.ax - am.ax, ray = bm.ay - am.ay;
-    // Falling alike: a straight line relative to each other.
-    if (rax == 0.0 && ray == 0.0) return pairImpactTime(rx, ry, dvx, dvy, sigma);
+    // Falling alike: a straight line relative to each other. Particles that fall together (a
+    // pile woken by a rebuild, a stack dropped as one) move at the same velocity to rounding;
+    // the direction of a relative velocity made of rounding is noise, so such a pair is at rest
+    // relative to each other, not approaching.
+    if (rax == 0.0 && ray == 0.0) {
+        const double dv2 = dvx * dvx + dvy * dvy;
+        const double v2 = am.vx * am.vx + am.vy * am.vy + bm.vx * bm.vx + bm.vy * bm.vy;
+        if (dv2 <= kRoundingVelocity * kRoundingVelocity * v2) return kNever;
+        return pairImpactTime(rx, ry, dvx, dvy, sigma);
+    }
     return parabolicPairImpactTime(rx, ry, dvx, dvy, rax, ray, sigma, horizon);
 }
 
