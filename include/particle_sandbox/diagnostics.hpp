@@ -13,6 +13,16 @@ class World;
 /// ~1e-15 relative even for a million particles.
 [[nodiscard]] double kineticEnergy(const World& world);
 
+/// Total gravitational potential energy Σ m g·(r_ref − r), joules: m g h for every particle,
+/// h its height above the reference level, the side (or corner) of the box furthest along
+/// gravity: with gravity (0, g) downwards (y points down) that is the floor, y = height, so a
+/// particle at height h above the floor counts m·g·h and one on the floor m·g·r. Held particles
+/// count like any other (as in kineticEnergy). 0 without gravity. Summed with compensation.
+[[nodiscard]] double potentialEnergy(const World& world);
+
+/// kineticEnergy + potentialEnergy: conserved by elastic collisions under gravity.
+[[nodiscard]] double mechanicalEnergy(const World& world);
+
 /// Total linear momentum Σ m v, kg·m/s.
 [[nodiscard]] Vec2 momentum(const World& world);
 

@@ -16,6 +16,7 @@ class World;
 struct ObservablesSample {
     double time = 0.0;                 ///< simulated time, s (World::time)
     double kineticEnergy = 0.0;        ///< Σ ½ m |v|², J
+    double potentialEnergy = 0.0;      ///< gravitational, J (diagnostics.hpp; 0 without gravity)
     Vec2 momentum = Vec2::Zero();      ///< Σ m v, kg·m/s
     Vec2 centreOfMass = Vec2::Zero();  ///< m (the box centre for an empty world)
     std::uint64_t collisions = 0;      ///< particle–particle collisions so far (StepCounters)

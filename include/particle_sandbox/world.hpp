@@ -58,12 +58,12 @@ class World {
     /// (a particle wider than the box sits at its centre).
     void setBox(double width, double height);
     void setWalls(bool enabled);
-    /// Throws InvalidArgument for a non-zero gravity while the solver's mode is Exact.
+    /// m/s², y down; any finite vector, in every step mode. Throws InvalidArgument otherwise.
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
     /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], a
-    /// mode or broadphase this build does not have, or mode Exact while the world has gravity.
+    /// mode or broadphase this build does not have.
     void setSolver(const SolverSettings& solver);
 
     // --- particles -------------------------------------------------------------------------

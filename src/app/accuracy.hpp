@@ -2,10 +2,10 @@
 // Switching the stepping mode from the keyboard, and the live accuracy indicators of the HUD.
 //
 // Mode switch: discrete -> substep -> exact -> discrete. Which modes a world takes is the
-// world's to say (World::setSolver throws psb::InvalidArgument for settings it refuses; the
-// exact mode has refused gravity), so the switch asks it: a mode the world refuses is skipped
-// with the world's reason, and the switch moves on to the one after, so a key press always
-// changes the mode when any other mode is possible, and can never take the app down.
+// world's to say (World::setSolver throws psb::InvalidArgument for settings it refuses), so the
+// switch asks it: a mode the world refuses is skipped with the world's reason, and the switch
+// moves on to the one after, so a key press always changes the mode when any other mode is
+// possible, and can never take the app down.
 //
 // Indicators, both O(1) or O(N) per frame and nothing more:
 // - Largest overlap: the deeper of what this frame's steps met (StepCounters::maxOverlap, a

@@ -6,8 +6,6 @@
 
 #include <particle_sandbox/error.hpp>
 
-#include "accuracy.hpp"
-
 namespace psb::app {
 
 double steppedRestitution(double e, int direction) {
@@ -44,9 +42,8 @@ ControlChange toggleGravity(World& world, const Vec2& sceneGravity) {
     const Vec2 g = sceneGravity != Vec2::Zero() ? sceneGravity : appGravity();
     try {
         world.setGravity(g);
-    } catch (const InvalidArgument&) {
-        return {false, "Gravity refused: the " + modeName(world.solver()) +
-                           " mode has none (T switches to discrete or substep)"};
+    } catch (const InvalidArgument& e) {
+        return {false, std::string("Gravity refused: ") + e.what()};
     }
     return {true, "Gravity " + gravityText(g)};
 }

@@ -6,7 +6,7 @@
 // otherwise to Earth's 9.81 m/s² downwards. It is never scaled with the box: scenes are at the
 // scale of what they show (the default is the original's at 1 px = 1 cm, a 7 m box).
 //
-// A mode the world refuses gravity in refuses G with a message naming the mode keys.
+// Every mode has gravity, the exact one included.
 
 #include <string>
 

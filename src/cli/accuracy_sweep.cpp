@@ -25,6 +25,10 @@ std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root) {
         {"bullet-through-row", bench / "bullet-through-row.json", 0.2},
         {"mass-ratio-pair", bench / "mass-ratio-pair.json", 20.0},
         {"inelastic-gas", bench / "inelastic-gas.json", 4.0},
+        // Under gravity, with the exact mode as the reference.
+        {"bouncing-ball", bench / "bouncing-ball.json", 4.0},
+        {"projectile-into-falling-crowd", bench / "projectile-into-falling-crowd.json", 1.5},
+        {"pile-under-gravity", assets / "07-pile-under-gravity.json", 4.0},
     };
 }
 

@@ -37,7 +37,9 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                 [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); },
                 options.timeseries ? &series : nullptr);
         }
-        if (options.timeseries) writeFileAtomically(*options.timeseries, timeSeriesCsv(series));
+        if (options.timeseries) {
+            writeFileAtomically(*options.timeseries, timeSeriesCsv(series, report.gravity));
+        }
         if (options.save)
             saveScene(sceneFromWorld(world, scene.name, scene.description), *options.save);
         const std::string json = reportJson(report);

@@ -20,6 +20,13 @@ std::string reportJson(const RunReport& r) {
     j["collisions"] = r.collisions;
     j["wall_collisions"] = r.wallCollisions;
     j["kinetic_energy"] = {{"initial", r.kineticEnergyInitial}, {"final", r.kineticEnergyFinal}};
+    if (r.gravity) {
+        // Under gravity kinetic energy alone is not conserved; kinetic + potential is.
+        j["potential_energy"] = {{"initial", r.potentialEnergyInitial},
+                                 {"final", r.potentialEnergyFinal}};
+        j["mechanical_energy"] = {{"initial", r.kineticEnergyInitial + r.potentialEnergyInitial},
+                                  {"final", r.kineticEnergyFinal + r.potentialEnergyFinal}};
+    }
     j["momentum"] = {
         {"initial", {r.momentumInitial.x(), r.momentumInitial.y()}},
         {"final", {r.momentumFinal.x(), r.momentumFinal.y()}},

@@ -62,6 +62,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.particles = world.size();
     r.steps = stepsFor(options.duration, s.solver.dt);
     r.kineticEnergyInitial = kineticEnergy(world);
+    r.gravity = !world.def().gravity.isZero();
+    r.potentialEnergyInitial = potentialEnergy(world);
     r.momentumInitial = momentum(world);
     const double overlapInitial = maxOverlap(world);
 
@@ -98,6 +100,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     // mode meets overlaps only at collisions, where rounding keeps them at a few ulps).
     r.maxOverlap = std::max({c.maxOverlap, overlapInitial, maxOverlap(world)});
     r.kineticEnergyFinal = kineticEnergy(world);
+    r.potentialEnergyFinal = potentialEnergy(world);
     r.momentumFinal = momentum(world);
     r.escaped = countEscaped(world);
     return r;

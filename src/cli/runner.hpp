@@ -23,7 +23,11 @@ struct RunReport {
     double wallSeconds = 0.0;
     std::uint64_t collisions = 0;
     std::uint64_t wallCollisions = 0;
-    double kineticEnergyInitial = 0.0, kineticEnergyFinal = 0.0;        ///< joules
+    double kineticEnergyInitial = 0.0, kineticEnergyFinal = 0.0;  ///< joules
+    /// Gravitational potential energy (diagnostics.hpp's reference: the floor), joules; the
+    /// report lists it, and kinetic + potential, only when `gravity`.
+    bool gravity = false;
+    double potentialEnergyInitial = 0.0, potentialEnergyFinal = 0.0;
     Vec2 momentumInitial = Vec2::Zero(), momentumFinal = Vec2::Zero();  ///< kg·m/s
     double wallImpulse = 0.0;                                           ///< kg·m/s
     double maxOverlap = 0.0;                                            ///< metres

@@ -4,8 +4,9 @@
 
 namespace psb::cli {
 
-std::string timeSeriesCsv(const TimeSeries& series) {
+std::string timeSeriesCsv(const TimeSeries& series, bool gravity) {
     std::string csv = kTimeSeriesCsvHeader;
+    if (gravity) csv += kTimeSeriesCsvGravityColumns;
     csv += '\n';
     csv.reserve(csv.size() + series.size() * 160);
     char row[320];
@@ -16,6 +17,12 @@ std::string timeSeriesCsv(const TimeSeries& series) {
             s.kineticEnergy, s.momentum.x(), s.momentum.y(), s.centreOfMass.x(), s.centreOfMass.y(),
             static_cast<unsigned long long>(s.collisions), s.collisionRate);
         csv.append(row, static_cast<std::size_t>(n));
+        if (gravity) {
+            csv.pop_back();  // the newline
+            const int m = std::snprintf(row, sizeof row, ",%.17g,%.17g\n", s.potentialEnergy,
+                                        s.kineticEnergy + s.potentialEnergy);
+            csv.append(row, static_cast<std::size_t>(m));
+        }
     }
     return csv;
 }

@@ -13,11 +13,16 @@ inline constexpr const char* kTimeSeriesCsvHeader =
     "time_s,kinetic_energy_J,momentum_x_kg_m_per_s,momentum_y_kg_m_per_s,com_x_m,com_y_m,"
     "collisions,collision_rate_per_s";
 
+/// The two columns added after collision_rate_per_s when the world has gravity.
+inline constexpr const char* kTimeSeriesCsvGravityColumns =
+    ",potential_energy_J,mechanical_energy_J";
+
 /// Most rows --timeseries writes (about 1 GB of text); a run that would write more is refused.
 inline constexpr std::uint64_t kMaxTimeSeriesRows = 10'000'000;
 
 /// The header and one row per sample of `series`, oldest first, each line ending in '\n'.
-/// Doubles are written with 17 significant digits, so they read back bit-exact.
-[[nodiscard]] std::string timeSeriesCsv(const TimeSeries& series);
+/// Doubles are written with 17 significant digits, so they read back bit-exact. With `gravity`
+/// each row also has the potential and the mechanical (kinetic + potential) energy.
+[[nodiscard]] std::string timeSeriesCsv(const TimeSeries& series, bool gravity = false);
 
 }  // namespace psb::cli

@@ -37,6 +37,24 @@ double kineticEnergy(const World& world) {
     return sum.value();
 }
 
+double potentialEnergy(const World& world) {
+    const ParticleArrays& p = world.particles();
+    const WorldDef& def = world.def();
+    const double gx = def.gravity.x(), gy = def.gravity.y();
+    if (gx == 0.0 && gy == 0.0) return 0.0;
+    // The box corner furthest along g: the floor for gravity pointing down.
+    const double refX = gx > 0.0 ? def.width : 0.0, refY = gy > 0.0 ? def.height : 0.0;
+    CompensatedSum sum;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        sum.add(p.mass[i] * (gx * (refX - p.x[i]) + gy * (refY - p.y[i])));
+    }
+    return sum.value();
+}
+
+double mechanicalEnergy(const World& world) {
+    return kineticEnergy(world) + potentialEnergy(world);
+}
+
 Vec2 momentum(const World& world) {
     const ParticleArrays& p = world.particles();
     CompensatedSum sx, sy;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "contact.hpp"
+#include "exact_parabolic_impact.hpp"
 #include "exact_time_of_impact.hpp"
 #include "stage_timer.hpp"
 
@@ -18,6 +19,8 @@ constexpr double kCellSlack = 1.0 + 1e-9;
 // Target cell side, in mean particle spacings sqrt(area / N). Larger cells mean fewer
 // cell-face events but more pair tests per prediction; measured on the dilute-gas benchmark.
 constexpr double kCellSpacings = 1.0;
+// A relative velocity below this fraction of the pair's own speeds is rounding (gravity only).
+constexpr double kRoundingVelocity = 1e-9;
 // Events per particle between two re-sorts of the particles into cell order.
 constexpr std::uint64_t kResortEvery = 8;
 // Discs up to this many mean spacings across stay in level 0 (one level as before levels
@@ -43,6 +46,16 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     def_ = def;
     clock_ = 0.0;
+    gx_ = def.gravity.x();
+    gy_ = def.gravity.y();
+    gravity_ = gx_ != 0.0 || gy_ != 0.0;
+    if (gravity_) {
+        const double g = std::hypot(gx_, gy_);
+        restSpeed_ = def.restitution < 1.0
+                         ? kRestSpeed
+                         : std::sqrt(2.0 * g * kRestRoundingGap * std::max(def.width, def.height));
+        restGap_ = restSpeed_ * restSpeed_ / (2.0 * g);
+    }
     const auto n = static_cast<std::uint32_t>(p.size());
     bodies_.resize(n);
     cold_.resize(n);
@@ -50,6 +63,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
 
     ids_ = p.id;
     heldHit_.clear();
+    wokeAt_.assign(gravity_ ? n : 0, -kNever);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -81,6 +95,9 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
             };
             c.pinX = place(b.x, b.vx, b.r, def_.width);
             c.pinY = place(b.y, b.vy, b.r, def_.height);
+            // A pinned axis has no room to fall along: gravity across it is held by the walls.
+            if (gravity_ && c.pinX) b.flags |= kRestX;
+            if (gravity_ && c.pinY) b.flags |= kRestY;
         }
     }
     setUpGrid();
@@ -103,10 +120,12 @@ double ExactStepper::bucketWidth() const {
     double v2 = 0.0;
     for (const Body& b : bodies_)
         v2 += b.vx * b.vx + b.vy * b.vy;
-    if (!(v2 > 0.0)) return 1.0;
-    const double vrms = std::sqrt(v2 / static_cast<double>(bodies_.size()));
     const double side =
         std::min(cells_.faceX(1) - cells_.faceX(0), cells_.faceY(1) - cells_.faceY(0));
+    // Under gravity speeds grow to about √(g·side) within a cell crossing.
+    if (gravity_) v2 += static_cast<double>(bodies_.size()) * std::hypot(gx_, gy_) * side;
+    if (!(v2 > 0.0)) return 1.0;
+    const double vrms = std::sqrt(v2 / static_cast<double>(bodies_.size()));
     return side / vrms / 64.0;
 }
 
@@ -132,6 +151,7 @@ void ExactStepper::sortByCell(bool midRun) {
     permute(cold_);
     permute(order_);
     permute(ids_);
+    if (gravity_) permute(wokeAt_);
     if (midRun) {
         // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));
@@ -282,6 +302,19 @@ void ExactStepper::forCells(std::uint8_t level, std::int64_t x0, std::int64_t x1
     }
 }
 
+template <typename F>
+void ExactStepper::forEachAround(std::uint32_t i, F&& f) const {
+    const Cold& c = cold_[i];
+    for (std::uint8_t l = 0; l < levelCount_; ++l) {
+        const CellList& list = listOf(l);
+        const std::int64_t k = reach(c.level, l);
+        forCells(l, c.kx - k, c.kx + k, c.ky - k, c.ky + k, [&](std::uint32_t cell) {
+            for (std::uint32_t q = list.head(cell); q != CellList::kNone; q = list.next(q))
+                f(q);
+        });
+    }
+}
+
 void ExactStepper::scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                              std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
                              Event& best) {
@@ -392,34 +425,75 @@ void ExactStepper::recordPlacedOverlaps() {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     for (std::uint32_t i = 0; i < n; ++i) {
         const Body& a = bodies_[i];
-        const Cold& ac = cold_[i];
-        for (std::uint8_t l = 0; l < levelCount_; ++l) {
-            const CellList& list = listOf(l);
-            const std::int64_t k = reach(ac.level, l);
-            forCells(l, ac.kx - k, ac.kx + k, ac.ky - k, ac.ky + k, [&](std::uint32_t c) {
-                for (std::uint32_t q = list.head(c); q != CellList::kNone; q = list.next(q)) {
-                    Body& b = bodies_[q];
-                    if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) continue;
-                    const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
-                    const double d2 = rx * rx + ry * ry;
-                    if (!(d2 < sigma * sigma)) continue;
-                    overlapContact_[pairKey(order_[i], order_[q])] = std::sqrt(d2);
-                    placedOverlap_ = std::max(placedOverlap_, sigma - std::sqrt(d2));
-                    bodies_[i].flags |= kPlacedOverlapping;
-                    b.flags |= kPlacedOverlapping;
-                }
-            });
-        }
+        forEachAround(i, [&](std::uint32_t q) {
+            Body& b = bodies_[q];
+            if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) return;
+            const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
+            const double d2 = rx * rx + ry * ry;
+            if (!(d2 < sigma * sigma)) return;
+            overlapContact_[pairKey(order_[i], order_[q])] = std::sqrt(d2);
+            placedOverlap_ = std::max(placedOverlap_, sigma - std::sqrt(d2));
+            bodies_[i].flags |= kPlacedOverlapping;
+            b.flags |= kPlacedOverlapping;
+        });
     }
 }
 
 void ExactStepper::advance(Body& b, double t) const {
     const double h = t - b.t;
     if (h != 0.0) {
-        b.x += b.vx * h;
-        b.y += b.vy * h;
+        if (gravity_) {
+            double ax, ay;
+            accelerationOf(b, ax, ay);
+            b.x += b.vx * h + 0.5 * ax * h * h;
+            b.y += b.vy * h + 0.5 * ay * h * h;
+            b.vx += ax * h;
+            b.vy += ay * h;
+        } else {
+            b.x += b.vx * h;
+            b.y += b.vy * h;
+        }
         b.t = t;
     }
+}
+
+void ExactStepper::accelerationOf(const Body& b, double& ax, double& ay) const {
+    if (b.flags & (kHeld | kAsleep)) {
+        ax = ay = 0.0;
+        return;
+    }
+    ax = (b.flags & kRestX) ? 0.0 : gx_;
+    ay = (b.flags & kRestY) ? 0.0 : gy_;
+}
+
+ExactStepper::Motion ExactStepper::motionAt(const Body& b, double t) const {
+    Motion m{};
+    accelerationOf(b, m.ax, m.ay);
+    const double h = t - b.t;
+    m.x = b.x + b.vx * h + 0.5 * m.ax * h * h;
+    m.y = b.y + b.vy * h + 0.5 * m.ay * h * h;
+    m.vx = b.vx + m.ax * h;
+    m.vy = b.vy + m.ay * h;
+    return m;
+}
+
+double ExactStepper::pairTimeUnderGravity(const Body& a, const Motion& am, const Body& b,
+                                          const Motion& bm, double sigma, double horizon) {
+    if (isStatic(a) && isStatic(b)) return kNever;
+    const double rx = bm.x - am.x, ry = bm.y - am.y;
+    const double dvx = bm.vx - am.vx, dvy = bm.vy - am.vy;
+    const double rax = bm.ax - am.ax, ray = bm.ay - am.ay;
+    // Falling alike: a straight line relative to each other. Particles that fall together (a
+    // pile woken by a rebuild, a stack dropped as one) move at the same velocity to rounding;
+    // the direction of a relative velocity made of rounding is noise, so such a pair is at rest
+    // relative to each other, not approaching.
+    if (rax == 0.0 && ray == 0.0) {
+        const double dv2 = dvx * dvx + dvy * dvy;
+        const double v2 = am.vx * am.vx + am.vy * am.vy + bm.vx * bm.vx + bm.vy * bm.vy;
+        if (dv2 <= kRoundingVelocity * kRoundingVelocity * v2) return kNever;
+        return pairImpactTime(rx, ry, dvx, dvy, sigma);
+    }
+    return parabolicPairImpactTime(rx, ry, dvx, dvy, rax, ray, sigma, horizon);
 }
 
 void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
@@ -427,6 +501,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                              Event& best) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
+    const Motion am = gravity_ ? motionAt(a, now) : Motion{};
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
     // neighbourhood overlap instead of following one another.
     constexpr int kBatch = 32;
@@ -454,7 +529,16 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             if (aHeld && bHeld) continue;  // held particles pass through each other
             if ((aJammed && bHeld) || (aHeld && (b.flags & kJammed))) continue;
             const double h = now - b.t;
-            const double rx = b.x + b.vx * h - ax, ry = b.y + b.vy * h - ay;
+            Motion bm{};
+            double rx, ry;
+            if (gravity_) {
+                bm = motionAt(b, now);
+                rx = bm.x - am.x;
+                ry = bm.y - am.y;
+            } else {
+                rx = b.x + b.vx * h - ax;
+                ry = b.y + b.vy * h - ay;
+            }
             double sigma = a.r + b.r;
             if (a.flags & b.flags & kPlacedOverlapping) {
                 const auto it = overlapContact_.find(pairKey(order_[i], order_[q]));
@@ -467,7 +551,10 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                     }
                 }
             }
-            const double t = now + pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma);
+            const double t =
+                now + (gravity_ ? pairTimeUnderGravity(a, am, b, bm, sigma,
+                                                       std::min(best.time, b.nextColl) - now)
+                                : pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma));
             // Only a collision before q's own scheduled collision can happen as predicted: at
             // that time q changes course or is predicted again against everything around it,
             // i included (Smallenburg 2022). Skipping later ones saves stale events.
@@ -486,10 +573,15 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     // Where i is now. Its stored position stays that of its last velocity change: re-deriving
     // it at every cell face would add a rounding error per face crossed.
     const double ha = now - a.t;
-    const double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
+    double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
     Event best{kNever, 0, 0, Kind::None, 0};
 
-    if (def_.walls) {
+    if (gravity_) {
+        const Motion m = motionAt(a, now);
+        ax = m.x;
+        ay = m.y;
+        if (def_.walls) predictWallsUnderGravity(i, m, now, best);
+    } else if (def_.walls) {
         // A pinned axis has no room: any velocity across it is absorbed at once.
         double tw[4] = {kNever, kNever, kNever, kNever};  // left, right, top, bottom
         if (ac.pinX) {
@@ -515,25 +607,52 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     queue_.update(2 * i, best.time);
 }
 
+void ExactStepper::predictWallsUnderGravity(std::uint32_t i, const Motion& m, double now,
+                                            Event& best) const {
+    const Body& a = bodies_[i];
+    const Cold& ac = cold_[i];
+    double tw[4] = {kNever, kNever, kNever, kNever};  // left, right, top, bottom
+    if (ac.pinX) {
+        if (m.vx != 0.0) tw[m.vx > 0.0 ? 1 : 0] = 0.0;
+    } else {
+        tw[0] = crossingTime(m.x, m.vx, m.ax, a.r, -1.0);
+        tw[1] = crossingTime(m.x, m.vx, m.ax, def_.width - a.r, 1.0);
+    }
+    if (ac.pinY) {
+        if (m.vy != 0.0) tw[m.vy > 0.0 ? 3 : 2] = 0.0;
+    } else {
+        tw[2] = crossingTime(m.y, m.vy, m.ay, a.r, -1.0);
+        tw[3] = crossingTime(m.y, m.vy, m.ay, def_.height - a.r, 1.0);
+    }
+    for (std::int8_t side = 0; side < 4; ++side) {
+        if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
+    }
+}
+
 void ExactStepper::predictCell(std::uint32_t i, double now) {
     const Body& a = bodies_[i];
     const Cold& ac = cold_[i];
     const double ha = now - a.t;
-    const double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
+    Motion m{a.x + a.vx * ha, a.y + a.vy * ha, a.vx, a.vy, 0.0, 0.0};
+    if (gravity_) m = motionAt(a, now);
+    const auto exitTime = [&](double x, double v, double acc, double lo, double hi, int& f) {
+        return gravity_ ? slabExitTimeAccelerated(x, v, acc, lo, hi, f)
+                        : slabExitTime(x, v, lo, hi, f);
+    };
     double best = kNever;
     std::int8_t side = 0;
     // With walls the outer faces are never crossed (the wall comes first).
     int face;
-    const double tx = slabExitTime(ax, a.vx, cells_.faceX(ac.kx) - skinX_,
-                                   cells_.faceX(ac.kx + 1) + skinX_, face);
+    const double tx = exitTime(m.x, m.vx, m.ax, cells_.faceX(ac.kx) - skinX_,
+                               cells_.faceX(ac.kx + 1) + skinX_, face);
     const bool outerX =
         !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
     if (face != 0 && !outerX) {
         best = tx;
         side = face < 0 ? 0 : 1;
     }
-    const double ty = slabExitTime(ay, a.vy, cells_.faceY(ac.ky) - skinY_,
-                                   cells_.faceY(ac.ky + 1) + skinY_, face);
+    const double ty = exitTime(m.y, m.vy, m.ay, cells_.faceY(ac.ky) - skinY_,
+                               cells_.faceY(ac.ky + 1) + skinY_, face);
     const bool outerY =
         !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
     if (face != 0 && !outerY && ty < best) {
@@ -570,8 +689,9 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     }
     ++stats_.pairs;
     const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
-    advance(a, ev.time);
-    advance(b, ev.time);
+    // A sleeper does not move; advancing it would only restart its clock (t).
+    if (!(a.flags & kAsleep)) advance(a, ev.time);
+    if (!(b.flags & kAsleep)) advance(b, ev.time);
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double d = std::sqrt(dx * dx + dy * dy);
     maxOverlap_ = std::max(maxOverlap_, a.r + b.r - d);
@@ -582,19 +702,47 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         n = coincidentNormal(ids_[i], ids_[j]);
     }
     const double approach = (a.vx - b.vx) * n.x + (a.vy - b.vy) * n.y;
+    // A sleeper hit hard enough, or by a held particle, wakes; otherwise it stays put and the
+    // other bounces off it as off an infinitely heavy disc.
+    bool aStays = false, bStays = false, woke = false;
+    if (gravity_) {
+        const auto hitsSleeper = [&](std::uint32_t s, std::uint32_t o) {
+            if (!(bodies_[s].flags & kAsleep)) return false;
+            // A particle wedged between sleepers (no room between them) would bounce between
+            // them ever faster: after kWakeAfterHits such hits in a step it wakes them, and the
+            // wedge opens as it would, by pushing them apart.
+            if ((bodies_[o].flags & kHeld) || approach > 2.0 * restSpeed_ ||
+                countHit(o) >= kWakeAfterHits) {
+                wake(s, ev.time);
+                woke = true;
+                return false;
+            }
+            return true;
+        };
+        aStays = hitsSleeper(i, j);
+        bStays = hitsSleeper(j, i);
+    }
+    const double wi = aStays ? 0.0 : cold_[i].w, wj = bStays ? 0.0 : cold_[j].w;
     const double e = effectiveRestitution(approach, recent);
     const bool hit = def_.friction > 0.0
-                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
-                                              cold_[i].m, cold_[j].m, n, e, def_.friction)
-                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, cold_[i].w, cold_[j].w,
-                                               cold_[i].m, cold_[j].m, n, e, 0.0);
+                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
+                                              cold_[j].m, n, e, def_.friction)
+                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
+                                               cold_[j].m, n, e, 0.0);
     if (hit) {
         ++counters.collisions;
-        ++a.count;
-        ++b.count;
+        if (!aStays) ++a.count;
+        if (!bStays) ++b.count;
         if (b.flags & kHeld) countHeldHit(i);
         if (a.flags & kHeld) countHeldHit(j);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
+    }
+    if (gravity_) {
+        // Lift what gravity presses together (judged by how they moved into the contact), then
+        // let them rest (what this hit just woke does not).
+        liftPressedPair(i, j, n);
+        settleAfterPair(i, woke);
+        settleAfterPair(j, woke);
     }
     predictCollision(i, ev.time);
     predictCollision(j, ev.time);
@@ -602,9 +750,13 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     predictCell(j, ev.time);
 }
 
-void ExactStepper::countHeldHit(std::uint32_t i) {
+std::uint32_t ExactStepper::countHit(std::uint32_t i) {
     if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
-    if (cold_[i].heldHits >= kJamLimit) bodies_[i].flags |= kJammed;
+    return cold_[i].heldHits;
+}
+
+void ExactStepper::countHeldHit(std::uint32_t i) {
+    if (countHit(i) >= kJamLimit) bodies_[i].flags |= kJammed;
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -617,6 +769,13 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     double& vt = alongX ? a.vy : a.vx;
     const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
     const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
+    if (gravity_ && !pinned) {
+        // At the wall by definition of the event: a parabola's root can leave the centre a few
+        // ulps past it, which a particle resting there would keep.
+        double& x = alongX ? a.x : a.y;
+        const double extent = alongX ? def_.width : def_.height;
+        x = std::clamp(x, a.r, extent - a.r);
+    }
     double dv = 0.0;
     if (a.flags & kHeld) {
         // A held particle stops moving across the wall; its owner sets its velocity again.
@@ -630,6 +789,12 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
                                  : reboundOffWall<false>(out, vt, e, 0.0);
         v = outward * out;
+        // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
+        if (gravity_ && outward * (alongX ? gx_ : gy_) > 0.0 && std::abs(v) < restSpeed_) {
+            dv += std::abs(v);
+            v = 0.0;
+            a.flags |= alongX ? kRestX : kRestY;
+        }
     }
     if (dv > 0.0) {
         ++counters.wallCollisions;
@@ -637,8 +802,144 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
     }
     ++a.count;
+    if (gravity_ && !(a.flags & kHeld) && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ &&
+        mayRest(i, ev.time) && supported(i)) {
+        fallAsleep(i, ev.time);
+    }
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
+}
+
+void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n) {
+    Body& a = bodies_[i];
+    Body& b = bodies_[j];
+    const double wi = (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w;
+    const double wj = (b.flags & (kAsleep | kHeld)) ? 0.0 : cold_[j].w;
+    if (wi == 0.0 && wj == 0.0) return;
+    // Pressed together by gravity (one falls, the other does not, or less) and leaving each
+    // other slower than the lift: leave at the lift, by an impulse along n shared as a
+    // collision shares it (see the design note).
+    double aax, aay, bax, bay;
+    accelerationOf(a, aax, aay);
+    accelerationOf(b, bax, bay);
+    const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
+    if (!(an < 0.0 && an * an > kPressTolerance * kPressTolerance * (rax * rax + ray * ray)))
+        return;
+    const double lift = 0.5 * restSpeed_;
+    const double leaving = (b.vx - a.vx) * n.x + (b.vy - a.vy) * n.y;
+    if (!(leaving < lift)) return;
+    const double dv = lift - leaving, share = wi / (wi + wj);
+    a.vx -= dv * share * n.x;
+    a.vy -= dv * share * n.y;
+    b.vx += dv * (1.0 - share) * n.x;
+    b.vy += dv * (1.0 - share) * n.y;
+    if (wi > 0.0) ++a.count;
+    if (wj > 0.0) ++b.count;
+}
+
+void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
+    Body& a = bodies_[i];
+    if (a.flags & (kHeld | kAsleep)) return;
+    // Off the wall it rested on if the pair pushed it off (or into it: the wall event comes
+    // at once and decides).
+    const Cold& ac = cold_[i];
+    if ((a.flags & kRestX) && !ac.pinX && a.vx != 0.0) a.flags &= ~kRestX;
+    if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
+    if (!justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t) &&
+        supported(i)) {
+        fallAsleep(i, a.t);
+    }
+}
+
+bool ExactStepper::supported(std::uint32_t i) const {
+    // The contact normals (from i to what holds it) of everything within restGap_ that does not
+    // move: walls, sleepers, held particles at rest. i cannot slide off if gravity lies in the
+    // cone they span (along one of them, or between two).
+    const Body& a = bodies_[i];
+    constexpr int kMax = 16;
+    double nx[kMax], ny[kMax];
+    int count = 0;
+    const auto add = [&](double x, double y) {
+        if (count < kMax) nx[count] = x, ny[count++] = y;
+    };
+    if (def_.walls) {
+        if (a.x - a.r <= restGap_) add(-1.0, 0.0);
+        if (def_.width - a.r - a.x <= restGap_) add(1.0, 0.0);
+        if (a.y - a.r <= restGap_) add(0.0, -1.0);
+        if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
+    }
+    forEachAround(i, [&](std::uint32_t q) {
+        const Body& b = bodies_[q];
+        if (q == i || !isStatic(b)) return;
+        const double rx = b.x - a.x, ry = b.y - a.y;  // b does not move: b.x is now
+        const double d = std::sqrt(rx * rx + ry * ry);
+        if (d > 0.0 && d - (a.r + b.r) <= restGap_) add(rx / d, ry / d);
+    });
+    // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
+    // than that does not slide off it. Without friction gravity must lie strictly between the
+    // normals (or along one, to within 1e-9 rad).
+    const double slack = std::atan(def_.friction) + 1e-9;
+    const double pi = 3.14159265358979323846;
+    const double ga = std::atan2(gy_, gx_);
+    const auto offset = [&](int k) {  // angle from gravity to normal k, in (-pi, pi]
+        double d = std::atan2(ny[k], nx[k]) - ga;
+        if (d > pi) d -= 2.0 * pi;
+        if (d <= -pi) d += 2.0 * pi;
+        return d;
+    };
+    double lo = -kNever, hi = kNever;  // the nearest normals on either side of gravity
+    bool left = false, right = false;
+    for (int k = 0; k < count; ++k) {
+        const double d = offset(k);
+        if (std::abs(d) <= std::max(slack, kRestSlope)) return true;
+        if (d < 0.0 && d > lo) lo = d, left = true;
+        if (d > 0.0 && d < hi) hi = d, right = true;
+    }
+    // Two normals on either side of gravity, less than a half turn apart (widened by friction).
+    return left && right && hi - lo < pi + 2.0 * slack;
+}
+
+void ExactStepper::fallAsleep(std::uint32_t i, double now) {
+    Body& b = bodies_[i];
+    advance(b, now);
+    b.vx = b.vy = 0.0;
+    b.flags |= kAsleep;
+    ++b.count;
+    ++stats_.sleeps;
+}
+
+void ExactStepper::wake(std::uint32_t i, double now) {
+    // i wakes, and with it everything resting on it, and on those, ...: a support that moves
+    // lets what it held fall.
+    const auto rouse = [&](std::uint32_t k) {
+        // It still rests on the walls it rested on (until it moves off them): what presses it
+        // into them is then lifted off it, not pressed through it.
+        Body& b = bodies_[k];
+        b.flags &= ~kAsleep;
+        b.t = now;
+        wokeAt_[k] = now;
+        ++b.count;
+        ++stats_.wakes;
+    };
+    rouse(i);
+    wakeStack_.assign(1, i);
+    while (!wakeStack_.empty()) {
+        const std::uint32_t p = wakeStack_.back();
+        wakeStack_.pop_back();
+        const Body& a = bodies_[p];
+        forEachAround(p, [&](std::uint32_t q) {
+            const Body& b = bodies_[q];
+            if (!(b.flags & kAsleep)) return;
+            const double rx = b.x - a.x, ry = b.y - a.y;  // from p up to q
+            if (gx_ * rx + gy_ * ry >= 0.0) return;       // q is not above p
+            const double reach = a.r + b.r + restGap_;
+            if (rx * rx + ry * ry > reach * reach) return;
+            rouse(q);
+            predictCollision(q, now);
+            predictCell(q, now);
+            wakeStack_.push_back(q);
+        });
+    }
 }
 
 void ExactStepper::handleCell(std::uint32_t i, double now) {
@@ -676,7 +977,12 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     // whose earliest result is still scheduled, so only these can bring an earlier event.
     const Body& b = bodies_[i];
     const double h = now - b.t;
-    const double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
+    double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
+    if (gravity_) {
+        const Motion m = motionAt(b, now);
+        ax = m.x;
+        ay = m.y;
+    }
     Event best = a.coll;
     for (std::uint8_t l = 0; l < levelCount_; ++l) {
         const std::int64_t k = reach(a.level, l);
@@ -759,6 +1065,14 @@ void ExactStepper::sync(ParticleArrays& p) {
     for (std::size_t k = 0; k < n; ++k) {
         const Body& b = bodies[k];
         const std::uint32_t i = order[k];
+        if (gravity_) {
+            const Motion m = motionAt(b, t);
+            x[i] = m.x;
+            y[i] = m.y;
+            vx[i] = m.vx;
+            vy[i] = m.vy;
+            continue;
+        }
         const double h = t - b.t;
         x[i] = b.x + b.vx * h;
         y[i] = b.y + b.vy * h;

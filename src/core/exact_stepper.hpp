@@ -112,7 +112,42 @@
 // Walls off: no wall events, particles fly free; the cell grid folds onto itself
 // (cell_list.hpp) so space is unbounded.
 //
-// Gravity is refused in this mode by World (flights would be parabolas, not lines).
+// Gravity. Between events a free particle flies on a parabola, r(t) = r₀ + v₀t + ½gt², and
+// lazy advance stays as it is (a particle's stored state is the one at its last velocity
+// change). Two free particles fall alike, so their relative motion is a straight line and their
+// time of impact the quadratic above. A free particle against one that does not fall (held,
+// asleep, or resting on a wall) needs the first root of a quartic; walls and cell faces are
+// crossed at the root of a quadratic, either face of a cell (a particle thrown up falls back
+// through the face it came in by). All in exact_parabolic_impact.hpp. A world without gravity
+// takes none of these paths: its trajectories are bit for bit those of the linear code.
+//
+// Resting (gravity only; Bannerman et al. 2014, DynamO's sleeping particles, after Luding &
+// McNamara 1998). A ball with e < 1 makes infinitely many bounces in finite time, and the guards
+// above only slow the cascade, so particles that come to rest are taken out of the dynamics:
+//   - a wall that gravity presses a particle into: a rebound slower than restSpeed_ ends with
+//     the particle resting on the wall (its velocity and acceleration across the wall zero); it
+//     still slides along it;
+//   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
+//     acceleration, no cell events) if the supports within restGap_ (walls, sleepers, held
+//     particles at rest) hold it: one whose contact normal is within kRestSlope of gravity, or
+//     two on either side of it, each normal's cone widened by the friction angle atan(mu);
+//     a particle woken less than kContactDuration ago does not fall asleep again;
+//   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
+//     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
+//     wakes, with every sleeper it supported (transitively: the ones resting
+//     on it); slower hits bounce off it as off an infinitely heavy disc;
+//   - a pair that gravity presses together (one falls and the other does not: it is asleep,
+//     held or resting on a wall) and that leaves a collision slower than restSpeed_ / 2 leaves
+//     at restSpeed_ / 2 (an impulse shared as the collision shares it): a particle on the side
+//     of its support hops down it instead of making ever faster tiny bounces on it, and no
+//     pair is ever predicted to touch again at the same instant.
+// restSpeed_ is kRestSpeed for e < 1; with e = 1 it is the speed of a fall through rounding
+// (kRestRoundingGap of the box), so that only particles placed at rest on a support rest, and
+// nothing moving ever sleeps. restGap_ is the height of a hop at restSpeed_, restSpeed_²/(2g):
+// waking a sleeper lets it fall at most that far, which reaches only restSpeed_ and does not
+// wake what is under it. A rebuild (any change to the world) wakes everything; a settled pile
+// settles again in a few events per particle, so a removed support lets the ones above fall.
+// Limit: a frictionless pile, or one with e = 0, does not settle yet (docs/exact.md).
 
 #include <cstdint>
 #include <unordered_map>
@@ -123,6 +158,7 @@
 #include <particle_sandbox/world_def.hpp>
 
 #include "cell_list.hpp"
+#include "contact.hpp"
 #include "event_queue.hpp"
 
 namespace psb::exact {
@@ -147,6 +183,24 @@ inline constexpr std::uint32_t kJamLimit = 1000;
 /// never reached by the scenes and tests; if it is, the next step starts from a rebuild, where
 /// the invalid-state rules above resolve any overlap left behind.
 inline constexpr std::uint64_t kMaxEventsPerParticlePerStep = 10000;
+
+/// Under gravity: hits on sleeping particles in one step after which a particle wakes the
+/// sleepers it hits (see the design note): a backstop for a particle wedged between sleepers,
+/// below the step's event budget. No scene or test reaches it.
+inline constexpr std::uint32_t kWakeAfterHits = 100000;
+
+/// Under gravity: a slow particle rests on one support whose contact normal is within this
+/// angle (radians) of gravity; beyond it, only between two.
+inline constexpr double kRestSlope = 1.0471975511965976;  // 60°
+
+/// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see the design
+/// note). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
+inline constexpr double kRestSpeed = 0.05;
+
+/// Under gravity with e = 1: the fall, as a fraction of the box's larger side, that sets the
+/// rest speed, √(2·g·fall). 10⁻¹² is a few thousand ulps of a coordinate: a particle placed at
+/// rest on the floor rests, a particle that moves never does.
+inline constexpr double kRestRoundingGap = 1e-12;
 
 /// One resolved collision, for tests and diagnostics. `j` is a particle index for a pair, or
 /// kWall + w for wall w (0 = left, 1 = right, 2 = top, 3 = bottom).
@@ -188,6 +242,7 @@ class ExactStepper {
     /// Events of each kind processed by the last step.
     struct EventStats {
         std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0;
+        std::uint64_t sleeps = 0, wakes = 0;  ///< particles put to sleep / woken (gravity only)
         bool budgetExhausted = false;
     };
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
@@ -208,6 +263,13 @@ class ExactStepper {
     static constexpr std::uint32_t kHeld = 1;    // kinematic: infinite mass
     static constexpr std::uint32_t kJammed = 2;  // passes through held particles (jam guard)
     static constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
+    static constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity, no acceleration
+    static constexpr std::uint32_t kRestX = 16;  // no acceleration along x (on a wall, pinned)
+    static constexpr std::uint32_t kRestY = 32;  // no acceleration along y
+    // Where a particle is at a time, and how it moves there (gravity only).
+    struct Motion {
+        double x, y, vx, vy, ax, ay;
+    };
     struct Event {
         double time;
         std::uint32_t partner;       // pair: the other particle
@@ -261,11 +323,32 @@ class ExactStepper {
     void scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                    std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, Event& best);
     void scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best);
+    void accelerationOf(const Body& b, double& ax, double& ay) const;
+    [[nodiscard]] Motion motionAt(const Body& b, double t) const;
+    [[nodiscard]] static bool isStatic(const Body& b) {
+        return (b.flags & kAsleep) || ((b.flags & kHeld) && b.vx == 0.0 && b.vy == 0.0);
+    }
+    [[nodiscard]] static double pairTimeUnderGravity(const Body& a, const Motion& am, const Body& b,
+                                                     const Motion& bm, double sigma,
+                                                     double horizon);
+    // Calls f(q) for every particle q near enough to touch i (i included): the cells of every
+    // level within its reach of i's level.
+    template <typename F>
+    void forEachAround(std::uint32_t i, F&& f) const;
+    [[nodiscard]] bool supported(std::uint32_t i) const;
+    [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
+        return now - wokeAt_[i] >= kContactDuration;
+    }
+    void fallAsleep(std::uint32_t i, double now);
+    void wake(std::uint32_t i, double now);
+    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n);
+    void settleAfterPair(std::uint32_t i, bool justWoken);
     void recordPlacedOverlaps();
     [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
         return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
     }
     void predictCollision(std::uint32_t i, double now);
+    void predictWallsUnderGravity(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void predictCell(std::uint32_t i, double now);
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
@@ -273,10 +356,22 @@ class ExactStepper {
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
+    // Counts a hit of i on a held particle or a sleeper this step (heldHits, reset per step);
+    // returns the count.
+    std::uint32_t countHit(std::uint32_t i);
     void countHeldHit(std::uint32_t i);
 
     WorldDef def_;
     bool stale_ = true;
+    bool gravity_ = false;  // def_.gravity is not zero
+    double gx_ = 0.0, gy_ = 0.0;
+    double restSpeed_ = 0.0;  // see the design note
+    double restGap_ = 0.0;
+    std::vector<std::uint32_t> wakeStack_;
+    // When each particle was last woken (gravity only): it does not fall asleep again within
+    // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
+    // by the next event of the cascade that woke it.
+    std::vector<double> wokeAt_;
     double clock_ = 0.0;  // seconds since the last rebuild
     // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
     // three short runs of memory; order_ maps this order back to the world's storage indices.

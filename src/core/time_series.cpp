@@ -11,6 +11,7 @@ ObservablesSample sampleObservables(const World& world) {
     ObservablesSample s;
     s.time = world.time();
     s.kineticEnergy = kineticEnergy(world);
+    s.potentialEnergy = potentialEnergy(world);
     s.momentum = momentum(world);
     s.centreOfMass = centreOfMass(world);
     s.collisions = world.counters().collisions;

@@ -53,15 +53,6 @@ std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& 
     // An enumerator outside the lists (a cast from an integer) would make step() do nothing.
     if (toString(s.mode) == "?") p.add("mode", "is not a known step mode");
     if (toString(s.broadphase) == "?") p.add("broadphase", "is not a known broadphase");
-    // The exact mode flies particles in straight lines between events; under gravity they
-    // would fly parabolas, which it does not predict.
-    if (s.mode == StepMode::Exact && (def.gravity.x() != 0.0 || def.gravity.y() != 0.0)) {
-        p.add("gravity",
-              "must be zero in 'exact' mode (got " + vec2(def.gravity) +
-                  "): the event-driven step does not support gravity; use 'discrete' or "
-                  "'substep' for a world with gravity",
-              "mode");
-    }
     return p.take();
 }
 

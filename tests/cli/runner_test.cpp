@@ -104,18 +104,35 @@ TEST(Runner, OptionsOverrideTheScenesSolverBlock) {
     EXPECT_EQ(r.steps, 8u);
 }
 
-TEST(Runner, ModesTheWorldRefusesAreUsageErrorsNamingTheOption) {
+TEST(Runner, ExactModeWithGravityRuns) {
     RunOptions o;
     o.mode = StepMode::Exact;
-    try {
-        (void)run(R"({"version": 1, "world": {"gravity": [0, 9.81]}})", 1.0, o);
-        FAIL() << "exact mode with gravity was accepted";
-    } catch (const UsageError& e) {
-        EXPECT_EQ(
-            std::string(e.what()).rfind("--mode exact: refused (World: gravity must be zero", 0),
-            0u)
-            << e.what();
-    }
+    const RunReport r = run(R"({"version": 1, "world": {"width": 10, "height": 10,
+        "gravity": [0, 9.81]}, "particles": [{"x": 5, "y": 4, "mass": 1, "radius": 1}]})",
+                            1.0, o);
+    EXPECT_EQ(r.solver.mode, StepMode::Exact);
+    EXPECT_TRUE(r.gravity);
+    // Dropped 5 m (centre at 4, floor contact at 9), it hits the floor after 1.01 s.
+    EXPECT_EQ(r.wallCollisions, 0u);
+    EXPECT_NEAR(r.potentialEnergyInitial, 9.81 * 6.0, 1e-12);
+    EXPECT_NEAR(r.kineticEnergyFinal + r.potentialEnergyFinal, 9.81 * 6.0, 1e-10);
+}
+
+TEST(Report, ListsPotentialAndMechanicalEnergyOnlyWithGravity) {
+    const RunReport r = run(R"({"version": 1, "world": {"width": 10, "height": 10,
+        "gravity": [0, 2]}, "solver": {"dt": 0.25, "mode": "exact"},
+        "particles": [{"x": 5, "y": 5, "mass": 3, "radius": 1}]})",
+                            1.0);
+    const auto j = nlohmann::json::parse(reportJson(r));
+    // Height above the floor: 10 − 5 = 5 m, so m g h = 3 · 2 · 5 at the start; after 1 s of
+    // free fall it is 1 m lower, and the 6 J it lost are kinetic.
+    EXPECT_DOUBLE_EQ(j.at("potential_energy").at("initial"), 30.0);
+    EXPECT_NEAR(j.at("potential_energy").at("final").get<double>(), 24.0, 1e-12);
+    EXPECT_NEAR(j.at("kinetic_energy").at("final").get<double>(), 6.0, 1e-12);
+    EXPECT_NEAR(j.at("mechanical_energy").at("final").get<double>(), 30.0, 1e-12);
+    const auto none = nlohmann::json::parse(reportJson(run(R"({"version": 1})", 0.1)));
+    EXPECT_FALSE(none.contains("potential_energy"));
+    EXPECT_FALSE(none.contains("mechanical_energy"));
 }
 
 TEST(Report, HasEveryFieldWithItsValue) {

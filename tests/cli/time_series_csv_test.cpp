@@ -8,6 +8,9 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/world.hpp>
+
 #include "cli_app.hpp"
 #include "time_series_csv.hpp"
 
@@ -143,6 +146,40 @@ TEST_F(TimeSeriesCsv, UnwritablePathFailsWithoutLeavingAFile) {
               kExitFailure);
     EXPECT_NE(err_.str().find("ts.csv"), std::string::npos) << err_.str();
     EXPECT_FALSE(fs::exists(csv));
+}
+
+}  // namespace
+}  // namespace psb::cli
+
+namespace psb::cli {
+namespace {
+
+TEST(TimeSeriesCsvGravity, AddsPotentialAndMechanicalEnergyColumns) {
+    WorldDef def;
+    def.width = def.height = 10.0;
+    def.gravity = {0.0, 2.0};
+    World w(def, {.mode = StepMode::Exact});
+    w.add({.position = {5.0, 5.0}, .mass = 3.0, .radius = 1.0});
+    TimeSeries series(4);
+    series.record(w);
+    w.step(1.0);
+    series.record(w);
+    const std::string csv = timeSeriesCsv(series, true);
+    std::istringstream in(csv);
+    std::string header, first, second;
+    std::getline(in, header);
+    std::getline(in, first);
+    std::getline(in, second);
+    EXPECT_EQ(header, std::string(kTimeSeriesCsvHeader) + kTimeSeriesCsvGravityColumns);
+    // Row 2: 1 s of free fall from 5 m above the floor: potential 24 J, kinetic 6 J, total 30 J.
+    std::vector<double> row;
+    std::stringstream ss(second);
+    for (std::string cell; std::getline(ss, cell, ',');)
+        row.push_back(std::stod(cell));
+    ASSERT_EQ(row.size(), 10u);
+    EXPECT_NEAR(row[8], 24.0, 1e-12);
+    EXPECT_NEAR(row[9], 30.0, 1e-12);
+    EXPECT_EQ(timeSeriesCsv(series).find("potential"), std::string::npos);
 }
 
 }  // namespace

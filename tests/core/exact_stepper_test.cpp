@@ -488,24 +488,6 @@ TEST(ExactMode, FrictionAndRestitutionAreTheDiscreteModesContactPhysics) {
     }
 }
 
-TEST(ExactMode, GravityIsRefusedWithAMessageNamingIt) {
-    WorldDef def;
-    def.gravity = {0.0, 9.81};
-    try {
-        World w(def, {.mode = StepMode::Exact});
-        FAIL() << "no throw";
-    } catch (const InvalidArgument& e) {
-        EXPECT_NE(std::string(e.what()).find("gravity"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("exact"), std::string::npos) << e.what();
-    }
-    World withGravity(def);
-    EXPECT_THROW(withGravity.setSolver({.mode = StepMode::Exact}), InvalidArgument);
-    EXPECT_EQ(withGravity.solver().mode, StepMode::Discrete);  // unchanged
-    World exact({}, {.mode = StepMode::Exact});
-    EXPECT_THROW(exact.setGravity({0.0, 9.81}), InvalidArgument);
-    EXPECT_EQ(exact.def().gravity.y(), 0.0);
-}
-
 TEST(ExactMode, EmptyWorldJustAdvancesTime) {
     World w({}, {.mode = StepMode::Exact});
     w.step(0.5);
