@@ -15,6 +15,7 @@ struct StepProfile {
     double resolve = 0.0;
     double separate = 0.0;
     double walls = 0.0;
+    double obstacles = 0.0;  ///< particles against fixed obstacles (skipped without any)
     double reorder = 0.0;  ///< sorting storage by grid cell (every few steps in large worlds)
     double total = 0.0;
     std::uint64_t pairs = 0;  ///< overlapping pairs the broadphase found (summed over substeps)
@@ -28,6 +29,7 @@ struct StepCounters {
     double wallImpulse = 0.0;          ///< sum of |normal impulse| delivered by walls, kg·m/s
     double maxOverlap = 0.0;           ///< deepest pair overlap found by detection, metres
     std::uint64_t events = 0;          ///< exact mode: events processed (collisions, walls, cells)
+    std::uint64_t obstacleCollisions = 0;  ///< rebounds off fixed obstacles (pegs, segments)
 };
 
 }  // namespace psb

@@ -86,6 +86,11 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
 void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext& ctx,
                   StepProfile& profile, StepCounters& counters) {
     StageTimer total(profile.total);
+    const bool obstaclesPresent = !def.obstacles.empty();
+    if (obstaclesPresent) {
+        StageTimer t(profile.obstacles);
+        saveStartPositions(p, ctx);
+    }
     if (def.gravity.x() != 0.0 || def.gravity.y() != 0.0) {
         StageTimer t(profile.gravity);
         applyGravity(p, def.gravity, dt, ctx.threads);
@@ -113,6 +118,10 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     {
         StageTimer t(profile.separate);
         separate(p, ctx);
+    }
+    if (obstaclesPresent) {
+        StageTimer t(profile.obstacles);
+        obstacles(p, def, ctx, counters);
     }
     if (def.walls) {
         StageTimer t(profile.walls);

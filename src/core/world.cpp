@@ -9,6 +9,7 @@
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
 #include "exact_stepper.hpp"
+#include "obstacle_validate.hpp"
 #include "particle_reorder.hpp"
 #include "stage_timer.hpp"
 #include "step_context.hpp"
@@ -30,6 +31,7 @@ void validateDef(const WorldDef& def, const char* where) {
     if (!std::isfinite(def.friction) || def.friction < 0.0) {
         detail::fail(where, "friction", "must be finite and >= 0 " + detail::got(def.friction));
     }
+    detail::validateObstacles(def.obstacles, def.width, def.height, where);
 }
 
 void validateSolver(const SolverSettings& s, const char* where) {
@@ -87,6 +89,7 @@ World::World(const WorldDef& def, const SolverSettings& solver)
     validateDef(def, "World");
     validateSolver(solver, "World");
     validateModeWithGravity(solver, def.gravity, "World");
+    detail::validateModeWithObstacles(solver, def.obstacles, "World");
 }
 
 World::~World() = default;
@@ -144,7 +147,31 @@ void World::setFriction(double mu) {
 void World::setSolver(const SolverSettings& solver) {
     validateSolver(solver, "World::setSolver");
     validateModeWithGravity(solver, def_.gravity, "World::setSolver");
+    detail::validateModeWithObstacles(solver, def_.obstacles, "World::setSolver");
     solver_ = solver;
+}
+
+void World::setObstacles(Obstacles obstacles) {
+    detail::validateObstacles(obstacles, def_.width, def_.height, "World::setObstacles");
+    detail::validateModeWithObstacles(solver_, obstacles, "World::setObstacles");
+    def_.obstacles = std::move(obstacles);
+}
+
+std::size_t World::addObstacle(const Obstacle& obstacle) {
+    const std::size_t index = def_.obstacles.size();
+    detail::validateObstacle(obstacle, index, def_.width, def_.height, "World::addObstacle");
+    detail::validateModeWithObstacles(solver_, {obstacle}, "World::addObstacle");
+    def_.obstacles.push_back(obstacle);
+    return index;
+}
+
+void World::removeObstacle(std::size_t index) {
+    if (index >= def_.obstacles.size()) {
+        detail::fail("World::removeObstacle", "index",
+                     "names no obstacle (got " + std::to_string(index) + ", the world has " +
+                         std::to_string(def_.obstacles.size()) + ")");
+    }
+    def_.obstacles.erase(def_.obstacles.begin() + static_cast<std::ptrdiff_t>(index));
 }
 
 ParticleId World::add(const ParticleDef& d) {
@@ -229,6 +256,11 @@ std::size_t World::memoryBytes() const {
                  c.quadtree.memoryBytes() + sizeof(ParticleStats) * c.statsScratch.capacity() +
                  sizeof(double) * c.wallImpulseScratch.capacity() +
                  sizeof(std::uint64_t) * c.wallHitScratch.capacity();
+        bytes += c.obstacleGrid.memoryBytes() +
+                 sizeof(double) * (c.startX.capacity() + c.startY.capacity()) +
+                 sizeof(std::uint64_t) * c.obstacleHitScratch.capacity();
+        for (const auto& list : c.obstacleCandidates)
+            bytes += sizeof(std::uint32_t) * list.capacity();
     }
     return bytes;
 }

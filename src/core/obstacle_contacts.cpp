@@ -1,0 +1,218 @@
+// The obstacles stage of the discrete step (see discrete_step.hpp): particles against fixed
+// pegs and segments.
+//
+// Per particle, with p0 its centre at the start of the step and p1 where the earlier stages
+// left it:
+//
+//   1. Candidates: the obstacles the grid lists near the box that holds the whole move p0 → p1
+//      widened by the radius (obstacle_grid.hpp). Most particles have none and stop here.
+//   2. Sweep. A particle that does not touch an obstacle at p0 but whose straight move would
+//      pass into it is stopped at the first contact (the earliest time of impact along the
+//      move, obstacle_time_of_impact.hpp) and rebounds there. So no speed and no step, however
+//      large, carries a particle through a peg or a segment; the price is that a particle that
+//      hits something gives up the rest of its move for this step.
+//   3. Overlaps. Up to kPasses passes over the candidates in ascending index: each obstacle the
+//      particle overlaps pushes it out along the normal from its nearest core point (for a
+//      segment, toward the side the particle started the step on, even if it has since crossed
+//      the core line) and turns its velocity into it around (reboundOffWall, the walls' law).
+//      With walls on, every push is clamped into the box.
+//
+// Caught between two obstacles (a gap narrower than the particle, or an obstacle against a
+// wall): a push that would carry the centre across the core line of another segment is not
+// made. The particle then stays where it is, overlapping both a little, its velocity into each
+// turned around; it never passes through either, and it never leaves the box.
+//
+// Held (kinematic) particles are pushed out like the others but keep their owner's velocity.
+// Each particle is handled on its own against obstacles that never move, so the stage runs in
+// parallel blocks; the collision count is summed per block in block order (parallel.hpp).
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact.hpp"
+#include "discrete_step.hpp"
+#include "obstacle_geometry.hpp"
+#include "obstacle_time_of_impact.hpp"
+#include "parallel.hpp"
+
+namespace psb::stages {
+namespace {
+
+constexpr int kPasses = 4;
+
+/// The particle's state while the stage works on it.
+struct Body {
+    double x, y, vx, vy, r;
+    bool held;
+};
+
+/// Turns the velocity's component into the obstacle (along -n, n the outward unit normal)
+/// around with the walls' law. Returns whether it rebounded.
+template <bool kFriction>
+bool rebound(Body& b, double nx, double ny, double e, double mu) {
+    if (b.held) return false;
+    double into = -(b.vx * nx + b.vy * ny);
+    double along = b.vx * -ny + b.vy * nx;
+    if (reboundOffWall<kFriction>(into, along, e, mu) == 0.0) return false;
+    b.vx = -into * nx + along * -ny;
+    b.vy = -into * ny + along * nx;
+    return true;
+}
+
+/// The outward unit normal at (x, y) for obstacle o, the particle having started the step at
+/// (x0, y0). Writes the distance the centre must move along it to just touch (> 0 when
+/// overlapping) to `depth`.
+void contactNormal(const Obstacle& o, double x, double y, double r, double x0, double y0,
+                   double& nx, double& ny, double& depth) {
+    double qx, qy;
+    nearestCorePoint(o, x, y, qx, qy);
+    double dx = x - qx, dy = y - qy;
+    double dist = std::sqrt(dx * dx + dy * dy);
+    if (!o.isPeg()) {
+        // A centre that crossed the core line during this step goes back to its own side.
+        const double s0 = sideOf(o, x0, y0);
+        if (crossesCore(o, x0, y0, x, y) || (dist == 0.0 && s0 != 0.0)) {
+            const double ex = o.b.x() - o.a.x(), ey = o.b.y() - o.a.y();
+            const double len = std::sqrt(ex * ex + ey * ey);
+            const double sign = s0 >= 0.0 ? 1.0 : -1.0;
+            nx = -ey / len * sign;
+            ny = ex / len * sign;
+            // Through the line and out by r + h on the starting side.
+            const double signedDist = dx * nx + dy * ny;  // < 0 on the wrong side
+            depth = r + o.radius - signedDist;
+            return;
+        }
+    }
+    if (dist > 0.0) {
+        nx = dx / dist;
+        ny = dy / dist;
+    } else {
+        // A centre exactly on a peg's centre (or on a segment's core from the start): back the
+        // way it came, or up when it did not move.
+        const double bx = x0 - x, by = y0 - y, back = std::sqrt(bx * bx + by * by);
+        if (back > 0.0) {
+            nx = bx / back;
+            ny = by / back;
+        } else {
+            nx = 0.0;
+            ny = -1.0;
+        }
+    }
+    depth = r + o.radius - dist;
+}
+
+template <bool kFriction>
+std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
+                         const std::vector<std::uint32_t>& candidates, const WorldDef& def) {
+    const double e = def.restitution, mu = def.friction;
+    std::uint64_t hits = 0;
+
+    // 2. The sweep: the earliest contact along p0 -> p1 with an obstacle not touched at p0.
+    const double mx = b.x - x0, my = b.y - y0;
+    if (mx != 0.0 || my != 0.0) {
+        double first = exact::kNever;
+        std::uint32_t hit = UINT32_MAX;
+        for (const std::uint32_t k : candidates) {
+            const Obstacle& o = obstacles[k];
+            double qx, qy;
+            nearestCorePoint(o, x0, y0, qx, qy);
+            const double sigma = b.r + o.radius;
+            if ((x0 - qx) * (x0 - qx) + (y0 - qy) * (y0 - qy) < sigma * sigma) continue;
+            const double t = exact::obstacleImpactTime(x0, y0, mx, my, b.r, o);
+            if (t < first) {
+                first = t;
+                hit = k;
+            }
+        }
+        if (first <= 1.0) {
+            b.x = x0 + first * mx;
+            b.y = y0 + first * my;
+            double nx, ny, depth;
+            contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
+            hits += rebound<kFriction>(b, nx, ny, e, mu);
+        }
+    }
+
+    // 3. Overlaps, pushed out one obstacle at a time, never across another's core.
+    for (int pass = 0; pass < kPasses; ++pass) {
+        bool moved = false;
+        for (const std::uint32_t k : candidates) {
+            const Obstacle& o = obstacles[k];
+            double nx, ny, depth;
+            contactNormal(o, b.x, b.y, b.r, x0, y0, nx, ny, depth);
+            if (!(depth > 0.0)) continue;
+            double x = b.x + depth * nx, y = b.y + depth * ny;
+            if (def.walls) {
+                x = std::clamp(x, std::min(b.r, 0.5 * def.width),
+                               std::max(def.width - b.r, 0.5 * def.width));
+                y = std::clamp(y, std::min(b.r, 0.5 * def.height),
+                               std::max(def.height - b.r, 0.5 * def.height));
+            }
+            bool blocked = false;
+            for (const std::uint32_t other : candidates) {
+                if (other != k && crossesCore(obstacles[other], b.x, b.y, x, y)) {
+                    blocked = true;
+                    break;
+                }
+            }
+            if (!blocked && (x != b.x || y != b.y)) {
+                b.x = x;
+                b.y = y;
+                moved = true;
+            }
+            hits += rebound<kFriction>(b, nx, ny, e, mu);
+        }
+        if (!moved) break;
+    }
+    return hits;
+}
+
+template <bool kFriction>
+void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
+                   StepCounters& counters) {
+    if (!ctx.obstacleGrid.builtFor(def.obstacles)) ctx.obstacleGrid.build(def.obstacles);
+    const ObstacleGrid& grid = ctx.obstacleGrid;
+    const std::size_t n = p.size();
+    const bool haveStart = ctx.startX.size() == n;
+    const std::size_t blocks = parallel::blockCount(n);
+    ctx.obstacleCandidates.resize(blocks);
+    ctx.obstacleHitScratch.resize(blocks);
+    parallel::forBlocks(ctx.threads, n, [&](std::size_t blk, std::size_t begin, std::size_t end) {
+        std::vector<std::uint32_t>& candidates = ctx.obstacleCandidates[blk];
+        std::uint64_t hits = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const double x0 = haveStart ? ctx.startX[i] : p.x[i];
+            const double y0 = haveStart ? ctx.startY[i] : p.y[i];
+            const double r = p.radius[i];
+            grid.query(std::min(x0, p.x[i]) - r, std::min(y0, p.y[i]) - r, std::max(x0, p.x[i]) + r,
+                       std::max(y0, p.y[i]) + r, candidates);
+            if (candidates.empty()) continue;
+            Body b{p.x[i], p.y[i], p.vx[i], p.vy[i], r, p.invMass[i] == 0.0};
+            hits += collideOne<kFriction>(b, x0, y0, def.obstacles, candidates, def);
+            p.x[i] = b.x;
+            p.y[i] = b.y;
+            p.vx[i] = b.vx;
+            p.vy[i] = b.vy;
+        }
+        ctx.obstacleHitScratch[blk] = hits;
+    });
+    for (std::size_t b = 0; b < blocks; ++b)
+        counters.obstacleCollisions += ctx.obstacleHitScratch[b];
+}
+
+}  // namespace
+
+void saveStartPositions(const ParticleArrays& p, StepContext& ctx) {
+    ctx.startX.assign(p.x.begin(), p.x.end());
+    ctx.startY.assign(p.y.begin(), p.y.end());
+}
+
+void obstacles(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
+    if (def.friction > 0.0) {
+        obstaclesImpl<true>(p, def, ctx, counters);
+    } else {
+        obstaclesImpl<false>(p, def, ctx, counters);
+    }
+}
+
+}  // namespace psb::stages

@@ -1,0 +1,107 @@
+#include "obstacle_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "obstacle_geometry.hpp"
+
+namespace psb {
+
+void ObstacleGrid::build(const Obstacles& obstacles) {
+    obstacles_ = obstacles;
+    built_ = true;
+    cellStart_.clear();
+    entries_.clear();
+    nx_ = ny_ = 0;
+    if (obstacles.empty()) return;
+
+    x0_ = y0_ = INFINITY;
+    x1_ = y1_ = -INFINITY;
+    for (const Obstacle& o : obstacles) {
+        x0_ = std::min(x0_, std::min(o.a.x(), o.b.x()) - o.radius);
+        y0_ = std::min(y0_, std::min(o.a.y(), o.b.y()) - o.radius);
+        x1_ = std::max(x1_, std::max(o.a.x(), o.b.x()) + o.radius);
+        y1_ = std::max(y1_, std::max(o.a.y(), o.b.y()) + o.radius);
+    }
+    const double w = x1_ - x0_, h = y1_ - y0_;
+    const double n = static_cast<double>(obstacles.size());
+    cell_ = std::sqrt(w * h / (kCellsPerObstacle * n));
+    // Never more than kMaxCells cells, nor more than that many along one side (a thin strip).
+    const double maxCells = static_cast<double>(kMaxCells);
+    cell_ = std::max({cell_, w / maxCells, h / maxCells, std::sqrt(w * h / maxCells)});
+    if (!(cell_ > 0.0) || !std::isfinite(cell_)) cell_ = std::max(w, h);
+    invCell_ = 1.0 / cell_;
+    nx_ = static_cast<std::uint32_t>(std::clamp(std::ceil(w * invCell_), 1.0, maxCells));
+    ny_ = static_cast<std::uint32_t>(std::clamp(std::ceil(h * invCell_), 1.0, maxCells));
+    while (std::size_t{nx_} * ny_ > kMaxCells) {  // rounding up both sides can overshoot
+        cell_ *= 1.01;
+        invCell_ = 1.0 / cell_;
+        nx_ = static_cast<std::uint32_t>(std::max(1.0, std::ceil(w * invCell_)));
+        ny_ = static_cast<std::uint32_t>(std::max(1.0, std::ceil(h * invCell_)));
+    }
+
+    // Each obstacle's cells: those of its bounding box whose centre lies within its radius plus
+    // the cell's half diagonal of its core (every cell the obstacle reaches passes).
+    const double halfDiagonal = 0.5 * std::sqrt(2.0) * cell_;
+    auto forEachCell = [&](const Obstacle& o, auto&& f) {
+        const std::uint32_t c0 = column(std::min(o.a.x(), o.b.x()) - o.radius);
+        const std::uint32_t c1 = column(std::max(o.a.x(), o.b.x()) + o.radius);
+        const std::uint32_t r0 = row(std::min(o.a.y(), o.b.y()) - o.radius);
+        const std::uint32_t r1 = row(std::max(o.a.y(), o.b.y()) + o.radius);
+        const double reach = o.radius + halfDiagonal;
+        for (std::uint32_t cy = r0; cy <= r1; ++cy) {
+            for (std::uint32_t cx = c0; cx <= c1; ++cx) {
+                const double mx = x0_ + (cx + 0.5) * cell_, my = y0_ + (cy + 0.5) * cell_;
+                double qx, qy;
+                nearestCorePoint(o, mx, my, qx, qy);
+                const double dx = mx - qx, dy = my - qy;
+                if (dx * dx + dy * dy <= reach * reach) f(cy * nx_ + cx);
+            }
+        }
+    };
+    cellStart_.assign(std::size_t{nx_} * ny_ + 1, 0);
+    for (const Obstacle& o : obstacles)
+        forEachCell(o, [&](std::uint32_t c) { ++cellStart_[c + 1]; });
+    for (std::size_t c = 1; c < cellStart_.size(); ++c)
+        cellStart_[c] += cellStart_[c - 1];
+    entries_.resize(cellStart_.back());
+    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+        forEachCell(obstacles[k],
+                    [&](std::uint32_t c) { entries_[fill[c]++] = static_cast<std::uint32_t>(k); });
+    }
+}
+
+std::uint32_t ObstacleGrid::column(double x) const {
+    const double f = std::floor((x - x0_) * invCell_);
+    return static_cast<std::uint32_t>(std::clamp(f, 0.0, static_cast<double>(nx_ - 1)));
+}
+
+std::uint32_t ObstacleGrid::row(double y) const {
+    const double f = std::floor((y - y0_) * invCell_);
+    return static_cast<std::uint32_t>(std::clamp(f, 0.0, static_cast<double>(ny_ - 1)));
+}
+
+void ObstacleGrid::query(double x0, double y0, double x1, double y1,
+                         std::vector<std::uint32_t>& out) const {
+    out.clear();
+    // Written so that a NaN coordinate misses the grid.
+    if (!(x1 >= x0_ && x0 <= x1_ && y1 >= y0_ && y0 <= y1_)) return;
+    const std::uint32_t c0 = column(x0), c1 = column(x1), r0 = row(y0), r1 = row(y1);
+    for (std::uint32_t cy = r0; cy <= r1; ++cy) {
+        const std::uint32_t* start = cellStart_.data() + std::size_t{cy} * nx_;
+        out.insert(out.end(), entries_.begin() + start[c0], entries_.begin() + start[c1 + 1]);
+    }
+    // One cell's list is already ascending and without repeats; several may share obstacles.
+    if (c0 != c1 || r0 != r1) {
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+}
+
+std::size_t ObstacleGrid::memoryBytes() const {
+    return sizeof(std::uint32_t) * (cellStart_.capacity() + entries_.capacity()) +
+           sizeof(Obstacle) * obstacles_.capacity();
+}
+
+}  // namespace psb
