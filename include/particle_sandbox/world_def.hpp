@@ -16,7 +16,7 @@ struct WorldDef {
     Vec2 gravity = Vec2::Zero();  ///< m/s²; y points down, so (0, 9.81) is Earth's pull
     double restitution = 1.0;     ///< coefficient of restitution e in [0, 1], pairs and walls
     double friction = 0.0;        ///< Coulomb coefficient for tangential impulses, >= 0
-    Obstacles obstacles;          ///< fixed pegs and segments (see World::setObstacles)
+    Obstacles obstacles{};        ///< fixed pegs and segments (see World::setObstacles)
 };
 
 }  // namespace psb

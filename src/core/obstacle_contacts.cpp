@@ -59,6 +59,13 @@ bool rebound(Body& b, double nx, double ny, double e, double mu) {
     return true;
 }
 
+/// Brings a centre into the box as the wall stage does: into [r, extent − r] on each axis, or
+/// to the middle of an axis narrower than the disc.
+void clampIntoBox(double& x, double& y, double r, const WorldDef& def) {
+    x = std::clamp(x, std::min(r, 0.5 * def.width), std::max(def.width - r, 0.5 * def.width));
+    y = std::clamp(y, std::min(r, 0.5 * def.height), std::max(def.height - r, 0.5 * def.height));
+}
+
 /// The outward unit normal at (x, y) for obstacle o, the particle having started the step at
 /// (x0, y0). Writes the distance the centre must move along it to just touch (> 0 when
 /// overlapping) to `depth`.
@@ -107,8 +114,12 @@ std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacl
     const double e = def.restitution, mu = def.friction;
     std::uint64_t hits = 0;
 
-    // 2. The sweep: the earliest contact along p0 -> p1 with an obstacle not touched at p0.
-    const double mx = b.x - x0, my = b.y - y0;
+    // 2. The sweep: the earliest contact along p0 -> p1 with an obstacle not touched at p0. With
+    // walls on, p1 is first brought into the box as the wall stage will bring it: a move that
+    // leaves the box must not pass around the end of a segment that reaches the wall, outside.
+    double x1 = b.x, y1 = b.y;
+    if (def.walls) clampIntoBox(x1, y1, b.r, def);
+    const double mx = x1 - x0, my = y1 - y0;
     if (mx != 0.0 || my != 0.0) {
         double first = exact::kNever;
         std::uint32_t hit = UINT32_MAX;
@@ -142,12 +153,7 @@ std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacl
             contactNormal(o, b.x, b.y, b.r, x0, y0, nx, ny, depth);
             if (!(depth > 0.0)) continue;
             double x = b.x + depth * nx, y = b.y + depth * ny;
-            if (def.walls) {
-                x = std::clamp(x, std::min(b.r, 0.5 * def.width),
-                               std::max(def.width - b.r, 0.5 * def.width));
-                y = std::clamp(y, std::min(b.r, 0.5 * def.height),
-                               std::max(def.height - b.r, 0.5 * def.height));
-            }
+            if (def.walls) clampIntoBox(x, y, b.r, def);
             bool blocked = false;
             for (const std::uint32_t other : candidates) {
                 if (other != k && crossesCore(obstacles[other], b.x, b.y, x, y)) {
