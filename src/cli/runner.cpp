@@ -94,6 +94,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.simTime = world.time();
     r.collisions = c.collisions;
     r.wallCollisions = c.wallCollisions;
+    r.obstacles = world.obstacles().size();
+    r.obstacleCollisions = c.obstacleCollisions;
     r.wallImpulse = c.wallImpulse;
     r.maxOverlap = c.maxOverlap;
     r.kineticEnergyFinal = kineticEnergy(world);

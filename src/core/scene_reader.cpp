@@ -357,8 +357,8 @@ Obstacle readObstacle(const Reader& r, const json& j, const std::string& path, c
         if (!inBox(a)) r.fail(member(path, "from"), text(a) + " lies outside " + box);
         if (!inBox(b)) r.fail(member(path, "to"), text(b) + " lies outside " + box);
         const Obstacle o = Obstacle::segment(a, b, thickness);
-        if (!(o.radius > 0.0)) r.fail(member(path, "thickness"), "is too small (got " +
-                                                                     num(thickness) + ")");
+        if (!(o.radius > 0.0))
+            r.fail(member(path, "thickness"), "is too small (got " + num(thickness) + ")");
         return o;
     }
     r.fail(typePath, "unknown obstacle type '" + type.substr(0, 64) + "'" +
@@ -512,11 +512,10 @@ void checkPlacement(const Reader& r, const Scene& s, const std::vector<Origin>& 
                 nearestCorePoint(o, x, y, qx, qy);
                 const double distance = std::hypot(x - qx, y - qy);
                 if (distance < rad + o.radius) {
-                    r.fail(describe(origins[i]),
-                           "overlaps obstacles[" + std::to_string(k) + "] (centre " +
-                               num(distance) + " m from its " +
-                               (o.isPeg() ? "centre" : "core line") + ", " +
-                               num(rad + o.radius) + " m needed)");
+                    r.fail(describe(origins[i]), "overlaps obstacles[" + std::to_string(k) +
+                                                     "] (centre " + num(distance) + " m from its " +
+                                                     (o.isPeg() ? "centre" : "core line") + ", " +
+                                                     num(rad + o.radius) + " m needed)");
                 }
             }
         }
