@@ -4,8 +4,12 @@
 // Per particle, with p0 its centre at the start of the step and p1 where the earlier stages
 // left it:
 //
-//   1. Candidates: the obstacles the grid lists near the box that holds the whole move p0 → p1
-//      widened by the radius (obstacle_grid.hpp). Most particles have none and stop here.
+//   1. Candidates. A particle with no obstacle surface within r + |p1 − p0| of p1 can touch
+//      none this step and stops here: the grid (obstacle_grid.hpp) decides that with one
+//      lookup, of the cell that holds p1, whenever that reach is within its pad (nearly always).
+//      The others take every obstacle within 2r + |p1 − p0| of p1 (the wider ring guards the
+//      pushes below against crossing a core) from a box query, filtered by exact distance, so
+//      the candidates never depend on the grid's layout.
 //   2. Sweep. A particle that does not touch an obstacle at p0 but whose straight move would
 //      pass into it is stopped at the first contact (the earliest time of impact along the
 //      move, obstacle_time_of_impact.hpp) and rebounds there. So no speed and no step, however
@@ -28,6 +32,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include "contact.hpp"
 #include "discrete_step.hpp"
@@ -173,34 +178,110 @@ std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacl
     return hits;
 }
 
+/// The grid's pad: a quarter more than the particles' mean reach (radius plus this step's
+/// move), so that nearly every particle needs one cell lookup. Only speed depends on it.
+double choosePad(const ParticleArrays& p, const StepContext& ctx, bool haveStart) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double mx = haveStart ? p.x[i] - ctx.startX[i] : 0.0;
+        const double my = haveStart ? p.y[i] - ctx.startY[i] : 0.0;
+        const double reach = p.radius[i] + std::sqrt(mx * mx + my * my);
+        if (std::isfinite(reach)) sum += reach;
+    }
+    return p.size() > 0 ? 1.25 * sum / static_cast<double>(p.size()) : 0.0;
+}
+
 template <bool kFriction>
 void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
                    StepCounters& counters) {
-    if (!ctx.obstacleGrid.builtFor(def.obstacles)) ctx.obstacleGrid.build(def.obstacles);
-    const ObstacleGrid& grid = ctx.obstacleGrid;
     const std::size_t n = p.size();
     const bool haveStart = ctx.startX.size() == n;
+    // (Re)build for new obstacles, or when more than one particle in eight needed a box query
+    // last step and a pad chosen now would be clearly wider.
+    std::uint64_t fallbacks = 0;
+    for (const std::uint64_t f : ctx.obstacleFallbackScratch)
+        fallbacks += f;
+    if (!ctx.obstacleGrid.builtFor(def.obstacles)) {
+        ctx.obstacleGrid.build(def.obstacles, choosePad(p, ctx, haveStart));
+    } else if (8 * fallbacks > n) {
+        const double pad = choosePad(p, ctx, haveStart);
+        if (pad > 1.5 * ctx.obstacleGrid.pad()) ctx.obstacleGrid.build(def.obstacles, pad);
+    }
+    const ObstacleGrid& grid = ctx.obstacleGrid;
+    const double pad = grid.pad();
+    const double maxRadius = grid.maxRadius();
+    const Obstacles& obstacles = def.obstacles;
     const std::size_t blocks = parallel::blockCount(n);
     ctx.obstacleCandidates.resize(blocks);
+    ctx.obstacleNearby.resize(blocks);
     ctx.obstacleHitScratch.resize(blocks);
+    ctx.obstacleFallbackScratch.assign(blocks, 0);
     parallel::forBlocks(ctx.threads, n, [&](std::size_t blk, std::size_t begin, std::size_t end) {
         std::vector<std::uint32_t>& candidates = ctx.obstacleCandidates[blk];
-        std::uint64_t hits = 0;
+        std::vector<std::uint32_t>& nearby = ctx.obstacleNearby[blk];
+        std::uint64_t hits = 0, boxQueries = 0;
         for (std::size_t i = begin; i < end; ++i) {
             const double x0 = haveStart ? ctx.startX[i] : p.x[i];
             const double y0 = haveStart ? ctx.startY[i] : p.y[i];
+            const double x1 = p.x[i], y1 = p.y[i];
             const double r = p.radius[i];
-            grid.query(std::min(x0, p.x[i]) - r, std::min(y0, p.y[i]) - r, std::max(x0, p.x[i]) + r,
-                       std::max(y0, p.y[i]) + r, candidates);
-            if (candidates.empty()) continue;
+            const double mx = x1 - x0, my = y1 - y0, move2 = mx * mx + my * my;
+            const double slack = pad - r;
+            double move = 0.0;  // |p1 − p0|, worked out only once an obstacle is near
+            // Whether an obstacle lies within r + move of p1: one the move or an overlap can
+            // touch. Nearly always decided by the one cell that holds p1.
+            auto touches = [&](std::uint32_t k) {
+                const Obstacle& o = obstacles[k];
+                double qx, qy;
+                nearestCorePoint(o, x1, y1, qx, qy);
+                const double d2 = (x1 - qx) * (x1 - qx) + (y1 - qy) * (y1 - qy);
+                const double touch = o.radius + r + move;
+                return d2 < touch * touch;
+            };
+            if (slack >= 0.0 && move2 <= slack * slack) {
+                const std::span<const std::uint32_t> listed = grid.cellAt(x1, y1);
+                if (listed.empty()) continue;
+                move = std::sqrt(move2);
+                bool touchable = false;
+                for (const std::uint32_t k : listed) {
+                    if (touches(k)) {
+                        touchable = true;
+                        break;
+                    }
+                }
+                if (!touchable) continue;
+            } else {
+                move = std::sqrt(move2);
+                ++boxQueries;
+            }
+            // The candidates: every obstacle within 2r + move of p1 (the ones within r more
+            // guard the pushes against crossing a core). Each is listed in a cell within its
+            // radius of that distance, which the box below covers.
+            const double h = maxRadius + 2.0 * r + move;
+            grid.query(x1 - h, y1 - h, x1 + h, y1 + h, nearby);
+            candidates.clear();
+            bool touchable = false;
+            for (const std::uint32_t k : nearby) {
+                const Obstacle& o = obstacles[k];
+                double qx, qy;
+                nearestCorePoint(o, x1, y1, qx, qy);
+                const double d2 = (x1 - qx) * (x1 - qx) + (y1 - qy) * (y1 - qy);
+                const double guard = o.radius + 2.0 * r + move;
+                if (d2 < guard * guard) {
+                    candidates.push_back(k);
+                    touchable = touchable || touches(k);
+                }
+            }
+            if (!touchable) continue;
             Body b{p.x[i], p.y[i], p.vx[i], p.vy[i], r, p.invMass[i] == 0.0};
-            hits += collideOne<kFriction>(b, x0, y0, def.obstacles, candidates, def);
+            hits += collideOne<kFriction>(b, x0, y0, obstacles, candidates, def);
             p.x[i] = b.x;
             p.y[i] = b.y;
             p.vx[i] = b.vx;
             p.vy[i] = b.vy;
         }
         ctx.obstacleHitScratch[blk] = hits;
+        ctx.obstacleFallbackScratch[blk] = boxQueries;
     });
     for (std::size_t b = 0; b < blocks; ++b)
         counters.obstacleCollisions += ctx.obstacleHitScratch[b];

@@ -30,6 +30,8 @@ struct StepContext {
     ObstacleGrid obstacleGrid;
     std::vector<double> startX, startY;  ///< positions at the start of the step
     std::vector<std::vector<std::uint32_t>> obstacleCandidates;  ///< one list per block
+    std::vector<std::vector<std::uint32_t>> obstacleNearby;      ///< box queries, per block
+    std::vector<std::uint64_t> obstacleFallbackScratch;  ///< box queries last step, per block
     std::vector<std::uint64_t> obstacleHitScratch;
 };
 

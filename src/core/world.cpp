@@ -261,6 +261,8 @@ std::size_t World::memoryBytes() const {
                  sizeof(std::uint64_t) * c.obstacleHitScratch.capacity();
         for (const auto& list : c.obstacleCandidates)
             bytes += sizeof(std::uint32_t) * list.capacity();
+        for (const auto& list : c.obstacleNearby)
+            bytes += sizeof(std::uint32_t) * list.capacity();
     }
     return bytes;
 }
