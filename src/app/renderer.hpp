@@ -77,6 +77,7 @@ class Renderer {
     const Font* labelFont_;
     SDL_Texture* circle_ = nullptr;
     GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
+    GeometryBatch obstacles_;  ///< the world's pegs and segments (obstacle_drawing.hpp)
     SDL_Texture* trailTexture_ = nullptr;  // streaming, the viewport's size
     int trailWidth_ = 0, trailHeight_ = 0;
 };
