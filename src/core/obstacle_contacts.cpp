@@ -47,8 +47,15 @@ constexpr int kPasses = 4;
 
 /// The particle's state while the stage works on it.
 struct Body {
-    double x, y, vx, vy, r;
+    double x, y, vx, vy, r, m;
     bool held;
+};
+
+/// What one particle's contacts did: obstacle rebounds, and the wall rebounds the stage made
+/// itself (count and impulse, kg·m/s) for a particle it pushed while it was past a wall.
+struct Hits {
+    std::uint64_t obstacles = 0, walls = 0;
+    double wallImpulse = 0.0;
 };
 
 /// Turns the velocity's component into the obstacle (along -n, n the outward unit normal)
@@ -114,17 +121,21 @@ void contactNormal(const Obstacle& o, double x, double y, double r, double x0, d
 }
 
 template <bool kFriction>
-std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
-                         const std::vector<std::uint32_t>& candidates, const WorldDef& def) {
+void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
+                const std::vector<std::uint32_t>& candidates, const WorldDef& def, Hits& out) {
     const double e = def.restitution, mu = def.friction;
     std::uint64_t hits = 0;
 
     // 2. The sweep: the earliest contact along p0 -> p1 with an obstacle not touched at p0. With
     // walls on, p1 is first brought into the box as the wall stage will bring it: a move that
     // leaves the box must not pass around the end of a segment that reaches the wall, outside.
+    // (leftX, leftY): where the earlier stages left it; (x1, y1): where the wall stage will put
+    // it.
+    const double leftX = b.x, leftY = b.y;
     double x1 = b.x, y1 = b.y;
     if (def.walls) clampIntoBox(x1, y1, b.r, def);
     const double mx = x1 - x0, my = y1 - y0;
+    bool moved = false;  // by this stage
     if (mx != 0.0 || my != 0.0) {
         double first = exact::kNever;
         std::uint32_t hit = UINT32_MAX;
@@ -143,15 +154,23 @@ std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacl
         if (first <= 1.0) {
             b.x = x0 + first * mx;
             b.y = y0 + first * my;
+            moved = true;
             double nx, ny, depth;
             contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
             hits += rebound<kFriction>(b, nx, ny, e, mu);
         }
     }
 
-    // 3. Overlaps, pushed out one obstacle at a time, never across another's core.
+    // 3. Overlaps, pushed out one obstacle at a time, never across another's core. With walls
+    // on, a particle past a wall is judged where the wall stage will put it, so that the wall's
+    // clamp cannot push it into an obstacle afterwards (a ball pressed below the floor next to a
+    // wall standing on it).
+    if (!moved) {
+        b.x = x1;
+        b.y = y1;
+    }
     for (int pass = 0; pass < kPasses; ++pass) {
-        bool moved = false;
+        bool pushed = false;
         for (const std::uint32_t k : candidates) {
             const Obstacle& o = obstacles[k];
             double nx, ny, depth;
@@ -169,13 +188,32 @@ std::uint64_t collideOne(Body& b, double x0, double y0, const Obstacles& obstacl
             if (!blocked && (x != b.x || y != b.y)) {
                 b.x = x;
                 b.y = y;
-                moved = true;
+                moved = pushed = true;
             }
             hits += rebound<kFriction>(b, nx, ny, e, mu);
         }
-        if (!moved) break;
+        if (!pushed) break;
     }
-    return hits;
+    if (!moved) {
+        // Nothing moved it: the wall stage clamps it and turns it around as usual.
+        b.x = leftX;
+        b.y = leftY;
+    } else if (!b.held && (leftX != x1 || leftY != y1)) {
+        // It was past a wall and this stage moved it inside, where the wall stage will not see
+        // it: the wall's rebound, by the wall stage's law, is made here.
+        auto wall = [&](double& v, double& vt, double outward) {
+            double outwardSpeed = outward * v;
+            const double dv = reboundOffWall<kFriction>(outwardSpeed, vt, e, mu);
+            v = outward * outwardSpeed;
+            if (dv > 0.0) {
+                ++out.walls;
+                out.wallImpulse += b.m * dv;
+            }
+        };
+        if (leftX != x1) wall(b.vx, b.vy, leftX > x1 ? 1.0 : -1.0);
+        if (leftY != y1) wall(b.vy, b.vx, leftY > y1 ? 1.0 : -1.0);
+    }
+    out.obstacles += hits;
 }
 
 /// The grid's pad: a quarter more than the particles' mean reach (radius plus this step's
@@ -215,11 +253,14 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
     ctx.obstacleCandidates.resize(blocks);
     ctx.obstacleNearby.resize(blocks);
     ctx.obstacleHitScratch.resize(blocks);
+    ctx.obstacleWallHitScratch.resize(blocks);
+    ctx.obstacleWallImpulseScratch.resize(blocks);
     ctx.obstacleFallbackScratch.assign(blocks, 0);
     parallel::forBlocks(ctx.threads, n, [&](std::size_t blk, std::size_t begin, std::size_t end) {
         std::vector<std::uint32_t>& candidates = ctx.obstacleCandidates[blk];
         std::vector<std::uint32_t>& nearby = ctx.obstacleNearby[blk];
-        std::uint64_t hits = 0, boxQueries = 0;
+        Hits hits;
+        std::uint64_t boxQueries = 0;
         for (std::size_t i = begin; i < end; ++i) {
             const double x0 = haveStart ? ctx.startX[i] : p.x[i];
             const double y0 = haveStart ? ctx.startY[i] : p.y[i];
@@ -273,18 +314,23 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
                 }
             }
             if (!touchable) continue;
-            Body b{p.x[i], p.y[i], p.vx[i], p.vy[i], r, p.invMass[i] == 0.0};
-            hits += collideOne<kFriction>(b, x0, y0, obstacles, candidates, def);
+            Body b{p.x[i], p.y[i], p.vx[i], p.vy[i], r, p.mass[i], p.invMass[i] == 0.0};
+            collideOne<kFriction>(b, x0, y0, obstacles, candidates, def, hits);
             p.x[i] = b.x;
             p.y[i] = b.y;
             p.vx[i] = b.vx;
             p.vy[i] = b.vy;
         }
-        ctx.obstacleHitScratch[blk] = hits;
+        ctx.obstacleHitScratch[blk] = hits.obstacles;
+        ctx.obstacleWallHitScratch[blk] = hits.walls;
+        ctx.obstacleWallImpulseScratch[blk] = hits.wallImpulse;
         ctx.obstacleFallbackScratch[blk] = boxQueries;
     });
-    for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t b = 0; b < blocks; ++b) {
         counters.obstacleCollisions += ctx.obstacleHitScratch[b];
+        counters.wallCollisions += ctx.obstacleWallHitScratch[b];
+        counters.wallImpulse += ctx.obstacleWallImpulseScratch[b];
+    }
 }
 
 }  // namespace

@@ -33,6 +33,8 @@ struct StepContext {
     std::vector<std::vector<std::uint32_t>> obstacleNearby;      ///< box queries, per block
     std::vector<std::uint64_t> obstacleFallbackScratch;  ///< box queries last step, per block
     std::vector<std::uint64_t> obstacleHitScratch;
+    std::vector<std::uint64_t> obstacleWallHitScratch;  ///< wall rebounds the stage made
+    std::vector<double> obstacleWallImpulseScratch;
 };
 
 }  // namespace psb
