@@ -20,7 +20,7 @@ namespace psb {
 /// A scene in memory: everything a scene file says, with any `generate` block already expanded
 /// into particles.
 struct Scene {
-    int version = 1;
+    int version = 1;  ///< as read; a scene with obstacles is written as version 2 at least
     std::string name;
     std::string description;
     WorldDef world;
@@ -38,6 +38,7 @@ struct Scene {
 /// Limits that keep any input, however hostile, from exhausting memory or time.
 inline constexpr std::size_t kMaxSceneFileBytes = std::size_t{256} << 20;  ///< 256 MiB
 inline constexpr std::size_t kMaxSceneParticles = 1'000'000;  ///< listed plus generated
+inline constexpr std::size_t kMaxSceneObstacles = 100'000;    ///< pegs plus segments
 inline constexpr int kMaxSceneNesting = 64;                   ///< JSON object/array depth
 /// Largest magnitude accepted for any physical number in a scene (metres, m/s, kg, m/s²).
 inline constexpr double kMaxSceneMagnitude = 1e15;

@@ -17,7 +17,8 @@ struct StageTime {
 /// The stages of the last call to World::step, each under the name its stepper gives it, in
 /// the order they run, summed over substeps:
 ///   - discrete and substep: "reorder" (sorting storage by grid cell, every few steps in
-///     large worlds), "gravity", "move", "find pairs", "resolve", "separate", "walls";
+///     large worlds), "gravity", "move", "find pairs", "resolve", "separate", "obstacles"
+///     (particles against fixed obstacles, skipped without any), "walls";
 ///   - exact: "rebuild" (the event state made afresh after a change), "events" (the event
 ///     loop), "sync" (writing the state into the world's arrays, done at the first read after
 ///     the step, so it is added when that read happens).
@@ -56,6 +57,7 @@ struct StepCounters {
     double wallImpulse = 0.0;          ///< sum of |normal impulse| delivered by walls, kg·m/s
     double maxOverlap = 0.0;           ///< deepest pair overlap found by detection, metres
     std::uint64_t events = 0;          ///< exact mode: events processed (collisions, walls, cells)
+    std::uint64_t obstacleCollisions = 0;  ///< rebounds off fixed obstacles (pegs, segments)
 };
 
 }  // namespace psb

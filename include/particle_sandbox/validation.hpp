@@ -14,17 +14,19 @@ namespace psb {
 /// One thing wrong with a WorldDef or SolverSettings.
 struct SettingProblem {
     std::string_view setting;  ///< the field: "width", "height", "gravity", "restitution",
-                               ///< "friction", "dt", "substeps", "mode" or "broadphase"
+                               ///< "friction", "dt", "substeps", "mode", "broadphase" or
+                               ///< "obstacles"
     std::string message;       ///< what is wrong with it, e.g. "must be finite and > 0 (got -1)"
     /// For a value refused only in combination with another setting, that setting's name (a
-    /// non-zero gravity in the exact mode names "mode"); otherwise empty.
+    /// world with obstacles in the exact mode names "mode"); otherwise empty.
     std::string_view because;
 };
 
 /// Everything World would refuse about `def` and `solver`, in the order World checks them
 /// (the box and the laws, then the solver, then combinations); empty when a World(def, solver)
 /// would be made. Never throws. World's own InvalidArgument reads "<where>: <setting> <message>"
-/// for the first problem.
+/// for the first problem. Each obstacle's own geometry (finite, inside the box, of non-zero
+/// length) is World's to check: its message names the obstacle by index.
 [[nodiscard]] std::vector<SettingProblem> validate(const WorldDef& def,
                                                    const SolverSettings& solver);
 

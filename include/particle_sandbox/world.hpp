@@ -9,6 +9,7 @@
 
 #include <particle_sandbox/detail/id_table.hpp>
 #include <particle_sandbox/math.hpp>
+#include <particle_sandbox/obstacle.hpp>
 #include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
 #include <particle_sandbox/particle_id.hpp>
@@ -63,8 +64,23 @@ class World {
     void setRestitution(double e);
     void setFriction(double mu);
     /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], a
-    /// mode or broadphase this build does not have.
+    /// mode or broadphase this build does not have, or mode Exact while the world has obstacles.
     void setSolver(const SolverSettings& solver);
+
+    // --- obstacles ---------------------------------------------------------------------------
+    /// The fixed pegs and segments, in index order (def().obstacles).
+    [[nodiscard]] const Obstacles& obstacles() const { return def_.obstacles; }
+    /// Replaces every obstacle. Throws InvalidArgument, changing nothing, for an obstacle with a
+    /// non-finite coordinate, a radius or thickness not finite and > 0, a segment of zero length,
+    /// or a centre or end outside the box [0, width] × [0, height]; and for any obstacle while
+    /// the solver's mode is Exact, which does not handle them yet. setBox refuses a box that
+    /// would leave an obstacle outside. clear() removes particles, not obstacles.
+    void setObstacles(Obstacles obstacles);
+    /// Appends one obstacle (validated as by setObstacles) and returns its index.
+    std::size_t addObstacle(const Obstacle& obstacle);
+    /// Removes the obstacle at `index`; those after it move down one index. Throws
+    /// InvalidArgument for an index past the end.
+    void removeObstacle(std::size_t index);
 
     // --- particles -------------------------------------------------------------------------
     /// Adds a particle; its position is taken as given (overlaps are allowed and separated by

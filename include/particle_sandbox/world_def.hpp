@@ -3,10 +3,12 @@
 /// The parameters of a world.
 
 #include <particle_sandbox/math.hpp>
+#include <particle_sandbox/obstacle.hpp>
 
 namespace psb {
 
-/// The box and the material laws of a world. All values are validated by World.
+/// The box, its fixed obstacles and the material laws of a world. All values are validated by
+/// World.
 struct WorldDef {
     double width = 700.0;         ///< box width, metres, finite and > 0
     double height = 700.0;        ///< box height, metres, finite and > 0
@@ -14,6 +16,7 @@ struct WorldDef {
     Vec2 gravity = Vec2::Zero();  ///< m/s²; y points down, so (0, 9.81) is Earth's pull
     double restitution = 1.0;     ///< coefficient of restitution e in [0, 1], pairs and walls
     double friction = 0.0;        ///< Coulomb coefficient for tangential impulses, >= 0
+    Obstacles obstacles{};        ///< fixed pegs and segments (see World::setObstacles)
 };
 
 }  // namespace psb

@@ -29,7 +29,7 @@ namespace {
 
 /// A short reason for the screen from the world's message.
 std::string shortReason(const std::string& what) {
-    if (what.find("gravity") != std::string::npos) return "it has no gravity";
+    if (what.find("obstacles") != std::string::npos) return "it has no obstacles yet";
     return "the world refused it";
 }
 

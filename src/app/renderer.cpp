@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "obstacle_drawing.hpp"
 #include "text.hpp"
 
 namespace psb::app {
@@ -115,6 +116,10 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
     drawWalls(world, camera);
+    if (!world.obstacles().empty()) {
+        batchObstacles(world, camera, obstacles_);
+        obstacles_.draw(renderer_, circle_);
+    }
     if (trails != nullptr && options.trails != TrailMode::Off) {
         drawImage(trails->rasterise(world, camera, options.trails, selected), trailLayer_);
     }

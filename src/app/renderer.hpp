@@ -84,6 +84,7 @@ class Renderer {
     ImageLayer trailLayer_, smallLayer_;
     TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
     std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none
+    GeometryBatch obstacles_;          ///< the world's pegs and segments (obstacle_drawing.hpp)
 };
 
 }  // namespace psb::app

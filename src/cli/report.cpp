@@ -19,6 +19,8 @@ std::string reportJson(const RunReport& r) {
     j["wall_seconds"] = r.wallSeconds;
     j["collisions"] = r.collisions;
     j["wall_collisions"] = r.wallCollisions;
+    j["obstacles"] = r.obstacles;
+    j["obstacle_collisions"] = r.obstacleCollisions;
     j["kinetic_energy"] = {{"initial", r.kineticEnergyInitial}, {"final", r.kineticEnergyFinal}};
     if (r.gravity) {
         // Under gravity kinetic energy alone is not conserved; kinetic + potential is.

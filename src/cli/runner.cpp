@@ -95,6 +95,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.simTime = world.time();
     r.collisions = c.collisions;
     r.wallCollisions = c.wallCollisions;
+    r.obstacles = world.obstacles().size();
+    r.obstacleCollisions = c.obstacleCollisions;
     r.wallImpulse = c.wallImpulse;
     // What detection met during the run, and what the states at both ends hold (the exact
     // mode meets overlaps only at collisions, where rounding keeps them at a few ulps).

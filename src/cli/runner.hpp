@@ -23,6 +23,8 @@ struct RunReport {
     double wallSeconds = 0.0;
     std::uint64_t collisions = 0;
     std::uint64_t wallCollisions = 0;
+    std::uint64_t obstacles = 0;           ///< fixed pegs and segments in the world
+    std::uint64_t obstacleCollisions = 0;  ///< rebounds off them
     double kineticEnergyInitial = 0.0, kineticEnergyFinal = 0.0;  ///< joules
     /// Gravitational potential energy (diagnostics.hpp's reference: the floor), joules; the
     /// report lists it, and kinetic + potential, only when `gravity`.

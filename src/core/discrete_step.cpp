@@ -93,7 +93,13 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     double& findPairsMs = profile.stage("find pairs");
     double& resolveMs = profile.stage("resolve");
     double& separateMs = profile.stage("separate");
+    double& obstaclesMs = profile.stage("obstacles");
     double& wallsMs = profile.stage("walls");
+    const bool obstaclesPresent = !def.obstacles.empty();
+    if (obstaclesPresent) {
+        StageTimer t(obstaclesMs);
+        saveStartPositions(p, ctx);
+    }
     if (def.gravity.x() != 0.0 || def.gravity.y() != 0.0) {
         StageTimer t(gravityMs);
         applyGravity(p, def.gravity, dt, ctx.threads);
@@ -121,6 +127,10 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     {
         StageTimer t(separateMs);
         separate(p, ctx);
+    }
+    if (obstaclesPresent) {
+        StageTimer t(obstaclesMs);
+        obstacles(p, def, ctx, counters);
     }
     if (def.walls) {
         StageTimer t(wallsMs);

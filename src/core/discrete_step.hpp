@@ -11,6 +11,11 @@
 //   (* skipped when the world has no gravity / no walls; friction math is compiled out of
 //    resolve and walls when the friction coefficient is zero.)
 //
+// Obstacles. A world with fixed obstacles runs one more stage, `obstacles`, between separate
+// and walls: it sweeps each particle's move of the step against the pegs and segments near it
+// and pushes it out of them (obstacle_contacts.cpp). A world without obstacles skips it, and
+// the copy of the start positions it needs, entirely.
+//
 // Why walls come last. The original bounced off walls before resolving pairs, so the overlap
 // push could leave a particle outside the box. Running the wall stage after every stage that
 // moves particles guarantees that no particle ends a step outside the box. The price is that
@@ -61,6 +66,15 @@ void separate(ParticleArrays& p, const StepContext& ctx);
 /// Clamps every particle into the box and makes outward velocity components inward (scaled by
 /// e). A particle already moving inward keeps its velocity.
 void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters);
+
+/// Copies the positions at the start of the step into ctx.startX/startY, where the obstacles
+/// stage's sweep begins.
+void saveStartPositions(const ParticleArrays& p, StepContext& ctx);
+/// Particles against the world's fixed obstacles (obstacle_contacts.cpp says how): sweeps each
+/// particle's move since saveStartPositions, stops it at its first contact, pushes it out of
+/// overlaps and turns its velocity into an obstacle around with the walls' law. Never moves a
+/// centre through a segment or (with walls) out of the box.
+void obstacles(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters);
 
 /// Runs the stages above in order for one step of `dt` seconds, timing each into `profile`
 /// (added to what it holds, so substeps accumulate).

@@ -24,6 +24,8 @@
 
 #include "json_reader.hpp"
 #include "nearest_name.hpp"
+#include "obstacle_geometry.hpp"
+#include "obstacle_grid.hpp"
 #include "overlap_check.hpp"
 #include "scene_generate.hpp"
 
@@ -33,7 +35,9 @@ namespace {
 using json = nlohmann::json;
 using Keys = std::initializer_list<std::string_view>;
 
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;
+/// Version 2 added `obstacles`; a file without them may say either version.
+constexpr int kFirstVersion = 1, kObstaclesVersion = 2;
 
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
@@ -308,6 +312,72 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
     return d;
 }
 
+/// One obstacle: {"type": "peg", "x", "y", "radius"} or {"type": "segment", "from": [x, y],
+/// "to": [x, y], "thickness"}. Its centre or ends must lie in the closed box, where it can be
+/// drawn; a segment must have two distinct ends.
+Obstacle readObstacle(const Reader& r, const json& j, const std::string& path, const WorldDef& w) {
+    r.expectType(j, path, j.is_object(), "an object");
+    const std::string typePath = member(path, "type");
+    const std::string type = r.string(r.require(j, path, "type"), typePath);
+    std::string box = "the ";
+    box += num(w.width);
+    box += " x ";
+    box += num(w.height);
+    box += " m box";
+    auto inBox = [&](const Vec2& v) {
+        return v.x() >= 0.0 && v.x() <= w.width && v.y() >= 0.0 && v.y() <= w.height;
+    };
+    auto text = [](const Vec2& v) {
+        std::string t(1, '[');
+        t += num(v.x());
+        t += ", ";
+        t += num(v.y());
+        t += ']';
+        return t;
+    };
+    if (type == "peg") {
+        r.object(j, path, {"type", "x", "y", "radius"});
+        const Vec2 c(r.number(r.require(j, path, "x"), member(path, "x")),
+                     r.number(r.require(j, path, "y"), member(path, "y")));
+        const double radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
+        if (!inBox(c)) r.fail(path, "centre " + text(c) + " lies outside " + box);
+        return Obstacle::peg(c, radius);
+    }
+    if (type == "segment") {
+        r.object(j, path, {"type", "from", "to", "thickness"});
+        const Vec2 a = r.vec2(r.require(j, path, "from"), member(path, "from"));
+        const Vec2 b = r.vec2(r.require(j, path, "to"), member(path, "to"));
+        const double thickness =
+            r.positive(r.require(j, path, "thickness"), member(path, "thickness"));
+        if (a == b) r.fail(path, "has zero length: both ends at " + text(a) + " (use a peg)");
+        if (!inBox(a)) r.fail(member(path, "from"), text(a) + " lies outside " + box);
+        if (!inBox(b)) r.fail(member(path, "to"), text(b) + " lies outside " + box);
+        const Obstacle o = Obstacle::segment(a, b, thickness);
+        if (!(o.radius > 0.0))
+            r.fail(member(path, "thickness"), "is too small (got " + num(thickness) + ")");
+        return o;
+    }
+    r.fail(typePath, "unknown obstacle type '" + type.substr(0, 64) + "'" +
+                         detail::suggestion(type, {"peg", "segment"}));
+}
+
+void readObstacles(const Reader& r, const json& j, int version, WorldDef& w) {
+    r.expectType(j, "obstacles", j.is_array(), "an array");
+    if (version < kObstaclesVersion && !j.empty()) {
+        r.fail("obstacles", "need version " + std::to_string(kObstaclesVersion) +
+                                " or later (the file says version " + std::to_string(version) +
+                                ")");
+    }
+    if (j.size() > kMaxSceneObstacles) {
+        r.fail("obstacles", "holds " + std::to_string(j.size()) +
+                                " obstacles, more than the limit of " +
+                                std::to_string(kMaxSceneObstacles));
+    }
+    w.obstacles.reserve(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i)
+        w.obstacles.push_back(readObstacle(r, j[i], element("obstacles", i), w));
+}
+
 /// Reads one generate block and appends its particles.
 void readGenerate(const Reader& r, const json& j, const std::string& path, const WorldDef& world,
                   std::vector<ParticleDef>& out, std::vector<Origin>& origins) {
@@ -424,6 +494,28 @@ void checkPlacement(const Reader& r, const Scene& s, const std::vector<Origin>& 
         }
     }
     if (s.allowOverlaps) return;
+    if (!w.obstacles.empty()) {
+        ObstacleGrid grid;
+        grid.build(w.obstacles);
+        std::vector<std::uint32_t> near;
+        for (std::size_t i = 0; i < s.particles.size(); ++i) {
+            const ParticleDef& d = s.particles[i];
+            const double x = d.position.x(), y = d.position.y(), rad = d.radius;
+            grid.query(x - rad, y - rad, x + rad, y + rad, near);
+            for (const std::uint32_t k : near) {
+                const Obstacle& o = w.obstacles[k];
+                double qx, qy;
+                nearestCorePoint(o, x, y, qx, qy);
+                const double distance = std::hypot(x - qx, y - qy);
+                if (distance < rad + o.radius) {
+                    r.fail(describe(origins[i]), "overlaps obstacles[" + std::to_string(k) +
+                                                     "] (centre " + num(distance) + " m from its " +
+                                                     (o.isPeg() ? "centre" : "core line") + ", " +
+                                                     num(rad + o.radius) + " m needed)");
+                }
+            }
+        }
+    }
     if (const auto pair = detail::findOverlap(s.particles)) {
         const auto [i, k] = *pair;
         const ParticleDef &a = s.particles[i], &b = s.particles[k];
@@ -445,17 +537,18 @@ Scene parseScene(std::string_view text, std::string_view source) {
     const Reader r(source);
     r.object(root, "",
              {"version", "name", "description", "world", "solver", "particles", "generate",
-              "allow_overlaps"});
+              "allow_overlaps", "obstacles"});
 
     Scene s;
     const json& version = r.require(root, "", "version");
     {
         const std::int64_t v = r.integer(version, "version", INT64_MIN, INT64_MAX);
-        if (v != kVersion) {
+        if (v < kFirstVersion || v > kVersion) {
             r.fail("version", "unsupported version " + std::to_string(v) +
-                                  " (this build reads version " + std::to_string(kVersion) + ")");
+                                  " (this build reads versions " + std::to_string(kFirstVersion) +
+                                  " to " + std::to_string(kVersion) + ")");
         }
-        s.version = kVersion;
+        s.version = static_cast<int>(v);
     }
     if (const json* v = Reader::find(root, "name")) s.name = r.string(*v, "name");
     if (const json* v = Reader::find(root, "description")) {
@@ -466,6 +559,9 @@ Scene parseScene(std::string_view text, std::string_view source) {
     }
     if (const json* v = Reader::find(root, "world")) readWorld(r, *v, s.world);
     if (const json* v = Reader::find(root, "solver")) readSolver(r, *v, s.solver);
+    if (const json* v = Reader::find(root, "obstacles")) {
+        readObstacles(r, *v, s.version, s.world);
+    }
     checkWorldAccepts(r, s.world, s.solver);
 
     std::vector<Origin> origins;

@@ -45,6 +45,29 @@ void appendColor(std::string& out, Color c) {
         '[' + std::to_string(c.r) + ", " + std::to_string(c.g) + ", " + std::to_string(c.b) + ']';
 }
 
+/// `"obstacles": [...]`, one per line, after a separator; nothing for a scene without any.
+void appendObstacles(std::string& out, const Obstacles& obstacles) {
+    if (obstacles.empty()) return;
+    out += ",\n  \"obstacles\": [";
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+        const Obstacle& o = obstacles[i];
+        out += i == 0 ? "\n    " : ",\n    ";
+        if (o.isPeg()) {
+            appendField(out, "{\"type\": \"peg\", \"x\": ", o.a.x(), "obstacle x");
+            appendField(out, ", \"y\": ", o.a.y(), "obstacle y");
+            appendField(out, ", \"radius\": ", o.radius, "obstacle radius");
+        } else {
+            appendField(out, "{\"type\": \"segment\", \"from\": [", o.a.x(), "obstacle from");
+            appendField(out, ", ", o.a.y(), "obstacle from");
+            appendField(out, "], \"to\": [", o.b.x(), "obstacle to");
+            appendField(out, ", ", o.b.y(), "obstacle to");
+            appendField(out, "], \"thickness\": ", o.thickness(), "obstacle thickness");
+        }
+        out += '}';
+    }
+    out += "\n  ]";
+}
+
 }  // namespace
 
 std::string serializeScene(const Scene& s) {
@@ -54,7 +77,9 @@ std::string serializeScene(const Scene& s) {
     appendString(out, s.name);
     out += ",\n  \"description\": ";
     appendString(out, s.description);
-    out += ",\n  \"version\": " + std::to_string(s.version);
+    // The lowest version that has everything the scene uses, so that older builds read it.
+    const int version = s.world.obstacles.empty() ? s.version : std::max(s.version, 2);
+    out += ",\n  \"version\": " + std::to_string(version);
 
     const WorldDef& w = s.world;
     appendField(out, ",\n  \"world\": {\"width\": ", w.width, "world.width");
@@ -75,6 +100,8 @@ std::string serializeScene(const Scene& s) {
     out += toString(v.broadphase);
     out += "\"}";
     if (s.allowOverlaps) out += ",\n  \"allow_overlaps\": true";
+
+    appendObstacles(out, w.obstacles);
 
     out += ",\n  \"particles\": [";
     for (std::size_t i = 0; i < s.particles.size(); ++i) {

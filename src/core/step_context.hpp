@@ -9,6 +9,7 @@
 #include "broad_phase_grid.hpp"
 #include "broad_phase_quadtree.hpp"
 #include "contact_pair.hpp"
+#include "obstacle_grid.hpp"
 #include "particle_stats.hpp"
 
 namespace psb {
@@ -25,6 +26,15 @@ struct StepContext {
     bool cellsFresh = false;  ///< move wrote the grid's cells for the current positions
     std::vector<double> wallImpulseScratch;
     std::vector<std::uint64_t> wallHitScratch;
+    // The obstacles stage (obstacle_contacts.cpp); untouched in a world without obstacles.
+    ObstacleGrid obstacleGrid;
+    std::vector<double> startX, startY;  ///< positions at the start of the step
+    std::vector<std::vector<std::uint32_t>> obstacleCandidates;  ///< one list per block
+    std::vector<std::vector<std::uint32_t>> obstacleNearby;      ///< box queries, per block
+    std::vector<std::uint64_t> obstacleFallbackScratch;  ///< box queries last step, per block
+    std::vector<std::uint64_t> obstacleHitScratch;
+    std::vector<std::uint64_t> obstacleWallHitScratch;  ///< wall rebounds the stage made
+    std::vector<double> obstacleWallImpulseScratch;
 };
 
 }  // namespace psb

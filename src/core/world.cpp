@@ -10,6 +10,7 @@
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
 #include "exact_stepper.hpp"
+#include "obstacle_validate.hpp"
 #include "stage_timer.hpp"
 #include "step_context.hpp"
 #include "validate.hpp"
@@ -21,13 +22,16 @@ using detail::requirePositive;
 
 namespace {
 
-/// Throws InvalidArgument for the first problem validate() finds.
+/// Throws InvalidArgument for the first problem validate() finds, then for the first obstacle
+/// that cannot be (validate() leaves each obstacle's geometry to World: its message names the
+/// obstacle by index).
 void require(const WorldDef& def, const SolverSettings& solver, const char* where) {
     const std::vector<SettingProblem> problems = validate(def, solver);
     if (!problems.empty()) {
         const std::string setting(problems.front().setting);
         detail::fail(where, setting.c_str(), problems.front().message);
     }
+    detail::validateObstacles(def.obstacles, def.width, def.height, where);
 }
 
 void validateParticle(const ParticleDef& d, const char* where) {
@@ -129,6 +133,32 @@ void World::setSolver(const SolverSettings& solver) {
     solver_ = solver;
 }
 
+void World::setObstacles(Obstacles obstacles) {
+    detail::validateObstacles(obstacles, def_.width, def_.height, "World::setObstacles");
+    detail::validateModeWithObstacles(solver_, obstacles, "World::setObstacles");
+    changed();
+    def_.obstacles = std::move(obstacles);
+}
+
+std::size_t World::addObstacle(const Obstacle& obstacle) {
+    const std::size_t index = def_.obstacles.size();
+    detail::validateObstacle(obstacle, index, def_.width, def_.height, "World::addObstacle");
+    detail::validateModeWithObstacles(solver_, {obstacle}, "World::addObstacle");
+    changed();
+    def_.obstacles.push_back(obstacle);
+    return index;
+}
+
+void World::removeObstacle(std::size_t index) {
+    if (index >= def_.obstacles.size()) {
+        detail::fail("World::removeObstacle", "index",
+                     "names no obstacle (got " + std::to_string(index) + ", the world has " +
+                         std::to_string(def_.obstacles.size()) + ")");
+    }
+    changed();
+    def_.obstacles.erase(def_.obstacles.begin() + static_cast<std::ptrdiff_t>(index));
+}
+
 ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
     if (p_.size() >= UINT32_MAX - 1)
@@ -215,6 +245,13 @@ std::size_t World::memoryBytes() const {
                  c.quadtree.memoryBytes() + sizeof(ParticleStats) * c.statsScratch.capacity() +
                  sizeof(double) * c.wallImpulseScratch.capacity() +
                  sizeof(std::uint64_t) * c.wallHitScratch.capacity();
+        bytes += c.obstacleGrid.memoryBytes() +
+                 sizeof(double) * (c.startX.capacity() + c.startY.capacity()) +
+                 sizeof(std::uint64_t) * c.obstacleHitScratch.capacity();
+        for (const auto& list : c.obstacleCandidates)
+            bytes += sizeof(std::uint32_t) * list.capacity();
+        for (const auto& list : c.obstacleNearby)
+            bytes += sizeof(std::uint32_t) * list.capacity();
     }
     return bytes;
 }

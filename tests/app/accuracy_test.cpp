@@ -74,6 +74,23 @@ TEST(ModeSwitch, ExactWithGravityIsAcceptedAndSteps) {
     EXPECT_TRUE(switchToNextMode(w).changed);  // back to discrete
 }
 
+TEST(ModeSwitch, AModeTheWorldRefusesIsSkippedWithTheReasonAndTheCycleMovesOn) {
+    // The exact mode does not take obstacles yet: from substep, T moves on to discrete and says
+    // why exact was skipped (it used to stay put when a mode was refused).
+    World w = gas(Vec2::Zero());
+    w.addObstacle(Obstacle::peg({0.5 * w.def().width, 0.5 * w.def().height}, 1.0));
+    ASSERT_TRUE(switchToNextMode(w).changed);  // discrete -> substep
+    ASSERT_EQ(w.solver().mode, StepMode::Substep);
+    const ModeSwitch r = switchToNextMode(w);
+    EXPECT_TRUE(r.changed);
+    EXPECT_EQ(w.solver().mode, StepMode::Discrete);
+    EXPECT_EQ(r.skipped, "exact");
+    EXPECT_NE(r.message.find("exact skipped: it has no obstacles yet"), std::string::npos)
+        << r.message;
+    EXPECT_NE(r.detail.find("obstacles"), std::string::npos) << r.detail;
+    EXPECT_NO_THROW(w.step(w.solver().dt));
+}
+
 TEST(ModeSwitch, FromExactTheCycleMovesOnToDiscrete) {
     World w = gas(Vec2::Zero());
     SolverSettings s = w.solver();

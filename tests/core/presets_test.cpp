@@ -17,13 +17,22 @@ namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(PSB_ASSETS_DIR) / "scenes";
 
-TEST(Presets, ThereAreEightNumberedPresetsInOrder) {
+TEST(Presets, TheNumberedPresetsComeInOrder) {
     const auto files = sceneFiles(kScenes);
-    ASSERT_EQ(files.size(), 8u);
-    const char* expected[] = {"01-original.json",           "02-newtons-cradle.json",
-                              "03-billiards-break.json",    "04-gas-in-a-box.json",
-                              "05-mass-ratio.json",         "06-bullet-into-crowd.json",
-                              "07-pile-under-gravity.json", "08-brownian-motion.json"};
+    const char* expected[] = {"01-original.json",
+                              "02-newtons-cradle.json",
+                              "03-billiards-break.json",
+                              "04-gas-in-a-box.json",
+                              "05-mass-ratio.json",
+                              "06-bullet-into-crowd.json",
+                              "07-pile-under-gravity.json",
+                              "08-brownian-motion.json",
+                              "09-galton-board.json",
+                              "10-funnel.json",
+                              "11-hourglass.json",
+                              "12-ramp.json",
+                              "13-basketball-and-tennis-ball.json"};
+    ASSERT_EQ(files.size(), std::size(expected));
     for (std::size_t i = 0; i < files.size(); ++i)
         EXPECT_EQ(files[i].filename(), expected[i]);
 }

@@ -1,0 +1,80 @@
+// The cost of fixed obstacles in the discrete step: the gas benchmark scene (gas_scene.hpp) with
+// and without 10^3 obstacles, per particle-step.
+//
+// Names: obstacles/<count>/n:<N>. The obstacles are half pegs of radius 1 m and half segments
+// 6 m long and 0.4 m thick, at random in the box (from a fixed seed): about 1 % of the box's
+// area, so that particles meet an obstacle about as often as a wall. The gas starts without
+// obstacles overlapping it excluded: the first steps push overlapping particles out, and the
+// warm-up steps are not timed. Counters: items_per_second = particle-steps per second;
+// obstacles_us = mean microseconds per step in the obstacles stage; obstacle_hits_per_step.
+//
+//   build/release/bench/obstacles_bench --benchmark_repetitions=5
+//       --benchmark_enable_random_interleaving=true          (one command line)
+//
+// The bound: obstacles/1000/n:10000 at most 1.5 times the time per particle-step of
+// obstacles/0/n:10000.
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <string>
+
+#include "gas_scene.hpp"
+#include "run_benchmarks.hpp"
+
+namespace psb::bench {
+namespace {
+
+Obstacles randomObstacles(std::size_t count, double side, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> pos(10.0, side - 10.0), angle(0.0, 6.283185307179586);
+    Obstacles out;
+    for (std::size_t k = 0; k < count; ++k) {
+        const Vec2 a(pos(rng), pos(rng));
+        if (k % 2 == 0) {
+            out.push_back(Obstacle::peg(a, 1.0));
+        } else {
+            const double t = angle(rng);
+            out.push_back(Obstacle::segment(a, a + 6.0 * Vec2(std::cos(t), std::sin(t)), 0.4));
+        }
+    }
+    return out;
+}
+
+void obstacles(benchmark::State& state, std::size_t count, std::size_t n) {
+    World w = makeGasWorld(n, BroadPhaseKind::Auto, 1);
+    w.setObstacles(randomObstacles(count, w.def().width, 11));
+    for (int k = 0; k < 20; ++k)
+        w.step(w.solver().dt);
+    w.resetCounters();
+    double stageMs = 0.0;
+    for (auto _ : state) {
+        w.step(w.solver().dt);
+        stageMs += w.profile().ms("obstacles");
+    }
+    const double steps = static_cast<double>(state.iterations());
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+    state.counters["obstacles_us"] = 1e3 * stageMs / steps;
+    state.counters["obstacle_hits_per_step"] =
+        static_cast<double>(w.counters().obstacleCollisions) / steps;
+}
+
+void registerAll() {
+    for (const std::size_t n : {10000, 100000}) {
+        for (const std::size_t count : {0, 1000}) {
+            const std::string name =
+                "obstacles/" + std::to_string(count) + "/n:" + std::to_string(n);
+            benchmark::RegisterBenchmark(name.c_str(), obstacles, count, n)
+                ->UseRealTime()
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace psb::bench
+
+int main(int argc, char** argv) {
+    psb::bench::registerAll();
+    return psb::bench::runBenchmarks(argc, argv);
+}

@@ -1,0 +1,19 @@
+#pragma once
+// Drawing the world's fixed obstacles: pegs as discs, segments as bars with round ends, in one
+// batch over the renderer's circle texture.
+
+#include <SDL.h>
+
+#include <particle_sandbox/world.hpp>
+
+#include "camera.hpp"
+#include "geometry_batch.hpp"
+
+namespace psb::app {
+
+/// Appends every obstacle of `world` to `batch` (cleared first), at least a pixel wide so that a
+/// thin wall never vanishes when zoomed out. `batch` is drawn with the circle texture: discs
+/// use the whole texture, bars its opaque centre.
+void batchObstacles(const World& world, const Camera& camera, GeometryBatch& batch);
+
+}  // namespace psb::app

@@ -1,0 +1,351 @@
+// The obstacles stage of the discrete step (see discrete_step.hpp): particles against fixed
+// pegs and segments.
+//
+// Per particle, with p0 its centre at the start of the step and p1 where the earlier stages
+// left it:
+//
+//   1. Candidates. A particle with no obstacle surface within r + |p1 − p0| of p1 can touch
+//      none this step and stops here: the grid (obstacle_grid.hpp) decides that with one
+//      lookup, of the cell that holds p1, whenever that reach is within its pad (nearly always).
+//      The others take every obstacle within 2r + |p1 − p0| of p1 (the wider ring guards the
+//      pushes below against crossing a core) from a box query, filtered by exact distance, so
+//      the candidates never depend on the grid's layout.
+//   2. Sweep. A particle that does not touch an obstacle at p0 but whose straight move would
+//      pass into it is stopped at the first contact (the earliest time of impact along the
+//      move, obstacle_time_of_impact.hpp) and rebounds there. So no speed and no step, however
+//      large, carries a particle through a peg or a segment; the price is that a particle that
+//      hits something gives up the rest of its move for this step.
+//   3. Overlaps. Up to kPasses passes over the candidates in ascending index: each obstacle the
+//      particle overlaps pushes it out along the normal from its nearest core point (for a
+//      segment, toward the side the particle started the step on, even if it has since crossed
+//      the core line) and turns its velocity into it around (reboundOffWall, the walls' law).
+//      With walls on, every push is clamped into the box.
+//
+// Caught between two obstacles (a gap narrower than the particle, or an obstacle against a
+// wall): a push that would carry the centre across the core line of another segment is not
+// made. The particle then stays where it is, overlapping both a little, its velocity into each
+// turned around; it never passes through either, and it never leaves the box.
+//
+// Held (kinematic) particles are pushed out like the others but keep their owner's velocity.
+// Each particle is handled on its own against obstacles that never move, so the stage runs in
+// parallel blocks; the collision count is summed per block in block order (parallel.hpp).
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+
+#include "contact.hpp"
+#include "discrete_step.hpp"
+#include "obstacle_geometry.hpp"
+#include "obstacle_time_of_impact.hpp"
+#include "parallel.hpp"
+
+namespace psb::stages {
+namespace {
+
+constexpr int kPasses = 4;
+
+/// The particle's state while the stage works on it.
+struct Body {
+    double x, y, vx, vy, r, m;
+    bool held;
+};
+
+/// What one particle's contacts did: obstacle rebounds, and the wall rebounds the stage made
+/// itself (count and impulse, kg·m/s) for a particle it pushed while it was past a wall.
+struct Hits {
+    std::uint64_t obstacles = 0, walls = 0;
+    double wallImpulse = 0.0;
+};
+
+/// Turns the velocity's component into the obstacle (along -n, n the outward unit normal)
+/// around with the walls' law. Returns whether it rebounded.
+template <bool kFriction>
+bool rebound(Body& b, double nx, double ny, double e, double mu) {
+    if (b.held) return false;
+    double into = -(b.vx * nx + b.vy * ny);
+    double along = b.vx * -ny + b.vy * nx;
+    if (reboundOffWall<kFriction>(into, along, e, mu) == 0.0) return false;
+    b.vx = -into * nx + along * -ny;
+    b.vy = -into * ny + along * nx;
+    return true;
+}
+
+/// Brings a centre into the box as the wall stage does: into [r, extent − r] on each axis, or
+/// to the middle of an axis narrower than the disc.
+void clampIntoBox(double& x, double& y, double r, const WorldDef& def) {
+    x = std::clamp(x, std::min(r, 0.5 * def.width), std::max(def.width - r, 0.5 * def.width));
+    y = std::clamp(y, std::min(r, 0.5 * def.height), std::max(def.height - r, 0.5 * def.height));
+}
+
+/// The outward unit normal at (x, y) for obstacle o, the particle having started the step at
+/// (x0, y0). Writes the distance the centre must move along it to just touch (> 0 when
+/// overlapping) to `depth`.
+void contactNormal(const Obstacle& o, double x, double y, double r, double x0, double y0,
+                   double& nx, double& ny, double& depth) {
+    double qx, qy;
+    nearestCorePoint(o, x, y, qx, qy);
+    double dx = x - qx, dy = y - qy;
+    double dist = std::sqrt(dx * dx + dy * dy);
+    if (!o.isPeg()) {
+        // A centre that crossed the core line during this step goes back to its own side.
+        const double s0 = sideOf(o, x0, y0);
+        if (crossesCore(o, x0, y0, x, y) || (dist == 0.0 && s0 != 0.0)) {
+            const double ex = o.b.x() - o.a.x(), ey = o.b.y() - o.a.y();
+            const double len = std::sqrt(ex * ex + ey * ey);
+            const double sign = s0 >= 0.0 ? 1.0 : -1.0;
+            nx = -ey / len * sign;
+            ny = ex / len * sign;
+            // Through the line and out by r + h on the starting side.
+            const double signedDist = dx * nx + dy * ny;  // < 0 on the wrong side
+            depth = r + o.radius - signedDist;
+            return;
+        }
+    }
+    if (dist > 0.0) {
+        nx = dx / dist;
+        ny = dy / dist;
+    } else {
+        // A centre exactly on a peg's centre (or on a segment's core from the start): back the
+        // way it came, or up when it did not move.
+        const double bx = x0 - x, by = y0 - y, back = std::sqrt(bx * bx + by * by);
+        if (back > 0.0) {
+            nx = bx / back;
+            ny = by / back;
+        } else {
+            nx = 0.0;
+            ny = -1.0;
+        }
+    }
+    depth = r + o.radius - dist;
+}
+
+template <bool kFriction>
+void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
+                const std::vector<std::uint32_t>& candidates, const WorldDef& def, Hits& out) {
+    const double e = def.restitution, mu = def.friction;
+    std::uint64_t hits = 0;
+
+    // 2. The sweep: the earliest contact along p0 -> p1 with an obstacle not touched at p0. With
+    // walls on, p1 is first brought into the box as the wall stage will bring it: a move that
+    // leaves the box must not pass around the end of a segment that reaches the wall, outside.
+    // (leftX, leftY): where the earlier stages left it; (x1, y1): where the wall stage will put
+    // it.
+    const double leftX = b.x, leftY = b.y;
+    double x1 = b.x, y1 = b.y;
+    if (def.walls) clampIntoBox(x1, y1, b.r, def);
+    const double mx = x1 - x0, my = y1 - y0;
+    bool moved = false;  // by this stage
+    if (mx != 0.0 || my != 0.0) {
+        double first = exact::kNever;
+        std::uint32_t hit = UINT32_MAX;
+        for (const std::uint32_t k : candidates) {
+            const Obstacle& o = obstacles[k];
+            double qx, qy;
+            nearestCorePoint(o, x0, y0, qx, qy);
+            const double sigma = b.r + o.radius;
+            if ((x0 - qx) * (x0 - qx) + (y0 - qy) * (y0 - qy) < sigma * sigma) continue;
+            const double t = exact::obstacleImpactTime(x0, y0, mx, my, b.r, o);
+            if (t < first) {
+                first = t;
+                hit = k;
+            }
+        }
+        if (first <= 1.0) {
+            b.x = x0 + first * mx;
+            b.y = y0 + first * my;
+            moved = true;
+            double nx, ny, depth;
+            contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
+            hits += rebound<kFriction>(b, nx, ny, e, mu);
+        }
+    }
+
+    // 3. Overlaps, pushed out one obstacle at a time, never across another's core. With walls
+    // on, a particle past a wall is judged where the wall stage will put it, so that the wall's
+    // clamp cannot push it into an obstacle afterwards (a ball pressed below the floor next to a
+    // wall standing on it).
+    if (!moved) {
+        b.x = x1;
+        b.y = y1;
+    }
+    for (int pass = 0; pass < kPasses; ++pass) {
+        bool pushed = false;
+        for (const std::uint32_t k : candidates) {
+            const Obstacle& o = obstacles[k];
+            double nx, ny, depth;
+            contactNormal(o, b.x, b.y, b.r, x0, y0, nx, ny, depth);
+            if (!(depth > 0.0)) continue;
+            double x = b.x + depth * nx, y = b.y + depth * ny;
+            if (def.walls) clampIntoBox(x, y, b.r, def);
+            bool blocked = false;
+            for (const std::uint32_t other : candidates) {
+                if (other != k && crossesCore(obstacles[other], b.x, b.y, x, y)) {
+                    blocked = true;
+                    break;
+                }
+            }
+            if (!blocked && (x != b.x || y != b.y)) {
+                b.x = x;
+                b.y = y;
+                moved = pushed = true;
+            }
+            hits += rebound<kFriction>(b, nx, ny, e, mu);
+        }
+        if (!pushed) break;
+    }
+    if (!moved) {
+        // Nothing moved it: the wall stage clamps it and turns it around as usual.
+        b.x = leftX;
+        b.y = leftY;
+    } else if (!b.held && (leftX != x1 || leftY != y1)) {
+        // It was past a wall and this stage moved it inside, where the wall stage will not see
+        // it: the wall's rebound, by the wall stage's law, is made here.
+        auto wall = [&](double& v, double& vt, double outward) {
+            double outwardSpeed = outward * v;
+            const double dv = reboundOffWall<kFriction>(outwardSpeed, vt, e, mu);
+            v = outward * outwardSpeed;
+            if (dv > 0.0) {
+                ++out.walls;
+                out.wallImpulse += b.m * dv;
+            }
+        };
+        if (leftX != x1) wall(b.vx, b.vy, leftX > x1 ? 1.0 : -1.0);
+        if (leftY != y1) wall(b.vy, b.vx, leftY > y1 ? 1.0 : -1.0);
+    }
+    out.obstacles += hits;
+}
+
+/// The grid's pad: a quarter more than the particles' mean reach (radius plus this step's
+/// move), so that nearly every particle needs one cell lookup. Only speed depends on it.
+double choosePad(const ParticleArrays& p, const StepContext& ctx, bool haveStart) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double mx = haveStart ? p.x[i] - ctx.startX[i] : 0.0;
+        const double my = haveStart ? p.y[i] - ctx.startY[i] : 0.0;
+        const double reach = p.radius[i] + std::sqrt(mx * mx + my * my);
+        if (std::isfinite(reach)) sum += reach;
+    }
+    return p.size() > 0 ? 1.25 * sum / static_cast<double>(p.size()) : 0.0;
+}
+
+template <bool kFriction>
+void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
+                   StepCounters& counters) {
+    const std::size_t n = p.size();
+    const bool haveStart = ctx.startX.size() == n;
+    // (Re)build for new obstacles, or when more than one particle in eight needed a box query
+    // last step and a pad chosen now would be clearly wider.
+    std::uint64_t fallbacks = 0;
+    for (const std::uint64_t f : ctx.obstacleFallbackScratch)
+        fallbacks += f;
+    if (!ctx.obstacleGrid.builtFor(def.obstacles)) {
+        ctx.obstacleGrid.build(def.obstacles, choosePad(p, ctx, haveStart));
+    } else if (8 * fallbacks > n) {
+        const double pad = choosePad(p, ctx, haveStart);
+        if (pad > 1.5 * ctx.obstacleGrid.pad()) ctx.obstacleGrid.build(def.obstacles, pad);
+    }
+    const ObstacleGrid& grid = ctx.obstacleGrid;
+    const double pad = grid.pad();
+    const double maxRadius = grid.maxRadius();
+    const Obstacles& obstacles = def.obstacles;
+    const std::size_t blocks = parallel::blockCount(n);
+    ctx.obstacleCandidates.resize(blocks);
+    ctx.obstacleNearby.resize(blocks);
+    ctx.obstacleHitScratch.resize(blocks);
+    ctx.obstacleWallHitScratch.resize(blocks);
+    ctx.obstacleWallImpulseScratch.resize(blocks);
+    ctx.obstacleFallbackScratch.assign(blocks, 0);
+    parallel::forBlocks(ctx.threads, n, [&](std::size_t blk, std::size_t begin, std::size_t end) {
+        std::vector<std::uint32_t>& candidates = ctx.obstacleCandidates[blk];
+        std::vector<std::uint32_t>& nearby = ctx.obstacleNearby[blk];
+        Hits hits;
+        std::uint64_t boxQueries = 0;
+        for (std::size_t i = begin; i < end; ++i) {
+            const double x0 = haveStart ? ctx.startX[i] : p.x[i];
+            const double y0 = haveStart ? ctx.startY[i] : p.y[i];
+            const double x1 = p.x[i], y1 = p.y[i];
+            const double r = p.radius[i];
+            const double mx = x1 - x0, my = y1 - y0, move2 = mx * mx + my * my;
+            const double slack = pad - r;
+            double move = 0.0;  // |p1 − p0|, worked out only once an obstacle is near
+            // Whether an obstacle lies within r + move of p1: one the move or an overlap can
+            // touch. Nearly always decided by the one cell that holds p1.
+            auto touches = [&](std::uint32_t k) {
+                const Obstacle& o = obstacles[k];
+                double qx, qy;
+                nearestCorePoint(o, x1, y1, qx, qy);
+                const double d2 = (x1 - qx) * (x1 - qx) + (y1 - qy) * (y1 - qy);
+                const double touch = o.radius + r + move;
+                return d2 < touch * touch;
+            };
+            if (slack >= 0.0 && move2 <= slack * slack) {
+                const std::span<const std::uint32_t> listed = grid.cellAt(x1, y1);
+                if (listed.empty()) continue;
+                move = std::sqrt(move2);
+                bool touchable = false;
+                for (const std::uint32_t k : listed) {
+                    if (touches(k)) {
+                        touchable = true;
+                        break;
+                    }
+                }
+                if (!touchable) continue;
+            } else {
+                move = std::sqrt(move2);
+                ++boxQueries;
+            }
+            // The candidates: every obstacle within 2r + move of p1 (the ones within r more
+            // guard the pushes against crossing a core). Each is listed in a cell within its
+            // radius of that distance, which the box below covers.
+            const double h = maxRadius + 2.0 * r + move;
+            grid.query(x1 - h, y1 - h, x1 + h, y1 + h, nearby);
+            candidates.clear();
+            bool touchable = false;
+            for (const std::uint32_t k : nearby) {
+                const Obstacle& o = obstacles[k];
+                double qx, qy;
+                nearestCorePoint(o, x1, y1, qx, qy);
+                const double d2 = (x1 - qx) * (x1 - qx) + (y1 - qy) * (y1 - qy);
+                const double guard = o.radius + 2.0 * r + move;
+                if (d2 < guard * guard) {
+                    candidates.push_back(k);
+                    touchable = touchable || touches(k);
+                }
+            }
+            if (!touchable) continue;
+            Body b{p.x[i], p.y[i], p.vx[i], p.vy[i], r, p.mass[i], p.invMass[i] == 0.0};
+            collideOne<kFriction>(b, x0, y0, obstacles, candidates, def, hits);
+            p.x[i] = b.x;
+            p.y[i] = b.y;
+            p.vx[i] = b.vx;
+            p.vy[i] = b.vy;
+        }
+        ctx.obstacleHitScratch[blk] = hits.obstacles;
+        ctx.obstacleWallHitScratch[blk] = hits.walls;
+        ctx.obstacleWallImpulseScratch[blk] = hits.wallImpulse;
+        ctx.obstacleFallbackScratch[blk] = boxQueries;
+    });
+    for (std::size_t b = 0; b < blocks; ++b) {
+        counters.obstacleCollisions += ctx.obstacleHitScratch[b];
+        counters.wallCollisions += ctx.obstacleWallHitScratch[b];
+        counters.wallImpulse += ctx.obstacleWallImpulseScratch[b];
+    }
+}
+
+}  // namespace
+
+void saveStartPositions(const ParticleArrays& p, StepContext& ctx) {
+    ctx.startX.assign(p.x.begin(), p.x.end());
+    ctx.startY.assign(p.y.begin(), p.y.end());
+}
+
+void obstacles(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
+    if (def.friction > 0.0) {
+        obstaclesImpl<true>(p, def, ctx, counters);
+    } else {
+        obstaclesImpl<false>(p, def, ctx, counters);
+    }
+}
+
+}  // namespace psb::stages

@@ -1,0 +1,137 @@
+#include "obstacle_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "obstacle_geometry.hpp"
+
+namespace psb {
+namespace {
+
+/// Distance from a point to the rectangle [x0, x1] × [y0, y1] (0 inside).
+double pointToRectangle(double x, double y, double x0, double y0, double x1, double y1) {
+    const double dx = std::max({x0 - x, 0.0, x - x1}), dy = std::max({y0 - y, 0.0, y - y1});
+    return std::sqrt(dx * dx + dy * dy);
+}
+
+/// Distance from an obstacle's core (a point or a segment) to a rectangle: 0 when they meet;
+/// otherwise the nearest pair involves an end of the segment or a corner of the rectangle.
+double coreToRectangle(const Obstacle& o, double x0, double y0, double x1, double y1) {
+    double d = std::min(pointToRectangle(o.a.x(), o.a.y(), x0, y0, x1, y1),
+                        pointToRectangle(o.b.x(), o.b.y(), x0, y0, x1, y1));
+    if (o.isPeg() || d == 0.0) return d;
+    const double cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
+    for (int k = 0; k < 4; ++k) {
+        // The segment crossing an edge of the rectangle means they meet.
+        const Obstacle edge =
+            Obstacle::segment(Vec2(cx[k], cy[k]), Vec2(cx[(k + 1) % 4], cy[(k + 1) % 4]), 0.0);
+        if (crossesCore(edge, o.a.x(), o.a.y(), o.b.x(), o.b.y())) return 0.0;
+        double qx, qy;
+        nearestCorePoint(o, cx[k], cy[k], qx, qy);
+        d = std::min(d, std::hypot(cx[k] - qx, cy[k] - qy));
+    }
+    return d;
+}
+
+}  // namespace
+
+void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
+    obstacles_ = obstacles;
+    built_ = true;
+    pad_ = std::isfinite(pad) && pad > 0.0 ? pad : 0.0;
+    maxRadius_ = 0.0;
+    cellStart_.clear();
+    entries_.clear();
+    occupied_.clear();
+    nx_ = ny_ = 0;
+    if (obstacles.empty()) return;
+
+    x0_ = y0_ = INFINITY;
+    x1_ = y1_ = -INFINITY;
+    for (const Obstacle& o : obstacles) {
+        const double reach = o.radius + pad_;
+        x0_ = std::min(x0_, std::min(o.a.x(), o.b.x()) - reach);
+        y0_ = std::min(y0_, std::min(o.a.y(), o.b.y()) - reach);
+        x1_ = std::max(x1_, std::max(o.a.x(), o.b.x()) + reach);
+        y1_ = std::max(y1_, std::max(o.a.y(), o.b.y()) + reach);
+        maxRadius_ = std::max(maxRadius_, o.radius);
+    }
+    const double w = x1_ - x0_, h = y1_ - y0_;
+    const double n = static_cast<double>(obstacles.size());
+    // Cells as wide as the pad: then a lookup's cell lies mostly within the pad of the point it
+    // was made for, and few cells far from every obstacle list one.
+    cell_ = pad_ > 0.0 ? pad_ : std::sqrt(w * h / (kCellsPerObstacle * n));
+    // Never more than kMaxCells cells, nor more than that many along one side (a thin strip).
+    const double maxCells = static_cast<double>(kMaxCells);
+    cell_ = std::max({cell_, w / maxCells, h / maxCells, std::sqrt(w * h / maxCells)});
+    if (!(cell_ > 0.0) || !std::isfinite(cell_)) cell_ = std::max(w, h);
+    invCell_ = 1.0 / cell_;
+    nx_ = static_cast<std::uint32_t>(std::clamp(std::ceil(w * invCell_), 1.0, maxCells));
+    ny_ = static_cast<std::uint32_t>(std::clamp(std::ceil(h * invCell_), 1.0, maxCells));
+    while (std::size_t{nx_} * ny_ > kMaxCells) {  // rounding up both sides can overshoot
+        cell_ *= 1.01;
+        invCell_ = 1.0 / cell_;
+        nx_ = static_cast<std::uint32_t>(std::max(1.0, std::ceil(w * invCell_)));
+        ny_ = static_cast<std::uint32_t>(std::max(1.0, std::ceil(h * invCell_)));
+    }
+    lastColumn_ = static_cast<double>(nx_ - 1);
+    lastRow_ = static_cast<double>(ny_ - 1);
+
+    // Each obstacle's cells: those of its widened bounding box that come within its radius plus
+    // the pad of its core.
+    auto forEachCell = [&](const Obstacle& o, auto&& f) {
+        const double widen = o.radius + pad_;
+        const std::uint32_t c0 = column(std::min(o.a.x(), o.b.x()) - widen);
+        const std::uint32_t c1 = column(std::max(o.a.x(), o.b.x()) + widen);
+        const std::uint32_t r0 = row(std::min(o.a.y(), o.b.y()) - widen);
+        const std::uint32_t r1 = row(std::max(o.a.y(), o.b.y()) + widen);
+        for (std::uint32_t cy = r0; cy <= r1; ++cy) {
+            for (std::uint32_t cx = c0; cx <= c1; ++cx) {
+                const double lx = x0_ + cx * cell_, ly = y0_ + cy * cell_;
+                // A hair of slack so that rounding never drops a cell at the limit.
+                if (coreToRectangle(o, lx, ly, lx + cell_, ly + cell_) <= widen * (1.0 + 1e-12)) {
+                    f(cy * nx_ + cx);
+                }
+            }
+        }
+    };
+    cellStart_.assign(std::size_t{nx_} * ny_ + 1, 0);
+    for (const Obstacle& o : obstacles)
+        forEachCell(o, [&](std::uint32_t c) { ++cellStart_[c + 1]; });
+    for (std::size_t c = 1; c < cellStart_.size(); ++c)
+        cellStart_[c] += cellStart_[c - 1];
+    entries_.resize(cellStart_.back());
+    occupied_.assign((cellStart_.size() - 1 + 63) / 64, 0);
+    for (std::size_t c = 0; c + 1 < cellStart_.size(); ++c) {
+        if (cellStart_[c + 1] > cellStart_[c]) occupied_[c >> 6] |= std::uint64_t{1} << (c & 63);
+    }
+    std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+        forEachCell(obstacles[k],
+                    [&](std::uint32_t c) { entries_[fill[c]++] = static_cast<std::uint32_t>(k); });
+    }
+}
+
+void ObstacleGrid::query(double x0, double y0, double x1, double y1,
+                         std::vector<std::uint32_t>& out) const {
+    out.clear();
+    // Written so that a NaN coordinate misses the grid.
+    if (!(x1 >= x0_ && x0 <= x1_ && y1 >= y0_ && y0 <= y1_)) return;
+    const std::uint32_t c0 = column(x0), c1 = column(x1), r0 = row(y0), r1 = row(y1);
+    for (std::uint32_t cy = r0; cy <= r1; ++cy) {
+        const std::uint32_t* start = cellStart_.data() + std::size_t{cy} * nx_;
+        out.insert(out.end(), entries_.begin() + start[c0], entries_.begin() + start[c1 + 1]);
+    }
+    // One cell's list is already ascending and without repeats; several may share obstacles.
+    if (c0 != c1 || r0 != r1) {
+        std::sort(out.begin(), out.end());
+        out.erase(std::unique(out.begin(), out.end()), out.end());
+    }
+}
+
+std::size_t ObstacleGrid::memoryBytes() const {
+    return sizeof(std::uint32_t) * (cellStart_.capacity() + entries_.capacity()) +
+           sizeof(std::uint64_t) * occupied_.capacity() + sizeof(Obstacle) * obstacles_.capacity();
+}
+
+}  // namespace psb

@@ -1,0 +1,93 @@
+#include "obstacle_validate.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "validate.hpp"
+
+namespace psb::detail {
+namespace {
+
+std::string point(const Vec2& v) {
+    std::ostringstream os;
+    os.precision(17);
+    os << '[' << v.x() << ", " << v.y() << ']';
+    return os.str();
+}
+
+bool finite(const Vec2& v) {
+    return std::isfinite(v.x()) && std::isfinite(v.y());
+}
+
+bool inBox(const Vec2& v, double width, double height) {
+    return v.x() >= 0.0 && v.x() <= width && v.y() >= 0.0 && v.y() <= height;
+}
+
+std::string boxText(double width, double height) {
+    std::ostringstream os;
+    os.precision(17);
+    os << "the " << width << " x " << height << " m box";
+    return os.str();
+}
+
+}  // namespace
+
+void validateObstacle(const Obstacle& o, std::size_t index, double width, double height,
+                      const char* where) {
+    const bool peg = o.kind == Obstacle::Kind::Peg;
+    if (!peg && o.kind != Obstacle::Kind::Segment) {
+        fail(where, ("obstacle " + std::to_string(index)).c_str(), "is of no known kind");
+    }
+    const std::string what = "obstacle " + std::to_string(index) + (peg ? " (peg)" : " (segment)");
+    const char* w = what.c_str();
+    if (peg) {
+        if (!finite(o.a)) fail(where, w, "centre must be finite (got " + point(o.a) + ")");
+        if (!(o.b == o.a)) {
+            fail(where, w,
+                 "second point must equal its centre " + point(o.a) + " (got " + point(o.b) + ")");
+        }
+        if (!std::isfinite(o.radius) || !(o.radius > 0.0)) {
+            fail(where, w, "radius must be finite and > 0 " + got(o.radius));
+        }
+        if (!inBox(o.a, width, height)) {
+            fail(where, w,
+                 "cannot be drawn in " + boxText(width, height) + ": its centre " + point(o.a) +
+                     " lies outside it");
+        }
+        return;
+    }
+    if (!finite(o.a)) fail(where, w, "first end must be finite (got " + point(o.a) + ")");
+    if (!finite(o.b)) fail(where, w, "second end must be finite (got " + point(o.b) + ")");
+    if (!std::isfinite(o.radius) || !(o.radius > 0.0)) {
+        fail(where, w, "thickness must be finite and > 0 " + got(2.0 * o.radius));
+    }
+    if (o.a == o.b) {
+        fail(where, w, "has zero length: both ends are at " + point(o.a) + " (use a peg)");
+    }
+    for (const Vec2* end : {&o.a, &o.b}) {
+        if (!inBox(*end, width, height)) {
+            fail(where, w,
+                 "cannot be drawn in " + boxText(width, height) + ": its end " + point(*end) +
+                     " lies outside it");
+        }
+    }
+}
+
+void validateObstacles(const Obstacles& obstacles, double width, double height, const char* where) {
+    for (std::size_t i = 0; i < obstacles.size(); ++i)
+        validateObstacle(obstacles[i], i, width, height, where);
+}
+
+void validateModeWithObstacles(const SolverSettings& s, const Obstacles& obstacles,
+                               const char* where) {
+    if (s.mode == StepMode::Exact && !obstacles.empty()) {
+        fail(where, "obstacles",
+             "are not yet supported in 'exact' mode (this world has " +
+                 std::to_string(obstacles.size()) +
+                 "): the event-driven step does not predict impacts with pegs and segments; use "
+                 "'discrete' or 'substep' for a world with obstacles");
+    }
+}
+
+}  // namespace psb::detail
