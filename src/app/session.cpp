@@ -439,6 +439,13 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
         const Scene scene = psb::app::openScene(file);
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
         setWorld(makeWorld(scene), name);
+        // A scene that marks particles' trails (the Brownian motion's heavy disc) opens with the
+        // first of them selected and its trail shown. Before any step, storage order is the
+        // scene's order.
+        if (!scene.trails.empty() && scene.trails.front() < world_.size()) {
+            selection_.select(world_.ids()[scene.trails.front()]);
+            view_.trails = TrailMode::Selected;
+        }
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)");
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses

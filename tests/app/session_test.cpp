@@ -75,6 +75,20 @@ TEST_F(SessionTest, TheDefaultSceneIsAtHumanScale) {
     EXPECT_LT(s.spawn().radius(), 0.5);
 }
 
+TEST_F(SessionTest, TheBrownianPresetOpensWithItsHeavyDiscsTrailShown) {
+    Session s = session();
+    ASSERT_EQ(s.view().trails, TrailMode::Off);
+    s.apply(cmd::OpenFile{findAsset("scenes/08-brownian-motion.json")});
+    EXPECT_EQ(s.view().trails, TrailMode::Selected);
+    ASSERT_TRUE(s.selection().id().has_value());
+    EXPECT_EQ(s.trailParticle(), *s.selection().id());
+    // The heavy disc is the scene's particle 0: the largest of them.
+    double largest = 0.0;
+    for (const double r : s.world().particles().radius)
+        largest = std::max(largest, r);
+    EXPECT_EQ(s.world().get(*s.selection().id()).radius, largest);
+}
+
 TEST_F(SessionTest, GravityIsEarthsInTheDefaultScene) {
     Session s = session();
     s.apply(cmd::ToggleGravity{});
