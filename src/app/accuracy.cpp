@@ -35,6 +35,10 @@ std::string shortReason(const std::string& what) {
 
 }  // namespace
 
+double monitoredEnergy(const World& world) {
+    return world.def().gravity == Vec2::Zero() ? kineticEnergy(world) : mechanicalEnergy(world);
+}
+
 ModeSwitch switchToNextMode(World& world) {
     ModeSwitch r;
     const StepMode start = world.solver().mode;

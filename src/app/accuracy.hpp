@@ -44,6 +44,11 @@ struct ModeSwitch {
 /// refuses every other mode the world is unchanged and the message says why.
 ModeSwitch switchToNextMode(World& world);
 
+/// The energy whose drift the HUD shows: kinetic, or kinetic + potential when the world has
+/// gravity (under gravity kinetic energy alone is not conserved, so its drift would look like
+/// energy lost or made).
+[[nodiscard]] double monitoredEnergy(const World& world);
+
 /// "discrete", "substep x4", "exact".
 [[nodiscard]] std::string modeName(const SolverSettings& solver);
 

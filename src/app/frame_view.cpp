@@ -40,7 +40,8 @@ HudData hudData(const Session& session, const FrameStats& stats) {
                          : std::string(toString(world.broadPhaseInUse()));
     hud.threads = world.threads();
     hud.maxOverlap = session.accuracy().overlap();
-    hud.keDrift = session.accuracy().drift(hud.kineticEnergy);
+    hud.keDrift = session.accuracy().drift(monitoredEnergy(world));
+    hud.driftName = world.def().gravity == Vec2::Zero() ? "KE drift" : "KE+PE drift";
     hud.restitution = world.def().restitution;
     hud.gravity = gravityText(world.def().gravity);
     return hud;

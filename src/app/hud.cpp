@@ -47,10 +47,11 @@ std::vector<std::string> hudLines(const HudData& d) {
                   d.gravity.c_str());
     lines.emplace_back(buf);
     if (std::isnan(d.keDrift)) {
-        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift n/a", d.maxOverlap);
+        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | %s n/a", d.maxOverlap,
+                      d.driftName.c_str());
     } else {
-        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | KE drift %+.2e since last action",
-                      d.maxOverlap, d.keDrift);
+        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | %s %+.2e since last action",
+                      d.maxOverlap, d.driftName.c_str(), d.keDrift);
     }
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.3g m", d.spawnMass, d.spawnRadius);

@@ -34,7 +34,9 @@ struct HudData {
     std::string broadphase;       ///< the broadphase in use ("grid", ...; the exact mode's cells)
     int threads = 1;              ///< threads the step may use
     double maxOverlap = 0.0;      ///< deepest overlap met by the last frame's steps, m
-    double keDrift = 0.0;         ///< relative KE drift since the last user action; NaN: none
+    double keDrift = 0.0;  ///< relative drift of the monitored energy since the last user
+                           ///< action (monitoredEnergy); NaN: none
+    std::string driftName = "KE drift";  ///< which energy: "KE drift", or "KE+PE drift"
     std::string overlays;         ///< analysis overlays that are on, e.g. "V L:all K D"; "" none
     double restitution = 1.0;     ///< the world's coefficient of restitution
     std::string gravity = "off";  ///< the world's gravity, as physics_controls' gravityText

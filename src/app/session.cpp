@@ -70,7 +70,7 @@ void Session::setWorld(World world, std::string name) {
     quitPending_ = false;
     changedSinceMeasure_ = true;
     fit();
-    accuracy_.resetReference(kineticEnergy(world_));
+    accuracy_.resetReference(monitoredEnergy(world_));
 }
 
 std::vector<Notice> Session::takeNotices() {
@@ -94,7 +94,7 @@ void Session::log(std::string text, Notice::Level level) {
 }
 
 void Session::userAction() {
-    accuracy_.resetReference(kineticEnergy(world_));
+    accuracy_.resetReference(monitoredEnergy(world_));
     dirty_ = true;
     changedSinceMeasure_ = true;
 }
@@ -284,7 +284,7 @@ void Session::pointerDown(const cmd::PointerDown& c) {
         const Particle p = world_.get(interaction_.held());
         log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
         // The energy is measured from the grab; a click that only selects changes nothing.
-        accuracy_.resetReference(kineticEnergy(world_));
+        accuracy_.resetReference(monitoredEnergy(world_));
     }
 }
 

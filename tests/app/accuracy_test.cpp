@@ -101,6 +101,25 @@ TEST(ModeSwitch, FromExactTheCycleMovesOnToDiscrete) {
     EXPECT_EQ(w.solver().mode, StepMode::Discrete);
 }
 
+TEST(MonitoredEnergy, IsKineticWithoutGravityAndMechanicalWithIt) {
+    // Under gravity kinetic energy alone changes as particles fall, so the HUD's drift would
+    // claim energy made or lost: it follows kinetic + potential instead.
+    World w = gas();
+    EXPECT_EQ(monitoredEnergy(w), kineticEnergy(w));
+    w.setGravity({0.0, 200.0});  // strong, so that 30 steps change the kinetic energy a lot
+    EXPECT_EQ(monitoredEnergy(w), mechanicalEnergy(w));
+    AccuracyMonitor kinetic, monitored;
+    kinetic.resetReference(kineticEnergy(w));
+    monitored.resetReference(monitoredEnergy(w));
+    for (int k = 0; k < 30; ++k)
+        w.step(w.solver().dt);
+    // A falling gas gains kinetic energy; kinetic + potential changes far less.
+    const double keDrift = kinetic.drift(kineticEnergy(w));
+    const double drift = monitored.drift(monitoredEnergy(w));
+    EXPECT_GT(keDrift, 0.01) << keDrift;
+    EXPECT_LT(std::abs(drift), 0.1 * keDrift) << drift;
+}
+
 TEST(AccuracyMonitor, DriftIsRelativeToTheLastReference) {
     AccuracyMonitor m;
     EXPECT_TRUE(std::isnan(m.drift(5.0)));  // no reference yet

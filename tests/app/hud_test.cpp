@@ -87,6 +87,9 @@ TEST(Hud, LinesShowModeBroadphaseThreadsOverlapAndDrift) {
     EXPECT_TRUE(anyContains(lines, "KE drift -2.50e-04 since last action"));
     d.keDrift = std::numeric_limits<double>::quiet_NaN();
     EXPECT_TRUE(anyContains(hudLines(d), "KE drift n/a"));
+    d.driftName = "KE+PE drift";  // with gravity on, what is conserved
+    d.keDrift = 1e-12;
+    EXPECT_TRUE(anyContains(hudLines(d), "KE+PE drift +1.00e-12 since last action"));
 }
 
 TEST(Hud, ProfileListsEveryStageAndTheFrameTimes) {
