@@ -569,6 +569,7 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     const auto t0 = std::chrono::steady_clock::now();
     const double dt = world_.solver().dt;
     const double simBefore = world_.time();
+    lastNow_ = now;
     accuracy_.beginSteps(world_);
     if (!paused_) {
         accumulator_ += realSeconds * timeScale_;
@@ -579,6 +580,7 @@ void Session::update(double realSeconds, double now, double budgetMs) {
             // behind: drop the backlog and let the simulation run slower than real time.
             if (msSince(t0) > budgetMs) {
                 accumulator_ = 0.0;
+                behindUntil_ = now + 1.0;
                 break;
             }
         }

@@ -108,9 +108,12 @@ class Session {
     [[nodiscard]] bool paused() const { return paused_; }
     /// Requested simulated seconds per real second.
     [[nodiscard]] double timeScale() const { return timeScale_; }
-    /// Simulated seconds per real second the last updates reached (smoothed); below
-    /// timeScale() when the steps cannot keep up.
-    [[nodiscard]] double reachedTimeScale() const { return reached_; }
+    /// Simulated seconds per real second the last updates reached (smoothed) while the steps
+    /// cannot keep up (a backlog was dropped within the last second); otherwise timeScale(),
+    /// which the accumulator then keeps to on average.
+    [[nodiscard]] double reachedTimeScale() const {
+        return lastNow_ < behindUntil_ ? reached_ : timeScale_;
+    }
     /// Wall-clock ms of simulation in the last update.
     [[nodiscard]] double lastStepMs() const { return lastStepMs_; }
     [[nodiscard]] bool running() const { return running_; }
@@ -198,6 +201,8 @@ class Session {
     bool stepRequested_ = false;
     double timeScale_ = 1.0;
     double reached_ = 1.0;
+    double behindUntil_ = -1.0;  ///< `now` until which the steps count as falling behind
+    double lastNow_ = 0.0;       ///< `now` of the last update
     double accumulator_ = 0.0;
     double lastStepMs_ = 0.0;
 

@@ -222,6 +222,20 @@ TEST_F(SessionTest, TheHudCanShowTheTimeSpeedReached) {
     EXPECT_LT(s.reachedTimeScale(), s.timeScale());
 }
 
+TEST_F(SessionTest, StepsThatKeepUpShowTheSpeedAsked) {
+    // Frames of uneven length make some frames step twice and others not at all; the speed
+    // reached must not then read as "steps too slow" when nothing was ever dropped.
+    Session s = session();
+    s.apply(cmd::TogglePause{});
+    double now = 0.0;
+    for (int k = 0; k < 120; ++k) {
+        const double frame = (k % 3 == 0) ? 0.004 : 0.023;
+        now += frame;
+        s.update(frame, now, 1e9);
+    }
+    EXPECT_EQ(s.reachedTimeScale(), s.timeScale());
+}
+
 TEST_F(SessionTest, AFittedViewLeavesTheMessagesBandAndThePanelColumnFree) {
     Session s = session();
     const auto box = [&] { return s.camera().boxOnScreen(7.0, 7.0); };
