@@ -190,7 +190,7 @@ void App::writeScreenshot() {
     try {
         lastScreenshot_ = saveScreenshot(sdl_->renderer(), options_.screenshotDir);
         std::error_code ec;
-        const auto shown = std::filesystem::absolute(*lastScreenshot_, ec);
+        const auto shown = std::filesystem::absolute(*lastScreenshot_, ec).lexically_normal();
         logLine("[I] Saved screenshot " + lastScreenshot_->string());
         messages_.push_back({"Saved screenshot " + (ec ? *lastScreenshot_ : shown).string(),
                              now() + kMessageSeconds});

@@ -36,7 +36,7 @@ std::string saveWorld(const World& world, const std::string& name,
                       const std::filesystem::path& path) {
     saveScene(sceneFromWorld(world, name), path);
     std::error_code ec;
-    const std::filesystem::path shown = std::filesystem::absolute(path, ec);
+    const std::filesystem::path shown = std::filesystem::absolute(path, ec).lexically_normal();
     return "Saved " + std::to_string(world.size()) + " particles to " +
            (ec ? path : shown).string();
 }

@@ -78,6 +78,14 @@ TEST_F(SceneIo, SavedWorldLoadsBackWithTheSameParticles) {
     EXPECT_EQ(s.name, "snap");
 }
 
+TEST_F(SceneIo, TheSaveMessageNamesTheFullPathWithoutDotSegments) {
+    World w;
+    const std::string message = saveWorld(w, "snap", dir_ / "." / "snap.json");
+    EXPECT_NE(message.find((dir_ / "snap.json").lexically_normal().string()), std::string::npos)
+        << message;
+    EXPECT_EQ(message.find("/./"), std::string::npos) << message;
+}
+
 TEST_F(SceneIo, AFailedSaveSaysWhyAndLeavesTheOldFileIntact) {
     const fs::path old = dir_ / "keep.json";
     std::ofstream(old) << "old contents";
