@@ -2,10 +2,11 @@
 //
 //   build/bench/exact_gravity_bench --benchmark_repetitions=3
 //
-// BM_DiluteGasPerCollision/N/G: psb::scenes::gas as exact_gas_bench uses it (N discs of radius 1 m at packing
-// 0.1, velocity components normal with σ = 1 m/s, e = 1, walls) with G = 0 no gravity and G = 1 a
-// weak gravity, g = σ² / (5 · box side): a scale height of five boxes. Reports ns per collision
-// (per CPU second of the benchmark thread), the figure to compare between G = 0 and G = 1.
+// BM_DiluteGasPerCollision/N/G: psb::scenes::gas as exact_gas_bench uses it (N discs of radius 1 m
+// at packing 0.1, velocity components normal with σ = 1 m/s, e = 1, walls) with G = 0 no gravity
+// and G = 1 a weak gravity, g = σ² / (5 · box side): a scale height of five boxes. Reports ns per
+// collision (per CPU second of the benchmark thread), the figure to compare between G = 0 and G
+// = 1.
 //
 // BM_SettledPilePerFrame/N/M: N discs of radius 0.5 m, e = 0.5, μ = 0.3, under 9.81 m/s², at rest
 // in a hexagonal pile on the floor; one iteration is one 1/60 s frame, M = 0 discrete, M = 2

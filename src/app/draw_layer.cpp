@@ -64,8 +64,8 @@ void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {
     SDL_RenderGeometry(sdl_, nullptr, tri, 3, nullptr, 0);
     const int w = hudFont_.measure(m.label);
     // The label beside the arrow on the screen's side, clear of it, kept inside the window.
-    const double half = std::abs(u.x()) * (w / 2.0 + 4.0) +
-                        std::abs(u.y()) * (hudFont_.lineHeight() / 2.0 + 4.0);
+    const double half =
+        std::abs(u.x()) * (w / 2.0 + 4.0) + std::abs(u.y()) * (hudFont_.lineHeight() / 2.0 + 4.0);
     const Vec2 at = m.at - (14.0 + half) * u;
     float x = static_cast<float>(at.x()) - static_cast<float>(w) / 2.f;
     float y = static_cast<float>(at.y()) - static_cast<float>(hudFont_.lineHeight()) / 2.f;

@@ -27,15 +27,15 @@ struct HudData {
     double spawnRadius = 0.0;      ///< m
     double arrowSeconds = 0.0;     ///< arrow length per unit speed, s; 0 when arrows are off
     bool paused = false;
-    double stepMs = 0.0;          ///< wall-clock ms of simulation per frame
-    double drawMs = 0.0;          ///< wall-clock ms of drawing per frame
-    std::string renderer;         ///< the render driver, e.g. "software"; "" not shown
-    std::string mode;             ///< stepping mode, e.g. "substep x4"
-    std::string broadphase;       ///< the broadphase in use ("grid", ...; the exact mode's cells)
-    int threads = 1;              ///< threads the step may use
-    double maxOverlap = 0.0;      ///< deepest overlap met by the last frame's steps, m
-    double keDrift = 0.0;  ///< relative drift of the monitored energy since the last user
-                           ///< action (monitoredEnergy); NaN: none
+    double stepMs = 0.0;      ///< wall-clock ms of simulation per frame
+    double drawMs = 0.0;      ///< wall-clock ms of drawing per frame
+    std::string renderer;     ///< the render driver, e.g. "software"; "" not shown
+    std::string mode;         ///< stepping mode, e.g. "substep x4"
+    std::string broadphase;   ///< the broadphase in use ("grid", ...; the exact mode's cells)
+    int threads = 1;          ///< threads the step may use
+    double maxOverlap = 0.0;  ///< deepest overlap met by the last frame's steps, m
+    double keDrift = 0.0;     ///< relative drift of the monitored energy since the last user
+                              ///< action (monitoredEnergy); NaN: none
     std::string driftName = "KE drift";  ///< which energy: "KE drift", or "KE+PE drift"
     std::string overlays;         ///< analysis overlays that are on, e.g. "V L:all K D"; "" none
     double restitution = 1.0;     ///< the world's coefficient of restitution

@@ -430,9 +430,8 @@ TEST(TrailImage, ADiscCoversThePixelsWithinHalfAPixelOfItsRimAndTheOneUnderItsCe
                         const float dy = static_cast<float>(y) + 0.5f - cy;
                         const bool in = dx * dx + dy * dy <= (r + 0.5f) * (r + 0.5f) ||
                                         (x == static_cast<int>(cx) && y == static_cast<int>(cy));
-                        EXPECT_EQ(img.at(x, y) != 0u, in)
-                            << "r " << r << " centre " << cx << ", " << cy << " pixel " << x
-                            << ", " << y;
+                        EXPECT_EQ(img.at(x, y) != 0u, in) << "r " << r << " centre " << cx << ", "
+                                                          << cy << " pixel " << x << ", " << y;
                     }
                 }
                 const SDL_Rect d = img.dirty();
