@@ -146,6 +146,10 @@ class World {
     /// Bytes a copy of this world holds (a copy carries state, not scratch): the particle
     /// arrays, the id table and, once the exact mode has stepped, its event state.
     [[nodiscard]] std::size_t stateBytes() const;
+    /// Forgets the exact mode's event state, keeping the particles as they are: a copy kept
+    /// for later (an undo history) then holds only what stateBytes() counts without it. The
+    /// next exact step rebuilds the events from the arrays, as after any edit.
+    void dropEventState();
 
     [[nodiscard]] const StepProfile& profile() const { return profile_; }
     [[nodiscard]] const StepCounters& counters() const { return counters_; }

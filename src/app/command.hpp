@@ -60,6 +60,20 @@ struct ScaleTime {
     double factor = 1.0;
 };  ///< time speed times `factor`
 
+// Step back in time (while paused; see Session::timeline()).
+struct StepBack {};     ///< one recorded frame back
+struct StepForward {};  ///< one recorded frame forward; at the latest frame, one new step
+struct Seek {
+    double seconds = 0.0;
+};  ///< to the recorded frame at or before this simulated time, within the covered range
+struct SeekBy {
+    double seconds = 0.0;
+};  ///< Seek to the time shown plus `seconds` (negative: back)
+
+// Undo and redo of the user's edits.
+struct Undo {};
+struct Redo {};
+
 // The world.
 struct SpawnRandom {};
 struct ChangeSpawnMass {
@@ -107,7 +121,8 @@ using Command =
                  cmd::Zoom, cmd::Fit, cmd::Resize, cmd::ToggleArrows, cmd::ToggleLabels,
                  cmd::ToggleHelp, cmd::ToggleProfile, cmd::ToggleMomentum, cmd::CycleTrails,
                  cmd::TogglePlots, cmd::ToggleSpeeds, cmd::TogglePause, cmd::SingleStep,
-                 cmd::ScaleTime, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::ChangeRestitution,
+                 cmd::ScaleTime, cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy, cmd::Undo,
+                 cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::ChangeRestitution,
                  cmd::ToggleGravity, cmd::NextMode, cmd::Reset, cmd::OpenPreset, cmd::OpenFile,
                  cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
                  cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit>;

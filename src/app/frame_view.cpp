@@ -44,6 +44,9 @@ HudData hudData(const Session& session, const FrameStats& stats) {
     hud.driftName = world.def().gravity == Vec2::Zero() ? "KE drift" : "KE+PE drift";
     hud.restitution = world.def().restitution;
     hud.gravity = gravityText(world.def().gravity);
+    const TimelineView past = session.timeline();
+    hud.past = past.viewingPast;
+    hud.secondsBack = past.secondsBack();
     return hud;
 }
 

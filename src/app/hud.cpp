@@ -61,6 +61,12 @@ std::vector<std::string> hudLines(const HudData& d) {
         last += buf;
     }
     lines.push_back(last + " | H: help");
+    if (d.past) {
+        std::snprintf(buf, sizeof buf,
+                      "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
+                      d.secondsBack);
+        lines.emplace_back(buf);
+    }
     return lines;
 }
 
@@ -107,7 +113,11 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Arrow keys, right or middle drag", "pan"},
         {"F", "fit the box to the window"},
         {"Space", "pause / resume"},
-        {"N", "one step (while paused)"},
+        {"N", "one step (while paused; in the past, one frame forward)"},
+        {"Shift+Left / Shift+Right", "one frame back / forward in time (pauses)"},
+        {"PageUp / PageDown", "1 s back / forward in time (the last 10 s or more are kept)"},
+        {"Ctrl+Z", "undo the last change (spawn, delete, fling, edit, setting, scene...)"},
+        {"Ctrl+Shift+Z / Ctrl+Y", "redo"},
         {", / .", "slow down / speed up time"},
         {"P / 1-9", "next preset / preset by number"},
         {"R", "reset the scene to how it was loaded"},

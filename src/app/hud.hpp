@@ -40,6 +40,8 @@ struct HudData {
     std::string overlays;         ///< analysis overlays that are on, e.g. "V L:all K D"; "" none
     double restitution = 1.0;     ///< the world's coefficient of restitution
     std::string gravity = "off";  ///< the world's gravity, as physics_controls' gravityText
+    bool past = false;            ///< a recorded past frame is shown
+    double secondsBack = 0.0;     ///< how far back it is, s
 };
 
 /// What the profile overlay shows.

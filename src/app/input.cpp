@@ -38,7 +38,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
     const SDL_Keycode sym = key.keysym.sym;
     const bool repeatable = sym == SDLK_LEFT || sym == SDLK_RIGHT || sym == SDLK_UP ||
                             sym == SDLK_DOWN || sym == SDLK_n || sym == SDLK_LEFTBRACKET ||
-                            sym == SDLK_RIGHTBRACKET;
+                            sym == SDLK_RIGHTBRACKET || sym == SDLK_PAGEUP ||
+                            sym == SDLK_PAGEDOWN || (ctrl && (sym == SDLK_z || sym == SDLK_y));
     if (key.repeat != 0 && !repeatable) return {};
     switch (sym) {
         case SDLK_ESCAPE:
@@ -105,10 +106,22 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
             return {cmd::ChangeSpawnMass{-1}};
         case SDLK_RIGHTBRACKET:
             return {cmd::ChangeSpawnMass{+1}};
+        case SDLK_z:  // plain Z and Y do nothing
+            if (ctrl) return {shift ? Command{cmd::Redo{}} : Command{cmd::Undo{}}};
+            return {};
+        case SDLK_y:
+            if (ctrl) return {cmd::Redo{}};
+            return {};
         case SDLK_LEFT:
+            if (shift) return {cmd::StepBack{}};
             return {cmd::Pan{Vec2(kPanKeyPixels, 0.0)}};  // the view moves the way it points
         case SDLK_RIGHT:
+            if (shift) return {cmd::StepForward{}};
             return {cmd::Pan{Vec2(-kPanKeyPixels, 0.0)}};
+        case SDLK_PAGEUP:
+            return {cmd::SeekBy{-kSeekKeySeconds}};
+        case SDLK_PAGEDOWN:
+            return {cmd::SeekBy{kSeekKeySeconds}};
         case SDLK_UP:
             return {cmd::Pan{Vec2(0.0, kPanKeyPixels)}};
         case SDLK_DOWN:

@@ -2,7 +2,8 @@
 // SDL events to commands: the key map and the mouse. The only input code that knows SDL; what
 // an event means is decided here, what it does is the session's (Session::apply).
 //
-// Keys repeat only where repeating makes sense (pan, single step, spawn mass); a held Space or S
+// Keys repeat only where repeating makes sense (pan, single step, spawn mass, stepping through
+// time, undo and redo); a held Space or S
 // must not flicker. While the edit prompt is open only its keys (Tab, Backspace, Enter, Esc) and
 // F12 mean anything, and typed characters arrive as text.
 
@@ -16,6 +17,8 @@ namespace psb::app {
 
 /// Pan per arrow key press, pixels (the original panned by 50 / zoom world units).
 inline constexpr double kPanKeyPixels = 50.0;
+/// Simulated seconds PageUp / PageDown go back / forward through the recorded past.
+inline constexpr double kSeekKeySeconds = 1.0;
 /// Zoom factor per wheel notch.
 inline constexpr double kWheelZoomStep = 1.15;
 

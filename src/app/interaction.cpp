@@ -167,13 +167,20 @@ Vec2 Interaction::handVelocity(double now, const LaunchSettings& launch) const {
     return launchVelocity(s, launch);
 }
 
-void Interaction::applyHold(World& world, double now, const LaunchSettings& launch) const {
-    if (mode_ != Mode::Holding || !world.contains(held_)) return;
+std::optional<Interaction::Hold> Interaction::hold(const World& world, double now,
+                                                   const LaunchSettings& launch) const {
+    if (mode_ != Mode::Holding || !world.contains(held_)) return std::nullopt;
     const double r = world.get(held_).radius;
     const Vec2 target = fitsInBox(world, r) ? clampIntoBox(world, pointer() + grabOffset_, r)
                                             : Vec2(pointer() + grabOffset_);
-    world.setPosition(held_, target);
-    world.setVelocity(held_, handVelocity(now, launch));
+    return Hold{held_, target, handVelocity(now, launch)};
+}
+
+void Interaction::applyHold(World& world, double now, const LaunchSettings& launch) const {
+    if (const auto h = hold(world, now, launch)) {
+        world.setPosition(h->id, h->position);
+        world.setVelocity(h->id, h->velocity);
+    }
 }
 
 CappedVelocity Interaction::launchVelocityNow(const LaunchSettings& launch,

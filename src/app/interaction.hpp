@@ -109,8 +109,17 @@ class Interaction {
     void press(World& world, const Vec2& point, double time);
     /// The pointer is now at `point` (a motion, or the camera moved under a still pointer).
     void moveTo(const Vec2& point, double time);
-    /// Puts the held particle where the hand is (pointer + grab offset, kept in the box) with
-    /// the hand's current velocity. The app calls it before every step and every frame.
+    /// Where the hand holds a particle: its id, the pointer + grab offset (kept in the box) and
+    /// the hand's current velocity. nullopt when nothing held is in `world`.
+    struct Hold {
+        ParticleId id;
+        Vec2 position = Vec2::Zero();
+        Vec2 velocity = Vec2::Zero();
+    };
+    [[nodiscard]] std::optional<Hold> hold(const World& world, double now,
+                                           const LaunchSettings& launch) const;
+    /// Puts the held particle where hold() says. The app calls it before every step and every
+    /// frame (through the timeline's setters, which log the moves).
     void applyHold(World& world, double now, const LaunchSettings& launch) const;
     /// The left button went up. A launch gives the new particle (release - press) /
     /// `launchSeconds`.

@@ -45,7 +45,10 @@ const char* logPrefix(Notice::Level level) {
 }
 
 Session::Session(World world, std::string sceneName, SessionOptions options)
-    : options_(std::move(options)), paused_(options_.paused) {
+    : options_(std::move(options)),
+      paused_(options_.paused),
+      undo_(options_.undo),
+      timeline_(options_.timeline) {
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
@@ -56,8 +59,11 @@ void Session::setWorld(World world, std::string name) {
     interaction_.reset();
     selection_.clear();
     closeEdit();
-    loaded_ = world;
+    loaded_ = std::make_shared<const World>(world);
     world_ = std::move(world);
+    viewing_.reset();
+    pressBefore_.reset();
+    timeline_ = Timeline(options_.timeline);  // a new scene starts a new record
     sceneName_ = std::move(name);
     ++generation_;
     view_.arrowSeconds = arrowSecondsFor(world_);
@@ -93,10 +99,88 @@ void Session::log(std::string text, Notice::Level level) {
     notices_.push_back({level, std::move(text), false, true});
 }
 
-void Session::userAction() {
+void Session::userAction(const char* what) {
+    leavePast();
+    remember(what);
     accuracy_.resetReference(monitoredEnergy(world_));
     dirty_ = true;
     changedSinceMeasure_ = true;
+    timeline_.edited();
+}
+
+void Session::remember(const char* what) {
+    if (!before_) return;  // already filed (one command, one entry)
+    undo_.record(what, lastNow_, std::move(*before_));
+    before_.reset();
+}
+
+bool Session::mayEdit(const Command& command) {
+    return std::visit(
+        [](const auto& c) {
+            using T = std::decay_t<decltype(c)>;
+            // Commands that look, move the view, steer the prompt, step or leave: never an
+            // edit. Anything else may be (a new command is, until listed here).
+            return !(std::is_same_v<T, cmd::PointerMove> || std::is_same_v<T, cmd::PointerUp> ||
+                     std::is_same_v<T, cmd::Pan> || std::is_same_v<T, cmd::Zoom> ||
+                     std::is_same_v<T, cmd::Fit> || std::is_same_v<T, cmd::Resize> ||
+                     std::is_same_v<T, cmd::ToggleArrows> || std::is_same_v<T, cmd::ToggleLabels> ||
+                     std::is_same_v<T, cmd::ToggleHelp> || std::is_same_v<T, cmd::ToggleProfile> ||
+                     std::is_same_v<T, cmd::ToggleMomentum> ||
+                     std::is_same_v<T, cmd::CycleTrails> || std::is_same_v<T, cmd::TogglePlots> ||
+                     std::is_same_v<T, cmd::ToggleSpeeds> || std::is_same_v<T, cmd::TogglePause> ||
+                     std::is_same_v<T, cmd::SingleStep> || std::is_same_v<T, cmd::StepBack> ||
+                     std::is_same_v<T, cmd::StepForward> || std::is_same_v<T, cmd::Seek> ||
+                     std::is_same_v<T, cmd::SeekBy> || std::is_same_v<T, cmd::Undo> ||
+                     std::is_same_v<T, cmd::Redo> || std::is_same_v<T, cmd::OpenEdit> ||
+                     std::is_same_v<T, cmd::EditType> || std::is_same_v<T, cmd::EditField> ||
+                     std::is_same_v<T, cmd::EditBackspace> || std::is_same_v<T, cmd::Save> ||
+                     std::is_same_v<T, cmd::Screenshot> || std::is_same_v<T, cmd::Back> ||
+                     std::is_same_v<T, cmd::Quit>);
+        },
+        command);
+}
+
+UndoState Session::snapshot() const {
+    UndoState s{world_, loaded_,    sceneName_, selection_.id().value_or(kNullParticle),
+                spawn_, timeScale_, dirty_};
+    // A particle in the hand is kinematic only while held: restored, it is free again.
+    if (interaction_.mode() == Interaction::Mode::Holding &&
+        s.world.contains(interaction_.held())) {
+        s.world.setKinematic(interaction_.held(), false);
+    }
+    return s;
+}
+
+void Session::restore(UndoState state) {
+    interaction_.reset();
+    pressBefore_.reset();
+    closeEdit();
+    const bool otherScene = state.loaded != loaded_;
+    world_ = std::move(state.world);
+    loaded_ = std::move(state.loaded);
+    sceneName_ = std::move(state.sceneName);
+    spawn_ = state.spawn;
+    timeScale_ = reached_ = state.timeScale;
+    dirty_ = state.dirty;
+    selection_.clear();
+    if (!state.selection.isNull() && world_.contains(state.selection)) {
+        selection_.select(state.selection);
+    }
+    ++generation_;  // views keyed to particles (trails) start over
+    // The recorded frames belong to the state undone: the record starts again from here.
+    viewing_.reset();
+    timeline_ = Timeline(options_.timeline);
+    accumulator_ = 0.0;
+    quitPending_ = false;
+    changedSinceMeasure_ = true;
+    now_ = sampleObservables(world_);
+    accuracy_.resetReference(monitoredEnergy(world_));
+    if (otherScene) {
+        view_.arrowSeconds = arrowSecondsFor(world_);
+        series_.clear();
+        collisions_ = 0;
+        if (fitted_) fit();
+    }
 }
 
 void Session::afterCameraMove() {
@@ -170,6 +254,16 @@ void Session::apply(const Command& command) {
             command);
         if (!allowed) return;
     }
+    // The state before an edit, for the undo history; a press keeps it until its release (a
+    // fling or a launch is the edit).
+    const bool edits = mayEdit(command);
+    before_.reset();
+    if (std::holds_alternative<cmd::PointerUp>(command)) {
+        before_ = std::move(pressBefore_);
+        pressBefore_.reset();
+    } else if (edits) {
+        before_ = snapshot();
+    }
     std::visit(
         [this](const auto& c) {
             using T = std::decay_t<decltype(c)>;
@@ -219,15 +313,39 @@ void Session::apply(const Command& command) {
             } else if constexpr (std::is_same_v<T, cmd::ToggleSpeeds>) {
                 togglePanel(view_.speeds, "Speed distribution on", "Speed distribution off");
             } else if constexpr (std::is_same_v<T, cmd::TogglePause>) {
+                if (paused_ && viewing_) {
+                    const double t = world_.time();
+                    leavePast();
+                    say(fmt("Resumed from %.2f s: the later frames are forgotten", t, 0.0));
+                } else {
+                    say(!paused_ ? "Paused" : "Resumed");
+                }
                 paused_ = !paused_;
                 accumulator_ = 0.0;
-                say(paused_ ? "Paused" : "Resumed");
             } else if constexpr (std::is_same_v<T, cmd::SingleStep>) {
-                if (paused_) stepRequested_ = true;
+                if (viewing_) {
+                    stepForward();
+                } else if (paused_) {
+                    stepRequested_ = true;
+                }
+            } else if constexpr (std::is_same_v<T, cmd::StepBack>) {
+                stepBack();
+            } else if constexpr (std::is_same_v<T, cmd::StepForward>) {
+                stepForward();
+            } else if constexpr (std::is_same_v<T, cmd::Seek>) {
+                seek(c.seconds);
+            } else if constexpr (std::is_same_v<T, cmd::SeekBy>) {
+                seek(timeline().current + c.seconds);
+            } else if constexpr (std::is_same_v<T, cmd::Undo>) {
+                undo();
+            } else if constexpr (std::is_same_v<T, cmd::Redo>) {
+                redo();
             } else if constexpr (std::is_same_v<T, cmd::ScaleTime>) {
+                const double before = timeScale_;
                 timeScale_ = std::clamp(timeScale_ * c.factor, kMinTimeScale, kMaxTimeScale);
                 reached_ = timeScale_;
                 say("Time speed " + speedText(timeScale_));
+                if (timeScale_ != before) remember("set time speed");
             } else if constexpr (std::is_same_v<T, cmd::SpawnRandom>) {
                 spawnRandom();
             } else if constexpr (std::is_same_v<T, cmd::ChangeSpawnMass>) {
@@ -271,6 +389,14 @@ void Session::apply(const Command& command) {
             }
         },
         command);
+    if (std::holds_alternative<cmd::PointerDown>(command) &&
+        interaction_.mode() != Interaction::Mode::Idle) {
+        pressBefore_ = std::move(before_);
+    }
+    before_.reset();
+    // Whatever changed the world other than the timeline's setters makes its frame a keyframe
+    // (a press and a release set a particle kinematic and free).
+    if (edits || std::holds_alternative<cmd::PointerUp>(command)) timeline_.edited();
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -310,7 +436,8 @@ void Session::pointerUp(const cmd::PointerUp& c) {
     }
     if (r.kind == K::Refused) say(r.message);
     if (r.kind == K::Clicked) click(r);
-    if (r.kind == K::Flung || r.kind == K::Launched) userAction();
+    if (r.kind == K::Flung) userAction("fling particle");
+    if (r.kind == K::Launched) userAction("launch particle");
 }
 
 void Session::click(const ReleaseResult& r) {
@@ -330,7 +457,7 @@ void Session::deleteHeld() {
     if (const auto p = interaction_.deleteHeld(world_)) {
         log(deletionLogLine(*p).substr(4));
         notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
-        userAction();
+        userAction("delete particle");
         checkSelection();
     }
 }
@@ -371,7 +498,7 @@ void Session::spawnRandom() {
     def.color = {static_cast<std::uint8_t>(channel(rng_)), static_cast<std::uint8_t>(channel(rng_)),
                  static_cast<std::uint8_t>(channel(rng_))};
     world_.add(def);
-    userAction();
+    userAction("spawn particle");
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass "
@@ -381,7 +508,9 @@ void Session::spawnRandom() {
 }
 
 void Session::changeSpawnMass(int direction) {
+    const double before = spawn_.mass;
     spawn_.changeMass(direction < 0 ? -1.0 : 1.0);
+    if (spawn_.mass != before) remember("set new particle mass");
     notices_.push_back({Notice::Level::Info,
                         fmt("New particles: %.0f kg, radius %.3g m", spawn_.mass, spawn_.radius()),
                         true, false});
@@ -393,25 +522,28 @@ void Session::nextMode() {
     if (!r.detail.empty()) log(r.detail, Notice::Level::Warning);
     if (r.changed) {
         accumulator_ = 0.0;
-        userAction();
+        userAction("switch mode");
     }
 }
 
 void Session::toggleGravity() {
-    const ControlChange c = psb::app::toggleGravity(world_, loaded_.def().gravity);
+    const ControlChange c = psb::app::toggleGravity(world_, loaded_->def().gravity);
     say(c.message, c.changed ? Notice::Level::Info : Notice::Level::Warning);
-    if (c.changed) userAction();
+    if (c.changed) userAction("switch gravity");
 }
 
 void Session::changeRestitution(int direction) {
     const ControlChange c = stepRestitution(world_, direction);
     say(c.message);
-    if (c.changed) userAction();
+    if (c.changed) userAction("set restitution");
 }
 
 void Session::reset() {
-    World loaded = loaded_;
-    setWorld(std::move(loaded), sceneName_);
+    // The scene as loaded stays the one shared with the undo history's snapshots.
+    std::shared_ptr<const World> loaded = loaded_;
+    setWorld(World(*loaded), sceneName_);
+    loaded_ = std::move(loaded);
+    remember("reset");
     say("Reset to the scene as loaded: " + std::to_string(world_.size()) + " particles");
 }
 
@@ -439,6 +571,7 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
         const Scene scene = psb::app::openScene(file);
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
         setWorld(makeWorld(scene), name);
+        remember("open scene");
         // A scene that marks particles' trails (the Brownian motion's heavy disc) opens with the
         // first of them selected and its trail shown. Before any step, storage order is the
         // scene's order.
@@ -475,7 +608,7 @@ void Session::applyEdit() {
     if (r.applied) {
         closeEdit();
         say(r.message);
-        userAction();
+        userAction("edit particle");
     } else {
         // The prompt stays open with its text, so the value can be corrected.
         prompt_.setError(r.message);
@@ -495,6 +628,108 @@ void Session::save() {
     } catch (const std::exception& e) {  // SaveError; the old file is intact
         say(std::string("Save failed: ") + e.what(), Notice::Level::Error);
     }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Undo and redo.
+
+void Session::undo() {
+    if (viewing_) show(timeline_.lastFrame());  // the present is what a redo brings back
+    auto step = undo_.undo(snapshot());
+    if (!step) {
+        say("Nothing to undo");
+        return;
+    }
+    restore(std::move(step->state));
+    say("Undone: " + step->label);
+}
+
+void Session::redo() {
+    if (viewing_) show(timeline_.lastFrame());
+    auto step = undo_.redo(snapshot());
+    if (!step) {
+        say("Nothing to redo");
+        return;
+    }
+    restore(std::move(step->state));
+    say("Redone: " + step->label);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Step back in time.
+
+TimelineView Session::timeline() const {
+    TimelineView v;
+    v.current = v.earliest = v.latest = world_.time();
+    if (timeline_.empty()) return v;
+    v.earliest = timeline_.timeOf(timeline_.firstFrame());
+    v.latest = std::max(world_.time(), timeline_.timeOf(timeline_.lastFrame()));
+    if (viewing_) {
+        v.latest = timeline_.timeOf(timeline_.lastFrame());
+        v.current = timeline_.timeOf(*viewing_);
+        v.viewingPast = true;
+    }
+    return v;
+}
+
+void Session::show(std::int64_t frame) {
+    world_ = timeline_.seek(frame);
+    viewing_.reset();
+    if (frame < timeline_.lastFrame()) viewing_ = frame;
+    accumulator_ = 0.0;
+    changedSinceMeasure_ = true;
+    now_ = sampleObservables(world_);
+    accuracy_.resetReference(monitoredEnergy(world_));
+}
+
+void Session::leavePast() {
+    if (!viewing_) return;
+    // The world is the rebuilt frame (and what was done to it since): it carries on from there.
+    timeline_.discardAfter(*viewing_);
+    viewing_.reset();
+    timeline_.edited();
+}
+
+void Session::stepBack() {
+    seek(world_.time(), true);
+}
+
+void Session::stepForward() {
+    if (!viewing_) {
+        if (paused_) {
+            stepRequested_ = true;  // the present: one new step
+        } else {
+            say("Pause (Space) to step through time");
+        }
+        return;
+    }
+    show(*viewing_ + 1);
+}
+
+void Session::seek(double seconds, bool oneFrameBack) {
+    if (interaction_.mode() != Interaction::Mode::Idle) {
+        say("Release the mouse button to step through time");
+        return;
+    }
+    if (!std::isfinite(seconds)) {
+        say("Cannot go to that time: it is not a number", Notice::Level::Warning);
+        return;
+    }
+    if (!paused_) {
+        paused_ = true;
+        say("Paused");
+    }
+    if (!viewing_) timeline_.record(world_);  // the present, with any edit since the frame
+    if (timeline_.empty()) return;
+    const std::int64_t at = viewing_.value_or(timeline_.lastFrame());
+    std::int64_t target = timeline_.frameAt(seconds);
+    if (oneFrameBack) target = at - 1;
+    if (target < timeline_.firstFrame()) {
+        say(fmt("The recorded past starts at %.2f s (%.1f s kept)",
+                timeline_.timeOf(timeline_.firstFrame()), timeline_.coveredSeconds()));
+        return;
+    }
+    if (target != at) show(target);
 }
 
 void Session::back() {
@@ -560,9 +795,19 @@ void Session::togglePanel(bool& flag, const char* on, const char* off) {
 // ---------------------------------------------------------------------------------------------
 // Time.
 
+void Session::holdParticle(double now) {
+    // Through the timeline's setters, so that a past frame replays the hand's moves.
+    if (const auto h = interaction_.hold(world_, now, launchSettings())) {
+        timeline_.setPosition(world_, h->id, h->position);
+        timeline_.setVelocity(world_, h->id, h->velocity);
+    }
+}
+
 void Session::stepOnce(double now) {
-    interaction_.applyHold(world_, now, launchSettings());
-    world_.step(world_.solver().dt);
+    holdParticle(now);
+    const double dt = world_.solver().dt;
+    world_.step(dt);
+    timeline_.stepped(dt);
 }
 
 void Session::update(double realSeconds, double now, double budgetMs) {
@@ -598,7 +843,7 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     // back on their own, so their lengths stay comparable over time; opening a scene resets it.
     view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(world_));
     // Show the held particle exactly at the hand, paused or not.
-    interaction_.applyHold(world_, now, launchSettings());
+    holdParticle(now);
     // The state as drawn is measured when the steps' own detection did not see it: nothing
     // stepped (paused, or a held particle moved), the exact mode (its events meet overlaps only
     // at collisions), or the user changed the world since. Running in discrete or substep mode
@@ -618,7 +863,11 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     collisions_ += world_.counters().collisions;
     now_ = sampleObservables(world_);
     now_.collisions = collisions_;
-    series_.record(now_);
+    // A past frame shown is neither the present nor a new sample.
+    if (!viewing_) {
+        series_.record(now_);
+        timeline_.record(world_);
+    }
     lastStepMs_ = msSince(t0);
 }
 

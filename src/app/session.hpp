@@ -4,16 +4,28 @@
 // the spawn rules and the clock that steps the world. It knows no SDL and is tested without one.
 //
 // Everything that changes it is a Command handed to apply(); apply() is the one place where a
-// user's intent becomes a change, so keys, the mouse, tests and on-screen controls share it,
-// and an undo history or time step-back can be added by recording there (each command that
-// changes the world calls userAction(), the natural point to take a snapshot). update() is the
-// only other mutator: it advances the world by real time.
+// user's intent becomes a change, so keys, the mouse, tests and on-screen controls share it.
+// update() is the only other mutator: it advances the world by real time.
+//
+// Undo (undo_history.hpp). apply() keeps the state before each command that may edit (a
+// PointerDown's lasts until its release); a handler that made an edit calls
+// userAction("label"), which files that state in the history under the label. Undo and Redo
+// restore a state whole (world, scene as loaded, name, selection, new-particle settings, time
+// speed, unsaved flag); the clock goes back with the world.
+//
+// Step back (timeline.hpp). Every step and every move of the held particle goes through the
+// timeline, which update() ends with record(); other edits are reported with edited(). While
+// paused, StepBack / StepForward / Seek show a recorded frame: the world is then a rebuilt copy
+// of that frame, and nothing is recorded. Resuming, or any edit, from there carries on from
+// that frame and forgets the frames after it (the edit is undoable; the forgotten frames are
+// not restored by undo).
 //
 // What the session has to say (a mode refused, a file saved) comes out as Notices, which the app
 // shows for a few seconds and logs; the session itself keeps no clock of its own.
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <random>
 #include <string>
@@ -28,6 +40,8 @@
 #include "edit_prompt.hpp"
 #include "interaction.hpp"
 #include "selection.hpp"
+#include "timeline.hpp"
+#include "undo_history.hpp"
 #include "view_options.hpp"
 
 namespace psb::app {
@@ -62,6 +76,18 @@ struct SessionOptions {
     int viewportWidth = 800;  ///< pixels
     int viewportHeight = 800;
     ViewInsets insets;
+    TimelineSettings timeline;
+    UndoSettings undo;
+};
+
+/// The recorded past, for a time scrubber: simulated seconds.
+struct TimelineView {
+    double earliest = 0.0;  ///< the oldest recorded frame
+    double latest = 0.0;    ///< the newest (the present)
+    double current = 0.0;   ///< the frame shown
+    bool viewingPast = false;
+    /// latest - current: how far back the frame shown is.
+    [[nodiscard]] double secondsBack() const { return latest - current; }
 };
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
@@ -88,7 +114,7 @@ class Session {
     [[nodiscard]] bool takeScreenshotRequest();
 
     [[nodiscard]] const World& world() const { return world_; }
-    [[nodiscard]] const World& loadedWorld() const { return loaded_; }
+    [[nodiscard]] const World& loadedWorld() const { return *loaded_; }
     [[nodiscard]] const std::string& sceneName() const { return sceneName_; }
     /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
     /// (trails) start over.
@@ -132,6 +158,16 @@ class Session {
     [[nodiscard]] LaunchSettings launchSettings() const;
     /// A launch in progress: the velocity releasing now would give.
     [[nodiscard]] CappedVelocity launchPreview() const;
+    /// Undo and redo: whether there is one, and the label of the edit it would undo / redo.
+    [[nodiscard]] bool canUndo() const { return undo_.canUndo(); }
+    [[nodiscard]] bool canRedo() const { return undo_.canRedo(); }
+    [[nodiscard]] std::string undoLabel() const { return undo_.undoLabel(); }
+    [[nodiscard]] std::string redoLabel() const { return undo_.redoLabel(); }
+    [[nodiscard]] const UndoHistory& undoHistory() const { return undo_; }
+    /// The recorded past and the frame shown.
+    [[nodiscard]] TimelineView timeline() const;
+    [[nodiscard]] const Timeline& timelineRecord() const { return timeline_; }
+
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
     [[nodiscard]] std::string overlayFlags() const;
 
@@ -158,6 +194,12 @@ class Session {
     void applyEdit();
     void closeEdit();
     void save();
+    void undo();
+    void redo();
+    void stepBack();
+    void stepForward();
+    /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.
+    void seek(double seconds, bool oneFrameBack = false);
     void back();
     void quit();
     void fit();
@@ -165,11 +207,26 @@ class Session {
     void togglePanel(bool& flag, const char* on, const char* off);
 
     void stepOnce(double now);
+    /// The held particle to the hand, through the timeline's setters.
+    void holdParticle(double now);
     /// The selected particle is gone: forget it (and close its edit prompt), saying so.
     void checkSelection();
-    /// The user changed the world: the energy drift is measured from here on, and there are
-    /// unsaved changes.
-    void userAction();
+    /// The user made the edit `what` ("delete particle", "set restitution"): it becomes an
+    /// undo entry (the state apply() kept before the command), the energy drift is measured
+    /// from here on, and there are unsaved changes.
+    void userAction(const char* what);
+    /// Files the state kept before the command under `what` in the undo history (userAction
+    /// without the unsaved flag: an opened scene or a reset is what is on disk).
+    void remember(const char* what);
+    /// Whether `command` may edit the session (then apply() keeps the state before it).
+    [[nodiscard]] static bool mayEdit(const Command& command);
+    [[nodiscard]] UndoState snapshot() const;
+    /// Puts `state` back (undo / redo).
+    void restore(UndoState state);
+    /// Viewing a past frame and about to change the world: carry on from that frame.
+    void leavePast();
+    /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.
+    void show(std::int64_t frame);
     /// The hand did not move but the world under it did: the held particle follows the cursor.
     void afterCameraMove();
     void say(std::string text, Notice::Level level = Notice::Level::Info);
@@ -178,7 +235,7 @@ class Session {
 
     SessionOptions options_;
     World world_;
-    World loaded_;  ///< world_ as it was loaded, for Reset
+    std::shared_ptr<const World> loaded_;  ///< world_ as it was loaded, for Reset
     std::string sceneName_;
     std::uint64_t generation_ = 0;
     std::size_t nextPreset_ = 0;
@@ -219,6 +276,12 @@ class Session {
     TimeSeries series_{kSeriesSamples};
     std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
     ObservablesSample now_;
+
+    UndoHistory undo_;
+    std::optional<UndoState> before_;       ///< the state before the command being applied
+    std::optional<UndoState> pressBefore_;  ///< before the pointer's press, until its release
+    Timeline timeline_;
+    std::optional<std::int64_t> viewing_;  ///< the past frame shown, while paused
 
     std::vector<Notice> notices_;
 };

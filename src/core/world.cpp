@@ -265,6 +265,11 @@ std::size_t World::stateBytes() const {
     return bytes;
 }
 
+void World::dropEventState() {
+    settle();
+    exact_.reset();
+}
+
 bool World::contains(ParticleId id) const {
     return ids_.find(id).has_value();
 }
