@@ -14,42 +14,13 @@
 
 #include <particle_sandbox/world.hpp>
 
+#include "same_world.hpp"
 #include "timeline.hpp"
 
 namespace psb::app {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-template <typename T>
-bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
-
-// Every particle's every field, the ids, the time and the counters.
-::testing::AssertionResult identical(const World& a, const World& b) {
-    const ParticleArrays &p = a.particles(), &q = b.particles();
-    if (!sameBits(p.x, q.x) || !sameBits(p.y, q.y)) {
-        return ::testing::AssertionFailure() << "positions differ";
-    }
-    if (!sameBits(p.vx, q.vx) || !sameBits(p.vy, q.vy)) {
-        return ::testing::AssertionFailure() << "velocities differ";
-    }
-    if (!sameBits(p.invMass, q.invMass) || !sameBits(p.mass, q.mass) ||
-        !sameBits(p.radius, q.radius) || !sameBits(p.color, q.color) || !sameBits(p.id, q.id)) {
-        return ::testing::AssertionFailure() << "masses, radii, colours or ids differ";
-    }
-    if (a.time() != b.time()) return ::testing::AssertionFailure() << "times differ";
-    const StepCounters &c = a.counters(), &d = b.counters();
-    if (c.collisions != d.collisions || c.wallCollisions != d.wallCollisions ||
-        std::memcmp(&c.wallImpulse, &d.wallImpulse, sizeof c.wallImpulse) != 0) {
-        return ::testing::AssertionFailure() << "counters differ";
-    }
-    if (a.def().restitution != b.def().restitution || a.def().gravity != b.def().gravity) {
-        return ::testing::AssertionFailure() << "laws differ";
-    }
-    return ::testing::AssertionSuccess();
-}
 
 World gas(StepMode mode, int n = 150) {
     WorldDef def;
