@@ -254,11 +254,13 @@ void Session::apply(const Command& command) {
             command);
         if (!allowed) return;
     }
-    // The state before an edit, for the undo history; a press keeps it until its release (a
-    // fling or a launch is the edit).
+    // The state before an edit, for the undo history.
     const bool edits = mayEdit(command);
     before_.reset();
-    if (std::holds_alternative<cmd::PointerUp>(command)) {
+    // A press keeps the state before it until its release or the deletion of what it holds:
+    // the gesture (grab, drag, fling or delete) is one edit.
+    if (std::holds_alternative<cmd::PointerUp>(command) ||
+        (std::holds_alternative<cmd::DeleteHeld>(command) && pressBefore_)) {
         before_ = std::move(pressBefore_);
         pressBefore_.reset();
     } else if (edits) {

@@ -91,6 +91,24 @@ TEST(Renderer, AnOpenGLSoftwareRasteriserIsRecognised) {
     EXPECT_FALSE(isSoftwareRasteriser(""));
 }
 
+TEST(Input, UndoRedoAndStepBackKeysLeaveThePlainKeysAsTheyWere) {
+    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), false)));
+    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL | KMOD_LSHIFT), false)));
+    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_y, KMOD_RCTRL), false)));
+    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL, 1), false)));  // held
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z), false).empty());
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_y), false).empty());
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), true).empty());  // editing
+    EXPECT_TRUE(is<cmd::StepBack>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_LSHIFT), false)));
+    EXPECT_TRUE(is<cmd::StepForward>(commandsForKey(keyEvent(SDLK_RIGHT, KMOD_RSHIFT, 1), false)));
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT), false)));
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_RIGHT), false)));
+    const auto back = commandsForKey(keyEvent(SDLK_PAGEUP), false);
+    ASSERT_TRUE(is<cmd::SeekBy>(back));
+    EXPECT_EQ(std::get<cmd::SeekBy>(back.front()).seconds, -kSeekKeySeconds);
+    EXPECT_TRUE(is<cmd::SeekBy>(commandsForKey(keyEvent(SDLK_PAGEDOWN), false)));
+}
+
 TEST(BoxMarker, ShownOnlyWhenTheBoxIsOffScreenAndPointsToIt) {
     Camera c;
     c.setViewport(800, 600);
