@@ -10,6 +10,9 @@
 //
 //   build/release/bench/timeline_bench
 //
+// BM_StepBack measures the Timeline alone; BM_SessionStepBack (below) the same through the
+// Session and its commands, with the undo history, for 10^2, 10^3 and 10^4 particles.
+//
 // Counters: memory_MB (Timeline::memoryBytes after the run), covered_s (seconds of history
 // held), keyframes, spacing_s (between scheduled keyframes), step_back_ms (CPU time of one
 // step back, mean over the pass), worst_ms (CPU time of the slowest step back of the pass),
@@ -33,6 +36,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "gas_scene.hpp"
+#include "session.hpp"
 #include "timeline.hpp"
 
 namespace {
@@ -139,6 +143,77 @@ BENCHMARK(BM_StepBack)
     ->Arg(static_cast<int>(psb::StepMode::Discrete))
     ->Arg(static_cast<int>(psb::StepMode::Substep))
     ->Arg(static_cast<int>(psb::StepMode::Exact))
+    ->Iterations(2)
+    ->Unit(benchmark::kMillisecond);
+
+// Through the Session, as a user causes it: a gas of `n` particles run at 60 frames per second
+// (Session::update, no frame budget, so 12 s of simulated time are always reached), then paused
+// (Space); one iteration is 60 Shift+Left presses (cmd::StepBack) and one 10 s scrub
+// (cmd::Seek to 10 s before the present, then back to the present), each apply() timed. Then
+// 120 gravity switches (one undo entry each) fill the undo history, and one Ctrl+Z is timed.
+// Counters: timeline_MB, covered_s, step_back_ms / step_back_worst_ms (CPU, one press),
+// scrub_10s_ms (CPU, the seek 10 s back), undo_MB (the history after 120 edits; it keeps
+// undo_steps of them), undo_ms (CPU, one undo).
+void BM_SessionStepBack(benchmark::State& state) {
+    const auto n = static_cast<std::size_t>(state.range(0));
+    const auto mode = static_cast<psb::StepMode>(state.range(1));
+    psb::World w = psb::bench::makeGasWorld(n, psb::BroadPhaseKind::Auto, 1);
+    if (mode != psb::StepMode::Exact) w.setGravity(psb::Vec2(0.0, 9.81));
+    w.setSolver({.mode = mode, .dt = psb::bench::kDt, .substeps = 4});
+    for (int k = 0; k < 20; ++k)
+        w.step(w.solver().dt);  // the random placement's overlaps are separated first
+    psb::app::SessionOptions options;
+    options.saveTo = "/dev/null";
+    psb::app::Session s(std::move(w), "gas", options);
+    double now = 0.0;
+    const double start = s.world().time();
+    while (s.world().time() < start + 12.0) {
+        now += 1.0 / 60.0;
+        s.update(1.0 / 60.0, now, 1e9);
+    }
+    s.apply(psb::app::cmd::TogglePause{});
+    s.update(0.0, now);
+    double stepMs = 0.0, worstMs = 0.0, scrubMs = 0.0;
+    std::size_t presses = 0;
+    for (auto _ : state) {
+        for (int k = 0; k < 60; ++k) {
+            const double c0 = cpuMs();
+            s.apply(psb::app::cmd::StepBack{});
+            const double ms = cpuMs() - c0;
+            stepMs += ms;
+            worstMs = std::max(worstMs, ms);
+            ++presses;
+        }
+        const double latest = s.timeline().latest;
+        const double c0 = cpuMs();
+        s.apply(psb::app::cmd::Seek{latest - 10.0});
+        scrubMs += cpuMs() - c0;
+        s.apply(psb::app::cmd::Seek{latest});
+    }
+    const psb::app::TimelineView v = s.timeline();
+    state.counters["timeline_MB"] = static_cast<double>(s.timelineRecord().memoryBytes()) / 1e6;
+    state.counters["covered_s"] = v.latest - v.earliest;
+    state.counters["step_back_ms"] = stepMs / static_cast<double>(presses);
+    state.counters["step_back_worst_ms"] = worstMs;
+    state.counters["scrub_10s_ms"] = scrubMs / static_cast<double>(state.iterations());
+    for (int k = 0; k < 120; ++k) {
+        s.apply(psb::app::cmd::ToggleGravity{});
+        now += 1.0 / 60.0;
+        s.update(1.0 / 60.0, now);
+    }
+    state.counters["undo_MB"] = static_cast<double>(s.undoHistory().memoryBytes()) / 1e6;
+    state.counters["undo_steps"] = static_cast<double>(s.undoHistory().undoCount());
+    const double c0 = cpuMs();
+    s.apply(psb::app::cmd::Undo{});
+    state.counters["undo_ms"] = cpuMs() - c0;
+    state.SetLabel(std::string(psb::toString(mode)) + ", " + std::to_string(n) + " particles");
+}
+BENCHMARK(BM_SessionStepBack)
+    ->ArgNames({"n", "mode"})
+    ->ArgsProduct({{100, 1000, 10000},
+                   {static_cast<int>(psb::StepMode::Discrete),
+                    static_cast<int>(psb::StepMode::Substep),
+                    static_cast<int>(psb::StepMode::Exact)}})
     ->Iterations(2)
     ->Unit(benchmark::kMillisecond);
 
