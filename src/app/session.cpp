@@ -260,7 +260,8 @@ void Session::apply(const Command& command) {
     // A press keeps the state before it until its release or the deletion of what it holds:
     // the gesture (grab, drag, fling or delete) is one edit.
     if (std::holds_alternative<cmd::PointerUp>(command) ||
-        (std::holds_alternative<cmd::DeleteHeld>(command) && pressBefore_)) {
+        (std::holds_alternative<cmd::DeleteHeld>(command) &&
+         interaction_.mode() == Interaction::Mode::Holding)) {
         before_ = std::move(pressBefore_);
         pressBefore_.reset();
     } else if (edits) {

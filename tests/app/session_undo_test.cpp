@@ -117,6 +117,33 @@ TEST(SessionUndo, UndoesADeletionOfTheHeldParticle) {
     EXPECT_EQ(s.world().size(), before.size());
 }
 
+TEST(SessionUndo, AGrabDragAndDeleteIsOneEditAndALaunchKeepsItsOwn) {
+    Session s = session();
+    const World before = s.world();
+    const ParticleId yellow = *s.world().pick(Vec2(5.2, 1.6));
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
+    s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.0, 2.4)), 1.05});
+    s.update(kFrame, 1.05);
+    s.apply(cmd::ChangeRestitution{-1});  // a key while holding: its own entry
+    s.apply(cmd::DeleteHeld{});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(5.0, 2.4)), 1.1});
+    EXPECT_EQ(s.undoHistory().undoCount(), 2u);
+    s.apply(cmd::Undo{});  // the particle is back where it was before the grab
+    ASSERT_TRUE(s.world().contains(yellow));
+    EXPECT_EQ(s.world().get(yellow).position, before.get(yellow).position);
+    // Delete pressed during a launch deletes nothing; the launch is still one undoable edit.
+    const std::size_t n = s.world().size();
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(1.0, 6.0)), 2.0});
+    s.apply(cmd::PointerMove{c.worldToScreen(Vec2(2.0, 5.0)), 2.1});
+    s.apply(cmd::DeleteHeld{});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(2.0, 5.0)), 2.2});
+    ASSERT_EQ(s.world().size(), n + 1);
+    EXPECT_EQ(s.undoLabel(), "launch particle");
+    s.apply(cmd::Undo{});
+    EXPECT_EQ(s.world().size(), n);
+}
+
 TEST(SessionUndo, UndoesAnEditOfTheSelectedParticle) {
     Session s = session();
     const Vec2 yellow(5.2, 1.6);
