@@ -340,9 +340,9 @@ void Session::apply(const Command& command) {
             } else if constexpr (std::is_same_v<T, cmd::SeekBy>) {
                 seek(timeline().current + c.seconds);
             } else if constexpr (std::is_same_v<T, cmd::Undo>) {
-                undo();
+                undoOrRedo(false);
             } else if constexpr (std::is_same_v<T, cmd::Redo>) {
-                redo();
+                undoOrRedo(true);
             } else if constexpr (std::is_same_v<T, cmd::ScaleTime>) {
                 const double before = timeScale_;
                 timeScale_ = std::clamp(timeScale_ * c.factor, kMinTimeScale, kMaxTimeScale);
@@ -636,26 +636,15 @@ void Session::save() {
 // ---------------------------------------------------------------------------------------------
 // Undo and redo.
 
-void Session::undo() {
-    if (viewing_) show(timeline_.lastFrame());  // the present is what a redo brings back
-    auto step = undo_.undo(snapshot());
+void Session::undoOrRedo(bool redo) {
+    if (viewing_) show(timeline_.lastFrame());  // the present is what comes back after
+    auto step = redo ? undo_.redo(snapshot()) : undo_.undo(snapshot());
     if (!step) {
-        say("Nothing to undo");
+        say(redo ? "Nothing to redo" : "Nothing to undo");
         return;
     }
     restore(std::move(step->state));
-    say("Undone: " + step->label);
-}
-
-void Session::redo() {
-    if (viewing_) show(timeline_.lastFrame());
-    auto step = undo_.redo(snapshot());
-    if (!step) {
-        say("Nothing to redo");
-        return;
-    }
-    restore(std::move(step->state));
-    say("Redone: " + step->label);
+    say((redo ? "Redone: " : "Undone: ") + step->label);
 }
 
 // ---------------------------------------------------------------------------------------------

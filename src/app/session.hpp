@@ -194,8 +194,7 @@ class Session {
     void applyEdit();
     void closeEdit();
     void save();
-    void undo();
-    void redo();
+    void undoOrRedo(bool redo);
     void stepBack();
     void stepForward();
     /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.

@@ -51,28 +51,25 @@ void UndoHistory::record(const std::string& label, double now, UndoState before)
     trim();
 }
 
-std::optional<UndoHistory::Step> UndoHistory::undo(UndoState current) {
-    if (undo_.empty()) return std::nullopt;
-    Entry e = std::move(undo_.back());
-    undo_.pop_back();
+std::optional<UndoHistory::Step> UndoHistory::move(std::deque<Entry>& from, std::deque<Entry>& to,
+                                                   UndoState current) {
+    if (from.empty()) return std::nullopt;
+    Entry e = std::move(from.back());
+    from.pop_back();
     entryBytes_ -= e.bytes;
-    redo_.push_back(makeEntry(e.label, e.time, std::move(current)));
-    entryBytes_ += redo_.back().bytes;
+    to.push_back(makeEntry(e.label, e.time, std::move(current)));
+    entryBytes_ += to.back().bytes;
     mayCoalesce_ = false;
     trim();
     return Step{std::move(e.label), std::move(e.state)};
 }
 
+std::optional<UndoHistory::Step> UndoHistory::undo(UndoState current) {
+    return move(undo_, redo_, std::move(current));
+}
+
 std::optional<UndoHistory::Step> UndoHistory::redo(UndoState current) {
-    if (redo_.empty()) return std::nullopt;
-    Entry e = std::move(redo_.back());
-    redo_.pop_back();
-    entryBytes_ -= e.bytes;
-    undo_.push_back(makeEntry(e.label, e.time, std::move(current)));
-    entryBytes_ += undo_.back().bytes;
-    mayCoalesce_ = false;
-    trim();
-    return Step{std::move(e.label), std::move(e.state)};
+    return move(redo_, undo_, std::move(current));
 }
 
 std::string UndoHistory::undoLabel() const {

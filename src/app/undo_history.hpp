@@ -96,6 +96,9 @@ class UndoHistory {
         std::size_t bytes = 0;
     };
     [[nodiscard]] static Entry makeEntry(std::string label, double time, UndoState state);
+    /// Undo (from undo_ to redo_) or redo (the other way).
+    [[nodiscard]] std::optional<Step> move(std::deque<Entry>& from, std::deque<Entry>& to,
+                                           UndoState current);
     void trim();
 
     UndoSettings settings_;

@@ -1,6 +1,6 @@
 # Sourced by the end-to-end scripts (sandbox_e2e.sh, tests/install/install_test.sh), which
 # define fail() themselves: pass(), the ERR trap that names the failing line, the clean-up at
-# exit of the program under test (APP_PID) and of the X server (XVFB_PID), and start_xvfb.
+# exit of the program under test (APP_PID) and of the X server (XVFB_PID), start_xvfb, and drag.
 pass() { echo "ok: $*"; }
 
 XVFB_PID=""
@@ -38,4 +38,21 @@ start_xvfb() {
         XVFB_PID=""
     done
     return 1
+}
+
+# Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart, as
+# one xdotool command chain so that process start-up under load cannot stretch the timing (the
+# app releases a particle at rest if the hand paused for 100 ms). An optional 6th argument is a
+# further chain (e.g. a key press) run while the button is still down.
+drag() {
+    local x=$1 y=$2 dx=$3 dy=$4 n=$5 hold=${6:-}
+    local chain=(mousemove --sync "$x" "$y" sleep 0.1 mousedown 1 sleep 0.1)
+    for ((i = 1; i <= n; i++)); do
+        chain+=(mousemove "$((x + i * dx))" "$((y + i * dy))" sleep 0.015)
+    done
+    # shellcheck disable=SC2206
+    [[ -n "$hold" ]] && chain+=($hold)
+    chain+=(mouseup 1)
+    xdotool "${chain[@]}"
+    sleep 0.2
 }

@@ -148,23 +148,6 @@ wait_title() {  # wait_title REGEX
 key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
 shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
 
-# Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart, as
-# one xdotool command chain so that process start-up under load cannot stretch the timing (the
-# app releases a particle at rest if the hand paused for 100 ms). An optional 6th argument is a
-# further chain (e.g. a key press) run while the button is still down.
-drag() {
-    local x=$1 y=$2 dx=$3 dy=$4 n=$5 hold=${6:-}
-    local chain=(mousemove --sync "$x" "$y" sleep 0.1 mousedown 1 sleep 0.1)
-    for ((i = 1; i <= n; i++)); do
-        chain+=(mousemove "$((x + i * dx))" "$((y + i * dy))" sleep 0.015)
-    done
-    # shellcheck disable=SC2206
-    [[ -n "$hold" ]] && chain+=($hold)
-    chain+=(mouseup 1)
-    xdotool "${chain[@]}"
-    sleep 0.2
-}
-
 # Centroid "x y count" of the pixels of colour R,G,B (±6 per channel) in a screenshot.
 centroid() {
     convert "$1" -depth 8 txt:- | awk -v r="$2" -v g="$3" -v b="$4" -F'[ ,:()]+' '

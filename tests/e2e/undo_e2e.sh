@@ -76,19 +76,6 @@ save() {
 # The particles of a saved scene, one line each (positions, velocities, mass, radius, colour).
 particles() { grep '"mass":' "$OUT/$1.json"; }
 same() { diff <(particles "$1") <(particles "$2") >/dev/null; }
-drag() {  # drag X Y DX DY N [CHAIN]: a left-button drag in N moves, CHAIN run before release
-    local x=$1 y=$2 dx=$3 dy=$4 n=$5 hold=${6:-}
-    local chain=(mousemove --sync "$x" "$y" sleep 0.1 mousedown 1 sleep 0.1)
-    for ((i = 1; i <= n; i++)); do
-        chain+=(mousemove "$((x + i * dx))" "$((y + i * dy))" sleep 0.015)
-    done
-    # shellcheck disable=SC2206
-    [[ -n "$hold" ]] && chain+=($hold)
-    chain+=(mouseup 1)
-    xdotool "${chain[@]}"
-    sleep 0.2
-}
-
 wait_log "\[I\] View: zoom"
 read -r ZOOM BX BY < <(grep "\[I\] View: zoom" "$LOG" | head -1 |
     sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/')
