@@ -140,9 +140,9 @@ bool Session::mayEdit(const Command& command) {
         command);
 }
 
-UndoState Session::snapshot() const {
-    UndoState s{world_, loaded_,    sceneName_, selection_.id().value_or(kNullParticle),
-                spawn_, timeScale_, dirty_};
+UndoState Session::snapshot(World world) const {
+    UndoState s{std::move(world), loaded_,    sceneName_, selection_.id().value_or(kNullParticle),
+                spawn_,           timeScale_, dirty_};
     // A particle in the hand is kinematic only while held: restored, it is free again.
     if (interaction_.mode() == Interaction::Mode::Holding &&
         s.world.contains(interaction_.held())) {
@@ -265,7 +265,7 @@ void Session::apply(const Command& command) {
         before_ = std::move(pressBefore_);
         pressBefore_.reset();
     } else if (edits) {
-        before_ = snapshot();
+        before_ = snapshot(world_);
     }
     std::visit(
         [this](const auto& c) {
@@ -638,11 +638,13 @@ void Session::save() {
 
 void Session::undoOrRedo(bool redo) {
     if (viewing_) show(timeline_.lastFrame());  // the present is what comes back after
-    auto step = redo ? undo_.redo(snapshot()) : undo_.undo(snapshot());
-    if (!step) {
+    if (!(redo ? undo_.canRedo() : undo_.canUndo())) {
         say(redo ? "Nothing to redo" : "Nothing to undo");
         return;
     }
+    // The world now goes to the other side as it is (moved, not copied): restore() replaces it.
+    UndoState now = snapshot(std::move(world_));
+    auto step = redo ? undo_.redo(std::move(now)) : undo_.undo(std::move(now));
     restore(std::move(step->state));
     say((redo ? "Redone: " : "Undone: ") + step->label);
 }

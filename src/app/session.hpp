@@ -219,7 +219,8 @@ class Session {
     void remember(const char* what);
     /// Whether `command` may edit the session (then apply() keeps the state before it).
     [[nodiscard]] static bool mayEdit(const Command& command);
-    [[nodiscard]] UndoState snapshot() const;
+    /// The session's state with `world` (world_, or world_ moved out) as its world.
+    [[nodiscard]] UndoState snapshot(World world) const;
     /// Puts `state` back (undo / redo).
     void restore(UndoState state);
     /// Viewing a past frame and about to change the world: carry on from that frame.
