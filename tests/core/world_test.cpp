@@ -199,6 +199,26 @@ TEST(World, ACopyStepsBitForBitLikeTheOriginalInEveryMode) {
     }
 }
 
+TEST(World, DroppingTheEventStateKeepsTheParticlesAndFreesItsBytes) {
+    World w = denseGas(StepMode::Exact);
+    const std::size_t bare = w.stateBytes();
+    for (int k = 0; k < 10; ++k)
+        w.step(w.solver().dt);
+    const std::uint64_t hash = test::stateHash(w);
+    ASSERT_GT(w.stateBytes(), bare + 400u * 128u);
+    w.dropEventState();
+    EXPECT_EQ(test::stateHash(w), hash);
+    EXPECT_EQ(w.stateBytes(), bare);
+    // It steps on like a world just edited: the events are rebuilt from the particles.
+    World edited = w;
+    for (int k = 0; k < 20; ++k) {
+        w.step(w.solver().dt);
+        edited.step(edited.solver().dt);
+    }
+    EXPECT_EQ(test::stateHash(w), test::stateHash(edited));
+    EXPECT_GT(w.counters().collisions, 0u);
+}
+
 TEST(World, StateBytesCountTheExactModesEventState) {
     World w = denseGas(StepMode::Exact);
     const std::size_t before = w.stateBytes();
