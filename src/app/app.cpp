@@ -35,7 +35,7 @@ void logLine(const std::string& line) {
 App::App(const AppOptions& options) : options_(options) {
     // The scene first: a bad file is reported before any window opens.
     World world;
-    std::string name;
+    std::string name, description;
     if (options_.benchParticles > 0) {
         world = benchmarkWorld(options_.benchParticles);
         name = "benchmark";
@@ -43,6 +43,7 @@ App::App(const AppOptions& options) : options_(options) {
         const Scene scene = psb::app::openScene(options_.scene);
         world = makeWorld(scene);
         name = scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
+        description = scene.description;
     }
     SdlContextOptions so;
     so.width = options_.width;
@@ -59,6 +60,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.presets = presetScenes();
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
+    s.sceneDescription = description;
     s.paused = options_.startPaused;
     s.arrows = options_.arrows;
     const SDL_Point out = sdl_->outputSize();

@@ -49,6 +49,7 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
+    sceneDescription_ = options_.sceneDescription;
     setWorld(std::move(world), std::move(sceneName));
 }
 
@@ -61,7 +62,7 @@ void Session::setWorld(World world, std::string name) {
     sceneName_ = std::move(name);
     ++generation_;
     view_.arrowSeconds = arrowSecondsFor(world_);
-    spawn_.lengthScale = spawnLengthScale(world_);
+    followScene(spawn_, world_);
     accumulator_ = 0.0;
     series_.clear();
     collisions_ = 0;
@@ -347,12 +348,13 @@ void Session::checkSelection() {
 
 void Session::spawnRandom() {
     const WorldDef& d = world_.def();
-    // The original: mass a random integer 3..20 kg, radius 2.5 cm per kg at its scale of
-    // 1 px = 1 cm (spawnLengthScale follows the scene), somewhere in the upper part of the box,
-    // colour channels 100..255, velocity components up to 5 px per frame at 60 frames per second
-    // (3 m/s), scaled with the box.
-    std::uniform_int_distribution<int> massDist(3, 20), channel(100, 255);
-    const double mass = massDist(rng_), radius = 2.5 * mass * spawn_.lengthScale;
+    // The original: mass a random integer 3..20 kg with its radius, 2.5 cm per kg at its scale of
+    // 1 px = 1 cm (here 0.3..2 times the scene's typical particle), somewhere in the upper part
+    // of the box, colour channels 100..255, velocity components up to 5 px per frame at 60
+    // frames per second (3 m/s), scaled with the box.
+    std::uniform_int_distribution<int> sizeDist(3, 20), channel(100, 255);
+    const double size = sizeDist(rng_) / 10.0;
+    const double mass = size * spawn_.typicalMass, radius = size * spawn_.typicalRadius;
     std::uniform_real_distribution<double> x(radius, std::max(radius, d.width - radius));
     std::uniform_real_distribution<double> y(radius, std::max(radius, d.height / 2.0));
     const double vmax = 3.0 * std::min(d.width, d.height) / 7.0;
@@ -375,16 +377,17 @@ void Session::spawnRandom() {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass "
-                  "%.0f kg",
+                  "%.3g kg",
                   spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass);
     log(buf);
 }
 
 void Session::changeSpawnMass(int direction) {
-    spawn_.changeMass(direction < 0 ? -1.0 : 1.0);
-    notices_.push_back({Notice::Level::Info,
-                        fmt("New particles: %.0f kg, radius %.3g m", spawn_.mass, spawn_.radius()),
-                        true, false});
+    spawn_.changeSize(direction < 0 ? -1 : 1);
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
+                  spawn_.mass(), spawn_.radius(), spawn_.size);
+    notices_.push_back({Notice::Level::Info, buf, true, false});
 }
 
 void Session::nextMode() {
@@ -430,8 +433,17 @@ void Session::openPreset(int index) {
         }
         k = static_cast<std::size_t>(index);
     }
+    const std::uint64_t before = generation_;
     openFile(presets[k]);
     nextPreset_ = (k + 1) % presets.size();
+    if (generation_ == before) return;  // not opened: the error is said
+    // Presets open paused: many are over in seconds (a Galton board, a bullet), and a teacher
+    // wants to show the start before it runs.
+    paused_ = true;
+    accumulator_ = 0.0;
+    const std::string key = cmd::presetKey(static_cast<int>(k));
+    say("Preset " + std::to_string(k + 1) + " of " + std::to_string(presets.size()) +
+        (key.empty() ? std::string() : " (key " + key + ")") + ", paused: Space starts it");
 }
 
 void Session::openFile(const std::optional<std::filesystem::path>& file) {
@@ -439,6 +451,15 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
         const Scene scene = psb::app::openScene(file);
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
         setWorld(makeWorld(scene), name);
+        sceneDescription_ = scene.description;
+        // A new scene starts at its own pace: a time speed asked for the last one would make
+        // this one look wrong without saying why.
+        std::string speedReset;
+        if (timeScale_ != 1.0) {
+            speedReset = "; time speed back to x1 (was " + speedText(timeScale_) + ")";
+            timeScale_ = 1.0;
+            reached_ = 1.0;
+        }
         // A scene that marks particles' trails (the Brownian motion's heavy disc) opens with the
         // first of them selected and its trail shown. Before any step, storage order is the
         // scene's order.
@@ -447,7 +468,7 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
             view_.trails = TrailMode::Selected;
         }
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
-            ": " + name + " (" + std::to_string(world_.size()) + " particles)");
+            ": " + name + " (" + std::to_string(world_.size()) + " particles)" + speedReset);
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
         say(std::string("Cannot open scene: ") + e.what(), Notice::Level::Error);
     }
@@ -489,7 +510,7 @@ void Session::applyEdit() {
 void Session::save() {
     try {
         const std::filesystem::path path = freeSavePath(options_.saveTo);
-        say(saveWorld(world_, sceneName_, path));
+        say(saveWorld(world_, sceneName_, sceneDescription_, path));
         lastSave_ = path;
         dirty_ = false;
     } catch (const std::exception& e) {  // SaveError; the old file is intact

@@ -57,6 +57,7 @@ struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
     std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
     std::uint32_t seed = 1;                                       ///< random spawns
+    std::string sceneDescription;  ///< the first scene's, kept when it is saved
     bool paused = false;
     bool arrows = true;
     int viewportWidth = 800;  ///< pixels
@@ -180,6 +181,7 @@ class Session {
     World world_;
     World loaded_;  ///< world_ as it was loaded, for Reset
     std::string sceneName_;
+    std::string sceneDescription_;  ///< the scene's as loaded, written back by save()
     std::uint64_t generation_ = 0;
     std::size_t nextPreset_ = 0;
 
