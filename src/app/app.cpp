@@ -5,14 +5,17 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <particle_sandbox/atomic_file.hpp>
 #include <particle_sandbox/scene.hpp>
 
 #include "assets.hpp"
 #include "benchmark_scene.hpp"
 #include "clock.hpp"
 #include "hud.hpp"
+#include "overlay.hpp"
 #include "panel_layout.hpp"
 #include "scene_io.hpp"
+#include "screen_text.hpp"
 #include "screenshot.hpp"
 
 namespace psb::app {
@@ -73,6 +76,10 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
     s.insets.bottom = static_cast<double>(kShownMessages) * lh + 4.0 + kPanelMargin;
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
+    // The inspector with long numbers in its widest line, and the margin.
+    s.insets.inspectorColumn =
+        textBoxSize(sdl_->hudFont(), {"momentum  [-123.45, -123.45] kg m/s"}).x +
+        2.0 * kPanelMargin;
     session_.emplace(std::move(world), std::move(name), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});
@@ -188,9 +195,11 @@ void App::frame(double realSeconds) {
     render();
 }
 
-void App::writeScreenshot() {
+void App::writeScreenshot(const DrawStats& drawn) {
     try {
         lastScreenshot_ = saveScreenshot(sdl_->renderer(), options_.screenshotDir);
+        std::filesystem::path text = *lastScreenshot_;
+        writeFileAtomically(text.replace_extension(".txt"), screenText(lastFrame_, drawn));
         std::error_code ec;
         const auto shown = std::filesystem::absolute(*lastScreenshot_, ec).lexically_normal();
         logLine("[I] Saved screenshot " + lastScreenshot_->string());
@@ -210,7 +219,7 @@ void App::render() {
     const DrawStats drawn = draw_->draw(lastFrame_);
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
-    if (session_->takeScreenshotRequest()) writeScreenshot();
+    if (session_->takeScreenshotRequest()) writeScreenshot(drawn);
     sdl_->setTitle(lastFrame_.title);
     sdl_->present();
     stats_.lastDrawMs = msSince(t0);

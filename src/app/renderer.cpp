@@ -261,7 +261,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                 if (!world.def().walls) return false;
                 SDL_Rect in;
                 if (!SDL_IntersectRect(&r, &walls, &in)) return false;  // all outside
-                return in.w != r.w || in.h != r.h;                        // partly outside
+                return in.w != r.w || in.h != r.h;                      // partly outside
             };
             const auto onDiscs = [&](const SDL_Rect& r) {
                 for (const SDL_Rect& o : discBoxes)
@@ -337,11 +337,10 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                     if (overDiscs) {
                         for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
                             labelFont_->layout(lines[k], x + static_cast<float>(dx),
-                                               y + static_cast<float>(dy),
-                                               SDL_Color{0, 0, 0, 255}, labelOutline_);
+                                               y + static_cast<float>(dy), SDL_Color{0, 0, 0, 255},
+                                               labelOutline_);
                     }
-                    labelFont_->layout(lines[k], x, y, SDL_Color{255, 255, 255, 255},
-                                       labelText_);
+                    labelFont_->layout(lines[k], x, y, SDL_Color{255, 255, 255, 255}, labelText_);
                 }
                 ++stats.labelled;
             }

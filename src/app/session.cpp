@@ -385,7 +385,8 @@ void Session::spawnRandom() {
 void Session::changeSpawnMass(int direction) {
     spawn_.changeSize(direction < 0 ? -1 : 1);
     char buf[160];
-    std::snprintf(buf, sizeof buf, "New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
+    std::snprintf(buf, sizeof buf,
+                  "New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
                   spawn_.mass(), spawn_.radius(), spawn_.size);
     notices_.push_back({Notice::Level::Info, buf, true, false});
 }
@@ -548,8 +549,17 @@ void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
     const bool column = view_.plots || view_.speeds || showProfile_;
-    camera_.fit(world_.def().width, world_.def().height, 10.0, in.top, in.bottom,
-                column ? in.panelColumn : 0.0);
+    const double w = world_.def().width, h = world_.def().height, margin = 10.0;
+    double right = in.panelColumn;
+    if (!column) {
+        // A box that the window's height limits leaves width to spare: moved left by up to the
+        // inspector's width, it keeps its size and the inspector (bottom right, on a click)
+        // does not cover it.
+        camera_.fit(w, h, margin, in.top, in.bottom, 0.0);
+        const double spare = camera_.viewportWidth() - camera_.toScreen(w) - 2.0 * margin;
+        right = std::clamp(spare, 0.0, in.inspectorColumn);
+    }
+    camera_.fit(w, h, margin, in.top, in.bottom, right);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",

@@ -46,11 +46,12 @@ struct Notice {
 
 /// Pixels the camera keeps free around the box when it fits it: the HUD above, the messages
 /// below, the panel column at the right while a panel of it (plots, speed histogram, profile) is
-/// on.
+/// on; otherwise as much of the inspector's column as the box can spare without shrinking.
 struct ViewInsets {
     double top = 0.0;
     double bottom = 0.0;
     double panelColumn = 0.0;
+    double inspectorColumn = 0.0;
 };
 
 struct SessionOptions {

@@ -105,9 +105,9 @@ class Trails {
     void rasteriseOne(const World& world, const Camera& camera, std::size_t index);
     /// The polyline through `n` ring positions (xs, ys of `ringLength`, the oldest at
     /// `oldest`) and then the particle `index` now, in `rgb`, fading from tail to head.
-    void rasterisePath(const World& world, const Camera& camera, std::size_t index,
-                       const float* xs, const float* ys, std::size_t ringLength,
-                       std::size_t oldest, std::size_t n, std::uint32_t rgb);
+    void rasterisePath(const World& world, const Camera& camera, std::size_t index, const float* xs,
+                       const float* ys, std::size_t ringLength, std::size_t oldest, std::size_t n,
+                       std::uint32_t rgb);
 
     // Row `slot` of xs_/ys_ holds kLength positions (float metres: a trail is only drawn),
     // head_ the next write position, count_ how many are valid.

@@ -169,8 +169,8 @@ Scene brownian(const BrownianSpec& spec) {
     const double bigRadius = spec.bigRadius, r = spec.lightRadius;
     // The light discs cover `packing` of the area the heavy one leaves.
     const double bigArea = std::numbers::pi * bigRadius * bigRadius;
-    const double side = std::sqrt(static_cast<double>(count) * std::numbers::pi * r * r / spec.packing +
-                                  bigArea);
+    const double side =
+        std::sqrt(static_cast<double>(count) * std::numbers::pi * r * r / spec.packing + bigArea);
     Scene s = boxScene(side, side);
     s.name = "Brownian motion";
     s.description =

@@ -245,7 +245,7 @@ TEST_F(RenderTest, ALabelStaysOnOneSideOfTheWalls) {
     const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, nullptr);
     SDL_RenderPresent(sdl_);
     EXPECT_EQ(s.labelled, 1u);
-    EXPECT_EQ(brightPixels(0, 0, kSize, 47), 0);  // above the wall (2 px thick)
+    EXPECT_EQ(brightPixels(0, 0, kSize, 47), 0);    // above the wall (2 px thick)
     EXPECT_GT(brightPixels(60, 82, 350, 160), 50);  // below the disc
 }
 

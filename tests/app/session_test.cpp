@@ -354,6 +354,30 @@ TEST_F(SessionTest, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
     }
 }
 
+TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
+    // A window wider than the box needs: the box moves left, keeping its size, so that the
+    // inspector (bottom right, when a particle is clicked) does not cover it.
+    SessionOptions o = options();
+    o.insets.inspectorColumn = 240.0;
+    const auto boxAt = [&](double inspector) {
+        o.insets.inspectorColumn = inspector;
+        Session s(makeWorld(defaultScene()), "default", o);
+        s.apply(cmd::Resize{800, 600});
+        return s.camera().boxOnScreen(7.0, 7.0);
+    };
+    const auto centred = boxAt(0.0), moved = boxAt(240.0);
+    EXPECT_NEAR(moved.size.x(), centred.size.x(), 1e-9);  // no smaller
+    EXPECT_LE(moved.topLeft.x() + moved.size.x(), 800.0 - 240.0 + 1e-9);
+    // A window with no width to spare keeps the box as big as it was.
+    o.insets.inspectorColumn = 240.0;
+    Session square(makeWorld(defaultScene()), "default", o);
+    square.apply(cmd::Resize{600, 900});
+    o.insets.inspectorColumn = 0.0;
+    Session plain(makeWorld(defaultScene()), "default", o);
+    plain.apply(cmd::Resize{600, 900});
+    EXPECT_NEAR(square.camera().zoom(), plain.camera().zoom(), 1e-12);
+}
+
 TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
     Session s = session();
     const double before = s.camera().zoom();
