@@ -39,6 +39,7 @@ App::App(const AppOptions& options) : options_(options) {
     // The scene first: a bad file is reported before any window opens.
     World world;
     std::string name, description;
+    std::vector<std::size_t> trails;
     if (options_.benchParticles > 0) {
         world = benchmarkWorld(options_.benchParticles);
         name = "benchmark";
@@ -47,6 +48,7 @@ App::App(const AppOptions& options) : options_(options) {
         world = makeWorld(scene);
         name = scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
         description = scene.description;
+        trails = scene.trails;
     }
     SdlContextOptions so;
     so.width = options_.width;
@@ -64,6 +66,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
     s.sceneDescription = description;
+    s.sceneTrails = trails;
     s.paused = options_.startPaused;
     s.arrows = options_.arrows;
     const SDL_Point out = sdl_->outputSize();

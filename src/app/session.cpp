@@ -51,6 +51,7 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
     sceneDescription_ = options_.sceneDescription;
     setWorld(std::move(world), std::move(sceneName));
+    showSceneTrails(options_.sceneTrails);
 }
 
 void Session::setWorld(World world, std::string name) {
@@ -461,13 +462,7 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
             timeScale_ = 1.0;
             reached_ = 1.0;
         }
-        // A scene that marks particles' trails (the Brownian motion's heavy disc) opens with the
-        // first of them selected and its trail shown. Before any step, storage order is the
-        // scene's order.
-        if (!scene.trails.empty() && scene.trails.front() < world_.size()) {
-            selection_.select(world_.ids()[scene.trails.front()]);
-            view_.trails = TrailMode::Selected;
-        }
+        showSceneTrails(scene.trails);
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)" + speedReset);
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
@@ -477,6 +472,13 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
 
 // ---------------------------------------------------------------------------------------------
 // The edit prompt.
+
+void Session::showSceneTrails(const std::vector<std::size_t>& trails) {
+    // Before any step, storage order is the scene's order.
+    if (trails.empty() || trails.front() >= world_.size()) return;
+    selection_.select(world_.ids()[trails.front()]);
+    view_.trails = TrailMode::Selected;
+}
 
 void Session::openEdit() {
     const auto id = selection_.id();

@@ -58,7 +58,8 @@ struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
     std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
     std::uint32_t seed = 1;                                       ///< random spawns
-    std::string sceneDescription;  ///< the first scene's, kept when it is saved
+    std::string sceneDescription;          ///< the first scene's, kept when it is saved
+    std::vector<std::size_t> sceneTrails;  ///< the first scene's particles with trails shown
     bool paused = false;
     bool arrows = true;
     int viewportWidth = 800;  ///< pixels
@@ -149,6 +150,9 @@ class Session {
     void click(const ReleaseResult& r);
     void deleteHeld();
     void spawnRandom();
+    /// A scene that marks particles' trails opens with the first of them selected and its trail
+    /// shown; `trails` are indices in the scene's order (the world's before any step).
+    void showSceneTrails(const std::vector<std::size_t>& trails);
     void changeSpawnMass(int direction);
     void nextMode();
     void toggleGravity();

@@ -90,6 +90,16 @@ TEST_F(SessionTest, TheBrownianPresetOpensWithItsHeavyDiscsTrailShown) {
     EXPECT_EQ(s.world().get(*s.selection().id()).radius, largest);
 }
 
+TEST_F(SessionTest, TheBrownianPresetGivenAtStartUpShowsItsTrailToo) {
+    const Scene scene = loadScene(findAsset("scenes/08-brownian-motion.json"));
+    SessionOptions o = options();
+    o.sceneTrails = scene.trails;
+    Session s(makeWorld(scene), scene.name, o);
+    EXPECT_EQ(s.view().trails, TrailMode::Selected);
+    ASSERT_TRUE(s.selection().id().has_value());
+    EXPECT_EQ(s.world().get(*s.selection().id()).radius, 0.08);
+}
+
 TEST_F(SessionTest, GravityIsEarthsInTheDefaultScene) {
     Session s = session();
     s.apply(cmd::ToggleGravity{});
