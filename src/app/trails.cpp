@@ -207,7 +207,8 @@ void Trails::rasteriseOne(const World& world, const Camera& camera, std::size_t 
 
 void Trails::rasterisePath(const World& world, const Camera& camera, std::size_t index,
                            const float* xs, const float* ys, std::size_t ringLength,
-                           std::size_t oldest, std::size_t n, std::uint32_t rgb) {
+                           std::size_t oldest, std::size_t n, std::uint32_t rgb, float tailAlpha,
+                           bool bold) {
     const ParticleArrays& p = world.particles();
     // The camera's mapping in floats: a trail is only drawn.
     const Camera::Transform t = camera.transform();
@@ -223,8 +224,14 @@ void Trails::rasterisePath(const World& world, const Camera& camera, std::size_t
         // redrawn pixel by pixel.
         if (k < n && dx * dx + dy * dy < kMinSegment * kMinSegment) continue;
         const float f =
-            kTailAlpha + (1.0f - kTailAlpha) * static_cast<float>(k) / static_cast<float>(n);
-        image_.line(ax, ay, bx, by, (static_cast<std::uint32_t>(255.0f * f) << 24) | rgb);
+            tailAlpha + (1.0f - tailAlpha) * static_cast<float>(k) / static_cast<float>(n);
+        const std::uint32_t argb = (static_cast<std::uint32_t>(255.0f * f) << 24) | rgb;
+        image_.line(ax, ay, bx, by, argb);
+        if (bold) {
+            // The same line one pixel right and one down: two pixels wide in any direction.
+            image_.line(ax + 1.0f, ay, bx + 1.0f, by, argb);
+            image_.line(ax, ay + 1.0f, bx, by + 1.0f, argb);
+        }
         ax = bx;
         ay = by;
     }
@@ -238,14 +245,12 @@ const TrailImage& Trails::rasterise(const World& world, const Camera& camera, Tr
     if (mode == TrailMode::Selected) {
         const auto i = world.indexOf(selected);
         if (i && selected == followed_ && followedCount_ > 0) {
-            // Drawn over the discs (Renderer), so lightened to show over its own disc too.
-            const Color c = world.particles().color[*i];
-            const auto light = [](std::uint8_t v) { return std::uint32_t{v} / 2 + 128; };
-            const std::uint32_t rgb = (light(c.r) << 16) | (light(c.g) << 8) | light(c.b);
+            // Drawn over the discs (Renderer), bold and in the selection ring's yellow, so that
+            // it shows over the crowd and over its own disc.
             rasterisePath(world, camera, *i, followedXs_.data(), followedYs_.data(),
                           kFollowedLength,
                           (followedHead_ + kFollowedLength - followedCount_) % kFollowedLength,
-                          followedCount_, rgb);
+                          followedCount_, 0xffe65au, kFollowedTailAlpha, true);
             count = 1;
         } else if (i && has(selected)) {
             rasteriseOne(world, camera, *i);

@@ -67,6 +67,8 @@ class Trails {
     static constexpr int kSampleFrames = 2;     ///< frames between samples
     static constexpr float kMinSegment = 0.5f;  ///< shorter steps join the next one, pixels
     static constexpr float kTailAlpha = 0.15f;  ///< the oldest step's opacity (the head's is 1)
+    /// The followed trail's: drawn over a crowd, its whole minute must stay visible.
+    static constexpr float kFollowedTailAlpha = 0.45f;
 
     /// Positions kept for the followed particle (the selected one), a minute at 60 frames per
     /// second: a slow particle's wandering, like the Brownian disc's, shows beyond its rim.
@@ -104,10 +106,11 @@ class Trails {
     }
     void rasteriseOne(const World& world, const Camera& camera, std::size_t index);
     /// The polyline through `n` ring positions (xs, ys of `ringLength`, the oldest at
-    /// `oldest`) and then the particle `index` now, in `rgb`, fading from tail to head.
+    /// `oldest`) and then the particle `index` now, in `rgb`, fading from `tailAlpha` at the
+    /// tail to opaque at the head; `bold`: two pixels wide.
     void rasterisePath(const World& world, const Camera& camera, std::size_t index, const float* xs,
                        const float* ys, std::size_t ringLength, std::size_t oldest, std::size_t n,
-                       std::uint32_t rgb);
+                       std::uint32_t rgb, float tailAlpha = kTailAlpha, bool bold = false);
 
     // Row `slot` of xs_/ys_ holds kLength positions (float metres: a trail is only drawn),
     // head_ the next write position, count_ how many are valid.
