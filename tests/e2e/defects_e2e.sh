@@ -26,22 +26,14 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$OUT"
 rm -f "$OUT"/*.png "$OUT"/*.txt "$OUT"/*.log "$OUT"/*.json
 
-for tool in Xvfb xdpyinfo xdotool import convert; do
-    if ! command -v "$tool" >/dev/null; then
-        "$HERE/../../scripts/install-deps.sh" --test
-        break
-    fi
-done
-
 fail() {
     echo "FAIL: $*" >&2
-    for f in stderr.log xvfb.log; do
-        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
-    done
+    show_logs
     echo "(log, screenshots and their text in $OUT)" >&2
     exit 1
 }
 source "$HERE/harness.sh"
+need_x_tools
 
 start_xvfb "$OUT/xvfb.log" 1024x768x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

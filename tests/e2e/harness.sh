@@ -42,6 +42,29 @@ start_xvfb() {
     return 1
 }
 
+# need_x_tools: installs the test tools (scripts/install-deps.sh --test) when one is missing.
+need_x_tools() {
+    local tool
+    for tool in Xvfb xdpyinfo xdotool import convert; do
+        if ! command -v "$tool" >/dev/null; then
+            "$(dirname "${BASH_SOURCE[0]}")/../../scripts/install-deps.sh" --test
+            return
+        fi
+    done
+}
+# show_logs: for a failure, the ends of $OUT's stderr.log and xvfb.log, and whether the program
+# under test still runs.
+show_logs() {
+    local f
+    for f in stderr.log xvfb.log; do
+        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
+    done
+    if [[ -n "${APP_PID:-}" ]] && ! kill -0 "$APP_PID" 2>/dev/null; then
+        echo "(the program is no longer running)" >&2
+    fi
+    return 0
+}
+
 # start_app BIN ARGS... runs the sandbox with its log in $LOG (stderr in $OUT/stderr.log) and
 # waits for its window: sets APP_PID, WID, WX, WY, WIDTH, HEIGHT, and from the logged fitted
 # view ZOOM (px/m), BX, BY (the box's top-left in the window), for sx and sy.

@@ -42,25 +42,14 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$OUT"
 rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
 
-for tool in Xvfb xdpyinfo xdotool import convert; do
-    if ! command -v "$tool" >/dev/null; then
-        "$HERE/../../scripts/install-deps.sh" --test
-        break
-    fi
-done
-
 fail() {
     echo "FAIL: $*" >&2
-    for f in stderr.log xvfb.log; do
-        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
-    done
-    if [[ -n "${APP_PID:-}" ]] && ! kill -0 "$APP_PID" 2>/dev/null; then
-        echo "(the program is no longer running)" >&2
-    fi
+    show_logs
     echo "(log and screenshots in $OUT)" >&2
     exit 1
 }
 source "$HERE/harness.sh"
+need_x_tools
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
