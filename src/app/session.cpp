@@ -554,12 +554,13 @@ void Session::fit() {
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
     double right = in.panelColumn;
     if (!column) {
-        // A box that the window's height limits leaves width to spare: moved left by up to the
-        // inspector's width, it keeps its size and the inspector (bottom right, on a click)
-        // does not cover it.
+        // A box that the window's height limits may leave width to spare: when it leaves the
+        // inspector's whole column, the box moves left, keeps its size, and the inspector
+        // (bottom right, on a click) does not cover it. Less room would only move the box off
+        // centre and still leave it covered.
         camera_.fit(w, h, margin, in.top, in.bottom, 0.0);
         const double spare = camera_.viewportWidth() - camera_.toScreen(w) - 2.0 * margin;
-        right = std::clamp(spare, 0.0, in.inspectorColumn);
+        right = spare >= in.inspectorColumn ? in.inspectorColumn : 0.0;
     }
     camera_.fit(w, h, margin, in.top, in.bottom, right);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
