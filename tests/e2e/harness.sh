@@ -1,7 +1,7 @@
 # Sourced by the end-to-end scripts (sandbox_e2e.sh, defects_e2e.sh,
 # tests/install/install_test.sh), which define fail() themselves: pass(), the ERR trap that
 # names the failing line, the clean-up at exit of the program under test (APP_PID) and of the X
-# server (XVFB_PID), start_xvfb, and for the app's scripts start_app with the helpers that
+# server (XVFB_PID), start_xvfb, and for the app's scripts start_app with the functions that
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
 pass() { echo "ok: $*"; }
 
