@@ -22,6 +22,7 @@
 #include <particle_sandbox/obstacle.hpp>
 
 #include "exact_parabolic_impact.hpp"
+#include "obstacle_geometry.hpp"
 #include "obstacle_time_of_impact.hpp"
 
 namespace psb::exact {
@@ -93,6 +94,29 @@ namespace psb::exact {
     }
     return segmentImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, o.a.x(), o.a.y(), o.b.x(),
                                         o.b.y(), o.radius, horizon);
+}
+
+/// The exact mode's event time of a disc with an obstacle: obstacleImpactTimeAccelerated, except
+/// that a disc touching it now that neither clearly approaches it (its speed towards the core
+/// above kApproachTolerance of its speed) nor is pressed into it by the acceleration (above
+/// kPressTolerance of it) is left alone. A rebound leaves the disc touching, with a normal
+/// speed that is zero up to rounding when e = 0 or the contact is sliding; without the
+/// tolerance its sign would decide whether the disc collides again at the same instant,
+/// forever (pairImpactTime has the same guard).
+[[nodiscard]] inline double obstacleEventTime(double px, double py, double vx, double vy, double ax,
+                                              double ay, double r, const Obstacle& o,
+                                              double horizon) {
+    const double t = obstacleImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, o, horizon);
+    if (t != 0.0) return t;
+    double qx, qy;
+    nearestCorePoint(o, px, py, qx, qy);
+    const double nx = qx - px, ny = qy - py, n2 = nx * nx + ny * ny;  // towards the core
+    const double un = vx * nx + vy * ny, an = ax * nx + ay * ny;
+    const bool approaching =
+        un > 0.0 && un * un > kApproachTolerance * kApproachTolerance * n2 * (vx * vx + vy * vy);
+    const bool pressed =
+        an > 0.0 && an * an > kPressTolerance * kPressTolerance * n2 * (ax * ax + ay * ay);
+    return approaching || pressed ? 0.0 : kNever;
 }
 
 }  // namespace psb::exact

@@ -160,6 +160,7 @@
 #include "cell_list.hpp"
 #include "contact.hpp"
 #include "event_queue.hpp"
+#include "exact_obstacle_cells.hpp"
 
 namespace psb::exact {
 
@@ -241,14 +242,14 @@ class ExactStepper {
 
     /// Events of each kind processed by the last step.
     struct EventStats {
-        std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0;
+        std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0, obstacles = 0;
         std::uint64_t sleeps = 0, wakes = 0;  ///< particles put to sleep / woken (gravity only)
         bool budgetExhausted = false;
     };
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
 
   private:
-    enum class Kind : std::uint8_t { None, Pair, Wall };
+    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle };
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
@@ -272,7 +273,7 @@ class ExactStepper {
     };
     struct Event {
         double time;
-        std::uint32_t partner;       // pair: the other particle
+        std::uint32_t partner;       // pair: the other particle; obstacle: its index
         std::uint32_t partnerCount;  // pair: its counter when predicted
         Kind kind;
         std::int8_t side;  // wall: 0..3 (left, right, top, bottom)
@@ -353,6 +354,13 @@ class ExactStepper {
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleCell(std::uint32_t i, double now);
+    // Fixed obstacles (exact_obstacle_events.cpp): i's earliest impact with an obstacle of its
+    // cell's list, if earlier than best; the rebound; the supports obstacles give a resting
+    // particle (appended to nx, ny, cone up to kMax, returns the new count).
+    void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
+    void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
+    int obstacleSupports(std::uint32_t i, double* nx, double* ny, double* cone, int count,
+                         int max) const;
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
@@ -382,6 +390,7 @@ class ExactStepper {
     CellList cells_;                    // level 0's members; the fine grid of every cell move
     double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
     std::vector<Level> upper_;          // levels 1, 2, ...
+    ObstacleCells obstacles_;           // the fixed obstacles each fine cell may reach
     std::uint8_t levelCount_ = 1;
     // reach_[a · levelCount_ + b]: how many fine cells apart (per axis) a particle of level a
     // and one of level b may be and still touch; 1 for two of level 0.
