@@ -112,6 +112,15 @@
 // Walls off: no wall events, particles fly free; the cell grid folds onto itself
 // (cell_list.hpp) so space is unbounded.
 //
+// Obstacles (fixed pegs and segments; exact_obstacle_events.cpp). A third kind of collision
+// event, kept in a particle's collision key like a wall's and replaced like it at every change
+// of course. Each fine cell lists the obstacles a particle in it may reach before its next cell
+// move (exact_obstacle_cells.hpp); a prediction tests its cell's list, a cell move the new
+// cell's. Times of impact: exact_obstacle_impact.hpp (quadratics; under gravity the quartic
+// for pegs and caps, a quadratic across a flat side). Rebound: the walls' law along the normal
+// from the nearest core point. Under gravity obstacles are supports for resting (below), a
+// single one only within the friction angle, so a ball slides down a slope steeper than that.
+//
 // Gravity. Between events a free particle flies on a parabola, r(t) = r₀ + v₀t + ½gt², and
 // lazy advance stays as it is (a particle's stored state is the one at its last velocity
 // change). Two free particles fall alike, so their relative motion is a straight line and their
@@ -129,8 +138,9 @@
 //     still slides along it;
 //   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
 //     acceleration, no cell events) if the supports within restGap_ (walls, sleepers, held
-//     particles at rest) hold it: one whose contact normal is within kRestSlope of gravity, or
-//     two on either side of it, each normal's cone widened by the friction angle atan(mu);
+//     particles at rest, obstacles) hold it: one whose contact normal is within kRestSlope of
+//     gravity (an obstacle: within atan(mu)), or two on either side of it, each normal's cone
+//     widened by the friction angle atan(mu);
 //     a particle woken less than kContactDuration ago does not fall asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
