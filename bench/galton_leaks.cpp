@@ -8,12 +8,14 @@
 // (World's public state) and tests every ball against every obstacle with geometry of its own,
 // so that it checks the engine's obstacle stage rather than repeating it.
 //
-//   build/release/bench/galton-leaks [--duration S] [--mode discrete|substep|exact] [dt ...]
+//   build/release/bench/galton-leaks [--duration S] [--mode discrete|substep|exact] [--bins]
+//                                    [dt ...]
 //
 // Prints a Markdown table: dt, steps, leaking balls, leak events, balls in the bins at the end,
 // the deepest overlap between two balls, wall seconds. Defaults: 6 s, the discrete mode and
 // dt = 0.001 (the scene's) to 0.016 s. In the exact mode dt changes only how often positions
-// are checked (the trajectory does not depend on it); its default there is 0.01 s.
+// are checked (the trajectory does not depend on it); its default there is 0.01 s. --bins also
+// prints the count in each bin at the end and the standard deviation of the binned balls' x.
 
 #include <algorithm>
 #include <chrono>
@@ -53,6 +55,8 @@ bool crossesCore(const psb::Obstacle& o, double x0, double y0, double x1, double
 
 struct Result {
     std::uint64_t steps = 0, leakers = 0, events = 0, inBins = 0;
+    std::vector<int> bins;  // balls between consecutive bin walls (and the box walls), left first
+    double spread = 0.0;    // standard deviation of the binned balls' x, metres
     double seconds = 0.0, maxOverlap = 0.0;
 };
 
@@ -106,8 +110,25 @@ Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double durati
     r.steps = steps;
     r.seconds = stepSeconds;
     r.maxOverlap = w.counters().maxOverlap;
-    for (std::size_t i = 0; i < ids.size(); ++i)
-        r.inBins += py[i] > binsTop;
+    std::vector<double> walls{0.0};
+    for (const psb::Obstacle& o : obstacles)
+        if (!o.isPeg() && o.a.x() == o.b.x()) walls.push_back(o.a.x());
+    walls.push_back(w.def().width);
+    std::sort(walls.begin(), walls.end());
+    r.bins.assign(walls.size() - 1, 0);
+    double sum = 0.0, sum2 = 0.0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (!(py[i] > binsTop)) continue;
+        ++r.inBins;
+        const auto k = std::upper_bound(walls.begin(), walls.end(), px[i]) - walls.begin() - 1;
+        ++r.bins[static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(k, 0, r.bins.size() - 1))];
+        sum += px[i];
+        sum2 += px[i] * px[i];
+    }
+    if (r.inBins > 1) {
+        const double n = static_cast<double>(r.inBins);
+        r.spread = std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1.0)));
+    }
     return r;
 }
 
@@ -116,11 +137,14 @@ Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double durati
 int main(int argc, char** argv) {
     double duration = 6.0;
     psb::StepMode mode = psb::StepMode::Discrete;
+    bool bins = false;
     std::vector<double> dts;
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--duration" && k + 1 < argc) {
             duration = std::atof(argv[++k]);
+        } else if (a == "--bins") {
+            bins = true;
         } else if (a == "--mode" && k + 1 < argc) {
             const std::optional<psb::StepMode> m = psb::parseStepMode(argv[++k]);
             if (!m) {
@@ -149,6 +173,12 @@ int main(int argc, char** argv) {
                     static_cast<unsigned long long>(r.events),
                     static_cast<unsigned long long>(r.inBins), r.maxOverlap * 1e3, r.seconds);
         std::fflush(stdout);
+        if (bins) {
+            std::printf("bins (left to right):");
+            for (const int b : r.bins)
+                std::printf(" %d", b);
+            std::printf("; spread of x %.1f mm\n", r.spread * 1e3);
+        }
     }
     return 0;
 }
