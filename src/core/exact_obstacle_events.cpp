@@ -35,7 +35,6 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
     nearestCorePoint(o, a.x, a.y, qx, qy);
     double nx = a.x - qx, ny = a.y - qy;
     const double d = std::sqrt(nx * nx + ny * ny);
-    maxOverlap_ = std::max(maxOverlap_, a.r + o.radius - d);
     if (d > 0.0 && std::isfinite(nx / d) && std::isfinite(ny / d)) {
         nx /= d;
         ny /= d;
