@@ -69,6 +69,24 @@ TEST(ExactObstacles, GlancingHitOffASegmentSideAndCap) {
     EXPECT_NEAR(cap.get(c).position.x(), 8.7, 1e-12);
 }
 
+TEST(ExactObstacles, WithoutWallsObstaclesAreFoundWhereverTheGridFolds) {
+    // Walls off: the cell grid folds onto itself, so a cell's obstacles are looked up for the
+    // place the particle is. A particle far outside the box flies past its images; one aimed at
+    // the peg bounces off it.
+    World w(WorldDef{.width = 10.0, .height = 10.0, .walls = false}, exactMode());
+    w.addObstacle(Obstacle::peg({5.0, 5.0}, 1.0));
+    w.addObstacle(Obstacle::segment({1.0, 9.0}, {9.0, 9.0}, 0.2));
+    const ParticleId hit = w.add({.position = {2.0, 5.0}, .velocity = {1.0, 0.0}, .radius = 0.5});
+    const ParticleId far = w.add({.position = {-95.0, 5.0}, .velocity = {0.0, 1.0}, .radius = 0.5});
+    const ParticleId down =
+        w.add({.position = {5.0, 12.0}, .velocity = {0.0, -1.0}, .radius = 0.5});
+    w.step(3.0);
+    EXPECT_NEAR(w.get(hit).position.x(), 2.0, 1e-12);   // back after 1.5 s out and 1.5 s in
+    EXPECT_NEAR(w.get(far).position.y(), 8.0, 1e-12);   // untouched by the folded images
+    EXPECT_NEAR(w.get(down).velocity.y(), 1.0, 1e-12);  // off the segment's underside at 2.4 s
+    EXPECT_EQ(w.counters().obstacleCollisions, 2u);
+}
+
 /// A dilute gas (e = 1, no gravity) among pegs and slanted walls.
 World gasAmongObstacles(unsigned seed, int count) {
     World w(WorldDef{.width = 40.0, .height = 40.0}, exactMode());
