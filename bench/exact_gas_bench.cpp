@@ -97,7 +97,7 @@ void BM_ExactMixedSizes(benchmark::State& state) {
     const auto r = static_cast<double>(state.range(0));
     psb::Scene scene;
     if (r > 0.0) {
-        scene = psb::scenes::brownian(4000, r, r * r, 0.2, 3);
+        scene = psb::scenes::brownian({.count = 4000, .bigRadius = r, .bigMass = r * r, .seed = 3});
     } else {
         scene = psb::scenes::gas(
             {.count = 4000, .radius = 1.0, .maxRadius = -r, .packing = 0.2, .seed = 3});

@@ -8,17 +8,21 @@
 // (World's public state) and tests every ball against every obstacle with geometry of its own,
 // so that it checks the engine's obstacle stage rather than repeating it.
 //
-//   build/release/bench/galton-leaks [--duration S] [dt ...]
+//   build/release/bench/galton-leaks [--duration S] [--mode discrete|substep|exact] [--bins]
+//                                    [dt ...]
 //
 // Prints a Markdown table: dt, steps, leaking balls, leak events, balls in the bins at the end,
-// the deepest overlap between two balls, wall seconds. Defaults: 6 s and dt = 0.001 (the
-// scene's) to 0.016 s.
+// the deepest overlap between two balls, wall seconds. Defaults: 6 s, the discrete mode and
+// dt = 0.001 (the scene's) to 0.016 s. In the exact mode dt changes only how often positions
+// are checked (the trajectory does not depend on it); its default there is 0.01 s. --bins also
+// prints the count in each bin at the end and the standard deviation of the binned balls' x.
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -51,12 +55,15 @@ bool crossesCore(const psb::Obstacle& o, double x0, double y0, double x1, double
 
 struct Result {
     std::uint64_t steps = 0, leakers = 0, events = 0, inBins = 0;
+    std::vector<int> bins;  // balls between consecutive bin walls (and the box walls), left first
+    double spread = 0.0;    // standard deviation of the binned balls' x, metres
     double seconds = 0.0, maxOverlap = 0.0;
 };
 
-Result run(const psb::Scene& scene, double dt, double duration) {
+Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double duration) {
     psb::Scene s = scene;
     s.solver.dt = dt;
+    s.solver.mode = mode;
     psb::World w = psb::makeWorld(s);
     w.setThreads(1);
     const psb::Obstacles& obstacles = w.obstacles();
@@ -103,8 +110,25 @@ Result run(const psb::Scene& scene, double dt, double duration) {
     r.steps = steps;
     r.seconds = stepSeconds;
     r.maxOverlap = w.counters().maxOverlap;
-    for (std::size_t i = 0; i < ids.size(); ++i)
-        r.inBins += py[i] > binsTop;
+    std::vector<double> walls{0.0};
+    for (const psb::Obstacle& o : obstacles)
+        if (!o.isPeg() && o.a.x() == o.b.x()) walls.push_back(o.a.x());
+    walls.push_back(w.def().width);
+    std::sort(walls.begin(), walls.end());
+    r.bins.assign(walls.size() - 1, 0);
+    double sum = 0.0, sum2 = 0.0;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+        if (!(py[i] > binsTop)) continue;
+        ++r.inBins;
+        const auto k = std::upper_bound(walls.begin(), walls.end(), px[i]) - walls.begin() - 1;
+        ++r.bins[static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(k, 0, r.bins.size() - 1))];
+        sum += px[i];
+        sum2 += px[i] * px[i];
+    }
+    if (r.inBins > 1) {
+        const double n = static_cast<double>(r.inBins);
+        r.spread = std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1.0)));
+    }
     return r;
 }
 
@@ -112,29 +136,49 @@ Result run(const psb::Scene& scene, double dt, double duration) {
 
 int main(int argc, char** argv) {
     double duration = 6.0;
+    psb::StepMode mode = psb::StepMode::Discrete;
+    bool bins = false;
     std::vector<double> dts;
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--duration" && k + 1 < argc) {
             duration = std::atof(argv[++k]);
+        } else if (a == "--bins") {
+            bins = true;
+        } else if (a == "--mode" && k + 1 < argc) {
+            const std::optional<psb::StepMode> m = psb::parseStepMode(argv[++k]);
+            if (!m) {
+                std::fprintf(stderr, "galton-leaks: --mode: unknown mode '%s'\n", argv[k]);
+                return 2;
+            }
+            mode = *m;
         } else {
             dts.push_back(std::atof(argv[k]));
         }
     }
-    if (dts.empty()) dts = {0.001, 0.002, 0.004, 0.008, 0.016};
+    if (dts.empty()) {
+        dts = mode == psb::StepMode::Exact ? std::vector<double>{0.01}
+                                           : std::vector<double>{0.001, 0.002, 0.004, 0.008, 0.016};
+    }
     const psb::Scene scene =
         psb::loadScene(std::string(PSB_SOURCE_DIR) + "/assets/scenes/09-galton-board.json");
     std::printf(
         "| dt (ms) | steps | balls that leaked | leak events | balls in the bins | max "
         "ball overlap (mm) | step wall s |\n|---:|---:|---:|---:|---:|---:|---:|\n");
     for (const double dt : dts) {
-        const Result r = run(scene, dt, duration);
+        const Result r = run(scene, mode, dt, duration);
         std::printf("| %g | %llu | %llu | %llu | %llu | %.2f | %.2f |\n", dt * 1e3,
                     static_cast<unsigned long long>(r.steps),
                     static_cast<unsigned long long>(r.leakers),
                     static_cast<unsigned long long>(r.events),
                     static_cast<unsigned long long>(r.inBins), r.maxOverlap * 1e3, r.seconds);
         std::fflush(stdout);
+        if (bins) {
+            std::printf("bins (left to right):");
+            for (const int b : r.bins)
+                std::printf(" %d", b);
+            std::printf("; spread of x %.1f mm\n", r.spread * 1e3);
+        }
     }
     return 0;
 }

@@ -13,11 +13,23 @@
 //
 // The bound: obstacles/1000/n:10000 at most 1.5 times the time per particle-step of
 // obstacles/0/n:10000.
+//
+// The exact mode: obstacles_exact/<count>/n:<N>, a dilute gas (packing 0.1, radius 1 m, e = 1,
+// no overlaps, as exact_gas_bench) with the same obstacles, particles that would overlap one
+// left out of both variants (so both have the same particles). Each iteration runs 60 frames of
+// 1/60 s, nothing read between them (as particle-sim steps); warm-up not timed. Counters:
+// ns_per_collision = CPU time per collision of any kind (pair, wall or obstacle: each is one
+// velocity change resolved), events_per_collision, obstacle_share (obstacle collisions / all).
+// The bound: obstacles_exact/1000/n:10000 at most 1.5 times the ns_per_collision of
+// obstacles_exact/0/n:10000.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
+
+#include <particle_sandbox/scene_builders.hpp>
 
 #include "gas_scene.hpp"
 #include "run_benchmarks.hpp"
@@ -59,6 +71,40 @@ void obstacles(benchmark::State& state, std::size_t count, std::size_t n) {
         static_cast<double>(w.counters().obstacleCollisions) / steps;
 }
 
+/// Distance from (x, y) to the obstacle's surface (negative inside).
+double surfaceDistance(const Obstacle& o, const Vec2& p) {
+    const Vec2 e = o.b - o.a;
+    const double len2 = e.squaredNorm();
+    const double t = len2 > 0.0 ? std::clamp((p - o.a).dot(e) / len2, 0.0, 1.0) : 0.0;
+    return (p - (o.a + t * e)).norm() - o.radius;
+}
+
+void obstaclesExact(benchmark::State& state, std::size_t count, std::size_t n) {
+    Scene s = scenes::gas({.count = n, .radius = 1.0, .packing = 0.1, .seed = 42});
+    s.solver.mode = StepMode::Exact;
+    const Obstacles all = randomObstacles(1000, s.world.width, 11);
+    std::erase_if(s.particles, [&](const ParticleDef& p) {
+        for (const Obstacle& o : all)
+            if (surfaceDistance(o, p.position) <= p.radius) return true;
+        return false;
+    });
+    World w = makeWorld(s);
+    w.setObstacles(Obstacles(all.begin(), all.begin() + static_cast<std::ptrdiff_t>(count)));
+    w.step(5.0);  // build + relax: not timed
+    w.resetCounters();
+    for (auto _ : state) {
+        for (int f = 0; f < 60; ++f)
+            w.step(1.0 / 60.0);
+    }
+    const StepCounters& c = w.counters();
+    const double collisions =
+        static_cast<double>(c.collisions + c.wallCollisions + c.obstacleCollisions);
+    state.counters["ns_per_collision"] = benchmark::Counter(
+        collisions * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.counters["events_per_collision"] = static_cast<double>(c.events) / collisions;
+    state.counters["obstacle_share"] = static_cast<double>(c.obstacleCollisions) / collisions;
+}
+
 void registerAll() {
     for (const std::size_t n : {10000, 100000}) {
         for (const std::size_t count : {0, 1000}) {
@@ -68,6 +114,11 @@ void registerAll() {
                 ->UseRealTime()
                 ->Unit(benchmark::kMillisecond);
         }
+    }
+    for (const std::size_t count : {0, 1000}) {
+        const std::string name = "obstacles_exact/" + std::to_string(count) + "/n:10000";
+        benchmark::RegisterBenchmark(name.c_str(), obstaclesExact, count, std::size_t{10000})
+            ->Unit(benchmark::kMillisecond);
     }
 }
 

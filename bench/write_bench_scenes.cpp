@@ -31,8 +31,10 @@ int main(int argc, char** argv) {
     };
     write(psb::scenes::gas({.count = 4000, .radius = 1.0, .packing = 0.2, .seed = 3}),
           "mixed-none");
-    write(psb::scenes::brownian(4000, 10.0, 100.0, 0.2, 3), "mixed-big10");
-    write(psb::scenes::brownian(4000, 30.0, 900.0, 0.2, 3), "mixed-big30");
+    write(psb::scenes::brownian({.count = 4000, .bigRadius = 10.0, .bigMass = 100.0, .seed = 3}),
+          "mixed-big10");
+    write(psb::scenes::brownian({.count = 4000, .bigRadius = 30.0, .bigMass = 900.0, .seed = 3}),
+          "mixed-big30");
     write(psb::scenes::gas(
               {.count = 4000, .radius = 1.0, .maxRadius = 10.0, .packing = 0.2, .seed = 3}),
           "mixed-1to10");

@@ -33,11 +33,23 @@ struct GasSpec {
 /// a non-positive radius or mass, a packing outside (0, 0.5], or discs that cannot be placed.
 [[nodiscard]] Scene gas(const GasSpec& spec);
 
-/// Brownian motion: a gas of `count` discs of radius 1 m and 1 kg at packing `packing` around
-/// one heavy disc of `bigRadius` and `bigMass` at the centre, at rest; the same temperature
-/// for all (kT = 1 J). The heavy disc is particle 0 (its trail is the scene's point).
-[[nodiscard]] Scene brownian(std::size_t count = 2000, double bigRadius = 10.0,
-                             double bigMass = 100.0, double packing = 0.2, std::uint64_t seed = 7);
+/// Brownian motion: a gas of `count` light discs at packing `packing` around one heavy disc at
+/// the centre, at rest; the same temperature for all. The heavy disc is particle 0 (its trail
+/// is the scene's point).
+struct BrownianSpec {
+    std::size_t count = 2000;
+    double lightRadius = 1.0;  ///< metres
+    double lightMass = 1.0;    ///< kilograms
+    double bigRadius = 10.0;   ///< metres
+    double bigMass = 100.0;    ///< kilograms
+    double packing = 0.2;      ///< fraction of the area the heavy disc leaves, in (0, 0.5]
+    double temperature = 1.0;  ///< kT, joules: each velocity component ~ N(0, kT / m)
+    std::uint64_t seed = 7;
+};
+
+/// Throws InvalidArgument for a count of 0, a non-positive radius, mass or temperature, or a
+/// packing outside (0, 0.5].
+[[nodiscard]] Scene brownian(const BrownianSpec& spec);
 
 /// A hexagonal lattice of `cols` × `rows` discs of radius `radius` at packing `fraction`, in
 /// a box of exactly its size, velocity components N(0, 1) m/s drawn with std::mt19937_64 (a

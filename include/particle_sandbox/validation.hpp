@@ -17,8 +17,8 @@ struct SettingProblem {
                                ///< "friction", "dt", "substeps", "mode", "broadphase" or
                                ///< "obstacles"
     std::string message;       ///< what is wrong with it, e.g. "must be finite and > 0 (got -1)"
-    /// For a value refused only in combination with another setting, that setting's name (a
-    /// world with obstacles in the exact mode names "mode"); otherwise empty.
+    /// For a value refused only in combination with another setting, that setting's name (the
+    /// setting that refuses it); otherwise empty.
     std::string_view because;
 };
 

@@ -25,16 +25,6 @@ std::string modeName(const SolverSettings& solver) {
     return name;
 }
 
-namespace {
-
-/// A short reason for the screen from the world's message.
-std::string shortReason(const std::string& what) {
-    if (what.find("obstacles") != std::string::npos) return "it has no obstacles yet";
-    return "the world refused it";
-}
-
-}  // namespace
-
 double monitoredEnergy(const World& world) {
     return world.def().gravity == Vec2::Zero() ? kineticEnergy(world) : mechanicalEnergy(world);
 }
@@ -52,7 +42,7 @@ ModeSwitch switchToNextMode(World& world) {
         } catch (const InvalidArgument& e) {
             const std::string name(toString(m));
             r.skipped += (r.skipped.empty() ? "" : ", ") + name;
-            reasons += (reasons.empty() ? "" : "; ") + name + " skipped: " + shortReason(e.what());
+            reasons += (reasons.empty() ? "" : "; ") + name + " skipped: the world refused it";
             r.detail += (r.detail.empty() ? "" : " | ") + name + ": " + e.what();
             continue;
         }

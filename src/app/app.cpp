@@ -5,14 +5,17 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <particle_sandbox/atomic_file.hpp>
 #include <particle_sandbox/scene.hpp>
 
 #include "assets.hpp"
 #include "benchmark_scene.hpp"
 #include "clock.hpp"
 #include "hud.hpp"
+#include "overlay.hpp"
 #include "panel_layout.hpp"
 #include "scene_io.hpp"
+#include "screen_text.hpp"
 #include "screenshot.hpp"
 
 namespace psb::app {
@@ -35,7 +38,8 @@ void logLine(const std::string& line) {
 App::App(const AppOptions& options) : options_(options) {
     // The scene first: a bad file is reported before any window opens.
     World world;
-    std::string name;
+    std::string name, description;
+    std::vector<std::size_t> trails;
     if (options_.benchParticles > 0) {
         world = benchmarkWorld(options_.benchParticles);
         name = "benchmark";
@@ -43,6 +47,8 @@ App::App(const AppOptions& options) : options_(options) {
         const Scene scene = psb::app::openScene(options_.scene);
         world = makeWorld(scene);
         name = scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
+        description = scene.description;
+        trails = scene.trails;
     }
     SdlContextOptions so;
     so.width = options_.width;
@@ -59,6 +65,8 @@ App::App(const AppOptions& options) : options_(options) {
     s.presets = presetScenes();
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
+    s.sceneDescription = description;
+    s.sceneTrails = trails;
     s.paused = options_.startPaused;
     s.arrows = options_.arrows;
     const SDL_Point out = sdl_->outputSize();
@@ -71,6 +79,10 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
     s.insets.bottom = static_cast<double>(kShownMessages) * lh + 4.0 + kPanelMargin;
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
+    // The inspector with long numbers in its widest line, and the margin.
+    s.insets.inspectorColumn =
+        textBoxSize(sdl_->hudFont(), {"momentum  [-123.45, -123.45] kg m/s"}).x +
+        2.0 * kPanelMargin;
     session_.emplace(std::move(world), std::move(name), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});
@@ -186,9 +198,11 @@ void App::frame(double realSeconds) {
     render();
 }
 
-void App::writeScreenshot() {
+void App::writeScreenshot(const DrawStats& drawn) {
     try {
         lastScreenshot_ = saveScreenshot(sdl_->renderer(), options_.screenshotDir);
+        std::filesystem::path text = *lastScreenshot_;
+        writeFileAtomically(text.replace_extension(".txt"), screenText(lastFrame_, drawn));
         std::error_code ec;
         const auto shown = std::filesystem::absolute(*lastScreenshot_, ec).lexically_normal();
         logLine("[I] Saved screenshot " + lastScreenshot_->string());
@@ -208,7 +222,7 @@ void App::render() {
     const DrawStats drawn = draw_->draw(lastFrame_);
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
-    if (session_->takeScreenshotRequest()) writeScreenshot();
+    if (session_->takeScreenshotRequest()) writeScreenshot(drawn);
     sdl_->setTitle(lastFrame_.title);
     sdl_->present();
     stats_.lastDrawMs = msSince(t0);

@@ -109,7 +109,8 @@ class App {
     void render();
     /// Logs and shows what the session said.
     void flushNotices();
-    void writeScreenshot();
+    /// The window as NAME.png and the text it shows as NAME.txt (screen_text.hpp).
+    void writeScreenshot(const DrawStats& drawn);
     [[nodiscard]] double now() const;
 
     AppOptions options_;

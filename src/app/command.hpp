@@ -88,6 +88,20 @@ struct Reset {};
 struct OpenPreset {
     int index = -1;
 };  ///< by position in the preset list; -1: the next one
+
+/// The keys that open presets by number: 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to
+/// the 19th (Shift+0 the tenth too). `digit` 0..9; returns the preset's index.
+[[nodiscard]] constexpr int presetForDigit(int digit, bool shift) {
+    if (digit == 0) return 9;
+    return shift ? 10 + digit - 1 : digit - 1;
+}
+/// The key that opens preset `index` ("7", "0", "Shift+3"); empty when no key does.
+[[nodiscard]] inline std::string presetKey(int index) {
+    if (index >= 0 && index < 9) return std::to_string(index + 1);
+    if (index == 9) return "0";
+    if (index >= 10 && index < 19) return "Shift+" + std::to_string(index - 9);
+    return {};
+}
 struct OpenFile {
     std::filesystem::path file;
 };

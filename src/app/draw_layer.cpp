@@ -18,6 +18,7 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
         trails_.reset();
         trailsGeneration_ = frame.sceneGeneration;
     }
+    if (frame.view.trails == TrailMode::Selected) trails_.follow(frame.trailParticle);
     if (frame.view.trails != TrailMode::Off) trails_.update(world);
 
     RenderAvoid avoid;

@@ -25,7 +25,7 @@ HudData hudData(const Session& session, const FrameStats& stats) {
     hud.particles = world.size();
     hud.kineticEnergy = session.observables().kineticEnergy;
     hud.momentum = session.observables().momentum;
-    hud.spawnMass = session.spawn().mass;
+    hud.spawnMass = session.spawn().mass();
     hud.spawnRadius = session.spawn().radius();
     hud.arrowSeconds = session.view().arrows ? session.view().arrowSeconds : 0.0;
     hud.paused = session.paused();

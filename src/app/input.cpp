@@ -92,6 +92,7 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
             return {cmd::OpenEdit{}};
         case SDLK_p:
             return {cmd::OpenPreset{-1}};
+        case SDLK_0:
         case SDLK_1:
         case SDLK_2:
         case SDLK_3:
@@ -101,7 +102,7 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
         case SDLK_7:
         case SDLK_8:
         case SDLK_9:
-            return {cmd::OpenPreset{static_cast<int>(sym - SDLK_1)}};
+            return {cmd::OpenPreset{cmd::presetForDigit(static_cast<int>(sym - SDLK_0), shift)}};
         case SDLK_LEFTBRACKET:
             return {cmd::ChangeSpawnMass{-1}};
         case SDLK_RIGHTBRACKET:

@@ -8,8 +8,10 @@
 
 namespace psb::app {
 
-void SpawnSettings::changeMass(double delta) {
-    mass = std::clamp(mass + delta, kMinMass, kMaxMass);
+void SpawnSettings::changeSize(int steps) {
+    // Whole tenths, so that ten presses up and ten down come back to exactly where they began.
+    const double tenths = std::round(size / kSizeStep) + steps;
+    size = std::clamp(tenths * kSizeStep, kMinSize, kMaxSize);
 }
 
 namespace {
@@ -90,17 +92,24 @@ std::optional<Vec2> findFreeSpot(const World& world, const Vec2& desired, double
     return std::nullopt;
 }
 
-double spawnLengthScale(const World& world) {
+namespace {
+
+/// The median of `values`, or `fallback` when there are none or it is not a positive number.
+double medianOr(std::vector<double> values, double fallback) {
+    if (values.empty()) return fallback;
+    const auto mid = values.begin() + static_cast<std::ptrdiff_t>(values.size() / 2);
+    std::nth_element(values.begin(), mid, values.end());
+    return *mid > 0.0 && std::isfinite(*mid) ? *mid : fallback;
+}
+
+}  // namespace
+
+void followScene(SpawnSettings& spawn, const World& world) {
     const ParticleArrays& p = world.particles();
     const WorldDef& d = world.def();
-    const double boxScale = std::min(d.width, d.height) / 700.0;
-    if (p.size() == 0) return boxScale;
-    std::vector<double> radii(p.radius.begin(), p.radius.end());
-    const auto mid = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
-    std::nth_element(radii.begin(), mid, radii.end());
-    const double median = *mid;
-    // 10 kg at 2.5 length units per kg: 25 units.
-    return median > 0.0 && std::isfinite(median) ? median / 25.0 : boxScale;
+    spawn.typicalMass = medianOr({p.mass.begin(), p.mass.end()}, 10.0);
+    spawn.typicalRadius =
+        medianOr({p.radius.begin(), p.radius.end()}, 25.0 * std::min(d.width, d.height) / 700.0);
 }
 
 double maxLaunchSpeed(const WorldDef& def) {
@@ -226,11 +235,11 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
             ParticleDef def;
             def.position = *spot;
             def.velocity = launched.velocity;
-            def.mass = spawn.mass;
+            def.mass = spawn.mass();
             def.radius = spawn.radius();
-            // A colour that depends on the mass, light enough to read on black.
-            const double t = (spawn.mass - SpawnSettings::kMinMass) /
-                             (SpawnSettings::kMaxMass - SpawnSettings::kMinMass);
+            // A colour that depends on the size, light enough to read on black.
+            const double t = (spawn.size - SpawnSettings::kMinSize) /
+                             (SpawnSettings::kMaxSize - SpawnSettings::kMinSize);
             def.color = {static_cast<std::uint8_t>(120 + 135 * t), 200,
                          static_cast<std::uint8_t>(255 - 135 * t)};
             result.kind = ReleaseResult::Kind::Launched;

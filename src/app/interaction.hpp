@@ -36,24 +36,29 @@
 
 namespace psb::app {
 
-/// What a newly launched particle is made of; the HUD shows it and keys change it.
+/// What a newly launched particle is made of; the HUD shows it and keys change it. Its mass
+/// and radius follow the scene: `size` times the scene's typical particle (the median mass and
+/// the median radius), so a launch into a Galton board is a grain and into the default scene a
+/// ball of about 10 kg. `[` and `]` change `size` in steps of a tenth, from a tenth to four
+/// times (the original's 1..40 kg around 10 kg; radius and mass grow together, as in the
+/// original's 2.5 length units per kg).
 struct SpawnSettings {
-    static constexpr double kMinMass = 1.0;   ///< kg
-    static constexpr double kMaxMass = 40.0;  ///< kg
-    double mass = 10.0;                       ///< kg
-    /// Lengths relative to the original's 700 m box: a scene's smaller box side / 700 m, so a
-    /// billiard table gets billiard-sized particles.
-    double lengthScale = 1.0;
-    /// The original's rule, radius = 2.5 metres per kilogram of mass, times lengthScale.
-    [[nodiscard]] double radius() const { return 2.5 * mass * lengthScale; }
-    void changeMass(double delta);
+    static constexpr double kMinSize = 0.1;
+    static constexpr double kMaxSize = 4.0;
+    static constexpr double kSizeStep = 0.1;
+    double typicalMass = 10.0;    ///< kg
+    double typicalRadius = 25.0;  ///< metres
+    double size = 1.0;            ///< times the typical particle
+    [[nodiscard]] double mass() const { return size * typicalMass; }
+    [[nodiscard]] double radius() const { return size * typicalRadius; }
+    /// `steps` tenths bigger (negative: smaller), kept in [kMinSize, kMaxSize].
+    void changeSize(int steps);
 };
 
-/// The length scale of new particles in `world` (see SpawnSettings::lengthScale): a 10 kg
-/// particle gets the median radius of the world's particles, so spawns and launches fit dense
-/// scenes and tiny ones; in an empty world, the smaller box side / 700 m (the original's box at
-/// 1 px = 1 m, so a 7 m box gives the original's particles at 1 px = 1 cm).
-[[nodiscard]] double spawnLengthScale(const World& world);
+/// The typical particle of `world` (see SpawnSettings): the median mass and the median radius
+/// of its particles; in an empty world 10 kg and 25 m per 700 m of the smaller box side (the
+/// original's particle, so a 7 m box gives the original's particles at 1 px = 1 cm).
+void followScene(SpawnSettings& spawn, const World& world);
 
 /// Flings and launches faster than this many box widths (the larger side) per second are cut to
 /// it: faster is a slip of the hand, and would cross the box in a handful of steps.

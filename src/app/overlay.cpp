@@ -18,8 +18,9 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout) {
     GeometryBatch boxes, text;
     const float lh = static_cast<float>(font.lineHeight());
+    // Dark enough that arrows and discs under a panel do not break up its text.
     const auto panel = [&](const std::vector<std::string>& ls, const SDL_Rect& box,
-                           Uint8 alpha = 150) {
+                           Uint8 alpha = 215) {
         if (box.w <= 0 || ls.empty()) return;
         boxes.quad(static_cast<float>(box.x), static_cast<float>(box.y),
                    static_cast<float>(box.x + box.w), static_cast<float>(box.y + box.h),

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "obstacle_drawing.hpp"
 #include "text.hpp"
@@ -120,7 +121,9 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         batchObstacles(world, camera, obstacles_);
         obstacles_.draw(renderer_, circle_);
     }
-    if (trails != nullptr && options.trails != TrailMode::Off) {
+    // Every particle's trail goes under the discs; the selected one's over them, so that the
+    // gas around it cannot hide it.
+    if (trails != nullptr && options.trails == TrailMode::All) {
         drawImage(trails->rasterise(world, camera, options.trails, selected), trailLayer_);
     }
 
@@ -130,6 +133,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     arrows_.clear();
     labelBoxes_.clear();
     labelText_.clear();
+    labelOutline_.clear();
 
     const ParticleArrays& p = world.particles();
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
@@ -228,6 +232,9 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         arrows_.draw(renderer_, nullptr);
         SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     }
+    if (trails != nullptr && options.trails == TrailMode::Selected) {
+        drawImage(trails->rasterise(world, camera, options.trails, selected), trailLayer_);
+    }
 
     if (options.labels && labelFont_ != nullptr) {
         if (visible.size() > kMaxLabels) {
@@ -244,14 +251,31 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                 discBoxes.push_back({static_cast<int>(std::lround(c.x())) - r,
                                      static_cast<int>(std::lround(c.y())) - r, 2 * r, 2 * r});
             }
-            bool avoidDiscs = true;
+            // The box's outline on screen: a label is inside it or outside, never across a wall.
+            const Camera::ScreenBox sb = camera.boxOnScreen(world.def().width, world.def().height);
+            const SDL_Rect walls{static_cast<int>(std::floor(sb.topLeft.x())),
+                                 static_cast<int>(std::floor(sb.topLeft.y())),
+                                 static_cast<int>(std::ceil(sb.size.x())) + 1,
+                                 static_cast<int>(std::ceil(sb.size.y())) + 1};
+            const auto crossesWalls = [&](const SDL_Rect& r) {
+                if (!world.def().walls) return false;
+                SDL_Rect in;
+                if (!SDL_IntersectRect(&r, &walls, &in)) return false;  // all outside
+                return in.w != r.w || in.h != r.h;                      // partly outside
+            };
+            const auto onDiscs = [&](const SDL_Rect& r) {
+                for (const SDL_Rect& o : discBoxes)
+                    if (SDL_HasIntersection(&r, &o)) return true;
+                return false;
+            };
+            // Preferences, dropped one by one until a place is found: clear of every disc,
+            // clear of the walls.
+            bool avoidDiscs = true, avoidWalls = true;
             const auto free = [&](const SDL_Rect& r) {
+                if (avoidWalls && crossesWalls(r)) return false;
                 for (const SDL_Rect& o : placed)
                     if (SDL_HasIntersection(&r, &o)) return false;
-                if (avoidDiscs) {
-                    for (const SDL_Rect& o : discBoxes)
-                        if (SDL_HasIntersection(&r, &o)) return false;
-                }
+                if (avoidDiscs && onDiscs(r)) return false;
                 if (avoid != nullptr) {
                     for (const SDL_Rect& o : *avoid)
                         if (SDL_HasIntersection(&r, &o)) return false;
@@ -280,10 +304,14 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                                                 {cx - bw / 2, cy + r, bw, bh},
                                                 {cx + r, cy - bh / 2, bw, bh},
                                                 {cx - r - bw, cy - bh / 2, bw, bh}};
-                // First a place clear of every disc, else one clear of labels and panels only.
+                // First a place clear of every disc and the walls, else one clear of the walls,
+                // else one clear of labels and panels only. A label over other discs gets no
+                // background, which would darken them, only a dark outline that keeps its
+                // text readable.
                 const SDL_Rect* box = nullptr;
-                for (const bool discs : {true, false}) {
-                    avoidDiscs = discs;
+                for (const int level : {0, 1, 2}) {
+                    avoidDiscs = level == 0;
+                    avoidWalls = level <= 1;
                     for (const SDL_Rect& cand : candidates) {
                         if (free(cand)) {
                             box = &cand;
@@ -297,17 +325,27 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
                     continue;
                 }
                 placed.push_back(*box);
-                labelBoxes_.quad(static_cast<float>(box->x), static_cast<float>(box->y),
-                                 static_cast<float>(box->x + box->w),
-                                 static_cast<float>(box->y + box->h), SDL_Color{0, 0, 0, 150});
+                const bool overDiscs = !avoidDiscs && onDiscs(*box);
+                if (!overDiscs) {
+                    labelBoxes_.quad(static_cast<float>(box->x), static_cast<float>(box->y),
+                                     static_cast<float>(box->x + box->w),
+                                     static_cast<float>(box->y + box->h), SDL_Color{0, 0, 0, 150});
+                }
                 for (int k = 0; k < 4; ++k) {
-                    labelFont_->layout(lines[k], static_cast<float>(box->x + 2),
-                                       static_cast<float>(box->y + 1 + k * lh),
-                                       SDL_Color{255, 255, 255, 255}, labelText_);
+                    const float x = static_cast<float>(box->x + 2);
+                    const float y = static_cast<float>(box->y + 1 + k * lh);
+                    if (overDiscs) {
+                        for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
+                            labelFont_->layout(lines[k], x + static_cast<float>(dx),
+                                               y + static_cast<float>(dy), SDL_Color{0, 0, 0, 255},
+                                               labelOutline_);
+                    }
+                    labelFont_->layout(lines[k], x, y, SDL_Color{255, 255, 255, 255}, labelText_);
                 }
                 ++stats.labelled;
             }
             labelBoxes_.draw(renderer_, nullptr);
+            labelFont_->draw(labelOutline_);
             labelFont_->draw(labelText_);
         }
     }

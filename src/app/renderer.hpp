@@ -80,7 +80,7 @@ class Renderer {
     SDL_Renderer* renderer_;
     const Font* labelFont_;
     SDL_Texture* circle_ = nullptr;
-    GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
+    GeometryBatch discs_, arrows_, labelBoxes_, labelText_, labelOutline_;
     ImageLayer trailLayer_, smallLayer_;
     TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
     std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none

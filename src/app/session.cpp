@@ -52,7 +52,9 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
+    sceneDescription_ = options_.sceneDescription;
     setWorld(std::move(world), std::move(sceneName));
+    showSceneTrails(options_.sceneTrails);
 }
 
 void Session::setWorld(World world, std::string name) {
@@ -67,7 +69,7 @@ void Session::setWorld(World world, std::string name) {
     sceneName_ = std::move(name);
     ++generation_;
     view_.arrowSeconds = arrowSecondsFor(world_);
-    spawn_.lengthScale = spawnLengthScale(world_);
+    followScene(spawn_, world_);
     accumulator_ = 0.0;
     series_.clear();
     collisions_ = 0;
@@ -141,8 +143,14 @@ bool Session::mayEdit(const Command& command) {
 }
 
 UndoState Session::snapshot(World world) const {
-    UndoState s{std::move(world), loaded_,    sceneName_, selection_.id().value_or(kNullParticle),
-                spawn_,           timeScale_, dirty_};
+    UndoState s{std::move(world),
+                loaded_,
+                sceneName_,
+                sceneDescription_,
+                selection_.id().value_or(kNullParticle),
+                spawn_,
+                timeScale_,
+                dirty_};
     // A particle in the hand is kinematic only while held: restored, it is free again.
     if (interaction_.mode() == Interaction::Mode::Holding &&
         s.world.contains(interaction_.held())) {
@@ -159,6 +167,7 @@ void Session::restore(UndoState state) {
     world_ = std::move(state.world);
     loaded_ = std::move(state.loaded);
     sceneName_ = std::move(state.sceneName);
+    sceneDescription_ = std::move(state.sceneDescription);
     spawn_ = state.spawn;
     timeScale_ = reached_ = state.timeScale;
     dirty_ = state.dirty;
@@ -477,12 +486,13 @@ void Session::checkSelection() {
 
 void Session::spawnRandom() {
     const WorldDef& d = world_.def();
-    // The original: mass a random integer 3..20 kg, radius 2.5 cm per kg at its scale of
-    // 1 px = 1 cm (spawnLengthScale follows the scene), somewhere in the upper part of the box,
-    // colour channels 100..255, velocity components up to 5 px per frame at 60 frames per second
-    // (3 m/s), scaled with the box.
-    std::uniform_int_distribution<int> massDist(3, 20), channel(100, 255);
-    const double mass = massDist(rng_), radius = 2.5 * mass * spawn_.lengthScale;
+    // The original: mass a random integer 3..20 kg with its radius, 2.5 cm per kg at its scale of
+    // 1 px = 1 cm (here 0.3..2 times the scene's typical particle), somewhere in the upper part
+    // of the box, colour channels 100..255, velocity components up to 5 px per frame at 60
+    // frames per second (3 m/s), scaled with the box.
+    std::uniform_int_distribution<int> sizeDist(3, 20), channel(100, 255);
+    const double size = sizeDist(rng_) / 10.0;
+    const double mass = size * spawn_.typicalMass, radius = size * spawn_.typicalRadius;
     std::uniform_real_distribution<double> x(radius, std::max(radius, d.width - radius));
     std::uniform_real_distribution<double> y(radius, std::max(radius, d.height / 2.0));
     const double vmax = 3.0 * std::min(d.width, d.height) / 7.0;
@@ -505,18 +515,20 @@ void Session::spawnRandom() {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass "
-                  "%.0f kg",
+                  "%.3g kg",
                   spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass);
     log(buf);
 }
 
 void Session::changeSpawnMass(int direction) {
-    const double before = spawn_.mass;
-    spawn_.changeMass(direction < 0 ? -1.0 : 1.0);
-    if (spawn_.mass != before) remember("set new particle mass");
-    notices_.push_back({Notice::Level::Info,
-                        fmt("New particles: %.0f kg, radius %.3g m", spawn_.mass, spawn_.radius()),
-                        true, false});
+    const double before = spawn_.size;
+    spawn_.changeSize(direction < 0 ? -1 : 1);
+    if (spawn_.size != before) remember("set new particle size");
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
+                  spawn_.mass(), spawn_.radius(), spawn_.size);
+    notices_.push_back({Notice::Level::Info, buf, true, false});
 }
 
 void Session::nextMode() {
@@ -565,8 +577,17 @@ void Session::openPreset(int index) {
         }
         k = static_cast<std::size_t>(index);
     }
+    const std::uint64_t before = generation_;
     openFile(presets[k]);
     nextPreset_ = (k + 1) % presets.size();
+    if (generation_ == before) return;  // not opened: the error is said
+    // Presets open paused: many are over in seconds (a Galton board, a bullet), and a teacher
+    // wants to show the start before it runs.
+    paused_ = true;
+    accumulator_ = 0.0;
+    const std::string key = cmd::presetKey(static_cast<int>(k));
+    say("Preset " + std::to_string(k + 1) + " of " + std::to_string(presets.size()) +
+        (key.empty() ? std::string() : " (key " + key + ")") + ", paused: Space starts it");
 }
 
 void Session::openFile(const std::optional<std::filesystem::path>& file) {
@@ -575,15 +596,18 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
         setWorld(makeWorld(scene), name);
         remember("open scene");
-        // A scene that marks particles' trails (the Brownian motion's heavy disc) opens with the
-        // first of them selected and its trail shown. Before any step, storage order is the
-        // scene's order.
-        if (!scene.trails.empty() && scene.trails.front() < world_.size()) {
-            selection_.select(world_.ids()[scene.trails.front()]);
-            view_.trails = TrailMode::Selected;
+        sceneDescription_ = scene.description;
+        // A new scene starts at its own pace: a time speed asked for the last one would make
+        // this one look wrong without saying why.
+        std::string speedReset;
+        if (timeScale_ != 1.0) {
+            speedReset = "; time speed back to x1 (was " + speedText(timeScale_) + ")";
+            timeScale_ = 1.0;
+            reached_ = 1.0;
         }
+        showSceneTrails(scene.trails);
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
-            ": " + name + " (" + std::to_string(world_.size()) + " particles)");
+            ": " + name + " (" + std::to_string(world_.size()) + " particles)" + speedReset);
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
         say(std::string("Cannot open scene: ") + e.what(), Notice::Level::Error);
     }
@@ -591,6 +615,13 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
 
 // ---------------------------------------------------------------------------------------------
 // The edit prompt.
+
+void Session::showSceneTrails(const std::vector<std::size_t>& trails) {
+    // Before any step, storage order is the scene's order.
+    if (trails.empty() || trails.front() >= world_.size()) return;
+    selection_.select(world_.ids()[trails.front()]);
+    view_.trails = TrailMode::Selected;
+}
 
 void Session::openEdit() {
     const auto id = selection_.id();
@@ -625,7 +656,7 @@ void Session::applyEdit() {
 void Session::save() {
     try {
         const std::filesystem::path path = freeSavePath(options_.saveTo);
-        say(saveWorld(world_, sceneName_, path));
+        say(saveWorld(world_, sceneName_, sceneDescription_, path));
         lastSave_ = path;
         dirty_ = false;
     } catch (const std::exception& e) {  // SaveError; the old file is intact
@@ -756,8 +787,18 @@ void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
     const bool column = view_.plots || view_.speeds || showProfile_;
-    camera_.fit(world_.def().width, world_.def().height, 10.0, in.top, in.bottom,
-                column ? in.panelColumn : 0.0);
+    const double w = world_.def().width, h = world_.def().height, margin = 10.0;
+    double right = in.panelColumn;
+    if (!column) {
+        // A box that the window's height limits may leave width to spare: when it leaves the
+        // inspector's whole column, the box moves left, keeps its size, and the inspector
+        // (bottom right, on a click) does not cover it. Less room would only move the box off
+        // centre and still leave it covered.
+        camera_.fit(w, h, margin, in.top, in.bottom, 0.0);
+        const double spare = camera_.viewportWidth() - camera_.toScreen(w) - 2.0 * margin;
+        right = spare >= in.inspectorColumn ? in.inspectorColumn : 0.0;
+    }
+    camera_.fit(w, h, margin, in.top, in.bottom, right);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",

@@ -60,17 +60,20 @@ struct Notice {
 
 /// Pixels the camera keeps free around the box when it fits it: the HUD above, the messages
 /// below, the panel column at the right while a panel of it (plots, speed histogram, profile) is
-/// on.
+/// on; otherwise as much of the inspector's column as the box can spare without shrinking.
 struct ViewInsets {
     double top = 0.0;
     double bottom = 0.0;
     double panelColumn = 0.0;
+    double inspectorColumn = 0.0;
 };
 
 struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
     std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
     std::uint32_t seed = 1;                                       ///< random spawns
+    std::string sceneDescription;          ///< the first scene's, kept when it is saved
+    std::vector<std::size_t> sceneTrails;  ///< the first scene's particles with trails shown
     bool paused = false;
     bool arrows = true;
     int viewportWidth = 800;  ///< pixels
@@ -183,6 +186,9 @@ class Session {
     void click(const ReleaseResult& r);
     void deleteHeld();
     void spawnRandom();
+    /// A scene that marks particles' trails opens with the first of them selected and its trail
+    /// shown; `trails` are indices in the scene's order (the world's before any step).
+    void showSceneTrails(const std::vector<std::size_t>& trails);
     void changeSpawnMass(int direction);
     void nextMode();
     void toggleGravity();
@@ -237,6 +243,7 @@ class Session {
     World world_;
     std::shared_ptr<const World> loaded_;  ///< world_ as it was loaded, for Reset
     std::string sceneName_;
+    std::string sceneDescription_;  ///< the scene's as loaded, written back by save()
     std::uint64_t generation_ = 0;
     std::size_t nextPreset_ = 0;
 

@@ -9,8 +9,17 @@ namespace psb::app {
 void Trails::reset() {
     std::fill(count_.begin(), count_.end(), std::uint8_t{0});
     std::fill(head_.begin(), head_.end(), std::uint8_t{0});
+    followedHead_ = 0;
+    followedCount_ = 0;
     lastTime_ = -1.0;
     frames_ = 0;
+}
+
+void Trails::follow(ParticleId id) {
+    if (id == followed_) return;
+    followed_ = id;
+    followedHead_ = 0;
+    followedCount_ = 0;
 }
 
 void Trails::update(const World& world) {
@@ -44,6 +53,14 @@ void Trails::sample(const World& world) {
         ys_[at] = static_cast<float>(p.y[i]);
         head_[id.slot] = static_cast<std::uint8_t>((head_[id.slot] + 1) % kLength);
         if (count_[id.slot] < kLength) ++count_[id.slot];
+    }
+    if (const auto i = world.indexOf(followed_)) {
+        followedXs_.resize(kFollowedLength);
+        followedYs_.resize(kFollowedLength);
+        followedXs_[followedHead_] = static_cast<float>(p.x[*i]);
+        followedYs_[followedHead_] = static_cast<float>(p.y[*i]);
+        followedHead_ = (followedHead_ + 1) % kFollowedLength;
+        followedCount_ = std::min<std::size_t>(followedCount_ + 1, kFollowedLength);
     }
 }
 
@@ -183,16 +200,23 @@ void Trails::rasteriseOne(const World& world, const Camera& camera, std::size_t 
     const std::size_t n = count_[id.slot];
     const Color c = p.color[index];
     const std::uint32_t rgb = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+    rasterisePath(world, camera, index, xs_.data() + static_cast<std::size_t>(id.slot) * kLength,
+                  ys_.data() + static_cast<std::size_t>(id.slot) * kLength, kLength,
+                  (head_[id.slot] + kLength - n) % kLength, n, rgb);
+}
+
+void Trails::rasterisePath(const World& world, const Camera& camera, std::size_t index,
+                           const float* xs, const float* ys, std::size_t ringLength,
+                           std::size_t oldest, std::size_t n, std::uint32_t rgb, float tailAlpha,
+                           bool bold) {
+    const ParticleArrays& p = world.particles();
     // The camera's mapping in floats: a trail is only drawn.
     const Camera::Transform t = camera.transform();
     const float zoom = t.scale, ox = t.originX, oy = t.originY;
-    const float* xs = xs_.data() + static_cast<std::size_t>(id.slot) * kLength;
-    const float* ys = ys_.data() + static_cast<std::size_t>(id.slot) * kLength;
-    const std::size_t oldest = (head_[id.slot] + kLength - n) % kLength;
     float ax = ox + zoom * xs[oldest], ay = oy + zoom * ys[oldest];
     // Points 0..n-1 are the ring, oldest first; point n is the particle now.
     for (std::size_t k = 1; k <= n; ++k) {
-        const std::size_t at = (oldest + k) % kLength;
+        const std::size_t at = (oldest + k) % ringLength;
         const float bx = k < n ? ox + zoom * xs[at] : ox + zoom * static_cast<float>(p.x[index]);
         const float by = k < n ? oy + zoom * ys[at] : oy + zoom * static_cast<float>(p.y[index]);
         const float dx = bx - ax, dy = by - ay;
@@ -200,8 +224,14 @@ void Trails::rasteriseOne(const World& world, const Camera& camera, std::size_t 
         // redrawn pixel by pixel.
         if (k < n && dx * dx + dy * dy < kMinSegment * kMinSegment) continue;
         const float f =
-            kTailAlpha + (1.0f - kTailAlpha) * static_cast<float>(k) / static_cast<float>(n);
-        image_.line(ax, ay, bx, by, (static_cast<std::uint32_t>(255.0f * f) << 24) | rgb);
+            tailAlpha + (1.0f - tailAlpha) * static_cast<float>(k) / static_cast<float>(n);
+        const std::uint32_t argb = (static_cast<std::uint32_t>(255.0f * f) << 24) | rgb;
+        image_.line(ax, ay, bx, by, argb);
+        if (bold) {
+            // The same line one pixel right and one down: two pixels wide in any direction.
+            image_.line(ax + 1.0f, ay, bx + 1.0f, by, argb);
+            image_.line(ax, ay + 1.0f, bx, by + 1.0f, argb);
+        }
         ax = bx;
         ay = by;
     }
@@ -213,7 +243,16 @@ const TrailImage& Trails::rasterise(const World& world, const Camera& camera, Tr
     image_.clear();
     std::size_t count = 0;
     if (mode == TrailMode::Selected) {
-        if (const auto i = world.indexOf(selected); i && has(selected)) {
+        const auto i = world.indexOf(selected);
+        if (i && selected == followed_ && followedCount_ > 0) {
+            // Drawn over the discs (Renderer), bold and in the selection ring's yellow, so that
+            // it shows over the crowd and over its own disc.
+            rasterisePath(world, camera, *i, followedXs_.data(), followedYs_.data(),
+                          kFollowedLength,
+                          (followedHead_ + kFollowedLength - followedCount_) % kFollowedLength,
+                          followedCount_, 0xffe65au, kFollowedTailAlpha, true);
+            count = 1;
+        } else if (i && has(selected)) {
             rasteriseOne(world, camera, *i);
             count = 1;
         }

@@ -67,9 +67,20 @@ class Trails {
     static constexpr int kSampleFrames = 2;     ///< frames between samples
     static constexpr float kMinSegment = 0.5f;  ///< shorter steps join the next one, pixels
     static constexpr float kTailAlpha = 0.15f;  ///< the oldest step's opacity (the head's is 1)
+    /// The followed trail's: drawn over a crowd, its whole minute must stay visible.
+    static constexpr float kFollowedTailAlpha = 0.45f;
+
+    /// Positions kept for the followed particle (the selected one), a minute at 60 frames per
+    /// second: a slow particle's wandering, like the Brownian disc's, shows beyond its rim.
+    static constexpr int kFollowedLength = 1800;
 
     /// Forgets every trail (a new scene).
     void reset();
+    /// Keeps the long trail of `id` from now on (the selected particle; an invalid id: none).
+    /// Another id starts its long trail over.
+    void follow(ParticleId id);
+    /// Positions in the followed particle's long trail (0 when it has none).
+    [[nodiscard]] std::size_t followedLength() const { return followedCount_; }
     /// Called once per frame: samples every kSampleFrames-th frame in which the world's time
     /// moved (a paused world keeps its trails as they are).
     void update(const World& world);
@@ -94,12 +105,21 @@ class Trails {
                count_[id.slot] > 0;
     }
     void rasteriseOne(const World& world, const Camera& camera, std::size_t index);
+    /// The polyline through `n` ring positions (xs, ys of `ringLength`, the oldest at
+    /// `oldest`) and then the particle `index` now, in `rgb`, fading from `tailAlpha` at the
+    /// tail to opaque at the head; `bold`: two pixels wide.
+    void rasterisePath(const World& world, const Camera& camera, std::size_t index, const float* xs,
+                       const float* ys, std::size_t ringLength, std::size_t oldest, std::size_t n,
+                       std::uint32_t rgb, float tailAlpha = kTailAlpha, bool bold = false);
 
     // Row `slot` of xs_/ys_ holds kLength positions (float metres: a trail is only drawn),
     // head_ the next write position, count_ how many are valid.
     std::vector<float> xs_, ys_;
     std::vector<std::uint32_t> generation_;
     std::vector<std::uint8_t> head_, count_;
+    ParticleId followed_;
+    std::vector<float> followedXs_, followedYs_;  // kFollowedLength each, a ring
+    std::size_t followedHead_ = 0, followedCount_ = 0;
     TrailImage image_;
     double lastTime_ = -1.0;
     int frames_ = 0;

@@ -45,6 +45,7 @@ struct UndoState {
     World world;
     std::shared_ptr<const World> loaded;  ///< the scene as loaded (Reset's target)
     std::string sceneName;
+    std::string sceneDescription;
     ParticleId selection = kNullParticle;
     SpawnSettings spawn;
     double timeScale = 1.0;

@@ -112,4 +112,18 @@ inline double reboundOffWall(double& v, double& vt, double e, double mu) {
     return dv;
 }
 
+/// A rebound off a fixed surface whose outward unit normal (from the surface to the particle)
+/// is n: the walls' law (reboundOffWall) in the frame of n. Returns the normal velocity change
+/// per unit mass, >= 0 (0 when the velocity does not point into the surface).
+template <bool kFriction>
+inline double reboundOffSurface(double& vx, double& vy, double nx, double ny, double e, double mu) {
+    double into = -(vx * nx + vy * ny);
+    double along = vx * -ny + vy * nx;
+    const double dv = reboundOffWall<kFriction>(into, along, e, mu);
+    if (dv == 0.0) return 0.0;
+    vx = -into * nx + along * -ny;
+    vy = -into * ny + along * nx;
+    return dv;
+}
+
 }  // namespace psb

@@ -101,6 +101,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         }
     }
     setUpGrid();
+    obstacles_.build(def_.obstacles, cells_, skinX_, skinY_,
+                     *std::max_element(levelRadius_.begin(), levelRadius_.end()));
     sortByCell(false);
     eventsSinceSort_ = 0;
     for (std::uint32_t i = 0; i < n; ++i)
@@ -576,8 +578,9 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     double ax = a.x + a.vx * ha, ay = a.y + a.vy * ha;
     Event best{kNever, 0, 0, Kind::None, 0};
 
+    Motion m{ax, ay, a.vx, a.vy, 0.0, 0.0};
     if (gravity_) {
-        const Motion m = motionAt(a, now);
+        m = motionAt(a, now);
         ax = m.x;
         ay = m.y;
         if (def_.walls) predictWallsUnderGravity(i, m, now, best);
@@ -601,6 +604,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
             if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
         }
     }
+    if (!obstacles_.empty()) predictObstacles(i, m, now, best);
     scanNeighbours(i, now, ax, ay, best);
     cold_[i].coll = best;
     bodies_[i].nextColl = best.time;
@@ -857,10 +861,16 @@ bool ExactStepper::supported(std::uint32_t i) const {
     // cone they span (along one of them, or between two).
     const Body& a = bodies_[i];
     constexpr int kMax = 16;
-    double nx[kMax], ny[kMax];
+    // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
+    // than that does not slide off it. Without friction gravity must lie strictly between the
+    // normals (or along one, to within 1e-9 rad). A disc rests on one wall or particle within
+    // kRestSlope of gravity; on one obstacle (a ramp, a peg) only within the friction angle, so
+    // that it slides down a slope steeper than that.
+    const double slack = std::atan(def_.friction) + 1e-9;
+    double nx[kMax], ny[kMax], cone[kMax];
     int count = 0;
     const auto add = [&](double x, double y) {
-        if (count < kMax) nx[count] = x, ny[count++] = y;
+        if (count < kMax) nx[count] = x, ny[count] = y, cone[count++] = std::max(slack, kRestSlope);
     };
     if (def_.walls) {
         if (a.x - a.r <= restGap_) add(-1.0, 0.0);
@@ -875,10 +885,7 @@ bool ExactStepper::supported(std::uint32_t i) const {
         const double d = std::sqrt(rx * rx + ry * ry);
         if (d > 0.0 && d - (a.r + b.r) <= restGap_) add(rx / d, ry / d);
     });
-    // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
-    // than that does not slide off it. Without friction gravity must lie strictly between the
-    // normals (or along one, to within 1e-9 rad).
-    const double slack = std::atan(def_.friction) + 1e-9;
+    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, cone, count, kMax);
     const double pi = 3.14159265358979323846;
     const double ga = std::atan2(gy_, gx_);
     const auto offset = [&](int k) {  // angle from gravity to normal k, in (-pi, pi]
@@ -891,7 +898,7 @@ bool ExactStepper::supported(std::uint32_t i) const {
     bool left = false, right = false;
     for (int k = 0; k < count; ++k) {
         const double d = offset(k);
-        if (std::abs(d) <= std::max(slack, kRestSlope)) return true;
+        if (std::abs(d) <= cone[k]) return true;
         if (d < 0.0 && d > lo) lo = d, left = true;
         if (d > 0.0 && d < hi) hi = d, right = true;
     }
@@ -978,8 +985,9 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     const Body& b = bodies_[i];
     const double h = now - b.t;
     double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
+    Motion m{ax, ay, b.vx, b.vy, 0.0, 0.0};
     if (gravity_) {
-        const Motion m = motionAt(b, now);
+        m = motionAt(b, now);
         ax = m.x;
         ay = m.y;
     }
@@ -1001,6 +1009,8 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
                 break;
         }
     }
+    // The new cell's obstacles (the old cell's are in a.coll already, or later than it).
+    if (!obstacles_.empty()) predictObstacles(i, m, now, best);
     if (best.time < a.coll.time) {
         a.coll = best;
         bodies_[i].nextColl = best.time;
@@ -1045,6 +1055,9 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
                 break;
             case Kind::Wall:
                 handleWall(i, ev, counters);
+                break;
+            case Kind::Obstacle:
+                handleObstacle(i, ev, counters);
                 break;
             case Kind::None:
                 return;  // unreachable: None events are at +infinity
@@ -1115,7 +1128,7 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     clock_ = tEnd;
     syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
-    counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale;
+    counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale + stats_.obstacles;
     ++counters.steps;
 }
 
@@ -1123,7 +1136,7 @@ std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
-                        queue_.memoryBytes();
+                        queue_.memoryBytes() + obstacles_.memoryBytes();
     for (const Level& level : upper_)
         bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one

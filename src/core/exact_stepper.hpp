@@ -112,6 +112,15 @@
 // Walls off: no wall events, particles fly free; the cell grid folds onto itself
 // (cell_list.hpp) so space is unbounded.
 //
+// Obstacles (fixed pegs and segments; exact_obstacle_events.cpp). A third kind of collision
+// event, kept in a particle's collision key like a wall's and replaced like it at every change
+// of course. Each fine cell lists the obstacles a particle in it may reach before its next cell
+// move (exact_obstacle_cells.hpp); a prediction tests its cell's list, a cell move the new
+// cell's. Times of impact: exact_obstacle_impact.hpp (quadratics; under gravity the quartic
+// for pegs and caps, a quadratic across a flat side). Rebound: the walls' law along the normal
+// from the nearest core point. Under gravity obstacles are supports for resting (below), a
+// single one only within the friction angle, so a ball slides down a slope steeper than that.
+//
 // Gravity. Between events a free particle flies on a parabola, r(t) = r₀ + v₀t + ½gt², and
 // lazy advance stays as it is (a particle's stored state is the one at its last velocity
 // change). Two free particles fall alike, so their relative motion is a straight line and their
@@ -129,8 +138,9 @@
 //     still slides along it;
 //   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
 //     acceleration, no cell events) if the supports within restGap_ (walls, sleepers, held
-//     particles at rest) hold it: one whose contact normal is within kRestSlope of gravity, or
-//     two on either side of it, each normal's cone widened by the friction angle atan(mu);
+//     particles at rest, obstacles) hold it: one whose contact normal is within kRestSlope of
+//     gravity (an obstacle: within atan(mu)), or two on either side of it, each normal's cone
+//     widened by the friction angle atan(mu);
 //     a particle woken less than kContactDuration ago does not fall asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
@@ -160,6 +170,7 @@
 #include "cell_list.hpp"
 #include "contact.hpp"
 #include "event_queue.hpp"
+#include "exact_obstacle_cells.hpp"
 
 namespace psb::exact {
 
@@ -241,14 +252,14 @@ class ExactStepper {
 
     /// Events of each kind processed by the last step.
     struct EventStats {
-        std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0;
+        std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0, obstacles = 0;
         std::uint64_t sleeps = 0, wakes = 0;  ///< particles put to sleep / woken (gravity only)
         bool budgetExhausted = false;
     };
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
 
   private:
-    enum class Kind : std::uint8_t { None, Pair, Wall };
+    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle };
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
@@ -272,7 +283,7 @@ class ExactStepper {
     };
     struct Event {
         double time;
-        std::uint32_t partner;       // pair: the other particle
+        std::uint32_t partner;       // pair: the other particle; obstacle: its index
         std::uint32_t partnerCount;  // pair: its counter when predicted
         Kind kind;
         std::int8_t side;  // wall: 0..3 (left, right, top, bottom)
@@ -353,6 +364,13 @@ class ExactStepper {
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleCell(std::uint32_t i, double now);
+    // Fixed obstacles (exact_obstacle_events.cpp): i's earliest impact with an obstacle of its
+    // cell's list, if earlier than best; the rebound; the supports obstacles give a resting
+    // particle (appended to nx, ny, cone up to kMax, returns the new count).
+    void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
+    void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
+    int obstacleSupports(std::uint32_t i, double* nx, double* ny, double* cone, int count,
+                         int max) const;
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
@@ -382,6 +400,7 @@ class ExactStepper {
     CellList cells_;                    // level 0's members; the fine grid of every cell move
     double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
     std::vector<Level> upper_;          // levels 1, 2, ...
+    ObstacleCells obstacles_;           // the fixed obstacles each fine cell may reach
     std::uint8_t levelCount_ = 1;
     // reach_[a · levelCount_ + b]: how many fine cells apart (per axis) a particle of level a
     // and one of level b may be and still touch; 1 for two of level 0.

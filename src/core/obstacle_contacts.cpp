@@ -63,12 +63,7 @@ struct Hits {
 template <bool kFriction>
 bool rebound(Body& b, double nx, double ny, double e, double mu) {
     if (b.held) return false;
-    double into = -(b.vx * nx + b.vy * ny);
-    double along = b.vx * -ny + b.vy * nx;
-    if (reboundOffWall<kFriction>(into, along, e, mu) == 0.0) return false;
-    b.vx = -into * nx + along * -ny;
-    b.vy = -into * ny + along * nx;
-    return true;
+    return reboundOffSurface<kFriction>(b.vx, b.vy, nx, ny, e, mu) > 0.0;
 }
 
 /// Brings a centre into the box as the wall stage does: into [r, extent − r] on each axis, or

@@ -6,34 +6,6 @@
 #include "obstacle_geometry.hpp"
 
 namespace psb {
-namespace {
-
-/// Distance from a point to the rectangle [x0, x1] × [y0, y1] (0 inside).
-double pointToRectangle(double x, double y, double x0, double y0, double x1, double y1) {
-    const double dx = std::max({x0 - x, 0.0, x - x1}), dy = std::max({y0 - y, 0.0, y - y1});
-    return std::sqrt(dx * dx + dy * dy);
-}
-
-/// Distance from an obstacle's core (a point or a segment) to a rectangle: 0 when they meet;
-/// otherwise the nearest pair involves an end of the segment or a corner of the rectangle.
-double coreToRectangle(const Obstacle& o, double x0, double y0, double x1, double y1) {
-    double d = std::min(pointToRectangle(o.a.x(), o.a.y(), x0, y0, x1, y1),
-                        pointToRectangle(o.b.x(), o.b.y(), x0, y0, x1, y1));
-    if (o.isPeg() || d == 0.0) return d;
-    const double cx[4] = {x0, x1, x1, x0}, cy[4] = {y0, y0, y1, y1};
-    for (int k = 0; k < 4; ++k) {
-        // The segment crossing an edge of the rectangle means they meet.
-        const Obstacle edge =
-            Obstacle::segment(Vec2(cx[k], cy[k]), Vec2(cx[(k + 1) % 4], cy[(k + 1) % 4]), 0.0);
-        if (crossesCore(edge, o.a.x(), o.a.y(), o.b.x(), o.b.y())) return 0.0;
-        double qx, qy;
-        nearestCorePoint(o, cx[k], cy[k], qx, qy);
-        d = std::min(d, std::hypot(cx[k] - qx, cy[k] - qy));
-    }
-    return d;
-}
-
-}  // namespace
 
 void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
     obstacles_ = obstacles;

@@ -79,15 +79,4 @@ void validateObstacles(const Obstacles& obstacles, double width, double height, 
         validateObstacle(obstacles[i], i, width, height, where);
 }
 
-void validateModeWithObstacles(const SolverSettings& s, const Obstacles& obstacles,
-                               const char* where) {
-    if (s.mode == StepMode::Exact && !obstacles.empty()) {
-        fail(where, "obstacles",
-             "are not yet supported in 'exact' mode (this world has " +
-                 std::to_string(obstacles.size()) +
-                 "): the event-driven step does not predict impacts with pegs and segments; use "
-                 "'discrete' or 'substep' for a world with obstacles");
-    }
-}
-
 }  // namespace psb::detail

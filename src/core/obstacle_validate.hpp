@@ -17,8 +17,5 @@ void validateObstacle(const Obstacle& o, std::size_t index, double width, double
                       const char* where);
 /// Every obstacle of the list, as validateObstacle.
 void validateObstacles(const Obstacles& obstacles, double width, double height, const char* where);
-/// The exact mode does not handle obstacles yet: refuses mode Exact with any obstacle.
-void validateModeWithObstacles(const SolverSettings& s, const Obstacles& obstacles,
-                               const char* where);
 
 }  // namespace psb::detail

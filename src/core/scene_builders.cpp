@@ -156,17 +156,21 @@ Scene gas(const GasSpec& spec) {
     return s;
 }
 
-Scene brownian(std::size_t count, double bigRadius, double bigMass, double packing,
-               std::uint64_t seed) {
+Scene brownian(const BrownianSpec& spec) {
     const char* where = "scenes::brownian";
-    if (count == 0) detail::fail(where, "count", "must be at least 1");
-    detail::requirePositive(bigRadius, where, "bigRadius");
-    detail::requireMass(bigMass, where, "bigMass");
-    detail::requireInRange(packing, 1e-12, 0.5, where, "packing");
-    // The light discs (1 m, 1 kg, kT = 1 J) cover `packing` of the area the heavy one leaves.
+    if (spec.count == 0) detail::fail(where, "count", "must be at least 1");
+    detail::requirePositive(spec.lightRadius, where, "lightRadius");
+    detail::requireMass(spec.lightMass, where, "lightMass");
+    detail::requirePositive(spec.bigRadius, where, "bigRadius");
+    detail::requireMass(spec.bigMass, where, "bigMass");
+    detail::requirePositive(spec.temperature, where, "temperature");
+    detail::requireInRange(spec.packing, 1e-12, 0.5, where, "packing");
+    const std::size_t count = spec.count;
+    const double bigRadius = spec.bigRadius, r = spec.lightRadius;
+    // The light discs cover `packing` of the area the heavy one leaves.
     const double bigArea = std::numbers::pi * bigRadius * bigRadius;
     const double side =
-        std::sqrt(static_cast<double>(count) * std::numbers::pi / packing + bigArea);
+        std::sqrt(static_cast<double>(count) * std::numbers::pi * r * r / spec.packing + bigArea);
     Scene s = boxScene(side, side);
     s.name = "Brownian motion";
     s.description =
@@ -176,18 +180,20 @@ Scene brownian(std::size_t count, double bigRadius, double bigMass, double packi
     ParticleDef big;
     big.position = {0.5 * side, 0.5 * side};
     big.radius = bigRadius;
-    big.mass = bigMass;
+    big.mass = spec.bigMass;
     big.color = {230, 120, 60};
     // The generate block's gas over the whole box, with enough more discs that those under the
     // heavy one can be left out.
     detail::GenerateSpec g;
-    g.radius = 1.0;
+    g.radius = r;
+    g.mass = spec.lightMass;
     g.x1 = side;
     g.y1 = side;
-    g.temperature = 1.0;
+    g.temperature = spec.temperature;
     g.color = Color{150, 170, 190};
-    g.seed = seed;
-    const double margin = std::numbers::pi * (bigRadius + 2.0) * (bigRadius + 2.0) / (side * side);
+    g.seed = spec.seed;
+    const double margin =
+        std::numbers::pi * (bigRadius + 2.0 * r) * (bigRadius + 2.0 * r) / (side * side);
     g.count = std::min(
         detail::latticeCapacity(g),
         static_cast<std::uint64_t>(std::ceil(static_cast<double>(count) * (1.0 + 2.0 * margin))) +

@@ -53,15 +53,6 @@ std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& 
     // An enumerator outside the lists (a cast from an integer) would make step() do nothing.
     if (toString(s.mode) == "?") p.add("mode", "is not a known step mode");
     if (toString(s.broadphase) == "?") p.add("broadphase", "is not a known broadphase");
-    // The exact mode does not predict impacts with fixed obstacles yet.
-    if (s.mode == StepMode::Exact && !def.obstacles.empty()) {
-        p.add("obstacles",
-              "are not yet supported in 'exact' mode (this world has " +
-                  std::to_string(def.obstacles.size()) +
-                  "): the event-driven step does not predict impacts with pegs and segments; use "
-                  "'discrete' or 'substep' for a world with obstacles",
-              "mode");
-    }
     return p.take();
 }
 

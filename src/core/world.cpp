@@ -135,7 +135,6 @@ void World::setSolver(const SolverSettings& solver) {
 
 void World::setObstacles(Obstacles obstacles) {
     detail::validateObstacles(obstacles, def_.width, def_.height, "World::setObstacles");
-    detail::validateModeWithObstacles(solver_, obstacles, "World::setObstacles");
     changed();
     def_.obstacles = std::move(obstacles);
 }
@@ -143,7 +142,6 @@ void World::setObstacles(Obstacles obstacles) {
 std::size_t World::addObstacle(const Obstacle& obstacle) {
     const std::size_t index = def_.obstacles.size();
     detail::validateObstacle(obstacle, index, def_.width, def_.height, "World::addObstacle");
-    detail::validateModeWithObstacles(solver_, {obstacle}, "World::addObstacle");
     changed();
     def_.obstacles.push_back(obstacle);
     return index;

@@ -74,20 +74,18 @@ TEST(ModeSwitch, ExactWithGravityIsAcceptedAndSteps) {
     EXPECT_TRUE(switchToNextMode(w).changed);  // back to discrete
 }
 
-TEST(ModeSwitch, AModeTheWorldRefusesIsSkippedWithTheReasonAndTheCycleMovesOn) {
-    // The exact mode does not take obstacles yet: from substep, T moves on to discrete and says
-    // why exact was skipped (it used to stay put when a mode was refused).
+TEST(ModeSwitch, AWorldWithObstaclesCyclesThroughEveryMode) {
+    // The exact mode takes obstacles: from substep, T moves on to exact and nothing is skipped
+    // (it used to skip exact with "it has no obstacles yet").
     World w = gas(Vec2::Zero());
     w.addObstacle(Obstacle::peg({0.5 * w.def().width, 0.5 * w.def().height}, 1.0));
     ASSERT_TRUE(switchToNextMode(w).changed);  // discrete -> substep
     ASSERT_EQ(w.solver().mode, StepMode::Substep);
     const ModeSwitch r = switchToNextMode(w);
     EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Discrete);
-    EXPECT_EQ(r.skipped, "exact");
-    EXPECT_NE(r.message.find("exact skipped: it has no obstacles yet"), std::string::npos)
-        << r.message;
-    EXPECT_NE(r.detail.find("obstacles"), std::string::npos) << r.detail;
+    EXPECT_EQ(w.solver().mode, StepMode::Exact);
+    EXPECT_TRUE(r.skipped.empty()) << r.skipped;
+    EXPECT_EQ(r.message, "Mode: exact");
     EXPECT_NO_THROW(w.step(w.solver().dt));
 }
 

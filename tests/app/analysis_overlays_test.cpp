@@ -91,6 +91,29 @@ TEST(Trails, ResetForgetsEveryTrailAndAPausedWorldAddsNothing) {
     EXPECT_EQ(t.length(id), 0u);
 }
 
+TEST(Trails, TheFollowedParticleKeepsALongTrailThatStartsOverForAnother) {
+    World w = bigBox();
+    const ParticleId a = w.add(disc({100.0, 100.0}, {0.0, 0.0}));
+    const ParticleId b = w.add(disc({300.0, 300.0}, {0.0, 0.0}));
+    Trails t;
+    t.follow(a);
+    for (int k = 0; k < 10 * Trails::kLength; ++k)
+        t.sample(w);
+    EXPECT_EQ(t.followedLength(), static_cast<std::size_t>(10 * Trails::kLength));
+    EXPECT_EQ(t.length(a), static_cast<std::size_t>(Trails::kLength));  // the short ring
+    for (int k = 0; k < Trails::kFollowedLength; ++k)
+        t.sample(w);
+    EXPECT_EQ(t.followedLength(), static_cast<std::size_t>(Trails::kFollowedLength));
+    t.follow(a);  // the same one: kept
+    EXPECT_EQ(t.followedLength(), static_cast<std::size_t>(Trails::kFollowedLength));
+    t.follow(b);
+    EXPECT_EQ(t.followedLength(), 0u);
+    t.sample(w);
+    EXPECT_EQ(t.followedLength(), 1u);
+    t.reset();
+    EXPECT_EQ(t.followedLength(), 0u);
+}
+
 TEST(Trails, ImageLinesAreClippedAndOnlyTheirRectangleIsCleared) {
     TrailImage img;
     img.resize(100, 50);

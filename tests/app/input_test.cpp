@@ -38,6 +38,30 @@ TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
     EXPECT_EQ(std::get<cmd::OpenPreset>(preset.front()).index, 2);
 }
 
+TEST(Input, EveryPresetUpTo19HasAKeyAndTheKeyItsName) {
+    // 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to the 19th: the 13 presets each
+    // have one, and the message that opens one names the key that does.
+    const auto index = [](SDL_Keycode sym, Uint16 mod) {
+        const auto c = commandsForKey(keyEvent(sym, mod), false);
+        EXPECT_TRUE(is<cmd::OpenPreset>(c));
+        return is<cmd::OpenPreset>(c) ? std::get<cmd::OpenPreset>(c.front()).index : -2;
+    };
+    EXPECT_EQ(index(SDLK_1, KMOD_NONE), 0);
+    EXPECT_EQ(index(SDLK_9, KMOD_NONE), 8);
+    EXPECT_EQ(index(SDLK_0, KMOD_NONE), 9);
+    EXPECT_EQ(index(SDLK_1, KMOD_LSHIFT), 10);
+    EXPECT_EQ(index(SDLK_3, KMOD_RSHIFT), 12);
+    EXPECT_EQ(index(SDLK_9, KMOD_LSHIFT), 18);
+    for (int i = 0; i < 19; ++i) {
+        const std::string key = cmd::presetKey(i);
+        ASSERT_FALSE(key.empty()) << i;
+        const bool shift = key.rfind("Shift+", 0) == 0;
+        const int digit = key.back() - '0';
+        EXPECT_EQ(cmd::presetForDigit(digit, shift), i) << key;
+    }
+    EXPECT_TRUE(cmd::presetKey(19).empty());
+}
+
 TEST(Input, OnlyPanStepAndMassKeysRepeat) {
     EXPECT_TRUE(commandsForKey(keyEvent(SDLK_SPACE, KMOD_NONE, 1), false).empty());
     EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_NONE, 1), false)));

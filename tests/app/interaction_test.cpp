@@ -185,7 +185,7 @@ TEST(Interaction, DragOnEmptySpaceLaunchesFromThePressPointWithTheDragVelocity) 
     World w = boxWorld();
     Interaction in;
     SpawnSettings spawn;
-    spawn.mass = 4.0;
+    spawn.size = 0.4;  // 4 kg
     in.press(w, Vec2(200, 300), 0.0);
     EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
     const double t = drag(in, Vec2(200, 300), 0.0, Vec2(-120, 80), 15);
@@ -373,22 +373,56 @@ TEST(FindFreeSpot, ClampsIntoTheBox) {
     EXPECT_EQ(*s, Vec2(20, 20));
 }
 
-TEST(SpawnSettings, RadiusFollowsTheOriginalsRuleScaledWithTheBox) {
+TEST(SpawnSettings, NewParticlesAreTheScenesTypicalOneTimesTheSize) {
     SpawnSettings s;
-    s.mass = 8.0;
-    EXPECT_DOUBLE_EQ(s.radius(), 20.0);  // 2.5 m per kg in the original's 700 m box
-    s.lengthScale = 2.0 / 700.0;         // a 2 m box
-    EXPECT_NEAR(s.radius(), 20.0 * 2.0 / 700.0, 1e-15);
+    // An empty 700 m box: the original's 10 kg, 25 m particle, 2.5 m per kg.
+    followScene(s, boxWorld());
+    EXPECT_DOUBLE_EQ(s.mass(), 10.0);
+    EXPECT_DOUBLE_EQ(s.radius(), 25.0);
+    s.changeSize(-2);
+    EXPECT_DOUBLE_EQ(s.mass(), 8.0);
+    EXPECT_DOUBLE_EQ(s.radius(), 20.0);
+    // A board of 5 mm, 0.5 g grains (and one big ball): new particles are grains.
+    WorldDef def;
+    def.width = 0.5;
+    def.height = 0.9;
+    World board(def);
+    for (int k = 0; k < 5; ++k) {
+        ParticleDef g;
+        g.position = {0.05 + 0.02 * k, 0.1};
+        g.radius = 0.005;
+        g.mass = 0.0005;
+        board.add(g);
+    }
+    ParticleDef ball;
+    ball.position = {0.3, 0.5};
+    ball.radius = 0.1;
+    ball.mass = 2.0;
+    board.add(ball);
+    s.size = 1.0;
+    followScene(s, board);
+    EXPECT_DOUBLE_EQ(s.mass(), 0.0005);
+    EXPECT_DOUBLE_EQ(s.radius(), 0.005);
+    // An empty small box: the original's particle at the box's scale.
+    followScene(s, World(def));
+    EXPECT_DOUBLE_EQ(s.mass(), 10.0);
+    EXPECT_NEAR(s.radius(), 25.0 * 0.5 / 700.0, 1e-15);
 }
 
-TEST(SpawnSettings, MassStaysInItsRange) {
+TEST(SpawnSettings, SizeStaysInItsRangeAndComesBackExactly) {
     SpawnSettings s;
     for (int k = 0; k < 100; ++k)
-        s.changeMass(-1.0);
-    EXPECT_DOUBLE_EQ(s.mass, SpawnSettings::kMinMass);
+        s.changeSize(-1);
+    EXPECT_DOUBLE_EQ(s.size, SpawnSettings::kMinSize);
     for (int k = 0; k < 100; ++k)
-        s.changeMass(1.0);
-    EXPECT_DOUBLE_EQ(s.mass, SpawnSettings::kMaxMass);
+        s.changeSize(1);
+    EXPECT_DOUBLE_EQ(s.size, SpawnSettings::kMaxSize);
+    s.size = 1.0;
+    for (int k = 0; k < 7; ++k)
+        s.changeSize(1);
+    for (int k = 0; k < 7; ++k)
+        s.changeSize(-1);
+    EXPECT_EQ(s.size, 1.0);
 }
 
 }  // namespace

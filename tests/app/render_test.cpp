@@ -228,6 +228,70 @@ TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
     EXPECT_GE(s.labelled, 2u);
 }
 
+TEST_F(RenderTest, ALabelStaysOnOneSideOfTheWalls) {
+    // A disc just under the top wall: above it the label would cross the wall, so it goes
+    // below (inside the box), and nothing of it is drawn above the wall.
+    WorldDef def;
+    def.width = def.height = 300.0;
+    World w(def);
+    ParticleDef d;
+    d.position = {150, 20};
+    d.radius = 10.0;
+    w.add(d);
+    camera_.set(1.0, Vec2(-50, -50));  // the box from (50, 50) to (350, 350) on screen
+    ViewOptions o;
+    o.arrows = false;
+    o.labels = true;
+    const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, nullptr);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(s.labelled, 1u);
+    EXPECT_EQ(brightPixels(0, 0, kSize, 47), 0);    // above the wall (2 px thick)
+    EXPECT_GT(brightPixels(60, 82, 350, 160), 50);  // below the disc
+}
+
+TEST_F(RenderTest, ALabelOverOtherDiscsDoesNotDarkenThem) {
+    // A disc hemmed in by four big ones leaves its label no place clear of discs: the label is
+    // drawn over them without a background, so a big disc's pixels away from the glyphs keep
+    // their colour.
+    WorldDef def;
+    def.width = def.height = kSize;
+    World w(def);
+    ParticleDef d;
+    d.position = {200, 200};
+    d.radius = 5.0;
+    d.color = {0, 0, 255};
+    w.add(d);
+    for (const Vec2& at : {Vec2(200, 120), Vec2(200, 280), Vec2(100, 200), Vec2(300, 200)}) {
+        d.position = at;
+        d.radius = 74.0;
+        d.color = {0, 200, 0};
+        w.add(d);
+    }
+    // Pixels of a big disc's green made darker: the discs' antialiased rims, plus with labels
+    // on the dark outline of the glyphs (about 3000 here), not a whole translucent background
+    // (about 16000: four 150 x 60 px labels' boxes, as before the fix).
+    const auto darkGreens = [&](bool labels) {
+        ViewOptions o;
+        o.arrows = false;
+        o.labels = labels;
+        const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, nullptr);
+        SDL_RenderPresent(sdl_);
+        if (labels) {
+            EXPECT_GE(s.labelled, 1u);
+        }
+        int n = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                const SDL_Color c = pixel(x, y);
+                n += c.r == 0 && c.b == 0 && c.g > 0 && c.g < 200;
+            }
+        }
+        return n;
+    };
+    const int rims = darkGreens(false);
+    EXPECT_LT(darkGreens(true) - rims, 5000);
+}
+
 TEST_F(RenderTest, LabelsKeepTheirPixelSizeAtAnyZoom) {
     const World w = worldWith({200, 250}, Vec2::Zero(), 20.0, {255, 0, 0});
     ViewOptions o;

@@ -15,6 +15,7 @@
 #include "../core/test_util.hpp"
 #include "assets.hpp"
 #include "panel_layout.hpp"
+#include "scene_io.hpp"
 #include "session.hpp"
 #include "temp_dir_test.hpp"
 
@@ -87,6 +88,16 @@ TEST_F(SessionTest, TheBrownianPresetOpensWithItsHeavyDiscsTrailShown) {
     for (const double r : s.world().particles().radius)
         largest = std::max(largest, r);
     EXPECT_EQ(s.world().get(*s.selection().id()).radius, largest);
+}
+
+TEST_F(SessionTest, TheBrownianPresetGivenAtStartUpShowsItsTrailToo) {
+    const Scene scene = loadScene(findAsset("scenes/08-brownian-motion.json"));
+    SessionOptions o = options();
+    o.sceneTrails = scene.trails;
+    Session s(makeWorld(scene), scene.name, o);
+    EXPECT_EQ(s.view().trails, TrailMode::Selected);
+    ASSERT_TRUE(s.selection().id().has_value());
+    EXPECT_EQ(s.world().get(*s.selection().id()).radius, 0.08);
 }
 
 TEST_F(SessionTest, GravityIsEarthsInTheDefaultScene) {
@@ -168,6 +179,73 @@ TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
     EXPECT_FALSE(t.unsavedChanges());
     t.apply(cmd::Quit{});
     EXPECT_FALSE(t.running());
+}
+
+TEST_F(SessionTest, ASaveKeepsTheScenesNameAndDescription) {
+    Session s = session();
+    s.apply(cmd::OpenFile{findAsset("scenes/05-mass-ratio.json")});
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Save{});
+    const Scene original = loadScene(findAsset("scenes/05-mass-ratio.json"));
+    const Scene saved = loadScene(dir_ / "save.json");
+    EXPECT_EQ(saved.name, original.name);
+    EXPECT_EQ(saved.description, original.description);
+    EXPECT_EQ(saved.particles.size(), original.particles.size() + 1);
+    // The first scene, given to the session by the app, too.
+    SessionOptions o = options();
+    o.saveTo = dir_ / "first.json";
+    o.sceneDescription = "A scene described.";
+    Session first(makeWorld(defaultScene()), "default", o);
+    first.apply(cmd::Save{});
+    EXPECT_EQ(loadScene(dir_ / "first.json").description, "A scene described.");
+}
+
+TEST_F(SessionTest, APresetOpensPausedAndANewSceneStartsAtTimeSpeedOne) {
+    SessionOptions o = options();
+    o.paused = false;
+    o.presets = presetScenes();
+    ASSERT_GE(o.presets.size(), 13u);
+    Session s(makeWorld(defaultScene()), "default", o);
+    s.apply(cmd::ScaleTime{2.0});
+    s.apply(cmd::ScaleTime{2.0});
+    ASSERT_EQ(s.timeScale(), 4.0);
+    (void)s.takeNotices();
+    s.apply(cmd::OpenPreset{11});  // the 12th: Shift+2
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(s.paused());
+    EXPECT_EQ(s.timeScale(), 1.0);
+    EXPECT_TRUE(said(n, "time speed back to x1 (was x4)"));
+    EXPECT_TRUE(said(n, "Preset 12 of 13 (key Shift+2), paused: Space starts it"));
+    // Nothing moves until Space.
+    const double t = s.world().time();
+    s.update(0.5, 1.0);
+    EXPECT_EQ(s.world().time(), t);
+    s.apply(cmd::TogglePause{});
+    s.update(0.1, 1.1);
+    EXPECT_GT(s.world().time(), t);
+    // R keeps the time speed (the same scene).
+    s.apply(cmd::ScaleTime{0.5});
+    s.apply(cmd::Reset{});
+    EXPECT_EQ(s.timeScale(), 0.5);
+}
+
+TEST_F(SessionTest, NewParticlesFollowTheScenesScale) {
+    Session s = session();
+    s.apply(cmd::OpenFile{findAsset("scenes/09-galton-board.json")});
+    const Scene board = loadScene(findAsset("scenes/09-galton-board.json"));
+    // The board's balls: 5 mm and a few grams, not the default scene's 10 kg.
+    EXPECT_EQ(s.spawn().radius(), board.particles[board.particles.size() / 2].radius);
+    EXPECT_LT(s.spawn().mass(), 0.01);
+    const double m = s.spawn().mass();
+    s.apply(cmd::ChangeSpawnMass{+1});
+    EXPECT_NEAR(s.spawn().mass(), 1.1 * m, 1e-12 * m);
+    // A launch makes one of those.
+    const Camera& c = s.camera();
+    const std::size_t n = s.world().size();
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(0.05, 0.05)), 1.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(0.05, 0.05)), 1.5});
+    ASSERT_EQ(s.world().size(), n + 1);
+    EXPECT_NEAR(s.world().get(s.world().ids().back()).mass, 1.1 * m, 1e-12 * m);
 }
 
 TEST_F(SessionTest, SavingNeverOverwritesAnEarlierSaveAndNamesTheFullPath) {
@@ -284,6 +362,30 @@ TEST_F(SessionTest, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
         EXPECT_GT(l.plots.w, 0) << w << "x" << h;
         EXPECT_GT(box.w, w / 3) << w << "x" << h;  // the box still gets a good part
     }
+}
+
+TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
+    // A window wider than the box needs: the box moves left, keeping its size, so that the
+    // inspector (bottom right, when a particle is clicked) does not cover it.
+    SessionOptions o = options();
+    o.insets.inspectorColumn = 240.0;
+    const auto boxAt = [&](double inspector) {
+        o.insets.inspectorColumn = inspector;
+        Session s(makeWorld(defaultScene()), "default", o);
+        s.apply(cmd::Resize{800, 600});
+        return s.camera().boxOnScreen(7.0, 7.0);
+    };
+    const auto centred = boxAt(0.0), moved = boxAt(240.0);
+    EXPECT_NEAR(moved.size.x(), centred.size.x(), 1e-9);  // no smaller
+    EXPECT_LE(moved.topLeft.x() + moved.size.x(), 800.0 - 240.0 + 1e-9);
+    // A window with no width to spare keeps the box as big as it was.
+    o.insets.inspectorColumn = 240.0;
+    Session square(makeWorld(defaultScene()), "default", o);
+    square.apply(cmd::Resize{600, 900});
+    o.insets.inspectorColumn = 0.0;
+    Session plain(makeWorld(defaultScene()), "default", o);
+    plain.apply(cmd::Resize{600, 900});
+    EXPECT_NEAR(square.camera().zoom(), plain.camera().zoom(), 1e-12);
 }
 
 TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {

@@ -207,7 +207,7 @@ TEST(SessionUndo, UndoesPhysicsSettingsAndCoalescesRepeatedPresses) {
     s.update(kFrame, 3.0);
     s.apply(cmd::ChangeRestitution{-1});
     EXPECT_EQ(s.undoHistory().undoCount(), 2u);
-    // The time speed and the new particles' mass are undone too.
+    // The time speed and the new particles' size are undone too.
     s.apply(cmd::ScaleTime{2.0});
     s.apply(cmd::ScaleTime{2.0});
     s.apply(cmd::ChangeSpawnMass{+1});

@@ -169,8 +169,9 @@ TEST(PinnedState, KnownScenesEndInKnownStates) {
         {"exact 1:10 mix",
          scenes::gas({.count = 1000, .maxRadius = 10.0, .packing = 0.2, .seed = 4}),
          StepMode::Exact, 1, 120, 1.0 / 60.0, 0xdb3f1de8867deb23ull},
-        {"exact Brownian", scenes::brownian(1000, 6.0, 36.0, 0.2, 5), StepMode::Exact, 1, 120,
-         1.0 / 60.0, 0xda34ebeed9a3e449ull},
+        {"exact Brownian",
+         scenes::brownian({.count = 1000, .bigRadius = 6.0, .bigMass = 36.0, .seed = 5}),
+         StepMode::Exact, 1, 120, 1.0 / 60.0, 0xda34ebeed9a3e449ull},
     };
     for (const Pinned& run : runs) {
         psb::Scene s = run.scene;

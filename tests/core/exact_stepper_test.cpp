@@ -502,7 +502,7 @@ TEST(ExactModeStatistics, HeavyDiscInAGasReachesEquipartition) {
     // the heavy disc's long-run mean must equal the light discs' mean. Its kinetic energy is
     // correlated over its velocity relaxation time, so the statistical error of its mean comes
     // from batch means: 40 batches, each many relaxation times long, are close to independent.
-    Scene scene = scenes::brownian(1000, 5.0, 10.0, 0.2, 11);
+    Scene scene = scenes::brownian({.count = 1000, .bigRadius = 5.0, .bigMass = 10.0, .seed = 11});
     scene.solver.mode = StepMode::Exact;
     World w = makeWorld(scene);
     const ParticleId heavy = w.ids()[0];

@@ -77,8 +77,6 @@ const std::map<std::string, std::string> kExpected = {
      R"(nested deeper than 64 levels)"},
     {"number_overflow.json",
      R"(line 3, column 22 (world.width): number overflow parsing '1e999')"},
-    {"obstacle_exact_mode.json",
-     R"(solver.mode: refused (World: obstacles are not yet supported in 'exact' mode (this world has 1): the event-driven step does not predict impacts with pegs and segments; use 'discrete' or 'substep' for a world with obstacles))"},
     {"obstacle_outside_box.json",
      R"(obstacles[0].to: [12, 3] lies outside the 10 x 10 m box)"},
     {"obstacle_overlaps_particle.json",

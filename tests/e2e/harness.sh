@@ -1,6 +1,8 @@
-# Sourced by the end-to-end scripts (sandbox_e2e.sh, tests/install/install_test.sh), which
-# define fail() themselves: pass(), the ERR trap that names the failing line, the clean-up at
-# exit of the program under test (APP_PID) and of the X server (XVFB_PID), start_xvfb, and drag.
+# Sourced by the end-to-end scripts (sandbox_e2e.sh, defects_e2e.sh,
+# tests/install/install_test.sh), which define fail() themselves: pass(), the ERR trap that
+# names the failing line, the clean-up at exit of the program under test (APP_PID) and of the X
+# server (XVFB_PID), start_xvfb, and for the app's scripts start_app with the functions that
+# drive and read it (they use LOG, OUT and the window variables start_app sets).
 pass() { echo "ok: $*"; }
 
 XVFB_PID=""
@@ -40,6 +42,85 @@ start_xvfb() {
     return 1
 }
 
+# need_x_tools: installs the test tools (scripts/install-deps.sh --test) when one is missing.
+need_x_tools() {
+    local tool
+    for tool in Xvfb xdpyinfo xdotool import convert; do
+        if ! command -v "$tool" >/dev/null; then
+            "$(dirname "${BASH_SOURCE[0]}")/../../scripts/install-deps.sh" --test
+            return
+        fi
+    done
+}
+# show_logs: for a failure, the ends of $OUT's stderr.log and xvfb.log, and whether the program
+# under test still runs.
+show_logs() {
+    local f
+    for f in stderr.log xvfb.log; do
+        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
+    done
+    if [[ -n "${APP_PID:-}" ]] && ! kill -0 "$APP_PID" 2>/dev/null; then
+        echo "(the program is no longer running)" >&2
+    fi
+    return 0
+}
+
+# start_app BIN ARGS... runs the sandbox with its log in $LOG (stderr in $OUT/stderr.log) and
+# waits for its window: sets APP_PID, WID, WX, WY, WIDTH, HEIGHT, and from the logged fitted
+# view ZOOM (px/m), BX, BY (the box's top-left in the window), for sx and sy.
+start_app() {
+    "$@" >"$LOG" 2>"$OUT/stderr.log" &
+    APP_PID=$!
+    WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
+        head -1) || {
+        ps -o pid,stat,etime,wchan:30,args -p "$APP_PID" >&2 || true
+        for t in /proc/"$APP_PID"/task/*; do echo "thread $t: $(cat "$t/wchan" 2>/dev/null)" >&2; done
+        xdotool search --name "Particle Sandbox" >&2 || true
+        fail "no window within 20 s (display $DISPLAY)"
+    }
+    [[ -n "$WID" ]] || fail "no window"
+    eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
+    WX=$X
+    WY=$Y
+    xdotool windowfocus --sync "$WID" 2>/dev/null || true
+    # The camera starts fitted to the box; the program logs the mapping it chose.
+    for _ in $(seq 100); do grep -q "\[I\] View: zoom" "$LOG" && break; sleep 0.05; done
+    read_view "$(grep "\[I\] View: zoom" "$LOG" | head -1)"
+}
+# read_view LINE: ZOOM, BX, BY from a logged "View: zoom ..." line.
+read_view() {
+    [[ -n "$1" ]] || fail "no view line in the log"
+    read -r ZOOM BX BY < <(sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/' <<<"$1")
+}
+# Screen x, y (root window pixels) of world x, y metres.
+sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
+sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
+
+wait_log() {  # wait_log REGEX [SECONDS]
+    local deadline=$((SECONDS + ${2:-5}))
+    while ! grep -Eq "$1" "$LOG"; do
+        ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
+        sleep 0.05
+    done
+}
+wait_count() {  # wait_count REGEX N [SECONDS]: until N lines match
+    local deadline=$((SECONDS + ${3:-5}))
+    while (($(grep -Ec "$1" "$LOG" || true) < $2)); do
+        ((SECONDS < deadline)) || fail "timed out waiting for $2 log lines /$1/"
+        sleep 0.05
+    done
+}
+title() { xdotool getwindowname "$WID"; }
+wait_title() {  # wait_title REGEX
+    local deadline=$((SECONDS + 5))
+    until title | grep -Eq "$1"; do
+        ((SECONDS < deadline)) || fail "title '$(title)' never matched /$1/"
+        sleep 0.05
+    done
+}
+key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
+shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
+
 # Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart, as
 # one xdotool command chain so that process start-up under load cannot stretch the timing (the
 # app releases a particle at rest if the hand paused for 100 ms). An optional 6th argument is a
@@ -56,3 +137,20 @@ drag() {
     xdotool "${chain[@]}"
     sleep 0.2
 }
+
+# Centroid "x y count" of the pixels of colour R,G,B (±6 per channel) in a screenshot.
+centroid() {
+    convert "$1" -depth 8 txt:- | awk -v r="$2" -v g="$3" -v b="$4" -F'[ ,:()]+' '
+        NR > 1 {
+            # "x,y: (R,G,B) ..." -> fields x y R G B
+            if ($3 >= r - 6 && $3 <= r + 6 && $4 >= g - 6 && $4 <= g + 6 && $5 >= b - 6 && $5 <= b + 6) {
+                sx += $1; sy += $2; n++
+            }
+        }
+        END { if (n) printf "%.1f %.1f %d\n", sx / n, sy / n, n; else print "0 0 0" }'
+}
+# Pure white pixels inside a rectangle "WxH+X+Y" of a screenshot.
+white_in() {
+    convert "$1" -crop "$2" +repage -depth 8 txt:- | grep -c "#FFFFFF" || true
+}
+

@@ -42,25 +42,14 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$OUT"
 rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
 
-for tool in Xvfb xdpyinfo xdotool import convert; do
-    if ! command -v "$tool" >/dev/null; then
-        "$HERE/../../scripts/install-deps.sh" --test
-        break
-    fi
-done
-
 fail() {
     echo "FAIL: $*" >&2
-    for f in stderr.log xvfb.log; do
-        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
-    done
-    if [[ -n "${APP_PID:-}" ]] && ! kill -0 "$APP_PID" 2>/dev/null; then
-        echo "(the program is no longer running)" >&2
-    fi
+    show_logs
     echo "(log and screenshots in $OUT)" >&2
     exit 1
 }
 source "$HERE/harness.sh"
+need_x_tools
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
@@ -98,71 +87,10 @@ pass "renderer chosen: $(grep -m1 'Renderer:' <<<"$bench")"
 
 # --- the program --------------------------------------------------------------------------
 LOG="$OUT/stdout.log"
-"$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" \
-    --screenshot-dir "$OUT" >"$LOG" 2>"$OUT/stderr.log" &
-APP_PID=$!
-WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
-    head -1) || {
-    ps -o pid,stat,etime,wchan:30,args -p "$APP_PID" >&2 || true
-    for t in /proc/"$APP_PID"/task/*; do echo "thread $t: $(cat "$t/wchan" 2>/dev/null)" >&2; done
-    xdotool search --name "Particle Sandbox" >&2 || true
-    fail "no window within 20 s (display $DISPLAY)"
-}
-[[ -n "$WID" ]] || fail "no window"
-eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
-WX=$X
-WY=$Y
-xdotool windowfocus --sync "$WID" 2>/dev/null || true
+start_app "$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" \
+    --screenshot-dir "$OUT"
 pass "window $WID at $WX,$WY size ${WIDTH}x$HEIGHT"
-
-# The camera starts fitted to the box; the program logs the mapping it chose.
-for _ in $(seq 100); do grep -q "\[I\] View: zoom" "$LOG" && break; sleep 0.05; done
-view=$(grep "\[I\] View: zoom" "$LOG" | head -1) || fail "no view line in the log"
-read -r ZOOM BX BY < <(sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/' <<<"$view")
-sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
-sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
 pass "fitted view: zoom $ZOOM px/m, box top-left at ($BX, $BY) px in the window"
-
-wait_log() {  # wait_log REGEX [SECONDS]
-    local deadline=$((SECONDS + ${2:-5}))
-    while ! grep -Eq "$1" "$LOG"; do
-        ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
-        sleep 0.05
-    done
-}
-wait_count() {  # wait_count REGEX N: until N lines match
-    local deadline=$((SECONDS + 5))
-    while (($(grep -Ec "$1" "$LOG" || true) < $2)); do
-        ((SECONDS < deadline)) || fail "timed out waiting for $2 log lines /$1/"
-        sleep 0.05
-    done
-}
-title() { xdotool getwindowname "$WID"; }
-wait_title() {  # wait_title REGEX
-    local deadline=$((SECONDS + 5))
-    until title | grep -Eq "$1"; do
-        ((SECONDS < deadline)) || fail "title '$(title)' never matched /$1/"
-        sleep 0.05
-    done
-}
-key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
-shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
-
-# Centroid "x y count" of the pixels of colour R,G,B (±6 per channel) in a screenshot.
-centroid() {
-    convert "$1" -depth 8 txt:- | awk -v r="$2" -v g="$3" -v b="$4" -F'[ ,:()]+' '
-        NR > 1 {
-            # "x,y: (R,G,B) ..." -> fields x y R G B
-            if ($3 >= r - 6 && $3 <= r + 6 && $4 >= g - 6 && $4 <= g + 6 && $5 >= b - 6 && $5 <= b + 6) {
-                sx += $1; sy += $2; n++
-            }
-        }
-        END { if (n) printf "%.1f %.1f %d\n", sx / n, sy / n, n; else print "0 0 0" }'
-}
-# Pure white pixels inside a rectangle "WxH+X+Y" of a screenshot.
-white_in() {
-    convert "$1" -crop "$2" +repage -depth 8 txt:- | grep -c "#FFFFFF" || true
-}
 
 wait_title "6 particles - PAUSED"
 pass "title shows the count and PAUSED: $(title)"
@@ -264,8 +192,13 @@ pass "S shows labels ($plain -> $labelled white pixels)"
 key ctrl+s
 wait_log "Saved 6 particles to /.*/saved.json"  # the full path
 [[ -s "$OUT/saved.json" ]] || fail "Ctrl+S wrote no file"
-# One particle per line; the launched one is the only 10 kg particle.
-launched=$(grep '"mass": 10.0,' "$OUT/saved.json") || fail "no launched particle in the saved scene"
+# One particle per line. The launched one is the scene's typical particle (the median: 12 kg,
+# 0.3 m), in the launch colour of that size (120 + 135 t, 200, 255 - 135 t at t = 0.9 / 3.9).
+launched=$(grep '"mass": 12.0, "radius": 0.3, "color": \[151, 200, 223\]' "$OUT/saved.json") ||
+    fail "no launched particle in the saved scene"
+# The scene's name and description are saved with it.
+grep -q '"description": "A handful of particles in a 7 m box' "$OUT/saved.json" ||
+    fail "the saved scene lost the scene's description"
 read -r svx svy < <(sed -E 's/.*"vx": ([-0-9.e+]+), "vy": ([-0-9.e+]+),.*/\1 \2/' <<<"$launched")
 awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 1 && vy < -1) }' ||
     fail "saved launched particle does not move up-right: $launched"
