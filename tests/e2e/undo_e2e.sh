@@ -50,7 +50,7 @@ save() {
     cp "$file" "$OUT/$1.json"
 }
 # The particles of a saved scene, one line each (positions, velocities, mass, radius, colour).
-particles() { grep '"mass":' "$OUT/$1.json"; }
+particles() { grep '"mass":' "$OUT/$1.json" | sed 's/},$/}/'; }  # without the list's commas
 same() { diff <(particles "$1") <(particles "$2") >/dev/null; }
 
 wait_title "6 particles - PAUSED"
