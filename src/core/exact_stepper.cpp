@@ -11,6 +11,7 @@
 #include "stage_timer.hpp"
 
 namespace psb::exact {
+
 namespace {
 
 // Cells a little wider than the largest diameter, so that a centre a few ulps outside the cell
@@ -44,6 +45,15 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 }  // namespace
 
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
+    // What was asleep before, where it was (gravity only; see the design note, Resting).
+    std::unordered_map<ParticleId, Body> before;
+    const bool sameLaws = gravity_ && def.gravity == def_.gravity && def.width == def_.width &&
+                          def.height == def_.height && def.walls == def_.walls &&
+                          def.restitution == def_.restitution && def.friction == def_.friction;
+    if (sameLaws) {
+        for (std::uint32_t i = 0; i < bodies_.size(); ++i)
+            before.emplace(ids_[i], bodies_[i]);
+    }
     def_ = def;
     clock_ = 0.0;
     gx_ = def.gravity.x();
@@ -64,6 +74,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     ids_ = p.id;
     heldHit_.clear();
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
+    rate_.reset(gravity_ ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -107,11 +118,56 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         insertMember(i);
     recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
+    if (!before.empty()) keepSleepers(before);
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
         predictCell(i, 0.0);
     }
     stale_ = false;
+}
+
+void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
+    // A sleeper still where it slept, at rest, sleeps on. Everything else is a disturbance: a
+    // particle removed (where it was), added, moved or set in motion (where it is now); the
+    // sleepers it touches wake, and with them what rests on them.
+    struct Spot {
+        double x, y, r;
+    };
+    std::vector<Spot> spots;
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        Body& b = bodies_[i];
+        const auto it = before.find(ids_[i]);
+        const bool same = it != before.end() && it->second.x == b.x && it->second.y == b.y &&
+                          it->second.r == b.r && b.vx == 0.0 && b.vy == 0.0;
+        if (same && (it->second.flags & kAsleep) && !(b.flags & kHeld)) {
+            b.flags |= kAsleep;
+        } else if (!same || (b.flags & kHeld)) {
+            spots.push_back({b.x, b.y, b.r});
+        }
+        if (it != before.end()) before.erase(it);
+    }
+    for (const auto& [id, b] : before)  // removed
+        spots.push_back({b.x, b.y, b.r});
+    // A change to many particles at once (a setter, a load) starts everything afresh.
+    if (spots.size() > kMaxDisturbances) {
+        for (Body& b : bodies_)
+            b.flags &= ~kAsleep;
+        return;
+    }
+    for (const Spot& s : spots) {
+        for (std::uint32_t q = 0; q < n; ++q) {
+            const Body& b = bodies_[q];
+            if (!(b.flags & kAsleep)) continue;
+            const double reach = s.r + b.r + restGap_;
+            const double dx = b.x - s.x, dy = b.y - s.y;
+            if (dx * dx + dy * dy <= reach * reach) wake(q, 0.0);
+        }
+    }
+    // What the changes set free falls: the rattle guard leaves it alone for a while.
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (!(bodies_[i].flags & kAsleep)) rate_.quiet(i, kSettleTime);
+    }
 }
 
 double ExactStepper::bucketWidth() const {
@@ -151,7 +207,10 @@ void ExactStepper::sortByCell(bool midRun) {
     permute(cold_);
     permute(order_);
     permute(ids_);
-    if (gravity_) permute(wokeAt_);
+    if (gravity_) {
+        permute(wokeAt_);
+        rate_.renumber(to);
+    }
     if (midRun) {
         // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));
@@ -723,7 +782,13 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         bStays = hitsSleeper(j, i);
     }
     const double wi = aStays ? 0.0 : cold_[i].w, wj = bStays ? 0.0 : cold_[j].w;
-    const double e = effectiveRestitution(approach, recent);
+    // Off a sleeper, which does not move, a bounce cannot start a collapse: the TC model's
+    // elastic rule would only keep a particle wedged between sleepers rattling at full speed.
+    const bool offStatic = aStays || bStays;
+    double e = effectiveRestitution(approach, recent && !offStatic);
+    // And a rebound off it slower than the rest speed ends the approach, as on a wall the
+    // particle rests on: a particle in a slot between sleepers stops instead of rattling.
+    if (offStatic && approach * e < restSpeed_) e = 0.0;
     const bool hit = def_.friction > 0.0
                          ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
                                               cold_[j].m, n, e, def_.friction)
@@ -802,8 +867,10 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
     }
     ++a.count;
-    if (gravity_ && !(a.flags & kHeld) && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ &&
-        mayRest(i, ev.time) && supported(i)) {
+    if (gravity_ && !(a.flags & kHeld) &&
+        ((a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time) &&
+          supported(i)) ||
+         rattles(i, ev.time))) {
         fallAsleep(i, ev.time);
     }
     predictCollision(i, ev.time);
@@ -845,8 +912,9 @@ void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
     const Cold& ac = cold_[i];
     if ((a.flags & kRestX) && !ac.pinX && a.vx != 0.0) a.flags &= ~kRestX;
     if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
-    if (!justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t) &&
-        supported(i)) {
+    if ((!justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t) &&
+         supported(i)) ||
+        rattles(i, a.t)) {
         fallAsleep(i, a.t);
     }
 }
@@ -868,13 +936,32 @@ bool ExactStepper::supported(std::uint32_t i) const {
         if (a.y - a.r <= restGap_) add(0.0, -1.0);
         if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
     }
+    // A slow free neighbour counts as well, as long as something static is among the supports:
+    // an arch of two discs leaning on each other on the pile would otherwise wait for the other
+    // to sleep first, and neither would; two discs falling side by side have nothing static.
+    bool anchored = count > 0;
     forEachAround(i, [&](std::uint32_t q) {
         const Body& b = bodies_[q];
-        if (q == i || !isStatic(b)) return;
-        const double rx = b.x - a.x, ry = b.y - a.y;  // b does not move: b.x is now
+        if (q == i || (b.flags & kHeld && !isStatic(b))) return;
+        const bool still = isStatic(b);
+        double bx = b.x, by = b.y;  // a static b does not move: b.x is now
+        if (!still) {
+            // With e = 1 only what is static holds; a neighbour woken (or rebuilt) less than
+            // kSettleTime ago may be falling away.
+            if (def_.restitution >= 1.0 || a.t < kSettleTime) return;
+            const Motion m = motionAt(b, a.t);
+            if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
+            bx = m.x;
+            by = m.y;
+        }
+        const double rx = bx - a.x, ry = by - a.y;
         const double d = std::sqrt(rx * rx + ry * ry);
-        if (d > 0.0 && d - (a.r + b.r) <= restGap_) add(rx / d, ry / d);
+        if (d > 0.0 && d - (a.r + b.r) <= restGap_) {
+            add(rx / d, ry / d);
+            anchored = anchored || still;
+        }
     });
+    if (!anchored) return false;
     // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
     // than that does not slide off it. Without friction gravity must lie strictly between the
     // normals (or along one, to within 1e-9 rad).
@@ -891,12 +978,12 @@ bool ExactStepper::supported(std::uint32_t i) const {
     bool left = false, right = false;
     for (int k = 0; k < count; ++k) {
         const double d = offset(k);
-        if (std::abs(d) <= std::max(slack, kRestSlope)) return true;
+        if (std::abs(d) <= slack) return true;
         if (d < 0.0 && d > lo) lo = d, left = true;
         if (d > 0.0 && d < hi) hi = d, right = true;
     }
     // Two normals on either side of gravity, less than a half turn apart (widened by friction).
-    return left && right && hi - lo < pi + 2.0 * slack;
+    return left && right && hi - lo < pi + 2.0 * std::atan(def_.friction) - 1e-9;
 }
 
 void ExactStepper::fallAsleep(std::uint32_t i, double now) {
@@ -1008,15 +1095,21 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     }
 }
 
-void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
+double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
     std::uint64_t processed = 0;
     for (;;) {
         const EventQueue::Entry top = queue_.top();
         if (!(top.time <= tEnd)) break;
         if (++processed > budget) {
             stats_.budgetExhausted = true;
-            stale_ = true;  // fly the rest freely; the next step rebuilds
-            break;
+            if (!gravity_) {
+                stale_ = true;  // fly the rest freely; the next step rebuilds
+                return tEnd;
+            }
+            // Under gravity flying freely would drop particles through the floor and into each
+            // other. The state is exact up to the next event: the step ends there, the time
+            // left is not simulated, and the next step goes on from there, the queue as it is.
+            return top.time;
         }
         if (++eventsSinceSort_ > kResortEvery * bodies_.size()) {
             // Particles drift away from the neighbours they were stored next to; restoring
@@ -1047,9 +1140,10 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
                 handleWall(i, ev, counters);
                 break;
             case Kind::None:
-                return;  // unreachable: None events are at +infinity
+                return tEnd;  // unreachable: None events are at +infinity
         }
     }
+    return tEnd;
 }
 
 void ExactStepper::sync(ParticleArrays& p) {
@@ -1108,11 +1202,12 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     maxOverlap_ = counters.maxOverlap;
     const double tEnd = clock_ + dt;
     const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
+    double reached = tEnd;
     {
         StageTimer t(eventsMs);
-        runEvents(tEnd, counters, budget);
+        reached = runEvents(tEnd, counters, budget);
     }
-    clock_ = tEnd;
+    clock_ = reached;
     syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
     counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale;
@@ -1123,7 +1218,7 @@ std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
-                        queue_.memoryBytes();
+                        queue_.memoryBytes() + rate_.memoryBytes();
     for (const Level& level : upper_)
         bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one
