@@ -64,6 +64,12 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         restSpeed_ = def.restitution < 1.0
                          ? kRestSpeed
                          : std::sqrt(2.0 * g * kRestRoundingGap * std::max(def.width, def.height));
+        // In a scene of large discs under strong gravity the rest speed is the speed of a hop
+        // of kRestHop radii, so that resting means the same there as in a scene at human scale.
+        if (def.restitution < 1.0 && p.size() > 0) {
+            const double rmin = *std::min_element(p.radius.begin(), p.radius.end());
+            restSpeed_ = std::max(restSpeed_, std::sqrt(2.0 * g * kRestHop * rmin));
+        }
         restGap_ = restSpeed_ * restSpeed_ / (2.0 * g);
     }
     const auto n = static_cast<std::uint32_t>(p.size());

@@ -156,9 +156,10 @@
 // at that instant); it wakes as any sleeper does. The count is in simulated time, so it does
 // not depend on how steps chop it; particles a rebuild sets free are left alone by it for
 // kSettleTime (they are falling).
-// restSpeed_ is kRestSpeed for e < 1; with e = 1 it is the speed of a fall through rounding
-// (kRestRoundingGap of the box), so that only particles placed at rest on a support rest, and
-// nothing moving ever sleeps (the free-neighbour and rattle rules are off). restGap_ is the
+// restSpeed_ is kRestSpeed for e < 1, or the speed of a hop of kRestHop smallest radii if that
+// is higher (large discs under strong gravity); with e = 1 it is the speed of a fall through
+// rounding (kRestRoundingGap of the box), so that only particles placed at rest on a support rest,
+// and nothing moving ever sleeps (the free-neighbour and rattle rules are off). restGap_ is the
 // height of a hop at restSpeed_, restSpeed_²/(2g): waking a sleeper lets it fall at most that
 // far, which reaches only restSpeed_ and does not wake what is under it.
 // A rebuild (any change to the world) keeps what sleeps where it slept, if the laws (gravity,
@@ -226,6 +227,12 @@ inline constexpr double kSettleTime = 0.05;
 /// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see the design
 /// note). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
 inline constexpr double kRestSpeed = 0.05;
+
+/// Under gravity with e < 1: the rest speed is at least that of a hop this many smallest
+/// radii high, √(2·g·kRestHop·r): 5·10⁻⁴ is the hop at kRestSpeed of a 0.25 m disc under
+/// 9.81 m/s² (the pile preset), so scenes at that scale keep kRestSpeed, and a scene of 2.5 m
+/// discs under 343 m/s² (the gas preset with the app's gravity) rests below 0.93 m/s.
+inline constexpr double kRestHop = 5e-4;
 
 /// Under gravity with e = 1: the fall, as a fraction of the box's larger side, that sets the
 /// rest speed, √(2·g·fall). 10⁻¹² is a few thousand ulps of a coordinate: a particle placed at
