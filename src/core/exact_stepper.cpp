@@ -11,6 +11,7 @@
 #include "stage_timer.hpp"
 
 namespace psb::exact {
+
 namespace {
 
 // Cells a little wider than the largest diameter, so that a centre a few ulps outside the cell
@@ -44,6 +45,15 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 }  // namespace
 
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
+    // What was asleep before, where it was (gravity only; see the design note, Resting).
+    std::unordered_map<ParticleId, Body> before;
+    const bool sameLaws = gravity_ && def.gravity == def_.gravity && def.width == def_.width &&
+                          def.height == def_.height && def.walls == def_.walls &&
+                          def.restitution == def_.restitution && def.friction == def_.friction;
+    if (sameLaws) {
+        for (std::uint32_t i = 0; i < bodies_.size(); ++i)
+            before.emplace(ids_[i], bodies_[i]);
+    }
     def_ = def;
     clock_ = 0.0;
     gx_ = def.gravity.x();
@@ -54,6 +64,12 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         restSpeed_ = def.restitution < 1.0
                          ? kRestSpeed
                          : std::sqrt(2.0 * g * kRestRoundingGap * std::max(def.width, def.height));
+        // In a scene of large discs under strong gravity the rest speed is the speed of a hop
+        // of kRestHop radii, so that resting means the same there as in a scene at human scale.
+        if (def.restitution < 1.0 && p.size() > 0) {
+            const double rmin = *std::min_element(p.radius.begin(), p.radius.end());
+            restSpeed_ = std::max(restSpeed_, std::sqrt(2.0 * g * kRestHop * rmin));
+        }
         restGap_ = restSpeed_ * restSpeed_ / (2.0 * g);
     }
     const auto n = static_cast<std::uint32_t>(p.size());
@@ -64,6 +80,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     ids_ = p.id;
     heldHit_.clear();
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
+    rate_.reset(gravity_ ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -109,11 +126,56 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         insertMember(i);
     recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
+    if (!before.empty()) keepSleepers(before);
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
         predictCell(i, 0.0);
     }
     stale_ = false;
+}
+
+void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
+    // A sleeper still where it slept, at rest, sleeps on. Everything else is a disturbance: a
+    // particle removed (where it was), added, moved or set in motion (where it is now); the
+    // sleepers it touches wake, and with them what rests on them.
+    struct Spot {
+        double x, y, r;
+    };
+    std::vector<Spot> spots;
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        Body& b = bodies_[i];
+        const auto it = before.find(ids_[i]);
+        const bool same = it != before.end() && it->second.x == b.x && it->second.y == b.y &&
+                          it->second.r == b.r && b.vx == 0.0 && b.vy == 0.0;
+        if (same && (it->second.flags & kAsleep) && !(b.flags & kHeld)) {
+            b.flags |= kAsleep;
+        } else if (!same || (b.flags & kHeld)) {
+            spots.push_back({b.x, b.y, b.r});
+        }
+        if (it != before.end()) before.erase(it);
+    }
+    for (const auto& [id, b] : before)  // removed
+        spots.push_back({b.x, b.y, b.r});
+    // A change to many particles at once (a setter, a load) starts everything afresh.
+    if (spots.size() > kMaxDisturbances) {
+        for (Body& b : bodies_)
+            b.flags &= ~kAsleep;
+        return;
+    }
+    for (const Spot& s : spots) {
+        for (std::uint32_t q = 0; q < n; ++q) {
+            const Body& b = bodies_[q];
+            if (!(b.flags & kAsleep)) continue;
+            const double reach = s.r + b.r + restGap_;
+            const double dx = b.x - s.x, dy = b.y - s.y;
+            if (dx * dx + dy * dy <= reach * reach) wake(q, 0.0);
+        }
+    }
+    // What the changes set free falls: the rattle guard leaves it alone for a while.
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (!(bodies_[i].flags & kAsleep)) rate_.quiet(i, kSettleTime);
+    }
 }
 
 double ExactStepper::bucketWidth() const {
@@ -153,7 +215,10 @@ void ExactStepper::sortByCell(bool midRun) {
     permute(cold_);
     permute(order_);
     permute(ids_);
-    if (gravity_) permute(wokeAt_);
+    if (gravity_) {
+        permute(wokeAt_);
+        rate_.renumber(to);
+    }
     if (midRun) {
         // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));
@@ -727,7 +792,13 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         bStays = hitsSleeper(j, i);
     }
     const double wi = aStays ? 0.0 : cold_[i].w, wj = bStays ? 0.0 : cold_[j].w;
-    const double e = effectiveRestitution(approach, recent);
+    // Off a sleeper, which does not move, a bounce cannot start a collapse: the TC model's
+    // elastic rule would only keep a particle wedged between sleepers rattling at full speed.
+    const bool offStatic = aStays || bStays;
+    double e = effectiveRestitution(approach, recent && !offStatic);
+    // And a rebound off it slower than the rest speed ends the approach, as on a wall the
+    // particle rests on: a particle in a slot between sleepers stops instead of rattling.
+    if (offStatic && approach * e < restSpeed_) e = 0.0;
     const bool hit = def_.friction > 0.0
                          ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
                                               cold_[j].m, n, e, def_.friction)
@@ -806,8 +877,10 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
     }
     ++a.count;
-    if (gravity_ && !(a.flags & kHeld) && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ &&
-        mayRest(i, ev.time) && supported(i)) {
+    if (gravity_ && !(a.flags & kHeld) &&
+        ((a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time) &&
+          supported(i)) ||
+         rattles(i, ev.time))) {
         fallAsleep(i, ev.time);
     }
     predictCollision(i, ev.time);
@@ -849,28 +922,27 @@ void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
     const Cold& ac = cold_[i];
     if ((a.flags & kRestX) && !ac.pinX && a.vx != 0.0) a.flags &= ~kRestX;
     if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
-    if (!justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t) &&
-        supported(i)) {
+    if ((!justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t) &&
+         supported(i)) ||
+        rattles(i, a.t)) {
         fallAsleep(i, a.t);
     }
 }
 
 bool ExactStepper::supported(std::uint32_t i) const {
     // The contact normals (from i to what holds it) of everything within restGap_ that does not
-    // move: walls, sleepers, held particles at rest. i cannot slide off if gravity lies in the
-    // cone they span (along one of them, or between two).
+    // move: walls, sleepers, held particles at rest, obstacles. i cannot slide off if gravity
+    // lies in the cone they span (along one of them, or between two).
     const Body& a = bodies_[i];
     constexpr int kMax = 16;
     // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
     // than that does not slide off it. Without friction gravity must lie strictly between the
-    // normals (or along one, to within 1e-9 rad). A disc rests on one wall or particle within
-    // kRestSlope of gravity; on one obstacle (a ramp, a peg) only within the friction angle, so
-    // that it slides down a slope steeper than that.
+    // normals (or along one, to within 1e-9 rad).
     const double slack = std::atan(def_.friction) + 1e-9;
     double nx[kMax], ny[kMax], cone[kMax];
     int count = 0;
     const auto add = [&](double x, double y) {
-        if (count < kMax) nx[count] = x, ny[count] = y, cone[count++] = std::max(slack, kRestSlope);
+        if (count < kMax) nx[count] = x, ny[count] = y, cone[count++] = slack;
     };
     if (def_.walls) {
         if (a.x - a.r <= restGap_) add(-1.0, 0.0);
@@ -878,14 +950,33 @@ bool ExactStepper::supported(std::uint32_t i) const {
         if (a.y - a.r <= restGap_) add(0.0, -1.0);
         if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
     }
+    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, cone, count, kMax);
+    // A slow free neighbour counts as well, as long as something static is among the supports:
+    // an arch of two discs leaning on each other on the pile would otherwise wait for the other
+    // to sleep first, and neither would; two discs falling side by side have nothing static.
+    bool anchored = count > 0;
     forEachAround(i, [&](std::uint32_t q) {
         const Body& b = bodies_[q];
-        if (q == i || !isStatic(b)) return;
-        const double rx = b.x - a.x, ry = b.y - a.y;  // b does not move: b.x is now
+        if (q == i || (b.flags & kHeld && !isStatic(b))) return;
+        const bool still = isStatic(b);
+        double bx = b.x, by = b.y;  // a static b does not move: b.x is now
+        if (!still) {
+            // With e = 1 only what is static holds; a neighbour woken (or rebuilt) less than
+            // kSettleTime ago may be falling away.
+            if (def_.restitution >= 1.0 || a.t < kSettleTime) return;
+            const Motion m = motionAt(b, a.t);
+            if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
+            bx = m.x;
+            by = m.y;
+        }
+        const double rx = bx - a.x, ry = by - a.y;
         const double d = std::sqrt(rx * rx + ry * ry);
-        if (d > 0.0 && d - (a.r + b.r) <= restGap_) add(rx / d, ry / d);
+        if (d > 0.0 && d - (a.r + b.r) <= restGap_) {
+            add(rx / d, ry / d);
+            anchored = anchored || still;
+        }
     });
-    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, cone, count, kMax);
+    if (!anchored) return false;
     const double pi = 3.14159265358979323846;
     const double ga = std::atan2(gy_, gx_);
     const auto offset = [&](int k) {  // angle from gravity to normal k, in (-pi, pi]
@@ -903,7 +994,7 @@ bool ExactStepper::supported(std::uint32_t i) const {
         if (d > 0.0 && d < hi) hi = d, right = true;
     }
     // Two normals on either side of gravity, less than a half turn apart (widened by friction).
-    return left && right && hi - lo < pi + 2.0 * slack;
+    return left && right && hi - lo < pi + 2.0 * std::atan(def_.friction) - 1e-9;
 }
 
 void ExactStepper::fallAsleep(std::uint32_t i, double now) {
@@ -1018,15 +1109,21 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     }
 }
 
-void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
+double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
     std::uint64_t processed = 0;
     for (;;) {
         const EventQueue::Entry top = queue_.top();
         if (!(top.time <= tEnd)) break;
         if (++processed > budget) {
             stats_.budgetExhausted = true;
-            stale_ = true;  // fly the rest freely; the next step rebuilds
-            break;
+            if (!gravity_) {
+                stale_ = true;  // fly the rest freely; the next step rebuilds
+                return tEnd;
+            }
+            // Under gravity flying freely would drop particles through the floor and into each
+            // other. The state is exact up to the next event: the step ends there, the time
+            // left is not simulated, and the next step goes on from there, the queue as it is.
+            return top.time;
         }
         if (++eventsSinceSort_ > kResortEvery * bodies_.size()) {
             // Particles drift away from the neighbours they were stored next to; restoring
@@ -1060,9 +1157,10 @@ void ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t 
                 handleObstacle(i, ev, counters);
                 break;
             case Kind::None:
-                return;  // unreachable: None events are at +infinity
+                return tEnd;  // unreachable: None events are at +infinity
         }
     }
+    return tEnd;
 }
 
 void ExactStepper::sync(ParticleArrays& p) {
@@ -1121,11 +1219,12 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     maxOverlap_ = counters.maxOverlap;
     const double tEnd = clock_ + dt;
     const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
+    double reached = tEnd;
     {
         StageTimer t(eventsMs);
-        runEvents(tEnd, counters, budget);
+        reached = runEvents(tEnd, counters, budget);
     }
-    clock_ = tEnd;
+    clock_ = reached;
     syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
     counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale + stats_.obstacles;
@@ -1136,7 +1235,7 @@ std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
-                        queue_.memoryBytes() + obstacles_.memoryBytes();
+                        queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes();
     for (const Level& level : upper_)
         bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one

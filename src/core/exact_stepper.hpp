@@ -137,27 +137,47 @@
 //     the particle resting on the wall (its velocity and acceleration across the wall zero); it
 //     still slides along it;
 //   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
-//     acceleration, no cell events) if the supports within restGap_ (walls, sleepers, held
-//     particles at rest, obstacles) hold it: one whose contact normal is within kRestSlope of
-//     gravity (an obstacle: within atan(mu)), or two on either side of it, each normal's cone
-//     widened by the friction angle atan(mu);
-//     a particle woken less than kContactDuration ago does not fall asleep again;
+//     acceleration, no cell events) if the supports within restGap_ hold it: one whose contact
+//     normal is within the friction angle atan(mu) of gravity, or two on either side of it,
+//     each normal's cone widened by that angle (frictionless: gravity strictly between them).
+//     Supports are walls, sleepers, held particles at rest and obstacles, and, with e < 1 and
+//     at least one of those among them, free neighbours slower than restSpeed_ (not in the
+//     first kSettleTime after a rebuild): without them an arch of discs leaning on each other waits
+//     for the others to sleep first, and none does. A particle woken less than
+//     kContactDuration ago does not fall asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
 //     wakes, with every sleeper it supported (transitively: the ones resting
-//     on it); slower hits bounce off it as off an infinitely heavy disc;
+//     on it); slower hits bounce off it as off an infinitely heavy disc, with the restitution
+//     e itself (no TC rule: a sleeper does not move, so there is no collapse to prevent, and the
+//     elastic rule only kept a disc wedged between sleepers rattling at full speed) and with
+//     none if the rebound would be slower than restSpeed_ (it stops, as on a wall it rests on);
 //   - a pair that gravity presses together (one falls and the other does not: it is asleep,
 //     held or resting on a wall) and that leaves a collision slower than restSpeed_ / 2 leaves
 //     at restSpeed_ / 2 (an impulse shared as the collision shares it): a particle on the side
 //     of its support hops down it instead of making ever faster tiny bounces on it, and no
 //     pair is ever predicted to touch again at the same instant.
-// restSpeed_ is kRestSpeed for e < 1; with e = 1 it is the speed of a fall through rounding
-// (kRestRoundingGap of the box), so that only particles placed at rest on a support rest, and
-// nothing moving ever sleeps. restGap_ is the height of a hop at restSpeed_, restSpeed_²/(2g):
-// waking a sleeper lets it fall at most that far, which reaches only restSpeed_ and does not
-// wake what is under it. A rebuild (any change to the world) wakes everything; a settled pile
-// settles again in a few events per particle, so a removed support lets the ones above fall.
-// Limit: a frictionless pile, or one with e = 0, does not settle yet (docs/exact.md).
+// Rattling (e < 1). Where the weight of a frictionless pile has to be carried by collisions
+// alone, the hard-disc model carries it by ever more frequent ones (a disc squeezed between
+// two others on a floor it slides on, a cluster collapsing, McNamara & Young 1994): the rules
+// above do not bound them. So a particle that collides more than kRattleLimit times within
+// kRattleWindow of simulated time falls asleep where it is (it is caught among its neighbours
+// at that instant); it wakes as any sleeper does. The count is in simulated time, so it does
+// not depend on how steps chop it; particles a rebuild sets free are left alone by it for
+// kSettleTime (they are falling).
+// restSpeed_ is kRestSpeed for e < 1, or the speed of a hop of kRestHop smallest radii if that
+// is higher (large discs under strong gravity); with e = 1 it is the speed of a fall through
+// rounding (kRestRoundingGap of the box), so that only particles placed at rest on a support rest,
+// and nothing moving ever sleeps (the free-neighbour and rattle rules are off). restGap_ is the
+// height of a hop at restSpeed_, restSpeed_²/(2g): waking a sleeper lets it fall at most that
+// far, which reaches only restSpeed_ and does not wake what is under it.
+// A rebuild (any change to the world) keeps what sleeps where it slept, if the laws (gravity,
+// box, walls, restitution, friction) are unchanged: a particle removed, added, moved or set in
+// motion wakes the sleepers within restGap_ of it (and so what rests on them); more than
+// kMaxDisturbances such changes, or changed laws, wake everything. A drag through a settled
+// pile therefore wakes only what the dragged particle touches.
+// The event budget under gravity ends the step at the first event left (see
+// kMaxEventsPerParticlePerStep): never a particle through the floor.
 
 #include <cstdint>
 #include <unordered_map>
@@ -170,6 +190,7 @@
 #include "cell_list.hpp"
 #include "contact.hpp"
 #include "event_queue.hpp"
+#include "exact_collision_rate.hpp"
 #include "exact_obstacle_cells.hpp"
 
 namespace psb::exact {
@@ -189,10 +210,11 @@ inline constexpr double kElasticBelowSpeed = 1e-3;
 /// rest of the step.
 inline constexpr std::uint32_t kJamLimit = 1000;
 
-/// Events one step may process per particle (plus a fixed allowance) before the rest of the
-/// step is flown without collisions: a last-resort guard that keeps the app responsive. It is
-/// never reached by the scenes and tests; if it is, the next step starts from a rebuild, where
-/// the invalid-state rules above resolve any overlap left behind.
+/// Events one step may process per particle (plus a fixed allowance) before the step ends
+/// early: a last-resort guard that keeps the app responsive. The state is then the exact one
+/// at the first event left (nothing overlaps, nothing is past a wall), and the rest of the
+/// step's time is not simulated; the next step goes on from there. No scene or test that
+/// settles reaches it.
 inline constexpr std::uint64_t kMaxEventsPerParticlePerStep = 10000;
 
 /// Under gravity: hits on sleeping particles in one step after which a particle wakes the
@@ -200,13 +222,27 @@ inline constexpr std::uint64_t kMaxEventsPerParticlePerStep = 10000;
 /// below the step's event budget. No scene or test reaches it.
 inline constexpr std::uint32_t kWakeAfterHits = 100000;
 
-/// Under gravity: a slow particle rests on one support whose contact normal is within this
-/// angle (radians) of gravity; beyond it, only between two.
-inline constexpr double kRestSlope = 1.0471975511965976;  // 60°
+/// Under gravity with e < 1, the rattle guard (see the design note): a particle that collides
+/// more than kRattleLimit times within kRattleWindow seconds of simulated time falls asleep
+/// where it is. 200 collisions in a millisecond (2·10⁵ per second): the rattles measured in the
+/// frictionless pile preset were 10⁵ collisions of one pair within one 1/60 s step.
+inline constexpr std::uint32_t kRattleLimit = 200;
+inline constexpr double kRattleWindow = 1e-3;
+
+/// Under gravity with e < 1: for this long after a rebuild (seconds) slow free neighbours do not
+/// hold a particle up and the rattle guard leaves alone what the rebuild set free: ten times
+/// the u_r/g = 5 ms in which a particle set free from rest is still slower than the rest speed.
+inline constexpr double kSettleTime = 0.05;
 
 /// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see the design
 /// note). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
 inline constexpr double kRestSpeed = 0.05;
+
+/// Under gravity with e < 1: the rest speed is at least that of a hop this many smallest
+/// radii high, √(2·g·kRestHop·r): 5·10⁻⁴ is the hop at kRestSpeed of a 0.25 m disc under
+/// 9.81 m/s² (the pile preset), so scenes at that scale keep kRestSpeed, and a scene of 2.5 m
+/// discs under 343 m/s² (the gas preset with the app's gravity) rests below 0.93 m/s.
+inline constexpr double kRestHop = 5e-4;
 
 /// Under gravity with e = 1: the fall, as a fraction of the box's larger side, that sets the
 /// rest speed, √(2·g·fall). 10⁻¹² is a few thousand ulps of a coordinate: a particle placed at
@@ -310,6 +346,11 @@ class ExactStepper {
     };
 
     void rebuild(ParticleArrays& p, const WorldDef& def);
+    // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
+    // changes touch wakes (see the design note).
+    void keepSleepers(std::unordered_map<ParticleId, Body>& before);
+    // Changed particles beyond which a rebuild wakes everything (an O(N) search per change).
+    static constexpr std::size_t kMaxDisturbances = 64;
     void setUpGrid();
     void sortByCell(bool midRun);
     [[nodiscard]] double bucketWidth() const;
@@ -354,6 +395,9 @@ class ExactStepper {
     void wake(std::uint32_t i, double now);
     void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n);
     void settleAfterPair(std::uint32_t i, bool justWoken);
+    [[nodiscard]] bool rattles(std::uint32_t i, double now) {
+        return def_.restitution < 1.0 && rate_.exceeds(i, now, kRattleWindow, kRattleLimit);
+    }
     void recordPlacedOverlaps();
     [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
         return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
@@ -373,7 +417,9 @@ class ExactStepper {
                          int max) const;
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
-    void runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
+    // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
+    // the budget ran out, the time of the first event left.
+    double runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
     // Counts a hit of i on a held particle or a sleeper this step (heldHits, reset per step);
     // returns the count.
     std::uint32_t countHit(std::uint32_t i);
@@ -390,6 +436,7 @@ class ExactStepper {
     // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
     // by the next event of the cascade that woke it.
     std::vector<double> wokeAt_;
+    CollisionRate rate_;  // the rattle guard's counts (gravity only)
     double clock_ = 0.0;  // seconds since the last rebuild
     // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
     // three short runs of memory; order_ maps this order back to the world's storage indices.

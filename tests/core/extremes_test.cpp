@@ -236,13 +236,6 @@ TEST_P(Extremes, DensePackingJammedFor1e5Steps) {
 
 TEST_P(Extremes, InelasticPileUnderGravitySettles) {
     const WorldDef def{.width = 100.0, .height = 100.0, .gravity = {0.0, 9.81}, .restitution = 0.0};
-    if (GetParam().mode == StepMode::Exact) {
-        // Not yet: in the event-driven mode a perfectly inelastic (e = 0) frictionless pile
-        // collapses into ever denser cascades of collisions and runs out of its per-step event
-        // budget (docs/exact.md, "Choices and limits"); piles with e > 0 and friction settle
-        // (exact_gravity_test.cpp).
-        GTEST_SKIP() << "e = 0 frictionless pile: a documented limit of the exact mode";
-    }
     World w = makeWorld(def);
     for (int k = 0; k < 60; ++k) {
         w.add({.position = {10.0 + 13.0 * (k % 7), 10.0 + 8.0 * (k / 7)},
