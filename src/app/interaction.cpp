@@ -8,6 +8,12 @@
 
 namespace psb::app {
 
+Color SpawnSettings::color() const {
+    if (fixedColor) return *fixedColor;
+    const double t = std::clamp((mass - kMinMass) / (kMaxMass - kMinMass), 0.0, 1.0);
+    return {static_cast<std::uint8_t>(120 + 135 * t), 200, static_cast<std::uint8_t>(255 - 135 * t)};
+}
+
 void SpawnSettings::changeMass(double delta) {
     mass = std::clamp(mass + delta, kMinMass, kMaxMass);
 }
@@ -133,14 +139,14 @@ void Interaction::record(const Vec2& point, double time) {
     }
 }
 
-void Interaction::press(World& world, const Vec2& point, double time) {
+void Interaction::press(World& world, const Vec2& point, double time, bool grab) {
     if (mode_ != Mode::Idle) return;  // a second press while one is active is ignored
     samples_.clear();
     pressPoint_ = point;
     pressTime_ = time;
     travel_ = 0.0;
     record(point, time);
-    if (const auto id = world.pick(point)) {
+    if (const auto id = grab ? world.pick(point) : std::nullopt) {
         held_ = *id;
         const Particle p = world.get(*id);
         grabOffset_ = p.position - point;
@@ -221,11 +227,7 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
             def.velocity = launched.velocity;
             def.mass = spawn.mass;
             def.radius = spawn.radius();
-            // A colour that depends on the mass, light enough to read on black.
-            const double t = (spawn.mass - SpawnSettings::kMinMass) /
-                             (SpawnSettings::kMaxMass - SpawnSettings::kMinMass);
-            def.color = {static_cast<std::uint8_t>(120 + 135 * t), 200,
-                         static_cast<std::uint8_t>(255 - 135 * t)};
+            def.color = spawn.color();
             result.kind = ReleaseResult::Kind::Launched;
             result.id = world.add(def);
             result.position = *spot;

@@ -44,8 +44,17 @@ struct SpawnSettings {
     /// Lengths relative to the original's 700 m box: a scene's smaller box side / 700 m, so a
     /// billiard table gets billiard-sized particles.
     double lengthScale = 1.0;
-    /// The original's rule, radius = 2.5 metres per kilogram of mass, times lengthScale.
-    [[nodiscard]] double radius() const { return 2.5 * mass * lengthScale; }
+    /// Set from the control panel: a fixed radius (m) instead of the rule, a fixed colour
+    /// instead of one from the mass.
+    std::optional<double> fixedRadius;
+    std::optional<Color> fixedColor;
+    /// fixedRadius, else the original's rule, radius = 2.5 metres per kilogram of mass, times
+    /// lengthScale.
+    [[nodiscard]] double radius() const {
+        return fixedRadius ? *fixedRadius : 2.5 * mass * lengthScale;
+    }
+    /// fixedColor, else a colour from the mass, light enough to read on black.
+    [[nodiscard]] Color color() const;
     void changeMass(double delta);
 };
 
@@ -105,8 +114,9 @@ class Interaction {
     static constexpr double kClickSeconds = 0.3;
 
     /// The left button went down at `point` (world metres) at `time` (seconds, any clock that
-    /// the later calls share). Grabs the topmost particle there, or starts a launch drag.
-    void press(World& world, const Vec2& point, double time);
+    /// the later calls share). Grabs the topmost particle there (unless `grab` is false), or
+    /// starts a launch drag.
+    void press(World& world, const Vec2& point, double time, bool grab = true);
     /// The pointer is now at `point` (a motion, or the camera moved under a still pointer).
     void moveTo(const Vec2& point, double time);
     /// Puts the held particle where the hand is (pointer + grab offset, kept in the box) with

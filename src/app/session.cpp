@@ -24,6 +24,19 @@ std::string fmt(const char* format, double a, double b) {
 }
 
 /// A stepping speed (simulated per real second) for the HUD and messages: "x2", "x0.25".
+/// The control panel's commands: the mouse sends them, so the edit prompt (which takes the
+/// keyboard) does not hold them back.
+template <class T>
+constexpr bool isPanelCommand() {
+    return std::is_same_v<T, cmd::SetRestitution> || std::is_same_v<T, cmd::SetFriction> ||
+           std::is_same_v<T, cmd::SetGravity> || std::is_same_v<T, cmd::SetWalls> ||
+           std::is_same_v<T, cmd::SetMode> || std::is_same_v<T, cmd::SetTimeScale> ||
+           std::is_same_v<T, cmd::SetTool> || std::is_same_v<T, cmd::SetLaunchBody> ||
+           std::is_same_v<T, cmd::EditParticle> || std::is_same_v<T, cmd::Select> ||
+           std::is_same_v<T, cmd::SetShow> || std::is_same_v<T, cmd::SetTrails> ||
+           std::is_same_v<T, cmd::ToggleControls> || std::is_same_v<T, cmd::SaveAs>;
+}
+
 std::string speedText(double s) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "x%g", s);
@@ -49,6 +62,8 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
+    for (const auto& file : options_.presets)
+        presets_.push_back(describeScene(file));
     setWorld(std::move(world), std::move(sceneName));
 }
 
@@ -71,6 +86,7 @@ void Session::setWorld(World world, std::string name) {
     changedSinceMeasure_ = true;
     fit();
     accuracy_.resetReference(monitoredEnergy(world_));
+    exactRefusal_ = exactModeRefusal(world_);
 }
 
 std::vector<Notice> Session::takeNotices() {
@@ -93,7 +109,11 @@ void Session::log(std::string text, Notice::Level level) {
     notices_.push_back({level, std::move(text), false, true});
 }
 
-void Session::userAction() {
+void Session::userAction(const char* what, bool continues) {
+    if (!continues || lastAction_ != what) {
+        ++userActions_;
+        lastAction_ = what;
+    }
     accuracy_.resetReference(monitoredEnergy(world_));
     dirty_ = true;
     changedSinceMeasure_ = true;
@@ -165,7 +185,7 @@ void Session::apply(const Command& command) {
                        std::is_same_v<T, cmd::Screenshot> || std::is_same_v<T, cmd::Resize> ||
                        std::is_same_v<T, cmd::PointerDown> || std::is_same_v<T, cmd::PointerMove> ||
                        std::is_same_v<T, cmd::PointerUp> || std::is_same_v<T, cmd::Zoom> ||
-                       std::is_same_v<T, cmd::Pan>;
+                       std::is_same_v<T, cmd::Pan> || isPanelCommand<T>();
             },
             command);
         if (!allowed) return;
@@ -225,9 +245,7 @@ void Session::apply(const Command& command) {
             } else if constexpr (std::is_same_v<T, cmd::SingleStep>) {
                 if (paused_) stepRequested_ = true;
             } else if constexpr (std::is_same_v<T, cmd::ScaleTime>) {
-                timeScale_ = std::clamp(timeScale_ * c.factor, kMinTimeScale, kMaxTimeScale);
-                reached_ = timeScale_;
-                say("Time speed " + speedText(timeScale_));
+                setTimeScale(timeScale_ * c.factor);
             } else if constexpr (std::is_same_v<T, cmd::SpawnRandom>) {
                 spawnRandom();
             } else if constexpr (std::is_same_v<T, cmd::ChangeSpawnMass>) {
@@ -266,6 +284,36 @@ void Session::apply(const Command& command) {
                 back();
             } else if constexpr (std::is_same_v<T, cmd::Quit>) {
                 quit();
+            } else if constexpr (std::is_same_v<T, cmd::SetRestitution>) {
+                setRestitution(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetFriction>) {
+                setFriction(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetGravity>) {
+                setGravity(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetWalls>) {
+                setWalls(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetMode>) {
+                setMode(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetTimeScale>) {
+                setTimeScale(c.value);
+            } else if constexpr (std::is_same_v<T, cmd::SetTool>) {
+                tool_ = c.tool;
+                panFrom_.reset();
+            } else if constexpr (std::is_same_v<T, cmd::SetLaunchBody>) {
+                setLaunchBody(c);
+            } else if constexpr (std::is_same_v<T, cmd::EditParticle>) {
+                editParticle(c);
+            } else if constexpr (std::is_same_v<T, cmd::Select>) {
+                select(c.id);
+            } else if constexpr (std::is_same_v<T, cmd::SetShow>) {
+                setShow(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetTrails>) {
+                view_.trails = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
+            } else if constexpr (std::is_same_v<T, cmd::ToggleControls>) {
+                showControls_ = !showControls_;
+                if (fitted_) fit();
+            } else if constexpr (std::is_same_v<T, cmd::SaveAs>) {
+                saveAs(c);
             } else {
                 static_assert(sizeof(T) == 0, "a command without a handler");
             }
@@ -279,7 +327,12 @@ void Session::apply(const Command& command) {
 void Session::pointerDown(const cmd::PointerDown& c) {
     pointer_ = c.screen;
     pointerTime_ = c.time;
-    interaction_.press(world_, pointerWorld(), c.time);
+    if (tool_ == cmd::Tool::Pan) {
+        panFrom_ = c.screen;
+        return;
+    }
+    if (tool_ == cmd::Tool::Select) return;  // the release selects
+    interaction_.press(world_, pointerWorld(), c.time, tool_ == cmd::Tool::Fling);
     if (interaction_.mode() == Interaction::Mode::Holding) {
         const Particle p = world_.get(interaction_.held());
         log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
@@ -289,6 +342,12 @@ void Session::pointerDown(const cmd::PointerDown& c) {
 }
 
 void Session::pointerMove(const cmd::PointerMove& c) {
+    if (panFrom_) {
+        camera_.panPixels(c.screen - *panFrom_);
+        camera_.keepNear(world_.def().width, world_.def().height);
+        panFrom_ = c.screen;
+        fitted_ = false;
+    }
     pointer_ = c.screen;
     pointerTime_ = c.time;
     interaction_.moveTo(pointerWorld(), c.time);
@@ -297,6 +356,17 @@ void Session::pointerMove(const cmd::PointerMove& c) {
 void Session::pointerUp(const cmd::PointerUp& c) {
     pointer_ = c.screen;
     pointerTime_ = c.time;
+    if (tool_ == cmd::Tool::Pan) {
+        panFrom_.reset();
+        return;
+    }
+    if (tool_ == cmd::Tool::Select) {
+        ReleaseResult r;
+        r.kind = ReleaseResult::Kind::Clicked;
+        if (const auto id = world_.pick(pointerWorld())) r.id = *id;
+        click(r);
+        return;
+    }
     const ReleaseResult r = interaction_.release(world_, pointerWorld(), c.time, spawn_,
                                                  launchSettings(), view_.arrowSeconds);
     using K = ReleaseResult::Kind;
@@ -310,7 +380,8 @@ void Session::pointerUp(const cmd::PointerUp& c) {
     }
     if (r.kind == K::Refused) say(r.message);
     if (r.kind == K::Clicked) click(r);
-    if (r.kind == K::Flung || r.kind == K::Launched) userAction();
+    if (r.kind == K::Flung) userAction("fling");
+    if (r.kind == K::Launched) userAction("launch");
 }
 
 void Session::click(const ReleaseResult& r) {
@@ -330,7 +401,7 @@ void Session::deleteHeld() {
     if (const auto p = interaction_.deleteHeld(world_)) {
         log(deletionLogLine(*p).substr(4));
         notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
-        userAction();
+        userAction("delete");
         checkSelection();
     }
 }
@@ -371,7 +442,7 @@ void Session::spawnRandom() {
     def.color = {static_cast<std::uint8_t>(channel(rng_)), static_cast<std::uint8_t>(channel(rng_)),
                  static_cast<std::uint8_t>(channel(rng_))};
     world_.add(def);
-    userAction();
+    userAction("spawn");
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass "
@@ -393,20 +464,20 @@ void Session::nextMode() {
     if (!r.detail.empty()) log(r.detail, Notice::Level::Warning);
     if (r.changed) {
         accumulator_ = 0.0;
-        userAction();
+        userAction("change mode");
     }
 }
 
 void Session::toggleGravity() {
     const ControlChange c = psb::app::toggleGravity(world_, loaded_.def().gravity);
     say(c.message, c.changed ? Notice::Level::Info : Notice::Level::Warning);
-    if (c.changed) userAction();
+    if (c.changed) userAction("toggle gravity");
 }
 
 void Session::changeRestitution(int direction) {
     const ControlChange c = stepRestitution(world_, direction);
     say(c.message);
-    if (c.changed) userAction();
+    if (c.changed) userAction("set restitution");
 }
 
 void Session::reset() {
@@ -446,6 +517,7 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
             selection_.select(world_.ids()[scene.trails.front()]);
             view_.trails = TrailMode::Selected;
         }
+        if (file) remember(*file);
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)");
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
@@ -475,7 +547,7 @@ void Session::applyEdit() {
     if (r.applied) {
         closeEdit();
         say(r.message);
-        userAction();
+        userAction("edit particle");
     } else {
         // The prompt stays open with its text, so the value can be corrected.
         prompt_.setError(r.message);
@@ -487,10 +559,16 @@ void Session::applyEdit() {
 // Files and leaving.
 
 void Session::save() {
+    saveTo(freeSavePath(options_.saveTo));
+}
+
+void Session::saveTo(const std::filesystem::path& path) {
     try {
-        const std::filesystem::path path = freeSavePath(options_.saveTo);
         say(saveWorld(world_, sceneName_, path));
-        lastSave_ = path;
+        std::error_code ec;
+        const auto full = std::filesystem::absolute(path, ec).lexically_normal();
+        lastSave_ = ec ? path : full;
+        remember(*lastSave_);
         dirty_ = false;
     } catch (const std::exception& e) {  // SaveError; the old file is intact
         say(std::string("Save failed: ") + e.what(), Notice::Level::Error);
@@ -527,8 +605,13 @@ void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
     const bool column = view_.plots || view_.speeds || showProfile_;
+    const double left = showControls_ ? in.controls : in.controlsFolded;
+    const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
+    const double right = std::min(
+        in.panelColumn,
+        sideColumnWidth(camera_.viewportWidth(), static_cast<int>(left), scale) + 1.0 * kPanelMargin);
     camera_.fit(world_.def().width, world_.def().height, 10.0, in.top, in.bottom,
-                column ? in.panelColumn : 0.0);
+                column ? right : 0.0, left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",
@@ -559,6 +642,13 @@ void Session::togglePanel(bool& flag, const char* on, const char* off) {
 
 // ---------------------------------------------------------------------------------------------
 // Time.
+
+void Session::setTimeScale(double value) {
+    if (!std::isfinite(value)) return;
+    timeScale_ = std::clamp(value, kMinTimeScale, kMaxTimeScale);
+    reached_ = timeScale_;
+    say("Time speed " + speedText(timeScale_));
+}
 
 void Session::stepOnce(double now) {
     interaction_.applyHold(world_, now, launchSettings());

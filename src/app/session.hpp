@@ -27,7 +27,9 @@
 #include "command.hpp"
 #include "edit_prompt.hpp"
 #include "interaction.hpp"
+#include "scene_io.hpp"
 #include "selection.hpp"
+#include "view_insets.hpp"
 #include "view_options.hpp"
 
 namespace psb::app {
@@ -44,15 +46,6 @@ struct Notice {
 /// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
 [[nodiscard]] const char* logPrefix(Notice::Level level);
 
-/// Pixels the camera keeps free around the box when it fits it: the HUD above, the messages
-/// below, the panel column at the right while a panel of it (plots, speed histogram, profile) is
-/// on.
-struct ViewInsets {
-    double top = 0.0;
-    double bottom = 0.0;
-    double panelColumn = 0.0;
-};
-
 struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
     std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
@@ -67,6 +60,12 @@ struct SessionOptions {
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
 /// fall further behind.
 inline constexpr double kStepBudgetMs = 30.0;
+
+// The control panel's ranges.
+inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
+inline constexpr int kMaxPanelSubsteps = 64;
+inline constexpr double kMinLaunchMass = 1e-3;  ///< kg
+inline constexpr double kMaxLaunchMass = 1e6;   ///< kg
 
 class Session {
   public:
@@ -97,6 +96,22 @@ class Session {
     [[nodiscard]] const ViewOptions& view() const { return view_; }
     [[nodiscard]] bool helpShown() const { return showHelp_; }
     [[nodiscard]] bool profileShown() const { return showProfile_; }
+    /// The control panel is open (else folded to a strip).
+    [[nodiscard]] bool controlsShown() const { return showControls_; }
+    /// What the left mouse button does.
+    [[nodiscard]] cmd::Tool tool() const { return tool_; }
+    /// The presets with their names and descriptions, in OpenPreset's order.
+    [[nodiscard]] const std::vector<SceneInfo>& presets() const { return presets_; }
+    /// Files opened or saved lately, newest first (at most kRecentFiles).
+    static constexpr std::size_t kRecentFiles = 5;
+    [[nodiscard]] const std::vector<std::filesystem::path>& recentFiles() const { return recent_; }
+    /// Why `mode` cannot be used for the world now (empty when it can).
+    [[nodiscard]] std::string modeRefusal(StepMode mode) const;
+    /// The drag of a slider (a `continues` command) is one user action: how many user actions
+    /// there were so far (a counter for tests and the undo history).
+    [[nodiscard]] std::uint64_t userActions() const { return userActions_; }
+    /// The label of the last user action ("set restitution", "launch", ...).
+    [[nodiscard]] const std::string& lastAction() const { return lastAction_; }
     [[nodiscard]] const Interaction& interaction() const { return interaction_; }
     [[nodiscard]] const Selection& selection() const { return selection_; }
     [[nodiscard]] const EditPrompt& prompt() const { return prompt_; }
@@ -163,13 +178,29 @@ class Session {
     void fit();
     void resize(int width, int height);
     void togglePanel(bool& flag, const char* on, const char* off);
+    // The control panel's value commands (session_values.cpp).
+    void setRestitution(const cmd::SetRestitution& c);
+    void setFriction(const cmd::SetFriction& c);
+    void setGravity(const cmd::SetGravity& c);
+    void setWalls(const cmd::SetWalls& c);
+    void setMode(const cmd::SetMode& c);
+    void setTimeScale(double value);
+    void setLaunchBody(const cmd::SetLaunchBody& c);
+    void editParticle(const cmd::EditParticle& c);
+    void select(ParticleId id);
+    void setShow(const cmd::SetShow& c);
+    void saveAs(const cmd::SaveAs& c);
+    void saveTo(const std::filesystem::path& path);
+    void remember(const std::filesystem::path& file);
 
     void stepOnce(double now);
     /// The selected particle is gone: forget it (and close its edit prompt), saying so.
     void checkSelection();
-    /// The user changed the world: the energy drift is measured from here on, and there are
-    /// unsaved changes.
-    void userAction();
+    /// The user changed the world (`what`, a short phrase such as "set restitution"): the
+    /// energy drift is measured from here on, and there are unsaved changes. A command that
+    /// continues the previous one (a slider still being dragged) passes `continues`: it is part
+    /// of that action, not a new one.
+    void userAction(const char* what, bool continues = false);
     /// The hand did not move but the world under it did: the held particle follows the cursor.
     void afterCameraMove();
     void say(std::string text, Notice::Level level = Notice::Level::Info);
@@ -188,6 +219,14 @@ class Session {
     ViewOptions view_;
     bool showHelp_ = false;
     bool showProfile_ = false;
+    bool showControls_ = true;
+    cmd::Tool tool_ = cmd::Tool::Fling;
+    std::optional<Vec2> panFrom_;  ///< the Pan tool's drag, screen pixels
+    std::vector<SceneInfo> presets_;
+    std::vector<std::filesystem::path> recent_;
+    std::string exactRefusal_;  ///< why the exact mode is refused for the world, if it is
+    std::uint64_t userActions_ = 0;
+    std::string lastAction_;
 
     Interaction interaction_;
     Selection selection_;
