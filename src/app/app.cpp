@@ -71,6 +71,9 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
     s.insets.bottom = static_cast<double>(kShownMessages) * lh + 4.0 + kPanelMargin;
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
+    const double ratio = sdl_->pixelRatio();
+    s.insets.controls = kControlsWidth * ratio;
+    s.insets.controlsFolded = kControlsFoldedWidth * ratio;
     session_.emplace(std::move(world), std::move(name), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});
@@ -84,6 +87,11 @@ App::App(const AppOptions& options) : options_(options) {
     if (options_.benchParticles > 0) (void)session_->takeNotices();
     flushNotices();
     draw_ = std::make_unique<DrawLayer>(sdl_->renderer(), sdl_->hudFont(), sdl_->labelFont());
+    GuiOptions gui;
+    gui.font = findAsset("fonts/DejaVuSans.ttf");
+    gui.fontPixels = 15.f;
+    gui_ = std::make_unique<GuiContext>(sdl_->window(), sdl_->renderer(), gui);
+    ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
 }
 
 double App::now() const {
@@ -98,8 +106,12 @@ void App::flushNotices() {
     if (messages_.size() > kShownMessages) {
         messages_.erase(messages_.begin(), messages_.end() - kShownMessages);
     }
-    // Text input only while the edit prompt wants characters.
-    const bool editing = session_->prompt().active();
+    updateTextInput();
+}
+
+void App::updateTextInput() {
+    // Text input only while the edit prompt or a field of the panel wants characters.
+    const bool editing = session_->prompt().active() || (gui_ && gui_->io().WantTextInput);
     if (editing != textInput_) {
         if (editing) {
             SDL_StartTextInput();
@@ -124,6 +136,8 @@ void App::apply(const Command& c) {
 }
 
 void App::processEvent(const SDL_Event& e) {
+    // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
+    if (gui_ && gui_->handleEvent(e)) return;
     for (const Command& c :
          input_.translate(e, session_->prompt().active(), sdl_->pixelRatio(), sdl_->outputSize())) {
         apply(c);
@@ -204,8 +218,17 @@ void App::writeScreenshot() {
 void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
     stats_.messages = messages();
+    gui_->beginFrame();
+    const double ratio = sdl_->pixelRatio();
+    const SDL_Point out = sdl_->outputSize();
+    for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / ratio),
+                                         static_cast<float>(ratio))) {
+        apply(c);
+    }
     lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont());
     const DrawStats drawn = draw_->draw(lastFrame_);
+    if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
+    updateTextInput();
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
     if (session_->takeScreenshotRequest()) writeScreenshot();

@@ -6,10 +6,14 @@
 //                      where anything changes
 //     update(dt_real)  Session::update: fixed steps of the world's dt driven by an accumulator
 //                      (scaled by the time speed), the held particle placed at the hand first
-//     render()         buildFrame(): a read-only FrameView of the session; DrawLayer::draw()
-//                      draws it (the only code calling SDL's drawing functions); present
+//     render()         the control panel (control_panel.hpp, Dear ImGui) reads the session and
+//                      returns Commands, applied like the keys'; buildFrame(): a read-only
+//                      FrameView of the session; DrawLayer::draw() draws it (the only code
+//                      calling SDL's drawing functions), then GuiContext draws the panel; present
 //
 //   App ──owns──> SdlContext (window, renderer, fonts; RAII)
+//    │            GuiContext + ControlPanel (the on-screen controls: events to ImGui first,
+//    │                     the rest to Input)
 //    │            Session (world, scene as loaded, presets, camera, view toggles, hand,
 //    │                     selection, edit prompt, spawn rules, clock; no SDL)
 //    │            DrawLayer (Renderer, trails, analysis panels, text panels)
@@ -37,8 +41,10 @@
 
 #include <SDL.h>
 
+#include "control_panel.hpp"
 #include "draw_layer.hpp"
 #include "frame_view.hpp"
+#include "gui_context.hpp"
 #include "input.hpp"
 #include "sdl_context.hpp"
 #include "session.hpp"
@@ -110,10 +116,14 @@ class App {
     /// Logs and shows what the session said.
     void flushNotices();
     void writeScreenshot();
+    /// SDL's text input on while the edit prompt or a panel field wants characters.
+    void updateTextInput();
     [[nodiscard]] double now() const;
 
     AppOptions options_;
     std::unique_ptr<SdlContext> sdl_;
+    std::unique_ptr<GuiContext> gui_;  ///< after sdl_: destroyed before the renderer it draws on
+    ControlPanel panel_;
     std::optional<Session> session_;
     std::unique_ptr<DrawLayer> draw_;
     Input input_;

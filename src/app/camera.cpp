@@ -45,9 +45,9 @@ void Camera::fit(double width, double height, double marginPixels, double topIns
     zoom_ = z;
     // The box's centre maps to the centre of the area the insets leave.
     const Vec2 centre(width / 2.0, height / 2.0);
-    offset_ = centre - Vec2(left + (width_ - left - right) / 2.0,
-                            top + (height_ - top - bottom) / 2.0) /
-                           zoom_;
+    offset_ =
+        centre -
+        Vec2(left + (width_ - left - right) / 2.0, top + (height_ - top - bottom) / 2.0) / zoom_;
 }
 
 void Camera::keepNear(double width, double height) {

@@ -204,8 +204,8 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
     return setChecked(world, id, mass, radius, position, velocity);
 }
 
-EditResult setChecked(World& world, ParticleId id, double mass, double radius,
-                      const Vec2& wanted, const Vec2& velocity) {
+EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& wanted,
+                      const Vec2& velocity) {
     const WorldDef& def = world.def();
 
     if (!(mass >= std::numeric_limits<double>::min())) {
@@ -241,8 +241,7 @@ EditResult setChecked(World& world, ParticleId id, double mass, double radius,
             const double after = radius + p.radius[j] - (position - c).norm();
             if (after > 0.0 && after > before) {
                 char buf[160];
-                std::snprintf(buf, sizeof buf,
-                              "%s would overlap the particle at [%.2f, %.2f] m",
+                std::snprintf(buf, sizeof buf, "%s would overlap the particle at [%.2f, %.2f] m",
                               wanted != old.position
                                   ? "position: the new place"
                                   : ("radius: " + formatValue(radius) + " m").c_str(),

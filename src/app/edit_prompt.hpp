@@ -98,7 +98,7 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
 
 /// The checks and setters both edits share: mass, radius, position (moved inward to stay inside
 /// the walls) and velocity of `id`, all or nothing.
-EditResult setChecked(World& world, ParticleId id, double mass, double radius,
-                      const Vec2& position, const Vec2& velocity);
+EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& position,
+                      const Vec2& velocity);
 
 }  // namespace psb::app

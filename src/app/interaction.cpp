@@ -11,7 +11,8 @@ namespace psb::app {
 Color SpawnSettings::color() const {
     if (fixedColor) return *fixedColor;
     const double t = std::clamp((mass - kMinMass) / (kMaxMass - kMinMass), 0.0, 1.0);
-    return {static_cast<std::uint8_t>(120 + 135 * t), 200, static_cast<std::uint8_t>(255 - 135 * t)};
+    return {static_cast<std::uint8_t>(120 + 135 * t), 200,
+            static_cast<std::uint8_t>(255 - 135 * t)};
 }
 
 void SpawnSettings::changeMass(double delta) {

@@ -35,7 +35,8 @@ SceneInfo describeScene(const std::filesystem::path& file) {
     }
     const std::string& d = info.description;
     std::size_t end = d.size();
-    for (const char* stop : {": ", ". "}) end = std::min(end, d.find(stop));
+    for (const char* stop : {": ", ". "})
+        end = std::min(end, d.find(stop));
     info.summary = d.substr(0, end);
     if (!info.summary.empty() && info.summary.back() == '.') info.summary.pop_back();
     return info;

@@ -605,11 +605,11 @@ void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
     const bool column = view_.plots || view_.speeds || showProfile_;
-    const double left = showControls_ ? in.controls : in.controlsFolded;
+    const double left = controlsInset();
     const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
     const double right = std::min(
-        in.panelColumn,
-        sideColumnWidth(camera_.viewportWidth(), static_cast<int>(left), scale) + 1.0 * kPanelMargin);
+        in.panelColumn, sideColumnWidth(camera_.viewportWidth(), static_cast<int>(left), scale) +
+                            1.0 * kPanelMargin);
     camera_.fit(world_.def().width, world_.def().height, 10.0, in.top, in.bottom,
                 column ? right : 0.0, left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());

@@ -98,6 +98,10 @@ class Session {
     [[nodiscard]] bool profileShown() const { return showProfile_; }
     /// The control panel is open (else folded to a strip).
     [[nodiscard]] bool controlsShown() const { return showControls_; }
+    /// Pixels at the left of the window the control panel takes now (open or folded).
+    [[nodiscard]] double controlsInset() const {
+        return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;
+    }
     /// What the left mouse button does.
     [[nodiscard]] cmd::Tool tool() const { return tool_; }
     /// The presets with their names and descriptions, in OpenPreset's order.
@@ -110,6 +114,9 @@ class Session {
     /// The drag of a slider (a `continues` command) is one user action: how many user actions
     /// there were so far (a counter for tests and the undo history).
     [[nodiscard]] std::uint64_t userActions() const { return userActions_; }
+    /// Why the last edit of a particle's value was refused (empty after one was applied, or the
+    /// selection changed).
+    [[nodiscard]] const std::string& editRefusal() const { return editRefusal_; }
     /// The label of the last user action ("set restitution", "launch", ...).
     [[nodiscard]] const std::string& lastAction() const { return lastAction_; }
     [[nodiscard]] const Interaction& interaction() const { return interaction_; }
@@ -227,6 +234,7 @@ class Session {
     std::string exactRefusal_;  ///< why the exact mode is refused for the world, if it is
     std::uint64_t userActions_ = 0;
     std::string lastAction_;
+    std::string editRefusal_;
 
     Interaction interaction_;
     Selection selection_;

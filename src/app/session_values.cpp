@@ -42,8 +42,7 @@ void Session::setRestitution(const cmd::SetRestitution& c) {
 
 void Session::setFriction(const cmd::SetFriction& c) {
     if (!(c.value >= 0.0 && std::isfinite(c.value))) {
-        say("Friction must be a number >= 0, got " + number("%g", c.value),
-            Notice::Level::Warning);
+        say("Friction must be a number >= 0, got " + number("%g", c.value), Notice::Level::Warning);
         return;
     }
     if (world_.def().friction == c.value) return;
@@ -105,8 +104,8 @@ void Session::setLaunchBody(const cmd::SetLaunchBody& c) {
     }
     const double maxRadius = 0.5 * std::min(d.width, d.height);
     if (!(c.radius >= 0.0 && c.radius <= maxRadius)) {
-        say("Launch radius must be above 0 and at most half the box (" +
-                number("%.3g", maxRadius) + " m), got " + number("%g", c.radius),
+        say("Launch radius must be above 0 and at most half the box (" + number("%.3g", maxRadius) +
+                " m), got " + number("%g", c.radius),
             Notice::Level::Warning);
         return;
     }
@@ -119,9 +118,11 @@ void Session::editParticle(const cmd::EditParticle& c) {
     if (prompt_.active() && prompt_.target() == c.id) closeEdit();
     const EditResult r = editParticleValue(world_, c.id, c.field, c.text);
     if (!r.applied) {
+        editRefusal_ = r.message;
         say("Edit refused: " + r.message, Notice::Level::Warning);
         return;
     }
+    editRefusal_.clear();
     say(r.message);
     userAction("edit particle");
 }
@@ -135,6 +136,7 @@ void Session::select(ParticleId id) {
         return;
     }
     if (prompt_.target() != id) closeEdit();
+    if (selection_.id() != id) editRefusal_.clear();
     selection_.select(id);
 }
 
