@@ -229,6 +229,7 @@ void App::render() {
     const DrawStats drawn = draw_->draw(lastFrame_);
     if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
     updateTextInput();
+    if (options_.logControls) logControls();
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
     if (session_->takeScreenshotRequest()) writeScreenshot();
@@ -236,6 +237,23 @@ void App::render() {
     sdl_->present();
     stats_.lastDrawMs = msSince(t0);
     stats_.drawMs = 0.95 * stats_.drawMs + 0.05 * stats_.lastDrawMs;
+}
+
+void App::logControls() {
+    const auto& items = panel_.items();
+    const auto same = [](const PanelItem& a, const PanelItem& b) {
+        return a.name == b.name && a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+    };
+    if (std::equal(items.begin(), items.end(), loggedItems_.begin(), loggedItems_.end(), same)) {
+        return;
+    }
+    loggedItems_ = items;
+    char buf[160];
+    for (const PanelItem& i : items) {
+        std::snprintf(buf, sizeof buf, "[I] Control %s at %.0f %.0f", i.name.c_str(),
+                      (i.x0 + i.x1) / 2.f, (i.y0 + i.y1) / 2.f);
+        logLine(buf);
+    }
 }
 
 int App::runBenchmark() {

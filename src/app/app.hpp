@@ -67,6 +67,9 @@ struct AppOptions {
     /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
     std::string benchOverlays;
     std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
+    /// Log "[I] Control NAME at X Y" (window points, the control's centre) for every control of
+    /// the panel whenever their places change, for scripts that drive the window.
+    bool logControls = false;
 };
 
 class App {
@@ -102,6 +105,8 @@ class App {
     [[nodiscard]] std::vector<std::string> messages() const;
     /// The frame the last render() drew.
     [[nodiscard]] const FrameView& lastFrame() const { return lastFrame_; }
+    /// The control panel as the last render() built it.
+    [[nodiscard]] const ControlPanel& panel() const { return panel_; }
 
   private:
     struct Message {
@@ -118,12 +123,14 @@ class App {
     void writeScreenshot();
     /// SDL's text input on while the edit prompt or a panel field wants characters.
     void updateTextInput();
+    void logControls();
     [[nodiscard]] double now() const;
 
     AppOptions options_;
     std::unique_ptr<SdlContext> sdl_;
     std::unique_ptr<GuiContext> gui_;  ///< after sdl_: destroyed before the renderer it draws on
     ControlPanel panel_;
+    std::vector<PanelItem> loggedItems_;  ///< what --log-controls last wrote
     std::optional<Session> session_;
     std::unique_ptr<DrawLayer> draw_;
     Input input_;

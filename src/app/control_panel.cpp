@@ -30,9 +30,22 @@ void copyPath(std::array<char, 512>& to, const std::filesystem::path& from) {
 
 }  // namespace
 
+void ControlPanel::mark(const std::string& name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    items_.push_back({name, a.x, a.y, b.x, b.y});
+}
+
+const PanelItem* ControlPanel::item(const std::string& name) const {
+    for (const PanelItem& i : items_) {
+        if (i.name == name) return &i;
+    }
+    return nullptr;
+}
+
 std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& stats, float height,
                                          float pixelRatio) {
     out_.clear();
+    items_.clear();
     const bool open = s.controlsShown();
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(open ? kControlsWidth : kControlsFoldedWidth, height));
@@ -44,11 +57,13 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     if (ImGui::Begin("Controls", nullptr, flags)) {
         if (!open) {
             if (ImGui::Button(">>", ImVec2(-1.f, 0.f))) out_.emplace_back(cmd::ToggleControls{});
+            mark("open panel");
             tip("Open the control panel (key C)");
         } else {
             ImGui::TextUnformatted("Controls");
             ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight() * 1.4f);
             if (ImGui::Button("<<")) out_.emplace_back(cmd::ToggleControls{});
+            mark("fold panel");
             tip("Fold the panel away to give the box more room (key C)");
             ImGui::TextDisabled("%s", s.sceneName().c_str());
             time(s);
@@ -69,18 +84,23 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
 }
 
 void ControlPanel::time(const Session& s) {
-    if (!ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const bool open = ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Time");
+    if (!open) return;
     if (ImGui::Button(s.paused() ? "Play" : "Pause", ImVec2(70.f, 0.f))) {
         out_.emplace_back(cmd::TogglePause{});
     }
+    mark("Play/Pause");
     tip("Start or stop the clock (key Space)");
     ImGui::SameLine();
     ImGui::BeginDisabled(!s.paused());
     if (ImGui::Button("Step")) out_.emplace_back(cmd::SingleStep{});
+    mark("Step");
     ImGui::EndDisabled();
     tip("Advance one time step while paused (key N)");
     ImGui::SameLine();
     if (ImGui::Button("Reset")) out_.emplace_back(cmd::Reset{});
+    mark("Reset");
     tip("Put every particle back where the scene started (key R)");
     // Undo / Redo / Step back buttons go here: cmd::Undo, cmd::Redo and cmd::StepBack, enabled
     // by Session::canUndo() and canRedo().
@@ -91,6 +111,7 @@ void ControlPanel::time(const Session& s) {
                         continues, ImGuiSliderFlags_Logarithmic)) {
         out_.emplace_back(cmd::SetTimeScale{speed});
     }
+    mark("Speed");
     tip("Simulated seconds per real second: x1 is real time, x0.25 slow motion (keys , and .)");
     if (!s.paused() && s.reachedTimeScale() < 0.95 * s.timeScale()) {
         ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "Reaching only x%.2g: too much to compute",
@@ -99,7 +120,9 @@ void ControlPanel::time(const Session& s) {
 }
 
 void ControlPanel::scene(const Session& s) {
-    if (!ImGui::CollapsingHeader("Scene")) return;
+    const bool open = ImGui::CollapsingHeader("Scene");
+    mark("section Scene");
+    if (!open) return;
     ImGui::TextUnformatted("Presets");
     const float listHeight = ImGui::GetTextLineHeightWithSpacing() * 9.f;
     if (ImGui::BeginChild("presets", ImVec2(0.f, listHeight), true)) {
@@ -110,6 +133,7 @@ void ControlPanel::scene(const Session& s) {
             if (ImGui::Selectable(p.name.c_str(), p.name == s.sceneName())) {
                 out_.emplace_back(cmd::OpenPreset{static_cast<int>(k)});
             }
+            mark("preset " + p.name);
             const std::string key = k < 9 ? " (key " + std::to_string(k + 1) + ")" : "";
             tip((p.description.empty() ? p.summary : p.description + key).c_str());
             ImGui::TextDisabled("  %s", p.summary.c_str());
@@ -124,12 +148,15 @@ void ControlPanel::scene(const Session& s) {
     }
     ImGui::SetNextItemWidth(-1.f);
     ImGui::InputText("##path", path_.data(), path_.size());
+    mark("path");
     tip("A scene file: type a path, then Open or Save");
     if (ImGui::Button("Open"))
         out_.emplace_back(cmd::OpenFile{std::filesystem::path(path_.data())});
+    mark("Open");
     tip("Open the scene file named above");
     ImGui::SameLine();
     if (ImGui::Button("Save")) out_.emplace_back(cmd::SaveAs{path_.data(), false});
+    mark("Save");
     tip("Save the world to the file named above; an existing file is kept and a new name "
         "(NAME-2.json, ...) chosen (Ctrl+S saves too)");
     if (s.lastSave()) {
@@ -148,11 +175,14 @@ void ControlPanel::scene(const Session& s) {
 }
 
 void ControlPanel::show(const Session& s) {
-    if (!ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const bool open = ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Show");
+    if (!open) return;
     const ViewOptions& v = s.view();
     const auto box = [this](const char* label, bool on, cmd::ShowOption option, const char* help) {
         bool value = on;
         if (ImGui::Checkbox(label, &value)) out_.emplace_back(cmd::SetShow{option, value});
+        mark(label);
         tip(help);
     };
     box("Velocity arrows", v.arrows, cmd::ShowOption::Arrows,
@@ -171,14 +201,18 @@ void ControlPanel::show(const Session& s) {
     if (ImGui::Combo("Trails", &trails, "off\0selected particle\0all particles\0")) {
         out_.emplace_back(cmd::SetTrails{trails});
     }
+    mark("Trails");
     tip("Draw the path each particle has taken (key L cycles)");
 }
 
 void ControlPanel::tools(const Session& s, float) {
-    if (!ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const bool open = ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Tools");
+    if (!open) return;
     ImGui::TextUnformatted("Left mouse button:");
     const auto radio = [&](const char* label, cmd::Tool t, const char* help) {
         if (ImGui::RadioButton(label, s.tool() == t)) out_.emplace_back(cmd::SetTool{t});
+        mark(std::string("tool ") + label);
         tip(help);
     };
     radio("Fling", cmd::Tool::Fling,
@@ -201,21 +235,26 @@ void ControlPanel::tools(const Session& s, float) {
     bool changed = false;
     ImGui::SetNextItemWidth(120.f);
     changed |= ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.3g");
+    mark("launch mass");
     tip("The mass of launched particles ([ and ] change it by 1 kg)");
     ImGui::BeginDisabled(autoRadius);
     ImGui::SetNextItemWidth(120.f);
     changed |= ImGui::InputDouble("radius (m)", &radius, 0.0, 0.0, "%.3g");
+    mark("launch radius");
     ImGui::EndDisabled();
     tip("The radius of launched particles; untick 'auto' to choose it");
     ImGui::SameLine();
     changed |= ImGui::Checkbox("auto", &autoRadius);
+    mark("auto radius");
     tip("Auto: the radius grows with the mass, at the scene's scale");
     ImGui::BeginDisabled(autoColour);
     changed |= ImGui::ColorEdit3("colour", colour, ImGuiColorEditFlags_NoInputs);
+    mark("launch colour");
     ImGui::EndDisabled();
     tip("The colour of launched particles");
     ImGui::SameLine();
     changed |= ImGui::Checkbox("auto##colour", &autoColour);
+    mark("auto colour");
     tip("Auto: a colour from the mass, light blue for light, pink for heavy");
     if (changed) {
         cmd::SetLaunchBody b;

@@ -37,6 +37,13 @@ inline constexpr float kControlsFoldedWidth = 34.f;
 /// Scenes with more particles than this get no all-particles table.
 inline constexpr std::size_t kTableMaxParticles = 60;
 
+/// Where a control was drawn in the last frame, window points: for tests and scripted input
+/// (--log-controls), which find a control by its name.
+struct PanelItem {
+    std::string name;
+    float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
+};
+
 class ControlPanel {
   public:
     /// Builds the panel into the current ImGui frame (between GuiContext::beginFrame and
@@ -45,7 +52,14 @@ class ControlPanel {
     std::vector<Command> build(const Session& session, const FrameStats& stats, float height,
                                float pixelRatio);
 
+    /// The named controls of the last build, in drawing order.
+    [[nodiscard]] const std::vector<PanelItem>& items() const { return items_; }
+    /// The item called `name` in the last build, or nullptr.
+    [[nodiscard]] const PanelItem* item(const std::string& name) const;
+
   private:
+    /// Records the item just drawn as `name`.
+    void mark(const std::string& name);
     void time(const Session& s);
     void scene(const Session& s);
     void physics(const Session& s);
@@ -58,6 +72,7 @@ class ControlPanel {
     void launchPreview(const Session& s, float pixelRatio);
 
     std::vector<Command> out_;
+    std::vector<PanelItem> items_;
     std::array<char, 512> path_{};
     bool pathFilled_ = false;
     int substeps_ = 4;

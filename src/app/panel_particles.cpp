@@ -50,7 +50,9 @@ double fieldValue(const Particle& p, ParticleField f) {
 }  // namespace
 
 void ControlPanel::selected(const Session& s) {
-    if (!ImGui::CollapsingHeader("Selected particle", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const bool open = ImGui::CollapsingHeader("Selected particle", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Selected particle");
+    if (!open) return;
     const auto p = s.selected();
     if (!p) {
         ImGui::TextDisabled("Click a particle (or a row below) to see its values");
@@ -60,6 +62,7 @@ void ControlPanel::selected(const Session& s) {
     ImGui::Text("Particle %u", p->id.slot);
     ImGui::SameLine();
     if (ImGui::SmallButton("deselect")) out_.emplace_back(cmd::Select{kNullParticle});
+    mark("deselect");
     tip("Forget the selection (or click empty space)");
     if (!ImGui::BeginTable("selected", 2, ImGuiTableFlags_SizingStretchProp)) return;
     for (std::size_t k = 0; k < std::size(kFields); ++k) {
@@ -78,6 +81,7 @@ void ControlPanel::selected(const Session& s) {
             "##v", text.data(), text.size(),
             ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific);
         fieldActive_[k] = ImGui::IsItemActive();
+        mark(std::string("selected ") + f.name);
         if (enter) {
             out_.emplace_back(cmd::EditParticle{p->id, f.field, text.data()});
             fieldActive_[k] = false;
@@ -99,7 +103,9 @@ void ControlPanel::selected(const Session& s) {
 }
 
 void ControlPanel::allParticles(const Session& s) {
-    if (!ImGui::CollapsingHeader("All particles")) return;
+    const bool open = ImGui::CollapsingHeader("All particles");
+    mark("section All particles");
+    if (!open) return;
     const World& w = s.world();
     if (w.size() > kTableMaxParticles) {
         ImGui::TextDisabled("%zu particles: the table is for scenes of up to %zu", w.size(),
@@ -126,6 +132,7 @@ void ControlPanel::allParticles(const Session& s) {
                               ImGuiSelectableFlags_SpanAllColumns)) {
             out_.emplace_back(cmd::Select{id});
         }
+        mark("row " + std::string(label));
         ImGui::TableNextColumn();
         ImGui::Text("%.2f, %.2f", p.position.x(), p.position.y());
         ImGui::TableNextColumn();

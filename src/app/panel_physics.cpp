@@ -35,7 +35,9 @@ const char* modeSentence(StepMode mode) {
 }  // namespace
 
 void ControlPanel::physics(const Session& s) {
-    if (!ImGui::CollapsingHeader("Physics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const bool open = ImGui::CollapsingHeader("Physics", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Physics");
+    if (!open) return;
     const World& w = s.world();
     const SolverSettings& solver = w.solver();
     if (solver.mode == StepMode::Substep) substeps_ = solver.substeps;
@@ -46,6 +48,7 @@ void ControlPanel::physics(const Session& s) {
         if (ImGui::RadioButton(label, solver.mode == m)) {
             out_.emplace_back(cmd::SetMode{m, substeps_});
         }
+        mark(std::string("mode ") + label);
         ImGui::EndDisabled();
         const std::string help =
             std::string(modeSentence(m)) + (why.empty() ? "" : "\nNot available here: " + why);
@@ -64,6 +67,7 @@ void ControlPanel::physics(const Session& s) {
             substeps_ = k;
             out_.emplace_back(cmd::SetMode{StepMode::Substep, k});
         }
+        mark("substeps");
         tip("Smaller steps per time step: more accurate, k times the work");
     }
     ImGui::PushTextWrapPos(0.f);
@@ -79,12 +83,14 @@ void ControlPanel::physics(const Session& s) {
     if (widgets::slider("Restitution", e, 0.0, 1.0, "%.2f", continues)) {
         out_.emplace_back(cmd::SetRestitution{e, continues});
     }
+    mark("Restitution");
     tip("How bouncy collisions are: 1 keeps all the energy of the approach, 0 keeps none (the "
         "particles stick together for that instant). Keys E and Shift+E.");
     double mu = d.friction;
     if (widgets::slider("Friction", mu, 0.0, 1.0, "%.2f", continues)) {
         out_.emplace_back(cmd::SetFriction{mu, continues});
     }
+    mark("Friction");
     tip("Friction where surfaces touch: 0 is ice; higher values take more of the sliding "
         "along the contact away in each collision.");
 
@@ -92,6 +98,7 @@ void ControlPanel::physics(const Session& s) {
     bool on = gravityOn;
     double g = gravityOn ? d.gravity.norm() : kEarthGravity;
     if (ImGui::Checkbox("Gravity", &on)) out_.emplace_back(cmd::SetGravity{on, g, false});
+    mark("Gravity");
     tip("A steady pull downwards (key G). Earth's is 9.81 m/s\xc2\xb2.");
     ImGui::SameLine();
     ImGui::BeginDisabled(!gravityOn);
@@ -100,10 +107,12 @@ void ControlPanel::physics(const Session& s) {
                         ImGuiSliderFlags_Logarithmic)) {
         out_.emplace_back(cmd::SetGravity{true, g, continues});
     }
+    mark("g");
     ImGui::EndDisabled();
     tip("The strength of gravity: Earth 9.81, the Moon 1.62, Jupiter 24.8 m/s\xc2\xb2");
     bool walls = d.walls;
     if (ImGui::Checkbox("Walls", &walls)) out_.emplace_back(cmd::SetWalls{walls});
+    mark("Walls");
     tip("The four walls of the box; without them particles fly away");
 }
 

@@ -46,7 +46,9 @@ std::string vector(const Vec2& v, const char* unit) {
 }  // namespace
 
 void ControlPanel::readouts(const Session& s) {
-    if (!ImGui::CollapsingHeader("Readouts", ImGuiTreeNodeFlags_DefaultOpen)) return;
+    const bool open = ImGui::CollapsingHeader("Readouts", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Readouts");
+    if (!open) return;
     const World& w = s.world();
     const ObservablesSample& o = s.observables();
     const bool gravity = w.def().gravity != Vec2::Zero();
@@ -100,7 +102,9 @@ void ControlPanel::readouts(const Session& s) {
 }
 
 void ControlPanel::engine(const Session& s, const FrameStats& stats) {
-    if (!ImGui::CollapsingHeader("Engine")) return;
+    const bool open = ImGui::CollapsingHeader("Engine");
+    mark("section Engine");
+    if (!open) return;
     const World& w = s.world();
     if (ImGui::BeginTable("engine", 2, ImGuiTableFlags_SizingStretchProp)) {
         char buf[64];
@@ -126,6 +130,7 @@ void ControlPanel::engine(const Session& s, const FrameStats& stats) {
     if (ImGui::Checkbox("Profile beside the box", &profile)) {
         out_.emplace_back(cmd::SetShow{cmd::ShowOption::Profile, profile});
     }
+    mark("Profile");
     tip("The last step's stages with their times, in a panel beside the box (keys O, F3)");
     const StepProfile& p = w.profile();
     if (p.stageCount > 0 && ImGui::BeginTable("profile", 2, ImGuiTableFlags_SizingStretchProp)) {

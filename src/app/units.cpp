@@ -10,6 +10,10 @@ namespace {
 /// Three significant figures of `v` in [1, 1000) or below: "4.04", "40.4", "404".
 std::string threeFigures(double v) {
     char buf[64];
+    if (v != 0.0 && std::isfinite(v)) {  // rounded first: 0.9997 is "1.00", not "1.000"
+        const double unit = std::pow(10.0, std::floor(std::log10(std::abs(v))) - 2.0);
+        v = std::round(v / unit) * unit;
+    }
     const double a = std::abs(v);
     if (a >= 100.0 || a == 0.0) {
         std::snprintf(buf, sizeof buf, "%.0f", v);
