@@ -187,12 +187,14 @@ void ControlPanel::show(const Session& s) {
     };
     box("Velocity arrows", v.arrows, cmd::ShowOption::Arrows,
         "An arrow from each moving particle to where it will be a moment later (key A)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
     box("Momentum and centre of mass", v.momentum, cmd::ShowOption::Momentum,
         "Momentum arrows m v, the total momentum and the centre of mass with its path (key V)");
     box("Plots", v.plots, cmd::ShowOption::Plots,
         "Energy, momentum and the collision rate against time, beside the box (key K)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
@@ -206,7 +208,7 @@ void ControlPanel::show(const Session& s) {
 }
 
 void ControlPanel::tools(const Session& s, float) {
-    const bool open = ImGui::CollapsingHeader("Tools", ImGuiTreeNodeFlags_DefaultOpen);
+    const bool open = ImGui::CollapsingHeader("Tools");
     mark("section Tools");
     if (!open) return;
     ImGui::TextUnformatted("Left mouse button:");

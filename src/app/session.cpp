@@ -299,6 +299,11 @@ void Session::apply(const Command& command) {
             } else if constexpr (std::is_same_v<T, cmd::SetTool>) {
                 tool_ = c.tool;
                 panFrom_.reset();
+                static const char* const kTools[] = {
+                    "Left mouse: fling particles, launch on empty space",
+                    "Left mouse: launch new particles", "Left mouse: select particles",
+                    "Left mouse: move the view"};
+                say(kTools[static_cast<int>(c.tool)]);
             } else if constexpr (std::is_same_v<T, cmd::SetLaunchBody>) {
                 setLaunchBody(c);
             } else if constexpr (std::is_same_v<T, cmd::EditParticle>) {

@@ -245,8 +245,9 @@ awk -v y0="$fy1" -v y1="$fy2" 'BEGIN { exit !(y1 - y0 > 5) }' ||
 pass "flung particle moved down from y = $fy1 to $fy2 px"
 
 # --- 4. wheel zoom about the cursor --------------------------------------------------------
-cx=$((WX + 300))
-cy=$((WY + 300))
+# At the box's centre (the control panel takes the window's left part).
+cx=$(sx 3.5)
+cy=$(sy 3.5)
 # A piece of the left wall (at least 2 px wide, just left of the box), halfway down: at least
 # one column of it must be white.
 wall="2x40+$((WX + ${BX%.*} - 2))+$((WY + ${BY%.*} + 230))"
