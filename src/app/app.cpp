@@ -24,6 +24,12 @@ namespace {
 constexpr std::size_t kShownMessages = 2;
 constexpr double kMessageSeconds = 3.0;
 
+bool samePlaces(const std::vector<PanelItem>& a, const std::vector<PanelItem>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& p, const auto& q) {
+        return p.name == q.name && p.x0 == q.x0 && p.y0 == q.y0 && p.x1 == q.x1 && p.y1 == q.y1;
+    });
+}
+
 void logLine(const std::string& line) {
     std::fputs(line.c_str(), stdout);
     std::fputc('\n', stdout);
@@ -181,7 +187,8 @@ int App::run() {
 void App::handleEvents() {
     SDL_Event e;
     // Paused and idle: sleep until something happens (or a quarter second, for the messages).
-    if (session_->paused() && session_->interaction().mode() == Interaction::Mode::Idle) {
+    if (session_->paused() && session_->interaction().mode() == Interaction::Mode::Idle &&
+        !panelSettling_) {
         if (SDL_WaitEventTimeout(&e, 250) != 0) processEvent(e);
     }
     while (SDL_PollEvent(&e) != 0)
@@ -229,6 +236,10 @@ void App::render() {
     const DrawStats drawn = draw_->draw(lastFrame_);
     if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
     updateTextInput();
+    // A panel whose controls moved (a section opened) settles in the next frame: draw it even
+    // when nothing else happens.
+    panelSettling_ = !samePlaces(panel_.items(), lastItems_);
+    if (panelSettling_) lastItems_ = panel_.items();
     if (options_.logControls) logControls();
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
@@ -241,12 +252,7 @@ void App::render() {
 
 void App::logControls() {
     const auto& items = panel_.items();
-    const auto same = [](const PanelItem& a, const PanelItem& b) {
-        return a.name == b.name && a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
-    };
-    if (std::equal(items.begin(), items.end(), loggedItems_.begin(), loggedItems_.end(), same)) {
-        return;
-    }
+    if (samePlaces(items, loggedItems_)) return;
     loggedItems_ = items;
     char buf[160];
     for (const PanelItem& i : items) {

@@ -131,6 +131,8 @@ class App {
     std::unique_ptr<GuiContext> gui_;  ///< after sdl_: destroyed before the renderer it draws on
     ControlPanel panel_;
     std::vector<PanelItem> loggedItems_;  ///< what --log-controls last wrote
+    std::vector<PanelItem> lastItems_;    ///< the panel's controls in the frame before
+    bool panelSettling_ = true;           ///< they moved in the last frame
     std::optional<Session> session_;
     std::unique_ptr<DrawLayer> draw_;
     Input input_;

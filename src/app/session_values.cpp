@@ -112,6 +112,10 @@ void Session::setLaunchBody(const cmd::SetLaunchBody& c) {
     spawn_.mass = c.mass;
     spawn_.fixedRadius = c.radius > 0.0 ? std::optional<double>(c.radius) : std::nullopt;
     spawn_.fixedColor = c.color;
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "New particles: %g kg, radius %g m%s", spawn_.mass,
+                  spawn_.radius(), spawn_.fixedRadius ? "" : " (from the mass)");
+    log(buf);
 }
 
 void Session::editParticle(const cmd::EditParticle& c) {
