@@ -228,9 +228,12 @@ void App::render() {
     gui_->beginFrame();
     const double ratio = sdl_->pixelRatio();
     const SDL_Point out = sdl_->outputSize();
-    for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / ratio),
-                                         static_cast<float>(ratio))) {
-        apply(c);
+    // The help is read, then closed: meanwhile it takes the window's width, the panel's too.
+    if (!session_->helpShown()) {
+        for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / ratio),
+                                             static_cast<float>(ratio))) {
+            apply(c);
+        }
     }
     lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont());
     const DrawStats drawn = draw_->draw(lastFrame_);

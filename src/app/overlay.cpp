@@ -37,7 +37,7 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
         // The help is asked for and read, then closed: it covers the other panels meanwhile.
         const SDL_Point size = textBoxSize(font, o.help);
         const int y = layout.hud.y + layout.hud.h + kPanelGap;
-        panel(o.help, SDL_Rect{layout.hud.x + 32, y, size.x, size.y}, 225);
+        panel(o.help, SDL_Rect{36, y, size.x, size.y}, 225);
     }
     panel(o.inspector, layout.inspector, 200);
     boxes.draw(renderer, nullptr);

@@ -105,6 +105,7 @@ class ControlPanelTest : public OffscreenTest {
 };
 
 TEST_F(ControlPanelTest, EverySectionAndItsMainControlsAreThere) {
+    click("section Tools");  // closed at first
     for (const char* name : {"section Time",
                              "Play/Pause",
                              "Step",
@@ -198,6 +199,7 @@ TEST_F(ControlPanelTest, ModesAreChosenAndExactIsDisabledWhereTheWorldRefusesIt)
 }
 
 TEST_F(ControlPanelTest, ToolsAreChosenByTheirRadioButtons) {
+    click("section Tools");
     click("tool Pan");
     EXPECT_EQ(session_->tool(), cmd::Tool::Pan);
     click("tool Select");
