@@ -258,6 +258,9 @@ void ControlPanel::tools(const Session& s, float) {
     changed |= ImGui::Checkbox("auto##colour", &autoColour);
     mark("auto colour");
     tip("Auto: a colour from the mass, light blue for light, pink for heavy");
+    // A radius being typed passes through 0 ("0.2"): nothing is sent until it is positive (0
+    // would mean "from the mass", and would grey the field out under the typing hand).
+    if (!autoRadius && !(radius > 0.0)) changed = false;
     if (changed) {
         cmd::SetLaunchBody b;
         b.mass = mass;

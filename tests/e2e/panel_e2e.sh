@@ -10,11 +10,11 @@
 #   1. the box is fitted beside the panel, never under it       (log: box top-left x >= 310)
 #   2. clicks Walls, Gravity, Substeps                          -> logged; the HUD unchanged
 #   3. drags the Restitution slider to its left end             -> one log line, e = 0 in the save
-#   4. chooses the Launch tool, unticks "auto" radius (keeping   -> a new particle of 2.5 kg and
-#      0.3 m), types mass 2.5, launches with a drag                 0.3 m (the mass rule: 0.075 m)
+#   4. chooses the Launch tool, unticks "auto" radius, types     -> a new particle of 2.5 kg and
+#      mass 2.5 and radius 0.2, launches with a drag                0.2 m
 #   5. opens the Scene section, types a path, clicks Save        -> the full path logged; the file
 #                                                                   holds the launched 2.5 kg,
-#                                                                   0.3 m particle, walls off,
+#                                                                   0.2 m particle, walls off,
 #                                                                   gravity 9.81, e = 0, substep
 #   6. clicks Play/Pause twice, Step                             -> time moves; Reset: 6 again
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
@@ -126,7 +126,9 @@ wait_log "Left mouse: launch"
 click "auto radius"
 wait_log "New particles: 10 kg, radius [0-9.]+ m$"
 type_into "launch mass" 2.5
-wait_log "New particles: 2.5 kg, radius 0.3 m$"  # the radius kept, not the mass's 0.075 m
+wait_log "New particles: 2.5 kg"
+type_into "launch radius" 0.2
+wait_log "New particles: 2.5 kg, radius 0.2 m$"
 grep -q "Control launch mass" "$LOG" || fail "no mass field"
 # From the centre of the box (a particle or not: the Launch tool always launches).
 view=$(grep "\[I\] View: zoom" "$LOG" | tail -1)
@@ -153,7 +155,7 @@ click Save
 wait_log "Saved 7 particles to $OUT/panel-save.json"
 S="$OUT/panel-save.json"
 [[ -s "$S" ]] || fail "no file at $S"
-grep -q '"mass": 2.5, "radius": 0.3' "$S" || fail "the launched 2.5 kg, 0.3 m particle is not in the save: $(grep mass "$S" | tail -2)"
+grep -q '"mass": 2.5, "radius": 0.2' "$S" || fail "the launched 2.5 kg, 0.2 m particle is not in the save: $(grep mass "$S" | tail -2)"
 grep -q '"walls": false' "$S" || fail "walls not off in the save"
 grep -q '"gravity": \[0.0, 9.81\]' "$S" || fail "gravity not 9.81 in the save: $(grep gravity "$S")"
 grep -q '"restitution": 0.0' "$S" || fail "restitution not 0 in the save: $(grep restitution "$S")"
