@@ -18,7 +18,7 @@
 //
 // The panel's pieces are in control_panel.cpp (the window, time, scene, show, tools),
 // panel_physics.cpp, panel_readouts.cpp (readouts, engine) and panel_particles.cpp (selected,
-// all particles); panel_widgets.hpp holds the helpers they share.
+// all particles); panel_widgets.hpp holds the small widgets they share.
 
 #include <array>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// Small helpers the control panel's sections share: a tooltip on the last item, a slider of a
+// Small widgets the control panel's sections share: a tooltip on the last item, a slider of a
 // double that reports whether this change continues a drag, and a two-column row of a readout.
 
 #include <string>
