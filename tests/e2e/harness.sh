@@ -3,6 +3,19 @@
 # exit of the program under test (APP_PID) and of the X server (XVFB_PID), and start_xvfb.
 pass() { echo "ok: $*"; }
 
+# need_test_tools: Xvfb, xdotool and ImageMagick, installed (scripts/install-deps.sh --test)
+# when one is missing.
+need_test_tools() {
+    local here tool
+    here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+    for tool in Xvfb xdpyinfo xdotool import convert; do
+        if ! command -v "$tool" >/dev/null; then
+            "$here/../../scripts/install-deps.sh" --test
+            break
+        fi
+    done
+}
+
 XVFB_PID=""
 APP_PID=""
 cleanup() {

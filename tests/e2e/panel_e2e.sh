@@ -27,13 +27,6 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$OUT"
 rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
 
-for tool in Xvfb xdpyinfo xdotool import convert; do
-    if ! command -v "$tool" >/dev/null; then
-        "$HERE/../../scripts/install-deps.sh" --test
-        break
-    fi
-done
-
 fail() {
     echo "FAIL: $*" >&2
     for f in stderr.log xvfb.log; do
@@ -43,6 +36,7 @@ fail() {
     exit 1
 }
 source "$HERE/harness.sh"
+need_test_tools
 
 start_xvfb "$OUT/xvfb.log" 1100x900x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

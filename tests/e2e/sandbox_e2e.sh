@@ -42,13 +42,6 @@ HERE=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$OUT"
 rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
 
-for tool in Xvfb xdpyinfo xdotool import convert; do
-    if ! command -v "$tool" >/dev/null; then
-        "$HERE/../../scripts/install-deps.sh" --test
-        break
-    fi
-done
-
 fail() {
     echo "FAIL: $*" >&2
     for f in stderr.log xvfb.log; do
@@ -61,6 +54,7 @@ fail() {
     exit 1
 }
 source "$HERE/harness.sh"
+need_test_tools
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
