@@ -29,6 +29,19 @@ double monitoredEnergy(const World& world) {
     return world.def().gravity == Vec2::Zero() ? kineticEnergy(world) : mechanicalEnergy(world);
 }
 
+std::string exactModeRefusal(const World& world) {
+    // The world decides; an empty world with the same box and obstacles asks it cheaply.
+    SolverSettings s = world.solver();
+    s.mode = StepMode::Exact;
+    try {
+        World probe(world.def());
+        probe.setSolver(s);
+    } catch (const InvalidArgument& e) {
+        return e.what();
+    }
+    return {};
+}
+
 ModeSwitch switchToNextMode(World& world) {
     ModeSwitch r;
     const StepMode start = world.solver().mode;

@@ -40,6 +40,9 @@ struct ModeSwitch {
     std::string detail;   ///< for the log: the world's full messages for the skipped modes
 };
 
+/// Why the exact mode cannot step `world` (in words for the screen), or empty when it can.
+[[nodiscard]] std::string exactModeRefusal(const World& world);
+
 /// Moves `world` to the next mode it accepts, skipping (and naming) those it refuses. When it
 /// refuses every other mode the world is unchanged and the message says why.
 ModeSwitch switchToNextMode(World& world);

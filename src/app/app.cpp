@@ -27,6 +27,12 @@ namespace {
 constexpr std::size_t kShownMessages = 2;
 constexpr double kMessageSeconds = 3.0;
 
+bool samePlaces(const std::vector<PanelItem>& a, const std::vector<PanelItem>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& p, const auto& q) {
+        return p.name == q.name && p.x0 == q.x0 && p.y0 == q.y0 && p.x1 == q.x1 && p.y1 == q.y1;
+    });
+}
+
 void logLine(const std::string& line) {
     std::fputs(line.c_str(), stdout);
     std::fputc('\n', stdout);
@@ -83,6 +89,9 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.inspectorColumn =
         textBoxSize(sdl_->hudFont(), {"momentum  [-123.45, -123.45] kg m/s"}).x +
         2.0 * kPanelMargin;
+    const double ratio = sdl_->pixelRatio();
+    s.insets.controls = kControlsWidth * ratio;
+    s.insets.controlsFolded = kControlsFoldedWidth * ratio;
     session_.emplace(std::move(world), std::move(name), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});
@@ -96,6 +105,11 @@ App::App(const AppOptions& options) : options_(options) {
     if (options_.benchParticles > 0) (void)session_->takeNotices();
     flushNotices();
     draw_ = std::make_unique<DrawLayer>(sdl_->renderer(), sdl_->hudFont(), sdl_->labelFont());
+    GuiOptions gui;
+    gui.font = findAsset("fonts/DejaVuSans.ttf");
+    gui.fontPixels = 15.f;
+    gui_ = std::make_unique<GuiContext>(sdl_->window(), sdl_->renderer(), gui);
+    ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
 }
 
 double App::now() const {
@@ -110,8 +124,12 @@ void App::flushNotices() {
     if (messages_.size() > kShownMessages) {
         messages_.erase(messages_.begin(), messages_.end() - kShownMessages);
     }
-    // Text input only while the edit prompt wants characters.
-    const bool editing = session_->prompt().active();
+    updateTextInput();
+}
+
+void App::updateTextInput() {
+    // Text input only while the edit prompt or a field of the panel wants characters.
+    const bool editing = session_->prompt().active() || (gui_ && gui_->io().WantTextInput);
     if (editing != textInput_) {
         if (editing) {
             SDL_StartTextInput();
@@ -136,6 +154,8 @@ void App::apply(const Command& c) {
 }
 
 void App::processEvent(const SDL_Event& e) {
+    // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
+    if (gui_ && gui_->handleEvent(e)) return;
     for (const Command& c :
          input_.translate(e, session_->prompt().active(), sdl_->pixelRatio(), sdl_->outputSize())) {
         apply(c);
@@ -179,7 +199,8 @@ int App::run() {
 void App::handleEvents() {
     SDL_Event e;
     // Paused and idle: sleep until something happens (or a quarter second, for the messages).
-    if (session_->paused() && session_->interaction().mode() == Interaction::Mode::Idle) {
+    if (session_->paused() && session_->interaction().mode() == Interaction::Mode::Idle &&
+        !panelSettling_) {
         if (SDL_WaitEventTimeout(&e, 250) != 0) processEvent(e);
     }
     while (SDL_PollEvent(&e) != 0)
@@ -218,8 +239,25 @@ void App::writeScreenshot(const DrawStats& drawn) {
 void App::render() {
     const auto t0 = std::chrono::steady_clock::now();
     stats_.messages = messages();
+    gui_->beginFrame();
+    const double ratio = sdl_->pixelRatio();
+    const SDL_Point out = sdl_->outputSize();
+    // The help is read, then closed: meanwhile it takes the window's width, the panel's too.
+    if (!session_->helpShown()) {
+        for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / ratio),
+                                             static_cast<float>(ratio))) {
+            apply(c);
+        }
+    }
     lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont());
     const DrawStats drawn = draw_->draw(lastFrame_);
+    if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
+    updateTextInput();
+    // A panel whose controls moved (a section opened) settles in the next frame: draw it even
+    // when nothing else happens.
+    panelSettling_ = !samePlaces(panel_.items(), lastItems_);
+    if (panelSettling_) lastItems_ = panel_.items();
+    if (options_.logControls) logControls();
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
     if (session_->takeScreenshotRequest()) writeScreenshot(drawn);
@@ -227,6 +265,18 @@ void App::render() {
     sdl_->present();
     stats_.lastDrawMs = msSince(t0);
     stats_.drawMs = 0.95 * stats_.drawMs + 0.05 * stats_.lastDrawMs;
+}
+
+void App::logControls() {
+    const auto& items = panel_.items();
+    if (samePlaces(items, loggedItems_)) return;
+    loggedItems_ = items;
+    char buf[160];
+    for (const PanelItem& i : items) {
+        std::snprintf(buf, sizeof buf, "[I] Control %s at %.0f %.0f", i.name.c_str(),
+                      (i.x0 + i.x1) / 2.f, (i.y0 + i.y1) / 2.f);
+        logLine(buf);
+    }
 }
 
 int App::runBenchmark() {

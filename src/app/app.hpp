@@ -6,10 +6,14 @@
 //                      where anything changes
 //     update(dt_real)  Session::update: fixed steps of the world's dt driven by an accumulator
 //                      (scaled by the time speed), the held particle placed at the hand first
-//     render()         buildFrame(): a read-only FrameView of the session; DrawLayer::draw()
-//                      draws it (the only code calling SDL's drawing functions); present
+//     render()         the control panel (control_panel.hpp, Dear ImGui) reads the session and
+//                      returns Commands, applied like the keys'; buildFrame(): a read-only
+//                      FrameView of the session; DrawLayer::draw() draws it (the only code
+//                      calling SDL's drawing functions), then GuiContext draws the panel; present
 //
 //   App ──owns──> SdlContext (window, renderer, fonts; RAII)
+//    │            GuiContext + ControlPanel (the on-screen controls: events to ImGui first,
+//    │                     the rest to Input)
 //    │            Session (world, scene as loaded, presets, camera, view toggles, hand,
 //    │                     selection, edit prompt, spawn rules, clock; no SDL)
 //    │            DrawLayer (Renderer, trails, analysis panels, text panels)
@@ -37,8 +41,10 @@
 
 #include <SDL.h>
 
+#include "control_panel.hpp"
 #include "draw_layer.hpp"
 #include "frame_view.hpp"
+#include "gui_context.hpp"
 #include "input.hpp"
 #include "sdl_context.hpp"
 #include "session.hpp"
@@ -61,6 +67,9 @@ struct AppOptions {
     /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
     std::string benchOverlays;
     std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
+    /// Log "[I] Control NAME at X Y" (window points, the control's centre) for every control of
+    /// the panel whenever their places change, for scripts that drive the window.
+    bool logControls = false;
 };
 
 class App {
@@ -96,6 +105,8 @@ class App {
     [[nodiscard]] std::vector<std::string> messages() const;
     /// The frame the last render() drew.
     [[nodiscard]] const FrameView& lastFrame() const { return lastFrame_; }
+    /// The control panel as the last render() built it.
+    [[nodiscard]] const ControlPanel& panel() const { return panel_; }
 
   private:
     struct Message {
@@ -111,10 +122,18 @@ class App {
     void flushNotices();
     /// The window as NAME.png and the text it shows as NAME.txt (screen_text.hpp).
     void writeScreenshot(const DrawStats& drawn);
+    /// SDL's text input on while the edit prompt or a panel field wants characters.
+    void updateTextInput();
+    void logControls();
     [[nodiscard]] double now() const;
 
     AppOptions options_;
     std::unique_ptr<SdlContext> sdl_;
+    std::unique_ptr<GuiContext> gui_;  ///< after sdl_: destroyed before the renderer it draws on
+    ControlPanel panel_;
+    std::vector<PanelItem> loggedItems_;  ///< what --log-controls last wrote
+    std::vector<PanelItem> lastItems_;    ///< the panel's controls in the frame before
+    bool panelSettling_ = true;           ///< they moved in the last frame
     std::optional<Session> session_;
     std::unique_ptr<DrawLayer> draw_;
     Input input_;

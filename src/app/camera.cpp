@@ -28,15 +28,17 @@ void Camera::panPixels(const Vec2& pixels) {
 }
 
 void Camera::fit(double width, double height, double marginPixels, double topInsetPixels,
-                 double bottomInsetPixels, double rightInsetPixels) {
+                 double bottomInsetPixels, double rightInsetPixels, double leftInsetPixels) {
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
         return;
     }
     // The insets are given up only when the window is big enough to spare them.
     const double top = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
     const double bottom = std::clamp(bottomInsetPixels, 0.0, height_ / 3.0);
-    const double right = std::clamp(rightInsetPixels, 0.0, 2.0 * width_ / 3.0);
-    const double usableW = std::max(1.0, width_ - right - 2.0 * marginPixels);
+    // The control panel's column is kept free down to windows ~520 pixels wide.
+    const double left = std::clamp(leftInsetPixels, 0.0, 0.6 * width_);
+    const double right = std::clamp(rightInsetPixels, 0.0, std::max(0.0, 0.75 * width_ - left));
+    const double usableW = std::max(1.0, width_ - left - right - 2.0 * marginPixels);
     const double usableH = std::max(1.0, height_ - top - bottom - 2.0 * marginPixels);
     const double z = std::min(usableW / width, usableH / height);
     minZoom_ = z / 50.0;
@@ -44,7 +46,9 @@ void Camera::fit(double width, double height, double marginPixels, double topIns
     zoom_ = z;
     // The box's centre maps to the centre of the area the insets leave.
     const Vec2 centre(width / 2.0, height / 2.0);
-    offset_ = centre - Vec2((width_ - right) / 2.0, top + (height_ - top - bottom) / 2.0) / zoom_;
+    offset_ =
+        centre -
+        Vec2(left + (width_ - left - right) / 2.0, top + (height_ - top - bottom) / 2.0) / zoom_;
 }
 
 void Camera::keepNear(double width, double height) {

@@ -7,11 +7,18 @@
 // Pointer positions are screen pixels (the session converts them through its camera), times are
 // seconds on the clock the pointer events carry (SDL's ticks in the app).
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <variant>
 
+#include <particle_sandbox/color.hpp>
 #include <particle_sandbox/math.hpp>
+#include <particle_sandbox/particle_id.hpp>
+#include <particle_sandbox/solver_settings.hpp>
+
+#include "edit_prompt.hpp"
 
 namespace psb::app::cmd {
 
@@ -117,8 +124,81 @@ struct EditField {
 struct EditBackspace {};
 struct EditApply {};
 
+// Values set directly (the control panel's sliders, fields and buttons). A slider held and
+// dragged sends one command per frame: the first with `continues` false, the rest true, so the
+// drag is one user action (one undo step), not hundreds.
+struct SetRestitution {
+    double value = 1.0;
+    bool continues = false;
+};
+struct SetFriction {
+    double value = 0.0;  ///< Coulomb coefficient, >= 0
+    bool continues = false;
+};
+/// Gravity on (straight down, `g` m/s²) or off.
+struct SetGravity {
+    bool on = false;
+    double g = 9.81;
+    bool continues = false;
+};
+struct SetWalls {
+    bool on = true;
+};
+/// The stepping mode; `substeps` for StepMode::Substep (2 or more).
+struct SetMode {
+    StepMode mode = StepMode::Discrete;
+    int substeps = 4;
+};
+/// Simulated seconds per real second, within the session's limits.
+struct SetTimeScale {
+    double value = 1.0;
+};
+/// What the left mouse button does.
+enum class Tool : std::uint8_t {
+    Fling,   ///< a particle: grab and throw it; empty space: launch a new one (the default)
+    Launch,  ///< every drag launches a new particle
+    Select,  ///< clicks select, drags change nothing
+    Pan,     ///< drags move the view
+};
+struct SetTool {
+    Tool tool = Tool::Fling;
+};
+/// What launched particles are made of; radius 0 follows the mass (the original's rule, scaled
+/// to the scene); no colour: a colour from the mass.
+struct SetLaunchBody {
+    double mass = 10.0;
+    double radius = 0.0;
+    std::optional<Color> color;
+};
+/// One value of one particle, as text (validated as the edit prompt validates it).
+struct EditParticle {
+    ParticleId id;
+    ParticleField field = ParticleField::Mass;
+    std::string text;
+};
+/// The selection set from a table (null clears it).
+struct Select {
+    ParticleId id;
+};
+/// Show options set to a value (checkboxes).
+enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile };
+struct SetShow {
+    ShowOption option = ShowOption::Arrows;
+    bool on = true;
+};
+struct SetTrails {
+    int mode = 0;  ///< TrailMode as int: off, selected, all
+};
+/// The control panel shown or folded to a narrow strip (key C).
+struct ToggleControls {};
+
 // Files and leaving.
 struct Save {};
+/// Saves to `path` as given (an existing file is replaced only when `overwrite` is set).
+struct SaveAs {
+    std::filesystem::path path;
+    bool overwrite = false;
+};
 struct Screenshot {};  ///< the app writes the next frame's pixels
 /// Esc: closes what is open (the help, the edit prompt, a quit question); with nothing open,
 /// quits, asking first when there are unsaved changes.
@@ -139,6 +219,9 @@ using Command =
                  cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::ChangeRestitution,
                  cmd::ToggleGravity, cmd::NextMode, cmd::Reset, cmd::OpenPreset, cmd::OpenFile,
                  cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
-                 cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit>;
+                 cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution,
+                 cmd::SetFriction, cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale,
+                 cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle, cmd::Select, cmd::SetShow,
+                 cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs>;
 
 }  // namespace psb::app

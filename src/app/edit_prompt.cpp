@@ -29,9 +29,9 @@ std::string_view trim(std::string_view s) {
 }
 
 /// The number in `text`, or nullopt with `why` set.
-std::optional<double> parseNumber(EditField f, std::string_view text, std::string& why) {
+std::optional<double> parseNumber(const std::string& name, std::string_view text,
+                                  std::string& why) {
     const std::string_view t = trim(text);
-    const std::string name = fieldName(f);
     if (t.empty()) {
         why = name + ": empty, expected a number";
         return std::nullopt;
@@ -56,6 +56,24 @@ std::optional<double> parseNumber(EditField f, std::string_view text, std::strin
 }
 
 }  // namespace
+
+const char* fieldName(ParticleField f) {
+    switch (f) {
+        case ParticleField::X:
+            return "x";
+        case ParticleField::Y:
+            return "y";
+        case ParticleField::Vx:
+            return "vx";
+        case ParticleField::Vy:
+            return "vy";
+        case ParticleField::Mass:
+            return "mass";
+        case ParticleField::Radius:
+            return "radius";
+    }
+    return "?";
+}
 
 const char* fieldName(EditField f) {
     switch (f) {
@@ -135,12 +153,59 @@ EditResult applyEdit(World& world, ParticleId id,
     for (int k = 0; k < kEditFields; ++k) {
         std::string why;
         const auto f = static_cast<EditField>(k);
-        const auto parsed = parseNumber(f, texts[static_cast<std::size_t>(k)], why);
+        const auto parsed = parseNumber(fieldName(f), texts[static_cast<std::size_t>(k)], why);
         if (!parsed) return {false, why};
         v[static_cast<std::size_t>(k)] = *parsed;
     }
-    const double mass = v[0], radius = v[1];
-    const Vec2 velocity(v[2], v[3]);
+    return setChecked(world, id, v[0], v[1], world.get(id).position, Vec2(v[2], v[3]));
+}
+
+EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
+                             std::string_view text) {
+    if (!world.contains(id)) return {false, "the particle no longer exists"};
+    std::string why;
+    const auto value = parseNumber(fieldName(field), text, why);
+    if (!value) return {false, why};
+    const Particle p = world.get(id);
+    double mass = p.mass, radius = p.radius;
+    Vec2 position = p.position, velocity = p.velocity;
+    const WorldDef& def = world.def();
+    const auto inside = [&](double v, double extent) -> std::optional<EditResult> {
+        if (def.walls && (v < p.radius || v > extent - p.radius)) {
+            return EditResult{false, std::string(fieldName(field)) + ": " + formatValue(v) +
+                                         " m is outside the box (from " + formatValue(p.radius) +
+                                         " to " + formatValue(extent - p.radius) +
+                                         " m for this radius)"};
+        }
+        return std::nullopt;
+    };
+    switch (field) {
+        case ParticleField::X:
+            if (auto refused = inside(*value, def.width)) return *refused;
+            position.x() = *value;
+            break;
+        case ParticleField::Y:
+            if (auto refused = inside(*value, def.height)) return *refused;
+            position.y() = *value;
+            break;
+        case ParticleField::Vx:
+            velocity.x() = *value;
+            break;
+        case ParticleField::Vy:
+            velocity.y() = *value;
+            break;
+        case ParticleField::Mass:
+            mass = *value;
+            break;
+        case ParticleField::Radius:
+            radius = *value;
+            break;
+    }
+    return setChecked(world, id, mass, radius, position, velocity);
+}
+
+EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& wanted,
+                      const Vec2& velocity) {
     const WorldDef& def = world.def();
 
     if (!(mass >= std::numeric_limits<double>::min())) {
@@ -162,7 +227,7 @@ EditResult applyEdit(World& world, ParticleId id,
     }
 
     const Particle old = world.get(id);
-    Vec2 position = old.position;
+    Vec2 position = wanted;
     if (def.walls) {
         position = {std::clamp(position.x(), radius, def.width - radius),
                     std::clamp(position.y(), radius, def.height - radius)};
@@ -176,9 +241,11 @@ EditResult applyEdit(World& world, ParticleId id,
             const double after = radius + p.radius[j] - (position - c).norm();
             if (after > 0.0 && after > before) {
                 char buf[160];
-                std::snprintf(buf, sizeof buf,
-                              "radius: %s m would overlap the particle at [%.2f, %.2f] m",
-                              formatValue(radius).c_str(), c.x(), c.y());
+                std::snprintf(buf, sizeof buf, "%s would overlap the particle at [%.2f, %.2f] m",
+                              wanted != old.position
+                                  ? "position: the new place"
+                                  : ("radius: " + formatValue(radius) + " m").c_str(),
+                              c.x(), c.y());
                 return {false, buf};
             }
         }
@@ -204,7 +271,7 @@ EditResult applyEdit(World& world, ParticleId id,
                   formatValue(mass).c_str(), formatValue(radius).c_str(),
                   formatValue(velocity.x()).c_str(), formatValue(velocity.y()).c_str());
     std::string message = buf;
-    if (position != old.position) {
+    if (position != wanted) {
         std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
                       position.x(), position.y());
         message += buf;

@@ -20,6 +20,7 @@
 // A refusal changes nothing and says which field is wrong and why.
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -29,6 +30,8 @@
 namespace psb::app {
 
 enum class EditField { Mass, Radius, Vx, Vy };
+/// One value of a particle, for edits of a single field (the control panel's tables).
+enum class ParticleField : std::uint8_t { X, Y, Vx, Vy, Mass, Radius };
 inline constexpr int kEditFields = 4;
 
 /// Fastest velocity an edit may give, in box sizes (the larger side) per second: beyond this a
@@ -37,6 +40,8 @@ inline constexpr double kMaxEditSpeedBoxes = 1000.0;
 
 /// "mass", "radius", "vx", "vy".
 [[nodiscard]] const char* fieldName(EditField f);
+/// "x", "y", "vx", "vy", "mass", "radius".
+[[nodiscard]] const char* fieldName(ParticleField f);
 /// "kg", "m", "m/s".
 [[nodiscard]] const char* fieldUnit(EditField f);
 
@@ -85,5 +90,15 @@ struct EditResult {
 /// particle `id` of `world`, all or nothing. Never throws for bad text or values.
 EditResult applyEdit(World& world, ParticleId id,
                      const std::array<std::string, kEditFields>& texts);
+
+/// One field of particle `id` set from `text`, validated as applyEdit validates (a position
+/// must also lie inside the walls, and may not overlap a neighbour more than before).
+EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
+                             std::string_view text);
+
+/// The checks and setters both edits share: mass, radius, position (moved inward to stay inside
+/// the walls) and velocity of `id`, all or nothing.
+EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& position,
+                      const Vec2& velocity);
 
 }  // namespace psb::app

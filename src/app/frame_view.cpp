@@ -15,10 +15,9 @@ namespace psb::app {
 
 namespace {
 
-HudData hudData(const Session& session, const FrameStats& stats) {
+HudData hudData(const Session& session) {
     const World& world = session.world();
     HudData hud;
-    hud.fps = stats.fps;
     hud.simTime = world.time();
     hud.timeScale = session.timeScale();
     hud.reachedTimeScale = session.reachedTimeScale();
@@ -29,21 +28,6 @@ HudData hudData(const Session& session, const FrameStats& stats) {
     hud.spawnRadius = session.spawn().radius();
     hud.arrowSeconds = session.view().arrows ? session.view().arrowSeconds : 0.0;
     hud.paused = session.paused();
-    hud.stepMs = stats.stepMs;
-    hud.drawMs = stats.drawMs;
-    hud.renderer = stats.renderer;
-    hud.mode = modeName(world.solver());
-    hud.overlays = session.overlayFlags();
-    // The exact mode finds its events through its own cell lists, not the broadphase.
-    hud.broadphase = world.solver().mode == StepMode::Exact
-                         ? std::string("event cells")
-                         : std::string(toString(world.broadPhaseInUse()));
-    hud.threads = world.threads();
-    hud.maxOverlap = session.accuracy().overlap();
-    hud.keDrift = session.accuracy().drift(monitoredEnergy(world));
-    hud.driftName = world.def().gravity == Vec2::Zero() ? "KE drift" : "KE+PE drift";
-    hud.restitution = world.def().restitution;
-    hud.gravity = gravityText(world.def().gravity);
     const TimelineView past = session.timeline();
     hud.past = past.viewingPast;
     hud.secondsBack = past.secondsBack();
@@ -107,7 +91,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
 
     Overlays& o = f.overlays;
-    o.hud = hudLines(hudData(session, stats));
+    o.hud = hudLines(hudData(session));
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (stats.labelsCrowded > 0 && session.view().labels) {
         o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
@@ -126,11 +110,16 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
         o.profile = profileLines(pd);
     }
     o.messages = stats.messages;
-    if (f.selected) o.inspector = inspectorLines(*f.selected, session.prompt());
+    // With the control panel open the selected particle's values are in it; the inspector
+    // beside the box stays for the keyboard's edit prompt (Enter).
+    if (f.selected && (!session.controlsShown() || session.prompt().active())) {
+        o.inspector = inspectorLines(*f.selected, session.prompt());
+    }
 
     LayoutRequest req;
     req.width = session.camera().viewportWidth();
     req.height = session.camera().viewportHeight();
+    req.left = static_cast<int>(session.controlsInset());
     req.hud = textBoxSize(hudFont, o.hud);
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {

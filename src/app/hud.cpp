@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "units.hpp"
+
 namespace psb::app {
 
 std::string windowTitle(std::size_t particles, bool paused, const std::string& scene) {
@@ -14,53 +16,33 @@ std::string windowTitle(std::size_t particles, bool paused, const std::string& s
 }
 
 std::vector<std::string> hudLines(const HudData& d) {
-    char buf[160];
+    char buf[200];
     std::vector<std::string> lines;
-    if (d.paused) {
-        std::snprintf(buf, sizeof buf, "Paused: redrawn on input | step %.2f ms | draw %.2f ms",
-                      d.stepMs, d.drawMs);
-    } else {
-        std::snprintf(buf, sizeof buf, "FPS %.0f | step %.2f ms | draw %.2f ms", d.fps, d.stepMs,
-                      d.drawMs);
-    }
-    lines.emplace_back(buf);
-    if (!d.renderer.empty()) lines.back() += " | " + d.renderer;
     // Below 95 % of the speed asked for, the reached speed is what the user sees.
     char speed[64];
     if (!d.paused && d.reachedTimeScale < 0.95 * d.timeScale) {
-        std::snprintf(speed, sizeof speed, "x%.2g of x%g asked (steps too slow)",
+        std::snprintf(speed, sizeof speed, "x%.2g of x%g asked (too much to compute)",
                       d.reachedTimeScale, d.timeScale);
     } else {
         std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
     }
-    std::snprintf(buf, sizeof buf, "Time %.2f s %s | %zu particles%s", d.simTime, speed,
-                  d.particles, d.paused ? " | PAUSED" : "");
+    std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s",
+                  quantity(d.simTime, "s").c_str(), speed, d.particles, d.particles == 1 ? "" : "s",
+                  d.paused ? " | PAUSED" : "");
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "KE %.4g J | p [%.4g, %.4g] kg m/s", d.kineticEnergy,
-                  d.momentum.x(), d.momentum.y());
+    std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
+                  quantity(d.kineticEnergy, "J").c_str(),
+                  quantity(d.momentum.x(), "", false).c_str(),
+                  quantity(d.momentum.y(), "", false).c_str());
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "Mode %s | %s | %d thread%s", d.mode.c_str(),
-                  d.broadphase.c_str(), d.threads, d.threads == 1 ? "" : "s");
-    lines.emplace_back(buf);
-    if (!d.overlays.empty()) lines.back() += " | on: " + d.overlays;
-    std::snprintf(buf, sizeof buf, "Restitution %.2f | gravity %s", d.restitution,
-                  d.gravity.c_str());
-    lines.emplace_back(buf);
-    if (std::isnan(d.keDrift)) {
-        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | %s n/a", d.maxOverlap,
-                      d.driftName.c_str());
-    } else {
-        std::snprintf(buf, sizeof buf, "Overlap max %.3g m | %s %+.2e since last action",
-                      d.maxOverlap, d.driftName.c_str(), d.keDrift);
-    }
-    lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "New: %.0f kg, r %.3g m", d.spawnMass, d.spawnRadius);
+    std::snprintf(buf, sizeof buf, "New: %s, radius %s", quantity(d.spawnMass, "kg", false).c_str(),
+                  quantity(d.spawnRadius, "m").c_str());
     std::string last = buf;
     if (d.arrowSeconds > 0.0) {
         std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
         last += buf;
     }
-    lines.push_back(last + " | H: help");
+    lines.push_back(last + " | C: controls | H: help");
     if (d.past) {
         std::snprintf(buf, sizeof buf,
                       "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
@@ -98,36 +80,38 @@ std::vector<std::string> profileLines(const ProfileData& d) {
 }
 
 const std::vector<std::pair<std::string, std::string>>& controls() {
+    // Each line says where its button is in the control panel (the column at the left).
     static const std::vector<std::pair<std::string, std::string>> list = {
-        {"Left drag on a particle", "grab it; release to fling it"},
-        {"Left drag on empty space", "launch a particle: the drag is its arrow"},
-        {"Left click on a particle", "select it: outline and inspector panel"},
+        {"Left drag on a particle", "grab it; release to fling it (panel: Tools)"},
+        {"Left drag on empty space", "launch a particle: the drag is its arrow (Tools)"},
+        {"Left click on a particle", "select it: its values in the panel (Selected particle)"},
         {"Left click on empty space", "clear the selection"},
-        {"Enter (selected)", "edit it (Tab: next field, Esc: cancel)"},
+        {"Enter (selected)", "edit it here (Tab: next field, Esc: cancel)"},
         {"Backspace / Delete (holding)", "delete the held particle"},
         {"M", "spawn a random particle"},
-        {"[ / ]", "lighter / heavier new particles"},
-        {"S", "show / hide labels (velocity, momentum, mass)"},
-        {"A", "show / hide velocity arrows"},
+        {"[ / ]", "smaller / bigger new particles (Tools: New particles)"},
+        {"S", "show / hide labels (Show)"},
+        {"A", "show / hide velocity arrows (Show)"},
         {"Wheel", "zoom about the cursor"},
-        {"Arrow keys, right or middle drag", "pan"},
+        {"Arrow keys, right or middle drag", "pan (Tools: Pan)"},
         {"F", "fit the box to the window"},
-        {"Space", "pause / resume"},
-        {"N", "one step (while paused)"},
-        {"Shift+Left/Right, PgUp/PgDn", "a frame, a second back / forward in time"},
-        {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change"},
-        {", / .", "slow down / speed up time"},
-        {"P / 1-9", "next preset / preset by number"},
-        {"R", "reset the scene to how it was loaded"},
-        {"E / Shift+E", "restitution down / up by 0.05"},
-        {"G", "gravity on / off"},
-        {"T", "next stepping mode: discrete, substep, exact"},
-        {"O / F3", "show / hide the profile overlay"},
-        {"Ctrl+S", "save the world as a scene"},
-        {"V", "momentum view: m v and the total"},
-        {"L", "path traces: off / selected particle / all"},
-        {"K", "plots: energy, momentum, collision rate over time"},
-        {"D", "speed histogram against Maxwell-Boltzmann"},
+        {"Space", "pause / resume (Time: Play, Pause)"},
+        {"N", "one step while paused (Time: Step)"},
+        {"Shift+Left/Right, PgUp/PgDn", "a frame, a second back / forward in time (Time)"},
+        {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change (Time: Undo, Redo)"},
+        {", / .", "slow down / speed up time (Time: Speed)"},
+        {"P / 1-9, 0, Shift+1-3", "next preset / preset 1-9, 10, 11-13 (Scene)"},
+        {"R", "reset the scene to how it was loaded (Time: Reset)"},
+        {"E / Shift+E", "restitution down / up by 0.05 (Physics)"},
+        {"G", "gravity on / off (Physics)"},
+        {"T", "next stepping mode: discrete, substep, exact (Physics)"},
+        {"O / F3", "profile beside the box (Engine)"},
+        {"Ctrl+S", "save the world as a scene (Scene: Save)"},
+        {"V", "momentum and centre of mass (Show)"},
+        {"L", "trails: off / selected particle / all (Show)"},
+        {"K", "plots of energy, momentum, collisions (Show)"},
+        {"D", "speed histogram (Show)"},
+        {"C", "open / fold the control panel"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
         {"Esc", "close help / edit; quit (asks if unsaved)"},

@@ -52,6 +52,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
             return {cmd::ToggleLabels{}};
         case SDLK_a:
             return {cmd::ToggleArrows{}};
+        case SDLK_c:
+            return {cmd::ToggleControls{}};
         case SDLK_m:
             return {cmd::SpawnRandom{}};
         case SDLK_h:

@@ -9,9 +9,21 @@
 namespace psb::app {
 
 void SpawnSettings::changeSize(int steps) {
+    if (fixedMass) {
+        size = typicalMass > 0.0 ? *fixedMass / typicalMass : 1.0;
+        fixedMass.reset();
+    }
     // Whole tenths, so that ten presses up and ten down come back to exactly where they began.
     const double tenths = std::round(size / kSizeStep) + steps;
     size = std::clamp(tenths * kSizeStep, kMinSize, kMaxSize);
+}
+
+Color SpawnSettings::color() const {
+    if (fixedColor) return *fixedColor;
+    const double s = typicalMass > 0.0 ? mass() / typicalMass : size;
+    const double t = std::clamp((s - kMinSize) / (kMaxSize - kMinSize), 0.0, 1.0);
+    return {static_cast<std::uint8_t>(120 + 135 * t), 200,
+            static_cast<std::uint8_t>(255 - 135 * t)};
 }
 
 namespace {
@@ -110,6 +122,9 @@ void followScene(SpawnSettings& spawn, const World& world) {
     spawn.typicalMass = medianOr({p.mass.begin(), p.mass.end()}, 10.0);
     spawn.typicalRadius =
         medianOr({p.radius.begin(), p.radius.end()}, 25.0 * std::min(d.width, d.height) / 700.0);
+    // A mass or radius chosen for another scene would not fit this one; a colour still does.
+    spawn.fixedMass.reset();
+    spawn.fixedRadius.reset();
 }
 
 double maxLaunchSpeed(const WorldDef& def) {
@@ -142,14 +157,14 @@ void Interaction::record(const Vec2& point, double time) {
     }
 }
 
-void Interaction::press(World& world, const Vec2& point, double time) {
+void Interaction::press(World& world, const Vec2& point, double time, bool grab) {
     if (mode_ != Mode::Idle) return;  // a second press while one is active is ignored
     samples_.clear();
     pressPoint_ = point;
     pressTime_ = time;
     travel_ = 0.0;
     record(point, time);
-    if (const auto id = world.pick(point)) {
+    if (const auto id = grab ? world.pick(point) : std::nullopt) {
         held_ = *id;
         const Particle p = world.get(*id);
         grabOffset_ = p.position - point;
@@ -237,11 +252,7 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
             def.velocity = launched.velocity;
             def.mass = spawn.mass();
             def.radius = spawn.radius();
-            // A colour that depends on the size, light enough to read on black.
-            const double t = (spawn.size - SpawnSettings::kMinSize) /
-                             (SpawnSettings::kMaxSize - SpawnSettings::kMinSize);
-            def.color = {static_cast<std::uint8_t>(120 + 135 * t), 200,
-                         static_cast<std::uint8_t>(255 - 135 * t)};
+            def.color = spawn.color();
             result.kind = ReleaseResult::Kind::Launched;
             result.id = world.add(def);
             result.position = *spot;

@@ -49,9 +49,21 @@ struct SpawnSettings {
     double typicalMass = 10.0;    ///< kg
     double typicalRadius = 25.0;  ///< metres
     double size = 1.0;            ///< times the typical particle
-    [[nodiscard]] double mass() const { return size * typicalMass; }
-    [[nodiscard]] double radius() const { return size * typicalRadius; }
-    /// `steps` tenths bigger (negative: smaller), kept in [kMinSize, kMaxSize].
+    /// Set from the control panel: a fixed mass (kg), radius (m) or colour instead of the
+    /// rule. A fixed mass with the radius left to the rule gives the radius of the typical
+    /// particle times the mass ratio (radius and mass grow together, as `size` makes them).
+    std::optional<double> fixedMass;
+    std::optional<double> fixedRadius;
+    std::optional<Color> fixedColor;
+    [[nodiscard]] double mass() const { return fixedMass ? *fixedMass : size * typicalMass; }
+    [[nodiscard]] double radius() const {
+        if (fixedRadius) return *fixedRadius;
+        return fixedMass ? typicalRadius * (*fixedMass / typicalMass) : size * typicalRadius;
+    }
+    /// fixedColor, else a colour from the size, light enough to read on black.
+    [[nodiscard]] Color color() const;
+    /// `steps` tenths bigger (negative: smaller), kept in [kMinSize, kMaxSize]; a fixed mass
+    /// becomes the size it has and is stepped from there.
     void changeSize(int steps);
 };
 
@@ -110,8 +122,9 @@ class Interaction {
     static constexpr double kClickSeconds = 0.3;
 
     /// The left button went down at `point` (world metres) at `time` (seconds, any clock that
-    /// the later calls share). Grabs the topmost particle there, or starts a launch drag.
-    void press(World& world, const Vec2& point, double time);
+    /// the later calls share). Grabs the topmost particle there (unless `grab` is false), or
+    /// starts a launch drag.
+    void press(World& world, const Vec2& point, double time, bool grab = true);
     /// The pointer is now at `point` (a motion, or the camera moved under a still pointer).
     void moveTo(const Vec2& point, double time);
     /// Where the hand holds a particle: its id, the pointer + grab offset (kept in the box) and

@@ -77,6 +77,8 @@ int main(int argc, char** argv) {
                        : "expected letters from VLKD, got '" + keys + "'";
         });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
+    cli.add_flag("--log-controls", options.logControls,
+                 "Log where each control of the panel is when they move (for scripted input)");
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -13,25 +13,27 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     PanelLayout l;
     const int m = kPanelMargin, gap = kPanelGap;
     const int right = r.width - m;
-    if (r.hud.x > 0 && r.hud.y > 0) l.hud = {4, 4, r.hud.x, r.hud.y};
+    const int left = r.left + m;  // the leftmost a right-aligned panel may start
+    const int room = r.width - r.left - 2 * m;
+    if (r.hud.x > 0 && r.hud.y > 0) l.hud = {r.left + 4, 4, r.hud.x, r.hud.y};
     const int hudRight = l.hud.w > 0 ? l.hud.x + l.hud.w : 0;
     const int hudBottom = l.hud.w > 0 ? l.hud.y + l.hud.h : 0;
 
     // A box right-aligned in the column, below `top` and below the HUD where they would share
     // columns of pixels.
     const auto place = [&](SDL_Point size, int top) {
-        const int x = std::max(m, right - size.x);
+        const int x = std::max(left, right - size.x);
         const int y = x < hudRight + gap ? std::max(top, hudBottom + gap) : top;
         return SDL_Rect{x, y, size.x, size.y};
     };
     int bottom = r.height - m;
     if (r.messages.x > 0 && r.messages.y > 0 && bottom - r.messages.y > hudBottom) {
-        l.messages = {4, bottom - r.messages.y, r.messages.x, r.messages.y};
+        l.messages = {r.left + 4, bottom - r.messages.y, r.messages.x, r.messages.y};
     }
 
     // The inspector is what the user just asked for by clicking: it goes first, at the bottom.
-    if (r.inspector.x > 0 && r.inspector.y > 0 && r.inspector.x <= r.width - 2 * m) {
-        const SDL_Rect box{std::max(m, right - r.inspector.x), bottom - r.inspector.y,
+    if (r.inspector.x > 0 && r.inspector.y > 0 && r.inspector.x <= room) {
+        const SDL_Rect box{std::max(left, right - r.inspector.x), bottom - r.inspector.y,
                            r.inspector.x, r.inspector.y};
         if (box.y > hudBottom + gap && !overlaps(box, l.messages) && !overlaps(box, l.hud)) {
             l.inspector = box;
@@ -41,7 +43,7 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
 
     int top = 4;
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
-        if (size.x <= 0 || size.y <= 0 || size.x > r.width - 2 * m) continue;
+        if (size.x <= 0 || size.y <= 0 || size.x > room) continue;
         const SDL_Rect box = place(size, top);
         if (box.y + box.h > bottom || overlaps(box, l.messages)) continue;  // no room: left out
         *out = box;
@@ -49,29 +51,29 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     }
     if (!r.plots && !r.speeds) return l;
 
-    const int width = std::clamp(r.width - 2 * m, 0, kPanelMaxWidth);
+    const int width = std::min(room, sideColumnWidth(r.width, r.left));
     if (width < kPanelMinWidth) return l;
     const SDL_Rect column = place({width, 0}, top);
     top = column.y;
     if (overlaps({column.x, top, width, bottom - top}, l.messages)) {
         bottom = l.messages.y - gap;
     }
-    int room = bottom - top;
+    int height = bottom - top;
     const int plotsMin = kPlotRowMinHeight + 8;  // one row plus the panel's padding
     if (r.speeds) {
         // The histogram takes what is left after the plots' smallest useful size (one row),
         // within its own limits.
-        const int want = r.plots ? std::min(kSpeedsMaxHeight, room - plotsMin - gap)
-                                 : std::min(kSpeedsMaxHeight, room);
+        const int want = r.plots ? std::min(kSpeedsMaxHeight, height - plotsMin - gap)
+                                 : std::min(kSpeedsMaxHeight, height);
         if (want >= kSpeedsMinHeight) {
             l.speeds = {column.x, bottom - want, width, want};
             bottom -= want + gap;
-            room = bottom - top;
+            height = bottom - top;
         }
     }
-    if (r.plots && room >= plotsMin) {
-        const int rows = std::clamp((room - 8) / kPlotRowMinHeight, 1, 4);
-        const int rowHeight = std::min(kPlotRowMaxHeight, (room - 8) / rows);
+    if (r.plots && height >= plotsMin) {
+        const int rows = std::clamp((height - 8) / kPlotRowMinHeight, 1, 4);
+        const int rowHeight = std::min(kPlotRowMaxHeight, (height - 8) / rows);
         const int h = rows * rowHeight + 8;
         l.plots = {column.x, bottom - h, width, h};
         l.plotRows = rows;

@@ -1,19 +1,22 @@
 #pragma once
 // Where the text and analysis panels go, as a pure function of the window size and what each
-// panel would need: the HUD at the top-left, then a column at the right edge holding, from the
-// top, the profile and the momentum legend, and from the bottom the selected particle's
-// inspector, the speed histogram and the plots. The column starts below the HUD when the window is
-// too narrow for both side by side, panels shrink to the room there is (the plots drop their least
-// important rows first: rate, then py, then px), and a panel that does not fit at its smallest is
-// left out. No two rectangles returned overlap.
+// panel would need: the HUD at the top-left (right of the control panel's column), then a column at
+// the right edge holding, from the top, the profile and the momentum legend, and from the bottom
+// the selected particle's inspector, the speed histogram and the plots. The column starts below the
+// HUD when the window is too narrow for both side by side, panels shrink to the room there is (the
+// plots drop their least important rows first: rate, then py, then px), and a panel that does not
+// fit at its smallest is left out. No two rectangles returned overlap.
 
 #include <SDL.h>
+
+#include "view_insets.hpp"
 
 namespace psb::app {
 
 /// What to lay out; sizes in pixels, {0, 0} for a panel that is off.
 struct LayoutRequest {
     int width = 0;              ///< the window
+    int left = 0;               ///< pixels at the left taken by the control panel
     int height = 0;             ///< the window
     SDL_Point hud{0, 0};        ///< the HUD's box (text plus padding)
     SDL_Point profile{0, 0};    ///< the profile overlay's box
@@ -37,14 +40,13 @@ struct PanelLayout {
     int plotRowHeight = 0;  ///< pixels per plot
 };
 
-inline constexpr int kPanelMargin = 8;         ///< from the window's edges, pixels
-inline constexpr int kPanelGap = 6;            ///< between panels, pixels
-inline constexpr int kPanelMaxWidth = 330;     ///< plots and histogram, pixels
-inline constexpr int kPanelMinWidth = 220;     ///< plots and histogram, pixels
-inline constexpr int kPlotRowMaxHeight = 100;  ///< pixels
-inline constexpr int kPlotRowMinHeight = 64;   ///< pixels
-inline constexpr int kSpeedsMaxHeight = 210;   ///< pixels
-inline constexpr int kSpeedsMinHeight = 130;   ///< pixels
+inline constexpr int kPanelGap = 6;                         ///< between panels, pixels
+inline constexpr int kPanelMaxWidth = kSideColumnMaxWidth;  ///< plots and histogram, pixels
+inline constexpr int kPanelMinWidth = kSideColumnMinWidth;  ///< plots and histogram, pixels
+inline constexpr int kPlotRowMaxHeight = 100;               ///< pixels
+inline constexpr int kPlotRowMinHeight = 64;                ///< pixels
+inline constexpr int kSpeedsMaxHeight = 210;                ///< pixels
+inline constexpr int kSpeedsMinHeight = 130;                ///< pixels
 
 /// Lays out the panels `r` asks for.
 [[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);

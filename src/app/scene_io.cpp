@@ -1,5 +1,6 @@
 #include "scene_io.hpp"
 
+#include <algorithm>
 #include <system_error>
 
 #include <particle_sandbox/presets.hpp>
@@ -18,6 +19,27 @@ std::vector<std::filesystem::path> presetScenes() {
         if (std::filesystem::is_directory(dir / "scenes", ec)) return sceneFiles(dir / "scenes");
     }
     return {};
+}
+
+SceneInfo describeScene(const std::filesystem::path& file) {
+    SceneInfo info;
+    info.file = file;
+    info.name = file.stem().string();
+    try {
+        const Scene scene = loadScene(file);
+        if (!scene.name.empty()) info.name = scene.name;
+        info.description = scene.description;
+    } catch (const std::exception& e) {  // SceneError: listed, and refused when opened
+        info.summary = std::string("cannot be read: ") + e.what();
+        return info;
+    }
+    const std::string& d = info.description;
+    std::size_t end = d.size();
+    for (const char* stop : {": ", ". "})
+        end = std::min(end, d.find(stop));
+    info.summary = d.substr(0, end);
+    if (!info.summary.empty() && info.summary.back() == '.') info.summary.pop_back();
+    return info;
 }
 
 std::filesystem::path freeSavePath(const std::filesystem::path& path) {

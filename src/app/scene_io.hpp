@@ -16,6 +16,16 @@ namespace psb::app {
 /// Throws SceneError naming the file and the problem.
 [[nodiscard]] Scene openScene(const std::optional<std::filesystem::path>& file);
 
+/// A scene file's name and description, for a list to choose from.
+struct SceneInfo {
+    std::filesystem::path file;
+    std::string name;         ///< the scene's own name, or the file's stem
+    std::string summary;      ///< the description up to its first ':' or '.', one line
+    std::string description;  ///< the whole description
+};
+/// The name and description of `file`; a file that cannot be read says so in its summary.
+[[nodiscard]] SceneInfo describeScene(const std::filesystem::path& file);
+
 /// The preset scene files shipped in assets/scenes/, in file-name order (01-..., 02-...);
 /// empty when that directory cannot be found.
 [[nodiscard]] std::vector<std::filesystem::path> presetScenes();

@@ -23,6 +23,19 @@ std::string fmt(const char* format, double a, double b) {
     return buf;
 }
 
+/// The control panel's commands: the mouse sends them, so the edit prompt (which takes the
+/// keyboard) does not hold them back.
+template <class T>
+constexpr bool isPanelCommand() {
+    return std::is_same_v<T, cmd::SetRestitution> || std::is_same_v<T, cmd::SetFriction> ||
+           std::is_same_v<T, cmd::SetGravity> || std::is_same_v<T, cmd::SetWalls> ||
+           std::is_same_v<T, cmd::SetMode> || std::is_same_v<T, cmd::SetTimeScale> ||
+           std::is_same_v<T, cmd::SetTool> || std::is_same_v<T, cmd::SetLaunchBody> ||
+           std::is_same_v<T, cmd::EditParticle> || std::is_same_v<T, cmd::Select> ||
+           std::is_same_v<T, cmd::SetShow> || std::is_same_v<T, cmd::SetTrails> ||
+           std::is_same_v<T, cmd::ToggleControls> || std::is_same_v<T, cmd::SaveAs>;
+}
+
 /// A stepping speed (simulated per real second) for the HUD and messages: "x2", "x0.25".
 std::string speedText(double s) {
     char buf[32];
@@ -53,6 +66,8 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     view_.arrows = options_.arrows;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
     sceneDescription_ = options_.sceneDescription;
+    for (const auto& file : options_.presets)
+        presets_.push_back(describeScene(file));
     setWorld(std::move(world), std::move(sceneName));
     showSceneTrails(options_.sceneTrails);
 }
@@ -79,6 +94,7 @@ void Session::setWorld(World world, std::string name) {
     changedSinceMeasure_ = true;
     fit();
     accuracy_.resetReference(monitoredEnergy(world_));
+    exactRefusal_ = exactModeRefusal(world_);
 }
 
 std::vector<Notice> Session::takeNotices() {
@@ -101,8 +117,12 @@ void Session::log(std::string text, Notice::Level level) {
     notices_.push_back({level, std::move(text), false, true});
 }
 
-void Session::userAction(const char* what) {
+void Session::userAction(const char* what, bool continues) {
     leavePast();
+    if (!continues || lastAction_ != what) {
+        ++userActions_;
+        lastAction_ = what;
+    }
     remember(what);
     accuracy_.resetReference(monitoredEnergy(world_));
     dirty_ = true;
@@ -120,6 +140,13 @@ bool Session::mayEdit(const Command& command) {
     return std::visit(
         [](const auto& c) {
             using T = std::decay_t<decltype(c)>;
+            // A slider still being dragged continues the edit its first command began (and
+            // filed): nothing new to keep.
+            if constexpr (std::is_same_v<T, cmd::SetRestitution> ||
+                          std::is_same_v<T, cmd::SetFriction> ||
+                          std::is_same_v<T, cmd::SetGravity>) {
+                return !c.continues;
+            }
             // Commands that look, move the view, steer the prompt, step or leave: never an
             // edit. Anything else may be (a new command is, until listed here).
             return !(std::is_same_v<T, cmd::PointerMove> || std::is_same_v<T, cmd::PointerUp> ||
@@ -137,7 +164,10 @@ bool Session::mayEdit(const Command& command) {
                      std::is_same_v<T, cmd::EditType> || std::is_same_v<T, cmd::EditField> ||
                      std::is_same_v<T, cmd::EditBackspace> || std::is_same_v<T, cmd::Save> ||
                      std::is_same_v<T, cmd::Screenshot> || std::is_same_v<T, cmd::Back> ||
-                     std::is_same_v<T, cmd::Quit>);
+                     std::is_same_v<T, cmd::Quit> || std::is_same_v<T, cmd::SetTool> ||
+                     std::is_same_v<T, cmd::Select> || std::is_same_v<T, cmd::SetShow> ||
+                     std::is_same_v<T, cmd::SetTrails> || std::is_same_v<T, cmd::ToggleControls> ||
+                     std::is_same_v<T, cmd::SaveAs>);
         },
         command);
 }
@@ -258,7 +288,7 @@ void Session::apply(const Command& command) {
                        std::is_same_v<T, cmd::Screenshot> || std::is_same_v<T, cmd::Resize> ||
                        std::is_same_v<T, cmd::PointerDown> || std::is_same_v<T, cmd::PointerMove> ||
                        std::is_same_v<T, cmd::PointerUp> || std::is_same_v<T, cmd::Zoom> ||
-                       std::is_same_v<T, cmd::Pan>;
+                       std::is_same_v<T, cmd::Pan> || isPanelCommand<T>();
             },
             command);
         if (!allowed) return;
@@ -354,9 +384,7 @@ void Session::apply(const Command& command) {
                 undoOrRedo(true);
             } else if constexpr (std::is_same_v<T, cmd::ScaleTime>) {
                 const double before = timeScale_;
-                timeScale_ = std::clamp(timeScale_ * c.factor, kMinTimeScale, kMaxTimeScale);
-                reached_ = timeScale_;
-                say("Time speed " + speedText(timeScale_));
+                setTimeScale(timeScale_ * c.factor);
                 if (timeScale_ != before) remember("set time speed");
             } else if constexpr (std::is_same_v<T, cmd::SpawnRandom>) {
                 spawnRandom();
@@ -396,6 +424,43 @@ void Session::apply(const Command& command) {
                 back();
             } else if constexpr (std::is_same_v<T, cmd::Quit>) {
                 quit();
+            } else if constexpr (std::is_same_v<T, cmd::SetRestitution>) {
+                setRestitution(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetFriction>) {
+                setFriction(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetGravity>) {
+                setGravity(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetWalls>) {
+                setWalls(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetMode>) {
+                setMode(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetTimeScale>) {
+                const double before = timeScale_;
+                setTimeScale(c.value);
+                if (timeScale_ != before) remember("set time speed");
+            } else if constexpr (std::is_same_v<T, cmd::SetTool>) {
+                tool_ = c.tool;
+                panFrom_.reset();
+                static const char* const kTools[] = {
+                    "Left mouse: fling particles, launch on empty space",
+                    "Left mouse: launch new particles", "Left mouse: select particles",
+                    "Left mouse: move the view"};
+                say(kTools[static_cast<int>(c.tool)]);
+            } else if constexpr (std::is_same_v<T, cmd::SetLaunchBody>) {
+                setLaunchBody(c);
+            } else if constexpr (std::is_same_v<T, cmd::EditParticle>) {
+                editParticle(c);
+            } else if constexpr (std::is_same_v<T, cmd::Select>) {
+                select(c.id);
+            } else if constexpr (std::is_same_v<T, cmd::SetShow>) {
+                setShow(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetTrails>) {
+                view_.trails = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
+            } else if constexpr (std::is_same_v<T, cmd::ToggleControls>) {
+                showControls_ = !showControls_;
+                if (fitted_) fit();
+            } else if constexpr (std::is_same_v<T, cmd::SaveAs>) {
+                saveAs(c);
             } else {
                 static_assert(sizeof(T) == 0, "a command without a handler");
             }
@@ -417,7 +482,12 @@ void Session::apply(const Command& command) {
 void Session::pointerDown(const cmd::PointerDown& c) {
     pointer_ = c.screen;
     pointerTime_ = c.time;
-    interaction_.press(world_, pointerWorld(), c.time);
+    if (tool_ == cmd::Tool::Pan) {
+        panFrom_ = c.screen;
+        return;
+    }
+    if (tool_ == cmd::Tool::Select) return;  // the release selects
+    interaction_.press(world_, pointerWorld(), c.time, tool_ == cmd::Tool::Fling);
     if (interaction_.mode() == Interaction::Mode::Holding) {
         const Particle p = world_.get(interaction_.held());
         log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
@@ -427,6 +497,12 @@ void Session::pointerDown(const cmd::PointerDown& c) {
 }
 
 void Session::pointerMove(const cmd::PointerMove& c) {
+    if (panFrom_) {
+        camera_.panPixels(c.screen - *panFrom_);
+        camera_.keepNear(world_.def().width, world_.def().height);
+        panFrom_ = c.screen;
+        fitted_ = false;
+    }
     pointer_ = c.screen;
     pointerTime_ = c.time;
     interaction_.moveTo(pointerWorld(), c.time);
@@ -435,6 +511,17 @@ void Session::pointerMove(const cmd::PointerMove& c) {
 void Session::pointerUp(const cmd::PointerUp& c) {
     pointer_ = c.screen;
     pointerTime_ = c.time;
+    if (tool_ == cmd::Tool::Pan) {
+        panFrom_.reset();
+        return;
+    }
+    if (tool_ == cmd::Tool::Select) {
+        ReleaseResult r;
+        r.kind = ReleaseResult::Kind::Clicked;
+        if (const auto id = world_.pick(pointerWorld())) r.id = *id;
+        click(r);
+        return;
+    }
     const ReleaseResult r = interaction_.release(world_, pointerWorld(), c.time, spawn_,
                                                  launchSettings(), view_.arrowSeconds);
     using K = ReleaseResult::Kind;
@@ -521,9 +608,9 @@ void Session::spawnRandom() {
 }
 
 void Session::changeSpawnMass(int direction) {
-    const double before = spawn_.size;
+    const double before = spawn_.mass();
     spawn_.changeSize(direction < 0 ? -1 : 1);
-    if (spawn_.size != before) remember("set new particle size");
+    if (spawn_.mass() != before) remember("set new particle size");
     char buf[160];
     std::snprintf(buf, sizeof buf,
                   "New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
@@ -606,6 +693,7 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
             reached_ = 1.0;
         }
         showSceneTrails(scene.trails);
+        if (file) rememberFile(*file);
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)" + speedReset);
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
@@ -654,10 +742,16 @@ void Session::applyEdit() {
 // Files and leaving.
 
 void Session::save() {
+    saveTo(freeSavePath(options_.saveTo));
+}
+
+void Session::saveTo(const std::filesystem::path& path) {
     try {
-        const std::filesystem::path path = freeSavePath(options_.saveTo);
         say(saveWorld(world_, sceneName_, sceneDescription_, path));
-        lastSave_ = path;
+        std::error_code ec;
+        const auto full = std::filesystem::absolute(path, ec).lexically_normal();
+        lastSave_ = ec ? path : full;
+        rememberFile(*lastSave_);
         dirty_ = false;
     } catch (const std::exception& e) {  // SaveError; the old file is intact
         say(std::string("Save failed: ") + e.what(), Notice::Level::Error);
@@ -788,17 +882,23 @@ void Session::fit() {
     // The momentum legend is three short lines: it does not cost the box a column.
     const bool column = view_.plots || view_.speeds || showProfile_;
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
-    double right = in.panelColumn;
-    if (!column) {
+    const double left = controlsInset();
+    double right = 0.0;
+    if (column) {
+        const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
+        right = std::min(in.panelColumn,
+                         sideColumnWidth(camera_.viewportWidth(), static_cast<int>(left), scale) +
+                             1.0 * kPanelMargin);
+    } else {
         // A box that the window's height limits may leave width to spare: when it leaves the
         // inspector's whole column, the box moves left, keeps its size, and the inspector
         // (bottom right, on a click) does not cover it. Less room would only move the box off
         // centre and still leave it covered.
-        camera_.fit(w, h, margin, in.top, in.bottom, 0.0);
-        const double spare = camera_.viewportWidth() - camera_.toScreen(w) - 2.0 * margin;
+        camera_.fit(w, h, margin, in.top, in.bottom, 0.0, left);
+        const double spare = camera_.viewportWidth() - left - camera_.toScreen(w) - 2.0 * margin;
         right = spare >= in.inspectorColumn ? in.inspectorColumn : 0.0;
     }
-    camera_.fit(w, h, margin, in.top, in.bottom, right);
+    camera_.fit(w, h, margin, in.top, in.bottom, right, left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",
@@ -836,6 +936,13 @@ void Session::holdParticle(double now) {
         timeline_.setPosition(world_, h->id, h->position);
         timeline_.setVelocity(world_, h->id, h->velocity);
     }
+}
+
+void Session::setTimeScale(double value) {
+    if (!std::isfinite(value)) return;
+    timeScale_ = std::clamp(value, kMinTimeScale, kMaxTimeScale);
+    reached_ = timeScale_;
+    say("Time speed " + speedText(timeScale_));
 }
 
 void Session::stepOnce(double now) {

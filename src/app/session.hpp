@@ -39,9 +39,11 @@
 #include "command.hpp"
 #include "edit_prompt.hpp"
 #include "interaction.hpp"
+#include "scene_io.hpp"
 #include "selection.hpp"
 #include "timeline.hpp"
 #include "undo_history.hpp"
+#include "view_insets.hpp"
 #include "view_options.hpp"
 
 namespace psb::app {
@@ -57,16 +59,6 @@ struct Notice {
 
 /// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
 [[nodiscard]] const char* logPrefix(Notice::Level level);
-
-/// Pixels the camera keeps free around the box when it fits it: the HUD above, the messages
-/// below, the panel column at the right while a panel of it (plots, speed histogram, profile) is
-/// on; otherwise as much of the inspector's column as the box can spare without shrinking.
-struct ViewInsets {
-    double top = 0.0;
-    double bottom = 0.0;
-    double panelColumn = 0.0;
-    double inspectorColumn = 0.0;
-};
 
 struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
@@ -97,6 +89,12 @@ struct TimelineView {
 /// fall further behind.
 inline constexpr double kStepBudgetMs = 30.0;
 
+// The control panel's ranges.
+inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
+inline constexpr int kMaxPanelSubsteps = 64;
+inline constexpr double kMinLaunchMass = 1e-3;  ///< kg
+inline constexpr double kMaxLaunchMass = 1e6;   ///< kg
+
 class Session {
   public:
     static constexpr double kMinTimeScale = 1.0 / 16.0, kMaxTimeScale = 8.0;
@@ -126,6 +124,29 @@ class Session {
     [[nodiscard]] const ViewOptions& view() const { return view_; }
     [[nodiscard]] bool helpShown() const { return showHelp_; }
     [[nodiscard]] bool profileShown() const { return showProfile_; }
+    /// The control panel is open (else folded to a strip).
+    [[nodiscard]] bool controlsShown() const { return showControls_; }
+    /// Pixels at the left of the window the control panel takes now (open or folded).
+    [[nodiscard]] double controlsInset() const {
+        return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;
+    }
+    /// What the left mouse button does.
+    [[nodiscard]] cmd::Tool tool() const { return tool_; }
+    /// The presets with their names and descriptions, in OpenPreset's order.
+    [[nodiscard]] const std::vector<SceneInfo>& presets() const { return presets_; }
+    /// Files opened or saved lately, newest first (at most kRecentFiles).
+    static constexpr std::size_t kRecentFiles = 5;
+    [[nodiscard]] const std::vector<std::filesystem::path>& recentFiles() const { return recent_; }
+    /// Why `mode` cannot be used for the world now (empty when it can).
+    [[nodiscard]] std::string modeRefusal(StepMode mode) const;
+    /// The drag of a slider (a `continues` command) is one user action: how many user actions
+    /// there were so far (a counter for tests and the undo history).
+    [[nodiscard]] std::uint64_t userActions() const { return userActions_; }
+    /// Why the last edit of a particle's value was refused (empty after one was applied, or the
+    /// selection changed).
+    [[nodiscard]] const std::string& editRefusal() const { return editRefusal_; }
+    /// The label of the last user action ("set restitution", "launch", ...).
+    [[nodiscard]] const std::string& lastAction() const { return lastAction_; }
     [[nodiscard]] const Interaction& interaction() const { return interaction_; }
     [[nodiscard]] const Selection& selection() const { return selection_; }
     [[nodiscard]] const EditPrompt& prompt() const { return prompt_; }
@@ -210,6 +231,20 @@ class Session {
     void fit();
     void resize(int width, int height);
     void togglePanel(bool& flag, const char* on, const char* off);
+    // The control panel's value commands (session_values.cpp).
+    void setRestitution(const cmd::SetRestitution& c);
+    void setFriction(const cmd::SetFriction& c);
+    void setGravity(const cmd::SetGravity& c);
+    void setWalls(const cmd::SetWalls& c);
+    void setMode(const cmd::SetMode& c);
+    void setTimeScale(double value);
+    void setLaunchBody(const cmd::SetLaunchBody& c);
+    void editParticle(const cmd::EditParticle& c);
+    void select(ParticleId id);
+    void setShow(const cmd::SetShow& c);
+    void saveAs(const cmd::SaveAs& c);
+    void saveTo(const std::filesystem::path& path);
+    void rememberFile(const std::filesystem::path& file);
 
     void stepOnce(double now);
     /// The held particle to the hand, through the timeline's setters.
@@ -218,8 +253,10 @@ class Session {
     void checkSelection();
     /// The user made the edit `what` ("delete particle", "set restitution"): it becomes an
     /// undo entry (the state apply() kept before the command), the energy drift is measured
-    /// from here on, and there are unsaved changes.
-    void userAction(const char* what);
+    /// from here on, and there are unsaved changes. A command that continues the previous one
+    /// (a slider still being dragged) passes `continues`: it is part of that action (and of its
+    /// undo entry), not a new one.
+    void userAction(const char* what, bool continues = false);
     /// Files the state kept before the command under `what` in the undo history (userAction
     /// without the unsaved flag: an opened scene or a reset is what is on disk).
     void remember(const char* what);
@@ -252,6 +289,15 @@ class Session {
     ViewOptions view_;
     bool showHelp_ = false;
     bool showProfile_ = false;
+    bool showControls_ = true;
+    cmd::Tool tool_ = cmd::Tool::Fling;
+    std::optional<Vec2> panFrom_;  ///< the Pan tool's drag, screen pixels
+    std::vector<SceneInfo> presets_;
+    std::vector<std::filesystem::path> recent_;
+    std::string exactRefusal_;  ///< why the exact mode is refused for the world, if it is
+    std::uint64_t userActions_ = 0;
+    std::string lastAction_;
+    std::string editRefusal_;
 
     Interaction interaction_;
     Selection selection_;

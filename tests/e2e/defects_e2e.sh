@@ -33,7 +33,7 @@ fail() {
     exit 1
 }
 source "$HERE/harness.sh"
-need_x_tools
+need_test_tools
 
 start_xvfb "$OUT/xvfb.log" 1024x768x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

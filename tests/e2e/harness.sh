@@ -5,6 +5,19 @@
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
 pass() { echo "ok: $*"; }
 
+# need_test_tools: Xvfb, xdotool and ImageMagick, installed (scripts/install-deps.sh --test)
+# when one is missing.
+need_test_tools() {
+    local here tool
+    here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+    for tool in Xvfb xdpyinfo xdotool import convert; do
+        if ! command -v "$tool" >/dev/null; then
+            "$here/../../scripts/install-deps.sh" --test
+            break
+        fi
+    done
+}
+
 XVFB_PID=""
 APP_PID=""
 cleanup() {
@@ -42,16 +55,6 @@ start_xvfb() {
     return 1
 }
 
-# need_x_tools: installs the test tools (scripts/install-deps.sh --test) when one is missing.
-need_x_tools() {
-    local tool
-    for tool in Xvfb xdpyinfo xdotool import convert; do
-        if ! command -v "$tool" >/dev/null; then
-            "$(dirname "${BASH_SOURCE[0]}")/../../scripts/install-deps.sh" --test
-            return
-        fi
-    done
-}
 # show_logs: for a failure, the ends of $OUT's stderr.log and xvfb.log, and whether the program
 # under test still runs.
 show_logs() {

@@ -49,7 +49,7 @@ fail() {
     exit 1
 }
 source "$HERE/harness.sh"
-need_x_tools
+need_test_tools
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e
@@ -90,6 +90,11 @@ LOG="$OUT/stdout.log"
 start_app "$BIN" --renderer software --window 600x600 --paused --seed 7 --save-to "$OUT/saved.json" \
     --screenshot-dir "$OUT"
 pass "window $WID at $WX,$WY size ${WIDTH}x$HEIGHT"
+# This script drives the keys and the mouse in the box (tests/e2e/panel_e2e.sh drives the
+# control panel): C folds the panel first, so that the 600 px window keeps its room for the box.
+xdotool key --window "$WID" c
+wait_count "\[I\] View: zoom" 2
+read_view "$(grep "\[I\] View: zoom" "$LOG" | sed -n 2p)"
 pass "fitted view: zoom $ZOOM px/m, box top-left at ($BX, $BY) px in the window"
 
 wait_title "6 particles - PAUSED"
@@ -156,8 +161,9 @@ awk -v y0="$fy1" -v y1="$fy2" 'BEGIN { exit !(y1 - y0 > 5) }' ||
 pass "flung particle moved down from y = $fy1 to $fy2 px"
 
 # --- 4. wheel zoom about the cursor --------------------------------------------------------
-cx=$((WX + 300))
-cy=$((WY + 300))
+# At the box's centre (the control panel takes the window's left part).
+cx=$(sx 3.5)
+cy=$(sy 3.5)
 # A piece of the left wall (at least 2 px wide, just left of the box), halfway down: at least
 # one column of it must be white.
 wall="2x40+$((WX + ${BX%.*} - 2))+$((WY + ${BY%.*} + 230))"
@@ -242,7 +248,9 @@ wait_count "\[I\] View: zoom" $((views + 2))
 read -r z2 bx2 < <(grep "\[I\] View: zoom" "$LOG" | tail -1 |
     sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), .*/\1 \2/')
 box_right=$(awk -v z="$z2" -v b="$bx2" 'BEGIN { printf "%d", b + 7 * z + 0.5 }')
-((box_right <= WIDTH - 330)) || fail "with K and D on the box reaches x = $box_right of $WIDTH"
+# The column: two fifths of what the folded panel's 34 px strip leaves, 220 to 330 px, + margin.
+column=$(awk -v w="$WIDTH" 'BEGIN { c = int(0.4 * (w - 34)); if (c < 220) c = 220; if (c > 330) c = 330; print c + 8 }')
+((box_right <= WIDTH - column)) || fail "with K and D on the box reaches x = $box_right of $WIDTH"
 pass "K, D: the box refits to end at x = $box_right, the panels beside it"
 for want in "Trails: selected" "Trails: all" "Plots on"; do
     grep -q "$want" "$LOG" || fail "no '$want' in the log"

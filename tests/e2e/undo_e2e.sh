@@ -30,7 +30,7 @@ fail() {
     exit 1
 }
 source "$HERE/harness.sh"
-need_x_tools
+need_test_tools
 
 start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

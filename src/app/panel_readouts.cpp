@@ -1,0 +1,148 @@
+// The control panel's Readouts (what a student reads) and Engine (what a developer reads)
+// sections.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include <particle_sandbox/diagnostics.hpp>
+
+#include "accuracy.hpp"
+#include "control_panel.hpp"
+#include "panel_widgets.hpp"
+#include "session.hpp"
+#include "units.hpp"
+
+namespace psb::app {
+
+using widgets::row;
+using widgets::tip;
+
+namespace {
+
+/// The farthest any particle moves in one step, in its own diameters (one substep in the
+/// substep mode): above about 1 a collision can be missed, a particle passing through another.
+double stepsPerDiameter(const World& w) {
+    const ParticleArrays& p = w.particles();
+    const SolverSettings& s = w.solver();
+    const double dt = s.dt / (s.mode == StepMode::Substep ? s.substeps : 1);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double speed = std::hypot(p.vx[i], p.vy[i]);
+        worst = std::max(worst, speed * dt / (2.0 * p.radius[i]));
+    }
+    return worst;
+}
+
+std::string vector(const Vec2& v, const char* unit) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%s, %s) %s", quantity(v.x(), "", false).c_str(),
+                  quantity(v.y(), "", false).c_str(), unit);
+    return buf;
+}
+
+}  // namespace
+
+void ControlPanel::readouts(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Readouts", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Readouts");
+    if (!open) return;
+    const World& w = s.world();
+    const ObservablesSample& o = s.observables();
+    const bool gravity = w.def().gravity != Vec2::Zero();
+    if (ImGui::BeginTable("readouts", 2, ImGuiTableFlags_SizingStretchProp)) {
+        row("Time", quantity(w.time(), "s") + (s.paused() ? ", paused" : ""),
+            "Simulated time since the scene started");
+        row("Particles", std::to_string(w.size()));
+        row("Kinetic energy", quantity(o.kineticEnergy, "J"),
+            "The energy of motion, the sum of 1/2 m v^2 over every particle");
+        if (gravity) {
+            row("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
+                "Kinetic plus potential energy (m g h): what elastic collisions under gravity "
+                "keep constant");
+        }
+        row("Momentum", vector(o.momentum, "kg m/s"),
+            "The total momentum, the sum of m v: walls and gravity change it, collisions between "
+            "particles never do");
+        row("  size", quantity(o.momentum.norm(), "kg m/s", false));
+        ImGui::EndTable();
+    }
+
+    // Accuracy, in words.
+    ImGui::PushTextWrapPos(0.f);
+    const double drift = s.accuracy().drift(monitoredEnergy(w));
+    const char* which = gravity ? "Mechanical energy" : "Energy";
+    ImGui::Text("%s %s since your last change", which, keptWords(drift).c_str());
+    tip("How well the simulation keeps the energy it should keep. Collisions with restitution "
+        "below 1, friction and your own changes (a fling, a launch) change it on purpose; the "
+        "count starts again at each change.");
+    const double overlap = s.accuracy().overlap();
+    if (overlap > 0.0) {
+        ImGui::Text("Particles overlap by up to %s", quantity(overlap, "m").c_str());
+    } else {
+        ImGui::TextUnformatted("No particles overlap");
+    }
+    tip("Real balls never overlap; a step-by-step simulation lets them, a little, between steps");
+    if (w.solver().mode != StepMode::Exact && w.size() > 0) {
+        const double d = stepsPerDiameter(w);
+        if (d > 1.0) {
+            ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
+                               "Fast particles move %.1f diameters a step: collisions can be "
+                               "missed (try more substeps or Exact)",
+                               d);
+        } else {
+            ImGui::Text("No collision can be missed: the fastest moves %.2f of its size a step", d);
+        }
+        tip("A particle that moves more than its own size in one step can pass through another "
+            "without touching it; the exact mode never misses one");
+    }
+    ImGui::PopTextWrapPos();
+}
+
+void ControlPanel::engine(const Session& s, const FrameStats& stats) {
+    const bool open = ImGui::CollapsingHeader("Engine");
+    mark("section Engine");
+    if (!open) return;
+    const World& w = s.world();
+    if (ImGui::BeginTable("engine", 2, ImGuiTableFlags_SizingStretchProp)) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.0f", stats.fps);
+        row("Frames per second", buf);
+        std::snprintf(buf, sizeof buf, "%.2f ms", stats.stepMs);
+        row("Simulation per frame", buf);
+        std::snprintf(buf, sizeof buf, "%.2f ms", stats.drawMs);
+        row("Drawing per frame", buf);
+        row("Renderer", stats.renderer);
+        row("Mode", modeName(w.solver()));
+        row("Broadphase",
+            w.solver().mode == StepMode::Exact ? std::string("event cells")
+                                               : std::string(toString(w.broadPhaseInUse())),
+            "How pairs that may touch are found: all pairs for a few particles, a grid of cells "
+            "for many");
+        row("Threads", std::to_string(w.threads()));
+        std::snprintf(buf, sizeof buf, "%g ms", w.solver().dt * 1000.0);
+        row("Time step", buf);
+        ImGui::EndTable();
+    }
+    bool profile = s.profileShown();
+    if (ImGui::Checkbox("Profile beside the box", &profile)) {
+        out_.emplace_back(cmd::SetShow{cmd::ShowOption::Profile, profile});
+    }
+    mark("Profile");
+    tip("The last step's stages with their times, in a panel beside the box (keys O, F3)");
+    const StepProfile& p = w.profile();
+    if (p.stageCount > 0 && ImGui::BeginTable("profile", 2, ImGuiTableFlags_SizingStretchProp)) {
+        char buf[32];
+        for (int k = 0; k < p.stageCount; ++k) {
+            std::snprintf(buf, sizeof buf, "%.3f ms", p.stages[k].ms);
+            row(std::string(p.stages[k].name).c_str(), buf);
+        }
+        std::snprintf(buf, sizeof buf, "%.3f ms", p.total);
+        row("step total", buf);
+        ImGui::EndTable();
+    }
+}
+
+}  // namespace psb::app

@@ -1,0 +1,22 @@
+#pragma once
+// Numbers for people: three significant figures with an SI prefix for a simple unit
+// ("4.04 MJ", "1.20 mm", "9.81 m/s^2"), digits grouped by thousands for a compound one
+// ("40 390 kg m/s"), and the accuracy of a conserved quantity in words
+// ("energy kept to 1 part in 10^14"). No "4.039e+06" reaches the screen.
+
+#include <string>
+
+namespace psb::app {
+
+/// `value` in `unit` with an SI prefix (k, M, G, T; m, µ written "u", n) chosen so the number
+/// is in [1, 1000), three significant figures; zero is "0 unit". For units a prefix would
+/// garble ("kg m/s", "m/s^2") pass `prefix` false: the digits are then grouped by thousands
+/// ("12 300 kg m/s") and small values keep three significant figures ("0.00123 kg m/s").
+[[nodiscard]] std::string quantity(double value, const std::string& unit, bool prefix = true);
+
+/// A relative change (|change| / reference) in words: "kept to 1 part in 10^14" (the power
+/// rounded down), "kept exactly" below 10^-15 (rounding of the sums), "changed by 2.3 %" at a
+/// tenth of a percent or more; "not measured" for NaN.
+[[nodiscard]] std::string keptWords(double relativeChange);
+
+}  // namespace psb::app

@@ -1,0 +1,257 @@
+// The control panel without a window: a session, the panel built in an offscreen ImGui frame,
+// mouse input fed through ImGui's io, and the commands it returns applied as the app applies
+// them. Each test clicks or drags a control by its name and checks what changed.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <imgui.h>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "assets.hpp"
+#include "control_panel.hpp"
+#include "gui_context.hpp"
+#include "offscreen_test.hpp"
+#include "scene_io.hpp"
+#include "session.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr int kSize = 800;
+
+class ControlPanelTest : public OffscreenTest {
+  protected:
+    ControlPanelTest() : OffscreenTest(kSize) {}
+
+    void SetUp() override {
+        OffscreenTest::SetUp();
+        GuiOptions o;
+        o.font = findAsset("fonts/DejaVuSans.ttf");
+        o.fontPixels = 15.f;
+        gui_ = std::make_unique<GuiContext>(sdl_, o);
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = kSize;
+        so.viewportHeight = kSize;
+        so.insets = {60.0, 44.0, 338.0, kControlsWidth, kControlsFoldedWidth};
+        so.presets = presetScenes();
+        session_.emplace(makeWorld(defaultScene()), "default", so);
+        // ImGui settles its layout in the second frame (wrapped text takes the width the first
+        // frame found).
+        frame();
+        frame();
+    }
+    void TearDown() override {
+        gui_.reset();
+        OffscreenTest::TearDown();
+    }
+
+    /// One frame: the panel built and drawn, its commands applied. Returns how many there were.
+    std::size_t frame() {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        gui_->beginFrame(kSize, kSize);
+        const std::vector<Command> commands = panel_.build(*session_, FrameStats{}, kSize, 1.f);
+        EXPECT_EQ(gui_->endFrame(), 0);
+        SDL_RenderPresent(sdl_);
+        for (const Command& c : commands)
+            session_->apply(c);
+        return commands.size();
+    }
+    [[nodiscard]] ImVec2 centre(const std::string& name) const {
+        const PanelItem* i = panel_.item(name);
+        EXPECT_NE(i, nullptr) << name;
+        if (i == nullptr) return {-1.f, -1.f};
+        EXPECT_LT(i->y1, static_cast<float>(kSize)) << name << " is below the window";
+        return {(i->x0 + i->x1) / 2.f, (i->y0 + i->y1) / 2.f};
+    }
+    void click(const std::string& name) {
+        ImGuiIO& io = gui_->io();
+        frame();
+        io.MousePos = centre(name);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        io.MousePos = ImVec2(kSize - 5.f, kSize - 5.f);  // away, so no tooltip stays
+        frame();
+    }
+    /// A drag of the named control from its centre to `to`, in `steps` frames.
+    void drag(const std::string& name, ImVec2 to, int steps = 8) {
+        ImGuiIO& io = gui_->io();
+        frame();
+        const ImVec2 from = centre(name);
+        io.MousePos = from;
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        for (int k = 1; k <= steps; ++k) {
+            const float t = static_cast<float>(k) / static_cast<float>(steps);
+            io.MousePos = ImVec2(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t);
+            frame();
+        }
+        io.MouseDown[0] = false;
+        frame();
+    }
+
+    std::unique_ptr<GuiContext> gui_;
+    std::optional<Session> session_;
+    ControlPanel panel_;
+};
+
+TEST_F(ControlPanelTest, EverySectionAndItsMainControlsAreThere) {
+    click("section Tools");  // closed at first
+    for (const char* name : {"section Time",
+                             "Play/Pause",
+                             "Step",
+                             "Reset",
+                             "Speed",
+                             "section Scene",
+                             "section Physics",
+                             "mode Discrete",
+                             "mode Substeps",
+                             "mode Exact",
+                             "Restitution",
+                             "Friction",
+                             "Gravity",
+                             "g",
+                             "Walls",
+                             "section Show",
+                             "Velocity arrows",
+                             "Labels",
+                             "Momentum and centre of mass",
+                             "Plots",
+                             "Speed histogram",
+                             "Trails",
+                             "section Tools",
+                             "tool Fling",
+                             "tool Launch",
+                             "tool Select",
+                             "tool Pan",
+                             "launch mass",
+                             "launch radius",
+                             "auto radius",
+                             "launch colour",
+                             "section Readouts",
+                             "section Selected particle",
+                             "section All particles",
+                             "section Engine",
+                             "fold panel"}) {
+        EXPECT_NE(panel_.item(name), nullptr) << name;
+    }
+    // Every control is inside the panel's column.
+    for (const PanelItem& i : panel_.items()) {
+        EXPECT_LE(i.x1, kControlsWidth) << i.name;
+        EXPECT_GE(i.x0, 0.f) << i.name;
+    }
+}
+
+TEST_F(ControlPanelTest, PlayPauseAndStepAreTheSessionsCommands) {
+    ASSERT_TRUE(session_->paused());
+    const double t0 = session_->world().time();
+    click("Step");
+    session_->update(0.0, 0.0);
+    EXPECT_GT(session_->world().time(), t0);
+    click("Play/Pause");
+    EXPECT_FALSE(session_->paused());
+    click("Play/Pause");
+    EXPECT_TRUE(session_->paused());
+}
+
+TEST_F(ControlPanelTest, ACheckboxSetsItsOption) {
+    click("Walls");
+    EXPECT_FALSE(session_->world().def().walls);
+    click("Labels");
+    EXPECT_TRUE(session_->view().labels);
+    click("Gravity");
+    EXPECT_EQ(session_->world().def().gravity, Vec2(0.0, 9.81));
+}
+
+TEST_F(ControlPanelTest, DraggingTheRestitutionSliderToItsLeftEndIsOneUserAction) {
+    const PanelItem* r = panel_.item("Restitution");
+    ASSERT_NE(r, nullptr);
+    const auto actions = session_->userActions();
+    drag("Restitution", ImVec2(r->x0 - 20.f, (r->y0 + r->y1) / 2.f));
+    EXPECT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
+    EXPECT_EQ(session_->userActions(), actions + 1);
+    EXPECT_EQ(session_->lastAction(), "set restitution");
+}
+
+TEST_F(ControlPanelTest, ModesAreChosenInEveryScene) {
+    click("mode Substeps");
+    EXPECT_EQ(session_->world().solver().mode, StepMode::Substep);
+    EXPECT_EQ(session_->world().solver().substeps, 4);
+    click("mode Exact");
+    EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
+    click("mode Discrete");
+
+    World pegs(session_->world().def());
+    pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
+    session_->setWorld(std::move(pegs), "pegs");
+    frame();
+    click("mode Exact");  // obstacles are in every mode
+    EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
+}
+
+TEST_F(ControlPanelTest, ToolsAreChosenByTheirRadioButtons) {
+    click("section Tools");
+    click("tool Pan");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Pan);
+    click("tool Select");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Select);
+    click("auto radius");  // untick: the radius field now sets the launch radius
+    EXPECT_TRUE(session_->spawn().fixedRadius.has_value());
+}
+
+TEST_F(ControlPanelTest, APresetIsOpenedByItsName) {
+    click("section Scene");
+    click("preset Newton's cradle");
+    EXPECT_EQ(session_->sceneName(), "Newton's cradle");
+}
+
+TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
+    EXPECT_EQ(panel_.item("selected mass"), nullptr);
+    session_->apply(cmd::Select{session_->world().ids().front()});
+    frame();
+    for (const char* f : {"selected x", "selected y", "selected vx", "selected vy", "selected mass",
+                          "selected radius"}) {
+        EXPECT_NE(panel_.item(f), nullptr) << f;
+    }
+    // Far down the panel: fold the sections above it.
+    for (const char* section : {"section Physics", "section Show", "section Tools"})
+        click(section);
+    click("deselect");
+    EXPECT_FALSE(session_->selected());
+}
+
+TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {
+    click("fold panel");
+    EXPECT_FALSE(session_->controlsShown());
+    frame();
+    const PanelItem* open = panel_.item("open panel");
+    ASSERT_NE(open, nullptr);
+    EXPECT_LE(open->x1, kControlsFoldedWidth);
+    EXPECT_EQ(panel_.item("Play/Pause"), nullptr);
+    click("open panel");
+    EXPECT_TRUE(session_->controlsShown());
+}
+
+TEST_F(ControlPanelTest, ThePanelIsOpaqueAndDrawsNothingBesideItsColumn) {
+    const int inside = static_cast<int>(kControlsWidth) - 12;
+    const int beside = static_cast<int>(kControlsWidth) + 4;
+    // Below the last control, the panel's background: opaque, not the black behind it.
+    const SDL_Color bg = pixel(inside, kSize - 3);
+    EXPECT_GT(bg.r + bg.g + bg.b, 30) << int(bg.r) << " " << int(bg.g) << " " << int(bg.b);
+    for (int y = 0; y < kSize; y += 50) {
+        const SDL_Color c = pixel(beside, y);
+        EXPECT_EQ(c.r + c.g + c.b, 0) << y;
+    }
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,191 @@
+#!/usr/bin/env bash
+# End-to-end test of the control panel: the real program in a virtual X display (Xvfb), its
+# panel's controls clicked and dragged with real X input (xdotool), the effects checked in the
+# log, in a saved scene and in screenshots. The program runs with --log-controls, which logs
+# where each control is ("[I] Control NAME at X Y", window points), so the script finds controls
+# by name, not by fixed coordinates.
+#
+#   tests/e2e/panel_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
+#
+#   1. the box is fitted beside the panel, never under it       (log: box top-left x >= 310)
+#   2. clicks Walls, Gravity, Substeps                          -> logged; the HUD unchanged
+#   3. drags the Restitution slider to its left end             -> one log line, e = 0 in the save
+#   4. chooses the Launch tool, unticks "auto" radius, types     -> a new particle of 2.5 kg and
+#      mass 2.5 and radius 0.2, launches with a drag                0.2 m
+#   5. opens the Scene section, types a path, clicks Save        -> the full path logged; the file
+#                                                                   holds the launched 2.5 kg,
+#                                                                   0.2 m particle, walls off,
+#                                                                   gravity 9.81, e = 0, substep
+#   6. clicks Play/Pause twice, Step                             -> time moves; Reset: 6 again
+#   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
+#   8. Esc                                                       -> exits (reset: nothing unsaved)
+set -euo pipefail
+
+BIN=${1:?usage: panel_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
+OUT=${2:-$(pwd)/panel-e2e-out}
+HERE=$(cd "$(dirname "$0")" && pwd)
+mkdir -p "$OUT"
+rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
+
+fail() {
+    echo "FAIL: $*" >&2
+    for f in stderr.log xvfb.log; do
+        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
+    done
+    echo "(log and screenshots in $OUT)" >&2
+    exit 1
+}
+source "$HERE/harness.sh"
+need_test_tools
+
+start_xvfb "$OUT/xvfb.log" 1100x900x24 || fail "could not start Xvfb"
+export SDL_AUDIODRIVER=dummy
+
+LOG="$OUT/stdout.log"
+"$BIN" --renderer software --window 1000x800 --paused --seed 7 --log-controls \
+    --save-to "$OUT/saved.json" --screenshot-dir "$OUT" >"$LOG" 2>"$OUT/stderr.log" &
+APP_PID=$!
+WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
+    head -1) || fail "no window within 20 s"
+eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
+WX=$X
+WY=$Y
+xdotool windowfocus --sync "$WID" 2>/dev/null || true
+pass "window at $WX,$WY size ${WIDTH}x$HEIGHT"
+
+wait_log() {  # wait_log REGEX [SECONDS]
+    local deadline=$((SECONDS + ${2:-5}))
+    while ! grep -Eq "$1" "$LOG"; do
+        ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
+        sleep 0.05
+    done
+}
+key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
+shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
+# ctl NAME: the screen point "x y" of the control called NAME, from its latest log line.
+ctl() {
+    local line
+    line=$(grep -F "[I] Control $1 at " "$LOG" | tail -1) || fail "no control '$1' in the log"
+    read -r cx cy < <(sed -E 's/.* at ([0-9]+) ([0-9]+)$/\1 \2/' <<<"$line")
+    echo "$((WX + cx)) $((WY + cy))"
+}
+click() {  # click NAME: move away (no tooltip left), there, wait for a frame, press, release
+    local x y
+    read -r x y < <(ctl "$1")
+    xdotool mousemove --sync $((WX + 900)) $((WY + 700)) sleep 0.15 \
+        mousemove --sync "$x" "$y" sleep 0.15 mousedown 1 sleep 0.1 mouseup 1
+    sleep 0.3  # the layout may change: the log gets the new places
+}
+type_into() {  # type_into NAME TEXT: click the field (which selects its text), type, Enter
+    click "$1"
+    xdotool type --delay 30 "$2"
+    xdotool keydown Return sleep 0.1 keyup Return
+    sleep 0.3
+}
+box_left() { grep "\[I\] View: zoom" "$LOG" | tail -1 |
+    sed -E 's/.*box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1/'; }
+
+wait_log "\[I\] Control Walls at"
+# --- 1. the box beside the panel ---------------------------------------------------------
+left=$(box_left)
+awk -v l="$left" 'BEGIN { exit !(l >= 310) }' || fail "the box starts at x = $left, under the panel"
+shot 1-panel
+pass "box fitted beside the panel (top-left x = $left px)"
+
+# --- 2. checkboxes and a mode button ------------------------------------------------------
+click Walls
+wait_log "Walls off"
+click Gravity
+wait_log "Gravity \[0, 9.81\] m/s\^2"
+click "mode Substeps"
+wait_log "Mode: substep x4"
+pass "Walls, Gravity and Substeps clicked: $(grep -c 'Walls off\|Gravity \[0\|Mode: substep' "$LOG") effects logged"
+
+# --- 3. a slider drag: one action ----------------------------------------------------------
+read -r rx ry < <(ctl Restitution)
+xdotool mousemove --sync "$rx" "$ry" sleep 0.1 mousedown 1 sleep 0.05 \
+    mousemove $((rx - 40)) "$ry" sleep 0.05 mousemove $((rx - 120)) "$ry" sleep 0.05 \
+    mousemove $((rx - 150)) "$ry" sleep 0.1 mouseup 1
+sleep 0.3
+(($(grep -c "\[I\] Restitution " "$LOG") == 1)) || fail "a slider drag logged $(grep -c "\[I\] Restitution " "$LOG") changes, not one"
+pass "restitution slider dragged: $(grep "\[I\] Restitution " "$LOG")"
+
+# --- 4. launch with a chosen mass and radius -------------------------------------------------
+# The Tools section is closed at first; Physics and Show are folded to make room for it.
+click "section Physics"
+click "section Show"
+click "section Tools"
+click "tool Launch"
+wait_log "Left mouse: launch"
+click "auto radius"
+wait_log "New particles: 10 kg, radius [0-9.]+ m$"
+type_into "launch mass" 2.5
+wait_log "New particles: 2.5 kg"
+type_into "launch radius" 0.2
+wait_log "New particles: 2.5 kg, radius 0.2 m$"
+grep -q "Control launch mass" "$LOG" || fail "no mass field"
+# From the centre of the box (a particle or not: the Launch tool always launches).
+view=$(grep "\[I\] View: zoom" "$LOG" | tail -1)
+read -r ZOOM BX BY < <(sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/' <<<"$view")
+lx=$(awk -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + 1.0 * z }')
+ly=$(awk -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + 6.0 * z }')
+xdotool mousemove --sync "$lx" "$ly" sleep 0.3
+shot 4-preview
+chain=(mousedown 1 sleep 0.1)
+for i in 1 2 3 4 5 6; do chain+=(mousemove $((lx + 8 * i)) $((ly - 8 * i)) sleep 0.015); done
+shot 4-dragging
+xdotool "${chain[@]}" mouseup 1
+wait_log "Launched particle"
+pass "launched: $(grep 'Launched particle' "$LOG" | tail -1)"
+
+# --- 5. save to a typed path ------------------------------------------------------------------
+click "section Scene"
+click path
+xdotool keydown ctrl sleep 0.1 keydown a sleep 0.1 keyup a sleep 0.1 keyup ctrl sleep 0.1 \
+    keydown BackSpace sleep 0.1 keyup BackSpace
+xdotool type --delay 30 "$OUT/panel-save.json"
+sleep 0.3
+click Save
+wait_log "Saved 7 particles to $OUT/panel-save.json"
+S="$OUT/panel-save.json"
+[[ -s "$S" ]] || fail "no file at $S"
+grep -q '"mass": 2.5, "radius": 0.2' "$S" || fail "the launched 2.5 kg, 0.2 m particle is not in the save: $(grep mass "$S" | tail -2)"
+grep -q '"walls": false' "$S" || fail "walls not off in the save"
+grep -q '"gravity": \[0.0, 9.81\]' "$S" || fail "gravity not 9.81 in the save: $(grep gravity "$S")"
+grep -q '"restitution": 0.0' "$S" || fail "restitution not 0 in the save: $(grep restitution "$S")"
+grep -q '"mode": "substep", "dt": [0-9.e-]*, "substeps": 4' "$S" || fail "mode not substep x4 in the save: $(grep solver "$S")"
+shot 5-saved
+pass "saved with the panel: $(grep -m1 'Saved 7' "$LOG")"
+
+# --- 6. time controls ------------------------------------------------------------------------
+click "Play/Pause"
+wait_log "Resumed"
+sleep 0.5
+click "Play/Pause"
+wait_log "\] Paused"
+click Step
+click Reset
+wait_log "Reset to the scene as loaded: 6 particles"
+pass "Play, Pause, Step and Reset"
+
+# --- 7. fold and open ---------------------------------------------------------------------------
+before=$(box_left)
+click "fold panel"
+sleep 0.3
+folded=$(box_left)
+awk -v a="$folded" -v b="$before" 'BEGIN { exit !(a < b) }' || fail "folding did not give the box room ($before -> $folded)"
+shot 7-folded
+click "open panel"
+sleep 0.3
+opened=$(box_left)
+awk -v a="$opened" 'BEGIN { exit !(a >= 310) }' || fail "opened again, the box starts at $opened"
+pass "fold and open: box left edge $before -> $folded -> $opened px"
+
+# --- 8. leaving -------------------------------------------------------------------------------
+xdotool mousemove $((WX + 700)) $((WY + 400))
+key Escape  # the scene was reset: nothing unsaved
+for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
+APP_PID=""
+pass "Esc quit"
+echo "PASS: panel e2e ($OUT)"
