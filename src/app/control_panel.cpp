@@ -142,7 +142,6 @@ void ControlPanel::time(const Session& s) {
         tip("While paused: drag back over the recorded past; Play continues from the time shown");
     }
 
-
     double speed = s.timeScale();
     bool continues = false;
     if (widgets::slider("Speed", speed, Session::kMinTimeScale, Session::kMaxTimeScale, "x%.3g",
@@ -276,7 +275,8 @@ void ControlPanel::tools(const Session& s, float) {
     ImGui::SetNextItemWidth(120.f);
     changed |= ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.3g");
     mark("launch mass");
-    tip("The mass of launched particles ([ and ] make them a tenth of the scene's typical particle smaller or bigger)");
+    tip("The mass of launched particles ([ and ] make them a tenth of the scene's typical particle "
+        "smaller or bigger)");
     ImGui::BeginDisabled(autoRadius);
     ImGui::SetNextItemWidth(120.f);
     changed |= ImGui::InputDouble("radius (m)", &radius, 0.0, 0.0, "%.3g");

@@ -43,6 +43,11 @@ std::vector<std::string> hudLines(const HudData& d) {
         last += buf;
     }
     lines.push_back(last + " | C: controls | H: help");
+    if (d.overlap > 0.0) {
+        std::snprintf(buf, sizeof buf, "Particles overlap by up to %s (real ones would not)",
+                      quantity(d.overlap, "m").c_str());
+        lines.emplace_back(buf);
+    }
     if (d.past) {
         std::snprintf(buf, sizeof buf,
                       "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",

@@ -27,6 +27,9 @@ struct HudData {
     double spawnRadius = 0.0;      ///< m
     double arrowSeconds = 0.0;     ///< arrow length per unit speed, s; 0 when arrows are off
     bool paused = false;
+    /// The deepest overlap of particles now, m, shown while it is deeper than a twentieth of
+    /// the scene's typical radius (a held particle pressed into others, a coarse step); 0: none.
+    double overlap = 0.0;
     bool past = false;         ///< a recorded past frame is shown
     double secondsBack = 0.0;  ///< how far back it is, s
 };

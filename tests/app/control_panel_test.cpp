@@ -253,5 +253,30 @@ TEST_F(ControlPanelTest, ThePanelIsOpaqueAndDrawsNothingBesideItsColumn) {
     }
 }
 
+TEST_F(ControlPanelTest, UndoRedoAndStepBackButtonsGoThroughTheSession) {
+    const double e = session_->world().def().restitution;
+    const PanelItem* r = panel_.item("Restitution");
+    ASSERT_NE(r, nullptr);
+    drag("Restitution", ImVec2(r->x0 - 20.f, (r->y0 + r->y1) / 2.f));
+    ASSERT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
+    click("Undo");  // the whole drag is one edit
+    EXPECT_DOUBLE_EQ(session_->world().def().restitution, e);
+    click("Redo");
+    EXPECT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
+
+    // Paused: three single steps, then one back shows the second one's time.
+    const double dt = session_->world().solver().dt;
+    for (int k = 0; k < 3; ++k) {
+        click("Step");
+        session_->update(0.0, 0.0);
+    }
+    ASSERT_NEAR(session_->world().time(), 3.0 * dt, 1e-12);
+    click("Step back");
+    EXPECT_NEAR(session_->world().time(), 2.0 * dt, 1e-12);
+    EXPECT_TRUE(session_->timeline().viewingPast);
+    click("Step forward");
+    EXPECT_NEAR(session_->world().time(), 3.0 * dt, 1e-12);
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -120,5 +120,14 @@ TEST(Hud, HelpListsTheModeAndProfileKeys) {
     }
 }
 
+TEST(Hud, ADeepOverlapIsShownOnTheBoxAndNoneIsNotMentioned) {
+    HudData d;
+    for (const std::string& line : hudLines(d))
+        EXPECT_EQ(line.find("overlap"), std::string::npos);
+    d.overlap = 0.453;
+    const auto lines = hudLines(d);
+    EXPECT_EQ(lines.back(), "Particles overlap by up to 453 mm (real ones would not)");
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -118,7 +118,7 @@ click "section Tools"
 click "tool Launch"
 wait_log "Left mouse: launch"
 click "auto radius"
-wait_log "New particles: 10 kg, radius [0-9.]+ m$"
+wait_log "New particles: 12 kg, radius [0-9.]+ m$"  # the default scene's typical particle
 type_into "launch mass" 2.5
 wait_log "New particles: 2.5 kg"
 type_into "launch radius" 0.2
@@ -126,7 +126,7 @@ wait_log "New particles: 2.5 kg, radius 0.2 m$"
 grep -q "Control launch mass" "$LOG" || fail "no mass field"
 # From the centre of the box (a particle or not: the Launch tool always launches).
 view=$(grep "\[I\] View: zoom" "$LOG" | tail -1)
-read -r ZOOM BX BY < <(sed -E 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/' <<<"$view")
+read_view "$view"
 lx=$(awk -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + 1.0 * z }')
 ly=$(awk -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + 6.0 * z }')
 xdotool mousemove --sync "$lx" "$ly" sleep 0.3
