@@ -44,17 +44,19 @@ PlotRange plotRange(double dataMin, double dataMax, double minSpan) {
 }
 
 std::string tickLabel(double v, double step) {
+    if (v == 0.0) return "0";
     char buf[32];
     const double mag = std::max(std::abs(v), step);
-    // Digits down to the step's decade, at least 2, at most 8.
-    const int digits = std::clamp(
-        static_cast<int>(std::floor(std::log10(mag)) - std::floor(std::log10(step))) + 1, 2, 8);
-    if (mag >= 1e-3 && mag < 1e5) {
-        const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step))));
-        std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    } else {
-        std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
+    // Outside [1e-3, 1e5) the number takes an SI prefix ("4.04M", "2.5u"), never an exponent;
+    // digits down to the step's decade.
+    int power = 0;
+    if (mag >= 1e5 || mag < 1e-3) {
+        power = std::clamp(3 * static_cast<int>(std::floor(std::log10(mag) / 3.0)), -9, 12);
     }
+    const double unit = std::pow(10.0, power);
+    const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step / unit))));
+    static const char* const kPrefix[] = {"n", "u", "m", "", "k", "M", "G", "T"};
+    std::snprintf(buf, sizeof buf, "%.*f%s", decimals, v / unit, kPrefix[power / 3 + 3]);
     return buf;
 }
 

@@ -36,8 +36,8 @@ struct PlotRange {
 /// The step niceTicks uses.
 [[nodiscard]] double niceStep(double lo, double hi, int maxTicks);
 
-/// `v` with as many significant digits as a tick `step` needs, e.g. 4038789 with step 20000 ->
-/// "4.04e+06"; 0.5 -> "0.5".
+/// `v` with as many significant digits as a tick `step` needs, with an SI prefix outside
+/// [1e-3, 1e5): 4038789 with step 20000 -> "4.04M"; 0.5 -> "0.5"; 2e-5 -> "20u".
 [[nodiscard]] std::string tickLabel(double v, double step);
 
 /// Plot colours, for the tests to look for.

@@ -10,6 +10,7 @@
 
 #include "obstacle_drawing.hpp"
 #include "text.hpp"
+#include "units.hpp"
 
 namespace psb::app {
 
@@ -285,11 +286,12 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
             char lines[4][64];
             for (std::size_t i : visible) {
                 const double vx = p.vx[i], vy = p.vy[i], m = p.mass[i];
-                std::snprintf(lines[0], sizeof lines[0], "XVel: %.2f m/s", vx);
-                std::snprintf(lines[1], sizeof lines[1], "YVel: %.2f m/s", vy);
-                std::snprintf(lines[2], sizeof lines[2], "Momentum: %.2f kg m/s",
-                              m * std::hypot(vx, vy));
-                std::snprintf(lines[3], sizeof lines[3], "Mass: %.2f kg", m);
+                std::snprintf(lines[0], sizeof lines[0], "x velocity: %.2f m/s", vx);
+                std::snprintf(lines[1], sizeof lines[1], "y velocity: %.2f m/s", vy);
+                std::snprintf(lines[2], sizeof lines[2], "momentum: %s",
+                              quantity(m * std::hypot(vx, vy), "kg m/s", false).c_str());
+                std::snprintf(lines[3], sizeof lines[3], "mass: %s",
+                              quantity(m, "kg", false).c_str());
                 int width = 0;
                 for (const auto& l : lines)
                     width = std::max(width, labelFont_->measure(l));

@@ -78,11 +78,12 @@ void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const P
     const float top = y + 6 + 2 * lh, bottom = y + height - 2 * lh - 6;
 
     char buf[128];
-    std::snprintf(buf, sizeof buf, "speeds: %zu particles%s", h.particles,
+    std::snprintf(buf, sizeof buf, "bars: speeds of %zu particles%s", h.particles,
                   h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
     font.layout(buf, x + 8, y + 4, kHistogramBarColor, text_);
-    std::snprintf(buf, sizeof buf, "2-D Maxwell-Boltzmann, kT = %.4g J", h.kT);
-    font.layout(buf, x + 8, y + 4 + lh, kRayleighCurveColor, text_);
+    // The 2-D Maxwell-Boltzmann distribution at kT = the mean kinetic energy per particle.
+    font.layout("line: ideal gas, same energy (Maxwell-Boltzmann)", x + 8, y + 4 + lh,
+                kRayleighCurveColor, text_);
     boxes_.quad(left - 1, top, left, bottom, axis);
     boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
 

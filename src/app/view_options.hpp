@@ -25,7 +25,7 @@ inline constexpr double kMinArrowPixels = 10.0;
 /// What to draw besides the discs.
 struct ViewOptions {
     bool arrows = true;   ///< velocity arrows
-    bool labels = false;  ///< XVel, YVel, Momentum, Mass beside each particle
+    bool labels = false;  ///< x and y velocity, momentum and mass beside each particle
     /// Arrow length per unit speed, seconds: an arrow reaches where the particle will be after
     /// this time. The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
     double arrowSeconds = 1.0 / 3.0;
