@@ -5,7 +5,7 @@
 #   overlays-gas.png       04-gas-in-a-box after 13 s with K and D, arrows off, 900x720
 #   help.png     the built-in scene, paused, with the help overlay (H), 720x720 window
 #   inspect.png  the built-in scene, paused, the 18 kg particle selected by a click and its
-#                edit prompt open with 25 typed (Enter, 2, 5), 600x600 window scaled to 75 %
+#                edit prompt open with 25 typed (Enter, 2, 5), 960x640 window scaled to 75 %
 #
 #   scripts/app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
@@ -62,7 +62,7 @@ start 720x720 "$WORK/help"
 xdotool key --window "$wid" h
 shoot_and_quit "$WORK/help" 2  # Esc closes the help, then quits
 
-start 600x600 "$WORK/inspect"
+start 960x640 "$WORK/inspect"
 # The 18 kg particle at (5.2, 1.6) m.
 px=$(awk -v z="$zoom" -v b="$bx" -v o="$X" 'BEGIN { printf "%d", o + b + 5.2 * z }')
 py=$(awk -v z="$zoom" -v b="$by" -v o="$Y" 'BEGIN { printf "%d", o + b + 1.6 * z }')

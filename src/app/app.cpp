@@ -87,7 +87,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
     // The inspector with long numbers in its widest line, and the margin.
     s.insets.inspectorColumn =
-        textBoxSize(sdl_->hudFont(), {"momentum  [-123.45, -123.45] kg m/s"}).x +
+        textBoxSize(sdl_->hudFont(), {"momentum        (-123.45, -123.45) kg m/s"}).x +
         2.0 * kPanelMargin;
     const double ratio = sdl_->pixelRatio();
     s.insets.controls = kControlsWidth * ratio;

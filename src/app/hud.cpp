@@ -35,14 +35,14 @@ std::vector<std::string> hudLines(const HudData& d) {
                   quantity(d.momentum.x(), "", false).c_str(),
                   quantity(d.momentum.y(), "", false).c_str());
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "New: %s, radius %s", quantity(d.spawnMass, "kg", false).c_str(),
+    std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
                   quantity(d.spawnRadius, "m").c_str());
     std::string last = buf;
     if (d.arrowSeconds > 0.0) {
         std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
         last += buf;
     }
-    lines.push_back(last + " | C: controls | H: help");
+    lines.push_back(last + " | H: help");
     if (d.overlap > 0.0) {
         std::snprintf(buf, sizeof buf, "Particles overlap by up to %s (real ones would not)",
                       quantity(d.overlap, "m").c_str());
@@ -89,12 +89,12 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
     static const std::vector<std::pair<std::string, std::string>> list = {
         {"Left drag on a particle", "grab it; release to fling it (panel: Tools)"},
         {"Left drag on empty space", "launch a particle: the drag is its arrow (Tools)"},
-        {"Left click on a particle", "select it: its values in the panel (Selected particle)"},
+        {"Left click on a particle", "select it (panel: Selected particle)"},
         {"Left click on empty space", "clear the selection"},
         {"Enter (selected)", "edit it here (Tab: next field, Esc: cancel)"},
         {"Backspace / Delete (holding)", "delete the held particle"},
         {"M", "spawn a random particle"},
-        {"[ / ]", "smaller / bigger new particles (Tools: New particles)"},
+        {"[ / ]", "smaller / bigger new particles (Tools)"},
         {"S", "show / hide labels (Show)"},
         {"A", "show / hide velocity arrows (Show)"},
         {"Wheel", "zoom about the cursor"},
@@ -106,10 +106,10 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change (Time: Undo, Redo)"},
         {", / .", "slow down / speed up time (Time: Speed)"},
         {"P / 1-9, 0, Shift+1-3", "next preset / preset 1-9, 10, 11-13 (Scene)"},
-        {"R", "reset the scene to how it was loaded (Time: Reset)"},
+        {"R", "back to the scene as loaded (Time: Reset)"},
         {"E / Shift+E", "restitution down / up by 0.05 (Physics)"},
         {"G", "gravity on / off (Physics)"},
-        {"T", "next stepping mode: discrete, substep, exact (Physics)"},
+        {"T", "next mode: discrete, substeps, exact (Physics)"},
         {"O / F3", "profile beside the box (Engine)"},
         {"Ctrl+S", "save the world as a scene (Scene: Save)"},
         {"V", "momentum and centre of mass (Show)"},

@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "units.hpp"
+
 namespace psb::app {
 
 std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt) {
@@ -16,14 +18,18 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
         lines.emplace_back(buf);
     };
     const Vec2 momentum = p.mass * p.velocity;
+    const auto n = [](double v) { return quantity(v, "", false); };  // "-40 400", "0.00200"
+    const auto pair = [&](const char* name, const Vec2& v, const char* unit) {
+        lines.push_back(std::string(name) + "(" + n(v.x()) + ", " + n(v.y()) + ") " + unit);
+    };
     line("Particle %u", p.id.slot);
-    line("position  [%.4g, %.4g] m", p.position.x(), p.position.y());
-    line("velocity  [%.4g, %.4g] m/s", p.velocity.x(), p.velocity.y());
-    line("speed     %.4g m/s", p.velocity.norm());
-    line("momentum  [%.4g, %.4g] kg m/s", momentum.x(), momentum.y());
-    line("KE        %.4g J", 0.5 * p.mass * p.velocity.squaredNorm());
-    line("mass      %.4g kg", p.mass);
-    line("radius    %.4g m", p.radius);
+    pair("position        ", p.position, "m");
+    pair("velocity        ", p.velocity, "m/s");
+    lines.push_back("speed           " + quantity(p.velocity.norm(), "m/s", false));
+    pair("momentum        ", momentum, "kg m/s");
+    lines.push_back("kinetic energy  " + quantity(0.5 * p.mass * p.velocity.squaredNorm(), "J"));
+    lines.push_back("mass            " + quantity(p.mass, "kg", false));
+    lines.push_back("radius          " + quantity(p.radius, "m"));
     if (!prompt.active() || prompt.target() != p.id) {
         lines.emplace_back("Enter: edit");
         return lines;

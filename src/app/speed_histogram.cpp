@@ -82,8 +82,8 @@ void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const P
                   h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
     font.layout(buf, x + 8, y + 4, kHistogramBarColor, text_);
     // The 2-D Maxwell-Boltzmann distribution at kT = the mean kinetic energy per particle.
-    font.layout("line: ideal gas, same energy (Maxwell-Boltzmann)", x + 8, y + 4 + lh,
-                kRayleighCurveColor, text_);
+    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh, kRayleighCurveColor,
+                text_);
     boxes_.quad(left - 1, top, left, bottom, axis);
     boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
 

@@ -21,13 +21,13 @@ TEST(InspectorPanel, ShowsStateMomentumAndEnergyInSiUnits) {
     const auto lines = inspectorLines(sample(), EditPrompt{});
     const std::vector<std::string> want = {
         "Particle 4",
-        "position  [520, 160] m",
-        "velocity  [-60, 80] m/s",
-        "speed     100 m/s",
-        "momentum  [-1080, 1440] kg m/s",
-        "KE        9e+04 J",  // 18 kg × (100 m/s)² / 2
-        "mass      18 kg",
-        "radius    45 m",
+        "position        (520, 160) m",
+        "velocity        (-60.0, 80.0) m/s",
+        "speed           100 m/s",
+        "momentum        (-1 080, 1 440) kg m/s",
+        "kinetic energy  90.0 kJ",  // 18 kg × (100 m/s)² / 2
+        "mass            18.0 kg",
+        "radius          45.0 m",
         "Enter: edit",
     };
     EXPECT_EQ(lines, want);
