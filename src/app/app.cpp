@@ -119,7 +119,12 @@ double App::now() const {
 void App::flushNotices() {
     for (Notice& n : session_->takeNotices()) {
         if (n.log) logLine(logPrefix(n.level) + n.text);
-        if (n.show) messages_.push_back({std::move(n.text), now() + kMessageSeconds});
+        if (!n.show) continue;
+        if (!n.topic.empty() && !messages_.empty() && messages_.back().topic == n.topic) {
+            messages_.back() = {std::move(n.text), now() + kMessageSeconds, std::move(n.topic)};
+        } else {
+            messages_.push_back({std::move(n.text), now() + kMessageSeconds, std::move(n.topic)});
+        }
     }
     if (messages_.size() > kShownMessages) {
         messages_.erase(messages_.begin(), messages_.end() - kShownMessages);

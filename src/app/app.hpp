@@ -111,7 +111,8 @@ class App {
   private:
     struct Message {
         std::string text;
-        double until;  ///< seconds (SDL ticks)
+        double until;            ///< seconds (SDL ticks)
+        std::string topic = {};  ///< Notice::topic
     };
 
     void handleEvents();

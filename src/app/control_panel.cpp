@@ -130,17 +130,20 @@ void ControlPanel::time(const Session& s) {
     mark("Step forward");
     ImGui::EndDisabled();
     tip("One frame forward again, towards the present (Shift+Right; PageDown: a second)");
-    if (t.latest > t.earliest) {
-        double at = t.current;
-        bool dragging = false;
-        ImGui::BeginDisabled(!s.paused());
-        if (widgets::slider("Replay", at, t.earliest, t.latest, "%.2f s", dragging)) {
-            out_.emplace_back(cmd::Seek{at});
-        }
-        mark("Replay");
-        ImGui::EndDisabled();
-        tip("While paused: drag back over the recorded past; Play continues from the time shown");
+    // Always there (greyed out until something is recorded), so that the rows below it do not
+    // move as it comes and goes.
+    const bool recorded = t.latest > t.earliest;
+    double at = t.current;
+    bool dragging = false;
+    ImGui::BeginDisabled(!s.paused() || !recorded);
+    if (widgets::slider("Replay", at, t.earliest, recorded ? t.latest : t.earliest + 1.0, "%.2f s",
+                        dragging) &&
+        recorded) {
+        out_.emplace_back(cmd::Seek{at});
     }
+    mark("Replay");
+    ImGui::EndDisabled();
+    tip("While paused: drag back over the recorded past; Play continues from the time shown");
 
     double speed = s.timeScale();
     bool continues = false;
@@ -172,8 +175,10 @@ void ControlPanel::scene(const Session& s) {
             }
             mark("preset " + p.name);
             const std::string key = k < 9 ? " (key " + std::to_string(k + 1) + ")" : "";
-            tip((p.description.empty() ? p.summary : p.description + key).c_str());
+            const std::string about = p.description.empty() ? p.summary : p.description + key;
+            tip(about.c_str());
             ImGui::TextDisabled("  %s", p.summary.c_str());
+            tip(about.c_str());
             ImGui::PopID();
         }
     }
@@ -196,7 +201,11 @@ void ControlPanel::scene(const Session& s) {
     mark("Save");
     tip("Save the world to the file named above; an existing file is kept and a new name "
         "(NAME-2.json, ...) chosen (Ctrl+S saves too)");
-    if (s.lastSave()) {
+    if (!s.fileError().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+        ImGui::TextWrapped("%s", s.fileError().c_str());
+        ImGui::PopStyleColor();
+    } else if (s.lastSave()) {
         ImGui::TextWrapped("Saved to %s", s.lastSave()->string().c_str());
     }
     if (!s.recentFiles().empty()) {

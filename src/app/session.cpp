@@ -93,6 +93,8 @@ void Session::setWorld(World world, std::string name) {
     quitPending_ = false;
     changedSinceMeasure_ = true;
     fit();
+    // The last scene's figures (its deepest overlap) say nothing about this one.
+    accuracy_ = AccuracyMonitor{};
     accuracy_.resetReference(monitoredEnergy(world_));
     exactRefusal_ = exactModeRefusal(world_);
 }
@@ -213,6 +215,7 @@ void Session::restore(UndoState state) {
     quitPending_ = false;
     changedSinceMeasure_ = true;
     now_ = sampleObservables(world_);
+    accuracy_ = AccuracyMonitor{};
     accuracy_.resetReference(monitoredEnergy(world_));
     if (otherScene) {
         view_.arrowSeconds = arrowSecondsFor(world_);
@@ -696,8 +699,10 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
         if (file) rememberFile(*file);
         say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
             ": " + name + " (" + std::to_string(world_.size()) + " particles)" + speedReset);
+        fileError_.clear();
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
-        say(std::string("Cannot open scene: ") + e.what(), Notice::Level::Error);
+        fileError_ = std::string("Cannot open scene: ") + e.what();
+        say(fileError_, Notice::Level::Error);
     }
 }
 
@@ -753,8 +758,10 @@ void Session::saveTo(const std::filesystem::path& path) {
         lastSave_ = ec ? path : full;
         rememberFile(*lastSave_);
         dirty_ = false;
+        fileError_.clear();
     } catch (const std::exception& e) {  // SaveError; the old file is intact
-        say(std::string("Save failed: ") + e.what(), Notice::Level::Error);
+        fileError_ = std::string("Save failed: ") + e.what();
+        say(fileError_, Notice::Level::Error);
     }
 }
 

@@ -55,6 +55,9 @@ struct Notice {
     std::string text;
     bool show = true;
     bool log = true;
+    /// Non-empty: a newer notice of the same topic replaces this one on screen while it is the
+    /// last shown (a slider being dragged says each value without filling the message box).
+    std::string topic = {};
 };
 
 /// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
@@ -173,6 +176,8 @@ class Session {
     [[nodiscard]] bool unsavedChanges() const { return dirty_; }
     /// The file the last Save wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const { return lastSave_; }
+    /// Why the last open or save failed ("Save failed: ..."); empty once one succeeds.
+    [[nodiscard]] const std::string& fileError() const { return fileError_; }
 
     /// The selected particle, while it exists.
     [[nodiscard]] std::optional<Particle> selected() const;
@@ -322,6 +327,7 @@ class Session {
     bool changedSinceMeasure_ = true;  ///< the world changed other than by stepping
     bool screenshotRequested_ = false;
     std::optional<std::filesystem::path> lastSave_;
+    std::string fileError_;
 
     AccuracyMonitor accuracy_;
     /// About 68 s of frames at 60 fps for the plots and the centre of mass path.

@@ -61,8 +61,10 @@ void Session::setGravity(const cmd::SetGravity& c) {
     const Vec2 g = c.on ? Vec2(0.0, c.g) : Vec2::Zero();
     if (world_.def().gravity == g) return;
     world_.setGravity(g);
-    // A drag sends a value every frame: it is said when the drag starts.
-    if (!c.continues) say("Gravity " + gravityText(g));
+    // A drag sends a value every frame: each is shown in place of the last, and the drag's
+    // first is logged.
+    notices_.push_back(
+        {Notice::Level::Info, "Gravity " + gravityText(g), true, !c.continues, "gravity"});
     userAction("set gravity", c.continues);
 }
 

@@ -13,8 +13,8 @@ Scene defaultScene() {
     s.description =
         "A handful of particles in a 7 m box with walls, no gravity and perfectly elastic "
         "collisions (e = 1): the original program's opening scene at 1 pixel = 1 cm, mass "
-        "3..20 kg, radius 2.5 cm per kg, speeds up to 3 m/s. Kinetic energy and momentum stay "
-        "constant.";
+        "3..20 kg, radius 2.5 cm per kg, speeds up to 3 m/s. Kinetic energy stays constant; "
+        "momentum changes only when a particle bounces off a wall.";
     s.world = WorldDef{};
     s.world.width = 7.0;  // the original's 700-pixel window at 1 px = 1 cm
     s.world.height = 7.0;

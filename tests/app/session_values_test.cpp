@@ -300,8 +300,33 @@ TEST_F(SessionValues, SaveAsWritesThePathKeepsAnOlderFileAndRemembersIt) {
     EXPECT_EQ(s.recentFiles().front().filename(), "lesson-2.json");
     s.apply(cmd::SaveAs{""});
     EXPECT_TRUE(said(s.takeNotices(), "type a file name first"));
+    EXPECT_TRUE(s.fileError().empty());
     s.apply(cmd::SaveAs{dir_ / "no-such-dir" / "x.json"});
     EXPECT_TRUE(said(s.takeNotices(), "Save failed"));
+    // The panel shows the failure, not the save before it.
+    EXPECT_EQ(s.fileError().rfind("Save failed: ", 0), 0u) << s.fileError();
+    s.apply(cmd::OpenFile{dir_ / "no-such-scene.json"});
+    EXPECT_EQ(s.fileError().rfind("Cannot open scene: ", 0), 0u) << s.fileError();
+    s.apply(cmd::SaveAs{dir_ / "again.json"});
+    EXPECT_TRUE(s.fileError().empty());
+}
+
+TEST_F(SessionValues, AnotherSceneForgetsTheLastOnesOverlap) {
+    Session s = session();
+    // Two particles pressed into each other, measured by a frame.
+    WorldDef def = s.world().def();
+    World pressed(def);
+    ParticleDef a;
+    a.position = {3.0, 3.0};
+    a.radius = 0.5;
+    pressed.add(a);
+    a.position = {3.5, 3.0};
+    pressed.add(a);
+    s.setWorld(std::move(pressed), "pressed");
+    s.update(0.0, 0.0);
+    ASSERT_GT(s.accuracy().overlap(), 0.4);
+    s.setWorld(World(def), "empty");
+    EXPECT_EQ(s.accuracy().overlap(), 0.0);
 }
 
 TEST_F(SessionValues, EveryPresetIsListedWithANameAndAOneLineSummary) {
