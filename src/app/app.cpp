@@ -83,7 +83,7 @@ App::App(const AppOptions& options) : options_(options) {
     const int lh = sdl_->hudFont().lineHeight();
     // One spare line for the HUD's notes about labels left out.
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
-    s.insets.bottom = static_cast<double>(kShownMessages) * lh + 4.0 + kPanelMargin;
+    s.insets.bottom = static_cast<double>(kMessageLines) * lh + 4.0 + kPanelMargin;
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
     // The inspector with long numbers in its widest line, and the margin.
     s.insets.inspectorColumn =

@@ -111,7 +111,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
         pd.frameDrawMs = stats.lastDrawMs;
         o.profile = profileLines(pd);
     }
-    o.messages = stats.messages;
+    // Long messages wrap within the room right of the control panel; the newest lines that
+    // fit the band below the box are shown.
+    const int room = session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
+    o.messages = wrapLines(hudFont, stats.messages, room - 8);
+    if (o.messages.size() > kMessageLines) {
+        o.messages.erase(o.messages.begin(), o.messages.end() - kMessageLines);
+    }
     // With the control panel open the selected particle's values are in it; the inspector
     // beside the box stays for the keyboard's edit prompt (Enter).
     if (f.selected && (!session.controlsShown() || session.prompt().active())) {

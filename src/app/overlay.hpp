@@ -24,6 +24,16 @@ struct Overlays {
     bool showProfile = false;
 };
 
+/// Lines of messages the band below the box holds.
+inline constexpr std::size_t kMessageLines = 3;
+
+/// `lines` broken at spaces so that each fits `maxWidth` pixels of `font` with its box's
+/// padding (a word longer than that stays whole); continuation lines are indented by two
+/// spaces. A message cut at the window's edge would hide its reason.
+[[nodiscard]] std::vector<std::string> wrapLines(const Font& font,
+                                                 const std::vector<std::string>& lines,
+                                                 int maxWidth);
+
 /// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
 [[nodiscard]] SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines);
 

@@ -392,5 +392,23 @@ TEST(ArrowScale, ShortensSoADenseGasIsNotHiddenUnderItsArrows) {
     EXPECT_NEAR(arrowSecondsFor(w), 0.075, 1e-12);
 }
 
+TEST_F(RenderTest, LongLinesWrapAtSpacesWithinTheWidthAndKeepEveryWord) {
+    const std::string line =
+        "Cannot open scene: /some/long/path/lesson.json: particles[2].mass: must be > 0 kg, got -3";
+    const int width = font_->measure(line) / 2;
+    const std::vector<std::string> wrapped = wrapLines(*font_, {line, "short"}, width);
+    ASSERT_GE(wrapped.size(), 3u);
+    EXPECT_EQ(wrapped.back(), "short");
+    std::string joined = wrapped[0];
+    EXPECT_LE(font_->measure(wrapped[0]), width - 8) << wrapped[0];
+    for (std::size_t k = 1; k + 1 < wrapped.size(); ++k) {
+        EXPECT_LE(font_->measure(wrapped[k]), width - 8) << wrapped[k];
+        ASSERT_EQ(wrapped[k].rfind("  ", 0), 0u) << "continuations are indented";
+        joined += " ";
+        joined.append(wrapped[k], 2, std::string::npos);
+    }
+    EXPECT_EQ(joined, line);
+}
+
 }  // namespace
 }  // namespace psb::app
