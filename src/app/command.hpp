@@ -176,6 +176,10 @@ struct EditParticle {
     ParticleField field = ParticleField::Mass;
     std::string text;
 };
+/// Removes one particle (the selected one, from the panel).
+struct DeleteParticle {
+    ParticleId id;
+};
 /// The selection set from a table (null clears it).
 struct Select {
     ParticleId id;
@@ -221,7 +225,7 @@ using Command =
                  cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
                  cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution,
                  cmd::SetFriction, cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale,
-                 cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle, cmd::Select, cmd::SetShow,
-                 cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs>;
+                 cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle, cmd::DeleteParticle,
+                 cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs>;
 
 }  // namespace psb::app

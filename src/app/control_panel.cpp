@@ -251,12 +251,27 @@ void ControlPanel::show(const Session& s) {
     }
     mark("Trails");
     tip("Draw the path each particle has taken (key L cycles)");
+    if (ImGui::Button("Fit view")) out_.emplace_back(cmd::Fit{});
+    mark("Fit view");
+    tip("Zoom and pan so the whole box is in view (key F; the wheel zooms, the right button "
+        "pans)");
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot")) out_.emplace_back(cmd::Screenshot{});
+    mark("Screenshot");
+    tip("Save the window as a PNG picture (key F12); the message says where");
+    ImGui::SameLine();
+    if (ImGui::Button("Keys")) out_.emplace_back(cmd::ToggleHelp{});
+    mark("Keys");
+    tip("Show every key and where its control is here (key H; Esc closes it)");
 }
 
 void ControlPanel::tools(const Session& s, float) {
     const bool open = ImGui::CollapsingHeader("Tools");
     mark("section Tools");
     if (!open) return;
+    if (ImGui::Button("Add a random particle")) out_.emplace_back(cmd::SpawnRandom{});
+    mark("Add a random particle");
+    tip("A particle of random size, colour and velocity somewhere free in the upper half (key M)");
     ImGui::TextUnformatted("Left mouse button:");
     const auto radio = [&](const char* label, cmd::Tool t, const char* help) {
         if (ImGui::RadioButton(label, s.tool() == t)) out_.emplace_back(cmd::SetTool{t});

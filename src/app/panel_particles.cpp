@@ -64,6 +64,11 @@ void ControlPanel::selected(const Session& s) {
     if (ImGui::SmallButton("deselect")) out_.emplace_back(cmd::Select{kNullParticle});
     mark("deselect");
     tip("Forget the selection (or click empty space)");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("delete")) out_.emplace_back(cmd::DeleteParticle{p->id});
+    mark("delete particle");
+    tip("Remove this particle from the world (Ctrl+Z brings it back; Backspace or Delete "
+        "removes a particle you hold)");
     if (!ImGui::BeginTable("selected", 2, ImGuiTableFlags_SizingStretchProp)) return;
     for (std::size_t k = 0; k < std::size(kFields); ++k) {
         const EditableField& f = kFields[k];
@@ -80,14 +85,16 @@ void ControlPanel::selected(const Session& s) {
         const bool enter = ImGui::InputText(
             "##v", text.data(), text.size(),
             ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific);
+        // Enter, or leaving the field (a click elsewhere, Tab) after typing, applies it.
+        const bool left = ImGui::IsItemDeactivatedAfterEdit();
         fieldActive_[k] = ImGui::IsItemActive();
         mark(std::string("selected ") + f.name);
-        if (enter) {
+        if (enter || left) {
             out_.emplace_back(cmd::EditParticle{p->id, f.field, text.data()});
             fieldActive_[k] = false;
         }
-        tip("Type a new value and press Enter; a value the world cannot take is refused with the "
-            "reason");
+        tip("Type a new value and press Enter (or click elsewhere); a value the world cannot take "
+            "is refused with the reason");
         ImGui::PopID();
     }
     const double speed = p->velocity.norm();

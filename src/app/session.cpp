@@ -31,9 +31,10 @@ constexpr bool isPanelCommand() {
            std::is_same_v<T, cmd::SetGravity> || std::is_same_v<T, cmd::SetWalls> ||
            std::is_same_v<T, cmd::SetMode> || std::is_same_v<T, cmd::SetTimeScale> ||
            std::is_same_v<T, cmd::SetTool> || std::is_same_v<T, cmd::SetLaunchBody> ||
-           std::is_same_v<T, cmd::EditParticle> || std::is_same_v<T, cmd::Select> ||
-           std::is_same_v<T, cmd::SetShow> || std::is_same_v<T, cmd::SetTrails> ||
-           std::is_same_v<T, cmd::ToggleControls> || std::is_same_v<T, cmd::SaveAs>;
+           std::is_same_v<T, cmd::EditParticle> || std::is_same_v<T, cmd::DeleteParticle> ||
+           std::is_same_v<T, cmd::Select> || std::is_same_v<T, cmd::SetShow> ||
+           std::is_same_v<T, cmd::SetTrails> || std::is_same_v<T, cmd::ToggleControls> ||
+           std::is_same_v<T, cmd::SaveAs>;
 }
 
 /// A stepping speed (simulated per real second) for the HUD and messages: "x2", "x0.25".
@@ -453,6 +454,8 @@ void Session::apply(const Command& command) {
                 setLaunchBody(c);
             } else if constexpr (std::is_same_v<T, cmd::EditParticle>) {
                 editParticle(c);
+            } else if constexpr (std::is_same_v<T, cmd::DeleteParticle>) {
+                deleteParticle(c.id);
             } else if constexpr (std::is_same_v<T, cmd::Select>) {
                 select(c.id);
             } else if constexpr (std::is_same_v<T, cmd::SetShow>) {
@@ -562,6 +565,19 @@ void Session::deleteHeld() {
         userAction("delete particle");
         checkSelection();
     }
+}
+
+void Session::deleteParticle(ParticleId id) {
+    if (!world_.contains(id)) return;
+    if (interaction_.mode() != Interaction::Mode::Idle && interaction_.held() == id) {
+        interaction_.reset();
+    }
+    const Particle p = world_.get(id);
+    world_.remove(id);
+    log(deletionLogLine(p).substr(4));
+    notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
+    userAction("delete particle");
+    checkSelection();
 }
 
 void Session::checkSelection() {

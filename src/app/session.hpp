@@ -211,6 +211,7 @@ class Session {
     void pointerUp(const cmd::PointerUp& c);
     void click(const ReleaseResult& r);
     void deleteHeld();
+    void deleteParticle(ParticleId id);
     void spawnRandom();
     /// A scene that marks particles' trails opens with the first of them selected and its trail
     /// shown; `trails` are indices in the scene's order (the world's before any step).

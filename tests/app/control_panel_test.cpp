@@ -278,5 +278,33 @@ TEST_F(ControlPanelTest, UndoRedoAndStepBackButtonsGoThroughTheSession) {
     EXPECT_NEAR(session_->world().time(), 3.0 * dt, 1e-12);
 }
 
+TEST_F(ControlPanelTest, DeleteAddAndViewButtonsNeedNoKey) {
+    click("Keys");
+    EXPECT_TRUE(session_->helpShown());
+    session_->apply(cmd::Back{});
+    session_->apply(cmd::Pan{Vec2(50.0, 0.0)});
+    const Vec2 panned = session_->camera().worldToScreen(Vec2::Zero());
+    click("Fit view");
+    EXPECT_NE(session_->camera().worldToScreen(Vec2::Zero()).x(), panned.x());
+
+    // Fold what is above the selected particle's section, so that it is in the window.
+    for (const char* section : {"section Physics", "section Show", "section Readouts"})
+        click(section);
+    const std::size_t n = session_->world().size();
+    const ParticleId id = session_->world().ids().front();
+    session_->apply(cmd::Select{id});
+    click("delete particle");
+    EXPECT_EQ(session_->world().size(), n - 1);
+    EXPECT_FALSE(session_->world().contains(id));
+    EXPECT_FALSE(session_->selected().has_value());
+    click("Undo");
+    EXPECT_EQ(session_->world().size(), n);
+    EXPECT_TRUE(session_->world().contains(id));
+
+    click("section Tools");
+    click("Add a random particle");
+    EXPECT_EQ(session_->world().size(), n + 1);
+}
+
 }  // namespace
 }  // namespace psb::app
