@@ -128,9 +128,9 @@ status=0
 wait "$APP_PID" || status=$?
 APP_PID=""
 ((status == 0)) || fail "the installed sandbox exited with $status: $(tail -5 "$OUT/sandbox.err")"
-# The picture: the HUD's white text in the top-left corner (the fonts were found), and the
-# billiard balls' colours in the box.
-hud_white=$(convert "$OUT/installed-sandbox.png" -crop 300x60+0+0 -fuzz 10% -fill black \
+# The picture: the HUD's white text at the top right of the control panel (the fonts were
+# found), and the billiard balls' colours in the box.
+hud_white=$(convert "$OUT/installed-sandbox.png" -crop 280x60+320+0 -fuzz 10% -fill black \
     +opaque white -format '%[fx:int(mean*w*h)]' info:)
 colours=$(convert "$OUT/installed-sandbox.png" -format '%k' info:)
 ((hud_white > 100)) || fail "no HUD text in the screenshot ($hud_white white pixels)"
