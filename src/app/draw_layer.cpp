@@ -57,12 +57,13 @@ void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch
 
 void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) {
     obstacleMarks_.clear();
-    // The selection's yellow, as the selected particle's ring; the preview a pale ghost.
+    // The selection's yellow, as the selected particle's ring; the preview a dim ghost.
     if (frame.selectedObstacle) {
         batchObstacle(*frame.selectedObstacle, camera, SDL_Color{255, 230, 0, 255}, obstacleMarks_);
     }
     if (frame.obstaclePreview) {
-        batchObstacle(*frame.obstaclePreview, camera, SDL_Color{200, 200, 200, 110},
+        // Opaque: a translucent capsule would show its caps' overlap with the bar.
+        batchObstacle(*frame.obstaclePreview, camera, SDL_Color{105, 108, 115, 255},
                       obstacleMarks_);
     }
     renderer_.drawBatch(obstacleMarks_);
