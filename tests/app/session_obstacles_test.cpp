@@ -192,6 +192,12 @@ TEST_F(SessionObstacles, AClickSelectsAnObstacleAndDeleteRemovesItUndoably) {
     EXPECT_FALSE(s.world().obstacles()[0].isPeg());
     EXPECT_EQ(s.undoLabel(), "remove peg");
 
+    s.apply(cmd::SetTool{cmd::Tool::Launch});  // a click launches nothing, and selects
+    click(s, Vec2(3.0, 5.0));
+    EXPECT_EQ(s.selectedObstacle(), 0u);
+    EXPECT_EQ(s.world().size(), 1u);
+    s.apply(cmd::SetTool{cmd::Tool::Fling});
+
     // A click on empty space clears the selection; one on a particle selects it instead.
     click(s, Vec2(3.0, 5.0));
     EXPECT_EQ(s.selectedObstacle(), 0u);
