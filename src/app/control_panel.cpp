@@ -259,7 +259,8 @@ void ControlPanel::tools(const Session& s, float) {
     ImGui::SameLine();
     radio("Launch", cmd::Tool::Launch,
           "Every drag launches a new particle: the line you drag is its velocity arrow");
-    radio("Select", cmd::Tool::Select, "Click a particle to see and edit its values below");
+    radio("Select", cmd::Tool::Select,
+          "Click a particle to see and edit its values below; drag a wall or peg to move it");
     ImGui::SameLine();
     radio("Pan", cmd::Tool::Pan, "Drag to move the view (the right button always pans)");
     radio("Peg", cmd::Tool::Peg,

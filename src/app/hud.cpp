@@ -91,7 +91,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Left drag on empty space", "launch a particle: the drag is its arrow (Tools)"},
         {"Left click on a particle", "select it (panel: Selected particle)"},
         {"Left click on empty space", "clear the selection"},
-        {"Left click on a wall or peg", "select it (Delete removes it)"},
+        {"Left click on a wall or peg", "select it (Delete removes it; Select tool: drag)"},
         {"Enter (selected)", "edit it here (Tab: next field, Esc: cancel)"},
         {"Backspace / Delete", "delete the held particle, or the selected wall or peg"},
         {"W / B", "draw walls / place pegs; again: back to Fling (Tools)"},

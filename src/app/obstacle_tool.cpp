@@ -32,6 +32,26 @@ void ObstacleTool::press(Kind kind, const Vec2& point) {
     pointer_ = point;
 }
 
+void ObstacleTool::pressOn(std::size_t index, const Obstacle& obstacle, const Vec2& point) {
+    press(Kind::Move, point);
+    movedIndex_ = index;
+    moved_ = obstacle;
+}
+
+namespace {
+
+Obstacle translated(Obstacle o, const Vec2& by) {
+    o.a += by;
+    o.b += by;
+    return o;
+}
+
+bool obstacleInBox(const Obstacle& o, const WorldDef& box) {
+    return inBox(o.a, box) && inBox(o.b, box);
+}
+
+}  // namespace
+
 void ObstacleTool::moveTo(const Vec2& point) {
     pointer_ = point;
 }
@@ -45,6 +65,16 @@ ObstaclePlacement ObstacleTool::release(const Vec2& point, const ObstacleSizes& 
     press_.reset();
     if (!finite(from) || !finite(point)) {
         out.refusal = "Nothing placed: the pointer is not at a number of metres";
+        return out;
+    }
+    if (kind_ == Kind::Move) {
+        if (!((point - from).norm() >= minLength)) return out;  // a click: it selects
+        const Obstacle o = translated(moved_, point - from);
+        if (!obstacleInBox(o, box)) {
+            out.refusal = std::string("Not moved: the ") + obstacleNoun(o) + " would leave the box";
+            return out;
+        }
+        out.obstacle = o;
         return out;
     }
     if (kind_ == Kind::Peg) {
@@ -70,6 +100,11 @@ ObstaclePlacement ObstacleTool::release(const Vec2& point, const ObstacleSizes& 
 
 std::optional<Obstacle> ObstacleTool::preview(const ObstacleSizes& sizes,
                                               const WorldDef& box) const {
+    if (press_ && kind_ == Kind::Move) {
+        const Obstacle o = translated(moved_, pointer_ - *press_);
+        if (o == moved_ || !obstacleInBox(o, box)) return std::nullopt;
+        return o;
+    }
     if (!press_ || kind_ != Kind::Wall || !inBox(*press_, box)) return std::nullopt;
     const Vec2 to(std::clamp(pointer_.x(), 0.0, box.width),
                   std::clamp(pointer_.y(), 0.0, box.height));

@@ -501,7 +501,10 @@ void Session::pointerDown(const cmd::PointerDown& c) {
         panFrom_ = c.screen;
         return;
     }
-    if (tool_ == cmd::Tool::Select) return;  // the release selects
+    if (tool_ == cmd::Tool::Select) {
+        obstaclePressToMove();  // on an obstacle: a drag moves it
+        return;                 // the release selects
+    }
     if (obstacleToolOn()) {
         obstaclePress();
         return;
@@ -536,6 +539,7 @@ void Session::pointerUp(const cmd::PointerUp& c) {
         return;
     }
     if (tool_ == cmd::Tool::Select) {
+        if (obstacleMoveRelease()) return;  // moved, or the move refused; else a click
         ReleaseResult r;
         r.kind = ReleaseResult::Kind::Clicked;
         if (const auto id = world_.pick(pointerWorld())) r.id = *id;

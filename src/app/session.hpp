@@ -219,6 +219,11 @@ class Session {
     [[nodiscard]] bool obstacleToolOn() const;
     void obstaclePress();
     void obstacleRelease();
+    /// The Select tool's press: on an obstacle (no particle there), starts moving it.
+    void obstaclePressToMove();
+    /// The Select tool's release: true when it moved an obstacle or refused the move, false for
+    /// a click (which then selects).
+    bool obstacleMoveRelease();
     /// A click on empty space: selects the obstacle under the pointer; true if there was one.
     bool selectObstacleAt();
     void removeObstacle(std::size_t index);

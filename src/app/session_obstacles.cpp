@@ -71,6 +71,43 @@ void Session::obstacleRelease() {
     }
 }
 
+void Session::obstaclePressToMove() {
+    const Vec2 at = pointerWorld();
+    if (world_.pick(at)) return;  // a particle: the click selects it
+    if (const auto i = pickObstacle(world_.obstacles(), at, camera_.toWorld(kPickPixels))) {
+        obstacleTool_.pressOn(*i, world_.obstacles()[*i], at);
+    }
+}
+
+bool Session::obstacleMoveRelease() {
+    if (!obstacleTool_.active()) return false;
+    const std::size_t index = obstacleTool_.movedIndex();
+    const ObstaclePlacement p = obstacleTool_.release(pointerWorld(), obstacleSizes_, world_.def(),
+                                                      camera_.toWorld(kMinWallPixels));
+    if (!p.obstacle) {
+        if (p.refusal.empty()) return false;  // a click
+        say(p.refusal, Notice::Level::Warning);
+        return true;
+    }
+    if (index >= world_.obstacles().size()) return true;
+    Obstacles moved = world_.obstacles();
+    moved[index] = *p.obstacle;
+    try {
+        world_.setObstacles(std::move(moved));
+    } catch (const std::exception& e) {  // InvalidArgument: what the world refuses
+        say(std::string("Not moved: ") + e.what(), Notice::Level::Warning);
+        return true;
+    }
+    selectedObstacle_ = index;
+    selection_.clear();
+    closeEdit();
+    obstaclesChanged();
+    log("Moved obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
+    say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
+    userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
+    return true;
+}
+
 bool Session::selectObstacleAt() {
     const auto index =
         pickObstacle(world_.obstacles(), pointerWorld(), camera_.toWorld(kPickPixels));

@@ -84,6 +84,31 @@ TEST(ObstacleTool, AReleaseWithoutAPressMakesNothingAndSaysNothing) {
     EXPECT_TRUE(p.refusal.empty());
 }
 
+TEST(ObstacleTool, AMoveTranslatesTheObstacleByTheDragOrIsRefusedOutsideTheBox) {
+    const Obstacle wall = Obstacle::segment(Vec2(1.0, 1.0), Vec2(3.0, 2.0), 0.2);
+    ObstacleTool t;
+    t.pressOn(4, wall, Vec2(2.0, 1.5));
+    EXPECT_EQ(t.kind(), ObstacleTool::Kind::Move);
+    EXPECT_EQ(t.movedIndex(), 4u);
+    EXPECT_FALSE(t.preview(kSizes, box()));  // not moved yet
+    t.moveTo(Vec2(3.0, 3.5));
+    ASSERT_TRUE(t.preview(kSizes, box()));
+    EXPECT_EQ(t.preview(kSizes, box())->a, Vec2(2.0, 3.0));
+    ObstaclePlacement p = t.release(Vec2(3.0, 3.5), kSizes, box(), 0.01);
+    ASSERT_TRUE(p.obstacle);
+    EXPECT_EQ(*p.obstacle, Obstacle::segment(Vec2(2.0, 3.0), Vec2(4.0, 4.0), 0.2));
+
+    t.pressOn(4, wall, Vec2(2.0, 1.5));
+    p = t.release(Vec2(9.5, 1.5), kSizes, box(), 0.01);  // the far end would be at x = 10.5
+    EXPECT_FALSE(p.obstacle);
+    EXPECT_EQ(p.refusal, "Not moved: the wall would leave the box");
+
+    t.pressOn(4, wall, Vec2(2.0, 1.5));
+    p = t.release(Vec2(2.001, 1.5), kSizes, box(), 0.01);  // a click: nothing, nothing said
+    EXPECT_FALSE(p.obstacle);
+    EXPECT_TRUE(p.refusal.empty());
+}
+
 TEST(ObstacleTool, SizesMustBePositiveAndFitTheBox) {
     EXPECT_TRUE(obstacleSizesRefusal(kSizes, box()).empty());
     EXPECT_NE(obstacleSizesRefusal({0.0, 0.2}, box()).find("peg radius"), std::string::npos);

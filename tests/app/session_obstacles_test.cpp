@@ -209,6 +209,38 @@ TEST_F(SessionObstacles, AClickSelectsAnObstacleAndDeleteRemovesItUndoably) {
     EXPECT_TRUE(s.selected());
 }
 
+TEST_F(SessionObstacles, TheSelectToolDragsAnObstacleToMoveItUndoably) {
+    Session s = session();
+    s.apply(cmd::SetTool{cmd::Tool::Wall});
+    drag(s, Vec2(1.0, 5.0), Vec2(3.0, 5.0));
+    const Obstacle drawn = s.world().obstacles().at(0);
+    s.apply(cmd::SetTool{cmd::Tool::Select});
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(2.0, 5.0)), 2.0});
+    s.apply(cmd::PointerMove{c.worldToScreen(Vec2(3.0, 4.0)), 2.05});
+    ASSERT_TRUE(s.obstaclePreview());  // where it will go
+    expectNear(s.obstaclePreview()->a, drawn.a + Vec2(1.0, -1.0));
+    EXPECT_EQ(s.world().obstacles()[0], drawn);  // not yet
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(3.0, 4.0)), 2.1});
+    const Obstacle moved = s.world().obstacles().at(0);
+    expectNear(moved.a, drawn.a + Vec2(1.0, -1.0));
+    expectNear(moved.b, drawn.b + Vec2(1.0, -1.0));
+    EXPECT_EQ(s.selectedObstacle(), 0u);
+    EXPECT_EQ(s.lastAction(), "move wall");
+    s.apply(cmd::Undo{});
+    EXPECT_EQ(s.world().obstacles().at(0), drawn);
+    s.apply(cmd::Redo{});
+    EXPECT_EQ(s.world().obstacles().at(0), moved);
+
+    // Out of the box: refused, nothing moved, no undo entry.
+    const std::size_t entries = s.undoHistory().undoCount();
+    (void)s.takeNotices();
+    drag(s, Vec2(3.0, 4.0), Vec2(3.0, 9.0));
+    EXPECT_TRUE(said(s.takeNotices(), "Not moved: the wall would leave the box"));
+    EXPECT_EQ(s.world().obstacles().at(0), moved);
+    EXPECT_EQ(s.undoHistory().undoCount(), entries);
+}
+
 TEST_F(SessionObstacles, TheKeysToggleTheTools) {
     Session s = session();
     s.apply(cmd::SetTool{cmd::Tool::Wall, true});

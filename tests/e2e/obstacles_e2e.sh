@@ -10,9 +10,9 @@
 #                                                                   and the peg where they were
 #                                                                   drawn (within a pixel)
 #   4. Ctrl+Z, Ctrl+S                                            -> the peg is gone from the save
-#   5. the Select tool, a click on the wall, Delete               -> the wall is removed;
-#      Ctrl+Z                                                        it comes back
-#   6. Esc                                                       -> exits (the state saved)
+#   5. the Select tool, a click on the wall, a drag of it,       -> the wall is selected, moved,
+#      Delete, Ctrl+Z                                                removed, and comes back
+#   6. Esc, Esc                                                  -> asks (the move is unsaved), exits
 set -euo pipefail
 
 BIN=${1:?usage: obstacles_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
@@ -127,15 +127,22 @@ my=$(awk -v a="$y0" -v b="$((y0 + n * dy))" 'BEGIN { printf "%d", (a + b) / 2 }'
 xdotool mousemove --sync "$mx" "$my" sleep 0.2 mousedown 1 sleep 0.05 mouseup 1
 wait_log "Selected obstacle 0: wall"
 shot 5-selected
+# Dragged half a metre down with the Select tool: moved.
+drag "$mx" "$my" 0 "$(awk -v z="$ZOOM" 'BEGIN { printf "%d", 0.05 * z }')" 10
+wait_log "Moved obstacle 0: wall from"
+shot 5-moved
 key Delete
 wait_log "Removed obstacle 0: wall"
 shot 5-deleted
 key ctrl+z
 wait_log "Undone: remove wall"
-pass "wall selected, deleted and brought back"
+pass "wall selected, moved ($(grep 'Moved obstacle 0' "$LOG" | sed 's/.*: wall/wall/')), deleted and brought back"
 
 xdotool mousemove $((WX + 900)) $((WY + 700))
-key Escape  # the undo brought back the state last saved: nothing unsaved, Esc quits
+key Escape  # the move is unsaved: the first Esc asks
+wait_log "Unsaved changes: Esc again quits"
+# The window may be gone before xdotool sends the key release: that error is expected.
+xdotool key --window "$WID" Escape 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""
