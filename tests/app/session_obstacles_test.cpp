@@ -241,6 +241,27 @@ TEST_F(SessionObstacles, TheSelectToolDragsAnObstacleToMoveItUndoably) {
     EXPECT_EQ(s.undoHistory().undoCount(), entries);
 }
 
+TEST_F(SessionObstacles, ObstaclesDrawnInTheExactModeAreHitAndUndoneWhileItRuns) {
+    Session s = session();
+    s.apply(cmd::SetMode{StepMode::Exact});
+    ASSERT_EQ(s.world().solver().mode, StepMode::Exact);
+    s.apply(cmd::TogglePause{});
+    s.update(0.1, 0.1);
+    s.apply(cmd::SetTool{cmd::Tool::Wall});
+    drag(s, Vec2(0.5, 6.7), Vec2(6.5, 6.7), 1.0);  // under the particle, which falls on it
+    ASSERT_EQ(s.world().obstacles().size(), 1u);
+    s.apply(cmd::SetGravity{true, 9.81});
+    for (int k = 0; k < 60; ++k)
+        s.update(1.0 / 60.0, 1.2 + k / 60.0);
+    const Particle p = s.world().get(s.world().ids().front());
+    EXPECT_LT(p.position.y(), 6.7 - 0.2);  // resting on the wall (or bounced), not through it
+    s.apply(cmd::Undo{});                  // gravity
+    s.apply(cmd::Undo{});                  // the wall
+    EXPECT_TRUE(s.world().obstacles().empty());
+    s.update(1.0 / 60.0, 3.0);
+    EXPECT_EQ(s.world().solver().mode, StepMode::Exact);
+}
+
 TEST_F(SessionObstacles, TheKeysToggleTheTools) {
     Session s = session();
     s.apply(cmd::SetTool{cmd::Tool::Wall, true});
