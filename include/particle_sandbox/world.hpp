@@ -63,8 +63,8 @@ class World {
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
-    /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], a
-    /// mode or broadphase this build does not have, or mode Exact while the world has obstacles.
+    /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], or a
+    /// mode or broadphase this build does not have. Every mode takes gravity and obstacles.
     void setSolver(const SolverSettings& solver);
 
     // --- obstacles ---------------------------------------------------------------------------

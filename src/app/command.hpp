@@ -7,6 +7,7 @@
 // Pointer positions are screen pixels (the session converts them through its camera), times are
 // seconds on the clock the pointer events carry (SDL's ticks in the app).
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -35,7 +36,7 @@ struct PointerUp {
     Vec2 screen;
     double time = 0.0;
 };
-/// Backspace/Delete: the held particle.
+/// Backspace/Delete: the held particle, else the selected obstacle.
 struct DeleteHeld {};
 
 // The view.
@@ -159,9 +160,23 @@ enum class Tool : std::uint8_t {
     Launch,  ///< every drag launches a new particle
     Select,  ///< clicks select, drags change nothing
     Pan,     ///< drags move the view
+    Peg,     ///< a click places a peg (a fixed disc) at the cursor
+    Wall,    ///< a drag draws a wall (a fixed segment) from the press to the release
 };
 struct SetTool {
     Tool tool = Tool::Fling;
+    bool toggle = false;  ///< a key: when `tool` is already on, back to Fling
+};
+/// The sizes of the obstacles the Peg and Wall tools make, metres (each finite, > 0, at most
+/// half the box's smaller side).
+struct SetObstacleSizes {
+    double pegRadius = 1.0;
+    double wallThickness = 0.5;  ///< full thickness
+};
+/// Removes the obstacle at `index` (the panel's button; Backspace/Delete removes the selected
+/// obstacle through DeleteHeld).
+struct RemoveObstacle {
+    std::size_t index = 0;
 };
 /// What launched particles are made of; radius 0 follows the mass (the original's rule, scaled
 /// to the scene); no colour: a colour from the mass.
@@ -214,18 +229,17 @@ struct Quit {};
 
 namespace psb::app {
 
-using Command =
-    std::variant<cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan,
-                 cmd::Zoom, cmd::Fit, cmd::Resize, cmd::ToggleArrows, cmd::ToggleLabels,
-                 cmd::ToggleHelp, cmd::ToggleProfile, cmd::ToggleMomentum, cmd::CycleTrails,
-                 cmd::TogglePlots, cmd::ToggleSpeeds, cmd::TogglePause, cmd::SingleStep,
-                 cmd::ScaleTime, cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy, cmd::Undo,
-                 cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::ChangeRestitution,
-                 cmd::ToggleGravity, cmd::NextMode, cmd::Reset, cmd::OpenPreset, cmd::OpenFile,
-                 cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
-                 cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution,
-                 cmd::SetFriction, cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale,
-                 cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle, cmd::DeleteParticle,
-                 cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs>;
+using Command = std::variant<
+    cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan, cmd::Zoom,
+    cmd::Fit, cmd::Resize, cmd::ToggleArrows, cmd::ToggleLabels, cmd::ToggleHelp,
+    cmd::ToggleProfile, cmd::ToggleMomentum, cmd::CycleTrails, cmd::TogglePlots, cmd::ToggleSpeeds,
+    cmd::TogglePause, cmd::SingleStep, cmd::ScaleTime, cmd::StepBack, cmd::StepForward, cmd::Seek,
+    cmd::SeekBy, cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass,
+    cmd::ChangeRestitution, cmd::ToggleGravity, cmd::NextMode, cmd::Reset, cmd::OpenPreset,
+    cmd::OpenFile, cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
+    cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution, cmd::SetFriction,
+    cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale, cmd::SetTool,
+    cmd::SetLaunchBody, cmd::EditParticle, cmd::DeleteParticle, cmd::Select, cmd::SetShow,
+    cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle>;
 
 }  // namespace psb::app

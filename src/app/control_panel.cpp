@@ -283,9 +283,16 @@ void ControlPanel::tools(const Session& s, float) {
     ImGui::SameLine();
     radio("Launch", cmd::Tool::Launch,
           "Every drag launches a new particle: the line you drag is its velocity arrow");
-    radio("Select", cmd::Tool::Select, "Click a particle to see and edit its values below");
+    radio("Select", cmd::Tool::Select,
+          "Click a particle to see and edit its values below; drag a wall or peg to move it");
     ImGui::SameLine();
     radio("Pan", cmd::Tool::Pan, "Drag to move the view (the right button always pans)");
+    radio("Peg", cmd::Tool::Peg,
+          "Click in the box to place a peg: a fixed disc particles bounce off (key B)");
+    ImGui::SameLine();
+    radio("Wall", cmd::Tool::Wall,
+          "Drag in the box to draw a wall from where you press to where you let go (key W)");
+    obstacleTools(s);
 
     const SpawnSettings& sp = s.spawn();
     ImGui::TextUnformatted("New particles:");

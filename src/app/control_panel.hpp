@@ -6,7 +6,7 @@
 //   Scene      presets with a line on each, open and save with a path field, recent files
 //   Physics    stepping mode (and why one is unavailable), restitution, friction, gravity, walls
 //   Show       arrows, labels, momentum and centre of mass, trails, plots, speed histogram
-//   Tools      what the left mouse does; what a launched particle is made of
+//   Tools      what the left mouse does; what a launched particle is made of; obstacle sizes
 //   Readouts   time, particles, energies, momentum, accuracy in words
 //   Selected   the selected particle's values, editable in place
 //   All particles   a table, for scenes of up to kTableMaxParticles
@@ -17,8 +17,9 @@
 // narrow strip with one button that opens it again.
 //
 // The panel's pieces are in control_panel.cpp (the window, time, scene, show, tools),
-// panel_physics.cpp, panel_readouts.cpp (readouts, engine) and panel_particles.cpp (selected,
-// all particles); panel_widgets.hpp holds the small widgets they share.
+// panel_obstacles.cpp (the obstacle tools' sizes, removing an obstacle), panel_physics.cpp,
+// panel_readouts.cpp (readouts, engine) and panel_particles.cpp (selected, all particles);
+// panel_widgets.hpp holds the small widgets they share.
 
 #include <array>
 #include <string>
@@ -65,6 +66,8 @@ class ControlPanel {
     void physics(const Session& s);
     void show(const Session& s);
     void tools(const Session& s, float pixelRatio);
+    /// The obstacle tools' sizes and the selected obstacle's Delete button (panel_obstacles.cpp).
+    void obstacleTools(const Session& s);
     void readouts(const Session& s);
     void engine(const Session& s, const FrameStats& stats);
     void selected(const Session& s);

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "inspector_panel.hpp"
+#include "obstacle_drawing.hpp"
 #include "text.hpp"
 
 namespace psb::app {
@@ -30,6 +31,7 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     const DrawStats stats =
         renderer_.draw(world, camera, frame.view, &trails_, frame.trailParticle, &avoid);
     if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);
+    if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
     analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
                    frame.layout);
     if (frame.launch) drawLaunch(camera, *frame.launch);
@@ -51,6 +53,20 @@ void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch
                       static_cast<float>(b.y() - labelFont_.lineHeight() / 2),
                       SDL_Color{230, 230, 230, 255}, text_);
     labelFont_.draw(text_);
+}
+
+void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) {
+    obstacleMarks_.clear();
+    // The selection's yellow, as the selected particle's ring; the preview a dim ghost.
+    if (frame.selectedObstacle) {
+        batchObstacle(*frame.selectedObstacle, camera, SDL_Color{255, 230, 0, 255}, obstacleMarks_);
+    }
+    if (frame.obstaclePreview) {
+        // Opaque: a translucent capsule would show its caps' overlap with the bar.
+        batchObstacle(*frame.obstaclePreview, camera, SDL_Color{105, 108, 115, 255},
+                      obstacleMarks_);
+    }
+    renderer_.drawBatch(obstacleMarks_);
 }
 
 void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {

@@ -1,10 +1,11 @@
 #pragma once
 // The drawing layer: the only code that calls SDL's drawing functions. It draws a FrameView,
 // in this order: the world (walls, trails, discs, arrows, labels; renderer.hpp), the selection
-// ring, the analysis overlays (analysis_overlays.hpp), the launch preview, the marker of an
-// off-screen box, then the text panels (overlay.hpp). The files it calls (renderer, text,
-// overlay, analysis_overlays, momentum_view, plot_panel, speed_histogram, inspector_panel's
-// outline, geometry_batch) are its parts and are called from nowhere else.
+// ring, the selected obstacle and the obstacle tool's preview, the analysis overlays
+// (analysis_overlays.hpp), the launch preview, the marker of an off-screen box, then the text
+// panels (overlay.hpp). The files it calls (renderer, text, overlay, analysis_overlays,
+// momentum_view, plot_panel, speed_histogram, inspector_panel's outline, geometry_batch) are its
+// parts and are called from nowhere else.
 //
 // It keeps what drawing caches between frames: the circle texture, the glyph atlases (in the
 // fonts), the trails' history and raster, the plots' buffers.
@@ -33,6 +34,8 @@ class DrawLayer {
   private:
     void drawLaunch(const Camera& camera, const LaunchPreviewView& launch);
     void drawBoxMarker(const BoxMarkerView& marker);
+    /// The selected obstacle highlighted and the tool's preview, over the world.
+    void drawObstacleMarks(const Camera& camera, const FrameView& frame);
 
     SDL_Renderer* sdl_;
     const Font& hudFont_;
@@ -42,6 +45,7 @@ class DrawLayer {
     Trails trails_;
     std::uint64_t trailsGeneration_ = 0;
     GeometryBatch text_;
+    GeometryBatch obstacleMarks_;
 };
 
 }  // namespace psb::app

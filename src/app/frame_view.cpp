@@ -90,6 +90,10 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
         l.label = speedLabel(v);
         f.launch = l;
     }
+    if (const auto i = session.selectedObstacle(); i && *i < world.obstacles().size()) {
+        f.selectedObstacle = world.obstacles()[*i];
+    }
+    f.obstaclePreview = session.obstaclePreview();
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
 
     Overlays& o = f.overlays;

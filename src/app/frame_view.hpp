@@ -48,6 +48,8 @@ struct FrameView {
     ParticleId trailParticle;
     std::optional<Particle> selected;
     std::optional<LaunchPreviewView> launch;
+    std::optional<Obstacle> selectedObstacle;  ///< drawn highlighted
+    std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
     std::optional<BoxMarkerView> boxMarker;
     Overlays overlays;
     PanelLayout layout;

@@ -56,6 +56,10 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
             return {cmd::ToggleControls{}};
         case SDLK_m:
             return {cmd::SpawnRandom{}};
+        case SDLK_b:
+            return {cmd::SetTool{cmd::Tool::Peg, true}};
+        case SDLK_w:
+            return {cmd::SetTool{cmd::Tool::Wall, true}};
         case SDLK_h:
             return {cmd::ToggleHelp{}};
         case SDLK_v:

@@ -15,5 +15,9 @@ namespace psb::app {
 /// thin wall never vanishes when zoomed out. `batch` is drawn with the circle texture: discs
 /// use the whole texture, bars its opaque centre.
 void batchObstacles(const World& world, const Camera& camera, GeometryBatch& batch);
+/// Appends one obstacle to `batch` in `color` (not cleared): the selected obstacle's highlight,
+/// the preview of one being drawn.
+void batchObstacle(const Obstacle& obstacle, const Camera& camera, SDL_Color color,
+                   GeometryBatch& batch);
 
 }  // namespace psb::app

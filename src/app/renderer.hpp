@@ -63,6 +63,8 @@ class Renderer {
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius);
+    /// Draws `batch` over the circle texture (obstacle shapes: obstacle_drawing.hpp).
+    void drawBatch(const GeometryBatch& batch) { batch.draw(renderer_, circle_); }
 
     /// Discs smaller than this on screen (radius, pixels) and their arrows are drawn as pixels
     /// into one image (see the top of this file).

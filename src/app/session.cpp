@@ -34,7 +34,8 @@ constexpr bool isPanelCommand() {
            std::is_same_v<T, cmd::EditParticle> || std::is_same_v<T, cmd::DeleteParticle> ||
            std::is_same_v<T, cmd::Select> || std::is_same_v<T, cmd::SetShow> ||
            std::is_same_v<T, cmd::SetTrails> || std::is_same_v<T, cmd::ToggleControls> ||
-           std::is_same_v<T, cmd::SaveAs>;
+           std::is_same_v<T, cmd::SaveAs> || std::is_same_v<T, cmd::SetObstacleSizes> ||
+           std::is_same_v<T, cmd::RemoveObstacle>;
 }
 
 /// A stepping speed (simulated per real second) for the HUD and messages: "x2", "x0.25".
@@ -86,6 +87,9 @@ void Session::setWorld(World world, std::string name) {
     ++generation_;
     view_.arrowSeconds = arrowSecondsFor(world_);
     followScene(spawn_, world_);
+    obstacleTool_.reset();
+    selectedObstacle_.reset();
+    obstacleSizes_ = obstacleSizesFor(spawn_.typicalRadius);
     accumulator_ = 0.0;
     series_.clear();
     collisions_ = 0;
@@ -170,7 +174,7 @@ bool Session::mayEdit(const Command& command) {
                      std::is_same_v<T, cmd::Quit> || std::is_same_v<T, cmd::SetTool> ||
                      std::is_same_v<T, cmd::Select> || std::is_same_v<T, cmd::SetShow> ||
                      std::is_same_v<T, cmd::SetTrails> || std::is_same_v<T, cmd::ToggleControls> ||
-                     std::is_same_v<T, cmd::SaveAs>);
+                     std::is_same_v<T, cmd::SaveAs> || std::is_same_v<T, cmd::SetObstacleSizes>);
         },
         command);
 }
@@ -194,6 +198,8 @@ UndoState Session::snapshot(World world) const {
 
 void Session::restore(UndoState state) {
     interaction_.reset();
+    obstacleTool_.reset();
+    selectedObstacle_.reset();
     pressBefore_.reset();
     closeEdit();
     const bool otherScene = state.loaded != loaded_;
@@ -218,6 +224,7 @@ void Session::restore(UndoState state) {
     now_ = sampleObservables(world_);
     accuracy_ = AccuracyMonitor{};
     accuracy_.resetReference(monitoredEnergy(world_));
+    exactRefusal_ = exactModeRefusal(world_);  // the obstacles may differ
     if (otherScene) {
         view_.arrowSeconds = arrowSecondsFor(world_);
         series_.clear();
@@ -443,13 +450,17 @@ void Session::apply(const Command& command) {
                 setTimeScale(c.value);
                 if (timeScale_ != before) remember("set time speed");
             } else if constexpr (std::is_same_v<T, cmd::SetTool>) {
-                tool_ = c.tool;
+                tool_ = c.toggle && tool_ == c.tool ? cmd::Tool::Fling : c.tool;
                 panFrom_.reset();
+                obstacleTool_.reset();
                 static const char* const kTools[] = {
                     "Left mouse: fling particles, launch on empty space",
-                    "Left mouse: launch new particles", "Left mouse: select particles",
-                    "Left mouse: move the view"};
-                say(kTools[static_cast<int>(c.tool)]);
+                    "Left mouse: launch new particles",
+                    "Left mouse: select particles and obstacles",
+                    "Left mouse: move the view",
+                    "Left mouse: a click places a peg",
+                    "Left mouse: a drag draws a wall"};
+                say(kTools[static_cast<int>(tool_)]);
             } else if constexpr (std::is_same_v<T, cmd::SetLaunchBody>) {
                 setLaunchBody(c);
             } else if constexpr (std::is_same_v<T, cmd::EditParticle>) {
@@ -467,13 +478,17 @@ void Session::apply(const Command& command) {
                 if (fitted_) fit();
             } else if constexpr (std::is_same_v<T, cmd::SaveAs>) {
                 saveAs(c);
+            } else if constexpr (std::is_same_v<T, cmd::SetObstacleSizes>) {
+                setObstacleSizes(c);
+            } else if constexpr (std::is_same_v<T, cmd::RemoveObstacle>) {
+                removeObstacle(c.index);
             } else {
                 static_assert(sizeof(T) == 0, "a command without a handler");
             }
         },
         command);
     if (std::holds_alternative<cmd::PointerDown>(command) &&
-        interaction_.mode() != Interaction::Mode::Idle) {
+        (interaction_.mode() != Interaction::Mode::Idle || obstacleTool_.active())) {
         pressBefore_ = std::move(before_);
     }
     before_.reset();
@@ -492,7 +507,14 @@ void Session::pointerDown(const cmd::PointerDown& c) {
         panFrom_ = c.screen;
         return;
     }
-    if (tool_ == cmd::Tool::Select) return;  // the release selects
+    if (tool_ == cmd::Tool::Select) {
+        obstaclePressToMove();  // on an obstacle: a drag moves it
+        return;                 // the release selects
+    }
+    if (obstacleToolOn()) {
+        obstaclePress();
+        return;
+    }
     interaction_.press(world_, pointerWorld(), c.time, tool_ == cmd::Tool::Fling);
     if (interaction_.mode() == Interaction::Mode::Holding) {
         const Particle p = world_.get(interaction_.held());
@@ -511,6 +533,7 @@ void Session::pointerMove(const cmd::PointerMove& c) {
     }
     pointer_ = c.screen;
     pointerTime_ = c.time;
+    obstacleTool_.moveTo(pointerWorld());
     interaction_.moveTo(pointerWorld(), c.time);
 }
 
@@ -522,10 +545,15 @@ void Session::pointerUp(const cmd::PointerUp& c) {
         return;
     }
     if (tool_ == cmd::Tool::Select) {
+        if (obstacleMoveRelease()) return;  // moved, or the move refused; else a click
         ReleaseResult r;
         r.kind = ReleaseResult::Kind::Clicked;
         if (const auto id = world_.pick(pointerWorld())) r.id = *id;
         click(r);
+        return;
+    }
+    if (obstacleToolOn()) {
+        obstacleRelease();
         return;
     }
     const ReleaseResult r = interaction_.release(world_, pointerWorld(), c.time, spawn_,
@@ -548,11 +576,16 @@ void Session::pointerUp(const cmd::PointerUp& c) {
 void Session::click(const ReleaseResult& r) {
     if (!r.id.isNull()) {
         if (prompt_.target() != r.id) closeEdit();
+        selectedObstacle_.reset();
         selection_.select(r.id);
         std::string line = selectionLogLine(world_.get(r.id));
         log(line.substr(4));  // without its "[I] "
-    } else if (selection_.id()) {
+    } else if (selectObstacleAt()) {
         selection_.clear();
+        closeEdit();
+    } else if (selection_.id() || selectedObstacle_) {
+        selection_.clear();
+        selectedObstacle_.reset();
         closeEdit();
         say("Selection cleared");
     }
@@ -564,6 +597,8 @@ void Session::deleteHeld() {
         notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
         userAction("delete particle");
         checkSelection();
+    } else if (selectedObstacle_) {
+        removeObstacle(*selectedObstacle_);
     }
 }
 

@@ -39,6 +39,7 @@
 #include "command.hpp"
 #include "edit_prompt.hpp"
 #include "interaction.hpp"
+#include "obstacle_tool.hpp"
 #include "scene_io.hpp"
 #include "selection.hpp"
 #include "timeline.hpp"
@@ -135,6 +136,14 @@ class Session {
     }
     /// What the left mouse button does.
     [[nodiscard]] cmd::Tool tool() const { return tool_; }
+    /// The sizes of the obstacles the Peg and Wall tools make (at the scene's scale when it
+    /// opens; SetObstacleSizes changes them).
+    [[nodiscard]] const ObstacleSizes& obstacleSizes() const { return obstacleSizes_; }
+    /// The obstacle a click selected (by index in world().obstacles()), while it exists.
+    [[nodiscard]] std::optional<std::size_t> selectedObstacle() const { return selectedObstacle_; }
+    /// The obstacle the Peg or Wall tool would make now (a wall being dragged, a peg under the
+    /// pointer), for a preview.
+    [[nodiscard]] std::optional<Obstacle> obstaclePreview() const;
     /// The presets with their names and descriptions, in OpenPreset's order.
     [[nodiscard]] const std::vector<SceneInfo>& presets() const { return presets_; }
     /// Files opened or saved lately, newest first (at most kRecentFiles).
@@ -212,6 +221,21 @@ class Session {
     void click(const ReleaseResult& r);
     void deleteHeld();
     void deleteParticle(ParticleId id);
+    // The obstacle tools (session_obstacles.cpp).
+    [[nodiscard]] bool obstacleToolOn() const;
+    void obstaclePress();
+    void obstacleRelease();
+    /// The Select tool's press: on an obstacle (no particle there), starts moving it.
+    void obstaclePressToMove();
+    /// The Select tool's release: true when it moved an obstacle or refused the move, false for
+    /// a click (which then selects).
+    bool obstacleMoveRelease();
+    /// A click on empty space: selects the obstacle under the pointer; true if there was one.
+    bool selectObstacleAt();
+    void removeObstacle(std::size_t index);
+    void setObstacleSizes(const cmd::SetObstacleSizes& c);
+    /// The obstacles changed (added, removed, undone): what depends on them follows.
+    void obstaclesChanged();
     void spawnRandom();
     /// A scene that marks particles' trails opens with the first of them selected and its trail
     /// shown; `trails` are indices in the scene's order (the world's before any step).
@@ -298,6 +322,9 @@ class Session {
     bool showControls_ = true;
     cmd::Tool tool_ = cmd::Tool::Fling;
     std::optional<Vec2> panFrom_;  ///< the Pan tool's drag, screen pixels
+    ObstacleTool obstacleTool_;
+    ObstacleSizes obstacleSizes_;
+    std::optional<std::size_t> selectedObstacle_;
     std::vector<SceneInfo> presets_;
     std::vector<std::filesystem::path> recent_;
     std::string exactRefusal_;  ///< why the exact mode is refused for the world, if it is

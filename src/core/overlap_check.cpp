@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdint>
 
+#include "obstacle_geometry.hpp"
+#include "obstacle_grid.hpp"
+
 namespace psb::detail {
 namespace {
 
@@ -72,6 +75,27 @@ std::optional<std::pair<std::size_t, std::size_t>> findOverlap(const std::vector
             }
         }
         if (best != SIZE_MAX) return std::pair{i, best};
+    }
+    return std::nullopt;
+}
+
+std::optional<ObstacleOverlap> findObstacleOverlap(const std::vector<ParticleDef>& particles,
+                                                   const Obstacles& obstacles) {
+    if (obstacles.empty()) return std::nullopt;
+    ObstacleGrid grid;
+    grid.build(obstacles);
+    std::vector<std::uint32_t> near;
+    for (std::size_t i = 0; i < particles.size(); ++i) {
+        const ParticleDef& d = particles[i];
+        const double x = d.position.x(), y = d.position.y(), rad = d.radius;
+        grid.query(x - rad, y - rad, x + rad, y + rad, near);
+        for (const std::uint32_t k : near) {
+            const Obstacle& o = obstacles[k];
+            double qx, qy;
+            nearestCorePoint(o, x, y, qx, qy);
+            const double distance = std::hypot(x - qx, y - qy);
+            if (distance < rad + o.radius) return ObstacleOverlap{i, k, distance};
+        }
     }
     return std::nullopt;
 }

@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include <particle_sandbox/obstacle.hpp>
 #include <particle_sandbox/particle.hpp>
 
 namespace psb::detail {
@@ -15,5 +16,18 @@ namespace psb::detail {
 /// finite. Uniform grid of cells twice the largest radius, sorted by cell: O(n log n).
 [[nodiscard]] std::optional<std::pair<std::size_t, std::size_t>> findOverlap(
     const std::vector<ParticleDef>& particles);
+
+/// A particle overlapping an obstacle: their indices and the distance from the particle's
+/// centre to the obstacle's core (a peg's centre, a segment's line), metres.
+struct ObstacleOverlap {
+    std::size_t particle = 0;
+    std::size_t obstacle = 0;
+    double distance = 0.0;
+};
+
+/// The first particle (by index) that overlaps an obstacle, with the first such obstacle, or
+/// nullopt. Touching (distance == sum of radii) is not overlapping. Through an ObstacleGrid.
+[[nodiscard]] std::optional<ObstacleOverlap> findObstacleOverlap(
+    const std::vector<ParticleDef>& particles, const Obstacles& obstacles);
 
 }  // namespace psb::detail

@@ -24,8 +24,6 @@
 
 #include "json_reader.hpp"
 #include "nearest_name.hpp"
-#include "obstacle_geometry.hpp"
-#include "obstacle_grid.hpp"
 #include "overlap_check.hpp"
 #include "scene_generate.hpp"
 
@@ -494,27 +492,12 @@ void checkPlacement(const Reader& r, const Scene& s, const std::vector<Origin>& 
         }
     }
     if (s.allowOverlaps) return;
-    if (!w.obstacles.empty()) {
-        ObstacleGrid grid;
-        grid.build(w.obstacles);
-        std::vector<std::uint32_t> near;
-        for (std::size_t i = 0; i < s.particles.size(); ++i) {
-            const ParticleDef& d = s.particles[i];
-            const double x = d.position.x(), y = d.position.y(), rad = d.radius;
-            grid.query(x - rad, y - rad, x + rad, y + rad, near);
-            for (const std::uint32_t k : near) {
-                const Obstacle& o = w.obstacles[k];
-                double qx, qy;
-                nearestCorePoint(o, x, y, qx, qy);
-                const double distance = std::hypot(x - qx, y - qy);
-                if (distance < rad + o.radius) {
-                    r.fail(describe(origins[i]), "overlaps obstacles[" + std::to_string(k) +
-                                                     "] (centre " + num(distance) + " m from its " +
-                                                     (o.isPeg() ? "centre" : "core line") + ", " +
-                                                     num(rad + o.radius) + " m needed)");
-                }
-            }
-        }
+    if (const auto hit = detail::findObstacleOverlap(s.particles, w.obstacles)) {
+        const Obstacle& o = w.obstacles[hit->obstacle];
+        r.fail(describe(origins[hit->particle]),
+               "overlaps obstacles[" + std::to_string(hit->obstacle) + "] (centre " +
+                   num(hit->distance) + " m from its " + (o.isPeg() ? "centre" : "core line") +
+                   ", " + num(s.particles[hit->particle].radius + o.radius) + " m needed)");
     }
     if (const auto pair = detail::findOverlap(s.particles)) {
         const auto [i, k] = *pair;

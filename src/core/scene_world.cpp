@@ -30,7 +30,11 @@ Scene sceneFromWorld(const World& world, std::string name, std::string descripti
         d.color = p.color[i];
         s.particles.push_back(d);
     }
-    s.allowOverlaps = detail::findOverlap(s.particles).has_value();
+    // A world may hold overlaps the loader refuses by default (particles placed overlapping, an
+    // obstacle drawn over a particle, the discrete mode's resting contacts): the scene says so,
+    // so that it loads again.
+    s.allowOverlaps = detail::findOverlap(s.particles).has_value() ||
+                      detail::findObstacleOverlap(s.particles, s.world.obstacles).has_value();
     return s;
 }
 

@@ -199,6 +199,8 @@ TEST_F(ControlPanelTest, ModesAreChosenInEveryScene) {
 }
 
 TEST_F(ControlPanelTest, ToolsAreChosenByTheirRadioButtons) {
+    click("section Physics");
+    click("section Show");
     click("section Tools");
     click("tool Pan");
     EXPECT_EQ(session_->tool(), cmd::Tool::Pan);
@@ -206,6 +208,32 @@ TEST_F(ControlPanelTest, ToolsAreChosenByTheirRadioButtons) {
     EXPECT_EQ(session_->tool(), cmd::Tool::Select);
     click("auto radius");  // untick: the radius field now sets the launch radius
     EXPECT_TRUE(session_->spawn().fixedRadius.has_value());
+}
+
+TEST_F(ControlPanelTest, TheObstacleToolsHaveRadioButtonsSizesAndADeleteButton) {
+    click("section Physics");
+    click("section Show");
+    click("section Tools");
+    click("tool Wall");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Wall);
+    click("tool Peg");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Peg);
+    EXPECT_NE(panel_.item("peg radius"), nullptr);
+    EXPECT_NE(panel_.item("wall thickness"), nullptr);
+    EXPECT_EQ(panel_.item("delete obstacle"), nullptr);  // nothing selected
+    // A peg placed in an empty corner of the box and clicked with the Select tool.
+    const Camera& c = session_->camera();
+    const Vec2 at = c.worldToScreen(Vec2(1.0, 6.0));
+    session_->apply(cmd::PointerDown{at, 1.0});
+    session_->apply(cmd::PointerUp{at, 1.05});
+    ASSERT_EQ(session_->world().obstacles().size(), 1u);
+    click("tool Select");
+    session_->apply(cmd::PointerDown{at, 2.0});
+    session_->apply(cmd::PointerUp{at, 2.05});
+    ASSERT_EQ(session_->selectedObstacle(), 0u);
+    frame();
+    click("delete obstacle");
+    EXPECT_TRUE(session_->world().obstacles().empty());
 }
 
 TEST_F(ControlPanelTest, APresetIsOpenedByItsName) {
@@ -223,7 +251,7 @@ TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
         EXPECT_NE(panel_.item(f), nullptr) << f;
     }
     // Far down the panel: fold the sections above it.
-    for (const char* section : {"section Physics", "section Show", "section Tools"})
+    for (const char* section : {"section Physics", "section Show", "section Readouts"})
         click(section);
     click("deselect");
     EXPECT_FALSE(session_->selected());

@@ -38,6 +38,18 @@ TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
     EXPECT_EQ(std::get<cmd::OpenPreset>(preset.front()).index, 2);
 }
 
+TEST(Input, WAndBChooseTheWallAndPegToolsAsAToggle) {
+    const auto w = commandsForKey(keyEvent(SDLK_w), false);
+    ASSERT_TRUE(is<cmd::SetTool>(w));
+    EXPECT_EQ(std::get<cmd::SetTool>(w.front()).tool, cmd::Tool::Wall);
+    EXPECT_TRUE(std::get<cmd::SetTool>(w.front()).toggle);
+    const auto b = commandsForKey(keyEvent(SDLK_b), false);
+    ASSERT_TRUE(is<cmd::SetTool>(b));
+    EXPECT_EQ(std::get<cmd::SetTool>(b.front()).tool, cmd::Tool::Peg);
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w), true).empty());  // typed into the prompt
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w, KMOD_NONE, 1), false).empty());  // no repeat
+}
+
 TEST(Input, EveryPresetUpTo19HasAKeyAndTheKeyItsName) {
     // 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to the 19th: the 13 presets each
     // have one, and the message that opens one names the key that does.

@@ -126,6 +126,21 @@ TEST(SceneRoundTrip, ASnapshotWithOverlapsIsMarkedSoThatItLoads) {
     EXPECT_FALSE(sceneFromWorld(apart).allowOverlaps);
 }
 
+TEST(SceneRoundTrip, ASnapshotWithAParticleOverAnObstacleIsMarkedSoThatItLoads) {
+    // An obstacle drawn over a particle in the app, or a particle resting on a peg with the
+    // discrete mode's small overlap: the save must load again.
+    World w;
+    w.add({.position = {100.0, 100.0}, .radius = 10.0});
+    w.addObstacle(Obstacle::segment({50.0, 105.0}, {150.0, 105.0}, 4.0));
+    const Scene s = sceneFromWorld(w);
+    EXPECT_TRUE(s.allowOverlaps);
+    EXPECT_EQ(parseScene(serializeScene(s), "mem").world.obstacles.size(), 1u);
+    World clear;
+    clear.add({.position = {100.0, 100.0}, .radius = 10.0});
+    clear.addObstacle(Obstacle::peg({100.0, 200.0}, 5.0));
+    EXPECT_FALSE(sceneFromWorld(clear).allowOverlaps);
+}
+
 TEST(SceneRoundTrip, MakeWorldKeepsTheSceneOrderAndSettings) {
     const Scene s = defaultScene();
     const World w = makeWorld(s);

@@ -1,5 +1,5 @@
-# Sourced by the end-to-end scripts (sandbox_e2e.sh, defects_e2e.sh,
-# tests/install/install_test.sh), which define fail() themselves: pass(), the ERR trap that
+# Sourced by the end-to-end scripts (sandbox_e2e.sh, defects_e2e.sh, undo_e2e.sh, panel_e2e.sh,
+# obstacles_e2e.sh, tests/install/install_test.sh), which define fail() themselves: pass(), the ERR trap that
 # names the failing line, the clean-up at exit of the program under test (APP_PID) and of the X
 # server (XVFB_PID), start_xvfb, and for the app's scripts start_app with the functions that
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
@@ -124,6 +124,28 @@ wait_title() {  # wait_title REGEX
 key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
 shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
 
+# The control panel, for a program run with --log-controls ("[I] Control NAME at X Y", window
+# points): ctl NAME gives the screen point "x y" of the control called NAME, from its latest log
+# line; click NAME clicks it; type_into NAME TEXT types into a field.
+ctl() {
+    local line
+    line=$(grep -F "[I] Control $1 at " "$LOG" | tail -1) || fail "no control '$1' in the log"
+    read -r cx cy < <(sed -E 's/.* at ([0-9]+) ([0-9]+)$/\1 \2/' <<<"$line")
+    echo "$((WX + cx)) $((WY + cy))"
+}
+click() {  # click NAME: move away (no tooltip left), there, wait for a frame, press, release
+    local x y
+    read -r x y < <(ctl "$1")
+    xdotool mousemove --sync $((WX + 900)) $((WY + 700)) sleep 0.15 \
+        mousemove --sync "$x" "$y" sleep 0.15 mousedown 1 sleep 0.1 mouseup 1
+    sleep 0.3  # the layout may change: the log gets the new places
+}
+type_into() {  # type_into NAME TEXT: click the field (which selects its text), type, Enter
+    click "$1"
+    xdotool type --delay 30 "$2"
+    xdotool keydown Return sleep 0.1 keyup Return
+    sleep 0.3
+}
 # Drag with the left button from screen point (x0,y0) in n moves of (dx,dy), 15 ms apart, as
 # one xdotool command chain so that process start-up under load cannot stretch the timing (the
 # app releases a particle at rest if the hand paused for 100 ms). An optional 6th argument is a

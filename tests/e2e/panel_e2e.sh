@@ -62,26 +62,6 @@ wait_log() {  # wait_log REGEX [SECONDS]
 }
 key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
 shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
-# ctl NAME: the screen point "x y" of the control called NAME, from its latest log line.
-ctl() {
-    local line
-    line=$(grep -F "[I] Control $1 at " "$LOG" | tail -1) || fail "no control '$1' in the log"
-    read -r cx cy < <(sed -E 's/.* at ([0-9]+) ([0-9]+)$/\1 \2/' <<<"$line")
-    echo "$((WX + cx)) $((WY + cy))"
-}
-click() {  # click NAME: move away (no tooltip left), there, wait for a frame, press, release
-    local x y
-    read -r x y < <(ctl "$1")
-    xdotool mousemove --sync $((WX + 900)) $((WY + 700)) sleep 0.15 \
-        mousemove --sync "$x" "$y" sleep 0.15 mousedown 1 sleep 0.1 mouseup 1
-    sleep 0.3  # the layout may change: the log gets the new places
-}
-type_into() {  # type_into NAME TEXT: click the field (which selects its text), type, Enter
-    click "$1"
-    xdotool type --delay 30 "$2"
-    xdotool keydown Return sleep 0.1 keyup Return
-    sleep 0.3
-}
 box_left() { grep "\[I\] View: zoom" "$LOG" | tail -1 |
     sed -E 's/.*box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1/'; }
 
