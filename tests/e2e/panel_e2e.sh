@@ -29,9 +29,7 @@ rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
 
 fail() {
     echo "FAIL: $*" >&2
-    for f in stderr.log xvfb.log; do
-        [[ -s "$OUT/$f" ]] && { echo "--- $f:" >&2; tail -n 20 "$OUT/$f" >&2; }
-    done
+    show_logs
     echo "(log and screenshots in $OUT)" >&2
     exit 1
 }
@@ -42,26 +40,10 @@ start_xvfb "$OUT/xvfb.log" 1100x900x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 
 LOG="$OUT/stdout.log"
-"$BIN" --renderer software --window 1000x800 --paused --seed 7 --log-controls \
-    --save-to "$OUT/saved.json" --screenshot-dir "$OUT" >"$LOG" 2>"$OUT/stderr.log" &
-APP_PID=$!
-WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
-    head -1) || fail "no window within 20 s"
-eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
-WX=$X
-WY=$Y
-xdotool windowfocus --sync "$WID" 2>/dev/null || true
+start_app "$BIN" --renderer software --window 1000x800 --paused --seed 7 --log-controls \
+    --save-to "$OUT/saved.json" --screenshot-dir "$OUT"
 pass "window at $WX,$WY size ${WIDTH}x$HEIGHT"
 
-wait_log() {  # wait_log REGEX [SECONDS]
-    local deadline=$((SECONDS + ${2:-5}))
-    while ! grep -Eq "$1" "$LOG"; do
-        ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
-        sleep 0.05
-    done
-}
-key() { xdotool key --window "$WID" "$@"; sleep 0.15; }
-shot() { sleep 0.3; import -window root "$OUT/$1.png"; }
 box_left() { grep "\[I\] View: zoom" "$LOG" | tail -1 |
     sed -E 's/.*box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1/'; }
 
