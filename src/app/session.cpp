@@ -185,6 +185,7 @@ UndoState Session::snapshot(World world) const {
                 sceneName_,
                 sceneDescription_,
                 selection_.id().value_or(kNullParticle),
+                selectedObstacle_,
                 spawn_,
                 timeScale_,
                 dirty_};
@@ -213,6 +214,9 @@ void Session::restore(UndoState state) {
     selection_.clear();
     if (!state.selection.isNull() && world_.contains(state.selection)) {
         selection_.select(state.selection);
+    }
+    if (state.selectedObstacle && *state.selectedObstacle < world_.obstacles().size()) {
+        selectedObstacle_ = state.selectedObstacle;
     }
     ++generation_;  // views keyed to particles (trails) start over
     // The recorded frames belong to the state undone: the record starts again from here.

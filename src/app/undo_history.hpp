@@ -47,6 +47,7 @@ struct UndoState {
     std::string sceneName;
     std::string sceneDescription;
     ParticleId selection = kNullParticle;
+    std::optional<std::size_t> selectedObstacle;  ///< index into world.obstacles()
     SpawnSettings spawn;
     double timeScale = 1.0;
     bool dirty = false;
