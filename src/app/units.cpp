@@ -85,4 +85,10 @@ std::string keptWords(double relativeChange) {
     return "kept to 1 part in 10^" + std::to_string(power);
 }
 
+std::string overlapWords(double overlap, double typicalRadius) {
+    if (overlap > 1e-9 * typicalRadius)
+        return "Particles overlap by up to " + quantity(overlap, "m");
+    return overlap > 0.0 ? "No particles overlap (beyond rounding)" : "No particles overlap";
+}
+
 }  // namespace psb::app

@@ -19,4 +19,10 @@ namespace psb::app {
 /// tenth of a percent or more; "not measured" for NaN.
 [[nodiscard]] std::string keptWords(double relativeChange);
 
+/// The deepest overlap between particles (metres) in words, for a scene whose typical particle
+/// has radius `typicalRadius`: "Particles overlap by up to 1.20 mm"; "No particles overlap" at
+/// 0, and "(beyond rounding)" added below 10^-9 of the radius, where it is the rounding of
+/// the arithmetic (touching discs of the exact mode) and not worth a number in attometres.
+[[nodiscard]] std::string overlapWords(double overlap, double typicalRadius);
+
 }  // namespace psb::app
