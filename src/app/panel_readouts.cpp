@@ -57,7 +57,7 @@ void ControlPanel::readouts(const Session& s) {
             "Simulated time since the scene started");
         row("Particles", std::to_string(w.size()));
         row("Kinetic energy", quantity(o.kineticEnergy, "J"),
-            "The energy of motion, the sum of 1/2 m v^2 over every particle");
+            "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
         if (gravity) {
             row("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
                 "Kinetic plus potential energy (m g h): what elastic collisions under gravity "

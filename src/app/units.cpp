@@ -58,7 +58,7 @@ std::string quantity(double value, const std::string& unit, bool prefix) {
         return (a >= 1000.0 ? grouped(value) : threeFigures(value)) + u;
     }
     static const char* const big[] = {"", "k", "M", "G", "T", "P", "E"};
-    static const char* const small[] = {"", "m", "u", "n", "p", "f", "a"};
+    static const char* const small[] = {"", "m", "\u00b5", "n", "p", "f", "a"};
     int k = static_cast<int>(std::floor(std::log10(a) / 3.0));
     k = std::max(-6, std::min(6, k));
     double scaled = value / std::pow(1000.0, k);

@@ -8,7 +8,7 @@
 
 namespace psb::app {
 
-/// `value` in `unit` with an SI prefix (k, M, G, T; m, µ written "u", n) chosen so the number
+/// `value` in `unit` with an SI prefix (k, M, G, T; m, µ, n) chosen so the number
 /// is in [1, 1000), three significant figures; zero is "0 unit". For units a prefix would
 /// garble ("kg m/s", "m/s^2") pass `prefix` false: the digits are then grouped by thousands
 /// ("12 300 kg m/s") and small values keep three significant figures ("0.00123 kg m/s").

@@ -323,7 +323,7 @@ wait_log "\[I\] Restitution 0.95"
 key shift+e
 wait_log "\[I\] Restitution 1.00"
 key g
-wait_log "\[I\] Gravity \[0, 9.81\] m/s\^2"  # Earth's, not scaled by the box
+wait_log "\[I\] Gravity \[0, 9.81\] m/s²"  # Earth's, not scaled by the box
 # T with gravity on always moves on: substep, then exact (which has gravity too).
 last_mode() { grep -E '\] Mode: ' "$LOG" | tail -1; }
 key t
@@ -343,7 +343,7 @@ key t
 wait_count "\] Mode: " $((modes + 2))
 last_mode | grep -q "Mode: exact" || fail "T T did not reach exact: $(last_mode)"
 key g
-wait_count "Gravity \[0, 9.81\] m/s\^2" 2
+wait_count "Gravity \[0, 9.81\] m/s²" 2
 key g
 wait_count "\[I\] Gravity off" 2
 key t
