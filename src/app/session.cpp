@@ -66,12 +66,14 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
       timeline_(options_.timeline) {
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
+    showControls_ = options_.controls;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
     sceneDescription_ = options_.sceneDescription;
     for (const auto& file : options_.presets)
         presets_.push_back(describeScene(file));
     setWorld(std::move(world), std::move(sceneName));
     showSceneTrails(options_.sceneTrails);
+    if (!showControls_) say("The control panel is folded in this narrow window: C or >> opens it");
 }
 
 void Session::setWorld(World world, std::string name) {
@@ -945,6 +947,9 @@ void Session::fit() {
     const bool column = view_.plots || view_.speeds || showProfile_;
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
     const double left = controlsInset();
+    const double top =
+        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left)))
+                  : in.top;
     double right = 0.0;
     if (column) {
         const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
@@ -956,11 +961,11 @@ void Session::fit() {
         // inspector's whole column, the box moves left, keeps its size, and the inspector
         // (bottom right, on a click) does not cover it. Less room would only move the box off
         // centre and still leave it covered.
-        camera_.fit(w, h, margin, in.top, in.bottom, 0.0, left);
+        camera_.fit(w, h, margin, top, in.bottom, 0.0, left);
         const double spare = camera_.viewportWidth() - left - camera_.toScreen(w) - 2.0 * margin;
         right = spare >= in.inspectorColumn ? in.inspectorColumn : 0.0;
     }
-    camera_.fit(w, h, margin, in.top, in.bottom, right, left);
+    camera_.fit(w, h, margin, top, in.bottom, right, left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",

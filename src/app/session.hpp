@@ -72,6 +72,8 @@ struct SessionOptions {
     std::vector<std::size_t> sceneTrails;  ///< the first scene's particles with trails shown
     bool paused = false;
     bool arrows = true;
+    /// The control panel open at the start (folded, a window too narrow for it and the box).
+    bool controls = true;
     int viewportWidth = 800;  ///< pixels
     int viewportHeight = 800;
     ViewInsets insets;

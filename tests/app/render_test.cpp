@@ -439,5 +439,26 @@ TEST_F(RenderTest, LongLinesWrapAtSpacesWithinTheWidthAndKeepEveryWord) {
     EXPECT_EQ(joined, line);
 }
 
+TEST_F(RenderTest, HudLinesWrapBetweenTheirPartsAndKeepEveryReading) {
+    const std::string line = "Kinetic energy 1.96 J | momentum (0.111, 0.461) kg m/s | H: help";
+    const int width = font_->measure("Kinetic energy 1.96 J | momentum (0.111, 0.461) kg m/s") + 10;
+    const std::vector<std::string> wrapped = wrapHudLines(*font_, {line, "short"}, width);
+    ASSERT_EQ(wrapped.size(), 3u);
+    EXPECT_EQ(wrapped[0], "Kinetic energy 1.96 J | momentum (0.111, 0.461) kg m/s");
+    EXPECT_EQ(wrapped[1], "  H: help");
+    EXPECT_EQ(wrapped[2], "short");
+    for (const std::string& l : wrapped)
+        EXPECT_LE(font_->measure(l), width - 8) << l;
+    // Narrower than one part: that part breaks at spaces too; nothing is lost.
+    const std::vector<std::string> narrow =
+        wrapHudLines(*font_, {line}, font_->measure("Kinetic energy 1.96 J") + 8);
+    std::string joined;
+    for (const std::string& l : narrow)
+        joined += l + "\n";
+    for (const char* reading : {"1.96 J", "(0.111,", "0.461)", "help"})
+        EXPECT_NE(joined.find(reading), std::string::npos) << joined;
+    EXPECT_EQ(wrapHudLines(*font_, {line}, 10000), std::vector<std::string>{line});
+}
+
 }  // namespace
 }  // namespace psb::app
