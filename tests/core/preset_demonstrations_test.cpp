@@ -47,7 +47,7 @@ std::vector<int> aboveOverTime(World& w, double y, double every, double until) {
     return counts;
 }
 
-// --- 10-funnel.json: 400 balls of 8 mm, a neck of 2.4 cm (three balls wide) at y = 0.5 m -----
+// --- 10-funnel.json: 400 balls of 8 mm, a neck of 2.2 cm (2.75 balls wide) at y = 0.5 m -------
 
 constexpr double kFunnelNeck = 0.5;
 
@@ -80,14 +80,19 @@ TEST(PresetDemonstrations, FunnelFlowsInFitsThenAnArchHoldsUntilABallIsTakenOut)
     // Take out the arch's lowest ball (the one nearest the neck): the flow resumes.
     takeOutTheKeystone(w);
     const int before = above(w, kFunnelNeck);
+    runFor(w, 1.0);
+    EXPECT_LE(above(w, kFunnelNeck), before - 5);
+    // Until a new arch holds.
     runFor(w, 0.5);
-    EXPECT_LE(above(w, kFunnelNeck), before - 3);
+    const int again = above(w, kFunnelNeck);
+    runFor(w, 0.5);
+    EXPECT_EQ(above(w, kFunnelNeck), again);
 }
 
 TEST(PresetDemonstrations, FunnelInTheDiscreteModePoursOutLikeALiquid) {
     World w = presetIn("10-funnel.json", StepMode::Discrete);
-    const std::vector<int> n = aboveOverTime(w, kFunnelNeck, 0.1, 3.5);
-    EXPECT_EQ(n[35], 0);  // no arch ever holds
+    const std::vector<int> n = aboveOverTime(w, kFunnelNeck, 0.1, 4.5);
+    EXPECT_EQ(n[45], 0);  // no arch ever holds
     // Fast while full, slow near the end: the balls through in [0.4, 0.9] s against [1.9, 2.4] s.
     EXPECT_GT(n[4] - n[9], 3 * (n[19] - n[24]));
     EXPECT_GT(n[19] - n[24], 0);
@@ -100,11 +105,11 @@ TEST(PresetDemonstrations, FunnelInTheExactModeLocksAtOnceAndAgainWhenABallIsTak
     EXPECT_GE(locked, 370);  // a few tens of balls at most go through
     runFor(w, 0.5);
     EXPECT_EQ(above(w, kFunnelNeck), locked);
-    // Taking out the keystone lets a few balls through, and at once a new arch holds.
+    // Taking out the keystone lets a ball or two through, and at once a new arch holds.
     takeOutTheKeystone(w);
     runFor(w, 0.5);
     const int relocked = above(w, kFunnelNeck);
-    EXPECT_LT(relocked, locked - 1);
+    EXPECT_LE(relocked, locked - 2);
     EXPECT_GT(relocked, locked - 20);
     runFor(w, 0.5);
     EXPECT_EQ(above(w, kFunnelNeck), relocked);
