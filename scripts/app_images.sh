@@ -6,6 +6,9 @@
 #   help.png     the built-in scene, paused, with the help overlay (H), 720x720 window
 #   inspect.png  the built-in scene, paused, the 18 kg particle selected by a click and its
 #                edit prompt open with 25 typed (Enter, 2, 5), 960x640 window scaled to 75 %
+#   funnel.png, hourglass.png, ramp.png, basketball.png  the obstacle presets 10-13, each run
+#                from paused for a few seconds then paused again, arrows off (the basketball
+#                with all trails), 800x800 windows scaled to 60 %
 #
 #   scripts/app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
@@ -28,6 +31,9 @@ start() {
     pid=$!
     wid=$(timeout 20 xdotool search --sync --onlyvisible --pid "$pid" --name "Particle Sandbox" | head -1)
     eval "$(xdotool getwindowgeometry --shell "$wid")"
+    # The pointer in the window's bottom-right corner, off the box and the panel: no launch
+    # preview at the middle of the picture and no tooltip.
+    xdotool mousemove --sync $((X + WIDTH - 5)) $((Y + HEIGHT - 5))
     until grep -q "View: zoom" "$dir/log"; do sleep 0.05; done
     read -r zoom bx by < <(sed -nE 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/p' "$dir/log" | head -1)
 }
@@ -70,6 +76,24 @@ xdotool mousemove --sync "$px" "$py" sleep 0.1 click 1
 sleep 0.3
 xdotool key --window "$wid" Return sleep 0.2 type --window "$wid" --delay 50 "25"
 shoot_and_quit "$WORK/inspect" 2
+
+# run_preset NAME FILE SECONDS [KEYS...]: the preset paused with arrows off, KEYS pressed, run
+# for SECONDS, paused again and shot.
+run_preset() {
+    local name=$1 file=$2 seconds=$3
+    shift 3
+    mkdir -p "$WORK/$name"
+    start 800x800 "$WORK/$name" --paused --no-arrows "$ASSETS/scenes/$file"
+    for k in "$@"; do xdotool key --window "$wid" "$k"; sleep 0.1; done
+    xdotool key --window "$wid" space
+    sleep "$seconds"
+    xdotool key --window "$wid" space
+    shoot_and_quit "$WORK/$name" 1
+}
+run_preset funnel 10-funnel.json 4
+run_preset hourglass 11-hourglass.json 1.2
+run_preset ramp 12-ramp.json 1.6 l l
+run_preset basketball 13-basketball-and-tennis-ball.json 1.25 l l
 DRIVE
 ASSETS=$(cd "$(dirname "$0")/../assets" && pwd)
 BIN=$BIN WORK=$WORK ASSETS=$ASSETS xvfb-run -a -s "-screen 0 1000x900x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
@@ -78,4 +102,7 @@ convert "$WORK"/momentum/particle-sandbox-*.png -strip "$OUT/overlays-momentum.p
 convert "$WORK"/gas/particle-sandbox-*.png -strip "$OUT/overlays-gas.png"
 convert "$WORK"/help/particle-sandbox-*.png -strip "$OUT/help.png"
 convert "$WORK"/inspect/particle-sandbox-*.png -resize 75% -strip "$OUT/inspect.png"
-echo "wrote sandbox, overlays-momentum, overlays-gas, help and inspect .png in $OUT"
+for name in funnel hourglass ramp basketball; do
+    convert "$WORK/$name"/particle-sandbox-*.png -resize 60% -strip "$OUT/$name.png"
+done
+echo "wrote sandbox, overlays-momentum, overlays-gas, help, inspect, funnel, hourglass, ramp and basketball .png in $OUT"
