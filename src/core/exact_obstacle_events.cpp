@@ -2,6 +2,7 @@
 // support a resting particle finds on them. The design note is in exact_stepper.hpp
 // ("Obstacles"); the times of impact are exact_obstacle_impact.hpp's.
 
+#include <algorithm>
 #include <cmath>
 
 #include "contact.hpp"
@@ -59,9 +60,22 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
         if (an < 0.0 && an * an > kPressTolerance * kPressTolerance * (gax * gax + gay * gay)) {
             const double lift = 0.5 * restSpeed_, leaving = a.vx * nx + a.vy * ny;
             if (leaving < lift) {
-                a.vx += (lift - leaving) * nx;
-                a.vy += (lift - leaving) * ny;
-                dv += lift - leaving;
+                // The lift is part of the normal impulse the contact gives, so Coulomb's law
+                // bounds the friction by mu times all of it: over the hops down a slope the
+                // normal impulses add up to the weight's normal share (m g cos θ per second),
+                // and the mean deceleration is then g (sin θ − mu cos θ). Friction only on the
+                // rebound's part gave mu (1 + e)/2 in place of mu.
+                const double extra = lift - leaving;
+                if (def_.friction > 0.0) {
+                    double along = a.vx * -ny + a.vy * nx;
+                    const double cut = std::min(std::abs(along), def_.friction * extra);
+                    along -= std::copysign(cut, along);
+                    a.vx = leaving * nx + along * -ny;
+                    a.vy = leaving * ny + along * nx;
+                }
+                a.vx += extra * nx;
+                a.vy += extra * ny;
+                dv += extra;
             }
         }
     }

@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "obstacle_geometry.hpp"
@@ -180,6 +181,64 @@ TEST(ExactObstacles, FrictionlessRampIsSlidDownAndAFrictionalOneHolds) {
             EXPECT_LT(moved.norm(), 0.01);
         }
         EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
+    }
+}
+
+/// A long ramp at `degrees` (falling to the right, y down) with a ball of 1 kg dropped onto it
+/// from 5 cm near its top end; `along` is the unit vector down the ramp.
+struct LongRamp {
+    World world;
+    ParticleId ball;
+    Vec2 along;
+    double angle;
+};
+LongRamp longRamp(double degrees, double mu, double e) {
+    const double g = 9.81, r = 0.05, angle = degrees * 3.14159265358979 / 180.0, length = 40.0;
+    const Vec2 from(0.5, 1.0),
+        to(from.x() + length * std::cos(angle), from.y() + length * std::sin(angle));
+    const Vec2 n(std::sin(angle), -std::cos(angle));  // the ramp's upper normal
+    World w(
+        WorldDef{
+            .width = 45.0, .height = 45.0, .gravity = {0.0, g}, .restitution = e, .friction = mu},
+        exactMode());
+    w.addObstacle(Obstacle::segment(from, to, 0.05));
+    const ParticleId id =
+        w.add({.position = from + 0.02 * (to - from) + (r + 0.05) * n, .mass = 1.0, .radius = r});
+    return {std::move(w), id, (to - from).normalized(), angle};
+}
+
+TEST(ExactObstacles, BallSlidingDownARampWithFrictionFollowsCoulombsLaw) {
+    // Friction acts at the impulses of the contact (the model has no rotation): over the hops
+    // down a slope steeper than the friction angle the normal impulses carry the weight's
+    // normal share, so the mean acceleration along the slope is g (sin θ − mu cos θ), whatever
+    // the restitution. Measured from the velocity along the slope between 0.5 s and 2.5 s.
+    const double g = 9.81;
+    for (const double degrees : {20.0, 30.0}) {
+        for (const double mu : {0.0, 0.1, 0.2}) {
+            for (const double e : {0.3, 0.8}) {
+                LongRamp ramp = longRamp(degrees, mu, e);
+                World& w = ramp.world;
+                for (int k = 0; k < 30; ++k)
+                    w.step(1.0 / 60.0);
+                const double v1 = w.get(ramp.ball).velocity.dot(ramp.along);
+                const double energy1 = mechanicalEnergy(w);
+                const std::uint64_t events1 = w.counters().events;
+                for (int k = 0; k < 120; ++k)
+                    w.step(1.0 / 60.0);
+                const double v2 = w.get(ramp.ball).velocity.dot(ramp.along);
+                const double expected = g * (std::sin(ramp.angle) - mu * std::cos(ramp.angle));
+                SCOPED_TRACE(testing::Message() << degrees << " deg, mu " << mu << ", e " << e);
+                EXPECT_NEAR((v2 - v1) / 2.0, expected, 0.02 * expected);
+                if (mu == 0.0) {
+                    // Frictionless: the hops give back what their rebounds lose, so the
+                    // mechanical energy is kept (to 1e-3 of the kinetic energy gained).
+                    EXPECT_NEAR(mechanicalEnergy(w), energy1, 1e-3 * 0.5 * v2 * v2);
+                }
+                // Each hop is an event: about 2 g cos θ / u_r of them per second.
+                EXPECT_LT(w.counters().events - events1, 2u * 250u);
+                EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
+            }
+        }
     }
 }
 
