@@ -40,7 +40,30 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
     advance(a, ev.time);
     stopSliding(a);  // another obstacle ends a slide
     ++stats_.obstacles;
-    const Obstacle& o = obstacles_[ev.partner];
+    reboundOffObstacle(i, ev.partner, recent, counters);
+    ++a.count;
+    // Off the wall it rested on if the obstacle pushed it off; asleep if it is slow and held.
+    if (gravity_) settleAfterPair(i, false);
+    predictCollision(i, ev.time);
+    predictCell(i, ev.time);
+}
+
+void ExactStepper::keepOnFace(std::uint32_t i, StepCounters& counters) {
+    // i slid on a face until a pair hit it just now. Sent off the face, it flies; still on it
+    // (not moving away from it), the face answers at once, as the obstacle event that its next
+    // prediction would find at this instant would: a rebound, and a slide again if slow.
+    Body& a = bodies_[i];
+    const std::uint32_t k = slide_[i].obstacle;
+    double qx, qy;
+    nearestCorePoint(obstacles_[k], a.x, a.y, qx, qy);
+    if ((a.vx * (a.x - qx) + a.vy * (a.y - qy)) > 0.0) return;
+    reboundOffObstacle(i, k, collidedWithin(a, a.t), counters);
+}
+
+void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool recent,
+                                      StepCounters& counters) {
+    Body& a = bodies_[i];
+    const Obstacle& o = obstacles_[k];
     // The outward normal: from the nearest point of the core to the centre.
     double qx, qy;
     nearestCorePoint(o, a.x, a.y, qx, qy);
@@ -69,7 +92,7 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
         const double an = gax * nx + gay * ny;
         if (an < 0.0 && an * an > kPressTolerance * kPressTolerance * (gax * gax + gay * gay)) {
             const double lift = 0.5 * restSpeed_, leaving = a.vx * nx + a.vy * ny;
-            if (leaving < lift && !o.isPeg() && startSliding(i, ev.partner, nx, ny)) {
+            if (leaving < lift && !o.isPeg() && startSliding(i, k, nx, ny)) {
                 // On a segment's face: it slides along it instead of hopping (see the design
                 // note), what is left of its normal velocity absorbed by the contact.
             } else if (leaving < lift) {
@@ -93,11 +116,6 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
         }
     }
     if (dv > 0.0) ++counters.obstacleCollisions;
-    ++a.count;
-    // Off the wall it rested on if the obstacle pushed it off; asleep if it is slow and held.
-    if (gravity_) settleAfterPair(i, false);
-    predictCollision(i, ev.time);
-    predictCell(i, ev.time);
 }
 
 bool ExactStepper::startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny) {

@@ -773,6 +773,18 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A sleeper does not move; advancing it would only restart its clock (t).
     if (!(a.flags & kAsleep)) advance(a, ev.time);
     if (!(b.flags & kAsleep)) advance(b, ev.time);
+    // A pair event ends a slide (the pair's impulses and lift are those of free particles); a
+    // slider still on its face afterwards slides on (keepOnFace below). Its acceleration has
+    // changed, so its counter does too.
+    const bool aSlid = (a.flags & kSliding) != 0, bSlid = (b.flags & kSliding) != 0;
+    if (aSlid) {
+        stopSliding(a);
+        ++a.count;
+    }
+    if (bSlid) {
+        stopSliding(b);
+        ++b.count;
+    }
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double d = std::sqrt(dx * dx + dy * dy);
     maxOverlap_ = std::max(maxOverlap_, a.r + b.r - d);
@@ -820,9 +832,6 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         ++counters.collisions;
         if (!aStays) ++a.count;
         if (!bStays) ++b.count;
-        // A hit ends a slide: free flight, and back on the face at once if still pressed on it.
-        stopSliding(a);
-        stopSliding(b);
         if (b.flags & kHeld) countHeldHit(i);
         if (a.flags & kHeld) countHeldHit(j);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
@@ -831,6 +840,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
         liftPressedPair(i, j, n);
+        if (aSlid) keepOnFace(i, counters);
+        if (bSlid) keepOnFace(j, counters);
         settleAfterPair(i, woke);
         settleAfterPair(j, woke);
     }

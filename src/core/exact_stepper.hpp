@@ -436,6 +436,11 @@ class ExactStepper {
     // particle (appended to nx, ny, cone up to kMax, returns the new count).
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
     void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
+    // The rebound off obstacle k at i's current state (a lift or a slide where gravity presses
+    // i into it), without the event's bookkeeping; and the same for a slider hit by a pair that
+    // is still on its face.
+    void reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool recent, StepCounters& counters);
+    void keepOnFace(std::uint32_t i, StepCounters& counters);
     // The sliding contact: entering it at a rebound off a face (false if the face's end is too
     // near), the acceleration along the face, the end-of-face and stop events, leaving it.
     bool startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny);
