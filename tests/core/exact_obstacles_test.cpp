@@ -184,27 +184,47 @@ TEST(ExactObstacles, FrictionlessRampIsSlidDownAndAFrictionalOneHolds) {
     }
 }
 
-/// A long ramp at `degrees` (falling to the right, y down) with a ball of 1 kg dropped onto it
-/// from 5 cm near its top end; `along` is the unit vector down the ramp.
-struct LongRamp {
+/// A ramp `length` m long at `degrees` from `from`, falling to the right (y down), 0.05 m
+/// thick, in a `box` m square box under g = 9.81 m/s² with friction mu and restitution e.
+struct Ramp {
     World world;
-    ParticleId ball;
-    Vec2 along;
-    double angle;
+    Obstacle ramp;
+    Vec2 along, normal;  // down the ramp; away from it, on the upper side
+    double angle;        // radians
+    double accel;        // a block's slide down it: g (sin θ − mu cos θ)
 };
-LongRamp longRamp(double degrees, double mu, double e) {
-    const double g = 9.81, r = 0.05, angle = degrees * 3.14159265358979 / 180.0, length = 40.0;
-    const Vec2 from(0.5, 1.0),
-        to(from.x() + length * std::cos(angle), from.y() + length * std::sin(angle));
-    const Vec2 n(std::sin(angle), -std::cos(angle));  // the ramp's upper normal
+Ramp rampWorld(double degrees, double mu, double e, const Vec2& from, double length, double box) {
+    const double g = 9.81, angle = degrees * 3.14159265358979 / 180.0;
+    const Vec2 along(std::cos(angle), std::sin(angle));
     World w(
         WorldDef{
-            .width = 45.0, .height = 45.0, .gravity = {0.0, g}, .restitution = e, .friction = mu},
+            .width = box, .height = box, .gravity = {0.0, g}, .restitution = e, .friction = mu},
         exactMode());
-    w.addObstacle(Obstacle::segment(from, to, 0.05));
+    const Obstacle ramp = Obstacle::segment(from, from + length * along, 0.05);
+    w.addObstacle(ramp);
+    return {std::move(w), ramp,
+            along,        Vec2(along.y(), -along.x()),
+            angle,        g * (std::sin(angle) - mu * std::cos(angle))};
+}
+
+/// A 40 m ramp with a ball of 1 kg (r = 5 cm) dropped onto it from 5 cm near its top end.
+struct LongRamp {
+    Ramp ramp;
+    ParticleId ball;
+};
+LongRamp longRamp(double degrees, double mu, double e) {
+    Ramp ramp = rampWorld(degrees, mu, e, {0.5, 1.0}, 40.0, 45.0);
+    const double r = 0.05;
     const ParticleId id =
-        w.add({.position = from + 0.02 * (to - from) + (r + 0.05) * n, .mass = 1.0, .radius = r});
-    return {std::move(w), id, (to - from).normalized(), angle};
+        ramp.world.add({.position = ramp.ramp.a + 0.8 * ramp.along + (r + 0.05) * ramp.normal,
+                        .mass = 1.0,
+                        .radius = r});
+    return {std::move(ramp), id};
+}
+
+/// A ramp at 20° with mu = 0.2 and e = 0.3 in a 10 m box.
+Ramp shortRamp(double length) {
+    return rampWorld(20.0, 0.2, 0.3, {1.0, 4.0}, length, 10.0);
 }
 
 TEST(ExactObstacles, BallSlidingDownARampWithFrictionFollowsCoulombsLaw) {
@@ -212,21 +232,20 @@ TEST(ExactObstacles, BallSlidingDownARampWithFrictionFollowsCoulombsLaw) {
     // down a slope steeper than the friction angle the normal impulses carry the weight's
     // normal share, so the mean acceleration along the slope is g (sin θ − mu cos θ), whatever
     // the restitution. Measured from the velocity along the slope between 0.5 s and 2.5 s.
-    const double g = 9.81;
     for (const double degrees : {20.0, 30.0}) {
         for (const double mu : {0.0, 0.1, 0.2}) {
             for (const double e : {0.3, 0.8}) {
                 LongRamp ramp = longRamp(degrees, mu, e);
-                World& w = ramp.world;
+                World& w = ramp.ramp.world;
                 for (int k = 0; k < 30; ++k)
                     w.step(1.0 / 60.0);
-                const double v1 = w.get(ramp.ball).velocity.dot(ramp.along);
+                const double v1 = w.get(ramp.ball).velocity.dot(ramp.ramp.along);
                 const double energy1 = mechanicalEnergy(w);
                 const std::uint64_t events1 = w.counters().events;
                 for (int k = 0; k < 120; ++k)
                     w.step(1.0 / 60.0);
-                const double v2 = w.get(ramp.ball).velocity.dot(ramp.along);
-                const double expected = g * (std::sin(ramp.angle) - mu * std::cos(ramp.angle));
+                const double v2 = w.get(ramp.ball).velocity.dot(ramp.ramp.along);
+                const double expected = ramp.ramp.accel;
                 SCOPED_TRACE(testing::Message() << degrees << " deg, mu " << mu << ", e " << e);
                 EXPECT_NEAR((v2 - v1) / 2.0, expected, 0.02 * expected);
                 if (mu == 0.0) {
@@ -248,32 +267,11 @@ TEST(ExactObstacles, BallSlidingDownARampWithFrictionFollowsCoulombsLaw) {
     }
 }
 
-/// A ramp of `length` m at 20° (falling to the right, y down, thickness 0.05 m), mu = 0.2,
-/// e = 0.3, in a 10 m box.
-struct ShortRamp {
-    World world;
-    Obstacle ramp;
-    Vec2 along, normal;  // down the ramp; away from it, on the upper side
-    double accel;        // g (sin θ − mu cos θ)
-};
-ShortRamp shortRamp(double length) {
-    const double g = 9.81, mu = 0.2, angle = 20.0 * 3.14159265358979 / 180.0;
-    const Vec2 from(1.0, 4.0), along(std::cos(angle), std::sin(angle));
-    World w(
-        WorldDef{
-            .width = 10.0, .height = 10.0, .gravity = {0.0, g}, .restitution = 0.3, .friction = mu},
-        exactMode());
-    const Obstacle ramp = Obstacle::segment(from, from + length * along, 0.05);
-    w.addObstacle(ramp);
-    return {std::move(w), ramp, along, Vec2(along.y(), -along.x()),
-            g * (std::sin(angle) - mu * std::cos(angle))};
-}
-
 TEST(ExactObstacles, BallSlidesInContactAndLeavesTheRampsEndWhereAndAsItShould) {
     // A ball placed at rest on the face 0.5 m from the lower end slides in contact (its centre
     // at exactly r + h from the core line: no hops), reaches the end after √(2·0.5/a) at
     // a·t, and flies on from there on the parabola.
-    ShortRamp s = shortRamp(2.0);
+    Ramp s = shortRamp(2.0);
     World& w = s.world;
     const double r = 0.1, h = s.ramp.radius, g = 9.81;
     const Vec2 end = s.ramp.b, start = end - 0.5 * s.along + (r + h) * s.normal;
@@ -307,33 +305,17 @@ TEST(ExactObstacles, BallSlidesInContactAndLeavesTheRampsEndWhereAndAsItShould) 
 }
 
 TEST(ExactObstacles, FrictionStopsASlideWhereTheClosedFormSaysAndTurnsOneUpASteepSlope) {
-    const double g = 9.81, r = 0.1, pi = 3.14159265358979;
-    const auto rampWorld = [&](double degrees, double mu, Obstacle& ramp, Vec2& along,
-                               Vec2& normal) {
-        const double angle = degrees * pi / 180.0;
-        along = Vec2(std::cos(angle), std::sin(angle));
-        normal = Vec2(along.y(), -along.x());
-        ramp = Obstacle::segment({1.0, 3.0}, Vec2(1.0, 3.0) + 6.0 * along, 0.05);
-        World w(WorldDef{.width = 10.0,
-                         .height = 10.0,
-                         .gravity = {0.0, g},
-                         .restitution = 0.3,
-                         .friction = mu},
-                exactMode());
-        w.addObstacle(ramp);
-        return w;
-    };
-    Obstacle ramp;
-    Vec2 along, normal;
+    const double g = 9.81, r = 0.1;
     {
         // 10° with mu = 0.3 (friction angle 16.7°), thrown down it at 1 m/s: decelerated by
         // g (mu cos θ − sin θ), it stops after v²/2|a| and sleeps there.
-        World w = rampWorld(10.0, 0.3, ramp, along, normal);
-        const Vec2 start = ramp.a + 1.0 * along + (r + ramp.radius) * normal;
+        Ramp s = rampWorld(10.0, 0.3, 0.3, {1.0, 3.0}, 6.0, 10.0);
+        World& w = s.world;
+        const Vec2 along = s.along, start = s.ramp.a + 1.0 * along + (r + s.ramp.radius) * s.normal;
         const ParticleId id = w.add({.position = start, .velocity = along, .radius = r});
         // (Placed at contact to rounding, a hair above it maybe: it lands within nanoseconds,
         // and the rebound's friction on that landing is of the order of 1e-8 m/s.)
-        const double a = g * (0.3 * std::cos(10.0 * pi / 180.0) - std::sin(10.0 * pi / 180.0));
+        const double a = -s.accel;
         w.step(0.5);
         EXPECT_NEAR((w.get(id).position - start).dot(along), 0.5 - 0.5 * a * 0.25, 1e-7);
         w.step(1.0);
@@ -346,17 +328,18 @@ TEST(ExactObstacles, FrictionStopsASlideWhereTheClosedFormSaysAndTurnsOneUpAStee
     {
         // 30° with mu = 0.2, thrown up it at 2 m/s: up with g (sin θ + mu cos θ) against it,
         // stopped, then down with g (sin θ − mu cos θ).
-        World w = rampWorld(30.0, 0.2, ramp, along, normal);
-        const Vec2 start = ramp.a + 4.0 * along + (r + ramp.radius) * normal;
+        Ramp s = rampWorld(30.0, 0.2, 0.3, {1.0, 3.0}, 6.0, 10.0);
+        World& w = s.world;
+        const Vec2 along = s.along, start = s.ramp.a + 4.0 * along + (r + s.ramp.radius) * s.normal;
         const ParticleId id = w.add({.position = start, .velocity = -2.0 * along, .radius = r});
-        const double c = std::cos(pi / 6.0), up = g * (0.5 + 0.2 * c), down = g * (0.5 - 0.2 * c);
+        const double up = g * (std::sin(s.angle) + 0.2 * std::cos(s.angle)), down = s.accel;
         const double tStop = 2.0 / up, sStop = -2.0 * tStop + 0.5 * up * tStop * tStop;
         w.step(1.0);
         const double tDown = 1.0 - tStop;
         EXPECT_NEAR((w.get(id).position - start).dot(along), sStop + 0.5 * down * tDown * tDown,
                     1e-7);
         EXPECT_NEAR(w.get(id).velocity.dot(along), down * tDown, 1e-7);
-        EXPECT_NEAR(coreDistance(ramp, w.get(id).position), r + ramp.radius, 1e-9);
+        EXPECT_NEAR(coreDistance(s.ramp, w.get(id).position), r + s.ramp.radius, 1e-9);
         EXPECT_LT(w.counters().events, 10u);
     }
 }
@@ -365,7 +348,7 @@ TEST(ExactObstacles, BallHitWhileSlidingLeavesTheFace) {
     // A ball sliding down at 2 m/s catches a small one sliding ahead of it from rest (both
     // accelerate alike): the small one's centre is nearer the face, so the hit pushes the big
     // one off it. Before the hit both keep exactly to the face; after it the big one flies.
-    ShortRamp s = shortRamp(6.0);
+    Ramp s = shortRamp(6.0);
     World& w = s.world;
     const double r = 0.1, small = 0.03, h = s.ramp.radius;
     const Vec2 at = s.ramp.a + 1.0 * s.along;
@@ -400,7 +383,7 @@ TEST(ExactObstacles, BallLandingOnASliderPressesItOnAndItSlidesOn) {
     // A small ball dropped onto one sliding down the ramp pushes it into the face: the face
     // answers at the same instant (keepOnFace), the slider never enters it, and it slides on;
     // nothing enters the ramp or another ball.
-    ShortRamp s = shortRamp(6.0);
+    Ramp s = shortRamp(6.0);
     World& w = s.world;
     const double r = 0.1, h = s.ramp.radius;
     const Vec2 at = s.ramp.a + 1.0 * s.along + (r + h) * s.normal;
