@@ -120,6 +120,9 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
 
 bool ExactStepper::startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny) {
     Body& a = bodies_[i];
+    // A particle wider than the box along an axis has no velocity across it, which a slide
+    // down a slanted face would need: it hops.
+    if (cold_[i].pinX || cold_[i].pinY) return false;
     const Obstacle& o = obstacles_[k];
     const double ex = o.b.x() - o.a.x(), ey = o.b.y() - o.a.y();
     const double length = std::sqrt(ex * ex + ey * ey);
