@@ -131,7 +131,9 @@
 // it in free flight, and hops round the cap only if too slow to fly clear of it), and, where
 // friction decelerates it, the instant it stops (asleep there if the friction angle holds it,
 // else sliding back down). Any other event of the particle (a pair, a wall, another obstacle)
-// ends the slide; still pressed on the face, it is found touching and slides again at once.
+// ends the slide; a slider a pair hit that is still on its face gets the face's answer at once
+// (keepOnFace: a rebound, and a slide again if slow), after a wall or another obstacle it is
+// found touching at its next prediction and slides again at that same instant.
 // Pegs and caps keep the hop: round a circle the normal force is not constant, and the path
 // is not a parabola.
 //
