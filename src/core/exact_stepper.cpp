@@ -80,6 +80,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     ids_ = p.id;
     heldHit_.clear();
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
+    slide_.assign(gravity_ && !def_.obstacles.empty() ? n : 0, Slide{});
     rate_.reset(gravity_ ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
@@ -219,6 +220,7 @@ void ExactStepper::sortByCell(bool midRun) {
         permute(wokeAt_);
         rate_.renumber(to);
     }
+    if (!slide_.empty()) permute(slide_);
     if (midRun) {
         // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));
@@ -529,6 +531,13 @@ void ExactStepper::accelerationOf(const Body& b, double& ax, double& ay) const {
         ax = ay = 0.0;
         return;
     }
+    if (b.flags & kSliding) {
+        // Only bodies_' own records ever slide (a copy of one is never moved).
+        const Slide& s = slide_[static_cast<std::size_t>(&b - bodies_.data())];
+        ax = s.ax;
+        ay = s.ay;
+        return;
+    }
     ax = (b.flags & kRestX) ? 0.0 : gx_;
     ay = (b.flags & kRestY) ? 0.0 : gy_;
 }
@@ -669,7 +678,10 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
             if (now + tw[side] < best.time) best = {now + tw[side], 0, 0, Kind::Wall, side};
         }
     }
-    if (!obstacles_.empty()) predictObstacles(i, m, now, best);
+    if (!obstacles_.empty()) {
+        predictObstacles(i, m, now, best);
+        if (a.flags & kSliding) predictSlide(i, m, now, best);
+    }
     scanNeighbours(i, now, ax, ay, best);
     cold_[i].coll = best;
     bodies_[i].nextColl = best.time;
@@ -761,6 +773,18 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A sleeper does not move; advancing it would only restart its clock (t).
     if (!(a.flags & kAsleep)) advance(a, ev.time);
     if (!(b.flags & kAsleep)) advance(b, ev.time);
+    // A pair event ends a slide (the pair's impulses and lift are those of free particles); a
+    // slider still on its face afterwards slides on (keepOnFace below). Its acceleration has
+    // changed, so its counter does too.
+    const bool aSlid = (a.flags & kSliding) != 0, bSlid = (b.flags & kSliding) != 0;
+    if (aSlid) {
+        stopSliding(a);
+        ++a.count;
+    }
+    if (bSlid) {
+        stopSliding(b);
+        ++b.count;
+    }
     const double dx = b.x - a.x, dy = b.y - a.y;
     const double d = std::sqrt(dx * dx + dy * dy);
     maxOverlap_ = std::max(maxOverlap_, a.r + b.r - d);
@@ -816,6 +840,11 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
         liftPressedPair(i, j, n);
+        // A slider pressed along its face into a neighbour without an impulse (at rest against
+        // it) would slide into it again at once, the same event at the same instant without
+        // end: it hops off the face instead, as before slides, and slides again when it lands.
+        if (aSlid) keepOnFace(i, counters, hit);
+        if (bSlid) keepOnFace(j, counters, hit);
         settleAfterPair(i, woke);
         settleAfterPair(j, woke);
     }
@@ -838,6 +867,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     Body& a = bodies_[i];
     const bool recent = collidedWithin(a, ev.time);
     advance(a, ev.time);
+    stopSliding(a);
     ++stats_.walls;
     const bool alongX = ev.side < 2;
     double& v = alongX ? a.vx : a.vy;
@@ -1002,6 +1032,7 @@ void ExactStepper::fallAsleep(std::uint32_t i, double now) {
     advance(b, now);
     b.vx = b.vy = 0.0;
     b.flags |= kAsleep;
+    stopSliding(b);
     ++b.count;
     ++stats_.sleeps;
 }
@@ -1156,6 +1187,9 @@ double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_
             case Kind::Obstacle:
                 handleObstacle(i, ev, counters);
                 break;
+            case Kind::Slide:
+                handleSlide(i, ev);
+                break;
             case Kind::None:
                 return tEnd;  // unreachable: None events are at +infinity
         }
@@ -1227,7 +1261,8 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     clock_ = reached;
     syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
-    counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale + stats_.obstacles;
+    counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale +
+                       stats_.obstacles + stats_.slides;
     ++counters.steps;
 }
 
@@ -1235,7 +1270,8 @@ std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
-                        queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes();
+                        queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
+                        sizeof(Slide) * slide_.capacity();
     for (const Level& level : upper_)
         bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one

@@ -120,6 +120,22 @@
 // for pegs and caps, a quadratic across a flat side). Rebound: the walls' law along the normal
 // from the nearest core point. Under gravity obstacles are supports for resting (below), a
 // single one only within the friction angle, so a ball slides down a slope steeper than that.
+// Sliding (gravity only): a rebound off a segment's face that gravity presses the particle into
+// and that leaves it slower than the lift (restSpeed_ / 2) starts a sliding contact instead of a
+// hop: the particle stays at contact distance and moves along the face with a constant
+// acceleration, gravity's share along it less the kinetic friction mu·|g_n| against the motion
+// (none while static friction holds a particle at rest). Its path is still a parabola, with
+// another acceleration: pair times of impact take the relative-acceleration quartic, walls and
+// cell faces their quadratics, as for any acceleration. The contact has events of its own, in
+// the collision key (Kind::Slide): the end of the face (either end; it leaves from a hair past
+// it in free flight, and hops round the cap only if too slow to fly clear of it), and, where
+// friction decelerates it, the instant it stops (asleep there if the friction angle holds it,
+// else sliding back down). Any other event of the particle (a pair, a wall, another obstacle)
+// ends the slide; a slider a pair hit that is still on its face gets the face's answer at once
+// (keepOnFace: a rebound, and a slide again if slow), after a wall or another obstacle it is
+// found touching at its next prediction and slides again at that same instant.
+// Pegs and caps keep the hop: round a circle the normal force is not constant, and the path
+// is not a parabola.
 //
 // Gravity. Between events a free particle flies on a parabola, r(t) = r₀ + v₀t + ½gt², and
 // lazy advance stays as it is (a particle's stored state is the one at its last velocity
@@ -292,12 +308,13 @@ class ExactStepper {
     struct EventStats {
         std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0, obstacles = 0;
         std::uint64_t sleeps = 0, wakes = 0;  ///< particles put to sleep / woken (gravity only)
+        std::uint64_t slides = 0;  ///< a sliding contact's end or stop (gravity, segments)
         bool budgetExhausted = false;
     };
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
 
   private:
-    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle };
+    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide };
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
@@ -313,8 +330,16 @@ class ExactStepper {
     static constexpr std::uint32_t kJammed = 2;  // passes through held particles (jam guard)
     static constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
     static constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity, no acceleration
-    static constexpr std::uint32_t kRestX = 16;  // no acceleration along x (on a wall, pinned)
-    static constexpr std::uint32_t kRestY = 32;  // no acceleration along y
+    static constexpr std::uint32_t kRestX = 16;    // no acceleration along x (on a wall, pinned)
+    static constexpr std::uint32_t kRestY = 32;    // no acceleration along y
+    static constexpr std::uint32_t kSliding = 64;  // on a segment's face: slide_ holds how
+    // A particle sliding on a segment's face (kSliding; exact_obstacle_events.cpp): which
+    // segment, and its constant acceleration along the face (gravity's share along it less the
+    // kinetic friction, or none where static friction holds it).
+    struct Slide {
+        std::uint32_t obstacle = 0;
+        double ax = 0.0, ay = 0.0;
+    };
     // Where a particle is at a time, and how it moves there (gravity only).
     struct Motion {
         double x, y, vx, vy, ax, ay;
@@ -415,6 +440,19 @@ class ExactStepper {
     // particle (appended to nx, ny, cone up to kMax, returns the new count).
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
     void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
+    // The rebound off obstacle k at i's current state (a lift or a slide where gravity presses
+    // i into it), without the event's bookkeeping; and the same for a slider hit by a pair that
+    // is still on its face.
+    void reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool recent, StepCounters& counters,
+                            bool maySlide = true);
+    void keepOnFace(std::uint32_t i, StepCounters& counters, bool maySlide);
+    // The sliding contact: entering it at a rebound off a face (false if the face's end is too
+    // near), the acceleration along the face, the end-of-face and stop events, leaving it.
+    bool startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny);
+    void setSlideAcceleration(std::uint32_t i);
+    void predictSlide(std::uint32_t i, const Motion& m, double now, Event& best) const;
+    void handleSlide(std::uint32_t i, const Event& ev);
+    void stopSliding(Body& b) const { b.flags &= ~kSliding; }
     int obstacleSupports(std::uint32_t i, double* nx, double* ny, double* cone, int count,
                          int max) const;
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
@@ -434,6 +472,9 @@ class ExactStepper {
     double restSpeed_ = 0.0;  // see the design note
     double restGap_ = 0.0;
     std::vector<std::uint32_t> wakeStack_;
+    // Per particle, in bodies_' order, with gravity and obstacles only: its sliding contact,
+    // read where kSliding is set.
+    std::vector<Slide> slide_;
     // When each particle was last woken (gravity only): it does not fall asleep again within
     // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
     // by the next event of the cascade that woke it.

@@ -177,8 +177,11 @@ TEST(PresetDemonstrations, RampBallsEndInTheCornerOfTheLowerRampAndTheLeftWallIn
         runFor(w, 7.0);
         const ParticleArrays& p = w.particles();
         const Obstacle& lower = w.obstacles()[1];
+        // In the exact mode one ball, squeezed against another as it lands, is put to rest on
+        // the lower ramp by the rattle guard (as the description says); the others reach it.
+        const long inCorner = std::count_if(p.x.begin(), p.x.end(), [](double x) { return x < 0.8; });
+        EXPECT_EQ(inCorner, mode == StepMode::Exact ? 4 : 5);
         for (std::size_t i = 0; i < p.size(); ++i) {
-            EXPECT_LT(p.x[i], 0.8) << i;  // in the corner, against the wall or a ball there
             // Above the lower ramp, never under it.
             const double rampY = lower.a.y() + (p.x[i] - lower.a.x()) *
                                                    (lower.b.y() - lower.a.y()) /
@@ -209,16 +212,12 @@ TEST(PresetDemonstrations, RampBallsAllSlideWithTheAccelerationCoulombFrictionGi
         runFor(w, 0.2);
         for (std::size_t i = 0; i < w.size(); ++i) {
             const double accel = (along(i) - v08[i]) / 0.2;
-            if (mode == StepMode::Exact) {
-                // Friction only at the hops: faster than Coulomb's law allows, slower than
-                // without friction (3.36 m/s^2).
-                EXPECT_GT(accel, 1.55) << i;
-                EXPECT_LT(accel, 2.2) << i;
-            } else {
+            // The exact mode slides on the face (Coulomb friction) as the others do.
+            if (mode != StepMode::Exact) {
                 EXPECT_NEAR(along(i), along(0), 1e-3) << i;  // side by side in speed
-                if (i < 3) {  // the last two still bounce a little at 0.8 s
-                    EXPECT_NEAR(accel, a, 0.01 * a) << i;
-                }
+            }
+            if (i < 3) {  // the last two still bounce a little at 0.8 s
+                EXPECT_NEAR(accel, a, 0.01 * a) << i;
             }
         }
     }
