@@ -179,7 +179,8 @@ TEST(PresetDemonstrations, RampBallsEndInTheCornerOfTheLowerRampAndTheLeftWallIn
         const Obstacle& lower = w.obstacles()[1];
         // In the exact mode one ball, squeezed against another as it lands, is put to rest on
         // the lower ramp by the rattle guard (as the description says); the others reach it.
-        const long inCorner = std::count_if(p.x.begin(), p.x.end(), [](double x) { return x < 0.8; });
+        const long inCorner =
+            std::count_if(p.x.begin(), p.x.end(), [](double x) { return x < 0.8; });
         EXPECT_EQ(inCorner, mode == StepMode::Exact ? 4 : 5);
         for (std::size_t i = 0; i < p.size(); ++i) {
             // Above the lower ramp, never under it.
