@@ -843,8 +843,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         // A slider pressed along its face into a neighbour without an impulse (at rest against
         // it) would slide into it again at once, the same event at the same instant without
         // end: it hops off the face instead, as before slides, and slides again when it lands.
-        if (aSlid) keepOnFace(i, counters, true);
-        if (bSlid) keepOnFace(j, counters, true);
+        if (aSlid) keepOnFace(i, counters, hit);
+        if (bSlid) keepOnFace(j, counters, hit);
         settleAfterPair(i, woke);
         settleAfterPair(j, woke);
     }
