@@ -138,11 +138,14 @@ int main(int argc, char** argv) {
     double duration = 6.0;
     psb::StepMode mode = psb::StepMode::Discrete;
     bool bins = false;
+    std::string scenePath = std::string(PSB_SOURCE_DIR) + "/assets/scenes/09-galton-board.json";
     std::vector<double> dts;
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--duration" && k + 1 < argc) {
             duration = std::atof(argv[++k]);
+        } else if (a == "--scene" && k + 1 < argc) {
+            scenePath = argv[++k];
         } else if (a == "--bins") {
             bins = true;
         } else if (a == "--mode" && k + 1 < argc) {
@@ -160,8 +163,7 @@ int main(int argc, char** argv) {
         dts = mode == psb::StepMode::Exact ? std::vector<double>{0.01}
                                            : std::vector<double>{0.001, 0.002, 0.004, 0.008, 0.016};
     }
-    const psb::Scene scene =
-        psb::loadScene(std::string(PSB_SOURCE_DIR) + "/assets/scenes/09-galton-board.json");
+    const psb::Scene scene = psb::loadScene(scenePath);
     std::printf(
         "| dt (ms) | steps | balls that leaked | leak events | balls in the bins | max "
         "ball overlap (mm) | step wall s |\n|---:|---:|---:|---:|---:|---:|---:|\n");
