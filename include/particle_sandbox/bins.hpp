@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include <particle_sandbox/chi_square.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
 
 namespace psb {
@@ -61,5 +62,17 @@ struct BinCounts {
 /// The counts `bins` expects when `total` particles have landed: total × P(bin k), or empty
 /// when the scene says no distribution.
 [[nodiscard]] std::vector<double> expectedCounts(const Bins& bins, std::size_t total);
+
+/// What the bins hold now, against what they should.
+struct BinsMeasurement {
+    BinCounts counts;
+    /// expectedCounts(bins, counts.counted()): empty without an expected distribution.
+    std::vector<double> expected;
+    /// The counts against `expected` at 1 %, when there is an expectation.
+    std::optional<ChiSquareTest> test;
+};
+
+/// Counts the particles of `p` in `bins` and tests the counts against the expectation.
+[[nodiscard]] BinsMeasurement measureBins(const Bins& bins, const ParticleArrays& p);
 
 }  // namespace psb

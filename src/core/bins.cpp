@@ -49,4 +49,12 @@ std::vector<double> expectedCounts(const Bins& bins, std::size_t total) {
     return out;
 }
 
+BinsMeasurement measureBins(const Bins& bins, const ParticleArrays& p) {
+    BinsMeasurement m;
+    m.counts = countBins(bins, p);
+    m.expected = expectedCounts(bins, m.counts.counted());
+    if (bins.binomial) m.test = chiSquareTest(m.counts.counts, m.expected);
+    return m;
+}
+
 }  // namespace psb
