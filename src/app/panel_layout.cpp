@@ -49,7 +49,7 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         *out = box;
         top = box.y + box.h + gap;
     }
-    if (!r.plots && !r.speeds) return l;
+    if (!r.plots && !r.speeds && !r.bins) return l;
 
     const int width = std::min(room, sideColumnWidth(r.width, r.left));
     if (width < kPanelMinWidth) return l;
@@ -60,6 +60,17 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     }
     int height = bottom - top;
     const int plotsMin = kPlotRowMinHeight + 8;  // one row plus the panel's padding
+    // The histograms take what is left after the plots' smallest useful size (one row), within
+    // their own limits: the bins first (a scene with bins is about them), then the speeds.
+    if (r.bins) {
+        const int want = r.plots ? std::min(kBinsMaxHeight, height - plotsMin - gap)
+                                 : std::min(kBinsMaxHeight, height);
+        if (want >= kBinsMinHeight) {
+            l.bins = {column.x, bottom - want, width, want};
+            bottom -= want + gap;
+            height = bottom - top;
+        }
+    }
     if (r.speeds) {
         // The histogram takes what is left after the plots' smallest useful size (one row),
         // within its own limits.

@@ -44,6 +44,8 @@ namespace psb::stages {
 namespace {
 
 constexpr int kPasses = 4;
+/// Relative slack on the squared contact distance within which a particle counts as touching.
+constexpr double kTouchTolerance = 1e-9;
 
 /// The particle's state while the stage works on it.
 struct Body {
@@ -138,8 +140,14 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
             const Obstacle& o = obstacles[k];
             double qx, qy;
             nearestCorePoint(o, x0, y0, qx, qy);
+            // Touching at p0 (within rounding: a push out leaves a particle at sigma give or
+            // take an ulp) counts as touched, so the overlap passes below handle it: a "first
+            // contact" at time 0 would throw away the whole move, and a ball pressed against a
+            // peg's side by another would hang there, gathering speed it never uses.
             const double sigma = b.r + o.radius;
-            if ((x0 - qx) * (x0 - qx) + (y0 - qy) * (y0 - qy) < sigma * sigma) continue;
+            if ((x0 - qx) * (x0 - qx) + (y0 - qy) * (y0 - qy) <
+                sigma * sigma * (1.0 + kTouchTolerance))
+                continue;
             const double t = exact::obstacleImpactTime(x0, y0, mx, my, b.r, o);
             if (t < first) {
                 first = t;
