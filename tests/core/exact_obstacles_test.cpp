@@ -8,6 +8,8 @@
 #include <random>
 #include <vector>
 
+#include <particle_sandbox/bins.hpp>
+#include <particle_sandbox/chi_square.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "obstacle_geometry.hpp"
@@ -207,14 +209,6 @@ TEST(ExactObstacles, BallRestingOnAPegWakesWhenHit) {
     EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
 }
 
-/// P(X = k) for X ~ Binomial(n, 1/2).
-double binomialHalf(int n, int k) {
-    double c = 1.0;
-    for (int i = 1; i <= k; ++i)
-        c = c * (n - k + i) / i;
-    return c * std::pow(0.5, n);
-}
-
 TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
     // Eight staggered rows of pegs (spacing d), bins under the gaps of the last row; 1000
     // balls dropped one at a time above the top peg with a small random offset. A ball's bin
@@ -293,28 +287,23 @@ TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
     EXPECT_EQ(stuck, 0);
     EXPECT_EQ(outside, 0);
     EXPECT_LT(deepest, 1e-9) << "a ball went into a peg or a bin wall";
-    // χ² over the bins, the two outermost on each side merged (expected counts >= 5).
-    std::vector<double> observed, expected;
-    for (int m = 0; m <= kRows; ++m) {
-        const double e = kBalls * binomialHalf(kRows, m);
-        if (m == 1 || m == kRows) {
-            observed.back() += bins[m];
-            expected.back() += e;
-        } else {
-            observed.push_back(bins[m]);
-            expected.push_back(e);
-        }
-    }
-    double chi2 = 0.0;
+    // χ² over the bins against Binomial(8, 1/2), thin tails merged (expected counts >= 5).
+    const std::vector<double> expected = binomialProbabilities({.trials = kRows, .p = 0.5});
+    std::vector<double> counts(expected.size());
+    std::vector<std::size_t> observed(bins.begin(), bins.end());
+    for (std::size_t k = 0; k < counts.size(); ++k)
+        counts[k] = kBalls * expected[k];
+    const ChiSquareTest test = chiSquareTest(observed, counts);
     std::string table;
-    for (std::size_t k = 0; k < observed.size(); ++k) {
-        chi2 += (observed[k] - expected[k]) * (observed[k] - expected[k]) / expected[k];
-        table += std::to_string(static_cast<int>(observed[k])) + "/" +
-                 std::to_string(static_cast<int>(std::lround(expected[k]))) + " ";
+    for (std::size_t k = 0; k < test.observed.size(); ++k) {
+        table += std::to_string(static_cast<int>(test.observed[k])) + "/" +
+                 std::to_string(static_cast<int>(std::lround(test.expected[k]))) + " ";
     }
-    // 7 classes, 6 degrees of freedom: the 1 % critical value is 16.81.
-    EXPECT_LT(chi2, 16.81) << "bins (observed/expected): " << table;
-    std::printf("Galton board, exact mode: chi2 = %.2f (6 dof), bins %s\n", chi2, table.c_str());
+    EXPECT_EQ(test.dof, 6);  // 7 classes: the outermost bin on each side merged into its neighbour
+    EXPECT_TRUE(test.passes()) << "chi2 " << test.statistic << " above " << test.critical
+                            << "; bins (observed/expected): " << table;
+    std::printf("Galton board, exact mode: chi2 = %.2f (%d dof, 1 %% critical %.2f), bins %s\n",
+                test.statistic, test.dof, test.critical, table.c_str());
 }
 
 }  // namespace
