@@ -191,8 +191,8 @@ int main(int argc, char** argv) {
                     std::printf(" %zu", c);
                 std::printf(" (%zu outside, %zu above)", m->counts.outside, m->counts.above);
                 if (m->test && m->test->valid()) {
-                    std::printf("; chi-squared %.2f on %d dof, 1 %% critical %.2f: %s", m->test->statistic,
-                                m->test->dof, m->test->critical,
+                    std::printf("; chi-squared %.2f on %d dof, 1 %% critical %.2f: %s",
+                                m->test->statistic, m->test->dof, m->test->critical,
                                 m->test->passes() ? "passes" : "fails");
                 }
                 std::printf("\n");

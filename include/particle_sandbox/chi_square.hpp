@@ -37,7 +37,7 @@ struct ChiSquareTest {
 /// Tests `observed` against `expected` (same length, expected >= 0) at level `alpha`, merging
 /// classes that expect fewer than `minExpected`.
 [[nodiscard]] ChiSquareTest chiSquareTest(const std::vector<std::size_t>& observed,
-                                          const std::vector<double>& expected,
-                                          double alpha = 0.01, double minExpected = 5.0);
+                                          const std::vector<double>& expected, double alpha = 0.01,
+                                          double minExpected = 5.0);
 
 }  // namespace psb

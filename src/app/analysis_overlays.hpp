@@ -1,8 +1,8 @@
 #pragma once
 // The analysis overlays drawn over the world (see docs/app.md, "Seeing the physics"): the
-// momentum view (V), the plots panel (K), the speed histogram (D) and a scene's bins, each drawn only when its
-// ViewOptions toggle is on, in the boxes of a PanelLayout.
-// The path traces (L) are drawn by the Renderer, under the discs.
+// momentum view (V), the plots panel (K), the speed histogram (D) and a scene's bins, each drawn
+// only when its ViewOptions toggle is on, in the boxes of a PanelLayout. The path traces (L) are
+// drawn by the Renderer, under the discs.
 
 #include <optional>
 

@@ -21,7 +21,8 @@ std::string number(double v) {
 std::string verdict(const std::optional<ChiSquareTest>& t) {
     if (!t || !t->valid()) return "too few balls yet to compare with the curve";
     const std::string stat = "chi-squared " + number(t->statistic);
-    if (t->passes()) return "close to the curve: " + stat + " < " + number(t->critical) + ", chance";
+    if (t->passes())
+        return "close to the curve: " + stat + " < " + number(t->critical) + ", chance";
     return "far from the curve: " + stat + " > " + number(t->critical) + ", more than chance";
 }
 
@@ -51,8 +52,8 @@ BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p) {
     if (c.outside > 0) bars += ", " + std::to_string(c.outside) + " outside the bins";
     h.legend.push_back(bars + ")");
     if (const auto& b = bins.binomial) {
-        h.legend.push_back("dots: binomial, " + std::to_string(b->trials) + " rows, p = " +
-                           probabilityText(b->p));
+        h.legend.push_back("dots: binomial, " + std::to_string(b->trials) +
+                           " rows, p = " + probabilityText(b->p));
         const double sigma = std::sqrt(b->trials * b->p * (1.0 - b->p));
         h.legend.push_back("line: normal curve (mean " + number(b->trials * b->p) + ", spread " +
                            number(sigma) + " bins)");
@@ -124,24 +125,16 @@ void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const Bin
         }
     }
 
-    const double ystep = niceStep(0.0, r.hi, 4);
-    for (const double t : niceTicks(0.0, r.hi, 4)) {
-        const float ty = sy(t);
-        boxes_.quad(left - 4, ty, left - 1, ty + 1, axis);
-        const std::string label = tickLabel(t, ystep);
-        font.layout(label, left - 6 - static_cast<float>(font.measure(label)), ty - lh / 2, grey,
-                    text_);
-    }
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
     // Bin numbers under the bars, as many as fit.
-    const int every = std::max(1, static_cast<int>(std::ceil(
-                                      static_cast<float>(font.measure("000") + 4) / binW)));
+    const int every = std::max(
+        1, static_cast<int>(std::ceil(static_cast<float>(font.measure("000") + 4) / binW)));
     for (std::size_t k = 0; k < bins; k += static_cast<std::size_t>(every)) {
         const std::string label = std::to_string(k);
         font.layout(label, sx(static_cast<double>(k) + 0.5) - font.measure(label) / 2.0f,
                     bottom + 3, grey, text_);
     }
-    const char* xTitle =
-        h.bins.binomial ? "bin = times a ball went right" : "bin, left to right";
+    const char* xTitle = h.bins.binomial ? "bin = times a ball went right" : "bin, left to right";
     font.layout(xTitle, right - static_cast<float>(font.measure(xTitle)), bottom + 3 + lh, grey,
                 text_);
     font.layout("balls", x + 8, bottom + 3 + lh, grey, text_);

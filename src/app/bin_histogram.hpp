@@ -47,8 +47,7 @@ inline constexpr SDL_Color kNormalCurveColor{90, 200, 255, 255};
 class BinHistogramPanel {
   public:
     /// Draws `h` in `box` (pixels, see PanelLayout).
-    void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
-              const SDL_Rect& box);
+    void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h, const SDL_Rect& box);
 
   private:
     GeometryBatch boxes_, text_;

@@ -2,10 +2,10 @@
 // Where the text and analysis panels go, as a pure function of the window size and what each
 // panel would need: the HUD at the top-left (right of the control panel's column), then a column at
 // the right edge holding, from the top, the profile and the momentum legend, and from the bottom
-// the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The column starts below the
-// HUD when the window is too narrow for both side by side, panels shrink to the room there is (the
-// plots drop their least important rows first: rate, then py, then px), and a panel that does not
-// fit at its smallest is left out. No two rectangles returned overlap.
+// the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
+// column starts below the HUD when the window is too narrow for both side by side, panels shrink to
+// the room there is (the plots drop their least important rows first: rate, then py, then px), and
+// a panel that does not fit at its smallest is left out. No two rectangles returned overlap.
 
 #include <SDL.h>
 

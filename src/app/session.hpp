@@ -315,7 +315,7 @@ class Session {
     World world_;
     std::shared_ptr<const World> loaded_;  ///< world_ as it was loaded, for Reset
     std::string sceneName_;
-    std::string sceneDescription_;  ///< the scene's as loaded, written back by save()
+    std::string sceneDescription_;   ///< the scene's as loaded, written back by save()
     std::optional<Bins> sceneBins_;  ///< likewise
     std::uint64_t generation_ = 0;
     std::size_t nextPreset_ = 0;

@@ -114,14 +114,7 @@ void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const P
         curve_.push_back({sx(v), sy(h.expectedDensity(v))});
     }
 
-    const double ystep = niceStep(0.0, r.hi, 4);
-    for (const double t : niceTicks(0.0, r.hi, 4)) {
-        const float ty = sy(t);
-        boxes_.quad(left - 4, ty, left - 1, ty + 1, axis);
-        const std::string label = tickLabel(t, ystep);
-        font.layout(label, left - 6 - static_cast<float>(font.measure(label)), ty - lh / 2, grey,
-                    text_);
-    }
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
     const double xstep = niceStep(0.0, h.vmax, 5);
     for (const double t : niceTicks(0.0, h.vmax, 5)) {
         const float tx = sx(t);

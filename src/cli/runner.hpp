@@ -5,8 +5,8 @@
 #include <functional>
 #include <optional>
 
-#include <particle_sandbox/math.hpp>
 #include <particle_sandbox/bins.hpp>
+#include <particle_sandbox/math.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/time_series.hpp>
 

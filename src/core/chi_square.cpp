@@ -27,8 +27,7 @@ double chiSquareUpperTail(int dof, double statistic) {
 }
 
 ChiSquareTest chiSquareTest(const std::vector<std::size_t>& observed,
-                            const std::vector<double>& expected, double alpha,
-                            double minExpected) {
+                            const std::vector<double>& expected, double alpha, double minExpected) {
     if (observed.size() != expected.size()) {
         throw InvalidArgument("chiSquareTest: observed and expected differ in length");
     }

@@ -407,8 +407,8 @@ Bins readBins(const Reader& r, const json& j, int version, const WorldDef& w) {
     }
     b.top = r.number(r.require(j, "bins", "top"), "bins.top");
     if (b.top < 0.0 || b.top > w.height) {
-        r.fail("bins.top", num(b.top) + " lies outside the box (y from 0 to " + num(w.height) +
-                               " m)");
+        r.fail("bins.top",
+               num(b.top) + " lies outside the box (y from 0 to " + num(w.height) + " m)");
     }
     if (const json* e = Reader::find(j, "expected")) {
         r.object(*e, "bins.expected", {"binomial"});
@@ -416,14 +416,14 @@ Bins readBins(const Reader& r, const json& j, int version, const WorldDef& w) {
         const std::string path = "bins.expected.binomial";
         r.object(binomial, path, {"trials", "p"});
         BinomialExpectation x;
-        x.trials = static_cast<int>(r.integer(r.require(binomial, path, "trials"),
-                                              path + ".trials", 1, kMaxBinomialTrials));
+        x.trials = static_cast<int>(r.integer(r.require(binomial, path, "trials"), path + ".trials",
+                                              1, kMaxBinomialTrials));
         x.p = r.inRange(r.require(binomial, path, "p"), path + ".p", 0.0, 1.0);
         if (static_cast<std::size_t>(x.trials) + 1 != b.size()) {
-            r.fail(path + ".trials",
-                   std::to_string(x.trials) + " trials need " + std::to_string(x.trials + 1) +
-                       " bins (0 to " + std::to_string(x.trials) + " successes), the edges make " +
-                       std::to_string(b.size()));
+            r.fail(path + ".trials", std::to_string(x.trials) + " trials need " +
+                                         std::to_string(x.trials + 1) + " bins (0 to " +
+                                         std::to_string(x.trials) + " successes), the edges make " +
+                                         std::to_string(b.size()));
         }
         b.binomial = x;
     }

@@ -238,12 +238,10 @@ TEST(Report, ListsTheBinCountsExpectedCountsAndChiSquareWhenTheSceneHasBins) {
 }
 
 TEST(CliApp, SaveKeepsTheScenesBins) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("psb-runner-bins-" + std::to_string(::getpid()));
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("psb-runner-bins-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    {
-        std::ofstream(dir / "in.json") << kTwoBins;
-    }
+    { std::ofstream(dir / "in.json") << kTwoBins; }
     std::ostringstream out, err;
     EXPECT_EQ(runCli({"particle-sim", (dir / "in.json").string(), "--duration", "0.1", "--save",
                       (dir / "out.json").string()},

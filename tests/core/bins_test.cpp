@@ -23,15 +23,15 @@ ParticleArrays at(std::initializer_list<std::pair<double, double>> xy) {
 
 TEST(Bins, CountParticlesBelowTheTopByTheSpanOfTheirCentre) {
     const Bins b{.edges = {0.0, 1.0, 2.0, 4.0}, .top = 5.0, .binomial = {}};
-    const ParticleArrays p = at({{0.5, 6.0},       // bin 0
-                                 {1.0, 6.0},       // on an edge: the bin to its right
-                                 {3.9, 9.0},       // bin 2
-                                 {4.0, 6.0},       // the last edge: outside
-                                 {-0.1, 6.0},      // outside, left
-                                 {0.5, 5.0},       // on the top line: not yet in
-                                 {0.5, 1.0},       // above
-                                 {NAN, 6.0},       // outside
-                                 {0.5, NAN}});     // above
+    const ParticleArrays p = at({{0.5, 6.0},    // bin 0
+                                 {1.0, 6.0},    // on an edge: the bin to its right
+                                 {3.9, 9.0},    // bin 2
+                                 {4.0, 6.0},    // the last edge: outside
+                                 {-0.1, 6.0},   // outside, left
+                                 {0.5, 5.0},    // on the top line: not yet in
+                                 {0.5, 1.0},    // above
+                                 {NAN, 6.0},    // outside
+                                 {0.5, NAN}});  // above
     const BinCounts c = countBins(b, p);
     EXPECT_EQ(c.counts, (std::vector<std::size_t>{1, 1, 1}));
     EXPECT_EQ(c.counted(), 3u);

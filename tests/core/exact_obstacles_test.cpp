@@ -301,7 +301,7 @@ TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
     }
     EXPECT_EQ(test.dof, 6);  // 7 classes: the outermost bin on each side merged into its neighbour
     EXPECT_TRUE(test.passes()) << "chi2 " << test.statistic << " above " << test.critical
-                            << "; bins (observed/expected): " << table;
+                               << "; bins (observed/expected): " << table;
     std::printf("Galton board, exact mode: chi2 = %.2f (%d dof, 1 %% critical %.2f), bins %s\n",
                 test.statistic, test.dof, test.critical, table.c_str());
 }
