@@ -1,5 +1,5 @@
 // Leaks of the discrete mode through fixed obstacles, on the Galton board preset
-// (assets/scenes/09-galton-board.json: 1000 balls, 319 pegs, 26 segments), by step size.
+// (assets/scenes/09-galton-board.json: 1000 balls, 108 pegs, 20 segments), by step size.
 //
 // A leak is a ball whose centre, between the end of one step and the end of the next, crosses
 // the core line of a segment (between its ends), or whose centre ends a step inside an
