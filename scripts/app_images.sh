@@ -115,4 +115,4 @@ convert_one overlays-gas gas
 convert_one help help
 convert_one inspect inspect -resize 75%
 convert_one galton galton
-echo "wrote sandbox, overlays-momentum, overlays-gas, help and inspect .png in $OUT"
+echo "wrote ${ONLY:-sandbox, overlays-momentum, overlays-gas, help, inspect and galton} .png in $OUT"
