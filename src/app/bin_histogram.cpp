@@ -64,13 +64,9 @@ BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p) {
 
 void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
                              const SDL_Rect& box) {
-    const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
-    const float boxW = static_cast<float>(box.w), height = static_cast<float>(box.h);
-    boxes_.clear();
-    text_.clear();
+    const PanelFrame f = beginPanel(font, box, boxes_, text_);
+    const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
-    const float lh = static_cast<float>(font.lineHeight());
-    boxes_.quad(x, y, x + boxW, y + height, SDL_Color{0, 0, 0, 190});
     const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
     const SDL_Color colors[] = {kBinBarColor, kBinomialDotColor, kNormalCurveColor, grey};
     // Each legend line in its colour, wrapped to the box.

@@ -60,6 +60,17 @@ std::string tickLabel(double v, double step) {
     return buf;
 }
 
+PanelFrame beginPanel(const Font& font, const SDL_Rect& box, GeometryBatch& boxes,
+                      GeometryBatch& text) {
+    boxes.clear();
+    text.clear();
+    const PanelFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
+                       static_cast<float>(box.w), static_cast<float>(box.h),
+                       static_cast<float>(font.lineHeight())};
+    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, SDL_Color{0, 0, 0, 190});
+    return f;
+}
+
 void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
                   GeometryBatch& labels) {

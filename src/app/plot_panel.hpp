@@ -41,6 +41,15 @@ struct PlotRange {
 /// [1e-3, 1e5): 4038789 with step 20000 -> "4.04M"; 0.5 -> "0.5"; 2e-5 -> "20u".
 [[nodiscard]] std::string tickLabel(double v, double step);
 
+/// A panel's box in pixels (as floats) and the font's line height.
+struct PanelFrame {
+    float x = 0, y = 0, w = 0, h = 0, lineHeight = 0;
+};
+/// Starts a panel in `box`: empties both batches and puts the panel's translucent background in
+/// `boxes`.
+[[nodiscard]] PanelFrame beginPanel(const Font& font, const SDL_Rect& box, GeometryBatch& boxes,
+                                    GeometryBatch& text);
+
 /// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most 4) left of x = `left`:
 /// a tick mark and its label at the pixel row `row(v)` of each tick value v.
 void layoutYTicks(const Font& font, double lo, double hi, float left,
