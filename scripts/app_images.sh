@@ -9,11 +9,14 @@
 #   galton.png   09-galton-board 30 s into the pour (run by particle-sim, beside the app in the
 #                build tree, and saved with its bins), opened paused: its bins panel against
 #                the binomial and the normal curve, 1200x850
+#   funnel.png, hourglass.png, ramp.png, basketball.png  the obstacle presets 10-13, each run
+#                from paused for a few seconds then paused again, arrows off (the basketball
+#                with all trails), 800x800 windows scaled to 60 %
 #
 #   scripts/app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR [NAME]]
 #
-# With NAME (sandbox, overlays-momentum, overlays-gas, help, inspect, galton) only that picture
-# is made.
+# With NAME (sandbox, overlays-momentum, overlays-gas, help, inspect, galton, funnel, hourglass,
+# ramp, basketball) only that picture is made.
 #
 # Needs Xvfb (xvfb-run), xdotool and ImageMagick (scripts/install-deps.sh --test).
 set -euo pipefail
@@ -35,6 +38,9 @@ start() {
     pid=$!
     wid=$(timeout 20 xdotool search --sync --onlyvisible --pid "$pid" --name "Particle Sandbox" | head -1)
     eval "$(xdotool getwindowgeometry --shell "$wid")"
+    # The pointer in the window's bottom-right corner, off the box and the panel: no launch
+    # preview at the middle of the picture and no tooltip.
+    xdotool mousemove --sync $((X + WIDTH - 5)) $((Y + HEIGHT - 5))
     until grep -q "View: zoom" "$dir/log"; do sleep 0.05; done
     read -r zoom bx by < <(sed -nE 's/.*zoom ([0-9.]+) px\/m, box top-left at \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3/p' "$dir/log" | head -1)
 }
@@ -97,6 +103,25 @@ sleep 0.3
 xdotool key --window "$wid" Return sleep 0.2 type --window "$wid" --delay 50 "25"
 shoot_and_quit "$WORK/inspect" 2
 fi
+
+# run_preset NAME FILE SECONDS [KEYS...]: the preset paused with arrows off, KEYS pressed, run
+# for SECONDS, paused again and shot.
+run_preset() {
+    local name=$1 file=$2 seconds=$3
+    shift 3
+    want "$name" || return 0
+    mkdir -p "$WORK/$name"
+    start 800x800 "$WORK/$name" --paused --no-arrows "$ASSETS/scenes/$file"
+    for k in "$@"; do xdotool key --window "$wid" "$k"; sleep 0.1; done
+    xdotool key --window "$wid" space
+    sleep "$seconds"
+    xdotool key --window "$wid" space
+    shoot_and_quit "$WORK/$name" 1
+}
+run_preset funnel 10-funnel.json 4
+run_preset hourglass 11-hourglass.json 1.2
+run_preset ramp 12-ramp.json 1.6 l l
+run_preset basketball 13-basketball-and-tennis-ball.json 1.25 l l
 DRIVE
 ASSETS=$(cd "$(dirname "$0")/../assets" && pwd)
 SIM=$(cd "$(dirname "$BIN")/../cli" && pwd)/particle-sim
@@ -115,4 +140,7 @@ convert_one overlays-gas gas
 convert_one help help
 convert_one inspect inspect -resize 75%
 convert_one galton galton
-echo "wrote ${ONLY:-sandbox, overlays-momentum, overlays-gas, help, inspect and galton} .png in $OUT"
+for name in funnel hourglass ramp basketball; do
+    convert_one "$name" "$name" -resize 60%
+done
+echo "wrote ${ONLY:-sandbox, overlays-momentum, overlays-gas, help, inspect, galton, funnel, hourglass, ramp and basketball} .png in $OUT"

@@ -86,6 +86,20 @@ App::App(const AppOptions& options) : options_(options) {
     const int lh = sdl_->hudFont().lineHeight();
     // One spare line for the HUD's notes about labels left out.
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
+    // In a narrow window the HUD's lines wrap (frame_view.cpp): the band grows with them,
+    // measured on readings as wide as they get.
+    s.insets.topFor = [font = &sdl_->hudFont(), lh](int room) {
+        HudData wide;
+        wide.simTime = 123.45;
+        wide.particles = 10000;
+        wide.kineticEnergy = 123.45;
+        wide.momentum = Vec2(-0.123, -0.123);
+        wide.spawnMass = 0.00123;
+        wide.spawnRadius = 0.00123;
+        wide.arrowSeconds = 0.0123;
+        const std::size_t lines = wrapHudLines(*font, hudLines(wide), room - 8).size();
+        return static_cast<double>(lines + 1) * lh + 10.0;
+    };
     s.insets.bottom = static_cast<double>(kMessageLines) * lh + 4.0 + kPanelMargin;
     s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
     // The inspector with long numbers in its widest line, and the margin.
@@ -95,6 +109,9 @@ App::App(const AppOptions& options) : options_(options) {
     const double ratio = sdl_->pixelRatio();
     s.insets.controls = kControlsWidth * ratio;
     s.insets.controlsFolded = kControlsFoldedWidth * ratio;
+    // A window less than twice the panel's width would leave the box less room than the
+    // panel: it opens folded (C or >> opens it).
+    s.controls = out.x >= 2.0 * s.insets.controls;
     session_.emplace(std::move(world), std::move(name), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});

@@ -365,6 +365,10 @@ void ControlPanel::launchPreview(const Session& s, float pixelRatio) {
     const ImVec2 m = ImGui::GetMousePos();
     const Vec2 world = s.camera().screenToWorld(Vec2(m.x * pixelRatio, m.y * pixelRatio));
     if (s.tool() == cmd::Tool::Fling && s.world().pick(world)) return;  // it would grab
+    const WorldDef& box = s.world().def();
+    const bool outside =
+        world.x() < 0.0 || world.y() < 0.0 || world.x() > box.width || world.y() > box.height;
+    if (box.walls && outside) return;  // no particle is made out there
     const float r = static_cast<float>(s.camera().toScreen(s.spawn().radius())) / pixelRatio;
     if (!(r >= 1.f) || r > 4000.f) return;
     const Color c = s.spawn().color();

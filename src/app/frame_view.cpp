@@ -98,7 +98,10 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     if (session.binsShown()) f.bins = binHistogram(*session.sceneBins(), world.particles());
 
     Overlays& o = f.overlays;
-    o.hud = hudLines(hudData(session));
+    // The HUD's readings wrap between their parts within the room right of the control panel.
+    const int hudRoom =
+        session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
+    o.hud = wrapHudLines(hudFont, hudLines(hudData(session)), hudRoom - 8);
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (stats.labelsCrowded > 0 && session.view().labels) {
         o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +

@@ -1,5 +1,6 @@
 #include "gui_context.hpp"
 
+#include <cfloat>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -130,6 +131,10 @@ void GuiContext::beginFrame() {
     // event's position is the one the app itself acts on.
     if (mouse_ && (SDL_GetMouseFocus() == window_ || ImGui::IsAnyMouseDown())) {
         ImGui::GetIO().MousePos = *mouse_;
+    } else if (!mouse_ && !ImGui::IsAnyMouseDown()) {
+        // No pointer seen in the window since it opened or the pointer left: none, not the
+        // global position the backend polled (a launch preview drawn where no pointer is).
+        ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     }
     // Debian's 1.86 backend takes the scale from SDL_GL_GetDrawableSize, which is the window
     // size for a window without OpenGL; the renderer's output size is the one drawn into.

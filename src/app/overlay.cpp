@@ -35,6 +35,38 @@ std::vector<std::string> wrapLines(const Font& font, const std::vector<std::stri
     return out;
 }
 
+std::vector<std::string> wrapHudLines(const Font& font, const std::vector<std::string>& lines,
+                                      int maxWidth) {
+    const int room = maxWidth - 8;  // textBoxSize's padding
+    static constexpr std::string_view kBar = " | ";
+    std::vector<std::string> out;
+    for (const std::string& line : lines) {
+        if (font.measure(line) <= room) {
+            out.push_back(line);
+            continue;
+        }
+        std::vector<std::string> packed;
+        std::string current;
+        for (std::size_t at = 0; at <= line.size();) {
+            const std::size_t bar = std::min(line.find(kBar, at), line.size());
+            const std::string part = line.substr(at, bar - at);
+            if (current.empty()) {
+                current = packed.empty() ? part : "  " + part;
+            } else if (font.measure(current + std::string(kBar) + part) <= room) {
+                current += std::string(kBar) + part;
+            } else {
+                packed.push_back(current);
+                current = "  " + part;
+            }
+            at = bar + kBar.size();
+        }
+        packed.push_back(current);
+        for (const std::string& l : wrapLines(font, packed, maxWidth))
+            out.push_back(l);
+    }
+    return out;
+}
+
 SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines) {
     if (lines.empty()) return {0, 0};
     int w = 0;

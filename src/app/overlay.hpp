@@ -34,6 +34,13 @@ inline constexpr std::size_t kMessageLines = 3;
                                                  const std::vector<std::string>& lines,
                                                  int maxWidth);
 
+/// The HUD's lines ("a | b | c") broken between their " | " parts where they do not fit
+/// `maxWidth`, each continuation indented by two spaces; a part too wide alone is broken at
+/// spaces as wrapLines does. A narrow window shows every reading, not the first half of each.
+[[nodiscard]] std::vector<std::string> wrapHudLines(const Font& font,
+                                                    const std::vector<std::string>& lines,
+                                                    int maxWidth);
+
 /// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
 [[nodiscard]] SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines);
 

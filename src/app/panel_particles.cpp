@@ -100,7 +100,7 @@ void ControlPanel::selected(const Session& s) {
     const double speed = p->velocity.norm();
     row("speed", quantity(speed, "m/s"), "How fast it moves, whatever the direction");
     row("momentum", quantity(p->mass * speed, "kg m/s", false), "m v: mass times speed");
-    row("kinetic energy", quantity(0.5 * p->mass * speed * speed, "J"), "1/2 m v^2");
+    row("kinetic energy", quantity(0.5 * p->mass * speed * speed, "J"), "\u00bd m v\u00b2");
     ImGui::EndTable();
     if (!s.editRefusal().empty()) {
         ImGui::PushTextWrapPos(0.f);

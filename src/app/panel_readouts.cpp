@@ -57,7 +57,7 @@ void ControlPanel::readouts(const Session& s) {
             "Simulated time since the scene started");
         row("Particles", std::to_string(w.size()));
         row("Kinetic energy", quantity(o.kineticEnergy, "J"),
-            "The energy of motion, the sum of 1/2 m v^2 over every particle");
+            "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
         if (gravity) {
             row("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
                 "Kinetic plus potential energy (m g h): what elastic collisions under gravity "
@@ -78,12 +78,7 @@ void ControlPanel::readouts(const Session& s) {
     tip("How well the simulation keeps the energy it should keep. Collisions with restitution "
         "below 1, friction and your own changes (a fling, a launch) change it on purpose; the "
         "count starts again at each change.");
-    const double overlap = s.accuracy().overlap();
-    if (overlap > 0.0) {
-        ImGui::Text("Particles overlap by up to %s", quantity(overlap, "m").c_str());
-    } else {
-        ImGui::TextUnformatted("No particles overlap");
-    }
+    ImGui::TextUnformatted(overlapWords(s.accuracy().overlap(), s.spawn().typicalRadius).c_str());
     tip("Real balls never overlap; a step-by-step simulation lets them, a little, between steps");
     if (w.solver().mode != StepMode::Exact && w.size() > 0) {
         const double d = stepsPerDiameter(w);

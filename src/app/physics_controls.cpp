@@ -30,7 +30,7 @@ Vec2 appGravity() {
 std::string gravityText(const Vec2& g) {
     if (g == Vec2::Zero()) return "off";
     char buf[64];
-    std::snprintf(buf, sizeof buf, "[%.4g, %.4g] m/s^2", g.x(), g.y());
+    std::snprintf(buf, sizeof buf, "[%.4g, %.4g] m/s\u00b2", g.x(), g.y());
     return buf;
 }
 

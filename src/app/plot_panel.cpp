@@ -47,7 +47,7 @@ std::string tickLabel(double v, double step) {
     if (v == 0.0) return "0";
     char buf[32];
     const double mag = std::max(std::abs(v), step);
-    // Outside [1e-3, 1e5) the number takes an SI prefix ("4.04M", "2.5u"), never an exponent;
+    // Outside [1e-3, 1e5) the number takes an SI prefix ("4.04M", "2.5µ"), never an exponent;
     // digits down to the step's decade.
     int power = 0;
     if (mag >= 1e5 || mag < 1e-3) {
@@ -55,7 +55,7 @@ std::string tickLabel(double v, double step) {
     }
     const double unit = std::pow(10.0, power);
     const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step / unit))));
-    static const char* const kPrefix[] = {"n", "u", "m", "", "k", "M", "G", "T"};
+    static const char* const kPrefix[] = {"n", "\u00b5", "m", "", "k", "M", "G", "T"};
     std::snprintf(buf, sizeof buf, "%.*f%s", decimals, v / unit, kPrefix[power / 3 + 3]);
     return buf;
 }

@@ -66,6 +66,7 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
       timeline_(options_.timeline) {
     rng_.seed(options_.seed);
     view_.arrows = options_.arrows;
+    showControls_ = options_.controls;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
     sceneDescription_ = options_.sceneDescription;
     sceneBins_ = options_.sceneBins;
@@ -73,6 +74,7 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
         presets_.push_back(describeScene(file));
     setWorld(std::move(world), std::move(sceneName));
     showSceneTrails(options_.sceneTrails);
+    if (!showControls_) say("The control panel is folded in this narrow window: C or >> opens it");
 }
 
 void Session::setWorld(World world, std::string name) {
@@ -187,6 +189,7 @@ UndoState Session::snapshot(World world) const {
                 sceneDescription_,
                 sceneBins_,
                 selection_.id().value_or(kNullParticle),
+                selectedObstacle_,
                 spawn_,
                 timeScale_,
                 dirty_};
@@ -216,6 +219,9 @@ void Session::restore(UndoState state) {
     selection_.clear();
     if (!state.selection.isNull() && world_.contains(state.selection)) {
         selection_.select(state.selection);
+    }
+    if (state.selectedObstacle && *state.selectedObstacle < world_.obstacles().size()) {
+        selectedObstacle_ = state.selectedObstacle;
     }
     ++generation_;  // views keyed to particles (trails) start over
     // The recorded frames belong to the state undone: the record starts again from here.
@@ -946,6 +952,9 @@ void Session::fit() {
     const bool column = view_.plots || view_.speeds || showProfile_ || binsShown();
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
     const double left = controlsInset();
+    const double top =
+        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left)))
+                  : in.top;
     double right = 0.0;
     if (column) {
         const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
@@ -957,11 +966,11 @@ void Session::fit() {
         // inspector's whole column, the box moves left, keeps its size, and the inspector
         // (bottom right, on a click) does not cover it. Less room would only move the box off
         // centre and still leave it covered.
-        camera_.fit(w, h, margin, in.top, in.bottom, 0.0, left);
+        camera_.fit(w, h, margin, top, in.bottom, 0.0, left);
         const double spare = camera_.viewportWidth() - left - camera_.toScreen(w) - 2.0 * margin;
         right = spare >= in.inspectorColumn ? in.inspectorColumn : 0.0;
     }
-    camera_.fit(w, h, margin, in.top, in.bottom, right, left);
+    camera_.fit(w, h, margin, top, in.bottom, right, left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     char buf[160];
     std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",

@@ -73,6 +73,8 @@ struct SessionOptions {
     std::optional<Bins> sceneBins;         ///< the first scene's bins
     bool paused = false;
     bool arrows = true;
+    /// The control panel open at the start (folded, a window too narrow for it and the box).
+    bool controls = true;
     int viewportWidth = 800;  ///< pixels
     int viewportHeight = 800;
     ViewInsets insets;

@@ -76,6 +76,7 @@ void Session::obstaclePressToMove() {
     if (world_.pick(at)) return;  // a particle: the click selects it
     if (const auto i = pickObstacle(world_.obstacles(), at, camera_.toWorld(kPickPixels))) {
         obstacleTool_.pressOn(*i, world_.obstacles()[*i], at);
+        selectedObstacle_ = i;  // highlighted while it is dragged
     }
 }
 

@@ -54,7 +54,7 @@ void Session::setFriction(const cmd::SetFriction& c) {
 void Session::setGravity(const cmd::SetGravity& c) {
     if (c.on && !(c.g > 0.0 && c.g <= kMaxPanelGravity)) {
         say("Gravity must be above 0 and at most " + number("%g", kMaxPanelGravity) +
-                " m/s^2, got " + number("%g", c.g),
+                " m/s\u00b2, got " + number("%g", c.g),
             Notice::Level::Warning);
         return;
     }

@@ -7,6 +7,14 @@
 #include <SDL_ttf.h>
 
 namespace psb::app {
+namespace {
+
+/// ASCII and Latin-1 characters that draw something (not the C0/C1 controls).
+constexpr bool printable(int code) {
+    return (code >= 32 && code <= 126) || (code >= 160 && code <= 255);
+}
+
+}  // namespace
 
 Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelSize)
     : renderer_(renderer) {
@@ -24,6 +32,7 @@ Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelS
     std::array<SDL_Surface*, kLast - kFirst + 1> images{};
     int width = 0, height = 1;
     for (int c = kFirst; c <= kLast; ++c) {
+        if (!printable(c)) continue;
         SDL_Surface* s =
             TTF_RenderGlyph32_Blended(font_, static_cast<Uint32>(c), SDL_Color{255, 255, 255, 255});
         images[c - kFirst] = s;
@@ -66,15 +75,31 @@ Font::~Font() {
     TTF_Quit();
 }
 
-const Font::Glyph& Font::glyph(char c) const {
-    const int code = static_cast<unsigned char>(c);
-    return glyphs_[(code >= kFirst && code <= kLast ? code : '?') - kFirst];
+const Font::Glyph& Font::next(std::string_view text, std::size_t& i) const {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    int code = byte(i++);
+    if (code >= 0x80) {
+        // UTF-8: a two-byte sequence C2/C3 xx is U+0080–U+00FF; anything longer is beyond the
+        // atlas, and a stray continuation byte is malformed. Either shows one '?'.
+        const bool twoBytes =
+            (code == 0xC2 || code == 0xC3) && i < text.size() && (byte(i) & 0xC0) == 0x80;
+        if (twoBytes) {
+            code = ((code & 0x1F) << 6) | (byte(i++) & 0x3F);
+        } else {
+            if (code >= 0xC0) {
+                while (i < text.size() && (byte(i) & 0xC0) == 0x80)
+                    ++i;
+            }
+            code = '?';
+        }
+    }
+    return glyphs_[(code >= kFirst && code <= kLast && printable(code) ? code : '?') - kFirst];
 }
 
 int Font::measure(std::string_view text) const {
     int w = 0;
-    for (char c : text)
-        w += glyph(c).advance;
+    for (std::size_t i = 0; i < text.size();)
+        w += next(text, i).advance;
     return w;
 }
 
@@ -85,9 +110,10 @@ void Font::layout(std::string_view text, float x, float y, SDL_Color color,
     // resamples them and thin strokes vanish or double ("1800.00" read as "18CC.C0").
     x = std::round(x);
     y = std::round(y);
-    for (char c : text) {
-        const Glyph& g = glyph(c);
-        if (g.atlas.w > 0 && c != ' ') {
+    for (std::size_t i = 0; i < text.size();) {
+        const bool space = text[i] == ' ';
+        const Glyph& g = next(text, i);
+        if (g.atlas.w > 0 && !space) {
             const SDL_Rect& r = g.atlas;
             batch.quad(x, y, x + static_cast<float>(r.w), y + static_cast<float>(r.h), color,
                        static_cast<float>(r.x) * iw, static_cast<float>(r.y) * ih,

@@ -1,8 +1,9 @@
 #pragma once
 // Text with SDL2_ttf, drawn from a glyph atlas. Labels and the HUD change every frame (numbers),
-// so caching rendered strings would miss; instead every printable ASCII glyph is rendered once
-// into one texture, and a string becomes textured quads in a GeometryBatch: all the text of a
-// frame costs one draw call per font.
+// so caching rendered strings would miss; instead every printable Latin-1 glyph (ASCII and
+// U+00A0–U+00FF: µ, ², °, ±, ×, é ...) is rendered once into one texture, and a string (UTF-8)
+// becomes textured quads in a GeometryBatch: all the text of a frame costs one draw call per
+// font.
 
 #include <array>
 #include <filesystem>
@@ -30,7 +31,8 @@ class Font {
     /// Width of `text` in pixels.
     [[nodiscard]] int measure(std::string_view text) const;
     /// Appends the quads of `text` with its top-left corner at (x, y), pixels, rounded to whole
-    /// pixels. Characters outside printable ASCII show as '?'.
+    /// pixels. `text` is UTF-8; a character outside printable Latin-1 (or a malformed byte)
+    /// shows as '?'.
     void layout(std::string_view text, float x, float y, SDL_Color color,
                 GeometryBatch& batch) const;
     /// Draws a batch built with layout() (one SDL_RenderGeometry call).
@@ -41,8 +43,9 @@ class Font {
         SDL_Rect atlas{};  ///< where the glyph's image is in the atlas, pixels
         int advance = 0;
     };
-    static constexpr int kFirst = 32, kLast = 126;
-    [[nodiscard]] const Glyph& glyph(char c) const;
+    static constexpr int kFirst = 32, kLast = 255;
+    /// The glyph of the character that starts at text[i]; advances i past it.
+    [[nodiscard]] const Glyph& next(std::string_view text, std::size_t& i) const;
 
     SDL_Renderer* renderer_;
     TTF_Font* font_ = nullptr;

@@ -49,6 +49,7 @@ struct UndoState {
     std::string sceneDescription;
     std::optional<Bins> sceneBins;  ///< the scene's bins, kept when it is saved
     ParticleId selection = kNullParticle;
+    std::optional<std::size_t> selectedObstacle;  ///< index into world.obstacles()
     SpawnSettings spawn;
     double timeScale = 1.0;
     bool dirty = false;

@@ -58,7 +58,7 @@ std::string quantity(double value, const std::string& unit, bool prefix) {
         return (a >= 1000.0 ? grouped(value) : threeFigures(value)) + u;
     }
     static const char* const big[] = {"", "k", "M", "G", "T", "P", "E"};
-    static const char* const small[] = {"", "m", "u", "n", "p", "f", "a"};
+    static const char* const small[] = {"", "m", "\u00b5", "n", "p", "f", "a"};
     int k = static_cast<int>(std::floor(std::log10(a) / 3.0));
     k = std::max(-6, std::min(6, k));
     double scaled = value / std::pow(1000.0, k);
@@ -83,6 +83,12 @@ std::string keptWords(double relativeChange) {
     }
     const int power = static_cast<int>(std::floor(-std::log10(a)));
     return "kept to 1 part in 10^" + std::to_string(power);
+}
+
+std::string overlapWords(double overlap, double typicalRadius) {
+    if (overlap > 1e-9 * typicalRadius)
+        return "Particles overlap by up to " + quantity(overlap, "m");
+    return overlap > 0.0 ? "No particles overlap (beyond rounding)" : "No particles overlap";
 }
 
 }  // namespace psb::app

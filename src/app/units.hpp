@@ -8,7 +8,7 @@
 
 namespace psb::app {
 
-/// `value` in `unit` with an SI prefix (k, M, G, T; m, µ written "u", n) chosen so the number
+/// `value` in `unit` with an SI prefix (k, M, G, T; m, µ, n) chosen so the number
 /// is in [1, 1000), three significant figures; zero is "0 unit". For units a prefix would
 /// garble ("kg m/s", "m/s^2") pass `prefix` false: the digits are then grouped by thousands
 /// ("12 300 kg m/s") and small values keep three significant figures ("0.00123 kg m/s").
@@ -18,5 +18,11 @@ namespace psb::app {
 /// rounded down), "kept exactly" below 10^-15 (rounding of the sums), "changed by 2.3 %" at a
 /// tenth of a percent or more; "not measured" for NaN.
 [[nodiscard]] std::string keptWords(double relativeChange);
+
+/// The deepest overlap between particles (metres) in words, for a scene whose typical particle
+/// has radius `typicalRadius`: "Particles overlap by up to 1.20 mm"; "No particles overlap" at
+/// 0, and "(beyond rounding)" added below 10^-9 of the radius, where it is the rounding of
+/// the arithmetic (touching discs of the exact mode) and not worth a number in attometres.
+[[nodiscard]] std::string overlapWords(double overlap, double typicalRadius);
 
 }  // namespace psb::app

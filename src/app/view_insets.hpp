@@ -11,6 +11,7 @@
 //   └─────────┴──────────────────────────────────┴──────────┘
 
 #include <algorithm>
+#include <functional>
 
 namespace psb::app {
 
@@ -26,6 +27,9 @@ struct ViewInsets {
     /// The inspector's column at the bottom right: kept free when the box can spare it without
     /// shrinking (see Session::fit).
     double inspectorColumn = 0.0;
+    /// When set, the band above the box for a HUD `room` pixels wide (its lines wrap in a
+    /// narrow window): the larger of this and `top` is kept free.
+    std::function<double(int room)> topFor{};
 };
 
 /// Between the panels and the window's edges, pixels.

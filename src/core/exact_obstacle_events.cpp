@@ -65,7 +65,10 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
             }
         }
     }
-    if (dv > 0.0) ++counters.obstacleCollisions;
+    if (dv > 0.0) {
+        ++counters.obstacleCollisions;
+        if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kObstacle + ev.partner});
+    }
     ++a.count;
     // Off the wall it rested on if the obstacle pushed it off; asleep if it is slow and held.
     if (gravity_) settleAfterPair(i, false);

@@ -249,10 +249,12 @@ inline constexpr double kRestHop = 5e-4;
 /// rest on the floor rests, a particle that moves never does.
 inline constexpr double kRestRoundingGap = 1e-12;
 
-/// One resolved collision, for tests and diagnostics. `j` is a particle index for a pair, or
-/// kWall + w for wall w (0 = left, 1 = right, 2 = top, 3 = bottom).
+/// One resolved collision, for tests and diagnostics. `j` is a particle index for a pair,
+/// kWall + w for wall w (0 = left, 1 = right, 2 = top, 3 = bottom), or kObstacle + k for the
+/// world's obstacle k.
 struct CollisionRecord {
     static constexpr std::uint32_t kWall = UINT32_MAX - 3;
+    static constexpr std::uint32_t kObstacle = 1u << 31;  ///< particle indices stay below it
     double time;  ///< seconds since the stepper's last rebuild
     std::uint32_t i;
     std::uint32_t j;

@@ -12,9 +12,11 @@
 //      the candidates never depend on the grid's layout.
 //   2. Sweep. A particle that does not touch an obstacle at p0 but whose straight move would
 //      pass into it is stopped at the first contact (the earliest time of impact along the
-//      move, obstacle_time_of_impact.hpp) and rebounds there. So no speed and no step, however
-//      large, carries a particle through a peg or a segment; the price is that a particle that
-//      hits something gives up the rest of its move for this step.
+//      move, obstacle_time_of_impact.hpp) and rebounds there. The rest of its move, without
+//      the part into the obstacle, goes on along the surface from there, swept the same way
+//      (up to kSlides times; what is left after the last contact is given up). So no speed
+//      and no step, however large, carries a particle through a peg or a segment, and a
+//      particle pressed onto a slope slides down it.
 //   3. Overlaps. Up to kPasses passes over the candidates in ascending index: each obstacle the
 //      particle overlaps pushes it out along the normal from its nearest core point (for a
 //      segment, toward the side the particle started the step on, even if it has since crossed
@@ -44,8 +46,13 @@ namespace psb::stages {
 namespace {
 
 constexpr int kPasses = 4;
-/// Relative slack on the squared contact distance within which a particle counts as touching.
-constexpr double kTouchTolerance = 1e-9;
+constexpr int kSlides = 2;  ///< slides along obstacles after a sweep's first contact
+/// (1 + 10⁻¹²)²: a centre this close to an obstacle's contact distance touches it, so that a
+/// ball left exactly in contact (to rounding) is not met again at time 0 by a move along it.
+constexpr double kTouching = (1.0 + 1e-12) * (1.0 + 1e-12);
+/// A move heads into a touched obstacle when its cosine with the inward normal is above this:
+/// a slide along it (its inward part removed, to rounding) does not.
+constexpr double kInward = 1e-9;
 
 /// The particle's state while the stage works on it.
 struct Body {
@@ -133,35 +140,67 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
     if (def.walls) clampIntoBox(x1, y1, b.r, def);
     const double mx = x1 - x0, my = y1 - y0;
     bool moved = false;  // by this stage
-    if (mx != 0.0 || my != 0.0) {
+    // The move is followed from contact to contact: at each, the rest of the move loses its
+    // part into the obstacle and goes on along it (a ball on a slope slides down it instead of
+    // giving up its move every step). The candidates cover a ring of 2r + |move| around p1: the
+    // first slide ends within |move| of p1, later ones within 2 |move|, so a second slide is
+    // made only when |move| <= r. What is left after the last slide is given up.
+    const double moveLength = std::sqrt(mx * mx + my * my);
+    const int slides = moveLength <= b.r ? kSlides : 1;
+    double sx = x0, sy = y0, dx = mx, dy = my;
+    for (int leg = 0; leg <= slides && (dx != 0.0 || dy != 0.0); ++leg) {
         double first = exact::kNever;
         std::uint32_t hit = UINT32_MAX;
         for (const std::uint32_t k : candidates) {
             const Obstacle& o = obstacles[k];
             double qx, qy;
-            nearestCorePoint(o, x0, y0, qx, qy);
-            // Touching at p0 (within rounding: a push out leaves a particle at sigma give or
-            // take an ulp) counts as touched, so the overlap passes below handle it: a "first
-            // contact" at time 0 would throw away the whole move, and a ball pressed against a
-            // peg's side by another would hang there, gathering speed it never uses.
+            nearestCorePoint(o, sx, sy, qx, qy);
             const double sigma = b.r + o.radius;
-            if ((x0 - qx) * (x0 - qx) + (y0 - qy) * (y0 - qy) <
-                sigma * sigma * (1.0 + kTouchTolerance))
-                continue;
-            const double t = exact::obstacleImpactTime(x0, y0, mx, my, b.r, o);
+            const double ox = sx - qx, oy = sy - qy, d2 = ox * ox + oy * oy;
+            double t;
+            if (d2 < sigma * sigma * kTouching) {
+                // Touching (to rounding) or inside: met at once if the move heads into it,
+                // else the overlap pass below deals with it.
+                const double into = -(dx * ox + dy * oy);
+                if (!(d2 > 0.0) || !(into > kInward * std::sqrt(d2 * (dx * dx + dy * dy))))
+                    continue;
+                t = 0.0;
+            } else {
+                t = exact::obstacleImpactTime(sx, sy, dx, dy, b.r, o);
+            }
             if (t < first) {
                 first = t;
                 hit = k;
             }
         }
-        if (first <= 1.0) {
-            b.x = x0 + first * mx;
-            b.y = y0 + first * my;
-            moved = true;
-            double nx, ny, depth;
-            contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
-            hits += rebound<kFriction>(b, nx, ny, e, mu);
+        if (!(first <= 1.0)) {
+            if (moved) {  // the last slide is free
+                b.x = sx + dx;
+                b.y = sy + dy;
+            }
+            break;
         }
+        b.x = sx + first * dx;
+        b.y = sy + first * dy;
+        moved = true;
+        double nx, ny, depth;
+        contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
+        hits += rebound<kFriction>(b, nx, ny, e, mu);
+        if (leg == slides) break;
+        // The rest of the move, without its part into the obstacle.
+        double rx = (1.0 - first) * dx, ry = (1.0 - first) * dy;
+        const double into = rx * nx + ry * ny;
+        if (into < 0.0) {
+            rx -= into * nx;
+            ry -= into * ny;
+        }
+        // Kept in the box as the move's end was, for the same reason.
+        double ex = b.x + rx, ey = b.y + ry;
+        if (def.walls) clampIntoBox(ex, ey, b.r, def);
+        sx = b.x;
+        sy = b.y;
+        dx = ex - sx;
+        dy = ey - sy;
     }
 
     // 3. Overlaps, pushed out one obstacle at a time, never across another's core. With walls

@@ -177,7 +177,7 @@ TEST(PlotRange, TicksAreOneTwoFiveMultiples) {
     EXPECT_DOUBLE_EQ(niceStep(0.0, 100.0, 4), 50.0);
     EXPECT_EQ(tickLabel(4.04e6, 2e4), "4.04M");
     EXPECT_EQ(tickLabel(4.0e6, 2e4), "4.00M");
-    EXPECT_EQ(tickLabel(2e-5, 1e-5), "20u");
+    EXPECT_EQ(tickLabel(2e-5, 1e-5), "20\u00b5");
     EXPECT_EQ(tickLabel(0.0, 5e5), "0");
     EXPECT_EQ(tickLabel(0.5, 0.1), "0.5");
     EXPECT_EQ(tickLabel(-1000.0, 500.0), "-1000");

@@ -46,7 +46,7 @@ TEST(Gravity, TogglesOffAndBackToTheScenesOwn) {
     const ControlChange on = toggleGravity(w, Vec2(1.0, 2.0));
     EXPECT_TRUE(on.changed);
     EXPECT_EQ(w.def().gravity, Vec2(1.0, 2.0));
-    EXPECT_EQ(on.message, "Gravity [1, 2] m/s^2");
+    EXPECT_EQ(on.message, "Gravity [1, 2] m/s\u00b2");
 }
 
 TEST(Gravity, WithoutASceneGravityTurnsOnAppGravity) {
@@ -74,7 +74,7 @@ TEST(Gravity, TurnsOnInExactModeAndParticlesFall) {
 
 TEST(GravityText, SaysOffOrTheVector) {
     EXPECT_EQ(gravityText(Vec2::Zero()), "off");
-    EXPECT_EQ(gravityText(Vec2(0, 343.35)), "[0, 343.4] m/s^2");
+    EXPECT_EQ(gravityText(Vec2(0, 343.35)), "[0, 343.4] m/s\u00b2");
 }
 
 }  // namespace

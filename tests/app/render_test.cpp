@@ -204,6 +204,35 @@ TEST_F(RenderTest, TextAtAFractionOfAPixelIsDrawnAsAtTheWholePixel) {
     EXPECT_EQ(image(19.6f, 99.7f), whole);
 }
 
+TEST_F(RenderTest, LatinOneCharactersInUtf8AreTheirOwnGlyphsAndOthersAQuestionMark) {
+    // "µJ", "m/s²", "½ m v²": each UTF-8 pair is one glyph of its own, not '?' and not two.
+    const auto image = [&](std::string_view text) {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        GeometryBatch b;
+        font_->layout(text, 20.0f, 100.0f, SDL_Color{255, 255, 255, 255}, b);
+        font_->draw(b);
+        SDL_RenderPresent(sdl_);
+        std::vector<Uint8> v;
+        for (int yy = 90; yy < 130; ++yy)
+            for (int xx = 0; xx < 120; ++xx)
+                v.push_back(pixel(xx, yy).r);
+        return v;
+    };
+    for (const char* c : {"\u00b5", "\u00b2", "\u00bd", "\u00b0"}) {
+        EXPECT_NE(image(c), image("?")) << c;
+        EXPECT_NE(image(c), image("u")) << c;
+        EXPECT_EQ(font_->measure(std::string("5 ") + c + "J"),
+                  font_->measure("5 ") + font_->measure(c) + font_->measure("J"));
+    }
+    // Beyond Latin-1 (€, three bytes), a stray continuation byte and a cut sequence: one '?'
+    // each, never a crash or a read past the end.
+    EXPECT_EQ(image("\u20ac"), image("?"));
+    EXPECT_EQ(image("\x80"), image("?"));
+    EXPECT_EQ(image("\xc2"), image("?"));
+    EXPECT_EQ(font_->measure("a\u20acb"), font_->measure("a?b"));
+}
+
 TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
     WorldDef def;
     def.width = def.height = kSize;
@@ -408,6 +437,27 @@ TEST_F(RenderTest, LongLinesWrapAtSpacesWithinTheWidthAndKeepEveryWord) {
         joined.append(wrapped[k], 2, std::string::npos);
     }
     EXPECT_EQ(joined, line);
+}
+
+TEST_F(RenderTest, HudLinesWrapBetweenTheirPartsAndKeepEveryReading) {
+    const std::string line = "Kinetic energy 1.96 J | momentum (0.111, 0.461) kg m/s | H: help";
+    const int width = font_->measure("Kinetic energy 1.96 J | momentum (0.111, 0.461) kg m/s") + 10;
+    const std::vector<std::string> wrapped = wrapHudLines(*font_, {line, "short"}, width);
+    ASSERT_EQ(wrapped.size(), 3u);
+    EXPECT_EQ(wrapped[0], "Kinetic energy 1.96 J | momentum (0.111, 0.461) kg m/s");
+    EXPECT_EQ(wrapped[1], "  H: help");
+    EXPECT_EQ(wrapped[2], "short");
+    for (const std::string& l : wrapped)
+        EXPECT_LE(font_->measure(l), width - 8) << l;
+    // Narrower than one part: that part breaks at spaces too; nothing is lost.
+    const std::vector<std::string> narrow =
+        wrapHudLines(*font_, {line}, font_->measure("Kinetic energy 1.96 J") + 8);
+    std::string joined;
+    for (const std::string& l : narrow)
+        joined += l + "\n";
+    for (const char* reading : {"1.96 J", "(0.111,", "0.461)", "help"})
+        EXPECT_NE(joined.find(reading), std::string::npos) << joined;
+    EXPECT_EQ(wrapHudLines(*font_, {line}, 10000), std::vector<std::string>{line});
 }
 
 }  // namespace

@@ -178,8 +178,10 @@ TEST_F(SessionObstacles, AClickSelectsAnObstacleAndDeleteRemovesItUndoably) {
     EXPECT_EQ(s.lastAction(), "remove wall");
     s.apply(cmd::Undo{});
     EXPECT_EQ(s.world().obstacles(), both);
+    EXPECT_EQ(s.selectedObstacle(), 1u);  // selected again, as it was when deleted
     s.apply(cmd::Redo{});
     EXPECT_EQ(s.world().obstacles().size(), 1u);
+    EXPECT_FALSE(s.selectedObstacle());
     s.apply(cmd::Undo{});
 
     // The panel's button; the Fling tool's click selects too.
@@ -218,7 +220,8 @@ TEST_F(SessionObstacles, TheSelectToolDragsAnObstacleToMoveItUndoably) {
     const Camera& c = s.camera();
     s.apply(cmd::PointerDown{c.worldToScreen(Vec2(2.0, 5.0)), 2.0});
     s.apply(cmd::PointerMove{c.worldToScreen(Vec2(3.0, 4.0)), 2.05});
-    ASSERT_TRUE(s.obstaclePreview());  // where it will go
+    ASSERT_TRUE(s.obstaclePreview());     // where it will go
+    EXPECT_EQ(s.selectedObstacle(), 0u);  // highlighted while dragged
     expectNear(s.obstaclePreview()->a, drawn.a + Vec2(1.0, -1.0));
     EXPECT_EQ(s.world().obstacles()[0], drawn);  // not yet
     s.apply(cmd::PointerUp{c.worldToScreen(Vec2(3.0, 4.0)), 2.1});
@@ -229,7 +232,9 @@ TEST_F(SessionObstacles, TheSelectToolDragsAnObstacleToMoveItUndoably) {
     EXPECT_EQ(s.lastAction(), "move wall");
     s.apply(cmd::Undo{});
     EXPECT_EQ(s.world().obstacles().at(0), drawn);
+    EXPECT_FALSE(s.selectedObstacle());  // as before the press that grabbed it
     s.apply(cmd::Redo{});
+    EXPECT_EQ(s.selectedObstacle(), 0u);
     EXPECT_EQ(s.world().obstacles().at(0), moved);
 
     // Out of the box: refused, nothing moved, no undo entry.

@@ -104,7 +104,7 @@ TEST_F(SessionValues, GravityOnWithItsValueOffAndBadValuesRefused) {
     Session s = session();
     s.apply(cmd::SetGravity{true, 9.81});
     EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 9.81));
-    EXPECT_TRUE(said(s.takeNotices(), "Gravity [0, 9.81] m/s^2"));
+    EXPECT_TRUE(said(s.takeNotices(), "Gravity [0, 9.81] m/s\u00b2"));
     s.apply(cmd::SetGravity{true, 1.62, true});
     EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 1.62));
     for (const double bad : {0.0, -9.81, 1e9, std::numeric_limits<double>::infinity()}) {

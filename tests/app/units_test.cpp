@@ -43,5 +43,13 @@ TEST(Units, AccuracyInWords) {
     EXPECT_EQ(keptWords(std::numeric_limits<double>::quiet_NaN()), "not measured");
 }
 
+TEST(Units, OverlapInWords) {
+    EXPECT_EQ(overlapWords(0.0012, 0.004), "Particles overlap by up to 1.20 mm");
+    EXPECT_EQ(overlapWords(0.0, 0.004), "No particles overlap");
+    // The exact mode's touching discs: rounding, not an overlap of 65.9 am.
+    EXPECT_EQ(overlapWords(65.9e-18, 0.004), "No particles overlap (beyond rounding)");
+    EXPECT_EQ(overlapWords(5e-12, 0.004), "Particles overlap by up to 5.00 pm");
+}
+
 }  // namespace
 }  // namespace psb::app

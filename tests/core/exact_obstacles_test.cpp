@@ -12,6 +12,7 @@
 #include <particle_sandbox/chi_square.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "exact_stepper.hpp"
 #include "obstacle_geometry.hpp"
 
 namespace psb {
@@ -36,6 +37,37 @@ double deepestObstacleOverlap(const World& w) {
 
 SolverSettings exactMode() {
     return {.mode = StepMode::Exact};
+}
+
+TEST(ExactObstacles, TheCollisionLogNamesTheObstacleHit) {
+    // A ball dropped from rest onto a segment under it, and from there (e = 1) back up: the
+    // log names the segment (obstacle 1, after a peg off to the side) at each impact, the
+    // first at sqrt(2 h / g).
+    WorldDef def{.width = 4.0, .height = 4.0, .gravity = {0.0, 9.81}, .restitution = 1.0};
+    def.obstacles = {Obstacle::peg({0.5, 3.0}, 0.1),
+                     Obstacle::segment({1.0, 3.0}, {3.0, 3.0}, 0.05)};
+    const double r = 0.1, h = 0.5;
+    ParticleArrays p;
+    p.x = {2.0};
+    p.y = {3.0 - 0.025 - r - h};  // thickness 0.05: 0.025 either side of the line
+    p.vx = {0.0};
+    p.vy = {0.0};
+    p.radius = {r};
+    p.mass = {1.0};
+    p.invMass = {1.0};
+    p.id = {ParticleId{0, 1}};
+    p.color = {Color{}};
+    exact::ExactStepper stepper;
+    std::vector<exact::CollisionRecord> log;
+    stepper.setLog(&log);
+    StepProfile profile;
+    StepCounters counters;
+    for (int k = 0; k < 60; ++k)
+        stepper.step(p, def, 1.0 / 60.0, profile, counters);
+    ASSERT_GE(log.size(), 2u);
+    for (const exact::CollisionRecord& c : log)
+        EXPECT_EQ(c.j, exact::CollisionRecord::kObstacle + 1);
+    EXPECT_NEAR(log[0].time, std::sqrt(2.0 * h / 9.81), 1e-9);
 }
 
 TEST(ExactObstacles, BallBouncesOffAPegAtTheInstantOfContact) {

@@ -124,6 +124,47 @@ TEST(ObstacleContacts, ABallSettlesOnARampAndStaysAboveIt) {
     EXPECT_LT(w.get(id).velocity.norm(), 0.2);  // nearly at rest: friction holds it (mu > tan 20°)
 }
 
+TEST(ObstacleContacts, ABallSlidesDownAFrictionlessRampAsOnAnInclinedPlane) {
+    // e = 0, no friction, a 30° ramp: pressed onto it every step, the ball slides down it,
+    // covering ½ g sin30° t² and gaining the kinetic energy of the height it loses. (A ball
+    // whose move stopped at each contact stayed where it was while its speed grew.)
+    const double g = 9.81, angle = std::acos(-1.0) / 6.0, r = 0.1, h = 0.05;
+    World w = box(10.0, 0.0, 0.0, Vec2(0.0, g));
+    const Vec2 a(1.0, 2.0), b = a + 8.0 * Vec2(std::cos(angle), std::sin(angle));
+    w.addObstacle(Obstacle::segment(a, b, 2.0 * h));
+    const Vec2 normal(std::sin(angle), -std::cos(angle));  // up, out of the ramp
+    const Vec2 start = a + 1.0 * (b - a).normalized() + (r + h) * normal;
+    const ParticleId id = w.add({.position = start, .mass = 1.0, .radius = r});
+    const double t = 1.0;
+    for (int k = 0; k < 120; ++k)
+        w.step(t / 120.0);
+    const Particle p = w.get(id);
+    const double along = (p.position - start).dot((b - a).normalized());
+    EXPECT_NEAR(along, 0.5 * g * std::sin(angle) * t * t, 0.03 * 0.5 * g * std::sin(angle));
+    const double drop = p.position.y() - start.y();
+    EXPECT_NEAR(0.5 * p.velocity.squaredNorm(), g * drop, 0.02 * g * drop);
+    EXPECT_NEAR((p.position - start).dot(normal), 0.0, 1e-3);  // on the ramp, not above it
+}
+
+TEST(ObstacleContacts, FrictionSlowsASlideWithoutStoppingIt) {
+    // mu = 0.2 on a 30° ramp (tan 30° = 0.58 > mu): slower than without friction, still sliding.
+    auto slid = [](double mu) {
+        const double angle = std::acos(-1.0) / 6.0;
+        World w = box(10.0, 0.0, mu, Vec2(0.0, 9.81));
+        const Vec2 a(1.0, 2.0), b = a + 8.0 * Vec2(std::cos(angle), std::sin(angle));
+        w.addObstacle(Obstacle::segment(a, b, 0.1));
+        const Vec2 normal(std::sin(angle), -std::cos(angle));
+        const Vec2 start = a + 1.0 * (b - a).normalized() + 0.15 * normal;
+        const ParticleId id = w.add({.position = start, .mass = 1.0, .radius = 0.1});
+        for (int k = 0; k < 120; ++k)
+            w.step(1.0 / 120.0);
+        return (w.get(id).position - start).norm();
+    };
+    const double free = slid(0.0), rubbed = slid(0.2);
+    EXPECT_LT(rubbed, 0.9 * free);
+    EXPECT_GT(rubbed, 0.3 * free);
+}
+
 TEST(ObstacleContacts, ABallWedgedInANarrowVNeverCrossesEitherSide) {
     // A V whose gap at the bottom is a fifth of the ball's diameter; gravity drives it in.
     World w = box(10.0, 0.3, 0.0, Vec2(0.0, 50.0));
