@@ -48,7 +48,7 @@ BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p) {
     h.now = measureBins(bins, p);
     const BinCounts& c = h.now.counts;
     std::string bars = "bars: balls in each bin (" + std::to_string(c.counted()) + " landed";
-    if (c.above > 0) bars += ", " + std::to_string(c.above) + " still falling";
+    if (c.above > 0) bars += ", " + std::to_string(c.above) + " not yet in the bins";
     if (c.outside > 0) bars += ", " + std::to_string(c.outside) + " outside the bins";
     h.legend.push_back(bars + ")");
     if (const auto& b = bins.binomial) {

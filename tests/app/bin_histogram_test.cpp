@@ -55,7 +55,7 @@ const std::vector<int> kBell = {4, 31, 109, 219, 273, 219, 109, 31, 5};
 TEST(BinHistogram, SaysInWordsWhatTheBarsDotsAndCurveAreAndHowFarTheCountsAreFromIt) {
     const BinHistogram h = binHistogram(eightRows(), landed(kBell, 12));
     ASSERT_EQ(h.legend.size(), 4u);
-    EXPECT_EQ(h.legend[0], "bars: balls in each bin (1000 landed, 12 still falling)");
+    EXPECT_EQ(h.legend[0], "bars: balls in each bin (1000 landed, 12 not yet in the bins)");
     EXPECT_EQ(h.legend[1], "dots: binomial, 8 rows, p = 1/2");
     EXPECT_EQ(h.legend[2], "line: normal curve (mean 4, spread 1.41 bins)");
     EXPECT_EQ(h.legend[3].rfind("close to the curve: chi-squared ", 0), 0u) << h.legend[3];
@@ -69,7 +69,7 @@ TEST(BinHistogram, AFlatPileIsFarFromTheCurveAndAFewBallsAreTooFewToJudge) {
     EXPECT_EQ(flat.legend[3].rfind("far from the curve: chi-squared ", 0), 0u) << flat.legend[3];
     EXPECT_NE(flat.legend[3].find("> 16.8"), std::string::npos) << flat.legend[3];
     const BinHistogram few = binHistogram(eightRows(), landed({0, 0, 0, 1, 2, 1}, 900));
-    EXPECT_EQ(few.legend[0], "bars: balls in each bin (4 landed, 900 still falling)");
+    EXPECT_EQ(few.legend[0], "bars: balls in each bin (4 landed, 900 not yet in the bins)");
     EXPECT_EQ(few.legend[3], "too few balls yet to compare with the curve");
 }
 

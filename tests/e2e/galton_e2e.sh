@@ -49,7 +49,7 @@ wait_log "Preset 9 of"
 snap 1-opened
 box=$(rect 1-opened bins)
 [[ -n "$box" ]] || fail "no bins panel on opening the Galton board: $(cat "$OUT/1-opened.txt")"
-section 1-opened Bins | grep -q "^bars: balls in each bin (0 landed, 1000 still falling)$" ||
+section 1-opened Bins | grep -q "^bars: balls in each bin (0 landed, 1000 not yet in the bins)$" ||
     fail "legend before the run: $(section 1-opened Bins)"
 section 1-opened Bins | grep -q "^too few balls yet to compare with the curve$" ||
     fail "no 'too few' verdict before the run"
