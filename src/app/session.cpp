@@ -183,16 +183,11 @@ bool Session::mayEdit(const Command& command) {
 }
 
 UndoState Session::snapshot(World world) const {
-    UndoState s{std::move(world),
-                loaded_,
-                sceneName_,
-                sceneDescription_,
-                sceneBins_,
-                selection_.id().value_or(kNullParticle),
-                selectedObstacle_,
-                spawn_,
-                timeScale_,
-                dirty_};
+    UndoState s{std::move(world),  loaded_,
+                sceneName_,        sceneDescription_,
+                sceneBins_,        selection_.id().value_or(kNullParticle),
+                selectedObstacle_, spawn_,
+                timeScale_,        dirty_};
     // A particle in the hand is kinematic only while held: restored, it is free again.
     if (interaction_.mode() == Interaction::Mode::Holding &&
         s.world.contains(interaction_.held())) {
