@@ -1,5 +1,5 @@
 // Leaks of the discrete mode through fixed obstacles, on the Galton board preset
-// (assets/scenes/09-galton-board.json: 1000 balls, 319 pegs, 26 segments), by step size.
+// (assets/scenes/09-galton-board.json: 1000 balls, 108 pegs, 20 segments), by step size.
 //
 // A leak is a ball whose centre, between the end of one step and the end of the next, crosses
 // the core line of a segment (between its ends), or whose centre ends a step inside an
@@ -9,13 +9,15 @@
 // so that it checks the engine's obstacle stage rather than repeating it.
 //
 //   build/release/bench/galton-leaks [--duration S] [--mode discrete|substep|exact] [--bins]
-//                                    [dt ...]
+//                                    [--scene PATH] [dt ...]
 //
 // Prints a Markdown table: dt, steps, leaking balls, leak events, balls in the bins at the end,
 // the deepest overlap between two balls, wall seconds. Defaults: 6 s, the discrete mode and
 // dt = 0.001 (the scene's) to 0.016 s. In the exact mode dt changes only how often positions
 // are checked (the trajectory does not depend on it); its default there is 0.01 s. --bins also
-// prints the count in each bin at the end and the standard deviation of the binned balls' x.
+// prints the count in each bin at the end and the standard deviation of the binned balls' x,
+// and for a scene with bins its own counts and their chi-squared test (psb::measureBins).
+// --scene PATH runs another board than the preset.
 
 #include <algorithm>
 #include <chrono>
@@ -26,6 +28,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/scene.hpp>
 
 namespace {
@@ -58,6 +61,7 @@ struct Result {
     std::vector<int> bins;  // balls between consecutive bin walls (and the box walls), left first
     double spread = 0.0;    // standard deviation of the binned balls' x, metres
     double seconds = 0.0, maxOverlap = 0.0;
+    std::optional<psb::BinsMeasurement> sceneBins;  // the scene's own bins, if it has them
 };
 
 Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double duration) {
@@ -125,6 +129,7 @@ Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double durati
         sum += px[i];
         sum2 += px[i] * px[i];
     }
+    if (s.bins) r.sceneBins = psb::measureBins(*s.bins, w.particles());
     if (r.inBins > 1) {
         const double n = static_cast<double>(r.inBins);
         r.spread = std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1.0)));
@@ -138,11 +143,14 @@ int main(int argc, char** argv) {
     double duration = 6.0;
     psb::StepMode mode = psb::StepMode::Discrete;
     bool bins = false;
+    std::string scenePath = std::string(PSB_SOURCE_DIR) + "/assets/scenes/09-galton-board.json";
     std::vector<double> dts;
     for (int k = 1; k < argc; ++k) {
         const std::string a = argv[k];
         if (a == "--duration" && k + 1 < argc) {
             duration = std::atof(argv[++k]);
+        } else if (a == "--scene" && k + 1 < argc) {
+            scenePath = argv[++k];
         } else if (a == "--bins") {
             bins = true;
         } else if (a == "--mode" && k + 1 < argc) {
@@ -160,8 +168,7 @@ int main(int argc, char** argv) {
         dts = mode == psb::StepMode::Exact ? std::vector<double>{0.01}
                                            : std::vector<double>{0.001, 0.002, 0.004, 0.008, 0.016};
     }
-    const psb::Scene scene =
-        psb::loadScene(std::string(PSB_SOURCE_DIR) + "/assets/scenes/09-galton-board.json");
+    const psb::Scene scene = psb::loadScene(scenePath);
     std::printf(
         "| dt (ms) | steps | balls that leaked | leak events | balls in the bins | max "
         "ball overlap (mm) | step wall s |\n|---:|---:|---:|---:|---:|---:|---:|\n");
@@ -178,6 +185,18 @@ int main(int argc, char** argv) {
             for (const int b : r.bins)
                 std::printf(" %d", b);
             std::printf("; spread of x %.1f mm\n", r.spread * 1e3);
+            if (const auto& m = r.sceneBins) {
+                std::printf("scene bins:");
+                for (const std::size_t c : m->counts.counts)
+                    std::printf(" %zu", c);
+                std::printf(" (%zu outside, %zu above)", m->counts.outside, m->counts.above);
+                if (m->test && m->test->valid()) {
+                    std::printf("; chi-squared %.2f on %d dof, 1 %% critical %.2f: %s",
+                                m->test->statistic, m->test->dof, m->test->critical,
+                                m->test->passes() ? "passes" : "fails");
+                }
+                std::printf("\n");
+            }
         }
     }
     return 0;

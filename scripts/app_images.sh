@@ -6,16 +6,23 @@
 #   help.png     the built-in scene, paused, with the help overlay (H), 720x720 window
 #   inspect.png  the built-in scene, paused, the 18 kg particle selected by a click and its
 #                edit prompt open with 25 typed (Enter, 2, 5), 960x640 window scaled to 75 %
+#   galton.png   09-galton-board 30 s into the pour (run by particle-sim, beside the app in the
+#                build tree, and saved with its bins), opened paused: its bins panel against
+#                the binomial and the normal curve, 1200x850
 #   funnel.png, hourglass.png, ramp.png, basketball.png  the obstacle presets 10-13, each run
 #                from paused for a few seconds then paused again, arrows off (the basketball
 #                with all trails), 800x800 windows scaled to 60 %
 #
-#   scripts/app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
+#   scripts/app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR [NAME]]
+#
+# With NAME (sandbox, overlays-momentum, overlays-gas, help, inspect, galton, funnel, hourglass,
+# ramp, basketball) only that picture is made.
 #
 # Needs Xvfb (xvfb-run), xdotool and ImageMagick (scripts/install-deps.sh --test).
 set -euo pipefail
 BIN=${1:?usage: app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
 OUT=${2:-docs/images}
+ONLY=${3:-}
 WORK=$(mktemp -d)
 trap 'rm -rf "$WORK"' EXIT
 
@@ -48,26 +55,45 @@ shoot_and_quit() {
     wait "$pid"
 }
 
-mkdir -p "$WORK/sandbox" "$WORK/help" "$WORK/inspect" "$WORK/momentum" "$WORK/gas"
+# want NAME: whether to make picture NAME.
+want() { [[ -z "$ONLY" || "$ONLY" == "$1" ]]; }
+mkdir -p "$WORK/sandbox" "$WORK/help" "$WORK/inspect" "$WORK/momentum" "$WORK/gas" "$WORK/galton"
+if want galton; then
+# The pour takes longer than a picture should wait for the window: the runner runs it.
+"$SIM" "$ASSETS/scenes/09-galton-board.json" --duration 30 --report /dev/null \
+    --save "$WORK/galton-30s.json"
+start 1200x850 "$WORK/galton" "$WORK/galton-30s.json" --paused
+shoot_and_quit "$WORK/galton" 1
+fi
+
+if want overlays-momentum; then
 start 720x720 "$WORK/momentum" --seed 1
 for k in v l l; do xdotool key --window "$wid" "$k"; sleep 0.1; done
 sleep 4
 xdotool key --window "$wid" space  # paused: nothing to lose, one Esc quits
 shoot_and_quit "$WORK/momentum" 1
+fi
 
+if want overlays-gas; then
 start 900x720 "$WORK/gas" "$ASSETS/scenes/04-gas-in-a-box.json" --no-arrows
 for k in k d; do xdotool key --window "$wid" "$k"; sleep 0.1; done
 sleep 13
 shoot_and_quit "$WORK/gas" 1
+fi
 
+if want sandbox; then
 start 800x800 "$WORK/sandbox"
 xdotool key --window "$wid" s
 shoot_and_quit "$WORK/sandbox" 1
+fi
 
+if want help; then
 start 720x720 "$WORK/help"
 xdotool key --window "$wid" h
 shoot_and_quit "$WORK/help" 2  # Esc closes the help, then quits
+fi
 
+if want inspect; then
 start 960x640 "$WORK/inspect"
 # The 18 kg particle at (5.2, 1.6) m.
 px=$(awk -v z="$zoom" -v b="$bx" -v o="$X" 'BEGIN { printf "%d", o + b + 5.2 * z }')
@@ -76,12 +102,14 @@ xdotool mousemove --sync "$px" "$py" sleep 0.1 click 1
 sleep 0.3
 xdotool key --window "$wid" Return sleep 0.2 type --window "$wid" --delay 50 "25"
 shoot_and_quit "$WORK/inspect" 2
+fi
 
 # run_preset NAME FILE SECONDS [KEYS...]: the preset paused with arrows off, KEYS pressed, run
 # for SECONDS, paused again and shot.
 run_preset() {
     local name=$1 file=$2 seconds=$3
     shift 3
+    want "$name" || return 0
     mkdir -p "$WORK/$name"
     start 800x800 "$WORK/$name" --paused --no-arrows "$ASSETS/scenes/$file"
     for k in "$@"; do xdotool key --window "$wid" "$k"; sleep 0.1; done
@@ -96,13 +124,23 @@ run_preset ramp 12-ramp.json 1.6 l l
 run_preset basketball 13-basketball-and-tennis-ball.json 1.25 l l
 DRIVE
 ASSETS=$(cd "$(dirname "$0")/../assets" && pwd)
-BIN=$BIN WORK=$WORK ASSETS=$ASSETS xvfb-run -a -s "-screen 0 1000x900x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
-convert "$WORK"/sandbox/particle-sandbox-*.png -strip "$OUT/sandbox.png"
-convert "$WORK"/momentum/particle-sandbox-*.png -strip "$OUT/overlays-momentum.png"
-convert "$WORK"/gas/particle-sandbox-*.png -strip "$OUT/overlays-gas.png"
-convert "$WORK"/help/particle-sandbox-*.png -strip "$OUT/help.png"
-convert "$WORK"/inspect/particle-sandbox-*.png -resize 75% -strip "$OUT/inspect.png"
+SIM=$(cd "$(dirname "$BIN")/../cli" && pwd)/particle-sim
+BIN=$BIN WORK=$WORK ASSETS=$ASSETS ONLY=$ONLY SIM=$SIM xvfb-run -a -s "-screen 0 1300x900x24" bash ${APP_IMAGES_TRACE:+-x} "$WORK/drive.sh"
+# convert_one NAME DIR [OPTIONS...]: the screenshot in WORK/DIR as OUT/NAME.png, when made.
+convert_one() {
+    local name=$1 dir=$2
+    shift 2
+    if [[ -z "$ONLY" || "$ONLY" == "$name" ]]; then
+        convert "$WORK/$dir"/particle-sandbox-*.png "$@" -strip "$OUT/$name.png"
+    fi
+}
+convert_one sandbox sandbox
+convert_one overlays-momentum momentum
+convert_one overlays-gas gas
+convert_one help help
+convert_one inspect inspect -resize 75%
+convert_one galton galton
 for name in funnel hourglass ramp basketball; do
-    convert "$WORK/$name"/particle-sandbox-*.png -resize 60% -strip "$OUT/$name.png"
+    convert_one "$name" "$name" -resize 60%
 done
-echo "wrote sandbox, overlays-momentum, overlays-gas, help, inspect, funnel, hourglass, ramp and basketball .png in $OUT"
+echo "wrote ${ONLY:-sandbox, overlays-momentum, overlays-gas, help, inspect, galton, funnel, hourglass, ramp and basketball} .png in $OUT"

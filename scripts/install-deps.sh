@@ -11,7 +11,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsdl2-dev libsdl2-ttf-dev libstb-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  nlohmann-json3-dev libcli11-dev
+  nlohmann-json3-dev libcli11-dev libboost-dev
   libtbb-dev libbox2d-dev
 )
 if [[ "${1:-}" == "--test" ]]; then

@@ -5,11 +5,13 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 #include <particle_sandbox/world.hpp>
@@ -33,6 +35,9 @@ struct Scene {
     /// Indices into `particles` of those whose trail the app shows from the start (a particle's
     /// "trail": true), ascending. A property of the view: the world does not keep it.
     std::vector<std::size_t> trails;
+    /// The board's bins and what they should hold (a Galton board's), if the scene says: a
+    /// measurement the runner reports and the app draws. The world does not keep it.
+    std::optional<Bins> bins;
 };
 
 /// Limits that keep any input, however hostile, from exhausting memory or time.

@@ -5,7 +5,7 @@ namespace psb::app {
 void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const World& world,
                             const ObservablesSample& now, const Camera& camera,
                             const TimeSeries& series, const ViewOptions& view,
-                            const PanelLayout& layout) {
+                            const PanelLayout& layout, const std::optional<BinHistogram>& bins) {
     if (view.momentum) {
         momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds,
                        layout.legend);
@@ -20,6 +20,7 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
     if (view.speeds && layout.speeds.w > 0) {
         speeds_.draw(renderer, font, world.particles(), layout.speeds);
     }
+    if (bins && layout.bins.w > 0) bins_.draw(renderer, font, *bins, layout.bins);
 }
 
 }  // namespace psb::app

@@ -46,6 +46,7 @@ App::App(const AppOptions& options) : options_(options) {
     World world;
     std::string name, description;
     std::vector<std::size_t> trails;
+    std::optional<Bins> bins;
     if (options_.benchParticles > 0) {
         world = benchmarkWorld(options_.benchParticles);
         name = "benchmark";
@@ -55,6 +56,7 @@ App::App(const AppOptions& options) : options_(options) {
         name = scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
         description = scene.description;
         trails = scene.trails;
+        bins = scene.bins;
     }
     SdlContextOptions so;
     so.width = options_.width;
@@ -73,6 +75,7 @@ App::App(const AppOptions& options) : options_(options) {
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
     s.sceneDescription = description;
     s.sceneTrails = trails;
+    s.sceneBins = bins;
     s.paused = options_.startPaused;
     s.arrows = options_.arrows;
     const SDL_Point out = sdl_->outputSize();

@@ -200,7 +200,7 @@ struct Select {
     ParticleId id;
 };
 /// Show options set to a value (checkboxes).
-enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile };
+enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile, Bins };
 struct SetShow {
     ShowOption option = ShowOption::Arrows;
     bool on = true;

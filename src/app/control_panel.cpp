@@ -244,6 +244,12 @@ void ControlPanel::show(const Session& s) {
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
+    if (s.sceneBins()) {
+        box("Bin counts against the bell curve", v.bins, cmd::ShowOption::Bins,
+            "How many balls landed in each bin, against the binomial distribution and the "
+            "normal curve the board should give, and whether the difference is more than "
+            "chance");
+    }
     int trails = static_cast<int>(v.trails);
     ImGui::SetNextItemWidth(130.f);
     if (ImGui::Combo("Trails", &trails, "off\0selected particle\0all particles\0")) {

@@ -25,7 +25,7 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     RenderAvoid avoid;
     for (const SDL_Rect& r :
          {frame.layout.hud, frame.layout.messages, frame.layout.inspector, frame.layout.profile,
-          frame.layout.legend, frame.layout.plots, frame.layout.speeds}) {
+          frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
         if (r.w > 0) avoid.push_back(r);
     }
     const DrawStats stats =
@@ -33,7 +33,7 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);
     if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
     analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
-                   frame.layout);
+                   frame.layout, frame.bins);
     if (frame.launch) drawLaunch(camera, *frame.launch);
     if (frame.boxMarker) drawBoxMarker(*frame.boxMarker);
     drawOverlays(sdl_, hudFont_, frame.overlays, frame.layout);

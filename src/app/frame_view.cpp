@@ -95,6 +95,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     }
     f.obstaclePreview = session.obstaclePreview();
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
+    if (session.binsShown()) f.bins = binHistogram(*session.sceneBins(), world.particles());
 
     Overlays& o = f.overlays;
     // The HUD's readings wrap between their parts within the room right of the control panel.
@@ -144,6 +145,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     req.inspector = textBoxSize(hudFont, o.inspector);
     req.plots = f.view.plots;
     req.speeds = f.view.speeds;
+    req.bins = f.bins.has_value();
     f.layout = layoutPanels(req);
     f.title = windowTitle(world.size(), session.paused(), session.sceneName());
     return f;

@@ -12,6 +12,7 @@
 #include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "bin_histogram.hpp"
 #include "camera.hpp"
 #include "overlay.hpp"
 #include "panel_layout.hpp"
@@ -51,6 +52,7 @@ struct FrameView {
     std::optional<Obstacle> selectedObstacle;  ///< drawn highlighted
     std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
     std::optional<BoxMarkerView> boxMarker;
+    std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     Overlays overlays;
     PanelLayout layout;
     std::string title;

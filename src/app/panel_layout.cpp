@@ -49,7 +49,7 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         *out = box;
         top = box.y + box.h + gap;
     }
-    if (!r.plots && !r.speeds) return l;
+    if (!r.plots && !r.speeds && !r.bins) return l;
 
     const int width = std::min(room, sideColumnWidth(r.width, r.left));
     if (width < kPanelMinWidth) return l;
@@ -60,17 +60,19 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     }
     int height = bottom - top;
     const int plotsMin = kPlotRowMinHeight + 8;  // one row plus the panel's padding
-    if (r.speeds) {
-        // The histogram takes what is left after the plots' smallest useful size (one row),
-        // within its own limits.
-        const int want = r.plots ? std::min(kSpeedsMaxHeight, height - plotsMin - gap)
-                                 : std::min(kSpeedsMaxHeight, height);
-        if (want >= kSpeedsMinHeight) {
-            l.speeds = {column.x, bottom - want, width, want};
-            bottom -= want + gap;
-            height = bottom - top;
-        }
-    }
+    // The histograms take what is left after the plots' smallest useful size (one row), within
+    // their own limits, from the bottom: the bins first (a scene with bins is about them), then
+    // the speeds.
+    const auto stack = [&](bool on, int most, int least, SDL_Rect& out) {
+        if (!on) return;
+        const int want = r.plots ? std::min(most, height - plotsMin - gap) : std::min(most, height);
+        if (want < least) return;
+        out = {column.x, bottom - want, width, want};
+        bottom -= want + gap;
+        height = bottom - top;
+    };
+    stack(r.bins, kBinsMaxHeight, kBinsMinHeight, l.bins);
+    stack(r.speeds, kSpeedsMaxHeight, kSpeedsMinHeight, l.speeds);
     if (r.plots && height >= plotsMin) {
         const int rows = std::clamp((height - 8) / kPlotRowMinHeight, 1, 4);
         const int rowHeight = std::min(kPlotRowMaxHeight, (height - 8) / rows);

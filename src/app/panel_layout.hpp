@@ -2,10 +2,10 @@
 // Where the text and analysis panels go, as a pure function of the window size and what each
 // panel would need: the HUD at the top-left (right of the control panel's column), then a column at
 // the right edge holding, from the top, the profile and the momentum legend, and from the bottom
-// the selected particle's inspector, the speed histogram and the plots. The column starts below the
-// HUD when the window is too narrow for both side by side, panels shrink to the room there is (the
-// plots drop their least important rows first: rate, then py, then px), and a panel that does not
-// fit at its smallest is left out. No two rectangles returned overlap.
+// the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
+// column starts below the HUD when the window is too narrow for both side by side, panels shrink to
+// the room there is (the plots drop their least important rows first: rate, then py, then px), and
+// a panel that does not fit at its smallest is left out. No two rectangles returned overlap.
 
 #include <SDL.h>
 
@@ -25,6 +25,7 @@ struct LayoutRequest {
     SDL_Point inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
     bool plots = false;         ///< K
     bool speeds = false;        ///< D
+    bool bins = false;          ///< a scene's bins (a Galton board's histogram)
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
@@ -36,6 +37,7 @@ struct PanelLayout {
     SDL_Rect inspector{};
     SDL_Rect plots{};
     SDL_Rect speeds{};
+    SDL_Rect bins{};
     int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
     int plotRowHeight = 0;  ///< pixels per plot
 };
@@ -47,6 +49,8 @@ inline constexpr int kPlotRowMaxHeight = 100;               ///< pixels
 inline constexpr int kPlotRowMinHeight = 64;                ///< pixels
 inline constexpr int kSpeedsMaxHeight = 210;                ///< pixels
 inline constexpr int kSpeedsMinHeight = 130;                ///< pixels
+inline constexpr int kBinsMaxHeight = 280;                  ///< pixels
+inline constexpr int kBinsMinHeight = 170;                  ///< pixels
 
 /// Lays out the panels `r` asks for.
 [[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);

@@ -60,6 +60,32 @@ std::string tickLabel(double v, double step) {
     return buf;
 }
 
+PanelFrame beginPanel(const Font& font, const SDL_Rect& box, GeometryBatch& boxes,
+                      GeometryBatch& text) {
+    boxes.clear();
+    text.clear();
+    const PanelFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
+                       static_cast<float>(box.w), static_cast<float>(box.h),
+                       static_cast<float>(font.lineHeight())};
+    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, SDL_Color{0, 0, 0, 190});
+    return f;
+}
+
+void layoutYTicks(const Font& font, double lo, double hi, float left,
+                  const std::function<float(double)>& row, GeometryBatch& marks,
+                  GeometryBatch& labels) {
+    const SDL_Color axis{150, 150, 150, 255}, grey{200, 200, 200, 255};
+    const float lh = static_cast<float>(font.lineHeight());
+    const double step = niceStep(lo, hi, 4);
+    for (const double t : niceTicks(lo, hi, 4)) {
+        const float y = row(t);
+        marks.quad(left - 4, y, left - 1, y + 1, axis);
+        const std::string label = tickLabel(t, step);
+        font.layout(label, left - 6 - static_cast<float>(font.measure(label)), y - lh / 2, grey,
+                    labels);
+    }
+}
+
 void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
                      const SDL_Rect& box, int rows, int rowHeight, double totalMass) {
     boxes_.clear();
@@ -129,14 +155,7 @@ void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         const auto sx = [&](double t) {
             return left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
         };
-        const double step = niceStep(r.lo, r.hi, 4);
-        for (const double t : niceTicks(r.lo, r.hi, 4)) {
-            const float ty = sy(t);
-            boxes_.quad(left - 4, ty, left - 1, ty + 1, axis);
-            const std::string label = tickLabel(t, step);
-            font.layout(label, left - 6 - static_cast<float>(font.measure(label)), ty - lh / 2,
-                        SDL_Color{200, 200, 200, 255}, text_);
-        }
+        layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_);
         for (std::size_t s = 0; s < n; ++s)
             line_.push_back({sx(series[s].time), sy(pl.value(series[s]))});
         lines.emplace_back(pl.color, line_.size());

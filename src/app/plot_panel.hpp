@@ -8,6 +8,7 @@
 // flat line in the middle of its plot instead of full-height wiggles; an inelastic gas's energy
 // visibly steps down.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,21 @@ struct PlotRange {
 /// `v` with as many significant digits as a tick `step` needs, with an SI prefix outside
 /// [1e-3, 1e5): 4038789 with step 20000 -> "4.04M"; 0.5 -> "0.5"; 2e-5 -> "20u".
 [[nodiscard]] std::string tickLabel(double v, double step);
+
+/// A panel's box in pixels (as floats) and the font's line height.
+struct PanelFrame {
+    float x = 0, y = 0, w = 0, h = 0, lineHeight = 0;
+};
+/// Starts a panel in `box`: empties both batches and puts the panel's translucent background in
+/// `boxes`.
+[[nodiscard]] PanelFrame beginPanel(const Font& font, const SDL_Rect& box, GeometryBatch& boxes,
+                                    GeometryBatch& text);
+
+/// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most 4) left of x = `left`:
+/// a tick mark and its label at the pixel row `row(v)` of each tick value v.
+void layoutYTicks(const Font& font, double lo, double hi, float left,
+                  const std::function<float(double)>& row, GeometryBatch& marks,
+                  GeometryBatch& labels);
 
 /// Plot colours, for the tests to look for.
 inline constexpr SDL_Color kEnergyPlotColor{255, 90, 90, 255};

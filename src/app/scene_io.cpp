@@ -55,8 +55,10 @@ std::filesystem::path freeSavePath(const std::filesystem::path& path) {
 }
 
 std::string saveWorld(const World& world, const std::string& name, const std::string& description,
-                      const std::filesystem::path& path) {
-    saveScene(sceneFromWorld(world, name, description), path);
+                      const std::filesystem::path& path, const std::optional<Bins>& bins) {
+    Scene scene = sceneFromWorld(world, name, description);
+    scene.bins = bins;
+    saveScene(scene, path);
     std::error_code ec;
     const std::filesystem::path shown = std::filesystem::absolute(path, ec).lexically_normal();
     return "Saved " + std::to_string(world.size()) + " particles to " +

@@ -35,10 +35,10 @@ struct SceneInfo {
 /// message names the file wherever the program was started.
 [[nodiscard]] std::filesystem::path freeSavePath(const std::filesystem::path& path);
 
-/// Saves `world` as a scene named `name` with `description` to `path`, atomically
-/// (psb::saveScene): the old file survives any failure. Returns a line for the user naming the
-/// absolute path; throws SaveError saying why it failed.
+/// Saves `world` as a scene named `name` with `description` (and the scene's `bins`) to `path`,
+/// atomically (psb::saveScene): the old file survives any failure. Returns a line for the user
+/// naming the absolute path; throws SaveError saying why it failed.
 std::string saveWorld(const World& world, const std::string& name, const std::string& description,
-                      const std::filesystem::path& path);
+                      const std::filesystem::path& path, const std::optional<Bins>& bins = {});
 
 }  // namespace psb::app

@@ -34,6 +34,24 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     section(out, "Inspector", o.inspector);
     if (o.showProfile) section(out, "Profile", o.profile);
     if (o.showHelp) section(out, "Help", o.help);
+    if (frame.bins && frame.layout.bins.w > 0) {
+        std::vector<std::string> lines = frame.bins->legend;
+        std::string counts = "counts:";
+        for (const std::size_t c : frame.bins->now.counts.counts) {
+            counts += ' ';
+            counts += std::to_string(c);
+        }
+        lines.push_back(counts);
+        if (!frame.bins->now.expected.empty()) {
+            std::string expected = "binomial:";
+            for (const double e : frame.bins->now.expected) {
+                expected += ' ';
+                expected += std::to_string(std::lround(e));
+            }
+            lines.push_back(expected);
+        }
+        section(out, "Bins", lines);
+    }
     if (frame.view.labels) {
         out += "Labels: " + std::to_string(drawn.labelled) + " drawn, " +
                std::to_string(drawn.labelsCrowded) + " left out" +
@@ -55,6 +73,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     rect(out, "profile", l.profile);
     rect(out, "plots", l.plots);
     rect(out, "speeds", l.speeds);
+    rect(out, "bins", l.bins);
     return out;
 }
 

@@ -10,7 +10,8 @@
 
 namespace psb::app {
 
-/// Sections "HUD:", "Messages:", "Inspector:", "Profile:", "Help:" (the shown ones, a line per
+/// Sections "HUD:", "Messages:", "Inspector:", "Profile:", "Help:", "Bins:" (the bins panel's
+/// legend, then its counts and the binomial's expected counts, rounded) (the shown ones, a line per
 /// line of text, indented by two spaces), then "Labels: N drawn, M left out", then "Layout:"
 /// with a line "NAME x y w h" per panel drawn and for the box ("box").
 [[nodiscard]] std::string screenText(const FrameView& frame, const DrawStats& drawn);

@@ -69,6 +69,7 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     showControls_ = options_.controls;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
     sceneDescription_ = options_.sceneDescription;
+    sceneBins_ = options_.sceneBins;
     for (const auto& file : options_.presets)
         presets_.push_back(describeScene(file));
     setWorld(std::move(world), std::move(sceneName));
@@ -182,15 +183,11 @@ bool Session::mayEdit(const Command& command) {
 }
 
 UndoState Session::snapshot(World world) const {
-    UndoState s{std::move(world),
-                loaded_,
-                sceneName_,
-                sceneDescription_,
-                selection_.id().value_or(kNullParticle),
-                selectedObstacle_,
-                spawn_,
-                timeScale_,
-                dirty_};
+    UndoState s{std::move(world),  loaded_,
+                sceneName_,        sceneDescription_,
+                sceneBins_,        selection_.id().value_or(kNullParticle),
+                selectedObstacle_, spawn_,
+                timeScale_,        dirty_};
     // A particle in the hand is kinematic only while held: restored, it is free again.
     if (interaction_.mode() == Interaction::Mode::Holding &&
         s.world.contains(interaction_.held())) {
@@ -210,6 +207,7 @@ void Session::restore(UndoState state) {
     loaded_ = std::move(state.loaded);
     sceneName_ = std::move(state.sceneName);
     sceneDescription_ = std::move(state.sceneDescription);
+    sceneBins_ = std::move(state.sceneBins);
     spawn_ = state.spawn;
     timeScale_ = reached_ = state.timeScale;
     dirty_ = state.dirty;
@@ -741,7 +739,9 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
     try {
         const Scene scene = psb::app::openScene(file);
         std::string name = scene.name.empty() && file ? file->stem().string() : scene.name;
-        setWorld(makeWorld(scene), name);
+        World world = makeWorld(scene);
+        sceneBins_ = scene.bins;  // before setWorld, whose fit leaves room for the bins panel
+        setWorld(std::move(world), name);
         remember("open scene");
         sceneDescription_ = scene.description;
         // A new scene starts at its own pace: a time speed asked for the last one would make
@@ -809,7 +809,7 @@ void Session::save() {
 
 void Session::saveTo(const std::filesystem::path& path) {
     try {
-        say(saveWorld(world_, sceneName_, sceneDescription_, path));
+        say(saveWorld(world_, sceneName_, sceneDescription_, path, sceneBins_));
         std::error_code ec;
         const auto full = std::filesystem::absolute(path, ec).lexically_normal();
         lastSave_ = ec ? path : full;
@@ -944,7 +944,7 @@ void Session::quit() {
 void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
-    const bool column = view_.plots || view_.speeds || showProfile_;
+    const bool column = view_.plots || view_.speeds || showProfile_ || binsShown();
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
     const double left = controlsInset();
     const double top =

@@ -70,6 +70,7 @@ struct SessionOptions {
     std::uint32_t seed = 1;                                       ///< random spawns
     std::string sceneDescription;          ///< the first scene's, kept when it is saved
     std::vector<std::size_t> sceneTrails;  ///< the first scene's particles with trails shown
+    std::optional<Bins> sceneBins;         ///< the first scene's bins
     bool paused = false;
     bool arrows = true;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
@@ -123,6 +124,10 @@ class Session {
     [[nodiscard]] const World& world() const { return world_; }
     [[nodiscard]] const World& loadedWorld() const { return *loaded_; }
     [[nodiscard]] const std::string& sceneName() const { return sceneName_; }
+    /// The bins of the scene as opened (a Galton board's), kept when it is saved.
+    [[nodiscard]] const std::optional<Bins>& sceneBins() const { return sceneBins_; }
+    /// The bins panel is drawn: the scene has bins and the view shows them.
+    [[nodiscard]] bool binsShown() const { return sceneBins_.has_value() && view_.bins; }
     /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
     /// (trails) start over.
     [[nodiscard]] std::uint64_t sceneGeneration() const { return generation_; }
@@ -312,7 +317,8 @@ class Session {
     World world_;
     std::shared_ptr<const World> loaded_;  ///< world_ as it was loaded, for Reset
     std::string sceneName_;
-    std::string sceneDescription_;  ///< the scene's as loaded, written back by save()
+    std::string sceneDescription_;   ///< the scene's as loaded, written back by save()
+    std::optional<Bins> sceneBins_;  ///< likewise
     std::uint64_t generation_ = 0;
     std::size_t nextPreset_ = 0;
 

@@ -172,6 +172,9 @@ void Session::setShow(const cmd::SetShow& c) {
         case O::Speeds:
             flag = &view_.speeds;
             break;
+        case O::Bins:
+            flag = &view_.bins;
+            break;
         case O::Profile:
             flag = &showProfile_;
             break;
@@ -179,7 +182,8 @@ void Session::setShow(const cmd::SetShow& c) {
     if (flag == nullptr || *flag == c.on) return;
     *flag = c.on;
     // The side column's panels change what the box is fitted beside.
-    if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile)) {
+    if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile ||
+                    c.option == O::Bins)) {
         fit();
     }
 }

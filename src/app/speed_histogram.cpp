@@ -65,14 +65,10 @@ SpeedHistogram speedHistogram(const ParticleArrays& p, std::size_t bins) {
 
 void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
                                const SDL_Rect& box) {
-    const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
-    const float boxW = static_cast<float>(box.w), height = static_cast<float>(box.h);
-    boxes_.clear();
-    text_.clear();
+    const PanelFrame f = beginPanel(font, box, boxes_, text_);
+    const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
     const SpeedHistogram h = speedHistogram(p, kBins);
-    const float lh = static_cast<float>(font.lineHeight());
-    boxes_.quad(x, y, x + boxW, y + height, SDL_Color{0, 0, 0, 190});
     const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
     const float left = x + 62, right = x + boxW - 10;
     const float top = y + 6 + 2 * lh, bottom = y + height - 2 * lh - 6;
@@ -114,14 +110,7 @@ void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const P
         curve_.push_back({sx(v), sy(h.expectedDensity(v))});
     }
 
-    const double ystep = niceStep(0.0, r.hi, 4);
-    for (const double t : niceTicks(0.0, r.hi, 4)) {
-        const float ty = sy(t);
-        boxes_.quad(left - 4, ty, left - 1, ty + 1, axis);
-        const std::string label = tickLabel(t, ystep);
-        font.layout(label, left - 6 - static_cast<float>(font.measure(label)), ty - lh / 2, grey,
-                    text_);
-    }
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
     const double xstep = niceStep(0.0, h.vmax, 5);
     for (const double t : niceTicks(0.0, h.vmax, 5)) {
         const float tx = sx(t);

@@ -34,6 +34,7 @@
 #include <optional>
 #include <string>
 
+#include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "interaction.hpp"
@@ -46,6 +47,7 @@ struct UndoState {
     std::shared_ptr<const World> loaded;  ///< the scene as loaded (Reset's target)
     std::string sceneName;
     std::string sceneDescription;
+    std::optional<Bins> sceneBins;  ///< the scene's bins, kept when it is saved
     ParticleId selection = kNullParticle;
     std::optional<std::size_t> selectedObstacle;  ///< index into world.obstacles()
     SpawnSettings spawn;

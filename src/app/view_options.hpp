@@ -34,6 +34,9 @@ struct ViewOptions {
     TrailMode trails = TrailMode::Off;  ///< L: path traces
     bool plots = false;                 ///< K: energy, momentum and collision rate against time
     bool speeds = false;                ///< D: speed histogram against Maxwell–Boltzmann
+    /// The bin counts of a scene with bins (a Galton board) against its expected distribution;
+    /// on unless switched off, drawn only for a scene that has bins.
+    bool bins = true;
 };
 
 /// An arrow scale for `world` (seconds, see ViewOptions::arrowSeconds): the original's 1/3 s,

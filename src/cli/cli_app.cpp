@@ -40,8 +40,11 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         if (options.timeseries) {
             writeFileAtomically(*options.timeseries, timeSeriesCsv(series, report.gravity));
         }
-        if (options.save)
-            saveScene(sceneFromWorld(world, scene.name, scene.description), *options.save);
+        if (options.save) {
+            Scene saved = sceneFromWorld(world, scene.name, scene.description);
+            saved.bins = scene.bins;
+            saveScene(saved, *options.save);
+        }
         const std::string json = reportJson(report);
         if (!options.report || *options.report == "-") {
             out << json << std::flush;

@@ -36,6 +36,28 @@ std::string reportJson(const RunReport& r) {
     j["wall_impulse"] = r.wallImpulse;
     j["max_overlap"] = r.maxOverlap;
     j["escaped"] = r.escaped;
+    if (r.bins) {
+        const BinsMeasurement& b = *r.bins;
+        nlohmann::ordered_json bins;
+        bins["counts"] = b.counts.counts;
+        bins["counted"] = b.counts.counted();
+        bins["outside"] = b.counts.outside;
+        bins["above"] = b.counts.above;
+        if (!b.expected.empty()) bins["expected"] = b.expected;
+        if (const auto& t = b.test; t && t->valid()) {
+            nlohmann::ordered_json chi;
+            chi["statistic"] = t->statistic;
+            chi["dof"] = t->dof;
+            chi["alpha"] = t->alpha;
+            chi["critical"] = t->critical;
+            chi["p_value"] = t->pValue;
+            chi["passes"] = t->passes();
+            chi["observed_merged"] = t->observed;
+            chi["expected_merged"] = t->expected;
+            bins["chi_square"] = chi;
+        }
+        j["bins"] = bins;
+    }
     return j.dump(2) + "\n";
 }
 

@@ -105,6 +105,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.potentialEnergyFinal = potentialEnergy(world);
     r.momentumFinal = momentum(world);
     r.escaped = countEscaped(world);
+    if (scene.bins) r.bins = measureBins(*scene.bins, world.particles());
     return r;
 }
 

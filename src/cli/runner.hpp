@@ -3,7 +3,9 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 
+#include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/time_series.hpp>
@@ -34,6 +36,8 @@ struct RunReport {
     double wallImpulse = 0.0;                                           ///< kg·m/s
     double maxOverlap = 0.0;                                            ///< metres
     std::uint64_t escaped = 0;
+    /// The scene's bins at the end, when it has bins.
+    std::optional<BinsMeasurement> bins;
 };
 
 /// The scene's solver block with the command line's overrides applied. Throws UsageError when

@@ -33,9 +33,9 @@ namespace {
 using json = nlohmann::json;
 using Keys = std::initializer_list<std::string_view>;
 
-constexpr int kVersion = 2;
-/// Version 2 added `obstacles`; a file without them may say either version.
-constexpr int kFirstVersion = 1, kObstaclesVersion = 2;
+constexpr int kVersion = 3;
+/// Version 2 added `obstacles`, version 3 `bins`; a file without them may say any version.
+constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3;
 
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
@@ -376,6 +376,60 @@ void readObstacles(const Reader& r, const json& j, int version, WorldDef& w) {
         w.obstacles.push_back(readObstacle(r, j[i], element("obstacles", i), w));
 }
 
+/// `bins`: {"edges": [x0, ..., xn], "top": y, "expected": {"binomial": {"trials": n, "p": p}}}.
+/// Edges strictly increasing and inside the box, the top inside it, and a binomial's bins one
+/// per number of successes.
+Bins readBins(const Reader& r, const json& j, int version, const WorldDef& w) {
+    r.object(j, "bins", {"edges", "top", "expected"});
+    if (version < kBinsVersion) {
+        r.fail("bins", "need version " + std::to_string(kBinsVersion) +
+                           " or later (the file says version " + std::to_string(version) + ")");
+    }
+    Bins b;
+    const json& edges = r.require(j, "bins", "edges");
+    r.expectType(edges, "bins.edges", edges.is_array(), "an array of numbers");
+    if (edges.size() < 2 || edges.size() > kMaxBins + 1) {
+        r.fail("bins.edges", "needs 2 to " + std::to_string(kMaxBins + 1) +
+                                 " edges (one more than the bins), got " +
+                                 std::to_string(edges.size()));
+    }
+    for (std::size_t i = 0; i < edges.size(); ++i) {
+        const std::string path = element("bins.edges", i);
+        const double x = r.number(edges[i], path);
+        if (x < 0.0 || x > w.width) {
+            r.fail(path, num(x) + " lies outside the box (x from 0 to " + num(w.width) + " m)");
+        }
+        if (!b.edges.empty() && !(x > b.edges.back())) {
+            r.fail(path, "must be greater than the edge before it (" + num(b.edges.back()) +
+                             "), got " + num(x));
+        }
+        b.edges.push_back(x);
+    }
+    b.top = r.number(r.require(j, "bins", "top"), "bins.top");
+    if (b.top < 0.0 || b.top > w.height) {
+        r.fail("bins.top",
+               num(b.top) + " lies outside the box (y from 0 to " + num(w.height) + " m)");
+    }
+    if (const json* e = Reader::find(j, "expected")) {
+        r.object(*e, "bins.expected", {"binomial"});
+        const json& binomial = r.require(*e, "bins.expected", "binomial");
+        const std::string path = "bins.expected.binomial";
+        r.object(binomial, path, {"trials", "p"});
+        BinomialExpectation x;
+        x.trials = static_cast<int>(r.integer(r.require(binomial, path, "trials"), path + ".trials",
+                                              1, kMaxBinomialTrials));
+        x.p = r.inRange(r.require(binomial, path, "p"), path + ".p", 0.0, 1.0);
+        if (static_cast<std::size_t>(x.trials) + 1 != b.size()) {
+            r.fail(path + ".trials", std::to_string(x.trials) + " trials need " +
+                                         std::to_string(x.trials + 1) + " bins (0 to " +
+                                         std::to_string(x.trials) + " successes), the edges make " +
+                                         std::to_string(b.size()));
+        }
+        b.binomial = x;
+    }
+    return b;
+}
+
 /// Reads one generate block and appends its particles.
 void readGenerate(const Reader& r, const json& j, const std::string& path, const WorldDef& world,
                   std::vector<ParticleDef>& out, std::vector<Origin>& origins) {
@@ -520,7 +574,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
     const Reader r(source);
     r.object(root, "",
              {"version", "name", "description", "world", "solver", "particles", "generate",
-              "allow_overlaps", "obstacles"});
+              "allow_overlaps", "obstacles", "bins"});
 
     Scene s;
     const json& version = r.require(root, "", "version");
@@ -545,6 +599,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
     if (const json* v = Reader::find(root, "obstacles")) {
         readObstacles(r, *v, s.version, s.world);
     }
+    if (const json* v = Reader::find(root, "bins")) s.bins = readBins(r, *v, s.version, s.world);
     checkWorldAccepts(r, s.world, s.solver);
 
     std::vector<Origin> origins;

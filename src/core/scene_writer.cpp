@@ -68,6 +68,21 @@ void appendObstacles(std::string& out, const Obstacles& obstacles) {
     out += "\n  ]";
 }
 
+/// `"bins": {...}` after a separator; nothing for a scene without bins.
+void appendBins(std::string& out, const std::optional<Bins>& bins) {
+    if (!bins) return;
+    out += ",\n  \"bins\": {\"edges\": [";
+    for (std::size_t i = 0; i < bins->edges.size(); ++i)
+        appendField(out, i == 0 ? "" : ", ", bins->edges[i], "bins.edges");
+    appendField(out, "], \"top\": ", bins->top, "bins.top");
+    if (const auto& b = bins->binomial) {
+        out += ", \"expected\": {\"binomial\": {\"trials\": " + std::to_string(b->trials);
+        appendField(out, ", \"p\": ", b->p, "bins.expected.binomial.p");
+        out += "}}";
+    }
+    out += '}';
+}
+
 }  // namespace
 
 std::string serializeScene(const Scene& s) {
@@ -78,7 +93,8 @@ std::string serializeScene(const Scene& s) {
     out += ",\n  \"description\": ";
     appendString(out, s.description);
     // The lowest version that has everything the scene uses, so that older builds read it.
-    const int version = s.world.obstacles.empty() ? s.version : std::max(s.version, 2);
+    int version = s.world.obstacles.empty() ? s.version : std::max(s.version, 2);
+    if (s.bins) version = std::max(version, 3);
     out += ",\n  \"version\": " + std::to_string(version);
 
     const WorldDef& w = s.world;
@@ -102,6 +118,7 @@ std::string serializeScene(const Scene& s) {
     if (s.allowOverlaps) out += ",\n  \"allow_overlaps\": true";
 
     appendObstacles(out, w.obstacles);
+    appendBins(out, s.bins);
 
     out += ",\n  \"particles\": [";
     for (std::size_t i = 0; i < s.particles.size(); ++i) {

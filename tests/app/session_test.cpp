@@ -242,8 +242,9 @@ TEST_F(SessionTest, NewParticlesFollowTheScenesScale) {
     // A launch makes one of those.
     const Camera& c = s.camera();
     const std::size_t n = s.world().size();
-    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(0.05, 0.05)), 1.0});
-    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(0.05, 0.05)), 1.5});
+    // Empty space under the hopper's funnel, beside the top row of pegs.
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(0.03, 0.185)), 1.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(0.03, 0.185)), 1.5});
     ASSERT_EQ(s.world().size(), n + 1);
     EXPECT_NEAR(s.world().get(s.world().ids().back()).mass, 1.1 * m, 1e-12 * m);
 }

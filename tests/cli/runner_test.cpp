@@ -3,8 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -204,6 +208,49 @@ TEST(Report, HasEveryFieldWithItsValue) {
     EXPECT_EQ(j.at("wall_impulse"), 32.0);
     EXPECT_EQ(j.at("max_overlap"), 0.0);
     EXPECT_EQ(j.at("escaped"), 0);
+}
+
+/// 12 discs in the left bin, 8 in the right, 3 above the bins; Binomial(1, 1/2) expected.
+constexpr const char* kTwoBins = R"({"version": 3, "world": {"width": 1, "height": 1},
+    "bins": {"edges": [0, 0.5, 1], "top": 0.5, "expected": {"binomial": {"trials": 1, "p": 0.5}}},
+    "generate": [{"count": 12, "radius": 0.01, "region": [0.05, 0.55, 0.45, 0.95]},
+                 {"count": 8, "radius": 0.01, "region": [0.55, 0.55, 0.95, 0.95]},
+                 {"count": 3, "radius": 0.01, "region": [0.05, 0.05, 0.95, 0.45]}]})";
+
+TEST(Report, ListsTheBinCountsExpectedCountsAndChiSquareWhenTheSceneHasBins) {
+    const auto j = nlohmann::json::parse(reportJson(run(kTwoBins, 0.0)));
+    const auto& b = j.at("bins");
+    EXPECT_EQ(b.at("counts"), nlohmann::json::array({12, 8}));
+    EXPECT_EQ(b.at("counted"), 20);
+    EXPECT_EQ(b.at("outside"), 0);
+    EXPECT_EQ(b.at("above"), 3);
+    EXPECT_EQ(b.at("expected"), nlohmann::json::array({10.0, 10.0}));
+    const auto& chi = b.at("chi_square");
+    EXPECT_DOUBLE_EQ(chi.at("statistic").get<double>(), 0.8);  // (2² + 2²) / 10
+    EXPECT_EQ(chi.at("dof"), 1);
+    EXPECT_EQ(chi.at("alpha"), 0.01);
+    EXPECT_NEAR(chi.at("critical").get<double>(), 6.635, 5e-4);
+    EXPECT_NEAR(chi.at("p_value").get<double>(), 0.3711, 1e-4);
+    EXPECT_EQ(chi.at("passes"), true);
+    EXPECT_EQ(chi.at("observed_merged"), nlohmann::json::array({12.0, 8.0}));
+    const auto none = nlohmann::json::parse(reportJson(run(R"({"version": 1})", 0.1)));
+    EXPECT_FALSE(none.contains("bins"));
+}
+
+TEST(CliApp, SaveKeepsTheScenesBins) {
+    const auto dir =
+        std::filesystem::temp_directory_path() / ("psb-runner-bins-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    { std::ofstream(dir / "in.json") << kTwoBins; }
+    std::ostringstream out, err;
+    EXPECT_EQ(runCli({"particle-sim", (dir / "in.json").string(), "--duration", "0.1", "--save",
+                      (dir / "out.json").string()},
+                     out, err, false),
+              kExitOk)
+        << err.str();
+    const Scene saved = loadScene(dir / "out.json");
+    EXPECT_EQ(saved.bins, parseScene(kTwoBins, "in").bins);
+    std::filesystem::remove_all(dir);
 }
 
 TEST(CliApp, ExitCodesSeparateBadCommandLinesFromBadScenes) {

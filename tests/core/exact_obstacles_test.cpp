@@ -10,6 +10,8 @@
 #include <vector>
 
 #include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/bins.hpp>
+#include <particle_sandbox/chi_square.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "exact_stepper.hpp"
@@ -516,21 +518,21 @@ TEST(ExactObstacles, BallRestingOnAPegWakesWhenHit) {
     EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
 }
 
-/// P(X = k) for X ~ Binomial(n, 1/2).
-double binomialHalf(int n, int k) {
-    double c = 1.0;
-    for (int i = 1; i <= k; ++i)
-        c = c * (n - k + i) / i;
-    return c * std::pow(0.5, n);
-}
+/// What dropBalls saw.
+struct GaltonDrop {
+    std::vector<int> bins;
+    int outside = 0, stuck = 0;
+    double deepest = -INFINITY;  ///< deepest overlap with a peg or a bin wall, metres
+    double fastest = 0.0;        ///< fastest ball, m/s
+};
 
-TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
-    // Eight staggered rows of pegs (spacing d), bins under the gaps of the last row; 1000
-    // balls dropped one at a time above the top peg with a small random offset. A ball's bin
-    // is decided when it falls below the last row into the bins; it is counted there and taken
-    // out (the bins' piles are the discrete tests' business). Measured: the counts against
-    // Binomial(8, 1/2) by a χ² test at 1 %, and no ball ever inside a peg or a bin wall.
-    constexpr int kRows = 8, kBalls = 1000;
+/// Eight staggered rows of pegs (spacing d), bins under the gaps of the last row; `balls`
+/// balls dropped one every 0.1 s above the top peg with a small random offset, stepped by `dt`.
+/// A ball's bin is decided when it falls below the last row into the bins; it is counted there
+/// and taken out (the bins' piles are the discrete tests' business). A ball not there within
+/// 20 s is stuck.
+GaltonDrop dropBalls(const SolverSettings& solver, int kBalls, double dt) {
+    constexpr int kRows = 8;
     const double d = 0.02, r = 0.0025;
     // Pegs nearly as wide as their spacing leave channels a ball's width and a half wide, so
     // that a ball cannot skate across a row and meets one peg per row. The distribution is
@@ -546,7 +548,7 @@ TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
                      .gravity = {0.0, 9.81},
                      .restitution = 0.3,
                      .friction = 0.0},
-            exactMode());
+            solver);
     Obstacles obstacles;
     for (int k = 0; k < kRows; ++k) {
         for (int j = -kRows; j <= kRows; ++j) {
@@ -565,11 +567,11 @@ TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
 
     std::mt19937_64 rng(2026);
     std::uniform_real_distribution<double> offset(-0.5 * peg, 0.5 * peg);
-    std::vector<int> bins(kRows + 1, 0);
-    int outside = 0, dropped = 0, stuck = 0;
+    GaltonDrop out;
+    out.bins.assign(kRows + 1, 0);
+    int dropped = 0;
     std::vector<std::pair<ParticleId, double>> flying;  // id, time dropped
-    double t = 0.0, deepest = -INFINITY;
-    const double dt = 0.01;
+    double t = 0.0;
     while (dropped < kBalls || !flying.empty()) {
         if (dropped < kBalls && std::fmod(t + 1e-9, 0.1) < dt) {  // one ball every 0.1 s
             flying.push_back(
@@ -579,9 +581,10 @@ TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
         }
         w.step(dt);
         t += dt;
-        deepest = std::max(deepest, deepestObstacleOverlap(w));
+        out.deepest = std::max(out.deepest, deepestObstacleOverlap(w));
         for (std::size_t k = 0; k < flying.size();) {
             const Particle p = w.get(flying[k].first);
+            out.fastest = std::max(out.fastest, p.velocity.norm());
             const bool in = p.position.y() > binTop + 2.0 * r;
             const bool late = t - flying[k].second > 20.0;
             if (!in && !late) {
@@ -591,39 +594,58 @@ TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
             if (in) {
                 const int m =
                     static_cast<int>(std::floor((p.position.x() - cx) / d + 0.5 * kRows + 0.5));
-                (m >= 0 && m <= kRows ? bins[m] : outside) += 1;
+                (m >= 0 && m <= kRows ? out.bins[m] : out.outside) += 1;
             } else {
-                ++stuck;
+                ++out.stuck;
             }
             w.remove(flying[k].first);
             flying.erase(flying.begin() + static_cast<std::ptrdiff_t>(k));
         }
     }
+    return out;
+}
+
+TEST(ExactObstacles, GaltonBoardBinsFollowTheBinomialDistribution) {
+    // The board of dropBalls, 1000 balls: the counts against Binomial(8, 1/2) by a χ² test at
+    // 1 %, and no ball ever inside a peg or a bin wall.
+    constexpr int kRows = 8, kBalls = 1000;
+    const GaltonDrop drop = dropBalls(exactMode(), kBalls, 0.01);
+    const std::vector<int>& bins = drop.bins;
+    const int stuck = drop.stuck, outside = drop.outside;
+    const double deepest = drop.deepest;
     EXPECT_EQ(stuck, 0);
     EXPECT_EQ(outside, 0);
     EXPECT_LT(deepest, 1e-9) << "a ball went into a peg or a bin wall";
-    // χ² over the bins, the two outermost on each side merged (expected counts >= 5).
-    std::vector<double> observed, expected;
-    for (int m = 0; m <= kRows; ++m) {
-        const double e = kBalls * binomialHalf(kRows, m);
-        if (m == 1 || m == kRows) {
-            observed.back() += bins[m];
-            expected.back() += e;
-        } else {
-            observed.push_back(bins[m]);
-            expected.push_back(e);
-        }
-    }
-    double chi2 = 0.0;
+    // χ² over the bins against Binomial(8, 1/2), thin tails merged (expected counts >= 5).
+    const std::vector<double> expected = binomialProbabilities({.trials = kRows, .p = 0.5});
+    std::vector<double> counts(expected.size());
+    std::vector<std::size_t> observed(bins.begin(), bins.end());
+    for (std::size_t k = 0; k < counts.size(); ++k)
+        counts[k] = kBalls * expected[k];
+    const ChiSquareTest test = chiSquareTest(observed, counts);
     std::string table;
-    for (std::size_t k = 0; k < observed.size(); ++k) {
-        chi2 += (observed[k] - expected[k]) * (observed[k] - expected[k]) / expected[k];
-        table += std::to_string(static_cast<int>(observed[k])) + "/" +
-                 std::to_string(static_cast<int>(std::lround(expected[k]))) + " ";
+    for (std::size_t k = 0; k < test.observed.size(); ++k) {
+        table += std::to_string(static_cast<int>(test.observed[k])) + "/" +
+                 std::to_string(static_cast<int>(std::lround(test.expected[k]))) + " ";
     }
-    // 7 classes, 6 degrees of freedom: the 1 % critical value is 16.81.
-    EXPECT_LT(chi2, 16.81) << "bins (observed/expected): " << table;
-    std::printf("Galton board, exact mode: chi2 = %.2f (6 dof), bins %s\n", chi2, table.c_str());
+    EXPECT_EQ(test.dof, 6);  // 7 classes: the outermost bin on each side merged into its neighbour
+    EXPECT_TRUE(test.passes()) << "chi2 " << test.statistic << " above " << test.critical
+                               << "; bins (observed/expected): " << table;
+    std::printf("Galton board, exact mode: chi2 = %.2f (%d dof, 1 %% critical %.2f), bins %s\n",
+                test.statistic, test.dof, test.critical, table.c_str());
+}
+
+TEST(DiscreteObstacles, NoBallHangsOnAGaltonBoardsPeg) {
+    // The discrete mode on the same board: a ball pressed against a peg's side by the ball on
+    // top of it once hung there, its speed growing without bound (a time-0 "first contact"
+    // threw its whole move away every step). Every ball must reach the bins, none faster than
+    // a fall from the top of the board gives.
+    SolverSettings discrete;
+    discrete.dt = 0.001;
+    const GaltonDrop drop = dropBalls(discrete, 100, 0.001);
+    EXPECT_EQ(drop.stuck, 0);
+    EXPECT_LT(drop.fastest, 3.0);
+    EXPECT_EQ(drop.outside, 0);
 }
 
 }  // namespace

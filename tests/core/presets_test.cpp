@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -116,6 +118,46 @@ TEST(Presets, EachIsAtTheScaleOfWhatItShows) {
             EXPECT_LE(p.velocity.norm(), 30.0);
         }
     }
+}
+
+TEST(Presets, TheGaltonBoardsBinsAreUnderItsBinWallsOnePerNumberOfRightTurns) {
+    const Scene s = loadScene(kScenes / "09-galton-board.json");
+    ASSERT_TRUE(s.bins);
+    ASSERT_TRUE(s.bins->binomial);
+    std::set<double> rows;
+    double lowestPeg = 0.0, pegRadius = 0.0, wallsTop = INFINITY;
+    std::set<double> walls;
+    for (const Obstacle& o : s.world.obstacles) {
+        if (o.isPeg()) {
+            rows.insert(o.a.y());
+            lowestPeg = std::max(lowestPeg, o.a.y());
+            pegRadius = o.radius;
+        } else if (o.a.x() == o.b.x()) {  // a bin wall
+            walls.insert(o.a.x());
+            wallsTop = std::min({wallsTop, o.a.y(), o.b.y()});
+        }
+    }
+    // One trial per row of pegs, one bin per number of right turns.
+    EXPECT_EQ(s.bins->binomial->trials, static_cast<int>(rows.size()));
+    EXPECT_EQ(s.bins->binomial->p, 0.5);
+    ASSERT_EQ(s.bins->size(), rows.size() + 1);
+    // Each edge is a bin wall, the walls start at the bins' top, below the last row's pegs.
+    for (const double e : s.bins->edges)
+        EXPECT_TRUE(walls.count(e)) << "edge " << e << " is no bin wall";
+    EXPECT_EQ(s.bins->top, wallsTop);
+    EXPECT_GT(s.bins->top, lowestPeg + pegRadius);
+    // The bins are centred under the top peg, where the balls fall in.
+    const double middle = 0.5 * (s.bins->edges.front() + s.bins->edges.back());
+    EXPECT_NEAR(middle, 0.5 * s.world.width, 1e-12);
+    // Before the pour every ball is above the bins.
+    ParticleArrays p;
+    for (const ParticleDef& d : s.particles) {
+        p.x.push_back(d.position.x());
+        p.y.push_back(d.position.y());
+    }
+    const BinCounts c = countBins(*s.bins, p);
+    EXPECT_EQ(c.counted(), 0u);
+    EXPECT_EQ(c.above, 1000u);
 }
 
 TEST(Presets, BrownianMotionIsOneHeavyDiscWithItsTrailInAGas) {

@@ -39,23 +39,6 @@ start_xvfb "$OUT/xvfb.log" 1024x768x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 LOG="$OUT/stdout.log"
 
-# snap NAME: F12, then the screenshot and its text as OUT/NAME.png and OUT/NAME.txt.
-SNAPS=0
-snap() {
-    sleep 0.3
-    key F12
-    SNAPS=$((SNAPS + 1))
-    wait_count "\[I\] Saved screenshot " "$SNAPS"
-    local png
-    png=$(grep "Saved screenshot" "$LOG" | tail -1 | sed -E 's/.*Saved screenshot (.*)$/\1/')
-    mv "$png" "$OUT/$1.png"
-    mv "${png%.png}.txt" "$OUT/$1.txt"
-}
-# rect NAME FILE: "x y w h" of a layout rectangle in a screenshot's text (empty if not drawn).
-rect() { awk -v n="$2" '$1 == n && NF == 5 { print $2, $3, $4, $5 }' "$OUT/$1.txt"; }
-# section NAME FILE: the lines of one section of a screenshot's text.
-section() { awk -v s="$2:" '/^[A-Za-z]/ { on = ($0 == s) } on && /^  / { print substr($0, 3) }' "$OUT/$1.txt"; }
-
 start_app "$BIN" --renderer software --window 800x600 --paused --seed 7 \
     --save-to "$OUT/saved.json" --screenshot-dir "$OUT"
 wait_title "6 particles - PAUSED"

@@ -1,0 +1,147 @@
+#include "bin_histogram.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "overlay.hpp"
+#include "plot_panel.hpp"
+#include "text.hpp"
+
+namespace psb::app {
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, v >= 100.0 ? "%.0f" : "%.3g", v);
+    return buf;
+}
+
+std::string verdict(const std::optional<ChiSquareTest>& t) {
+    if (!t || !t->valid()) return "too few balls yet to compare with the curve";
+    const std::string stat = "chi-squared " + number(t->statistic);
+    if (t->passes())
+        return "close to the curve: " + stat + " < " + number(t->critical) + ", chance";
+    return "far from the curve: " + stat + " > " + number(t->critical) + ", more than chance";
+}
+
+}  // namespace
+
+std::string probabilityText(double p) {
+    if (p == 0.5) return "1/2";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", p);
+    return buf;
+}
+
+double normalCount(double k, const BinomialExpectation& b, double total) {
+    const double n = b.trials, mean = n * b.p, sigma = std::sqrt(n * b.p * (1.0 - b.p));
+    if (!(sigma > 0.0)) return 0.0;
+    const double z = (k - mean) / sigma;
+    return total * std::exp(-0.5 * z * z) / (sigma * std::sqrt(2.0 * std::numbers::pi));
+}
+
+BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p) {
+    BinHistogram h;
+    h.bins = bins;
+    h.now = measureBins(bins, p);
+    const BinCounts& c = h.now.counts;
+    std::string bars = "bars: balls in each bin (" + std::to_string(c.counted()) + " landed";
+    if (c.above > 0) bars += ", " + std::to_string(c.above) + " not yet in the bins";
+    if (c.outside > 0) bars += ", " + std::to_string(c.outside) + " outside the bins";
+    h.legend.push_back(bars + ")");
+    if (const auto& b = bins.binomial) {
+        h.legend.push_back("dots: binomial, " + std::to_string(b->trials) +
+                           " rows, p = " + probabilityText(b->p));
+        const double sigma = std::sqrt(b->trials * b->p * (1.0 - b->p));
+        h.legend.push_back("line: normal curve (mean " + number(b->trials * b->p) + ", spread " +
+                           number(sigma) + " bins)");
+        h.legend.push_back(verdict(h.now.test));
+    }
+    return h;
+}
+
+void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
+                             const SDL_Rect& box) {
+    const PanelFrame f = beginPanel(font, box, boxes_, text_);
+    const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
+    curve_.clear();
+    const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
+    const SDL_Color colors[] = {kBinBarColor, kBinomialDotColor, kNormalCurveColor, grey};
+    // Each legend line in its colour, wrapped to the box.
+    float lineY = y + 4;
+    for (std::size_t k = 0; k < h.legend.size(); ++k) {
+        for (const std::string& line : wrapLines(font, {h.legend[k]}, box.w - 8)) {
+            font.layout(line, x + 8, lineY, colors[std::min<std::size_t>(k, 3)], text_);
+            lineY += lh;
+        }
+    }
+    const float left = x + 44, right = x + boxW - 10;
+    const float top = lineY + 6;
+    const float bottom = y + height - 2 * lh - 6;
+    const std::vector<std::size_t>& counts = h.now.counts.counts;
+    const std::size_t bins = counts.size();
+    if (bins == 0 || !(bottom > top + 10)) {
+        boxes_.draw(renderer, nullptr);
+        font.draw(text_);
+        return;
+    }
+    boxes_.quad(left - 1, top, left, bottom, axis);
+    boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+
+    // One axis for bars, dots and curve: balls per bin.
+    const double total = static_cast<double>(h.now.counts.counted());
+    double highest = 1.0;
+    for (const std::size_t c : counts)
+        highest = std::max(highest, static_cast<double>(c));
+    for (const double e : h.now.expected)
+        highest = std::max(highest, e);
+    const PlotRange r = plotRange(0.0, highest, 1.0);
+    const float binW = (right - left) / static_cast<float>(bins);
+    const auto sx = [&](double k) { return left + static_cast<float>(k) * binW; };
+    const auto sy = [&](double v) {
+        return bottom - static_cast<float>(v / r.hi) * (bottom - top);
+    };
+    for (std::size_t k = 0; k < bins; ++k) {
+        if (counts[k] == 0) continue;
+        boxes_.quad(sx(static_cast<double>(k)) + 1, sy(static_cast<double>(counts[k])),
+                    sx(static_cast<double>(k + 1)) - 1, bottom, kBinBarColor);
+    }
+    for (std::size_t k = 0; k < h.now.expected.size(); ++k) {
+        const float cx = sx(static_cast<double>(k) + 0.5), cy = sy(h.now.expected[k]);
+        boxes_.quad(cx - 3, cy - 3, cx + 3, cy + 3, kBinomialDotColor);
+    }
+    if (h.bins.binomial && total > 0.0) {
+        constexpr int kPoints = 120;
+        for (int i = 0; i <= kPoints; ++i) {
+            // Bin k (k successes) is centred at k + 1/2 on this axis.
+            const double k = static_cast<double>(bins) * i / kPoints;
+            curve_.push_back({sx(k), sy(normalCount(k - 0.5, *h.bins.binomial, total))});
+        }
+    }
+
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
+    // Bin numbers under the bars, as many as fit.
+    const int every = std::max(
+        1, static_cast<int>(std::ceil(static_cast<float>(font.measure("000") + 4) / binW)));
+    for (std::size_t k = 0; k < bins; k += static_cast<std::size_t>(every)) {
+        const std::string label = std::to_string(k);
+        font.layout(label, sx(static_cast<double>(k) + 0.5) - font.measure(label) / 2.0f,
+                    bottom + 3, grey, text_);
+    }
+    const char* xTitle = h.bins.binomial ? "bin = times a ball went right" : "bin, left to right";
+    font.layout(xTitle, right - static_cast<float>(font.measure(xTitle)), bottom + 3 + lh, grey,
+                text_);
+    font.layout("balls", x + 8, bottom + 3 + lh, grey, text_);
+
+    boxes_.draw(renderer, nullptr);
+    if (curve_.size() > 1) {
+        SDL_SetRenderDrawColor(renderer, kNormalCurveColor.r, kNormalCurveColor.g,
+                               kNormalCurveColor.b, 255);
+        SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
+    }
+    font.draw(text_);
+}
+
+}  // namespace psb::app

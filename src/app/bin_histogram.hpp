@@ -1,0 +1,57 @@
+#pragma once
+// The bins panel: a Galton board's bin counts as bars, against the binomial distribution its
+// scene expects (a dot per bin) and the normal curve that approximates it (mean n p, standard
+// deviation sqrt(n p (1 - p)), scaled to the balls counted), with a legend in plain words and a
+// line saying how far the counts are from the curve (Pearson's chi-squared test at 1 %).
+//
+// What it says is computed without SDL (binHistogram), from the same counts it draws, so the
+// words and the bars never disagree; the screen-text dump (F12) lists the same lines.
+
+#include <string>
+#include <vector>
+
+#include <SDL.h>
+
+#include <particle_sandbox/bins.hpp>
+
+#include "geometry_batch.hpp"
+
+namespace psb::app {
+
+class Font;
+
+/// The panel's content for one frame.
+struct BinHistogram {
+    Bins bins;
+    BinsMeasurement now;
+    /// The legend, one line each: the bars, the binomial, the normal curve, the verdict.
+    std::vector<std::string> legend;
+};
+
+/// The bins of `p` now, and the legend that describes them.
+[[nodiscard]] BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p);
+
+/// The normal approximation to Binomial(n, p) over `total` balls, as a count per bin at bin
+/// position `k` (bins one unit wide): total · φ((k − n p) / σ) / σ, σ = sqrt(n p (1 − p)).
+/// 0 when σ is 0.
+[[nodiscard]] double normalCount(double k, const BinomialExpectation& b, double total);
+
+/// "1/2" for 0.5, else the probability with up to three significant digits.
+[[nodiscard]] std::string probabilityText(double p);
+
+/// Colours, for the tests to look for.
+inline constexpr SDL_Color kBinBarColor{230, 160, 60, 255};
+inline constexpr SDL_Color kBinomialDotColor{255, 255, 255, 255};
+inline constexpr SDL_Color kNormalCurveColor{90, 200, 255, 255};
+
+class BinHistogramPanel {
+  public:
+    /// Draws `h` in `box` (pixels, see PanelLayout).
+    void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h, const SDL_Rect& box);
+
+  private:
+    GeometryBatch boxes_, text_;
+    std::vector<SDL_FPoint> curve_;
+};
+
+}  // namespace psb::app

@@ -1,0 +1,210 @@
+// The bins panel: what it says (legend and verdict, from the same counts it draws), its
+// drawing offscreen, and the session's keeping of a scene's bins (shown by default, switched
+// in the Show section, kept by save and undo).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <SDL.h>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "analysis_overlays.hpp"
+#include "assets.hpp"
+#include "bin_histogram.hpp"
+#include "offscreen_test.hpp"
+#include "panel_layout.hpp"
+#include "session.hpp"
+#include "temp_dir_test.hpp"
+
+namespace psb::app {
+namespace {
+
+/// Bins of width 1 from x = 0 to 9 below y = 5: Binomial(8, 1/2).
+Bins eightRows() {
+    Bins b;
+    for (int k = 0; k <= 9; ++k)
+        b.edges.push_back(k);
+    b.top = 5.0;
+    b.binomial = BinomialExpectation{8, 0.5};
+    return b;
+}
+
+/// `n[k]` particles in bin k (centre k + 1/2, below the top), and `falling` above it.
+ParticleArrays landed(const std::vector<int>& n, int falling = 0) {
+    ParticleArrays p;
+    for (std::size_t k = 0; k < n.size(); ++k) {
+        for (int i = 0; i < n[k]; ++i) {
+            p.x.push_back(static_cast<double>(k) + 0.5);
+            p.y.push_back(6.0);
+        }
+    }
+    for (int i = 0; i < falling; ++i) {
+        p.x.push_back(4.5);
+        p.y.push_back(1.0);
+    }
+    return p;
+}
+
+/// Counts close to 1000 × Binomial(8, 1/2).
+const std::vector<int> kBell = {4, 31, 109, 219, 273, 219, 109, 31, 5};
+
+TEST(BinHistogram, SaysInWordsWhatTheBarsDotsAndCurveAreAndHowFarTheCountsAreFromIt) {
+    const BinHistogram h = binHistogram(eightRows(), landed(kBell, 12));
+    ASSERT_EQ(h.legend.size(), 4u);
+    EXPECT_EQ(h.legend[0], "bars: balls in each bin (1000 landed, 12 not yet in the bins)");
+    EXPECT_EQ(h.legend[1], "dots: binomial, 8 rows, p = 1/2");
+    EXPECT_EQ(h.legend[2], "line: normal curve (mean 4, spread 1.41 bins)");
+    EXPECT_EQ(h.legend[3].rfind("close to the curve: chi-squared ", 0), 0u) << h.legend[3];
+    EXPECT_NE(h.legend[3].find("< 16.8"), std::string::npos) << h.legend[3];
+    EXPECT_EQ(h.now.counts.counts[4], 273u);
+    EXPECT_NEAR(h.now.expected[4], 1000.0 * 70.0 / 256.0, 1e-9);
+}
+
+TEST(BinHistogram, AFlatPileIsFarFromTheCurveAndAFewBallsAreTooFewToJudge) {
+    const BinHistogram flat = binHistogram(eightRows(), landed(std::vector<int>(9, 100)));
+    EXPECT_EQ(flat.legend[3].rfind("far from the curve: chi-squared ", 0), 0u) << flat.legend[3];
+    EXPECT_NE(flat.legend[3].find("> 16.8"), std::string::npos) << flat.legend[3];
+    const BinHistogram few = binHistogram(eightRows(), landed({0, 0, 0, 1, 2, 1}, 900));
+    EXPECT_EQ(few.legend[0], "bars: balls in each bin (4 landed, 900 not yet in the bins)");
+    EXPECT_EQ(few.legend[3], "too few balls yet to compare with the curve");
+}
+
+TEST(BinHistogram, BinsWithoutAnExpectationOnlyCount) {
+    Bins b = eightRows();
+    b.binomial.reset();
+    ParticleArrays p = landed({1, 2});
+    p.x.push_back(-3.0);  // below the top, left of the bins
+    p.y.push_back(6.0);
+    const BinHistogram h = binHistogram(b, p);
+    ASSERT_EQ(h.legend.size(), 1u);
+    EXPECT_EQ(h.legend[0], "bars: balls in each bin (3 landed, 1 outside the bins)");
+    EXPECT_TRUE(h.now.expected.empty());
+}
+
+TEST(BinHistogram, TheNormalCurveHasTheBinomialsMeanSpreadAndTotal) {
+    const BinomialExpectation b{8, 0.5};
+    double sum = 0.0;
+    for (int i = -400; i <= 1200; ++i)
+        sum += normalCount(i / 100.0, b, 1000.0) / 100.0;
+    EXPECT_NEAR(sum, 1000.0, 1e-3);  // the tails beyond 5.6 sigma are left out
+    EXPECT_NEAR(normalCount(4.0, b, 1000.0), 1000.0 / (std::sqrt(2.0) * std::sqrt(2.0 * M_PI)),
+                1e-9);
+    EXPECT_LT(normalCount(5.0, b, 1000.0), normalCount(4.0, b, 1000.0));
+    EXPECT_EQ(normalCount(1.0, {3, 1.0}, 10.0), 0.0);  // no spread: no curve
+    EXPECT_EQ(probabilityText(0.5), "1/2");
+    EXPECT_EQ(probabilityText(0.25), "0.25");
+}
+
+class BinHistogramDrawTest : public OffscreenTest {
+  protected:
+    BinHistogramDrawTest() : OffscreenTest(800) {}
+    int count(SDL_Color c, const SDL_Rect& r, int tol = 10) const {
+        int n = 0;
+        for (int y = r.y; y < r.y + r.h; ++y) {
+            for (int x = r.x; x < r.x + r.w; ++x) {
+                const SDL_Color p = pixel(x, y);
+                n += std::abs(p.r - c.r) <= tol && std::abs(p.g - c.g) <= tol &&
+                     std::abs(p.b - c.b) <= tol;
+            }
+        }
+        return n;
+    }
+};
+
+TEST_F(BinHistogramDrawTest, DrawsTheBarsTheDotsAndTheNormalCurveInItsBox) {
+    LayoutRequest req;
+    req.width = 800;
+    req.height = 800;
+    req.bins = true;
+    const PanelLayout layout = layoutPanels(req);
+    ASSERT_GT(layout.bins.w, 0);
+    EXPECT_EQ(layout.bins.h, kBinsMaxHeight);
+    World w;
+    AnalysisOverlays overlays;
+    ViewOptions view;
+    const std::optional<BinHistogram> h = binHistogram(eightRows(), landed(kBell));
+    overlays.draw(sdl_, *font_, w, sampleObservables(w), camera_, TimeSeries(2), view, layout, h);
+    SDL_RenderPresent(sdl_);
+    // The plot area, below the legend's lines.
+    const SDL_Rect plot{layout.bins.x + 44, layout.bins.y + 4 * font_->lineHeight() + 10,
+                        layout.bins.w - 54, layout.bins.h - 6 * font_->lineHeight() - 16};
+    EXPECT_GT(count(kBinBarColor, plot), 2000);
+    EXPECT_GT(count(kNormalCurveColor, plot, 0), 100);
+    EXPECT_GT(count(kBinomialDotColor, plot, 0), 9 * 20);
+    // The middle bar is the tallest: its colour reaches higher than the first bar's.
+    const auto topOf = [&](int column) {
+        for (int y = plot.y; y < plot.y + plot.h; ++y) {
+            const SDL_Color p = pixel(column, y);
+            if (std::abs(p.r - kBinBarColor.r) <= 10 && std::abs(p.g - kBinBarColor.g) <= 10)
+                return y;
+        }
+        return plot.y + plot.h;
+    };
+    const float binW = static_cast<float>(plot.w) / 9.f;
+    EXPECT_LT(topOf(plot.x + static_cast<int>(4.3f * binW)),
+              topOf(plot.x + static_cast<int>(1.3f * binW)));
+    // Nothing outside its box.
+    SDL_Rect left{0, 0, layout.bins.x - 1, 800};
+    EXPECT_EQ(count(kBinBarColor, left), 0);
+}
+
+class SessionBinsTest : public TempDirTest {
+  protected:
+    SessionBinsTest() : TempDirTest("psb-session-bins") {}
+    [[nodiscard]] Session session() const {
+        SessionOptions o;
+        o.saveTo = dir_ / "save.json";
+        o.paused = true;
+        o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
+        return Session(makeWorld(psb::defaultScene()), "default", o);
+    }
+    void writeBoard() const {
+        std::ofstream(dir_ / "board.json") << R"({"version": 3, "name": "board",
+            "world": {"width": 1, "height": 1},
+            "bins": {"edges": [0, 0.5, 1], "top": 0.5,
+                     "expected": {"binomial": {"trials": 1, "p": 0.5}}}})";
+    }
+};
+
+TEST_F(SessionBinsTest, AScenesBinsAreShownUnlessSwitchedOffAndKeptBySaveAndUndo) {
+    Session s = session();
+    EXPECT_FALSE(s.sceneBins());
+    EXPECT_FALSE(s.binsShown());  // the default scene has none
+    writeBoard();
+    s.apply(cmd::OpenFile{dir_ / "board.json"});
+    ASSERT_TRUE(s.sceneBins());
+    EXPECT_EQ(s.sceneBins()->edges, (std::vector<double>{0, 0.5, 1}));
+    EXPECT_TRUE(s.binsShown());
+    s.apply(cmd::SetShow{cmd::ShowOption::Bins, false});
+    EXPECT_FALSE(s.binsShown());
+    s.apply(cmd::SetShow{cmd::ShowOption::Bins, true});
+    EXPECT_TRUE(s.binsShown());
+
+    s.apply(cmd::SaveAs{dir_ / "saved.json"});
+    EXPECT_EQ(loadScene(dir_ / "saved.json").bins, s.sceneBins());
+
+    s.apply(cmd::OpenFile{findAsset("scenes/01-original.json")});
+    EXPECT_FALSE(s.sceneBins());
+    EXPECT_FALSE(s.binsShown());
+    s.apply(cmd::Undo{});  // back to the board, bins and all
+    ASSERT_TRUE(s.sceneBins());
+    EXPECT_TRUE(s.binsShown());
+    s.apply(cmd::Reset{});
+    EXPECT_TRUE(s.sceneBins());
+}
+
+TEST_F(SessionBinsTest, TheGaltonPresetHasBinsForEachRowCount) {
+    Session s = session();
+    s.apply(cmd::OpenFile{findAsset("scenes/09-galton-board.json")});
+    ASSERT_TRUE(s.sceneBins());
+    ASSERT_TRUE(s.sceneBins()->binomial);
+    EXPECT_EQ(s.sceneBins()->size(), static_cast<std::size_t>(s.sceneBins()->binomial->trials) + 1);
+    EXPECT_TRUE(s.binsShown());
+}
+
+}  // namespace
+}  // namespace psb::app
