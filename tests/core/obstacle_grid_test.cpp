@@ -92,5 +92,62 @@ TEST(ObstacleGrid, RebuildsForAChangedList) {
     EXPECT_EQ(out, std::vector<std::uint32_t>{1});
 }
 
+/// The exact distance from (x, y) to the nearest obstacle's surface, by brute force.
+double surfaceDistance(const Obstacles& obstacles, double x, double y) {
+    double d = INFINITY;
+    for (const Obstacle& o : obstacles)
+        d = std::min(d, coreDistance(o, x, y) - o.radius);
+    return d;
+}
+
+TEST(ObstacleGrid, ClearanceNeverExceedsTheDistanceToAnObstacle) {
+    // A lower bound everywhere (inside, near and far from the obstacles, outside the grid), and
+    // never below the true distance or the pad, whichever is less.
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> pos(0.0, 200.0), small(0.05, 1.5), len(-15.0, 15.0);
+    Obstacles obstacles;
+    for (int k = 0; k < 120; ++k) {
+        const Vec2 a(pos(rng), pos(rng));
+        if (k % 3 == 0) {
+            obstacles.push_back(Obstacle::peg(a, small(rng)));
+        } else {
+            obstacles.push_back(Obstacle::segment(a, a + Vec2(len(rng), len(rng)), small(rng)));
+        }
+    }
+    for (const double pad : {0.0, 0.7, 3.0}) {
+        ObstacleGrid grid;
+        grid.build(obstacles, pad);
+        int far = 0;
+        for (int q = 0; q < 20000; ++q) {
+            const double x = pos(rng) * 1.4 - 40.0, y = pos(rng) * 1.4 - 40.0;
+            const double truth = std::max(0.0, surfaceDistance(obstacles, x, y));
+            const double c = grid.clearance(x, y);
+            ASSERT_LE(c, truth * (1.0 + 1e-12) + 1e-12) << "at " << x << ", " << y;
+            ASSERT_GE(c, std::min(truth, pad) * (1.0 - 1e-12) - 1e-12) << "at " << x << ", " << y;
+            far += c > pad + 2.0 * grid.cellSize();
+        }
+        EXPECT_GT(far, 1000) << "pad " << pad;  // the rings around an empty cell count
+    }
+    EXPECT_EQ(ObstacleGrid{}.clearance(1.0, 1.0), INFINITY);
+    ObstacleGrid grid;
+    grid.build(obstacles, 1.0);
+    EXPECT_EQ(grid.clearance(NAN, 1.0), 0.0);
+    EXPECT_EQ(grid.clearance(1.0, INFINITY), 0.0);
+}
+
+TEST(ObstacleGrid, ClearanceFarFromALoneObstacleReachesAcrossManyCells) {
+    // One peg at the centre of a 1000 m square of pegs' worth of cells: a point 300 m away has
+    // no obstacle within about 300 m, and the clearance knows it without looking at each cell.
+    Obstacles obstacles{Obstacle::peg(Vec2(500.0, 500.0), 1.0), Obstacle::peg(Vec2(0.0, 0.0), 1.0),
+                        Obstacle::peg(Vec2(1000.0, 1000.0), 1.0)};
+    ObstacleGrid grid;
+    grid.build(obstacles, 2.0);
+    const double truth = surfaceDistance(obstacles, 800.0, 500.0);
+    const double c = grid.clearance(800.0, 500.0);
+    EXPECT_LE(c, truth);
+    // At most 255 cells of 2 m are known empty, less one ring and the pad.
+    EXPECT_GT(c, std::min(truth, 254.0 * grid.cellSize()) - 2.0 * grid.cellSize());
+}
+
 }  // namespace
 }  // namespace psb
