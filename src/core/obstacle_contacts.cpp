@@ -224,17 +224,26 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
 
 /// Sets slot i's free disc around (x, y): as wide as the grid's clearance there and, with walls,
 /// inside the box; less a hair (relative to the distances and coordinates involved) so that
-/// rounding never lets a move inside it graze an obstacle or a wall. None for a point that is
-/// not finite.
+/// rounding never lets a move inside it graze an obstacle or a wall. Kept in single precision,
+/// half the memory: the centre is rounded, and the radius shrunk by the rounding and rounded
+/// down, so that the stored disc lies inside the exact one. None for a point that is not
+/// finite.
 void setFreeDisc(StepContext& ctx, std::size_t i, const ObstacleGrid& grid, const WorldDef& def,
                  double x, double y) {
-    const bool finite = std::isfinite(x) && std::isfinite(y);
-    double clearance = finite ? grid.clearance(x, y) : 0.0;
+    ctx.freeX[i] = ctx.freeY[i] = 0.0f;
+    ctx.freeRadius[i] = -1.0f;
+    if (!std::isfinite(x) || !std::isfinite(y)) return;
+    double clearance = grid.clearance(x, y);
     if (def.walls) clearance = std::min({clearance, x, def.width - x, y, def.height - y});
-    ctx.freeX[i] = finite ? x : 0.0;
-    ctx.freeY[i] = finite ? y : 0.0;
-    ctx.freeRadius[i] =
-        finite ? clearance * (1.0 - 1e-9) - 1e-9 * (std::abs(x) + std::abs(y)) : -1.0;
+    const float cx = static_cast<float>(x), cy = static_cast<float>(y);
+    const double shift = std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
+    const double radius = clearance * (1.0 - 1e-9) - 1e-9 * (std::abs(x) + std::abs(y)) - shift;
+    float r = static_cast<float>(radius);
+    if (static_cast<double>(r) > radius) r = std::nextafter(r, -INFINITY);
+    if (!std::isfinite(cx) || !std::isfinite(cy) || !(r >= 0.0f)) return;
+    ctx.freeX[i] = cx;
+    ctx.freeY[i] = cy;
+    ctx.freeRadius[i] = r;
 }
 
 /// The grid's pad: a quarter more than the particles' mean reach (radius plus this step's
@@ -285,7 +294,7 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
     }
     ctx.freeX.resize(n);
     ctx.freeY.resize(n);
-    ctx.freeRadius.resize(n, -1.0);
+    ctx.freeRadius.resize(n, -1.0f);
     parallel::forBlocks(ctx.threads, n, [&](std::size_t blk, std::size_t begin, std::size_t end) {
         std::vector<std::uint32_t>& candidates = ctx.obstacleCandidates[blk];
         std::vector<std::uint32_t>& nearby = ctx.obstacleNearby[blk];
@@ -349,9 +358,9 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
         const double* px = p.x.data();
         const double* py = p.y.data();
         const double* pr = p.radius.data();
-        const double* fx = ctx.freeX.data();
-        const double* fy = ctx.freeY.data();
-        const double* fr = ctx.freeRadius.data();
+        const float* fx = ctx.freeX.data();
+        const float* fy = ctx.freeY.data();
+        const float* fr = ctx.freeRadius.data();
         // 0. The free disc: a particle that starts and ends the step inside its slot's free
         // disc sweeps through a disc that no obstacle and no wall enters, and so touches none and
         // is left alone by the wall stage. Its margin, the least of the room left on those
@@ -359,9 +368,9 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
         // not a number is one the stage below leaves alone anyway.)
         auto margin = [=](std::size_t i) {
             const double x0 = sx[i], y0 = sy[i], x1 = px[i], y1 = py[i];
-            const double room = fr[i] - pr[i];
-            const double d0 = (x0 - fx[i]) * (x0 - fx[i]) + (y0 - fy[i]) * (y0 - fy[i]);
-            const double d1 = (x1 - fx[i]) * (x1 - fx[i]) + (y1 - fy[i]) * (y1 - fy[i]);
+            const double cx = fx[i], cy = fy[i], room = fr[i] - pr[i];
+            const double d0 = (x0 - cx) * (x0 - cx) + (y0 - cy) * (y0 - cy);
+            const double d1 = (x1 - cx) * (x1 - cx) + (y1 - cy) * (y1 - cy);
             // The branch-free min and max (a < b ? a : b) let the compiler test several at once.
             const double m = room * room - (d0 > d1 ? d0 : d1);
             return m < room ? m : room;

@@ -16,9 +16,9 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
     constexpr std::uint32_t kDone = 0x80000000u;
 
     // The obstacles stage's free discs (step_context.hpp) move with their particles.
-    double* fx = ctx.freeX.data();
-    double* fy = ctx.freeY.data();
-    double* fr = ctx.freeRadius.data();
+    float* fx = ctx.freeX.data();
+    float* fy = ctx.freeY.data();
+    float* fr = ctx.freeRadius.data();
     const bool withDiscs = ctx.freeRadius.size() == n;
     auto copy = [&](std::size_t dst, std::size_t src) {
         if (withDiscs) {
@@ -47,8 +47,8 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
         const double invMass = p.invMass[s], radius = p.radius[s], mass = p.mass[s];
         const Color color = p.color[s];
         const ParticleId id = p.id[s];
-        const double discX = withDiscs ? fx[s] : 0.0, discY = withDiscs ? fy[s] : 0.0;
-        const double discRadius = withDiscs ? fr[s] : 0.0;
+        const float discX = withDiscs ? fx[s] : 0.0f, discY = withDiscs ? fy[s] : 0.0f;
+        const float discRadius = withDiscs ? fr[s] : 0.0f;
         std::size_t k = s;
         for (;;) {
             const std::size_t src = perm[k];

@@ -33,7 +33,7 @@ struct StepContext {
     /// Per storage slot, a disc that no obstacle's surface and no wall enters
     /// (obstacle_contacts.cpp): a fact about the obstacles and the box, whichever particle the
     /// slot holds. Radius < 0: none yet.
-    std::vector<double> freeX, freeY, freeRadius;
+    std::vector<float> freeX, freeY, freeRadius;
     std::array<double, 3> freeBox{};  ///< width, height, walls (1 or 0) the discs were made in
     std::vector<std::vector<std::uint32_t>> obstacleCandidates;  ///< one list per block
     std::vector<std::vector<std::uint32_t>> obstacleNearby;      ///< box queries, per block
