@@ -375,9 +375,14 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
             const double m = room * room - (d0 > d1 ? d0 : d1);
             return m < room ? m : room;
         };
+        // A particle that left its disc gets a new one where it is now; a particle far from
+        // every obstacle is then inside it and needs nothing more.
         auto visit = [&](std::size_t i) {
+            const double x1 = px[i], y1 = py[i];
+            setFreeDisc(ctx, i, grid, def, x1, y1);
+            if (margin(i) >= 0.0) return;
             contact(i, sx[i], sy[i]);
-            setFreeDisc(ctx, i, grid, def, px[i], py[i]);
+            if (px[i] != x1 || py[i] != y1) setFreeDisc(ctx, i, grid, def, px[i], py[i]);
         };
         // Nearly every particle away from the obstacles has a margin >= 0: work out runs of kRun
         // margins at a time, without a branch, and look at each particle of a run only if the
