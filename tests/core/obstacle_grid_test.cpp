@@ -19,11 +19,14 @@ double coreDistance(const Obstacle& o, double x, double y) {
     return std::hypot(x - qx, y - qy);
 }
 
-TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
-    std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> pos(0.0, 100.0), small(0.1, 2.0), len(-20.0, 20.0);
+/// `count` obstacles in the square [0, side]², pegs and segments in turn, radii (half
+/// thicknesses) in [minRadius, maxRadius], segments reaching up to `reach` along each axis.
+Obstacles randomObstacles(std::mt19937_64& rng, int count, double side, double minRadius,
+                          double maxRadius, double reach) {
+    std::uniform_real_distribution<double> pos(0.0, side), small(minRadius, maxRadius),
+        len(-reach, reach);
     Obstacles obstacles;
-    for (int k = 0; k < 300; ++k) {
+    for (int k = 0; k < count; ++k) {
         const Vec2 a(pos(rng), pos(rng));
         if (k % 2 == 0) {
             obstacles.push_back(Obstacle::peg(a, small(rng)));
@@ -31,6 +34,13 @@ TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
             obstacles.push_back(Obstacle::segment(a, a + Vec2(len(rng), len(rng)), small(rng)));
         }
     }
+    return obstacles;
+}
+
+TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> pos(0.0, 100.0), small(0.1, 2.0);
+    const Obstacles obstacles = randomObstacles(rng, 300, 100.0, 0.1, 2.0, 20.0);
     ObstacleGrid grid;
     grid.build(obstacles);
     EXPECT_TRUE(grid.builtFor(obstacles));
@@ -104,16 +114,8 @@ TEST(ObstacleGrid, ClearanceNeverExceedsTheDistanceToAnObstacle) {
     // A lower bound everywhere (inside, near and far from the obstacles, outside the grid), and
     // never below the true distance or the pad, whichever is less.
     std::mt19937_64 rng(21);
-    std::uniform_real_distribution<double> pos(0.0, 200.0), small(0.05, 1.5), len(-15.0, 15.0);
-    Obstacles obstacles;
-    for (int k = 0; k < 120; ++k) {
-        const Vec2 a(pos(rng), pos(rng));
-        if (k % 3 == 0) {
-            obstacles.push_back(Obstacle::peg(a, small(rng)));
-        } else {
-            obstacles.push_back(Obstacle::segment(a, a + Vec2(len(rng), len(rng)), small(rng)));
-        }
-    }
+    std::uniform_real_distribution<double> pos(0.0, 200.0);
+    const Obstacles obstacles = randomObstacles(rng, 120, 200.0, 0.05, 1.5, 15.0);
     for (const double pad : {0.0, 0.7, 3.0}) {
         ObstacleGrid grid;
         grid.build(obstacles, pad);
@@ -136,8 +138,8 @@ TEST(ObstacleGrid, ClearanceNeverExceedsTheDistanceToAnObstacle) {
 }
 
 TEST(ObstacleGrid, ClearanceFarFromALoneObstacleReachesAcrossManyCells) {
-    // One peg at the centre of a 1000 m square of pegs' worth of cells: a point 300 m away has
-    // no obstacle within about 300 m, and the clearance knows it without looking at each cell.
+    // Three pegs across a 1000 m square, cells of 2 m: a point 300 m from the nearest has no
+    // obstacle within about 300 m, and the clearance knows it without looking at each cell.
     Obstacles obstacles{Obstacle::peg(Vec2(500.0, 500.0), 1.0), Obstacle::peg(Vec2(0.0, 0.0), 1.0),
                         Obstacle::peg(Vec2(1000.0, 1000.0), 1.0)};
     ObstacleGrid grid;
