@@ -9,8 +9,9 @@
 //
 // Padding. Each cell lists every obstacle that comes within `pad` metres of it, so that one
 // lookup of the cell holding a point finds every obstacle whose surface lies within `pad` of
-// that point: the contact stage makes one such lookup per particle whose reach (diameter plus
-// this step's move) is at most `pad`, and a box query for the rare others. The stage chooses
+// that point: the contact stage makes one such lookup for each particle it looks at (those
+// outside their free discs) whose reach (diameter plus this step's move) is at most `pad`, and
+// a box query for the rare others. The stage chooses
 // the pad from the particles' reach; it changes only the speed, never which obstacles a
 // particle is tested against (the stage filters candidates by exact distance).
 //
