@@ -14,6 +14,11 @@
 // The bound: obstacles/1000/n:10000 at most 1.5 times the time per particle-step of
 // obstacles/0/n:10000.
 //
+// Frames: obstacles_frames/<count>/n:<N>/<mode>, the same scenes stepped as the app and
+// particle-sim step them: each iteration is 60 frames of 1/60 s, one World::step(1/60) each
+// (in `substep` mode 4 substeps per frame), storage reorders included; warm-up not timed.
+// items_per_second = particle-frames per second (CPU time).
+//
 // The exact mode: obstacles_exact/<count>/n:<N>, a dilute gas (packing 0.1, radius 1 m, e = 1,
 // no overlaps, as exact_gas_bench) with the same obstacles, particles that would overlap one
 // left out of both variants (so both have the same particles). Each iteration runs 60 frames of
@@ -71,6 +76,23 @@ void obstacles(benchmark::State& state, std::size_t count, std::size_t n) {
         static_cast<double>(w.counters().obstacleCollisions) / steps;
 }
 
+void obstacleFrames(benchmark::State& state, std::size_t count, std::size_t n, StepMode mode) {
+    World w = makeGasWorld(n, BroadPhaseKind::Auto, 1);
+    w.setSolver({.mode = mode, .dt = 1.0 / 60.0, .substeps = mode == StepMode::Substep ? 4 : 1});
+    w.setObstacles(randomObstacles(count, w.def().width, 11));
+    for (int f = 0; f < 60; ++f)
+        w.step(w.solver().dt);
+    w.resetCounters();
+    for (auto _ : state) {
+        for (int f = 0; f < 60; ++f)
+            w.step(w.solver().dt);
+    }
+    const double frames = 60.0 * static_cast<double>(state.iterations());
+    state.SetItemsProcessed(state.iterations() * 60 * static_cast<std::int64_t>(n));
+    state.counters["obstacle_hits_per_frame"] =
+        static_cast<double>(w.counters().obstacleCollisions) / frames;
+}
+
 /// Distance from (x, y) to the obstacle's surface (negative inside).
 double surfaceDistance(const Obstacle& o, const Vec2& p) {
     const Vec2 e = o.b - o.a;
@@ -112,6 +134,15 @@ void registerAll() {
                 "obstacles/" + std::to_string(count) + "/n:" + std::to_string(n);
             benchmark::RegisterBenchmark(name.c_str(), obstacles, count, n)
                 ->UseRealTime()
+                ->Unit(benchmark::kMillisecond);
+        }
+    }
+    for (const StepMode mode : {StepMode::Discrete, StepMode::Substep}) {
+        for (const std::size_t count : {0, 1000}) {
+            const std::string name = "obstacles_frames/" + std::to_string(count) + "/n:10000/" +
+                                     (mode == StepMode::Discrete ? "discrete" : "substep");
+            benchmark::RegisterBenchmark(name.c_str(), obstacleFrames, count, std::size_t{10000},
+                                         mode)
                 ->Unit(benchmark::kMillisecond);
         }
     }

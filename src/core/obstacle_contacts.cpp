@@ -4,6 +4,16 @@
 // Per particle, with p0 its centre at the start of the step and p1 where the earlier stages
 // left it:
 //
+//   0. The free disc. Each storage slot keeps a disc that no obstacle's surface and (with walls)
+//      no wall enters, made where its particle last needed the steps below (the grid's
+//      clearance there, obstacle_grid.hpp). A particle with p0 and p1 inside that disc, shrunk
+//      by its radius, sweeps through free space: it can touch nothing and the wall stage will
+//      not move it, so the steps below would leave it as it is, and it stops here. This is a
+//      fact about the obstacles and the box, whichever particle the slot holds, so it can only
+//      make the stage faster, never change what it does; the discs are dropped when the
+//      obstacles or the box change, and move with their particles when storage is reordered.
+//      Away from the obstacles a particle needs a new disc only every few hundred steps; the
+//      test is made for runs of particles at a time, without a branch per particle.
 //   1. Candidates. A particle with no obstacle surface within r + |p1 − p0| of p1 can touch
 //      none this step and stops here: the grid (obstacle_grid.hpp) decides that with one
 //      lookup, of the cell that holds p1, whenever that reach is within its pad (nearly always).
@@ -33,6 +43,7 @@
 // parallel blocks; the collision count is summed per block in block order (parallel.hpp).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <span>
 
@@ -258,6 +269,30 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
     out.obstacles += hits;
 }
 
+/// Sets slot i's free disc around (x, y): as wide as the grid's clearance there and, with walls,
+/// inside the box; less a hair (relative to the distances and coordinates involved) so that
+/// rounding never lets a move inside it graze an obstacle or a wall. Kept in single precision,
+/// half the memory: the centre is rounded, and the radius shrunk by the rounding and rounded
+/// down, so that the stored disc lies inside the exact one. None for a point that is not
+/// finite.
+void setFreeDisc(StepContext& ctx, std::size_t i, const ObstacleGrid& grid, const WorldDef& def,
+                 double x, double y) {
+    ctx.freeX[i] = ctx.freeY[i] = 0.0f;
+    ctx.freeRadius[i] = -1.0f;
+    if (!std::isfinite(x) || !std::isfinite(y)) return;
+    double clearance = grid.clearance(x, y);
+    if (def.walls) clearance = std::min({clearance, x, def.width - x, y, def.height - y});
+    const float cx = static_cast<float>(x), cy = static_cast<float>(y);
+    const double shift = std::sqrt((x - cx) * (x - cx) + (y - cy) * (y - cy));
+    const double radius = clearance * (1.0 - 1e-9) - 1e-9 * (std::abs(x) + std::abs(y)) - shift;
+    float r = static_cast<float>(radius);
+    if (static_cast<double>(r) > radius) r = std::nextafter(r, -INFINITY);
+    if (!std::isfinite(cx) || !std::isfinite(cy) || !(r >= 0.0f)) return;
+    ctx.freeX[i] = cx;
+    ctx.freeY[i] = cy;
+    ctx.freeRadius[i] = r;
+}
+
 /// The grid's pad: a quarter more than the particles' mean reach (radius plus this step's
 /// move), so that nearly every particle needs one cell lookup. Only speed depends on it.
 double choosePad(const ParticleArrays& p, const StepContext& ctx, bool haveStart) {
@@ -283,6 +318,7 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
         fallbacks += f;
     if (!ctx.obstacleGrid.builtFor(def.obstacles)) {
         ctx.obstacleGrid.build(def.obstacles, choosePad(p, ctx, haveStart));
+        ctx.freeRadius.clear();  // facts about the obstacles there were
     } else if (8 * fallbacks > n) {
         const double pad = choosePad(p, ctx, haveStart);
         if (pad > 1.5 * ctx.obstacleGrid.pad()) ctx.obstacleGrid.build(def.obstacles, pad);
@@ -298,14 +334,22 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
     ctx.obstacleWallHitScratch.resize(blocks);
     ctx.obstacleWallImpulseScratch.resize(blocks);
     ctx.obstacleFallbackScratch.assign(blocks, 0);
+    // The free discs keep clear of the walls of the box they were made in.
+    if (ctx.freeBox != std::array{def.width, def.height, def.walls ? 1.0 : 0.0}) {
+        ctx.freeRadius.clear();
+        ctx.freeBox = {def.width, def.height, def.walls ? 1.0 : 0.0};
+    }
+    ctx.freeX.resize(n);
+    ctx.freeY.resize(n);
+    ctx.freeRadius.resize(n, -1.0f);
     parallel::forBlocks(ctx.threads, n, [&](std::size_t blk, std::size_t begin, std::size_t end) {
         std::vector<std::uint32_t>& candidates = ctx.obstacleCandidates[blk];
         std::vector<std::uint32_t>& nearby = ctx.obstacleNearby[blk];
         Hits hits;
         std::uint64_t boxQueries = 0;
-        for (std::size_t i = begin; i < end; ++i) {
-            const double x0 = haveStart ? ctx.startX[i] : p.x[i];
-            const double y0 = haveStart ? ctx.startY[i] : p.y[i];
+        // Particle i against the obstacles near it, steps 1 to 3 above.
+        auto contact = [&](std::size_t i, double x0, double y0) {
+            // 1. Candidates.
             const double x1 = p.x[i], y1 = p.y[i];
             const double r = p.radius[i];
             const double mx = x1 - x0, my = y1 - y0, move2 = mx * mx + my * my;
@@ -323,16 +367,9 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
             };
             if (slack >= 0.0 && move2 <= slack * slack) {
                 const std::span<const std::uint32_t> listed = grid.cellAt(x1, y1);
-                if (listed.empty()) continue;
+                if (listed.empty()) return;
                 move = std::sqrt(move2);
-                bool touchable = false;
-                for (const std::uint32_t k : listed) {
-                    if (touches(k)) {
-                        touchable = true;
-                        break;
-                    }
-                }
-                if (!touchable) continue;
+                if (std::none_of(listed.begin(), listed.end(), touches)) return;
             } else {
                 move = std::sqrt(move2);
                 ++boxQueries;
@@ -355,14 +392,63 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
                     touchable = touchable || touches(k);
                 }
             }
-            if (!touchable) continue;
-            Body b{p.x[i], p.y[i], p.vx[i], p.vy[i], r, p.mass[i], p.invMass[i] == 0.0};
+            if (!touchable) return;
+            Body b{x1, y1, p.vx[i], p.vy[i], r, p.mass[i], p.invMass[i] == 0.0};
             collideOne<kFriction>(b, x0, y0, obstacles, candidates, def, hits);
             p.x[i] = b.x;
             p.y[i] = b.y;
             p.vx[i] = b.vx;
             p.vy[i] = b.vy;
+        };
+        const double* sx = haveStart ? ctx.startX.data() : p.x.data();
+        const double* sy = haveStart ? ctx.startY.data() : p.y.data();
+        const double* px = p.x.data();
+        const double* py = p.y.data();
+        const double* pr = p.radius.data();
+        const float* fx = ctx.freeX.data();
+        const float* fy = ctx.freeY.data();
+        const float* fr = ctx.freeRadius.data();
+        // 0. The free disc: a particle that starts and ends the step inside its slot's free
+        // disc sweeps through a disc that no obstacle and no wall enters, and so touches none and
+        // is left alone by the wall stage. Its margin, the least of the room left on those
+        // conditions, is then >= 0. (A margin can lose a NaN; a particle at a position that is
+        // not a number is one the stage below leaves alone anyway.)
+        auto margin = [=](std::size_t i) {
+            const double x0 = sx[i], y0 = sy[i], x1 = px[i], y1 = py[i];
+            const double cx = fx[i], cy = fy[i], room = fr[i] - pr[i];
+            const double d0 = (x0 - cx) * (x0 - cx) + (y0 - cy) * (y0 - cy);
+            const double d1 = (x1 - cx) * (x1 - cx) + (y1 - cy) * (y1 - cy);
+            // The branch-free min and max (a < b ? a : b) let the compiler test several at once.
+            const double m = room * room - (d0 > d1 ? d0 : d1);
+            return m < room ? m : room;
+        };
+        // A particle that left its disc gets a new one where it is now; a particle far from
+        // every obstacle is then inside it and needs nothing more.
+        auto visit = [&](std::size_t i) {
+            const double x1 = px[i], y1 = py[i];
+            setFreeDisc(ctx, i, grid, def, x1, y1);
+            if (margin(i) >= 0.0) return;
+            contact(i, sx[i], sy[i]);
+            if (px[i] != x1 || py[i] != y1) setFreeDisc(ctx, i, grid, def, px[i], py[i]);
+        };
+        // Nearly every particle away from the obstacles has a margin >= 0: work out runs of kRun
+        // margins at a time, without a branch, and look at each particle of a run only if the
+        // least of them is < 0 (as the wall stage does).
+        constexpr std::size_t kRun = 16;
+        std::size_t i = begin;
+        for (; i + kRun <= end; i += kRun) {
+            double m[kRun];
+            for (std::size_t k = 0; k < kRun; ++k)
+                m[k] = margin(i + k);
+            double least = m[0];
+            for (std::size_t k = 1; k < kRun; ++k)
+                least = least < m[k] ? least : m[k];
+            if (least >= 0.0) continue;
+            for (std::size_t k = 0; k < kRun; ++k)
+                if (!(m[k] >= 0.0)) visit(i + k);
         }
+        for (; i < end; ++i)
+            if (!(margin(i) >= 0.0)) visit(i);
         ctx.obstacleHitScratch[blk] = hits.obstacles;
         ctx.obstacleWallHitScratch[blk] = hits.walls;
         ctx.obstacleWallImpulseScratch[blk] = hits.wallImpulse;

@@ -15,6 +15,7 @@ void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
     cellStart_.clear();
     entries_.clear();
     occupied_.clear();
+    gap_.clear();
     nx_ = ny_ = 0;
     if (obstacles.empty()) return;
 
@@ -77,6 +78,7 @@ void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
     for (std::size_t c = 0; c + 1 < cellStart_.size(); ++c) {
         if (cellStart_[c + 1] > cellStart_[c]) occupied_[c >> 6] |= std::uint64_t{1} << (c & 63);
     }
+    measureGaps();
     std::vector<std::uint32_t> fill(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
         forEachCell(obstacles[k],
@@ -101,9 +103,96 @@ void ObstacleGrid::query(double x0, double y0, double x1, double y1,
     }
 }
 
+void ObstacleGrid::measureGaps() {
+    // The chessboard distance transform in two passes (Rosenfeld and Pfaltz): each pass carries
+    // the distance from the neighbours it has already visited.
+    const std::size_t nx = nx_, ny = ny_;
+    std::vector<std::uint16_t> d(nx * ny);
+    for (std::size_t c = 0; c < d.size(); ++c)
+        d[c] = ((occupied_[c >> 6] >> (c & 63)) & 1u) ? 0 : UINT16_MAX;
+    auto relax = [&](std::size_t c, std::size_t from) {
+        d[c] = std::min<std::uint16_t>(d[c], d[from] == UINT16_MAX ? UINT16_MAX : d[from] + 1);
+    };
+    for (std::size_t y = 0; y < ny; ++y) {
+        for (std::size_t x = 0; x < nx; ++x) {
+            const std::size_t c = y * nx + x;
+            if (x > 0) relax(c, c - 1);
+            if (y > 0) {
+                relax(c, c - nx);
+                if (x > 0) relax(c, c - nx - 1);
+                if (x + 1 < nx) relax(c, c - nx + 1);
+            }
+        }
+    }
+    for (std::size_t y = ny; y-- > 0;) {
+        for (std::size_t x = nx; x-- > 0;) {
+            const std::size_t c = y * nx + x;
+            if (x + 1 < nx) relax(c, c + 1);
+            if (y + 1 < ny) {
+                relax(c, c + nx);
+                if (x + 1 < nx) relax(c, c + nx + 1);
+                if (x > 0) relax(c, c + nx - 1);
+            }
+        }
+    }
+    gap_.resize(d.size());
+    for (std::size_t c = 0; c < d.size(); ++c)
+        gap_[c] = static_cast<std::uint8_t>(std::min<std::uint16_t>(d[c], UINT8_MAX));
+}
+
+double ObstacleGrid::clearance(double x, double y) const {
+    if (!std::isfinite(x) || !std::isfinite(y)) return 0.0;
+    if (obstacles_.empty()) return INFINITY;
+    // Every obstacle's surface lies at least the pad inside the grid's extent.
+    if (!(x >= x0_ && x <= x1_ && y >= y0_ && y <= y1_))
+        return pad_ + pointToRectangle(x, y, x0_, y0_, x1_, y1_);
+    const std::int64_t cx = column(x), cy = row(y);
+    const double lx = x0_ + static_cast<double>(cx) * cell_;
+    const double ly = y0_ + static_cast<double>(cy) * cell_;
+    const double edge = std::max(0.0, std::min({x - lx, lx + cell_ - x, y - ly, ly + cell_ - y}));
+    double nearest = INFINITY;  // exact, over the obstacles listed in the rings seen so far
+    auto visit = [&](std::int64_t col, std::int64_t rw) {
+        if (col < 0 || rw < 0 || col >= nx_ || rw >= ny_) return;  // lists nothing
+        const std::size_t c = static_cast<std::size_t>(rw) * nx_ + static_cast<std::size_t>(col);
+        if (((occupied_[c >> 6] >> (c & 63)) & 1u) == 0) return;
+        for (std::uint32_t k = cellStart_[c]; k < cellStart_[c + 1]; ++k) {
+            const Obstacle& o = obstacles_[entries_[k]];
+            double qx, qy;
+            nearestCorePoint(o, x, y, qx, qy);
+            nearest =
+                std::min(nearest, std::sqrt((x - qx) * (x - qx) + (y - qy) * (y - qy)) - o.radius);
+        }
+    };
+    // The cells within gap − 1 rings of this one list nothing (measureGaps).
+    const std::int64_t gap =
+        gap_[std::size_t{static_cast<std::uint64_t>(cy)} * nx_ + static_cast<std::uint64_t>(cx)];
+    if (gap > kClearanceRings) return pad_ + static_cast<double>(gap - 1) * cell_ + edge;
+    for (std::int64_t ring = gap;; ++ring) {
+        if (ring == 0) {
+            visit(cx, cy);
+        } else {
+            for (std::int64_t col = cx - ring; col <= cx + ring; ++col) {
+                visit(col, cy - ring);
+                visit(col, cy + ring);
+            }
+            for (std::int64_t rw = cy - ring + 1; rw <= cy + ring - 1; ++rw) {
+                visit(cx - ring, rw);
+                visit(cx + ring, rw);
+            }
+        }
+        // An obstacle listed in none of the cells within `ring` of the point's cell stays more
+        // than the pad away from all of them, so beyond the block's edge.
+        const double beyond = pad_ + static_cast<double>(ring) * cell_ + edge;
+        if (nearest <= beyond || ring >= kClearanceRings) {
+            return std::max(0.0, std::min(nearest, beyond));
+        }
+    }
+}
+
 std::size_t ObstacleGrid::memoryBytes() const {
     return sizeof(std::uint32_t) * (cellStart_.capacity() + entries_.capacity()) +
-           sizeof(std::uint64_t) * occupied_.capacity() + sizeof(Obstacle) * obstacles_.capacity();
+           sizeof(std::uint64_t) * occupied_.capacity() + gap_.capacity() +
+           sizeof(Obstacle) * obstacles_.capacity();
 }
 
 }  // namespace psb

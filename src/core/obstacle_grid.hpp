@@ -9,8 +9,9 @@
 //
 // Padding. Each cell lists every obstacle that comes within `pad` metres of it, so that one
 // lookup of the cell holding a point finds every obstacle whose surface lies within `pad` of
-// that point: the contact stage makes one such lookup per particle whose reach (diameter plus
-// this step's move) is at most `pad`, and a box query for the rare others. The stage chooses
+// that point: the contact stage makes one such lookup for each particle it looks at (those
+// outside their free discs) whose reach (diameter plus this step's move) is at most `pad`, and
+// a box query for the rare others. The stage chooses
 // the pad from the particles' reach; it changes only the speed, never which obstacles a
 // particle is tested against (the stage filters candidates by exact distance).
 //
@@ -22,6 +23,11 @@
 // to the cell's rectangle), so a long diagonal wall costs cells along its length, not its box's
 // area. A box query lists every obstacle of every cell a box touches, once each, in ascending
 // order.
+//
+// Clearance. Per cell the grid also keeps its chessboard distance to the nearest cell that lists
+// an obstacle (a distance transform, made once per build), so that a lower bound on the distance
+// from a point to every obstacle comes from a few cells even far from all of them: the contact
+// stage's free discs (obstacle_contacts.cpp).
 
 #include <algorithm>
 #include <cstdint>
@@ -36,6 +42,8 @@ class ObstacleGrid {
   public:
     static constexpr double kCellsPerObstacle = 16.0;
     static constexpr std::size_t kMaxCells = std::size_t{1} << 20;
+    /// How many rings of cells around a point's own clearance() looks at, at most.
+    static constexpr int kClearanceRings = 3;
 
     /// Bins `obstacles`, which must be valid (World checks them), replacing any earlier set, with
     /// every cell listing the obstacles within `pad` metres (>= 0) of it.
@@ -60,6 +68,17 @@ class ObstacleGrid {
         return {entries_.data() + cellStart_[c], entries_.data() + cellStart_[c + 1]};
     }
 
+    /// A lower bound on the distance from (x, y) to the surface of every obstacle (0 inside
+    /// one). The cells around the point's are searched ring by ring, from the first ring that
+    /// lists anything (the gap map says which) to kClearanceRings rings out: an obstacle listed
+    /// in none of the cells seen lies more than the pad beyond their block, so the bound is the
+    /// least of the exact distances to the obstacles listed there and the pad plus the point's
+    /// distance to the block's edge; the search stops as soon as a further ring cannot change
+    /// it. Past kClearanceRings empty rings, the bound of the empty block alone. Outside the
+    /// grid, the pad plus the distance to the grid. 0 for a point that is not finite; infinite
+    /// without obstacles.
+    [[nodiscard]] double clearance(double x, double y) const;
+
     [[nodiscard]] const Obstacles& obstacles() const { return obstacles_; }
     [[nodiscard]] double pad() const { return pad_; }
     /// The largest radius (or half-thickness) among the obstacles, metres.
@@ -71,6 +90,7 @@ class ObstacleGrid {
     [[nodiscard]] std::size_t memoryBytes() const;
 
   private:
+    void measureGaps();
     // Clamped into the grid; truncation is floor here because the clamp comes first.
     [[nodiscard]] std::uint32_t column(double x) const {
         const double f = (x - x0_) * invCell_;
@@ -90,6 +110,9 @@ class ObstacleGrid {
     std::uint32_t nx_ = 0, ny_ = 0;
     std::vector<std::uint32_t> cellStart_;
     std::vector<std::uint64_t> occupied_;  ///< bit c: cell c lists an obstacle
+    /// Per cell, the chessboard distance (in cells, at most 255) to the nearest cell that lists
+    /// an obstacle: 0 for such a cell; the cells less than that many rings out list nothing.
+    std::vector<std::uint8_t> gap_;
     std::vector<std::uint32_t> entries_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace psb {
 
@@ -14,7 +15,17 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
     const std::span<std::uint32_t> perm = ctx.grid.order();  // slot k receives old particle perm[k]
     constexpr std::uint32_t kDone = 0x80000000u;
 
-    auto copy = [&p](std::size_t dst, std::size_t src) {
+    // The obstacles stage's free discs (step_context.hpp) move with their particles.
+    float* fx = ctx.freeX.data();
+    float* fy = ctx.freeY.data();
+    float* fr = ctx.freeRadius.data();
+    const bool withDiscs = ctx.freeRadius.size() == n;
+    auto copy = [&](std::size_t dst, std::size_t src) {
+        if (withDiscs) {
+            fx[dst] = fx[src];
+            fy[dst] = fy[src];
+            fr[dst] = fr[src];
+        }
         p.x[dst] = p.x[src];
         p.y[dst] = p.y[src];
         p.vx[dst] = p.vx[src];
@@ -36,6 +47,8 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
         const double invMass = p.invMass[s], radius = p.radius[s], mass = p.mass[s];
         const Color color = p.color[s];
         const ParticleId id = p.id[s];
+        const float discX = withDiscs ? fx[s] : 0.0f, discY = withDiscs ? fy[s] : 0.0f;
+        const float discRadius = withDiscs ? fr[s] : 0.0f;
         std::size_t k = s;
         for (;;) {
             const std::size_t src = perm[k];
@@ -50,6 +63,11 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
                 p.mass[k] = mass;
                 p.color[k] = color;
                 p.id[k] = id;
+                if (withDiscs) {
+                    fx[k] = discX;
+                    fy[k] = discY;
+                    fr[k] = discRadius;
+                }
                 ids.relocate(id, static_cast<std::uint32_t>(k));
                 break;
             }

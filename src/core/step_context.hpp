@@ -1,6 +1,7 @@
 #pragma once
 // Per-step scratch, kept between steps so that a steady-state step allocates nothing.
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,11 @@ struct StepContext {
     // The obstacles stage (obstacle_contacts.cpp); untouched in a world without obstacles.
     ObstacleGrid obstacleGrid;
     std::vector<double> startX, startY;  ///< positions at the start of the step
+    /// Per storage slot, a disc that no obstacle's surface and no wall enters
+    /// (obstacle_contacts.cpp): a fact about the obstacles and the box, whichever particle the
+    /// slot holds. Radius < 0: none yet.
+    std::vector<float> freeX, freeY, freeRadius;
+    std::array<double, 3> freeBox{};  ///< width, height, walls (1 or 0) the discs were made in
     std::vector<std::vector<std::uint32_t>> obstacleCandidates;  ///< one list per block
     std::vector<std::vector<std::uint32_t>> obstacleNearby;      ///< box queries, per block
     std::vector<std::uint64_t> obstacleFallbackScratch;  ///< box queries last step, per block

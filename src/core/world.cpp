@@ -243,9 +243,11 @@ std::size_t World::memoryBytes() const {
                  c.quadtree.memoryBytes() + sizeof(ParticleStats) * c.statsScratch.capacity() +
                  sizeof(double) * c.wallImpulseScratch.capacity() +
                  sizeof(std::uint64_t) * c.wallHitScratch.capacity();
-        bytes += c.obstacleGrid.memoryBytes() +
-                 sizeof(double) * (c.startX.capacity() + c.startY.capacity()) +
-                 sizeof(std::uint64_t) * c.obstacleHitScratch.capacity();
+        bytes +=
+            c.obstacleGrid.memoryBytes() +
+            sizeof(double) * (c.startX.capacity() + c.startY.capacity()) +
+            sizeof(float) * (c.freeX.capacity() + c.freeY.capacity() + c.freeRadius.capacity()) +
+            sizeof(std::uint64_t) * c.obstacleHitScratch.capacity();
         for (const auto& list : c.obstacleCandidates)
             bytes += sizeof(std::uint32_t) * list.capacity();
         for (const auto& list : c.obstacleNearby)

@@ -259,6 +259,43 @@ TEST(ObstacleContacts, ResultDoesNotDependOnTheThreadCount) {
     EXPECT_GT(a.counters().obstacleCollisions, 300u);
 }
 
+// The stage passes over a particle whose whole move stays inside a disc it knows to be free of
+// obstacles (and walls) from an earlier step. These check that what is done to the world between
+// steps does not leave such a disc standing where it no longer holds.
+
+TEST(ObstacleContacts, AParticleMovedBetweenStepsIsSweptFromWhereItWasPut) {
+    // It runs beside a thin wall for a while, is then put on the wall's other side and thrown
+    // back to where it was: its move ends inside the disc of its earlier steps, but it starts
+    // outside it, across the wall.
+    World w = box(100.0);
+    w.addObstacle(Obstacle::segment(Vec2(50.0, 5.0), Vec2(50.0, 95.0), 0.05));
+    const ParticleId id =
+        w.add({.position = {60.0, 50.0}, .velocity = {0.0, 0.5}, .mass = 1.0, .radius = 0.5});
+    for (int k = 0; k < 20; ++k)
+        w.step(0.01);
+    w.setPosition(id, Vec2(45.0, 50.1));
+    w.setVelocity(id, Vec2(1500.0, 0.0));  // 15 m in the step: back to x = 60
+    w.step(0.01);
+    EXPECT_LT(w.get(id).position.x(), 50.0);
+    EXPECT_LT(w.get(id).velocity.x(), 0.0);
+    EXPECT_EQ(w.counters().obstacleCollisions, 1u);
+}
+
+TEST(ObstacleContacts, NewObstaclesClearWhatTheStageKnewOfTheOldOnes) {
+    // A peg added right in the path of a particle that had been moving through empty space.
+    World w = box(100.0);
+    w.addObstacle(Obstacle::peg(Vec2(10.0, 10.0), 1.0));
+    const ParticleId id =
+        w.add({.position = {50.0, 50.0}, .velocity = {1.0, 0.0}, .mass = 1.0, .radius = 0.5});
+    for (int k = 0; k < 20; ++k)
+        w.step(0.01);
+    w.addObstacle(Obstacle::peg(Vec2(51.8, 50.0), 1.0));
+    for (int k = 0; k < 100; ++k)
+        w.step(0.01);
+    EXPECT_LT(w.get(id).velocity.x(), 0.0);
+    EXPECT_EQ(w.counters().obstacleCollisions, 1u);
+}
+
 TEST(ObstacleContacts, AWorldWithoutObstaclesSkipsTheStage) {
     World w = box(10.0);
     w.add({.position = {5.0, 5.0}, .velocity = {1.0, 0.0}, .mass = 1.0, .radius = 0.5});

@@ -19,11 +19,14 @@ double coreDistance(const Obstacle& o, double x, double y) {
     return std::hypot(x - qx, y - qy);
 }
 
-TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
-    std::mt19937_64 rng(5);
-    std::uniform_real_distribution<double> pos(0.0, 100.0), small(0.1, 2.0), len(-20.0, 20.0);
+/// `count` obstacles in the square [0, side]², pegs and segments in turn, radii (half
+/// thicknesses) in [minRadius, maxRadius], segments reaching up to `reach` along each axis.
+Obstacles randomObstacles(std::mt19937_64& rng, int count, double side, double minRadius,
+                          double maxRadius, double reach) {
+    std::uniform_real_distribution<double> pos(0.0, side), small(minRadius, maxRadius),
+        len(-reach, reach);
     Obstacles obstacles;
-    for (int k = 0; k < 300; ++k) {
+    for (int k = 0; k < count; ++k) {
         const Vec2 a(pos(rng), pos(rng));
         if (k % 2 == 0) {
             obstacles.push_back(Obstacle::peg(a, small(rng)));
@@ -31,6 +34,13 @@ TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
             obstacles.push_back(Obstacle::segment(a, a + Vec2(len(rng), len(rng)), small(rng)));
         }
     }
+    return obstacles;
+}
+
+TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> pos(0.0, 100.0), small(0.1, 2.0);
+    const Obstacles obstacles = randomObstacles(rng, 300, 100.0, 0.1, 2.0, 20.0);
     ObstacleGrid grid;
     grid.build(obstacles);
     EXPECT_TRUE(grid.builtFor(obstacles));
@@ -90,6 +100,55 @@ TEST(ObstacleGrid, RebuildsForAChangedList) {
     std::vector<std::uint32_t> out;
     grid.query(7.5, 4.5, 8.5, 5.5, out);
     EXPECT_EQ(out, std::vector<std::uint32_t>{1});
+}
+
+/// The exact distance from (x, y) to the nearest obstacle's surface, by brute force.
+double surfaceDistance(const Obstacles& obstacles, double x, double y) {
+    double d = INFINITY;
+    for (const Obstacle& o : obstacles)
+        d = std::min(d, coreDistance(o, x, y) - o.radius);
+    return d;
+}
+
+TEST(ObstacleGrid, ClearanceNeverExceedsTheDistanceToAnObstacle) {
+    // A lower bound everywhere (inside, near and far from the obstacles, outside the grid), and
+    // never below the true distance or the pad, whichever is less.
+    std::mt19937_64 rng(21);
+    std::uniform_real_distribution<double> pos(0.0, 200.0);
+    const Obstacles obstacles = randomObstacles(rng, 120, 200.0, 0.05, 1.5, 15.0);
+    for (const double pad : {0.0, 0.7, 3.0}) {
+        ObstacleGrid grid;
+        grid.build(obstacles, pad);
+        int far = 0;
+        for (int q = 0; q < 20000; ++q) {
+            const double x = pos(rng) * 1.4 - 40.0, y = pos(rng) * 1.4 - 40.0;
+            const double truth = std::max(0.0, surfaceDistance(obstacles, x, y));
+            const double c = grid.clearance(x, y);
+            ASSERT_LE(c, truth * (1.0 + 1e-12) + 1e-12) << "at " << x << ", " << y;
+            ASSERT_GE(c, std::min(truth, pad) * (1.0 - 1e-12) - 1e-12) << "at " << x << ", " << y;
+            far += c > pad + 2.0 * grid.cellSize();
+        }
+        EXPECT_GT(far, 1000) << "pad " << pad;  // the rings around an empty cell count
+    }
+    EXPECT_EQ(ObstacleGrid{}.clearance(1.0, 1.0), INFINITY);
+    ObstacleGrid grid;
+    grid.build(obstacles, 1.0);
+    EXPECT_EQ(grid.clearance(NAN, 1.0), 0.0);
+    EXPECT_EQ(grid.clearance(1.0, INFINITY), 0.0);
+}
+
+TEST(ObstacleGrid, ClearanceFarFromALoneObstacleReachesAcrossManyCells) {
+    // Three pegs across a 1000 m square, cells of 2 m: a point 300 m from the nearest has no
+    // obstacle within about 300 m, and the clearance knows it without looking at each cell.
+    Obstacles obstacles{Obstacle::peg(Vec2(500.0, 500.0), 1.0), Obstacle::peg(Vec2(0.0, 0.0), 1.0),
+                        Obstacle::peg(Vec2(1000.0, 1000.0), 1.0)};
+    ObstacleGrid grid;
+    grid.build(obstacles, 2.0);
+    const double truth = surfaceDistance(obstacles, 800.0, 500.0);
+    const double c = grid.clearance(800.0, 500.0);
+    EXPECT_LE(c, truth);
+    // At most 255 cells of 2 m are known empty, less one ring and the pad.
+    EXPECT_GT(c, std::min(truth, 254.0 * grid.cellSize()) - 2.0 * grid.cellSize());
 }
 
 }  // namespace
