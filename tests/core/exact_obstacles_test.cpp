@@ -9,9 +9,9 @@
 #include <tuple>
 #include <vector>
 
-#include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/chi_square.hpp>
+#include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "exact_stepper.hpp"
