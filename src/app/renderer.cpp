@@ -145,6 +145,10 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
             ? std::sqrt(world.def().width * world.def().height / static_cast<double>(p.size()))
             : world.def().width;
     const double minExtra = minArrowExtra(camera.toScreen(spacing));
+    // A particle resting on the floor or a ramp in the discrete and substep modes keeps the
+    // speed one step of gravity gives it (the contact takes it back the next step): at rest,
+    // no arrow; its minimum arrow pointed through the floor like a leak.
+    const double resting = restingSpeed(world);
     std::vector<std::size_t> visible;
     visible.reserve(p.size());
     arrowLength_.clear();
@@ -155,11 +159,11 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
         // Arrows can reach beyond the disc, so cull with the arrow's reach when shown.
         // (sqrt rather than hypot: speeds cannot overflow a square, and hypot was a sixth of
         // the frame at 5·10⁴ particles.)
-        const double len =
-            options.arrows
-                ? arrowPixels(std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]),
-                              options.arrowSeconds, zoom, camera.toScreen(p.radius[i]), minExtra)
-                : 0.0;
+        const double speed = std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+        const double len = options.arrows && speed > resting
+                               ? arrowPixels(speed, options.arrowSeconds, zoom,
+                                             camera.toScreen(p.radius[i]), minExtra)
+                               : 0.0;
         const double reach = std::max(r, len);
         if (s.x() + reach < 0 || s.x() - reach > w || s.y() + reach < 0 || s.y() - reach > h) {
             continue;

@@ -44,6 +44,13 @@ double arrowSecondsFor(const World& world) {
     return std::min(kOriginal, longest / vrms);
 }
 
+double restingSpeed(const World& world) {
+    const SolverSettings& s = world.solver();
+    if (s.mode == StepMode::Exact) return 0.0;
+    const double dt = s.dt / (s.mode == StepMode::Substep ? std::max(1, s.substeps) : 1);
+    return 2.0 * world.def().gravity.norm() * dt;
+}
+
 double minArrowExtra(double spacingPixels) {
     return std::isfinite(spacingPixels) ? std::min(kMinArrowPixels, 0.5 * spacingPixels)
                                         : kMinArrowPixels;

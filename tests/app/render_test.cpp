@@ -169,6 +169,25 @@ TEST_F(RenderTest, AParticleAtRestHasNoArrow) {
     EXPECT_EQ(red, 0);
 }
 
+TEST_F(RenderTest, AParticleRestingUnderGravityInTheDiscreteModeHasNoArrow) {
+    // At rest on a floor it keeps the g dt of one step: no arrow (its minimum arrow pointed
+    // through the floor). Ten times that is motion, and shows one. (A strong g, so that at one
+    // pixel a metre g dt alone would draw the minimum arrow.)
+    const double g = 3000.0;
+    const auto redBelow = [&](double vy) {
+        World w = worldWith({200, 200}, {0, vy}, 20.0, {255, 0, 0});
+        w.setGravity(Vec2(0.0, g));
+        draw(w, {});
+        int red = 0;
+        for (int y = 222; y < 260; ++y)
+            red += pixel(200, y).r > 0;
+        return red;
+    };
+    const double gdt = g * SolverSettings{}.dt;
+    EXPECT_EQ(redBelow(gdt), 0);
+    EXPECT_GT(redBelow(10.0 * gdt), 5);
+}
+
 TEST_F(RenderTest, LabelsAppearOnlyWhenTheOverlayIsOn) {
     const World w = worldWith({200, 250}, {12, -3}, 20.0, {255, 0, 0});
     ViewOptions o;
