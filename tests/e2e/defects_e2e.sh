@@ -20,20 +20,9 @@
 #   +  keys 0 and Shift+1 open presets 10, 11  -> opened paused, the message names the key
 set -euo pipefail
 
-BIN=${1:?usage: defects_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
-OUT=${2:-$(pwd)/defects-e2e-out}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"
-rm -f "$OUT"/*.png "$OUT"/*.txt "$OUT"/*.log "$OUT"/*.json
-
-fail() {
-    echo "FAIL: $*" >&2
-    show_logs
-    echo "(log, screenshots and their text in $OUT)" >&2
-    exit 1
-}
 source "$HERE/harness.sh"
-need_test_tools
+e2e_begin defects "$@"
 
 start_xvfb "$OUT/xvfb.log" 1024x768x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

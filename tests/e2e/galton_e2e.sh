@@ -14,20 +14,9 @@
 #   3. the Show section's checkbox off     -> the panel is gone from the screen and its text
 set -euo pipefail
 
-BIN=${1:?usage: galton_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
-OUT=${2:-$(pwd)/galton-e2e-out}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"
-rm -f "$OUT"/*.png "$OUT"/*.txt "$OUT"/*.log "$OUT"/*.json
-
-fail() {
-    echo "FAIL: $*" >&2
-    show_logs
-    echo "(log, screenshots and their text in $OUT)" >&2
-    exit 1
-}
 source "$HERE/harness.sh"
-need_test_tools
+e2e_begin galton "$@"
 
 start_xvfb "$OUT/xvfb.log" 1300x900x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

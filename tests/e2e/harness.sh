@@ -1,5 +1,6 @@
 # Sourced by the end-to-end scripts (sandbox_e2e.sh, defects_e2e.sh, undo_e2e.sh, panel_e2e.sh,
-# obstacles_e2e.sh, tests/install/install_test.sh), which define fail() themselves: pass(), the ERR trap that
+# obstacles_e2e.sh, galton_e2e.sh, tests/install/install_test.sh): e2e_begin, which the app's
+# scripts start with (their arguments, output folder and fail()), pass(), the ERR trap that
 # names the failing line, the clean-up at exit of the program under test (APP_PID) and of the X
 # server (XVFB_PID), start_xvfb, and for the app's scripts start_app with the functions that
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
@@ -16,6 +17,30 @@ need_test_tools() {
             break
         fi
     done
+}
+
+# e2e_begin NAME "$@": the app's scripts' start. BIN and OUT from the script's arguments
+# (PATH/TO/particle-sandbox [OUTPUT_DIR], OUT by default ./NAME-e2e-out), OUT emptied of an
+# earlier run's pictures, texts, logs and saves, fail() (the message, the logs, where the output
+# is, exit 1), and the test tools.
+e2e_begin() {
+    local name=$1
+    shift
+    BIN=${1:?usage: ${name}_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
+    OUT=${2:-$(pwd)/${name}-e2e-out}
+    mkdir -p "$OUT"
+    rm -f "$OUT"/*.png "$OUT"/*.txt "$OUT"/*.log "$OUT"/*.json
+    fail() {
+        echo "FAIL: $*" >&2
+        show_logs
+        if [[ -f "$OUT/stdout.log" ]]; then
+            echo "--- stdout.log:" >&2
+            tail -n 30 "$OUT/stdout.log" >&2 || true
+        fi
+        echo "(log, screenshots and saves in $OUT)" >&2
+        exit 1
+    }
+    need_test_tools
 }
 
 XVFB_PID=""

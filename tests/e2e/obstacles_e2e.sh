@@ -15,20 +15,9 @@
 #   6. Esc, Esc                                                  -> asks (the move is unsaved), exits
 set -euo pipefail
 
-BIN=${1:?usage: obstacles_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
-OUT=${2:-$(pwd)/obstacles-e2e-out}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"
-rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
-
-fail() {
-    echo "FAIL: $*" >&2
-    show_logs
-    echo "(log and screenshots in $OUT)" >&2
-    exit 1
-}
 source "$HERE/harness.sh"
-need_test_tools
+e2e_begin obstacles "$@"
 
 start_xvfb "$OUT/xvfb.log" 1100x900x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

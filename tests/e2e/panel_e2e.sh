@@ -21,20 +21,9 @@
 #   8. Esc                                                       -> exits (reset: nothing unsaved)
 set -euo pipefail
 
-BIN=${1:?usage: panel_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
-OUT=${2:-$(pwd)/panel-e2e-out}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"
-rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
-
-fail() {
-    echo "FAIL: $*" >&2
-    show_logs
-    echo "(log and screenshots in $OUT)" >&2
-    exit 1
-}
 source "$HERE/harness.sh"
-need_test_tools
+e2e_begin panel "$@"
 
 start_xvfb "$OUT/xvfb.log" 1100x900x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy

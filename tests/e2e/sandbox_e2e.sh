@@ -36,20 +36,9 @@
 # Screenshots and the log are left in OUTPUT_DIR.
 set -euo pipefail
 
-BIN=${1:?usage: sandbox_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
-OUT=${2:-$(pwd)/e2e-out}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"
-rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
-
-fail() {
-    echo "FAIL: $*" >&2
-    show_logs
-    echo "(log and screenshots in $OUT)" >&2
-    exit 1
-}
 source "$HERE/harness.sh"
-need_test_tools
+e2e_begin sandbox "$@"
 
 # --- 0. bad command lines fail clearly, before any window -------------------------------
 set +e

@@ -15,22 +15,9 @@
 #   4. Space from the past                                                    -> carries on
 set -euo pipefail
 
-BIN=${1:?usage: undo_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]}
-OUT=${2:-$(pwd)/undo-e2e-out}
 HERE=$(cd "$(dirname "$0")" && pwd)
-mkdir -p "$OUT"
-rm -f "$OUT"/*.png "$OUT"/*.log "$OUT"/*.json
-
-fail() {
-    echo "FAIL: $*" >&2
-    show_logs
-    echo "--- stdout.log:" >&2
-    tail -n 30 "$OUT/stdout.log" >&2 || true
-    echo "(log, saves and screenshots in $OUT)" >&2
-    exit 1
-}
 source "$HERE/harness.sh"
-need_test_tools
+e2e_begin undo "$@"
 
 start_xvfb "$OUT/xvfb.log" || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
