@@ -60,6 +60,36 @@ double run(Session& s, int frames, double now, std::vector<World>* shown = nullp
     return now;
 }
 
+/// Where the Replay slider's handle sits for `t`: 0 at its left end, 1 at its right end.
+double handle(const TimelineView& t) {
+    const auto [lo, hi] = t.sliderRange();
+    return (t.current - lo) / (hi - lo);
+}
+
+TEST(SessionUndo, TheReplayHandleStaysAtThePresentThroughAnUndo) {
+    // Two seconds run and paused: the present, labelled 2.00 s, at the slider's right end. An
+    // edit and its undo clear the record; the state shown is still the present, and the handle
+    // stays where the label says it is (it used to jump to the left end, labelled the same).
+    Session s = session(false);
+    double now = run(s, 120, 0.0);
+    s.apply(cmd::TogglePause{});
+    EXPECT_DOUBLE_EQ(handle(s.timeline()), 1.0);
+    s.apply(cmd::SpawnRandom{});
+    now = run(s, 2, now);
+    s.apply(cmd::Undo{});
+    const TimelineView t = s.timeline();
+    EXPECT_DOUBLE_EQ(t.current, s.world().time()) << "the label is the time shown";
+    EXPECT_DOUBLE_EQ(handle(t), 1.0) << "the handle is at the present";
+    // Back in the recorded past the handle follows the frame shown.
+    s.apply(cmd::TogglePause{});
+    now = run(s, 60, now);
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::SeekBy{-0.5});
+    EXPECT_GT(handle(s.timeline()), 0.0);
+    EXPECT_LT(handle(s.timeline()), 1.0);
+    EXPECT_NEAR(s.timeline().current, s.world().time(), 1e-9);
+}
+
 TEST(SessionUndo, UndoesASpawnAndRedoesIt) {
     Session s = session();
     const World before = s.world();
