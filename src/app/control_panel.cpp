@@ -249,6 +249,11 @@ void ControlPanel::show(const Session& s) {
             "normal curve the board should give, and whether the difference is more than "
             "chance");
     }
+    if (s.sideColumnFolded()) {
+        widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
+                                "Folded away: the window leaves the charts no room beside the "
+                                "box (fold this panel with C, or widen the window)");
+    }
     int trails = static_cast<int>(v.trails);
     ImGui::SetNextItemWidth(130.f);
     if (ImGui::Combo("Trails", &trails, "off\0selected particle\0all particles\0")) {

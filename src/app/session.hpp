@@ -146,6 +146,11 @@ class Session {
     [[nodiscard]] bool profileShown() const { return showProfile_; }
     /// The control panel is open (else folded to a strip).
     [[nodiscard]] bool controlsShown() const { return showControls_; }
+    /// Whether a panel of the side column (plots, histograms, profile) is on.
+    [[nodiscard]] bool columnAsked() const;
+    /// Whether those panels are folded away: the window leaves the column no room beside the
+    /// box (sideColumnFits); the box keeps the width.
+    [[nodiscard]] bool sideColumnFolded() const;
     /// Pixels at the left of the window the control panel takes now (open or folded).
     [[nodiscard]] double controlsInset() const {
         return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;

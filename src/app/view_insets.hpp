@@ -48,4 +48,16 @@ inline constexpr int kSideColumnMaxWidth = 330;
     return std::clamp(static_cast<int>(0.4 * (windowWidth - leftInset)), lo, hi);
 }
 
+/// Narrowest room the box keeps beside the side column, pixels: a window that would leave it
+/// less folds the column's panels away (the box keeps the width; the HUD says so).
+inline constexpr int kBoxMinRoom = 240;
+
+/// Whether the side column fits beside the box in a window `windowWidth` pixels wide of which
+/// `leftInset` are the control panel's (times `scale`, the pixels per point).
+[[nodiscard]] inline bool sideColumnFits(int windowWidth, int leftInset, double scale = 1.0) {
+    const int column =
+        sideColumnWidth(windowWidth, leftInset, scale) + static_cast<int>(kPanelMargin * scale);
+    return windowWidth - leftInset - column >= static_cast<int>(kBoxMinRoom * scale);
+}
+
 }  // namespace psb::app
