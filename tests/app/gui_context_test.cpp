@@ -32,30 +32,28 @@ class GuiContextTest : public OffscreenTest {
         EXPECT_EQ(gui.endFrame(), 0);
         return clicked;
     }
-    static SDL_Event mouseButton(Uint32 type, int x = 0, int y = 0) {
+    /// A mouse event of `type` at window point (x, y): the left button, one wheel notch down.
+    static SDL_Event mouse(Uint32 type, int x, int y) {
         SDL_Event e{};
         e.type = type;
-        e.button.button = SDL_BUTTON_LEFT;
-        e.button.x = x;
-        e.button.y = y;
+        if (type == SDL_MOUSEMOTION) {
+            e.motion.x = x;
+            e.motion.y = y;
+        } else if (type == SDL_MOUSEWHEEL) {
+            e.wheel.y = -1;
+            e.wheel.preciseY = -1.f;
+            e.wheel.mouseX = x;
+            e.wheel.mouseY = y;
+        } else {
+            e.button.button = SDL_BUTTON_LEFT;
+            e.button.x = x;
+            e.button.y = y;
+        }
         return e;
     }
-    static SDL_Event motion(int x, int y) {
-        SDL_Event e{};
-        e.type = SDL_MOUSEMOTION;
-        e.motion.x = x;
-        e.motion.y = y;
-        return e;
-    }
-    static SDL_Event wheel(int x, int y) {
-        SDL_Event e{};
-        e.type = SDL_MOUSEWHEEL;
-        e.wheel.y = -1;
-        e.wheel.preciseY = -1.f;
-        e.wheel.mouseX = x;
-        e.wheel.mouseY = y;
-        return e;
-    }
+    static SDL_Event mouseButton(Uint32 type, int x = 0, int y = 0) { return mouse(type, x, y); }
+    static SDL_Event motion(int x, int y) { return mouse(SDL_MOUSEMOTION, x, y); }
+    static SDL_Event wheel(int x, int y) { return mouse(SDL_MOUSEWHEEL, x, y); }
 
     ImVec2 button0_, button1_;
 };

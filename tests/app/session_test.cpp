@@ -18,45 +18,16 @@
 #include "panel_layout.hpp"
 #include "scene_io.hpp"
 #include "session.hpp"
-#include "temp_dir_test.hpp"
+#include "session_fixture.hpp"
 
 namespace psb::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SessionTest : public TempDirTest {
+class SessionTest : public SessionFixture {
   protected:
-    SessionTest() : TempDirTest("psb-session") {}
-
-    [[nodiscard]] SessionOptions options() const {
-        SessionOptions o;
-        o.saveTo = dir_ / "save.json";
-        o.seed = 3;
-        o.paused = true;
-        o.viewportWidth = 800;
-        o.viewportHeight = 800;
-        o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
-        return o;
-    }
-    [[nodiscard]] Session session() const {
-        return Session(makeWorld(defaultScene()), "default", options());
-    }
-    static bool said(const std::vector<Notice>& notices, const std::string& text) {
-        return std::any_of(notices.begin(), notices.end(),
-                           [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
-    }
-    /// A drag with the left button from world point `from` to `to`, 10 moves over 100 ms,
-    /// then the hand holds still for `hold` seconds before the release.
-    static void drag(Session& s, Vec2 from, Vec2 to, double t0, double hold = 0.0) {
-        const Camera& c = s.camera();
-        s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
-        for (int k = 1; k <= 10; ++k) {
-            s.apply(
-                cmd::PointerMove{c.worldToScreen(from + (to - from) * (k / 10.0)), t0 + 0.01 * k});
-        }
-        s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1 + hold});
-    }
+    SessionTest() : SessionFixture("psb-session", TestWindow{}) {}
 };
 
 TEST_F(SessionTest, TheDefaultSceneIsAtHumanScale) {

@@ -12,6 +12,7 @@
 #include "assets.hpp"
 #include "same_world.hpp"
 #include "session.hpp"
+#include "session_fixture.hpp"
 
 namespace psb::app {
 namespace {
@@ -31,14 +32,9 @@ Session session(bool paused = true) {
     return Session(makeWorld(defaultScene()), "default", options(paused));
 }
 
-bool said(const std::vector<Notice>& notices, const std::string& text) {
-    return std::any_of(notices.begin(), notices.end(),
-                       [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
-}
-
 /// A press at `from`, ten moves to `to` over 0.1 s, a release there: a fling or a launch.
 /// Each move is a 60 Hz frame; `shown` collects the worlds they show.
-void drag(Session& s, Vec2 from, Vec2 to, double t0, std::vector<World>* shown = nullptr) {
+void dragFrames(Session& s, Vec2 from, Vec2 to, double t0, std::vector<World>* shown = nullptr) {
     const Camera& c = s.camera();
     s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
     for (int k = 1; k <= 10; ++k) {
@@ -115,12 +111,12 @@ TEST(SessionUndo, UndoesASpawnAndRedoesIt) {
 TEST(SessionUndo, UndoesALaunchAndAFling) {
     Session s = session();
     const World before = s.world();
-    drag(s, Vec2(1.0, 6.0), Vec2(2.0, 5.0), 1.0);  // empty space: a launch
+    dragFrames(s, Vec2(1.0, 6.0), Vec2(2.0, 5.0), 1.0);  // empty space: a launch
     ASSERT_EQ(s.world().size(), before.size() + 1);
     EXPECT_EQ(s.undoLabel(), "launch particle");
     const World launched = s.world();
     const ParticleId yellow = *s.world().pick(Vec2(5.2, 1.6));
-    drag(s, Vec2(5.2, 1.6), Vec2(5.2, 2.6), 2.0);  // a particle: a fling
+    dragFrames(s, Vec2(5.2, 1.6), Vec2(5.2, 2.6), 2.0);  // a particle: a fling
     EXPECT_EQ(s.undoLabel(), "fling particle");
     EXPECT_GT(s.world().get(yellow).velocity.y(), 0.0);
     s.apply(cmd::Undo{});
@@ -282,7 +278,7 @@ TEST_P(SessionStepBack, ShowsEachPastFrameBitForBitAndComesBackToThePresent) {
     std::vector<World> shown;
     double now = run(s, 40, 0.0, &shown);
     // A fling: the frames of the drag replay the hand's moves.
-    drag(s, Vec2(5.2, 1.6), Vec2(4.0, 3.0), now, &shown);
+    dragFrames(s, Vec2(5.2, 1.6), Vec2(4.0, 3.0), now, &shown);
     now = run(s, 20, now + 10 * kFrame, &shown);
     s.apply(cmd::TogglePause{});
     now = run(s, 1, now);
