@@ -105,13 +105,10 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (session.sideColumnFolded()) {
         // Said where the eye is: the charts asked for are not drawn over the box.
-        const std::vector<std::string> note =
-            wrapLines(hudFont,
-                      {session.controlsShown()
-                           ? "Charts folded away: no room beside the box (C folds the controls)"
-                           : "Charts folded away: no room beside the box (widen the window)"},
-                      hudRoom - 8);
-        o.hud.insert(o.hud.end(), note.begin(), note.end());
+        for (std::string& line :
+             wrapLines(hudFont, {foldedChartsNote(session.controlsShown())}, hudRoom - 8)) {
+            o.hud.push_back(std::move(line));
+        }
     }
     if (stats.labelsCrowded > 0 && session.view().labels) {
         o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +

@@ -959,7 +959,8 @@ void Session::fit() {
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
     const double left = controlsInset();
     const double top =
-        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left)))
+        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left),
+                                               sideColumnFolded()))
                   : in.top;
     double right = 0.0;
     if (column) {

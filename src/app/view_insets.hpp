@@ -28,8 +28,9 @@ struct ViewInsets {
     /// shrinking (see Session::fit).
     double inspectorColumn = 0.0;
     /// When set, the band above the box for a HUD `room` pixels wide (its lines wrap in a
-    /// narrow window): the larger of this and `top` is kept free.
-    std::function<double(int room)> topFor{};
+    /// narrow window), with the note that the side column is folded when `folded`: the larger
+    /// of this and `top` is kept free.
+    std::function<double(int room, bool folded)> topFor{};
 };
 
 /// Between the panels and the window's edges, pixels.

@@ -390,6 +390,29 @@ TEST_F(SessionTest, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFolde
     EXPECT_GT(shown, 0);
 }
 
+TEST_F(SessionTest, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
+    // The HUD says the charts are folded; the fitted box starts below that note too.
+    SessionOptions o = options();
+    o.viewportWidth = o.viewportHeight = 600;
+    o.insets.controls = kControlsWidth;
+    o.insets.controlsFolded = kControlsFoldedWidth;
+    std::vector<bool> asked;
+    o.insets.topFor = [&asked](int, bool folded) {
+        asked.push_back(folded);
+        return folded ? 195.0 : 60.0;
+    };
+    Session s(makeWorld(defaultScene()), "default", o);
+    ASSERT_FALSE(asked.empty());
+    EXPECT_FALSE(asked.back());
+    s.apply(cmd::TogglePlots{});
+    ASSERT_TRUE(s.sideColumnFolded());
+    EXPECT_TRUE(asked.back());
+    EXPECT_GE(s.camera().boxOnScreen(7.0, 7.0).topLeft.y(), 195.0 - 1e-9);
+    s.apply(cmd::ToggleControls{});  // folded to its strip: the column fits, no note
+    EXPECT_FALSE(s.sideColumnFolded());
+    EXPECT_FALSE(asked.back());
+}
+
 TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
     // A window wider than the box needs: the box moves left, keeping its size, so that the
     // inspector (bottom right, when a particle is clicked) does not cover it.
