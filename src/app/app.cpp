@@ -88,7 +88,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
     // In a narrow window the HUD's lines wrap (frame_view.cpp): the band grows with them,
     // measured on readings as wide as they get.
-    s.insets.topFor = [font = &sdl_->hudFont(), lh](int room) {
+    s.insets.topFor = [font = &sdl_->hudFont(), lh](int room, bool folded) {
         HudData wide;
         wide.simTime = 123.45;
         wide.particles = 10000;
@@ -97,7 +97,11 @@ App::App(const AppOptions& options) : options_(options) {
         wide.spawnMass = 0.00123;
         wide.spawnRadius = 0.00123;
         wide.arrowSeconds = 0.0123;
-        const std::size_t lines = wrapHudLines(*font, hudLines(wide), room - 8).size();
+        std::size_t lines = wrapHudLines(*font, hudLines(wide), room - 8).size();
+        if (folded) {  // the longer of the two notes
+            lines += std::max(wrapLines(*font, {foldedChartsNote(true)}, room - 8).size(),
+                              wrapLines(*font, {foldedChartsNote(false)}, room - 8).size());
+        }
         return static_cast<double>(lines + 1) * lh + 10.0;
     };
     s.insets.bottom = static_cast<double>(kMessageLines) * lh + 4.0 + kPanelMargin;

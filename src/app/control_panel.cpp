@@ -132,13 +132,12 @@ void ControlPanel::time(const Session& s) {
     tip("One frame forward again, towards the present (Shift+Right; PageDown: a second)");
     // Always there (greyed out until something is recorded), so that the rows below it do not
     // move as it comes and goes.
-    const bool recorded = t.latest > t.earliest;
+    const bool recorded = t.recorded();
     double at = t.current;
     bool dragging = false;
+    const auto [from, to] = t.sliderRange();
     ImGui::BeginDisabled(!s.paused() || !recorded);
-    if (widgets::slider("Replay", at, t.earliest, recorded ? t.latest : t.earliest + 1.0, "%.2f s",
-                        dragging) &&
-        recorded) {
+    if (widgets::slider("Replay", at, from, to, "%.2f s", dragging) && recorded) {
         out_.emplace_back(cmd::Seek{at});
     }
     mark("Replay");
@@ -249,6 +248,11 @@ void ControlPanel::show(const Session& s) {
             "How many balls landed in each bin, against the binomial distribution and the "
             "normal curve the board should give, and whether the difference is more than "
             "chance");
+    }
+    if (s.sideColumnFolded()) {
+        widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
+                                "Folded away: the window leaves the charts no room beside the "
+                                "box (fold this panel with C, or widen the window)");
     }
     int trails = static_cast<int>(v.trails);
     ImGui::SetNextItemWidth(130.f);

@@ -103,6 +103,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
         session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
     o.hud = wrapHudLines(hudFont, hudLines(hudData(session)), hudRoom - 8);
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
+    if (session.sideColumnFolded()) {
+        // Said where the eye is: the charts asked for are not drawn over the box.
+        for (std::string& line :
+             wrapLines(hudFont, {foldedChartsNote(session.controlsShown())}, hudRoom - 8)) {
+            o.hud.push_back(std::move(line));
+        }
+    }
     if (stats.labelsCrowded > 0 && session.view().labels) {
         o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
                         " left out where they would overlap (zoom in)");

@@ -7,6 +7,7 @@
 
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 namespace psb::app {
 
@@ -106,10 +107,29 @@ bool GuiContext::handleEvent(const SDL_Event& event) {
     }
     const ImGuiIO& io = ImGui::GetIO();
     switch (event.type) {
+        case SDL_MOUSEBUTTONDOWN: {
+            const ImVec2 at(static_cast<float>(event.button.x), static_cast<float>(event.button.y));
+            const bool taken = io.WantCaptureMouse || overWindow(at);
+            if (taken) takenButtons_ |= SDL_BUTTON(event.button.button);
+            return taken;
+        }
+        case SDL_MOUSEBUTTONUP: {
+            const Uint32 bit = SDL_BUTTON(event.button.button);
+            const bool taken = (takenButtons_ & bit) != 0;
+            takenButtons_ &= ~bit;
+            return taken || io.WantCaptureMouse;
+        }
+        case SDL_MOUSEWHEEL: {
+#if SDL_VERSION_ATLEAST(2, 26, 0)
+            const ImVec2 at(static_cast<float>(event.wheel.mouseX),
+                            static_cast<float>(event.wheel.mouseY));
+#else
+            const ImVec2 at = mouse_.value_or(ImVec2(-FLT_MAX, -FLT_MAX));
+#endif
+            return io.WantCaptureMouse || overWindow(at);
+        }
         case SDL_MOUSEMOTION:
-        case SDL_MOUSEBUTTONDOWN:
-        case SDL_MOUSEBUTTONUP:
-        case SDL_MOUSEWHEEL:
+            // A drag the world started goes on over a panel; ImGui's own drags are captured.
             return io.WantCaptureMouse;
         case SDL_KEYDOWN:
         case SDL_KEYUP:
@@ -120,6 +140,16 @@ bool GuiContext::handleEvent(const SDL_Event& event) {
         default:
             return false;
     }
+}
+
+bool GuiContext::overWindow(ImVec2 p) const {
+    makeCurrent();
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    for (const ImGuiWindow* w : g.Windows) {
+        if (!w->Active || w->Hidden || (w->Flags & ImGuiWindowFlags_NoMouseInputs) != 0) continue;
+        if (w->OuterRectClipped.Contains(p)) return true;
+    }
+    return false;
 }
 
 void GuiContext::beginFrame() {

@@ -45,8 +45,15 @@ class GuiContext {
     GuiContext& operator=(const GuiContext&) = delete;
 
     /// Passes an SDL event to ImGui; true when the controls take it (a click or wheel over a
-    /// panel, typing into a field), so the app should not act on it as well.
+    /// panel, typing into a field), so the app should not act on it as well. A press or a wheel
+    /// turn is the controls' by where it happens (over any window the last frame drew), not by
+    /// ImGui's capture flag alone: that flag is from the last frame, and a pointer that has
+    /// just entered a panel (a first click, a wheel turn as the hand arrives) is not in it yet.
+    /// The release of a press the controls took is theirs too.
     bool handleEvent(const SDL_Event& event);
+    /// Whether window point `p` is over a window (panel, list, open popup) the last frame
+    /// drew; tooltips, which take no input, do not count.
+    [[nodiscard]] bool overWindow(ImVec2 p) const;
 
     /// Starts a frame in the window: size and input from the platform backend, pixel scale
     /// from the renderer's output size over the window's size.
@@ -73,6 +80,7 @@ class GuiContext {
     ImGuiContext* context_ = nullptr;
     bool platform_ = false;        // the SDL2 platform backend is initialised
     std::optional<ImVec2> mouse_;  // window points, from the last mouse event
+    Uint32 takenButtons_ = 0;      // SDL_BUTTON masks of the presses the controls took
     std::unique_ptr<ImGuiRenderer> renderer_;
 };
 

@@ -15,6 +15,11 @@ std::string windowTitle(std::size_t particles, bool paused, const std::string& s
     return t;
 }
 
+std::string foldedChartsNote(bool controlsOpen) {
+    return controlsOpen ? "Charts folded away: no room beside the box (C folds the controls)"
+                        : "Charts folded away: no room beside the box (widen the window)";
+}
+
 std::vector<std::string> hudLines(const HudData& d) {
     char buf[200];
     std::vector<std::string> lines;

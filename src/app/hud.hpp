@@ -51,6 +51,9 @@ struct ProfileData {
 /// The status lines, top to bottom, numbers at human scale (quantity() of units.hpp); a time
 /// speed the steps cannot keep up with shows what is reached.
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);
+/// The HUD's note while the side column's charts are folded away (sideColumnFits), with the
+/// way to get them back: fold the control panel while it is open, else widen the window.
+[[nodiscard]] std::string foldedChartsNote(bool controlsOpen);
 
 /// The profile overlay, one line per stage then the frame's step and draw times.
 [[nodiscard]] std::vector<std::string> profileLines(const ProfileData& d);

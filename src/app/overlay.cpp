@@ -3,34 +3,20 @@
 #include <algorithm>
 
 #include "geometry_batch.hpp"
+#include "word_wrap.hpp"
 
 namespace psb::app {
 
 std::vector<std::string> wrapLines(const Font& font, const std::vector<std::string>& lines,
                                    int maxWidth) {
-    const int room = maxWidth - 8;  // textBoxSize's padding
+    const float room = static_cast<float>(maxWidth - 8);  // textBoxSize's padding
+    const MeasureText measure = [&font](std::string_view t) {
+        return static_cast<float>(font.measure(t));
+    };
     std::vector<std::string> out;
     for (const std::string& line : lines) {
-        if (font.measure(line) <= room) {
-            out.push_back(line);
-            continue;
-        }
-        std::string current;
-        std::size_t at = 0;
-        while (at < line.size()) {
-            const std::size_t space = line.find(' ', at + 1);
-            const std::size_t end = space == std::string::npos ? line.size() : space;
-            const std::string word = line.substr(at, end - at);  // with its leading space
-            if (!current.empty() && font.measure(current + word) > room) {
-                out.push_back(current);
-                const std::size_t first = word.find_first_not_of(' ');
-                current = "  " + (first == std::string::npos ? std::string() : word.substr(first));
-            } else {
-                current += word;
-            }
-            at = end;
-        }
-        if (!current.empty()) out.push_back(current);
+        for (std::string& part : wrapAtSpaces(line, room, measure, "  "))
+            out.push_back(std::move(part));
     }
     return out;
 }

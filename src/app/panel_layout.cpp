@@ -41,15 +41,19 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         }
     }
 
+    const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
+    const bool fits = sideColumnFits(r.width, r.left);
+    l.columnFolded = columnAsked && !fits;
     int top = 4;
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
+        if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;
         const SDL_Rect box = place(size, top);
         if (box.y + box.h > bottom || overlaps(box, l.messages)) continue;  // no room: left out
         *out = box;
         top = box.y + box.h + gap;
     }
-    if (!r.plots && !r.speeds && !r.bins) return l;
+    if (!fits || (!r.plots && !r.speeds && !r.bins)) return l;
 
     const int width = std::min(room, sideColumnWidth(r.width, r.left));
     if (width < kPanelMinWidth) return l;

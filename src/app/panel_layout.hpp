@@ -5,7 +5,9 @@
 // the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
 // column starts below the HUD when the window is too narrow for both side by side, panels shrink to
 // the room there is (the plots drop their least important rows first: rate, then py, then px), and
-// a panel that does not fit at its smallest is left out. No two rectangles returned overlap.
+// a panel that does not fit at its smallest is left out. A window too narrow for the column beside
+// the box (sideColumnFits) folds the column's panels away, and says so (columnFolded), instead of
+// laying them over the box. No two rectangles returned overlap.
 
 #include <SDL.h>
 
@@ -40,6 +42,9 @@ struct PanelLayout {
     SDL_Rect bins{};
     int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
     int plotRowHeight = 0;  ///< pixels per plot
+    /// The profile, plots or histograms were asked for but folded away: the window leaves the
+    /// side column no room beside the box (sideColumnFits).
+    bool columnFolded = false;
 };
 
 inline constexpr int kPanelGap = 6;                         ///< between panels, pixels

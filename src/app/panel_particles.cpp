@@ -69,7 +69,7 @@ void ControlPanel::selected(const Session& s) {
     mark("delete particle");
     tip("Remove this particle from the world (Ctrl+Z brings it back; Backspace or Delete "
         "removes a particle you hold)");
-    if (!ImGui::BeginTable("selected", 2, ImGuiTableFlags_SizingStretchProp)) return;
+    if (!widgets::beginRows("selected")) return;
     for (std::size_t k = 0; k < std::size(kFields); ++k) {
         const EditableField& f = kFields[k];
         auto& text = fieldText_[k];
@@ -103,9 +103,7 @@ void ControlPanel::selected(const Session& s) {
     row("kinetic energy", quantity(0.5 * p->mass * speed * speed, "J"), "\u00bd m v\u00b2");
     ImGui::EndTable();
     if (!s.editRefusal().empty()) {
-        ImGui::PushTextWrapPos(0.f);
-        ImGui::TextColored(ImVec4(1.f, 0.55f, 0.45f, 1.f), "Refused: %s", s.editRefusal().c_str());
-        ImGui::PopTextWrapPos();
+        widgets::wrappedColored(ImVec4(1.f, 0.55f, 0.45f, 1.f), "Refused: " + s.editRefusal());
     }
 }
 

@@ -70,12 +70,10 @@ void ControlPanel::physics(const Session& s) {
         mark("substeps");
         tip("Smaller steps per time step: more accurate, k times the work");
     }
-    ImGui::PushTextWrapPos(0.f);
-    ImGui::TextDisabled("%s", modeSentence(solver.mode));
+    widgets::wrappedDisabled(modeSentence(solver.mode));
     if (const std::string why = s.modeRefusal(StepMode::Exact); !why.empty()) {
-        ImGui::TextDisabled("Exact is not available: %s.", why.c_str());
+        widgets::wrappedDisabled("Exact is not available: " + why + ".");
     }
-    ImGui::PopTextWrapPos();
 
     const WorldDef& d = w.def();
     double e = d.restitution;

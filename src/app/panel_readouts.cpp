@@ -52,48 +52,60 @@ void ControlPanel::readouts(const Session& s) {
     const World& w = s.world();
     const ObservablesSample& o = s.observables();
     const bool gravity = w.def().gravity != Vec2::Zero();
-    if (ImGui::BeginTable("readouts", 2, ImGuiTableFlags_SizingStretchProp)) {
-        row("Time", quantity(w.time(), "s") + (s.paused() ? ", paused" : ""),
-            "Simulated time since the scene started");
-        row("Particles", std::to_string(w.size()));
-        row("Kinetic energy", quantity(o.kineticEnergy, "J"),
-            "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
+    if (widgets::beginRows("readouts")) {
+        // Each readout's name and value are marked, for the tests that check they never meet.
+        const auto readout = [this](const char* name, const std::string& value,
+                                    const char* help = nullptr) {
+            const widgets::RowRects r = row(name, value, help);
+            items_.push_back(
+                {std::string("readout ") + name, r.name0.x, r.name0.y, r.name1.x, r.name1.y});
+            items_.push_back({std::string("readout ") + name + " value", r.value0.x, r.value0.y,
+                              r.value1.x, r.value1.y});
+        };
+        readout("Time", quantity(w.time(), "s") + (s.paused() ? ", paused" : ""),
+                "Simulated time since the scene started");
+        readout("Particles", std::to_string(w.size()));
+        readout("Kinetic energy", quantity(o.kineticEnergy, "J"),
+                "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
         if (gravity) {
-            row("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
-                "Kinetic plus potential energy (m g h): what elastic collisions under gravity "
-                "keep constant");
+            readout("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
+                    "Kinetic plus potential energy (m g h): what elastic collisions under gravity "
+                    "keep constant");
         }
-        row("Momentum", vector(o.momentum, "kg m/s"),
-            "The total momentum, the sum of m v: walls and gravity change it, collisions between "
-            "particles never do");
-        row("  size", quantity(o.momentum.norm(), "kg m/s", false));
+        readout("Momentum", vector(o.momentum, "kg m/s"),
+                "The total momentum, the sum of m v: walls and gravity change it, collisions "
+                "between particles never do");
+        readout("  size", quantity(o.momentum.norm(), "kg m/s", false));
         ImGui::EndTable();
     }
 
     // Accuracy, in words.
-    ImGui::PushTextWrapPos(0.f);
     const double drift = s.accuracy().drift(monitoredEnergy(w));
     const char* which = gravity ? "Mechanical energy" : "Energy";
-    ImGui::Text("%s %s since your last change", which, keptWords(drift).c_str());
+    widgets::wrapped(std::string(which) + " " + keptWords(drift) + " since your last change");
     tip("How well the simulation keeps the energy it should keep. Collisions with restitution "
         "below 1, friction and your own changes (a fling, a launch) change it on purpose; the "
         "count starts again at each change.");
-    ImGui::TextUnformatted(overlapWords(s.accuracy().overlap(), s.spawn().typicalRadius).c_str());
+    widgets::wrapped(overlapWords(s.accuracy().overlap(), s.spawn().typicalRadius));
     tip("Real balls never overlap; a step-by-step simulation lets them, a little, between steps");
     if (w.solver().mode != StepMode::Exact && w.size() > 0) {
         const double d = stepsPerDiameter(w);
+        char buf[160];
         if (d > 1.0) {
-            ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
-                               "Fast particles move %.1f diameters a step: collisions can be "
-                               "missed (try more substeps or Exact)",
-                               d);
+            std::snprintf(buf, sizeof buf,
+                          "Fast particles move %.1f diameters a step: collisions can be missed "
+                          "(try more substeps or Exact)",
+                          d);
+            widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), buf);
         } else {
-            ImGui::Text("No collision can be missed: the fastest moves %.2f of its size a step", d);
+            std::snprintf(buf, sizeof buf,
+                          "No collision can be missed: the fastest moves %.2f of its size a step",
+                          d);
+            widgets::wrapped(buf);
         }
         tip("A particle that moves more than its own size in one step can pass through another "
             "without touching it; the exact mode never misses one");
     }
-    ImGui::PopTextWrapPos();
 }
 
 void ControlPanel::engine(const Session& s, const FrameStats& stats) {
@@ -101,7 +113,7 @@ void ControlPanel::engine(const Session& s, const FrameStats& stats) {
     mark("section Engine");
     if (!open) return;
     const World& w = s.world();
-    if (ImGui::BeginTable("engine", 2, ImGuiTableFlags_SizingStretchProp)) {
+    if (widgets::beginRows("engine")) {
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.0f", stats.fps);
         row("Frames per second", buf);
@@ -128,7 +140,7 @@ void ControlPanel::engine(const Session& s, const FrameStats& stats) {
     mark("Profile");
     tip("The last step's stages with their times, in a panel beside the box (keys O, F3)");
     const StepProfile& p = w.profile();
-    if (p.stageCount > 0 && ImGui::BeginTable("profile", 2, ImGuiTableFlags_SizingStretchProp)) {
+    if (p.stageCount > 0 && widgets::beginRows("profile")) {
         char buf[32];
         for (int k = 0; k < p.stageCount; ++k) {
             std::snprintf(buf, sizeof buf, "%.3f ms", p.stages[k].ms);

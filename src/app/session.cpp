@@ -941,14 +941,26 @@ void Session::quit() {
 // ---------------------------------------------------------------------------------------------
 // The view.
 
+bool Session::columnAsked() const {
+    return view_.plots || view_.speeds || showProfile_ || binsShown();
+}
+
+bool Session::sideColumnFolded() const {
+    const ViewInsets& in = options_.insets;
+    const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
+    return columnAsked() &&
+           !sideColumnFits(camera_.viewportWidth(), static_cast<int>(controlsInset()), scale);
+}
+
 void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
-    const bool column = view_.plots || view_.speeds || showProfile_ || binsShown();
+    const bool column = columnAsked() && !sideColumnFolded();
     const double w = world_.def().width, h = world_.def().height, margin = 10.0;
     const double left = controlsInset();
     const double top =
-        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left)))
+        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left),
+                                               sideColumnFolded()))
                   : in.top;
     double right = 0.0;
     if (column) {

@@ -29,6 +29,7 @@
 #include <optional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <particle_sandbox/time_series.hpp>
@@ -90,6 +91,14 @@ struct TimelineView {
     bool viewingPast = false;
     /// latest - current: how far back the frame shown is.
     [[nodiscard]] double secondsBack() const { return latest - current; }
+    /// Whether there is a past to go back to.
+    [[nodiscard]] bool recorded() const { return latest > earliest; }
+    /// The Replay slider's ends, seconds: the recorded span; with nothing recorded (a new
+    /// scene, just after an undo) the second before the frame shown, so that the present is at
+    /// the right end whatever was recorded, and the handle agrees with the time it is labelled.
+    [[nodiscard]] std::pair<double, double> sliderRange() const {
+        return recorded() ? std::pair{earliest, latest} : std::pair{current - 1.0, current};
+    }
 };
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
@@ -137,6 +146,11 @@ class Session {
     [[nodiscard]] bool profileShown() const { return showProfile_; }
     /// The control panel is open (else folded to a strip).
     [[nodiscard]] bool controlsShown() const { return showControls_; }
+    /// Whether a panel of the side column (plots, histograms, profile) is on.
+    [[nodiscard]] bool columnAsked() const;
+    /// Whether those panels are folded away: the window leaves the column no room beside the
+    /// box (sideColumnFits); the box keeps the width.
+    [[nodiscard]] bool sideColumnFolded() const;
     /// Pixels at the left of the window the control panel takes now (open or folded).
     [[nodiscard]] double controlsInset() const {
         return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;

@@ -1,5 +1,6 @@
 #include "text.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,9 +29,12 @@ Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelS
     }
     lineHeight_ = TTF_FontLineSkip(font_);
 
-    // Render each glyph, then pack them in one row of an atlas surface.
+    // Render each glyph, then pack them in rows of an atlas whose sides are powers of two: a
+    // texel's edge u = x / width is then exact in a float, and so is u × width. With any other
+    // width SDL's software renderer, which truncates u × width to a texel, took some glyphs'
+    // left edges one texel early and dropped a column ("(" in "energy (J)" lost its stroke).
     std::array<SDL_Surface*, kLast - kFirst + 1> images{};
-    int width = 0, height = 1;
+    int atlasWidth = 512;
     for (int c = kFirst; c <= kLast; ++c) {
         if (!printable(c)) continue;
         SDL_Surface* s =
@@ -39,14 +43,27 @@ Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelS
         int minx = 0, maxx = 0, miny = 0, maxy = 0, advance = 0;
         TTF_GlyphMetrics32(font_, static_cast<Uint32>(c), &minx, &maxx, &miny, &maxy, &advance);
         glyphs_[c - kFirst].advance = advance;
-        if (s != nullptr) {
-            glyphs_[c - kFirst].atlas = {width, 0, s->w, s->h};
-            width += s->w + 1;
-            height = std::max(height, s->h);
-        }
+        while (s != nullptr && s->w > atlasWidth)
+            atlasWidth *= 2;
     }
+    int x = 0, y = 0, rowHeight = 0;
+    for (int c = kFirst; c <= kLast; ++c) {
+        const SDL_Surface* s = images[c - kFirst];
+        if (s == nullptr) continue;
+        if (x + s->w > atlasWidth) {  // a new row, one transparent texel below the last
+            x = 0;
+            y += rowHeight + 1;
+            rowHeight = 0;
+        }
+        glyphs_[c - kFirst].atlas = {x, y, s->w, s->h};
+        x += s->w + 1;
+        rowHeight = std::max(rowHeight, s->h);
+    }
+    int height = 1;
+    while (height < y + rowHeight)
+        height *= 2;
     SDL_Surface* atlas =
-        SDL_CreateRGBSurfaceWithFormat(0, std::max(width, 1), height, 32, SDL_PIXELFORMAT_ARGB8888);
+        SDL_CreateRGBSurfaceWithFormat(0, atlasWidth, height, 32, SDL_PIXELFORMAT_ARGB8888);
     if (atlas == nullptr) throw std::runtime_error(std::string("glyph atlas: ") + SDL_GetError());
     SDL_FillRect(atlas, nullptr, SDL_MapRGBA(atlas->format, 255, 255, 255, 0));
     for (int c = kFirst; c <= kLast; ++c) {

@@ -28,8 +28,9 @@ struct ViewInsets {
     /// shrinking (see Session::fit).
     double inspectorColumn = 0.0;
     /// When set, the band above the box for a HUD `room` pixels wide (its lines wrap in a
-    /// narrow window): the larger of this and `top` is kept free.
-    std::function<double(int room)> topFor{};
+    /// narrow window), with the note that the side column is folded when `folded`: the larger
+    /// of this and `top` is kept free.
+    std::function<double(int room, bool folded)> topFor{};
 };
 
 /// Between the panels and the window's edges, pixels.
@@ -46,6 +47,18 @@ inline constexpr int kSideColumnMaxWidth = 330;
     const int lo = static_cast<int>(kSideColumnMinWidth * scale);
     const int hi = static_cast<int>(kSideColumnMaxWidth * scale);
     return std::clamp(static_cast<int>(0.4 * (windowWidth - leftInset)), lo, hi);
+}
+
+/// Narrowest room the box keeps beside the side column, pixels: a window that would leave it
+/// less folds the column's panels away (the box keeps the width; the HUD says so).
+inline constexpr int kBoxMinRoom = 240;
+
+/// Whether the side column fits beside the box in a window `windowWidth` pixels wide of which
+/// `leftInset` are the control panel's (times `scale`, the pixels per point).
+[[nodiscard]] inline bool sideColumnFits(int windowWidth, int leftInset, double scale = 1.0) {
+    const int column =
+        sideColumnWidth(windowWidth, leftInset, scale) + static_cast<int>(kPanelMargin * scale);
+    return windowWidth - leftInset - column >= static_cast<int>(kBoxMinRoom * scale);
 }
 
 }  // namespace psb::app

@@ -242,6 +242,37 @@ TEST_F(ControlPanelTest, APresetIsOpenedByItsName) {
     EXPECT_EQ(session_->sceneName(), "Newton's cradle");
 }
 
+TEST_F(ControlPanelTest, EveryReadoutsNameEndsBeforeItsValueBegins) {
+    // Under gravity (the "Mechanical energy" row), with text larger and larger against the
+    // panel's width (as a narrower panel would be): the names' column is as wide as its widest
+    // name, and the values wrap at spaces in the rest.
+    const auto& presets = session_->presets();
+    const auto galton = std::find_if(presets.begin(), presets.end(),
+                                     [](const SceneInfo& p) { return p.name == "Galton board"; });
+    ASSERT_NE(galton, presets.end());
+    session_->apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
+    for (const float pixels : {15.f, 19.f, 23.f}) {
+        // A new context: ImGui keeps a table's column widths from the frames that laid it out.
+        GuiOptions o;
+        o.font = findAsset("fonts/DejaVuSans.ttf");
+        o.fontPixels = pixels;
+        gui_ = std::make_unique<GuiContext>(sdl_, o);
+        frame();
+        frame();
+        for (const char* name :
+             {"Time", "Particles", "Kinetic energy", "Mechanical energy", "Momentum", "  size"}) {
+            const PanelItem* label = panel_.item(std::string("readout ") + name);
+            const PanelItem* value = panel_.item(std::string("readout ") + name + " value");
+            ASSERT_NE(label, nullptr) << name;
+            ASSERT_NE(value, nullptr) << name;
+            EXPECT_LT(label->x1, value->x0)
+                << name << " at " << pixels << " px: its name runs into its value";
+            EXPECT_LE(value->x1, kControlsWidth)
+                << name << " at " << pixels << " px: its value runs out of the panel";
+        }
+    }
+}
+
 TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
     EXPECT_EQ(panel_.item("selected mass"), nullptr);
     session_->apply(cmd::Select{session_->world().ids().front()});

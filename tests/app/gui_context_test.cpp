@@ -32,12 +32,28 @@ class GuiContextTest : public OffscreenTest {
         EXPECT_EQ(gui.endFrame(), 0);
         return clicked;
     }
-    static SDL_Event mouseButton(Uint32 type) {
+    /// A mouse event of `type` at window point (x, y): the left button, one wheel notch down.
+    static SDL_Event mouse(Uint32 type, int x, int y) {
         SDL_Event e{};
         e.type = type;
-        e.button.button = SDL_BUTTON_LEFT;
+        if (type == SDL_MOUSEMOTION) {
+            e.motion.x = x;
+            e.motion.y = y;
+        } else if (type == SDL_MOUSEWHEEL) {
+            e.wheel.y = -1;
+            e.wheel.preciseY = -1.f;
+            e.wheel.mouseX = x;
+            e.wheel.mouseY = y;
+        } else {
+            e.button.button = SDL_BUTTON_LEFT;
+            e.button.x = x;
+            e.button.y = y;
+        }
         return e;
     }
+    static SDL_Event mouseButton(Uint32 type, int x = 0, int y = 0) { return mouse(type, x, y); }
+    static SDL_Event motion(int x, int y) { return mouse(SDL_MOUSEMOTION, x, y); }
+    static SDL_Event wheel(int x, int y) { return mouse(SDL_MOUSEWHEEL, x, y); }
 
     ImVec2 button0_, button1_;
 };
@@ -76,6 +92,33 @@ TEST_F(GuiContextTest, ClicksOverAPanelAreTakenAndClicksElsewhereAreNot) {
     SDL_Event quit{};
     quit.type = SDL_QUIT;
     EXPECT_FALSE(gui.handleEvent(quit));
+}
+
+TEST_F(GuiContextTest, AFirstClickAfterThePointerEntersAPanelIsThePanels) {
+    // The pointer was over the box in the last frame; it moves onto the panel and presses
+    // before another frame is drawn (a quick hand, a loaded machine): ImGui's capture flag is
+    // still the box's, the press and its release are the panel's all the same.
+    GuiContext gui(sdl_);
+    gui.io().MousePos = ImVec2(250, 250);
+    frame(gui);
+    frame(gui);
+    ASSERT_FALSE(gui.wantsMouse());
+    EXPECT_FALSE(gui.handleEvent(motion(60, 60)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 60, 60)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 60, 60)));
+    // A press on the box is the world's, and so is its release over the panel.
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 250, 250)));
+    EXPECT_FALSE(gui.handleEvent(motion(60, 60)));
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 60, 60)));
+}
+
+TEST_F(GuiContextTest, AWheelTurnOverAPanelIsThePanelsEvenAsThePointerArrives) {
+    GuiContext gui(sdl_);
+    gui.io().MousePos = ImVec2(250, 250);
+    frame(gui);
+    frame(gui);
+    EXPECT_FALSE(gui.handleEvent(wheel(250, 250))) << "over the box the wheel zooms";
+    EXPECT_TRUE(gui.handleEvent(wheel(60, 60))) << "over the panel it is the panel's";
 }
 
 TEST_F(GuiContextTest, KeysGoToATextFieldBeingTypedIn) {

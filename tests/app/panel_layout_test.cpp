@@ -121,6 +121,33 @@ TEST(PanelLayout, TheInspectorTakesTheBottomRightAndThePanelsStackAboveIt) {
     EXPECT_LE(l.plots.y + l.plots.h, l.speeds.y - kPanelGap);
 }
 
+TEST(PanelLayout, AWindowTooNarrowForTheColumnBesideTheBoxFoldsItsPanelsAway) {
+    // 600x600 with the control panel open (300 px): the bins' histogram and the plots would
+    // leave the box 72 px; they fold away, and the layout says so.
+    LayoutRequest r = everythingOn(600, 600);
+    r.left = 300;
+    r.bins = true;
+    const PanelLayout folded = layoutPanels(r);
+    EXPECT_TRUE(folded.columnFolded);
+    EXPECT_EQ(folded.bins.w, 0);
+    EXPECT_EQ(folded.plots.w, 0);
+    EXPECT_EQ(folded.speeds.w, 0);
+    EXPECT_EQ(folded.profile.w, 0);
+    EXPECT_GT(folded.hud.w, 0);
+    // With the control panel folded to its strip the column fits again (the bins alone).
+    r.left = 40;
+    r.plots = r.speeds = false;
+    r.profile = r.inspector = {0, 0};
+    const PanelLayout shown = layoutPanels(r);
+    EXPECT_FALSE(shown.columnFolded);
+    EXPECT_GT(shown.bins.w, 0);
+    // Nothing asked for, nothing folded.
+    LayoutRequest none;
+    none.width = none.height = 600;
+    none.left = 300;
+    EXPECT_FALSE(layoutPanels(none).columnFolded);
+}
+
 TEST(PanelLayout, PanelsThatAreOffGetNoBox) {
     LayoutRequest r;
     r.width = 800;

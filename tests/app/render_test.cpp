@@ -22,7 +22,7 @@ constexpr int kSize = 400;
 
 class RenderTest : public OffscreenTest {
   protected:
-    RenderTest() : OffscreenTest(kSize) {}
+    explicit RenderTest(int size = kSize) : OffscreenTest(size) {}
 
     DrawStats draw(const World& w, ViewOptions o) {
         const DrawStats s = renderer_->draw(w, camera_, o);
@@ -35,8 +35,8 @@ class RenderTest : public OffscreenTest {
         SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
         SDL_RenderClear(sdl_);
         LayoutRequest req;
-        req.width = kSize;
-        req.height = kSize;
+        req.width = size_;
+        req.height = size_;
         req.hud = textBoxSize(*font_, o.hud);
         if (o.showProfile) req.profile = textBoxSize(*font_, o.profile);
         req.inspector = textBoxSize(*font_, o.inspector);
@@ -367,21 +367,28 @@ TEST_F(RenderTest, WallsAreDrawnAroundTheBox) {
     EXPECT_TRUE(isColor(pixel(200, 200), 0, 0, 0));
 }
 
-TEST_F(RenderTest, TheProfileOverlayDrawsTextOnlyWhenOn) {
+/// A window wide enough for the side column beside the box (sideColumnFits).
+class WideRenderTest : public RenderTest {
+  protected:
+    WideRenderTest() : RenderTest(700) {}
+};
+
+TEST_F(WideRenderTest, TheProfileOverlayDrawsTextOnlyWhenOn) {
     Overlays o;
     o.hud = {"FPS 60"};
     o.profile = {"Profile, last step (ms)", "find pairs               1.500",
                  "total                    3.000"};
     const auto drawOverlay = [&] { drawPanels(o); };
+    const int w = size_;
     o.showProfile = false;
     drawOverlay();
     // The profile goes to the top-right corner; the short HUD line stays at the top-left.
-    EXPECT_EQ(brightPixels(kSize / 2, 0, kSize, 80), 0);
+    EXPECT_EQ(brightPixels(w / 2, 0, w, 80), 0);
     EXPECT_GT(brightPixels(0, 0, 100, 30), 10);
     o.showProfile = true;
     drawOverlay();
-    EXPECT_GT(brightPixels(kSize / 2, 0, kSize, 80), 100);
-    EXPECT_EQ(brightPixels(kSize / 2, 100, kSize, kSize), 0);  // nothing below its three lines
+    EXPECT_GT(brightPixels(w / 2, 0, w, 80), 100);
+    EXPECT_EQ(brightPixels(w / 2, 100, w, w), 0);  // nothing below its three lines
 }
 
 TEST_F(RenderTest, TheSelectionOutlineRingsTheDiscOutsideItsRim) {

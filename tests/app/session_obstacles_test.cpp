@@ -8,7 +8,7 @@
 #include <particle_sandbox/scene.hpp>
 
 #include "session.hpp"
-#include "temp_dir_test.hpp"
+#include "session_fixture.hpp"
 
 namespace psb::app {
 namespace {
@@ -33,19 +33,9 @@ class SessionObstacles : public TempDirTest {
         o.paused = true;
         return Session(std::move(w), "test", o);
     }
-    static bool said(const std::vector<Notice>& notices, const std::string& text) {
-        return std::any_of(notices.begin(), notices.end(),
-                           [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
-    }
     /// Press at world point `from`, five moves, release at `to`.
     static void drag(Session& s, Vec2 from, Vec2 to, double t0 = 1.0) {
-        const Camera& c = s.camera();
-        s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
-        for (int k = 1; k <= 5; ++k) {
-            s.apply(
-                cmd::PointerMove{c.worldToScreen(from + (to - from) * (k / 5.0)), t0 + 0.01 * k});
-        }
-        s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1});
+        psb::app::drag(s, from, to, t0, 5, 0.01);
     }
     static void click(Session& s, Vec2 at, double t = 1.0) {
         s.apply(cmd::PointerDown{s.camera().worldToScreen(at), t});

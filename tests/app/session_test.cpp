@@ -14,48 +14,20 @@
 
 #include "../core/test_util.hpp"
 #include "assets.hpp"
+#include "control_panel.hpp"
 #include "panel_layout.hpp"
 #include "scene_io.hpp"
 #include "session.hpp"
-#include "temp_dir_test.hpp"
+#include "session_fixture.hpp"
 
 namespace psb::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SessionTest : public TempDirTest {
+class SessionTest : public SessionFixture {
   protected:
-    SessionTest() : TempDirTest("psb-session") {}
-
-    [[nodiscard]] SessionOptions options() const {
-        SessionOptions o;
-        o.saveTo = dir_ / "save.json";
-        o.seed = 3;
-        o.paused = true;
-        o.viewportWidth = 800;
-        o.viewportHeight = 800;
-        o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
-        return o;
-    }
-    [[nodiscard]] Session session() const {
-        return Session(makeWorld(defaultScene()), "default", options());
-    }
-    static bool said(const std::vector<Notice>& notices, const std::string& text) {
-        return std::any_of(notices.begin(), notices.end(),
-                           [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
-    }
-    /// A drag with the left button from world point `from` to `to`, 10 moves over 100 ms,
-    /// then the hand holds still for `hold` seconds before the release.
-    static void drag(Session& s, Vec2 from, Vec2 to, double t0, double hold = 0.0) {
-        const Camera& c = s.camera();
-        s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
-        for (int k = 1; k <= 10; ++k) {
-            s.apply(
-                cmd::PointerMove{c.worldToScreen(from + (to - from) * (k / 10.0)), t0 + 0.01 * k});
-        }
-        s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1 + hold});
-    }
+    SessionTest() : SessionFixture("psb-session", TestWindow{}) {}
 };
 
 TEST_F(SessionTest, TheDefaultSceneIsAtHumanScale) {
@@ -363,6 +335,82 @@ TEST_F(SessionTest, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
         EXPECT_GT(l.plots.w, 0) << w << "x" << h;
         EXPECT_GT(box.w, w / 3) << w << "x" << h;  // the box still gets a good part
     }
+}
+
+TEST_F(SessionTest, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFolded) {
+    // The Galton board's bins chart, the plots and the speed histogram, against the box the
+    // fitted camera shows, from 500 px wide up; where the column does not fit beside the box the
+    // charts fold away and the session says so.
+    SessionOptions o = options();
+    o.insets.controls = kControlsWidth;
+    o.insets.controlsFolded = kControlsFoldedWidth;
+    o.presets = presetScenes();
+    Session s(makeWorld(defaultScene()), "default", o);
+    const auto& presets = s.presets();
+    const auto galton = std::find_if(presets.begin(), presets.end(),
+                                     [](const SceneInfo& p) { return p.name == "Galton board"; });
+    ASSERT_NE(galton, presets.end());
+    s.apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
+    ASSERT_TRUE(s.binsShown());
+    s.apply(cmd::TogglePlots{});
+    s.apply(cmd::ToggleSpeeds{});
+    int folded = 0, shown = 0;
+    for (const bool controls : {true, false}) {
+        if (s.controlsShown() != controls) s.apply(cmd::ToggleControls{});
+        for (int w = 500; w <= 1400; w += 50) {
+            for (const int h : {500, 600, 800}) {
+                s.apply(cmd::Resize{w, h});
+                const auto b =
+                    s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
+                const SDL_Rect box{static_cast<int>(b.topLeft.x()), static_cast<int>(b.topLeft.y()),
+                                   static_cast<int>(b.size.x()), static_cast<int>(b.size.y())};
+                LayoutRequest req;
+                req.width = w;
+                req.height = h;
+                req.left = static_cast<int>(s.controlsInset());
+                req.hud = {300, 129};
+                req.messages = {300, 40};
+                req.plots = req.speeds = req.bins = true;
+                const PanelLayout l = layoutPanels(req);
+                EXPECT_EQ(l.columnFolded, s.sideColumnFolded()) << w << "x" << h;
+                for (const SDL_Rect& panel : {l.plots, l.speeds, l.bins}) {
+                    EXPECT_FALSE(overlaps(panel, box))
+                        << w << "x" << h << (controls ? ", controls open" : "") << ": panel at "
+                        << panel.x << "," << panel.y << " " << panel.w << "x" << panel.h << ", box "
+                        << box.x << "," << box.y << " " << box.w << "x" << box.h;
+                }
+                (l.columnFolded ? folded : shown) += 1;
+                if (w == 600 && h == 600 && controls) {
+                    EXPECT_TRUE(s.sideColumnFolded()) << "the case a new user met";
+                }
+            }
+        }
+    }
+    EXPECT_GT(folded, 0);
+    EXPECT_GT(shown, 0);
+}
+
+TEST_F(SessionTest, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
+    // The HUD says the charts are folded; the fitted box starts below that note too.
+    SessionOptions o = options();
+    o.viewportWidth = o.viewportHeight = 600;
+    o.insets.controls = kControlsWidth;
+    o.insets.controlsFolded = kControlsFoldedWidth;
+    std::vector<bool> asked;
+    o.insets.topFor = [&asked](int, bool folded) {
+        asked.push_back(folded);
+        return folded ? 195.0 : 60.0;
+    };
+    Session s(makeWorld(defaultScene()), "default", o);
+    ASSERT_FALSE(asked.empty());
+    EXPECT_FALSE(asked.back());
+    s.apply(cmd::TogglePlots{});
+    ASSERT_TRUE(s.sideColumnFolded());
+    EXPECT_TRUE(asked.back());
+    EXPECT_GE(s.camera().boxOnScreen(7.0, 7.0).topLeft.y(), 195.0 - 1e-9);
+    s.apply(cmd::ToggleControls{});  // folded to its strip: the column fits, no note
+    EXPECT_FALSE(s.sideColumnFolded());
+    EXPECT_FALSE(asked.back());
 }
 
 TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {

@@ -12,6 +12,7 @@
 #include "assets.hpp"
 #include "same_world.hpp"
 #include "session.hpp"
+#include "session_fixture.hpp"
 
 namespace psb::app {
 namespace {
@@ -31,14 +32,9 @@ Session session(bool paused = true) {
     return Session(makeWorld(defaultScene()), "default", options(paused));
 }
 
-bool said(const std::vector<Notice>& notices, const std::string& text) {
-    return std::any_of(notices.begin(), notices.end(),
-                       [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
-}
-
 /// A press at `from`, ten moves to `to` over 0.1 s, a release there: a fling or a launch.
 /// Each move is a 60 Hz frame; `shown` collects the worlds they show.
-void drag(Session& s, Vec2 from, Vec2 to, double t0, std::vector<World>* shown = nullptr) {
+void dragFrames(Session& s, Vec2 from, Vec2 to, double t0, std::vector<World>* shown = nullptr) {
     const Camera& c = s.camera();
     s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
     for (int k = 1; k <= 10; ++k) {
@@ -58,6 +54,36 @@ double run(Session& s, int frames, double now, std::vector<World>* shown = nullp
         if (shown) shown->push_back(s.world());
     }
     return now;
+}
+
+/// Where the Replay slider's handle sits for `t`: 0 at its left end, 1 at its right end.
+double handle(const TimelineView& t) {
+    const auto [lo, hi] = t.sliderRange();
+    return (t.current - lo) / (hi - lo);
+}
+
+TEST(SessionUndo, TheReplayHandleStaysAtThePresentThroughAnUndo) {
+    // Two seconds run and paused: the present, labelled 2.00 s, at the slider's right end. An
+    // edit and its undo clear the record; the state shown is still the present, and the handle
+    // stays where the label says it is (it used to jump to the left end, labelled the same).
+    Session s = session(false);
+    double now = run(s, 120, 0.0);
+    s.apply(cmd::TogglePause{});
+    EXPECT_DOUBLE_EQ(handle(s.timeline()), 1.0);
+    s.apply(cmd::SpawnRandom{});
+    now = run(s, 2, now);
+    s.apply(cmd::Undo{});
+    const TimelineView t = s.timeline();
+    EXPECT_DOUBLE_EQ(t.current, s.world().time()) << "the label is the time shown";
+    EXPECT_DOUBLE_EQ(handle(t), 1.0) << "the handle is at the present";
+    // Back in the recorded past the handle follows the frame shown.
+    s.apply(cmd::TogglePause{});
+    now = run(s, 60, now);
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::SeekBy{-0.5});
+    EXPECT_GT(handle(s.timeline()), 0.0);
+    EXPECT_LT(handle(s.timeline()), 1.0);
+    EXPECT_NEAR(s.timeline().current, s.world().time(), 1e-9);
 }
 
 TEST(SessionUndo, UndoesASpawnAndRedoesIt) {
@@ -85,12 +111,12 @@ TEST(SessionUndo, UndoesASpawnAndRedoesIt) {
 TEST(SessionUndo, UndoesALaunchAndAFling) {
     Session s = session();
     const World before = s.world();
-    drag(s, Vec2(1.0, 6.0), Vec2(2.0, 5.0), 1.0);  // empty space: a launch
+    dragFrames(s, Vec2(1.0, 6.0), Vec2(2.0, 5.0), 1.0);  // empty space: a launch
     ASSERT_EQ(s.world().size(), before.size() + 1);
     EXPECT_EQ(s.undoLabel(), "launch particle");
     const World launched = s.world();
     const ParticleId yellow = *s.world().pick(Vec2(5.2, 1.6));
-    drag(s, Vec2(5.2, 1.6), Vec2(5.2, 2.6), 2.0);  // a particle: a fling
+    dragFrames(s, Vec2(5.2, 1.6), Vec2(5.2, 2.6), 2.0);  // a particle: a fling
     EXPECT_EQ(s.undoLabel(), "fling particle");
     EXPECT_GT(s.world().get(yellow).velocity.y(), 0.0);
     s.apply(cmd::Undo{});
@@ -252,7 +278,7 @@ TEST_P(SessionStepBack, ShowsEachPastFrameBitForBitAndComesBackToThePresent) {
     std::vector<World> shown;
     double now = run(s, 40, 0.0, &shown);
     // A fling: the frames of the drag replay the hand's moves.
-    drag(s, Vec2(5.2, 1.6), Vec2(4.0, 3.0), now, &shown);
+    dragFrames(s, Vec2(5.2, 1.6), Vec2(4.0, 3.0), now, &shown);
     now = run(s, 20, now + 10 * kFrame, &shown);
     s.apply(cmd::TogglePause{});
     now = run(s, 1, now);

@@ -15,44 +15,24 @@
 #include "panel_layout.hpp"
 #include "scene_io.hpp"
 #include "session.hpp"
-#include "temp_dir_test.hpp"
+#include "session_fixture.hpp"
 
 namespace psb::app {
 namespace {
 
 namespace fs = std::filesystem;
 
-class SessionValues : public TempDirTest {
+class SessionValues : public SessionFixture {
   protected:
-    SessionValues() : TempDirTest("psb-session-values") {}
+    SessionValues()
+        : SessionFixture(
+              "psb-session-values",
+              TestWindow{
+                  1000, 800, {60.0, 44.0, kPanelMaxWidth + kPanelMargin, 310.0, 34.0}, true}) {}
 
-    [[nodiscard]] SessionOptions options() const {
-        SessionOptions o;
-        o.saveTo = dir_ / "save.json";
-        o.seed = 3;
-        o.paused = true;
-        o.viewportWidth = 1000;
-        o.viewportHeight = 800;
-        o.insets = {60.0, 44.0, kPanelMaxWidth + kPanelMargin, 310.0, 34.0};
-        o.presets = presetScenes();
-        return o;
-    }
-    [[nodiscard]] Session session() const {
-        return Session(makeWorld(defaultScene()), "default", options());
-    }
-    static bool said(const std::vector<Notice>& notices, const std::string& text) {
-        return std::any_of(notices.begin(), notices.end(),
-                           [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
-    }
     /// A left-button drag in world metres, 5 moves over 100 ms.
     static void drag(Session& s, Vec2 from, Vec2 to, double t0) {
-        const Camera& c = s.camera();
-        s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
-        for (int k = 1; k <= 5; ++k) {
-            s.apply(
-                cmd::PointerMove{c.worldToScreen(from + (to - from) * (k / 5.0)), t0 + 0.02 * k});
-        }
-        s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1});
+        psb::app::drag(s, from, to, t0, 5, 0.02);
     }
     /// A free spot in the default scene's 7 m box.
     [[nodiscard]] static Vec2 emptySpot(const Session& s) {

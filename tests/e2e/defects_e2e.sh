@@ -18,6 +18,8 @@
 #   7. a launch dragged across the whole box   -> the preview and a message say it was capped
 #  10. a scene too heavy for x8, at x8         -> the HUD shows the speed reached beside x8
 #   +  keys 0 and Shift+1 open presets 10, 11  -> opened paused, the message names the key
+#   +  600x600, key 9, C (panel open), C again -> the bins chart folds away while the panel is
+#                                                 open (the HUD says so), and comes back
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -152,6 +154,30 @@ reached=$(grep -Eo "x[0-9.]+ of x8" <<<"$hud" | head -1) ||
 r=$(sed -E 's/x([0-9.]+) of x8/\1/' <<<"$reached")
 awk -v r="$r" 'BEGIN { exit !(r < 8) }' || fail "reached $r of x8"
 pass "time speed: $(grep -E "x[0-9.]+ of x8" <<<"$hud" | head -1)"
+kill "$APP_PID" 2>/dev/null || true
+wait "$APP_PID" 2>/dev/null || true
+APP_PID=""
+
+# --- 600x600, the Galton board, the control panel opened with C ----------------------------------
+# The bins chart beside the box while the panel is folded; with the panel open it would cover
+# the board: it folds away, and the HUD says so. C again brings it back.
+SNAPS=0
+start_app "$BIN" --renderer software --window 600x600 --paused --seed 7 --screenshot-dir "$OUT"
+key 9
+wait_log "Galton board"
+snap 11-galton-600
+[[ -n "$(rect 11-galton-600 bins)" ]] || fail "no bins chart at 600x600 with the panel folded"
+key c
+snap 12-galton-600-panel
+read -r bx by bw bh < <(rect 12-galton-600-panel box)
+chart=$(rect 12-galton-600-panel bins)
+[[ -z "$chart" ]] || fail "the bins chart ($chart) is laid out beside a box at $bx,$by ${bw}x$bh"
+section 12-galton-600-panel HUD | grep -q "Charts folded away" ||
+    fail "the HUD does not say the charts are folded: $(section 12-galton-600-panel HUD)"
+key c
+snap 13-galton-600-folded-again
+[[ -n "$(rect 13-galton-600-folded-again bins)" ]] || fail "the bins chart did not come back"
+pass "600x600: the bins chart folds away while the panel is open, and says so"
 kill "$APP_PID" 2>/dev/null || true
 wait "$APP_PID" 2>/dev/null || true
 APP_PID=""

@@ -5,7 +5,8 @@
 #   tests/e2e/obstacles_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
 #   1. chooses the Wall tool in the panel, drags in the box      -> a wall logged, drawn (grey)
-#   2. chooses the Peg tool, clicks in the box                   -> a peg logged
+#   2. chooses the Peg tool (pressed as the pointer arrives),    -> the tool, no refusal from
+#      clicks in the box                                            the world; a peg logged
 #   3. Ctrl+S                                                    -> the saved scene has the wall
 #                                                                   and the peg where they were
 #                                                                   drawn (within a pixel)
@@ -69,8 +70,16 @@ shot 1-wall
 pass "wall drawn: $(grep 'Added obstacle 0' "$LOG")"
 
 # --- 2. a peg, clicked ---------------------------------------------------------------------------
-click "tool Peg"
+# The Peg button pressed the moment the pointer arrives from the box (no frame in between): the
+# click is the panel's, and the world's Wall tool never sees it.
+read -r tx ty < <(ctl "tool Peg")
+xdotool mousemove --sync "$(sx 3.0)" "$(sy 3.0)" sleep 0.3 mousemove "$tx" "$ty" click 1
 wait_log "Left mouse: a click places a peg"
+sleep 0.3
+if grep -E "No (wall|peg) |Nothing placed" "$LOG"; then
+    fail "a click on the Peg button reached the world"
+fi
+pass "one click on the Peg button chose the tool and nothing else"
 px=$(sx 5.5)
 py=$(sy 5.0)
 xdotool mousemove --sync "$px" "$py" sleep 0.2 mousedown 1 sleep 0.05 mouseup 1

@@ -16,6 +16,7 @@
 #                                                                   holds the launched 2.5 kg,
 #                                                                   0.2 m particle, walls off,
 #                                                                   gravity 9.81, e = 0, substep
+#   5b. turns the wheel over the preset list, past its end      -> no zoom of the view
 #   6. clicks Play/Pause twice, Step                             -> time moves; Reset: 6 again
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
 #   8. Esc                                                       -> exits (reset: nothing unsaved)
@@ -107,6 +108,21 @@ grep -q '"restitution": 0.0' "$S" || fail "restitution not 0 in the save: $(grep
 grep -q '"mode": "substep", "dt": [0-9.e-]*, "substeps": 4' "$S" || fail "mode not substep x4 in the save: $(grep solver "$S")"
 shot 5-saved
 pass "saved with the panel: $(grep -m1 'Saved 7' "$LOG")"
+
+# --- 5b. the wheel over the preset list scrolls it, never the view ---------------------------
+# The pointer comes from the box and turns the wheel at once, well past the list's end.
+first=$(grep -m1 -F "[I] Control preset " "$LOG" | sed -E 's/.*Control (preset .*) at [0-9]+ [0-9]+$/\1/')
+read -r lx ly < <(ctl "$first")
+zooms=$(grep -c "\] Zoom " "$LOG" || true)
+xdotool mousemove --sync $((WX + 700)) $((WY + 400)) sleep 0.3 mousemove "$lx" "$ly" \
+    click --repeat 25 --delay 15 5
+sleep 0.5
+xdotool click --repeat 10 --delay 15 4
+sleep 0.5
+after=$(grep -c "\] Zoom " "$LOG" || true)
+((after == zooms)) || fail "the wheel over the preset list zoomed the view: $(grep '\] Zoom ' "$LOG" | tail -1)"
+shot 5b-presets-wheel
+pass "35 wheel clicks over the preset list, none reached the view"
 
 # --- 6. time controls ------------------------------------------------------------------------
 click "Play/Pause"
