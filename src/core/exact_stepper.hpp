@@ -250,6 +250,11 @@ inline constexpr double kRattleWindow = 1e-3;
 /// the u_r/g = 5 ms in which a particle set free from rest is still slower than the rest speed.
 inline constexpr double kSettleTime = 0.05;
 
+/// Under gravity with e < 1: a sleep that needed slow free neighbours, or that the rattle guard
+/// imposed, is checked again this long after (seconds; see the design note). Ten milliseconds:
+/// four times the 2.6 ms in which a neighbour at the rest speed moves out of the rest gap.
+inline constexpr double kRecheckAfter = 0.01;
+
 /// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see the design
 /// note). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
 inline constexpr double kRestSpeed = 0.05;
@@ -314,7 +319,7 @@ class ExactStepper {
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
 
   private:
-    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide };
+    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide, Recheck };
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
@@ -333,6 +338,7 @@ class ExactStepper {
     static constexpr std::uint32_t kRestX = 16;    // no acceleration along x (on a wall, pinned)
     static constexpr std::uint32_t kRestY = 32;    // no acceleration along y
     static constexpr std::uint32_t kSliding = 64;  // on a segment's face: slide_ holds how
+    static constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (see Resting)
     // A particle sliding on a segment's face (kSliding; exact_obstacle_events.cpp): which
     // segment, and its constant acceleration along the face (gravity's share along it less the
     // kinetic friction, or none where static friction holds it).
@@ -375,7 +381,11 @@ class ExactStepper {
     void rebuild(ParticleArrays& p, const WorldDef& def);
     // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
     // changes touch wakes (see the design note).
-    void keepSleepers(std::unordered_map<ParticleId, Body>& before);
+    struct Kept {
+        Body body;
+        std::uint32_t depth;
+    };
+    void keepSleepers(std::unordered_map<ParticleId, Kept>& before);
     // Changed particles beyond which a rebuild wakes everything (an O(N) search per change).
     static constexpr std::size_t kMaxDisturbances = 64;
     void setUpGrid();
@@ -414,11 +424,23 @@ class ExactStepper {
     // level within its reach of i's level.
     template <typename F>
     void forEachAround(std::uint32_t i, F&& f) const;
-    [[nodiscard]] bool supported(std::uint32_t i) const;
+    // What holds i up (see the design note, Resting): `firm` if the static supports do, with one
+    // of depth below `below` among them (depth: the sleeper's `depth`, 1 + the least of theirs);
+    // `withFree` if they do only with the slow free neighbours added.
+    struct Hold {
+        bool firm = false, withFree = false;
+        std::uint32_t depth = kUngrounded;
+    };
+    static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
+    [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below) const;
+    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count) const;
+    // After an event of i: asleep if slow and held, or caught rattling (see the design note).
+    void settle(std::uint32_t i, double now, bool slow);
+    void handleRecheck(std::uint32_t i, const Event& ev);
     [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
         return now - wokeAt_[i] >= kContactDuration;
     }
-    void fallAsleep(std::uint32_t i, double now);
+    void fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional);
     void wake(std::uint32_t i, double now);
     void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n);
     void settleAfterPair(std::uint32_t i, bool justWoken);
@@ -437,7 +459,7 @@ class ExactStepper {
     void handleCell(std::uint32_t i, double now);
     // Fixed obstacles (exact_obstacle_events.cpp): i's earliest impact with an obstacle of its
     // cell's list, if earlier than best; the rebound; the supports obstacles give a resting
-    // particle (appended to nx, ny, cone up to kMax, returns the new count).
+    // particle (normals appended to nx, ny up to max, returns the new count).
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
     void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
     // The rebound off obstacle k at i's current state (a lift or a slide where gravity presses
@@ -453,8 +475,7 @@ class ExactStepper {
     void predictSlide(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void handleSlide(std::uint32_t i, const Event& ev);
     void stopSliding(Body& b) const { b.flags &= ~kSliding; }
-    int obstacleSupports(std::uint32_t i, double* nx, double* ny, double* cone, int count,
-                         int max) const;
+    int obstacleSupports(std::uint32_t i, double* nx, double* ny, int count, int max) const;
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
@@ -479,6 +500,11 @@ class ExactStepper {
     // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
     // by the next event of the cascade that woke it.
     std::vector<double> wokeAt_;
+    // Per sleeper (gravity only): its depth, 1 for one on a wall, an obstacle or a held
+    // particle, else 1 + the least depth of the sleepers it rests on; and when a provisional
+    // one is checked again.
+    std::vector<std::uint32_t> depth_;
+    std::vector<double> recheckAt_;
     CollisionRate rate_;  // the rattle guard's counts (gravity only)
     double clock_ = 0.0;  // seconds since the last rebuild
     // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
