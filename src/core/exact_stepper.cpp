@@ -849,7 +849,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     if (gravity_) {
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
-        liftPressedPair(i, j, n);
+        liftPressedPair(i, j, n, aSlid, bSlid);
         // A slider pressed along its face into a neighbour without an impulse (at rest against
         // it) would slide into it again at once, the same event at the same instant without
         // end: it hops off the face instead, as before slides, and slides again when it lands.
@@ -924,7 +924,8 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     predictCell(i, ev.time);
 }
 
-void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n) {
+void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid,
+                                   bool bSlid) {
     Body& a = bodies_[i];
     Body& b = bodies_[j];
     const double wi = (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w;
@@ -933,9 +934,14 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n) {
     // Pressed together by gravity (one falls, the other does not, or less) and leaving each
     // other slower than the lift: leave at the lift, by an impulse along n shared as a
     // collision shares it (see the design note).
+    // A slider the pair event took off its face is still on it: judged by how it moved into
+    // the contact, it does not fall (else a ball at rest on a slider, both woken at once, would
+    // meet it again at the same instant without end).
     double aax, aay, bax, bay;
     accelerationOf(a, aax, aay);
     accelerationOf(b, bax, bay);
+    if (aSlid) aax = slide_[i].ax, aay = slide_[i].ay;
+    if (bSlid) bax = slide_[j].ax, bay = slide_[j].ay;
     const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
     if (!(an < 0.0 && an * an > kPressTolerance * kPressTolerance * (rax * rax + ray * ray)))
         return;

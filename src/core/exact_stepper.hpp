@@ -442,7 +442,7 @@ class ExactStepper {
     }
     void fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional);
     void wake(std::uint32_t i, double now);
-    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n);
+    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid, bool bSlid);
     void settleAfterPair(std::uint32_t i, bool justWoken);
     [[nodiscard]] bool rattles(std::uint32_t i, double now) {
         return def_.restitution < 1.0 && rate_.exceeds(i, now, kRattleWindow, kRattleLimit);
