@@ -153,43 +153,59 @@
 //     the particle resting on the wall (its velocity and acceleration across the wall zero); it
 //     still slides along it;
 //   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
-//     acceleration, no cell events) if the supports within restGap_ hold it: one whose contact
-//     normal is within the friction angle atan(mu) of gravity, or two on either side of it,
-//     each normal's cone widened by that angle (frictionless: gravity strictly between them).
-//     Supports are walls, sleepers, held particles at rest and obstacles, and, with e < 1 and
-//     at least one of those among them, free neighbours slower than restSpeed_ (not in the
-//     first kSettleTime after a rebuild): without them an arch of discs leaning on each other waits
-//     for the others to sleep first, and none does. A particle woken less than
-//     kContactDuration ago does not fall asleep again;
+//     acceleration, no cell events) if the supports within restGap_ hold it (hold()): gravity
+//     lies in the cone of their contact normals (along one, or strictly between two less than
+//     a half turn apart), or the one face gravity slides it down (the loaded support no other
+//     blocks) is tilted less than the friction angle atan(mu). Not each normal's cone widened
+//     by that angle: that counts a neighbour the slide only grazes (one above the particle) as
+//     pushing with any force, and grains above a neck locked into arches nothing held up.
+//     Supports are walls, obstacles, held particles at rest and sleepers. Each sleeper has a
+//     depth: 1 on a wall, an obstacle or a held particle, else 1 + the least depth of the
+//     sleepers it rests on; it must keep a support of lower depth, so every sleeper rests on a
+//     chain down to something fixed and no cluster holds itself up;
+//   - provisional sleep (e < 1): a particle that only slow free neighbours (slower than
+//     restSpeed_, not woken in the last kRecheckAfter, not in the first kSettleTime after a
+//     rebuild) help hold, with something static among its supports, sleeps until a recheck
+//     kRecheckAfter later (Kind::Recheck, in its collision key): held then by what is static,
+//     it sleeps for good; still held only with free neighbours' help, it waits again; else it
+//     wakes. Without it an arch of discs leaning on each other waits for the others to sleep
+//     first, and none does; with it a grain that slept on a moving one does not hang in the
+//     air when that one has gone. A particle woken less than kContactDuration ago does not fall
+//     asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
-//     wakes, with every sleeper it supported (transitively: the ones resting
-//     on it); slower hits bounce off it as off an infinitely heavy disc, with the restitution
-//     e itself (no TC rule: a sleeper does not move, so there is no collapse to prevent, and the
-//     elastic rule only kept a disc wedged between sleepers rattling at full speed) and with
-//     none if the rebound would be slower than restSpeed_ (it stops, as on a wall it rests on);
+//     wakes; then every sleeper within restGap_ of a woken one is judged again (hold() at its
+//     depth) and wakes if no longer held, and so on (a support that moves lets what it held
+//     fall, whether it held it from below or from the side); slower hits bounce off it as off
+//     an infinitely heavy disc, with the restitution e itself (no TC rule: a sleeper does not
+//     move, so there is no collapse to prevent, and the elastic rule only kept a disc wedged
+//     between sleepers rattling at full speed) and with none if the rebound would be slower
+//     than restSpeed_ (it stops, as on a wall it rests on);
 //   - a pair that gravity presses together (one falls and the other does not: it is asleep,
 //     held or resting on a wall) and that leaves a collision slower than restSpeed_ / 2 leaves
 //     at restSpeed_ / 2 (an impulse shared as the collision shares it): a particle on the side
 //     of its support hops down it instead of making ever faster tiny bounces on it, and no
-//     pair is ever predicted to touch again at the same instant.
+//     pair is ever predicted to touch again at the same instant (a slider the pair event took
+//     off its face counts as moving with its slide's acceleration: it is still on the face).
 // Rattling (e < 1). Where the weight of a frictionless pile has to be carried by collisions
 // alone, the hard-disc model carries it by ever more frequent ones (a disc squeezed between
 // two others on a floor it slides on, a cluster collapsing, McNamara & Young 1994): the rules
 // above do not bound them. So a particle that collides more than kRattleLimit times within
 // kRattleWindow of simulated time falls asleep where it is (it is caught among its neighbours
-// at that instant); it wakes as any sleeper does. The count is in simulated time, so it does
-// not depend on how steps chop it; particles a rebuild sets free are left alone by it for
-// kSettleTime (they are falling).
+// at that instant): for good if what is static holds it, else provisionally (rechecked as
+// above: a ball squeezed against a neighbour on a slope slides on when the neighbour has
+// left). The count is in simulated time, so it does not depend on how steps chop it;
+// particles a rebuild sets free are left alone by it for kSettleTime (they are falling).
 // restSpeed_ is kRestSpeed for e < 1, or the speed of a hop of kRestHop smallest radii if that
 // is higher (large discs under strong gravity); with e = 1 it is the speed of a fall through
 // rounding (kRestRoundingGap of the box), so that only particles placed at rest on a support rest,
 // and nothing moving ever sleeps (the free-neighbour and rattle rules are off). restGap_ is the
 // height of a hop at restSpeed_, restSpeed_²/(2g): waking a sleeper lets it fall at most that
 // far, which reaches only restSpeed_ and does not wake what is under it.
-// A rebuild (any change to the world) keeps what sleeps where it slept, if the laws (gravity,
-// box, walls, restitution, friction) are unchanged: a particle removed, added, moved or set in
-// motion wakes the sleepers within restGap_ of it (and so what rests on them); more than
+// A rebuild (any change to the world) keeps what sleeps where it slept, at its depth (a
+// provisional sleeper is rechecked kRecheckAfter after it), if the laws (gravity, box, walls,
+// restitution, friction) are unchanged: a particle removed, added, moved or set in motion
+// wakes the sleepers within restGap_ of it (and so what they held up); more than
 // kMaxDisturbances such changes, or changed laws, wake everything. A drag through a settled
 // pile therefore wakes only what the dragged particle touches.
 // The event budget under gravity ends the step at the first event left (see
