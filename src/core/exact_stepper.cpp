@@ -969,7 +969,7 @@ void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
            !justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t));
 }
 
-ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below) const {
+ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, double now) const {
     // The contact normals (from i to what holds it) of everything within restGap_ that does not
     // move: walls, obstacles, held particles at rest (depth 0), sleepers (their depth); then the
     // same with the slow free neighbours added. holdsAgainstGravity says whether they hold i.
@@ -994,15 +994,15 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below) cons
     // kRecheckAfter ago may be falling away.
     double fx[kMax], fy[kMax];
     int free = 0;
-    const bool freeCount = def_.restitution < 1.0 && a.t >= kSettleTime;
+    const bool freeCount = def_.restitution < 1.0 && now >= kSettleTime;
     forEachAround(i, [&](std::uint32_t q) {
         const Body& b = bodies_[q];
         if (q == i || (b.flags & kHeld && !isStatic(b))) return;
         const bool still = isStatic(b);
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
         if (!still) {
-            if (!freeCount || a.t - wokeAt_[q] < kRecheckAfter) return;
-            const Motion m = motionAt(b, a.t);
+            if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
+            const Motion m = motionAt(b, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
             bx = m.x;
             by = m.y;
@@ -1074,7 +1074,7 @@ void ExactStepper::settle(std::uint32_t i, double now, bool slow) {
     // neighbours' help, or caught rattling: asleep until a recheck kRecheckAfter later.
     Hold h;
     if (slow) {
-        h = hold(i, kUngrounded + 1);
+        h = hold(i, kUngrounded + 1, now);
         if (h.firm) {
             fallAsleep(i, now, h.depth, false);
             return;
@@ -1085,7 +1085,7 @@ void ExactStepper::settle(std::uint32_t i, double now, bool slow) {
         }
     }
     if (!rattles(i, now)) return;
-    if (!slow) h = hold(i, kUngrounded + 1);
+    if (!slow) h = hold(i, kUngrounded + 1, now);
     fallAsleep(i, now, h.depth, !h.firm);
 }
 
@@ -1110,7 +1110,7 @@ void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
     // another kRecheckAfter; else it wakes (and what it holds up, see wake()).
     Body& a = bodies_[i];
     a.flags &= ~kProvisional;
-    const Hold h = hold(i, depth_[i]);
+    const Hold h = hold(i, depth_[i], ev.time);
     if (h.firm) {
         depth_[i] = std::min(depth_[i], h.depth);
     } else if (h.withFree) {
@@ -1149,7 +1149,7 @@ void ExactStepper::wake(std::uint32_t i, double now) {
             const double rx = b.x - a.x, ry = b.y - a.y;
             const double reach = a.r + b.r + restGap_;
             if (rx * rx + ry * ry > reach * reach) return;
-            if (hold(q, depth_[q]).firm) return;
+            if (hold(q, depth_[q], now).firm) return;
             rouse(q);
             predictCollision(q, now);
             predictCell(q, now);

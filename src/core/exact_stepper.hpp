@@ -440,15 +440,16 @@ class ExactStepper {
     // level within its reach of i's level.
     template <typename F>
     void forEachAround(std::uint32_t i, F&& f) const;
-    // What holds i up (see the design note, Resting): `firm` if the static supports do, with one
-    // of depth below `below` among them (depth: the sleeper's `depth`, 1 + the least of theirs);
-    // `withFree` if they do only with the slow free neighbours added.
+    // What holds i up at time `now` (i is at its position then; see the design note, Resting):
+    // `firm` if the static supports do, with one of depth below `below` among them (depth: the
+    // sleeper's `depth`, 1 + the least of theirs); `withFree` if they do only with the slow
+    // free neighbours added.
     struct Hold {
         bool firm = false, withFree = false;
         std::uint32_t depth = kUngrounded;
     };
     static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
-    [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below) const;
+    [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below, double now) const;
     [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count) const;
     // After an event of i: asleep if slow and held, or caught rattling (see the design note).
     void settle(std::uint32_t i, double now, bool slow);
