@@ -1114,6 +1114,7 @@ void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
     if (h.firm) {
         depth_[i] = std::min(depth_[i], h.depth);
     } else if (h.withFree) {
+        sleepNeighboursAtRest(i, ev.time);
         a.flags |= kProvisional;
         recheckAt_[i] = ev.time + kRecheckAfter;
     } else {
@@ -1121,6 +1122,27 @@ void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
         predictCell(i, ev.time);
     }
     predictCollision(i, ev.time);
+}
+
+void ExactStepper::sleepNeighboursAtRest(std::uint32_t i, double now) {
+    // A free neighbour with no velocity and no acceleration (one woken or hit at rest on the
+    // floor, say) has no event of its own to fall asleep at, and would keep i provisional for
+    // ever: it falls asleep now if what is static holds it.
+    const Body& a = bodies_[i];
+    forEachAround(i, [&](std::uint32_t q) {
+        const Body& b = bodies_[q];
+        if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return;
+        double ax, ay;
+        accelerationOf(b, ax, ay);
+        if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return;
+        const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
+        if (rx * rx + ry * ry > reach * reach) return;
+        const Hold h = hold(q, kUngrounded + 1, now);
+        if (!h.firm) return;
+        fallAsleep(q, now, h.depth, false);
+        predictCollision(q, now);
+        predictCell(q, now);
+    });
 }
 
 void ExactStepper::wake(std::uint32_t i, double now) {
@@ -1144,12 +1166,23 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         wakeStack_.pop_back();
         const Body& a = bodies_[p];
         forEachAround(p, [&](std::uint32_t q) {
-            const Body& b = bodies_[q];
+            Body& b = bodies_[q];
             if (!(b.flags & kAsleep)) return;
             const double rx = b.x - a.x, ry = b.y - a.y;
             const double reach = a.r + b.r + restGap_;
             if (rx * rx + ry * ry > reach * reach) return;
-            if (hold(q, depth_[q], now).firm) return;
+            const Hold h = hold(q, depth_[q], now);
+            if (h.firm) return;
+            if (h.withFree) {
+                // Held now only with slow free neighbours' help: provisional, as if it had just
+                // fallen asleep so (one that already is keeps its recheck).
+                if (!(b.flags & kProvisional)) {
+                    b.flags |= kProvisional;
+                    recheckAt_[q] = now + kRecheckAfter;
+                    predictCollision(q, now);
+                }
+                return;
+            }
             rouse(q);
             predictCollision(q, now);
             predictCell(q, now);

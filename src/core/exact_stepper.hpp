@@ -167,16 +167,18 @@
 //     restSpeed_, not woken in the last kRecheckAfter, not in the first kSettleTime after a
 //     rebuild) help hold, with something static among its supports, sleeps until a recheck
 //     kRecheckAfter later (Kind::Recheck, in its collision key): held then by what is static,
-//     it sleeps for good; still held only with free neighbours' help, it waits again; else it
-//     wakes. Without it an arch of discs leaning on each other waits for the others to sleep
-//     first, and none does; with it a grain that slept on a moving one does not hang in the
-//     air when that one has gone. A particle woken less than kContactDuration ago does not fall
-//     asleep again;
+//     it sleeps for good; still held only with free neighbours' help, it waits again (and a
+//     free neighbour at rest with no acceleration, which has no event of its own to fall
+//     asleep at, falls asleep then if what is static holds it); else it wakes. Without it an arch
+//     of discs leaning on each other waits for the others to sleep first, and none does; with it a
+//     grain that slept on a moving one does not hang in the air when that one has gone. A particle
+//     woken less than kContactDuration ago does not fall asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
 //     wakes; then every sleeper within restGap_ of a woken one is judged again (hold() at its
 //     depth) and wakes if no longer held, and so on (a support that moves lets what it held
-//     fall, whether it held it from below or from the side); slower hits bounce off it as off
+//     fall, whether it held it from below or from the side; one still held with slow free
+//     neighbours' help turns provisional instead); slower hits bounce off it as off
 //     an infinitely heavy disc, with the restitution e itself (no TC rule: a sleeper does not
 //     move, so there is no collapse to prevent, and the elastic rule only kept a disc wedged
 //     between sleepers rattling at full speed) and with none if the rebound would be slower
@@ -454,6 +456,7 @@ class ExactStepper {
     // After an event of i: asleep if slow and held, or caught rattling (see the design note).
     void settle(std::uint32_t i, double now, bool slow);
     void handleRecheck(std::uint32_t i, const Event& ev);
+    void sleepNeighboursAtRest(std::uint32_t i, double now);
     [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
         return now - wokeAt_[i] >= kContactDuration;
     }
