@@ -2,22 +2,26 @@
 // simulated second, and how many particles have passed a line, in frames of 1/60 s as the app
 // steps it (docs/exact.md, "Sliding and hops, measured").
 //
-//   build/release/bench/exact-flow SCENE [--duration S] [--every S] [--below Y]
+//   build/release/bench/exact-flow SCENE [--duration S] [--every S] [--below Y] [--mode M]
 //
 // Prints a Markdown table, one row per --every seconds of simulated time (default 0.5 s of
 // 2 s): events, obstacle, pair and wall collisions per simulated second, CPU seconds per
 // simulated second, and the particles whose centre is below y = Y (y grows downwards; the
 // neck of a funnel or an hourglass), then a line of totals. Another pour of a preset: a copy
-// with another "seed" in its generate block.
+// with another "seed" in its generate block. --mode discrete or substep runs the same scene in
+// that mode instead, in steps of the scene's own dt (its substeps for the substep mode), for
+// the particles below Y and the CPU time to compare with (events are then steps' collisions).
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <optional>
 #include <string>
 
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/scene_builders.hpp>
+#include <particle_sandbox/solver_settings.hpp>
 #include <particle_sandbox/world.hpp>
 
 namespace {
@@ -37,8 +41,19 @@ bool number(const char* text, double& out) {
 int main(int argc, char** argv) {
     double duration = 2.0, every = 0.5, below = 1e300;
     const char* path = nullptr;
+    psb::StepMode mode = psb::StepMode::Exact;
     for (int k = 1; k < argc; ++k) {
         const std::string arg = argv[k];
+        if (arg == "--mode") {
+            const auto parsed = k + 1 < argc ? psb::parseStepMode(argv[k + 1]) : std::nullopt;
+            if (!parsed) {
+                std::fprintf(stderr, "exact-flow: --mode needs discrete, substep or exact\n");
+                return 2;
+            }
+            mode = *parsed;
+            ++k;
+            continue;
+        }
         double* target = arg == "--duration" ? &duration
                          : arg == "--every"  ? &every
                          : arg == "--below"  ? &below
@@ -57,7 +72,8 @@ int main(int argc, char** argv) {
         }
     }
     if (path == nullptr || !(duration > 0.0) || !(every > 0.0)) {
-        std::fprintf(stderr, "usage: exact-flow SCENE [--duration S] [--every S] [--below Y]\n");
+        std::fprintf(stderr,
+                     "usage: exact-flow SCENE [--duration S] [--every S] [--below Y] [--mode M]\n");
         return 2;
     }
     psb::Scene scene;
@@ -67,9 +83,10 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "exact-flow: %s\n", e.what());
         return 1;
     }
-    scene.solver.mode = psb::StepMode::Exact;
+    scene.solver.mode = mode;
     psb::World w = psb::makeWorld(scene);
-    const double dt = 1.0 / 60.0;
+    // The exact mode in the app's frames; the others in the steps their accuracy needs.
+    const double dt = mode == psb::StepMode::Exact ? 1.0 / 60.0 : w.solver().dt;
     const auto frames = static_cast<long>(duration / dt + 0.5);
     const auto perRow = std::max(1L, static_cast<long>(every / dt + 0.5));
     std::printf(

@@ -223,12 +223,10 @@ void ExactStepper::handleSlide(std::uint32_t i, const Event& ev) {
     predictCell(i, ev.time);
 }
 
-int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, double* cone, int count,
+int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, int count,
                                    int max) const {
     const Body& a = bodies_[i];
     const Cold& c = cold_[i];
-    // One obstacle holds a particle only within the friction angle (see supported()).
-    const double slack = std::atan(def_.friction) + 1e-9;
     for (const std::uint32_t k : obstacles_.near(cells_, c.kx, c.ky)) {
         if (count == max) break;
         const Obstacle& o = obstacles_[k];
@@ -238,8 +236,7 @@ int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, doub
         const double d = std::sqrt(rx * rx + ry * ry);
         if (!(d > 0.0) || d - (a.r + o.radius) > restGap_) continue;
         nx[count] = rx / d;
-        ny[count] = ry / d;
-        cone[count++] = slack;
+        ny[count++] = ry / d;
     }
     return count;
 }

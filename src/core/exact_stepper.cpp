@@ -46,13 +46,13 @@ std::int64_t floorDiv(std::int64_t a, std::int64_t b) {
 
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     // What was asleep before, where it was (gravity only; see the design note, Resting).
-    std::unordered_map<ParticleId, Body> before;
+    std::unordered_map<ParticleId, Kept> before;
     const bool sameLaws = gravity_ && def.gravity == def_.gravity && def.width == def_.width &&
                           def.height == def_.height && def.walls == def_.walls &&
                           def.restitution == def_.restitution && def.friction == def_.friction;
     if (sameLaws) {
         for (std::uint32_t i = 0; i < bodies_.size(); ++i)
-            before.emplace(ids_[i], bodies_[i]);
+            before.emplace(ids_[i], Kept{bodies_[i], depth_[i]});
     }
     def_ = def;
     clock_ = 0.0;
@@ -80,6 +80,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     ids_ = p.id;
     heldHit_.clear();
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
+    depth_.assign(gravity_ ? n : 0, 0);
+    recheckAt_.assign(gravity_ ? n : 0, kNever);
     slide_.assign(gravity_ && !def_.obstacles.empty() ? n : 0, Slide{});
     rate_.reset(gravity_ ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
@@ -135,7 +137,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     stale_ = false;
 }
 
-void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
+void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
     // A sleeper still where it slept, at rest, sleeps on. Everything else is a disturbance: a
     // particle removed (where it was), added, moved or set in motion (where it is now); the
     // sleepers it touches wake, and with them what rests on them.
@@ -147,21 +149,25 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         const auto it = before.find(ids_[i]);
-        const bool same = it != before.end() && it->second.x == b.x && it->second.y == b.y &&
-                          it->second.r == b.r && b.vx == 0.0 && b.vy == 0.0;
-        if (same && (it->second.flags & kAsleep) && !(b.flags & kHeld)) {
-            b.flags |= kAsleep;
+        const Body* was = it != before.end() ? &it->second.body : nullptr;
+        const bool same =
+            was && was->x == b.x && was->y == b.y && was->r == b.r && b.vx == 0.0 && b.vy == 0.0;
+        if (same && (was->flags & kAsleep) && !(b.flags & kHeld)) {
+            // As it slept: at its depth, and a provisional sleep checked again from now.
+            b.flags |= was->flags & (kAsleep | kProvisional);
+            depth_[i] = it->second.depth;
+            recheckAt_[i] = kRecheckAfter;
         } else if (!same || (b.flags & kHeld)) {
             spots.push_back({b.x, b.y, b.r});
         }
         if (it != before.end()) before.erase(it);
     }
-    for (const auto& [id, b] : before)  // removed
-        spots.push_back({b.x, b.y, b.r});
+    for (const auto& [id, kept] : before)  // removed
+        spots.push_back({kept.body.x, kept.body.y, kept.body.r});
     // A change to many particles at once (a setter, a load) starts everything afresh.
     if (spots.size() > kMaxDisturbances) {
         for (Body& b : bodies_)
-            b.flags &= ~kAsleep;
+            b.flags &= ~(kAsleep | kProvisional);
         return;
     }
     for (const Spot& s : spots) {
@@ -218,6 +224,8 @@ void ExactStepper::sortByCell(bool midRun) {
     permute(ids_);
     if (gravity_) {
         permute(wokeAt_);
+        permute(depth_);
+        permute(recheckAt_);
         rate_.renumber(to);
     }
     if (!slide_.empty()) permute(slide_);
@@ -683,6 +691,8 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
         if (a.flags & kSliding) predictSlide(i, m, now, best);
     }
     scanNeighbours(i, now, ax, ay, best);
+    if ((a.flags & kProvisional) && recheckAt_[i] < best.time)
+        best = {std::max(now, recheckAt_[i]), 0, 0, Kind::Recheck, 0};
     cold_[i].coll = best;
     bodies_[i].nextColl = best.time;
     queue_.update(2 * i, best.time);
@@ -839,7 +849,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     if (gravity_) {
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
-        liftPressedPair(i, j, n);
+        liftPressedPair(i, j, n, aSlid, bSlid);
         // A slider pressed along its face into a neighbour without an impulse (at rest against
         // it) would slide into it again at once, the same event at the same instant without
         // end: it hops off the face instead, as before slides, and slides again when it lands.
@@ -907,17 +917,15 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
     }
     ++a.count;
-    if (gravity_ && !(a.flags & kHeld) &&
-        ((a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time) &&
-          supported(i)) ||
-         rattles(i, ev.time))) {
-        fallAsleep(i, ev.time);
-    }
+    if (gravity_ && !(a.flags & kHeld))
+        settle(i, ev.time,
+               a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
 }
 
-void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n) {
+void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid,
+                                   bool bSlid) {
     Body& a = bodies_[i];
     Body& b = bodies_[j];
     const double wi = (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w;
@@ -926,9 +934,14 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n) {
     // Pressed together by gravity (one falls, the other does not, or less) and leaving each
     // other slower than the lift: leave at the lift, by an impulse along n shared as a
     // collision shares it (see the design note).
+    // A slider the pair event took off its face is still on it: judged by how it moved into
+    // the contact, it does not fall (else a ball at rest on a slider, both woken at once, would
+    // meet it again at the same instant without end).
     double aax, aay, bax, bay;
     accelerationOf(a, aax, aay);
     accelerationOf(b, bax, bay);
+    if (aSlid) aax = slide_[i].ax, aay = slide_[i].ay;
+    if (bSlid) bax = slide_[j].ax, bay = slide_[j].ay;
     const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
     if (!(an < 0.0 && an * an > kPressTolerance * kPressTolerance * (rax * rax + ray * ray)))
         return;
@@ -952,27 +965,21 @@ void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
     const Cold& ac = cold_[i];
     if ((a.flags & kRestX) && !ac.pinX && a.vx != 0.0) a.flags &= ~kRestX;
     if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
-    if ((!justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t) &&
-         supported(i)) ||
-        rattles(i, a.t)) {
-        fallAsleep(i, a.t);
-    }
+    settle(i, a.t,
+           !justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t));
 }
 
-bool ExactStepper::supported(std::uint32_t i) const {
+ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, double now) const {
     // The contact normals (from i to what holds it) of everything within restGap_ that does not
-    // move: walls, sleepers, held particles at rest, obstacles. i cannot slide off if gravity
-    // lies in the cone they span (along one of them, or between two).
+    // move: walls, obstacles, held particles at rest (depth 0), sleepers (their depth); then the
+    // same with the slow free neighbours added. holdsAgainstGravity says whether they hold i.
     const Body& a = bodies_[i];
     constexpr int kMax = 16;
-    // Friction widens each contact's cone by its angle atan(mu): a disc on a slope of less
-    // than that does not slide off it. Without friction gravity must lie strictly between the
-    // normals (or along one, to within 1e-9 rad).
-    const double slack = std::atan(def_.friction) + 1e-9;
-    double nx[kMax], ny[kMax], cone[kMax];
+    double nx[kMax], ny[kMax];
     int count = 0;
+    std::uint32_t lowest = kUngrounded;  // the least depth of a static support below `below`
     const auto add = [&](double x, double y) {
-        if (count < kMax) nx[count] = x, ny[count] = y, cone[count++] = slack;
+        if (count < kMax) nx[count] = x, ny[count++] = y;
     };
     if (def_.walls) {
         if (a.x - a.r <= restGap_) add(-1.0, 0.0);
@@ -980,71 +987,173 @@ bool ExactStepper::supported(std::uint32_t i) const {
         if (a.y - a.r <= restGap_) add(0.0, -1.0);
         if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
     }
-    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, cone, count, kMax);
-    // A slow free neighbour counts as well, as long as something static is among the supports:
-    // an arch of two discs leaning on each other on the pile would otherwise wait for the other
-    // to sleep first, and neither would; two discs falling side by side have nothing static.
-    bool anchored = count > 0;
+    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, count, kMax);
+    if (count > 0) lowest = 0;
+    // Slow free neighbours, kept apart: a sleep that needs them is provisional (see the design
+    // note). With e = 1 only what is static holds; a neighbour rebuilt or woken less than
+    // kRecheckAfter ago may be falling away.
+    double fx[kMax], fy[kMax];
+    int free = 0;
+    const bool freeCount = def_.restitution < 1.0 && now >= kSettleTime;
     forEachAround(i, [&](std::uint32_t q) {
         const Body& b = bodies_[q];
         if (q == i || (b.flags & kHeld && !isStatic(b))) return;
         const bool still = isStatic(b);
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
         if (!still) {
-            // With e = 1 only what is static holds; a neighbour woken (or rebuilt) less than
-            // kSettleTime ago may be falling away.
-            if (def_.restitution >= 1.0 || a.t < kSettleTime) return;
-            const Motion m = motionAt(b, a.t);
+            if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
+            const Motion m = motionAt(b, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
             bx = m.x;
             by = m.y;
         }
         const double rx = bx - a.x, ry = by - a.y;
         const double d = std::sqrt(rx * rx + ry * ry);
-        if (d > 0.0 && d - (a.r + b.r) <= restGap_) {
-            add(rx / d, ry / d);
-            anchored = anchored || still;
+        if (!(d > 0.0 && d - (a.r + b.r) <= restGap_)) return;
+        if (!still) {
+            if (free < kMax) fx[free] = rx / d, fy[free++] = ry / d;
+            return;
         }
+        add(rx / d, ry / d);
+        const std::uint32_t depth = (b.flags & kAsleep) ? depth_[q] : 0;
+        if (depth < below) lowest = std::min(lowest, depth);
     });
-    if (!anchored) return false;
+    Hold h;
+    h.depth = lowest >= kUngrounded ? kUngrounded : lowest + 1;
+    h.firm = lowest < kUngrounded && holdsAgainstGravity(nx, ny, count);
+    if (h.firm || count == 0 || free == 0) return h;
+    // An arch of discs leaning on each other would wait for the others to sleep first, and
+    // none would: the slow free neighbours count too, as long as something static is among the
+    // supports (two discs falling side by side have nothing static).
+    const int statics = count;
+    for (int k = 0; k < free; ++k)
+        add(fx[k], fy[k]);
+    h.withFree = count > statics && holdsAgainstGravity(nx, ny, count);
+    return h;
+}
+
+bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int count) const {
+    // Without friction: gravity in the cone of the normals, along one of them (to 1e-9 rad) or
+    // strictly between two less than a half turn apart. Anything else lets i move down.
     const double pi = 3.14159265358979323846;
     const double ga = std::atan2(gy_, gx_);
-    const auto offset = [&](int k) {  // angle from gravity to normal k, in (-pi, pi]
-        double d = std::atan2(ny[k], nx[k]) - ga;
-        if (d > pi) d -= 2.0 * pi;
-        if (d <= -pi) d += 2.0 * pi;
-        return d;
-    };
     double lo = -kNever, hi = kNever;  // the nearest normals on either side of gravity
     bool left = false, right = false;
     for (int k = 0; k < count; ++k) {
-        const double d = offset(k);
-        if (std::abs(d) <= cone[k]) return true;
+        double d = std::atan2(ny[k], nx[k]) - ga;  // angle from gravity to normal k, (-pi, pi]
+        if (d > pi) d -= 2.0 * pi;
+        if (d <= -pi) d += 2.0 * pi;
+        if (std::abs(d) <= 1e-9) return true;
         if (d < 0.0 && d > lo) lo = d, left = true;
         if (d > 0.0 && d < hi) hi = d, right = true;
     }
-    // Two normals on either side of gravity, less than a half turn apart (widened by friction).
-    return left && right && hi - lo < pi + 2.0 * std::atan(def_.friction) - 1e-9;
+    if (left && right && hi - lo < pi - 1e-9) return true;
+    // Then i slides down the face of one support that gravity presses it into, the one that no
+    // other support blocks (or falls free if it presses into none). Friction holds it there
+    // only if that face is tilted less than the friction angle: it carries i's whole weight.
+    // (Widening every normal's cone by the friction angle instead would count a neighbour that
+    // the slide only grazes as pushing, with any force: a grain between one above and one
+    // below it would be held, and the grains above a neck would lock into a fake arch.)
+    const double g = std::hypot(gx_, gy_), ux = gx_ / g, uy = gy_ / g;
+    bool pressed = false;
+    for (int k = 0; k < count; ++k) {
+        const double c = ux * nx[k] + uy * ny[k];  // cos of the face's tilt
+        if (!(c > 0.0)) continue;
+        pressed = true;
+        const double tx = ux - c * nx[k], ty = uy - c * ny[k];  // down the face, |t| = sin tilt
+        bool blocked = false;
+        for (int m = 0; m < count && !blocked; ++m)
+            blocked = m != k && tx * nx[m] + ty * ny[m] > 1e-9;
+        if (!blocked && std::sqrt(tx * tx + ty * ty) > def_.friction * c + 1e-9) return false;
+    }
+    return pressed;
 }
 
-void ExactStepper::fallAsleep(std::uint32_t i, double now) {
+void ExactStepper::settle(std::uint32_t i, double now, bool slow) {
+    // Slow and held by what does not move: asleep for good. Held only with slow free
+    // neighbours' help, or caught rattling: asleep until a recheck kRecheckAfter later.
+    Hold h;
+    if (slow) {
+        h = hold(i, kUngrounded + 1, now);
+        if (h.firm) {
+            fallAsleep(i, now, h.depth, false);
+            return;
+        }
+        if (h.withFree) {
+            fallAsleep(i, now, h.depth, true);
+            return;
+        }
+    }
+    if (!rattles(i, now)) return;
+    if (!slow) h = hold(i, kUngrounded + 1, now);
+    fallAsleep(i, now, h.depth, !h.firm);
+}
+
+void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional) {
     Body& b = bodies_[i];
     advance(b, now);
     b.vx = b.vy = 0.0;
     b.flags |= kAsleep;
+    depth_[i] = depth;
+    if (provisional) {
+        b.flags |= kProvisional;
+        recheckAt_[i] = now + kRecheckAfter;
+    }
     stopSliding(b);
     ++b.count;
     ++stats_.sleeps;
 }
 
+void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
+    // A provisional sleeper: held now by what does not move, with a support nearer the ground
+    // than itself, it sleeps for good; still held with slow free neighbours' help, it waits
+    // another kRecheckAfter; else it wakes (and what it holds up, see wake()).
+    Body& a = bodies_[i];
+    a.flags &= ~kProvisional;
+    const Hold h = hold(i, depth_[i], ev.time);
+    if (h.firm) {
+        depth_[i] = std::min(depth_[i], h.depth);
+    } else if (h.withFree) {
+        sleepNeighboursAtRest(i, ev.time);
+        a.flags |= kProvisional;
+        recheckAt_[i] = ev.time + kRecheckAfter;
+    } else {
+        wake(i, ev.time);
+        predictCell(i, ev.time);
+    }
+    predictCollision(i, ev.time);
+}
+
+void ExactStepper::sleepNeighboursAtRest(std::uint32_t i, double now) {
+    // A free neighbour with no velocity and no acceleration (one woken or hit at rest on the
+    // floor, say) has no event of its own to fall asleep at, and would keep i provisional for
+    // ever: it falls asleep now if what is static holds it.
+    const Body& a = bodies_[i];
+    forEachAround(i, [&](std::uint32_t q) {
+        const Body& b = bodies_[q];
+        if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return;
+        double ax, ay;
+        accelerationOf(b, ax, ay);
+        if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return;
+        const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
+        if (rx * rx + ry * ry > reach * reach) return;
+        const Hold h = hold(q, kUngrounded + 1, now);
+        if (!h.firm) return;
+        fallAsleep(q, now, h.depth, false);
+        predictCollision(q, now);
+        predictCell(q, now);
+    });
+}
+
 void ExactStepper::wake(std::uint32_t i, double now) {
-    // i wakes, and with it everything resting on it, and on those, ...: a support that moves
-    // lets what it held fall.
+    // i wakes, and with it every sleeper it held up: a sleeper nearer the ground does not rest
+    // on i (see the design note); one farther from it that what stays asleep no longer holds
+    // (with a support nearer the ground than itself) wakes in turn.
     const auto rouse = [&](std::uint32_t k) {
         // It still rests on the walls it rested on (until it moves off them): what presses it
         // into them is then lifted off it, not pressed through it.
         Body& b = bodies_[k];
-        b.flags &= ~kAsleep;
+        b.flags &= ~(kAsleep | kProvisional);
         b.t = now;
         wokeAt_[k] = now;
         ++b.count;
@@ -1057,12 +1166,23 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         wakeStack_.pop_back();
         const Body& a = bodies_[p];
         forEachAround(p, [&](std::uint32_t q) {
-            const Body& b = bodies_[q];
+            Body& b = bodies_[q];
             if (!(b.flags & kAsleep)) return;
-            const double rx = b.x - a.x, ry = b.y - a.y;  // from p up to q
-            if (gx_ * rx + gy_ * ry >= 0.0) return;       // q is not above p
+            const double rx = b.x - a.x, ry = b.y - a.y;
             const double reach = a.r + b.r + restGap_;
             if (rx * rx + ry * ry > reach * reach) return;
+            const Hold h = hold(q, depth_[q], now);
+            if (h.firm) return;
+            if (h.withFree) {
+                // Held now only with slow free neighbours' help: provisional, as if it had just
+                // fallen asleep so (one that already is keeps its recheck).
+                if (!(b.flags & kProvisional)) {
+                    b.flags |= kProvisional;
+                    recheckAt_[q] = now + kRecheckAfter;
+                    predictCollision(q, now);
+                }
+                return;
+            }
             rouse(q);
             predictCollision(q, now);
             predictCell(q, now);
@@ -1189,6 +1309,9 @@ double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_
                 break;
             case Kind::Slide:
                 handleSlide(i, ev);
+                break;
+            case Kind::Recheck:
+                handleRecheck(i, ev);
                 break;
             case Kind::None:
                 return tEnd;  // unreachable: None events are at +infinity

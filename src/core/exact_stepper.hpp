@@ -153,43 +153,61 @@
 //     the particle resting on the wall (its velocity and acceleration across the wall zero); it
 //     still slides along it;
 //   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
-//     acceleration, no cell events) if the supports within restGap_ hold it: one whose contact
-//     normal is within the friction angle atan(mu) of gravity, or two on either side of it,
-//     each normal's cone widened by that angle (frictionless: gravity strictly between them).
-//     Supports are walls, sleepers, held particles at rest and obstacles, and, with e < 1 and
-//     at least one of those among them, free neighbours slower than restSpeed_ (not in the
-//     first kSettleTime after a rebuild): without them an arch of discs leaning on each other waits
-//     for the others to sleep first, and none does. A particle woken less than
-//     kContactDuration ago does not fall asleep again;
+//     acceleration, no cell events) if the supports within restGap_ hold it (hold()): gravity
+//     lies in the cone of their contact normals (along one, or strictly between two less than
+//     a half turn apart), or the one face gravity slides it down (the loaded support no other
+//     blocks) is tilted less than the friction angle atan(mu). Not each normal's cone widened
+//     by that angle: that counts a neighbour the slide only grazes (one above the particle) as
+//     pushing with any force, and grains above a neck locked into arches nothing held up.
+//     Supports are walls, obstacles, held particles at rest and sleepers. Each sleeper has a
+//     depth: 1 on a wall, an obstacle or a held particle, else 1 + the least depth of the
+//     sleepers it rests on; it must keep a support of lower depth, so every sleeper rests on a
+//     chain down to something fixed and no cluster holds itself up;
+//   - provisional sleep (e < 1): a particle that only slow free neighbours (slower than
+//     restSpeed_, not woken in the last kRecheckAfter, not in the first kSettleTime after a
+//     rebuild) help hold, with something static among its supports, sleeps until a recheck
+//     kRecheckAfter later (Kind::Recheck, in its collision key): held then by what is static,
+//     it sleeps for good; still held only with free neighbours' help, it waits again (and a
+//     free neighbour at rest with no acceleration, which has no event of its own to fall
+//     asleep at, falls asleep then if what is static holds it); else it wakes. Without it an arch
+//     of discs leaning on each other waits for the others to sleep first, and none does; with it a
+//     grain that slept on a moving one does not hang in the air when that one has gone. A particle
+//     woken less than kContactDuration ago does not fall asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
-//     wakes, with every sleeper it supported (transitively: the ones resting
-//     on it); slower hits bounce off it as off an infinitely heavy disc, with the restitution
-//     e itself (no TC rule: a sleeper does not move, so there is no collapse to prevent, and the
-//     elastic rule only kept a disc wedged between sleepers rattling at full speed) and with
-//     none if the rebound would be slower than restSpeed_ (it stops, as on a wall it rests on);
+//     wakes; then every sleeper within restGap_ of a woken one is judged again (hold() at its
+//     depth) and wakes if no longer held, and so on (a support that moves lets what it held
+//     fall, whether it held it from below or from the side; one still held with slow free
+//     neighbours' help turns provisional instead); slower hits bounce off it as off
+//     an infinitely heavy disc, with the restitution e itself (no TC rule: a sleeper does not
+//     move, so there is no collapse to prevent, and the elastic rule only kept a disc wedged
+//     between sleepers rattling at full speed) and with none if the rebound would be slower
+//     than restSpeed_ (it stops, as on a wall it rests on);
 //   - a pair that gravity presses together (one falls and the other does not: it is asleep,
 //     held or resting on a wall) and that leaves a collision slower than restSpeed_ / 2 leaves
 //     at restSpeed_ / 2 (an impulse shared as the collision shares it): a particle on the side
 //     of its support hops down it instead of making ever faster tiny bounces on it, and no
-//     pair is ever predicted to touch again at the same instant.
+//     pair is ever predicted to touch again at the same instant (a slider the pair event took
+//     off its face counts as moving with its slide's acceleration: it is still on the face).
 // Rattling (e < 1). Where the weight of a frictionless pile has to be carried by collisions
 // alone, the hard-disc model carries it by ever more frequent ones (a disc squeezed between
 // two others on a floor it slides on, a cluster collapsing, McNamara & Young 1994): the rules
 // above do not bound them. So a particle that collides more than kRattleLimit times within
 // kRattleWindow of simulated time falls asleep where it is (it is caught among its neighbours
-// at that instant); it wakes as any sleeper does. The count is in simulated time, so it does
-// not depend on how steps chop it; particles a rebuild sets free are left alone by it for
-// kSettleTime (they are falling).
+// at that instant): for good if what is static holds it, else provisionally (rechecked as
+// above: a ball squeezed against a neighbour on a slope slides on when the neighbour has
+// left). The count is in simulated time, so it does not depend on how steps chop it;
+// particles a rebuild sets free are left alone by it for kSettleTime (they are falling).
 // restSpeed_ is kRestSpeed for e < 1, or the speed of a hop of kRestHop smallest radii if that
 // is higher (large discs under strong gravity); with e = 1 it is the speed of a fall through
 // rounding (kRestRoundingGap of the box), so that only particles placed at rest on a support rest,
 // and nothing moving ever sleeps (the free-neighbour and rattle rules are off). restGap_ is the
 // height of a hop at restSpeed_, restSpeed_²/(2g): waking a sleeper lets it fall at most that
 // far, which reaches only restSpeed_ and does not wake what is under it.
-// A rebuild (any change to the world) keeps what sleeps where it slept, if the laws (gravity,
-// box, walls, restitution, friction) are unchanged: a particle removed, added, moved or set in
-// motion wakes the sleepers within restGap_ of it (and so what rests on them); more than
+// A rebuild (any change to the world) keeps what sleeps where it slept, at its depth (a
+// provisional sleeper is rechecked kRecheckAfter after it), if the laws (gravity, box, walls,
+// restitution, friction) are unchanged: a particle removed, added, moved or set in motion
+// wakes the sleepers within restGap_ of it (and so what they held up); more than
 // kMaxDisturbances such changes, or changed laws, wake everything. A drag through a settled
 // pile therefore wakes only what the dragged particle touches.
 // The event budget under gravity ends the step at the first event left (see
@@ -249,6 +267,11 @@ inline constexpr double kRattleWindow = 1e-3;
 /// hold a particle up and the rattle guard leaves alone what the rebuild set free: ten times
 /// the u_r/g = 5 ms in which a particle set free from rest is still slower than the rest speed.
 inline constexpr double kSettleTime = 0.05;
+
+/// Under gravity with e < 1: a sleep that needed slow free neighbours, or that the rattle guard
+/// imposed, is checked again this long after (seconds; see the design note). Ten milliseconds:
+/// four times the 2.6 ms in which a neighbour at the rest speed moves out of the rest gap.
+inline constexpr double kRecheckAfter = 0.01;
 
 /// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see the design
 /// note). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
@@ -314,7 +337,7 @@ class ExactStepper {
     [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
 
   private:
-    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide };
+    enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide, Recheck };
 
     // What an event and a neighbour's prediction read, in one 64-byte line.
     struct alignas(64) Body {
@@ -333,6 +356,7 @@ class ExactStepper {
     static constexpr std::uint32_t kRestX = 16;    // no acceleration along x (on a wall, pinned)
     static constexpr std::uint32_t kRestY = 32;    // no acceleration along y
     static constexpr std::uint32_t kSliding = 64;  // on a segment's face: slide_ holds how
+    static constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (see Resting)
     // A particle sliding on a segment's face (kSliding; exact_obstacle_events.cpp): which
     // segment, and its constant acceleration along the face (gravity's share along it less the
     // kinetic friction, or none where static friction holds it).
@@ -375,7 +399,11 @@ class ExactStepper {
     void rebuild(ParticleArrays& p, const WorldDef& def);
     // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
     // changes touch wakes (see the design note).
-    void keepSleepers(std::unordered_map<ParticleId, Body>& before);
+    struct Kept {
+        Body body;
+        std::uint32_t depth;
+    };
+    void keepSleepers(std::unordered_map<ParticleId, Kept>& before);
     // Changed particles beyond which a rebuild wakes everything (an O(N) search per change).
     static constexpr std::size_t kMaxDisturbances = 64;
     void setUpGrid();
@@ -414,13 +442,27 @@ class ExactStepper {
     // level within its reach of i's level.
     template <typename F>
     void forEachAround(std::uint32_t i, F&& f) const;
-    [[nodiscard]] bool supported(std::uint32_t i) const;
+    // What holds i up at time `now` (i is at its position then; see the design note, Resting):
+    // `firm` if the static supports do, with one of depth below `below` among them (depth: the
+    // sleeper's `depth`, 1 + the least of theirs); `withFree` if they do only with the slow
+    // free neighbours added.
+    struct Hold {
+        bool firm = false, withFree = false;
+        std::uint32_t depth = kUngrounded;
+    };
+    static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
+    [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below, double now) const;
+    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count) const;
+    // After an event of i: asleep if slow and held, or caught rattling (see the design note).
+    void settle(std::uint32_t i, double now, bool slow);
+    void handleRecheck(std::uint32_t i, const Event& ev);
+    void sleepNeighboursAtRest(std::uint32_t i, double now);
     [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
         return now - wokeAt_[i] >= kContactDuration;
     }
-    void fallAsleep(std::uint32_t i, double now);
+    void fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional);
     void wake(std::uint32_t i, double now);
-    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n);
+    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid, bool bSlid);
     void settleAfterPair(std::uint32_t i, bool justWoken);
     [[nodiscard]] bool rattles(std::uint32_t i, double now) {
         return def_.restitution < 1.0 && rate_.exceeds(i, now, kRattleWindow, kRattleLimit);
@@ -437,7 +479,7 @@ class ExactStepper {
     void handleCell(std::uint32_t i, double now);
     // Fixed obstacles (exact_obstacle_events.cpp): i's earliest impact with an obstacle of its
     // cell's list, if earlier than best; the rebound; the supports obstacles give a resting
-    // particle (appended to nx, ny, cone up to kMax, returns the new count).
+    // particle (normals appended to nx, ny up to max, returns the new count).
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
     void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
     // The rebound off obstacle k at i's current state (a lift or a slide where gravity presses
@@ -453,8 +495,7 @@ class ExactStepper {
     void predictSlide(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void handleSlide(std::uint32_t i, const Event& ev);
     void stopSliding(Body& b) const { b.flags &= ~kSliding; }
-    int obstacleSupports(std::uint32_t i, double* nx, double* ny, double* cone, int count,
-                         int max) const;
+    int obstacleSupports(std::uint32_t i, double* nx, double* ny, int count, int max) const;
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
@@ -479,6 +520,11 @@ class ExactStepper {
     // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
     // by the next event of the cascade that woke it.
     std::vector<double> wokeAt_;
+    // Per sleeper (gravity only): its depth, 1 for one on a wall, an obstacle or a held
+    // particle, else 1 + the least depth of the sleepers it rests on; and when a provisional
+    // one is checked again.
+    std::vector<std::uint32_t> depth_;
+    std::vector<double> recheckAt_;
     CollisionRate rate_;  // the rattle guard's counts (gravity only)
     double clock_ = 0.0;  // seconds since the last rebuild
     // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is

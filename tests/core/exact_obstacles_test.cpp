@@ -494,6 +494,60 @@ TEST(ExactObstacles, PourOntoRandomSlopesAndPegsNeverEntersAnObstacle) {
     }
 }
 
+TEST(ExactObstacles, ABallOnASlopeIsNotHeldByANeighbourItsSlideOnlyGrazes) {
+    // A ball at rest on a 45° ramp (friction angle 16.7°) with a held ball resting against it
+    // from above, the contact normal square to the slope: gravity slides the ball down the
+    // face, past the held one without pressing into it, so nothing holds it. (Each normal's
+    // cone widened by the friction angle, as the sleep test once judged, spans gravity: the
+    // ball slept there.)
+    Ramp ramp = rampWorld(45.0, 0.3, 0.3, {1.0, 1.0}, 6.0, 10.0);
+    World& w = ramp.world;
+    const double r = 0.1;
+    const Vec2 start = ramp.ramp.a + 1.0 * ramp.along + (r + 0.025 + 1e-7) * ramp.normal;
+    const ParticleId ball = w.add({.position = start, .radius = r});
+    const ParticleId above =
+        w.add({.position = start + (2.0 * r + 1e-6) * ramp.normal, .radius = r});
+    w.setKinematic(above, true);
+    for (int k = 0; k < 30; ++k)
+        w.step(1.0 / 60.0);
+    // Half a second of a block's slide, ½·a·t²: 0.61 m.
+    const double slid = (w.get(ball).position - start).dot(ramp.along);
+    EXPECT_NEAR(slid, 0.5 * ramp.accel * 0.25, 0.02);
+    EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
+}
+
+TEST(ExactObstacles, ASleeperBesideOneThatIsTakenAwayWakesAndSlidesOn) {
+    // On a 45° ramp (friction angle 16.7°) a ball is held by a second one level with it on its
+    // down-slope side, which rests on a third, on the ramp against a small peg. Deleting the
+    // third wakes the second (it rested on it), and that one, rechecked, lets the first go: it
+    // slides on. (Waking once reached only the sleepers above the woken one: the ball beside it
+    // stayed asleep on the slope.)
+    const double r = 0.1, gap = 1e-7;
+    Ramp ramp = rampWorld(45.0, 0.3, 0.3, {1.0, 1.0}, 4.0, 10.0);
+    World& w = ramp.world;
+    const Vec2 first = ramp.ramp.a + 1.0 * ramp.along + (r + 0.025 + gap) * ramp.normal;
+    const Vec2 beside = first + Vec2(2.0 * r + gap, 0.0);
+    const Vec2 under = beside + Vec2(0.0, 2.0 * r + gap);  // on the ramp, as `first` is
+    w.addObstacle(Obstacle::peg(under + (r + 0.05 + gap) * ramp.along, 0.05));
+    const ParticleId bottom = w.add({.position = under, .radius = r});
+    w.add({.position = beside, .radius = r});
+    const ParticleId ball = w.add({.position = first, .radius = r});
+    for (int k = 0; k < 60; ++k)
+        w.step(1.0 / 60.0);
+    const Vec2 rested = w.get(ball).position;
+    const std::uint64_t before = w.counters().events;
+    for (int k = 0; k < 30; ++k)
+        w.step(1.0 / 60.0);
+    ASSERT_EQ(w.counters().events, before) << "did not settle";
+    ASSERT_LT((rested - first).norm(), 1e-3);
+    ASSERT_TRUE(w.remove(bottom));
+    for (int k = 0; k < 30; ++k)
+        w.step(1.0 / 60.0);
+    // Down the slope until it meets the second ball, fallen into the third one's place: 8 cm.
+    EXPECT_GT((w.get(ball).position - rested).dot(ramp.along), 0.04);
+    EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
+}
+
 TEST(ExactObstacles, BallRestingOnAPegWakesWhenHit) {
     const double g = 9.81, r = 0.2;
     World w(WorldDef{.width = 10.0,
