@@ -51,8 +51,18 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
                           def.height == def_.height && def.walls == def_.walls &&
                           def.restitution == def_.restitution && def.friction == def_.friction;
     if (sameLaws) {
-        for (std::uint32_t i = 0; i < bodies_.size(); ++i)
-            before.emplace(ids_[i], bodies_[i]);
+        for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+            // Each particle as sync() wrote it: one that went on unchanged is no disturbance.
+            Body b = bodies_[i];
+            if (!(b.flags & kAsleep)) {
+                const Motion m = motionAt(b, clock_);
+                b.x = m.x;
+                b.y = m.y;
+                b.vx = m.vx;
+                b.vy = m.vy;
+            }
+            before.emplace(ids_[i], b);
+        }
     }
     def_ = def;
     clock_ = 0.0;
@@ -127,7 +137,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         insertMember(i);
     recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
-    if (!before.empty()) keepSleepers(before);
+    keptSleepers_ = !before.empty();
+    if (keptSleepers_) keepSleepers(before);
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
         predictCell(i, 0.0);
@@ -144,15 +155,18 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
     };
     std::vector<Spot> spots;
     const auto n = static_cast<std::uint32_t>(bodies_.size());
+    std::vector<bool> carried(n, false);  // awake, and going on as it was
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         const auto it = before.find(ids_[i]);
         const bool same = it != before.end() && it->second.x == b.x && it->second.y == b.y &&
-                          it->second.r == b.r && b.vx == 0.0 && b.vy == 0.0;
+                          it->second.r == b.r && it->second.vx == b.vx && it->second.vy == b.vy;
         if (same && (it->second.flags & kAsleep) && !(b.flags & kHeld)) {
             b.flags |= kAsleep;
         } else if (!same || (b.flags & kHeld)) {
             spots.push_back({b.x, b.y, b.r});
+        } else {
+            carried[i] = true;
         }
         if (it != before.end()) before.erase(it);
     }
@@ -162,6 +176,7 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
     if (spots.size() > kMaxDisturbances) {
         for (Body& b : bodies_)
             b.flags &= ~kAsleep;
+        keptSleepers_ = false;
         return;
     }
     for (const Spot& s : spots) {
@@ -175,7 +190,7 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Body>& before) {
     }
     // What the changes set free falls: the rattle guard leaves it alone for a while.
     for (std::uint32_t i = 0; i < n; ++i) {
-        if (!(bodies_[i].flags & kAsleep)) rate_.quiet(i, kSettleTime);
+        if (!(bodies_[i].flags & kAsleep) && !carried[i]) rate_.quiet(i, kSettleTime);
     }
 }
 
@@ -992,8 +1007,10 @@ bool ExactStepper::supported(std::uint32_t i) const {
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
         if (!still) {
             // With e = 1 only what is static holds; a neighbour woken (or rebuilt) less than
-            // kSettleTime ago may be falling away.
-            if (def_.restitution >= 1.0 || a.t < kSettleTime) return;
+            // kSettleTime ago may be falling away (after a rebuild that kept the sleepers, only
+            // what it set free or added).
+            const bool settling = keptSleepers_ ? rate_.quietAt(q, a.t) : a.t < kSettleTime;
+            if (def_.restitution >= 1.0 || settling) return;
             const Motion m = motionAt(b, a.t);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
             bx = m.x;
