@@ -1,5 +1,7 @@
 // Leaks of the discrete mode through fixed obstacles, on the Galton board preset
-// (assets/scenes/09-galton-board.json: 1000 balls, 108 pegs, 20 segments), by step size.
+// (assets/scenes/09-galton-board.json: 1000 balls from its dropper, 108 pegs, 14 bin walls), by
+// step size. Balls a dropper releases are followed from the step they appear in; the preset's
+// dropper empties in 50 s, so `--duration 56` runs it to its end.
 //
 // A leak is a ball whose centre, between the end of one step and the end of the next, crosses
 // the core line of a segment (between its ends), or whose centre ends a step inside an
