@@ -6,7 +6,7 @@
 #   help.png     the built-in scene, paused, with the help overlay (H), 720x720 window
 #   inspect.png  the built-in scene, paused, the 18 kg particle selected by a click and its
 #                edit prompt open with 25 typed (Enter, 2, 5), 960x640 window scaled to 75 %
-#   galton.png   09-galton-board 30 s into the pour (run by particle-sim, beside the app in the
+#   galton.png   09-galton-board 30 s into its run (run by particle-sim, beside the app in the
 #                build tree, and saved with its bins), opened paused: its bins panel against
 #                the binomial and the normal curve, 1200x850
 #   funnel.png, hourglass.png, ramp.png, basketball.png  the obstacle presets 10-13, each run
@@ -59,7 +59,7 @@ shoot_and_quit() {
 want() { [[ -z "$ONLY" || "$ONLY" == "$1" ]]; }
 mkdir -p "$WORK/sandbox" "$WORK/help" "$WORK/inspect" "$WORK/momentum" "$WORK/gas" "$WORK/galton"
 if want galton; then
-# The pour takes longer than a picture should wait for the window: the runner runs it.
+# The run takes longer than a picture should wait for the window: the runner runs it.
 "$SIM" "$ASSETS/scenes/09-galton-board.json" --duration 30 --report /dev/null \
     --save "$WORK/galton-30s.json"
 start 1200x850 "$WORK/galton" "$WORK/galton-30s.json" --paused

@@ -22,7 +22,7 @@ namespace psb {
 /// A scene in memory: everything a scene file says, with any `generate` block already expanded
 /// into particles.
 struct Scene {
-    int version = 1;  ///< as read; a scene with obstacles is written as version 2 at least
+    int version = 1;  ///< as read; written as the lowest version that has what the scene uses
     std::string name;
     std::string description;
     WorldDef world;
@@ -38,6 +38,8 @@ struct Scene {
     /// The board's bins and what they should hold (a Galton board's), if the scene says: a
     /// measurement the runner reports and the app draws. The world does not keep it.
     std::optional<Bins> bins;
+    /// The ball droppers and how far each has got (version 4; see World::setDroppers).
+    Droppers droppers;
 };
 
 /// Limits that keep any input, however hostile, from exhausting memory or time.
@@ -79,14 +81,14 @@ class SaveError : public std::runtime_error {
 /// (including a non-finite number in the scene); the old file is untouched on failure.
 void saveScene(const Scene& scene, const std::filesystem::path& path);
 
-/// A world built from a scene (its box, laws, solver settings and particles), particles added
-/// in the scene's order. Throws InvalidArgument for a scene the world refuses (parseScene has
-/// already checked everything a file can get wrong).
+/// A world built from a scene (its box, laws, solver settings, particles and droppers),
+/// particles added in the scene's order. Throws InvalidArgument for a scene the world refuses
+/// (parseScene has already checked everything a file can get wrong).
 [[nodiscard]] World makeWorld(const Scene& scene);
 
-/// A scene describing the world's current state: its box, laws, solver settings and particles
-/// in storage order (a held particle is saved as a free one). Sets allowOverlaps when some
-/// particles overlap, so that the snapshot always loads back.
+/// A scene describing the world's current state: its box, laws, solver settings, particles
+/// in storage order and droppers (a held particle is saved as a free one). Sets allowOverlaps when
+/// some particles overlap, so that the snapshot always loads back.
 [[nodiscard]] Scene sceneFromWorld(const World& world, std::string name = {},
                                    std::string description = {});
 

@@ -23,8 +23,10 @@ struct StageTime {
 ///     loop), "sync" (writing the state into the world's arrays, done at the first read after
 ///     the step, so it is added when that read happens).
 /// Every stage of the mode is listed, a skipped one (no gravity, no walls, no rebuild) at 0.
+/// A world with ball droppers lists "drop" first, in every mode (releasing the balls that are
+/// due); a world without droppers has no such stage.
 struct StepProfile {
-    static constexpr int kMaxStages = 8;
+    static constexpr int kMaxStages = 9;
     std::array<StageTime, kMaxStages> stages{};
     int stageCount = 0;
     double total = 0.0;       ///< milliseconds, every stage together

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <particle_sandbox/detail/id_table.hpp>
+#include <particle_sandbox/dropper.hpp>
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/obstacle.hpp>
 #include <particle_sandbox/particle.hpp>
@@ -81,6 +82,16 @@ class World {
     /// Removes the obstacle at `index`; those after it move down one index. Throws
     /// InvalidArgument for an index past the end.
     void removeObstacle(std::size_t index);
+
+    // --- droppers ----------------------------------------------------------------------------
+    /// The ball droppers, in index order, with how far each has got (dropper.hpp).
+    [[nodiscard]] const Droppers& droppers() const { return droppers_; }
+    /// Replaces every dropper. Throws InvalidArgument, changing nothing, for a dropper with a
+    /// value not finite, an interval, radius or mass not > 0, a negative spread, more than
+    /// kMaxDropperBalls balls, or a ball that does not fit in the box at its release points;
+    /// setBox and setWalls refuse a change that would leave a dropper's balls outside. A world
+    /// without droppers skips the drop stage. clear() removes particles, not droppers.
+    void setDroppers(Droppers droppers);
 
     // --- particles -------------------------------------------------------------------------
     /// Adds a particle; its position is taken as given (overlaps are allowed and separated by
@@ -163,9 +174,13 @@ class World {
     /// first, then tells the exact stepper to rebuild at its next step.
     void changed();
     void stepExact(double dt);
+    /// The drop stage: each dropper whose ball is due releases it (World::add) if its spot is
+    /// clear.
+    void releaseBalls(double dt);
 
     WorldDef def_;
     SolverSettings solver_;
+    Droppers droppers_;  ///< state, not parameters: their counts and clocks change as they drop
     mutable ParticleArrays p_;  ///< mutable: settle() fills in what an exact step left owed
     detail::IdTable ids_;
     std::unique_ptr<StepContext> ctx_;

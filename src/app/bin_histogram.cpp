@@ -42,7 +42,7 @@ double normalCount(double k, const BinomialExpectation& b, double total) {
     return total * std::exp(-0.5 * z * z) / (sigma * std::sqrt(2.0 * std::numbers::pi));
 }
 
-BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p) {
+BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p, std::uint64_t stillToDrop) {
     BinHistogram h;
     h.bins = bins;
     h.now = measureBins(bins, p);
@@ -50,6 +50,7 @@ BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p) {
     std::string bars = "bars: balls in each bin (" + std::to_string(c.counted()) + " landed";
     if (c.above > 0) bars += ", " + std::to_string(c.above) + " not yet in the bins";
     if (c.outside > 0) bars += ", " + std::to_string(c.outside) + " outside the bins";
+    if (stillToDrop > 0) bars += ", " + std::to_string(stillToDrop) + " still to drop";
     h.legend.push_back(bars + ")");
     if (const auto& b = bins.binomial) {
         h.legend.push_back("dots: binomial, " + std::to_string(b->trials) +

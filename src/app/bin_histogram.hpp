@@ -7,6 +7,7 @@
 // What it says is computed without SDL (binHistogram), from the same counts it draws, so the
 // words and the bars never disagree; the screen-text dump (F12) lists the same lines.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -28,8 +29,10 @@ struct BinHistogram {
     std::vector<std::string> legend;
 };
 
-/// The bins of `p` now, and the legend that describes them.
-[[nodiscard]] BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p);
+/// The bins of `p` now, and the legend that describes them; `stillToDrop` balls are still in
+/// the scene's droppers (counted in the legend, not yet anywhere on the board).
+[[nodiscard]] BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p,
+                                        std::uint64_t stillToDrop = 0);
 
 /// The normal approximation to Binomial(n, p) over `total` balls, as a count per bin at bin
 /// position `k` (bins one unit wide): total · φ((k − n p) / σ) / σ, σ = sqrt(n p (1 − p)).

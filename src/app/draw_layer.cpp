@@ -1,5 +1,6 @@
 #include "draw_layer.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "inspector_panel.hpp"
@@ -30,6 +31,8 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     }
     const DrawStats stats =
         renderer_.draw(world, camera, frame.view, &trails_, frame.trailParticle, &avoid);
+    for (const DropperView& d : frame.droppers)
+        drawDropper(camera, d);
     if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);
     if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
     analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
@@ -52,6 +55,29 @@ void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch
     labelFont_.layout(launch.label, static_cast<float>(b.x() + 8.0),
                       static_cast<float>(b.y() - labelFont_.lineHeight() / 2),
                       SDL_Color{230, 230, 230, 255}, text_);
+    labelFont_.draw(text_);
+}
+
+void DrawLayer::drawDropper(const Camera& camera, const DropperView& d) {
+    // A spout: a funnel narrowing down to just above where a ball starts, as wide as the spread
+    // and a ball either side, at least a few pixels whatever the zoom; its words to the right.
+    const Vec2 at = camera.worldToScreen(d.at);
+    const double ppm = camera.worldToScreen(d.at + Vec2(1.0, 0.0)).x() - at.x();
+    const double r = std::max(d.radius * ppm, 2.0);
+    const double bottom = at.y() - 1.3 * r, top = bottom - std::max(3.5 * r, 10.0);
+    const double low = d.spread * ppm + 1.5 * r, high = low + std::max(2.0 * r, 6.0);
+    const auto pt = [](double x, double y) {
+        return SDL_Vertex{
+            {static_cast<float>(x), static_cast<float>(y)}, {150, 165, 185, 255}, {0.f, 0.f}};
+    };
+    const SDL_Vertex quad[4] = {pt(at.x() - high, top), pt(at.x() + high, top),
+                                pt(at.x() + low, bottom), pt(at.x() - low, bottom)};
+    const int indices[6] = {0, 1, 2, 0, 2, 3};
+    SDL_RenderGeometry(sdl_, nullptr, quad, 4, indices, 6);
+    text_.clear();
+    labelFont_.layout(d.label, static_cast<float>(at.x() + high + 6.0),
+                      static_cast<float>(0.5 * (top + bottom) - labelFont_.lineHeight() / 2.0),
+                      SDL_Color{200, 210, 225, 255}, text_);
     labelFont_.draw(text_);
 }
 

@@ -34,6 +34,7 @@ class DrawLayer {
   private:
     void drawLaunch(const Camera& camera, const LaunchPreviewView& launch);
     void drawBoxMarker(const BoxMarkerView& marker);
+    void drawDropper(const Camera& camera, const DropperView& dropper);
     /// The selected obstacle highlighted and the tool's preview, over the world.
     void drawObstacleMarks(const Camera& camera, const FrameView& frame);
 

@@ -45,6 +45,11 @@ std::string speedLabel(const CappedVelocity& v) {
 
 }  // namespace
 
+std::string dropperLabel(const Dropper& d) {
+    if (d.balls == 0) return "dropper: empty";
+    return "dropper: " + std::to_string(d.balls) + (d.balls == 1 ? " ball left" : " balls left");
+}
+
 std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, double height) {
     const Camera::ScreenBox b = camera.boxOnScreen(width, height);
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
@@ -95,7 +100,14 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     }
     f.obstaclePreview = session.obstaclePreview();
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
-    if (session.binsShown()) f.bins = binHistogram(*session.sceneBins(), world.particles());
+    std::uint64_t stillToDrop = 0;
+    for (const Dropper& d : world.droppers()) {
+        stillToDrop += d.balls;
+        f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d)});
+    }
+    if (session.binsShown()) {
+        f.bins = binHistogram(*session.sceneBins(), world.particles(), stillToDrop);
+    }
 
     Overlays& o = f.overlays;
     // The HUD's readings wrap between their parts within the room right of the control panel.

@@ -39,6 +39,14 @@ struct BoxMarkerView {
     std::string label;
 };
 
+/// A ball dropper: its spout above where a ball starts, and what it has left.
+struct DropperView {
+    Vec2 at = Vec2::Zero();  ///< where a ball starts (the middle of the spread), metres
+    double radius = 0.0;     ///< a ball's, metres
+    double spread = 0.0;     ///< metres either side of `at`
+    std::string label;       ///< "dropper: 640 balls left"
+};
+
 struct FrameView {
     const World* world = nullptr;
     const Camera* camera = nullptr;
@@ -53,6 +61,7 @@ struct FrameView {
     std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
     std::optional<BoxMarkerView> boxMarker;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
+    std::vector<DropperView> droppers;
     Overlays overlays;
     PanelLayout layout;
     std::string title;
@@ -74,6 +83,10 @@ struct FrameStats {
 /// The frame for `session`; the fonts only measure text for the layout.
 [[nodiscard]] FrameView buildFrame(const Session& session, const FrameStats& stats,
                                    const Font& hudFont, const Font& labelFont);
+
+/// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
+/// left", "dropper: empty".
+[[nodiscard]] std::string dropperLabel(const Dropper& dropper);
 
 /// Where the box marker goes, or nullopt while any of the box [0, w] × [0, h] is on screen.
 [[nodiscard]] std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width,

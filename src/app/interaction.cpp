@@ -119,9 +119,17 @@ double medianOr(std::vector<double> values, double fallback) {
 void followScene(SpawnSettings& spawn, const World& world) {
     const ParticleArrays& p = world.particles();
     const WorldDef& d = world.def();
-    spawn.typicalMass = medianOr({p.mass.begin(), p.mass.end()}, 10.0);
-    spawn.typicalRadius =
-        medianOr({p.radius.begin(), p.radius.end()}, 25.0 * std::min(d.width, d.height) / 700.0);
+    std::vector<double> masses(p.mass.begin(), p.mass.end());
+    std::vector<double> radii(p.radius.begin(), p.radius.end());
+    // A scene that starts empty but for its ball droppers is at the scale of their balls.
+    if (masses.empty()) {
+        for (const Dropper& dropper : world.droppers()) {
+            masses.push_back(dropper.mass);
+            radii.push_back(dropper.radius);
+        }
+    }
+    spawn.typicalMass = medianOr(std::move(masses), 10.0);
+    spawn.typicalRadius = medianOr(std::move(radii), 25.0 * std::min(d.width, d.height) / 700.0);
     // A mass or radius chosen for another scene would not fit this one; a colour still does.
     spawn.fixedMass.reset();
     spawn.fixedRadius.reset();

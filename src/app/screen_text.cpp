@@ -52,6 +52,12 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
         }
         section(out, "Bins", lines);
     }
+    if (!frame.droppers.empty()) {
+        std::vector<std::string> lines;
+        for (const DropperView& d : frame.droppers)
+            lines.push_back(d.label);
+        section(out, "Droppers", lines);
+    }
     if (frame.view.labels) {
         out += "Labels: " + std::to_string(drawn.labelled) + " drawn, " +
                std::to_string(drawn.labelsCrowded) + " left out" +

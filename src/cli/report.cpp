@@ -58,6 +58,12 @@ std::string reportJson(const RunReport& r) {
         }
         j["bins"] = bins;
     }
+    if (!r.droppers.empty()) {
+        nlohmann::ordered_json droppers = nlohmann::ordered_json::array();
+        for (const RunReport::DropperCount& d : r.droppers)
+            droppers.push_back({{"released", d.released}, {"left", d.left}});
+        j["droppers"] = droppers;
+    }
     return j.dump(2) + "\n";
 }
 

@@ -22,7 +22,8 @@ constexpr const char* kFooter =
     "sim_time, wall_seconds, collisions, wall_collisions, obstacles, obstacle_collisions,\n"
     "kinetic_energy {initial, final}, with gravity potential_energy and mechanical_energy\n"
     "{initial, final} (height measured from the floor), momentum {initial, final},\n"
-    "wall_impulse, max_overlap, escaped. See docs/scenes.md.\n"
+    "wall_impulse, max_overlap, escaped; with bins, bins {counts, ..., chi_square}; with ball\n"
+    "droppers, droppers [{released, left}]. See docs/scenes.md.\n"
     "--timeseries columns: time_s, kinetic_energy_J, momentum_x_kg_m_per_s,\n"
     "momentum_y_kg_m_per_s, com_x_m, com_y_m, collisions, collision_rate_per_s; with gravity\n"
     "also potential_energy_J, mechanical_energy_J.";

@@ -106,6 +106,10 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.momentumFinal = momentum(world);
     r.escaped = countEscaped(world);
     if (scene.bins) r.bins = measureBins(*scene.bins, world.particles());
+    for (std::size_t k = 0; k < world.droppers().size(); ++k) {
+        const Dropper& d = world.droppers()[k];
+        r.droppers.push_back({d.released - scene.droppers[k].released, d.balls});
+    }
     return r;
 }
 

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/math.hpp>
@@ -38,6 +39,13 @@ struct RunReport {
     std::uint64_t escaped = 0;
     /// The scene's bins at the end, when it has bins.
     std::optional<BinsMeasurement> bins;
+    /// Each of the scene's ball droppers: balls it released during the run and balls it has
+    /// left to drop at the end.
+    struct DropperCount {
+        std::uint64_t released = 0;
+        std::uint64_t left = 0;
+    };
+    std::vector<DropperCount> droppers;
 };
 
 /// The scene's solver block with the command line's overrides applied. Throws UsageError when

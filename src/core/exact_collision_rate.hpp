@@ -31,6 +31,7 @@ class CollisionRate {
     }
     /// i is not caught before `until` (seconds): it was set free and is falling.
     void quiet(std::uint32_t i, double until) { quietUntil_[i] = until; }
+    [[nodiscard]] bool quietAt(std::uint32_t i, double now) const { return now < quietUntil_[i]; }
     /// Follows a renumbering of the particles: particle i is now to[i].
     void renumber(const std::vector<std::uint32_t>& to) {
         permute(start_, to);

@@ -51,8 +51,18 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
                           def.height == def_.height && def.walls == def_.walls &&
                           def.restitution == def_.restitution && def.friction == def_.friction;
     if (sameLaws) {
-        for (std::uint32_t i = 0; i < bodies_.size(); ++i)
-            before.emplace(ids_[i], Kept{bodies_[i], depth_[i]});
+        for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+            // Each particle as sync() wrote it: one that went on unchanged is no disturbance.
+            Body b = bodies_[i];
+            if (!(b.flags & kAsleep)) {
+                const Motion m = motionAt(b, clock_);
+                b.x = m.x;
+                b.y = m.y;
+                b.vx = m.vx;
+                b.vy = m.vy;
+            }
+            before.emplace(ids_[i], Kept{b, depth_[i]});
+        }
     }
     def_ = def;
     clock_ = 0.0;
@@ -129,7 +139,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         insertMember(i);
     recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
-    if (!before.empty()) keepSleepers(before);
+    keptSleepers_ = !before.empty();
+    if (keptSleepers_) keepSleepers(before);
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
         predictCell(i, 0.0);
@@ -146,19 +157,22 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
     };
     std::vector<Spot> spots;
     const auto n = static_cast<std::uint32_t>(bodies_.size());
+    std::vector<bool> carried(n, false);  // awake, and going on as it was
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         const auto it = before.find(ids_[i]);
         const Body* was = it != before.end() ? &it->second.body : nullptr;
-        const bool same =
-            was && was->x == b.x && was->y == b.y && was->r == b.r && b.vx == 0.0 && b.vy == 0.0;
-        if (same && (was->flags & kAsleep) && !(b.flags & kHeld)) {
+        const bool same = was && was->x == b.x && was->y == b.y && was->r == b.r &&
+                          was->vx == b.vx && was->vy == b.vy;
+        if (same && (was->flags & kAsleep) && b.vx == 0.0 && b.vy == 0.0 && !(b.flags & kHeld)) {
             // As it slept: at its depth, and a provisional sleep checked again from now.
             b.flags |= was->flags & (kAsleep | kProvisional);
             depth_[i] = it->second.depth;
             recheckAt_[i] = kRecheckAfter;
         } else if (!same || (b.flags & kHeld)) {
             spots.push_back({b.x, b.y, b.r});
+        } else {
+            carried[i] = true;
         }
         if (it != before.end()) before.erase(it);
     }
@@ -168,6 +182,7 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
     if (spots.size() > kMaxDisturbances) {
         for (Body& b : bodies_)
             b.flags &= ~(kAsleep | kProvisional);
+        keptSleepers_ = false;
         return;
     }
     for (const Spot& s : spots) {
@@ -181,7 +196,7 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
     }
     // What the changes set free falls: the rattle guard leaves it alone for a while.
     for (std::uint32_t i = 0; i < n; ++i) {
-        if (!(bodies_[i].flags & kAsleep)) rate_.quiet(i, kSettleTime);
+        if (!(bodies_[i].flags & kAsleep) && !carried[i]) rate_.quiet(i, kSettleTime);
     }
 }
 
@@ -994,14 +1009,17 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     // kRecheckAfter ago may be falling away.
     double fx[kMax], fy[kMax];
     int free = 0;
-    const bool freeCount = def_.restitution < 1.0 && now >= kSettleTime;
+    const bool freeCount = def_.restitution < 1.0 && (keptSleepers_ || now >= kSettleTime);
     forEachAround(i, [&](std::uint32_t q) {
         const Body& b = bodies_[q];
         if (q == i || (b.flags & kHeld && !isStatic(b))) return;
         const bool still = isStatic(b);
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
         if (!still) {
+            // After a rebuild that kept the sleepers only what it set free or added is
+            // settling, not everything.
             if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
+            if (keptSleepers_ && rate_.quietAt(q, now)) return;
             const Motion m = motionAt(b, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
             bx = m.x;

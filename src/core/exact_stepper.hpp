@@ -526,6 +526,9 @@ class ExactStepper {
     std::vector<std::uint32_t> depth_;
     std::vector<double> recheckAt_;
     CollisionRate rate_;  // the rattle guard's counts (gravity only)
+    /// The last rebuild kept what slept (keepSleepers): only the particles it set free or added
+    /// are settling (rate_.quietAt), not everything.
+    bool keptSleepers_ = false;
     double clock_ = 0.0;  // seconds since the last rebuild
     // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
     // three short runs of memory; order_ maps this order back to the world's storage indices.

@@ -24,6 +24,7 @@
 
 #include "json_reader.hpp"
 #include "nearest_name.hpp"
+#include "obstacle_geometry.hpp"
 #include "overlap_check.hpp"
 #include "scene_generate.hpp"
 
@@ -33,9 +34,10 @@ namespace {
 using json = nlohmann::json;
 using Keys = std::initializer_list<std::string_view>;
 
-constexpr int kVersion = 3;
-/// Version 2 added `obstacles`, version 3 `bins`; a file without them may say any version.
-constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3;
+constexpr int kVersion = 4;
+/// Version 2 added `obstacles`, version 3 `bins`, version 4 `droppers`; a file without them
+/// may say any version.
+constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3, kDroppersVersion = 4;
 
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
@@ -430,6 +432,113 @@ Bins readBins(const Reader& r, const json& j, int version, const WorldDef& w) {
     return b;
 }
 
+/// The index of the first obstacle that a ball released anywhere along a dropper's line
+/// (x - spread to x + spread at y) would start inside, if any.
+std::optional<std::size_t> dropperInObstacle(const Dropper& d, const Obstacles& obstacles) {
+    const Obstacle line = Obstacle::segment({d.position.x() - d.spread, d.position.y()},
+                                            {d.position.x() + d.spread, d.position.y()}, 0.0);
+    const auto distance = [](const Obstacle& core, const Vec2& p) {
+        double qx, qy;
+        nearestCorePoint(core, p.x(), p.y(), qx, qy);
+        return std::hypot(p.x() - qx, p.y() - qy);
+    };
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+        const Obstacle& o = obstacles[k];
+        // Two segments are nearest at an end of one of them, unless they cross.
+        double gap = std::min(
+            {distance(line, o.a), distance(line, o.b), distance(o, line.a), distance(o, line.b)});
+        if (!o.isPeg() && crossesCore(o, line.a.x(), line.a.y(), line.b.x(), line.b.y())) gap = 0.0;
+        if (gap < d.radius + o.radius) return k;
+    }
+    return std::nullopt;
+}
+
+/// One dropper: {"x", "y", "balls", "interval", "radius", "mass"} and optionally "color",
+/// "vx", "vy", "spread", "seed", and where it has got to: "released", "next_ball_in". Its balls
+/// must fit in the box at every release point and start clear of every obstacle.
+Dropper readDropper(const Reader& r, const json& j, const std::string& path, const WorldDef& w,
+                    std::uint64_t room) {
+    r.object(j, path,
+             {"x", "y", "balls", "interval", "radius", "mass", "color", "vx", "vy", "spread",
+              "seed", "released", "next_ball_in"});
+    Dropper d;
+    d.position = {r.number(r.require(j, path, "x"), member(path, "x")),
+                  r.number(r.require(j, path, "y"), member(path, "y"))};
+    const std::string ballsPath = member(path, "balls");
+    d.balls = static_cast<std::uint64_t>(r.integer(r.require(j, path, "balls"), ballsPath, 0,
+                                                   static_cast<std::int64_t>(kMaxDropperBalls)));
+    if (d.balls > room) {
+        r.fail(ballsPath, "the scene would hold more than the limit of " +
+                              std::to_string(kMaxSceneParticles) + " particles");
+    }
+    d.interval = r.positive(r.require(j, path, "interval"), member(path, "interval"));
+    const std::string radiusPath = member(path, "radius");
+    d.radius = r.positive(r.require(j, path, "radius"), radiusPath);
+    d.mass = r.mass(r.require(j, path, "mass"), member(path, "mass"));
+    if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
+    if (const json* v = Reader::find(j, "vx")) d.velocity.x() = r.number(*v, member(path, "vx"));
+    if (const json* v = Reader::find(j, "vy")) d.velocity.y() = r.number(*v, member(path, "vy"));
+    if (const json* v = Reader::find(j, "spread")) {
+        d.spread = r.nonNegative(*v, member(path, "spread"));
+    }
+    if (const json* v = Reader::find(j, "seed")) {
+        d.seed = static_cast<std::uint64_t>(r.integer(*v, member(path, "seed"), 0, INT64_MAX));
+    }
+    if (const json* v = Reader::find(j, "released")) {
+        d.released =
+            static_cast<std::uint64_t>(r.integer(*v, member(path, "released"), 0, INT64_MAX));
+    }
+    if (const json* v = Reader::find(j, "next_ball_in")) {
+        const std::string np = member(path, "next_ball_in");
+        d.nextIn = r.number(*v, np);
+        if (d.nextIn > d.interval) {
+            r.fail(np, "must be at most the interval, " + num(d.interval) + " s (got " +
+                           num(d.nextIn) + ")");
+        }
+    }
+    const std::string box = "the " + num(w.width) + " x " + num(w.height) + " m box";
+    if (w.walls && (2.0 * d.radius > w.width || 2.0 * d.radius > w.height)) {
+        r.fail(radiusPath, "a ball of radius " + num(d.radius) + " m does not fit in " + box);
+    }
+    // With walls a ball's centre must be a radius inside them, as the wall stage keeps it.
+    const double margin = w.walls ? d.radius : 0.0;
+    const double x0 = d.position.x() - d.spread, x1 = d.position.x() + d.spread;
+    if (x0 < margin || x1 > w.width - margin) {
+        std::string problem =
+            "balls would start outside " + box + " (x from " + num(x0) + " to " + num(x1) + " m";
+        problem += w.walls ? ", radius " + num(d.radius) + " m)" : ")";
+        r.fail(member(path, "x"), problem);
+    }
+    if (d.position.y() < margin || d.position.y() > w.height - margin) {
+        std::string problem =
+            "balls would start outside " + box + " (y = " + num(d.position.y()) + " m";
+        problem += w.walls ? ", radius " + num(d.radius) + " m)" : ")";
+        r.fail(member(path, "y"), problem);
+    }
+    if (const auto k = dropperInObstacle(d, w.obstacles)) {
+        r.fail(path, "balls would start inside obstacles[" + std::to_string(*k) + "]");
+    }
+    return d;
+}
+
+void readDroppers(const Reader& r, const json& j, Scene& s) {
+    r.expectType(j, "droppers", j.is_array(), "an array");
+    if (s.version < kDroppersVersion && !j.empty()) {
+        r.fail("droppers", "need version " + std::to_string(kDroppersVersion) +
+                               " or later (the file says version " + std::to_string(s.version) +
+                               ")");
+    }
+    if (j.size() > kMaxDroppers) {
+        r.fail("droppers", "holds " + std::to_string(j.size()) +
+                               " droppers, more than the limit of " + std::to_string(kMaxDroppers));
+    }
+    std::uint64_t room = kMaxSceneParticles - s.particles.size();
+    for (std::size_t i = 0; i < j.size(); ++i) {
+        s.droppers.push_back(readDropper(r, j[i], element("droppers", i), s.world, room));
+        room -= s.droppers.back().balls;
+    }
+}
+
 /// Reads one generate block and appends its particles.
 void readGenerate(const Reader& r, const json& j, const std::string& path, const WorldDef& world,
                   std::vector<ParticleDef>& out, std::vector<Origin>& origins) {
@@ -574,7 +683,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
     const Reader r(source);
     r.object(root, "",
              {"version", "name", "description", "world", "solver", "particles", "generate",
-              "allow_overlaps", "obstacles", "bins"});
+              "allow_overlaps", "obstacles", "bins", "droppers"});
 
     Scene s;
     const json& version = r.require(root, "", "version");
@@ -628,6 +737,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
             readGenerate(r, *v, "generate", s.world, s.particles, origins);
         }
     }
+    if (const json* v = Reader::find(root, "droppers")) readDroppers(r, *v, s);
     checkPlacement(r, s, origins);
     return s;
 }

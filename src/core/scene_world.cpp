@@ -10,6 +10,7 @@ World makeWorld(const Scene& scene) {
     World world(scene.world, scene.solver);
     for (const ParticleDef& d : scene.particles)
         world.add(d);
+    world.setDroppers(scene.droppers);
     return world;
 }
 
@@ -19,6 +20,7 @@ Scene sceneFromWorld(const World& world, std::string name, std::string descripti
     s.description = std::move(description);
     s.world = world.def();
     s.solver = world.solver();
+    s.droppers = world.droppers();
     const ParticleArrays& p = world.particles();
     s.particles.reserve(p.size());
     for (std::size_t i = 0; i < p.size(); ++i) {

@@ -83,6 +83,32 @@ void appendBins(std::string& out, const std::optional<Bins>& bins) {
     out += '}';
 }
 
+/// `"droppers": [...]`, one per line, after a separator; nothing for a scene without any.
+void appendDroppers(std::string& out, const Droppers& droppers) {
+    if (droppers.empty()) return;
+    out += ",\n  \"droppers\": [";
+    for (std::size_t i = 0; i < droppers.size(); ++i) {
+        const Dropper& d = droppers[i];
+        appendField(out, i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ", d.position.x(),
+                    "dropper x");
+        appendField(out, ", \"y\": ", d.position.y(), "dropper y");
+        out += ", \"balls\": " + std::to_string(d.balls);
+        appendField(out, ", \"interval\": ", d.interval, "dropper interval");
+        appendField(out, ", \"radius\": ", d.radius, "dropper radius");
+        appendField(out, ", \"mass\": ", d.mass, "dropper mass");
+        out += ", \"color\": ";
+        appendColor(out, d.color);
+        appendField(out, ", \"vx\": ", d.velocity.x(), "dropper vx");
+        appendField(out, ", \"vy\": ", d.velocity.y(), "dropper vy");
+        appendField(out, ", \"spread\": ", d.spread, "dropper spread");
+        out += ", \"seed\": " + std::to_string(d.seed);
+        out += ", \"released\": " + std::to_string(d.released);
+        appendField(out, ", \"next_ball_in\": ", d.nextIn, "dropper next_ball_in");
+        out += '}';
+    }
+    out += "\n  ]";
+}
+
 }  // namespace
 
 std::string serializeScene(const Scene& s) {
@@ -95,6 +121,7 @@ std::string serializeScene(const Scene& s) {
     // The lowest version that has everything the scene uses, so that older builds read it.
     int version = s.world.obstacles.empty() ? s.version : std::max(s.version, 2);
     if (s.bins) version = std::max(version, 3);
+    if (!s.droppers.empty()) version = std::max(version, 4);
     out += ",\n  \"version\": " + std::to_string(version);
 
     const WorldDef& w = s.world;
@@ -119,6 +146,7 @@ std::string serializeScene(const Scene& s) {
 
     appendObstacles(out, w.obstacles);
     appendBins(out, s.bins);
+    appendDroppers(out, s.droppers);
 
     out += ",\n  \"particles\": [";
     for (std::size_t i = 0; i < s.particles.size(); ++i) {

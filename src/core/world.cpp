@@ -9,6 +9,7 @@
 
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
+#include "dropper_stage.hpp"
 #include "exact_stepper.hpp"
 #include "obstacle_validate.hpp"
 #include "stage_timer.hpp"
@@ -69,6 +70,7 @@ World& World::operator=(World&&) noexcept = default;
 World::World(const World& other)
     : def_(other.def_),
       solver_(other.solver_),
+      droppers_(other.droppers_),
       p_(other.particles()),  // with what an exact step still owes it
       ids_(other.ids_),
       ctx_(std::make_unique<StepContext>()),  // scratch is not state
@@ -94,11 +96,13 @@ void World::setBox(double width, double height) {
     d.width = width;
     d.height = height;
     require(d, solver_, "World::setBox");
+    detail::validateDroppers(droppers_, width, height, def_.walls, "World::setBox");
     changed();
     def_ = d;
 }
 
 void World::setWalls(bool enabled) {
+    detail::validateDroppers(droppers_, def_.width, def_.height, enabled, "World::setWalls");
     changed();
     def_.walls = enabled;
 }
@@ -155,6 +159,11 @@ void World::removeObstacle(std::size_t index) {
     }
     changed();
     def_.obstacles.erase(def_.obstacles.begin() + static_cast<std::ptrdiff_t>(index));
+}
+
+void World::setDroppers(Droppers droppers) {
+    detail::validateDroppers(droppers, def_.width, def_.height, def_.walls, "World::setDroppers");
+    droppers_ = std::move(droppers);
 }
 
 ParticleId World::add(const ParticleDef& d) {
@@ -358,6 +367,7 @@ void World::step(double dt) {
     requirePositive(dt, "World::step", "dt");
     profile_ = {};
     if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
+    if (!droppers_.empty()) releaseBalls(dt);
     ctx_->threads = threads_;
     ctx_->broadPhase = solver_.broadphase;
     // A step in another mode works on the arrays: they must hold the state, and the exact
@@ -376,7 +386,34 @@ void World::step(double dt) {
             break;
     }
     if (solver_.mode != StepMode::Exact) broadPhaseUsed_ = ctx_->broadPhaseUsed;
+    profile_.total += profile_.ms("drop");
     time_ += dt;
+}
+
+void World::releaseBalls(double dt) {
+    // Listed first, and only in a world with droppers: a scene without any pays nothing.
+    double& stageMs = profile_.stage("drop");
+    // The state an exact step owes is written first, under its own stage ("sync").
+    const bool due = std::any_of(droppers_.begin(), droppers_.end(),
+                                 [dt](const Dropper& d) { return detail::ballDue(d, dt); });
+    if (due) settle();
+    double ms = 0.0;
+    {
+        StageTimer t(ms);
+        for (Dropper& d : droppers_) {
+            bool released = false, waiting = false;
+            if (detail::ballDue(d, dt)) {
+                const ParticleDef ball = detail::nextBall(d);
+                // A new particle is a change to the world: in the exact mode the next step
+                // rebuilds its events, keeping asleep what sleeps away from the new ball.
+                released = detail::spotClear(p_, ball);
+                waiting = !released;
+                if (released) add(ball);
+            }
+            detail::advanceDropper(d, dt, released, waiting);
+        }
+    }
+    stageMs += ms;
 }
 
 void World::settle() const {

@@ -15,6 +15,7 @@
 #include "analysis_overlays.hpp"
 #include "assets.hpp"
 #include "bin_histogram.hpp"
+#include "frame_view.hpp"
 #include "offscreen_test.hpp"
 #include "panel_layout.hpp"
 #include "session.hpp"
@@ -204,6 +205,44 @@ TEST_F(SessionBinsTest, TheGaltonPresetHasBinsForEachRowCount) {
     ASSERT_TRUE(s.sceneBins()->binomial);
     EXPECT_EQ(s.sceneBins()->size(), static_cast<std::size_t>(s.sceneBins()->binomial->trials) + 1);
     EXPECT_TRUE(s.binsShown());
+}
+
+TEST_F(SessionBinsTest, TheGaltonBoardsDropperCountsDownAndSaveAndResetKeepItsState) {
+    Session s = session();
+    s.apply(cmd::OpenFile{findAsset("scenes/09-galton-board.json")});
+    ASSERT_EQ(s.world().droppers().size(), 1u);
+    EXPECT_EQ(s.world().droppers()[0].balls, 1000u);
+    EXPECT_EQ(s.world().size(), 0u);
+    // Half a second of frames (1/60 s each): a ball every 0.05 s from t = 0.
+    for (int k = 0; k < 30; ++k) {
+        s.apply(cmd::SingleStep{});
+        s.update(0.0, 0.0);
+    }
+    EXPECT_EQ(s.world().droppers()[0].balls, 990u);
+    EXPECT_EQ(s.world().size(), 10u);
+    // The legend counts the balls still in the dropper.
+    const BinHistogram h = binHistogram(*s.sceneBins(), s.world().particles(), 990);
+    EXPECT_EQ(h.legend[0],
+              "bars: balls in each bin (0 landed, 10 not yet in the bins, 990 still to drop)");
+    EXPECT_EQ(dropperLabel(s.world().droppers()[0]), "dropper: 990 balls left");
+    // Saved with how far it has got; reset gives the full dropper back.
+    s.apply(cmd::SaveAs{dir_ / "galton.json"});
+    const Scene saved = loadScene(dir_ / "galton.json");
+    ASSERT_EQ(saved.droppers.size(), 1u);
+    EXPECT_EQ(saved.droppers[0], s.world().droppers()[0]);
+    EXPECT_EQ(saved.particles.size(), 10u);
+    s.apply(cmd::Reset{});
+    EXPECT_EQ(s.world().droppers()[0].balls, 1000u);
+    EXPECT_EQ(s.world().droppers()[0].released, 0u);
+    EXPECT_EQ(s.world().size(), 0u);
+}
+
+TEST(DropperLabel, SaysHowManyBallsAreLeftInWords) {
+    Dropper d;
+    d.balls = 1;
+    EXPECT_EQ(dropperLabel(d), "dropper: 1 ball left");
+    d.balls = 0;
+    EXPECT_EQ(dropperLabel(d), "dropper: empty");
 }
 
 }  // namespace

@@ -205,8 +205,9 @@ TEST_F(SessionTest, NewParticlesFollowTheScenesScale) {
     Session s = session();
     s.apply(cmd::OpenFile{findAsset("scenes/09-galton-board.json")});
     const Scene board = loadScene(findAsset("scenes/09-galton-board.json"));
-    // The board's balls: 5 mm and a few grams, not the default scene's 10 kg.
-    EXPECT_EQ(s.spawn().radius(), board.particles[board.particles.size() / 2].radius);
+    // The board's balls (its dropper's): 5 mm and a few grams, not the default scene's 10 kg.
+    ASSERT_EQ(board.droppers.size(), 1u);
+    EXPECT_EQ(s.spawn().radius(), board.droppers[0].radius);
     EXPECT_LT(s.spawn().mass(), 0.01);
     const double m = s.spawn().mass();
     s.apply(cmd::ChangeSpawnMass{+1});
@@ -214,9 +215,9 @@ TEST_F(SessionTest, NewParticlesFollowTheScenesScale) {
     // A launch makes one of those.
     const Camera& c = s.camera();
     const std::size_t n = s.world().size();
-    // Empty space under the hopper's funnel, beside the top row of pegs.
-    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(0.03, 0.185)), 1.0});
-    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(0.03, 0.185)), 1.5});
+    // Empty space above the top row of pegs, away from the spout.
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(0.03, 0.04)), 1.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(0.03, 0.04)), 1.5});
     ASSERT_EQ(s.world().size(), n + 1);
     EXPECT_NEAR(s.world().get(s.world().ids().back()).mass, 1.1 * m, 1e-12 * m);
 }

@@ -237,6 +237,25 @@ TEST(Report, ListsTheBinCountsExpectedCountsAndChiSquareWhenTheSceneHasBins) {
     EXPECT_FALSE(none.contains("bins"));
 }
 
+TEST(Report, SaysHowManyBallsEachDropperReleasedAndHasLeft) {
+    // Two droppers: one every 0.25 s (5 of 7 in 1 s: at 0, 0.25, 0.5, 0.75 and 1.0, the last at
+    // the step starting at t = 1), and one that had already dropped 2 and has 1 left.
+    constexpr const char* kDroppers = R"({"version": 4,
+        "world": {"width": 1, "height": 1, "gravity": [0, 9.81]},
+        "droppers": [{"x": 0.3, "y": 0.1, "balls": 7, "interval": 0.25, "radius": 0.01, "mass": 0.01},
+                     {"x": 0.7, "y": 0.1, "balls": 1, "interval": 0.1, "radius": 0.01, "mass": 0.01,
+                      "released": 2}]})";
+    const auto j = nlohmann::json::parse(reportJson(run(kDroppers, 1.1)));
+    const auto& d = j.at("droppers");
+    ASSERT_EQ(d.size(), 2u);
+    EXPECT_EQ(d[0].at("released"), 5);
+    EXPECT_EQ(d[0].at("left"), 2);
+    EXPECT_EQ(d[1].at("released"), 1);  // during this run
+    EXPECT_EQ(d[1].at("left"), 0);
+    const auto none = nlohmann::json::parse(reportJson(run(R"({"version": 1})", 0.1)));
+    EXPECT_FALSE(none.contains("droppers"));
+}
+
 TEST(CliApp, SaveKeepsTheScenesBins) {
     const auto dir =
         std::filesystem::temp_directory_path() / ("psb-runner-bins-" + std::to_string(::getpid()));

@@ -73,12 +73,16 @@ TEST(Presets, AllLoadAndRunKeepingEveryParticleInTheBox) {
     for (const auto& file : sceneFiles(kScenes)) {
         SCOPED_TRACE(file.filename().string());
         const Scene s = loadScene(file);
-        ASSERT_GT(s.particles.size(), 0u);
+        // Every preset has particles, or a dropper that makes them.
+        ASSERT_GT(s.particles.size() + s.droppers.size(), 0u);
         World w = makeWorld(s);
         const double e0 = kineticEnergy(w);
         for (int k = 0; k < 30; ++k)
             w.step(w.solver().dt);
-        EXPECT_EQ(w.size(), s.particles.size());
+        std::uint64_t dropped = 0;
+        for (std::size_t k = 0; k < s.droppers.size(); ++k)
+            dropped += w.droppers()[k].released - s.droppers[k].released;
+        EXPECT_EQ(w.size(), s.particles.size() + dropped);
         const ParticleArrays& p = w.particles();
         for (std::size_t i = 0; i < p.size(); ++i) {
             ASSERT_TRUE(std::isfinite(p.x[i]) && std::isfinite(p.y[i]));
@@ -149,15 +153,17 @@ TEST(Presets, TheGaltonBoardsBinsAreUnderItsBinWallsOnePerNumberOfRightTurns) {
     // The bins are centred under the top peg, where the balls fall in.
     const double middle = 0.5 * (s.bins->edges.front() + s.bins->edges.back());
     EXPECT_NEAR(middle, 0.5 * s.world.width, 1e-12);
-    // Before the pour every ball is above the bins.
-    ParticleArrays p;
-    for (const ParticleDef& d : s.particles) {
-        p.x.push_back(d.position.x());
-        p.y.push_back(d.position.y());
-    }
-    const BinCounts c = countBins(*s.bins, p);
-    EXPECT_EQ(c.counted(), 0u);
-    EXPECT_EQ(c.above, 1000u);
+    // No ball yet: one spout above the top peg, in the middle, holds all 1000.
+    EXPECT_TRUE(s.particles.empty());
+    ASSERT_EQ(s.droppers.size(), 1u);
+    const Dropper& d = s.droppers[0];
+    EXPECT_EQ(d.balls, 1000u);
+    EXPECT_EQ(d.released, 0u);
+    EXPECT_EQ(d.position.x(), 0.5 * s.world.width);
+    EXPECT_LT(d.position.y(), *rows.begin());
+    // Its spread keeps a ball off the top peg's dead centre, within the peg's own width.
+    EXPECT_GT(d.spread, 0.0);
+    EXPECT_LT(d.spread, pegRadius);
 }
 
 TEST(Presets, BrownianMotionIsOneHeavyDiscWithItsTrailInAGas) {

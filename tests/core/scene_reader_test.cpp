@@ -198,7 +198,7 @@ TEST(SceneReader, MessagesEscapeControlCharactersAndShortenHugeKeys) {
     EXPECT_EQ(messageOf(R"({"version": 1, ")" + key + R"(": 1})"),
               "s.json: " + std::string(64, 'k') +
                   "...: unknown key (expected one of: version, name, description, world, solver, "
-                  "particles, generate, allow_overlaps, obstacles, bins)");
+                  "particles, generate, allow_overlaps, obstacles, bins, droppers)");
 }
 
 TEST(JsonReader, LineAndColumnCountBytesFromOne) {

@@ -5,12 +5,15 @@
 #   tests/e2e/galton_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
 #   1. opens preset 09 (paused)            -> the bins panel is there, on by default: 0 landed,
-#                                             "too few balls yet", bars in no colour
+#                                             1000 still to drop, "too few balls yet"; the
+#                                             dropper's spout is drawn, "dropper: 1000 balls left"
 #   2. Space, a few seconds, F12 (again    -> balls have landed: the counts add up to the
 #      until ten have landed)
-#                                             number the legend says, the bars are drawn (orange
-#                                             in the panel), the legend names the binomial
-#                                             and the normal curve, with a verdict in words
+#                                             number the legend says, landed + not yet in the
+#                                             bins + still to drop = 1000 = what the dropper
+#                                             says it released and has left, the bars are drawn
+#                                             (orange in the panel), the legend names the
+#                                             binomial and the normal curve, with a verdict
 #   3. the Show section's checkbox off     -> the panel is gone from the screen and its text
 set -euo pipefail
 
@@ -38,11 +41,16 @@ wait_log "Preset 9 of"
 snap 1-opened
 box=$(rect 1-opened bins)
 [[ -n "$box" ]] || fail "no bins panel on opening the Galton board: $(cat "$OUT/1-opened.txt")"
-section 1-opened Bins | grep -q "^bars: balls in each bin (0 landed, 1000 not yet in the bins)$" ||
+section 1-opened Bins | grep -q "^bars: balls in each bin (0 landed, 1000 still to drop)$" ||
     fail "legend before the run: $(section 1-opened Bins)"
 section 1-opened Bins | grep -q "^too few balls yet to compare with the curve$" ||
     fail "no 'too few' verdict before the run"
-pass "opened: bins panel at $box, $(section 1-opened Bins | head -1)"
+section 1-opened Droppers | grep -q "^dropper: 1000 balls left$" ||
+    fail "no dropper in the screen text: $(cat "$OUT/1-opened.txt")"
+# The spout's colour (150 165 185) on the board.
+spout=$(convert "$OUT/1-opened.png" -depth 8 txt:- | grep -c "#96A5B9" || true)
+[[ "$spout" -gt 30 ]] || fail "only $spout spout-coloured pixels: no dropper drawn"
+pass "opened: bins panel at $box, $(section 1-opened Bins | head -1), spout $spout pixels"
 
 # --- 2. run it ----------------------------------------------------------------------------------
 # Until balls have landed (a loaded machine steps the thousand balls slower than real time),
@@ -59,6 +67,13 @@ done
 [[ -n "$landed" && "$landed" -gt 0 ]] || fail "no balls landed after $((4 * look)) s: $legend"
 sum=$(grep "^counts:" <<<"$legend" | tr ' ' '\n' | grep -E '^[0-9]+$' | paste -sd+ | bc)
 [[ "$sum" == "$landed" ]] || fail "the counts add up to $sum, the legend says $landed landed"
+falling=$(sed -nE 's/^bars: .* ([0-9]+) not yet in the bins.*/\1/p' <<<"$legend")
+todrop=$(sed -nE 's/^bars: .* ([0-9]+) still to drop.*/\1/p' <<<"$legend")
+left=$(section 2-running Droppers | sed -nE 's/^dropper: ([0-9]+) balls? left$/\1/p')
+[[ -n "$todrop" && "$todrop" == "$left" ]] ||
+    fail "the legend says ${todrop:-none} still to drop, the dropper ${left:-nothing}"
+[[ $((landed + ${falling:-0} + todrop)) -eq 1000 ]] ||
+    fail "landed $landed + not yet in the bins ${falling:-0} + still to drop $todrop != 1000"
 grep -qE "^dots: binomial, [0-9]+ rows, p = 1/2$" <<<"$legend" || fail "no binomial line: $legend"
 grep -qE "^line: normal curve \(mean [0-9.]+, spread [0-9.]+ bins\)$" <<<"$legend" ||
     fail "no normal curve line: $legend"
@@ -66,7 +81,7 @@ grep -qE "^((close to|far from) the curve: chi-squared [0-9.e+]+ [<>] [0-9.]+|to
     fail "no verdict in words: $legend"
 pixels=$(bars_in "$OUT/2-running.png" "$(rect 2-running bins)")
 [[ "$pixels" -gt 500 ]] || fail "only $pixels bar-coloured pixels in the bins panel"
-pass "$landed landed (counts add up), $pixels bar pixels; $(sed -n 4p <<<"$legend")"
+pass "$landed landed (counts add up), ${falling:-0} falling, $todrop still to drop; $pixels bar pixels; $(sed -n 4p <<<"$legend")"
 
 # --- 3. switched off in the Show section (open by default) ---------------------------------------
 click "Bin counts against the bell curve"
