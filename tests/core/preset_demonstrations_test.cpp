@@ -83,7 +83,7 @@ TEST(PresetDemonstrations, GaltonBoardInTheExactModeFillsItsBinsAsTheBinomialSay
     // The preset as it opens (the exact mode) until its spout is empty (1000 balls, one every
     // 0.05 s) and 3 s more for the last ball to land: about 12 s in Release. The first few
     // hundred balls alone are no cheaper check: balls that meet in a gap between two pegs
-    // sometimes stay there, wedged, until later balls knock them through (7 of the first 300).
+    // sometimes stay there, wedged, until later balls knock them through.
     const Scene s = loadScene(kScenes / "09-galton-board.json");
     ASSERT_EQ(s.solver.mode, StepMode::Exact);
     ASSERT_EQ(s.droppers.size(), 1u);
