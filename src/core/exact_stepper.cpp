@@ -1016,9 +1016,12 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
         const bool still = isStatic(b);
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
         if (!still) {
+            // A neighbour woken less than kRecheckAfter ago that has not been stopped or
+            // turned by anything since may be falling away (its support left it); one that
+            // has (it landed, or the hit that woke it has been answered) counts if it is slow.
             // After a rebuild that kept the sleepers only what it set free or added is
             // settling, not everything.
-            if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
+            if (!freeCount || (now - wokeAt_[q] < kRecheckAfter && b.t <= wokeAt_[q])) return;
             if (keptSleepers_ && rate_.quietAt(q, now)) return;
             const Motion m = motionAt(b, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
