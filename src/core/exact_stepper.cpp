@@ -1005,8 +1005,8 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, count, kMax);
     if (count > 0) lowest = 0;
     // Slow free neighbours, kept apart: a sleep that needs them is provisional (see the design
-    // note). With e = 1 only what is static holds; a neighbour rebuilt, or woken less than
-    // kRecheckAfter ago and not stopped or turned by anything since, may be falling away.
+    // note). With e = 1 only what is static holds; a neighbour rebuilt or woken less than
+    // kRecheckAfter ago may be falling away.
     double fx[kMax], fy[kMax];
     int free = 0;
     const bool freeCount = def_.restitution < 1.0 && (keptSleepers_ || now >= kSettleTime);
@@ -1016,10 +1016,9 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
         const bool still = isStatic(b);
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
         if (!still) {
-            // One woken that has collided since (it landed, or the hit that woke it was
-            // answered) counts if it is slow: it is no longer falling away. After a rebuild
-            // that kept the sleepers only what it set free or added is settling, not everything.
-            if (!freeCount || (now - wokeAt_[q] < kRecheckAfter && b.t <= wokeAt_[q])) return;
+            // After a rebuild that kept the sleepers only what it set free or added is
+            // settling, not everything.
+            if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
             if (keptSleepers_ && rate_.quietAt(q, now)) return;
             const Motion m = motionAt(b, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;

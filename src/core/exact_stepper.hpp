@@ -164,15 +164,15 @@
 //     sleepers it rests on; it must keep a support of lower depth, so every sleeper rests on a
 //     chain down to something fixed and no cluster holds itself up;
 //   - provisional sleep (e < 1): a particle that only slow free neighbours (slower than
-//     restSpeed_, not woken in the last kRecheckAfter with no collision since, not in the
-//     first kSettleTime after a rebuild) help hold, with something static among its
-//     supports, sleeps until a recheck kRecheckAfter later (Kind::Recheck, in its collision
-//     key): held then by what is static, it sleeps for good; still held only with free neighbours'
-//     help, it waits again (and a free neighbour at rest with no acceleration, which has no event
-//     of its own to fall asleep at, falls asleep then if what is static holds it); else it wakes.
-//     Without it an arch of discs leaning on each other waits for the others to sleep first, and
-//     none does; with it a grain that slept on a moving one does not hang in the air when that one
-//     has gone. A particle woken less than kContactDuration ago does not fall asleep again;
+//     restSpeed_, not woken in the last kRecheckAfter, not in the first kSettleTime after a
+//     rebuild) help hold, with something static among its supports, sleeps until a recheck
+//     kRecheckAfter later (Kind::Recheck, in its collision key): held then by what is static,
+//     it sleeps for good; still held only with free neighbours' help, it waits again (and a
+//     free neighbour at rest with no acceleration, which has no event of its own to fall
+//     asleep at, falls asleep then if what is static holds it); else it wakes. Without it an arch
+//     of discs leaning on each other waits for the others to sleep first, and none does; with it a
+//     grain that slept on a moving one does not hang in the air when that one has gone. A particle
+//     woken less than kContactDuration ago does not fall asleep again;
 //   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
 //     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
 //     wakes; then every sleeper within restGap_ of a woken one is judged again (hold() at its
