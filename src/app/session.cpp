@@ -12,6 +12,7 @@
 #include "clock.hpp"
 #include "physics_controls.hpp"
 #include "scene_io.hpp"
+#include "units.hpp"
 
 namespace psb::app {
 
@@ -826,6 +827,10 @@ void Session::saveTo(const std::filesystem::path& path) {
 // Undo and redo.
 
 void Session::undoOrRedo(bool redo) {
+    // The clock as the screen shows it (the HUD's "Time"): an undo restores the whole state,
+    // the time with it, and the message says so whenever that number changes.
+    const double timeBefore = world_.time();
+    const std::string shownBefore = quantity(timeBefore, "s");
     if (viewing_) show(timeline_.lastFrame());  // the present is what comes back after
     if (!(redo ? undo_.canRedo() : undo_.canUndo())) {
         say(redo ? "Nothing to redo" : "Nothing to undo");
@@ -835,7 +840,11 @@ void Session::undoOrRedo(bool redo) {
     UndoState now = snapshot(std::move(world_));
     auto step = redo ? undo_.redo(std::move(now)) : undo_.undo(std::move(now));
     restore(std::move(step->state));
-    say((redo ? "Redone: " : "Undone: ") + step->label);
+    std::string message = (redo ? "Redone: " : "Undone: ") + step->label;
+    const std::string shownAfter = quantity(world_.time(), "s");
+    if (shownAfter != shownBefore)
+        message += (world_.time() < timeBefore ? " (back to " : " (forward to ") + shownAfter + ")";
+    say(message);
 }
 
 // ---------------------------------------------------------------------------------------------
