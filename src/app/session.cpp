@@ -357,7 +357,7 @@ void Session::apply(const Command& command) {
                 view_.labels = !view_.labels;
                 say(view_.labels ? "Labels on" : "Labels off");
             } else if constexpr (std::is_same_v<T, cmd::ToggleHelp>) {
-                showHelp_ = !showHelp_;
+                toggleHelp();
             } else if constexpr (std::is_same_v<T, cmd::ToggleProfile>) {
                 togglePanel(showProfile_, "Profile on", "Profile off");
             } else if constexpr (std::is_same_v<T, cmd::ToggleMomentum>) {
@@ -922,6 +922,22 @@ void Session::seek(double seconds, bool oneFrameBack) {
         return;
     }
     if (target != at) show(target);
+}
+
+void Session::toggleHelp() {
+    const int pages =
+        options_.insets.helpPagesFor
+            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight(),
+                                           static_cast<int>(controlsInset()))
+            : 1;
+    if (!showHelp_) {
+        showHelp_ = true;
+        helpPage_ = 0;
+    } else if (static_cast<int>(helpPage_) + 1 < pages) {
+        ++helpPage_;
+    } else {
+        showHelp_ = false;
+    }
 }
 
 void Session::back() {
