@@ -63,6 +63,22 @@ BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p, std::uint64
     return h;
 }
 
+BinChartLayout binChartLayout(const Font& font, float x, float width, float legendBottom,
+                              float boxBottom, const std::string& yTitle,
+                              const std::string& xTitle) {
+    const float lh = static_cast<float>(font.lineHeight());
+    BinChartLayout c;
+    c.left = x + 44;
+    c.right = x + width - 10;
+    c.yCaption = {x + 8, legendBottom + 2, static_cast<float>(font.measure(yTitle)), lh};
+    // The top tick's label is centred on the top of the plot: half a line under the caption.
+    c.top = c.yCaption.y + lh + lh / 2 + 2;
+    c.bottom = boxBottom - 2 * lh - 6;
+    const float xw = static_cast<float>(font.measure(xTitle));
+    c.xCaption = {std::max(x + 8, c.right - xw), c.bottom + 3 + lh, xw, lh};
+    return c;
+}
+
 void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
                              const SDL_Rect& box) {
     const PanelFrame f = beginPanel(font, box, boxes_, text_);
@@ -78,12 +94,14 @@ void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const Bin
             lineY += lh;
         }
     }
-    const float left = x + 44, right = x + boxW - 10;
-    const float top = lineY + 6;
-    const float bottom = y + height - 2 * lh - 6;
+    const std::string yTitle = "balls";
+    const std::string xTitle =
+        h.bins.binomial ? "bin = times a ball went right" : "bin, left to right";
+    const BinChartLayout chart = binChartLayout(font, x, boxW, lineY, y + height, yTitle, xTitle);
+    const float left = chart.left, right = chart.right, top = chart.top, bottom = chart.bottom;
     const std::vector<std::size_t>& counts = h.now.counts.counts;
     const std::size_t bins = counts.size();
-    if (bins == 0 || !(bottom > top + 10)) {
+    if (bins == 0 || !chart.fits()) {
         boxes_.draw(renderer, nullptr);
         font.draw(text_);
         return;
@@ -131,10 +149,8 @@ void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const Bin
         font.layout(label, sx(static_cast<double>(k) + 0.5) - font.measure(label) / 2.0f,
                     bottom + 3, grey, text_);
     }
-    const char* xTitle = h.bins.binomial ? "bin = times a ball went right" : "bin, left to right";
-    font.layout(xTitle, right - static_cast<float>(font.measure(xTitle)), bottom + 3 + lh, grey,
-                text_);
-    font.layout("balls", x + 8, bottom + 3 + lh, grey, text_);
+    font.layout(xTitle, chart.xCaption.x, chart.xCaption.y, grey, text_);
+    font.layout(yTitle, chart.yCaption.x, chart.yCaption.y, grey, text_);
 
     boxes_.draw(renderer, nullptr);
     if (curve_.size() > 1) {

@@ -42,6 +42,20 @@ struct BinHistogram {
 /// "1/2" for 0.5, else the probability with up to three significant digits.
 [[nodiscard]] std::string probabilityText(double p);
 
+/// Where the chart goes in a panel of `x`, `width`, `boxBottom` (pixels) under a legend that
+/// ends at `legendBottom`: the plot's axes, the y axis caption ("balls") on its own line above
+/// the plot, and the x axis caption (`xTitle`) on the line under the bin numbers, right-aligned
+/// but never left of the box. The two captions are on different lines at every size.
+struct BinChartLayout {
+    float left = 0, right = 0, top = 0, bottom = 0;
+    SDL_FRect yCaption{}, xCaption{};
+    /// Whether the plot has room to be drawn at all.
+    [[nodiscard]] bool fits() const { return bottom > top + 10; }
+};
+[[nodiscard]] BinChartLayout binChartLayout(const Font& font, float x, float width,
+                                            float legendBottom, float boxBottom,
+                                            const std::string& yTitle, const std::string& xTitle);
+
 /// Colours, for the tests to look for.
 inline constexpr SDL_Color kBinBarColor{230, 160, 60, 255};
 inline constexpr SDL_Color kBinomialDotColor{255, 255, 255, 255};

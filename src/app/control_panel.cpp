@@ -50,6 +50,10 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(open ? kControlsWidth : kControlsFoldedWidth, height));
     ImGui::PushStyleColor(ImGuiCol_WindowBg, kPanelBackground);
+    if (!open) {
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
+                            ImVec2(kControlsFoldedPadding, ImGui::GetStyle().WindowPadding.y));
+    }
     const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                    ImGuiWindowFlags_NoSavedSettings |
@@ -78,6 +82,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
         }
     }
     ImGui::End();
+    if (!open) ImGui::PopStyleVar();
     ImGui::PopStyleColor();
     launchPreview(s, pixelRatio);
     return std::move(out_);

@@ -34,7 +34,10 @@ class Session;
 
 /// The panel's width open and folded, window points (pixels at a pixel ratio of 1).
 inline constexpr float kControlsWidth = 310.f;
-inline constexpr float kControlsFoldedWidth = 34.f;
+/// Folded, the strip holds the ">>" button at its label's width (15 px DejaVu Sans: 30
+/// points with the frame padding) inside kControlsFoldedPadding either side.
+inline constexpr float kControlsFoldedWidth = 44.f;
+inline constexpr float kControlsFoldedPadding = 6.f;
 /// Scenes with more particles than this get no all-particles table.
 inline constexpr std::size_t kTableMaxParticles = 60;
 

@@ -127,7 +127,14 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
                         " left out where they would overlap (zoom in)");
     }
     o.showHelp = session.helpShown();
-    if (o.showHelp) o.help = helpLines();
+    if (o.showHelp) {
+        const SDL_Rect room =
+            helpRoom(session.camera().viewportWidth(), session.camera().viewportHeight(),
+                     static_cast<int>(session.controlsInset()));
+        const auto pages = helpPages(hudFont, helpLines(), {room.w, room.h});
+        o.help = pages[std::min(session.helpPage(), pages.size() - 1)];
+        o.helpAt = {room.x, room.y};
+    }
     o.showProfile = session.profileShown();
     if (o.showProfile) {
         ProfileData pd;

@@ -61,6 +61,54 @@ SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines) {
     return {w + 8, font.lineHeight() * static_cast<int>(lines.size()) + 4};
 }
 
+SDL_Rect helpRoom(int width, int height, int left) {
+    const int x = left + kPanelMargin;
+    return {x, kPanelMargin, std::max(0, width - x - kPanelMargin),
+            std::max(0, height - 2 * kPanelMargin)};
+}
+
+std::vector<std::vector<std::string>> helpPages(const Font& font,
+                                                const std::vector<std::string>& lines,
+                                                SDL_Point room) {
+    if (lines.size() < 2) return {lines};
+    const int lh = std::max(1, font.lineHeight());
+    const MeasureText measure = [&font](std::string_view t) {
+        return static_cast<float>(font.measure(t));
+    };
+    // The title and a blank line head every page.
+    const std::size_t capacity = static_cast<std::size_t>(std::max(1, (room.y - 4) / lh - 2));
+    std::vector<std::vector<std::string>> bodies{{}};
+    for (std::size_t k = 2; k < lines.size(); ++k) {
+        // A control's words continue under their own column, not under the keys.
+        const std::string& line = lines[k];
+        const std::size_t gap = line.find("   ");
+        const std::size_t column = gap == std::string::npos ? 0 : line.find_first_not_of(' ', gap);
+        const float width = static_cast<float>(room.x - 8);  // textBoxSize's padding
+        const std::string indent =
+            column != std::string::npos &&
+                    static_cast<float>(font.measure(std::string(column, ' '))) < width * 2 / 3
+                ? std::string(column, ' ')
+                : std::string("  ");
+        const std::vector<std::string> wrapped = wrapAtSpaces(line, width, measure, indent);
+        if (!bodies.back().empty() && bodies.back().size() + wrapped.size() > capacity)
+            bodies.emplace_back();
+        bodies.back().insert(bodies.back().end(), wrapped.begin(), wrapped.end());
+    }
+    std::vector<std::vector<std::string>> pages;
+    for (std::size_t p = 0; p < bodies.size(); ++p) {
+        std::string title = lines[0];
+        if (bodies.size() > 1) {
+            title += " (page " + std::to_string(p + 1) + " of " + std::to_string(bodies.size()) +
+                     (p + 1 < bodies.size() ? ": H for the next)" : ": H closes)");
+        }
+        std::vector<std::string> page = wrapLines(font, {title}, room.x);
+        page.push_back(lines[1]);
+        page.insert(page.end(), bodies[p].begin(), bodies[p].end());
+        pages.push_back(std::move(page));
+    }
+    return pages;
+}
+
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout) {
     GeometryBatch boxes, text;
@@ -81,15 +129,19 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
     panel(o.hud, layout.hud);
     if (o.showProfile) panel(o.profile, layout.profile, 200);
     panel(o.messages, layout.messages);
-    if (o.showHelp) {
-        // The help is asked for and read, then closed: it covers the other panels meanwhile.
-        const SDL_Point size = textBoxSize(font, o.help);
-        const int y = layout.hud.y + layout.hud.h + kPanelGap;
-        panel(o.help, SDL_Rect{36, y, size.x, size.y}, 225);
-    }
     panel(o.inspector, layout.inspector, 200);
     boxes.draw(renderer, nullptr);
     font.draw(text);
+    if (o.showHelp) {
+        // The help is asked for and read, then closed: it covers the other panels meanwhile,
+        // their text included (drawn after them, opaque).
+        boxes.clear();
+        text.clear();
+        const SDL_Point size = textBoxSize(font, o.help);
+        panel(o.help, SDL_Rect{o.helpAt.x, o.helpAt.y, size.x, size.y}, 245);
+        boxes.draw(renderer, nullptr);
+        font.draw(text);
+    }
 }
 
 }  // namespace psb::app

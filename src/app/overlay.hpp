@@ -16,7 +16,8 @@ namespace psb::app {
 
 struct Overlays {
     std::vector<std::string> hud;
-    std::vector<std::string> help;
+    std::vector<std::string> help;  ///< the page of the help shown
+    SDL_Point helpAt{0, 0};         ///< where the help's box goes (helpRoom)
     std::vector<std::string> profile;
     std::vector<std::string> messages;
     std::vector<std::string> inspector;  ///< empty: nothing selected
@@ -43,6 +44,18 @@ inline constexpr std::size_t kMessageLines = 3;
 
 /// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
 [[nodiscard]] SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines);
+
+/// The room (pixels, padding included) the help has in a window `width` × `height` whose
+/// left `left` pixels are the control panel's: all of it right of the panel, the HUD and the
+/// other panels covered while it is open.
+[[nodiscard]] SDL_Rect helpRoom(int width, int height, int left);
+
+/// The help's `lines` (a title, a blank line, one line per control) in pages that fit `room`
+/// (each line wrapped to its width, a control never split between pages); each page starts
+/// with the title, saying "page k of n" and what H does when there is more than one.
+[[nodiscard]] std::vector<std::vector<std::string>> helpPages(const Font& font,
+                                                              const std::vector<std::string>& lines,
+                                                              SDL_Point room);
 
 /// Draws the panels of `o` onto `renderer` in the boxes of `layout` (a box with w == 0 is not
 /// drawn). The help is drawn over everything when switched on.

@@ -1,5 +1,6 @@
 #include "sdl_context.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 
 namespace psb::app {
@@ -31,6 +32,28 @@ bool isSoftwareRasteriser(const std::string& glRenderer) {
     return false;
 }
 
+std::string noWindowReason(const std::string& driver, const char* requested, const char* display,
+                           const char* wayland) {
+    if (driver != "offscreen" && driver != "dummy") return {};
+    if (requested != nullptr && std::string(requested).find(driver) != std::string::npos) return {};
+    const auto named = [](const char* name, const char* value) {
+        std::string out(name);
+        if (value != nullptr && *value != '\0') {
+            out += '=';
+            out += value;
+        } else {
+            out += " unset";
+        }
+        return out;
+    };
+    return "cannot open a window: no display would let the program in (" +
+           named("DISPLAY", display) + ", " + named("WAYLAND_DISPLAY", wayland) +
+           "; an X server that says \"Authorization required\" needs XAUTHORITY), and SDL fell "
+           "back to its windowless '" +
+           driver + "' video driver. Set SDL_VIDEODRIVER=" + driver +
+           " to run without a window on purpose.";
+}
+
 SdlContext::SdlContext(const SdlContextOptions& options) {
     try {
         if (!options.renderDriver.empty()) {
@@ -46,6 +69,11 @@ SdlContext::SdlContext(const SdlContextOptions& options) {
             throw std::runtime_error(std::string("cannot start SDL video: ") + SDL_GetError());
         }
         videoStarted_ = true;
+        const char* driver = SDL_GetCurrentVideoDriver();
+        const std::string refused =
+            noWindowReason(driver != nullptr ? driver : "", std::getenv("SDL_VIDEODRIVER"),
+                           std::getenv("DISPLAY"), std::getenv("WAYLAND_DISPLAY"));
+        if (!refused.empty()) throw std::runtime_error(refused);
         // SDL starts with text input on; the app wants it only while the edit prompt is open.
         SDL_StopTextInput();
         createWindow(options);

@@ -26,6 +26,15 @@ struct SdlContextOptions {
     std::filesystem::path font;
 };
 
+/// Empty when SDL's video driver `driver` shows a window; otherwise why there is none: SDL
+/// falls back to its windowless drivers ("offscreen", "dummy") when no display lets it in
+/// (an X server refusing the connection, "Authorization required"), and the program would run
+/// with nothing on screen. A windowless driver asked for by name (`requested`, the
+/// SDL_VIDEODRIVER variable, as the tests do) is fine. `display` and `wayland` are the
+/// DISPLAY and WAYLAND_DISPLAY variables (null when unset), named in the reason.
+[[nodiscard]] std::string noWindowReason(const std::string& driver, const char* requested,
+                                         const char* display, const char* wayland);
+
 /// Whether an OpenGL GL_RENDERER string names a software rasteriser.
 [[nodiscard]] bool isSoftwareRasteriser(const std::string& glRenderer);
 

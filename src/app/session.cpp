@@ -12,6 +12,7 @@
 #include "clock.hpp"
 #include "physics_controls.hpp"
 #include "scene_io.hpp"
+#include "units.hpp"
 
 namespace psb::app {
 
@@ -356,7 +357,7 @@ void Session::apply(const Command& command) {
                 view_.labels = !view_.labels;
                 say(view_.labels ? "Labels on" : "Labels off");
             } else if constexpr (std::is_same_v<T, cmd::ToggleHelp>) {
-                showHelp_ = !showHelp_;
+                toggleHelp();
             } else if constexpr (std::is_same_v<T, cmd::ToggleProfile>) {
                 togglePanel(showProfile_, "Profile on", "Profile off");
             } else if constexpr (std::is_same_v<T, cmd::ToggleMomentum>) {
@@ -826,6 +827,10 @@ void Session::saveTo(const std::filesystem::path& path) {
 // Undo and redo.
 
 void Session::undoOrRedo(bool redo) {
+    // The clock as the screen shows it (the HUD's "Time"): an undo restores the whole state,
+    // the time with it, and the message says so whenever that number changes.
+    const double timeBefore = world_.time();
+    const std::string shownBefore = quantity(timeBefore, "s");
     if (viewing_) show(timeline_.lastFrame());  // the present is what comes back after
     if (!(redo ? undo_.canRedo() : undo_.canUndo())) {
         say(redo ? "Nothing to redo" : "Nothing to undo");
@@ -835,7 +840,11 @@ void Session::undoOrRedo(bool redo) {
     UndoState now = snapshot(std::move(world_));
     auto step = redo ? undo_.redo(std::move(now)) : undo_.undo(std::move(now));
     restore(std::move(step->state));
-    say((redo ? "Redone: " : "Undone: ") + step->label);
+    std::string message = (redo ? "Redone: " : "Undone: ") + step->label;
+    const std::string shownAfter = quantity(world_.time(), "s");
+    if (shownAfter != shownBefore)
+        message += (world_.time() < timeBefore ? " (back to " : " (forward to ") + shownAfter + ")";
+    say(message);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -913,6 +922,22 @@ void Session::seek(double seconds, bool oneFrameBack) {
         return;
     }
     if (target != at) show(target);
+}
+
+void Session::toggleHelp() {
+    const int pages =
+        options_.insets.helpPagesFor
+            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight(),
+                                           static_cast<int>(controlsInset()))
+            : 1;
+    if (!showHelp_) {
+        showHelp_ = true;
+        helpPage_ = 0;
+    } else if (static_cast<int>(helpPage_) + 1 < pages) {
+        ++helpPage_;
+    } else {
+        showHelp_ = false;
+    }
 }
 
 void Session::back() {

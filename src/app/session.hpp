@@ -143,6 +143,8 @@ class Session {
     [[nodiscard]] const Camera& camera() const { return camera_; }
     [[nodiscard]] const ViewOptions& view() const { return view_; }
     [[nodiscard]] bool helpShown() const { return showHelp_; }
+    /// The page of the help shown (H turns the page, and closes it after the last).
+    [[nodiscard]] std::size_t helpPage() const { return helpPage_; }
     [[nodiscard]] bool profileShown() const { return showProfile_; }
     /// The control panel is open (else folded to a strip).
     [[nodiscard]] bool controlsShown() const { return showControls_; }
@@ -277,6 +279,7 @@ class Session {
     void stepForward();
     /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.
     void seek(double seconds, bool oneFrameBack = false);
+    void toggleHelp();
     void back();
     void quit();
     void fit();
@@ -340,6 +343,7 @@ class Session {
     bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
     ViewOptions view_;
     bool showHelp_ = false;
+    std::size_t helpPage_ = 0;
     bool showProfile_ = false;
     bool showControls_ = true;
     cmd::Tool tool_ = cmd::Tool::Fling;

@@ -31,6 +31,9 @@ struct ViewInsets {
     /// narrow window), with the note that the side column is folded when `folded`: the larger
     /// of this and `top` is kept free.
     std::function<double(int room, bool folded)> topFor{};
+    /// When set, how many pages the help takes in a window `width` × `height` pixels whose
+    /// left `left` pixels are the control panel's (see helpPages); otherwise one.
+    std::function<int(int width, int height, int left)> helpPagesFor{};
 };
 
 /// Between the panels and the window's edges, pixels.

@@ -153,6 +153,43 @@ TEST_F(BinHistogramDrawTest, DrawsTheBarsTheDotsAndTheNormalCurveInItsBox) {
     EXPECT_EQ(count(kBinBarColor, left), 0);
 }
 
+TEST_F(BinHistogramDrawTest, TheAxisCaptionsNeverOverlapEachOtherOrTheTickLabels) {
+    // Both captions used to share the line under the bin numbers, "balls" at the left and the
+    // x caption right-aligned: they overlapped in every Galton view. Every chart size, from the
+    // narrowest panel to a wide one, and legends of one to six lines.
+    const auto meet = [](const SDL_FRect& a, const SDL_FRect& b) {
+        return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+    };
+    const float lh = static_cast<float>(font_->lineHeight());
+    int drawn = 0;
+    for (const char* xTitle : {"bin = times a ball went right", "bin, left to right"}) {
+        for (int width = 120; width <= 800; width += 10) {
+            for (int lines = 1; lines <= 6; ++lines) {
+                const float x = 10, y = 20, height = kBinsMinHeight;
+                const float legendBottom = y + 4 + static_cast<float>(lines) * lh;
+                const BinChartLayout c = binChartLayout(*font_, x, static_cast<float>(width),
+                                                        legendBottom, y + height, "balls", xTitle);
+                if (!c.fits()) continue;
+                ++drawn;
+                SCOPED_TRACE(std::string(xTitle) + ", width " + std::to_string(width) + ", " +
+                             std::to_string(lines) + " legend lines");
+                EXPECT_FALSE(meet(c.yCaption, c.xCaption));
+                EXPECT_GE(c.yCaption.y, legendBottom) << "under the legend";
+                EXPECT_GE(c.xCaption.x, x) << "inside the box";
+                EXPECT_LE(c.xCaption.y + c.xCaption.h, y + height) << "inside the box";
+                // The top tick label (centred on the plot's top) and the bin numbers
+                // (the line under the axis) stay clear of the captions.
+                const SDL_FRect topTick{x, c.top - lh / 2, c.left - x, lh};
+                const SDL_FRect binNumbers{x, c.bottom + 3, static_cast<float>(width), lh};
+                EXPECT_FALSE(meet(c.yCaption, topTick));
+                EXPECT_FALSE(meet(c.xCaption, binNumbers));
+                EXPECT_FALSE(meet(c.yCaption, binNumbers));
+            }
+        }
+    }
+    EXPECT_GT(drawn, 100);
+}
+
 class SessionBinsTest : public TempDirTest {
   protected:
     SessionBinsTest() : TempDirTest("psb-session-bins") {}

@@ -295,6 +295,11 @@ TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {
     const PanelItem* open = panel_.item("open panel");
     ASSERT_NE(open, nullptr);
     EXPECT_LE(open->x1, kControlsFoldedWidth);
+    // The button is as wide as its label: both ">" of ">>" show (the message says
+    // "C or >> opens it"); it used to be cut to one ">" by the strip's width.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    EXPECT_GE(open->x1 - open->x0, ImGui::CalcTextSize(">>").x + 2.f * style.FramePadding.x);
+    EXPECT_GE(open->x0, 0.f);
     EXPECT_EQ(panel_.item("Play/Pause"), nullptr);
     click("open panel");
     EXPECT_TRUE(session_->controlsShown());

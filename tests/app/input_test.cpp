@@ -127,6 +127,22 @@ TEST(Renderer, AnOpenGLSoftwareRasteriserIsRecognised) {
     EXPECT_FALSE(isSoftwareRasteriser(""));
 }
 
+TEST(Renderer, AWindowlessVideoDriverNobodyAskedForIsAnError) {
+    // X refused the connection ("Authorization required"): SDL went on with "offscreen".
+    const std::string why = noWindowReason("offscreen", nullptr, ":99", nullptr);
+    EXPECT_NE(why.find("cannot open a window"), std::string::npos) << why;
+    EXPECT_NE(why.find("DISPLAY=:99"), std::string::npos) << why;
+    EXPECT_NE(why.find("WAYLAND_DISPLAY unset"), std::string::npos) << why;
+    EXPECT_NE(why.find("'offscreen'"), std::string::npos) << why;
+    EXPECT_FALSE(noWindowReason("dummy", nullptr, nullptr, nullptr).empty());
+    // Asked for by name (the tests' SDL_VIDEODRIVER=dummy), or a real display: no error.
+    EXPECT_EQ(noWindowReason("dummy", "dummy", nullptr, nullptr), "");
+    EXPECT_EQ(noWindowReason("offscreen", "offscreen", ":99", nullptr), "");
+    EXPECT_EQ(noWindowReason("x11", nullptr, ":99", nullptr), "");
+    EXPECT_EQ(noWindowReason("wayland", nullptr, nullptr, "wayland-0"), "");
+    EXPECT_EQ(noWindowReason("KMSDRM", nullptr, nullptr, nullptr), "");
+}
+
 TEST(Input, UndoRedoAndStepBackKeysLeaveThePlainKeysAsTheyWere) {
     EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), false)));
     EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL | KMOD_LSHIFT), false)));

@@ -9,6 +9,8 @@
 
 #include "assets.hpp"
 #include "camera.hpp"
+#include "control_panel.hpp"
+#include "hud.hpp"
 #include "inspector_panel.hpp"
 #include "offscreen_test.hpp"
 #include "overlay.hpp"
@@ -484,6 +486,38 @@ TEST_F(RenderTest, HudLinesWrapBetweenTheirPartsAndKeepEveryReading) {
     for (const char* reading : {"1.96 J", "(0.111,", "0.461)", "help"})
         EXPECT_NE(joined.find(reading), std::string::npos) << joined;
     EXPECT_EQ(wrapHudLines(*font_, {line}, 10000), std::vector<std::string>{line});
+}
+
+TEST_F(RenderTest, TheHelpFitsA600By600WindowInPagesAndListsEveryControl) {
+    // The HUD's font, as the app draws the help. In a 600 x 600 window (the control panel
+    // folded) the help used to be one box, cut at the right edge, its last rows (K to Esc)
+    // below the window.
+    const Font hud(sdl_, findAsset("fonts/DejaVuSansMono.ttf"), 14);
+    const SDL_Rect room = helpRoom(600, 600, static_cast<int>(kControlsFoldedWidth));
+    EXPECT_GT(textBoxSize(hud, helpLines()).y, room.h) << "one box does not fit";
+    const auto pages = helpPages(hud, helpLines(), {room.w, room.h});
+    ASSERT_GE(pages.size(), 2u);
+    std::string all;
+    for (const auto& page : pages) {
+        const SDL_Point size = textBoxSize(hud, page);
+        EXPECT_LE(room.x + size.x, 600 - kPanelMargin);
+        EXPECT_LE(room.y + size.y, 600 - kPanelMargin);
+        EXPECT_GE(room.x, static_cast<int>(kControlsFoldedWidth)) << "clear of the panel strip";
+        for (const std::string& l : page)
+            all += l + "\n";
+    }
+    EXPECT_NE(pages.front().front().find("page 1 of"), std::string::npos);
+    EXPECT_NE(pages.back().front().find("H closes"), std::string::npos);
+    // Every control, in order, the last ones included.
+    std::size_t at = 0;
+    for (const auto& [keys, what] : controls()) {
+        const std::size_t found = all.find(keys, at);
+        ASSERT_NE(found, std::string::npos) << keys;
+        at = found + keys.size();
+    }
+    // A large window keeps it on one page.
+    const SDL_Rect big = helpRoom(1600, 1000, static_cast<int>(kControlsWidth));
+    EXPECT_EQ(helpPages(hud, helpLines(), {big.w, big.h}).size(), 1u);
 }
 
 }  // namespace

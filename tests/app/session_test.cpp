@@ -122,6 +122,33 @@ TEST_F(SessionTest, ModeCyclingAlwaysMovesOnAndSaysWhyAModeWasSkipped) {
     }
 }
 
+TEST_F(SessionTest, HTurnsTheHelpsPagesAndClosesItAfterTheLast) {
+    SessionOptions o = options();
+    int asked = 0;
+    o.insets.helpPagesFor = [&asked](int width, int height, int) {
+        ++asked;
+        return width < 700 || height < 700 ? 2 : 1;
+    };
+    o.viewportWidth = 600;
+    o.viewportHeight = 600;
+    Session s(makeWorld(defaultScene()), "default", o);
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_TRUE(s.helpShown());
+    EXPECT_EQ(s.helpPage(), 0u);
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_TRUE(s.helpShown()) << "the second page, not closed";
+    EXPECT_EQ(s.helpPage(), 1u);
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_FALSE(s.helpShown());
+    EXPECT_GT(asked, 0);
+    // Opened again it starts at the first page; in a large window one press closes it.
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_EQ(s.helpPage(), 0u);
+    s.apply(cmd::Resize{1000, 1000});
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_FALSE(s.helpShown());
+}
+
 TEST_F(SessionTest, EscClosesTheHelpFirstAndAsksBeforeLosingUnsavedChanges) {
     Session s = session();
     s.apply(cmd::ToggleHelp{});

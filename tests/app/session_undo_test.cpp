@@ -261,6 +261,31 @@ TEST(SessionUndo, KeepsAHundredStepsAndUndoingAnEditWhileRunningTakesTheClockBac
     EXPECT_EQ(s.world().def().gravity, Vec2::Zero());
 }
 
+TEST(SessionUndo, SaysWhenAnUndoOrRedoTakesTheClockBackOrForward) {
+    // An edit while paused at 1.00 s, a run to 2.00 s, an undo: the whole state, clock
+    // included, goes back to 1.00 s, and the message says so; the redo says where it goes.
+    Session s = session(false);
+    double now = run(s, 60, 0.0);
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::TogglePause{});
+    now = run(s, 60, now);
+    ASSERT_GT(s.world().time(), 1.9);
+    (void)s.takeNotices();
+    s.apply(cmd::Undo{});
+    EXPECT_TRUE(said(s.takeNotices(), "Undone: spawn particle (back to 1.00 s)"));
+    EXPECT_NEAR(s.world().time(), 1.0, 1e-9);
+    s.apply(cmd::Redo{});
+    EXPECT_TRUE(said(s.takeNotices(), "Redone: spawn particle (forward to 2.00 s)"));
+    // An undo that leaves the clock where it is says nothing about time.
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Undo{});
+    const auto notices = s.takeNotices();
+    EXPECT_TRUE(said(notices, "Undone: spawn particle"));
+    EXPECT_FALSE(said(notices, " to "));
+}
+
 class SessionStepBack : public ::testing::TestWithParam<StepMode> {};
 
 /// A running session in `mode` with a 10 s history of the default scene plus spawns.
