@@ -88,8 +88,8 @@ App::App(const AppOptions& options) : options_(options) {
     s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
     // In a narrow window the HUD's lines wrap (frame_view.cpp): the band grows with them,
     // measured on readings as wide as they get.
-    s.insets.helpPagesFor = [font = &sdl_->hudFont()](int width, int height, int left) {
-        const SDL_Rect room = helpRoom(width, height, left);
+    s.insets.helpPagesFor = [font = &sdl_->hudFont()](int width, int height) {
+        const SDL_Rect room = helpRoom(width, height);
         return static_cast<int>(helpPages(*font, helpLines(), {room.w, room.h}).size());
     };
     s.insets.topFor = [font = &sdl_->hudFont(), lh](int room, bool folded) {

@@ -129,8 +129,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Font
     o.showHelp = session.helpShown();
     if (o.showHelp) {
         const SDL_Rect room =
-            helpRoom(session.camera().viewportWidth(), session.camera().viewportHeight(),
-                     static_cast<int>(session.controlsInset()));
+            helpRoom(session.camera().viewportWidth(), session.camera().viewportHeight());
         const auto pages = helpPages(hudFont, helpLines(), {room.w, room.h});
         o.help = pages[std::min(session.helpPage(), pages.size() - 1)];
         o.helpAt = {room.x, room.y};

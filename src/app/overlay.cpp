@@ -61,9 +61,8 @@ SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines) {
     return {w + 8, font.lineHeight() * static_cast<int>(lines.size()) + 4};
 }
 
-SDL_Rect helpRoom(int width, int height, int left) {
-    const int x = left + kPanelMargin;
-    return {x, kPanelMargin, std::max(0, width - x - kPanelMargin),
+SDL_Rect helpRoom(int width, int height) {
+    return {kPanelMargin, kPanelMargin, std::max(0, width - 2 * kPanelMargin),
             std::max(0, height - 2 * kPanelMargin)};
 }
 
@@ -83,13 +82,22 @@ std::vector<std::vector<std::string>> helpPages(const Font& font,
         const std::string& line = lines[k];
         const std::size_t gap = line.find("   ");
         const std::size_t column = gap == std::string::npos ? 0 : line.find_first_not_of(' ', gap);
+        // Where that column would leave its words too little room, the words go on the lines
+        // under the keys instead, indented.
         const float width = static_cast<float>(room.x - 8);  // textBoxSize's padding
-        const std::string indent =
-            column != std::string::npos &&
-                    static_cast<float>(font.measure(std::string(column, ' '))) < width * 2 / 3
-                ? std::string(column, ' ')
-                : std::string("  ");
-        const std::vector<std::string> wrapped = wrapAtSpaces(line, width, measure, indent);
+        const bool besideKeys =
+            column == std::string::npos ||
+            static_cast<float>(font.measure(std::string(column, ' '))) < width * 2 / 3;
+        std::vector<std::string> wrapped;
+        if (besideKeys) {
+            wrapped = wrapAtSpaces(line, width, measure,
+                                   std::string(column == std::string::npos ? 2 : column, ' '));
+        } else {
+            wrapped = wrapAtSpaces(line.substr(0, gap), width, measure, "  ");
+            const std::vector<std::string> words =
+                wrapAtSpaces("  " + line.substr(column), width, measure, "  ");
+            wrapped.insert(wrapped.end(), words.begin(), words.end());
+        }
         if (!bodies.back().empty() && bodies.back().size() + wrapped.size() > capacity)
             bodies.emplace_back();
         bodies.back().insert(bodies.back().end(), wrapped.begin(), wrapped.end());

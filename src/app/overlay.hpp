@@ -45,10 +45,10 @@ inline constexpr std::size_t kMessageLines = 3;
 /// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
 [[nodiscard]] SDL_Point textBoxSize(const Font& font, const std::vector<std::string>& lines);
 
-/// The room (pixels, padding included) the help has in a window `width` × `height` whose
-/// left `left` pixels are the control panel's: all of it right of the panel, the HUD and the
-/// other panels covered while it is open.
-[[nodiscard]] SDL_Rect helpRoom(int width, int height, int left);
+/// The room (pixels, padding included) the help has in a window `width` × `height`: all of it
+/// (the control panel is not drawn while the help is open; the HUD and the other panels are
+/// covered).
+[[nodiscard]] SDL_Rect helpRoom(int width, int height);
 
 /// The help's `lines` (a title, a blank line, one line per control) in pages that fit `room`
 /// (each line wrapped to its width, a control never split between pages); each page starts

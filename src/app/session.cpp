@@ -927,8 +927,7 @@ void Session::seek(double seconds, bool oneFrameBack) {
 void Session::toggleHelp() {
     const int pages =
         options_.insets.helpPagesFor
-            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight(),
-                                           static_cast<int>(controlsInset()))
+            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight())
             : 1;
     if (!showHelp_) {
         showHelp_ = true;

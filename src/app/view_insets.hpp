@@ -33,7 +33,7 @@ struct ViewInsets {
     std::function<double(int room, bool folded)> topFor{};
     /// When set, how many pages the help takes in a window `width` × `height` pixels whose
     /// left `left` pixels are the control panel's (see helpPages); otherwise one.
-    std::function<int(int width, int height, int left)> helpPagesFor{};
+    std::function<int(int width, int height)> helpPagesFor{};
 };
 
 /// Between the panels and the window's edges, pixels.

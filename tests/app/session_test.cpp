@@ -125,7 +125,7 @@ TEST_F(SessionTest, ModeCyclingAlwaysMovesOnAndSaysWhyAModeWasSkipped) {
 TEST_F(SessionTest, HTurnsTheHelpsPagesAndClosesItAfterTheLast) {
     SessionOptions o = options();
     int asked = 0;
-    o.insets.helpPagesFor = [&asked](int width, int height, int) {
+    o.insets.helpPagesFor = [&asked](int width, int height) {
         ++asked;
         return width < 700 || height < 700 ? 2 : 1;
     };
