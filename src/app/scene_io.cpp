@@ -42,6 +42,35 @@ SceneInfo describeScene(const std::filesystem::path& file) {
     return info;
 }
 
+std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
+                                                  std::string& why) {
+    // Built by appending: GCC 12 warns wrongly (-Wrestrict) on "'" + string.
+    const auto quoted = [](const std::string& text) {
+        std::string q(1, '\'');
+        q += text;
+        q += '\'';
+        return q;
+    };
+    std::string name = typed.filename().string();
+    while (!name.empty() && (name.back() == '.' || name.back() == ' '))
+        name.pop_back();
+    if (name.empty()) {
+        why = quoted(typed.filename().string());
+        why += " is not a file name";
+        return std::nullopt;
+    }
+    if (name.front() == '.') {
+        why = quoted(name);
+        why +=
+            " would be a hidden file with no name before its extension; type a name such as "
+            "lesson.json";
+        return std::nullopt;
+    }
+    std::filesystem::path path = typed.parent_path() / name;
+    if (path.extension().empty()) path += ".json";
+    return path;
+}
+
 std::filesystem::path freeSavePath(const std::filesystem::path& path) {
     std::error_code ec;
     std::filesystem::path p = std::filesystem::absolute(path, ec);

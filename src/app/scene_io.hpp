@@ -35,6 +35,13 @@ struct SceneInfo {
 /// message names the file wherever the program was started.
 [[nodiscard]] std::filesystem::path freeSavePath(const std::filesystem::path& path);
 
+/// The file a name typed for Save As names: trailing dots and spaces dropped ("lesson." is
+/// "lesson"), then ".json" added when no extension is left. A name with nothing before its
+/// extension (".json"), or beginning with a dot (a hidden file no file list would show), is
+/// refused: nullopt, and `why` says so.
+[[nodiscard]] std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
+                                                                std::string& why);
+
 /// Saves `world` as a scene named `name` with `description` (and the scene's `bins`) to `path`,
 /// atomically (psb::saveScene): the old file survives any failure. Returns a line for the user
 /// naming the absolute path; throws SaveError saying why it failed.

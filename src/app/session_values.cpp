@@ -193,8 +193,13 @@ void Session::saveAs(const cmd::SaveAs& c) {
         say("Save: type a file name first", Notice::Level::Warning);
         return;
     }
-    std::filesystem::path path = c.path;
-    if (path.extension().empty()) path += ".json";
+    std::string why;
+    const std::optional<std::filesystem::path> named = saveFileName(c.path, why);
+    if (!named) {
+        say("Save: " + why, Notice::Level::Warning);
+        return;
+    }
+    std::filesystem::path path = *named;
     std::error_code ec;
     if (!c.overwrite && std::filesystem::exists(path, ec)) path = freeSavePath(path);
     options_.saveTo = path;

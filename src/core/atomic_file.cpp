@@ -2,6 +2,13 @@
 // it over the target, fsync the directory. rename(2) within one file system is atomic, so a
 // reader, or a crash, sees the old file or the new one; a failure at any point before the
 // rename leaves the old file untouched.
+//
+// A process killed while writing leaves nothing behind: where the file system has O_TMPFILE
+// (Linux: ext4, xfs, btrfs, tmpfs) the contents are written to a file with no name, which is
+// given its temporary name (linkat) only once it is complete and flushed, just before the
+// rename. Elsewhere the temporary file has its name from the start, and a kill while writing
+// leaves it; so every save first removes the temporaries that earlier saves of the same file
+// left behind, those whose process (its id is in the name) no longer runs.
 
 #include <particle_sandbox/atomic_file.hpp>
 
@@ -9,10 +16,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <signal.h>
+
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <particle_sandbox/scene.hpp>
 
@@ -35,8 +46,10 @@ class TempFile {
     TempFile& operator=(const TempFile&) = delete;
     ~TempFile() {
         if (fd_ >= 0) ::close(fd_);
-        if (!released_) ::unlink(path_.c_str());
+        if (!released_ && !path_.empty()) ::unlink(path_.c_str());
     }
+    /// An unnamed file (O_TMPFILE, path empty) was given `path`.
+    void named(std::filesystem::path path) { path_ = std::move(path); }
     [[nodiscard]] int fd() const { return fd_; }
     int close() {
         const int r = ::close(fd_);
@@ -50,6 +63,37 @@ class TempFile {
     std::filesystem::path path_;
     bool released_ = false;
 };
+
+/// The prefix of every temporary name a save of `target` uses: ".NAME.tmp-".
+std::string tempPrefix(const std::filesystem::path& target) {
+    std::string prefix = ".";  // appended, not '+': GCC 12 warns wrongly on "." + string
+    prefix += target.filename().string();
+    prefix += ".tmp-";
+    return prefix;
+}
+
+/// Removes the temporaries of `target` in `dir` whose writer (the process id after the prefix)
+/// is gone: what a save killed while writing left behind.
+void removeStaleTemporaries(const std::filesystem::path& dir, const std::filesystem::path& target) {
+    const std::string prefix = tempPrefix(target);
+    std::error_code ec;
+    std::vector<std::filesystem::path> stale;
+    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        if (name.compare(0, prefix.size(), prefix) != 0) continue;
+        const std::string rest = name.substr(prefix.size());
+        const std::size_t dash = rest.find('-');
+        if (dash == 0 || dash == std::string::npos) continue;
+        if (rest.find_first_not_of("0123456789") != dash) continue;  // not ours: PID-RANDOM
+        errno = 0;
+        const long pid = std::strtol(rest.c_str(), nullptr, 10);
+        if (pid <= 0 || errno != 0) continue;
+        if (pid != ::getpid() && ::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH)
+            stale.push_back(it->path());
+    }
+    for (const std::filesystem::path& p : stale)
+        std::filesystem::remove(p, ec);
+}
 
 }  // namespace
 
@@ -66,18 +110,26 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
 
     // A name that cannot collide with another writer: pid plus random bits, O_EXCL to be sure.
     std::random_device rd;
-    std::string tmpName = ".";
-    tmpName += path.filename().string();
-    tmpName += ".tmp-";
-    tmpName += std::to_string(::getpid());
-    tmpName += '-';
-    tmpName += std::to_string(rd());
-    const std::filesystem::path tmp = dir / tmpName;
-    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    const std::filesystem::path tmp =
+        dir / (tempPrefix(path) + std::to_string(::getpid()) + '-' + std::to_string(rd()));
+    // Unnamed until complete where the file system can (see the top of this file).
+    bool unnamed = true;
+#ifdef O_TMPFILE
+    int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
+#else
+    int fd = -1;
+#endif
+    if (fd < 0) {
+        unnamed = false;
+        fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    }
     if (fd < 0)
         fail(path,
              "cannot create a temporary file in " + dir.string() + " (" + errnoText(errno) + ")");
-    TempFile file(fd, tmp);
+    TempFile file(fd, unnamed ? std::filesystem::path() : tmp);
+    // After the open, so that the temporary has the lowest free descriptor (the fault tests
+    // rely on it) and is never taken for a stale one (it has no name yet, or this process's id).
+    removeStaleTemporaries(dir, path);
 
     const char* data = contents.data();
     std::size_t left = contents.size();
@@ -95,6 +147,14 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
     // stays so); otherwise the 0644 above, less the umask.
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0) ::fchmod(file.fd(), st.st_mode & 07777);
+    if (unnamed) {
+        // Give the complete file its temporary name; a kill from here on leaves a whole file
+        // under that name, which the next save removes.
+        const std::string self = "/proc/self/fd/" + std::to_string(file.fd());
+        if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, tmp.c_str(), AT_SYMLINK_FOLLOW) != 0)
+            fail(path, "cannot name the temporary file (" + errnoText(errno) + ")");
+        file.named(tmp);
+    }
     if (file.close() != 0) fail(path, "close failed (" + errnoText(errno) + ")");
     if (::rename(tmp.c_str(), path.c_str()) != 0) {
         fail(path, "rename failed (" + errnoText(errno) + ")");

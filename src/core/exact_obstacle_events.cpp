@@ -37,7 +37,7 @@ void ExactStepper::predictObstacles(std::uint32_t i, const Motion& m, double now
 void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters) {
     Body& a = bodies_[i];
     const bool recent = collidedWithin(a, ev.time);
-    advance(a, ev.time);
+    advance(i, ev.time);
     stopSliding(a);  // another obstacle ends a slide
     ++stats_.obstacles;
     reboundOffObstacle(i, ev.partner, recent, counters);
@@ -88,7 +88,7 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
         // hops down it instead of making ever faster tiny bounces, and the next impact is never
         // at the same instant.
         double gax, gay;
-        accelerationOf(a, gax, gay);
+        accelerationOf(i, a, gax, gay);
         const double an = gax * nx + gay * ny;
         if (an < 0.0 && an * an > kPressTolerance * kPressTolerance * (gax * gax + gay * gay)) {
             const double lift = 0.5 * restSpeed_, leaving = a.vx * nx + a.vy * ny;
@@ -193,7 +193,7 @@ void ExactStepper::predictSlide(std::uint32_t i, const Motion& m, double now, Ev
 
 void ExactStepper::handleSlide(std::uint32_t i, const Event& ev) {
     Body& a = bodies_[i];
-    advance(a, ev.time);
+    advance(i, ev.time);
     ++stats_.slides;
     ++a.count;
     if (ev.side < 2) {

@@ -55,7 +55,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
             // Each particle as sync() wrote it: one that went on unchanged is no disturbance.
             Body b = bodies_[i];
             if (!(b.flags & kAsleep)) {
-                const Motion m = motionAt(b, clock_);
+                const Motion m = motionAt(i, b, clock_);
                 b.x = m.x;
                 b.y = m.y;
                 b.vx = m.vx;
@@ -531,12 +531,13 @@ void ExactStepper::recordPlacedOverlaps() {
     }
 }
 
-void ExactStepper::advance(Body& b, double t) const {
+void ExactStepper::advance(std::uint32_t i, double t) {
+    Body& b = bodies_[i];
     const double h = t - b.t;
     if (h != 0.0) {
         if (gravity_) {
             double ax, ay;
-            accelerationOf(b, ax, ay);
+            accelerationOf(i, b, ax, ay);
             b.x += b.vx * h + 0.5 * ax * h * h;
             b.y += b.vy * h + 0.5 * ay * h * h;
             b.vx += ax * h;
@@ -549,14 +550,15 @@ void ExactStepper::advance(Body& b, double t) const {
     }
 }
 
-void ExactStepper::accelerationOf(const Body& b, double& ax, double& ay) const {
+void ExactStepper::accelerationOf(std::uint32_t i, const Body& b, double& ax, double& ay) const {
     if (b.flags & (kHeld | kAsleep)) {
         ax = ay = 0.0;
         return;
     }
     if (b.flags & kSliding) {
-        // Only bodies_' own records ever slide (a copy of one is never moved).
-        const Slide& s = slide_[static_cast<std::size_t>(&b - bodies_.data())];
+        // The slide is found by the particle's index, never by the record's address: b may be a
+        // copy (rebuild() projects copies of the records to the clock).
+        const Slide& s = slide_[i];
         ax = s.ax;
         ay = s.ay;
         return;
@@ -565,9 +567,9 @@ void ExactStepper::accelerationOf(const Body& b, double& ax, double& ay) const {
     ay = (b.flags & kRestY) ? 0.0 : gy_;
 }
 
-ExactStepper::Motion ExactStepper::motionAt(const Body& b, double t) const {
+ExactStepper::Motion ExactStepper::motionAt(std::uint32_t i, const Body& b, double t) const {
     Motion m{};
-    accelerationOf(b, m.ax, m.ay);
+    accelerationOf(i, b, m.ax, m.ay);
     const double h = t - b.t;
     m.x = b.x + b.vx * h + 0.5 * m.ax * h * h;
     m.y = b.y + b.vy * h + 0.5 * m.ay * h * h;
@@ -600,7 +602,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                              Event& best) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
-    const Motion am = gravity_ ? motionAt(a, now) : Motion{};
+    const Motion am = gravity_ ? motionAt(i, a, now) : Motion{};
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
     // neighbourhood overlap instead of following one another.
     constexpr int kBatch = 32;
@@ -631,7 +633,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             Motion bm{};
             double rx, ry;
             if (gravity_) {
-                bm = motionAt(b, now);
+                bm = motionAt(q, b, now);
                 rx = bm.x - am.x;
                 ry = bm.y - am.y;
             } else {
@@ -677,7 +679,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
 
     Motion m{ax, ay, a.vx, a.vy, 0.0, 0.0};
     if (gravity_) {
-        m = motionAt(a, now);
+        m = motionAt(i, a, now);
         ax = m.x;
         ay = m.y;
         if (def_.walls) predictWallsUnderGravity(i, m, now, best);
@@ -740,7 +742,7 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     const Cold& ac = cold_[i];
     const double ha = now - a.t;
     Motion m{a.x + a.vx * ha, a.y + a.vy * ha, a.vx, a.vy, 0.0, 0.0};
-    if (gravity_) m = motionAt(a, now);
+    if (gravity_) m = motionAt(i, a, now);
     const auto exitTime = [&](double x, double v, double acc, double lo, double hi, int& f) {
         return gravity_ ? slabExitTimeAccelerated(x, v, acc, lo, hi, f)
                         : slabExitTime(x, v, lo, hi, f);
@@ -796,8 +798,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     ++stats_.pairs;
     const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
     // A sleeper does not move; advancing it would only restart its clock (t).
-    if (!(a.flags & kAsleep)) advance(a, ev.time);
-    if (!(b.flags & kAsleep)) advance(b, ev.time);
+    if (!(a.flags & kAsleep)) advance(i, ev.time);
+    if (!(b.flags & kAsleep)) advance(j, ev.time);
     // A pair event ends a slide (the pair's impulses and lift are those of free particles); a
     // slider still on its face afterwards slides on (keepOnFace below). Its acceleration has
     // changed, so its counter does too.
@@ -891,7 +893,7 @@ void ExactStepper::countHeldHit(std::uint32_t i) {
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
     Body& a = bodies_[i];
     const bool recent = collidedWithin(a, ev.time);
-    advance(a, ev.time);
+    advance(i, ev.time);
     stopSliding(a);
     ++stats_.walls;
     const bool alongX = ev.side < 2;
@@ -953,8 +955,8 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, b
     // the contact, it does not fall (else a ball at rest on a slider, both woken at once, would
     // meet it again at the same instant without end).
     double aax, aay, bax, bay;
-    accelerationOf(a, aax, aay);
-    accelerationOf(b, bax, bay);
+    accelerationOf(i, a, aax, aay);
+    accelerationOf(j, b, bax, bay);
     if (aSlid) aax = slide_[i].ax, aay = slide_[i].ay;
     if (bSlid) bax = slide_[j].ax, bay = slide_[j].ay;
     const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
@@ -1020,7 +1022,7 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
             // settling, not everything.
             if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
             if (keptSleepers_ && rate_.quietAt(q, now)) return;
-            const Motion m = motionAt(b, now);
+            const Motion m = motionAt(q, b, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
             bx = m.x;
             by = m.y;
@@ -1109,7 +1111,7 @@ void ExactStepper::settle(std::uint32_t i, double now, bool slow) {
 
 void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional) {
     Body& b = bodies_[i];
-    advance(b, now);
+    advance(i, now);
     b.vx = b.vy = 0.0;
     b.flags |= kAsleep;
     depth_[i] = depth;
@@ -1151,7 +1153,7 @@ void ExactStepper::sleepNeighboursAtRest(std::uint32_t i, double now) {
         const Body& b = bodies_[q];
         if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return;
         double ax, ay;
-        accelerationOf(b, ax, ay);
+        accelerationOf(q, b, ax, ay);
         if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return;
         const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
         if (rx * rx + ry * ry > reach * reach) return;
@@ -1247,7 +1249,7 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
     Motion m{ax, ay, b.vx, b.vy, 0.0, 0.0};
     if (gravity_) {
-        m = motionAt(b, now);
+        m = motionAt(i, b, now);
         ax = m.x;
         ay = m.y;
     }
@@ -1352,7 +1354,7 @@ void ExactStepper::sync(ParticleArrays& p) {
         const Body& b = bodies[k];
         const std::uint32_t i = order[k];
         if (gravity_) {
-            const Motion m = motionAt(b, t);
+            const Motion m = motionAt(k, b, t);
             x[i] = m.x;
             y[i] = m.y;
             vx[i] = m.vx;

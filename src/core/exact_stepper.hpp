@@ -409,7 +409,7 @@ class ExactStepper {
     void setUpGrid();
     void sortByCell(bool midRun);
     [[nodiscard]] double bucketWidth() const;
-    void advance(Body& b, double t) const;
+    void advance(std::uint32_t i, double t);
     void scanCells(std::uint32_t i, double now, double ax, double ay, const CellList& list,
                    const std::uint32_t* cells, int cellCount, Event& best);
     void assignLevels(double spacing, double& fineDiameter);
@@ -430,8 +430,9 @@ class ExactStepper {
     void scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                    std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, Event& best);
     void scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best);
-    void accelerationOf(const Body& b, double& ax, double& ay) const;
-    [[nodiscard]] Motion motionAt(const Body& b, double t) const;
+    // i names the particle (its slide, if any, is slide_[i]); b is its record or a copy of it.
+    void accelerationOf(std::uint32_t i, const Body& b, double& ax, double& ay) const;
+    [[nodiscard]] Motion motionAt(std::uint32_t i, const Body& b, double t) const;
     [[nodiscard]] static bool isStatic(const Body& b) {
         return (b.flags & kAsleep) || ((b.flags & kHeld) && b.vx == 0.0 && b.vy == 0.0);
     }

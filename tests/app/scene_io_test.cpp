@@ -36,6 +36,22 @@ std::string readAll(const fs::path& p) {
     return ss.str();
 }
 
+TEST(SaveFileName, AddsJsonDropsTrailingDotsAndSpacesAndRefusesHiddenOrEmptyNames) {
+    std::string why;
+    EXPECT_EQ(saveFileName("lesson", why), fs::path("lesson.json"));
+    EXPECT_EQ(saveFileName("dir/lesson.json", why), fs::path("dir/lesson.json"));
+    EXPECT_EQ(saveFileName("lesson.txt", why), fs::path("lesson.txt"));
+    EXPECT_EQ(saveFileName("a.", why), fs::path("a.json"));
+    EXPECT_EQ(saveFileName("a. . ", why), fs::path("a.json"));
+    EXPECT_EQ(saveFileName("v1.2", why), fs::path("v1.2"));  // an extension the user chose
+    EXPECT_FALSE(saveFileName(".json", why));
+    EXPECT_NE(why.find("hidden file"), std::string::npos) << why;
+    EXPECT_FALSE(saveFileName(".hidden", why));
+    EXPECT_FALSE(saveFileName("dir/..", why));
+    EXPECT_FALSE(saveFileName(". ", why));
+    EXPECT_NE(why.find("is not a file name"), std::string::npos) << why;
+}
+
 TEST_F(SceneIo, WithoutAFileTheBuiltInSceneOpens) {
     const Scene s = openScene(std::nullopt);
     EXPECT_EQ(s.particles.size(), 6u);

@@ -291,6 +291,21 @@ TEST_F(SessionValues, SaveAsWritesThePathKeepsAnOlderFileAndRemembersIt) {
     EXPECT_TRUE(s.fileError().empty());
 }
 
+TEST_F(SessionValues, SaveAsDropsTrailingDotsAndRefusesANameWithoutAStem) {
+    Session s = session();
+    s.apply(cmd::SaveAs{dir_ / "a."});
+    ASSERT_TRUE(s.lastSave());
+    EXPECT_EQ(s.lastSave()->filename(), "a.json");
+    EXPECT_FALSE(fs::exists(dir_ / "a."));
+    s.apply(cmd::SaveAs{dir_ / ".json"});
+    EXPECT_TRUE(said(s.takeNotices(), "hidden file"));
+    EXPECT_FALSE(fs::exists(dir_ / ".json"));
+    EXPECT_FALSE(fs::exists(dir_ / ".json.json"));
+    s.apply(cmd::SaveAs{dir_ / "..."});
+    EXPECT_TRUE(said(s.takeNotices(), "is not a file name"));
+    EXPECT_EQ(s.lastSave()->filename(), "a.json");  // the refused names saved nothing
+}
+
 TEST_F(SessionValues, AnotherSceneForgetsTheLastOnesOverlap) {
     Session s = session();
     // Two particles pressed into each other, measured by a frame.

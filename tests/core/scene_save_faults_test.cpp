@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/syscall.h>
@@ -24,7 +25,9 @@
 #define PSB_HAVE_SECCOMP 1
 #endif
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <cstddef>
 #include <cstring>
 #include <filesystem>
@@ -32,8 +35,10 @@
 #include <initializer_list>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <particle_sandbox/atomic_file.hpp>
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
@@ -45,6 +50,72 @@ namespace {
 namespace fs = std::filesystem;
 using test::readFile;
 using test::TempDir;
+
+/// The temporary files a save of `target` may leave beside it (".NAME.tmp-PID-RANDOM").
+std::vector<fs::path> temporariesOf(const fs::path& target) {
+    std::vector<fs::path> found;
+    const std::string prefix = "." + target.filename().string() + ".tmp-";
+    for (const fs::directory_entry& e : fs::directory_iterator(target.parent_path()))
+        if (e.path().filename().string().rfind(prefix, 0) == 0) found.push_back(e.path());
+    return found;
+}
+
+TEST(SaveKilled, ASaveKilledAtAnyMomentLeavesTheOldOrTheNewFileAndNoTemporaryAfterTheNextSave) {
+    // A child saves 32 MiB over and over; it is killed (SIGKILL, no clean-up possible) at a
+    // different moment each time. The file is then whole, the old contents or the new, and the
+    // next save leaves no temporary file in the folder, whatever the kills left.
+    TempDir dir("psb-save-kill");
+    const fs::path file = dir.path() / "big.json";
+    const std::string old(1 << 20, 'o'), next(std::size_t{32} << 20, 'n');
+    writeFileAtomically(file, old);
+    int leftAfterKill = 0;
+    for (int trial = 0; trial < 12; ++trial) {
+        const pid_t pid = ::fork();
+        ASSERT_GE(pid, 0);
+        if (pid == 0) {
+            for (;;)
+                writeFileAtomically(file, next);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(3 + 11 * trial));
+        ::kill(pid, SIGKILL);
+        int status = 0;
+        ::waitpid(pid, &status, 0);
+        ASSERT_TRUE(WIFSIGNALED(status));
+        const std::string now = readFile(file);
+        EXPECT_TRUE(now == old || now == next)
+            << "trial " << trial << ": a torn file of " << now.size() << " bytes";
+        leftAfterKill += static_cast<int>(temporariesOf(file).size());
+    }
+    writeFileAtomically(file, old);
+    EXPECT_TRUE(temporariesOf(file).empty()) << temporariesOf(file).size() << " temporaries left ("
+                                             << leftAfterKill << " seen right after the kills)";
+    EXPECT_EQ(readFile(file), old);
+    // Where the file system has O_TMPFILE a kill while writing leaves nothing even before the
+    // next save: a name is given only to a complete file, an instant before the rename.
+    RecordProperty("temporaries_seen_right_after_kills", leftAfterKill);
+}
+
+TEST(SaveKilled, ASaveRemovesOnlyTheTemporariesWhoseWriterIsGone) {
+    TempDir dir("psb-save-stale");
+    const fs::path file = dir.path() / "scene.json";
+    // A process that has ended: its id names no process now.
+    const pid_t gone = ::fork();
+    ASSERT_GE(gone, 0);
+    if (gone == 0) ::_exit(0);
+    ::waitpid(gone, nullptr, 0);
+    const fs::path stale = dir.path() / (".scene.json.tmp-" + std::to_string(gone) + "-42");
+    const fs::path alive = dir.path() / ".scene.json.tmp-1-42";  // init: another writer, live
+    const fs::path other = dir.path() / (".other.json.tmp-" + std::to_string(gone) + "-42");
+    const fs::path notOurs = dir.path() / ".scene.json.tmp-notes";
+    for (const fs::path& p : {stale, alive, other, notOurs})
+        std::ofstream(p) << "{";
+    writeFileAtomically(file, "{}");
+    EXPECT_FALSE(fs::exists(stale)) << "a dead writer's temporary is left";
+    EXPECT_TRUE(fs::exists(alive)) << "a live writer's temporary was removed";
+    EXPECT_TRUE(fs::exists(other)) << "another file's temporary was removed";
+    EXPECT_TRUE(fs::exists(notOurs)) << "a file not named as our temporaries was removed";
+    EXPECT_EQ(readFile(file), "{}");
+}
 
 #ifdef PSB_HAVE_SECCOMP
 

@@ -1,0 +1,429 @@
+// libFuzzer target for the world's mutations: what a user does to a running world.
+//
+// The bytes choose a small world (box, walls, gravity, restitution, friction, step mode, pegs,
+// segments, droppers, particles) and then a sequence of steps and changes made through the
+// public API alone, as the app and the session make them: add, remove, move, push, resize,
+// reweigh, hold and let go, obstacles added and removed, laws and box changed, the mode
+// switched, droppers replaced, the world copied and both copies stepped, the exact mode's
+// event state dropped, everything cleared. Values are mostly sensible and sometimes hostile
+// (NaN, infinities, zero, negative, huge).
+//
+// Properties checked (the target is built with ASan and UBSan, so any memory error or undefined
+// behaviour is a finding too):
+//   - a refused change throws InvalidArgument and leaves the world as it was;
+//   - after every step every position and velocity is finite;
+//   - with walls on, every centre is inside the box (a particle wider than the box on its centre
+//     line), to rounding;
+//   - in the exact mode, consecutive steps with no change between them never deepen the deepest
+//     overlap by more than the mode's stated bound (docs/exact.md: 1e-9 of a radius);
+//   - a copy stepped alike stays bit-identical to the original.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fuzzer/FuzzedDataProvider.h>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace {
+
+using psb::Vec2;
+
+constexpr int kMaxOps = 48;
+constexpr int kMaxStepsPerOp = 4;
+constexpr std::size_t kMaxParticles = 48;
+// A seed scene with more particles (or balls still to drop) is skipped: too slow to fuzz.
+constexpr std::size_t kMaxSceneParticles = 200;
+
+[[noreturn]] void violated(const char* what, const std::string& detail) {
+    std::fprintf(stderr, "world_mutation_fuzzer: %s: %s\n", what, detail.c_str());
+    std::abort();
+}
+
+bool sameBits(double a, double b) {
+    return std::memcmp(&a, &b, sizeof a) == 0;
+}
+
+/// A number for a physical quantity: mostly within [lo, hi], sometimes one that must be refused
+/// or that stresses the step (zero, negative, NaN, infinite, tiny, huge).
+double quantity(FuzzedDataProvider& in, double lo, double hi) {
+    switch (in.ConsumeIntegralInRange<int>(0, 15)) {
+        case 0:
+            return std::numeric_limits<double>::quiet_NaN();
+        case 1:
+            return std::numeric_limits<double>::infinity();
+        case 2:
+            return 0.0;
+        case 3:
+            return -in.ConsumeFloatingPointInRange<double>(0.0, hi);
+        case 4:
+            return 1e-300;
+        case 5:
+            return hi * 1e6;
+        default:
+            return in.ConsumeFloatingPointInRange<double>(lo, hi);
+    }
+}
+
+/// A point in (or near) the box.
+Vec2 pointIn(FuzzedDataProvider& in, const psb::World& w) {
+    const double x = in.ConsumeFloatingPointInRange<double>(-0.1, 1.1) * w.def().width;
+    const double y = in.ConsumeFloatingPointInRange<double>(-0.1, 1.1) * w.def().height;
+    if (in.ConsumeIntegralInRange<int>(0, 31) == 0) return {std::nan(""), y};
+    return {x, y};
+}
+
+double scaleOf(const psb::World& w) {
+    return std::min(w.def().width, w.def().height);
+}
+
+psb::ParticleDef particleIn(FuzzedDataProvider& in, const psb::World& w) {
+    const double s = scaleOf(w);
+    psb::ParticleDef d;
+    d.position = pointIn(in, w);
+    d.velocity = {quantity(in, -20.0 * s, 20.0 * s), quantity(in, -20.0 * s, 20.0 * s)};
+    d.mass = quantity(in, 1e-3, 10.0);
+    d.radius = quantity(in, 0.005 * s, 0.15 * s);
+    return d;
+}
+
+psb::Obstacle obstacleIn(FuzzedDataProvider& in, const psb::World& w) {
+    const double s = scaleOf(w);
+    if (in.ConsumeBool())
+        return psb::Obstacle::peg(pointIn(in, w), quantity(in, 0.005 * s, 0.1 * s));
+    return psb::Obstacle::segment(pointIn(in, w), pointIn(in, w),
+                                  quantity(in, 0.005 * s, 0.05 * s));
+}
+
+psb::Dropper dropperIn(FuzzedDataProvider& in, const psb::World& w) {
+    const double s = scaleOf(w);
+    psb::Dropper d;
+    d.position = pointIn(in, w);
+    d.balls = in.ConsumeIntegralInRange<std::uint64_t>(0, 12);
+    d.interval = quantity(in, 0.005, 0.2);
+    d.radius = quantity(in, 0.005 * s, 0.05 * s);
+    d.mass = quantity(in, 1e-3, 1.0);
+    d.velocity = {in.ConsumeFloatingPointInRange<double>(-s, s), 0.0};
+    d.spread = in.ConsumeFloatingPointInRange<double>(0.0, 0.05 * s);
+    d.seed = in.ConsumeIntegral<std::uint64_t>();
+    return d;
+}
+
+std::optional<psb::ParticleId> someParticle(FuzzedDataProvider& in, const psb::World& w) {
+    const std::vector<psb::ParticleId> ids = w.ids();
+    if (ids.empty()) return std::nullopt;
+    psb::ParticleId id = ids[in.ConsumeIntegralInRange<std::size_t>(0, ids.size() - 1)];
+    if (in.ConsumeIntegralInRange<int>(0, 15) == 0) id.generation += 1;  // a stale id
+    return id;
+}
+
+/// Everything a refused change must leave as it was.
+struct Snapshot {
+    psb::WorldDef def;
+    psb::SolverSettings solver;
+    psb::Droppers droppers;
+    std::vector<psb::ParticleId> ids;
+    std::vector<double> values;
+
+    explicit Snapshot(const psb::World& w)
+        : def(w.def()), solver(w.solver()), droppers(w.droppers()), ids(w.ids()) {
+        const psb::ParticleArrays& p = w.particles();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            values.insert(values.end(),
+                          {p.x[i], p.y[i], p.vx[i], p.vy[i], p.mass[i], p.radius[i], p.invMass[i]});
+        }
+    }
+    bool operator==(const Snapshot& o) const {
+        if (ids != o.ids || !(droppers == o.droppers) || values.size() != o.values.size())
+            return false;
+        for (std::size_t k = 0; k < values.size(); ++k)
+            if (!sameBits(values[k], o.values[k])) return false;
+        const psb::WorldDef &a = def, &b = o.def;
+        return sameBits(a.width, b.width) && sameBits(a.height, b.height) && a.walls == b.walls &&
+               sameBits(a.gravity.x(), b.gravity.x()) && sameBits(a.gravity.y(), b.gravity.y()) &&
+               sameBits(a.restitution, b.restitution) && sameBits(a.friction, b.friction) &&
+               a.obstacles == b.obstacles && solver.mode == o.solver.mode &&
+               sameBits(solver.dt, o.solver.dt) && solver.substeps == o.solver.substeps;
+    }
+};
+
+/// Runs one change; a refusal must be an InvalidArgument that changed nothing.
+template <typename F>
+void change(const psb::World& w, const char* what, F&& f) {
+    const Snapshot before(w);
+    try {
+        f();
+    } catch (const psb::InvalidArgument&) {
+        if (!(Snapshot(w) == before)) violated("a refused change changed the world", what);
+    }
+}
+
+void checkState(const psb::World& w, const char* when) {
+    const psb::ParticleArrays& p = w.particles();
+    const psb::WorldDef& def = w.def();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]) || !std::isfinite(p.vx[i]) ||
+            !std::isfinite(p.vy[i])) {
+            violated(when, "particle " + std::to_string(i) + " is not finite");
+        }
+        if (!def.walls) continue;
+        const auto inside = [](double x, double r, double extent) {
+            const double tol = 1e-9 * extent;
+            if (2.0 * r >= extent) return std::abs(x - 0.5 * extent) <= tol;
+            return x >= r - tol && x <= extent - r + tol;
+        };
+        if (!inside(p.x[i], p.radius[i], def.width) || !inside(p.y[i], p.radius[i], def.height)) {
+            violated(when, "particle " + std::to_string(i) + " is outside the box at (" +
+                               std::to_string(p.x[i]) + ", " + std::to_string(p.y[i]) + ") r " +
+                               std::to_string(p.radius[i]));
+        }
+    }
+}
+
+void checkSame(const psb::World& a, const psb::World& b) {
+    const psb::ParticleArrays &p = a.particles(), &q = b.particles();
+    if (p.id != q.id) violated("copy", "the copies hold different particles");
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!sameBits(p.x[i], q.x[i]) || !sameBits(p.y[i], q.y[i]) || !sameBits(p.vx[i], q.vx[i]) ||
+            !sameBits(p.vy[i], q.vy[i])) {
+            violated("copy", "particle " + std::to_string(i) + " differs after stepping alike");
+        }
+    }
+}
+
+double smallestRadius(const psb::World& w) {
+    const psb::ParticleArrays& p = w.particles();
+    double r = INFINITY;
+    for (const double x : p.radius)
+        r = std::min(r, x);
+    return r;
+}
+
+/// Steps a world, checking after each step; tracks the exact mode's overlap across steps that
+/// nothing changed in between.
+class Stepper {
+  public:
+    void changed() { lastOverlap_.reset(); }
+
+    void step(psb::World& w, int count) {
+        for (int k = 0; k < count; ++k) {
+            w.step(w.solver().dt);
+            checkState(w, "step");
+            if (w.solver().mode != psb::StepMode::Exact || w.size() < 2) {
+                lastOverlap_.reset();
+                continue;
+            }
+            const double overlap = psb::maxOverlapBruteForce(w);
+            if (lastOverlap_ && overlap > *lastOverlap_ + 1e-9 * smallestRadius(w)) {
+                violated("exact step", "the deepest overlap grew from " +
+                                           std::to_string(*lastOverlap_) + " to " +
+                                           std::to_string(overlap) + " m");
+            }
+            lastOverlap_ = overlap;
+        }
+    }
+
+  private:
+    std::optional<double> lastOverlap_;
+};
+
+/// A world chosen by the bytes.
+psb::World worldFrom(FuzzedDataProvider& in) {
+    psb::WorldDef def;
+    def.width = in.ConsumeFloatingPointInRange<double>(0.2, 20.0);
+    def.height = in.ConsumeFloatingPointInRange<double>(0.2, 20.0);
+    def.walls = in.ConsumeIntegralInRange<int>(0, 7) != 0;
+    switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+        case 0:
+            def.gravity = {0.0, 0.0};
+            break;
+        case 1:
+            def.gravity = {0.0, 9.81};
+            break;
+        default:
+            def.gravity = {in.ConsumeFloatingPointInRange<double>(-20.0, 20.0),
+                           in.ConsumeFloatingPointInRange<double>(-20.0, 20.0)};
+    }
+    def.restitution = in.ConsumeProbability<double>();
+    def.friction = in.ConsumeBool() ? 0.0 : in.ConsumeFloatingPointInRange<double>(0.0, 1.0);
+    psb::SolverSettings solver;
+    solver.mode = static_cast<psb::StepMode>(in.ConsumeIntegralInRange<int>(0, 2));
+    solver.dt = in.PickValueInArray({1.0 / 60.0, 0.002, 0.01, 0.03});
+    solver.substeps = in.ConsumeIntegralInRange<int>(1, 6);
+    psb::World world(def, solver);
+
+    const int obstacles = in.ConsumeIntegralInRange<int>(0, 4);
+    for (int k = 0; k < obstacles; ++k)
+        change(world, "addObstacle", [&] { world.addObstacle(obstacleIn(in, world)); });
+    if (in.ConsumeBool()) {
+        psb::Droppers droppers(in.ConsumeIntegralInRange<std::size_t>(1, 2));
+        for (psb::Dropper& d : droppers)
+            d = dropperIn(in, world);
+        change(world, "setDroppers", [&] { world.setDroppers(droppers); });
+    }
+    const int particles = in.ConsumeIntegralInRange<int>(0, 12);
+    for (int k = 0; k < particles; ++k)
+        change(world, "add", [&] { world.add(particleIn(in, world)); });
+    return world;
+}
+
+}  // namespace
+
+// An input is either bytes that choose the world and then the changes, or a scene file, the
+// line kOpsMark, then bytes that choose the changes (how the corpus is seeded with the presets
+// and with the scenes of past crashes; a scene the loader refuses, or too large to step fast,
+// is skipped).
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static constexpr std::string_view kOpsMark = "\n#ops\n";
+    const std::string_view text(reinterpret_cast<const char*>(data), size);
+    std::optional<psb::World> made;
+    std::size_t opsFrom = 0;
+    if (const std::size_t mark = text.find(kOpsMark); !text.empty() && text[0] == '{') {
+        if (mark == std::string_view::npos) return 0;
+        try {
+            const psb::Scene scene = psb::parseScene(text.substr(0, mark), "seed.json");
+            std::uint64_t balls = 0;
+            for (const psb::Dropper& d : scene.droppers)
+                balls += d.balls;
+            if (scene.particles.size() + balls > kMaxSceneParticles) return 0;
+            made.emplace(psb::makeWorld(scene));
+        } catch (const psb::SceneError&) {
+            return 0;
+        } catch (const psb::InvalidArgument&) {
+            return 0;  // parseScene accepted it; the world refuses it (a fuzzed file only)
+        }
+        opsFrom = mark + kOpsMark.size();
+    }
+    FuzzedDataProvider in(data + opsFrom, size - opsFrom);
+    psb::World world = made ? std::move(*made) : worldFrom(in);
+    world.setThreads(1);
+
+    Stepper stepper;
+    std::optional<psb::World> twin;  // a copy stepped alike, until the next change
+    for (int op = 0; op < kMaxOps && in.remaining_bytes() > 0; ++op) {
+        const int what = in.ConsumeIntegralInRange<int>(0, 19);
+        if (what <= 3) {
+            const int count = in.ConsumeIntegralInRange<int>(1, kMaxStepsPerOp);
+            stepper.step(world, count);
+            if (twin) {
+                for (int k = 0; k < count; ++k)
+                    twin->step(twin->solver().dt);
+                checkSame(world, *twin);
+            }
+            continue;
+        }
+        twin.reset();
+        stepper.changed();
+        const std::optional<psb::ParticleId> id = someParticle(in, world);
+        const double s = scaleOf(world);
+        switch (what) {
+            case 4:
+                if (world.size() < kMaxParticles)
+                    change(world, "add", [&] { world.add(particleIn(in, world)); });
+                break;
+            case 5:
+                if (id) change(world, "remove", [&] { world.remove(*id); });
+                break;
+            case 6:
+                if (id)
+                    change(world, "setPosition",
+                           [&] { world.setPosition(*id, pointIn(in, world)); });
+                break;
+            case 7:
+                if (id) {
+                    const Vec2 v{quantity(in, -30.0 * s, 30.0 * s),
+                                 quantity(in, -30.0 * s, 30.0 * s)};
+                    change(world, "setVelocity", [&] { world.setVelocity(*id, v); });
+                }
+                break;
+            case 8:
+                if (id) {
+                    const double m = quantity(in, 1e-3, 10.0);
+                    change(world, "setMass", [&] { world.setMass(*id, m); });
+                }
+                break;
+            case 9:
+                if (id) {
+                    const double r = quantity(in, 0.005 * s, 0.2 * s);
+                    change(world, "setRadius", [&] { world.setRadius(*id, r); });
+                }
+                break;
+            case 10:
+                if (id) {
+                    const bool held = in.ConsumeBool();
+                    change(world, "setKinematic", [&] { world.setKinematic(*id, held); });
+                }
+                break;
+            case 11:
+                if (world.obstacles().size() < 8)
+                    change(world, "addObstacle", [&] { world.addObstacle(obstacleIn(in, world)); });
+                break;
+            case 12: {
+                const std::size_t k = in.ConsumeIntegralInRange<std::size_t>(0, 8);
+                change(world, "removeObstacle", [&] { world.removeObstacle(k); });
+                break;
+            }
+            case 13: {
+                const Vec2 g{quantity(in, -20.0, 20.0), quantity(in, -20.0, 20.0)};
+                change(world, "setGravity", [&] { world.setGravity(g); });
+                break;
+            }
+            case 14: {
+                const double e = quantity(in, 0.0, 1.0), mu = quantity(in, 0.0, 1.0);
+                change(world, "setRestitution", [&] { world.setRestitution(e); });
+                change(world, "setFriction", [&] { world.setFriction(mu); });
+                break;
+            }
+            case 15: {
+                psb::SolverSettings next = world.solver();
+                next.mode = static_cast<psb::StepMode>(in.ConsumeIntegralInRange<int>(0, 2));
+                next.substeps = in.ConsumeIntegralInRange<int>(0, 6);
+                next.dt = in.ConsumeBool() ? next.dt : quantity(in, 0.001, 0.03);
+                change(world, "setSolver", [&] { world.setSolver(next); });
+                break;
+            }
+            case 16: {
+                const double w = quantity(in, 0.2, 20.0), h = quantity(in, 0.2, 20.0);
+                change(world, "setBox", [&] { world.setBox(w, h); });
+                if (in.ConsumeBool()) {
+                    const bool walls = in.ConsumeBool();
+                    change(world, "setWalls", [&] { world.setWalls(walls); });
+                }
+                break;
+            }
+            case 17: {
+                psb::Droppers droppers(in.ConsumeIntegralInRange<std::size_t>(0, 2));
+                for (psb::Dropper& d : droppers)
+                    d = dropperIn(in, world);
+                change(world, "setDroppers", [&] { world.setDroppers(droppers); });
+                break;
+            }
+            case 18:
+                // A copy (as the undo history and the timeline keep) stepped alike from here.
+                if (in.ConsumeBool()) world.dropEventState();
+                twin.emplace(world);
+                break;
+            case 19:
+                if (in.ConsumeIntegralInRange<int>(0, 3) == 0)
+                    world.clear();
+                else
+                    world = psb::World(world);  // copy-assign, as undo restores a state
+                break;
+            default:
+                break;
+        }
+    }
+    return 0;
+}
