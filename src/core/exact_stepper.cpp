@@ -1289,6 +1289,7 @@ double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_
             stats_.budgetExhausted = true;
             if (!gravity_) {
                 stale_ = true;  // fly the rest freely; the next step rebuilds
+                flewFreely_ = true;
                 return tEnd;
             }
             // Under gravity flying freely would drop particles through the floor and into each
@@ -1367,6 +1368,27 @@ void ExactStepper::sync(ParticleArrays& p) {
         vx[i] = b.vx;
         vy[i] = b.vy;
     }
+    if (flewFreely_ && def_.walls) {
+        // Past a wall after the free flight (a particle the budget stopped between a wall and
+        // an obstacle it was placed in, say): on the wall, turned inward with restitution e.
+        const auto axis = [e = def_.restitution](double& c, double& v, double r, double extent) {
+            if (r >= extent - r) {
+                c = 0.5 * extent;
+                v = 0.0;
+            } else if (c < r) {
+                c = r;
+                if (v < 0.0) v = -e * v;
+            } else if (c > extent - r) {
+                c = extent - r;
+                if (v > 0.0) v = -e * v;
+            }
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            axis(x[i], vx[i], p.radius[i], def_.width);
+            axis(y[i], vy[i], p.radius[i], def_.height);
+        }
+    }
+    flewFreely_ = false;
     syncOwed_ = false;
 }
 

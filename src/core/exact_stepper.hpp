@@ -211,7 +211,9 @@
 // kMaxDisturbances such changes, or changed laws, wake everything. A drag through a settled
 // pile therefore wakes only what the dragged particle touches.
 // The event budget under gravity ends the step at the first event left (see
-// kMaxEventsPerParticlePerStep): never a particle through the floor.
+// kMaxEventsPerParticlePerStep): never a particle through the floor. Without gravity the rest
+// of the step is flown freely, and a particle that flight takes past a wall is put back on it
+// and turned inward by the walls' law (as the discrete mode's wall stage would).
 
 #include <cstdint>
 #include <unordered_map>
@@ -557,6 +559,9 @@ class ExactStepper {
     std::unordered_map<std::uint64_t, double> overlapContact_;
     double placedOverlap_ = 0.0;  // the deepest of those overlaps, metres
     bool syncOwed_ = false;       // the world's arrays do not hold the state at clock_ yet
+    // The budget ran out without gravity: the rest of the step was flown freely, so sync()
+    // turns back into the box what the flight took past a wall (the next step rebuilds).
+    bool flewFreely_ = false;
     // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
     std::vector<std::uint32_t> heldHit_;
 };

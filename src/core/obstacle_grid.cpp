@@ -19,6 +19,15 @@ void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
     nx_ = ny_ = 0;
     if (obstacles.empty()) return;
 
+    // The pad of a particle flung at an absurd speed could make the extent overflow (and the
+    // cell counts not a number). A pad far wider than the obstacles' field and coordinates gains
+    // nothing (every lookup lists them all), so it is capped there; only speed depends on it.
+    double scale = 0.0;
+    for (const Obstacle& o : obstacles) {
+        scale = std::max({scale, std::abs(o.a.x()), std::abs(o.a.y()), std::abs(o.b.x()),
+                          std::abs(o.b.y()), o.radius});
+    }
+    if (std::isfinite(scale)) pad_ = std::min(pad_, kMaxPadScales * scale);
     x0_ = y0_ = INFINITY;
     x1_ = y1_ = -INFINITY;
     for (const Obstacle& o : obstacles) {
@@ -39,13 +48,19 @@ void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
     cell_ = std::max({cell_, w / maxCells, h / maxCells, std::sqrt(w * h / maxCells)});
     if (!(cell_ > 0.0) || !std::isfinite(cell_)) cell_ = std::max(w, h);
     invCell_ = 1.0 / cell_;
-    nx_ = static_cast<std::uint32_t>(std::clamp(std::ceil(w * invCell_), 1.0, maxCells));
-    ny_ = static_cast<std::uint32_t>(std::clamp(std::ceil(h * invCell_), 1.0, maxCells));
+    // Cells along a side: at least one, also where an extent near the largest double makes the
+    // count not a number.
+    const auto along = [&](double extent) {
+        const double c = std::ceil(extent * invCell_);
+        return static_cast<std::uint32_t>(c >= 1.0 ? std::min(c, maxCells) : 1.0);
+    };
+    nx_ = along(w);
+    ny_ = along(h);
     while (std::size_t{nx_} * ny_ > kMaxCells) {  // rounding up both sides can overshoot
         cell_ *= 1.01;
         invCell_ = 1.0 / cell_;
-        nx_ = static_cast<std::uint32_t>(std::max(1.0, std::ceil(w * invCell_)));
-        ny_ = static_cast<std::uint32_t>(std::max(1.0, std::ceil(h * invCell_)));
+        nx_ = along(w);
+        ny_ = along(h);
     }
     lastColumn_ = static_cast<double>(nx_ - 1);
     lastRow_ = static_cast<double>(ny_ - 1);
@@ -53,6 +68,12 @@ void ObstacleGrid::build(const Obstacles& obstacles, double pad) {
     // Each obstacle's cells: those of its widened bounding box that come within its radius plus
     // the pad of its core.
     auto forEachCell = [&](const Obstacle& o, auto&& f) {
+        // One cell is the whole extent, which holds every obstacle (and where the extent is too
+        // large for a double, the cell's corners could not be computed).
+        if (nx_ == 1 && ny_ == 1) {
+            f(0);
+            return;
+        }
         const double widen = o.radius + pad_;
         const std::uint32_t c0 = column(std::min(o.a.x(), o.b.x()) - widen);
         const std::uint32_t c1 = column(std::max(o.a.x(), o.b.x()) + widen);

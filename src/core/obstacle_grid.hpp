@@ -42,6 +42,8 @@ class ObstacleGrid {
   public:
     static constexpr double kCellsPerObstacle = 16.0;
     static constexpr std::size_t kMaxCells = std::size_t{1} << 20;
+    /// The pad is at most this many times the largest obstacle coordinate or radius (build()).
+    static constexpr double kMaxPadScales = 1e6;
     /// How many rings of cells around a point's own clearance() looks at, at most.
     static constexpr int kClearanceRings = 3;
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "obstacle_geometry.hpp"
 #include "obstacle_grid.hpp"
@@ -35,6 +36,34 @@ Obstacles randomObstacles(std::mt19937_64& rng, int count, double side, double m
         }
     }
     return obstacles;
+}
+
+TEST(ObstacleGrid, AnAbsurdPadOrHugeCoordinatesStillMakeAGridThatAnswersRight) {
+    // A pad from particles flung near the largest double once overflowed the grid's extent and
+    // turned its cell counts into NaN (undefined behaviour when cast; found by the world
+    // mutation fuzzer). The pad is capped where it gains nothing; lookups stay exact.
+    const Obstacles pegs = {Obstacle::peg({1.0, 1.0}, 0.1), Obstacle::segment({2, 2}, {3, 2}, 0.1)};
+    for (const double pad : {1e300, 1.7e308, double{INFINITY}}) {
+        ObstacleGrid grid;
+        grid.build(pegs, pad);
+        EXPECT_GE(grid.cellCount(), 1u);
+        EXPECT_LE(grid.cellCount(), ObstacleGrid::kMaxCells);
+        EXPECT_TRUE(std::isfinite(grid.cellSize())) << pad;
+        std::vector<std::uint32_t> out;
+        grid.query(0.0, 0.0, 4.0, 4.0, out);
+        EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 1})) << pad;
+        const double clear = grid.clearance(1.0, 2.0);  // a lower bound of the true 0.9
+        EXPECT_LE(clear, 0.9 + 1e-12) << pad;
+        EXPECT_GT(clear, 0.5) << pad;
+    }
+    // Obstacles near the largest double: the extent itself overflows.
+    const Obstacles far = {Obstacle::peg({1e308, 1e308}, 1e307), Obstacle::peg({-1e308, 0}, 1e307)};
+    ObstacleGrid grid;
+    grid.build(far, 1.0);
+    EXPECT_GE(grid.cellCount(), 1u);
+    std::vector<std::uint32_t> out;
+    grid.query(-1.7e308, -1.7e308, 1.7e308, 1.7e308, out);
+    EXPECT_EQ(out, (std::vector<std::uint32_t>{0, 1}));
 }
 
 TEST(ObstacleGrid, ListsEveryObstacleADiscTouchesAscendingAndOnce) {
