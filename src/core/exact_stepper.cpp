@@ -1424,6 +1424,7 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
         reached = runEvents(tEnd, counters, budget);
     }
     clock_ = reached;
+    if (stats_.budgetExhausted) ++counters.cutShort;
     syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
     counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale +

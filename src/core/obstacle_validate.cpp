@@ -1,5 +1,6 @@
 #include "obstacle_validate.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -13,6 +14,13 @@ std::string point(const Vec2& v) {
     std::ostringstream os;
     os.precision(17);
     os << '[' << v.x() << ", " << v.y() << ']';
+    return os.str();
+}
+
+std::string number(double v) {
+    std::ostringstream os;
+    os.precision(17);
+    os << v;
     return os.str();
 }
 
@@ -50,6 +58,11 @@ void validateObstacle(const Obstacle& o, std::size_t index, double width, double
         if (!std::isfinite(o.radius) || !(o.radius > 0.0)) {
             fail(where, w, "radius must be finite and > 0 " + got(o.radius));
         }
+        if (o.radius > std::max(width, height)) {
+            fail(where, w,
+                 "radius must be at most the box's larger side, " +
+                     number(std::max(width, height)) + " m " + got(o.radius));
+        }
         if (!inBox(o.a, width, height)) {
             fail(where, w,
                  "cannot be drawn in " + boxText(width, height) + ": its centre " + point(o.a) +
@@ -61,6 +74,11 @@ void validateObstacle(const Obstacle& o, std::size_t index, double width, double
     if (!finite(o.b)) fail(where, w, "second end must be finite (got " + point(o.b) + ")");
     if (!std::isfinite(o.radius) || !(o.radius > 0.0)) {
         fail(where, w, "thickness must be finite and > 0 " + got(2.0 * o.radius));
+    }
+    if (o.radius > std::max(width, height)) {
+        fail(where, w,
+             "thickness must be at most twice the box's larger side, " +
+                 number(2.0 * std::max(width, height)) + " m " + got(2.0 * o.radius));
     }
     if (o.a == o.b) {
         fail(where, w, "has zero length: both ends are at " + point(o.a) + " (use a peg)");

@@ -340,6 +340,11 @@ Obstacle readObstacle(const Reader& r, const json& j, const std::string& path, c
         const Vec2 c(r.number(r.require(j, path, "x"), member(path, "x")),
                      r.number(r.require(j, path, "y"), member(path, "y")));
         const double radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
+        if (radius > std::max(w.width, w.height)) {
+            r.fail(member(path, "radius"), "must be at most the box's larger side, " +
+                                               num(std::max(w.width, w.height)) + " m (got " +
+                                               num(radius) + ")");
+        }
         if (!inBox(c)) r.fail(path, "centre " + text(c) + " lies outside " + box);
         return Obstacle::peg(c, radius);
     }
@@ -349,6 +354,11 @@ Obstacle readObstacle(const Reader& r, const json& j, const std::string& path, c
         const Vec2 b = r.vec2(r.require(j, path, "to"), member(path, "to"));
         const double thickness =
             r.positive(r.require(j, path, "thickness"), member(path, "thickness"));
+        if (thickness > 2.0 * std::max(w.width, w.height)) {
+            r.fail(member(path, "thickness"), "must be at most twice the box's larger side, " +
+                                                  num(2.0 * std::max(w.width, w.height)) +
+                                                  " m (got " + num(thickness) + ")");
+        }
         if (a == b) r.fail(path, "has zero length: both ends at " + text(a) + " (use a peg)");
         if (!inBox(a)) r.fail(member(path, "from"), text(a) + " lies outside " + box);
         if (!inBox(b)) r.fail(member(path, "to"), text(b) + " lies outside " + box);

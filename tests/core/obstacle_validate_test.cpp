@@ -48,6 +48,14 @@ TEST(ObstacleValidate, RefusesEachBadObstacleWithAClearMessage) {
     EXPECT_EQ(refusal(bent),
               "World::addObstacle: obstacle 1 (peg) second point must equal its centre [3, 3] "
               "(got [4, 3])");
+    // Larger than the box: it would only cover all of it (and make the obstacle grids huge).
+    EXPECT_EQ(refusal(Obstacle::peg(Vec2(3.0, 3.0), 10.5)),
+              "World::addObstacle: obstacle 1 (peg) radius must be at most the box's larger "
+              "side, 10 m (got 10.5)");
+    EXPECT_EQ(refusal(Obstacle::segment(Vec2(1.0, 1.0), Vec2(2.0, 3.0), 2e5)),
+              "World::addObstacle: obstacle 1 (segment) thickness must be at most twice the "
+              "box's larger side, 20 m (got 200000)");
+    EXPECT_EQ(refusal(Obstacle::peg(Vec2(3.0, 3.0), 10.0)), "accepted");
     // On the box's edge is inside: a wall may run along it.
     EXPECT_EQ(refusal(Obstacle::segment(Vec2(0.0, 10.0), Vec2(10.0, 10.0), 0.1)), "accepted");
 }

@@ -274,14 +274,14 @@ std::vector<std::tuple<const char*, Change>> changes() {
 }
 
 TEST(WorldChangesWhileSliding, ABallPlacedInAnObstacleAgainstAWallStaysInTheBox) {
-    // Without gravity, a ball placed on the left wall inside a segment thicker than the box
+    // Without gravity, a ball placed on the left wall inside a segment that covers the box
     // rattles between the two (the exact mode's event budget runs out every step) and the rest
     // of each step is flown freely: that flight once left it past the wall (found by the world
     // mutation fuzzer). It stays in the box.
     World w(WorldDef{.width = 5.9, .height = 11.6, .restitution = 0.36, .friction = 0.36},
             SolverSettings{.mode = StepMode::Exact, .dt = 0.01});
     Obstacle thick = Obstacle::segment({3.6, 5.67}, {4.0, 5.51}, 1.0);
-    thick.radius = 1.5e5;
+    thick.radius = 11.6;  // as thick as World allows: twice the box's larger side
     w.addObstacle(thick);
     const ParticleId id =
         w.add({.position = {0.3, 5.66}, .velocity = {-25.6, -86.6}, .mass = 10, .radius = 0.89});
@@ -291,6 +291,26 @@ TEST(WorldChangesWhileSliding, ABallPlacedInAnObstacleAgainstAWallStaysInTheBox)
         EXPECT_GE(p.position.x(), p.radius) << "step " << k;
         EXPECT_TRUE(std::isfinite(p.position.y()));
     }
+}
+
+TEST(WorldChangesWhileSliding, AStepTheEventBudgetCutsShortIsCountedAndStaysInTheBox) {
+    // A particle flung across a 4 m box at 10^8 m/s: 50 000 wall hits in a 2 ms step, past the
+    // event budget. The step is counted as cut short; the free flight after it ends in the box.
+    World w(WorldDef{.width = 4.0, .height = 5.0},
+            SolverSettings{.mode = StepMode::Exact, .dt = 0.002});
+    const ParticleId fast =
+        w.add({.position = {1.6, 2.4}, .velocity = {8.7e7, 0.0}, .radius = 0.29});
+    w.add({.position = {0.5, 1.0}, .velocity = {-5.0, 3.0}, .radius = 0.16});
+    w.step(0.002);
+    EXPECT_EQ(w.counters().cutShort, 1u);
+    const Particle p = w.get(fast);
+    EXPECT_GE(p.position.x(), p.radius);
+    EXPECT_LE(p.position.x(), 4.0 - p.radius);
+    // An ordinary step is not cut short.
+    w.setVelocity(fast, {1.0, 0.0});
+    w.resetCounters();
+    w.step(0.002);
+    EXPECT_EQ(w.counters().cutShort, 0u);
 }
 
 std::string changeName(const ::testing::TestParamInfo<std::tuple<const char*, Change>>& p) {
