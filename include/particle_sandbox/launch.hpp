@@ -3,18 +3,10 @@
 /// Turning a mouse trajectory into a launch velocity.
 
 #include <span>
-#include <vector>
 
 #include <particle_sandbox/math.hpp>
 
 namespace psb {
-
-/// The original program's `calculate_vector(trajectory, scaling_factor, min_length)`, with its
-/// index bug fixed (the start point is sample 0 in both coordinates): the displacement from the
-/// first to the last sample divided by `scalingFactor`, or zero when there are fewer than
-/// `minLength` samples. Kept for reference and tests; the app uses launchVelocity.
-[[nodiscard]] Vec2 calculateVector(std::span<const Vec2> trajectory, double scalingFactor = 20.0,
-                                   std::size_t minLength = 10);
 
 /// One sample of a drag: where the pointer was (world metres) and when (seconds).
 struct TrajectorySample {

@@ -10,7 +10,6 @@
 #include "time_series_csv.hpp"
 
 namespace psb::cli {
-namespace {}  // namespace
 
 SolverSettings effectiveSolver(const Scene& scene, const RunOptions& o) {
     SolverSettings s = scene.solver;

@@ -4,15 +4,6 @@
 
 namespace psb {
 
-Vec2 calculateVector(std::span<const Vec2> trajectory, double scalingFactor,
-                     std::size_t minLength) {
-    if (trajectory.size() < minLength || trajectory.empty() || !(scalingFactor != 0.0)) {
-        return Vec2::Zero();
-    }
-    // The original read the start y from trajectory[1]; the start is sample 0 in both axes.
-    return (trajectory.back() - trajectory.front()) / scalingFactor;
-}
-
 Vec2 launchVelocity(std::span<const TrajectorySample> samples, const LaunchSettings& settings) {
     const auto finite = [](const TrajectorySample& s) {
         return std::isfinite(s.time) && std::isfinite(s.position.x()) &&

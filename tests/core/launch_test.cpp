@@ -1,5 +1,4 @@
-// The launch vector: the original's calculate_vector with its index bug fixed, and the
-// time-windowed launch velocity the app uses.
+// The launch velocity the app uses: the recent part of a drag, over a time window.
 
 #include <gtest/gtest.h>
 
@@ -10,23 +9,6 @@
 
 namespace psb {
 namespace {
-
-TEST(CalculateVector, UsesTheFirstSampleForBothStartCoordinates) {
-    std::vector<Vec2> t;
-    for (int k = 0; k < 10; ++k)
-        t.emplace_back(10.0 * k, 100.0 + 5.0 * k * k);
-    // The original took start y from t[1] (105) instead of t[0] (100).
-    EXPECT_EQ(calculateVector(t), Vec2((90.0 - 0.0) / 20.0, (505.0 - 100.0) / 20.0));
-}
-
-TEST(CalculateVector, TooShortTrajectoryGivesZero) {
-    std::vector<Vec2> t(9, Vec2(1.0, 2.0));
-    t.back() = Vec2(100.0, 100.0);
-    EXPECT_EQ(calculateVector(t), Vec2::Zero());
-    EXPECT_EQ(calculateVector({}), Vec2::Zero());
-    t.emplace_back(200.0, 2.0);
-    EXPECT_EQ(calculateVector(t, 1.0), Vec2(199.0, 0.0));
-}
 
 TEST(LaunchVelocity, SteadyDragGivesItsVelocity) {
     std::vector<TrajectorySample> s;
