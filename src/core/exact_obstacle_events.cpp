@@ -16,6 +16,9 @@ namespace {
 // How near an end of a face (as a fraction of its length) a contact is the cap's: a slide is
 // not started there, and one that reaches an end leaves from this far past it.
 constexpr double kSlideEndMargin = 1e-9;
+// A slide starts only at contact: the centre within this fraction of the contact distance of
+// the face (rounding at an impact is ulps; a particle placed inside the obstacle is far more).
+constexpr double kSlideSnap = 1e-9;
 }  // namespace
 
 void ExactStepper::predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best) {
@@ -136,12 +139,17 @@ bool ExactStepper::startSliding(std::uint32_t i, std::uint32_t k, double nx, dou
     const double along = (a.x - o.a.x()) * ux + (a.y - o.a.y()) * uy;
     const double margin = kSlideEndMargin * length;
     if (!(along > margin && along < length - margin)) return false;
+    const double qx = o.a.x() + along * ux, qy = o.a.y() + along * uy;
+    // Only a particle at contact slides. One placed inside the obstacle (spawned, dragged or
+    // grown there) would be moved out onto the face, a jump that can take it through a wall;
+    // it leaves as from any placed overlap.
+    const double contact = a.r + o.radius;
+    if (std::abs(std::hypot(a.x - qx, a.y - qy) - contact) > kSlideSnap * contact) return false;
     // Normal velocity and any rounding of the contact distance absorbed: at contact, moving
     // along the face.
     const double vt = a.vx * ux + a.vy * uy;
     a.vx = vt * ux;
     a.vy = vt * uy;
-    const double qx = o.a.x() + along * ux, qy = o.a.y() + along * uy;
     a.x = qx + (a.r + o.radius) * nx;
     a.y = qy + (a.r + o.radius) * ny;
     a.flags |= kSliding;
