@@ -16,6 +16,7 @@
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "../world_checks.hpp"
 #include "obstacle_geometry.hpp"
 
 namespace psb {
@@ -23,52 +24,17 @@ namespace {
 
 // The scene that crashed: a ball falls onto a slanted wall and slides down it while a dropper
 // releases balls (each release is a change the exact mode rebuilds for).
-constexpr const char* kRampWithDropper = R"({"version": 4,
-  "world": {"width": 4, "height": 3, "walls": true, "gravity": [0, 9.81], "restitution": 0.4,
-            "friction": 0.2},
-  "solver": {"mode": "exact", "dt": 0.002},
-  "obstacles": [{"type": "segment", "from": [0.0, 0.45], "to": [2.6, 1.3963], "thickness": 0.04}],
-  "particles": [{"x": 0.3, "y": 0.3, "vx": 0, "vy": 0, "mass": 1, "radius": 0.1}],
-  "droppers": [{"x": 3.5, "y": 0.2, "balls": 5, "interval": 1.0, "radius": 0.05, "mass": 0.5}]})";
+constexpr const char* kRampWithDropper = "ramp_with_dropper.json";
 
 // A funnel of two slanted walls fed by a dropper: balls slide down both faces into the neck.
-constexpr const char* kFunnelWithDropper = R"({"version": 4,
-  "world": {"width": 2, "height": 2, "walls": true, "gravity": [0, 9.81], "restitution": 0.5,
-            "friction": 0.3},
-  "solver": {"mode": "exact", "dt": 0.01},
-  "obstacles": [{"type": "segment", "from": [0.2, 0.6], "to": [0.9, 1.2], "thickness": 0.03},
-                {"type": "segment", "from": [1.8, 0.6], "to": [1.1, 1.2], "thickness": 0.03}],
-  "particles": [],
-  "droppers": [{"x": 1.0, "y": 0.1, "balls": 30, "interval": 0.05, "radius": 0.04,
-                "mass": 0.1, "spread": 0.3}]})";
+constexpr const char* kFunnelWithDropper = "funnel_with_dropper.json";
 
 // A field of pegs with friction fed by a dropper: balls bounce, roll over and rest on pegs.
-constexpr const char* kPegFieldWithDropper = R"({"version": 4,
-  "world": {"width": 1, "height": 1.2, "walls": true, "gravity": [0, 9.81], "restitution": 0.3,
-            "friction": 0.5},
-  "solver": {"mode": "exact", "dt": 0.01},
-  "obstacles": [{"type": "peg", "x": 0.2, "y": 0.3, "radius": 0.02},
-                {"type": "peg", "x": 0.4, "y": 0.3, "radius": 0.02},
-                {"type": "peg", "x": 0.6, "y": 0.3, "radius": 0.02},
-                {"type": "peg", "x": 0.8, "y": 0.3, "radius": 0.02},
-                {"type": "peg", "x": 0.3, "y": 0.5, "radius": 0.02},
-                {"type": "peg", "x": 0.5, "y": 0.5, "radius": 0.02},
-                {"type": "peg", "x": 0.7, "y": 0.5, "radius": 0.02},
-                {"type": "segment", "from": [0.1, 0.8], "to": [0.45, 0.95], "thickness": 0.02}],
-  "particles": [],
-  "droppers": [{"x": 0.5, "y": 0.05, "balls": 40, "interval": 0.1, "radius": 0.03,
-                "mass": 0.05, "spread": 0.1}]})";
+constexpr const char* kPegFieldWithDropper = "peg_field_with_dropper.json";
 
 // A ball flung along a floor made of a segment, another resting on it, and a dropper that
 // drops a ball onto the floor while the first slides.
-constexpr const char* kSlidingOnAFloorSegment = R"({"version": 4,
-  "world": {"width": 3, "height": 1, "walls": true, "gravity": [0, 9.81], "restitution": 0.2,
-            "friction": 0.2},
-  "solver": {"mode": "exact", "dt": 0.016666666666666666},
-  "obstacles": [{"type": "segment", "from": [0.1, 0.8], "to": [2.9, 0.8], "thickness": 0.02}],
-  "particles": [{"x": 0.3, "y": 0.69, "vx": 3, "vy": 0, "mass": 1, "radius": 0.1},
-                {"x": 2.2, "y": 0.69, "vx": 0, "vy": 0, "mass": 1, "radius": 0.1}],
-  "droppers": [{"x": 1.5, "y": 0.2, "balls": 3, "interval": 0.2, "radius": 0.05, "mass": 0.5}]})";
+constexpr const char* kSlidingOnAFloorSegment = "sliding_on_a_floor_segment.json";
 
 double coreDistance(const Obstacle& o, const Vec2& p) {
     double qx, qy;
@@ -78,16 +44,9 @@ double coreDistance(const Obstacle& o, const Vec2& p) {
 
 /// Every particle finite, inside the box, and not deeper in an obstacle than `obstacleDepth`.
 void expectSound(const World& w, double obstacleDepth, const std::string& when) {
-    const WorldDef& def = w.def();
+    test::expectInsideTheBox(w, when);
     for (const ParticleId id : w.ids()) {
         const Particle p = w.get(id);
-        ASSERT_TRUE(std::isfinite(p.position.x()) && std::isfinite(p.position.y()) &&
-                    std::isfinite(p.velocity.x()) && std::isfinite(p.velocity.y()))
-            << when;
-        EXPECT_GE(p.position.x(), p.radius - 1e-9) << when;
-        EXPECT_LE(p.position.x(), def.width - p.radius + 1e-9) << when;
-        EXPECT_GE(p.position.y(), p.radius - 1e-9) << when;
-        EXPECT_LE(p.position.y(), def.height - p.radius + 1e-9) << when;
         for (const Obstacle& o : w.obstacles())
             EXPECT_GE(coreDistance(o, p.position), o.radius + p.radius - obstacleDepth) << when;
     }
@@ -99,8 +58,8 @@ double allowedDepth(StepMode mode) {
     return mode == StepMode::Exact ? 1e-9 : 0.02;
 }
 
-World worldOf(const char* json, StepMode mode) {
-    const Scene scene = parseScene(json, "test.json");
+World worldOf(const char* file, StepMode mode) {
+    const Scene scene = test::corpusScene(file);
     World w = makeWorld(scene);
     SolverSettings s = w.solver();
     s.mode = mode;
@@ -156,7 +115,7 @@ struct SlidingWorld {
 };
 
 SlidingWorld slidingWorld() {
-    Scene scene = parseScene(kRampWithDropper, "test.json");
+    Scene scene = test::corpusScene(kRampWithDropper);
     scene.droppers.clear();
     World w = makeWorld(scene);
     const ParticleId slider = w.ids()[0];
