@@ -1,6 +1,6 @@
 // What on-screen controls cost a frame with SDL's software renderer (the renderer the app uses
 // under Xvfb): Dear ImGui's frame (widgets, layout, draw lists) plus the SDL_Renderer adapter
-// (src/app/imgui_renderer.hpp) drawing it into a 900 × 800 surface, without a window.
+// (src/app/gui/imgui_renderer.hpp) drawing it into a 900 × 800 surface, without a window.
 //
 //   build/release/bench/gui_bench
 //
@@ -17,8 +17,8 @@
 #include <SDL.h>
 #include <imgui.h>
 
-#include "assets.hpp"
-#include "gui_context.hpp"
+#include "gui/gui_context.hpp"
+#include "platform/assets.hpp"
 
 namespace {
 

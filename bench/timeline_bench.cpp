@@ -1,5 +1,5 @@
-// Step back in time (src/app/timeline.hpp) on 10^4 particles: the memory the timeline holds for
-// the last 10 s, and what one step back costs, in each step mode.
+// Step back in time (src/app/session/timeline.hpp) on 10^4 particles: the memory the timeline
+// holds for the last 10 s, and what one step back costs, in each step mode.
 //
 // The scene is the gas of gas_scene.hpp (10^4 discs of 1 m at packing fraction 0.1, dt = 0.01 s),
 // with gravity 9.81 m/s² in the discrete and substep (k = 4) modes and none in the exact mode.
@@ -36,8 +36,8 @@
 #include <particle_sandbox/world.hpp>
 
 #include "gas_scene.hpp"
-#include "session.hpp"
-#include "timeline.hpp"
+#include "session/session.hpp"
+#include "session/timeline.hpp"
 
 namespace {
 

@@ -8,15 +8,16 @@
 #include <particle_sandbox/atomic_file.hpp>
 #include <particle_sandbox/scene.hpp>
 
-#include "assets.hpp"
-#include "benchmark_scene.hpp"
-#include "clock.hpp"
-#include "hud.hpp"
-#include "overlay.hpp"
-#include "panel_layout.hpp"
-#include "scene_io.hpp"
-#include "screen_text.hpp"
-#include "screenshot.hpp"
+#include "platform/assets.hpp"
+#include "platform/clock.hpp"
+#include "render/screen_text.hpp"
+#include "render/screenshot.hpp"
+#include "session/benchmark_scene.hpp"
+#include "session/scene_io.hpp"
+#include "session/stopwatch.hpp"
+#include "view/hud.hpp"
+#include "view/overlays.hpp"
+#include "view/screen_layout.hpp"
 
 namespace psb::app {
 
@@ -89,7 +90,7 @@ App::App(const AppOptions& options) : options_(options) {
     // In a narrow window the HUD's lines wrap (frame_view.cpp): the band grows with them,
     // measured on readings as wide as they get.
     s.insets.helpPagesFor = [font = &sdl_->hudFont()](int width, int height) {
-        const SDL_Rect room = helpRoom(width, height);
+        const PixelRect room = helpRoom(width, height);
         return static_cast<int>(helpPages(*font, helpLines(), {room.w, room.h}).size());
     };
     s.insets.topFor = [font = &sdl_->hudFont(), lh](int room, bool folded) {

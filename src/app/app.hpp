@@ -2,13 +2,13 @@
 // The interactive sandbox: a window over a session, and a loop of three verbs.
 //
 //   while running:
-//     handleEvents()   SDL events -> Commands (input.hpp) -> Session::apply, the one place
+//     handleEvents()   SDL events -> Commands (platform/) -> Session::apply, the one place
 //                      where anything changes
 //     update(dt_real)  Session::update: fixed steps of the world's dt driven by an accumulator
 //                      (scaled by the time speed), the held particle placed at the hand first
-//     render()         the control panel (control_panel.hpp, Dear ImGui) reads the session and
-//                      returns Commands, applied like the keys'; buildFrame(): a read-only
-//                      FrameView of the session; DrawLayer::draw() draws it (the only code
+//     render()         the control panel (gui/, Dear ImGui) reads the session and
+//                      returns Commands, applied like the keys'; view/buildFrame(): a read-only
+//                      FrameView of the session; render/DrawLayer::draw() draws it (the only code
 //                      calling SDL's drawing functions), then GuiContext draws the panel; present
 //
 //   App ──owns──> SdlContext (window, renderer, fonts; RAII)
@@ -41,13 +41,13 @@
 
 #include <SDL.h>
 
-#include "control_panel.hpp"
-#include "draw_layer.hpp"
-#include "frame_view.hpp"
-#include "gui_context.hpp"
-#include "input.hpp"
-#include "sdl_context.hpp"
-#include "session.hpp"
+#include "gui/control_panel.hpp"
+#include "gui/gui_context.hpp"
+#include "platform/input.hpp"
+#include "platform/sdl_context.hpp"
+#include "render/draw_layer.hpp"
+#include "session/session.hpp"
+#include "view/frame_view.hpp"
 
 namespace psb::app {
 

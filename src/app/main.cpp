@@ -8,9 +8,9 @@
 #include <CLI/CLI.hpp>
 
 #include "app.hpp"
-#include "assets.hpp"
 #include "build_info.hpp"
-#include "output_directory.hpp"
+#include "platform/assets.hpp"
+#include "platform/output_directory.hpp"
 
 namespace {
 

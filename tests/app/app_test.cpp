@@ -14,8 +14,8 @@
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
-#include "../core/test_util.hpp"
 #include "app.hpp"
+#include "core/test_util.hpp"
 #include "temp_dir_test.hpp"
 
 namespace psb::app {

@@ -1,0 +1,387 @@
+#include "gui/control_panel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include <imgui.h>
+
+#include "gui/widgets.hpp"
+#include "session/session.hpp"
+#include "session/units.hpp"
+
+namespace psb::app {
+
+using widgets::tip;
+
+namespace {
+
+/// The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
+/// than blended ones (docs/app.md, "Frame time").
+const ImVec4 kPanelBackground{0.09f, 0.10f, 0.12f, 1.f};
+
+void copyPath(std::array<char, 512>& to, const std::filesystem::path& from) {
+    const std::string s = from.string();
+    const std::size_t n = std::min(s.size(), to.size() - 1);
+    std::memcpy(to.data(), s.data(), n);
+    to[n] = '\0';
+}
+
+}  // namespace
+
+void ControlPanel::mark(const std::string& name) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    items_.push_back({name, a.x, a.y, b.x, b.y});
+}
+
+const PanelItem* ControlPanel::item(const std::string& name) const {
+    for (const PanelItem& i : items_) {
+        if (i.name == name) return &i;
+    }
+    return nullptr;
+}
+
+std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& stats, float height,
+                                         float pixelRatio) {
+    out_.clear();
+    items_.clear();
+    const bool open = s.controlsShown();
+    ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
+    ImGui::SetNextWindowSize(ImVec2(open ? kControlsWidth : kControlsFoldedWidth, height));
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, kPanelBackground);
+    if (!open) {
+        ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
+                            ImVec2(kControlsFoldedPadding, ImGui::GetStyle().WindowPadding.y));
+    }
+    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
+                                   ImGuiWindowFlags_NoSavedSettings |
+                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    if (ImGui::Begin("Controls", nullptr, flags)) {
+        if (!open) {
+            if (ImGui::Button(">>", ImVec2(-1.f, 0.f))) out_.emplace_back(cmd::ToggleControls{});
+            mark("open panel");
+            tip("Open the control panel (key C)");
+        } else {
+            ImGui::TextUnformatted("Controls");
+            ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight() * 1.4f);
+            if (ImGui::Button("<<")) out_.emplace_back(cmd::ToggleControls{});
+            mark("fold panel");
+            tip("Fold the panel away to give the box more room (key C)");
+            ImGui::TextDisabled("%s", s.sceneName().c_str());
+            time(s);
+            scene(s);
+            physics(s);
+            show(s);
+            tools(s, pixelRatio);
+            readouts(s);
+            selected(s);
+            allParticles(s);
+            engine(s, stats);
+        }
+    }
+    ImGui::End();
+    if (!open) ImGui::PopStyleVar();
+    ImGui::PopStyleColor();
+    launchPreview(s, pixelRatio);
+    return std::move(out_);
+}
+
+void ControlPanel::time(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Time");
+    if (!open) return;
+    if (ImGui::Button(s.paused() ? "Play" : "Pause", ImVec2(70.f, 0.f))) {
+        out_.emplace_back(cmd::TogglePause{});
+    }
+    mark("Play/Pause");
+    tip("Start or stop the clock (key Space)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!s.paused());
+    if (ImGui::Button("Step")) out_.emplace_back(cmd::SingleStep{});
+    mark("Step");
+    ImGui::EndDisabled();
+    tip("Advance one time step while paused (key N)");
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) out_.emplace_back(cmd::Reset{});
+    mark("Reset");
+    tip("Put every particle back where the scene started (key R)");
+
+    // Undo and redo of edits; back and forward in time (while paused).
+    ImGui::BeginDisabled(!s.canUndo());
+    if (ImGui::Button("Undo")) out_.emplace_back(cmd::Undo{});
+    mark("Undo");
+    ImGui::EndDisabled();
+    tip(s.canUndo() ? ("Undo: " + s.undoLabel() + " (Ctrl+Z)").c_str()
+                    : "Nothing to undo yet (Ctrl+Z)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!s.canRedo());
+    if (ImGui::Button("Redo")) out_.emplace_back(cmd::Redo{});
+    mark("Redo");
+    ImGui::EndDisabled();
+    tip(s.canRedo() ? ("Redo: " + s.redoLabel() + " (Ctrl+Shift+Z)").c_str()
+                    : "Nothing to redo (Ctrl+Shift+Z)");
+    const TimelineView t = s.timeline();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!s.paused() || t.current <= t.earliest);
+    if (ImGui::Button("< Back")) out_.emplace_back(cmd::StepBack{});
+    mark("Step back");
+    ImGui::EndDisabled();
+    tip("While paused: one frame back in time (Shift+Left; PageUp: a second)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!t.viewingPast);
+    if (ImGui::Button("Fwd >")) out_.emplace_back(cmd::StepForward{});
+    mark("Step forward");
+    ImGui::EndDisabled();
+    tip("One frame forward again, towards the present (Shift+Right; PageDown: a second)");
+    // Always there (greyed out until something is recorded), so that the rows below it do not
+    // move as it comes and goes.
+    const bool recorded = t.recorded();
+    double at = t.current;
+    bool dragging = false;
+    const auto [from, to] = t.sliderRange();
+    ImGui::BeginDisabled(!s.paused() || !recorded);
+    if (widgets::slider("Replay", at, from, to, "%.2f s", dragging) && recorded) {
+        out_.emplace_back(cmd::Seek{at});
+    }
+    mark("Replay");
+    ImGui::EndDisabled();
+    tip("While paused: drag back over the recorded past; Play continues from the time shown");
+
+    double speed = s.timeScale();
+    bool continues = false;
+    if (widgets::slider("Speed", speed, Session::kMinTimeScale, Session::kMaxTimeScale, "x%.3g",
+                        continues, ImGuiSliderFlags_Logarithmic)) {
+        out_.emplace_back(cmd::SetTimeScale{speed});
+    }
+    mark("Speed");
+    tip("Simulated seconds per real second: x1 is real time, x0.25 slow motion (keys , and .)");
+    if (!s.paused() && s.reachedTimeScale() < 0.95 * s.timeScale()) {
+        ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "Reaching only x%.2g: too much to compute",
+                           s.reachedTimeScale());
+    }
+}
+
+void ControlPanel::scene(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Scene");
+    mark("section Scene");
+    if (!open) return;
+    ImGui::TextUnformatted("Presets");
+    const float listHeight = ImGui::GetTextLineHeightWithSpacing() * 9.f;
+    if (ImGui::BeginChild("presets", ImVec2(0.f, listHeight), true)) {
+        const auto& presets = s.presets();
+        for (std::size_t k = 0; k < presets.size(); ++k) {
+            const SceneInfo& p = presets[k];
+            ImGui::PushID(static_cast<int>(k));
+            if (ImGui::Selectable(p.name.c_str(), p.name == s.sceneName())) {
+                out_.emplace_back(cmd::OpenPreset{static_cast<int>(k)});
+            }
+            mark("preset " + p.name);
+            const std::string key = k < 9 ? " (key " + std::to_string(k + 1) + ")" : "";
+            const std::string about = p.description.empty() ? p.summary : p.description + key;
+            tip(about.c_str());
+            ImGui::TextDisabled("  %s", p.summary.c_str());
+            tip(about.c_str());
+            ImGui::PopID();
+        }
+    }
+    ImGui::EndChild();
+
+    if (!pathFilled_) {
+        copyPath(path_, s.lastSave() ? *s.lastSave() : std::filesystem::path("my-scene.json"));
+        pathFilled_ = true;
+    }
+    ImGui::SetNextItemWidth(-1.f);
+    ImGui::InputText("##path", path_.data(), path_.size());
+    mark("path");
+    tip("A scene file: type a path, then Open or Save");
+    if (ImGui::Button("Open"))
+        out_.emplace_back(cmd::OpenFile{std::filesystem::path(path_.data())});
+    mark("Open");
+    tip("Open the scene file named above");
+    ImGui::SameLine();
+    if (ImGui::Button("Save")) out_.emplace_back(cmd::SaveAs{path_.data(), false});
+    mark("Save");
+    tip("Save the world to the file named above; an existing file is kept and a new name "
+        "(NAME-2.json, ...) chosen (Ctrl+S saves too)");
+    if (!s.fileError().empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+        ImGui::TextWrapped("%s", s.fileError().c_str());
+        ImGui::PopStyleColor();
+    } else if (s.lastSave()) {
+        ImGui::TextWrapped("Saved to %s", s.lastSave()->string().c_str());
+    }
+    if (!s.recentFiles().empty()) {
+        ImGui::TextUnformatted("Recent files");
+        for (const auto& f : s.recentFiles()) {
+            if (ImGui::Selectable(f.filename().string().c_str())) {
+                copyPath(path_, f);
+                out_.emplace_back(cmd::OpenFile{f});
+            }
+            tip(f.string().c_str());
+        }
+    }
+}
+
+void ControlPanel::show(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Show");
+    if (!open) return;
+    const ViewOptions& v = s.view();
+    const auto box = [this](const char* label, bool on, cmd::ShowOption option, const char* help) {
+        bool value = on;
+        if (ImGui::Checkbox(label, &value)) out_.emplace_back(cmd::SetShow{option, value});
+        mark(label);
+        tip(help);
+    };
+    box("Velocity arrows", v.arrows, cmd::ShowOption::Arrows,
+        "An arrow from each moving particle to where it will be a moment later (key A)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    box("Labels", v.labels, cmd::ShowOption::Labels,
+        "Velocity, momentum and mass written beside each particle (key S)");
+    box("Momentum and centre of mass", v.momentum, cmd::ShowOption::Momentum,
+        "Momentum arrows m v, the total momentum and the centre of mass with its path (key V)");
+    box("Plots", v.plots, cmd::ShowOption::Plots,
+        "Energy, momentum and the collision rate against time, beside the box (key K)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
+        "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
+        "(key D)");
+    if (s.sceneBins()) {
+        box("Bin counts against the bell curve", v.bins, cmd::ShowOption::Bins,
+            "How many balls landed in each bin, against the binomial distribution and the "
+            "normal curve the board should give, and whether the difference is more than "
+            "chance");
+    }
+    if (s.sideColumnFolded()) {
+        widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
+                                "Folded away: the window leaves the charts no room beside the "
+                                "box (fold this panel with C, or widen the window)");
+    }
+    int trails = static_cast<int>(v.trails);
+    ImGui::SetNextItemWidth(130.f);
+    if (ImGui::Combo("Trails", &trails, "off\0selected particle\0all particles\0")) {
+        out_.emplace_back(cmd::SetTrails{trails});
+    }
+    mark("Trails");
+    tip("Draw the path each particle has taken (key L cycles)");
+    if (ImGui::Button("Fit view")) out_.emplace_back(cmd::Fit{});
+    mark("Fit view");
+    tip("Zoom and pan so the whole box is in view (key F; the wheel zooms, the right button "
+        "pans)");
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot")) out_.emplace_back(cmd::Screenshot{});
+    mark("Screenshot");
+    tip("Save the window as a PNG picture (key F12); the message says where");
+    ImGui::SameLine();
+    if (ImGui::Button("Keys")) out_.emplace_back(cmd::ToggleHelp{});
+    mark("Keys");
+    tip("Show every key and where its control is here (key H; Esc closes it)");
+}
+
+void ControlPanel::tools(const Session& s, float) {
+    const bool open = ImGui::CollapsingHeader("Tools");
+    mark("section Tools");
+    if (!open) return;
+    if (ImGui::Button("Add a random particle")) out_.emplace_back(cmd::SpawnRandom{});
+    mark("Add a random particle");
+    tip("A particle of random size, colour and velocity somewhere free in the upper half (key M)");
+    ImGui::TextUnformatted("Left mouse button:");
+    const auto radio = [&](const char* label, cmd::Tool t, const char* help) {
+        if (ImGui::RadioButton(label, s.tool() == t)) out_.emplace_back(cmd::SetTool{t});
+        mark(std::string("tool ") + label);
+        tip(help);
+    };
+    radio("Fling", cmd::Tool::Fling,
+          "Drag a particle and let go to throw it; drag on empty space to launch a new one");
+    ImGui::SameLine();
+    radio("Launch", cmd::Tool::Launch,
+          "Every drag launches a new particle: the line you drag is its velocity arrow");
+    radio("Select", cmd::Tool::Select,
+          "Click a particle to see and edit its values below; drag a wall or peg to move it");
+    ImGui::SameLine();
+    radio("Pan", cmd::Tool::Pan, "Drag to move the view (the right button always pans)");
+    radio("Peg", cmd::Tool::Peg,
+          "Click in the box to place a peg: a fixed disc particles bounce off (key B)");
+    ImGui::SameLine();
+    radio("Wall", cmd::Tool::Wall,
+          "Drag in the box to draw a wall from where you press to where you let go (key W)");
+    obstacleTools(s);
+
+    const SpawnSettings& sp = s.spawn();
+    ImGui::TextUnformatted("New particles:");
+    double mass = sp.mass();
+    double radius = sp.radius();
+    bool autoRadius = !sp.fixedRadius.has_value();
+    const Color c = sp.color();
+    float colour[3] = {c.r / 255.f, c.g / 255.f, c.b / 255.f};
+    bool autoColour = !sp.fixedColor.has_value();
+    bool changed = false;
+    ImGui::SetNextItemWidth(120.f);
+    changed |= ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.3g");
+    mark("launch mass");
+    tip("The mass of launched particles ([ and ] make them a tenth of the scene's typical particle "
+        "smaller or bigger)");
+    ImGui::BeginDisabled(autoRadius);
+    ImGui::SetNextItemWidth(120.f);
+    changed |= ImGui::InputDouble("radius (m)", &radius, 0.0, 0.0, "%.3g");
+    mark("launch radius");
+    ImGui::EndDisabled();
+    tip("The radius of launched particles; untick 'auto' to choose it");
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("auto", &autoRadius);
+    mark("auto radius");
+    tip("Auto: the radius grows with the mass, at the scene's scale");
+    ImGui::BeginDisabled(autoColour);
+    changed |= ImGui::ColorEdit3("colour", colour, ImGuiColorEditFlags_NoInputs);
+    mark("launch colour");
+    ImGui::EndDisabled();
+    tip("The colour of launched particles");
+    ImGui::SameLine();
+    changed |= ImGui::Checkbox("auto##colour", &autoColour);
+    mark("auto colour");
+    tip("Auto: a colour from the mass, light blue for light, pink for heavy");
+    // A radius being typed passes through 0 ("0.2"): nothing is sent until it is positive (0
+    // would mean "from the mass", and would grey the field out under the typing hand).
+    if (!autoRadius && !(radius > 0.0)) changed = false;
+    if (changed) {
+        cmd::SetLaunchBody b;
+        b.mass = mass;
+        b.radius = autoRadius ? 0.0 : radius;
+        if (!autoColour) {
+            const auto ch = [](float f) {
+                return static_cast<std::uint8_t>(std::clamp(std::lround(f * 255.f), 0L, 255L));
+            };
+            b.color = Color{ch(colour[0]), ch(colour[1]), ch(colour[2])};
+        }
+        out_.emplace_back(b);
+    }
+    if (s.interaction().mode() == Interaction::Mode::Launching) {
+        const CappedVelocity v = s.launchPreview();
+        ImGui::Text("Launching at %s%s", quantity(v.velocity.norm(), "m/s").c_str(),
+                    v.capped ? " (the most allowed)" : "");
+    }
+}
+
+void ControlPanel::launchPreview(const Session& s, float pixelRatio) {
+    // A disc at the cursor the size and colour of the particle a launch would make.
+    const bool launchTool = s.tool() == cmd::Tool::Launch || s.tool() == cmd::Tool::Fling;
+    if (!launchTool || ImGui::GetIO().WantCaptureMouse ||
+        s.interaction().mode() != Interaction::Mode::Idle || !ImGui::IsMousePosValid()) {
+        return;
+    }
+    const ImVec2 m = ImGui::GetMousePos();
+    const Vec2 world = s.camera().screenToWorld(Vec2(m.x * pixelRatio, m.y * pixelRatio));
+    if (s.tool() == cmd::Tool::Fling && s.world().pick(world)) return;  // it would grab
+    const WorldDef& box = s.world().def();
+    const bool outside =
+        world.x() < 0.0 || world.y() < 0.0 || world.x() > box.width || world.y() > box.height;
+    if (box.walls && outside) return;  // no particle is made out there
+    const float r = static_cast<float>(s.camera().toScreen(s.spawn().radius())) / pixelRatio;
+    if (!(r >= 1.f) || r > 4000.f) return;
+    const Color c = s.spawn().color();
+    ImGui::GetBackgroundDrawList()->AddCircle(m, r, IM_COL32(c.r, c.g, c.b, 200), 0, 1.5f);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,91 @@
+#pragma once
+// The on-screen control panel (Dear ImGui): a column at the left of the window, beside the box
+// (the session's fit keeps that column free), with collapsible sections
+//
+//   Time       play / pause, one step, time speed, reset
+//   Scene      presets with a line on each, open and save with a path field, recent files
+//   Physics    stepping mode (and why one is unavailable), restitution, friction, gravity, walls
+//   Show       arrows, labels, momentum and centre of mass, trails, plots, speed histogram
+//   Tools      what the left mouse does; what a launched particle is made of; obstacle sizes
+//   Readouts   time, particles, energies, momentum, accuracy in words
+//   Selected   the selected particle's values, editable in place
+//   All particles   a table, for scenes of up to kTableMaxParticles
+//   Engine     frame times, broadphase, threads, per-stage profile (closed at first)
+//
+// It only reads the session and returns Commands (the same ones keys make); the app applies them
+// with Session::apply, so a button and its key are one path. Folded (button or key C), it is a
+// narrow strip with one button that opens it again.
+//
+// The panel's pieces are in control_panel.cpp (the window, time, scene, show, tools), one file
+// per section after that: section_obstacles.cpp (the obstacle tools' sizes, removing an
+// obstacle), section_physics.cpp, section_readouts.cpp (readouts, engine) and
+// section_particles.cpp (selected, all particles); widgets.hpp holds the small widgets they
+// share.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "session/command.hpp"
+#include "view/frame_view.hpp"
+
+namespace psb::app {
+
+class Session;
+
+/// The panel's width open and folded, window points (pixels at a pixel ratio of 1).
+inline constexpr float kControlsWidth = 310.f;
+/// Folded, the strip holds the ">>" button at its label's width (15 px DejaVu Sans: 30
+/// points with the frame padding) inside kControlsFoldedPadding either side.
+inline constexpr float kControlsFoldedWidth = 44.f;
+inline constexpr float kControlsFoldedPadding = 6.f;
+/// Scenes with more particles than this get no all-particles table.
+inline constexpr std::size_t kTableMaxParticles = 60;
+
+/// Where a control was drawn in the last frame, window points: for tests and scripted input
+/// (--log-controls), which find a control by its name.
+struct PanelItem {
+    std::string name;
+    float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
+};
+
+class ControlPanel {
+  public:
+    /// Builds the panel into the current ImGui frame (between GuiContext::beginFrame and
+    /// endFrame) for a display `height` points high, `pixelRatio` pixels per point; returns what
+    /// its controls asked for this frame.
+    std::vector<Command> build(const Session& session, const FrameStats& stats, float height,
+                               float pixelRatio);
+
+    /// The named controls of the last build, in drawing order.
+    [[nodiscard]] const std::vector<PanelItem>& items() const { return items_; }
+    /// The item called `name` in the last build, or nullptr.
+    [[nodiscard]] const PanelItem* item(const std::string& name) const;
+
+  private:
+    /// Records the item just drawn as `name`.
+    void mark(const std::string& name);
+    void time(const Session& s);
+    void scene(const Session& s);
+    void physics(const Session& s);
+    void show(const Session& s);
+    void tools(const Session& s, float pixelRatio);
+    /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).
+    void obstacleTools(const Session& s);
+    void readouts(const Session& s);
+    void engine(const Session& s, const FrameStats& stats);
+    void selected(const Session& s);
+    void allParticles(const Session& s);
+    void launchPreview(const Session& s, float pixelRatio);
+
+    std::vector<Command> out_;
+    std::vector<PanelItem> items_;
+    std::array<char, 512> path_{};
+    bool pathFilled_ = false;
+    int substeps_ = 4;
+    /// The selected particle's table: each field's text while it is typed in.
+    std::array<std::array<char, 40>, 6> fieldText_{};
+    std::array<bool, 6> fieldActive_{};
+};
+
+}  // namespace psb::app

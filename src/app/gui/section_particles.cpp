@@ -1,0 +1,153 @@
+// The control panel's particle tables: the selected particle's values, editable in place, and
+// a table of every particle for small scenes (PhET's "more data").
+
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "gui/control_panel.hpp"
+#include "gui/widgets.hpp"
+#include "session/session.hpp"
+#include "session/units.hpp"
+
+namespace psb::app {
+
+using widgets::row;
+using widgets::tip;
+
+namespace {
+
+struct EditableField {
+    ParticleField field;
+    const char* name;
+    const char* unit;
+};
+constexpr EditableField kFields[] = {
+    {ParticleField::X, "x", "m"},        {ParticleField::Y, "y", "m"},
+    {ParticleField::Vx, "vx", "m/s"},    {ParticleField::Vy, "vy", "m/s"},
+    {ParticleField::Mass, "mass", "kg"}, {ParticleField::Radius, "radius", "m"},
+};
+
+double fieldValue(const Particle& p, ParticleField f) {
+    switch (f) {
+        case ParticleField::X:
+            return p.position.x();
+        case ParticleField::Y:
+            return p.position.y();
+        case ParticleField::Vx:
+            return p.velocity.x();
+        case ParticleField::Vy:
+            return p.velocity.y();
+        case ParticleField::Mass:
+            return p.mass;
+        case ParticleField::Radius:
+            return p.radius;
+    }
+    return 0.0;
+}
+
+}  // namespace
+
+void ControlPanel::selected(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Selected particle", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Selected particle");
+    if (!open) return;
+    const auto p = s.selected();
+    if (!p) {
+        ImGui::TextDisabled("Click a particle (or a row below) to see its values");
+        fieldActive_.fill(false);
+        return;
+    }
+    ImGui::Text("Particle %u", p->id.slot);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("deselect")) out_.emplace_back(cmd::Select{kNullParticle});
+    mark("deselect");
+    tip("Forget the selection (or click empty space)");
+    ImGui::SameLine();
+    if (ImGui::SmallButton("delete")) out_.emplace_back(cmd::DeleteParticle{p->id});
+    mark("delete particle");
+    tip("Remove this particle from the world (Ctrl+Z brings it back; Backspace or Delete "
+        "removes a particle you hold)");
+    if (!widgets::beginRows("selected")) return;
+    for (std::size_t k = 0; k < std::size(kFields); ++k) {
+        const EditableField& f = kFields[k];
+        auto& text = fieldText_[k];
+        // While a field is typed in it keeps the user's text; otherwise it shows the value now.
+        if (!fieldActive_[k])
+            std::snprintf(text.data(), text.size(), "%.6g", fieldValue(*p, f.field));
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::Text("%s (%s)", f.name, f.unit);
+        ImGui::TableNextColumn();
+        ImGui::SetNextItemWidth(-1.f);
+        ImGui::PushID(static_cast<int>(k));
+        const bool enter = ImGui::InputText(
+            "##v", text.data(), text.size(),
+            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific);
+        // Enter, or leaving the field (a click elsewhere, Tab) after typing, applies it.
+        const bool left = ImGui::IsItemDeactivatedAfterEdit();
+        fieldActive_[k] = ImGui::IsItemActive();
+        mark(std::string("selected ") + f.name);
+        if (enter || left) {
+            out_.emplace_back(cmd::EditParticle{p->id, f.field, text.data()});
+            fieldActive_[k] = false;
+        }
+        tip("Type a new value and press Enter (or click elsewhere); a value the world cannot take "
+            "is refused with the reason");
+        ImGui::PopID();
+    }
+    const double speed = p->velocity.norm();
+    row("speed", quantity(speed, "m/s"), "How fast it moves, whatever the direction");
+    row("momentum", quantity(p->mass * speed, "kg m/s", false), "m v: mass times speed");
+    row("kinetic energy", quantity(0.5 * p->mass * speed * speed, "J"), "\u00bd m v\u00b2");
+    ImGui::EndTable();
+    if (!s.editRefusal().empty()) {
+        widgets::wrappedColored(ImVec4(1.f, 0.55f, 0.45f, 1.f), "Refused: " + s.editRefusal());
+    }
+}
+
+void ControlPanel::allParticles(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("All particles");
+    mark("section All particles");
+    if (!open) return;
+    const World& w = s.world();
+    if (w.size() > kTableMaxParticles) {
+        ImGui::TextDisabled("%zu particles: the table is for scenes of up to %zu", w.size(),
+                            kTableMaxParticles);
+        return;
+    }
+    const ImGuiTableFlags flags =
+        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingStretchProp;
+    if (!ImGui::BeginTable("all", 5, flags)) return;
+    ImGui::TableSetupColumn("#");
+    ImGui::TableSetupColumn("x, y (m)");
+    ImGui::TableSetupColumn("speed");
+    ImGui::TableSetupColumn("kg");
+    ImGui::TableSetupColumn("r (m)");
+    ImGui::TableHeadersRow();
+    const auto selectedId = s.selection().id();
+    for (const ParticleId id : w.ids()) {
+        const Particle p = w.get(id);
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        char label[32];
+        std::snprintf(label, sizeof label, "%u", id.slot);
+        if (ImGui::Selectable(label, selectedId && *selectedId == id,
+                              ImGuiSelectableFlags_SpanAllColumns)) {
+            out_.emplace_back(cmd::Select{id});
+        }
+        mark("row " + std::string(label));
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f, %.2f", p.position.x(), p.position.y());
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(quantity(p.velocity.norm(), "m/s").c_str());
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", p.mass);
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3g", p.radius);
+    }
+    ImGui::EndTable();
+}
+
+}  // namespace psb::app

@@ -1,0 +1,117 @@
+// The control panel's Physics section: how the world is stepped and what its collisions and
+// forces are.
+
+#include <cmath>
+
+#include <imgui.h>
+
+#include "gui/control_panel.hpp"
+#include "gui/widgets.hpp"
+#include "session/physics_controls.hpp"
+#include "session/session.hpp"
+
+namespace psb::app {
+
+using widgets::tip;
+
+namespace {
+
+/// What each mode trades, in a sentence a student can read.
+const char* modeSentence(StepMode mode) {
+    switch (mode) {
+        case StepMode::Discrete:
+            return "Discrete: moves everything one step, then separates what overlaps. The "
+                   "fastest; a very fast particle can pass through another.";
+        case StepMode::Substep:
+            return "Substeps: the same in k smaller steps. About k times slower; fast particles "
+                   "pass through others k times less often.";
+        case StepMode::Exact:
+            return "Exact: finds the moment of every collision, in order. No overlaps and "
+                   "energy kept to rounding; slower in dense scenes.";
+    }
+    return "";
+}
+
+}  // namespace
+
+void ControlPanel::physics(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Physics", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Physics");
+    if (!open) return;
+    const World& w = s.world();
+    const SolverSettings& solver = w.solver();
+    if (solver.mode == StepMode::Substep) substeps_ = solver.substeps;
+
+    const auto modeButton = [&](const char* label, StepMode m) {
+        const std::string why = s.modeRefusal(m);
+        ImGui::BeginDisabled(!why.empty());
+        if (ImGui::RadioButton(label, solver.mode == m)) {
+            out_.emplace_back(cmd::SetMode{m, substeps_});
+        }
+        mark(std::string("mode ") + label);
+        ImGui::EndDisabled();
+        const std::string help =
+            std::string(modeSentence(m)) + (why.empty() ? "" : "\nNot available here: " + why);
+        tip(help.c_str());
+    };
+    ImGui::TextUnformatted("Mode (key T):");
+    modeButton("Discrete", StepMode::Discrete);
+    ImGui::SameLine();
+    modeButton("Substeps", StepMode::Substep);
+    ImGui::SameLine();
+    modeButton("Exact", StepMode::Exact);
+    if (solver.mode == StepMode::Substep) {
+        ImGui::SetNextItemWidth(150.f);
+        int k = substeps_;
+        if (ImGui::SliderInt("k substeps", &k, 2, kMaxPanelSubsteps)) {
+            substeps_ = k;
+            out_.emplace_back(cmd::SetMode{StepMode::Substep, k});
+        }
+        mark("substeps");
+        tip("Smaller steps per time step: more accurate, k times the work");
+    }
+    widgets::wrappedDisabled(modeSentence(solver.mode));
+    if (const std::string why = s.modeRefusal(StepMode::Exact); !why.empty()) {
+        widgets::wrappedDisabled("Exact is not available: " + why + ".");
+    }
+
+    const WorldDef& d = w.def();
+    double e = d.restitution;
+    bool continues = false;
+    if (widgets::slider("Restitution", e, 0.0, 1.0, "%.2f", continues)) {
+        out_.emplace_back(cmd::SetRestitution{e, continues});
+    }
+    mark("Restitution");
+    tip("How bouncy collisions are: 1 keeps all the energy of the approach, 0 keeps none (the "
+        "particles stick together for that instant). Keys E and Shift+E.");
+    double mu = d.friction;
+    if (widgets::slider("Friction", mu, 0.0, 1.0, "%.2f", continues)) {
+        out_.emplace_back(cmd::SetFriction{mu, continues});
+    }
+    mark("Friction");
+    tip("Friction where surfaces touch: 0 is ice; higher values take more of the sliding "
+        "along the contact away in each collision.");
+
+    const bool gravityOn = d.gravity != Vec2::Zero();
+    bool on = gravityOn;
+    double g = gravityOn ? d.gravity.norm() : kEarthGravity;
+    if (ImGui::Checkbox("Gravity", &on)) out_.emplace_back(cmd::SetGravity{on, g, false});
+    mark("Gravity");
+    tip("A steady pull downwards (key G). Earth's is 9.81 m/s\xc2\xb2.");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!gravityOn);
+    ImGui::SetNextItemWidth(-1.f);
+    if (widgets::slider("##g", g, 0.1, 30.0, "%.2f m/s\xc2\xb2", continues,
+                        ImGuiSliderFlags_Logarithmic)) {
+        out_.emplace_back(cmd::SetGravity{true, g, continues});
+    }
+    mark("g");
+    ImGui::EndDisabled();
+    tip("The strength of gravity: Earth 9.81, the Moon 1.62, Jupiter 24.8 m/s\xc2\xb2");
+    bool walls = d.walls;
+    if (ImGui::Checkbox("Walls", &walls)) out_.emplace_back(cmd::SetWalls{walls});
+    mark("Walls");
+    tip("The four walls of the box; without them particles fly away");
+}
+
+}  // namespace psb::app

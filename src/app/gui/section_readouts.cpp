@@ -1,0 +1,155 @@
+// The control panel's Readouts (what a student reads) and Engine (what a developer reads)
+// sections.
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include <particle_sandbox/diagnostics.hpp>
+
+#include "gui/control_panel.hpp"
+#include "gui/widgets.hpp"
+#include "session/accuracy.hpp"
+#include "session/session.hpp"
+#include "session/units.hpp"
+
+namespace psb::app {
+
+using widgets::row;
+using widgets::tip;
+
+namespace {
+
+/// The farthest any particle moves in one step, in its own diameters (one substep in the
+/// substep mode): above about 1 a collision can be missed, a particle passing through another.
+double stepsPerDiameter(const World& w) {
+    const ParticleArrays& p = w.particles();
+    const SolverSettings& s = w.solver();
+    const double dt = s.dt / (s.mode == StepMode::Substep ? s.substeps : 1);
+    double worst = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double speed = std::hypot(p.vx[i], p.vy[i]);
+        worst = std::max(worst, speed * dt / (2.0 * p.radius[i]));
+    }
+    return worst;
+}
+
+std::string vector(const Vec2& v, const char* unit) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%s, %s) %s", quantity(v.x(), "", false).c_str(),
+                  quantity(v.y(), "", false).c_str(), unit);
+    return buf;
+}
+
+}  // namespace
+
+void ControlPanel::readouts(const Session& s) {
+    const bool open = ImGui::CollapsingHeader("Readouts", ImGuiTreeNodeFlags_DefaultOpen);
+    mark("section Readouts");
+    if (!open) return;
+    const World& w = s.world();
+    const ObservablesSample& o = s.observables();
+    const bool gravity = w.def().gravity != Vec2::Zero();
+    if (widgets::beginRows("readouts")) {
+        // Each readout's name and value are marked, for the tests that check they never meet.
+        const auto readout = [this](const char* name, const std::string& value,
+                                    const char* help = nullptr) {
+            const widgets::RowRects r = row(name, value, help);
+            items_.push_back(
+                {std::string("readout ") + name, r.name0.x, r.name0.y, r.name1.x, r.name1.y});
+            items_.push_back({std::string("readout ") + name + " value", r.value0.x, r.value0.y,
+                              r.value1.x, r.value1.y});
+        };
+        readout("Time", quantity(w.time(), "s") + (s.paused() ? ", paused" : ""),
+                "Simulated time since the scene started");
+        readout("Particles", std::to_string(w.size()));
+        readout("Kinetic energy", quantity(o.kineticEnergy, "J"),
+                "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
+        if (gravity) {
+            readout("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
+                    "Kinetic plus potential energy (m g h): what elastic collisions under gravity "
+                    "keep constant");
+        }
+        readout("Momentum", vector(o.momentum, "kg m/s"),
+                "The total momentum, the sum of m v: walls and gravity change it, collisions "
+                "between particles never do");
+        readout("  size", quantity(o.momentum.norm(), "kg m/s", false));
+        ImGui::EndTable();
+    }
+
+    // Accuracy, in words.
+    const double drift = s.accuracy().drift(monitoredEnergy(w));
+    const char* which = gravity ? "Mechanical energy" : "Energy";
+    widgets::wrapped(std::string(which) + " " + keptWords(drift) + " since your last change");
+    tip("How well the simulation keeps the energy it should keep. Collisions with restitution "
+        "below 1, friction and your own changes (a fling, a launch) change it on purpose; the "
+        "count starts again at each change.");
+    widgets::wrapped(overlapWords(s.accuracy().overlap(), s.spawn().typicalRadius));
+    tip("Real balls never overlap; a step-by-step simulation lets them, a little, between steps");
+    if (w.solver().mode != StepMode::Exact && w.size() > 0) {
+        const double d = stepsPerDiameter(w);
+        char buf[160];
+        if (d > 1.0) {
+            std::snprintf(buf, sizeof buf,
+                          "Fast particles move %.1f diameters a step: collisions can be missed "
+                          "(try more substeps or Exact)",
+                          d);
+            widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), buf);
+        } else {
+            std::snprintf(buf, sizeof buf,
+                          "No collision can be missed: the fastest moves %.2f of its size a step",
+                          d);
+            widgets::wrapped(buf);
+        }
+        tip("A particle that moves more than its own size in one step can pass through another "
+            "without touching it; the exact mode never misses one");
+    }
+}
+
+void ControlPanel::engine(const Session& s, const FrameStats& stats) {
+    const bool open = ImGui::CollapsingHeader("Engine");
+    mark("section Engine");
+    if (!open) return;
+    const World& w = s.world();
+    if (widgets::beginRows("engine")) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.0f", stats.fps);
+        row("Frames per second", buf);
+        std::snprintf(buf, sizeof buf, "%.2f ms", stats.stepMs);
+        row("Simulation per frame", buf);
+        std::snprintf(buf, sizeof buf, "%.2f ms", stats.drawMs);
+        row("Drawing per frame", buf);
+        row("Renderer", stats.renderer);
+        row("Mode", modeName(w.solver()));
+        row("Broadphase",
+            w.solver().mode == StepMode::Exact ? std::string("event cells")
+                                               : std::string(toString(w.broadPhaseInUse())),
+            "How pairs that may touch are found: all pairs for a few particles, a grid of cells "
+            "for many");
+        row("Threads", std::to_string(w.threads()));
+        std::snprintf(buf, sizeof buf, "%g ms", w.solver().dt * 1000.0);
+        row("Time step", buf);
+        ImGui::EndTable();
+    }
+    bool profile = s.profileShown();
+    if (ImGui::Checkbox("Profile beside the box", &profile)) {
+        out_.emplace_back(cmd::SetShow{cmd::ShowOption::Profile, profile});
+    }
+    mark("Profile");
+    tip("The last step's stages with their times, in a panel beside the box (keys O, F3)");
+    const StepProfile& p = w.profile();
+    if (p.stageCount > 0 && widgets::beginRows("profile")) {
+        char buf[32];
+        for (int k = 0; k < p.stageCount; ++k) {
+            std::snprintf(buf, sizeof buf, "%.3f ms", p.stages[k].ms);
+            row(std::string(p.stages[k].name).c_str(), buf);
+        }
+        std::snprintf(buf, sizeof buf, "%.3f ms", p.total);
+        row("step total", buf);
+        ImGui::EndTable();
+    }
+}
+
+}  // namespace psb::app

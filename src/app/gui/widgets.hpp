@@ -1,0 +1,93 @@
+#pragma once
+// Small widgets the control panel's sections share: text wrapped at spaces, a tooltip on the
+// last item, a slider of a double that reports whether this change continues a drag, and a
+// two-column row of a readout.
+
+#include <string>
+#include <string_view>
+
+#include <imgui.h>
+
+#include "view/word_wrap.hpp"
+
+namespace psb::app::widgets {
+
+/// `text` wrapped at spaces (never inside "9.81") to `width` points, or to the room left in
+/// the window when `width` is 0, in the current text colour; one item (for a tooltip) however
+/// many lines it takes.
+inline void wrapped(std::string_view text, float width = 0.f) {
+    if (!(width > 0.f)) width = ImGui::GetContentRegionAvail().x;
+    const MeasureText measure = [](std::string_view t) {
+        return ImGui::CalcTextSize(t.data(), t.data() + t.size()).x;
+    };
+    ImGui::BeginGroup();
+    for (const std::string& line : wrapAtSpaces(text, width, measure))
+        ImGui::TextUnformatted(line.c_str(), line.c_str() + line.size());
+    ImGui::EndGroup();
+}
+
+/// wrapped() in the colour of greyed-out text.
+inline void wrappedDisabled(std::string_view text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrapped(text);
+    ImGui::PopStyleColor();
+}
+/// wrapped() in `color`.
+inline void wrappedColored(const ImVec4& color, std::string_view text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, color);
+    wrapped(text);
+    ImGui::PopStyleColor();
+}
+
+/// A tooltip for the item just drawn (also while it is disabled).
+inline void tip(const char* text) {
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+        ImGui::BeginTooltip();
+        wrapped(text, ImGui::GetFontSize() * 22.f);
+        ImGui::EndTooltip();
+    }
+}
+
+/// A slider of `value` in [lo, hi]; true when the user changed it, with `continues` set when
+/// the change is part of a drag that started in an earlier frame (one user action per drag).
+inline bool slider(const char* label, double& value, double lo, double hi, const char* format,
+                   bool& continues, ImGuiSliderFlags flags = 0) {
+    const bool changed =
+        ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+    continues = !ImGui::IsItemActivated();
+    return changed;
+}
+
+/// Starts a table of "name   value" rows: the names' column as wide as its widest name, the
+/// values' column the rest, their text wrapped at spaces within it, so that a name and its
+/// value never overlap, whatever the panel's width. End it with ImGui::EndTable().
+inline bool beginRows(const char* id) {
+    if (!ImGui::BeginTable(id, 2, ImGuiTableFlags_SizingFixedFit)) return false;
+    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupColumn("value", ImGuiTableColumnFlags_WidthStretch);
+    return true;
+}
+
+/// Where a row's name and value were drawn, window points.
+struct RowRects {
+    ImVec2 name0, name1, value0, value1;
+};
+
+/// "name   value" in a row of a beginRows() table.
+inline RowRects row(const char* name, const std::string& value, const char* help = nullptr) {
+    RowRects r;
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    r.name0 = ImGui::GetItemRectMin();
+    r.name1 = ImGui::GetItemRectMax();
+    if (help != nullptr) tip(help);
+    ImGui::TableNextColumn();
+    wrapped(value);
+    r.value0 = ImGui::GetItemRectMin();
+    r.value1 = ImGui::GetItemRectMax();
+    if (help != nullptr) tip(help);
+    return r;
+}
+
+}  // namespace psb::app::widgets

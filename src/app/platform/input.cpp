@@ -1,0 +1,195 @@
+#include "platform/input.hpp"
+
+#include <cmath>
+
+#include "platform/clock.hpp"
+
+namespace psb::app {
+
+namespace {
+
+std::vector<Command> editKey(const SDL_KeyboardEvent& key) {
+    // Characters arrive as SDL_TEXTINPUT; here only the keys that steer the prompt, and F12,
+    // which types nothing and may well be wanted for a picture of the prompt.
+    switch (key.keysym.sym) {
+        case SDLK_F12:
+            return {cmd::Screenshot{}};
+        case SDLK_ESCAPE:
+            return {cmd::Back{}};
+        case SDLK_TAB:
+            return {cmd::EditField{(key.keysym.mod & KMOD_SHIFT) != 0}};
+        case SDLK_BACKSPACE:
+            return {cmd::EditBackspace{}};
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER:
+            if (key.repeat != 0) return {};
+            return {cmd::EditApply{}};
+        default:
+            return {};
+    }
+}
+
+}  // namespace
+
+std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) {
+    if (editing) return editKey(key);
+    const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
+    const bool shift = (key.keysym.mod & KMOD_SHIFT) != 0;
+    const SDL_Keycode sym = key.keysym.sym;
+    const bool repeatable = sym == SDLK_LEFT || sym == SDLK_RIGHT || sym == SDLK_UP ||
+                            sym == SDLK_DOWN || sym == SDLK_n || sym == SDLK_LEFTBRACKET ||
+                            sym == SDLK_RIGHTBRACKET || sym == SDLK_PAGEUP ||
+                            sym == SDLK_PAGEDOWN || (ctrl && (sym == SDLK_z || sym == SDLK_y));
+    if (key.repeat != 0 && !repeatable) return {};
+    switch (sym) {
+        case SDLK_ESCAPE:
+            return {cmd::Back{}};
+        case SDLK_BACKSPACE:
+        case SDLK_DELETE:
+            return {cmd::DeleteHeld{}};
+        case SDLK_s:
+            if (ctrl) return {cmd::Save{}};
+            return {cmd::ToggleLabels{}};
+        case SDLK_a:
+            return {cmd::ToggleArrows{}};
+        case SDLK_c:
+            return {cmd::ToggleControls{}};
+        case SDLK_m:
+            return {cmd::SpawnRandom{}};
+        case SDLK_b:
+            return {cmd::SetTool{cmd::Tool::Peg, true}};
+        case SDLK_w:
+            return {cmd::SetTool{cmd::Tool::Wall, true}};
+        case SDLK_h:
+            return {cmd::ToggleHelp{}};
+        case SDLK_v:
+            return {cmd::ToggleMomentum{}};
+        case SDLK_l:
+            return {cmd::CycleTrails{}};
+        case SDLK_k:
+            return {cmd::TogglePlots{}};
+        case SDLK_d:
+            return {cmd::ToggleSpeeds{}};
+        case SDLK_t:
+            return {cmd::NextMode{}};
+        case SDLK_o:
+        case SDLK_F3:
+            return {cmd::ToggleProfile{}};
+        case SDLK_f:
+            return {cmd::Fit{}};
+        case SDLK_SPACE:
+            return {cmd::TogglePause{}};
+        case SDLK_n:
+            return {cmd::SingleStep{}};
+        case SDLK_COMMA:
+            return {cmd::ScaleTime{0.5}};
+        case SDLK_PERIOD:
+            return {cmd::ScaleTime{2.0}};
+        case SDLK_r:
+            return {cmd::Reset{}};
+        case SDLK_e:
+            return {cmd::ChangeRestitution{shift ? +1 : -1}};
+        case SDLK_g:
+            return {cmd::ToggleGravity{}};
+        case SDLK_F12:
+            return {cmd::Screenshot{}};
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER:
+            return {cmd::OpenEdit{}};
+        case SDLK_p:
+            return {cmd::OpenPreset{-1}};
+        case SDLK_0:
+        case SDLK_1:
+        case SDLK_2:
+        case SDLK_3:
+        case SDLK_4:
+        case SDLK_5:
+        case SDLK_6:
+        case SDLK_7:
+        case SDLK_8:
+        case SDLK_9:
+            return {cmd::OpenPreset{cmd::presetForDigit(static_cast<int>(sym - SDLK_0), shift)}};
+        case SDLK_LEFTBRACKET:
+            return {cmd::ChangeSpawnMass{-1}};
+        case SDLK_RIGHTBRACKET:
+            return {cmd::ChangeSpawnMass{+1}};
+        case SDLK_z:  // plain Z and Y do nothing
+            if (ctrl) return {shift ? Command{cmd::Redo{}} : Command{cmd::Undo{}}};
+            return {};
+        case SDLK_y:
+            if (ctrl) return {cmd::Redo{}};
+            return {};
+        case SDLK_LEFT:
+            if (shift) return {cmd::StepBack{}};
+            return {cmd::Pan{Vec2(kPanKeyPixels, 0.0)}};  // the view moves the way it points
+        case SDLK_RIGHT:
+            if (shift) return {cmd::StepForward{}};
+            return {cmd::Pan{Vec2(-kPanKeyPixels, 0.0)}};
+        case SDLK_PAGEUP:
+            return {cmd::SeekBy{-kSeekKeySeconds}};
+        case SDLK_PAGEDOWN:
+            return {cmd::SeekBy{kSeekKeySeconds}};
+        case SDLK_UP:
+            return {cmd::Pan{Vec2(0.0, kPanKeyPixels)}};
+        case SDLK_DOWN:
+            return {cmd::Pan{Vec2(0.0, -kPanKeyPixels)}};
+        default:
+            return {};
+    }
+}
+
+std::vector<Command> Input::translate(const SDL_Event& e, bool editing, double pixelRatio,
+                                      SDL_Point output) {
+    const auto at = [pixelRatio](int x, int y) { return Vec2(x * pixelRatio, y * pixelRatio); };
+    switch (e.type) {
+        case SDL_QUIT:
+            return {cmd::Quit{}};
+        case SDL_WINDOWEVENT:
+            if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
+                return {cmd::Resize{output.x, output.y}};
+            }
+            return {};
+        case SDL_KEYDOWN:
+            return commandsForKey(e.key, editing);
+        case SDL_TEXTINPUT:
+            if (editing) return {cmd::EditType{e.text.text}};
+            return {};
+        case SDL_MOUSEBUTTONDOWN:
+            mouse_ = at(e.button.x, e.button.y);
+            if (e.button.button == SDL_BUTTON_LEFT) {
+                return {cmd::PointerDown{mouse_, ticksToSeconds(e.button.timestamp)}};
+            }
+            if (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE) {
+                panning_ = true;
+            }
+            return {};
+        case SDL_MOUSEMOTION: {
+            const Vec2 m = at(e.motion.x, e.motion.y);
+            std::vector<Command> out;
+            if (panning_) out.emplace_back(cmd::Pan{m - mouse_});
+            mouse_ = m;
+            out.emplace_back(cmd::PointerMove{m, ticksToSeconds(e.motion.timestamp)});
+            return out;
+        }
+        case SDL_MOUSEBUTTONUP:
+            mouse_ = at(e.button.x, e.button.y);
+            if (e.button.button == SDL_BUTTON_LEFT) {
+                return {cmd::PointerUp{mouse_, ticksToSeconds(e.button.timestamp)}};
+            }
+            if (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE) {
+                panning_ = false;
+            }
+            return {};
+        case SDL_MOUSEWHEEL: {
+            if (e.wheel.preciseY == 0.0f) return {};
+            int x = 0, y = 0;
+            SDL_GetMouseState(&x, &y);
+            mouse_ = at(x, y);
+            return {cmd::Zoom{mouse_, std::pow(kWheelZoomStep, e.wheel.preciseY)}};
+        }
+        default:
+            return {};
+    }
+}
+
+}  // namespace psb::app

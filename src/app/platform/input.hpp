@@ -1,0 +1,41 @@
+#pragma once
+// SDL events to commands: the key map and the mouse. The only input code that knows SDL; what
+// an event means is decided here, what it does is the session's (Session::apply).
+//
+// Keys repeat only where repeating makes sense (pan, single step, spawn mass, stepping through
+// time, undo and redo); a held Space or S
+// must not flicker. While the edit prompt is open only its keys (Tab, Backspace, Enter, Esc) and
+// F12 mean anything, and typed characters arrive as text.
+
+#include <vector>
+
+#include <SDL.h>
+
+#include "session/command.hpp"
+
+namespace psb::app {
+
+/// Pan per arrow key press, pixels (the original panned by 50 / zoom world units).
+inline constexpr double kPanKeyPixels = 50.0;
+/// Simulated seconds PageUp / PageDown go back / forward through the recorded past.
+inline constexpr double kSeekKeySeconds = 1.0;
+/// Zoom factor per wheel notch.
+inline constexpr double kWheelZoomStep = 1.15;
+
+/// The command a key press means (none for an unbound key or a repeat that should not repeat).
+/// `editing`: the edit prompt is open.
+[[nodiscard]] std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing);
+
+class Input {
+  public:
+    /// The commands `e` means. `pixelRatio` is drawable pixels per window point (mouse events
+    /// come in points, the camera works in pixels); `output` is the drawable size, pixels.
+    [[nodiscard]] std::vector<Command> translate(const SDL_Event& e, bool editing,
+                                                 double pixelRatio, SDL_Point output);
+
+  private:
+    bool panning_ = false;       ///< right or middle button held
+    Vec2 mouse_ = Vec2::Zero();  ///< pixels
+};
+
+}  // namespace psb::app

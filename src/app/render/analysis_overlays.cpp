@@ -1,0 +1,26 @@
+#include "render/analysis_overlays.hpp"
+
+namespace psb::app {
+
+void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const World& world,
+                            const ObservablesSample& now, const Camera& camera,
+                            const TimeSeries& series, const ViewOptions& view,
+                            const PanelLayout& layout, const std::optional<BinHistogram>& bins) {
+    if (view.momentum) {
+        momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds,
+                       layout.legend);
+    }
+    if (view.plots && layout.plots.w > 0) {
+        double mass = 0.0;
+        for (const double m : world.particles().mass)
+            mass += m;
+        plots_.draw(renderer, font, series, layout.plots, layout.plotRows, layout.plotRowHeight,
+                    mass);
+    }
+    if (view.speeds && layout.speeds.w > 0) {
+        speeds_.draw(renderer, font, world.particles(), layout.speeds);
+    }
+    if (bins && layout.bins.w > 0) bins_.draw(renderer, font, *bins, layout.bins);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,126 @@
+#include "render/draw_layer.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/obstacle_drawing.hpp"
+#include "render/overlay_drawing.hpp"
+#include "render/sdl_rect.hpp"
+#include "render/selection_outline.hpp"
+#include "render/text.hpp"
+
+namespace psb::app {
+
+DrawLayer::DrawLayer(SDL_Renderer* renderer, const Font& hudFont, const Font& labelFont)
+    : sdl_(renderer), hudFont_(hudFont), labelFont_(labelFont), renderer_(renderer, &labelFont) {}
+
+DrawStats DrawLayer::draw(const FrameView& frame) {
+    const World& world = *frame.world;
+    const Camera& camera = *frame.camera;
+    // Trails follow particles by id: a new scene, or trails switched off, starts them over.
+    if (frame.sceneGeneration != trailsGeneration_ || frame.view.trails == TrailMode::Off) {
+        trails_.reset();
+        trailsGeneration_ = frame.sceneGeneration;
+    }
+    if (frame.view.trails == TrailMode::Selected) trails_.follow(frame.trailParticle);
+    if (frame.view.trails != TrailMode::Off) trails_.update(world);
+
+    RenderAvoid avoid;
+    for (const PixelRect& r :
+         {frame.layout.hud, frame.layout.messages, frame.layout.inspector, frame.layout.profile,
+          frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
+        if (r.w > 0) avoid.push_back(sdlRect(r));
+    }
+    const DrawStats stats =
+        renderer_.draw(world, camera, frame.view, &trails_, frame.trailParticle, &avoid);
+    for (const DropperView& d : frame.droppers)
+        drawDropper(camera, d);
+    if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);
+    if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
+    analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
+                   frame.layout, frame.bins);
+    if (frame.launch) drawLaunch(camera, *frame.launch);
+    if (frame.boxMarker) drawBoxMarker(*frame.boxMarker);
+    drawOverlays(sdl_, hudFont_, frame.overlays, frame.layout);
+    return stats;
+}
+
+void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch) {
+    // The ghost disc where the particle will appear and the velocity arrow it will have.
+    const Vec2 a = camera.worldToScreen(launch.from);
+    const Vec2 b = camera.worldToScreen(launch.to);
+    SDL_SetRenderDrawColor(sdl_, 200, 200, 200, 255);
+    SDL_RenderDrawLineF(sdl_, static_cast<float>(a.x()), static_cast<float>(a.y()),
+                        static_cast<float>(b.x()), static_cast<float>(b.y()));
+    renderer_.drawGhost(camera, launch.from, launch.radius);
+    text_.clear();
+    labelFont_.layout(launch.label, static_cast<float>(b.x() + 8.0),
+                      static_cast<float>(b.y() - labelFont_.lineHeight() / 2),
+                      SDL_Color{230, 230, 230, 255}, text_);
+    labelFont_.draw(text_);
+}
+
+void DrawLayer::drawDropper(const Camera& camera, const DropperView& d) {
+    // A spout: a funnel narrowing down to just above where a ball starts, as wide as the spread
+    // and a ball either side, at least a few pixels whatever the zoom; its words to the right.
+    const Vec2 at = camera.worldToScreen(d.at);
+    const double ppm = camera.worldToScreen(d.at + Vec2(1.0, 0.0)).x() - at.x();
+    const double r = std::max(d.radius * ppm, 2.0);
+    const double bottom = at.y() - 1.3 * r, top = bottom - std::max(3.5 * r, 10.0);
+    const double low = d.spread * ppm + 1.5 * r, high = low + std::max(2.0 * r, 6.0);
+    const auto pt = [](double x, double y) {
+        return SDL_Vertex{
+            {static_cast<float>(x), static_cast<float>(y)}, {150, 165, 185, 255}, {0.f, 0.f}};
+    };
+    const SDL_Vertex quad[4] = {pt(at.x() - high, top), pt(at.x() + high, top),
+                                pt(at.x() + low, bottom), pt(at.x() - low, bottom)};
+    const int indices[6] = {0, 1, 2, 0, 2, 3};
+    SDL_RenderGeometry(sdl_, nullptr, quad, 4, indices, 6);
+    text_.clear();
+    labelFont_.layout(d.label, static_cast<float>(at.x() + high + 6.0),
+                      static_cast<float>(0.5 * (top + bottom) - labelFont_.lineHeight() / 2.0),
+                      SDL_Color{200, 210, 225, 255}, text_);
+    labelFont_.draw(text_);
+}
+
+void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) {
+    obstacleMarks_.clear();
+    // The selection's yellow, as the selected particle's ring; the preview a dim ghost.
+    if (frame.selectedObstacle) {
+        batchObstacle(*frame.selectedObstacle, camera, SDL_Color{255, 230, 0, 255}, obstacleMarks_);
+    }
+    if (frame.obstaclePreview) {
+        // Opaque: a translucent capsule would show its caps' overlap with the bar.
+        batchObstacle(*frame.obstaclePreview, camera, SDL_Color{105, 108, 115, 255},
+                      obstacleMarks_);
+    }
+    renderer_.drawBatch(obstacleMarks_);
+}
+
+void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {
+    // A filled arrow head pointing to the box, with its label beside it.
+    const Vec2 u = m.direction, n(-u.y(), u.x());
+    const Vec2 tip = m.at + 12.0 * u, base = m.at - 6.0 * u;
+    const auto pt = [](const Vec2& v) {
+        return SDL_Vertex{
+            {static_cast<float>(v.x()), static_cast<float>(v.y())}, {255, 230, 0, 255}, {0.f, 0.f}};
+    };
+    const SDL_Vertex tri[3] = {pt(tip), pt(base + 8.0 * n), pt(base - 8.0 * n)};
+    SDL_RenderGeometry(sdl_, nullptr, tri, 3, nullptr, 0);
+    const int w = hudFont_.measure(m.label);
+    // The label beside the arrow on the screen's side, clear of it, kept inside the window.
+    const double half =
+        std::abs(u.x()) * (w / 2.0 + 4.0) + std::abs(u.y()) * (hudFont_.lineHeight() / 2.0 + 4.0);
+    const Vec2 at = m.at - (14.0 + half) * u;
+    float x = static_cast<float>(at.x()) - static_cast<float>(w) / 2.f;
+    float y = static_cast<float>(at.y()) - static_cast<float>(hudFont_.lineHeight()) / 2.f;
+    int vw = 0, vh = 0;
+    SDL_GetRendererOutputSize(sdl_, &vw, &vh);
+    x = std::clamp(x, 4.f, static_cast<float>(vw - w - 4));
+    y = std::clamp(y, 4.f, static_cast<float>(vh - hudFont_.lineHeight() - 4));
+    text_.clear();
+    hudFont_.layout(m.label, x, y, SDL_Color{255, 230, 0, 255}, text_);
+    hudFont_.draw(text_);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,18 @@
+#pragma once
+// Drawing the text panels of a frame (view/overlays.hpp): each a translucent box with lines of
+// text; all boxes are one draw call and all text one more.
+
+#include <SDL.h>
+
+#include "render/text.hpp"
+#include "view/overlays.hpp"
+#include "view/screen_layout.hpp"
+
+namespace psb::app {
+
+/// Draws the panels of `o` onto `renderer` in the boxes of `layout` (a box with w == 0 is not
+/// drawn). The help is drawn over everything when switched on.
+void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
+                  const PanelLayout& layout);
+
+}  // namespace psb::app

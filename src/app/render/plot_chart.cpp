@@ -1,0 +1,136 @@
+#include "render/plot_chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "render/text.hpp"
+
+namespace psb::app {
+
+PanelFrame beginPanel(const Font& font, const PixelRect& box, GeometryBatch& boxes,
+                      GeometryBatch& text) {
+    boxes.clear();
+    text.clear();
+    const PanelFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
+                       static_cast<float>(box.w), static_cast<float>(box.h),
+                       static_cast<float>(font.lineHeight())};
+    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, SDL_Color{0, 0, 0, 190});
+    return f;
+}
+
+void layoutYTicks(const Font& font, double lo, double hi, float left,
+                  const std::function<float(double)>& row, GeometryBatch& marks,
+                  GeometryBatch& labels) {
+    const SDL_Color axis{150, 150, 150, 255}, grey{200, 200, 200, 255};
+    const float lh = static_cast<float>(font.lineHeight());
+    const double step = niceStep(lo, hi, 4);
+    for (const double t : niceTicks(lo, hi, 4)) {
+        const float y = row(t);
+        marks.quad(left - 4, y, left - 1, y + 1, axis);
+        const std::string label = tickLabel(t, step);
+        font.layout(label, left - 6 - static_cast<float>(font.measure(label)), y - lh / 2, grey,
+                    labels);
+    }
+}
+
+void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
+                     const PixelRect& box, int rows, int rowHeight, double totalMass) {
+    boxes_.clear();
+    text_.clear();
+    rows = std::clamp(rows, 1, 4);
+    const float lh = static_cast<float>(font.lineHeight());
+    const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
+    const float width = static_cast<float>(box.w), rowH = static_cast<float>(rowHeight);
+    boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), SDL_Color{0, 0, 0, 190});
+
+    struct Plot {
+        const char* title;
+        double (*value)(const ObservablesSample&);
+        SDL_Color color;
+    };
+    const Plot plots[4] = {
+        {"kinetic energy (J)", [](const ObservablesSample& s) { return s.kineticEnergy; },
+         kEnergyPlotColor},
+        {"momentum px (kg m/s)", [](const ObservablesSample& s) { return s.momentum.x(); },
+         kMomentumXPlotColor},
+        {"momentum py (kg m/s)", [](const ObservablesSample& s) { return s.momentum.y(); },
+         kMomentumYPlotColor},
+        {"collision rate (1/s)", [](const ObservablesSample& s) { return s.collisionRate; },
+         kRatePlotColor},
+    };
+
+    const std::size_t n = series.size();
+    double meanEnergy = 0.0;
+    for (std::size_t k = 0; k < n; ++k)
+        meanEnergy += series[k].kineticEnergy;
+    if (n > 0) meanEnergy /= static_cast<double>(n);
+    const double momentumScale = std::sqrt(2.0 * std::max(totalMass, 0.0) * meanEnergy);
+    const double t0 = n > 0 ? series[0].time : 0.0;
+    const double t1 = n > 1 ? series.back().time : t0 + 1.0;
+
+    const float left = x + 78, right = x + width - 8;      // plot area, pixels
+    std::vector<std::pair<SDL_Color, std::size_t>> lines;  // colour, end index in line_
+    line_.clear();
+    for (int k = 0; k < rows; ++k) {
+        const Plot& pl = plots[k];
+        const float top = y + 6 + static_cast<float>(k) * rowH + lh;
+        const float bottom = top + rowH - 2 * lh - 8;
+        font.layout(pl.title, left, top - lh - 1, pl.color, text_);
+        // Axes: left and bottom, grey.
+        const SDL_Color axis{150, 150, 150, 255};
+        boxes_.quad(left - 1, top, left, bottom, axis);
+        boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+        if (n < 2) continue;
+
+        double lo = pl.value(series[0]), hi = lo;
+        for (std::size_t s = 1; s < n; ++s) {
+            const double v = pl.value(series[s]);
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+        PlotRange r;
+        if (k == 0) {
+            r = plotRange(lo, hi, 0.01 * std::max(std::abs(meanEnergy), 1e-300));
+        } else if (k < 3) {
+            r = plotRange(lo, hi, 0.01 * std::max(momentumScale, 1e-300));
+        } else {
+            r = plotRange(0.0, std::max(hi, 1.0), 1.0);  // a rate starts at 0
+        }
+        const auto sy = [&](double v) {
+            return bottom - static_cast<float>((v - r.lo) / (r.hi - r.lo)) * (bottom - top);
+        };
+        const auto sx = [&](double t) {
+            return left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
+        };
+        layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_);
+        for (std::size_t s = 0; s < n; ++s)
+            line_.push_back({sx(series[s].time), sy(pl.value(series[s]))});
+        lines.emplace_back(pl.color, line_.size());
+    }
+    // The time axis of the last plot carries the labels: simulated seconds.
+    if (n >= 2) {
+        const float bottom = y + 6 + static_cast<float>(rows - 1) * rowH + lh + rowH - 2 * lh - 8;
+        const double step = niceStep(t0, t1, 4);
+        for (const double t : niceTicks(t0, t1, 4)) {
+            const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
+            boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, SDL_Color{150, 150, 150, 255});
+            const std::string label = tickLabel(t, step);
+            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4,
+                        SDL_Color{200, 200, 200, 255}, text_);
+        }
+        font.layout("t (s)", x + 8, bottom + 4, SDL_Color{200, 200, 200, 255}, text_);
+    }
+
+    boxes_.draw(renderer, nullptr);
+    std::size_t begin = 0;
+    for (const auto& [color, end] : lines) {
+        SDL_SetRenderDrawColor(renderer, color.r, color.g, color.b, 255);
+        SDL_RenderDrawLinesF(renderer, line_.data() + begin, static_cast<int>(end - begin));
+        begin = end;
+    }
+    font.draw(text_);
+}
+
+}  // namespace psb::app

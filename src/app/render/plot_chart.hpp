@@ -1,0 +1,61 @@
+#pragma once
+// The plots panel (the K key): total kinetic energy (J), momentum px and py (kg m/s) and the
+// collision rate (1/s) against simulated time, from the app's TimeSeries.
+//
+// Each y range is fitted to the data but never narrower than a floor tied to the quantity's
+// own size: 1 % of the mean kinetic energy, 1 % of the momentum scale √(2 M E) (the largest
+// |Σ m v| the energy allows), so a conserved quantity drawn with rounding noise of 1e-15 is a
+// flat line in the middle of its plot instead of full-height wiggles; an inelastic gas's energy
+// visibly steps down.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <SDL.h>
+
+#include <particle_sandbox/time_series.hpp>
+
+#include "render/geometry_batch.hpp"
+#include "view/pixel_rect.hpp"
+#include "view/plot_scale.hpp"
+
+namespace psb::app {
+
+class Font;
+
+/// A panel's box in pixels (as floats) and the font's line height.
+struct PanelFrame {
+    float x = 0, y = 0, w = 0, h = 0, lineHeight = 0;
+};
+/// Starts a panel in `box`: empties both batches and puts the panel's translucent background in
+/// `boxes`.
+[[nodiscard]] PanelFrame beginPanel(const Font& font, const PixelRect& box, GeometryBatch& boxes,
+                                    GeometryBatch& text);
+
+/// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most 4) left of x = `left`:
+/// a tick mark and its label at the pixel row `row(v)` of each tick value v.
+void layoutYTicks(const Font& font, double lo, double hi, float left,
+                  const std::function<float(double)>& row, GeometryBatch& marks,
+                  GeometryBatch& labels);
+
+/// Plot colours, for the tests to look for.
+inline constexpr SDL_Color kEnergyPlotColor{255, 90, 90, 255};
+inline constexpr SDL_Color kMomentumXPlotColor{90, 200, 255, 255};
+inline constexpr SDL_Color kMomentumYPlotColor{120, 255, 120, 255};
+inline constexpr SDL_Color kRatePlotColor{255, 200, 60, 255};
+
+class PlotPanel {
+  public:
+    /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
+    /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
+    /// momentum plots' floor. Nothing but the frame when `series` has fewer than 2 samples.
+    void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
+              const PixelRect& box, int rows, int rowHeight, double totalMass);
+
+  private:
+    GeometryBatch boxes_, text_;
+    std::vector<SDL_FPoint> line_;
+};
+
+}  // namespace psb::app

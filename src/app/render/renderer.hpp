@@ -1,0 +1,92 @@
+#pragma once
+// Draws a world, read through a const reference, onto any SDL_Renderer: the window's in the
+// app, a software renderer over an offscreen surface in the tests.
+//
+// Each layer is one batched SDL_RenderGeometry call whatever the particle count: discs are
+// quads over one anti-aliased circle texture tinted by vertex colour, arrows are untextured
+// triangles, labels are glyph quads over the font atlas with their black boxes in one more
+// batch. Particles outside the viewport are skipped before any geometry is built.
+//
+// Discs a few pixels across are not worth two triangles each: SDL's software rasteriser pays a
+// fixed price per triangle (0.25-0.5 us), which at 5·10⁴ particles is most of a frame. They are
+// written as pixels into one image with their arrows as one-pixel lines (the trails' method),
+// and the image is shown with one texture copy.
+
+#include <cstddef>
+#include <vector>
+
+#include <SDL.h>
+
+#include <particle_sandbox/world.hpp>
+
+#include "render/geometry_batch.hpp"
+#include "render/trails.hpp"
+#include "session/camera.hpp"
+#include "session/view_options.hpp"
+
+namespace psb::app {
+
+class Font;
+
+/// Screen rectangles labels keep clear of (the HUD and the panels), pixels.
+using RenderAvoid = std::vector<SDL_Rect>;
+
+/// What the last draw() did, for the HUD.
+struct DrawStats {
+    std::size_t drawn = 0;          ///< particles inside the viewport
+    std::size_t labelled = 0;       ///< particles that got labels
+    std::size_t labelsCrowded = 0;  ///< particles whose label found no free place
+    bool labelsSuppressed = false;  ///< too many particles on screen for labels
+};
+
+class Renderer {
+  public:
+    /// Above this many particles on screen, labels are not drawn (they would cover the view).
+    static constexpr std::size_t kMaxLabels = 400;
+
+    /// `labelFont` may be null (then labels are never drawn). Throws std::runtime_error when
+    /// the circle texture cannot be made.
+    Renderer(SDL_Renderer* renderer, const Font* labelFont);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    /// Clears to black and draws the box walls, the particles and the enabled overlays. When
+    /// `trails` is given they are drawn under the discs as options.trails says, `selected`
+    /// naming the particle of TrailMode::Selected. Labels go at whole pixels (glyphs drawn at
+    /// fractions of a pixel are resampled into garble), above, below, right or left of their
+    /// disc, wherever they overlap neither another label nor a rectangle of `avoid`; a label
+    /// with no such place is left out.
+    DrawStats draw(const World& world, const Camera& camera, const ViewOptions& options,
+                   Trails* trails = nullptr, ParticleId selected = kNullParticle,
+                   const RenderAvoid* avoid = nullptr);
+
+    /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
+    void drawGhost(const Camera& camera, const Vec2& centre, double radius);
+    /// Draws `batch` over the circle texture (obstacle shapes: obstacle_drawing.hpp).
+    void drawBatch(const GeometryBatch& batch) { batch.draw(renderer_, circle_); }
+
+    /// Discs smaller than this on screen (radius, pixels) and their arrows are drawn as pixels
+    /// into one image (see the top of this file).
+    static constexpr double kSmallDiscPixels = 2.5;
+
+  private:
+    /// A streaming texture the size of an image, and the image copied through it.
+    struct ImageLayer {
+        SDL_Texture* texture = nullptr;
+        int width = 0, height = 0;
+    };
+    void drawWalls(const World& world, const Camera& camera);
+    void drawImage(const TrailImage& image, ImageLayer& layer);
+
+    SDL_Renderer* renderer_;
+    const Font* labelFont_;
+    SDL_Texture* circle_ = nullptr;
+    GeometryBatch discs_, arrows_, labelBoxes_, labelText_, labelOutline_;
+    ImageLayer trailLayer_, smallLayer_;
+    TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
+    std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none
+    GeometryBatch obstacles_;          ///< the world's pegs and segments (obstacle_drawing.hpp)
+};
+
+}  // namespace psb::app

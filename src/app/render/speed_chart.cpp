@@ -1,0 +1,82 @@
+#include "render/speed_chart.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "render/plot_chart.hpp"
+#include "render/text.hpp"
+
+namespace psb::app {
+
+void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
+                               const PixelRect& box) {
+    const PanelFrame f = beginPanel(font, box, boxes_, text_);
+    const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
+    curve_.clear();
+    const SpeedHistogram h = speedHistogram(p, kBins);
+    const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
+    const float left = x + 62, right = x + boxW - 10;
+    const float top = y + 6 + 2 * lh, bottom = y + height - 2 * lh - 6;
+
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "bars: speeds of %zu particles%s", h.particles,
+                  h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
+    font.layout(buf, x + 8, y + 4, kHistogramBarColor, text_);
+    // The 2-D Maxwell-Boltzmann distribution at kT = the mean kinetic energy per particle.
+    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh, kRayleighCurveColor,
+                text_);
+    boxes_.quad(left - 1, top, left, bottom, axis);
+    boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+
+    // Densities, s/m: a bin's count / (N · width), so bars and curve share one axis.
+    const double n = static_cast<double>(std::max<std::size_t>(h.particles, 1));
+    const double width = h.binWidth();
+    double top_density = 0.0;
+    for (const std::size_t c : h.counts)
+        top_density = std::max(top_density, static_cast<double>(c) / (n * width));
+    constexpr int kCurvePoints = 96;
+    for (int k = 0; k <= kCurvePoints; ++k)
+        top_density = std::max(top_density, h.expectedDensity(h.vmax * k / kCurvePoints));
+    const PlotRange r = plotRange(0.0, top_density > 0.0 ? top_density : 1.0, 1e-300);
+    const auto sy = [&](double d) {
+        return bottom - static_cast<float>(d / r.hi) * (bottom - top);
+    };
+    const auto sx = [&](double v) {
+        return left + static_cast<float>(v / h.vmax) * (right - left);
+    };
+    for (std::size_t b = 0; b < h.counts.size(); ++b) {
+        if (h.counts[b] == 0) continue;
+        const double d = static_cast<double>(h.counts[b]) / (n * width);
+        boxes_.quad(sx(static_cast<double>(b) * width) + 1, sy(d),
+                    sx(static_cast<double>(b + 1) * width), bottom, kHistogramBarColor);
+    }
+    for (int k = 0; k <= kCurvePoints; ++k) {
+        const double v = h.vmax * k / kCurvePoints;
+        curve_.push_back({sx(v), sy(h.expectedDensity(v))});
+    }
+
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
+    const double xstep = niceStep(0.0, h.vmax, 5);
+    for (const double t : niceTicks(0.0, h.vmax, 5)) {
+        const float tx = sx(t);
+        boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
+        const std::string label = tickLabel(t, xstep);
+        font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4, grey,
+                    text_);
+    }
+    font.layout("speed (m/s)", right - static_cast<float>(font.measure("speed (m/s)")),
+                bottom + 4 + lh, grey, text_);
+    font.layout("density (s/m)", x + 8, bottom + 4 + lh, grey, text_);
+
+    boxes_.draw(renderer, nullptr);
+    if (h.particles > 0) {
+        SDL_SetRenderDrawColor(renderer, kRayleighCurveColor.r, kRayleighCurveColor.g,
+                               kRayleighCurveColor.b, 255);
+        SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
+    }
+    font.draw(text_);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,147 @@
+#include "render/text.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <SDL_ttf.h>
+
+namespace psb::app {
+namespace {
+
+/// ASCII and Latin-1 characters that draw something (not the C0/C1 controls).
+constexpr bool printable(int code) {
+    return (code >= 32 && code <= 126) || (code >= 160 && code <= 255);
+}
+
+}  // namespace
+
+Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelSize)
+    : renderer_(renderer) {
+    // TTF_Init is reference counted, so each Font holds one reference.
+    if (TTF_Init() != 0) throw std::runtime_error(std::string("TTF_Init: ") + TTF_GetError());
+    font_ = TTF_OpenFont(path.string().c_str(), pixelSize);
+    if (font_ == nullptr) {
+        const std::string why = TTF_GetError();
+        TTF_Quit();
+        throw std::runtime_error("cannot open font " + path.string() + ": " + why);
+    }
+    lineHeight_ = TTF_FontLineSkip(font_);
+
+    // Render each glyph, then pack them in rows of an atlas whose sides are powers of two: a
+    // texel's edge u = x / width is then exact in a float, and so is u × width. With any other
+    // width SDL's software renderer, which truncates u × width to a texel, took some glyphs'
+    // left edges one texel early and dropped a column ("(" in "energy (J)" lost its stroke).
+    std::array<SDL_Surface*, kLast - kFirst + 1> images{};
+    int atlasWidth = 512;
+    for (int c = kFirst; c <= kLast; ++c) {
+        if (!printable(c)) continue;
+        SDL_Surface* s =
+            TTF_RenderGlyph32_Blended(font_, static_cast<Uint32>(c), SDL_Color{255, 255, 255, 255});
+        images[c - kFirst] = s;
+        int minx = 0, maxx = 0, miny = 0, maxy = 0, advance = 0;
+        TTF_GlyphMetrics32(font_, static_cast<Uint32>(c), &minx, &maxx, &miny, &maxy, &advance);
+        glyphs_[c - kFirst].advance = advance;
+        while (s != nullptr && s->w > atlasWidth)
+            atlasWidth *= 2;
+    }
+    int x = 0, y = 0, rowHeight = 0;
+    for (int c = kFirst; c <= kLast; ++c) {
+        const SDL_Surface* s = images[c - kFirst];
+        if (s == nullptr) continue;
+        if (x + s->w > atlasWidth) {  // a new row, one transparent texel below the last
+            x = 0;
+            y += rowHeight + 1;
+            rowHeight = 0;
+        }
+        glyphs_[c - kFirst].atlas = {x, y, s->w, s->h};
+        x += s->w + 1;
+        rowHeight = std::max(rowHeight, s->h);
+    }
+    int height = 1;
+    while (height < y + rowHeight)
+        height *= 2;
+    SDL_Surface* atlas =
+        SDL_CreateRGBSurfaceWithFormat(0, atlasWidth, height, 32, SDL_PIXELFORMAT_ARGB8888);
+    if (atlas == nullptr) throw std::runtime_error(std::string("glyph atlas: ") + SDL_GetError());
+    SDL_FillRect(atlas, nullptr, SDL_MapRGBA(atlas->format, 255, 255, 255, 0));
+    for (int c = kFirst; c <= kLast; ++c) {
+        SDL_Surface* s = images[c - kFirst];
+        if (s == nullptr) continue;
+        SDL_SetSurfaceBlendMode(s, SDL_BLENDMODE_NONE);
+        SDL_Rect dst = glyphs_[c - kFirst].atlas;
+        SDL_BlitSurface(s, nullptr, atlas, &dst);
+        SDL_FreeSurface(s);
+    }
+    atlasW_ = atlas->w;
+    atlasH_ = atlas->h;
+    atlas_ = SDL_CreateTextureFromSurface(renderer_, atlas);
+    SDL_FreeSurface(atlas);
+    if (atlas_ == nullptr) {
+        TTF_CloseFont(font_);
+        TTF_Quit();
+        throw std::runtime_error(std::string("glyph atlas texture: ") + SDL_GetError());
+    }
+    SDL_SetTextureBlendMode(atlas_, SDL_BLENDMODE_BLEND);
+}
+
+Font::~Font() {
+    SDL_DestroyTexture(atlas_);
+    TTF_CloseFont(font_);
+    TTF_Quit();
+}
+
+const Font::Glyph& Font::next(std::string_view text, std::size_t& i) const {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
+    int code = byte(i++);
+    if (code >= 0x80) {
+        // UTF-8: a two-byte sequence C2/C3 xx is U+0080–U+00FF; anything longer is beyond the
+        // atlas, and a stray continuation byte is malformed. Either shows one '?'.
+        const bool twoBytes =
+            (code == 0xC2 || code == 0xC3) && i < text.size() && (byte(i) & 0xC0) == 0x80;
+        if (twoBytes) {
+            code = ((code & 0x1F) << 6) | (byte(i++) & 0x3F);
+        } else {
+            if (code >= 0xC0) {
+                while (i < text.size() && (byte(i) & 0xC0) == 0x80)
+                    ++i;
+            }
+            code = '?';
+        }
+    }
+    return glyphs_[(code >= kFirst && code <= kLast && printable(code) ? code : '?') - kFirst];
+}
+
+int Font::measure(std::string_view text) const {
+    int w = 0;
+    for (std::size_t i = 0; i < text.size();)
+        w += next(text, i).advance;
+    return w;
+}
+
+void Font::layout(std::string_view text, float x, float y, SDL_Color color,
+                  GeometryBatch& batch) const {
+    const float iw = 1.0f / static_cast<float>(atlasW_), ih = 1.0f / static_cast<float>(atlasH_);
+    // Glyphs one to one with screen pixels: drawn at a fraction of a pixel, the renderer
+    // resamples them and thin strokes vanish or double ("1800.00" read as "18CC.C0").
+    x = std::round(x);
+    y = std::round(y);
+    for (std::size_t i = 0; i < text.size();) {
+        const bool space = text[i] == ' ';
+        const Glyph& g = next(text, i);
+        if (g.atlas.w > 0 && !space) {
+            const SDL_Rect& r = g.atlas;
+            batch.quad(x, y, x + static_cast<float>(r.w), y + static_cast<float>(r.h), color,
+                       static_cast<float>(r.x) * iw, static_cast<float>(r.y) * ih,
+                       static_cast<float>(r.x + r.w) * iw, static_cast<float>(r.y + r.h) * ih);
+        }
+        x += static_cast<float>(g.advance);
+    }
+}
+
+void Font::draw(const GeometryBatch& batch) const {
+    batch.draw(renderer_, atlas_);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,245 @@
+#pragma once
+// Every change a user makes, as a value. Keys, the mouse, the tests and (next) on-screen
+// buttons all turn what they mean into a Command and hand it to Session::apply, the one place
+// where commands change anything; keeping them plain values is what lets an undo history or a
+// recorded session replay them later.
+//
+// Pointer positions are screen pixels (the session converts them through its camera), times are
+// seconds on the clock the pointer events carry (SDL's ticks in the app).
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+
+#include <particle_sandbox/color.hpp>
+#include <particle_sandbox/math.hpp>
+#include <particle_sandbox/particle_id.hpp>
+#include <particle_sandbox/solver_settings.hpp>
+
+#include "session/edit_prompt.hpp"
+
+namespace psb::app::cmd {
+
+// The left button: grab, fling, launch, select.
+struct PointerDown {
+    Vec2 screen;
+    double time = 0.0;
+};
+struct PointerMove {
+    Vec2 screen;
+    double time = 0.0;
+};
+struct PointerUp {
+    Vec2 screen;
+    double time = 0.0;
+};
+/// Backspace/Delete: the held particle, else the selected obstacle.
+struct DeleteHeld {};
+
+// The view.
+struct Pan {
+    Vec2 pixels;
+};  ///< the world slides by `pixels`
+struct Zoom {
+    Vec2 screen;
+    double factor = 1.0;
+};  ///< about a screen point
+struct Fit {};
+struct Resize {
+    int width = 0;
+    int height = 0;
+};  ///< the drawable area, pixels
+struct ToggleArrows {};
+struct ToggleLabels {};
+struct ToggleHelp {};
+struct ToggleProfile {};
+struct ToggleMomentum {};
+struct CycleTrails {};
+struct TogglePlots {};
+struct ToggleSpeeds {};
+
+// Time.
+struct TogglePause {};
+struct SingleStep {};  ///< one step, while paused
+struct ScaleTime {
+    double factor = 1.0;
+};  ///< time speed times `factor`
+
+// Step back in time (while paused; see Session::timeline()).
+struct StepBack {};     ///< one recorded frame back
+struct StepForward {};  ///< one recorded frame forward; at the latest frame, one new step
+struct Seek {
+    double seconds = 0.0;
+};  ///< to the recorded frame at or before this simulated time, within the covered range
+struct SeekBy {
+    double seconds = 0.0;
+};  ///< Seek to the time shown plus `seconds` (negative: back)
+
+// Undo and redo of the user's edits.
+struct Undo {};
+struct Redo {};
+
+// The world.
+struct SpawnRandom {};
+struct ChangeSpawnMass {
+    int direction = 0;
+};  ///< -1 lighter, +1 heavier
+struct ChangeRestitution {
+    int direction = 0;
+};
+struct ToggleGravity {};
+struct NextMode {};
+struct Reset {};
+struct OpenPreset {
+    int index = -1;
+};  ///< by position in the preset list; -1: the next one
+
+/// The keys that open presets by number: 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to
+/// the 19th (Shift+0 the tenth too). `digit` 0..9; returns the preset's index.
+[[nodiscard]] constexpr int presetForDigit(int digit, bool shift) {
+    if (digit == 0) return 9;
+    return shift ? 10 + digit - 1 : digit - 1;
+}
+/// The key that opens preset `index` ("7", "0", "Shift+3"); empty when no key does.
+[[nodiscard]] inline std::string presetKey(int index) {
+    if (index >= 0 && index < 9) return std::to_string(index + 1);
+    if (index == 9) return "0";
+    if (index >= 10 && index < 19) return "Shift+" + std::to_string(index - 9);
+    return {};
+}
+struct OpenFile {
+    std::filesystem::path file;
+};
+
+// The selected particle's edit prompt.
+struct OpenEdit {};
+struct EditType {
+    std::string text;
+};
+struct EditField {
+    bool back = false;
+};  ///< Tab / Shift+Tab
+struct EditBackspace {};
+struct EditApply {};
+
+// Values set directly (the control panel's sliders, fields and buttons). A slider held and
+// dragged sends one command per frame: the first with `continues` false, the rest true, so the
+// drag is one user action (one undo step), not hundreds.
+struct SetRestitution {
+    double value = 1.0;
+    bool continues = false;
+};
+struct SetFriction {
+    double value = 0.0;  ///< Coulomb coefficient, >= 0
+    bool continues = false;
+};
+/// Gravity on (straight down, `g` m/s²) or off.
+struct SetGravity {
+    bool on = false;
+    double g = 9.81;
+    bool continues = false;
+};
+struct SetWalls {
+    bool on = true;
+};
+/// The stepping mode; `substeps` for StepMode::Substep (2 or more).
+struct SetMode {
+    StepMode mode = StepMode::Discrete;
+    int substeps = 4;
+};
+/// Simulated seconds per real second, within the session's limits.
+struct SetTimeScale {
+    double value = 1.0;
+};
+/// What the left mouse button does.
+enum class Tool : std::uint8_t {
+    Fling,   ///< a particle: grab and throw it; empty space: launch a new one (the default)
+    Launch,  ///< every drag launches a new particle
+    Select,  ///< clicks select, drags change nothing
+    Pan,     ///< drags move the view
+    Peg,     ///< a click places a peg (a fixed disc) at the cursor
+    Wall,    ///< a drag draws a wall (a fixed segment) from the press to the release
+};
+struct SetTool {
+    Tool tool = Tool::Fling;
+    bool toggle = false;  ///< a key: when `tool` is already on, back to Fling
+};
+/// The sizes of the obstacles the Peg and Wall tools make, metres (each finite, > 0, at most
+/// half the box's smaller side).
+struct SetObstacleSizes {
+    double pegRadius = 1.0;
+    double wallThickness = 0.5;  ///< full thickness
+};
+/// Removes the obstacle at `index` (the panel's button; Backspace/Delete removes the selected
+/// obstacle through DeleteHeld).
+struct RemoveObstacle {
+    std::size_t index = 0;
+};
+/// What launched particles are made of; radius 0 follows the mass (the original's rule, scaled
+/// to the scene); no colour: a colour from the mass.
+struct SetLaunchBody {
+    double mass = 10.0;
+    double radius = 0.0;
+    std::optional<Color> color;
+};
+/// One value of one particle, as text (validated as the edit prompt validates it).
+struct EditParticle {
+    ParticleId id;
+    ParticleField field = ParticleField::Mass;
+    std::string text;
+};
+/// Removes one particle (the selected one, from the panel).
+struct DeleteParticle {
+    ParticleId id;
+};
+/// The selection set from a table (null clears it).
+struct Select {
+    ParticleId id;
+};
+/// Show options set to a value (checkboxes).
+enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile, Bins };
+struct SetShow {
+    ShowOption option = ShowOption::Arrows;
+    bool on = true;
+};
+struct SetTrails {
+    int mode = 0;  ///< TrailMode as int: off, selected, all
+};
+/// The control panel shown or folded to a narrow strip (key C).
+struct ToggleControls {};
+
+// Files and leaving.
+struct Save {};
+/// Saves to `path` as given (an existing file is replaced only when `overwrite` is set).
+struct SaveAs {
+    std::filesystem::path path;
+    bool overwrite = false;
+};
+struct Screenshot {};  ///< the app writes the next frame's pixels
+/// Esc: closes what is open (the help, the edit prompt, a quit question); with nothing open,
+/// quits, asking first when there are unsaved changes.
+struct Back {};
+/// The window's close button: quits, asking first when there are unsaved changes.
+struct Quit {};
+
+}  // namespace psb::app::cmd
+
+namespace psb::app {
+
+using Command = std::variant<
+    cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan, cmd::Zoom,
+    cmd::Fit, cmd::Resize, cmd::ToggleArrows, cmd::ToggleLabels, cmd::ToggleHelp,
+    cmd::ToggleProfile, cmd::ToggleMomentum, cmd::CycleTrails, cmd::TogglePlots, cmd::ToggleSpeeds,
+    cmd::TogglePause, cmd::SingleStep, cmd::ScaleTime, cmd::StepBack, cmd::StepForward, cmd::Seek,
+    cmd::SeekBy, cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass,
+    cmd::ChangeRestitution, cmd::ToggleGravity, cmd::NextMode, cmd::Reset, cmd::OpenPreset,
+    cmd::OpenFile, cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
+    cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution, cmd::SetFriction,
+    cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale, cmd::SetTool,
+    cmd::SetLaunchBody, cmd::EditParticle, cmd::DeleteParticle, cmd::Select, cmd::SetShow,
+    cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle>;
+
+}  // namespace psb::app

@@ -1,0 +1,282 @@
+#include "session/edit_prompt.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <optional>
+#include <system_error>
+
+#include <particle_sandbox/error.hpp>
+
+namespace psb::app {
+
+namespace {
+
+std::string formatValue(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+std::string_view trim(std::string_view s) {
+    while (!s.empty() && s.front() == ' ')
+        s.remove_prefix(1);
+    while (!s.empty() && s.back() == ' ')
+        s.remove_suffix(1);
+    return s;
+}
+
+/// The number in `text`, or nullopt with `why` set.
+std::optional<double> parseNumber(const std::string& name, std::string_view text,
+                                  std::string& why) {
+    const std::string_view t = trim(text);
+    if (t.empty()) {
+        why = name + ": empty, expected a number";
+        return std::nullopt;
+    }
+    // from_chars takes no leading '+'; a user may well type one.
+    const std::string_view digits = t.front() == '+' ? t.substr(1) : t;
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    if (ec == std::errc::result_out_of_range) {
+        why = name + ": " + std::string(t) + " is out of range";
+        return std::nullopt;
+    }
+    if (ec != std::errc() || end != digits.data() + digits.size()) {
+        why = name + ": '" + std::string(t) + "' is not a number";
+        return std::nullopt;
+    }
+    if (!std::isfinite(v)) {
+        why = name + ": must be a finite number, got " + std::string(t);
+        return std::nullopt;
+    }
+    return v;
+}
+
+}  // namespace
+
+const char* fieldName(ParticleField f) {
+    switch (f) {
+        case ParticleField::X:
+            return "x";
+        case ParticleField::Y:
+            return "y";
+        case ParticleField::Vx:
+            return "vx";
+        case ParticleField::Vy:
+            return "vy";
+        case ParticleField::Mass:
+            return "mass";
+        case ParticleField::Radius:
+            return "radius";
+    }
+    return "?";
+}
+
+const char* fieldName(EditField f) {
+    switch (f) {
+        case EditField::Mass:
+            return "mass";
+        case EditField::Radius:
+            return "radius";
+        case EditField::Vx:
+            return "vx";
+        case EditField::Vy:
+            return "vy";
+    }
+    return "?";
+}
+
+const char* fieldUnit(EditField f) {
+    switch (f) {
+        case EditField::Mass:
+            return "kg";
+        case EditField::Radius:
+            return "m";
+        case EditField::Vx:
+        case EditField::Vy:
+            return "m/s";
+    }
+    return "";
+}
+
+void EditPrompt::open(const Particle& p) {
+    active_ = true;
+    fresh_ = true;
+    target_ = p.id;
+    field_ = EditField::Mass;
+    texts_ = {formatValue(p.mass), formatValue(p.radius), formatValue(p.velocity.x()),
+              formatValue(p.velocity.y())};
+    error_.clear();
+}
+
+void EditPrompt::close() {
+    active_ = false;
+    target_ = kNullParticle;
+    error_.clear();
+}
+
+void EditPrompt::nextField() {
+    field_ = static_cast<EditField>((static_cast<int>(field_) + 1) % kEditFields);
+    fresh_ = true;
+}
+
+void EditPrompt::previousField() {
+    field_ = static_cast<EditField>((static_cast<int>(field_) + kEditFields - 1) % kEditFields);
+    fresh_ = true;
+}
+
+void EditPrompt::type(std::string_view text) {
+    std::string& t = texts_[static_cast<std::size_t>(field_)];
+    for (const char c : text) {
+        if (c < 32 || c > 126) continue;
+        if (fresh_) {
+            t.clear();
+            fresh_ = false;
+        }
+        if (t.size() < kMaxLength) t.push_back(c);
+    }
+}
+
+void EditPrompt::backspace() {
+    std::string& t = texts_[static_cast<std::size_t>(field_)];
+    if (!t.empty()) t.pop_back();
+    fresh_ = false;
+}
+
+EditResult applyEdit(World& world, ParticleId id,
+                     const std::array<std::string, kEditFields>& texts) {
+    if (!world.contains(id)) return {false, "the particle no longer exists"};
+    std::array<double, kEditFields> v{};
+    for (int k = 0; k < kEditFields; ++k) {
+        std::string why;
+        const auto f = static_cast<EditField>(k);
+        const auto parsed = parseNumber(fieldName(f), texts[static_cast<std::size_t>(k)], why);
+        if (!parsed) return {false, why};
+        v[static_cast<std::size_t>(k)] = *parsed;
+    }
+    return setChecked(world, id, v[0], v[1], world.get(id).position, Vec2(v[2], v[3]));
+}
+
+EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
+                             std::string_view text) {
+    if (!world.contains(id)) return {false, "the particle no longer exists"};
+    std::string why;
+    const auto value = parseNumber(fieldName(field), text, why);
+    if (!value) return {false, why};
+    const Particle p = world.get(id);
+    double mass = p.mass, radius = p.radius;
+    Vec2 position = p.position, velocity = p.velocity;
+    const WorldDef& def = world.def();
+    const auto inside = [&](double v, double extent) -> std::optional<EditResult> {
+        if (def.walls && (v < p.radius || v > extent - p.radius)) {
+            return EditResult{false, std::string(fieldName(field)) + ": " + formatValue(v) +
+                                         " m is outside the box (from " + formatValue(p.radius) +
+                                         " to " + formatValue(extent - p.radius) +
+                                         " m for this radius)"};
+        }
+        return std::nullopt;
+    };
+    switch (field) {
+        case ParticleField::X:
+            if (auto refused = inside(*value, def.width)) return *refused;
+            position.x() = *value;
+            break;
+        case ParticleField::Y:
+            if (auto refused = inside(*value, def.height)) return *refused;
+            position.y() = *value;
+            break;
+        case ParticleField::Vx:
+            velocity.x() = *value;
+            break;
+        case ParticleField::Vy:
+            velocity.y() = *value;
+            break;
+        case ParticleField::Mass:
+            mass = *value;
+            break;
+        case ParticleField::Radius:
+            radius = *value;
+            break;
+    }
+    return setChecked(world, id, mass, radius, position, velocity);
+}
+
+EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& wanted,
+                      const Vec2& velocity) {
+    const WorldDef& def = world.def();
+
+    if (!(mass >= std::numeric_limits<double>::min())) {
+        return {false, "mass: must be > 0 kg, got " + formatValue(mass)};
+    }
+    if (!(radius > 0.0)) return {false, "radius: must be > 0 m, got " + formatValue(radius)};
+    const double maxSpeed = kMaxEditSpeedBoxes * std::max(def.width, def.height);
+    if (!(velocity.norm() <= maxSpeed)) {
+        return {false, "velocity: " + formatValue(velocity.norm()) + " m/s is faster than " +
+                           formatValue(maxSpeed) + " m/s (" + formatValue(kMaxEditSpeedBoxes) +
+                           " box sizes per second)"};
+    }
+    if (!std::isfinite(0.5 * mass * velocity.squaredNorm())) {
+        return {false, "mass and velocity: the kinetic energy would overflow"};
+    }
+    if (def.walls && (2.0 * radius > def.width || 2.0 * radius > def.height)) {
+        return {false, "radius: " + formatValue(radius) + " m does not fit in the " +
+                           formatValue(def.width) + " x " + formatValue(def.height) + " m box"};
+    }
+
+    const Particle old = world.get(id);
+    Vec2 position = wanted;
+    if (def.walls) {
+        position = {std::clamp(position.x(), radius, def.width - radius),
+                    std::clamp(position.y(), radius, def.height - radius)};
+    }
+    if (radius > old.radius || position != old.position) {
+        const ParticleArrays& p = world.particles();
+        for (std::size_t j = 0; j < p.size(); ++j) {
+            if (p.id[j] == id) continue;
+            const Vec2 c(p.x[j], p.y[j]);
+            const double before = old.radius + p.radius[j] - (old.position - c).norm();
+            const double after = radius + p.radius[j] - (position - c).norm();
+            if (after > 0.0 && after > before) {
+                char buf[160];
+                std::snprintf(buf, sizeof buf, "%s would overlap the particle at [%.2f, %.2f] m",
+                              wanted != old.position
+                                  ? "position: the new place"
+                                  : ("radius: " + formatValue(radius) + " m").c_str(),
+                              c.x(), c.y());
+                return {false, buf};
+            }
+        }
+    }
+
+    // Everything was checked above against the setters' own rules, so none of them throws
+    // half-way; the catch keeps that promise should the rules ever drift apart.
+    try {
+        world.setMass(id, mass);
+        world.setRadius(id, radius);
+        world.setPosition(id, position);
+        world.setVelocity(id, velocity);
+    } catch (const InvalidArgument& e) {
+        world.setMass(id, old.mass);
+        world.setRadius(id, old.radius);
+        world.setPosition(id, old.position);
+        world.setVelocity(id, old.velocity);
+        return {false, e.what()};
+    }
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "Edited particle %u: mass %s kg, radius %s m, velocity [%s, %s] m/s", id.slot,
+                  formatValue(mass).c_str(), formatValue(radius).c_str(),
+                  formatValue(velocity.x()).c_str(), formatValue(velocity.y()).c_str());
+    std::string message = buf;
+    if (position != wanted) {
+        std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
+                      position.x(), position.y());
+        message += buf;
+    }
+    return {true, message};
+}
+
+}  // namespace psb::app

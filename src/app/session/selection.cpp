@@ -1,0 +1,23 @@
+#include "session/selection.hpp"
+
+#include <cstdio>
+
+namespace psb::app {
+
+bool Selection::forgetIfGone(const World& world) {
+    if (!id_ || world.contains(*id_)) return false;
+    id_.reset();
+    return true;
+}
+
+std::string selectionLogLine(const Particle& p) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf,
+                  "[I] Selected particle %u at [%.2f, %.2f] m with velocity [%.2f, %.2f] m/s, "
+                  "mass %.4g kg, radius %.4g m",
+                  p.id.slot, p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y(), p.mass,
+                  p.radius);
+    return buf;
+}
+
+}  // namespace psb::app

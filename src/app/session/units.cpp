@@ -1,0 +1,94 @@
+#include "session/units.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+namespace psb::app {
+
+namespace {
+
+/// Three significant figures of `v` in [1, 1000) or below: "4.04", "40.4", "404".
+std::string threeFigures(double v) {
+    char buf[64];
+    if (v != 0.0 && std::isfinite(v)) {  // rounded first: 0.9997 is "1.00", not "1.000"
+        const double unit = std::pow(10.0, std::floor(std::log10(std::abs(v))) - 2.0);
+        v = std::round(v / unit) * unit;
+    }
+    const double a = std::abs(v);
+    if (a >= 100.0 || a == 0.0) {
+        std::snprintf(buf, sizeof buf, "%.0f", v);
+    } else if (a >= 10.0) {
+        std::snprintf(buf, sizeof buf, "%.1f", v);
+    } else if (a >= 1.0) {
+        std::snprintf(buf, sizeof buf, "%.2f", v);
+    } else {
+        // 0.00123: as many decimals as three significant figures need.
+        const int decimals = std::min(12, 2 - static_cast<int>(std::floor(std::log10(a))));
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    }
+    return buf;
+}
+
+/// `v` rounded to three significant figures, digits grouped: "40 400".
+std::string grouped(double v) {
+    const double a = std::abs(v);
+    const int digits = static_cast<int>(std::floor(std::log10(a))) + 1;
+    const double unit = std::pow(10.0, digits - 3);
+    const double rounded = std::round(a / unit) * unit;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.0f", rounded);
+    std::string s = buf, out;
+    const int n = static_cast<int>(s.size());
+    for (int k = 0; k < n; ++k) {
+        if (k > 0 && (n - k) % 3 == 0) out += ' ';
+        out += s[static_cast<std::size_t>(k)];
+    }
+    return (v < 0.0 ? "-" : "") + out;
+}
+
+}  // namespace
+
+std::string quantity(double value, const std::string& unit, bool prefix) {
+    if (std::isnan(value)) return "n/a";
+    if (std::isinf(value)) return std::string(value < 0.0 ? "-" : "") + "infinite";
+    const std::string u = unit.empty() ? "" : " " + unit;
+    if (value == 0.0) return "0" + u;
+    const double a = std::abs(value);
+    if (!prefix) {
+        return (a >= 1000.0 ? grouped(value) : threeFigures(value)) + u;
+    }
+    static const char* const big[] = {"", "k", "M", "G", "T", "P", "E"};
+    static const char* const small[] = {"", "m", "\u00b5", "n", "p", "f", "a"};
+    int k = static_cast<int>(std::floor(std::log10(a) / 3.0));
+    k = std::max(-6, std::min(6, k));
+    double scaled = value / std::pow(1000.0, k);
+    // Rounding may carry to 1000 ("999.7 k" -> "1.00 M").
+    if (std::abs(std::stod(threeFigures(scaled))) >= 1000.0 && k < 6) {
+        ++k;
+        scaled /= 1000.0;
+    }
+    const char* p = k >= 0 ? big[k] : small[-k];
+    return threeFigures(scaled) + " " + p + unit;
+}
+
+std::string keptWords(double relativeChange) {
+    if (std::isnan(relativeChange)) return "not measured";
+    const double a = std::abs(relativeChange);
+    if (a < 1e-15) return "kept exactly (to rounding)";
+    if (a >= 1e-3) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "changed by %s %%",
+                      threeFigures(100.0 * relativeChange).c_str());
+        return buf;
+    }
+    const int power = static_cast<int>(std::floor(-std::log10(a)));
+    return "kept to 1 part in 10^" + std::to_string(power);
+}
+
+std::string overlapWords(double overlap, double typicalRadius) {
+    if (overlap > 1e-9 * typicalRadius)
+        return "Particles overlap by up to " + quantity(overlap, "m");
+    return overlap > 0.0 ? "No particles overlap (beyond rounding)" : "No particles overlap";
+}
+
+}  // namespace psb::app

@@ -1,0 +1,178 @@
+#include "view/frame_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "session/physics_controls.hpp"
+#include "session/session.hpp"
+#include "view/hud.hpp"
+#include "view/inspector_lines.hpp"
+#include "view/momentum_view.hpp"
+
+namespace psb::app {
+
+namespace {
+
+HudData hudData(const Session& session) {
+    const World& world = session.world();
+    HudData hud;
+    hud.simTime = world.time();
+    hud.timeScale = session.timeScale();
+    hud.reachedTimeScale = session.reachedTimeScale();
+    hud.particles = world.size();
+    hud.kineticEnergy = session.observables().kineticEnergy;
+    hud.momentum = session.observables().momentum;
+    hud.spawnMass = session.spawn().mass();
+    hud.spawnRadius = session.spawn().radius();
+    hud.arrowSeconds = session.view().arrows ? session.view().arrowSeconds : 0.0;
+    hud.paused = session.paused();
+    const double overlap = session.accuracy().overlap();
+    if (overlap > 0.05 * session.spawn().typicalRadius) hud.overlap = overlap;
+    const TimelineView past = session.timeline();
+    hud.past = past.viewingPast;
+    hud.secondsBack = past.secondsBack();
+    return hud;
+}
+
+std::string speedLabel(const CappedVelocity& v) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%.2f m/s%s", v.velocity.norm(),
+                  v.capped ? " (capped: 2 box widths/s)" : "");
+    return buf;
+}
+
+}  // namespace
+
+std::string dropperLabel(const Dropper& d) {
+    if (d.balls == 0) return "dropper: empty";
+    return "dropper: " + std::to_string(d.balls) + (d.balls == 1 ? " ball left" : " balls left");
+}
+
+std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, double height) {
+    const Camera::ScreenBox b = camera.boxOnScreen(width, height);
+    const double w = camera.viewportWidth(), h = camera.viewportHeight();
+    const bool visible = b.topLeft.x() + b.size.x() >= 0.0 && b.topLeft.x() <= w &&
+                         b.topLeft.y() + b.size.y() >= 0.0 && b.topLeft.y() <= h;
+    if (visible) return std::nullopt;
+    const Vec2 centre(w / 2.0, h / 2.0);
+    const Vec2 boxCentre = b.topLeft + b.size / 2.0;
+    const Vec2 d = boxCentre - centre;
+    const double n = d.norm();
+    if (!(n > 0.0) || !std::isfinite(n)) return std::nullopt;
+    const Vec2 u = d / n;
+    // The ray from the centre towards the box leaves the screen (less a margin) at `at`.
+    const double margin = 24.0;
+    const double tx = std::abs(u.x()) > 1e-12 ? (w / 2.0 - margin) / std::abs(u.x()) : 1e300;
+    const double ty = std::abs(u.y()) > 1e-12 ? (h / 2.0 - margin) / std::abs(u.y()) : 1e300;
+    BoxMarkerView m;
+    m.at = centre + std::min(tx, ty) * u;
+    m.direction = u;
+    m.label = "box this way (F fits)";
+    return m;
+}
+
+FrameView buildFrame(const Session& session, const FrameStats& stats, const TextMeasure& hudFont,
+                     const TextMeasure& labelFont) {
+    const World& world = session.world();
+    FrameView f;
+    f.world = &world;
+    f.camera = &session.camera();
+    f.series = &session.series();
+    f.now = session.observables();
+    f.view = session.view();
+    f.sceneGeneration = session.sceneGeneration();
+    f.trailParticle = session.trailParticle();
+    f.selected = session.selected();
+    if (session.interaction().mode() == Interaction::Mode::Launching) {
+        LaunchPreviewView l;
+        const CappedVelocity v = session.launchPreview();
+        l.from = session.interaction().pressPoint();
+        // The velocity arrow the particle will have: arrowSeconds of its motion.
+        l.to = l.from + v.velocity * session.view().arrowSeconds;
+        l.radius = session.spawn().radius();
+        l.label = speedLabel(v);
+        f.launch = l;
+    }
+    if (const auto i = session.selectedObstacle(); i && *i < world.obstacles().size()) {
+        f.selectedObstacle = world.obstacles()[*i];
+    }
+    f.obstaclePreview = session.obstaclePreview();
+    f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
+    std::uint64_t stillToDrop = 0;
+    for (const Dropper& d : world.droppers()) {
+        stillToDrop += d.balls;
+        f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d)});
+    }
+    if (session.binsShown()) {
+        f.bins = binHistogram(*session.sceneBins(), world.particles(), stillToDrop);
+    }
+
+    Overlays& o = f.overlays;
+    // The HUD's readings wrap between their parts within the room right of the control panel.
+    const int hudRoom =
+        session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
+    o.hud = wrapHudLines(hudFont, hudLines(hudData(session)), hudRoom - 8);
+    if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
+    if (session.sideColumnFolded()) {
+        // Said where the eye is: the charts asked for are not drawn over the box.
+        for (std::string& line :
+             wrapLines(hudFont, {foldedChartsNote(session.controlsShown())}, hudRoom - 8)) {
+            o.hud.push_back(std::move(line));
+        }
+    }
+    if (stats.labelsCrowded > 0 && session.view().labels) {
+        o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
+                        " left out where they would overlap (zoom in)");
+    }
+    o.showHelp = session.helpShown();
+    if (o.showHelp) {
+        const PixelRect room =
+            helpRoom(session.camera().viewportWidth(), session.camera().viewportHeight());
+        const auto pages = helpPages(hudFont, helpLines(), {room.w, room.h});
+        o.help = pages[std::min(session.helpPage(), pages.size() - 1)];
+        o.helpAt = {room.x, room.y};
+    }
+    o.showProfile = session.profileShown();
+    if (o.showProfile) {
+        ProfileData pd;
+        pd.profile = world.profile();
+        pd.mode = world.solver().mode;
+        pd.eventsPerStep = session.accuracy().eventsPerStep();
+        pd.frameStepMs = stats.lastStepMs;
+        pd.frameDrawMs = stats.lastDrawMs;
+        o.profile = profileLines(pd);
+    }
+    // Long messages wrap within the room right of the control panel; the newest lines that
+    // fit the band below the box are shown.
+    const int room = session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
+    o.messages = wrapLines(hudFont, stats.messages, room - 8);
+    if (o.messages.size() > kMessageLines) {
+        o.messages.erase(o.messages.begin(), o.messages.end() - kMessageLines);
+    }
+    // With the control panel open the selected particle's values are in it; the inspector
+    // beside the box stays for the keyboard's edit prompt (Enter).
+    if (f.selected && (!session.controlsShown() || session.prompt().active())) {
+        o.inspector = inspectorLines(*f.selected, session.prompt());
+    }
+
+    LayoutRequest req;
+    req.width = session.camera().viewportWidth();
+    req.height = session.camera().viewportHeight();
+    req.left = static_cast<int>(session.controlsInset());
+    req.hud = textBoxSize(hudFont, o.hud);
+    if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
+    if (f.view.momentum) {
+        req.legend = textBoxSize(labelFont, momentumLegend(world, f.now, f.view.arrowSeconds));
+    }
+    req.messages = textBoxSize(hudFont, o.messages);
+    req.inspector = textBoxSize(hudFont, o.inspector);
+    req.plots = f.view.plots;
+    req.speeds = f.view.speeds;
+    req.bins = f.bins.has_value();
+    f.layout = layoutPanels(req);
+    f.title = windowTitle(world.size(), session.paused(), session.sceneName());
+    return f;
+}
+
+}  // namespace psb::app

@@ -1,0 +1,95 @@
+#pragma once
+// What one frame shows, as read-only data: render() builds it from the session (and the
+// frame-time figures only the loop knows), the drawing layer (render/draw_layer.hpp) draws it.
+// Nothing in the view draws or includes SDL: text is measured through TextMeasure.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/particle.hpp>
+#include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/world.hpp>
+
+#include "session/camera.hpp"
+#include "session/view_options.hpp"
+#include "view/bin_histogram.hpp"
+#include "view/overlays.hpp"
+#include "view/screen_layout.hpp"
+#include "view/text_measure.hpp"
+
+namespace psb::app {
+
+class Session;
+
+/// A launch being dragged out: where the particle will appear and the velocity arrow it will
+/// have (world metres), with its speed as text.
+struct LaunchPreviewView {
+    Vec2 from = Vec2::Zero();
+    Vec2 to = Vec2::Zero();
+    double radius = 0.0;
+    std::string label;
+};
+
+/// The box is entirely off screen: an arrow at the screen's edge pointing to it.
+struct BoxMarkerView {
+    Vec2 at = Vec2::Zero();         ///< screen pixels, on the edge
+    Vec2 direction = Vec2::Zero();  ///< unit, towards the box
+    std::string label;
+};
+
+/// A ball dropper: its spout above where a ball starts, and what it has left.
+struct DropperView {
+    Vec2 at = Vec2::Zero();  ///< where a ball starts (the middle of the spread), metres
+    double radius = 0.0;     ///< a ball's, metres
+    double spread = 0.0;     ///< metres either side of `at`
+    std::string label;       ///< "dropper: 640 balls left"
+};
+
+struct FrameView {
+    const World* world = nullptr;
+    const Camera* camera = nullptr;
+    const TimeSeries* series = nullptr;
+    ObservablesSample now;
+    ViewOptions view;
+    std::uint64_t sceneGeneration = 0;
+    ParticleId trailParticle;
+    std::optional<Particle> selected;
+    std::optional<LaunchPreviewView> launch;
+    std::optional<Obstacle> selectedObstacle;  ///< drawn highlighted
+    std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
+    std::optional<BoxMarkerView> boxMarker;
+    std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
+    std::vector<DropperView> droppers;
+    Overlays overlays;
+    PanelLayout layout;
+    std::string title;
+};
+
+/// What only the frame loop knows.
+struct FrameStats {
+    double fps = 0.0;
+    double stepMs = 0.0;            ///< smoothed
+    double drawMs = 0.0;            ///< smoothed
+    double lastStepMs = 0.0;        ///< the last frame's
+    double lastDrawMs = 0.0;        ///< the last frame's
+    bool labelsSuppressed = false;  ///< the last draw had too many particles for labels
+    std::size_t labelsCrowded = 0;  ///< labels the last draw left out for want of room
+    std::string renderer;           ///< the render driver in use
+    std::vector<std::string> messages;
+};
+
+/// The frame for `session`; the fonts only measure text for the layout.
+[[nodiscard]] FrameView buildFrame(const Session& session, const FrameStats& stats,
+                                   const TextMeasure& hudFont, const TextMeasure& labelFont);
+
+/// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
+/// left", "dropper: empty".
+[[nodiscard]] std::string dropperLabel(const Dropper& dropper);
+
+/// Where the box marker goes, or nullopt while any of the box [0, w] × [0, h] is on screen.
+[[nodiscard]] std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width,
+                                                     double height);
+
+}  // namespace psb::app

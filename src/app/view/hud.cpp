@@ -1,0 +1,145 @@
+#include "view/hud.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "session/units.hpp"
+
+namespace psb::app {
+
+std::string windowTitle(std::size_t particles, bool paused, const std::string& scene) {
+    std::string t = "Particle Sandbox - " + std::to_string(particles) +
+                    (particles == 1 ? " particle" : " particles");
+    if (paused) t += " - PAUSED";
+    if (!scene.empty()) t += " - " + scene;
+    return t;
+}
+
+std::string foldedChartsNote(bool controlsOpen) {
+    return controlsOpen ? "Charts folded away: no room beside the box (C folds the controls)"
+                        : "Charts folded away: no room beside the box (widen the window)";
+}
+
+std::vector<std::string> hudLines(const HudData& d) {
+    char buf[200];
+    std::vector<std::string> lines;
+    // Below 95 % of the speed asked for, the reached speed is what the user sees.
+    char speed[64];
+    if (!d.paused && d.reachedTimeScale < 0.95 * d.timeScale) {
+        std::snprintf(speed, sizeof speed, "x%.2g of x%g asked (too much to compute)",
+                      d.reachedTimeScale, d.timeScale);
+    } else {
+        std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
+    }
+    std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s",
+                  quantity(d.simTime, "s").c_str(), speed, d.particles, d.particles == 1 ? "" : "s",
+                  d.paused ? " | PAUSED" : "");
+    lines.emplace_back(buf);
+    std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
+                  quantity(d.kineticEnergy, "J").c_str(),
+                  quantity(d.momentum.x(), "", false).c_str(),
+                  quantity(d.momentum.y(), "", false).c_str());
+    lines.emplace_back(buf);
+    std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
+                  quantity(d.spawnRadius, "m").c_str());
+    std::string last = buf;
+    if (d.arrowSeconds > 0.0) {
+        std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
+        last += buf;
+    }
+    lines.push_back(last + " | H: help");
+    if (d.overlap > 0.0) {
+        std::snprintf(buf, sizeof buf, "Particles overlap by up to %s (real ones would not)",
+                      quantity(d.overlap, "m").c_str());
+        lines.emplace_back(buf);
+    }
+    if (d.past) {
+        std::snprintf(buf, sizeof buf,
+                      "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
+                      d.secondsBack);
+        lines.emplace_back(buf);
+    }
+    return lines;
+}
+
+std::vector<std::string> profileLines(const ProfileData& d) {
+    const StepProfile& p = d.profile;
+    char buf[96];
+    std::vector<std::string> lines{"Profile, last step (ms)"};
+    const auto row = [&](const char* name, double ms) {
+        std::snprintf(buf, sizeof buf, "%-22s %8.3f", name, ms);
+        lines.emplace_back(buf);
+    };
+    // Each mode's stepper names its own stages (step_profile.hpp).
+    for (int k = 0; k < p.stageCount; ++k) {
+        const std::string name(p.stages[k].name);
+        row(name.c_str(), p.stages[k].ms);
+    }
+    row("total", p.total);
+    if (d.mode == StepMode::Exact) {
+        std::snprintf(buf, sizeof buf, "%-22s %8.0f", "events per step", d.eventsPerStep);
+        lines.emplace_back(buf);
+    } else {
+        std::snprintf(buf, sizeof buf, "%-22s %8llu", "pairs",
+                      static_cast<unsigned long long>(p.pairs));
+        lines.emplace_back(buf);
+    }
+    row("frame: step", d.frameStepMs);
+    row("frame: draw", d.frameDrawMs);
+    return lines;
+}
+
+const std::vector<std::pair<std::string, std::string>>& controls() {
+    // Each line says where its button is in the control panel (the column at the left).
+    static const std::vector<std::pair<std::string, std::string>> list = {
+        {"Left drag on a particle", "grab it; release to fling it (panel: Tools)"},
+        {"Left drag on empty space", "launch a particle: the drag is its arrow (Tools)"},
+        {"Left click on a particle", "select it (panel: Selected particle)"},
+        {"Left click on empty space", "clear the selection"},
+        {"Left click on a wall or peg", "select it (Delete removes it; Select tool: drag)"},
+        {"Enter (selected)", "edit it here (Tab: next field, Esc: cancel)"},
+        {"Backspace / Delete", "delete the held particle, or the selected wall or peg"},
+        {"W / B", "draw walls / place pegs; again: back to Fling (Tools)"},
+        {"M", "spawn a random particle"},
+        {"[ / ]", "smaller / bigger new particles (Tools)"},
+        {"S", "show / hide labels (Show)"},
+        {"A", "show / hide velocity arrows (Show)"},
+        {"Wheel", "zoom about the cursor"},
+        {"Arrow keys, right or middle drag", "pan (Tools: Pan)"},
+        {"F", "fit the box to the window"},
+        {"Space", "pause / resume (Time: Play, Pause)"},
+        {"N", "one step while paused (Time: Step)"},
+        {"Shift+Left/Right, PgUp/PgDn", "a frame, a second back / forward in time (Time)"},
+        {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change (Time: Undo, Redo)"},
+        {", / .", "slow down / speed up time (Time: Speed)"},
+        {"P / 1-9, 0, Shift+1-3", "next preset / preset 1-9, 10, 11-13 (Scene)"},
+        {"R", "back to the scene as loaded (Time: Reset)"},
+        {"E / Shift+E", "restitution down / up by 0.05 (Physics)"},
+        {"G", "gravity on / off (Physics)"},
+        {"T", "next mode: discrete, substeps, exact (Physics)"},
+        {"O / F3", "profile beside the box (Engine)"},
+        {"Ctrl+S", "save the world as a scene (Scene: Save)"},
+        {"V", "momentum and centre of mass (Show)"},
+        {"L", "trails: off / selected particle / all (Show)"},
+        {"K", "plots of energy, momentum, collisions (Show)"},
+        {"D", "speed histogram (Show)"},
+        {"C", "open / fold the control panel"},
+        {"F12", "save a PNG screenshot"},
+        {"H", "show / hide this help"},
+        {"Esc", "close help / edit; quit (asks if unsaved)"},
+    };
+    return list;
+}
+
+std::vector<std::string> helpLines() {
+    std::vector<std::string> lines{"Controls", ""};
+    std::size_t width = 0;
+    for (const auto& [keys, what] : controls())
+        width = std::max(width, keys.size());
+    for (const auto& [keys, what] : controls()) {
+        lines.push_back(keys + std::string(width + 3 - keys.size(), ' ') + what);
+    }
+    return lines;
+}
+
+}  // namespace psb::app

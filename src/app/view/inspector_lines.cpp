@@ -1,0 +1,49 @@
+#include "view/inspector_lines.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "session/units.hpp"
+
+namespace psb::app {
+
+std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt) {
+    char buf[160];
+    std::vector<std::string> lines;
+    const auto line = [&](const char* format, auto... values) {
+        std::snprintf(buf, sizeof buf, format, values...);
+        lines.emplace_back(buf);
+    };
+    const Vec2 momentum = p.mass * p.velocity;
+    const auto n = [](double v) { return quantity(v, "", false); };  // "-40 400", "0.00200"
+    const auto pair = [&](const char* name, const Vec2& v, const char* unit) {
+        lines.push_back(std::string(name) + "(" + n(v.x()) + ", " + n(v.y()) + ") " + unit);
+    };
+    line("Particle %u", p.id.slot);
+    pair("position        ", p.position, "m");
+    pair("velocity        ", p.velocity, "m/s");
+    lines.push_back("speed           " + quantity(p.velocity.norm(), "m/s", false));
+    pair("momentum        ", momentum, "kg m/s");
+    lines.push_back("kinetic energy  " + quantity(0.5 * p.mass * p.velocity.squaredNorm(), "J"));
+    lines.push_back("mass            " + quantity(p.mass, "kg", false));
+    lines.push_back("radius          " + quantity(p.radius, "m"));
+    if (!prompt.active() || prompt.target() != p.id) {
+        lines.emplace_back("Enter: edit");
+        return lines;
+    }
+    lines.emplace_back("");
+    lines.emplace_back("Edit  Tab: next  Enter: apply  Esc: cancel");
+    for (int k = 0; k < kEditFields; ++k) {
+        const auto f = static_cast<EditField>(k);
+        const bool active = f == prompt.field();
+        line("%s %-6s %s%s %s", active ? ">" : " ", fieldName(f), prompt.text(f).c_str(),
+             active ? "_" : "", fieldUnit(f));
+    }
+    if (!prompt.error().empty()) lines.push_back("Refused: " + prompt.error());
+    return lines;
+}
+
+}  // namespace psb::app

@@ -1,0 +1,60 @@
+#pragma once
+// The text panels shown over the world: the HUD (top-left), the help (below it), the profile
+// (top-right), short messages (bottom-left) and the selected particle's inspector
+// (bottom-right): their lines, wrapped to the room they have, and the boxes those lines need.
+// The drawing layer draws them (render/overlay_drawing.hpp).
+
+#include <string>
+#include <vector>
+
+#include "view/pixel_rect.hpp"
+#include "view/screen_layout.hpp"
+#include "view/text_measure.hpp"
+
+namespace psb::app {
+
+struct Overlays {
+    std::vector<std::string> hud;
+    std::vector<std::string> help;  ///< the page of the help shown
+    PixelPoint helpAt{0, 0};        ///< where the help's box goes (helpRoom)
+    std::vector<std::string> profile;
+    std::vector<std::string> messages;
+    std::vector<std::string> inspector;  ///< empty: nothing selected
+    bool showHelp = false;
+    bool showProfile = false;
+};
+
+/// Lines of messages the band below the box holds.
+inline constexpr std::size_t kMessageLines = 3;
+
+/// `lines` broken at spaces so that each fits `maxWidth` pixels of `font` with its box's
+/// padding (a word longer than that stays whole); continuation lines are indented by two
+/// spaces. A message cut at the window's edge would hide its reason.
+[[nodiscard]] std::vector<std::string> wrapLines(const TextMeasure& font,
+                                                 const std::vector<std::string>& lines,
+                                                 int maxWidth);
+
+/// The HUD's lines ("a | b | c") broken between their " | " parts where they do not fit
+/// `maxWidth`, each continuation indented by two spaces; a part too wide alone is broken at
+/// spaces as wrapLines does. A narrow window shows every reading, not the first half of each.
+[[nodiscard]] std::vector<std::string> wrapHudLines(const TextMeasure& font,
+                                                    const std::vector<std::string>& lines,
+                                                    int maxWidth);
+
+/// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
+[[nodiscard]] PixelPoint textBoxSize(const TextMeasure& font,
+                                     const std::vector<std::string>& lines);
+
+/// The room (pixels, padding included) the help has in a window `width` × `height`: all of it
+/// (the control panel is not drawn while the help is open; the HUD and the other panels are
+/// covered).
+[[nodiscard]] PixelRect helpRoom(int width, int height);
+
+/// The help's `lines` (a title, a blank line, one line per control) in pages that fit `room`
+/// (each line wrapped to its width, a control never split between pages); each page starts
+/// with the title, saying "page k of n" and what H does when there is more than one.
+[[nodiscard]] std::vector<std::vector<std::string>> helpPages(const TextMeasure& font,
+                                                              const std::vector<std::string>& lines,
+                                                              PixelPoint room);
+
+}  // namespace psb::app

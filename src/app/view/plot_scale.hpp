@@ -1,0 +1,30 @@
+#pragma once
+// The numbers of a chart's axes: a y range fitted to the data, tick values at round steps and
+// their labels. The charts (render/plot_chart.hpp) draw with them; kept apart from the drawing
+// so that they are tested as plain numbers and strings.
+
+#include <string>
+#include <vector>
+
+namespace psb::app {
+
+/// A plot's y range, in the quantity's unit.
+struct PlotRange {
+    double lo = 0.0;
+    double hi = 1.0;
+};
+
+/// [dataMin, dataMax] widened symmetrically to at least `minSpan` (> 0), then rounded out to
+/// tick steps (see niceTicks).
+[[nodiscard]] PlotRange plotRange(double dataMin, double dataMax, double minSpan);
+
+/// Tick values in [lo, hi]: multiples of 1, 2 or 5 × 10^k, at most `maxTicks` of them.
+[[nodiscard]] std::vector<double> niceTicks(double lo, double hi, int maxTicks);
+/// The step niceTicks uses.
+[[nodiscard]] double niceStep(double lo, double hi, int maxTicks);
+
+/// `v` with as many significant digits as a tick `step` needs, with an SI prefix outside
+/// [1e-3, 1e5): 4038789 with step 20000 -> "4.04M"; 0.5 -> "0.5"; 2e-5 -> "20u".
+[[nodiscard]] std::string tickLabel(double v, double step);
+
+}  // namespace psb::app

@@ -1,0 +1,66 @@
+#pragma once
+// Where the text and analysis panels go, as a pure function of the window size and what each
+// panel would need: the HUD at the top-left (right of the control panel's column), then a column at
+// the right edge holding, from the top, the profile and the momentum legend, and from the bottom
+// the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
+// column starts below the HUD when the window is too narrow for both side by side, panels shrink to
+// the room there is (the plots drop their least important rows first: rate, then py, then px), and
+// a panel that does not fit at its smallest is left out. A window too narrow for the column beside
+// the box (sideColumnFits) folds the column's panels away, and says so (columnFolded), instead of
+// laying them over the box. No two rectangles returned overlap.
+
+#include "view/pixel_rect.hpp"
+
+#include "session/view_insets.hpp"
+
+namespace psb::app {
+
+/// What to lay out; sizes in pixels, {0, 0} for a panel that is off.
+struct LayoutRequest {
+    int width = 0;               ///< the window
+    int left = 0;                ///< pixels at the left taken by the control panel
+    int height = 0;              ///< the window
+    PixelPoint hud{0, 0};        ///< the HUD's box (text plus padding)
+    PixelPoint profile{0, 0};    ///< the profile overlay's box
+    PixelPoint legend{0, 0};     ///< the momentum legend's box
+    PixelPoint messages{0, 0};   ///< the messages' box, at the bottom-left
+    PixelPoint inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
+    bool plots = false;          ///< K
+    bool speeds = false;         ///< D
+    bool bins = false;           ///< a scene's bins (a Galton board's histogram)
+};
+
+/// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
+struct PanelLayout {
+    PixelRect hud{};
+    PixelRect profile{};
+    PixelRect legend{};
+    PixelRect messages{};
+    PixelRect inspector{};
+    PixelRect plots{};
+    PixelRect speeds{};
+    PixelRect bins{};
+    int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
+    int plotRowHeight = 0;  ///< pixels per plot
+    /// The profile, plots or histograms were asked for but folded away: the window leaves the
+    /// side column no room beside the box (sideColumnFits).
+    bool columnFolded = false;
+};
+
+inline constexpr int kPanelGap = 6;                         ///< between panels, pixels
+inline constexpr int kPanelMaxWidth = kSideColumnMaxWidth;  ///< plots and histogram, pixels
+inline constexpr int kPanelMinWidth = kSideColumnMinWidth;  ///< plots and histogram, pixels
+inline constexpr int kPlotRowMaxHeight = 100;               ///< pixels
+inline constexpr int kPlotRowMinHeight = 64;                ///< pixels
+inline constexpr int kSpeedsMaxHeight = 210;                ///< pixels
+inline constexpr int kSpeedsMinHeight = 130;                ///< pixels
+inline constexpr int kBinsMaxHeight = 280;                  ///< pixels
+inline constexpr int kBinsMinHeight = 170;                  ///< pixels
+
+/// Lays out the panels `r` asks for.
+[[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);
+
+/// Whether two rectangles share a pixel (an empty one never does).
+[[nodiscard]] bool overlaps(const PixelRect& a, const PixelRect& b);
+
+}  // namespace psb::app

@@ -1,0 +1,145 @@
+// The box the session fits against the panels the view lays out and the control panel's
+// width: at every window size no chart covers the box, and the session and the layout agree
+// on when the side column folds away. Across three layers, so it is tested with the whole app.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "gui/control_panel.hpp"
+#include "session/scene_io.hpp"
+#include "session/session.hpp"
+#include "session/session_fixture.hpp"
+#include "session/test_assets.hpp"
+#include "view/screen_layout.hpp"
+
+namespace psb::app {
+namespace {
+
+class BoxAndPanels : public SessionFixture {
+  protected:
+    BoxAndPanels() : SessionFixture("psb-box-panels", TestWindow{}) {}
+};
+
+TEST_F(BoxAndPanels, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
+    // The layout the app draws (HUD and messages sized as the 14 px font makes them) against
+    // the box the fitted camera shows, with the plots, the histogram and the profile on.
+    Session s = session();
+    s.apply(cmd::TogglePlots{});
+    s.apply(cmd::ToggleSpeeds{});
+    s.apply(cmd::ToggleProfile{});
+    for (const auto& [w, h] : {std::pair{800, 600},
+                               {900, 800},
+                               {1024, 768},
+                               {1280, 720},
+                               {1366, 768},
+                               {1600, 900},
+                               {1920, 1080},
+                               {800, 1200}}) {
+        s.apply(cmd::Resize{w, h});
+        const auto b = s.camera().boxOnScreen(7.0, 7.0);
+        const PixelRect box{static_cast<int>(b.topLeft.x()), static_cast<int>(b.topLeft.y()),
+                            static_cast<int>(b.size.x()), static_cast<int>(b.size.y())};
+        LayoutRequest req;
+        req.width = w;
+        req.height = h;
+        req.hud = {560, 129};
+        req.profile = {260, 220};
+        req.messages = {400, 40};
+        req.plots = req.speeds = true;
+        const PanelLayout l = layoutPanels(req);
+        for (const PixelRect& panel : {l.plots, l.speeds, l.profile, l.messages}) {
+            EXPECT_FALSE(overlaps(panel, box))
+                << w << "x" << h << ": panel at " << panel.x << "," << panel.y << " " << panel.w
+                << "x" << panel.h << ", box " << box.x << "," << box.y << " " << box.w << "x"
+                << box.h;
+        }
+        EXPECT_GT(l.plots.w, 0) << w << "x" << h;
+        EXPECT_GT(box.w, w / 3) << w << "x" << h;  // the box still gets a good part
+    }
+}
+
+TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFolded) {
+    // The Galton board's bins chart, the plots and the speed histogram, against the box the
+    // fitted camera shows, from 500 px wide up; where the column does not fit beside the box the
+    // charts fold away and the session says so.
+    SessionOptions o = options();
+    o.insets.controls = kControlsWidth;
+    o.insets.controlsFolded = kControlsFoldedWidth;
+    o.presets = testPresets();
+    Session s(makeWorld(defaultScene()), "default", o);
+    const auto& presets = s.presets();
+    const auto galton = std::find_if(presets.begin(), presets.end(),
+                                     [](const SceneInfo& p) { return p.name == "Galton board"; });
+    ASSERT_NE(galton, presets.end());
+    s.apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
+    ASSERT_TRUE(s.binsShown());
+    s.apply(cmd::TogglePlots{});
+    s.apply(cmd::ToggleSpeeds{});
+    int folded = 0, shown = 0;
+    for (const bool controls : {true, false}) {
+        if (s.controlsShown() != controls) s.apply(cmd::ToggleControls{});
+        for (int w = 500; w <= 1400; w += 50) {
+            for (const int h : {500, 600, 800}) {
+                s.apply(cmd::Resize{w, h});
+                const auto b =
+                    s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
+                const PixelRect box{static_cast<int>(b.topLeft.x()),
+                                    static_cast<int>(b.topLeft.y()), static_cast<int>(b.size.x()),
+                                    static_cast<int>(b.size.y())};
+                LayoutRequest req;
+                req.width = w;
+                req.height = h;
+                req.left = static_cast<int>(s.controlsInset());
+                req.hud = {300, 129};
+                req.messages = {300, 40};
+                req.plots = req.speeds = req.bins = true;
+                const PanelLayout l = layoutPanels(req);
+                EXPECT_EQ(l.columnFolded, s.sideColumnFolded()) << w << "x" << h;
+                for (const PixelRect& panel : {l.plots, l.speeds, l.bins}) {
+                    EXPECT_FALSE(overlaps(panel, box))
+                        << w << "x" << h << (controls ? ", controls open" : "") << ": panel at "
+                        << panel.x << "," << panel.y << " " << panel.w << "x" << panel.h << ", box "
+                        << box.x << "," << box.y << " " << box.w << "x" << box.h;
+                }
+                (l.columnFolded ? folded : shown) += 1;
+                if (w == 600 && h == 600 && controls) {
+                    EXPECT_TRUE(s.sideColumnFolded()) << "the case a new user met";
+                }
+            }
+        }
+    }
+    EXPECT_GT(folded, 0);
+    EXPECT_GT(shown, 0);
+}
+
+TEST_F(BoxAndPanels, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
+    // The HUD says the charts are folded; the fitted box starts below that note too.
+    SessionOptions o = options();
+    o.viewportWidth = o.viewportHeight = 600;
+    o.insets.controls = kControlsWidth;
+    o.insets.controlsFolded = kControlsFoldedWidth;
+    std::vector<bool> asked;
+    o.insets.topFor = [&asked](int, bool folded) {
+        asked.push_back(folded);
+        return folded ? 195.0 : 60.0;
+    };
+    Session s(makeWorld(defaultScene()), "default", o);
+    ASSERT_FALSE(asked.empty());
+    EXPECT_FALSE(asked.back());
+    s.apply(cmd::TogglePlots{});
+    ASSERT_TRUE(s.sideColumnFolded());
+    EXPECT_TRUE(asked.back());
+    EXPECT_GE(s.camera().boxOnScreen(7.0, 7.0).topLeft.y(), 195.0 - 1e-9);
+    s.apply(cmd::ToggleControls{});  // folded to its strip: the column fits, no note
+    EXPECT_FALSE(s.sideColumnFolded());
+    EXPECT_FALSE(asked.back());
+}
+
+}  // namespace
+}  // namespace psb::app

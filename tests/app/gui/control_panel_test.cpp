@@ -1,0 +1,374 @@
+// The control panel without a window: a session, the panel built in an offscreen ImGui frame,
+// mouse input fed through ImGui's io, and the commands it returns applied as the app applies
+// them. Each test clicks or drags a control by its name and checks what changed.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include <imgui.h>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "gui/control_panel.hpp"
+#include "gui/gui_context.hpp"
+#include "platform/assets.hpp"
+#include "render/offscreen_test.hpp"
+#include "session/scene_io.hpp"
+#include "session/session.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr int kSize = 800;
+
+class ControlPanelTest : public OffscreenTest {
+  protected:
+    ControlPanelTest() : OffscreenTest(kSize) {}
+
+    void SetUp() override {
+        OffscreenTest::SetUp();
+        GuiOptions o;
+        o.font = findAsset("fonts/DejaVuSans.ttf");
+        o.fontPixels = 15.f;
+        gui_ = std::make_unique<GuiContext>(sdl_, o);
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = kSize;
+        so.viewportHeight = kSize;
+        so.insets = {60.0, 44.0, 338.0, kControlsWidth, kControlsFoldedWidth};
+        so.presets = presetScenes();
+        session_.emplace(makeWorld(defaultScene()), "default", so);
+        // ImGui settles its layout in the second frame (wrapped text takes the width the first
+        // frame found).
+        frame();
+        frame();
+    }
+    void TearDown() override {
+        gui_.reset();
+        OffscreenTest::TearDown();
+    }
+
+    /// One frame: the panel built and drawn, its commands applied. Returns how many there were.
+    std::size_t frame() {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        gui_->beginFrame(kSize, kSize);
+        const std::vector<Command> commands = panel_.build(*session_, FrameStats{}, kSize, 1.f);
+        EXPECT_EQ(gui_->endFrame(), 0);
+        SDL_RenderPresent(sdl_);
+        for (const Command& c : commands)
+            session_->apply(c);
+        return commands.size();
+    }
+    [[nodiscard]] ImVec2 centre(const std::string& name) const {
+        const PanelItem* i = panel_.item(name);
+        EXPECT_NE(i, nullptr) << name;
+        if (i == nullptr) return {-1.f, -1.f};
+        EXPECT_LT(i->y1, static_cast<float>(kSize)) << name << " is below the window";
+        return {(i->x0 + i->x1) / 2.f, (i->y0 + i->y1) / 2.f};
+    }
+    void click(const std::string& name) {
+        ImGuiIO& io = gui_->io();
+        frame();
+        io.MousePos = centre(name);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        io.MousePos = ImVec2(kSize - 5.f, kSize - 5.f);  // away, so no tooltip stays
+        frame();
+    }
+    /// A drag of the named control from its centre to `to`, in `steps` frames.
+    void drag(const std::string& name, ImVec2 to, int steps = 8) {
+        ImGuiIO& io = gui_->io();
+        frame();
+        const ImVec2 from = centre(name);
+        io.MousePos = from;
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        for (int k = 1; k <= steps; ++k) {
+            const float t = static_cast<float>(k) / static_cast<float>(steps);
+            io.MousePos = ImVec2(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t);
+            frame();
+        }
+        io.MouseDown[0] = false;
+        frame();
+    }
+
+    std::unique_ptr<GuiContext> gui_;
+    std::optional<Session> session_;
+    ControlPanel panel_;
+};
+
+TEST_F(ControlPanelTest, EverySectionAndItsMainControlsAreThere) {
+    click("section Tools");  // closed at first
+    for (const char* name : {"section Time",
+                             "Play/Pause",
+                             "Step",
+                             "Reset",
+                             "Speed",
+                             "section Scene",
+                             "section Physics",
+                             "mode Discrete",
+                             "mode Substeps",
+                             "mode Exact",
+                             "Restitution",
+                             "Friction",
+                             "Gravity",
+                             "g",
+                             "Walls",
+                             "section Show",
+                             "Velocity arrows",
+                             "Labels",
+                             "Momentum and centre of mass",
+                             "Plots",
+                             "Speed histogram",
+                             "Trails",
+                             "section Tools",
+                             "tool Fling",
+                             "tool Launch",
+                             "tool Select",
+                             "tool Pan",
+                             "launch mass",
+                             "launch radius",
+                             "auto radius",
+                             "launch colour",
+                             "section Readouts",
+                             "section Selected particle",
+                             "section All particles",
+                             "section Engine",
+                             "fold panel"}) {
+        EXPECT_NE(panel_.item(name), nullptr) << name;
+    }
+    // Every control is inside the panel's column.
+    for (const PanelItem& i : panel_.items()) {
+        EXPECT_LE(i.x1, kControlsWidth) << i.name;
+        EXPECT_GE(i.x0, 0.f) << i.name;
+    }
+}
+
+TEST_F(ControlPanelTest, PlayPauseAndStepAreTheSessionsCommands) {
+    ASSERT_TRUE(session_->paused());
+    const double t0 = session_->world().time();
+    click("Step");
+    session_->update(0.0, 0.0);
+    EXPECT_GT(session_->world().time(), t0);
+    click("Play/Pause");
+    EXPECT_FALSE(session_->paused());
+    click("Play/Pause");
+    EXPECT_TRUE(session_->paused());
+}
+
+TEST_F(ControlPanelTest, ACheckboxSetsItsOption) {
+    click("Walls");
+    EXPECT_FALSE(session_->world().def().walls);
+    click("Labels");
+    EXPECT_TRUE(session_->view().labels);
+    click("Gravity");
+    EXPECT_EQ(session_->world().def().gravity, Vec2(0.0, 9.81));
+}
+
+TEST_F(ControlPanelTest, DraggingTheRestitutionSliderToItsLeftEndIsOneUserAction) {
+    const PanelItem* r = panel_.item("Restitution");
+    ASSERT_NE(r, nullptr);
+    const auto actions = session_->userActions();
+    drag("Restitution", ImVec2(r->x0 - 20.f, (r->y0 + r->y1) / 2.f));
+    EXPECT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
+    EXPECT_EQ(session_->userActions(), actions + 1);
+    EXPECT_EQ(session_->lastAction(), "set restitution");
+}
+
+TEST_F(ControlPanelTest, ModesAreChosenInEveryScene) {
+    click("mode Substeps");
+    EXPECT_EQ(session_->world().solver().mode, StepMode::Substep);
+    EXPECT_EQ(session_->world().solver().substeps, 4);
+    click("mode Exact");
+    EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
+    click("mode Discrete");
+
+    World pegs(session_->world().def());
+    pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
+    session_->setWorld(std::move(pegs), "pegs");
+    frame();
+    click("mode Exact");  // obstacles are in every mode
+    EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
+}
+
+TEST_F(ControlPanelTest, ToolsAreChosenByTheirRadioButtons) {
+    click("section Physics");
+    click("section Show");
+    click("section Tools");
+    click("tool Pan");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Pan);
+    click("tool Select");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Select);
+    click("auto radius");  // untick: the radius field now sets the launch radius
+    EXPECT_TRUE(session_->spawn().fixedRadius.has_value());
+}
+
+TEST_F(ControlPanelTest, TheObstacleToolsHaveRadioButtonsSizesAndADeleteButton) {
+    click("section Physics");
+    click("section Show");
+    click("section Tools");
+    click("tool Wall");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Wall);
+    click("tool Peg");
+    EXPECT_EQ(session_->tool(), cmd::Tool::Peg);
+    EXPECT_NE(panel_.item("peg radius"), nullptr);
+    EXPECT_NE(panel_.item("wall thickness"), nullptr);
+    EXPECT_EQ(panel_.item("delete obstacle"), nullptr);  // nothing selected
+    // A peg placed in an empty corner of the box and clicked with the Select tool.
+    const Camera& c = session_->camera();
+    const Vec2 at = c.worldToScreen(Vec2(1.0, 6.0));
+    session_->apply(cmd::PointerDown{at, 1.0});
+    session_->apply(cmd::PointerUp{at, 1.05});
+    ASSERT_EQ(session_->world().obstacles().size(), 1u);
+    click("tool Select");
+    session_->apply(cmd::PointerDown{at, 2.0});
+    session_->apply(cmd::PointerUp{at, 2.05});
+    ASSERT_EQ(session_->selectedObstacle(), 0u);
+    frame();
+    click("delete obstacle");
+    EXPECT_TRUE(session_->world().obstacles().empty());
+}
+
+TEST_F(ControlPanelTest, APresetIsOpenedByItsName) {
+    click("section Scene");
+    click("preset Newton's cradle");
+    EXPECT_EQ(session_->sceneName(), "Newton's cradle");
+}
+
+TEST_F(ControlPanelTest, EveryReadoutsNameEndsBeforeItsValueBegins) {
+    // Under gravity (the "Mechanical energy" row), with text larger and larger against the
+    // panel's width (as a narrower panel would be): the names' column is as wide as its widest
+    // name, and the values wrap at spaces in the rest.
+    const auto& presets = session_->presets();
+    const auto galton = std::find_if(presets.begin(), presets.end(),
+                                     [](const SceneInfo& p) { return p.name == "Galton board"; });
+    ASSERT_NE(galton, presets.end());
+    session_->apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
+    for (const float pixels : {15.f, 19.f, 23.f}) {
+        // A new context: ImGui keeps a table's column widths from the frames that laid it out.
+        GuiOptions o;
+        o.font = findAsset("fonts/DejaVuSans.ttf");
+        o.fontPixels = pixels;
+        gui_ = std::make_unique<GuiContext>(sdl_, o);
+        frame();
+        frame();
+        for (const char* name :
+             {"Time", "Particles", "Kinetic energy", "Mechanical energy", "Momentum", "  size"}) {
+            const PanelItem* label = panel_.item(std::string("readout ") + name);
+            const PanelItem* value = panel_.item(std::string("readout ") + name + " value");
+            ASSERT_NE(label, nullptr) << name;
+            ASSERT_NE(value, nullptr) << name;
+            EXPECT_LT(label->x1, value->x0)
+                << name << " at " << pixels << " px: its name runs into its value";
+            EXPECT_LE(value->x1, kControlsWidth)
+                << name << " at " << pixels << " px: its value runs out of the panel";
+        }
+    }
+}
+
+TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
+    EXPECT_EQ(panel_.item("selected mass"), nullptr);
+    session_->apply(cmd::Select{session_->world().ids().front()});
+    frame();
+    for (const char* f : {"selected x", "selected y", "selected vx", "selected vy", "selected mass",
+                          "selected radius"}) {
+        EXPECT_NE(panel_.item(f), nullptr) << f;
+    }
+    // Far down the panel: fold the sections above it.
+    for (const char* section : {"section Physics", "section Show", "section Readouts"})
+        click(section);
+    click("deselect");
+    EXPECT_FALSE(session_->selected());
+}
+
+TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {
+    click("fold panel");
+    EXPECT_FALSE(session_->controlsShown());
+    frame();
+    const PanelItem* open = panel_.item("open panel");
+    ASSERT_NE(open, nullptr);
+    EXPECT_LE(open->x1, kControlsFoldedWidth);
+    // The button is as wide as its label: both ">" of ">>" show (the message says
+    // "C or >> opens it"); it used to be cut to one ">" by the strip's width.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    EXPECT_GE(open->x1 - open->x0, ImGui::CalcTextSize(">>").x + 2.f * style.FramePadding.x);
+    EXPECT_GE(open->x0, 0.f);
+    EXPECT_EQ(panel_.item("Play/Pause"), nullptr);
+    click("open panel");
+    EXPECT_TRUE(session_->controlsShown());
+}
+
+TEST_F(ControlPanelTest, ThePanelIsOpaqueAndDrawsNothingBesideItsColumn) {
+    const int inside = static_cast<int>(kControlsWidth) - 12;
+    const int beside = static_cast<int>(kControlsWidth) + 4;
+    // Below the last control, the panel's background: opaque, not the black behind it.
+    const SDL_Color bg = pixel(inside, kSize - 3);
+    EXPECT_GT(bg.r + bg.g + bg.b, 30) << int(bg.r) << " " << int(bg.g) << " " << int(bg.b);
+    for (int y = 0; y < kSize; y += 50) {
+        const SDL_Color c = pixel(beside, y);
+        EXPECT_EQ(c.r + c.g + c.b, 0) << y;
+    }
+}
+
+TEST_F(ControlPanelTest, UndoRedoAndStepBackButtonsGoThroughTheSession) {
+    const double e = session_->world().def().restitution;
+    const PanelItem* r = panel_.item("Restitution");
+    ASSERT_NE(r, nullptr);
+    drag("Restitution", ImVec2(r->x0 - 20.f, (r->y0 + r->y1) / 2.f));
+    ASSERT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
+    click("Undo");  // the whole drag is one edit
+    EXPECT_DOUBLE_EQ(session_->world().def().restitution, e);
+    click("Redo");
+    EXPECT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
+
+    // Paused: three single steps, then one back shows the second one's time.
+    const double dt = session_->world().solver().dt;
+    for (int k = 0; k < 3; ++k) {
+        click("Step");
+        session_->update(0.0, 0.0);
+    }
+    ASSERT_NEAR(session_->world().time(), 3.0 * dt, 1e-12);
+    click("Step back");
+    EXPECT_NEAR(session_->world().time(), 2.0 * dt, 1e-12);
+    EXPECT_TRUE(session_->timeline().viewingPast);
+    click("Step forward");
+    EXPECT_NEAR(session_->world().time(), 3.0 * dt, 1e-12);
+}
+
+TEST_F(ControlPanelTest, DeleteAddAndViewButtonsNeedNoKey) {
+    click("Keys");
+    EXPECT_TRUE(session_->helpShown());
+    session_->apply(cmd::Back{});
+    session_->apply(cmd::Pan{Vec2(50.0, 0.0)});
+    const Vec2 panned = session_->camera().worldToScreen(Vec2::Zero());
+    click("Fit view");
+    EXPECT_NE(session_->camera().worldToScreen(Vec2::Zero()).x(), panned.x());
+
+    // Fold what is above the selected particle's section, so that it is in the window.
+    for (const char* section : {"section Physics", "section Show", "section Readouts"})
+        click(section);
+    const std::size_t n = session_->world().size();
+    const ParticleId id = session_->world().ids().front();
+    session_->apply(cmd::Select{id});
+    click("delete particle");
+    EXPECT_EQ(session_->world().size(), n - 1);
+    EXPECT_FALSE(session_->world().contains(id));
+    EXPECT_FALSE(session_->selected().has_value());
+    click("Undo");
+    EXPECT_EQ(session_->world().size(), n);
+    EXPECT_TRUE(session_->world().contains(id));
+
+    click("section Tools");
+    click("Add a random particle");
+    EXPECT_EQ(session_->world().size(), n + 1);
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,200 @@
+// The ImGui holder without a window: input fed through io(), frames drawn offscreen.
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include <imgui.h>
+
+#include "gui/gui_context.hpp"
+#include "platform/assets.hpp"
+#include "render/offscreen_test.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr int kSize = 300;
+
+class GuiContextTest : public OffscreenTest {
+  protected:
+    GuiContextTest() : OffscreenTest(kSize) {}
+
+    /// One frame with a "Play" button at a fixed place; returns whether it was clicked.
+    bool frame(GuiContext& gui) {
+        gui.beginFrame(kSize, kSize);
+        ImGui::SetNextWindowPos(ImVec2(20, 20));
+        ImGui::SetNextWindowSize(ImVec2(150, 100));
+        ImGui::Begin("Controls", nullptr, ImGuiWindowFlags_NoSavedSettings);
+        const bool clicked = ImGui::Button("Play", ImVec2(80, 30));
+        button0_ = ImGui::GetItemRectMin();
+        button1_ = ImGui::GetItemRectMax();
+        ImGui::End();
+        EXPECT_EQ(gui.endFrame(), 0);
+        return clicked;
+    }
+    /// A mouse event of `type` at window point (x, y): the left button, one wheel notch down.
+    static SDL_Event mouse(Uint32 type, int x, int y) {
+        SDL_Event e{};
+        e.type = type;
+        if (type == SDL_MOUSEMOTION) {
+            e.motion.x = x;
+            e.motion.y = y;
+        } else if (type == SDL_MOUSEWHEEL) {
+            e.wheel.y = -1;
+            e.wheel.preciseY = -1.f;
+            e.wheel.mouseX = x;
+            e.wheel.mouseY = y;
+        } else {
+            e.button.button = SDL_BUTTON_LEFT;
+            e.button.x = x;
+            e.button.y = y;
+        }
+        return e;
+    }
+    static SDL_Event mouseButton(Uint32 type, int x = 0, int y = 0) { return mouse(type, x, y); }
+    static SDL_Event motion(int x, int y) { return mouse(SDL_MOUSEMOTION, x, y); }
+    static SDL_Event wheel(int x, int y) { return mouse(SDL_MOUSEWHEEL, x, y); }
+
+    ImVec2 button0_, button1_;
+};
+
+TEST_F(GuiContextTest, PressAndReleaseOverAButtonClicksItOnce) {
+    GuiContext gui(sdl_);
+    frame(gui);
+    const ImVec2 centre((button0_.x + button1_.x) / 2, (button0_.y + button1_.y) / 2);
+    ImGuiIO& io = gui.io();
+    io.MousePos = centre;
+    EXPECT_FALSE(frame(gui));
+    io.MouseDown[0] = true;
+    EXPECT_FALSE(frame(gui));
+    io.MouseDown[0] = false;
+    EXPECT_TRUE(frame(gui));
+    EXPECT_FALSE(frame(gui));
+}
+
+TEST_F(GuiContextTest, ClicksOverAPanelAreTakenAndClicksElsewhereAreNot) {
+    GuiContext gui(sdl_);
+    ImGuiIO& io = gui.io();
+    io.MousePos = ImVec2(60, 60);  // over the panel
+    frame(gui);
+    frame(gui);
+    EXPECT_TRUE(gui.wantsMouse());
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN)));
+
+    io.MousePos = ImVec2(250, 250);  // over the box, away from the panel
+    frame(gui);
+    EXPECT_FALSE(gui.wantsMouse());
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN)));
+    SDL_Event key{};
+    key.type = SDL_KEYDOWN;
+    key.key.keysym.sym = SDLK_SPACE;
+    EXPECT_FALSE(gui.handleEvent(key)) << "keys reach the app while no text field is active";
+    SDL_Event quit{};
+    quit.type = SDL_QUIT;
+    EXPECT_FALSE(gui.handleEvent(quit));
+}
+
+TEST_F(GuiContextTest, AFirstClickAfterThePointerEntersAPanelIsThePanels) {
+    // The pointer was over the box in the last frame; it moves onto the panel and presses
+    // before another frame is drawn (a quick hand, a loaded machine): ImGui's capture flag is
+    // still the box's, the press and its release are the panel's all the same.
+    GuiContext gui(sdl_);
+    gui.io().MousePos = ImVec2(250, 250);
+    frame(gui);
+    frame(gui);
+    ASSERT_FALSE(gui.wantsMouse());
+    EXPECT_FALSE(gui.handleEvent(motion(60, 60)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 60, 60)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 60, 60)));
+    // A press on the box is the world's, and so is its release over the panel.
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 250, 250)));
+    EXPECT_FALSE(gui.handleEvent(motion(60, 60)));
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 60, 60)));
+}
+
+TEST_F(GuiContextTest, AWheelTurnOverAPanelIsThePanelsEvenAsThePointerArrives) {
+    GuiContext gui(sdl_);
+    gui.io().MousePos = ImVec2(250, 250);
+    frame(gui);
+    frame(gui);
+    EXPECT_FALSE(gui.handleEvent(wheel(250, 250))) << "over the box the wheel zooms";
+    EXPECT_TRUE(gui.handleEvent(wheel(60, 60))) << "over the panel it is the panel's";
+}
+
+TEST_F(GuiContextTest, KeysGoToATextFieldBeingTypedIn) {
+    GuiContext gui(sdl_);
+    char path[64] = "scene.json";
+    ImVec2 field;
+    const auto frameWithField = [&] {
+        gui.beginFrame(kSize, kSize);
+        ImGui::SetNextWindowPos(ImVec2(20, 20));
+        ImGui::SetNextWindowSize(ImVec2(200, 80));
+        ImGui::Begin("Save", nullptr, ImGuiWindowFlags_NoSavedSettings);
+        ImGui::InputText("path", path, sizeof path);
+        field = ImVec2((ImGui::GetItemRectMin().x + ImGui::GetItemRectMax().x) / 2 - 30,
+                       (ImGui::GetItemRectMin().y + ImGui::GetItemRectMax().y) / 2);
+        ImGui::End();
+        EXPECT_EQ(gui.endFrame(), 0);
+    };
+    frameWithField();
+    SDL_Event key{};
+    key.type = SDL_KEYDOWN;
+    key.key.keysym.sym = SDLK_r;
+    EXPECT_FALSE(gui.handleEvent(key)) << "R resets the scene while nothing is being typed";
+    ImGuiIO& io = gui.io();
+    io.MousePos = field;
+    frameWithField();
+    io.MouseDown[0] = true;
+    frameWithField();
+    io.MouseDown[0] = false;
+    frameWithField();
+    frameWithField();
+    EXPECT_TRUE(gui.wantsKeyboard());
+    EXPECT_TRUE(gui.handleEvent(key)) << "R is a letter of the file name being typed";
+    SDL_Event text{};
+    text.type = SDL_TEXTINPUT;
+    text.text.text[0] = 'r';
+    EXPECT_TRUE(gui.handleEvent(text));
+}
+
+TEST_F(GuiContextTest, TwoContextsKeepTheirOwnState) {
+    GuiContext a(sdl_);
+    GuiContext b(sdl_);
+    a.io().MousePos = ImVec2(60, 60);
+    b.io().MousePos = ImVec2(250, 250);
+    frame(a);
+    frame(b);
+    frame(a);
+    frame(b);
+    EXPECT_TRUE(a.wantsMouse());
+    EXPECT_FALSE(b.wantsMouse());
+}
+
+TEST_F(GuiContextTest, LoadsTheAppsFontAndNamesAMissingOne) {
+    GuiOptions options;
+    options.font = findAsset("fonts/DejaVuSans.ttf");
+    options.fontPixels = 18.f;
+    GuiContext gui(sdl_, options);
+    ASSERT_EQ(gui.io().Fonts->Fonts.Size, 1);
+    EXPECT_FLOAT_EQ(gui.io().Fonts->Fonts[0]->FontSize, 18.f);
+    EXPECT_NE(gui.renderer().fontTexture(), nullptr);
+    frame(gui);
+
+    options.font = "no/such/font.ttf";
+    try {
+        GuiContext missing(sdl_, options);
+        FAIL() << "a missing font was accepted";
+    } catch (const std::runtime_error& e) {
+        EXPECT_NE(std::string(e.what()).find("no/such/font.ttf"), std::string::npos) << e.what();
+    }
+    // The failed holder left nothing current; the first still works.
+    frame(gui);
+}
+
+TEST_F(GuiContextTest, AFrameWithoutAWindowNeedsASize) {
+    GuiContext gui(sdl_);
+    EXPECT_THROW(gui.beginFrame(), std::logic_error);
+}
+
+}  // namespace
+}  // namespace psb::app

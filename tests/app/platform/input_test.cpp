@@ -1,0 +1,164 @@
+// The key map and the mouse: SDL events to commands, without a window.
+
+#include <gtest/gtest.h>
+
+#include "platform/input.hpp"
+#include "platform/sdl_context.hpp"
+
+namespace psb::app {
+namespace {
+
+SDL_KeyboardEvent keyEvent(SDL_Keycode sym, Uint16 mod = KMOD_NONE, Uint8 repeat = 0) {
+    SDL_KeyboardEvent k{};
+    k.type = SDL_KEYDOWN;
+    k.keysym.sym = sym;
+    k.keysym.mod = mod;
+    k.repeat = repeat;
+    return k;
+}
+
+template <class T>
+bool is(const std::vector<Command>& c) {
+    return c.size() == 1 && std::holds_alternative<T>(c.front());
+}
+
+TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
+    EXPECT_TRUE(is<cmd::ToggleLabels>(commandsForKey(keyEvent(SDLK_s), false)));
+    EXPECT_TRUE(is<cmd::Save>(commandsForKey(keyEvent(SDLK_s, KMOD_LCTRL), false)));
+    EXPECT_TRUE(is<cmd::NextMode>(commandsForKey(keyEvent(SDLK_t), false)));
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), false)));
+    EXPECT_TRUE(is<cmd::DeleteHeld>(commandsForKey(keyEvent(SDLK_DELETE), false)));
+    EXPECT_TRUE(is<cmd::SpawnRandom>(commandsForKey(keyEvent(SDLK_m), false)));
+    const auto e = commandsForKey(keyEvent(SDLK_e, KMOD_LSHIFT), false);
+    ASSERT_TRUE(is<cmd::ChangeRestitution>(e));
+    EXPECT_EQ(std::get<cmd::ChangeRestitution>(e.front()).direction, +1);
+    const auto preset = commandsForKey(keyEvent(SDLK_3), false);
+    ASSERT_TRUE(is<cmd::OpenPreset>(preset));
+    EXPECT_EQ(std::get<cmd::OpenPreset>(preset.front()).index, 2);
+}
+
+TEST(Input, WAndBChooseTheWallAndPegToolsAsAToggle) {
+    const auto w = commandsForKey(keyEvent(SDLK_w), false);
+    ASSERT_TRUE(is<cmd::SetTool>(w));
+    EXPECT_EQ(std::get<cmd::SetTool>(w.front()).tool, cmd::Tool::Wall);
+    EXPECT_TRUE(std::get<cmd::SetTool>(w.front()).toggle);
+    const auto b = commandsForKey(keyEvent(SDLK_b), false);
+    ASSERT_TRUE(is<cmd::SetTool>(b));
+    EXPECT_EQ(std::get<cmd::SetTool>(b.front()).tool, cmd::Tool::Peg);
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w), true).empty());  // typed into the prompt
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w, KMOD_NONE, 1), false).empty());  // no repeat
+}
+
+TEST(Input, EveryPresetUpTo19HasAKeyAndTheKeyItsName) {
+    // 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to the 19th: the 13 presets each
+    // have one, and the message that opens one names the key that does.
+    const auto index = [](SDL_Keycode sym, Uint16 mod) {
+        const auto c = commandsForKey(keyEvent(sym, mod), false);
+        EXPECT_TRUE(is<cmd::OpenPreset>(c));
+        return is<cmd::OpenPreset>(c) ? std::get<cmd::OpenPreset>(c.front()).index : -2;
+    };
+    EXPECT_EQ(index(SDLK_1, KMOD_NONE), 0);
+    EXPECT_EQ(index(SDLK_9, KMOD_NONE), 8);
+    EXPECT_EQ(index(SDLK_0, KMOD_NONE), 9);
+    EXPECT_EQ(index(SDLK_1, KMOD_LSHIFT), 10);
+    EXPECT_EQ(index(SDLK_3, KMOD_RSHIFT), 12);
+    EXPECT_EQ(index(SDLK_9, KMOD_LSHIFT), 18);
+    for (int i = 0; i < 19; ++i) {
+        const std::string key = cmd::presetKey(i);
+        ASSERT_FALSE(key.empty()) << i;
+        const bool shift = key.rfind("Shift+", 0) == 0;
+        const int digit = key.back() - '0';
+        EXPECT_EQ(cmd::presetForDigit(digit, shift), i) << key;
+    }
+    EXPECT_TRUE(cmd::presetKey(19).empty());
+}
+
+TEST(Input, OnlyPanStepAndMassKeysRepeat) {
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_SPACE, KMOD_NONE, 1), false).empty());
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_NONE, 1), false)));
+    EXPECT_TRUE(is<cmd::SingleStep>(commandsForKey(keyEvent(SDLK_n, KMOD_NONE, 1), false)));
+}
+
+TEST(Input, WhileEditingOnlyThePromptsKeysMeanAnything) {
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_g), true).empty());
+    EXPECT_TRUE(is<cmd::EditField>(commandsForKey(keyEvent(SDLK_TAB), true)));
+    EXPECT_TRUE(is<cmd::EditApply>(commandsForKey(keyEvent(SDLK_RETURN), true)));
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), true)));
+    EXPECT_TRUE(is<cmd::Screenshot>(commandsForKey(keyEvent(SDLK_F12), true)));
+}
+
+TEST(Input, MouseCoordinatesAreScaledToDrawablePixels) {
+    Input in;
+    SDL_Event e{};
+    e.type = SDL_MOUSEBUTTONDOWN;
+    e.button.button = SDL_BUTTON_LEFT;
+    e.button.x = 100;
+    e.button.y = 50;
+    e.button.timestamp = 2000;
+    const auto c = in.translate(e, false, 2.0, SDL_Point{1600, 1600});  // a high-DPI screen
+    ASSERT_TRUE(is<cmd::PointerDown>(c));
+    EXPECT_EQ(std::get<cmd::PointerDown>(c.front()).screen, Vec2(200, 100));
+    EXPECT_DOUBLE_EQ(std::get<cmd::PointerDown>(c.front()).time, 2.0);
+}
+
+TEST(Input, ARightDragPans) {
+    Input in;
+    SDL_Event e{};
+    e.type = SDL_MOUSEBUTTONDOWN;
+    e.button.button = SDL_BUTTON_RIGHT;
+    e.button.x = 10;
+    e.button.y = 10;
+    EXPECT_TRUE(in.translate(e, false, 1.0, SDL_Point{800, 800}).empty());
+    SDL_Event m{};
+    m.type = SDL_MOUSEMOTION;
+    m.motion.x = 30;
+    m.motion.y = 5;
+    const auto c = in.translate(m, false, 1.0, SDL_Point{800, 800});
+    ASSERT_EQ(c.size(), 2u);
+    ASSERT_TRUE(std::holds_alternative<cmd::Pan>(c.front()));
+    EXPECT_EQ(std::get<cmd::Pan>(c.front()).pixels, Vec2(20, -5));
+}
+
+TEST(Renderer, AnOpenGLSoftwareRasteriserIsRecognised) {
+    EXPECT_TRUE(isSoftwareRasteriser("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(isSoftwareRasteriser("softpipe"));
+    EXPECT_FALSE(isSoftwareRasteriser("Mesa Intel(R) UHD Graphics 620 (KBL GT2)"));
+    EXPECT_FALSE(isSoftwareRasteriser(""));
+}
+
+TEST(Renderer, AWindowlessVideoDriverNobodyAskedForIsAnError) {
+    // X refused the connection ("Authorization required"): SDL went on with "offscreen".
+    const std::string why = noWindowReason("offscreen", nullptr, ":99", nullptr);
+    EXPECT_NE(why.find("cannot open a window"), std::string::npos) << why;
+    EXPECT_NE(why.find("DISPLAY=:99"), std::string::npos) << why;
+    EXPECT_NE(why.find("WAYLAND_DISPLAY unset"), std::string::npos) << why;
+    EXPECT_NE(why.find("'offscreen'"), std::string::npos) << why;
+    EXPECT_FALSE(noWindowReason("dummy", nullptr, nullptr, nullptr).empty());
+    // Asked for by name (the tests' SDL_VIDEODRIVER=dummy), or a real display: no error.
+    EXPECT_EQ(noWindowReason("dummy", "dummy", nullptr, nullptr), "");
+    EXPECT_EQ(noWindowReason("offscreen", "offscreen", ":99", nullptr), "");
+    EXPECT_EQ(noWindowReason("x11", nullptr, ":99", nullptr), "");
+    EXPECT_EQ(noWindowReason("wayland", nullptr, nullptr, "wayland-0"), "");
+    EXPECT_EQ(noWindowReason("KMSDRM", nullptr, nullptr, nullptr), "");
+}
+
+TEST(Input, UndoRedoAndStepBackKeysLeaveThePlainKeysAsTheyWere) {
+    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), false)));
+    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL | KMOD_LSHIFT), false)));
+    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_y, KMOD_RCTRL), false)));
+    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL, 1), false)));  // held
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z), false).empty());
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_y), false).empty());
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), true).empty());  // editing
+    EXPECT_TRUE(is<cmd::StepBack>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_LSHIFT), false)));
+    EXPECT_TRUE(is<cmd::StepForward>(commandsForKey(keyEvent(SDLK_RIGHT, KMOD_RSHIFT, 1), false)));
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT), false)));
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_RIGHT), false)));
+    const auto back = commandsForKey(keyEvent(SDLK_PAGEUP), false);
+    ASSERT_TRUE(is<cmd::SeekBy>(back));
+    EXPECT_EQ(std::get<cmd::SeekBy>(back.front()).seconds, -kSeekKeySeconds);
+    EXPECT_TRUE(is<cmd::SeekBy>(commandsForKey(keyEvent(SDLK_PAGEDOWN), false)));
+}
+
+}  // namespace
+}  // namespace psb::app

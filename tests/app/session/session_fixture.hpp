@@ -1,0 +1,75 @@
+#pragma once
+// What the session tests share: whether a notice said something, a drag with the left button in
+// world metres, and a fixture with a session over the default scene (paused, seed 3) that saves
+// into the test's own temporary directory.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "session/scene_io.hpp"
+#include "session/session.hpp"
+#include "session/test_assets.hpp"
+#include "session/view_insets.hpp"
+#include "temp_dir_test.hpp"
+
+namespace psb::app {
+
+/// Whether one of `notices` says `text`.
+[[nodiscard]] inline bool said(const std::vector<Notice>& notices, const std::string& text) {
+    return std::any_of(notices.begin(), notices.end(),
+                       [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
+}
+
+/// A drag with the left button from world point `from` to `to`: the press at `t0`, `moves`
+/// moves `step` seconds apart, the release at `t0` + 0.1 s + `hold` (the hand held still).
+inline void drag(Session& s, Vec2 from, Vec2 to, double t0, int moves = 10, double step = 0.01,
+                 double hold = 0.0) {
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(from), t0});
+    for (int k = 1; k <= moves; ++k) {
+        s.apply(cmd::PointerMove{c.worldToScreen(from + (to - from) * (k / double(moves))),
+                                 t0 + step * k});
+    }
+    s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1 + hold});
+}
+
+/// The window a fixture's session is laid out in.
+struct TestWindow {
+    int width = 800;
+    int height = 800;
+    ViewInsets insets{110.0, 44.0, kSideColumnMaxWidth + kPanelMargin};
+    bool presets = false;  ///< the app's presets, for OpenPreset
+};
+
+/// A session over the default scene in `window`, saving to dir_/save.json.
+class SessionFixture : public TempDirTest {
+  protected:
+    SessionFixture(std::string prefix, TestWindow window)
+        : TempDirTest(std::move(prefix)), window_(std::move(window)) {}
+
+    [[nodiscard]] SessionOptions options() const {
+        SessionOptions o;
+        o.saveTo = dir_ / "save.json";
+        o.seed = 3;
+        o.paused = true;
+        o.viewportWidth = window_.width;
+        o.viewportHeight = window_.height;
+        o.insets = window_.insets;
+        if (window_.presets) o.presets = testPresets();
+        return o;
+    }
+    [[nodiscard]] Session session() const {
+        return Session(makeWorld(defaultScene()), "default", options());
+    }
+
+    TestWindow window_;
+};
+
+}  // namespace psb::app

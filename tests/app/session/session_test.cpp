@@ -1,0 +1,421 @@
+// The session without a window: commands in, world, view and notices out. Each defect of the
+// issue that lives in the session has a test here that failed before its fix.
+
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <algorithm>
+#include <filesystem>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "core/test_util.hpp"
+#include "session/scene_io.hpp"
+#include "session/session.hpp"
+#include "session/session_fixture.hpp"
+#include "session/test_assets.hpp"
+
+namespace psb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SessionTest : public SessionFixture {
+  protected:
+    SessionTest() : SessionFixture("psb-session", TestWindow{}) {}
+};
+
+TEST_F(SessionTest, TheDefaultSceneIsAtHumanScale) {
+    const Session s = session();
+    const World& w = s.world();
+    EXPECT_DOUBLE_EQ(w.def().width, 7.0);  // the original's 700 px at 1 px = 1 cm
+    EXPECT_DOUBLE_EQ(w.def().height, 7.0);
+    const ParticleArrays& p = w.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        EXPECT_GE(p.radius[i], 0.075);
+        EXPECT_LE(p.radius[i], 0.5);
+        EXPECT_GE(p.mass[i], 3.0);
+        EXPECT_LE(p.mass[i], 20.0);
+        EXPECT_LE(std::hypot(p.vx[i], p.vy[i]), 5.0);  // a few m/s
+    }
+    // New particles follow the scene: 10 kg at the median radius, tens of centimetres.
+    EXPECT_GT(s.spawn().radius(), 0.1);
+    EXPECT_LT(s.spawn().radius(), 0.5);
+}
+
+TEST_F(SessionTest, TheBrownianPresetOpensWithItsHeavyDiscsTrailShown) {
+    Session s = session();
+    ASSERT_EQ(s.view().trails, TrailMode::Off);
+    s.apply(cmd::OpenFile{testAsset("scenes/08-brownian-motion.json")});
+    EXPECT_EQ(s.view().trails, TrailMode::Selected);
+    ASSERT_TRUE(s.selection().id().has_value());
+    EXPECT_EQ(s.trailParticle(), *s.selection().id());
+    // The heavy disc is the scene's particle 0: the largest of them.
+    double largest = 0.0;
+    for (const double r : s.world().particles().radius)
+        largest = std::max(largest, r);
+    EXPECT_EQ(s.world().get(*s.selection().id()).radius, largest);
+}
+
+TEST_F(SessionTest, TheBrownianPresetGivenAtStartUpShowsItsTrailToo) {
+    const Scene scene = loadScene(testAsset("scenes/08-brownian-motion.json"));
+    SessionOptions o = options();
+    o.sceneTrails = scene.trails;
+    Session s(makeWorld(scene), scene.name, o);
+    EXPECT_EQ(s.view().trails, TrailMode::Selected);
+    ASSERT_TRUE(s.selection().id().has_value());
+    EXPECT_EQ(s.world().get(*s.selection().id()).radius, 0.08);
+}
+
+TEST_F(SessionTest, GravityIsEarthsInTheDefaultScene) {
+    Session s = session();
+    s.apply(cmd::ToggleGravity{});
+    EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 9.81));
+}
+
+TEST_F(SessionTest, CommandsAreTheOnlyWayInAndEachSaysWhatItDid) {
+    Session s = session();
+    (void)s.takeNotices();
+    s.apply(cmd::ToggleLabels{});
+    EXPECT_TRUE(s.view().labels);
+    s.apply(cmd::ToggleArrows{});
+    EXPECT_FALSE(s.view().arrows);
+    s.apply(cmd::ScaleTime{2.0});
+    EXPECT_DOUBLE_EQ(s.timeScale(), 2.0);
+    s.apply(cmd::ScaleTime{1e9});
+    EXPECT_DOUBLE_EQ(s.timeScale(), Session::kMaxTimeScale);
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(said(n, "Labels on"));
+    EXPECT_TRUE(said(n, "Arrows off"));
+    EXPECT_TRUE(said(n, "Time speed x8"));
+    EXPECT_TRUE(s.takeNotices().empty());  // taken once
+}
+
+TEST_F(SessionTest, PausedTheWorldStepsOnlyOnASingleStep) {
+    Session s = session();
+    s.update(1.0, 0.0);
+    EXPECT_EQ(s.world().time(), 0.0);
+    s.apply(cmd::SingleStep{});
+    s.update(0.0, 0.0);
+    EXPECT_DOUBLE_EQ(s.world().time(), s.world().solver().dt);
+}
+
+TEST_F(SessionTest, ModeCyclingAlwaysMovesOnAndSaysWhyAModeWasSkipped) {
+    Session s = session();
+    s.apply(cmd::ToggleGravity{});
+    std::vector<StepMode> seen;
+    for (int k = 0; k < 3; ++k) {
+        const StepMode before = s.world().solver().mode;
+        s.apply(cmd::NextMode{});
+        EXPECT_NE(s.world().solver().mode, before) << "press " << k;
+        seen.push_back(s.world().solver().mode);
+    }
+    // With a world that refuses exact mode under gravity, the message names the skip.
+    const auto n = s.takeNotices();
+    if (std::find(seen.begin(), seen.end(), StepMode::Exact) == seen.end()) {
+        EXPECT_TRUE(said(n, "exact skipped")) << "no reason given for the skipped mode";
+    }
+}
+
+TEST_F(SessionTest, HTurnsTheHelpsPagesAndClosesItAfterTheLast) {
+    SessionOptions o = options();
+    int asked = 0;
+    o.insets.helpPagesFor = [&asked](int width, int height) {
+        ++asked;
+        return width < 700 || height < 700 ? 2 : 1;
+    };
+    o.viewportWidth = 600;
+    o.viewportHeight = 600;
+    Session s(makeWorld(defaultScene()), "default", o);
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_TRUE(s.helpShown());
+    EXPECT_EQ(s.helpPage(), 0u);
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_TRUE(s.helpShown()) << "the second page, not closed";
+    EXPECT_EQ(s.helpPage(), 1u);
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_FALSE(s.helpShown());
+    EXPECT_GT(asked, 0);
+    // Opened again it starts at the first page; in a large window one press closes it.
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_EQ(s.helpPage(), 0u);
+    s.apply(cmd::Resize{1000, 1000});
+    s.apply(cmd::ToggleHelp{});
+    EXPECT_FALSE(s.helpShown());
+}
+
+TEST_F(SessionTest, EscClosesTheHelpFirstAndAsksBeforeLosingUnsavedChanges) {
+    Session s = session();
+    s.apply(cmd::ToggleHelp{});
+    s.apply(cmd::Back{});
+    EXPECT_FALSE(s.helpShown());
+    EXPECT_TRUE(s.running());
+    s.apply(cmd::SpawnRandom{});  // an unsaved change
+    ASSERT_TRUE(s.unsavedChanges());
+    s.apply(cmd::Back{});
+    EXPECT_TRUE(s.running());
+    EXPECT_TRUE(s.quitPending());
+    EXPECT_TRUE(said(s.takeNotices(), "Unsaved changes"));
+    s.apply(cmd::ToggleLabels{});  // any other command: stay
+    EXPECT_FALSE(s.quitPending());
+    s.apply(cmd::Back{});
+    s.apply(cmd::Back{});  // asked, answered
+    EXPECT_FALSE(s.running());
+}
+
+TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
+    Session s = session();
+    s.apply(cmd::Back{});
+    EXPECT_FALSE(s.running());
+    Session t = session();
+    t.apply(cmd::SpawnRandom{});
+    t.apply(cmd::Save{});
+    EXPECT_FALSE(t.unsavedChanges());
+    t.apply(cmd::Quit{});
+    EXPECT_FALSE(t.running());
+}
+
+TEST_F(SessionTest, ASaveKeepsTheScenesNameAndDescription) {
+    Session s = session();
+    s.apply(cmd::OpenFile{testAsset("scenes/05-mass-ratio.json")});
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Save{});
+    const Scene original = loadScene(testAsset("scenes/05-mass-ratio.json"));
+    const Scene saved = loadScene(dir_ / "save.json");
+    EXPECT_EQ(saved.name, original.name);
+    EXPECT_EQ(saved.description, original.description);
+    EXPECT_EQ(saved.particles.size(), original.particles.size() + 1);
+    // The first scene, given to the session by the app, too.
+    SessionOptions o = options();
+    o.saveTo = dir_ / "first.json";
+    o.sceneDescription = "A scene described.";
+    Session first(makeWorld(defaultScene()), "default", o);
+    first.apply(cmd::Save{});
+    EXPECT_EQ(loadScene(dir_ / "first.json").description, "A scene described.");
+}
+
+TEST_F(SessionTest, APresetOpensPausedAndANewSceneStartsAtTimeSpeedOne) {
+    SessionOptions o = options();
+    o.paused = false;
+    o.presets = testPresets();
+    ASSERT_GE(o.presets.size(), 13u);
+    Session s(makeWorld(defaultScene()), "default", o);
+    s.apply(cmd::ScaleTime{2.0});
+    s.apply(cmd::ScaleTime{2.0});
+    ASSERT_EQ(s.timeScale(), 4.0);
+    (void)s.takeNotices();
+    s.apply(cmd::OpenPreset{11});  // the 12th: Shift+2
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(s.paused());
+    EXPECT_EQ(s.timeScale(), 1.0);
+    EXPECT_TRUE(said(n, "time speed back to x1 (was x4)"));
+    EXPECT_TRUE(said(n, "Preset 12 of 13 (key Shift+2), paused: Space starts it"));
+    // Nothing moves until Space.
+    const double t = s.world().time();
+    s.update(0.5, 1.0);
+    EXPECT_EQ(s.world().time(), t);
+    s.apply(cmd::TogglePause{});
+    s.update(0.1, 1.1);
+    EXPECT_GT(s.world().time(), t);
+    // R keeps the time speed (the same scene).
+    s.apply(cmd::ScaleTime{0.5});
+    s.apply(cmd::Reset{});
+    EXPECT_EQ(s.timeScale(), 0.5);
+}
+
+TEST_F(SessionTest, NewParticlesFollowTheScenesScale) {
+    Session s = session();
+    s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+    const Scene board = loadScene(testAsset("scenes/09-galton-board.json"));
+    // The board's balls (its dropper's): 5 mm and a few grams, not the default scene's 10 kg.
+    ASSERT_EQ(board.droppers.size(), 1u);
+    EXPECT_EQ(s.spawn().radius(), board.droppers[0].radius);
+    EXPECT_LT(s.spawn().mass(), 0.01);
+    const double m = s.spawn().mass();
+    s.apply(cmd::ChangeSpawnMass{+1});
+    EXPECT_NEAR(s.spawn().mass(), 1.1 * m, 1e-12 * m);
+    // A launch makes one of those.
+    const Camera& c = s.camera();
+    const std::size_t n = s.world().size();
+    // Empty space above the top row of pegs, away from the spout.
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(0.03, 0.04)), 1.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(0.03, 0.04)), 1.5});
+    ASSERT_EQ(s.world().size(), n + 1);
+    EXPECT_NEAR(s.world().get(s.world().ids().back()).mass, 1.1 * m, 1e-12 * m);
+}
+
+TEST_F(SessionTest, SavingNeverOverwritesAnEarlierSaveAndNamesTheFullPath) {
+    Session s = session();
+    s.apply(cmd::Save{});
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Save{});
+    const auto n = s.takeNotices();
+    ASSERT_TRUE(fs::exists(dir_ / "save.json"));
+    ASSERT_TRUE(fs::exists(dir_ / "save-2.json"));
+    EXPECT_EQ(loadScene(dir_ / "save.json").particles.size(), 6u);  // the first is kept
+    EXPECT_EQ(loadScene(dir_ / "save-2.json").particles.size(), 7u);
+    EXPECT_TRUE(said(n, (dir_ / "save-2.json").string()));
+    EXPECT_TRUE(s.lastSave()->is_absolute());
+}
+
+TEST_F(SessionTest, ALaunchDraggedOutAndHeldStillHasTheDragsVelocityAsPreviewed) {
+    Session s = session();
+    const Vec2 from(1.0, 6.0), to(1.6, 5.4);  // empty space, 0.85 m up and right
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(from), 1.0});
+    s.apply(cmd::PointerMove{c.worldToScreen(to), 1.05});
+    const CappedVelocity preview = s.launchPreview();
+    s.apply(cmd::PointerUp{c.worldToScreen(to), 1.6});  // half a second still: at rest before
+    ASSERT_EQ(s.world().size(), 7u);
+    const Particle p = s.world().get(s.world().ids().back());
+    const Vec2 expected = (to - from) / s.view().arrowSeconds;
+    EXPECT_NEAR(p.velocity.x(), expected.x(), 0.02);
+    EXPECT_NEAR(p.velocity.y(), expected.y(), 0.02);
+    EXPECT_GT(p.velocity.norm(), 1.0);
+    EXPECT_EQ(p.velocity, preview.velocity);
+}
+
+TEST_F(SessionTest, ACappedLaunchIsShown) {
+    Session s = session();
+    s.apply(cmd::Zoom{Vec2(400, 400), 1.0 / 40.0});  // far out, so a drag spans many boxes
+    (void)s.takeNotices();
+    const Vec2 from(-30.0, 3.0), to(40.0, 3.0);
+    drag(s, from, to, 1.0);
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(said(n, "Speed capped at 14 m/s")) << (n.empty() ? "" : n.back().text);
+}
+
+TEST_F(SessionTest, TheHudCanShowTheTimeSpeedReached) {
+    Session s = session();
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::ScaleTime{8.0});
+    for (int k = 0; k < 60; ++k)
+        s.update(0.1, 0.0, 0.0);  // a budget of 0 ms: one step a frame
+    // One dt of 1/60 s per 0.1 s of real time: x0.17 reached of x8 asked.
+    EXPECT_NEAR(s.reachedTimeScale(), s.world().solver().dt / 0.1, 0.02);
+    EXPECT_LT(s.reachedTimeScale(), s.timeScale());
+}
+
+TEST_F(SessionTest, StepsThatKeepUpShowTheSpeedAsked) {
+    // Frames of uneven length make some frames step twice and others not at all; the speed
+    // reached must not then read as "steps too slow" when nothing was ever dropped.
+    Session s = session();
+    s.apply(cmd::TogglePause{});
+    double now = 0.0;
+    for (int k = 0; k < 120; ++k) {
+        const double frame = (k % 3 == 0) ? 0.004 : 0.023;
+        now += frame;
+        s.update(frame, now, 1e9);
+    }
+    EXPECT_EQ(s.reachedTimeScale(), s.timeScale());
+}
+
+TEST_F(SessionTest, AFittedViewLeavesTheMessagesBandAndThePanelColumnFree) {
+    Session s = session();
+    const auto box = [&] { return s.camera().boxOnScreen(7.0, 7.0); };
+    const ViewInsets in = options().insets;
+    EXPECT_LE(box().topLeft.y() + box().size.y(), 800.0 - in.bottom);
+    EXPECT_GE(box().topLeft.y(), in.top);
+    s.apply(cmd::TogglePlots{});
+    EXPECT_LE(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);
+    s.apply(cmd::TogglePlots{});
+    EXPECT_GT(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);  // room back
+}
+
+TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
+    // A window wider than the box needs: the box moves left, keeping its size, so that the
+    // inspector (bottom right, when a particle is clicked) does not cover it.
+    SessionOptions o = options();
+    o.insets.inspectorColumn = 240.0;
+    const auto boxAt = [&](double inspector) {
+        o.insets.inspectorColumn = inspector;
+        Session s(makeWorld(defaultScene()), "default", o);
+        s.apply(cmd::Resize{800, 600});
+        return s.camera().boxOnScreen(7.0, 7.0);
+    };
+    const auto centred = boxAt(0.0), moved = boxAt(240.0);
+    EXPECT_NEAR(moved.size.x(), centred.size.x(), 1e-9);  // no smaller
+    EXPECT_LE(moved.topLeft.x() + moved.size.x(), 800.0 - 240.0 + 1e-9);
+    // A window with no width to spare keeps the box as big as it was.
+    o.insets.inspectorColumn = 240.0;
+    Session square(makeWorld(defaultScene()), "default", o);
+    square.apply(cmd::Resize{600, 900});
+    o.insets.inspectorColumn = 0.0;
+    Session plain(makeWorld(defaultScene()), "default", o);
+    plain.apply(cmd::Resize{600, 900});
+    EXPECT_NEAR(square.camera().zoom(), plain.camera().zoom(), 1e-12);
+}
+
+TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
+    Session s = session();
+    const double before = s.camera().zoom();
+    s.apply(cmd::Resize{1200, 1200});
+    EXPECT_GT(s.camera().zoom(), 1.4 * before);
+    const auto b = s.camera().boxOnScreen(7.0, 7.0);
+    EXPECT_NEAR(b.topLeft.x() + b.size.x() / 2.0, 600.0, 1.0);
+    // A view the user moved keeps its zoom.
+    s.apply(cmd::Pan{Vec2(30, 0)});
+    const double z = s.camera().zoom();
+    s.apply(cmd::Resize{900, 900});
+    EXPECT_DOUBLE_EQ(s.camera().zoom(), z);
+}
+
+TEST_F(SessionTest, MFindsRoomInTheGasPreset) {
+    Session s(makeWorld(loadScene(testAsset("scenes/04-gas-in-a-box.json"))), "gas", options());
+    const std::size_t n = s.world().size();
+    for (int k = 0; k < 10; ++k)
+        s.apply(cmd::SpawnRandom{});
+    EXPECT_GE(s.world().size() - n, 8u);
+    EXPECT_NEAR(maxOverlapBruteForce(s.world()), 0.0, 1e-12);
+}
+
+TEST_F(SessionTest, AParticleDraggedIntoAnotherWhilePausedShowsItsOverlap) {
+    for (const StepMode mode : {StepMode::Discrete, StepMode::Exact}) {
+        Session s = session();
+        while (s.world().solver().mode != mode)
+            s.apply(cmd::NextMode{});
+        s.update(0.0, 0.0);
+        ASSERT_EQ(s.accuracy().overlap(), 0.0);
+        // The yellow disc (5.2, 1.6), r 0.45, dragged onto the orange one (6.0, 3.3), r 0.375.
+        const Camera& c = s.camera();
+        s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
+        s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.8, 3.0)), 1.2});
+        s.update(0.0, 1.2);
+        const double truth = maxOverlapBruteForce(s.world());
+        EXPECT_GT(truth, 0.3);
+        EXPECT_NEAR(s.accuracy().overlap(), truth, 1e-12) << toString(mode);
+    }
+}
+
+TEST_F(SessionTest, TheEditPromptTakesTheKeyboard) {
+    Session s = session();
+    const Vec2 yellow(5.2, 1.6);
+    s.apply(cmd::PointerDown{s.camera().worldToScreen(yellow), 1.0});
+    s.apply(cmd::PointerUp{s.camera().worldToScreen(yellow), 1.05});
+    ASSERT_TRUE(s.selection().id().has_value());
+    s.apply(cmd::OpenEdit{});
+    ASSERT_TRUE(s.prompt().active());
+    s.apply(cmd::ToggleGravity{});  // a key that is not the prompt's: ignored
+    EXPECT_EQ(s.world().def().gravity, Vec2::Zero());
+    s.apply(cmd::Back{});  // closes the prompt, does not quit
+    EXPECT_FALSE(s.prompt().active());
+    EXPECT_TRUE(s.running());
+}
+
+TEST_F(SessionTest, ResetRestoresTheSceneAsLoaded) {
+    Session s = session();
+    const std::uint64_t loaded = test::stateHash(s.world());
+    const std::uint64_t generation = s.sceneGeneration();
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::ChangeRestitution{-1});
+    s.apply(cmd::Reset{});
+    EXPECT_EQ(test::stateHash(s.world()), loaded);
+    EXPECT_NE(s.sceneGeneration(), generation);
+    EXPECT_FALSE(s.unsavedChanges());
+}
+
+}  // namespace
+}  // namespace psb::app

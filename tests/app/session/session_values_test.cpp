@@ -1,0 +1,352 @@
+// The session's value commands (session_values.cpp): what the control panel's controls send.
+// Each sets its value, refuses a bad one with a message and no change, and counts as one user
+// action, a slider's whole drag included.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "session/scene_io.hpp"
+#include "session/session.hpp"
+#include "session/session_fixture.hpp"
+#include "session/test_assets.hpp"
+#include "session/view_insets.hpp"
+
+namespace psb::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class SessionValues : public SessionFixture {
+  protected:
+    SessionValues()
+        : SessionFixture(
+              "psb-session-values",
+              TestWindow{
+                  1000, 800, {60.0, 44.0, kSideColumnMaxWidth + kPanelMargin, 310.0, 34.0}, true}) {
+    }
+
+    /// A left-button drag in world metres, 5 moves over 100 ms.
+    static void drag(Session& s, Vec2 from, Vec2 to, double t0) {
+        psb::app::drag(s, from, to, t0, 5, 0.02);
+    }
+    /// A free spot in the default scene's 7 m box.
+    [[nodiscard]] static Vec2 emptySpot(const Session& s) {
+        for (double y = 0.5; y < 6.5; y += 0.25) {
+            for (double x = 0.5; x < 6.5; x += 0.25) {
+                if (!s.world().pick(Vec2(x, y)) &&
+                    findFreeSpot(s.world(), Vec2(x, y), 0.6) == std::optional<Vec2>(Vec2(x, y))) {
+                    return {x, y};
+                }
+            }
+        }
+        return {3.5, 3.5};
+    }
+};
+
+TEST_F(SessionValues, ASliderDragIsOneUserActionAndANewDragAnother) {
+    Session s = session();
+    const auto before = s.userActions();
+    s.apply(cmd::SetRestitution{0.9, false});
+    for (int k = 1; k <= 50; ++k)
+        s.apply(cmd::SetRestitution{0.9 - 0.01 * k, true});
+    EXPECT_DOUBLE_EQ(s.world().def().restitution, 0.4);
+    EXPECT_EQ(s.userActions(), before + 1);
+    EXPECT_EQ(s.lastAction(), "set restitution");
+    EXPECT_TRUE(s.unsavedChanges());
+    s.apply(cmd::SetRestitution{0.7, false});
+    EXPECT_EQ(s.userActions(), before + 2);
+    // A continuing command of another control is a new action.
+    s.apply(cmd::SetFriction{0.2, true});
+    EXPECT_EQ(s.userActions(), before + 3);
+    EXPECT_EQ(s.lastAction(), "set friction");
+}
+
+TEST_F(SessionValues, RestitutionAndFrictionOutOfRangeAreRefusedAndChangeNothing) {
+    Session s = session();
+    for (const double bad : {-0.1, 1.5, std::numeric_limits<double>::quiet_NaN()}) {
+        s.apply(cmd::SetRestitution{bad});
+        EXPECT_TRUE(said(s.takeNotices(), "Restitution must be between 0 and 1")) << bad;
+        EXPECT_DOUBLE_EQ(s.world().def().restitution, 1.0);
+    }
+    s.apply(cmd::SetFriction{-1.0});
+    EXPECT_TRUE(said(s.takeNotices(), "Friction must be a number >= 0"));
+    s.apply(cmd::SetFriction{0.35});
+    EXPECT_DOUBLE_EQ(s.world().def().friction, 0.35);
+    EXPECT_FALSE(s.unsavedChanges() && s.userActions() == 0);
+}
+
+TEST_F(SessionValues, GravityOnWithItsValueOffAndBadValuesRefused) {
+    Session s = session();
+    s.apply(cmd::SetGravity{true, 9.81});
+    EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 9.81));
+    EXPECT_TRUE(said(s.takeNotices(), "Gravity [0, 9.81] m/s\u00b2"));
+    s.apply(cmd::SetGravity{true, 1.62, true});
+    EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 1.62));
+    for (const double bad : {0.0, -9.81, 1e9, std::numeric_limits<double>::infinity()}) {
+        s.apply(cmd::SetGravity{true, bad});
+        EXPECT_TRUE(said(s.takeNotices(), "Gravity must be above 0")) << bad;
+        EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 1.62));
+    }
+    s.apply(cmd::SetGravity{false});
+    EXPECT_EQ(s.world().def().gravity, Vec2::Zero());
+}
+
+TEST_F(SessionValues, WallsOnAndOff) {
+    Session s = session();
+    s.apply(cmd::SetWalls{false});
+    EXPECT_FALSE(s.world().def().walls);
+    EXPECT_TRUE(said(s.takeNotices(), "Walls off"));
+    s.apply(cmd::SetWalls{true});
+    EXPECT_TRUE(s.world().def().walls);
+}
+
+TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
+    Session s = session();
+    s.apply(cmd::SetMode{StepMode::Substep, 8});
+    EXPECT_EQ(s.world().solver().mode, StepMode::Substep);
+    EXPECT_EQ(s.world().solver().substeps, 8);
+    s.apply(cmd::SetMode{StepMode::Substep, 1});  // one substep would be the discrete mode
+    EXPECT_EQ(s.world().solver().substeps, 2);
+    s.apply(cmd::SetMode{StepMode::Exact});
+    EXPECT_EQ(s.world().solver().mode, StepMode::Exact);
+    EXPECT_TRUE(s.modeRefusal(StepMode::Exact).empty());
+
+    World pegs(s.world().def());
+    pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
+    s.setWorld(std::move(pegs), "pegs");
+    (void)s.takeNotices();
+    EXPECT_TRUE(s.modeRefusal(StepMode::Exact).empty());
+    s.apply(cmd::SetMode{StepMode::Exact});
+    EXPECT_EQ(s.world().solver().mode, StepMode::Exact);
+}
+
+TEST_F(SessionValues, TimeSpeedIsSetWithinItsLimits) {
+    Session s = session();
+    s.apply(cmd::SetTimeScale{0.25});
+    EXPECT_DOUBLE_EQ(s.timeScale(), 0.25);
+    s.apply(cmd::SetTimeScale{1000.0});
+    EXPECT_DOUBLE_EQ(s.timeScale(), Session::kMaxTimeScale);
+    s.apply(cmd::SetTimeScale{0.0});
+    EXPECT_DOUBLE_EQ(s.timeScale(), Session::kMinTimeScale);
+    s.apply(cmd::SetTimeScale{std::numeric_limits<double>::quiet_NaN()});
+    EXPECT_DOUBLE_EQ(s.timeScale(), Session::kMinTimeScale);
+}
+
+TEST_F(SessionValues, TheLaunchToolLaunchesEvenFromAParticle) {
+    Session s = session();
+    s.apply(cmd::SetTool{cmd::Tool::Launch});
+    const Particle p = s.world().get(s.world().ids().front());
+    const std::size_t n = s.world().size();
+    drag(s, p.position, p.position + Vec2(1.0, 0.0), 1.0);
+    EXPECT_EQ(s.world().size(), n + 1);
+    EXPECT_EQ(s.world().get(p.id).position, p.position);  // not grabbed
+    EXPECT_EQ(s.lastAction(), "launch particle");
+}
+
+TEST_F(SessionValues, TheSelectToolSelectsAndNeverMovesAnything) {
+    Session s = session();
+    s.apply(cmd::SetTool{cmd::Tool::Select});
+    const Particle p = s.world().get(s.world().ids().back());
+    const std::size_t n = s.world().size();
+    drag(s, p.position, p.position + Vec2(1.0, 1.0), 1.0);
+    EXPECT_EQ(s.world().size(), n);
+    EXPECT_EQ(s.world().get(p.id).position, p.position);
+    s.apply(cmd::PointerDown{s.camera().worldToScreen(p.position), 2.0});
+    s.apply(cmd::PointerUp{s.camera().worldToScreen(p.position), 2.05});
+    ASSERT_TRUE(s.selection().id());
+    EXPECT_EQ(*s.selection().id(), p.id);
+    EXPECT_FALSE(s.unsavedChanges());
+}
+
+TEST_F(SessionValues, ThePanToolMovesTheView) {
+    Session s = session();
+    s.apply(cmd::SetTool{cmd::Tool::Pan});
+    const Vec2 before = s.camera().worldToScreen(Vec2::Zero());
+    const std::size_t n = s.world().size();
+    // Screen points: the view moves under the hand.
+    const Vec2 from = s.camera().worldToScreen(emptySpot(s));
+    s.apply(cmd::PointerDown{from, 1.0});
+    for (int k = 1; k <= 5; ++k)
+        s.apply(cmd::PointerMove{from + Vec2(20.0 * k, 0.0), 1.0 + 0.02 * k});
+    s.apply(cmd::PointerUp{from + Vec2(100.0, 0.0), 1.1});
+    const Vec2 after = s.camera().worldToScreen(Vec2::Zero());
+    EXPECT_NEAR(after.x() - before.x(), 100.0, 1e-9);
+    EXPECT_EQ(s.world().size(), n);
+}
+
+TEST_F(SessionValues, ALaunchUsesTheChosenMassRadiusAndColour) {
+    Session s = session();
+    s.apply(cmd::SetLaunchBody{2.5, 0.2, Color{10, 20, 30}});
+    EXPECT_DOUBLE_EQ(s.spawn().mass(), 2.5);
+    EXPECT_DOUBLE_EQ(s.spawn().radius(), 0.2);
+    const Vec2 at = emptySpot(s);
+    drag(s, at, at + Vec2(0.5, 0.0), 1.0);
+    const Particle p = s.world().get(s.world().ids().back());
+    EXPECT_DOUBLE_EQ(p.mass, 2.5);
+    EXPECT_DOUBLE_EQ(p.radius, 0.2);
+    EXPECT_EQ(p.color, (Color{10, 20, 30}));
+    // Radius 0 follows the mass again; bad values are refused.
+    s.apply(cmd::SetLaunchBody{4.0, 0.0, std::nullopt});
+    EXPECT_DOUBLE_EQ(s.spawn().radius(), s.spawn().typicalRadius * 4.0 / s.spawn().typicalMass);
+    s.apply(cmd::SetLaunchBody{-1.0, 0.1, std::nullopt});
+    EXPECT_TRUE(said(s.takeNotices(), "Launch mass must be between"));
+    s.apply(cmd::SetLaunchBody{1.0, 100.0, std::nullopt});
+    EXPECT_TRUE(said(s.takeNotices(), "Launch radius must be above 0 and at most half the box"));
+    EXPECT_DOUBLE_EQ(s.spawn().mass(), 4.0);
+}
+
+TEST_F(SessionValues, EditingOneFieldAppliesItOrRefusesWithTheReason) {
+    Session s = session();
+    const ParticleId id = s.world().ids().front();
+    s.apply(cmd::Select{id});
+    s.apply(cmd::EditParticle{id, ParticleField::Vx, "1.5"});
+    EXPECT_DOUBLE_EQ(s.world().get(id).velocity.x(), 1.5);
+    EXPECT_EQ(s.lastAction(), "edit particle");
+    EXPECT_TRUE(s.editRefusal().empty());
+    const Particle before = s.world().get(id);
+    s.apply(cmd::EditParticle{id, ParticleField::X, "100"});
+    EXPECT_NE(s.editRefusal().find("x: 100 m is outside the box"), std::string::npos)
+        << s.editRefusal();
+    s.apply(cmd::EditParticle{id, ParticleField::Mass, "heavy"});
+    EXPECT_NE(s.editRefusal().find("mass: 'heavy' is not a number"), std::string::npos);
+    s.apply(cmd::EditParticle{id, ParticleField::Radius, "-1"});
+    EXPECT_NE(s.editRefusal().find("radius: must be > 0"), std::string::npos);
+    const Particle after = s.world().get(id);
+    EXPECT_EQ(after.position, before.position);
+    EXPECT_EQ(after.mass, before.mass);
+    EXPECT_EQ(after.radius, before.radius);
+    // Onto another particle: refused, naming it.
+    const Particle other = s.world().get(s.world().ids().back());
+    s.apply(cmd::EditParticle{id, ParticleField::X, std::to_string(other.position.x())});
+    s.apply(cmd::EditParticle{id, ParticleField::Y, std::to_string(other.position.y())});
+    EXPECT_NE(s.editRefusal().find("would overlap the particle at"), std::string::npos)
+        << s.editRefusal();
+}
+
+TEST_F(SessionValues, SelectFromATableAndClear) {
+    Session s = session();
+    const ParticleId id = s.world().ids().back();
+    s.apply(cmd::Select{id});
+    ASSERT_TRUE(s.selected());
+    EXPECT_EQ(s.selected()->id, id);
+    s.apply(cmd::Select{kNullParticle});
+    EXPECT_FALSE(s.selected());
+}
+
+TEST_F(SessionValues, ShowOptionsAreSetAndTheSideColumnRefitsTheBox) {
+    Session s = session();
+    s.apply(cmd::SetShow{cmd::ShowOption::Labels, true});
+    EXPECT_TRUE(s.view().labels);
+    s.apply(cmd::SetShow{cmd::ShowOption::Arrows, false});
+    EXPECT_FALSE(s.view().arrows);
+    const double w = s.world().def().width;
+    const double rightBefore = s.camera().worldToScreen(Vec2(w, 0.0)).x();
+    s.apply(cmd::SetShow{cmd::ShowOption::Plots, true});
+    EXPECT_TRUE(s.view().plots);
+    const double rightAfter = s.camera().worldToScreen(Vec2(w, 0.0)).x();
+    EXPECT_LE(rightAfter, 1000.0 - sideColumnWidth(1000, 310) - kPanelMargin + 1e-9);
+    EXPECT_LT(rightAfter, rightBefore);
+    s.apply(cmd::SetTrails{2});
+    EXPECT_EQ(s.view().trails, TrailMode::All);
+}
+
+TEST_F(SessionValues, TheBoxIsFittedBesideTheControlPanelOpenOrFolded) {
+    Session s = session();
+    EXPECT_TRUE(s.controlsShown());
+    EXPECT_GE(s.camera().worldToScreen(Vec2::Zero()).x(), 310.0);
+    s.apply(cmd::ToggleControls{});
+    EXPECT_FALSE(s.controlsShown());
+    EXPECT_DOUBLE_EQ(s.controlsInset(), 34.0);
+    const double x = s.camera().worldToScreen(Vec2::Zero()).x();
+    EXPECT_GE(x, 34.0);
+    EXPECT_LT(x, 310.0);
+}
+
+TEST_F(SessionValues, SaveAsWritesThePathKeepsAnOlderFileAndRemembersIt) {
+    Session s = session();
+    s.apply(cmd::SaveAs{dir_ / "lesson"});
+    ASSERT_TRUE(s.lastSave());
+    EXPECT_EQ(*s.lastSave(), fs::absolute(dir_ / "lesson.json").lexically_normal());
+    EXPECT_TRUE(fs::exists(dir_ / "lesson.json"));
+    EXPECT_EQ(loadScene(dir_ / "lesson.json").particles.size(), s.world().size());
+    s.apply(cmd::SaveAs{dir_ / "lesson.json"});
+    EXPECT_EQ(s.lastSave()->filename(), "lesson-2.json");
+    ASSERT_EQ(s.recentFiles().size(), 2u);
+    EXPECT_EQ(s.recentFiles().front().filename(), "lesson-2.json");
+    s.apply(cmd::SaveAs{""});
+    EXPECT_TRUE(said(s.takeNotices(), "type a file name first"));
+    EXPECT_TRUE(s.fileError().empty());
+    s.apply(cmd::SaveAs{dir_ / "no-such-dir" / "x.json"});
+    EXPECT_TRUE(said(s.takeNotices(), "Save failed"));
+    // The panel shows the failure, not the save before it.
+    EXPECT_EQ(s.fileError().rfind("Save failed: ", 0), 0u) << s.fileError();
+    s.apply(cmd::OpenFile{dir_ / "no-such-scene.json"});
+    EXPECT_EQ(s.fileError().rfind("Cannot open scene: ", 0), 0u) << s.fileError();
+    s.apply(cmd::SaveAs{dir_ / "again.json"});
+    EXPECT_TRUE(s.fileError().empty());
+}
+
+TEST_F(SessionValues, SaveAsDropsTrailingDotsAndRefusesANameWithoutAStem) {
+    Session s = session();
+    s.apply(cmd::SaveAs{dir_ / "a."});
+    ASSERT_TRUE(s.lastSave());
+    EXPECT_EQ(s.lastSave()->filename(), "a.json");
+    EXPECT_FALSE(fs::exists(dir_ / "a."));
+    s.apply(cmd::SaveAs{dir_ / ".json"});
+    EXPECT_TRUE(said(s.takeNotices(), "hidden file"));
+    EXPECT_FALSE(fs::exists(dir_ / ".json"));
+    EXPECT_FALSE(fs::exists(dir_ / ".json.json"));
+    s.apply(cmd::SaveAs{dir_ / "..."});
+    EXPECT_TRUE(said(s.takeNotices(), "is not a file name"));
+    EXPECT_EQ(s.lastSave()->filename(), "a.json");  // the refused names saved nothing
+}
+
+TEST_F(SessionValues, AnotherSceneForgetsTheLastOnesOverlap) {
+    Session s = session();
+    // Two particles pressed into each other, measured by a frame.
+    WorldDef def = s.world().def();
+    World pressed(def);
+    ParticleDef a;
+    a.position = {3.0, 3.0};
+    a.radius = 0.5;
+    pressed.add(a);
+    a.position = {3.5, 3.0};
+    pressed.add(a);
+    s.setWorld(std::move(pressed), "pressed");
+    s.update(0.0, 0.0);
+    ASSERT_GT(s.accuracy().overlap(), 0.4);
+    s.setWorld(World(def), "empty");
+    EXPECT_EQ(s.accuracy().overlap(), 0.0);
+}
+
+TEST_F(SessionValues, EveryPresetIsListedWithANameAndAOneLineSummary) {
+    Session s = session();
+    ASSERT_EQ(s.presets().size(), testPresets().size());
+    ASSERT_GE(s.presets().size(), 13u);
+    for (const SceneInfo& p : s.presets()) {
+        EXPECT_FALSE(p.name.empty()) << p.file;
+        EXPECT_FALSE(p.summary.empty()) << p.file;
+        EXPECT_EQ(p.summary.find('\n'), std::string::npos) << p.file;
+        EXPECT_LE(p.summary.size(), p.description.size()) << p.file;
+    }
+    EXPECT_EQ(s.presets()[1].name, "Newton's cradle");
+}
+
+TEST_F(SessionValues, PanelCommandsStillWorkWhileTheEditPromptIsOpen) {
+    Session s = session();
+    s.apply(cmd::Select{s.world().ids().front()});
+    s.apply(cmd::OpenEdit{});
+    ASSERT_TRUE(s.prompt().active());
+    s.apply(cmd::SetRestitution{0.5});
+    EXPECT_DOUBLE_EQ(s.world().def().restitution, 0.5);
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,55 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "session/units.hpp"
+
+namespace psb::app {
+namespace {
+
+TEST(Units, SimpleUnitsTakeAnSiPrefixAndThreeFigures) {
+    EXPECT_EQ(quantity(4.039e6, "J"), "4.04 MJ");
+    EXPECT_EQ(quantity(173.9, "J"), "174 J");
+    EXPECT_EQ(quantity(0.3, "m"), "300 mm");
+    EXPECT_EQ(quantity(0.00123, "m"), "1.23 mm");
+    EXPECT_EQ(quantity(12.345, "s"), "12.3 s");
+    EXPECT_EQ(quantity(-2.5e-7, "m"), "-250 nm");
+    EXPECT_EQ(quantity(999.7e3, "J"), "1.00 MJ");  // rounding carries to the next prefix
+    EXPECT_EQ(quantity(0.0, "J"), "0 J");
+}
+
+TEST(Units, CompoundUnitsGroupDigitsInstead) {
+    EXPECT_EQ(quantity(40390.0, "kg m/s", false), "40 400 kg m/s");
+    EXPECT_EQ(quantity(-1234567.0, "kg m/s", false), "-1 230 000 kg m/s");
+    EXPECT_EQ(quantity(54.06, "kg m/s", false), "54.1 kg m/s");
+    EXPECT_EQ(quantity(0.00123, "kg m/s", false), "0.00123 kg m/s");
+}
+
+TEST(Units, NoExponentNotationAndNonFiniteValuesInWords) {
+    for (const double v : {4.039e6, 1e12, 3e-9, -7.7e8}) {
+        EXPECT_EQ(quantity(v, "J").find('e'), std::string::npos) << quantity(v, "J");
+        EXPECT_EQ(quantity(v, "kg m/s", false).find("e+"), std::string::npos);
+    }
+    EXPECT_EQ(quantity(std::numeric_limits<double>::quiet_NaN(), "J"), "n/a");
+    EXPECT_EQ(quantity(-std::numeric_limits<double>::infinity(), "J"), "-infinite");
+}
+
+TEST(Units, AccuracyInWords) {
+    EXPECT_EQ(keptWords(3e-14), "kept to 1 part in 10^13");
+    EXPECT_EQ(keptWords(-2.5e-4), "kept to 1 part in 10^3");
+    EXPECT_EQ(keptWords(0.0), "kept exactly (to rounding)");
+    EXPECT_EQ(keptWords(0.023), "changed by 2.30 %");
+    EXPECT_EQ(keptWords(std::numeric_limits<double>::quiet_NaN()), "not measured");
+}
+
+TEST(Units, OverlapInWords) {
+    EXPECT_EQ(overlapWords(0.0012, 0.004), "Particles overlap by up to 1.20 mm");
+    EXPECT_EQ(overlapWords(0.0, 0.004), "No particles overlap");
+    // The exact mode's touching discs: rounding, not an overlap of 65.9 am.
+    EXPECT_EQ(overlapWords(65.9e-18, 0.004), "No particles overlap (beyond rounding)");
+    EXPECT_EQ(overlapWords(5e-12, 0.004), "Particles overlap by up to 5.00 pm");
+}
+
+}  // namespace
+}  // namespace psb::app

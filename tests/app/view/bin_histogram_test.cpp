@@ -1,0 +1,192 @@
+// The bins panel's words (legend and verdict, from the same counts the chart draws), the
+// dropper's label, and the session's keeping of a scene's bins (shown by default, switched in
+// the Show section, kept by save and undo). The chart's drawing: render/bin_chart_test.cpp.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "session/session.hpp"
+#include "session/test_assets.hpp"
+#include "temp_dir_test.hpp"
+#include "view/bin_histogram.hpp"
+#include "view/frame_view.hpp"
+#include "view/screen_layout.hpp"
+
+namespace psb::app {
+namespace {
+
+/// Bins of width 1 from x = 0 to 9 below y = 5: Binomial(8, 1/2).
+Bins eightRows() {
+    Bins b;
+    for (int k = 0; k <= 9; ++k)
+        b.edges.push_back(k);
+    b.top = 5.0;
+    b.binomial = BinomialExpectation{8, 0.5};
+    return b;
+}
+
+/// `n[k]` particles in bin k (centre k + 1/2, below the top), and `falling` above it.
+ParticleArrays landed(const std::vector<int>& n, int falling = 0) {
+    ParticleArrays p;
+    for (std::size_t k = 0; k < n.size(); ++k) {
+        for (int i = 0; i < n[k]; ++i) {
+            p.x.push_back(static_cast<double>(k) + 0.5);
+            p.y.push_back(6.0);
+        }
+    }
+    for (int i = 0; i < falling; ++i) {
+        p.x.push_back(4.5);
+        p.y.push_back(1.0);
+    }
+    return p;
+}
+
+/// Counts close to 1000 × Binomial(8, 1/2).
+const std::vector<int> kBell = {4, 31, 109, 219, 273, 219, 109, 31, 5};
+
+TEST(BinHistogram, SaysInWordsWhatTheBarsDotsAndCurveAreAndHowFarTheCountsAreFromIt) {
+    const BinHistogram h = binHistogram(eightRows(), landed(kBell, 12));
+    ASSERT_EQ(h.legend.size(), 4u);
+    EXPECT_EQ(h.legend[0], "bars: balls in each bin (1000 landed, 12 not yet in the bins)");
+    EXPECT_EQ(h.legend[1], "dots: binomial, 8 rows, p = 1/2");
+    EXPECT_EQ(h.legend[2], "line: normal curve (mean 4, spread 1.41 bins)");
+    EXPECT_EQ(h.legend[3].rfind("close to the curve: chi-squared ", 0), 0u) << h.legend[3];
+    EXPECT_NE(h.legend[3].find("< 16.8"), std::string::npos) << h.legend[3];
+    EXPECT_EQ(h.now.counts.counts[4], 273u);
+    EXPECT_NEAR(h.now.expected[4], 1000.0 * 70.0 / 256.0, 1e-9);
+}
+
+TEST(BinHistogram, AFlatPileIsFarFromTheCurveAndAFewBallsAreTooFewToJudge) {
+    const BinHistogram flat = binHistogram(eightRows(), landed(std::vector<int>(9, 100)));
+    EXPECT_EQ(flat.legend[3].rfind("far from the curve: chi-squared ", 0), 0u) << flat.legend[3];
+    EXPECT_NE(flat.legend[3].find("> 16.8"), std::string::npos) << flat.legend[3];
+    const BinHistogram few = binHistogram(eightRows(), landed({0, 0, 0, 1, 2, 1}, 900));
+    EXPECT_EQ(few.legend[0], "bars: balls in each bin (4 landed, 900 not yet in the bins)");
+    EXPECT_EQ(few.legend[3], "too few balls yet to compare with the curve");
+}
+
+TEST(BinHistogram, BinsWithoutAnExpectationOnlyCount) {
+    Bins b = eightRows();
+    b.binomial.reset();
+    ParticleArrays p = landed({1, 2});
+    p.x.push_back(-3.0);  // below the top, left of the bins
+    p.y.push_back(6.0);
+    const BinHistogram h = binHistogram(b, p);
+    ASSERT_EQ(h.legend.size(), 1u);
+    EXPECT_EQ(h.legend[0], "bars: balls in each bin (3 landed, 1 outside the bins)");
+    EXPECT_TRUE(h.now.expected.empty());
+}
+
+TEST(BinHistogram, TheNormalCurveHasTheBinomialsMeanSpreadAndTotal) {
+    const BinomialExpectation b{8, 0.5};
+    double sum = 0.0;
+    for (int i = -400; i <= 1200; ++i)
+        sum += normalCount(i / 100.0, b, 1000.0) / 100.0;
+    EXPECT_NEAR(sum, 1000.0, 1e-3);  // the tails beyond 5.6 sigma are left out
+    EXPECT_NEAR(normalCount(4.0, b, 1000.0), 1000.0 / (std::sqrt(2.0) * std::sqrt(2.0 * M_PI)),
+                1e-9);
+    EXPECT_LT(normalCount(5.0, b, 1000.0), normalCount(4.0, b, 1000.0));
+    EXPECT_EQ(normalCount(1.0, {3, 1.0}, 10.0), 0.0);  // no spread: no curve
+    EXPECT_EQ(probabilityText(0.5), "1/2");
+    EXPECT_EQ(probabilityText(0.25), "0.25");
+}
+
+class SessionBinsTest : public TempDirTest {
+  protected:
+    SessionBinsTest() : TempDirTest("psb-session-bins") {}
+    [[nodiscard]] Session session() const {
+        SessionOptions o;
+        o.saveTo = dir_ / "save.json";
+        o.paused = true;
+        o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
+        return Session(makeWorld(psb::defaultScene()), "default", o);
+    }
+    void writeBoard() const {
+        std::ofstream(dir_ / "board.json") << R"({"version": 3, "name": "board",
+            "world": {"width": 1, "height": 1},
+            "bins": {"edges": [0, 0.5, 1], "top": 0.5,
+                     "expected": {"binomial": {"trials": 1, "p": 0.5}}}})";
+    }
+};
+
+TEST_F(SessionBinsTest, AScenesBinsAreShownUnlessSwitchedOffAndKeptBySaveAndUndo) {
+    Session s = session();
+    EXPECT_FALSE(s.sceneBins());
+    EXPECT_FALSE(s.binsShown());  // the default scene has none
+    writeBoard();
+    s.apply(cmd::OpenFile{dir_ / "board.json"});
+    ASSERT_TRUE(s.sceneBins());
+    EXPECT_EQ(s.sceneBins()->edges, (std::vector<double>{0, 0.5, 1}));
+    EXPECT_TRUE(s.binsShown());
+    s.apply(cmd::SetShow{cmd::ShowOption::Bins, false});
+    EXPECT_FALSE(s.binsShown());
+    s.apply(cmd::SetShow{cmd::ShowOption::Bins, true});
+    EXPECT_TRUE(s.binsShown());
+
+    s.apply(cmd::SaveAs{dir_ / "saved.json"});
+    EXPECT_EQ(loadScene(dir_ / "saved.json").bins, s.sceneBins());
+
+    s.apply(cmd::OpenFile{testAsset("scenes/01-original.json")});
+    EXPECT_FALSE(s.sceneBins());
+    EXPECT_FALSE(s.binsShown());
+    s.apply(cmd::Undo{});  // back to the board, bins and all
+    ASSERT_TRUE(s.sceneBins());
+    EXPECT_TRUE(s.binsShown());
+    s.apply(cmd::Reset{});
+    EXPECT_TRUE(s.sceneBins());
+}
+
+TEST_F(SessionBinsTest, TheGaltonPresetHasBinsForEachRowCount) {
+    Session s = session();
+    s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+    ASSERT_TRUE(s.sceneBins());
+    ASSERT_TRUE(s.sceneBins()->binomial);
+    EXPECT_EQ(s.sceneBins()->size(), static_cast<std::size_t>(s.sceneBins()->binomial->trials) + 1);
+    EXPECT_TRUE(s.binsShown());
+}
+
+TEST_F(SessionBinsTest, TheGaltonBoardsDropperCountsDownAndSaveAndResetKeepItsState) {
+    Session s = session();
+    s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+    ASSERT_EQ(s.world().droppers().size(), 1u);
+    EXPECT_EQ(s.world().droppers()[0].balls, 1000u);
+    EXPECT_EQ(s.world().size(), 0u);
+    // Half a second of frames (1/60 s each): a ball every 0.05 s from t = 0.
+    for (int k = 0; k < 30; ++k) {
+        s.apply(cmd::SingleStep{});
+        s.update(0.0, 0.0);
+    }
+    EXPECT_EQ(s.world().droppers()[0].balls, 990u);
+    EXPECT_EQ(s.world().size(), 10u);
+    // The legend counts the balls still in the dropper.
+    const BinHistogram h = binHistogram(*s.sceneBins(), s.world().particles(), 990);
+    EXPECT_EQ(h.legend[0],
+              "bars: balls in each bin (0 landed, 10 not yet in the bins, 990 still to drop)");
+    EXPECT_EQ(dropperLabel(s.world().droppers()[0]), "dropper: 990 balls left");
+    // Saved with how far it has got; reset gives the full dropper back.
+    s.apply(cmd::SaveAs{dir_ / "galton.json"});
+    const Scene saved = loadScene(dir_ / "galton.json");
+    ASSERT_EQ(saved.droppers.size(), 1u);
+    EXPECT_EQ(saved.droppers[0], s.world().droppers()[0]);
+    EXPECT_EQ(saved.particles.size(), 10u);
+    s.apply(cmd::Reset{});
+    EXPECT_EQ(s.world().droppers()[0].balls, 1000u);
+    EXPECT_EQ(s.world().droppers()[0].released, 0u);
+    EXPECT_EQ(s.world().size(), 0u);
+}
+
+TEST(DropperLabel, SaysHowManyBallsAreLeftInWords) {
+    Dropper d;
+    d.balls = 1;
+    EXPECT_EQ(dropperLabel(d), "dropper: 1 ball left");
+    d.balls = 0;
+    EXPECT_EQ(dropperLabel(d), "dropper: empty");
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,133 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "view/hud.hpp"
+
+namespace psb::app {
+namespace {
+
+TEST(Hud, TitleShowsTheCountAndPaused) {
+    EXPECT_EQ(windowTitle(6, false), "Particle Sandbox - 6 particles");
+    EXPECT_EQ(windowTitle(1, true), "Particle Sandbox - 1 particle - PAUSED");
+    EXPECT_EQ(windowTitle(2, false, "Gas"), "Particle Sandbox - 2 particles - Gas");
+}
+
+TEST(Hud, LinesShowTimeCountEnergyAndMomentumInHumanUnits) {
+    HudData d;
+    d.simTime = 12.345;
+    d.particles = 42;
+    d.kineticEnergy = 4.039e6;
+    d.momentum = Vec2(3.0, -40390.0);
+    d.spawnMass = 10.0;
+    d.spawnRadius = 0.3;
+    d.paused = true;
+    const auto lines = hudLines(d);
+    const auto has = [&](const std::string& s) {
+        return std::any_of(lines.begin(), lines.end(),
+                           [&](const std::string& l) { return l.find(s) != std::string::npos; });
+    };
+    EXPECT_TRUE(has("Time 12.3 s"));
+    EXPECT_TRUE(has("PAUSED"));
+    EXPECT_TRUE(has("42 particles"));
+    EXPECT_TRUE(has("Kinetic energy 4.04 MJ"));
+    EXPECT_TRUE(has("momentum (3.00, -40 400) kg m/s"));
+    EXPECT_TRUE(has("New: 10.0 kg, 300 mm"));
+    EXPECT_TRUE(has("H: help"));
+    // No engine jargon and no exponent notation on the box.
+    for (const char* jargon : {"FPS", "thread", "all-pairs", "Overlap max", "drift", "e+", "e-0"}) {
+        EXPECT_FALSE(has(jargon)) << jargon;
+    }
+}
+
+TEST(Hud, ATimeSpeedTheStepsCannotReachShowsTheSpeedReached) {
+    HudData d;
+    d.timeScale = 8.0;
+    d.reachedTimeScale = 3.1;
+    EXPECT_NE(hudLines(d)[0].find("x3.1 of x8 asked"), std::string::npos) << hudLines(d)[0];
+    d.reachedTimeScale = 7.9;  // within 5 %: what was asked is what is seen
+    EXPECT_NE(hudLines(d)[0].find("x8 |"), std::string::npos) << hudLines(d)[0];
+    EXPECT_EQ(hudLines(d)[0].find("asked"), std::string::npos);
+}
+
+TEST(Hud, TheArrowScaleIsShownWhileArrowsAreOn) {
+    HudData d;
+    d.arrowSeconds = 0.25;
+    EXPECT_NE(hudLines(d).back().find("arrow: 0.25 s of motion"), std::string::npos);
+    d.arrowSeconds = 0.0;
+    EXPECT_EQ(hudLines(d).back().find("arrow"), std::string::npos);
+}
+
+TEST(Hud, HelpListsEveryControl) {
+    const auto lines = helpLines();
+    EXPECT_EQ(lines.size(), controls().size() + 2);
+    for (const char* key : {"M", "S", "A", "Space", "Wheel", "Ctrl+S", "Esc", "H"}) {
+        EXPECT_TRUE(std::any_of(controls().begin(), controls().end(), [&](const auto& c) {
+            return c.first == key;
+        })) << key;
+    }
+}
+
+bool anyContains(const std::vector<std::string>& lines, const std::string& s) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.find(s) != std::string::npos; });
+}
+
+TEST(Hud, ProfileListsEveryStageAndTheFrameTimes) {
+    ProfileData d;
+    for (const char* stage :
+         {"reorder", "gravity", "move", "find pairs", "resolve", "separate", "walls"})
+        d.profile.stage(stage);
+    d.profile.stage("gravity") = 0.125;
+    d.profile.stage("find pairs") = 1.5;
+    d.profile.stage("reorder") = 0.25;
+    d.profile.total = 3.0;
+    d.profile.pairs = 1234;
+    d.frameStepMs = 6.0;
+    d.frameDrawMs = 4.5;
+    const auto lines = profileLines(d);
+    for (const char* stage : {"gravity", "move", "find pairs", "resolve", "separate", "walls",
+                              "reorder", "total", "frame: step", "frame: draw"}) {
+        EXPECT_TRUE(anyContains(lines, stage)) << stage;
+    }
+    EXPECT_TRUE(anyContains(lines, "1.500"));
+    EXPECT_TRUE(anyContains(lines, "1234"));
+    EXPECT_TRUE(anyContains(lines, "4.500"));
+}
+
+TEST(Hud, ProfileInExactModeNamesTheEventStages) {
+    ProfileData d;
+    d.mode = StepMode::Exact;
+    d.eventsPerStep = 420;
+    for (const char* stage : {"rebuild", "events", "sync"})
+        d.profile.stage(stage);
+    const auto lines = profileLines(d);
+    EXPECT_TRUE(anyContains(lines, "rebuild"));
+    EXPECT_TRUE(anyContains(lines, "events"));
+    EXPECT_TRUE(anyContains(lines, "sync"));
+    EXPECT_TRUE(anyContains(lines, "events per step"));
+    EXPECT_TRUE(anyContains(lines, "420"));
+    EXPECT_FALSE(anyContains(lines, "separate"));
+}
+
+TEST(Hud, HelpListsTheModeAndProfileKeys) {
+    for (const char* key : {"T", "O / F3"}) {
+        EXPECT_TRUE(std::any_of(controls().begin(), controls().end(), [&](const auto& c) {
+            return c.first == key;
+        })) << key;
+    }
+}
+
+TEST(Hud, ADeepOverlapIsShownOnTheBoxAndNoneIsNotMentioned) {
+    HudData d;
+    for (const std::string& line : hudLines(d))
+        EXPECT_EQ(line.find("overlap"), std::string::npos);
+    d.overlap = 0.453;
+    const auto lines = hudLines(d);
+    EXPECT_EQ(lines.back(), "Particles overlap by up to 453 mm (real ones would not)");
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,166 @@
+// The panel layout: a pure function from the window size and the panels' needs to rectangles,
+// checked for overlaps without drawing.
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+#include "view/screen_layout.hpp"
+
+namespace psb::app {
+namespace {
+
+// Sizes the app asks for with its 12 px fonts: a six-line HUD about 75 characters wide, the
+// discrete mode's profile (13 lines), the three-line momentum legend, one message.
+LayoutRequest everythingOn(int width, int height) {
+    LayoutRequest r;
+    r.width = width;
+    r.height = height;
+    r.hud = {540, 104};
+    r.profile = {230, 214};
+    r.legend = {260, 52};
+    r.messages = {300, 20};
+    r.inspector = {290, 140};
+    r.plots = true;
+    r.speeds = true;
+    return r;
+}
+
+std::array<PixelRect, 7> boxes(const PanelLayout& l) {
+    return {l.hud, l.profile, l.legend, l.messages, l.plots, l.speeds, l.inspector};
+}
+
+void expectNoOverlapAndInside(const LayoutRequest& r, const PanelLayout& l) {
+    const auto all = boxes(l);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        const PixelRect& a = all[i];
+        if (a.w <= 0) continue;
+        EXPECT_GE(a.x, 0) << "box " << i << " at " << r.width << "x" << r.height;
+        EXPECT_GE(a.y, 0) << "box " << i;
+        EXPECT_LE(a.x + a.w, r.width) << "box " << i << " at " << r.width << "x" << r.height;
+        EXPECT_LE(a.y + a.h, r.height) << "box " << i << " at " << r.width << "x" << r.height;
+        for (std::size_t j = i + 1; j < all.size(); ++j) {
+            EXPECT_FALSE(overlaps(a, all[j]))
+                << "boxes " << i << " and " << j << " at " << r.width << "x" << r.height;
+        }
+    }
+}
+
+TEST(PanelLayout, At600x600EveryPanelFitsBelowTheHudWithoutOverlap) {
+    LayoutRequest r = everythingOn(600, 600);
+    r.messages = {0, 0};  // a message takes the bottom row: then the histogram gives way
+    r.profile = {0, 0};   // and so does it to the profile
+    const PanelLayout l = layoutPanels(r);
+    expectNoOverlapAndInside(r, l);
+    // The HUD is 540 px wide: the right column cannot sit beside it, so it starts below it.
+    EXPECT_GE(l.legend.y, l.hud.y + l.hud.h);
+    EXPECT_GT(l.plots.w, 0);
+    EXPECT_GT(l.speeds.w, 0);
+    EXPECT_GE(l.plotRows, 1);  // the least important rows dropped for room
+    EXPECT_LT(l.plotRows, 4);
+    EXPECT_GE(l.speeds.h, kSpeedsMinHeight);
+}
+
+TEST(PanelLayout, At1280x720TheColumnSitsBesideTheHud) {
+    LayoutRequest r = everythingOn(1280, 720);
+    r.inspector = {0, 0};  // nothing selected
+    const PanelLayout l = layoutPanels(r);
+    expectNoOverlapAndInside(r, l);
+    EXPECT_EQ(l.profile.y, 4);  // top-right, level with the HUD
+    EXPECT_EQ(l.profile.x + l.profile.w, 1280 - kPanelMargin);
+    EXPECT_EQ(l.plots.w, kPanelMaxWidth);
+    EXPECT_EQ(l.speeds.h, kSpeedsMaxHeight);
+    EXPECT_GE(l.plotRows, 3);
+}
+
+TEST(PanelLayout, At800x800WithoutProfileThePlotsGetAllFourFullRows) {
+    LayoutRequest r = everythingOn(800, 800);
+    r.profile = {0, 0};
+    r.legend = {0, 0};
+    r.messages = {0, 0};
+    r.inspector = {0, 0};
+    const PanelLayout l = layoutPanels(r);
+    expectNoOverlapAndInside(r, l);
+    EXPECT_EQ(l.plotRows, 4);
+    EXPECT_EQ(l.plotRowHeight, kPlotRowMaxHeight);
+    EXPECT_EQ(l.speeds.h, kSpeedsMaxHeight);
+}
+
+TEST(PanelLayout, NoWindowSizeOrPanelChoiceMakesBoxesOverlap) {
+    for (int w = 200; w <= 1600; w += 37) {
+        for (int h = 200; h <= 1200; h += 41) {
+            for (int mask = 0; mask < 64; ++mask) {
+                LayoutRequest r = everythingOn(w, h);
+                r.hud.x = std::min(r.hud.x, w - 8);
+                r.messages.x = std::min(r.messages.x, w - 8);
+                if (!(mask & 1)) r.profile = {0, 0};
+                if (!(mask & 2)) r.legend = {0, 0};
+                if (!(mask & 4)) r.messages = {0, 0};
+                r.plots = (mask & 8) != 0;
+                r.speeds = (mask & 16) != 0;
+                if (!(mask & 32)) r.inspector = {0, 0};
+                const PanelLayout l = layoutPanels(r);
+                expectNoOverlapAndInside(r, l);
+                if (::testing::Test::HasFailure()) return;
+            }
+        }
+    }
+}
+
+TEST(PanelLayout, TheInspectorTakesTheBottomRightAndThePanelsStackAboveIt) {
+    LayoutRequest r = everythingOn(800, 800);
+    r.messages = {0, 0};
+    r.profile = {0, 0};
+    const PanelLayout l = layoutPanels(r);
+    ASSERT_GT(l.inspector.w, 0);
+    EXPECT_EQ(l.inspector.x + l.inspector.w, 800 - kPanelMargin);
+    EXPECT_EQ(l.inspector.y + l.inspector.h, 800 - kPanelMargin);
+    ASSERT_GT(l.speeds.w, 0);
+    EXPECT_LE(l.speeds.y + l.speeds.h, l.inspector.y - kPanelGap);
+    ASSERT_GT(l.plots.w, 0);
+    EXPECT_LE(l.plots.y + l.plots.h, l.speeds.y - kPanelGap);
+}
+
+TEST(PanelLayout, AWindowTooNarrowForTheColumnBesideTheBoxFoldsItsPanelsAway) {
+    // 600x600 with the control panel open (300 px): the bins' histogram and the plots would
+    // leave the box 72 px; they fold away, and the layout says so.
+    LayoutRequest r = everythingOn(600, 600);
+    r.left = 300;
+    r.bins = true;
+    const PanelLayout folded = layoutPanels(r);
+    EXPECT_TRUE(folded.columnFolded);
+    EXPECT_EQ(folded.bins.w, 0);
+    EXPECT_EQ(folded.plots.w, 0);
+    EXPECT_EQ(folded.speeds.w, 0);
+    EXPECT_EQ(folded.profile.w, 0);
+    EXPECT_GT(folded.hud.w, 0);
+    // With the control panel folded to its strip the column fits again (the bins alone).
+    r.left = 40;
+    r.plots = r.speeds = false;
+    r.profile = r.inspector = {0, 0};
+    const PanelLayout shown = layoutPanels(r);
+    EXPECT_FALSE(shown.columnFolded);
+    EXPECT_GT(shown.bins.w, 0);
+    // Nothing asked for, nothing folded.
+    LayoutRequest none;
+    none.width = none.height = 600;
+    none.left = 300;
+    EXPECT_FALSE(layoutPanels(none).columnFolded);
+}
+
+TEST(PanelLayout, PanelsThatAreOffGetNoBox) {
+    LayoutRequest r;
+    r.width = 800;
+    r.height = 800;
+    r.hud = {400, 100};
+    const PanelLayout l = layoutPanels(r);
+    EXPECT_EQ(l.plots.w, 0);
+    EXPECT_EQ(l.speeds.w, 0);
+    EXPECT_EQ(l.profile.w, 0);
+    EXPECT_EQ(l.legend.w, 0);
+    EXPECT_EQ(l.inspector.w, 0);
+    EXPECT_EQ(l.hud.w, 400);
+}
+
+}  // namespace
+}  // namespace psb::app

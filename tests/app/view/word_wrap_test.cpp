@@ -1,0 +1,47 @@
+// Wrapping at spaces: a number such as 9.81 is never split, whatever the room.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "view/word_wrap.hpp"
+
+namespace psb::app {
+namespace {
+
+// One unit a character: the room is a number of characters.
+float characters(std::string_view t) {
+    return static_cast<float>(t.size());
+}
+
+TEST(WordWrap, BreaksOnlyAtSpacesAtEveryWidth) {
+    // Every break ImGui's wrap allows after punctuation ("9." / "81") is one this must not make.
+    const std::string text =
+        "Balls poured through 8 rows of pegs under g = 9.81 m/s², restitution 0.30, p = 1/2; "
+        "a ball 2.50 mm across.";
+    for (int room = 1; room <= static_cast<int>(text.size()) + 1; ++room) {
+        const std::vector<std::string> lines = wrapAtSpaces(text, room, characters);
+        std::string joined;
+        for (const std::string& line : lines) {
+            ASSERT_FALSE(line.empty()) << "room " << room;
+            EXPECT_NE(line.front(), ' ') << "room " << room << ": '" << line << "'";
+            // A line longer than the room is one word that could not be broken.
+            if (static_cast<int>(line.size()) > room) {
+                EXPECT_EQ(line.find(' '), std::string::npos) << "room " << room;
+            }
+            joined += (joined.empty() ? "" : " ") + line;
+        }
+        EXPECT_EQ(joined, text) << "room " << room << ": the lines are the text broken at spaces";
+    }
+}
+
+TEST(WordWrap, KeepsLineBreaksAndIndentsContinuations) {
+    const auto lines = wrapAtSpaces("one two three\nfour", 8, characters, "  ");
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[0], "one two");
+    EXPECT_EQ(lines[1], "  three");
+    EXPECT_EQ(lines[2], "four");
+}
+
+}  // namespace
+}  // namespace psb::app
