@@ -39,7 +39,7 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
     const bool recent = collidedWithin(a, ev.time);
     advance(i, ev.time);
     stopSliding(a);  // another obstacle ends a slide
-    ++stats_.obstacles;
+    ++events_;
     reboundOffObstacle(i, ev.partner, recent, counters);
     ++a.count;
     // Off the wall it rested on if the obstacle pushed it off; asleep if it is slow and held.
@@ -194,7 +194,7 @@ void ExactStepper::predictSlide(std::uint32_t i, const Motion& m, double now, Ev
 void ExactStepper::handleSlide(std::uint32_t i, const Event& ev) {
     Body& a = bodies_[i];
     advance(i, ev.time);
-    ++stats_.slides;
+    ++events_;
     ++a.count;
     if (ev.side < 2) {
         // Off the end of the face: free flight. Round the cap it hops, as on any cap, unless it

@@ -791,11 +791,11 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     Body& a = bodies_[i];
     Body& b = bodies_[j];
     if (b.count != ev.partnerCount) {
-        ++stats_.stale;  // j changed course after this was predicted
+        ++events_;  // stale: j changed course after this was predicted
         predictCollision(i, ev.time);
         return;
     }
-    ++stats_.pairs;
+    ++events_;
     const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
     // A sleeper does not move; advancing it would only restart its clock (t).
     if (!(a.flags & kAsleep)) advance(i, ev.time);
@@ -895,7 +895,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     const bool recent = collidedWithin(a, ev.time);
     advance(i, ev.time);
     stopSliding(a);
-    ++stats_.walls;
+    ++events_;
     const bool alongX = ev.side < 2;
     double& v = alongX ? a.vx : a.vy;
     double& vt = alongX ? a.vy : a.vx;
@@ -1121,7 +1121,6 @@ void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, 
     }
     stopSliding(b);
     ++b.count;
-    ++stats_.sleeps;
 }
 
 void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
@@ -1177,7 +1176,6 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         b.t = now;
         wokeAt_[k] = now;
         ++b.count;
-        ++stats_.wakes;
     };
     rouse(i);
     wakeStack_.assign(1, i);
@@ -1213,7 +1211,7 @@ void ExactStepper::wake(std::uint32_t i, double now) {
 
 void ExactStepper::handleCell(std::uint32_t i, double now) {
     Cold& a = cold_[i];
-    ++stats_.cells;
+    ++events_;
     const std::uint32_t oldCell = memberCell(i);
     const std::int8_t side = a.cellSide;  // predictCell below overwrites it
     switch (side) {
@@ -1286,7 +1284,6 @@ double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_
         const EventQueue::Entry top = queue_.top();
         if (!(top.time <= tEnd)) break;
         if (++processed > budget) {
-            stats_.budgetExhausted = true;
             if (!gravity_) {
                 stale_ = true;  // fly the rest freely; the next step rebuilds
                 flewFreely_ = true;
@@ -1408,7 +1405,7 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
         // met at collisions (which rounding keeps at a few ulps).
         counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
     }
-    stats_ = {};
+    events_ = 0;
     // The jam guard counts per step: clear only the particles it counted in the last one.
     for (const std::uint32_t i : heldHit_) {
         bodies_[i].flags &= ~kJammed;
@@ -1426,8 +1423,7 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     clock_ = reached;
     syncOwed_ = !bodies_.empty();
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
-    counters.events += stats_.pairs + stats_.walls + stats_.cells + stats_.stale +
-                       stats_.obstacles + stats_.slides;
+    counters.events += events_;
     ++counters.steps;
 }
 

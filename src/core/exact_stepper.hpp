@@ -329,15 +329,6 @@ class ExactStepper {
     /// Small bookkeeping vectors are left out.
     [[nodiscard]] std::size_t memoryBytes() const;
 
-    /// Events of each kind processed by the last step.
-    struct EventStats {
-        std::uint64_t pairs = 0, walls = 0, cells = 0, stale = 0, obstacles = 0;
-        std::uint64_t sleeps = 0, wakes = 0;  ///< particles put to sleep / woken (gravity only)
-        std::uint64_t slides = 0;  ///< a sliding contact's end or stop (gravity, segments)
-        bool budgetExhausted = false;
-    };
-    [[nodiscard]] const EventStats& lastStepEvents() const { return stats_; }
-
   private:
     enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide, Recheck };
 
@@ -552,7 +543,9 @@ class ExactStepper {
     EventQueue queue_;
     std::uint64_t eventsSinceSort_ = 0;
     double maxOverlap_ = 0.0;
-    EventStats stats_;
+    // Events handled in this step (pairs, stale pairs, walls, obstacles, slides, cell moves):
+    // what step() adds to StepCounters::events.
+    std::uint64_t events_ = 0;
     std::vector<CollisionRecord>* log_ = nullptr;
     // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
     // storage indices (order_), with the contact distance they keep until they are found apart.
