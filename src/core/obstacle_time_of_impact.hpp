@@ -8,7 +8,7 @@
 // or kNever, with the conventions of exact_time_of_impact.hpp: a disc that overlaps the
 // obstacle and approaches it hits it now (0); one that overlaps and moves away is left alone.
 // The discrete mode calls them with v = the step's displacement, so that the answer is the
-// fraction of the step before contact (its sweep, obstacle_contacts.cpp).
+// fraction of the step before contact (its sweep, discrete_obstacles.cpp).
 
 #include <algorithm>
 #include <cmath>
