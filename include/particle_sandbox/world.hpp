@@ -73,9 +73,9 @@ class World {
     [[nodiscard]] const Obstacles& obstacles() const { return def_.obstacles; }
     /// Replaces every obstacle. Throws InvalidArgument, changing nothing, for an obstacle with a
     /// non-finite coordinate, a radius or thickness not finite and > 0, a segment of zero length,
-    /// or a centre or end outside the box [0, width] × [0, height]; and for any obstacle while
-    /// the solver's mode is Exact, which does not handle them yet. setBox refuses a box that
-    /// would leave an obstacle outside. clear() removes particles, not obstacles.
+    /// or a centre or end outside the box [0, width] × [0, height]. Every step mode handles
+    /// obstacles. setBox refuses a box that would leave an obstacle outside. clear() removes
+    /// particles, not obstacles.
     void setObstacles(Obstacles obstacles);
     /// Appends one obstacle (validated as by setObstacles) and returns its index.
     std::size_t addObstacle(const Obstacle& obstacle);

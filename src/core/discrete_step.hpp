@@ -13,7 +13,7 @@
 //
 // Obstacles. A world with fixed obstacles runs one more stage, `obstacles`, between separate
 // and walls: it sweeps each particle's move of the step against the pegs and segments near it
-// and pushes it out of them (obstacle_contacts.cpp). A world without obstacles skips it, and
+// and pushes it out of them (discrete_obstacles.cpp). A world without obstacles skips it, and
 // the copy of the start positions it needs, entirely.
 //
 // Why walls come last. The original bounced off walls before resolving pairs, so the overlap
@@ -70,7 +70,7 @@ void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounter
 /// Copies the positions at the start of the step into ctx.startX/startY, where the obstacles
 /// stage's sweep begins.
 void saveStartPositions(const ParticleArrays& p, StepContext& ctx);
-/// Particles against the world's fixed obstacles (obstacle_contacts.cpp says how): sweeps each
+/// Particles against the world's fixed obstacles (discrete_obstacles.cpp says how): sweeps each
 /// particle's move since saveStartPositions, stops it at its first contact, pushes it out of
 /// overlaps and turns its velocity into an obstacle around with the walls' law. Never moves a
 /// centre through a segment or (with walls) out of the box.

@@ -27,7 +27,7 @@
 // Clearance. Per cell the grid also keeps its chessboard distance to the nearest cell that lists
 // an obstacle (a distance transform, made once per build), so that a lower bound on the distance
 // from a point to every obstacle comes from a few cells even far from all of them: the contact
-// stage's free discs (obstacle_contacts.cpp).
+// stage's free discs (discrete_obstacles.cpp).
 
 #include <algorithm>
 #include <cstdint>

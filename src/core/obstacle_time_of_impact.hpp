@@ -5,17 +5,17 @@
 // Without gravity the centre moves as p + t·v, so each contact condition is a quadratic (a
 // cap or a peg: |p + t·v − c| = r + R) or linear (a flat side: signed distance to the core
 // line = ±(r + h)) equation in t. Each function answers "how long from now", a duration >= 0,
-// or kNever, with the conventions of exact_time_of_impact.hpp: a disc that overlaps the
+// or kNever, with the conventions of exact/time_of_impact.hpp: a disc that overlaps the
 // obstacle and approaches it hits it now (0); one that overlaps and moves away is left alone.
 // The discrete mode calls them with v = the step's displacement, so that the answer is the
-// fraction of the step before contact (its sweep, obstacle_contacts.cpp).
+// fraction of the step before contact (its sweep, discrete_obstacles.cpp).
 
 #include <algorithm>
 #include <cmath>
 
 #include <particle_sandbox/obstacle.hpp>
 
-#include "exact_time_of_impact.hpp"
+#include "exact/time_of_impact.hpp"
 
 namespace psb::exact {
 

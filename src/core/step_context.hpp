@@ -27,11 +27,11 @@ struct StepContext {
     bool cellsFresh = false;  ///< move wrote the grid's cells for the current positions
     std::vector<double> wallImpulseScratch;
     std::vector<std::uint64_t> wallHitScratch;
-    // The obstacles stage (obstacle_contacts.cpp); untouched in a world without obstacles.
+    // The obstacles stage (discrete_obstacles.cpp); untouched in a world without obstacles.
     ObstacleGrid obstacleGrid;
     std::vector<double> startX, startY;  ///< positions at the start of the step
     /// Per storage slot, a disc that no obstacle's surface and no wall enters
-    /// (obstacle_contacts.cpp): a fact about the obstacles and the box, whichever particle the
+    /// (discrete_obstacles.cpp): a fact about the obstacles and the box, whichever particle the
     /// slot holds. Radius < 0: none yet.
     std::vector<float> freeX, freeY, freeRadius;
     std::array<double, 3> freeBox{};  ///< width, height, walls (1 or 0) the discs were made in

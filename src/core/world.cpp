@@ -10,7 +10,7 @@
 #include "broad_phase_auto.hpp"
 #include "discrete_step.hpp"
 #include "dropper_stage.hpp"
-#include "exact_stepper.hpp"
+#include "exact/stepper.hpp"
 #include "obstacle_validate.hpp"
 #include "stage_timer.hpp"
 #include "step_context.hpp"

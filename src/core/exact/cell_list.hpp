@@ -9,7 +9,7 @@
 // is in (integer coordinates kx, ky), never recomputed from its rounded position, so a centre a
 // few ulps past a face does not make it vanish from its neighbours' searches. The stepper makes
 // cells wider than the largest diameter by twice a "skin" and moves a particle only once it is
-// a skin past a face (exact_stepper.hpp), so two touching discs are always in neighbouring
+// a skin past a face (grid.cpp), so two touching discs are always in neighbouring
 // cells.
 //
 // Bounded and unbounded worlds. With walls the grid covers the box exactly (nx·sx = width) and

@@ -17,8 +17,8 @@
 #include <particle_sandbox/scene_builders.hpp>
 #include <particle_sandbox/world.hpp>
 
-#include "exact_test_util.hpp"
-#include "test_util.hpp"
+#include "../test_util.hpp"
+#include "scenes.hpp"
 
 namespace psb {
 namespace {

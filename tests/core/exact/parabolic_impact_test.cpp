@@ -1,11 +1,11 @@
-// Times of impact under gravity (exact_parabolic_impact.hpp) against brute-force root searches.
+// Times of impact under gravity (exact/parabolic_impact.hpp) against brute-force root searches.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "exact_parabolic_impact.hpp"
+#include "exact/parabolic_impact.hpp"
 
 namespace psb::exact {
 namespace {

@@ -14,7 +14,7 @@
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/world.hpp>
 
-#include "exact_stepper.hpp"
+#include "exact/stepper.hpp"
 #include "obstacle_geometry.hpp"
 
 namespace psb {

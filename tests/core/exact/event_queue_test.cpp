@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "event_queue.hpp"
+#include "exact/event_queue.hpp"
 
 namespace psb::exact {
 namespace {

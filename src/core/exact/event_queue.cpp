@@ -1,4 +1,4 @@
-#include "event_queue.hpp"
+#include "exact/event_queue.hpp"
 
 #include <cmath>
 #include <limits>

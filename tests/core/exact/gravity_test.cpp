@@ -13,9 +13,9 @@
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/world.hpp>
 
-#include "exact_stepper.hpp"
-#include "exact_test_util.hpp"
-#include "test_util.hpp"
+#include "../test_util.hpp"
+#include "exact/stepper.hpp"
+#include "scenes.hpp"
 
 namespace psb {
 namespace {

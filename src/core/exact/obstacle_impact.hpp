@@ -3,7 +3,7 @@
 // (gravity), for the exact mode: the accelerated counterparts of obstacle_time_of_impact.hpp.
 //
 // The centre moves as p + v·t + ½·a·t². Against a fixed disc (a peg, or a segment's end cap)
-// the squared distance is a quartic in t: exact_parabolic_impact.hpp's first-root search
+// the squared distance is a quartic in t: parabolic_impact.hpp's first-root search
 // (bracketed, safeguarded Newton; no closed formula). Against a segment's flat side only the
 // distance across the core line matters, s(t) = s₀ + v_s·t + ½·a_s·t², a quadratic: its
 // first crossing of r + h towards the line is crossingTime's (the one-sign root forms, the apex
@@ -11,7 +11,7 @@
 // (beyond them the cap is met first, see segmentSideImpactTimeAccelerated). Without an
 // acceleration each function is exactly the straight-line one of obstacle_time_of_impact.hpp.
 //
-// Conventions of exact_time_of_impact.hpp and exact_parabolic_impact.hpp: durations >= 0 or
+// Conventions of time_of_impact.hpp and parabolic_impact.hpp: durations >= 0 or
 // kNever; a disc that overlaps the obstacle and approaches it hits it now (0); one that
 // overlaps and moves away is left alone unless the acceleration turns it back; the quartic
 // searches only [0, horizon] (pass kNever for no bound).
@@ -21,7 +21,7 @@
 
 #include <particle_sandbox/obstacle.hpp>
 
-#include "exact_parabolic_impact.hpp"
+#include "exact/parabolic_impact.hpp"
 #include "obstacle_geometry.hpp"
 #include "obstacle_time_of_impact.hpp"
 

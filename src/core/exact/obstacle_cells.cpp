@@ -1,4 +1,4 @@
-#include "exact_obstacle_cells.hpp"
+#include "exact/obstacle_cells.hpp"
 
 #include <algorithm>
 

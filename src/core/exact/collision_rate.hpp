@@ -1,6 +1,6 @@
 #pragma once
 // How often each particle collides, counted in windows of simulated time, for the exact mode's
-// rattle guard (exact_stepper.hpp, "Rattling"): a particle that collides more than a limit
+// rattle guard (resting.cpp, "Rattling"): a particle that collides more than a limit
 // within one window is caught. Windows start at a particle's first collision after the last
 // window ended, so the count depends on the trajectory alone, not on how steps chop time.
 

@@ -1,9 +1,9 @@
 #pragma once
-// Which fixed obstacles each cell of the exact mode's fine grid may reach (exact_stepper.hpp's
+// Which fixed obstacles each cell of the exact mode's fine grid may reach (the stepper's
 // cell list knows its particles; this knows its obstacles).
 //
 // A particle's centre stays within its cell widened by the skin until its next cell move
-// (exact_stepper.hpp, "Cells with a skin"). A cell therefore lists every obstacle whose surface
+// (grid.cpp, "Cells with a skin"). A cell therefore lists every obstacle whose surface
 // comes within the largest particle radius of that widened cell (the exact distance from the
 // obstacle's core to the rectangle), and a particle's prediction tests only its cell's list.
 // That is enough: an obstacle a particle would reach later is not in its cell's list only if
@@ -23,7 +23,7 @@
 
 #include <particle_sandbox/obstacle.hpp>
 
-#include "cell_list.hpp"
+#include "exact/cell_list.hpp"
 #include "obstacle_grid.hpp"
 
 namespace psb::exact {

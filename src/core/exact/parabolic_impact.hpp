@@ -3,20 +3,20 @@
 // a wall's limit or a cell face on a parabola, and a disc on a parabola meeting a disc that does
 // not fall (a held particle, a particle at rest; later fixed obstacles).
 //
-// The rules are those of exact_time_of_impact.hpp (durations >= 0 or kNever; an overlapping
+// The rules are those of time_of_impact.hpp (durations >= 0 or kNever; an overlapping
 // pair that approaches collides now; a centre past a limit and moving outward crosses now),
 // with one addition that gravity forces: a pair or a centre that is "left alone" because it
 // separates may be turned back by the acceleration, so the search goes on past the separation
 // instead of answering never.
 //
 // Two free particles under the same gravity move on a straight line relative to each other:
-// their time of impact is exact_time_of_impact.hpp's quadratic, not something from here.
+// their time of impact is time_of_impact.hpp's quadratic, not something from here.
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "exact_time_of_impact.hpp"
+#include "exact/time_of_impact.hpp"
 
 namespace psb::exact {
 

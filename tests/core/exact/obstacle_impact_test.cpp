@@ -1,4 +1,4 @@
-// Times of impact with fixed obstacles under gravity (exact_obstacle_impact.hpp) against a
+// Times of impact with fixed obstacles under gravity (exact/obstacle_impact.hpp) against a
 // brute-force search for the first contact, with the grazing and apex cases worked by hand.
 
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <random>
 
-#include "exact_obstacle_impact.hpp"
+#include "exact/obstacle_impact.hpp"
 #include "obstacle_geometry.hpp"
 
 namespace psb::exact {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "exact_time_of_impact.hpp"
+#include "exact/time_of_impact.hpp"
 
 namespace psb::exact {
 namespace {

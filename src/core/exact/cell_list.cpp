@@ -1,4 +1,4 @@
-#include "cell_list.hpp"
+#include "exact/cell_list.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 #include <particle_sandbox/world_def.hpp>
 
 #include "contact.hpp"
-#include "exact_stepper.hpp"
+#include "exact/stepper.hpp"
 
 namespace psb::exact {
 namespace {

@@ -1,0 +1,70 @@
+#pragma once
+// The exact stepper's records: what it keeps per particle (Body, what a neighbour's prediction
+// reads; Cold, what only the particle's own events read), the events it schedules, where a
+// particle is at a time and how it moves there (Motion), and a sliding contact (Slide).
+//
+// Memory. Events come in time order, which is random in space, so at 10^5 particles nearly
+// every particle an event touches is a cache miss. What an event reads about a neighbour is one
+// 64-byte line (Body), what it reads about its own particle another (Cold); particles are
+// re-sorted into cell order every kResortEvery·N events (indices only: nothing physical
+// changes), a neighbourhood's members are gathered and prefetched before they are tested, and
+// the particle of the likely next event is prefetched while this one is handled.
+
+#include <cstdint>
+
+namespace psb::exact {
+
+// What a particle's collision key holds (its cell key always holds a cell move).
+enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide, Recheck };
+
+// What an event and a neighbour's prediction read, in one 64-byte line.
+struct alignas(64) Body {
+    double x, y;          // centre at time t, metres
+    double vx, vy;        // m/s
+    double t;             // time of the last velocity change (or rebuild), seconds
+    double r;             // radius
+    double nextColl;      // time of its scheduled collision event (see scanCells)
+    std::uint32_t count;  // bumped at every velocity change
+    std::uint32_t flags;  // kHeld, kJammed
+};
+inline constexpr std::uint32_t kHeld = 1;               // kinematic: infinite mass
+inline constexpr std::uint32_t kJammed = 2;             // passes through held particles (jam guard)
+inline constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
+inline constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity, no acceleration
+inline constexpr std::uint32_t kRestX = 16;         // no acceleration along x (on a wall, pinned)
+inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y
+inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: slide_ holds how
+inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (resting.cpp)
+// A particle sliding on a segment's face (kSliding; sliding.cpp): which
+// segment, and its constant acceleration along the face (gravity's share along it less the
+// kinetic friction, or none where static friction holds it).
+struct Slide {
+    std::uint32_t obstacle = 0;
+    double ax = 0.0, ay = 0.0;
+};
+// Where a particle is at a time, and how it moves there (gravity only).
+struct Motion {
+    double x, y, vx, vy, ax, ay;
+};
+struct Event {
+    double time;
+    std::uint32_t partner;       // pair: the other particle; obstacle: its index
+    std::uint32_t partnerCount;  // pair: its counter when predicted
+    Kind kind;
+    std::int8_t side;  // wall: 0..3 (left, right, top, bottom)
+};
+
+// What only the particle's own events read, in one line.
+struct alignas(64) Cold {
+    Event coll;              // its next collision (pair or wall)
+    double m;                // mass
+    std::int64_t kx, ky;     // cell coordinates
+    std::int8_t cellSide;    // the face its next cell event crosses: -x, +x, -y, +y
+    bool pinX, pinY;         // does not fit between the walls along this axis
+    std::uint8_t level;      // its size class (grid.cpp, "Size levels")
+    std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
+    double w;                // inverse mass, 0 = held
+};
+static_assert(sizeof(Cold) == 64);
+
+}  // namespace psb::exact

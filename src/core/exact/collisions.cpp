@@ -1,0 +1,216 @@
+// Pair and wall events of the exact stepper: the collision at the instant of contact, its
+// restitution, and the guards that keep rounding, inelastic collapse and held particles from
+// stalling the event loop.
+//
+// Rules for invalid states (Bannerman et al. 2014), so rounding never decides:
+//   - no event is scheduled before the current time (times of impact are durations >= 0);
+//   - an overlapping pair collides at once if it approaches and is left alone if it separates;
+//   - but a pair already overlapping at a rebuild was placed so (rounding leaves a few ulps at
+//     most): its contact distance is the distance it was placed at until a prediction finds it
+//     apart. The rule above alone would be a ratchet (every drift apart kept), squeezing the
+//     overlaps of a box too full for its discs into the others' gaps until the pile jams;
+//   - a disc past a wall collides with it at once if moving outward, else is left alone;
+//   - a collision whose pair turns out not to approach at its instant changes nothing.
+//
+// Inelastic collapse. With e < 1 a cluster can collide infinitely often in finite time, and an
+// event-driven code then stalls; with e = 0 it does so at once (a pair leaves a collision
+// touching, at zero relative speed, so the next collision in the cluster is at zero gap). Two
+// guards make restitution tend to 1 where the collapse would happen:
+//   - the TC model (Luding & McNamara 1998): a particle that collided less than
+//     kContactDuration ago collides elastically, so a cascade of near-simultaneous collisions
+//     re-opens gaps instead of closing them;
+//   - impacts slower than kElasticBelowSpeed use e_eff = 1 − (1 − e)·u/u_c, rising linearly to
+//     1 as the speed goes to 0, so ever slower collisions lose ever less energy.
+// A cooling pile therefore settles to small speeds with a bounded number of events per step.
+//
+// Held (kinematic) particles. Infinite mass, straight lines: they push and are not pushed
+// (contact.hpp's kinematic limit). A held particle that reaches a wall stops moving across it.
+// A free particle squeezed between a held one and a wall or another held one would collide
+// infinitely often; after kJamLimit collisions with held particles in one step it is allowed to
+// pass through held particles for the rest of that step.
+//
+// Particles that do not fit. A particle wider than the box along an axis stays on the box's
+// centre line on that axis (as in the discrete mode); the walls absorb at once any velocity it
+// gains across it. Such a particle makes the cells as large as the box: correct but O(N) per
+// event.
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact.hpp"
+#include "exact/motion.hpp"
+#include "exact/stepper.hpp"
+
+namespace psb::exact {
+
+void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& counters) {
+    const std::uint32_t j = ev.partner;
+    __builtin_prefetch(&cold_[j]);
+    queue_.prefetch(2 * j);
+    Body& a = bodies_[i];
+    Body& b = bodies_[j];
+    if (b.count != ev.partnerCount) {
+        ++events_;  // stale: j changed course after this was predicted
+        predictCollision(i, ev.time);
+        return;
+    }
+    ++events_;
+    const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
+    // A sleeper does not move; advancing it would only restart its clock (t).
+    if (!(a.flags & kAsleep)) advance(i, ev.time);
+    if (!(b.flags & kAsleep)) advance(j, ev.time);
+    // A pair event ends a slide (the pair's impulses and lift are those of free particles); a
+    // slider still on its face afterwards slides on (keepOnFace below). Its acceleration has
+    // changed, so its counter does too.
+    const bool aSlid = (a.flags & kSliding) != 0, bSlid = (b.flags & kSliding) != 0;
+    if (aSlid) {
+        stopSliding(a);
+        ++a.count;
+    }
+    if (bSlid) {
+        stopSliding(b);
+        ++b.count;
+    }
+    const double dx = b.x - a.x, dy = b.y - a.y;
+    const double d = std::sqrt(dx * dx + dy * dy);
+    maxOverlap_ = std::max(maxOverlap_, a.r + b.r - d);
+    Normal n;
+    if (d > 0.0 && std::isfinite(dx / d) && std::isfinite(dy / d)) {
+        n = {dx / d, dy / d};
+    } else {
+        n = coincidentNormal(ids_[i], ids_[j]);
+    }
+    const double approach = (a.vx - b.vx) * n.x + (a.vy - b.vy) * n.y;
+    // A sleeper hit hard enough, or by a held particle, wakes; otherwise it stays put and the
+    // other bounces off it as off an infinitely heavy disc.
+    bool aStays = false, bStays = false, woke = false;
+    if (gravity_) {
+        const auto hitsSleeper = [&](std::uint32_t s, std::uint32_t o) {
+            if (!(bodies_[s].flags & kAsleep)) return false;
+            // A particle wedged between sleepers (no room between them) would bounce between
+            // them ever faster: after kWakeAfterHits such hits in a step it wakes them, and the
+            // wedge opens as it would, by pushing them apart.
+            if ((bodies_[o].flags & kHeld) || approach > 2.0 * restSpeed_ ||
+                countHit(o) >= kWakeAfterHits) {
+                wake(s, ev.time);
+                woke = true;
+                return false;
+            }
+            return true;
+        };
+        aStays = hitsSleeper(i, j);
+        bStays = hitsSleeper(j, i);
+    }
+    const double wi = aStays ? 0.0 : cold_[i].w, wj = bStays ? 0.0 : cold_[j].w;
+    // Off a sleeper, which does not move, a bounce cannot start a collapse: the TC model's
+    // elastic rule would only keep a particle wedged between sleepers rattling at full speed.
+    const bool offStatic = aStays || bStays;
+    double e = effectiveRestitution(approach, recent && !offStatic);
+    // And a rebound off it slower than the rest speed ends the approach, as on a wall the
+    // particle rests on: a particle in a slot between sleepers stops instead of rattling.
+    if (offStatic && approach * e < restSpeed_) e = 0.0;
+    const bool hit = def_.friction > 0.0
+                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
+                                              cold_[j].m, n, e, def_.friction)
+                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
+                                               cold_[j].m, n, e, 0.0);
+    if (hit) {
+        ++counters.collisions;
+        if (!aStays) ++a.count;
+        if (!bStays) ++b.count;
+        if (b.flags & kHeld) countHeldHit(i);
+        if (a.flags & kHeld) countHeldHit(j);
+        if (log_) log_->push_back({ev.time, order_[i], order_[j]});
+    }
+    if (gravity_) {
+        // Lift what gravity presses together (judged by how they moved into the contact), then
+        // let them rest (what this hit just woke does not).
+        liftPressedPair(i, j, n, aSlid, bSlid);
+        // A slider pressed along its face into a neighbour without an impulse (at rest against
+        // it) would slide into it again at once, the same event at the same instant without
+        // end: it hops off the face instead, as before slides, and slides again when it lands.
+        if (aSlid) keepOnFace(i, counters, hit);
+        if (bSlid) keepOnFace(j, counters, hit);
+        settleAfterPair(i, woke);
+        settleAfterPair(j, woke);
+    }
+    predictCollision(i, ev.time);
+    predictCollision(j, ev.time);
+    predictCell(i, ev.time);
+    predictCell(j, ev.time);
+}
+
+void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
+    Body& a = bodies_[i];
+    const bool recent = collidedWithin(a, ev.time);
+    advance(i, ev.time);
+    stopSliding(a);
+    ++events_;
+    const bool alongX = ev.side < 2;
+    double& v = alongX ? a.vx : a.vy;
+    double& vt = alongX ? a.vy : a.vx;
+    const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
+    const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
+    if (gravity_ && !pinned) {
+        // At the wall by definition of the event: a parabola's root can leave the centre a few
+        // ulps past it, which a particle resting there would keep.
+        double& x = alongX ? a.x : a.y;
+        const double extent = alongX ? def_.width : def_.height;
+        x = std::clamp(x, a.r, extent - a.r);
+    }
+    double dv = 0.0;
+    if (a.flags & kHeld) {
+        // A held particle stops moving across the wall; its owner sets its velocity again.
+        if (outward * v > 0.0) v = 0.0;
+    } else if (pinned) {
+        dv = std::abs(v);
+        v = 0.0;
+    } else {
+        double out = outward * v;
+        const double e = effectiveRestitution(out, recent);
+        dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
+                                 : reboundOffWall<false>(out, vt, e, 0.0);
+        v = outward * out;
+        // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
+        if (gravity_ && outward * (alongX ? gx_ : gy_) > 0.0 && std::abs(v) < restSpeed_) {
+            dv += std::abs(v);
+            v = 0.0;
+            a.flags |= alongX ? kRestX : kRestY;
+        }
+    }
+    if (dv > 0.0) {
+        ++counters.wallCollisions;
+        counters.wallImpulse += cold_[i].m * dv;
+        if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
+    }
+    ++a.count;
+    if (gravity_ && !(a.flags & kHeld))
+        settle(i, ev.time,
+               a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
+    predictCollision(i, ev.time);
+    predictCell(i, ev.time);
+}
+
+bool ExactStepper::collidedWithin(const Body& b, double now) {
+    // t is the time of b's last velocity change; count > 0 says there was one since the last
+    // rebuild (t = 0 at a rebuild is not a collision).
+    return b.count > 0 && now - b.t < kContactDuration;
+}
+
+double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const {
+    const double e = def_.restitution;
+    if (e >= 1.0 || recent) return 1.0;
+    if (impactSpeed >= kElasticBelowSpeed) return e;
+    return 1.0 - (1.0 - e) * (impactSpeed / kElasticBelowSpeed);
+}
+
+std::uint32_t ExactStepper::countHit(std::uint32_t i) {
+    if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
+    return cold_[i].heldHits;
+}
+
+void ExactStepper::countHeldHit(std::uint32_t i) {
+    if (countHit(i) >= kJamLimit) bodies_[i].flags |= kJammed;
+}
+
+}  // namespace psb::exact

@@ -1,0 +1,73 @@
+#pragma once
+// Where a particle of the exact stepper is at a time, and how it moves there.
+//
+// Lazy advance (Lubachevsky 1991). Each particle keeps the position it had at its last
+// velocity change; an event touches only its one or two particles, so an event costs a search
+// of the cells around a particle and an O(1)–O(log N) queue update, not O(N). Positions for
+// the outside world are computed when it reads them (sync) and never fed back, so how dt is
+// chopped does not change the trajectory (only, in the last bits, the time t + dt itself).
+//
+// Gravity. Between events a free particle flies on a parabola, r(t) = r₀ + v₀t + ½gt², and
+// lazy advance stays as it is (a particle's stored state is the one at its last velocity
+// change). Two free particles fall alike, so their relative motion is a straight line and their
+// time of impact time_of_impact.hpp's quadratic. A free particle against one that does not fall
+// (held, asleep, or resting on a wall) needs the first root of a quartic; walls and cell faces are
+// crossed at the root of a quadratic, either face of a cell (a particle thrown up falls back
+// through the face it came in by). All in parabolic_impact.hpp. A world without gravity
+// takes none of these paths: its trajectories are bit for bit those of the linear code.
+//
+// Inline: the searches of prediction.cpp call these for every neighbour they test.
+
+#include "exact/stepper.hpp"
+
+namespace psb::exact {
+
+inline void ExactStepper::advance(std::uint32_t i, double t) {
+    Body& b = bodies_[i];
+    const double h = t - b.t;
+    if (h != 0.0) {
+        if (gravity_) {
+            double ax, ay;
+            accelerationOf(i, b, ax, ay);
+            b.x += b.vx * h + 0.5 * ax * h * h;
+            b.y += b.vy * h + 0.5 * ay * h * h;
+            b.vx += ax * h;
+            b.vy += ay * h;
+        } else {
+            b.x += b.vx * h;
+            b.y += b.vy * h;
+        }
+        b.t = t;
+    }
+}
+
+inline void ExactStepper::accelerationOf(std::uint32_t i, const Body& b, double& ax,
+                                         double& ay) const {
+    if (b.flags & (kHeld | kAsleep)) {
+        ax = ay = 0.0;
+        return;
+    }
+    if (b.flags & kSliding) {
+        // The slide is found by the particle's index, never by the record's address: b may be a
+        // copy (rebuild() projects copies of the records to the clock).
+        const Slide& s = slide_[i];
+        ax = s.ax;
+        ay = s.ay;
+        return;
+    }
+    ax = (b.flags & kRestX) ? 0.0 : gx_;
+    ay = (b.flags & kRestY) ? 0.0 : gy_;
+}
+
+inline Motion ExactStepper::motionAt(std::uint32_t i, const Body& b, double t) const {
+    Motion m{};
+    accelerationOf(i, b, m.ax, m.ay);
+    const double h = t - b.t;
+    m.x = b.x + b.vx * h + 0.5 * m.ax * h * h;
+    m.y = b.y + b.vy * h + 0.5 * m.ay * h * h;
+    m.vx = b.vx + m.ax * h;
+    m.vy = b.vy + m.ay * h;
+    return m;
+}
+
+}  // namespace psb::exact

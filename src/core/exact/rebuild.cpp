@@ -1,0 +1,162 @@
+// The exact stepper's state rebuilt from the world's arrays, after any change to the world:
+// the particles copied and clamped into the box, the grid and its levels set up, the particles
+// sorted into cell order, the pairs placed overlapping recorded, and every particle's two events
+// predicted. What slept and still may sleeps on (keepSleepers, resting.cpp).
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact/grid.hpp"
+#include "exact/motion.hpp"
+#include "exact/stepper.hpp"
+#include "exact/time_of_impact.hpp"
+
+namespace psb::exact {
+
+void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
+    // What was asleep before, where it was (gravity only; see resting.cpp).
+    std::unordered_map<ParticleId, Kept> before;
+    const bool sameLaws = gravity_ && def.gravity == def_.gravity && def.width == def_.width &&
+                          def.height == def_.height && def.walls == def_.walls &&
+                          def.restitution == def_.restitution && def.friction == def_.friction;
+    if (sameLaws) {
+        for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
+            // Each particle as sync() wrote it: one that went on unchanged is no disturbance.
+            Body b = bodies_[i];
+            if (!(b.flags & kAsleep)) {
+                const Motion m = motionAt(i, b, clock_);
+                b.x = m.x;
+                b.y = m.y;
+                b.vx = m.vx;
+                b.vy = m.vy;
+            }
+            before.emplace(ids_[i], Kept{b, depth_[i]});
+        }
+    }
+    def_ = def;
+    clock_ = 0.0;
+    gx_ = def.gravity.x();
+    gy_ = def.gravity.y();
+    gravity_ = gx_ != 0.0 || gy_ != 0.0;
+    if (gravity_) {
+        const double g = std::hypot(gx_, gy_);
+        restSpeed_ = def.restitution < 1.0
+                         ? kRestSpeed
+                         : std::sqrt(2.0 * g * kRestRoundingGap * std::max(def.width, def.height));
+        // In a scene of large discs under strong gravity the rest speed is the speed of a hop
+        // of kRestHop radii, so that resting means the same there as in a scene at human scale.
+        if (def.restitution < 1.0 && p.size() > 0) {
+            const double rmin = *std::min_element(p.radius.begin(), p.radius.end());
+            restSpeed_ = std::max(restSpeed_, std::sqrt(2.0 * g * kRestHop * rmin));
+        }
+        restGap_ = restSpeed_ * restSpeed_ / (2.0 * g);
+    }
+    const auto n = static_cast<std::uint32_t>(p.size());
+    bodies_.resize(n);
+    cold_.resize(n);
+    order_.resize(n);
+
+    ids_ = p.id;
+    heldHit_.clear();
+    wokeAt_.assign(gravity_ ? n : 0, -kNever);
+    depth_.assign(gravity_ ? n : 0, 0);
+    recheckAt_.assign(gravity_ ? n : 0, kNever);
+    slide_.assign(gravity_ && !def_.obstacles.empty() ? n : 0, Slide{});
+    rate_.reset(gravity_ ? n : 0);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        Body& b = bodies_[i];
+        Cold& c = cold_[i];
+        b = Body{p.x[i],  p.y[i], p.vx[i],
+                 p.vy[i], 0.0,    p.radius[i],
+                 kNever,  0,      p.invMass[i] == 0.0 ? kHeld : 0u};
+        c = Cold{Event{kNever, 0, 0, Kind::None, 0},
+                 p.mass[i],
+                 0,
+                 0,
+                 0,
+                 false,
+                 false,
+                 0,
+                 0,
+                 p.invMass[i]};
+        order_[i] = i;
+        if (def_.walls) {
+            // Into the box, as the discrete mode's wall stage would; a particle too wide for
+            // an axis sits on the centre line with no velocity across it.
+            const auto place = [](double& x, double& v, double r, double extent) {
+                if (r >= extent - r) {
+                    x = 0.5 * extent;
+                    v = 0.0;
+                    return true;
+                }
+                x = std::clamp(x, r, extent - r);
+                return false;
+            };
+            c.pinX = place(b.x, b.vx, b.r, def_.width);
+            c.pinY = place(b.y, b.vy, b.r, def_.height);
+            // A pinned axis has no room to fall along: gravity across it is held by the walls.
+            if (gravity_ && c.pinX) b.flags |= kRestX;
+            if (gravity_ && c.pinY) b.flags |= kRestY;
+        }
+    }
+    setUpGrid();
+    obstacles_.build(def_.obstacles, cells_, skinX_, skinY_,
+                     *std::max_element(levelRadius_.begin(), levelRadius_.end()));
+    sortByCell(false);
+    eventsSinceSort_ = 0;
+    for (std::uint32_t i = 0; i < n; ++i)
+        insertMember(i);
+    recordPlacedOverlaps();
+    queue_.reset(2 * n, bucketWidth());
+    keptSleepers_ = !before.empty();
+    if (keptSleepers_) keepSleepers(before);
+    for (std::uint32_t i = 0; i < n; ++i) {
+        predictCollision(i, 0.0);
+        predictCell(i, 0.0);
+    }
+    stale_ = false;
+}
+
+void ExactStepper::recordPlacedOverlaps() {
+    // A pair that overlaps here was placed so from outside (spawned, dragged, clamped into a
+    // box too small for its lattice): rounding alone leaves overlaps of a few ulps only. Its
+    // contact distance is the distance it was placed at, until it is found apart (scanCells).
+    // Colliding it at whatever distance it happens to have instead would be a ratchet: every
+    // time it drifts apart the gain is kept, so in a box too full for its discs the overlaps
+    // are squeezed out into the gaps of everyone else until the pile jams and the collision
+    // rate diverges.
+    overlapContact_.clear();
+    placedOverlap_ = 0.0;
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    for (std::uint32_t i = 0; i < n; ++i) {
+        const Body& a = bodies_[i];
+        forEachAround(i, [&](std::uint32_t q) {
+            Body& b = bodies_[q];
+            if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) return;
+            const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
+            const double d2 = rx * rx + ry * ry;
+            if (!(d2 < sigma * sigma)) return;
+            overlapContact_[pairKey(order_[i], order_[q])] = std::sqrt(d2);
+            placedOverlap_ = std::max(placedOverlap_, sigma - std::sqrt(d2));
+            bodies_[i].flags |= kPlacedOverlapping;
+            b.flags |= kPlacedOverlapping;
+        });
+    }
+}
+
+double ExactStepper::bucketWidth() const {
+    // About 1/64 of the time a typical particle takes to cross a cell: the current bucket then
+    // holds a few percent of the 2N events, and the 256-bucket calendar spans ~4 crossings.
+    double v2 = 0.0;
+    for (const Body& b : bodies_)
+        v2 += b.vx * b.vx + b.vy * b.vy;
+    const double side =
+        std::min(cells_.faceX(1) - cells_.faceX(0), cells_.faceY(1) - cells_.faceY(0));
+    // Under gravity speeds grow to about √(g·side) within a cell crossing.
+    if (gravity_) v2 += static_cast<double>(bodies_.size()) * std::hypot(gx_, gy_) * side;
+    if (!(v2 > 0.0)) return 1.0;
+    const double vrms = std::sqrt(v2 / static_cast<double>(bodies_.size()));
+    return side / vrms / 64.0;
+}
+
+}  // namespace psb::exact

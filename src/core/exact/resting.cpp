@@ -1,0 +1,400 @@
+// Rest under gravity in the exact stepper: when a particle falls asleep, what holds it up, when
+// it wakes, and what a rebuild keeps asleep.
+//
+// Resting (gravity only; Bannerman et al. 2014, DynamO's sleeping particles, after Luding &
+// McNamara 1998). A ball with e < 1 makes infinitely many bounces in finite time, and the guards
+// against inelastic collapse (collisions.cpp) only slow the cascade, so particles that come to
+// rest are taken out of the dynamics:
+//   - a wall that gravity presses a particle into: a rebound slower than restSpeed_ ends with
+//     the particle resting on the wall (its velocity and acceleration across the wall zero); it
+//     still slides along it;
+//   - a particle slower than restSpeed_ after an event falls asleep (zero velocity, no
+//     acceleration, no cell events) if the supports within restGap_ hold it (hold()): gravity
+//     lies in the cone of their contact normals (along one, or strictly between two less than
+//     a half turn apart), or the one face gravity slides it down (the loaded support no other
+//     blocks) is tilted less than the friction angle atan(mu). Not each normal's cone widened
+//     by that angle: that counts a neighbour the slide only grazes (one above the particle) as
+//     pushing with any force, and grains above a neck locked into arches nothing held up.
+//     Supports are walls, obstacles, held particles at rest and sleepers. Each sleeper has a
+//     depth: 1 on a wall, an obstacle or a held particle, else 1 + the least depth of the
+//     sleepers it rests on; it must keep a support of lower depth, so every sleeper rests on a
+//     chain down to something fixed and no cluster holds itself up;
+//   - provisional sleep (e < 1): a particle that only slow free neighbours (slower than
+//     restSpeed_, not woken in the last kRecheckAfter, not in the first kSettleTime after a
+//     rebuild) help hold, with something static among its supports, sleeps until a recheck
+//     kRecheckAfter later (Kind::Recheck, in its collision key): held then by what is static,
+//     it sleeps for good; still held only with free neighbours' help, it waits again (and a
+//     free neighbour at rest with no acceleration, which has no event of its own to fall
+//     asleep at, falls asleep then if what is static holds it); else it wakes. Without it an arch
+//     of discs leaning on each other waits for the others to sleep first, and none does; with it a
+//     grain that slept on a moving one does not hang in the air when that one has gone. A particle
+//     woken less than kContactDuration ago does not fall asleep again;
+//   - a sleeping particle hit at a normal speed above 2·restSpeed_ (or by a held particle, or,
+//     as a backstop, by a particle that already hit sleepers kWakeAfterHits times in this step)
+//     wakes; then every sleeper within restGap_ of a woken one is judged again (hold() at its
+//     depth) and wakes if no longer held, and so on (a support that moves lets what it held
+//     fall, whether it held it from below or from the side; one still held with slow free
+//     neighbours' help turns provisional instead); slower hits bounce off it as off
+//     an infinitely heavy disc, with the restitution e itself (no TC rule: a sleeper does not
+//     move, so there is no collapse to prevent, and the elastic rule only kept a disc wedged
+//     between sleepers rattling at full speed) and with none if the rebound would be slower
+//     than restSpeed_ (it stops, as on a wall it rests on);
+//   - a pair that gravity presses together (one falls and the other does not: it is asleep,
+//     held or resting on a wall) and that leaves a collision slower than restSpeed_ / 2 leaves
+//     at restSpeed_ / 2 (an impulse shared as the collision shares it): a particle on the side
+//     of its support hops down it instead of making ever faster tiny bounces on it, and no
+//     pair is ever predicted to touch again at the same instant (a slider the pair event took
+//     off its face counts as moving with its slide's acceleration: it is still on the face).
+// Rattling (e < 1). Where the weight of a frictionless pile has to be carried by collisions
+// alone, the hard-disc model carries it by ever more frequent ones (a disc squeezed between
+// two others on a floor it slides on, a cluster collapsing, McNamara & Young 1994): the rules
+// above do not bound them. So a particle that collides more than kRattleLimit times within
+// kRattleWindow of simulated time falls asleep where it is (it is caught among its neighbours
+// at that instant): for good if what is static holds it, else provisionally (rechecked as
+// above: a ball squeezed against a neighbour on a slope slides on when the neighbour has
+// left). The count is in simulated time, so it does not depend on how steps chop it;
+// particles a rebuild sets free are left alone by it for kSettleTime (they are falling).
+// restSpeed_ is kRestSpeed for e < 1, or the speed of a hop of kRestHop smallest radii if that
+// is higher (large discs under strong gravity); with e = 1 it is the speed of a fall through
+// rounding (kRestRoundingGap of the box), so that only particles placed at rest on a support rest,
+// and nothing moving ever sleeps (the free-neighbour and rattle rules are off). restGap_ is the
+// height of a hop at restSpeed_, restSpeed_²/(2g): waking a sleeper lets it fall at most that
+// far, which reaches only restSpeed_ and does not wake what is under it.
+// A rebuild (any change to the world) keeps what sleeps where it slept, at its depth (a
+// provisional sleeper is rechecked kRecheckAfter after it), if the laws (gravity, box, walls,
+// restitution, friction) are unchanged: a particle removed, added, moved or set in motion
+// wakes the sleepers within restGap_ of it (and so what they held up); more than
+// kMaxDisturbances such changes, or changed laws, wake everything. A drag through a settled
+// pile therefore wakes only what the dragged particle touches.
+
+#include <algorithm>
+#include <cmath>
+
+#include "exact/grid.hpp"
+#include "exact/motion.hpp"
+#include "exact/parabolic_impact.hpp"
+#include "exact/stepper.hpp"
+
+namespace psb::exact {
+
+void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
+    // A sleeper still where it slept, at rest, sleeps on. Everything else is a disturbance: a
+    // particle removed (where it was), added, moved or set in motion (where it is now); the
+    // sleepers it touches wake, and with them what rests on them.
+    struct Spot {
+        double x, y, r;
+    };
+    std::vector<Spot> spots;
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    std::vector<bool> carried(n, false);  // awake, and going on as it was
+    for (std::uint32_t i = 0; i < n; ++i) {
+        Body& b = bodies_[i];
+        const auto it = before.find(ids_[i]);
+        const Body* was = it != before.end() ? &it->second.body : nullptr;
+        const bool same = was && was->x == b.x && was->y == b.y && was->r == b.r &&
+                          was->vx == b.vx && was->vy == b.vy;
+        if (same && (was->flags & kAsleep) && b.vx == 0.0 && b.vy == 0.0 && !(b.flags & kHeld)) {
+            // As it slept: at its depth, and a provisional sleep checked again from now.
+            b.flags |= was->flags & (kAsleep | kProvisional);
+            depth_[i] = it->second.depth;
+            recheckAt_[i] = kRecheckAfter;
+        } else if (!same || (b.flags & kHeld)) {
+            spots.push_back({b.x, b.y, b.r});
+        } else {
+            carried[i] = true;
+        }
+        if (it != before.end()) before.erase(it);
+    }
+    for (const auto& [id, kept] : before)  // removed
+        spots.push_back({kept.body.x, kept.body.y, kept.body.r});
+    // A change to many particles at once (a setter, a load) starts everything afresh.
+    if (spots.size() > kMaxDisturbances) {
+        for (Body& b : bodies_)
+            b.flags &= ~(kAsleep | kProvisional);
+        keptSleepers_ = false;
+        return;
+    }
+    for (const Spot& s : spots) {
+        for (std::uint32_t q = 0; q < n; ++q) {
+            const Body& b = bodies_[q];
+            if (!(b.flags & kAsleep)) continue;
+            const double reach = s.r + b.r + restGap_;
+            const double dx = b.x - s.x, dy = b.y - s.y;
+            if (dx * dx + dy * dy <= reach * reach) wake(q, 0.0);
+        }
+    }
+    // What the changes set free falls: the rattle guard leaves it alone for a while.
+    for (std::uint32_t i = 0; i < n; ++i) {
+        if (!(bodies_[i].flags & kAsleep) && !carried[i]) rate_.quiet(i, kSettleTime);
+    }
+}
+
+void ExactStepper::settle(std::uint32_t i, double now, bool slow) {
+    // Slow and held by what does not move: asleep for good. Held only with slow free
+    // neighbours' help, or caught rattling: asleep until a recheck kRecheckAfter later.
+    Hold h;
+    if (slow) {
+        h = hold(i, kUngrounded + 1, now);
+        if (h.firm) {
+            fallAsleep(i, now, h.depth, false);
+            return;
+        }
+        if (h.withFree) {
+            fallAsleep(i, now, h.depth, true);
+            return;
+        }
+    }
+    if (!rattles(i, now)) return;
+    if (!slow) h = hold(i, kUngrounded + 1, now);
+    fallAsleep(i, now, h.depth, !h.firm);
+}
+
+void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
+    Body& a = bodies_[i];
+    if (a.flags & (kHeld | kAsleep)) return;
+    // Off the wall it rested on if the pair pushed it off (or into it: the wall event comes
+    // at once and decides).
+    const Cold& ac = cold_[i];
+    if ((a.flags & kRestX) && !ac.pinX && a.vx != 0.0) a.flags &= ~kRestX;
+    if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
+    settle(i, a.t,
+           !justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t));
+}
+
+void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid,
+                                   bool bSlid) {
+    Body& a = bodies_[i];
+    Body& b = bodies_[j];
+    const double wi = (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w;
+    const double wj = (b.flags & (kAsleep | kHeld)) ? 0.0 : cold_[j].w;
+    if (wi == 0.0 && wj == 0.0) return;
+    // Pressed together by gravity (one falls, the other does not, or less) and leaving each
+    // other slower than the lift: leave at the lift, by an impulse along n shared as a
+    // collision shares it (see above).
+    // A slider the pair event took off its face is still on it: judged by how it moved into
+    // the contact, it does not fall (else a ball at rest on a slider, both woken at once, would
+    // meet it again at the same instant without end).
+    double aax, aay, bax, bay;
+    accelerationOf(i, a, aax, aay);
+    accelerationOf(j, b, bax, bay);
+    if (aSlid) aax = slide_[i].ax, aay = slide_[i].ay;
+    if (bSlid) bax = slide_[j].ax, bay = slide_[j].ay;
+    const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
+    if (!(an < 0.0 && an * an > kPressTolerance * kPressTolerance * (rax * rax + ray * ray)))
+        return;
+    const double lift = 0.5 * restSpeed_;
+    const double leaving = (b.vx - a.vx) * n.x + (b.vy - a.vy) * n.y;
+    if (!(leaving < lift)) return;
+    const double dv = lift - leaving, share = wi / (wi + wj);
+    a.vx -= dv * share * n.x;
+    a.vy -= dv * share * n.y;
+    b.vx += dv * (1.0 - share) * n.x;
+    b.vy += dv * (1.0 - share) * n.y;
+    if (wi > 0.0) ++a.count;
+    if (wj > 0.0) ++b.count;
+}
+
+ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, double now) const {
+    // The contact normals (from i to what holds it) of everything within restGap_ that does not
+    // move: walls, obstacles, held particles at rest (depth 0), sleepers (their depth); then the
+    // same with the slow free neighbours added. holdsAgainstGravity says whether they hold i.
+    const Body& a = bodies_[i];
+    constexpr int kMax = 16;
+    double nx[kMax], ny[kMax];
+    int count = 0;
+    std::uint32_t lowest = kUngrounded;  // the least depth of a static support below `below`
+    const auto add = [&](double x, double y) {
+        if (count < kMax) nx[count] = x, ny[count++] = y;
+    };
+    if (def_.walls) {
+        if (a.x - a.r <= restGap_) add(-1.0, 0.0);
+        if (def_.width - a.r - a.x <= restGap_) add(1.0, 0.0);
+        if (a.y - a.r <= restGap_) add(0.0, -1.0);
+        if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
+    }
+    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, count, kMax);
+    if (count > 0) lowest = 0;
+    // Slow free neighbours, kept apart: a sleep that needs them is provisional (see
+    // above). With e = 1 only what is static holds; a neighbour rebuilt or woken less than
+    // kRecheckAfter ago may be falling away.
+    double fx[kMax], fy[kMax];
+    int free = 0;
+    const bool freeCount = def_.restitution < 1.0 && (keptSleepers_ || now >= kSettleTime);
+    forEachAround(i, [&](std::uint32_t q) {
+        const Body& b = bodies_[q];
+        if (q == i || (b.flags & kHeld && !isStatic(b))) return;
+        const bool still = isStatic(b);
+        double bx = b.x, by = b.y;  // a static b does not move: b.x is now
+        if (!still) {
+            // After a rebuild that kept the sleepers only what it set free or added is
+            // settling, not everything.
+            if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
+            if (keptSleepers_ && rate_.quietAt(q, now)) return;
+            const Motion m = motionAt(q, b, now);
+            if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
+            bx = m.x;
+            by = m.y;
+        }
+        const double rx = bx - a.x, ry = by - a.y;
+        const double d = std::sqrt(rx * rx + ry * ry);
+        if (!(d > 0.0 && d - (a.r + b.r) <= restGap_)) return;
+        if (!still) {
+            if (free < kMax) fx[free] = rx / d, fy[free++] = ry / d;
+            return;
+        }
+        add(rx / d, ry / d);
+        const std::uint32_t depth = (b.flags & kAsleep) ? depth_[q] : 0;
+        if (depth < below) lowest = std::min(lowest, depth);
+    });
+    Hold h;
+    h.depth = lowest >= kUngrounded ? kUngrounded : lowest + 1;
+    h.firm = lowest < kUngrounded && holdsAgainstGravity(nx, ny, count);
+    if (h.firm || count == 0 || free == 0) return h;
+    // An arch of discs leaning on each other would wait for the others to sleep first, and
+    // none would: the slow free neighbours count too, as long as something static is among the
+    // supports (two discs falling side by side have nothing static).
+    const int statics = count;
+    for (int k = 0; k < free; ++k)
+        add(fx[k], fy[k]);
+    h.withFree = count > statics && holdsAgainstGravity(nx, ny, count);
+    return h;
+}
+
+bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int count) const {
+    // Without friction: gravity in the cone of the normals, along one of them (to 1e-9 rad) or
+    // strictly between two less than a half turn apart. Anything else lets i move down.
+    const double pi = 3.14159265358979323846;
+    const double ga = std::atan2(gy_, gx_);
+    double lo = -kNever, hi = kNever;  // the nearest normals on either side of gravity
+    bool left = false, right = false;
+    for (int k = 0; k < count; ++k) {
+        double d = std::atan2(ny[k], nx[k]) - ga;  // angle from gravity to normal k, (-pi, pi]
+        if (d > pi) d -= 2.0 * pi;
+        if (d <= -pi) d += 2.0 * pi;
+        if (std::abs(d) <= 1e-9) return true;
+        if (d < 0.0 && d > lo) lo = d, left = true;
+        if (d > 0.0 && d < hi) hi = d, right = true;
+    }
+    if (left && right && hi - lo < pi - 1e-9) return true;
+    // Then i slides down the face of one support that gravity presses it into, the one that no
+    // other support blocks (or falls free if it presses into none). Friction holds it there
+    // only if that face is tilted less than the friction angle: it carries i's whole weight.
+    // (Widening every normal's cone by the friction angle instead would count a neighbour that
+    // the slide only grazes as pushing, with any force: a grain between one above and one
+    // below it would be held, and the grains above a neck would lock into a fake arch.)
+    const double g = std::hypot(gx_, gy_), ux = gx_ / g, uy = gy_ / g;
+    bool pressed = false;
+    for (int k = 0; k < count; ++k) {
+        const double c = ux * nx[k] + uy * ny[k];  // cos of the face's tilt
+        if (!(c > 0.0)) continue;
+        pressed = true;
+        const double tx = ux - c * nx[k], ty = uy - c * ny[k];  // down the face, |t| = sin tilt
+        bool blocked = false;
+        for (int m = 0; m < count && !blocked; ++m)
+            blocked = m != k && tx * nx[m] + ty * ny[m] > 1e-9;
+        if (!blocked && std::sqrt(tx * tx + ty * ty) > def_.friction * c + 1e-9) return false;
+    }
+    return pressed;
+}
+
+void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional) {
+    Body& b = bodies_[i];
+    advance(i, now);
+    b.vx = b.vy = 0.0;
+    b.flags |= kAsleep;
+    depth_[i] = depth;
+    if (provisional) {
+        b.flags |= kProvisional;
+        recheckAt_[i] = now + kRecheckAfter;
+    }
+    stopSliding(b);
+    ++b.count;
+}
+
+void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
+    // A provisional sleeper: held now by what does not move, with a support nearer the ground
+    // than itself, it sleeps for good; still held with slow free neighbours' help, it waits
+    // another kRecheckAfter; else it wakes (and what it holds up, see wake()).
+    Body& a = bodies_[i];
+    a.flags &= ~kProvisional;
+    const Hold h = hold(i, depth_[i], ev.time);
+    if (h.firm) {
+        depth_[i] = std::min(depth_[i], h.depth);
+    } else if (h.withFree) {
+        sleepNeighboursAtRest(i, ev.time);
+        a.flags |= kProvisional;
+        recheckAt_[i] = ev.time + kRecheckAfter;
+    } else {
+        wake(i, ev.time);
+        predictCell(i, ev.time);
+    }
+    predictCollision(i, ev.time);
+}
+
+void ExactStepper::sleepNeighboursAtRest(std::uint32_t i, double now) {
+    // A free neighbour with no velocity and no acceleration (one woken or hit at rest on the
+    // floor, say) has no event of its own to fall asleep at, and would keep i provisional for
+    // ever: it falls asleep now if what is static holds it.
+    const Body& a = bodies_[i];
+    forEachAround(i, [&](std::uint32_t q) {
+        const Body& b = bodies_[q];
+        if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return;
+        double ax, ay;
+        accelerationOf(q, b, ax, ay);
+        if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return;
+        const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
+        if (rx * rx + ry * ry > reach * reach) return;
+        const Hold h = hold(q, kUngrounded + 1, now);
+        if (!h.firm) return;
+        fallAsleep(q, now, h.depth, false);
+        predictCollision(q, now);
+        predictCell(q, now);
+    });
+}
+
+void ExactStepper::wake(std::uint32_t i, double now) {
+    // i wakes, and with it every sleeper it held up: a sleeper nearer the ground does not rest
+    // on i (see above); one farther from it that what stays asleep no longer holds
+    // (with a support nearer the ground than itself) wakes in turn.
+    const auto rouse = [&](std::uint32_t k) {
+        // It still rests on the walls it rested on (until it moves off them): what presses it
+        // into them is then lifted off it, not pressed through it.
+        Body& b = bodies_[k];
+        b.flags &= ~(kAsleep | kProvisional);
+        b.t = now;
+        wokeAt_[k] = now;
+        ++b.count;
+    };
+    rouse(i);
+    wakeStack_.assign(1, i);
+    while (!wakeStack_.empty()) {
+        const std::uint32_t p = wakeStack_.back();
+        wakeStack_.pop_back();
+        const Body& a = bodies_[p];
+        forEachAround(p, [&](std::uint32_t q) {
+            Body& b = bodies_[q];
+            if (!(b.flags & kAsleep)) return;
+            const double rx = b.x - a.x, ry = b.y - a.y;
+            const double reach = a.r + b.r + restGap_;
+            if (rx * rx + ry * ry > reach * reach) return;
+            const Hold h = hold(q, depth_[q], now);
+            if (h.firm) return;
+            if (h.withFree) {
+                // Held now only with slow free neighbours' help: provisional, as if it had just
+                // fallen asleep so (one that already is keeps its recheck).
+                if (!(b.flags & kProvisional)) {
+                    b.flags |= kProvisional;
+                    recheckAt_[q] = now + kRecheckAfter;
+                    predictCollision(q, now);
+                }
+                return;
+            }
+            rouse(q);
+            predictCollision(q, now);
+            predictCell(q, now);
+            wakeStack_.push_back(q);
+        });
+    }
+}
+
+}  // namespace psb::exact

@@ -1,0 +1,185 @@
+// The exact step's loop: a step, the events up to its end, and the state written back to the
+// world's arrays when someone reads them. The overview is in stepper.hpp.
+
+#include "exact/stepper.hpp"
+
+#include <algorithm>
+
+#include "exact/motion.hpp"
+#include "stage_timer.hpp"
+
+namespace psb::exact {
+
+namespace {
+
+// Events per particle between two re-sorts of the particles into cell order.
+constexpr std::uint64_t kResortEvery = 8;
+
+}  // namespace
+
+void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
+                        StepCounters& counters) {
+    StageTimer total(profile.total);
+    double& rebuildMs = profile.stage("rebuild");
+    double& eventsMs = profile.stage("events");
+    profile.stage("sync");  // added by World when the state is read
+    if (stale_) {
+        // The world's arrays must hold the current state before they are read back in (after
+        // an exhausted budget the stepper invalidates itself with a sync still owed).
+        if (syncOwed_) sync(p);
+        StageTimer t(rebuildMs);
+        rebuild(p, def);
+        // Pairs placed overlapping are part of the state: report them, not only the overlaps
+        // met at collisions (which rounding keeps at a few ulps).
+        counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
+    }
+    events_ = 0;
+    // The jam guard counts per step: clear only the particles it counted in the last one.
+    for (const std::uint32_t i : heldHit_) {
+        bodies_[i].flags &= ~kJammed;
+        cold_[i].heldHits = 0;
+    }
+    heldHit_.clear();
+    maxOverlap_ = counters.maxOverlap;
+    const double tEnd = clock_ + dt;
+    const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
+    double reached = tEnd;
+    {
+        StageTimer t(eventsMs);
+        reached = runEvents(tEnd, counters, budget);
+    }
+    clock_ = reached;
+    syncOwed_ = !bodies_.empty();
+    counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
+    counters.events += events_;
+    ++counters.steps;
+}
+
+double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
+    std::uint64_t processed = 0;
+    for (;;) {
+        const EventQueue::Entry top = queue_.top();
+        if (!(top.time <= tEnd)) break;
+        if (++processed > budget) {
+            ++counters.cutShort;
+            if (!gravity_) {
+                stale_ = true;  // fly the rest freely; the next step rebuilds
+                flewFreely_ = true;
+                return tEnd;
+            }
+            // Under gravity flying freely would drop particles through the floor and into each
+            // other. The state is exact up to the next event: the step ends there, the time
+            // left is not simulated, and the next step goes on from there, the queue as it is.
+            return top.time;
+        }
+        if (++eventsSinceSort_ > kResortEvery * bodies_.size()) {
+            // Particles drift away from the neighbours they were stored next to; restoring
+            // cell order keeps each 3 × 3 search in a few cache lines. Indices only change:
+            // no position, velocity or event time is touched.
+            sortByCell(true);
+            eventsSinceSort_ = 0;
+            continue;
+        }
+        // Events come in time order, which is random in space: the next particle's lines are
+        // almost never in cache. Start fetching them while this event is handled.
+        if (const std::uint32_t next = queue_.likelyNext(); next != UINT32_MAX) {
+            __builtin_prefetch(&bodies_[next / 2]);
+            __builtin_prefetch(&cold_[next / 2]);
+            queue_.prefetch(next);
+        }
+        const std::uint32_t i = top.key / 2;
+        if (top.key % 2 == 1) {
+            handleCell(i, top.time);
+            continue;
+        }
+        const Event ev = cold_[i].coll;
+        switch (ev.kind) {
+            case Kind::Pair:
+                handlePair(i, ev, counters);
+                break;
+            case Kind::Wall:
+                handleWall(i, ev, counters);
+                break;
+            case Kind::Obstacle:
+                handleObstacle(i, ev, counters);
+                break;
+            case Kind::Slide:
+                handleSlide(i, ev);
+                break;
+            case Kind::Recheck:
+                handleRecheck(i, ev);
+                break;
+            case Kind::None:
+                return tEnd;  // unreachable: None events are at +infinity
+        }
+    }
+    return tEnd;
+}
+
+void ExactStepper::sync(ParticleArrays& p) {
+    // One pass in the stepper's order; every particle's state at the end of the last step.
+    const std::size_t n = bodies_.size();
+    const double t = clock_;
+    const Body* bodies = bodies_.data();
+    const std::uint32_t* order = order_.data();
+    double* x = p.x.data();
+    double* y = p.y.data();
+    double* vx = p.vx.data();
+    double* vy = p.vy.data();
+    for (std::size_t k = 0; k < n; ++k) {
+        const Body& b = bodies[k];
+        const std::uint32_t i = order[k];
+        if (gravity_) {
+            const Motion m = motionAt(k, b, t);
+            x[i] = m.x;
+            y[i] = m.y;
+            vx[i] = m.vx;
+            vy[i] = m.vy;
+            continue;
+        }
+        const double h = t - b.t;
+        x[i] = b.x + b.vx * h;
+        y[i] = b.y + b.vy * h;
+        vx[i] = b.vx;
+        vy[i] = b.vy;
+    }
+    if (flewFreely_ && def_.walls) {
+        // Past a wall after the free flight (a particle the budget stopped between a wall and
+        // an obstacle it was placed in, say): on the wall, turned inward with restitution e.
+        const auto axis = [e = def_.restitution](double& c, double& v, double r, double extent) {
+            if (r >= extent - r) {
+                c = 0.5 * extent;
+                v = 0.0;
+            } else if (c < r) {
+                c = r;
+                if (v < 0.0) v = -e * v;
+            } else if (c > extent - r) {
+                c = extent - r;
+                if (v > 0.0) v = -e * v;
+            }
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            axis(x[i], vx[i], p.radius[i], def_.width);
+            axis(y[i], vy[i], p.radius[i], def_.height);
+        }
+    }
+    flewFreely_ = false;
+    syncOwed_ = false;
+}
+
+std::size_t ExactStepper::memoryBytes() const {
+    std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
+                        sizeof(std::uint32_t) * order_.capacity() +
+                        sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
+                        queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
+                        sizeof(Slide) * slide_.capacity();
+    for (const Level& level : upper_)
+        bytes += level.cells.memoryBytes();
+    // An unordered_map node holds the key, the value and the next pointer; the table one
+    // pointer per bucket.
+    bytes += overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(double) + sizeof(void*)) +
+             overlapContact_.bucket_count() * sizeof(void*);
+    return bytes;
+}
+
+}  // namespace psb::exact
