@@ -299,6 +299,27 @@ TEST(WorldChangesWhileSliding, ABallPlacedInsideASegmentDoesNotJumpOntoItsFaceTh
     }
 }
 
+TEST(WorldChangesWhileSliding, ABoxResizedToAHairOrParticlesFarApartStillStepInTheExactMode) {
+    // A box 10^-300 m high once made the exact mode's cell count along x 10^150, cast to an
+    // integer (undefined behaviour; found by the world mutation fuzzer); so did particles
+    // spread over 10^300 m without walls. The counts are bounded now.
+    World w(WorldDef{.width = 8.2, .height = 5.5, .gravity = {-11.2, -7.9}, .restitution = 0.13},
+            SolverSettings{.mode = StepMode::Exact, .dt = 1.0 / 60.0});
+    w.add({.position = {1.6, 2.4}, .velocity = {20.0, -0.5}, .radius = 0.29});
+    w.step(1.0 / 60.0);
+    w.setBox(8.2, 1e-300);
+    w.step(1.0 / 60.0);
+    w.step(1.0 / 60.0);
+    EXPECT_TRUE(std::isfinite(w.get(w.ids()[0]).position.x()));
+    World far(WorldDef{.width = 1.0, .height = 1.0, .walls = false},
+              SolverSettings{.mode = StepMode::Exact, .dt = 0.01});
+    far.add({.position = {-1e300, 0.0}, .velocity = {1.0, 0.0}, .radius = 1.0});
+    far.add({.position = {1e300, 1e-300}, .velocity = {-1.0, 0.0}, .radius = 1.0});
+    far.add({.position = {0.0, 0.0}, .radius = 1.0});
+    far.step(0.01);
+    EXPECT_EQ(far.get(far.ids()[2]).position, Vec2(0.0, 0.0));
+}
+
 std::string changeName(const ::testing::TestParamInfo<std::tuple<const char*, Change>>& p) {
     return std::get<0>(p.param);
 }

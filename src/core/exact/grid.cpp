@@ -90,8 +90,10 @@ void ExactStepper::setUpGrid() {
             // Three cells or fewer: the 3 × 3 search of the middle one already sees the whole
             // width, so one cell sees as much from everywhere and has no faces to cross (in a
             // nearly empty box, cell moves would otherwise outnumber collisions two to one).
-            const auto k = static_cast<std::int64_t>(extent / side);
-            return k <= 3 ? std::int64_t{1} : k;
+            // Never more than maxCells along one side: a box 10^-300 m high makes the side tiny
+            // and the count of the other axis beyond any integer.
+            const double k = std::min(extent / side, maxCells);
+            return k < 4.0 ? std::int64_t{1} : static_cast<std::int64_t>(k);
         };
         const std::int64_t nx = count(def_.width), ny = count(def_.height);
         cells_.reset(0.0, 0.0, def_.width / static_cast<double>(nx),
@@ -102,7 +104,10 @@ void ExactStepper::setUpGrid() {
         double side = std::max(minSide, kCellSpacings * std::sqrt(w * h / std::max(n, 1u)));
         side = std::max(side, std::sqrt(w * h / maxCells));
         const auto count = [&](double extent) {
-            return std::max<std::int64_t>(3, static_cast<std::int64_t>(std::ceil(extent / side)));
+            // At least 3, at most maxCells (a thin spread of particles along one axis), and 3
+            // where the spread is too wide for a double (the count is then not a number).
+            const double k = std::ceil(extent / side);
+            return k > 3.0 ? static_cast<std::int64_t>(std::min(k, maxCells)) : std::int64_t{3};
         };
         cells_.reset(0.0, 0.0, side, side, count(w), count(h), true, n);
     }
