@@ -69,6 +69,12 @@ const fs::path& saveDir() {
     return dir;
 }
 
+/// PSB_FUZZ_TRACE=1 prints each command to stderr (for reading a finding).
+bool tracing() {
+    static const bool on = std::getenv("PSB_FUZZ_TRACE") != nullptr;
+    return on;
+}
+
 Vec2 screenPoint(FuzzedDataProvider& in) {
     // Mostly in the window, sometimes far outside it.
     const double lo = in.ConsumeBool() ? -100.0 : -1e6, hi = lo < -1e3 ? 1e6 : kWindow + 100.0;
@@ -270,6 +276,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     double now = 0.0;
     for (int k = 0; k < kMaxCommands && in.remaining_bytes() > 0; ++k) {
         const Command c = command(in, session, now, presets);
+        if (tracing()) {
+            std::fprintf(stderr, "command %d: variant %zu, %zu particles, mode %d, paused %d\n", k,
+                         c.index(), session.world().size(),
+                         static_cast<int>(session.world().solver().mode), session.paused());
+        }
+        if (tracing())
+            if (const auto* save = std::get_if<cmd::SaveAs>(&c))
+                std::fprintf(stderr, "  save as '%s'\n", save->path.c_str());
         session.apply(c);
         const double frame = in.PickValueInArray({0.0, 1.0 / 60.0, 1.0 / 30.0, 0.1, 0.5});
         now += frame;

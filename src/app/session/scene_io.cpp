@@ -41,6 +41,10 @@ std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& t
         q += '\'';
         return q;
     };
+    if (typed.native().find('\0') != std::string::npos) {
+        why = "a file name cannot hold a NUL character";
+        return std::nullopt;
+    }
     std::string name = typed.filename().string();
     while (!name.empty() && (name.back() == '.' || name.back() == ' '))
         name.pop_back();

@@ -33,8 +33,9 @@ struct SceneInfo {
 
 /// The file a name typed for Save As names: trailing dots and spaces dropped ("lesson." is
 /// "lesson"), then ".json" added when no extension is left. A name with nothing before its
-/// extension (".json"), or beginning with a dot (a hidden file no file list would show), is
-/// refused: nullopt, and `why` says so.
+/// extension (".json"), or beginning with a dot (a hidden file no file list would show), or a
+/// path holding a NUL character (the system would read only the part before it), is refused:
+/// nullopt, and `why` says so.
 [[nodiscard]] std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
                                                                 std::string& why);
 
