@@ -11,39 +11,15 @@
 #include "render/bin_chart.hpp"
 #include "render/offscreen_test.hpp"
 #include "view/bin_histogram.hpp"
+#include "view/bins_fixture.hpp"
 #include "view/screen_layout.hpp"
 
 namespace psb::app {
 namespace {
 
-/// Bins of width 1 from x = 0 to 9 below y = 5: Binomial(8, 1/2).
-Bins eightRows() {
-    Bins b;
-    for (int k = 0; k <= 9; ++k)
-        b.edges.push_back(k);
-    b.top = 5.0;
-    b.binomial = BinomialExpectation{8, 0.5};
-    return b;
-}
-
-/// `n[k]` particles in bin k (centre k + 1/2, below the top), and `falling` above it.
-ParticleArrays landed(const std::vector<int>& n, int falling = 0) {
-    ParticleArrays p;
-    for (std::size_t k = 0; k < n.size(); ++k) {
-        for (int i = 0; i < n[k]; ++i) {
-            p.x.push_back(static_cast<double>(k) + 0.5);
-            p.y.push_back(6.0);
-        }
-    }
-    for (int i = 0; i < falling; ++i) {
-        p.x.push_back(4.5);
-        p.y.push_back(1.0);
-    }
-    return p;
-}
-
-/// Counts close to 1000 × Binomial(8, 1/2).
-const std::vector<int> kBell = {4, 31, 109, 219, 273, 219, 109, 31, 5};
+using test::eightRows;
+using test::kBell;
+using test::landed;
 
 class BinHistogramDrawTest : public OffscreenTest {
   protected:
