@@ -51,11 +51,26 @@ bool insideBox(const World& world, const Vec2& p, double radius) {
            p.y() <= d.height - radius;
 }
 
-bool isFree(const std::vector<Disc>& near, const Vec2& p, double radius) {
+/// Whether a disc of `radius` at `p` stays clear of the obstacle: its centre at least the two
+/// radii from the obstacle's core (a peg's centre, or the nearest point of a segment's line).
+bool clearOf(const Obstacle& o, const Vec2& p, double radius) {
+    const Vec2 along = o.b - o.a;
+    const double length2 = along.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((p - o.a).dot(along) / length2, 0.0, 1.0) : 0.0;
+    const double reach = radius + o.radius;
+    return (p - (o.a + t * along)).squaredNorm() >= reach * reach;
+}
+
+bool isFree(const std::vector<Disc>& near, const Obstacles& obstacles, const Vec2& p,
+            double radius) {
     for (const Disc& d : near) {
         const double dx = p.x() - d.x, dy = p.y() - d.y, reach = radius + d.r;
         if (dx * dx + dy * dy < reach * reach) return false;
     }
+    // A new particle inside a peg or a wall would be stuck there, impaled (the exact mode keeps
+    // a placed overlap as it was placed).
+    for (const Obstacle& o : obstacles)
+        if (!clearOf(o, p, radius)) return false;
     return true;
 }
 
@@ -81,7 +96,8 @@ std::optional<Vec2> findFreeSpot(const World& world, const Vec2& desired, double
         if (dx * dx + dy * dy < reach * reach) near.push_back({p.x[i], p.y[i], p.radius[i]});
     }
 
-    if (isFree(near, start, radius)) return start;
+    const Obstacles& obstacles = world.obstacles();
+    if (isFree(near, obstacles, start, radius)) return start;
     for (int k = 1; k <= kRings; ++k) {
         const double ringR = k * step;
         const int n = std::max(8, static_cast<int>(std::ceil(2.0 * std::numbers::pi * k)));
@@ -92,7 +108,7 @@ std::optional<Vec2> findFreeSpot(const World& world, const Vec2& desired, double
         for (int a = 0; a < n; ++a) {
             const double t = 2.0 * std::numbers::pi * a / n;
             const Vec2 c = start + ringR * Vec2(std::cos(t), std::sin(t));
-            if (!insideBox(world, c, radius) || !isFree(near, c, radius)) continue;
+            if (!insideBox(world, c, radius) || !isFree(near, obstacles, c, radius)) continue;
             const double d = (c - desired).squaredNorm();
             if (!best || d < bestD) {
                 best = c;

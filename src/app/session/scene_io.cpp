@@ -48,6 +48,10 @@ std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& t
     std::string name = typed.filename().string();
     while (!name.empty() && (name.back() == '.' || name.back() == ' '))
         name.pop_back();
+    if (typed.filename().empty()) {
+        why = "the path ends in a folder; type a file name after it";
+        return std::nullopt;
+    }
     if (name.empty()) {
         why = quoted(typed.filename().string());
         why += " is not a file name";

@@ -196,7 +196,9 @@ void Session::saveAs(const cmd::SaveAs& c) {
     std::string why;
     const std::optional<std::filesystem::path> named = saveFileName(c.path, why);
     if (!named) {
-        say("Save: " + why, Notice::Level::Warning);
+        // The panel's status line says so too, not the save before it.
+        fileError_ = "Save: " + why;
+        say(fileError_, Notice::Level::Warning);
         return;
     }
     std::filesystem::path path = *named;

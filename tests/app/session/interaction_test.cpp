@@ -373,6 +373,24 @@ TEST(FindFreeSpot, ClampsIntoTheBox) {
     EXPECT_EQ(*s, Vec2(20, 20));
 }
 
+TEST(FindFreeSpot, KeepsClearOfPegsAndWalls) {
+    // A spawn (M) or a launch on a wall once put the new particle inside it, impaled on the
+    // wall for good in the exact mode (seen by a new user on the Ramp preset).
+    World w = boxWorld();
+    w.addObstacle(Obstacle::segment({100, 400}, {600, 400}, 10.0));  // 5 m either side of y = 400
+    w.addObstacle(Obstacle::peg({200, 200}, 30.0));
+    for (const Vec2& want : {Vec2(300, 400), Vec2(300, 410), Vec2(100, 400), Vec2(200, 200)}) {
+        const auto s = findFreeSpot(w, want, 20.0);
+        ASSERT_TRUE(s.has_value());
+        const double toWall = std::abs(s->y() - 400.0);
+        if (s->x() >= 100.0 && s->x() <= 600.0) {
+            EXPECT_GE(toWall, 25.0 - 1e-9) << want.transpose();
+        }
+        EXPECT_GE((*s - Vec2(200, 200)).norm(), 50.0 - 1e-9) << want.transpose();
+        EXPECT_LE((*s - want).norm(), 60.0) << "a near free spot, not a far one";
+    }
+}
+
 TEST(SpawnSettings, NewParticlesAreTheScenesTypicalOneTimesTheSize) {
     SpawnSettings s;
     // An empty 700 m box: the original's 10 kg, 25 m particle, 2.5 m per kg.

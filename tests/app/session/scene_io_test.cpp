@@ -50,6 +50,8 @@ TEST(SaveFileName, AddsJsonDropsTrailingDotsAndSpacesAndRefusesHiddenOrEmptyName
     EXPECT_FALSE(saveFileName("dir/..", why));
     EXPECT_FALSE(saveFileName(". ", why));
     EXPECT_NE(why.find("is not a file name"), std::string::npos) << why;
+    EXPECT_FALSE(saveFileName("dir/", why));
+    EXPECT_EQ(why, "the path ends in a folder; type a file name after it");
     // A NUL ends the name the system sees: "dir/\0x" would be "dir/" (found by the session
     // fuzzer: the search for a free name beside it never ended).
     EXPECT_FALSE(saveFileName(fs::path(std::string("dir/\0x", 6)), why));

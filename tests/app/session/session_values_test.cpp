@@ -301,10 +301,14 @@ TEST_F(SessionValues, SaveAsDropsTrailingDotsAndRefusesANameWithoutAStem) {
     EXPECT_FALSE(fs::exists(dir_ / "a."));
     s.apply(cmd::SaveAs{dir_ / ".json"});
     EXPECT_TRUE(said(s.takeNotices(), "hidden file"));
+    // The panel's status line says why, not "Saved to a.json" from the save before.
+    EXPECT_NE(s.fileError().find("hidden file"), std::string::npos) << s.fileError();
     EXPECT_FALSE(fs::exists(dir_ / ".json"));
     EXPECT_FALSE(fs::exists(dir_ / ".json.json"));
     s.apply(cmd::SaveAs{dir_ / "..."});
     EXPECT_TRUE(said(s.takeNotices(), "is not a file name"));
+    s.apply(cmd::SaveAs{dir_ / "sub" / ""});
+    EXPECT_TRUE(said(s.takeNotices(), "the path ends in a folder"));
     EXPECT_EQ(s.lastSave()->filename(), "a.json");  // the refused names saved nothing
 }
 
