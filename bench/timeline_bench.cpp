@@ -36,6 +36,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "gas_scene.hpp"
+#include "session/physics_controls.hpp"
 #include "session/session.hpp"
 #include "session/timeline.hpp"
 
@@ -165,7 +166,7 @@ void BM_SessionStepBack(benchmark::State& state) {
         w.step(w.solver().dt);  // the random placement's overlaps are separated first
     psb::app::SessionOptions options;
     options.saveTo = "/dev/null";
-    psb::app::Session s(std::move(w), "gas", options);
+    psb::app::Session s(std::move(w), psb::app::SceneMeta{"gas"}, options);
     double now = 0.0;
     const double start = s.world().time();
     while (s.world().time() < start + 12.0) {
@@ -198,7 +199,7 @@ void BM_SessionStepBack(benchmark::State& state) {
     state.counters["step_back_worst_ms"] = worstMs;
     state.counters["scrub_10s_ms"] = scrubMs / static_cast<double>(state.iterations());
     for (int k = 0; k < 120; ++k) {
-        s.apply(psb::app::cmd::ToggleGravity{});
+        s.apply(psb::app::gravityToggle(s.world().def().gravity, s.loadedWorld().def().gravity));
         now += 1.0 / 60.0;
         s.update(1.0 / 60.0, now);
     }

@@ -45,19 +45,14 @@ void logLine(const std::string& line) {
 App::App(const AppOptions& options) : options_(options) {
     // The scene first: a bad file is reported before any window opens.
     World world;
-    std::string name, description;
-    std::vector<std::size_t> trails;
-    std::optional<Bins> bins;
+    SceneMeta meta;
     if (options_.benchParticles > 0) {
         world = benchmarkWorld(options_.benchParticles);
-        name = "benchmark";
+        meta.name = "benchmark";
     } else {
         const Scene scene = psb::app::openScene(options_.scene);
         world = makeWorld(scene);
-        name = scene.name.empty() && options_.scene ? options_.scene->stem().string() : scene.name;
-        description = scene.description;
-        trails = scene.trails;
-        bins = scene.bins;
+        meta = sceneMeta(scene, options_.scene);
     }
     SdlContextOptions so;
     so.width = options_.width;
@@ -74,9 +69,6 @@ App::App(const AppOptions& options) : options_(options) {
     s.presets = presetScenes();
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
-    s.sceneDescription = description;
-    s.sceneTrails = trails;
-    s.sceneBins = bins;
     s.paused = options_.startPaused;
     s.arrows = options_.arrows;
     const SDL_Point out = sdl_->outputSize();
@@ -121,7 +113,7 @@ App::App(const AppOptions& options) : options_(options) {
     // A window less than twice the panel's width would leave the box less room than the
     // panel: it opens folded (C or >> opens it).
     s.controls = out.x >= 2.0 * s.insets.controls;
-    session_.emplace(std::move(world), std::move(name), std::move(s));
+    session_.emplace(std::move(world), std::move(meta), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});
         if (c == 'K') session_->apply(cmd::TogglePlots{});
@@ -191,7 +183,7 @@ void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
     if (gui_ && gui_->handleEvent(e)) return;
     for (const Command& c :
-         input_.translate(e, session_->prompt().active(), sdl_->pixelRatio(), sdl_->outputSize())) {
+         input_.translate(e, keyState(*session_), sdl_->pixelRatio(), sdl_->outputSize())) {
         apply(c);
     }
 }

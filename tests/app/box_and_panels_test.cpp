@@ -72,7 +72,7 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
     o.insets.controls = kControlsWidth;
     o.insets.controlsFolded = kControlsFoldedWidth;
     o.presets = testPresets();
-    Session s(makeWorld(defaultScene()), "default", o);
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
     const auto& presets = s.presets();
     const auto galton = std::find_if(presets.begin(), presets.end(),
                                      [](const SceneInfo& p) { return p.name == "Galton board"; });
@@ -129,7 +129,7 @@ TEST_F(BoxAndPanels, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
         asked.push_back(folded);
         return folded ? 195.0 : 60.0;
     };
-    Session s(makeWorld(defaultScene()), "default", o);
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
     ASSERT_FALSE(asked.empty());
     EXPECT_FALSE(asked.back());
     s.apply(cmd::TogglePlots{});

@@ -31,6 +31,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "session/command.hpp"
+#include "session/physics_controls.hpp"
 #include "session/session.hpp"
 
 namespace {
@@ -159,7 +160,7 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 13:
             return cmd::SingleStep{};
         case 14:
-            return cmd::ScaleTime{value(in, 0.1, 10.0)};
+            return cmd::SetTimeScale{s.timeScale() * value(in, 0.1, 10.0)};
         case 15:
             return cmd::StepBack{};
         case 16:
@@ -177,9 +178,12 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 22:
             return cmd::ChangeSpawnMass{in.ConsumeIntegralInRange<int>(-2, 2)};
         case 23:
-            return cmd::ChangeRestitution{in.ConsumeIntegralInRange<int>(-2, 2)};
+            return restitutionStep(s.world().def().restitution,
+                                   in.ConsumeIntegralInRange<int>(-2, 2));
         case 24:
-            return in.ConsumeBool() ? Command{cmd::ToggleGravity{}} : Command{cmd::NextMode{}};
+            return in.ConsumeBool() ? Command{gravityToggle(s.world().def().gravity,
+                                                            s.loadedWorld().def().gravity)}
+                                    : Command{modeStep(s.world().solver())};
         case 25:
             return cmd::Reset{};
         case 26:
@@ -271,7 +275,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     o.paused = in.ConsumeBool();
     o.viewportWidth = kWindow;
     o.viewportHeight = kWindow;
-    Session session(makeWorld(scene), scene.name, o);
+    Session session(makeWorld(scene), sceneMeta(scene, std::nullopt), o);
 
     double now = 0.0;
     for (int k = 0; k < kMaxCommands && in.remaining_bytes() > 0; ++k) {

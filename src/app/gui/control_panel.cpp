@@ -69,7 +69,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             if (ImGui::Button("<<")) out_.emplace_back(cmd::ToggleControls{});
             mark("fold panel");
             tip("Fold the panel away to give the box more room (key C)");
-            ImGui::TextDisabled("%s", s.sceneName().c_str());
+            ImGui::TextDisabled("%s", s.meta().name.c_str());
             time(s);
             scene(s);
             physics(s);
@@ -174,7 +174,7 @@ void ControlPanel::scene(const Session& s) {
         for (std::size_t k = 0; k < presets.size(); ++k) {
             const SceneInfo& p = presets[k];
             ImGui::PushID(static_cast<int>(k));
-            if (ImGui::Selectable(p.name.c_str(), p.name == s.sceneName())) {
+            if (ImGui::Selectable(p.name.c_str(), p.name == s.meta().name)) {
                 out_.emplace_back(cmd::OpenPreset{static_cast<int>(k)});
             }
             mark("preset " + p.name);
@@ -248,7 +248,7 @@ void ControlPanel::show(const Session& s) {
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
-    if (s.sceneBins()) {
+    if (s.meta().bins) {
         box("Bin counts against the bell curve", v.bins, cmd::ShowOption::Bins,
             "How many balls landed in each bin, against the binomial distribution and the "
             "normal curve the board should give, and whether the difference is more than "

@@ -43,16 +43,11 @@ void ControlPanel::physics(const Session& s) {
     if (solver.mode == StepMode::Substep) substeps_ = solver.substeps;
 
     const auto modeButton = [&](const char* label, StepMode m) {
-        const std::string why = s.modeRefusal(m);
-        ImGui::BeginDisabled(!why.empty());
         if (ImGui::RadioButton(label, solver.mode == m)) {
             out_.emplace_back(cmd::SetMode{m, substeps_});
         }
         mark(std::string("mode ") + label);
-        ImGui::EndDisabled();
-        const std::string help =
-            std::string(modeSentence(m)) + (why.empty() ? "" : "\nNot available here: " + why);
-        tip(help.c_str());
+        tip(modeSentence(m));
     };
     ImGui::TextUnformatted("Mode (key T):");
     modeButton("Discrete", StepMode::Discrete);
@@ -71,9 +66,6 @@ void ControlPanel::physics(const Session& s) {
         tip("Smaller steps per time step: more accurate, k times the work");
     }
     widgets::wrappedDisabled(modeSentence(solver.mode));
-    if (const std::string why = s.modeRefusal(StepMode::Exact); !why.empty()) {
-        widgets::wrappedDisabled("Exact is not available: " + why + ".");
-    }
 
     const WorldDef& d = w.def();
     double e = d.restitution;

@@ -12,6 +12,7 @@
 #include "gui/control_panel.hpp"
 #include "gui/widgets.hpp"
 #include "session/accuracy.hpp"
+#include "session/physics_controls.hpp"
 #include "session/session.hpp"
 #include "session/units.hpp"
 

@@ -3,6 +3,8 @@
 #include <cmath>
 
 #include "platform/clock.hpp"
+#include "session/physics_controls.hpp"
+#include "session/session.hpp"
 
 namespace psb::app {
 
@@ -31,8 +33,19 @@ std::vector<Command> editKey(const SDL_KeyboardEvent& key) {
 
 }  // namespace
 
-std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) {
-    if (editing) return editKey(key);
+KeyState keyState(const Session& session) {
+    KeyState k;
+    k.editing = session.prompt().active();
+    k.restitution = session.world().def().restitution;
+    k.gravity = session.world().def().gravity;
+    k.sceneGravity = session.loadedWorld().def().gravity;
+    k.solver = session.world().solver();
+    k.timeScale = session.timeScale();
+    return k;
+}
+
+std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState& state) {
+    if (state.editing) return editKey(key);
     const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
     const bool shift = (key.keysym.mod & KMOD_SHIFT) != 0;
     const SDL_Keycode sym = key.keysym.sym;
@@ -71,7 +84,7 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
         case SDLK_d:
             return {cmd::ToggleSpeeds{}};
         case SDLK_t:
-            return {cmd::NextMode{}};
+            return {modeStep(state.solver)};
         case SDLK_o:
         case SDLK_F3:
             return {cmd::ToggleProfile{}};
@@ -82,15 +95,15 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
         case SDLK_n:
             return {cmd::SingleStep{}};
         case SDLK_COMMA:
-            return {cmd::ScaleTime{0.5}};
+            return {cmd::SetTimeScale{state.timeScale * 0.5}};
         case SDLK_PERIOD:
-            return {cmd::ScaleTime{2.0}};
+            return {cmd::SetTimeScale{state.timeScale * 2.0}};
         case SDLK_r:
             return {cmd::Reset{}};
         case SDLK_e:
-            return {cmd::ChangeRestitution{shift ? +1 : -1}};
+            return {restitutionStep(state.restitution, shift ? +1 : -1)};
         case SDLK_g:
-            return {cmd::ToggleGravity{}};
+            return {gravityToggle(state.gravity, state.sceneGravity)};
         case SDLK_F12:
             return {cmd::Screenshot{}};
         case SDLK_RETURN:
@@ -138,7 +151,7 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing) 
     }
 }
 
-std::vector<Command> Input::translate(const SDL_Event& e, bool editing, double pixelRatio,
+std::vector<Command> Input::translate(const SDL_Event& e, const KeyState& state, double pixelRatio,
                                       SDL_Point output) {
     const auto at = [pixelRatio](int x, int y) { return Vec2(x * pixelRatio, y * pixelRatio); };
     switch (e.type) {
@@ -150,9 +163,9 @@ std::vector<Command> Input::translate(const SDL_Event& e, bool editing, double p
             }
             return {};
         case SDL_KEYDOWN:
-            return commandsForKey(e.key, editing);
+            return commandsForKey(e.key, state);
         case SDL_TEXTINPUT:
-            if (editing) return {cmd::EditType{e.text.text}};
+            if (state.editing) return {cmd::EditType{e.text.text}};
             return {};
         case SDL_MOUSEBUTTONDOWN:
             mouse_ = at(e.button.x, e.button.y);

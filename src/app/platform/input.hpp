@@ -11,9 +11,27 @@
 
 #include <SDL.h>
 
+#include <particle_sandbox/math.hpp>
+#include <particle_sandbox/solver_settings.hpp>
+
 #include "session/command.hpp"
 
 namespace psb::app {
+
+class Session;
+
+/// What the keys read from the session: whether the prompt has the keyboard, and the values
+/// the keys that step one (E, G, T, ',' and '.') step from.
+struct KeyState {
+    bool editing = false;  ///< the edit prompt is open
+    double restitution = 1.0;
+    Vec2 gravity = Vec2::Zero();
+    Vec2 sceneGravity = Vec2::Zero();  ///< of the scene as loaded
+    SolverSettings solver = {};
+    double timeScale = 1.0;
+};
+/// The session's KeyState now.
+[[nodiscard]] KeyState keyState(const Session& session);
 
 /// Pan per arrow key press, pixels (the original panned by 50 / zoom world units).
 inline constexpr double kPanKeyPixels = 50.0;
@@ -22,15 +40,16 @@ inline constexpr double kSeekKeySeconds = 1.0;
 /// Zoom factor per wheel notch.
 inline constexpr double kWheelZoomStep = 1.15;
 
-/// The command a key press means (none for an unbound key or a repeat that should not repeat).
-/// `editing`: the edit prompt is open.
-[[nodiscard]] std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, bool editing);
+/// The command a key press means (none for an unbound key or a repeat that should not repeat),
+/// in the state `state`.
+[[nodiscard]] std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key,
+                                                  const KeyState& state);
 
 class Input {
   public:
     /// The commands `e` means. `pixelRatio` is drawable pixels per window point (mouse events
     /// come in points, the camera works in pixels); `output` is the drawable size, pixels.
-    [[nodiscard]] std::vector<Command> translate(const SDL_Event& e, bool editing,
+    [[nodiscard]] std::vector<Command> translate(const SDL_Event& e, const KeyState& state,
                                                  double pixelRatio, SDL_Point output);
 
   private:

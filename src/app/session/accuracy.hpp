@@ -1,11 +1,5 @@
 #pragma once
-// Switching the stepping mode from the keyboard, and the live accuracy indicators of the HUD.
-//
-// Mode switch: discrete -> substep -> exact -> discrete. Which modes a world takes is the
-// world's to say (World::setSolver throws psb::InvalidArgument for settings it refuses), so the
-// switch asks it: a mode the world refuses is skipped with the world's reason, and the switch
-// moves on to the one after, so a key press always changes the mode when any other mode is
-// possible, and can never take the app down.
+// The live accuracy indicators of the HUD.
 //
 // Indicators, both O(1) or O(N) per frame and nothing more:
 // - Largest overlap: the deeper of what this frame's steps met (StepCounters::maxOverlap, a
@@ -26,34 +20,10 @@
 
 namespace psb::app {
 
-/// The mode the switch key selects after `mode`.
-[[nodiscard]] StepMode nextMode(StepMode mode);
-
-/// Substeps per dt the app uses when it switches to substep mode from a solver with fewer than
-/// two (one substep would be the discrete mode again).
-inline constexpr int kAppSubsteps = 4;
-
-struct ModeSwitch {
-    bool changed = false;
-    std::string message;  ///< for the screen: the new mode, and the modes skipped and why
-    std::string skipped;  ///< the modes the world refused, e.g. "exact"; empty when none
-    std::string detail;   ///< for the log: the world's full messages for the skipped modes
-};
-
-/// Why the exact mode cannot step `world` (in words for the screen), or empty when it can.
-[[nodiscard]] std::string exactModeRefusal(const World& world);
-
-/// Moves `world` to the next mode it accepts, skipping (and naming) those it refuses. When it
-/// refuses every other mode the world is unchanged and the message says why.
-ModeSwitch switchToNextMode(World& world);
-
 /// The energy whose drift the HUD shows: kinetic, or kinetic + potential when the world has
 /// gravity (under gravity kinetic energy alone is not conserved, so its drift would look like
 /// energy lost or made).
 [[nodiscard]] double monitoredEnergy(const World& world);
-
-/// "discrete", "substep x4", "exact".
-[[nodiscard]] std::string modeName(const SolverSettings& solver);
 
 class AccuracyMonitor {
   public:

@@ -6,6 +6,12 @@
 //
 // Pointer positions are screen pixels (the session converts them through its camera), times are
 // seconds on the clock the pointer events carry (SDL's ticks in the app).
+//
+// One command per action, whoever sends it: a key that steps a value (E, G, T, ',' and '.')
+// sends the same Set... command as the control panel, with the value the step leads to.
+//
+// Each command type says how Session::apply treats it in its `traits` (see Traits below), so
+// that a new command is classified where it is declared, not in lists elsewhere.
 
 #include <cstddef>
 #include <cstdint>
@@ -23,77 +29,139 @@
 
 namespace psb::app::cmd {
 
+/// How Session::apply treats a command.
+struct Traits {
+    /// May change what undo restores: apply() keeps the state before it, for the history. (A
+    /// command that `continues` a slider drag belongs to the drag's first and keeps nothing.)
+    bool edits = false;
+    /// Reaches the session while the edit prompt holds the keyboard: the prompt's own keys, the
+    /// pointer, the view's geometry, the control panel's widgets (the mouse sends those),
+    /// a screenshot and leaving. Every other command is held back while the prompt is open.
+    bool whilePrompt = false;
+    /// Leaves a pending quit question standing: it answers it (Back, Quit), or the user did not
+    /// act (a pointer move, a resize). Any other command cancels the question.
+    bool keepsQuitQuestion = false;
+};
+/// Looks, moves the view, steers time or files: never an edit; held back by the prompt.
+inline constexpr Traits kLooks{};
+/// An edit sent by a key: held back by the prompt.
+inline constexpr Traits kEdits{.edits = true};
+/// Never an edit; reaches the session past the prompt (its keys, the mouse, the panel).
+inline constexpr Traits kPastPrompt{.whilePrompt = true};
+/// An edit that reaches the session past the prompt (the mouse, the panel).
+inline constexpr Traits kEditsPastPrompt{.edits = true, .whilePrompt = true};
+/// Not a user's choice, or the answer to the quit question (a pointer move, a resize, leaving).
+inline constexpr Traits kPassive{.whilePrompt = true, .keepsQuitQuestion = true};
+
 // The left button: grab, fling, launch, select.
 struct PointerDown {
+    static constexpr Traits traits = kEditsPastPrompt;
     Vec2 screen;
     double time = 0.0;
 };
 struct PointerMove {
+    static constexpr Traits traits = kPassive;
     Vec2 screen;
     double time = 0.0;
 };
 struct PointerUp {
+    static constexpr Traits traits = kPastPrompt;
     Vec2 screen;
     double time = 0.0;
 };
 /// Backspace/Delete: the held particle, else the selected obstacle.
-struct DeleteHeld {};
+struct DeleteHeld {
+    static constexpr Traits traits = kEdits;
+};
 
 // The view.
 struct Pan {
+    static constexpr Traits traits = kPastPrompt;
     Vec2 pixels;
 };  ///< the world slides by `pixels`
 struct Zoom {
+    static constexpr Traits traits = kPastPrompt;
     Vec2 screen;
     double factor = 1.0;
 };  ///< about a screen point
-struct Fit {};
+struct Fit {
+    static constexpr Traits traits = kLooks;
+};
 struct Resize {
+    static constexpr Traits traits = kPassive;
     int width = 0;
     int height = 0;
 };  ///< the drawable area, pixels
-struct ToggleArrows {};
-struct ToggleLabels {};
-struct ToggleHelp {};
-struct ToggleProfile {};
-struct ToggleMomentum {};
-struct CycleTrails {};
-struct TogglePlots {};
-struct ToggleSpeeds {};
+struct ToggleArrows {
+    static constexpr Traits traits = kLooks;
+};
+struct ToggleLabels {
+    static constexpr Traits traits = kLooks;
+};
+struct ToggleHelp {
+    static constexpr Traits traits = kLooks;
+};
+struct ToggleProfile {
+    static constexpr Traits traits = kLooks;
+};
+struct ToggleMomentum {
+    static constexpr Traits traits = kLooks;
+};
+struct CycleTrails {
+    static constexpr Traits traits = kLooks;
+};
+struct TogglePlots {
+    static constexpr Traits traits = kLooks;
+};
+struct ToggleSpeeds {
+    static constexpr Traits traits = kLooks;
+};
 
 // Time.
-struct TogglePause {};
-struct SingleStep {};  ///< one step, while paused
-struct ScaleTime {
-    double factor = 1.0;
-};  ///< time speed times `factor`
+struct TogglePause {
+    static constexpr Traits traits = kLooks;
+};
+struct SingleStep {
+    static constexpr Traits traits = kLooks;
+};  ///< one step, while paused
 
 // Step back in time (while paused; see Session::timeline()).
-struct StepBack {};     ///< one recorded frame back
-struct StepForward {};  ///< one recorded frame forward; at the latest frame, one new step
+struct StepBack {
+    static constexpr Traits traits = kLooks;
+};  ///< one recorded frame back
+struct StepForward {
+    static constexpr Traits traits = kLooks;
+};  ///< one recorded frame forward; at the latest frame, one new step
 struct Seek {
+    static constexpr Traits traits = kLooks;
     double seconds = 0.0;
 };  ///< to the recorded frame at or before this simulated time, within the covered range
 struct SeekBy {
+    static constexpr Traits traits = kLooks;
     double seconds = 0.0;
 };  ///< Seek to the time shown plus `seconds` (negative: back)
 
 // Undo and redo of the user's edits.
-struct Undo {};
-struct Redo {};
+struct Undo {
+    static constexpr Traits traits = kLooks;
+};
+struct Redo {
+    static constexpr Traits traits = kLooks;
+};
 
 // The world.
-struct SpawnRandom {};
+struct SpawnRandom {
+    static constexpr Traits traits = kEdits;
+};
 struct ChangeSpawnMass {
+    static constexpr Traits traits = kEdits;
     int direction = 0;
 };  ///< -1 lighter, +1 heavier
-struct ChangeRestitution {
-    int direction = 0;
+struct Reset {
+    static constexpr Traits traits = kEdits;
 };
-struct ToggleGravity {};
-struct NextMode {};
-struct Reset {};
 struct OpenPreset {
+    static constexpr Traits traits = kEdits;
     int index = -1;
 };  ///< by position in the preset list; -1: the next one
 
@@ -111,47 +179,63 @@ struct OpenPreset {
     return {};
 }
 struct OpenFile {
+    static constexpr Traits traits = kEdits;
     std::filesystem::path file;
 };
 
 // The selected particle's edit prompt.
-struct OpenEdit {};
+struct OpenEdit {
+    static constexpr Traits traits = kLooks;
+};
 struct EditType {
+    static constexpr Traits traits = kPastPrompt;
     std::string text;
 };
 struct EditField {
+    static constexpr Traits traits = kPastPrompt;
     bool back = false;
 };  ///< Tab / Shift+Tab
-struct EditBackspace {};
-struct EditApply {};
+struct EditBackspace {
+    static constexpr Traits traits = kPastPrompt;
+};
+struct EditApply {
+    static constexpr Traits traits = kEditsPastPrompt;
+};
 
 // Values set directly (the control panel's sliders, fields and buttons). A slider held and
 // dragged sends one command per frame: the first with `continues` false, the rest true, so the
 // drag is one user action (one undo step), not hundreds.
 struct SetRestitution {
+    static constexpr Traits traits = kEditsPastPrompt;
     double value = 1.0;
     bool continues = false;
 };
 struct SetFriction {
+    static constexpr Traits traits = kEditsPastPrompt;
     double value = 0.0;  ///< Coulomb coefficient, >= 0
     bool continues = false;
 };
-/// Gravity on (straight down, `g` m/s²) or off.
+/// Gravity on (`g` m/s² along `direction`, straight down unless said) or off.
 struct SetGravity {
+    static constexpr Traits traits = kEditsPastPrompt;
     bool on = false;
     double g = 9.81;
     bool continues = false;
+    Vec2 direction = Vec2(0.0, 1.0);  ///< finite, not zero; its length does not matter
 };
 struct SetWalls {
+    static constexpr Traits traits = kEditsPastPrompt;
     bool on = true;
 };
 /// The stepping mode; `substeps` for StepMode::Substep (2 or more).
 struct SetMode {
+    static constexpr Traits traits = kEditsPastPrompt;
     StepMode mode = StepMode::Discrete;
     int substeps = 4;
 };
 /// Simulated seconds per real second, within the session's limits.
 struct SetTimeScale {
+    static constexpr Traits traits = kEditsPastPrompt;
     double value = 1.0;
 };
 /// What the left mouse button does.
@@ -164,66 +248,86 @@ enum class Tool : std::uint8_t {
     Wall,    ///< a drag draws a wall (a fixed segment) from the press to the release
 };
 struct SetTool {
+    static constexpr Traits traits = kPastPrompt;
     Tool tool = Tool::Fling;
     bool toggle = false;  ///< a key: when `tool` is already on, back to Fling
 };
 /// The sizes of the obstacles the Peg and Wall tools make, metres (each finite, > 0, at most
 /// half the box's smaller side).
 struct SetObstacleSizes {
+    static constexpr Traits traits = kPastPrompt;
     double pegRadius = 1.0;
     double wallThickness = 0.5;  ///< full thickness
 };
 /// Removes the obstacle at `index` (the panel's button; Backspace/Delete removes the selected
 /// obstacle through DeleteHeld).
 struct RemoveObstacle {
+    static constexpr Traits traits = kEditsPastPrompt;
     std::size_t index = 0;
 };
 /// What launched particles are made of; radius 0 follows the mass (the original's rule, scaled
 /// to the scene); no colour: a colour from the mass.
 struct SetLaunchBody {
+    static constexpr Traits traits = kEditsPastPrompt;
     double mass = 10.0;
     double radius = 0.0;
     std::optional<Color> color;
 };
 /// One value of one particle, as text (validated as the edit prompt validates it).
 struct EditParticle {
+    static constexpr Traits traits = kEditsPastPrompt;
     ParticleId id;
     ParticleField field = ParticleField::Mass;
     std::string text;
 };
 /// Removes one particle (the selected one, from the panel).
 struct DeleteParticle {
+    static constexpr Traits traits = kEditsPastPrompt;
     ParticleId id;
 };
 /// The selection set from a table (null clears it).
 struct Select {
+    static constexpr Traits traits = kPastPrompt;
     ParticleId id;
 };
 /// Show options set to a value (checkboxes).
 enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile, Bins };
 struct SetShow {
+    static constexpr Traits traits = kPastPrompt;
     ShowOption option = ShowOption::Arrows;
     bool on = true;
 };
 struct SetTrails {
+    static constexpr Traits traits = kPastPrompt;
     int mode = 0;  ///< TrailMode as int: off, selected, all
 };
 /// The control panel shown or folded to a narrow strip (key C).
-struct ToggleControls {};
+struct ToggleControls {
+    static constexpr Traits traits = kPastPrompt;
+};
 
 // Files and leaving.
-struct Save {};
+struct Save {
+    static constexpr Traits traits = kLooks;
+};
 /// Saves to `path` as given (an existing file is replaced only when `overwrite` is set).
 struct SaveAs {
+    static constexpr Traits traits = kPastPrompt;
     std::filesystem::path path;
     bool overwrite = false;
 };
-struct Screenshot {};  ///< the app writes the next frame's pixels
+struct Screenshot {
+    static constexpr Traits traits = kPastPrompt;
+};  ///< the app writes the next frame's pixels
 /// Esc: closes what is open (the help, the edit prompt, a quit question); with nothing open,
 /// quits, asking first when there are unsaved changes.
-struct Back {};
+struct Back {
+    static constexpr Traits traits = kPassive;
+};
 /// The window's close button: quits, asking first when there are unsaved changes.
-struct Quit {};
+struct Quit {
+    static constexpr Traits traits = kPassive;
+};
 
 }  // namespace psb::app::cmd
 
@@ -233,9 +337,8 @@ using Command = std::variant<
     cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan, cmd::Zoom,
     cmd::Fit, cmd::Resize, cmd::ToggleArrows, cmd::ToggleLabels, cmd::ToggleHelp,
     cmd::ToggleProfile, cmd::ToggleMomentum, cmd::CycleTrails, cmd::TogglePlots, cmd::ToggleSpeeds,
-    cmd::TogglePause, cmd::SingleStep, cmd::ScaleTime, cmd::StepBack, cmd::StepForward, cmd::Seek,
-    cmd::SeekBy, cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass,
-    cmd::ChangeRestitution, cmd::ToggleGravity, cmd::NextMode, cmd::Reset, cmd::OpenPreset,
+    cmd::TogglePause, cmd::SingleStep, cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy,
+    cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::Reset, cmd::OpenPreset,
     cmd::OpenFile, cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
     cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution, cmd::SetFriction,
     cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale, cmd::SetTool,

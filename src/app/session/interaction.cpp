@@ -181,8 +181,9 @@ void Interaction::record(const Vec2& point, double time) {
     }
 }
 
-void Interaction::press(World& world, const Vec2& point, double time, bool grab) {
-    if (mode_ != Mode::Idle) return;  // a second press while one is active is ignored
+std::optional<ParticleId> Interaction::press(const World& world, const Vec2& point, double time,
+                                             bool grab) {
+    if (mode_ != Mode::Idle) return std::nullopt;  // a second press while one is active is ignored
     samples_.clear();
     pressPoint_ = point;
     pressTime_ = time;
@@ -193,11 +194,11 @@ void Interaction::press(World& world, const Vec2& point, double time, bool grab)
         const Particle p = world.get(*id);
         grabOffset_ = p.position - point;
         velocityAtPress_ = p.velocity;
-        world.setKinematic(*id, true);
         mode_ = Mode::Holding;
-    } else {
-        mode_ = Mode::Launching;
+        return id;
     }
+    mode_ = Mode::Launching;
+    return std::nullopt;
 }
 
 void Interaction::moveTo(const Vec2& point, double time) {
@@ -224,13 +225,6 @@ std::optional<Interaction::Hold> Interaction::hold(const World& world, double no
     return Hold{held_, target, handVelocity(now, launch)};
 }
 
-void Interaction::applyHold(World& world, double now, const LaunchSettings& launch) const {
-    if (const auto h = hold(world, now, launch)) {
-        world.setPosition(h->id, h->position);
-        world.setVelocity(h->id, h->velocity);
-    }
-}
-
 CappedVelocity Interaction::launchVelocityNow(const LaunchSettings& launch,
                                               double launchSeconds) const {
     const Vec2 drag = pointer() - pressPoint_;
@@ -238,7 +232,7 @@ CappedVelocity Interaction::launchVelocityNow(const LaunchSettings& launch,
     return capSpeed(drag / launchSeconds, launch.maxSpeed);
 }
 
-ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
+ReleaseResult Interaction::release(const World& world, const Vec2& point, double time,
                                    const SpawnSettings& spawn, const LaunchSettings& launch,
                                    double launchSeconds) {
     ReleaseResult result;
@@ -247,38 +241,33 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
     LaunchSettings uncapped = launch;
     uncapped.maxSpeed = 0.0;
     const CappedVelocity hand = capSpeed(handVelocity(time, uncapped), launch.maxSpeed);
-    const Vec2 v = hand.velocity;
     const bool click = travel_ < launch.minDistance && time - pressTime_ <= kClickSeconds;
+    const std::optional<Hold> held = hold(world, time, launch);
     if (click) {
         result.kind = ReleaseResult::Kind::Clicked;
         result.position = pressPoint_;
-        if (mode_ == Mode::Holding && world.contains(held_)) {
-            applyHold(world, time, launch);
-            world.setVelocity(held_, velocityAtPress_);
-            world.setKinematic(held_, false);
+        if (held) {
             result.id = held_;
+            result.letGo = true;
+            result.position = held->position;
             result.velocity = velocityAtPress_;
         }
-    } else if (mode_ == Mode::Holding && world.contains(held_)) {
-        applyHold(world, time, launch);
-        world.setVelocity(held_, v);
-        world.setKinematic(held_, false);
+    } else if (held) {
         result.kind = ReleaseResult::Kind::Flung;
         result.id = held_;
-        result.position = world.get(held_).position;
-        result.velocity = v;
+        result.letGo = true;
+        result.position = held->position;
+        result.velocity = hand.velocity;
         result.capped = hand.capped;
     } else if (mode_ == Mode::Launching) {
         if (const auto spot = findFreeSpot(world, pressPoint_, spawn.radius())) {
             const CappedVelocity launched = launchVelocityNow(launch, launchSeconds);
-            ParticleDef def;
-            def.position = *spot;
-            def.velocity = launched.velocity;
-            def.mass = spawn.mass();
-            def.radius = spawn.radius();
-            def.color = spawn.color();
             result.kind = ReleaseResult::Kind::Launched;
-            result.id = world.add(def);
+            result.launch.position = *spot;
+            result.launch.velocity = launched.velocity;
+            result.launch.mass = spawn.mass();
+            result.launch.radius = spawn.radius();
+            result.launch.color = spawn.color();
             result.position = *spot;
             result.velocity = launched.velocity;
             result.capped = launched.capped;
@@ -290,14 +279,6 @@ ReleaseResult Interaction::release(World& world, const Vec2& point, double time,
     }
     reset();
     return result;
-}
-
-std::optional<Particle> Interaction::deleteHeld(World& world) {
-    if (mode_ != Mode::Holding || !world.contains(held_)) return std::nullopt;
-    const Particle p = world.get(held_);
-    world.remove(held_);
-    reset();
-    return p;
 }
 
 void Interaction::reset() {

@@ -88,21 +88,27 @@ inline constexpr double kMaxLaunchBoxesPerSecond = 2.0;
 /// The line the original printed when a held particle was deleted, with units.
 [[nodiscard]] std::string deletionLogLine(const Particle& p);
 
-/// What a release did.
+/// What a release means. The hand only reads the world: the session applies the result (it is
+/// the one writer of the world, so that every change is filed for undo and the timeline).
 struct ReleaseResult {
     enum class Kind {
         None,      ///< nothing was held or being launched
-        Flung,     ///< a held particle was let go with `velocity`
-        Launched,  ///< a new particle was made at `position` with `velocity`
+        Flung,     ///< let the held particle `id` go at `position` with `velocity`
+        Launched,  ///< add `launch`, a new particle at `position` with `velocity`
         Refused,   ///< no free spot for the new particle; `message` says so
-        Clicked,   ///< a click: on the particle `id`, or on empty space when `id` is null
+        Clicked,   ///< a click: on the particle `id`, or on empty space when `id` is null; a
+                   ///< held particle is let go at `position` with `velocity` as it had before
     };
     Kind kind = Kind::None;
     ParticleId id;
     Vec2 position = Vec2::Zero();  ///< metres
     Vec2 velocity = Vec2::Zero();  ///< m/s
     bool capped = false;           ///< the speed was cut to LaunchSettings::maxSpeed
+    ParticleDef launch;            ///< Launched: the particle to add
     std::string message;
+    /// The particle `id` was held (Flung, or Clicked with the Fling tool): it is let go at
+    /// `position` with `velocity` and is free again.
+    bool letGo = false;
 };
 
 /// `v` cut to `maxSpeed` (m/s) when longer and maxSpeed > 0; `capped` says whether it was.
@@ -122,9 +128,10 @@ class Interaction {
     static constexpr double kClickSeconds = 0.3;
 
     /// The left button went down at `point` (world metres) at `time` (seconds, any clock that
-    /// the later calls share). Grabs the topmost particle there (unless `grab` is false), or
-    /// starts a launch drag.
-    void press(World& world, const Vec2& point, double time, bool grab = true);
+    /// the later calls share). Grabs the topmost particle there (unless `grab` is false): its
+    /// id, which the caller makes kinematic while it is held; or starts a launch drag (nullopt).
+    std::optional<ParticleId> press(const World& world, const Vec2& point, double time,
+                                    bool grab = true);
     /// The pointer is now at `point` (a motion, or the camera moved under a still pointer).
     void moveTo(const Vec2& point, double time);
     /// Where the hand holds a particle: its id, the pointer + grab offset (kept in the box) and
@@ -136,19 +143,15 @@ class Interaction {
     };
     [[nodiscard]] std::optional<Hold> hold(const World& world, double now,
                                            const LaunchSettings& launch) const;
-    /// Puts the held particle where hold() says. The app calls it before every step and every
-    /// frame (through the timeline's setters, which log the moves).
-    void applyHold(World& world, double now, const LaunchSettings& launch) const;
-    /// The left button went up. A launch gives the new particle (release - press) /
-    /// `launchSeconds`.
-    ReleaseResult release(World& world, const Vec2& point, double time, const SpawnSettings& spawn,
-                          const LaunchSettings& launch, double launchSeconds);
+    /// The left button went up: what it means (see ReleaseResult). A launch gives the new
+    /// particle (release - press) / `launchSeconds`. The hand is idle after it.
+    ReleaseResult release(const World& world, const Vec2& point, double time,
+                          const SpawnSettings& spawn, const LaunchSettings& launch,
+                          double launchSeconds);
     /// The velocity a launch released at the current pointer would give (zero for a drag
     /// shorter than launch.minDistance), capped like release() caps it.
     [[nodiscard]] CappedVelocity launchVelocityNow(const LaunchSettings& launch,
                                                    double launchSeconds) const;
-    /// Deletes the held particle (Backspace/Delete while holding); returns its last state.
-    std::optional<Particle> deleteHeld(World& world);
     /// Forgets everything (the world was replaced). Does not touch any world.
     void reset();
 

@@ -4,8 +4,6 @@
 #include <cmath>
 #include <cstdio>
 
-#include <particle_sandbox/error.hpp>
-
 namespace psb::app {
 
 double steppedRestitution(double e, int direction) {
@@ -14,17 +12,40 @@ double steppedRestitution(double e, int direction) {
     return std::clamp(steps * kRestitutionStep, 0.0, 1.0);
 }
 
-ControlChange stepRestitution(World& world, int direction) {
-    const double before = world.def().restitution;
-    const double e = steppedRestitution(before, direction);
-    world.setRestitution(e);
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "Restitution %.2f", e);
-    return {e != before, buf};
+cmd::SetRestitution restitutionStep(double e, int direction) {
+    return {steppedRestitution(e, direction)};
 }
 
 Vec2 appGravity() {
     return {0.0, kEarthGravity};
+}
+
+cmd::SetGravity gravityToggle(const Vec2& gravity, const Vec2& sceneGravity) {
+    if (gravity != Vec2::Zero()) return {false};
+    if (sceneGravity == Vec2::Zero()) return {true, appGravity().norm()};
+    return {true, sceneGravity.norm(), false, sceneGravity};
+}
+
+Vec2 gravityOf(const cmd::SetGravity& c) {
+    if (!c.on) return Vec2::Zero();
+    // Scaled by g / |direction|: the scene's own vector comes back bit for bit.
+    return c.direction * (c.g / c.direction.norm());
+}
+
+StepMode nextMode(StepMode mode) {
+    switch (mode) {
+        case StepMode::Discrete:
+            return StepMode::Substep;
+        case StepMode::Substep:
+            return StepMode::Exact;
+        case StepMode::Exact:
+            return StepMode::Discrete;
+    }
+    return StepMode::Discrete;
+}
+
+cmd::SetMode modeStep(const SolverSettings& solver) {
+    return {nextMode(solver.mode), solver.substeps < 2 ? kAppSubsteps : solver.substeps};
 }
 
 std::string gravityText(const Vec2& g) {
@@ -34,18 +55,10 @@ std::string gravityText(const Vec2& g) {
     return buf;
 }
 
-ControlChange toggleGravity(World& world, const Vec2& sceneGravity) {
-    if (world.def().gravity != Vec2::Zero()) {
-        world.setGravity(Vec2::Zero());
-        return {true, "Gravity off"};
-    }
-    const Vec2 g = sceneGravity != Vec2::Zero() ? sceneGravity : appGravity();
-    try {
-        world.setGravity(g);
-    } catch (const InvalidArgument& e) {
-        return {false, std::string("Gravity refused: ") + e.what()};
-    }
-    return {true, "Gravity " + gravityText(g)};
+std::string modeName(const SolverSettings& solver) {
+    std::string name(toString(solver.mode));
+    if (solver.mode == StepMode::Substep) name += " x" + std::to_string(solver.substeps);
+    return name;
 }
 
 }  // namespace psb::app

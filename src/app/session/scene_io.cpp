@@ -81,10 +81,10 @@ std::filesystem::path freeSavePath(const std::filesystem::path& path) {
     }
 }
 
-std::string saveWorld(const World& world, const std::string& name, const std::string& description,
-                      const std::filesystem::path& path, const std::optional<Bins>& bins) {
-    Scene scene = sceneFromWorld(world, name, description);
-    scene.bins = bins;
+std::string saveWorld(const World& world, const SceneMeta& meta,
+                      const std::filesystem::path& path) {
+    Scene scene = sceneFromWorld(world, meta.name, meta.description);
+    scene.bins = meta.bins;
     saveScene(scene, path);
     std::error_code ec;
     const std::filesystem::path shown = std::filesystem::absolute(path, ec).lexically_normal();

@@ -10,6 +10,8 @@
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "session/document.hpp"
+
 namespace psb::app {
 
 /// The scene in `file`, or the built-in default scene (psb::defaultScene) when there is none.
@@ -39,10 +41,9 @@ struct SceneInfo {
 [[nodiscard]] std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
                                                                 std::string& why);
 
-/// Saves `world` as a scene named `name` with `description` (and the scene's `bins`) to `path`,
+/// Saves `world` as a scene with `meta` (its name, description, trails and bins) to `path`,
 /// atomically (psb::saveScene): the old file survives any failure. Returns a line for the user
 /// naming the absolute path; throws SaveError saying why it failed.
-std::string saveWorld(const World& world, const std::string& name, const std::string& description,
-                      const std::filesystem::path& path, const std::optional<Bins>& bins = {});
+std::string saveWorld(const World& world, const SceneMeta& meta, const std::filesystem::path& path);
 
 }  // namespace psb::app

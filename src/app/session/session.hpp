@@ -1,11 +1,21 @@
 #pragma once
-// The sandbox without a window: the world, the scene as it was loaded, the presets, the
-// camera and view toggles, the hand (grab, fling, launch), the selection and its edit prompt,
-// the spawn rules and the clock that steps the world. It knows no SDL and is tested without one.
+// The sandbox without a window. It knows no SDL and is tested without one. Its parts, one
+// concept each:
+//   - the document (document.hpp): the world, the scene as loaded, its SceneMeta, the files;
+//   - the view: the camera and what is shown (view_options.hpp);
+//   - the tools (tools.hpp): the hand, the obstacle tools, the selection and its edit prompt,
+//     what new particles are made of;
+//   - the clock (sim_clock.hpp): pause, time speed, real time owed;
+//   - the history (history.hpp): undo and the recorded frames;
+//   - the monitor (monitor.hpp): the accuracy indicators and the plots' time series.
 //
-// Everything that changes it is a Command handed to apply(); apply() is the one place where a
-// user's intent becomes a change, so keys, the mouse, tests and on-screen controls share it.
-// update() is the only other mutator: it advances the world by real time.
+// Everything that changes it is a Command handed to apply(), the one place where a user's
+// intent becomes a change, so keys, the mouse, tests and on-screen controls share it. apply()
+// treats a command as its type's traits say (command.hpp) and hands it to the one handle()
+// for its type, in the file of its concept (session_hand.cpp, session_values.cpp, ...). Every
+// change a handler makes to the world goes through the session (the tools return what the user
+// meant; the handler applies it and files it for undo and the timeline). update() is the only
+// other mutator: it advances the world by real time.
 //
 // Undo (undo_history.hpp). apply() keeps the state before each command that may edit (a
 // PointerDown's lasts until its release); a handler that made an edit calls
@@ -38,13 +48,12 @@
 #include "session/accuracy.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
-#include "session/edit_prompt.hpp"
-#include "session/interaction.hpp"
-#include "session/obstacle_tool.hpp"
+#include "session/document.hpp"
+#include "session/history.hpp"
+#include "session/monitor.hpp"
 #include "session/scene_io.hpp"
-#include "session/selection.hpp"
-#include "session/timeline.hpp"
-#include "session/undo_history.hpp"
+#include "session/sim_clock.hpp"
+#include "session/tools.hpp"
 #include "session/view_insets.hpp"
 #include "session/view_options.hpp"
 
@@ -69,9 +78,6 @@ struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
     std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
     std::uint32_t seed = 1;                                       ///< random spawns
-    std::string sceneDescription;          ///< the first scene's, kept when it is saved
-    std::vector<std::size_t> sceneTrails;  ///< the first scene's particles with trails shown
-    std::optional<Bins> sceneBins;         ///< the first scene's bins
     bool paused = false;
     bool arrows = true;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
@@ -113,9 +119,10 @@ inline constexpr double kMaxLaunchMass = 1e6;   ///< kg
 
 class Session {
   public:
-    static constexpr double kMinTimeScale = 1.0 / 16.0, kMaxTimeScale = 8.0;
+    static constexpr double kMinTimeScale = SimClock::kMinScale,
+                            kMaxTimeScale = SimClock::kMaxScale;
 
-    Session(World world, std::string sceneName, SessionOptions options);
+    Session(World world, SceneMeta meta, SessionOptions options);
 
     /// Applies one command: the only way anything but time changes the session.
     void apply(const Command& command);
@@ -130,16 +137,32 @@ class Session {
     /// True once after a Screenshot command: the app writes the next frame.
     [[nodiscard]] bool takeScreenshotRequest();
 
-    [[nodiscard]] const World& world() const { return world_; }
-    [[nodiscard]] const World& loadedWorld() const { return *loaded_; }
-    [[nodiscard]] const std::string& sceneName() const { return sceneName_; }
-    /// The bins of the scene as opened (a Galton board's), kept when it is saved.
-    [[nodiscard]] const std::optional<Bins>& sceneBins() const { return sceneBins_; }
+    // The document (document.hpp).
+    [[nodiscard]] const World& world() const { return doc_.world; }
+    [[nodiscard]] const World& loadedWorld() const { return *doc_.loaded; }
+    /// The scene's name, description and bins.
+    [[nodiscard]] const SceneMeta& meta() const { return doc_.meta; }
     /// The bins panel is drawn: the scene has bins and the view shows them.
-    [[nodiscard]] bool binsShown() const { return sceneBins_.has_value() && view_.bins; }
+    [[nodiscard]] bool binsShown() const { return doc_.meta.bins.has_value() && view_.bins; }
     /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
     /// (trails) start over.
-    [[nodiscard]] std::uint64_t sceneGeneration() const { return generation_; }
+    [[nodiscard]] std::uint64_t sceneGeneration() const { return doc_.generation; }
+    /// The presets with their names and descriptions, in OpenPreset's order.
+    [[nodiscard]] const std::vector<SceneInfo>& presets() const { return presets_; }
+    /// Files opened or saved lately, newest first (at most Document::kRecentFiles).
+    [[nodiscard]] const std::vector<std::filesystem::path>& recentFiles() const {
+        return doc_.recent;
+    }
+    /// The user changed the world since it was opened or last saved.
+    [[nodiscard]] bool unsavedChanges() const { return doc_.dirty; }
+    /// The file the last Save wrote (absolute).
+    [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const {
+        return doc_.lastSave;
+    }
+    /// Why the last open or save failed ("Save failed: ..."); empty once one succeeds.
+    [[nodiscard]] const std::string& fileError() const { return doc_.fileError; }
+
+    // The view.
     [[nodiscard]] const Camera& camera() const { return camera_; }
     [[nodiscard]] const ViewOptions& view() const { return view_; }
     [[nodiscard]] bool helpShown() const { return showHelp_; }
@@ -157,60 +180,29 @@ class Session {
     [[nodiscard]] double controlsInset() const {
         return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;
     }
+    /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
+    [[nodiscard]] std::string overlayFlags() const;
+
+    // The tools (tools.hpp).
     /// What the left mouse button does.
-    [[nodiscard]] cmd::Tool tool() const { return tool_; }
+    [[nodiscard]] cmd::Tool tool() const { return tools_.tool; }
     /// The sizes of the obstacles the Peg and Wall tools make (at the scene's scale when it
     /// opens; SetObstacleSizes changes them).
-    [[nodiscard]] const ObstacleSizes& obstacleSizes() const { return obstacleSizes_; }
+    [[nodiscard]] const ObstacleSizes& obstacleSizes() const { return tools_.obstacleSizes; }
     /// The obstacle a click selected (by index in world().obstacles()), while it exists.
-    [[nodiscard]] std::optional<std::size_t> selectedObstacle() const { return selectedObstacle_; }
+    [[nodiscard]] std::optional<std::size_t> selectedObstacle() const {
+        return tools_.selectedObstacle;
+    }
     /// The obstacle the Peg or Wall tool would make now (a wall being dragged, a peg under the
     /// pointer), for a preview.
     [[nodiscard]] std::optional<Obstacle> obstaclePreview() const;
-    /// The presets with their names and descriptions, in OpenPreset's order.
-    [[nodiscard]] const std::vector<SceneInfo>& presets() const { return presets_; }
-    /// Files opened or saved lately, newest first (at most kRecentFiles).
-    static constexpr std::size_t kRecentFiles = 5;
-    [[nodiscard]] const std::vector<std::filesystem::path>& recentFiles() const { return recent_; }
-    /// Why `mode` cannot be used for the world now (empty when it can).
-    [[nodiscard]] std::string modeRefusal(StepMode mode) const;
-    /// The drag of a slider (a `continues` command) is one user action: how many user actions
-    /// there were so far (a counter for tests and the undo history).
-    [[nodiscard]] std::uint64_t userActions() const { return userActions_; }
+    [[nodiscard]] const Interaction& interaction() const { return tools_.hand; }
+    [[nodiscard]] const Selection& selection() const { return tools_.selection; }
+    [[nodiscard]] const EditPrompt& prompt() const { return tools_.prompt; }
+    [[nodiscard]] const SpawnSettings& spawn() const { return tools_.spawn; }
     /// Why the last edit of a particle's value was refused (empty after one was applied, or the
     /// selection changed).
-    [[nodiscard]] const std::string& editRefusal() const { return editRefusal_; }
-    /// The label of the last user action ("set restitution", "launch", ...).
-    [[nodiscard]] const std::string& lastAction() const { return lastAction_; }
-    [[nodiscard]] const Interaction& interaction() const { return interaction_; }
-    [[nodiscard]] const Selection& selection() const { return selection_; }
-    [[nodiscard]] const EditPrompt& prompt() const { return prompt_; }
-    [[nodiscard]] const SpawnSettings& spawn() const { return spawn_; }
-    [[nodiscard]] const AccuracyMonitor& accuracy() const { return accuracy_; }
-    [[nodiscard]] const TimeSeries& series() const { return series_; }
-    /// The world's observables as the last update left them (summed once a frame).
-    [[nodiscard]] const ObservablesSample& observables() const { return now_; }
-    [[nodiscard]] bool paused() const { return paused_; }
-    /// Requested simulated seconds per real second.
-    [[nodiscard]] double timeScale() const { return timeScale_; }
-    /// Simulated seconds per real second the last updates reached (smoothed) while the steps
-    /// cannot keep up (a backlog was dropped within the last second); otherwise timeScale(),
-    /// which the accumulator then keeps to on average.
-    [[nodiscard]] double reachedTimeScale() const {
-        return lastNow_ < behindUntil_ ? reached_ : timeScale_;
-    }
-    /// Wall-clock ms of simulation in the last update.
-    [[nodiscard]] double lastStepMs() const { return lastStepMs_; }
-    [[nodiscard]] bool running() const { return running_; }
-    /// Quit was asked with unsaved changes: the next Back or Quit quits.
-    [[nodiscard]] bool quitPending() const { return quitPending_; }
-    /// The user changed the world since it was opened or last saved.
-    [[nodiscard]] bool unsavedChanges() const { return dirty_; }
-    /// The file the last Save wrote (absolute).
-    [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const { return lastSave_; }
-    /// Why the last open or save failed ("Save failed: ..."); empty once one succeeds.
-    [[nodiscard]] const std::string& fileError() const { return fileError_; }
-
+    [[nodiscard]] const std::string& editRefusal() const { return tools_.editRefusal; }
     /// The selected particle, while it exists.
     [[nodiscard]] std::optional<Particle> selected() const;
     /// The particle whose trail TrailMode::Selected shows: the selected one, else the one held.
@@ -219,31 +211,118 @@ class Session {
     [[nodiscard]] LaunchSettings launchSettings() const;
     /// A launch in progress: the velocity releasing now would give.
     [[nodiscard]] CappedVelocity launchPreview() const;
+
+    // The monitor (monitor.hpp).
+    [[nodiscard]] const AccuracyMonitor& accuracy() const { return monitor_.accuracy(); }
+    [[nodiscard]] const TimeSeries& series() const { return monitor_.series(); }
+    /// The world's observables as the last update left them (summed once a frame).
+    [[nodiscard]] const ObservablesSample& observables() const { return monitor_.observables(); }
+
+    // The clock (sim_clock.hpp).
+    [[nodiscard]] bool paused() const { return clock_.paused; }
+    /// Requested simulated seconds per real second.
+    [[nodiscard]] double timeScale() const { return clock_.scale(); }
+    /// What the last updates reached (SimClock::reachedScale).
+    [[nodiscard]] double reachedTimeScale() const { return clock_.reachedScale(); }
+    /// Wall-clock ms of simulation in the last update.
+    [[nodiscard]] double lastStepMs() const { return clock_.lastStepMs(); }
+
+    // The history (history.hpp).
+    /// The drag of a slider (a `continues` command) is one user action: how many user actions
+    /// there were so far (a counter for tests and the undo history).
+    [[nodiscard]] std::uint64_t userActions() const { return userActions_; }
+    /// The label of the last user action ("set restitution", "launch", ...).
+    [[nodiscard]] const std::string& lastAction() const { return lastAction_; }
     /// Undo and redo: whether there is one, and the label of the edit it would undo / redo.
-    [[nodiscard]] bool canUndo() const { return undo_.canUndo(); }
-    [[nodiscard]] bool canRedo() const { return undo_.canRedo(); }
-    [[nodiscard]] std::string undoLabel() const { return undo_.undoLabel(); }
-    [[nodiscard]] std::string redoLabel() const { return undo_.redoLabel(); }
-    [[nodiscard]] const UndoHistory& undoHistory() const { return undo_; }
+    [[nodiscard]] bool canUndo() const { return history_.undo.canUndo(); }
+    [[nodiscard]] bool canRedo() const { return history_.undo.canRedo(); }
+    [[nodiscard]] std::string undoLabel() const { return history_.undo.undoLabel(); }
+    [[nodiscard]] std::string redoLabel() const { return history_.undo.redoLabel(); }
+    [[nodiscard]] const UndoHistory& undoHistory() const { return history_.undo; }
     /// The recorded past and the frame shown.
     [[nodiscard]] TimelineView timeline() const;
-    [[nodiscard]] const Timeline& timelineRecord() const { return timeline_; }
+    [[nodiscard]] const Timeline& timelineRecord() const { return history_.timeline; }
 
-    /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
-    [[nodiscard]] std::string overlayFlags() const;
+    // Leaving.
+    [[nodiscard]] bool running() const { return running_; }
+    /// Quit was asked with unsaved changes: the next Back or Quit quits.
+    [[nodiscard]] bool quitPending() const { return quitPending_; }
 
     /// Replaces the world (a scene opened elsewhere, the benchmark); it becomes the scene as
     /// loaded.
-    void setWorld(World world, std::string name);
+    void setWorld(World world, SceneMeta meta);
 
   private:
-    // One function per command family; apply() dispatches.
-    void pointerDown(const cmd::PointerDown& c);
-    void pointerMove(const cmd::PointerMove& c);
-    void pointerUp(const cmd::PointerUp& c);
+    // One handler per command, in the file of its concept; apply() dispatches by type.
+    // The hand (session_hand.cpp).
+    void handle(const cmd::PointerDown& c);
+    void handle(const cmd::PointerMove& c);
+    void handle(const cmd::PointerUp& c);
+    void handle(const cmd::DeleteHeld& c);
+    void handle(const cmd::DeleteParticle& c);
+    void handle(const cmd::SetTool& c);
+    void handle(const cmd::SpawnRandom& c);
+    void handle(const cmd::ChangeSpawnMass& c);
+    void handle(const cmd::SetLaunchBody& c);
+    // The obstacle tools (session_obstacles.cpp).
+    void handle(const cmd::SetObstacleSizes& c);
+    void handle(const cmd::RemoveObstacle& c);
+    // The selection and its edit prompt (session_edit.cpp).
+    void handle(const cmd::Select& c);
+    void handle(const cmd::OpenEdit& c);
+    void handle(const cmd::EditType& c);
+    void handle(const cmd::EditField& c);
+    void handle(const cmd::EditBackspace& c);
+    void handle(const cmd::EditApply& c);
+    void handle(const cmd::EditParticle& c);
+    // The world's laws and the stepping mode (session_values.cpp).
+    void handle(const cmd::SetRestitution& c);
+    void handle(const cmd::SetFriction& c);
+    void handle(const cmd::SetGravity& c);
+    void handle(const cmd::SetWalls& c);
+    void handle(const cmd::SetMode& c);
+    // The clock and the recorded past (session_time.cpp).
+    void handle(const cmd::TogglePause& c);
+    void handle(const cmd::SingleStep& c);
+    void handle(const cmd::SetTimeScale& c);
+    void handle(const cmd::StepBack& c);
+    void handle(const cmd::StepForward& c);
+    void handle(const cmd::Seek& c);
+    void handle(const cmd::SeekBy& c);
+    void handle(const cmd::Undo& c);
+    void handle(const cmd::Redo& c);
+    // The document and leaving (session_files.cpp).
+    void handle(const cmd::Reset& c);
+    void handle(const cmd::OpenPreset& c);
+    void handle(const cmd::OpenFile& c);
+    void handle(const cmd::Save& c);
+    void handle(const cmd::SaveAs& c);
+    void handle(const cmd::Back& c);
+    void handle(const cmd::Quit& c);
+    // The view (session_view.cpp).
+    void handle(const cmd::Pan& c);
+    void handle(const cmd::Zoom& c);
+    void handle(const cmd::Fit& c);
+    void handle(const cmd::Resize& c);
+    void handle(const cmd::ToggleArrows& c);
+    void handle(const cmd::ToggleLabels& c);
+    void handle(const cmd::ToggleHelp& c);
+    void handle(const cmd::ToggleProfile& c);
+    void handle(const cmd::ToggleMomentum& c);
+    void handle(const cmd::CycleTrails& c);
+    void handle(const cmd::TogglePlots& c);
+    void handle(const cmd::ToggleSpeeds& c);
+    void handle(const cmd::SetShow& c);
+    void handle(const cmd::SetTrails& c);
+    void handle(const cmd::ToggleControls& c);
+    void handle(const cmd::Screenshot& c);
+
+    // The hand's gestures (session_hand.cpp).
     void click(const ReleaseResult& r);
-    void deleteHeld();
-    void deleteParticle(ParticleId id);
+    /// The held particle to the hand, through the timeline's setters.
+    void holdParticle(double now);
+    /// The selected particle is gone: forget it (and close its edit prompt), saying so.
+    void checkSelection();
     // The obstacle tools (session_obstacles.cpp).
     [[nodiscard]] bool obstacleToolOn() const;
     void obstaclePress();
@@ -256,55 +335,23 @@ class Session {
     /// A click on empty space: selects the obstacle under the pointer; true if there was one.
     bool selectObstacleAt();
     void removeObstacle(std::size_t index);
-    void setObstacleSizes(const cmd::SetObstacleSizes& c);
-    /// The obstacles changed (added, removed, undone): what depends on them follows.
-    void obstaclesChanged();
-    void spawnRandom();
+    // The document (session_files.cpp).
+    void openFile(const std::optional<std::filesystem::path>& file);
+    void saveTo(const std::filesystem::path& path);
+    void quit();
     /// A scene that marks particles' trails opens with the first of them selected and its trail
     /// shown; `trails` are indices in the scene's order (the world's before any step).
     void showSceneTrails(const std::vector<std::size_t>& trails);
-    void changeSpawnMass(int direction);
-    void nextMode();
-    void toggleGravity();
-    void changeRestitution(int direction);
-    void reset();
-    void openPreset(int index);
-    void openFile(const std::optional<std::filesystem::path>& file);
-    void openEdit();
-    void applyEdit();
-    void closeEdit();
-    void save();
-    void undoOrRedo(bool redo);
-    void stepBack();
-    void stepForward();
+    // The view (session_view.cpp).
+    void fit();
+    void togglePanel(bool& flag, const char* on, const char* off);
+    /// The hand did not move but the world under it did: the held particle follows the cursor.
+    void afterCameraMove();
+    // The clock and the history (session_time.cpp, session_history.cpp).
+    void stepOnce(double now);
     /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.
     void seek(double seconds, bool oneFrameBack = false);
-    void toggleHelp();
-    void back();
-    void quit();
-    void fit();
-    void resize(int width, int height);
-    void togglePanel(bool& flag, const char* on, const char* off);
-    // The control panel's value commands (session_values.cpp).
-    void setRestitution(const cmd::SetRestitution& c);
-    void setFriction(const cmd::SetFriction& c);
-    void setGravity(const cmd::SetGravity& c);
-    void setWalls(const cmd::SetWalls& c);
-    void setMode(const cmd::SetMode& c);
-    void setTimeScale(double value);
-    void setLaunchBody(const cmd::SetLaunchBody& c);
-    void editParticle(const cmd::EditParticle& c);
-    void select(ParticleId id);
-    void setShow(const cmd::SetShow& c);
-    void saveAs(const cmd::SaveAs& c);
-    void saveTo(const std::filesystem::path& path);
-    void rememberFile(const std::filesystem::path& file);
-
-    void stepOnce(double now);
-    /// The held particle to the hand, through the timeline's setters.
-    void holdParticle(double now);
-    /// The selected particle is gone: forget it (and close its edit prompt), saying so.
-    void checkSelection();
+    void undoOrRedo(bool redo);
     /// The user made the edit `what` ("delete particle", "set restitution"): it becomes an
     /// undo entry (the state apply() kept before the command), the energy drift is measured
     /// from here on, and there are unsaved changes. A command that continues the previous one
@@ -314,29 +361,25 @@ class Session {
     /// Files the state kept before the command under `what` in the undo history (userAction
     /// without the unsaved flag: an opened scene or a reset is what is on disk).
     void remember(const char* what);
-    /// Whether `command` may edit the session (then apply() keeps the state before it).
-    [[nodiscard]] static bool mayEdit(const Command& command);
-    /// The session's state with `world` (world_, or world_ moved out) as its world.
+    /// The session's state with `world` (the world, or the world moved out) as its world.
     [[nodiscard]] UndoState snapshot(World world) const;
     /// Puts `state` back (undo / redo).
     void restore(UndoState state);
+    /// A world was put in place (a new scene, or an undo when `newScene` is false): the tools,
+    /// the recorded past, the clock and the monitor start over from it.
+    void startOver(bool newScene);
     /// Viewing a past frame and about to change the world: carry on from that frame.
     void leavePast();
     /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.
     void show(std::int64_t frame);
-    /// The hand did not move but the world under it did: the held particle follows the cursor.
-    void afterCameraMove();
+
     void say(std::string text, Notice::Level level = Notice::Level::Info);
     void log(std::string text, Notice::Level level = Notice::Level::Info);
-    [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(pointer_); }
+    [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(tools_.pointer); }
 
     SessionOptions options_;
-    World world_;
-    std::shared_ptr<const World> loaded_;  ///< world_ as it was loaded, for Reset
-    std::string sceneName_;
-    std::string sceneDescription_;   ///< the scene's as loaded, written back by save()
-    std::optional<Bins> sceneBins_;  ///< likewise
-    std::uint64_t generation_ = 0;
+    Document doc_;
+    std::vector<SceneInfo> presets_;
     std::size_t nextPreset_ = 0;
 
     Camera camera_;
@@ -346,56 +389,17 @@ class Session {
     std::size_t helpPage_ = 0;
     bool showProfile_ = false;
     bool showControls_ = true;
-    cmd::Tool tool_ = cmd::Tool::Fling;
-    std::optional<Vec2> panFrom_;  ///< the Pan tool's drag, screen pixels
-    ObstacleTool obstacleTool_;
-    ObstacleSizes obstacleSizes_;
-    std::optional<std::size_t> selectedObstacle_;
-    std::vector<SceneInfo> presets_;
-    std::vector<std::filesystem::path> recent_;
-    std::string exactRefusal_;  ///< why the exact mode is refused for the world, if it is
+
+    Tools tools_;
+    SimClock clock_;
+    History history_;
+    Monitor monitor_;
+
     std::uint64_t userActions_ = 0;
     std::string lastAction_;
-    std::string editRefusal_;
-
-    Interaction interaction_;
-    Selection selection_;
-    EditPrompt prompt_;
-    SpawnSettings spawn_;
-    std::mt19937 rng_;
-    Vec2 pointer_ = Vec2::Zero();  ///< screen pixels
-    double pointerTime_ = 0.0;     ///< seconds, of the last pointer command
-
-    bool paused_ = false;
-    bool stepRequested_ = false;
-    double timeScale_ = 1.0;
-    double reached_ = 1.0;
-    double behindUntil_ = -1.0;  ///< `now` until which the steps count as falling behind
-    double lastNow_ = 0.0;       ///< `now` of the last update
-    double accumulator_ = 0.0;
-    double lastStepMs_ = 0.0;
-
     bool running_ = true;
     bool quitPending_ = false;
-    bool dirty_ = false;
-    bool changedSinceMeasure_ = true;  ///< the world changed other than by stepping
     bool screenshotRequested_ = false;
-    std::optional<std::filesystem::path> lastSave_;
-    std::string fileError_;
-
-    AccuracyMonitor accuracy_;
-    /// About 68 s of frames at 60 fps for the plots and the centre of mass path.
-    static constexpr std::size_t kSeriesSamples = 4096;
-    TimeSeries series_{kSeriesSamples};
-    std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
-    ObservablesSample now_;
-
-    UndoHistory undo_;
-    std::optional<UndoState> before_;       ///< the state before the command being applied
-    std::optional<UndoState> pressBefore_;  ///< before the pointer's press, until its release
-    Timeline timeline_;
-    std::optional<std::int64_t> viewing_;  ///< the past frame shown, while paused
-
     std::vector<Notice> notices_;
 };
 

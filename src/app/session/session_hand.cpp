@@ -1,32 +1,25 @@
 // The session's hand: pointer presses, moves and releases turned into grabs, flings, launches,
-// clicks and pans (the rules are interaction.hpp's and obstacle_tool.hpp's).
+// clicks and pans (the rules are interaction.hpp's and obstacle_tool.hpp's), deleting, random
+// spawns and what new particles are made of. The hand says what the user meant; the handlers
+// here make the change.
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 
-#include <particle_sandbox/diagnostics.hpp>
-
-#include "session/physics_controls.hpp"
 #include "session/session.hpp"
 #include "session/session_text.hpp"
-#include "session/stopwatch.hpp"
 #include "session/units.hpp"
 
 namespace psb::app {
 
-// ---------------------------------------------------------------------------------------------
-// The hand.
-
-void Session::pointerDown(const cmd::PointerDown& c) {
-    pointer_ = c.screen;
-    pointerTime_ = c.time;
-    if (tool_ == cmd::Tool::Pan) {
-        panFrom_ = c.screen;
+void Session::handle(const cmd::PointerDown& c) {
+    tools_.pointer = c.screen;
+    tools_.pointerTime = c.time;
+    if (tools_.tool == cmd::Tool::Pan) {
+        tools_.panFrom = c.screen;
         return;
     }
-    if (tool_ == cmd::Tool::Select) {
+    if (tools_.tool == cmd::Tool::Select) {
         obstaclePressToMove();  // on an obstacle: a drag moves it
         return;                 // the release selects
     }
@@ -34,40 +27,43 @@ void Session::pointerDown(const cmd::PointerDown& c) {
         obstaclePress();
         return;
     }
-    interaction_.press(world_, pointerWorld(), c.time, tool_ == cmd::Tool::Fling);
-    if (interaction_.mode() == Interaction::Mode::Holding) {
-        const Particle p = world_.get(interaction_.held());
+    World& world = doc_.world;
+    const auto grabbed =
+        tools_.hand.press(world, pointerWorld(), c.time, tools_.tool == cmd::Tool::Fling);
+    if (grabbed) {
+        world.setKinematic(*grabbed, true);  // the hand moves it, not the steps
+        const Particle p = world.get(*grabbed);
         log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
         // The energy is measured from the grab; a click that only selects changes nothing.
-        accuracy_.resetReference(monitoredEnergy(world_));
+        monitor_.resetEnergy(world);
     }
 }
 
-void Session::pointerMove(const cmd::PointerMove& c) {
-    if (panFrom_) {
-        camera_.panPixels(c.screen - *panFrom_);
-        camera_.keepNear(world_.def().width, world_.def().height);
-        panFrom_ = c.screen;
+void Session::handle(const cmd::PointerMove& c) {
+    if (tools_.panFrom) {
+        camera_.panPixels(c.screen - *tools_.panFrom);
+        camera_.keepNear(doc_.world.def().width, doc_.world.def().height);
+        tools_.panFrom = c.screen;
         fitted_ = false;
     }
-    pointer_ = c.screen;
-    pointerTime_ = c.time;
-    obstacleTool_.moveTo(pointerWorld());
-    interaction_.moveTo(pointerWorld(), c.time);
+    tools_.pointer = c.screen;
+    tools_.pointerTime = c.time;
+    tools_.obstacle.moveTo(pointerWorld());
+    tools_.hand.moveTo(pointerWorld(), c.time);
 }
 
-void Session::pointerUp(const cmd::PointerUp& c) {
-    pointer_ = c.screen;
-    pointerTime_ = c.time;
-    if (tool_ == cmd::Tool::Pan) {
-        panFrom_.reset();
+void Session::handle(const cmd::PointerUp& c) {
+    tools_.pointer = c.screen;
+    tools_.pointerTime = c.time;
+    if (tools_.tool == cmd::Tool::Pan) {
+        tools_.panFrom.reset();
         return;
     }
-    if (tool_ == cmd::Tool::Select) {
+    if (tools_.tool == cmd::Tool::Select) {
         if (obstacleMoveRelease()) return;  // moved, or the move refused; else a click
         ReleaseResult r;
         r.kind = ReleaseResult::Kind::Clicked;
-        if (const auto id = world_.pick(pointerWorld())) r.id = *id;
+        if (const auto id = doc_.world.pick(pointerWorld())) r.id = *id;
         click(r);
         return;
     }
@@ -75,9 +71,16 @@ void Session::pointerUp(const cmd::PointerUp& c) {
         obstacleRelease();
         return;
     }
-    const ReleaseResult r = interaction_.release(world_, pointerWorld(), c.time, spawn_,
-                                                 launchSettings(), view_.arrowSeconds);
+    World& world = doc_.world;
+    ReleaseResult r = tools_.hand.release(world, pointerWorld(), c.time, tools_.spawn,
+                                          launchSettings(), view_.arrowSeconds);
     using K = ReleaseResult::Kind;
+    if (r.letGo) {
+        world.setPosition(r.id, r.position);
+        world.setVelocity(r.id, r.velocity);
+        world.setKinematic(r.id, false);
+    }
+    if (r.kind == K::Launched) r.id = world.add(r.launch);
     const std::string at = fmt("at [%.2f, %.2f]", r.position.x(), r.position.y());
     const std::string v = fmt("with velocity [%.2f, %.2f] m/s", r.velocity.x(), r.velocity.y());
     if (r.kind == K::Flung) log("Released particle " + at + " " + v);
@@ -93,52 +96,148 @@ void Session::pointerUp(const cmd::PointerUp& c) {
 }
 
 void Session::click(const ReleaseResult& r) {
+    Tools& t = tools_;
     if (!r.id.isNull()) {
-        if (prompt_.target() != r.id) closeEdit();
-        selectedObstacle_.reset();
-        selection_.select(r.id);
-        std::string line = selectionLogLine(world_.get(r.id));
+        if (t.prompt.target() != r.id) t.closePrompt();
+        t.selectedObstacle.reset();
+        t.selection.select(r.id);
+        std::string line = selectionLogLine(doc_.world.get(r.id));
         log(line.substr(4));  // without its "[I] "
     } else if (selectObstacleAt()) {
-        selection_.clear();
-        closeEdit();
-    } else if (selection_.id() || selectedObstacle_) {
-        selection_.clear();
-        selectedObstacle_.reset();
-        closeEdit();
+        t.selection.clear();
+        t.closePrompt();
+    } else if (t.selection.id() || t.selectedObstacle) {
+        t.selection.clear();
+        t.selectedObstacle.reset();
+        t.closePrompt();
         say("Selection cleared");
     }
 }
 
-void Session::deleteHeld() {
-    if (const auto p = interaction_.deleteHeld(world_)) {
-        log(deletionLogLine(*p).substr(4));
-        notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
-        userAction("delete particle");
-        checkSelection();
-    } else if (selectedObstacle_) {
-        removeObstacle(*selectedObstacle_);
+void Session::handle(const cmd::DeleteHeld&) {
+    const Interaction& hand = tools_.hand;
+    if (hand.mode() == Interaction::Mode::Holding && doc_.world.contains(hand.held())) {
+        handle(cmd::DeleteParticle{hand.held()});
+    } else if (tools_.selectedObstacle) {
+        removeObstacle(*tools_.selectedObstacle);
     }
 }
 
-void Session::deleteParticle(ParticleId id) {
-    if (!world_.contains(id)) return;
-    if (interaction_.mode() != Interaction::Mode::Idle && interaction_.held() == id) {
-        interaction_.reset();
+void Session::handle(const cmd::DeleteParticle& c) {
+    if (!doc_.world.contains(c.id)) return;
+    if (tools_.hand.mode() != Interaction::Mode::Idle && tools_.hand.held() == c.id) {
+        tools_.hand.reset();
     }
-    const Particle p = world_.get(id);
-    world_.remove(id);
+    const Particle p = doc_.world.get(c.id);
+    doc_.world.remove(c.id);
     log(deletionLogLine(p).substr(4));
     notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
     userAction("delete particle");
     checkSelection();
 }
 
+void Session::holdParticle(double now) {
+    // Through the timeline's setters, so that a past frame replays the hand's moves.
+    if (const auto h = tools_.hand.hold(doc_.world, now, launchSettings())) {
+        history_.timeline.setPosition(doc_.world, h->id, h->position);
+        history_.timeline.setVelocity(doc_.world, h->id, h->velocity);
+    }
+}
+
 void Session::checkSelection() {
-    if (selection_.forgetIfGone(world_)) {
-        closeEdit();
+    if (tools_.selection.forgetIfGone(doc_.world)) {
+        tools_.closePrompt();
         say("Selection cleared: the particle was deleted");
     }
+}
+
+void Session::handle(const cmd::SetTool& c) {
+    Tools& t = tools_;
+    t.tool = c.toggle && t.tool == c.tool ? cmd::Tool::Fling : c.tool;
+    t.panFrom.reset();
+    t.obstacle.reset();
+    static const char* const kTools[] = {"Left mouse: fling particles, launch on empty space",
+                                         "Left mouse: launch new particles",
+                                         "Left mouse: select particles and obstacles",
+                                         "Left mouse: move the view",
+                                         "Left mouse: a click places a peg",
+                                         "Left mouse: a drag draws a wall"};
+    say(kTools[static_cast<int>(t.tool)]);
+}
+
+void Session::handle(const cmd::SpawnRandom&) {
+    const WorldDef& d = doc_.world.def();
+    const SpawnSettings& spawn = tools_.spawn;
+    std::mt19937& rng = tools_.rng;
+    // The original: mass a random integer 3..20 kg with its radius, 2.5 cm per kg at its scale of
+    // 1 px = 1 cm (here 0.3..2 times the scene's typical particle), somewhere in the upper part
+    // of the box, colour channels 100..255, velocity components up to 5 px per frame at 60
+    // frames per second (3 m/s), scaled with the box.
+    std::uniform_int_distribution<int> sizeDist(3, 20), channel(100, 255);
+    const double size = sizeDist(rng) / 10.0;
+    const double mass = size * spawn.typicalMass, radius = size * spawn.typicalRadius;
+    std::uniform_real_distribution<double> x(radius, std::max(radius, d.width - radius));
+    std::uniform_real_distribution<double> y(radius, std::max(radius, d.height / 2.0));
+    const double vmax = 3.0 * std::min(d.width, d.height) / 7.0;
+    std::uniform_real_distribution<double> v(-vmax, vmax);
+    const Vec2 want(x(rng), y(rng));
+    const auto spot = findFreeSpot(doc_.world, want, radius);
+    if (!spot) {
+        say("No room for a new particle");
+        return;
+    }
+    ParticleDef def;
+    def.position = *spot;
+    def.velocity = {v(rng), v(rng)};
+    def.mass = mass;
+    def.radius = radius;
+    def.color = {static_cast<std::uint8_t>(channel(rng)), static_cast<std::uint8_t>(channel(rng)),
+                 static_cast<std::uint8_t>(channel(rng))};
+    doc_.world.add(def);
+    userAction("spawn particle");
+    log(fmt("Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass %.3g kg",
+            spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass));
+}
+
+void Session::handle(const cmd::ChangeSpawnMass& c) {
+    SpawnSettings& spawn = tools_.spawn;
+    const double before = spawn.mass();
+    spawn.changeSize(c.direction < 0 ? -1 : 1);
+    if (spawn.mass() != before) remember("set new particle size");
+    notices_.push_back({Notice::Level::Info,
+                        fmt("New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
+                            spawn.mass(), spawn.radius(), spawn.size),
+                        true, false});
+}
+
+void Session::handle(const cmd::SetLaunchBody& c) {
+    const WorldDef& d = doc_.world.def();
+    SpawnSettings& spawn = tools_.spawn;
+    if (!(c.mass >= kMinLaunchMass && c.mass <= kMaxLaunchMass)) {
+        say(fmt("Launch mass must be between %g and %g kg, got %g", kMinLaunchMass, kMaxLaunchMass,
+                c.mass),
+            Notice::Level::Warning);
+        return;
+    }
+    const double maxRadius = 0.5 * std::min(d.width, d.height);
+    if (!(c.radius >= 0.0 && c.radius <= maxRadius)) {
+        say(fmt("Launch radius must be above 0 and at most half the box (%.3g m), got %g",
+                maxRadius, c.radius),
+            Notice::Level::Warning);
+        return;
+    }
+    const SpawnSettings before = spawn;
+    // The mass the panel shows is sent back with every change of the others: it stays the
+    // scene's rule until it is changed.
+    if (c.mass != spawn.mass()) spawn.fixedMass = c.mass;
+    spawn.fixedRadius = c.radius > 0.0 ? std::optional<double>(c.radius) : std::nullopt;
+    spawn.fixedColor = c.color;
+    if (spawn.mass() != before.mass() || spawn.radius() != before.radius() ||
+        spawn.color() != before.color()) {
+        remember("set new particles");
+    }
+    log(fmt("New particles: %g kg, radius %g m%s", spawn.mass(), spawn.radius(),
+            spawn.fixedRadius ? "" : " (from the mass)"));
 }
 
 }  // namespace psb::app

@@ -3,7 +3,6 @@
 
 #include <cstdio>
 
-#include "session/accuracy.hpp"
 #include "session/session.hpp"
 #include "session/units.hpp"
 
@@ -31,38 +30,38 @@ std::string describe(const Obstacle& o) {
 }  // namespace
 
 std::optional<Obstacle> Session::obstaclePreview() const {
-    if (obstacleTool_.active()) return obstacleTool_.preview(obstacleSizes_, world_.def());
-    if (tool_ != cmd::Tool::Peg) return std::nullopt;
+    if (tools_.obstacle.active())
+        return tools_.obstacle.preview(tools_.obstacleSizes, doc_.world.def());
+    if (tools_.tool != cmd::Tool::Peg) return std::nullopt;
     const Vec2 at = pointerWorld();
-    const WorldDef& d = world_.def();
+    const WorldDef& d = doc_.world.def();
     if (!(at.x() >= 0.0 && at.x() <= d.width && at.y() >= 0.0 && at.y() <= d.height)) {
         return std::nullopt;
     }
-    return Obstacle::peg(at, obstacleSizes_.pegRadius);
+    return Obstacle::peg(at, tools_.obstacleSizes.pegRadius);
 }
 
 bool Session::obstacleToolOn() const {
-    return tool_ == cmd::Tool::Peg || tool_ == cmd::Tool::Wall;
+    return tools_.tool == cmd::Tool::Peg || tools_.tool == cmd::Tool::Wall;
 }
 
 void Session::obstaclePress() {
-    obstacleTool_.press(
-        tool_ == cmd::Tool::Peg ? ObstacleTool::Kind::Peg : ObstacleTool::Kind::Wall,
+    tools_.obstacle.press(
+        tools_.tool == cmd::Tool::Peg ? ObstacleTool::Kind::Peg : ObstacleTool::Kind::Wall,
         pointerWorld());
 }
 
 void Session::obstacleRelease() {
-    if (!obstacleTool_.active()) return;
-    const ObstaclePlacement p = obstacleTool_.release(pointerWorld(), obstacleSizes_, world_.def(),
-                                                      camera_.toWorld(kMinWallPixels));
+    if (!tools_.obstacle.active()) return;
+    const ObstaclePlacement p = tools_.obstacle.release(
+        pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
     if (!p.obstacle) {
         if (!p.refusal.empty()) say(p.refusal, Notice::Level::Warning);
         return;
     }
     try {
-        const std::size_t index = world_.addObstacle(*p.obstacle);
-        selectedObstacle_.reset();
-        obstaclesChanged();
+        const std::size_t index = doc_.world.addObstacle(*p.obstacle);
+        tools_.selectedObstacle.reset();
         log("Added obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
         say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") + " (Ctrl+Z undoes it)");
         userAction(p.obstacle->isPeg() ? "place peg" : "draw wall");
@@ -73,36 +72,35 @@ void Session::obstacleRelease() {
 
 void Session::obstaclePressToMove() {
     const Vec2 at = pointerWorld();
-    if (world_.pick(at)) return;  // a particle: the click selects it
-    if (const auto i = pickObstacle(world_.obstacles(), at, camera_.toWorld(kPickPixels))) {
-        obstacleTool_.pressOn(*i, world_.obstacles()[*i], at);
-        selectedObstacle_ = i;  // highlighted while it is dragged
+    if (doc_.world.pick(at)) return;  // a particle: the click selects it
+    if (const auto i = pickObstacle(doc_.world.obstacles(), at, camera_.toWorld(kPickPixels))) {
+        tools_.obstacle.pressOn(*i, doc_.world.obstacles()[*i], at);
+        tools_.selectedObstacle = i;  // highlighted while it is dragged
     }
 }
 
 bool Session::obstacleMoveRelease() {
-    if (!obstacleTool_.active()) return false;
-    const std::size_t index = obstacleTool_.movedIndex();
-    const ObstaclePlacement p = obstacleTool_.release(pointerWorld(), obstacleSizes_, world_.def(),
-                                                      camera_.toWorld(kMinWallPixels));
+    if (!tools_.obstacle.active()) return false;
+    const std::size_t index = tools_.obstacle.movedIndex();
+    const ObstaclePlacement p = tools_.obstacle.release(
+        pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
     if (!p.obstacle) {
         if (p.refusal.empty()) return false;  // a click
         say(p.refusal, Notice::Level::Warning);
         return true;
     }
-    if (index >= world_.obstacles().size()) return true;
-    Obstacles moved = world_.obstacles();
+    if (index >= doc_.world.obstacles().size()) return true;
+    Obstacles moved = doc_.world.obstacles();
     moved[index] = *p.obstacle;
     try {
-        world_.setObstacles(std::move(moved));
+        doc_.world.setObstacles(std::move(moved));
     } catch (const std::exception& e) {  // InvalidArgument: what the world refuses
         say(std::string("Not moved: ") + e.what(), Notice::Level::Warning);
         return true;
     }
-    selectedObstacle_ = index;
-    selection_.clear();
-    closeEdit();
-    obstaclesChanged();
+    tools_.selectedObstacle = index;
+    tools_.selection.clear();
+    tools_.closePrompt();
     log("Moved obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
     say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
     userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
@@ -111,46 +109,45 @@ bool Session::obstacleMoveRelease() {
 
 bool Session::selectObstacleAt() {
     const auto index =
-        pickObstacle(world_.obstacles(), pointerWorld(), camera_.toWorld(kPickPixels));
+        pickObstacle(doc_.world.obstacles(), pointerWorld(), camera_.toWorld(kPickPixels));
     if (!index) return false;
-    selectedObstacle_ = index;
-    const Obstacle& o = world_.obstacles()[*index];
+    tools_.selectedObstacle = index;
+    const Obstacle& o = doc_.world.obstacles()[*index];
     log("Selected obstacle " + std::to_string(*index) + ": " + describe(o));
     say(std::string("Selected a ") + obstacleNoun(o) + ": Delete or Backspace removes it");
     return true;
 }
 
 void Session::removeObstacle(std::size_t index) {
-    if (index >= world_.obstacles().size()) {
+    if (index >= doc_.world.obstacles().size()) {
         say("No obstacle " + std::to_string(index) + " to remove (there are " +
-                std::to_string(world_.obstacles().size()) + ")",
+                std::to_string(doc_.world.obstacles().size()) + ")",
             Notice::Level::Warning);
         return;
     }
-    const Obstacle o = world_.obstacles()[index];
-    world_.removeObstacle(index);
-    if (selectedObstacle_ == index) {
-        selectedObstacle_.reset();
-    } else if (selectedObstacle_ && *selectedObstacle_ > index) {
-        --*selectedObstacle_;
+    const Obstacle o = doc_.world.obstacles()[index];
+    doc_.world.removeObstacle(index);
+    if (tools_.selectedObstacle == index) {
+        tools_.selectedObstacle.reset();
+    } else if (tools_.selectedObstacle && *tools_.selectedObstacle > index) {
+        --*tools_.selectedObstacle;
     }
-    obstaclesChanged();
     log("Removed obstacle " + std::to_string(index) + ": " + describe(o));
     say(std::string("Removed the ") + obstacleNoun(o) + " (Ctrl+Z brings it back)");
     userAction(o.isPeg() ? "remove peg" : "remove wall");
 }
 
-void Session::setObstacleSizes(const cmd::SetObstacleSizes& c) {
+void Session::handle(const cmd::RemoveObstacle& c) {
+    removeObstacle(c.index);
+}
+
+void Session::handle(const cmd::SetObstacleSizes& c) {
     const ObstacleSizes sizes{c.pegRadius, c.wallThickness};
-    if (const std::string why = obstacleSizesRefusal(sizes, world_.def()); !why.empty()) {
+    if (const std::string why = obstacleSizesRefusal(sizes, doc_.world.def()); !why.empty()) {
         say(why, Notice::Level::Warning);
         return;
     }
-    obstacleSizes_ = sizes;
-}
-
-void Session::obstaclesChanged() {
-    exactRefusal_ = exactModeRefusal(world_);
+    tools_.obstacleSizes = sizes;
 }
 
 }  // namespace psb::app

@@ -7,10 +7,11 @@
 
 namespace psb::app {
 
-/// `format` with two numbers, for a notice.
-[[nodiscard]] inline std::string fmt(const char* format, double a, double b) {
-    char buf[128];
-    std::snprintf(buf, sizeof buf, format, a, b);
+/// `format` with its numbers (and C strings), for a notice.
+template <class... Args>
+[[nodiscard]] std::string fmt(const char* format, Args... args) {
+    char buf[256];
+    std::snprintf(buf, sizeof buf, format, args...);
     return buf;
 }
 

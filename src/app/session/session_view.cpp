@@ -1,18 +1,11 @@
-// The session's view: the box fitted to the window beside the panels, the side column's
-// folding, and the toggles that change what the box is fitted beside.
+// The session's view: the camera (pan, zoom, the box fitted to the window beside the panels),
+// the side column's folding, and what is shown.
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
 
-#include <particle_sandbox/diagnostics.hpp>
-
-#include "session/physics_controls.hpp"
 #include "session/session.hpp"
 #include "session/session_text.hpp"
-#include "session/stopwatch.hpp"
-#include "session/units.hpp"
 
 namespace psb::app {
 
@@ -34,7 +27,7 @@ void Session::fit() {
     const ViewInsets& in = options_.insets;
     // The momentum legend is three short lines: it does not cost the box a column.
     const bool column = columnAsked() && !sideColumnFolded();
-    const double w = world_.def().width, h = world_.def().height, margin = 10.0;
+    const double w = doc_.world.def().width, h = doc_.world.def().height, margin = 10.0;
     const double left = controlsInset();
     const double top =
         in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left),
@@ -64,7 +57,8 @@ void Session::fit() {
     fitted_ = true;
 }
 
-void Session::resize(int width, int height) {
+void Session::handle(const cmd::Resize& c) {
+    const int width = c.width, height = c.height;
     if (width == camera_.viewportWidth() && height == camera_.viewportHeight()) return;
     // A fitted view stays fitted; a view the user moved keeps its centre where it was.
     const Vec2 centre =
@@ -82,6 +76,136 @@ void Session::togglePanel(bool& flag, const char* on, const char* off) {
     say(flag ? on : off);
     // The panel column sits beside the box: a fitted view makes room for it (or takes it back).
     if (fitted_) fit();
+}
+
+void Session::afterCameraMove() {
+    fitted_ = false;
+    if (tools_.hand.mode() != Interaction::Mode::Idle) {
+        tools_.hand.moveTo(pointerWorld(), tools_.pointerTime);
+    }
+}
+
+void Session::handle(const cmd::Pan& c) {
+    camera_.panPixels(c.pixels);
+    camera_.keepNear(doc_.world.def().width, doc_.world.def().height);
+    afterCameraMove();
+}
+
+void Session::handle(const cmd::Zoom& c) {
+    camera_.zoomAbout(c.screen, c.factor);
+    log(fmt("Zoom %.4f px/m about [%.0f, %.0f]", camera_.zoom(), c.screen.x(), c.screen.y()));
+    afterCameraMove();
+}
+
+void Session::handle(const cmd::Fit&) {
+    fit();
+    afterCameraMove();
+    fitted_ = true;
+}
+
+void Session::handle(const cmd::ToggleArrows&) {
+    view_.arrows = !view_.arrows;
+    say(view_.arrows ? "Arrows on" : "Arrows off");
+}
+
+void Session::handle(const cmd::ToggleLabels&) {
+    view_.labels = !view_.labels;
+    say(view_.labels ? "Labels on" : "Labels off");
+}
+
+void Session::handle(const cmd::ToggleProfile&) {
+    togglePanel(showProfile_, "Profile on", "Profile off");
+}
+
+void Session::handle(const cmd::ToggleMomentum&) {
+    view_.momentum = !view_.momentum;
+    say(view_.momentum ? "Momentum view on" : "Momentum view off");
+}
+
+void Session::handle(const cmd::CycleTrails&) {
+    view_.trails = nextTrailMode(view_.trails);
+    say(std::string("Trails: ") + toString(view_.trails));
+}
+
+void Session::handle(const cmd::TogglePlots&) {
+    togglePanel(view_.plots, "Plots on", "Plots off");
+}
+
+void Session::handle(const cmd::ToggleSpeeds&) {
+    togglePanel(view_.speeds, "Speed distribution on", "Speed distribution off");
+}
+
+void Session::handle(const cmd::ToggleHelp&) {
+    const int pages =
+        options_.insets.helpPagesFor
+            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight())
+            : 1;
+    if (!showHelp_) {
+        showHelp_ = true;
+        helpPage_ = 0;
+    } else if (static_cast<int>(helpPage_) + 1 < pages) {
+        ++helpPage_;
+    } else {
+        showHelp_ = false;
+    }
+}
+
+void Session::handle(const cmd::SetShow& c) {
+    using O = cmd::ShowOption;
+    bool* flag = nullptr;
+    switch (c.option) {
+        case O::Arrows:
+            flag = &view_.arrows;
+            break;
+        case O::Labels:
+            flag = &view_.labels;
+            break;
+        case O::Momentum:
+            flag = &view_.momentum;
+            break;
+        case O::Plots:
+            flag = &view_.plots;
+            break;
+        case O::Speeds:
+            flag = &view_.speeds;
+            break;
+        case O::Bins:
+            flag = &view_.bins;
+            break;
+        case O::Profile:
+            flag = &showProfile_;
+            break;
+    }
+    if (flag == nullptr || *flag == c.on) return;
+    *flag = c.on;
+    // The side column's panels change what the box is fitted beside.
+    if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile ||
+                    c.option == O::Bins)) {
+        fit();
+    }
+}
+
+void Session::handle(const cmd::SetTrails& c) {
+    view_.trails = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
+}
+
+void Session::handle(const cmd::ToggleControls&) {
+    showControls_ = !showControls_;
+    if (fitted_) fit();
+}
+
+void Session::handle(const cmd::Screenshot&) {
+    screenshotRequested_ = true;
+}
+
+std::string Session::overlayFlags() const {
+    std::string f;
+    const auto add = [&f](const std::string& s) { f += (f.empty() ? "" : " ") + s; };
+    if (view_.momentum) add("V");
+    if (view_.trails != TrailMode::Off) add(std::string("L:") + toString(view_.trails));
+    if (view_.plots) add("K");
+    if (view_.speeds) add("D");
+    return f;
 }
 
 }  // namespace psb::app

@@ -26,7 +26,7 @@ UndoHistory::Entry UndoHistory::makeEntry(std::string label, double time, UndoSt
     state.world.dropEventState();
     Entry e{std::move(label), std::move(state), time, 0};
     e.bytes = sizeof(Entry) + e.state.world.stateBytes() + e.label.capacity() +
-              e.state.sceneName.capacity() + e.state.sceneDescription.capacity();
+              e.state.meta.name.capacity() + e.state.meta.description.capacity();
     return e;
 }
 

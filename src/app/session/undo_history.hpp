@@ -37,6 +37,7 @@
 #include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "session/document.hpp"
 #include "session/interaction.hpp"
 
 namespace psb::app {
@@ -45,9 +46,7 @@ namespace psb::app {
 struct UndoState {
     World world;
     std::shared_ptr<const World> loaded;  ///< the scene as loaded (Reset's target)
-    std::string sceneName;
-    std::string sceneDescription;
-    std::optional<Bins> sceneBins;  ///< the scene's bins, kept when it is saved
+    SceneMeta meta;                       ///< its name, description, bins
     ParticleId selection = kNullParticle;
     std::optional<std::size_t> selectedObstacle;  ///< index into world.obstacles()
     SpawnSettings spawn;

@@ -105,7 +105,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d)});
     }
     if (session.binsShown()) {
-        f.bins = binHistogram(*session.sceneBins(), world.particles(), stillToDrop);
+        f.bins = binHistogram(*session.meta().bins, world.particles(), stillToDrop);
     }
 
     Overlays& o = f.overlays;
@@ -171,7 +171,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
     f.layout = layoutPanels(req);
-    f.title = windowTitle(world.size(), session.paused(), session.sceneName());
+    f.title = windowTitle(world.size(), session.paused(), session.meta().name);
     return f;
 }
 

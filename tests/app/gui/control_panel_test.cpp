@@ -39,7 +39,7 @@ class ControlPanelTest : public OffscreenTest {
         so.viewportHeight = kSize;
         so.insets = {60.0, 44.0, 338.0, kControlsWidth, kControlsFoldedWidth};
         so.presets = presetScenes();
-        session_.emplace(makeWorld(defaultScene()), "default", so);
+        session_.emplace(makeWorld(defaultScene()), SceneMeta{"default"}, so);
         // ImGui settles its layout in the second frame (wrapped text takes the width the first
         // frame found).
         frame();
@@ -192,7 +192,7 @@ TEST_F(ControlPanelTest, ModesAreChosenInEveryScene) {
 
     World pegs(session_->world().def());
     pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
-    session_->setWorld(std::move(pegs), "pegs");
+    session_->setWorld(std::move(pegs), SceneMeta{"pegs"});
     frame();
     click("mode Exact");  // obstacles are in every mode
     EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
@@ -239,7 +239,7 @@ TEST_F(ControlPanelTest, TheObstacleToolsHaveRadioButtonsSizesAndADeleteButton) 
 TEST_F(ControlPanelTest, APresetIsOpenedByItsName) {
     click("section Scene");
     click("preset Newton's cradle");
-    EXPECT_EQ(session_->sceneName(), "Newton's cradle");
+    EXPECT_EQ(session_->meta().name, "Newton's cradle");
 }
 
 TEST_F(ControlPanelTest, EveryReadoutsNameEndsBeforeItsValueBegins) {

@@ -23,37 +23,52 @@ bool is(const std::vector<Command>& c) {
 }
 
 TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
-    EXPECT_TRUE(is<cmd::ToggleLabels>(commandsForKey(keyEvent(SDLK_s), false)));
-    EXPECT_TRUE(is<cmd::Save>(commandsForKey(keyEvent(SDLK_s, KMOD_LCTRL), false)));
-    EXPECT_TRUE(is<cmd::NextMode>(commandsForKey(keyEvent(SDLK_t), false)));
-    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), false)));
-    EXPECT_TRUE(is<cmd::DeleteHeld>(commandsForKey(keyEvent(SDLK_DELETE), false)));
-    EXPECT_TRUE(is<cmd::SpawnRandom>(commandsForKey(keyEvent(SDLK_m), false)));
-    const auto e = commandsForKey(keyEvent(SDLK_e, KMOD_LSHIFT), false);
-    ASSERT_TRUE(is<cmd::ChangeRestitution>(e));
-    EXPECT_EQ(std::get<cmd::ChangeRestitution>(e.front()).direction, +1);
-    const auto preset = commandsForKey(keyEvent(SDLK_3), false);
+    EXPECT_TRUE(is<cmd::ToggleLabels>(commandsForKey(keyEvent(SDLK_s), KeyState{})));
+    EXPECT_TRUE(is<cmd::Save>(commandsForKey(keyEvent(SDLK_s, KMOD_LCTRL), KeyState{})));
+    KeyState now;
+    now.restitution = 0.9;
+    now.solver.mode = StepMode::Substep;
+    now.solver.substeps = 6;
+    now.timeScale = 2.0;
+    const auto t = commandsForKey(keyEvent(SDLK_t), now);
+    ASSERT_TRUE(is<cmd::SetMode>(t));
+    EXPECT_EQ(std::get<cmd::SetMode>(t.front()).mode, StepMode::Exact);
+    EXPECT_EQ(std::get<cmd::SetMode>(t.front()).substeps, 6);
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), KeyState{})));
+    EXPECT_TRUE(is<cmd::DeleteHeld>(commandsForKey(keyEvent(SDLK_DELETE), KeyState{})));
+    EXPECT_TRUE(is<cmd::SpawnRandom>(commandsForKey(keyEvent(SDLK_m), KeyState{})));
+    const auto e = commandsForKey(keyEvent(SDLK_e, KMOD_LSHIFT), now);
+    ASSERT_TRUE(is<cmd::SetRestitution>(e));
+    EXPECT_DOUBLE_EQ(std::get<cmd::SetRestitution>(e.front()).value, 0.95);
+    const auto g = commandsForKey(keyEvent(SDLK_g), now);
+    ASSERT_TRUE(is<cmd::SetGravity>(g));
+    EXPECT_TRUE(std::get<cmd::SetGravity>(g.front()).on);
+    const auto faster = commandsForKey(keyEvent(SDLK_PERIOD), now);
+    ASSERT_TRUE(is<cmd::SetTimeScale>(faster));
+    EXPECT_EQ(std::get<cmd::SetTimeScale>(faster.front()).value, 4.0);
+    const auto preset = commandsForKey(keyEvent(SDLK_3), KeyState{});
     ASSERT_TRUE(is<cmd::OpenPreset>(preset));
     EXPECT_EQ(std::get<cmd::OpenPreset>(preset.front()).index, 2);
 }
 
 TEST(Input, WAndBChooseTheWallAndPegToolsAsAToggle) {
-    const auto w = commandsForKey(keyEvent(SDLK_w), false);
+    const auto w = commandsForKey(keyEvent(SDLK_w), KeyState{});
     ASSERT_TRUE(is<cmd::SetTool>(w));
     EXPECT_EQ(std::get<cmd::SetTool>(w.front()).tool, cmd::Tool::Wall);
     EXPECT_TRUE(std::get<cmd::SetTool>(w.front()).toggle);
-    const auto b = commandsForKey(keyEvent(SDLK_b), false);
+    const auto b = commandsForKey(keyEvent(SDLK_b), KeyState{});
     ASSERT_TRUE(is<cmd::SetTool>(b));
     EXPECT_EQ(std::get<cmd::SetTool>(b.front()).tool, cmd::Tool::Peg);
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w), true).empty());  // typed into the prompt
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w, KMOD_NONE, 1), false).empty());  // no repeat
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w), KeyState{.editing = true})
+                    .empty());  // typed into the prompt
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_w, KMOD_NONE, 1), KeyState{}).empty());  // no repeat
 }
 
 TEST(Input, EveryPresetUpTo19HasAKeyAndTheKeyItsName) {
     // 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to the 19th: the 13 presets each
     // have one, and the message that opens one names the key that does.
     const auto index = [](SDL_Keycode sym, Uint16 mod) {
-        const auto c = commandsForKey(keyEvent(sym, mod), false);
+        const auto c = commandsForKey(keyEvent(sym, mod), KeyState{});
         EXPECT_TRUE(is<cmd::OpenPreset>(c));
         return is<cmd::OpenPreset>(c) ? std::get<cmd::OpenPreset>(c.front()).index : -2;
     };
@@ -74,17 +89,18 @@ TEST(Input, EveryPresetUpTo19HasAKeyAndTheKeyItsName) {
 }
 
 TEST(Input, OnlyPanStepAndMassKeysRepeat) {
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_SPACE, KMOD_NONE, 1), false).empty());
-    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_NONE, 1), false)));
-    EXPECT_TRUE(is<cmd::SingleStep>(commandsForKey(keyEvent(SDLK_n, KMOD_NONE, 1), false)));
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_SPACE, KMOD_NONE, 1), KeyState{}).empty());
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_NONE, 1), KeyState{})));
+    EXPECT_TRUE(is<cmd::SingleStep>(commandsForKey(keyEvent(SDLK_n, KMOD_NONE, 1), KeyState{})));
 }
 
 TEST(Input, WhileEditingOnlyThePromptsKeysMeanAnything) {
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_g), true).empty());
-    EXPECT_TRUE(is<cmd::EditField>(commandsForKey(keyEvent(SDLK_TAB), true)));
-    EXPECT_TRUE(is<cmd::EditApply>(commandsForKey(keyEvent(SDLK_RETURN), true)));
-    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), true)));
-    EXPECT_TRUE(is<cmd::Screenshot>(commandsForKey(keyEvent(SDLK_F12), true)));
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_g), KeyState{.editing = true}).empty());
+    EXPECT_TRUE(is<cmd::EditField>(commandsForKey(keyEvent(SDLK_TAB), KeyState{.editing = true})));
+    EXPECT_TRUE(
+        is<cmd::EditApply>(commandsForKey(keyEvent(SDLK_RETURN), KeyState{.editing = true})));
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), KeyState{.editing = true})));
+    EXPECT_TRUE(is<cmd::Screenshot>(commandsForKey(keyEvent(SDLK_F12), KeyState{.editing = true})));
 }
 
 TEST(Input, MouseCoordinatesAreScaledToDrawablePixels) {
@@ -95,7 +111,7 @@ TEST(Input, MouseCoordinatesAreScaledToDrawablePixels) {
     e.button.x = 100;
     e.button.y = 50;
     e.button.timestamp = 2000;
-    const auto c = in.translate(e, false, 2.0, SDL_Point{1600, 1600});  // a high-DPI screen
+    const auto c = in.translate(e, KeyState{}, 2.0, SDL_Point{1600, 1600});  // a high-DPI screen
     ASSERT_TRUE(is<cmd::PointerDown>(c));
     EXPECT_EQ(std::get<cmd::PointerDown>(c.front()).screen, Vec2(200, 100));
     EXPECT_DOUBLE_EQ(std::get<cmd::PointerDown>(c.front()).time, 2.0);
@@ -108,12 +124,12 @@ TEST(Input, ARightDragPans) {
     e.button.button = SDL_BUTTON_RIGHT;
     e.button.x = 10;
     e.button.y = 10;
-    EXPECT_TRUE(in.translate(e, false, 1.0, SDL_Point{800, 800}).empty());
+    EXPECT_TRUE(in.translate(e, KeyState{}, 1.0, SDL_Point{800, 800}).empty());
     SDL_Event m{};
     m.type = SDL_MOUSEMOTION;
     m.motion.x = 30;
     m.motion.y = 5;
-    const auto c = in.translate(m, false, 1.0, SDL_Point{800, 800});
+    const auto c = in.translate(m, KeyState{}, 1.0, SDL_Point{800, 800});
     ASSERT_EQ(c.size(), 2u);
     ASSERT_TRUE(std::holds_alternative<cmd::Pan>(c.front()));
     EXPECT_EQ(std::get<cmd::Pan>(c.front()).pixels, Vec2(20, -5));
@@ -143,21 +159,25 @@ TEST(Renderer, AWindowlessVideoDriverNobodyAskedForIsAnError) {
 }
 
 TEST(Input, UndoRedoAndStepBackKeysLeaveThePlainKeysAsTheyWere) {
-    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), false)));
-    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL | KMOD_LSHIFT), false)));
-    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_y, KMOD_RCTRL), false)));
-    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL, 1), false)));  // held
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z), false).empty());
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_y), false).empty());
-    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), true).empty());  // editing
-    EXPECT_TRUE(is<cmd::StepBack>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_LSHIFT), false)));
-    EXPECT_TRUE(is<cmd::StepForward>(commandsForKey(keyEvent(SDLK_RIGHT, KMOD_RSHIFT, 1), false)));
-    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT), false)));
-    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_RIGHT), false)));
-    const auto back = commandsForKey(keyEvent(SDLK_PAGEUP), false);
+    EXPECT_TRUE(is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), KeyState{})));
+    EXPECT_TRUE(
+        is<cmd::Redo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL | KMOD_LSHIFT), KeyState{})));
+    EXPECT_TRUE(is<cmd::Redo>(commandsForKey(keyEvent(SDLK_y, KMOD_RCTRL), KeyState{})));
+    EXPECT_TRUE(
+        is<cmd::Undo>(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL, 1), KeyState{})));  // held
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z), KeyState{}).empty());
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_y), KeyState{}).empty());
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_z, KMOD_LCTRL), KeyState{.editing = true})
+                    .empty());  // editing
+    EXPECT_TRUE(is<cmd::StepBack>(commandsForKey(keyEvent(SDLK_LEFT, KMOD_LSHIFT), KeyState{})));
+    EXPECT_TRUE(
+        is<cmd::StepForward>(commandsForKey(keyEvent(SDLK_RIGHT, KMOD_RSHIFT, 1), KeyState{})));
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_LEFT), KeyState{})));
+    EXPECT_TRUE(is<cmd::Pan>(commandsForKey(keyEvent(SDLK_RIGHT), KeyState{})));
+    const auto back = commandsForKey(keyEvent(SDLK_PAGEUP), KeyState{});
     ASSERT_TRUE(is<cmd::SeekBy>(back));
     EXPECT_EQ(std::get<cmd::SeekBy>(back.front()).seconds, -kSeekKeySeconds);
-    EXPECT_TRUE(is<cmd::SeekBy>(commandsForKey(keyEvent(SDLK_PAGEDOWN), false)));
+    EXPECT_TRUE(is<cmd::SeekBy>(commandsForKey(keyEvent(SDLK_PAGEDOWN), KeyState{})));
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// The mode switch key's logic, the accuracy indicators, and grab/spawn/delete in every mode.
+// The accuracy indicators, and grab/spawn/delete in every mode.
 
 #include <gtest/gtest.h>
 
@@ -9,6 +9,7 @@
 #include <particle_sandbox/error.hpp>
 
 #include "session/accuracy.hpp"
+#include "session/hand_steps.hpp"
 #include "session/interaction.hpp"
 
 namespace psb::app {
@@ -27,76 +28,6 @@ World gas(Vec2 gravity = Vec2::Zero()) {
         w.add(d);
     }
     return w;
-}
-
-TEST(ModeSwitch, CyclesDiscreteSubstepExact) {
-    EXPECT_EQ(nextMode(StepMode::Discrete), StepMode::Substep);
-    EXPECT_EQ(nextMode(StepMode::Substep), StepMode::Exact);
-    EXPECT_EQ(nextMode(StepMode::Exact), StepMode::Discrete);
-}
-
-TEST(ModeSwitch, WalksTheWholeCycleInAWorldWithoutGravity) {
-    World w = gas();
-    ModeSwitch r = switchToNextMode(w);
-    EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Substep);
-    // One substep would be the discrete mode again.
-    EXPECT_EQ(w.solver().substeps, kAppSubsteps);
-    EXPECT_EQ(r.message, "Mode: substep x4");
-    r = switchToNextMode(w);
-    EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Exact);
-    EXPECT_EQ(r.message, "Mode: exact");
-    r = switchToNextMode(w);
-    EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Discrete);
-}
-
-TEST(ModeSwitch, KeepsTheScenesOwnSubstepCount) {
-    World w = gas();
-    SolverSettings s = w.solver();
-    s.substeps = 7;
-    w.setSolver(s);
-    switchToNextMode(w);
-    EXPECT_EQ(w.solver().substeps, 7);
-}
-
-TEST(ModeSwitch, ExactWithGravityIsAcceptedAndSteps) {
-    World w = gas(Vec2(0.0, 9.81));
-    ASSERT_TRUE(switchToNextMode(w).changed);  // discrete -> substep
-    const ModeSwitch r = switchToNextMode(w);
-    EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Exact);
-    EXPECT_TRUE(r.skipped.empty());
-    EXPECT_EQ(r.message, "Mode: exact");
-    EXPECT_NO_THROW(w.step(w.solver().dt));
-    EXPECT_EQ(w.counters().steps, 1u);
-    EXPECT_TRUE(switchToNextMode(w).changed);  // back to discrete
-}
-
-TEST(ModeSwitch, AWorldWithObstaclesCyclesThroughEveryMode) {
-    // The exact mode takes obstacles: from substep, T moves on to exact and nothing is skipped
-    // (it used to skip exact with "it has no obstacles yet").
-    World w = gas(Vec2::Zero());
-    w.addObstacle(Obstacle::peg({0.5 * w.def().width, 0.5 * w.def().height}, 1.0));
-    ASSERT_TRUE(switchToNextMode(w).changed);  // discrete -> substep
-    ASSERT_EQ(w.solver().mode, StepMode::Substep);
-    const ModeSwitch r = switchToNextMode(w);
-    EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Exact);
-    EXPECT_TRUE(r.skipped.empty()) << r.skipped;
-    EXPECT_EQ(r.message, "Mode: exact");
-    EXPECT_NO_THROW(w.step(w.solver().dt));
-}
-
-TEST(ModeSwitch, FromExactTheCycleMovesOnToDiscrete) {
-    World w = gas(Vec2::Zero());
-    SolverSettings s = w.solver();
-    s.mode = StepMode::Exact;
-    w.setSolver(s);
-    const ModeSwitch r = switchToNextMode(w);  // exact -> discrete: always accepted
-    EXPECT_TRUE(r.changed);
-    EXPECT_EQ(w.solver().mode, StepMode::Discrete);
 }
 
 TEST(MonitoredEnergy, IsKineticWithoutGravityAndMechanicalWithIt) {
@@ -183,7 +114,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     Interaction in;
     const ParticleId target = w.ids()[12];
     const Vec2 start = w.get(target).position;
-    in.press(w, start, 0.0);
+    press(in, w, start, 0.0);
     ASSERT_EQ(in.mode(), Interaction::Mode::Holding);
     LaunchSettings ls;
     ls.window = 0.1;
@@ -192,12 +123,12 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     for (int k = 1; k <= 50; ++k) {
         t = 0.01 * k;
         in.moveTo(start + Vec2(200.0 * t, 0.0), t);
-        in.applyHold(w, t, ls);
+        applyHold(in, w, t, ls);
         w.step(w.solver().dt);
     }
     // A step carries the held particle on with the hand's velocity; the app places it at the
     // hand again before drawing and before the next step.
-    in.applyHold(w, t, ls);
+    applyHold(in, w, t, ls);
     EXPECT_NEAR(w.get(target).position.x(), start.x() + 100.0, 1e-6);
 
     // Spawn between steps; the next step picks it up.
@@ -211,7 +142,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
 
     // Delete the held particle, then keep stepping.
     const std::size_t before = w.size();
-    ASSERT_TRUE(in.deleteHeld(w).has_value());
+    ASSERT_TRUE(deleteHeld(in, w).has_value());
     EXPECT_EQ(w.size(), before - 1);
     EXPECT_FALSE(w.contains(target));
     for (int k = 0; k < 20; ++k)

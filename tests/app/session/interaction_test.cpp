@@ -5,6 +5,7 @@
 
 #include <particle_sandbox/diagnostics.hpp>
 
+#include "session/hand_steps.hpp"
 #include "session/interaction.hpp"
 
 namespace psb::app {
@@ -46,7 +47,7 @@ TEST(Interaction, PressOnAParticleGrabsItAndMakesItKinematic) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(105, 100), 0.0);
+    press(in, w, Vec2(105, 100), 0.0);
     EXPECT_EQ(in.mode(), Interaction::Mode::Holding);
     EXPECT_EQ(in.held(), id);
     EXPECT_TRUE(w.isKinematic(id));
@@ -57,10 +58,10 @@ TEST(Interaction, GrabHitTestUsesTheWholeDiscInWorldUnits) {
     const ParticleId id = addAt(w, {100, 100}, 10.0);
     Interaction in;
     // 9.9 m from the centre of a 10 m disc: inside, whatever the zoom.
-    in.press(w, Vec2(109.9, 100), 0.0);
+    press(in, w, Vec2(109.9, 100), 0.0);
     EXPECT_EQ(in.held(), id);
-    in.release(w, Vec2(109.9, 100), 0.5, {}, launch(), 1.0);
-    in.press(w, Vec2(110.1, 100), 1.0);
+    release(in, w, Vec2(109.9, 100), 0.5, {}, launch(), 1.0);
+    press(in, w, Vec2(110.1, 100), 1.0);
     EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
 }
 
@@ -69,7 +70,7 @@ TEST(Interaction, GrabTakesTheTopmostOfOverlappingParticles) {
     addAt(w, {100, 100});
     const ParticleId top = addAt(w, {105, 100});
     Interaction in;
-    in.press(w, Vec2(103, 100), 0.0);
+    press(in, w, Vec2(103, 100), 0.0);
     EXPECT_EQ(in.held(), top);
 }
 
@@ -78,12 +79,12 @@ TEST(Interaction, OnlyThePressGrabsSweepingOverOthersCollectsNothing) {
     const ParticleId a = addAt(w, {100, 100});
     const ParticleId b = addAt(w, {300, 100});
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     drag(in, Vec2(100, 100), 0.0, Vec2(1000, 0), 20);  // passes over b
-    in.applyHold(w, 0.2, launch());
+    applyHold(in, w, 0.2, launch());
     EXPECT_EQ(in.held(), a);
     EXPECT_FALSE(w.isKinematic(b));
-    in.press(w, Vec2(300, 100), 0.25);  // a second press while holding is ignored
+    press(in, w, Vec2(300, 100), 0.25);  // a second press while holding is ignored
     EXPECT_EQ(in.held(), a);
 }
 
@@ -91,12 +92,12 @@ TEST(Interaction, HeldParticleKeepsItsGrabOffset) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(106, 97), 0.0);  // off centre by (6, -3)
-    in.applyHold(w, 0.0, launch());
+    press(in, w, Vec2(106, 97), 0.0);  // off centre by (6, -3)
+    applyHold(in, w, 0.0, launch());
     EXPECT_NEAR(w.get(id).position.x(), 100.0, 1e-12);  // no jump to the cursor
     EXPECT_NEAR(w.get(id).position.y(), 100.0, 1e-12);
     in.moveTo(Vec2(206, 147), 0.05);
-    in.applyHold(w, 0.05, launch());
+    applyHold(in, w, 0.05, launch());
     EXPECT_NEAR(w.get(id).position.x(), 200.0, 1e-12);
     EXPECT_NEAR(w.get(id).position.y(), 150.0, 1e-12);
 }
@@ -105,12 +106,12 @@ TEST(Interaction, ReleaseFlingsWithTheVelocityOfTheLast100ms) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     // Slow for 0.3 s, then 200 m/s to the right and 50 m/s down for the last 0.1 s.
     double t = drag(in, Vec2(100, 100), 0.0, Vec2(10, 0), 30);
     const Vec2 p = in.pointer();
     t = drag(in, p, t, Vec2(200, 50), 10);
-    const ReleaseResult r = in.release(w, in.pointer(), t, {}, launch(), 1.0);
+    const ReleaseResult r = release(in, w, in.pointer(), t, {}, launch(), 1.0);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Flung);
     EXPECT_NEAR(r.velocity.x(), 200.0, 1e-6);
     EXPECT_NEAR(r.velocity.y(), 50.0, 1e-6);
@@ -123,10 +124,10 @@ TEST(Interaction, AHandThatStoppedReleasesAtRest) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     const double t = drag(in, Vec2(100, 100), 0.0, Vec2(300, 0), 10);
     // Released 0.3 s after the last motion: nothing moved in the last 100 ms.
-    in.release(w, in.pointer(), t + 0.3, {}, launch(), 1.0);
+    release(in, w, in.pointer(), t + 0.3, {}, launch(), 1.0);
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
@@ -134,9 +135,9 @@ TEST(Interaction, AMoveBelowTheMinimumDistanceReleasesAtRest) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     const double t = drag(in, Vec2(100, 100), 0.0, Vec2(5, 0), 10);  // 0.5 m in 100 ms
-    in.release(w, in.pointer(), t, {}, launch(), 1.0);               // minDistance 1 m
+    release(in, w, in.pointer(), t, {}, launch(), 1.0);              // minDistance 1 m
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
@@ -144,8 +145,8 @@ TEST(Interaction, OffCentreGrabDoesNotDriftAfterRelease) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(108, 104), 0.0);
-    in.release(w, Vec2(108, 104), 0.5, {}, launch(), 1.0);
+    press(in, w, Vec2(108, 104), 0.0);
+    release(in, w, Vec2(108, 104), 0.5, {}, launch(), 1.0);
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
     w.step(0.01);
     EXPECT_NEAR(w.get(id).position.x(), 100.0, 1e-12);
@@ -157,15 +158,15 @@ TEST(Interaction, HeldParticlePushesOthersAndIsNotPushed) {
     const ParticleId held = addAt(w, {100, 100}, 10.0, 1.0);
     const ParticleId other = addAt(w, {125, 100}, 10.0, 1000.0);
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     double t = 0.0;
     for (int k = 1; k <= 10; ++k) {  // move right at 100 m/s into the heavy particle
         t = 0.01 * k;
         in.moveTo(Vec2(100 + 100 * t, 100), t);
-        in.applyHold(w, t, launch());
+        applyHold(in, w, t, launch());
         w.step(0.01);
     }
-    in.applyHold(w, t, launch());
+    applyHold(in, w, t, launch());
     EXPECT_NEAR(w.get(held).position.x(), 110.0, 1e-9);  // exactly where the hand put it
     EXPECT_GT(w.get(other).velocity.x(), 0.0);           // the heavy one was pushed away
 }
@@ -174,9 +175,9 @@ TEST(Interaction, HeldParticleStaysInTheBox) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100}, 10.0);
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     in.moveTo(Vec2(-500, 900), 0.1);
-    in.applyHold(w, 0.1, launch());
+    applyHold(in, w, 0.1, launch());
     EXPECT_NEAR(w.get(id).position.x(), 10.0, 1e-12);
     EXPECT_NEAR(w.get(id).position.y(), 690.0, 1e-12);
 }
@@ -186,11 +187,11 @@ TEST(Interaction, DragOnEmptySpaceLaunchesFromThePressPointWithTheDragVelocity) 
     Interaction in;
     SpawnSettings spawn;
     spawn.size = 0.4;  // 4 kg
-    in.press(w, Vec2(200, 300), 0.0);
+    press(in, w, Vec2(200, 300), 0.0);
     EXPECT_EQ(in.mode(), Interaction::Mode::Launching);
     const double t = drag(in, Vec2(200, 300), 0.0, Vec2(-120, 80), 15);
     // 0.15 s of drag at (-120, 80) m/s: with a launch time of 0.15 s the velocity is the drag's.
-    const ReleaseResult r = in.release(w, in.pointer(), t, spawn, launch(), 0.15);
+    const ReleaseResult r = release(in, w, in.pointer(), t, spawn, launch(), 0.15);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     ASSERT_EQ(w.size(), 1u);
     const Particle p = w.get(r.id);
@@ -205,9 +206,9 @@ TEST(Interaction, DragOnEmptySpaceLaunchesFromThePressPointWithTheDragVelocity) 
 TEST(Interaction, DraggingOutAndStoppingLaunchesWithTheDragVectorNotAtRest) {
     World w = boxWorld();
     Interaction in;
-    in.press(w, Vec2(200, 300), 0.0);
+    press(in, w, Vec2(200, 300), 0.0);
     in.moveTo(Vec2(260, 220), 0.05);  // out 100 m, then the hand holds still for half a second
-    const ReleaseResult r = in.release(w, Vec2(260, 220), 0.55, {}, launch(), 0.5);
+    const ReleaseResult r = release(in, w, Vec2(260, 220), 0.55, {}, launch(), 0.5);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     EXPECT_NEAR(r.velocity.x(), 120.0, 1e-9);  // (60, -80) m / 0.5 s
     EXPECT_NEAR(r.velocity.y(), -160.0, 1e-9);
@@ -217,10 +218,10 @@ TEST(Interaction, DraggingOutAndStoppingLaunchesWithTheDragVectorNotAtRest) {
 TEST(Interaction, APreviewGivesTheVelocityTheLaunchWillHave) {
     World w = boxWorld();
     Interaction in;
-    in.press(w, Vec2(200, 300), 0.0);
+    press(in, w, Vec2(200, 300), 0.0);
     in.moveTo(Vec2(230, 260), 0.05);
     const CappedVelocity preview = in.launchVelocityNow(launch(), 0.25);
-    const ReleaseResult r = in.release(w, Vec2(230, 260), 0.9, {}, launch(), 0.25);
+    const ReleaseResult r = release(in, w, Vec2(230, 260), 0.9, {}, launch(), 0.25);
     EXPECT_EQ(r.velocity, preview.velocity);
     EXPECT_NEAR(preview.velocity.x(), 120.0, 1e-9);
 }
@@ -230,9 +231,9 @@ TEST(Interaction, ACappedLaunchSaysSo) {
     Interaction in;
     LaunchSettings l = launch();
     l.maxSpeed = 50.0;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     in.moveTo(Vec2(400, 500), 0.1);  // 500 m in a launch time of 1 s: 500 m/s
-    const ReleaseResult r = in.release(w, Vec2(400, 500), 0.2, {}, l, 1.0);
+    const ReleaseResult r = release(in, w, Vec2(400, 500), 0.2, {}, l, 1.0);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     EXPECT_TRUE(r.capped);
     EXPECT_NEAR(r.velocity.norm(), 50.0, 1e-9);
@@ -245,9 +246,9 @@ TEST(Interaction, ALaunchNeverOverlapsAnotherParticle) {
     // A press on empty space just beside a particle: the new one would overlap it.
     addAt(w, {300, 300}, 20.0);
     Interaction in;
-    in.press(w, Vec2(330, 300), 0.0);
+    press(in, w, Vec2(330, 300), 0.0);
     // A still press longer than a click places a particle at rest.
-    const ReleaseResult r = in.release(w, Vec2(330, 300), 0.5, spawn, launch(), 1.0);
+    const ReleaseResult r = release(in, w, Vec2(330, 300), 0.5, spawn, launch(), 1.0);
     ASSERT_EQ(r.kind, ReleaseResult::Kind::Launched);
     EXPECT_NEAR(maxOverlapBruteForce(w), 0.0, 1e-12);
     // The nearest free spot: touching distance (45 m) plus at most one ring step (12.5 m).
@@ -262,8 +263,8 @@ TEST(Interaction, ALaunchWithNoRoomIsRefusedWithAMessage) {
     World w(def);
     addAt(w, {30, 30}, 25.0);
     Interaction in;
-    in.press(w, Vec2(5, 5), 0.0);  // outside the disc, but the box is full
-    const ReleaseResult r = in.release(w, Vec2(5, 5), 0.5, SpawnSettings{}, launch(), 1.0);
+    press(in, w, Vec2(5, 5), 0.0);  // outside the disc, but the box is full
+    const ReleaseResult r = release(in, w, Vec2(5, 5), 0.5, SpawnSettings{}, launch(), 1.0);
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Refused);
     EXPECT_FALSE(r.message.empty());
     EXPECT_EQ(w.size(), 1u);
@@ -282,9 +283,9 @@ TEST(Interaction, AClickOnAParticleSelectsItAndKeepsItsVelocity) {
     World w = boxWorld();
     const ParticleId id = addMoving(w);
     Interaction in;
-    in.press(w, Vec2(104, 100), 0.0);
+    press(in, w, Vec2(104, 100), 0.0);
     in.moveTo(Vec2(104.5, 100), 0.05);  // 0.5 m: under the 1 m threshold
-    const ReleaseResult r = in.release(w, Vec2(104.5, 100), 0.1, {}, launch(), 1.0);
+    const ReleaseResult r = release(in, w, Vec2(104.5, 100), 0.1, {}, launch(), 1.0);
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Clicked);
     EXPECT_EQ(r.id, id);
     EXPECT_EQ(w.get(id).velocity, Vec2(30, -40));
@@ -295,8 +296,8 @@ TEST(Interaction, AClickOnAParticleSelectsItAndKeepsItsVelocity) {
 TEST(Interaction, AClickOnEmptySpaceLaunchesNothing) {
     World w = boxWorld();
     Interaction in;
-    in.press(w, Vec2(200, 200), 0.0);
-    const ReleaseResult r = in.release(w, Vec2(200, 200), 0.1, {}, launch(), 1.0);
+    press(in, w, Vec2(200, 200), 0.0);
+    const ReleaseResult r = release(in, w, Vec2(200, 200), 0.1, {}, launch(), 1.0);
     EXPECT_EQ(r.kind, ReleaseResult::Kind::Clicked);
     EXPECT_TRUE(r.id.isNull());
     EXPECT_EQ(w.size(), 0u);
@@ -307,15 +308,15 @@ TEST(Interaction, APressThatMovedPastTheThresholdIsADragNotAClick) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     in.moveTo(Vec2(103, 100), 0.03);
     in.moveTo(Vec2(100, 100), 0.06);
-    EXPECT_EQ(in.release(w, Vec2(100, 100), 0.1, {}, launch(), 1.0).kind,
+    EXPECT_EQ(release(in, w, Vec2(100, 100), 0.1, {}, launch(), 1.0).kind,
               ReleaseResult::Kind::Flung);
     EXPECT_TRUE(w.contains(id));
-    in.press(w, Vec2(300, 300), 1.0);
+    press(in, w, Vec2(300, 300), 1.0);
     in.moveTo(Vec2(303, 300), 1.03);
-    EXPECT_EQ(in.release(w, Vec2(300, 300), 1.1, {}, launch(), 1.0).kind,
+    EXPECT_EQ(release(in, w, Vec2(300, 300), 1.1, {}, launch(), 1.0).kind,
               ReleaseResult::Kind::Launched);
 }
 
@@ -323,9 +324,10 @@ TEST(Interaction, AStillPressLongerThanAClickReleasesTheParticleAtRest) {
     World w = boxWorld();
     const ParticleId id = addMoving(w);
     Interaction in;
-    in.press(w, Vec2(100, 100), 0.0);
+    press(in, w, Vec2(100, 100), 0.0);
     const double t = Interaction::kClickSeconds + 0.01;
-    EXPECT_EQ(in.release(w, Vec2(100, 100), t, {}, launch(), 1.0).kind, ReleaseResult::Kind::Flung);
+    EXPECT_EQ(release(in, w, Vec2(100, 100), t, {}, launch(), 1.0).kind,
+              ReleaseResult::Kind::Flung);
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
@@ -334,16 +336,16 @@ TEST(Interaction, DeleteWhileHeldRemovesOnlyThatParticle) {
     const ParticleId a = addAt(w, {100, 100});
     const ParticleId b = addAt(w, {300, 100});
     Interaction in;
-    in.press(w, Vec2(300, 100), 0.0);
-    const auto gone = in.deleteHeld(w);
+    press(in, w, Vec2(300, 100), 0.0);
+    const auto gone = deleteHeld(in, w);
     ASSERT_TRUE(gone.has_value());
     EXPECT_EQ(gone->id, b);
     EXPECT_FALSE(w.contains(b));
     EXPECT_TRUE(w.contains(a));
     EXPECT_EQ(in.mode(), Interaction::Mode::Idle);
     // Nothing held: nothing deleted, and the release that follows does nothing.
-    EXPECT_FALSE(in.deleteHeld(w).has_value());
-    EXPECT_EQ(in.release(w, Vec2(300, 100), 0.1, {}, launch(), 1.0).kind,
+    EXPECT_FALSE(deleteHeld(in, w).has_value());
+    EXPECT_EQ(release(in, w, Vec2(300, 100), 0.1, {}, launch(), 1.0).kind,
               ReleaseResult::Kind::None);
     EXPECT_EQ(w.size(), 1u);
 }

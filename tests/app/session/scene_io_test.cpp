@@ -85,7 +85,7 @@ TEST_F(SceneIo, SavedWorldLoadsBackWithTheSameParticles) {
     w.add(d);
     w.setKinematic(held, true);  // a held particle is saved as a free one
     const fs::path path = dir_ / "snap.json";
-    const std::string message = saveWorld(w, "snap", "Two discs, \"quoted\", e = 1.", path);
+    const std::string message = saveWorld(w, {"snap", "Two discs, \"quoted\", e = 1."}, path);
     EXPECT_NE(message.find("2 particles"), std::string::npos) << message;
     const Scene s = loadScene(path);
     ASSERT_EQ(s.particles.size(), 2u);
@@ -97,7 +97,7 @@ TEST_F(SceneIo, SavedWorldLoadsBackWithTheSameParticles) {
 
 TEST_F(SceneIo, TheSaveMessageNamesTheFullPathWithoutDotSegments) {
     World w;
-    const std::string message = saveWorld(w, "snap", "", dir_ / "." / "snap.json");
+    const std::string message = saveWorld(w, {"snap"}, dir_ / "." / "snap.json");
     EXPECT_NE(message.find((dir_ / "snap.json").lexically_normal().string()), std::string::npos)
         << message;
     EXPECT_EQ(message.find("/./"), std::string::npos) << message;
@@ -108,11 +108,11 @@ TEST_F(SceneIo, AFailedSaveSaysWhyAndLeavesTheOldFileIntact) {
     std::ofstream(old) << "old contents";
     World w;
     // A regular file where a directory should be: the save cannot succeed.
-    EXPECT_THROW(saveWorld(w, "x", "", old / "inside.json"), SaveError);
+    EXPECT_THROW(saveWorld(w, {"x"}, old / "inside.json"), SaveError);
     EXPECT_EQ(readAll(old), "old contents");
     // A directory where the file should be.
     fs::create_directories(dir_ / "adir");
-    EXPECT_THROW(saveWorld(w, "x", "", dir_ / "adir"), SaveError);
+    EXPECT_THROW(saveWorld(w, {"x"}, dir_ / "adir"), SaveError);
     EXPECT_TRUE(fs::is_directory(dir_ / "adir"));
 }
 

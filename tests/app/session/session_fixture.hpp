@@ -66,7 +66,7 @@ class SessionFixture : public TempDirTest {
         return o;
     }
     [[nodiscard]] Session session() const {
-        return Session(makeWorld(defaultScene()), "default", options());
+        return Session(makeWorld(defaultScene()), SceneMeta{"default"}, options());
     }
 
     TestWindow window_;

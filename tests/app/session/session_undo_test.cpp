@@ -9,6 +9,7 @@
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "session/keys.hpp"
 #include "session/same_world.hpp"
 #include "session/session.hpp"
 #include "session/session_fixture.hpp"
@@ -29,7 +30,7 @@ SessionOptions options(bool paused = true) {
 }
 
 Session session(bool paused = true) {
-    return Session(makeWorld(defaultScene()), "default", options(paused));
+    return Session(makeWorld(defaultScene()), SceneMeta{"default"}, options(paused));
 }
 
 /// A press at `from`, ten moves to `to` over 0.1 s, a release there: a fling or a launch.
@@ -151,7 +152,7 @@ TEST(SessionUndo, AGrabDragAndDeleteIsOneEditAndALaunchKeepsItsOwn) {
     s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
     s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.0, 2.4)), 1.05});
     s.update(kFrame, 1.05);
-    s.apply(cmd::ChangeRestitution{-1});  // a key while holding: its own entry
+    s.apply(keys::restitution(s, -1));  // a key while holding: its own entry
     s.apply(cmd::DeleteHeld{});
     s.apply(cmd::PointerUp{c.worldToScreen(Vec2(5.0, 2.4)), 1.1});
     EXPECT_EQ(s.undoHistory().undoCount(), 2u);
@@ -192,11 +193,11 @@ TEST(SessionUndo, UndoesAPresetAndAReset) {
     const World original = s.world();
     s.apply(cmd::SpawnRandom{});
     s.apply(cmd::OpenPreset{0});
-    ASSERT_NE(s.sceneName(), "default");
+    ASSERT_NE(s.meta().name, "default");
     const World preset = s.world();
     EXPECT_EQ(s.undoLabel(), "open scene");
     s.apply(cmd::Undo{});
-    EXPECT_EQ(s.sceneName(), "default");
+    EXPECT_EQ(s.meta().name, "default");
     EXPECT_EQ(s.world().size(), original.size() + 1);
     EXPECT_TRUE(identical(s.loadedWorld(), original));
     EXPECT_TRUE(s.unsavedChanges());  // the spawn is unsaved again
@@ -215,12 +216,12 @@ TEST(SessionUndo, UndoesPhysicsSettingsAndCoalescesRepeatedPresses) {
     const double e = s.world().def().restitution;
     s.update(kFrame, 1.0);
     for (int k = 0; k < 4; ++k)
-        s.apply(cmd::ChangeRestitution{-1});  // within a second: one entry
+        s.apply(keys::restitution(s, -1));  // within a second: one entry
     ASSERT_LT(s.world().def().restitution, e - 0.15);
     EXPECT_EQ(s.undoHistory().undoCount(), 1u);
-    s.apply(cmd::ToggleGravity{});
-    s.apply(cmd::NextMode{});
-    EXPECT_EQ(s.undoLabel(), "switch mode");
+    s.apply(keys::gravity(s));
+    s.apply(keys::mode(s));
+    EXPECT_EQ(s.undoLabel(), "change mode");
     s.apply(cmd::Undo{});
     EXPECT_EQ(s.world().solver().mode, StepMode::Discrete);
     EXPECT_NE(s.world().def().gravity, Vec2::Zero());
@@ -229,13 +230,13 @@ TEST(SessionUndo, UndoesPhysicsSettingsAndCoalescesRepeatedPresses) {
     s.apply(cmd::Undo{});
     EXPECT_EQ(s.world().def().restitution, e);
     // Presses more than a second apart are separate entries.
-    s.apply(cmd::ChangeRestitution{-1});
+    s.apply(keys::restitution(s, -1));
     s.update(kFrame, 3.0);
-    s.apply(cmd::ChangeRestitution{-1});
+    s.apply(keys::restitution(s, -1));
     EXPECT_EQ(s.undoHistory().undoCount(), 2u);
     // The time speed and the new particles' size are undone too.
-    s.apply(cmd::ScaleTime{2.0});
-    s.apply(cmd::ScaleTime{2.0});
+    s.apply(keys::timeSpeed(s, 2.0));
+    s.apply(keys::timeSpeed(s, 2.0));
     s.apply(cmd::ChangeSpawnMass{+1});
     s.apply(cmd::Undo{});
     s.apply(cmd::Undo{});
@@ -246,7 +247,7 @@ TEST(SessionUndo, KeepsAHundredStepsAndUndoingAnEditWhileRunningTakesTheClockBac
     Session s = session(false);
     double now = run(s, 10, 0.0);
     for (int k = 0; k < 120; ++k) {
-        s.apply(cmd::ToggleGravity{});
+        s.apply(keys::gravity(s));
         now = run(s, 1, now);
     }
     const double t = s.world().time();
@@ -295,7 +296,7 @@ Session runningIn(StepMode mode) {
     solver.mode = mode;
     w.setSolver(solver);
     w.setThreads(1);
-    return Session(std::move(w), "default", options(false));
+    return Session(std::move(w), SceneMeta{"default"}, options(false));
 }
 
 TEST_P(SessionStepBack, ShowsEachPastFrameBitForBitAndComesBackToThePresent) {

@@ -80,7 +80,7 @@ class SessionBinsTest : public TempDirTest {
         o.saveTo = dir_ / "save.json";
         o.paused = true;
         o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
-        return Session(makeWorld(psb::defaultScene()), "default", o);
+        return Session(makeWorld(psb::defaultScene()), SceneMeta{"default"}, o);
     }
     void writeBoard() const {
         std::ofstream(dir_ / "board.json") << R"({"version": 3, "name": "board",
@@ -92,12 +92,12 @@ class SessionBinsTest : public TempDirTest {
 
 TEST_F(SessionBinsTest, AScenesBinsAreShownUnlessSwitchedOffAndKeptBySaveAndUndo) {
     Session s = session();
-    EXPECT_FALSE(s.sceneBins());
+    EXPECT_FALSE(s.meta().bins);
     EXPECT_FALSE(s.binsShown());  // the default scene has none
     writeBoard();
     s.apply(cmd::OpenFile{dir_ / "board.json"});
-    ASSERT_TRUE(s.sceneBins());
-    EXPECT_EQ(s.sceneBins()->edges, (std::vector<double>{0, 0.5, 1}));
+    ASSERT_TRUE(s.meta().bins);
+    EXPECT_EQ(s.meta().bins->edges, (std::vector<double>{0, 0.5, 1}));
     EXPECT_TRUE(s.binsShown());
     s.apply(cmd::SetShow{cmd::ShowOption::Bins, false});
     EXPECT_FALSE(s.binsShown());
@@ -105,24 +105,24 @@ TEST_F(SessionBinsTest, AScenesBinsAreShownUnlessSwitchedOffAndKeptBySaveAndUndo
     EXPECT_TRUE(s.binsShown());
 
     s.apply(cmd::SaveAs{dir_ / "saved.json"});
-    EXPECT_EQ(loadScene(dir_ / "saved.json").bins, s.sceneBins());
+    EXPECT_EQ(loadScene(dir_ / "saved.json").bins, s.meta().bins);
 
     s.apply(cmd::OpenFile{testAsset("scenes/01-original.json")});
-    EXPECT_FALSE(s.sceneBins());
+    EXPECT_FALSE(s.meta().bins);
     EXPECT_FALSE(s.binsShown());
     s.apply(cmd::Undo{});  // back to the board, bins and all
-    ASSERT_TRUE(s.sceneBins());
+    ASSERT_TRUE(s.meta().bins);
     EXPECT_TRUE(s.binsShown());
     s.apply(cmd::Reset{});
-    EXPECT_TRUE(s.sceneBins());
+    EXPECT_TRUE(s.meta().bins);
 }
 
 TEST_F(SessionBinsTest, TheGaltonPresetHasBinsForEachRowCount) {
     Session s = session();
     s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
-    ASSERT_TRUE(s.sceneBins());
-    ASSERT_TRUE(s.sceneBins()->binomial);
-    EXPECT_EQ(s.sceneBins()->size(), static_cast<std::size_t>(s.sceneBins()->binomial->trials) + 1);
+    ASSERT_TRUE(s.meta().bins);
+    ASSERT_TRUE(s.meta().bins->binomial);
+    EXPECT_EQ(s.meta().bins->size(), static_cast<std::size_t>(s.meta().bins->binomial->trials) + 1);
     EXPECT_TRUE(s.binsShown());
 }
 
@@ -140,7 +140,7 @@ TEST_F(SessionBinsTest, TheGaltonBoardsDropperCountsDownAndSaveAndResetKeepItsSt
     EXPECT_EQ(s.world().droppers()[0].balls, 990u);
     EXPECT_EQ(s.world().size(), 10u);
     // The legend counts the balls still in the dropper.
-    const BinHistogram h = binHistogram(*s.sceneBins(), s.world().particles(), 990);
+    const BinHistogram h = binHistogram(*s.meta().bins, s.world().particles(), 990);
     EXPECT_EQ(h.legend[0],
               "bars: balls in each bin (0 landed, 10 not yet in the bins, 990 still to drop)");
     EXPECT_EQ(dropperLabel(s.world().droppers()[0]), "dropper: 990 balls left");
