@@ -1,0 +1,77 @@
+// The document: a new scene replaces the world and the scene as loaded, the recent files, and
+// a save that names the file it wrote and clears the unsaved mark.
+
+#include <gtest/gtest.h>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "session/document.hpp"
+#include "temp_dir_test.hpp"
+
+namespace psb::app {
+namespace {
+
+class DocumentTest : public TempDirTest {
+  protected:
+    DocumentTest() : TempDirTest("psb-document") {}
+};
+
+TEST_F(DocumentTest, ANewSceneIsTheSceneAsLoadedAndNothingIsUnsaved) {
+    Document d(makeWorld(defaultScene()), SceneMeta{"first"}, dir_ / "save.json");
+    const std::uint64_t g = d.generation;
+    d.dirty = true;
+    World w;
+    d.replace(w, SceneMeta{"second", "described"});
+    EXPECT_NE(d.generation, g);
+    EXPECT_FALSE(d.dirty);
+    EXPECT_EQ(d.world.size(), 0u);
+    EXPECT_EQ(d.loaded->size(), 0u);
+    EXPECT_EQ(d.meta.name, "second");
+    EXPECT_EQ(d.meta.description, "described");
+}
+
+TEST_F(DocumentTest, SceneMetaTakesTheFilesStemWhenTheSceneHasNoName) {
+    Scene s = defaultScene();
+    s.name.clear();
+    s.trails = {0};
+    const SceneMeta m = sceneMeta(s, std::filesystem::path("lessons/cradle.json"));
+    EXPECT_EQ(m.name, "cradle");
+    EXPECT_EQ(m.trails, std::vector<std::size_t>{0});
+    EXPECT_EQ(sceneMeta(defaultScene(), std::nullopt).name, defaultScene().name);
+}
+
+TEST_F(DocumentTest, RecentFilesAreNewestFirstOnceEachAndAtMostFive) {
+    Document d(World{}, SceneMeta{"x"}, dir_ / "save.json");
+    for (int k = 0; k < 7; ++k) {
+        std::string name = std::to_string(k);
+        name.insert(0, 1, 'f');
+        name += ".json";
+        d.rememberFile(dir_ / name);
+    }
+    d.rememberFile(dir_ / "f4.json");
+    ASSERT_EQ(d.recent.size(), Document::kRecentFiles);
+    EXPECT_EQ(d.recent.front().filename(), "f4.json");
+    EXPECT_EQ(d.recent[1].filename(), "f6.json");
+    EXPECT_EQ(std::count(d.recent.begin(), d.recent.end(), d.recent.front()), 1);
+}
+
+TEST_F(DocumentTest, ASaveWritesTheMetaAndClearsTheUnsavedMark) {
+    Document d(makeWorld(defaultScene()), SceneMeta{"lesson", "Two discs."}, dir_ / "save.json");
+    d.dirty = true;
+    d.fileError = "Save failed: earlier";
+    const std::string said = d.save(dir_ / "lesson.json");
+    EXPECT_NE(said.find("lesson.json"), std::string::npos);
+    EXPECT_FALSE(d.dirty);
+    EXPECT_TRUE(d.fileError.empty());
+    ASSERT_TRUE(d.lastSave);
+    EXPECT_TRUE(d.lastSave->is_absolute());
+    EXPECT_EQ(d.recent.front(), *d.lastSave);
+    const Scene back = loadScene(dir_ / "lesson.json");
+    EXPECT_EQ(back.name, "lesson");
+    EXPECT_EQ(back.description, "Two discs.");
+    EXPECT_THROW(d.save(dir_ / "no-such-folder" / "x.json"), SaveError);
+}
+
+}  // namespace
+}  // namespace psb::app

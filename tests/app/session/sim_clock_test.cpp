@@ -1,0 +1,75 @@
+// The simulation clock: real time times the speed owed in whole frames, the catch-up budget,
+// single steps while paused, and the speed's limits.
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <thread>
+
+#include "session/sim_clock.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr double kDt = 0.01;
+
+int frames(SimClock& c, double realSeconds, double now = 0.0, double budgetMs = 1e9) {
+    int steps = 0;
+    c.run(realSeconds, now, kDt, budgetMs, std::chrono::steady_clock::now(), [&] { ++steps; });
+    return steps;
+}
+
+TEST(SimClock, StepsWholeFramesAndCarriesTheRestOver) {
+    SimClock c;
+    EXPECT_EQ(frames(c, 0.025), 2);  // 0.005 s left over
+    EXPECT_EQ(frames(c, 0.005), 1);  // the rest makes a frame
+    EXPECT_EQ(frames(c, 0.004), 0);
+    c.restart();  // forgets what was owed
+    EXPECT_EQ(frames(c, 0.007), 0);
+}
+
+TEST(SimClock, TheSpeedScalesTheTimeOwedWithinItsLimits) {
+    SimClock c;
+    ASSERT_TRUE(c.setScale(2.0));
+    EXPECT_EQ(frames(c, 0.05), 10);
+    EXPECT_TRUE(c.setScale(100.0));
+    EXPECT_EQ(c.scale(), SimClock::kMaxScale);
+    EXPECT_TRUE(c.setScale(0.0));
+    EXPECT_EQ(c.scale(), SimClock::kMinScale);
+    EXPECT_FALSE(c.setScale(std::numeric_limits<double>::quiet_NaN()));
+    EXPECT_EQ(c.scale(), SimClock::kMinScale);
+}
+
+TEST(SimClock, PausedItStepsOnlyARequestedSingleStep) {
+    SimClock c;
+    c.paused = true;
+    EXPECT_EQ(frames(c, 1.0), 0);
+    c.stepRequested = true;
+    EXPECT_EQ(frames(c, 0.0), 1);
+    EXPECT_FALSE(c.stepRequested);
+    EXPECT_EQ(frames(c, 1.0), 0);
+}
+
+TEST(SimClock, ABacklogBeyondTheBudgetIsDroppedAndTheReachedSpeedSaysSo) {
+    SimClock c;
+    int steps = 0;
+    // Each step takes 2 ms of wall-clock time; the budget is 5 ms: at most three steps a frame.
+    const auto slowStep = [&] {
+        ++steps;
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    };
+    c.run(1.0, 10.0, kDt, 5.0, std::chrono::steady_clock::now(), slowStep);
+    EXPECT_GE(steps, 1);
+    EXPECT_LE(steps, 4);
+    EXPECT_LT(c.reachedScale(), c.scale());  // behind: what was reached (smoothed), not asked
+    steps = 0;
+    c.run(0.0, 10.5, kDt, 5.0, std::chrono::steady_clock::now(), slowStep);
+    EXPECT_EQ(steps, 0) << "the backlog was dropped";
+    c.run(0.0, 12.0, kDt, 5.0, std::chrono::steady_clock::now(), slowStep);
+    EXPECT_EQ(c.reachedScale(), c.scale()) << "a second later it no longer counts as behind";
+}
+
+}  // namespace
+}  // namespace psb::app
