@@ -34,10 +34,10 @@ class AnalysisOverlays {
               const std::optional<BinHistogram>& bins = std::nullopt);
 
   private:
-    MomentumView momentum_;
-    PlotPanel plots_;
-    SpeedHistogramPanel speeds_;
-    BinHistogramPanel bins_;
+    MomentumDrawing momentum_;
+    PlotChart plots_;
+    SpeedChart speeds_;
+    BinChart bins_;
 };
 
 }  // namespace psb::app

@@ -25,9 +25,9 @@ BinChartLayout binChartLayout(const Font& font, float x, float width, float lege
     return c;
 }
 
-void BinHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
+void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
                              const PixelRect& box) {
-    const PanelFrame f = beginPanel(font, box, boxes_, text_);
+    const ChartFrame f = beginChart(font, box, boxes_, text_);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
     const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};

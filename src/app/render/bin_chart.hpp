@@ -34,7 +34,7 @@ inline constexpr SDL_Color kBinBarColor{230, 160, 60, 255};
 inline constexpr SDL_Color kBinomialDotColor{255, 255, 255, 255};
 inline constexpr SDL_Color kNormalCurveColor{90, 200, 255, 255};
 
-class BinHistogramPanel {
+class BinChart {
   public:
     /// Draws `h` in `box` (pixels, see PanelLayout).
     void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,

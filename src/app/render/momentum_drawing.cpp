@@ -33,7 +33,7 @@ void appendArrow(GeometryBatch& batch, const Vec2& a, const Vec2& b, double head
 
 }  // namespace
 
-void MomentumView::draw(SDL_Renderer* renderer, const Font& font, const World& world,
+void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World& world,
                         const ObservablesSample& now, const Camera& camera,
                         const TimeSeries& series, double arrowSeconds, const PixelRect& legend) {
     const ParticleArrays& p = world.particles();

@@ -23,7 +23,7 @@ inline constexpr SDL_Color kMomentumArrowColor{255, 150, 30, 255};  ///< per par
 inline constexpr SDL_Color kTotalMomentumColor{255, 255, 0, 255};   ///< Σ m v, yellow
 inline constexpr SDL_Color kCentreOfMassColor{0, 230, 255, 255};    ///< marker and path, cyan
 
-class MomentumView {
+class MomentumDrawing {
   public:
     /// Draws the per-particle arrows, the centre of mass path from `series` (its samples'
     /// centreOfMass, oldest first), the marker, the total arrow, and the legend in `legend`

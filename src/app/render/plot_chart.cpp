@@ -9,11 +9,11 @@
 
 namespace psb::app {
 
-PanelFrame beginPanel(const Font& font, const PixelRect& box, GeometryBatch& boxes,
+ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& boxes,
                       GeometryBatch& text) {
     boxes.clear();
     text.clear();
-    const PanelFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
+    const ChartFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
                        static_cast<float>(box.w), static_cast<float>(box.h),
                        static_cast<float>(font.lineHeight())};
     boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, SDL_Color{0, 0, 0, 190});
@@ -35,7 +35,7 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
     }
 }
 
-void PlotPanel::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
+void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
                      const PixelRect& box, int rows, int rowHeight, double totalMass) {
     boxes_.clear();
     text_.clear();

@@ -25,12 +25,12 @@ namespace psb::app {
 class Font;
 
 /// A panel's box in pixels (as floats) and the font's line height.
-struct PanelFrame {
+struct ChartFrame {
     float x = 0, y = 0, w = 0, h = 0, lineHeight = 0;
 };
 /// Starts a panel in `box`: empties both batches and puts the panel's translucent background in
 /// `boxes`.
-[[nodiscard]] PanelFrame beginPanel(const Font& font, const PixelRect& box, GeometryBatch& boxes,
+[[nodiscard]] ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& boxes,
                                     GeometryBatch& text);
 
 /// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most 4) left of x = `left`:
@@ -45,7 +45,7 @@ inline constexpr SDL_Color kMomentumXPlotColor{90, 200, 255, 255};
 inline constexpr SDL_Color kMomentumYPlotColor{120, 255, 120, 255};
 inline constexpr SDL_Color kRatePlotColor{255, 200, 60, 255};
 
-class PlotPanel {
+class PlotChart {
   public:
     /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
     /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the

@@ -10,9 +10,9 @@
 
 namespace psb::app {
 
-void SpeedHistogramPanel::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
+void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
                                const PixelRect& box) {
-    const PanelFrame f = beginPanel(font, box, boxes_, text_);
+    const ChartFrame f = beginChart(font, box, boxes_, text_);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
     const SpeedHistogram h = speedHistogram(p, kBins);

@@ -21,7 +21,7 @@ class Font;
 inline constexpr SDL_Color kHistogramBarColor{70, 130, 230, 255};
 inline constexpr SDL_Color kRayleighCurveColor{255, 255, 255, 255};
 
-class SpeedHistogramPanel {
+class SpeedChart {
   public:
     static constexpr std::size_t kBins = 32;
 
