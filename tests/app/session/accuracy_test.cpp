@@ -9,31 +9,17 @@
 #include <particle_sandbox/error.hpp>
 
 #include "session/accuracy.hpp"
+#include "session/gas_world.hpp"
 #include "session/hand_steps.hpp"
 #include "session/interaction.hpp"
 
 namespace psb::app {
 namespace {
 
-World gas(Vec2 gravity = Vec2::Zero()) {
-    WorldDef def;  // 700 m × 700 m, walls on
-    def.gravity = gravity;
-    World w(def);
-    for (int k = 0; k < 40; ++k) {
-        ParticleDef d;
-        d.position = {40.0 + 60.0 * (k % 10), 60.0 + 80.0 * (k / 10)};
-        d.velocity = {std::cos(k) * 80.0, std::sin(k) * 80.0};
-        d.radius = 8.0;
-        d.mass = 1.0 + k % 3;
-        w.add(d);
-    }
-    return w;
-}
-
 TEST(MonitoredEnergy, IsKineticWithoutGravityAndMechanicalWithIt) {
     // Under gravity kinetic energy alone changes as particles fall, so the HUD's drift would
     // claim energy made or lost: it follows kinetic + potential instead.
-    World w = gas();
+    World w = gasWorld();
     EXPECT_EQ(monitoredEnergy(w), kineticEnergy(w));
     w.setGravity({0.0, 200.0});  // strong, so that 30 steps change the kinetic energy a lot
     EXPECT_EQ(monitoredEnergy(w), mechanicalEnergy(w));
@@ -64,7 +50,7 @@ TEST(AccuracyMonitor, DriftIsRelativeToTheLastReference) {
 TEST(AccuracyMonitor, DriftStartsAtZeroAfterAnActionInAnEnergyChangingWorld) {
     // With gravity the kinetic energy grows as particles fall; a user action makes that
     // growth start again from zero.
-    World w = gas(Vec2(0.0, 50.0));
+    World w = gasWorld(Vec2(0.0, 50.0));
     AccuracyMonitor m;
     m.resetReference(kineticEnergy(w));
     for (int k = 0; k < 20; ++k)
@@ -102,7 +88,7 @@ TEST(AccuracyMonitor, OverlapCoversOnlyTheLastFrameThatStepped) {
 class EveryMode : public ::testing::TestWithParam<StepMode> {};
 
 TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
-    World w = gas();
+    World w = gasWorld();
     SolverSettings s = w.solver();
     s.mode = GetParam();
     s.substeps = 4;

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "session/gas_world.hpp"
 #include "session/keys.hpp"
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
@@ -21,20 +22,6 @@ Session sessionOf(World world) {
 std::string lastNotice(Session& s) {
     const auto n = s.takeNotices();
     return n.empty() ? std::string() : n.back().text;
-}
-
-World gas(Vec2 gravity = Vec2::Zero()) {
-    WorldDef def;  // 700 m × 700 m, walls on
-    def.gravity = gravity;
-    World w(def);
-    for (int k = 0; k < 40; ++k) {
-        ParticleDef d;
-        d.position = {40.0 + 60.0 * (k % 10), 60.0 + 80.0 * (k / 10)};
-        d.velocity = {10.0 * (k % 3), -10.0 * (k % 2)};
-        d.radius = 8.0;
-        w.add(d);
-    }
-    return w;
 }
 
 TEST(Restitution, StepsByFiveHundredthsWithinZeroAndOne) {
@@ -119,7 +106,7 @@ TEST(ModeKey, CyclesDiscreteSubstepExact) {
 }
 
 TEST(ModeKey, WalksTheWholeCycleInAWorldWithoutGravity) {
-    Session s = sessionOf(gas());
+    Session s = sessionOf(gasWorld());
     (void)s.takeNotices();
     s.apply(keys::mode(s));
     EXPECT_EQ(s.world().solver().mode, StepMode::Substep);
@@ -135,7 +122,7 @@ TEST(ModeKey, WalksTheWholeCycleInAWorldWithoutGravity) {
 }
 
 TEST(ModeKey, KeepsTheScenesOwnSubstepCount) {
-    World w = gas();
+    World w = gasWorld();
     SolverSettings solver = w.solver();
     solver.substeps = 7;
     w.setSolver(solver);
@@ -149,7 +136,7 @@ TEST(ModeKey, KeepsTheScenesOwnSubstepCount) {
 }
 
 TEST(ModeKey, ExactWithGravityAndObstaclesIsReachedAndSteps) {
-    World w = gas(Vec2(0.0, 9.81));
+    World w = gasWorld(Vec2(0.0, 9.81));
     w.addObstacle(Obstacle::peg({0.5 * w.def().width, 0.5 * w.def().height}, 1.0));
     Session s = sessionOf(std::move(w));
     s.apply(keys::mode(s));  // discrete -> substep
