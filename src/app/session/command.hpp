@@ -69,7 +69,7 @@ struct PointerUp {
     Vec2 screen;
     double time = 0.0;
 };
-/// Backspace/Delete: the held particle, else the selected obstacle.
+/// Backspace/Delete: the held particle, else the selected particle, else the selected obstacle.
 struct DeleteHeld {
     static constexpr Traits traits = kEdits;
 };

@@ -118,6 +118,9 @@ void Session::handle(const cmd::DeleteHeld&) {
     const Interaction& hand = tools_.hand;
     if (hand.mode() == Interaction::Mode::Holding && doc_.world.contains(hand.held())) {
         handle(cmd::DeleteParticle{hand.held()});
+    } else if (const auto id = tools_.selection.id();
+               id && hand.mode() == Interaction::Mode::Idle && doc_.world.contains(*id)) {
+        handle(cmd::DeleteParticle{*id});
     } else if (tools_.selectedObstacle) {
         removeObstacle(*tools_.selectedObstacle);
     }

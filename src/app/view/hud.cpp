@@ -98,7 +98,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Left click on empty space", "clear the selection"},
         {"Left click on a wall or peg", "select it (Delete removes it; Select tool: drag)"},
         {"Enter (selected)", "edit it here (Tab: next field, Esc: cancel)"},
-        {"Backspace / Delete", "delete the held particle, or the selected wall or peg"},
+        {"Backspace / Delete", "delete the held or selected particle, or the selected wall or peg"},
         {"W / B", "draw walls / place pegs; again: back to Fling (Tools)"},
         {"M", "spawn a random particle"},
         {"[ / ]", "smaller / bigger new particles (Tools)"},

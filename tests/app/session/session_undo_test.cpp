@@ -144,6 +144,25 @@ TEST(SessionUndo, UndoesADeletionOfTheHeldParticle) {
     EXPECT_EQ(s.world().size(), before.size());
 }
 
+TEST(SessionUndo, DeleteRemovesTheSelectedParticleUndoably) {
+    // A teacher clicked a particle and pressed Delete: nothing happened, silently.
+    Session s = session();
+    const World before = s.world();
+    const ParticleId yellow = *s.world().pick(Vec2(5.2, 1.6));
+    const Vec2 at = s.camera().worldToScreen(Vec2(5.2, 1.6));
+    s.apply(cmd::PointerDown{at, 1.0});
+    s.apply(cmd::PointerUp{at, 1.05});  // a click: selects it
+    ASSERT_EQ(s.selection().id(), yellow);
+    s.apply(cmd::DeleteHeld{});
+    EXPECT_FALSE(s.world().contains(yellow));
+    EXPECT_EQ(s.world().size(), before.size() - 1);
+    EXPECT_FALSE(s.selection().id().has_value());
+    EXPECT_EQ(s.undoLabel(), "delete particle");
+    s.apply(cmd::Undo{});
+    EXPECT_TRUE(identical(s.world(), before));
+    EXPECT_EQ(s.selection().id(), yellow);  // selected again, as before the delete
+}
+
 TEST(SessionUndo, AGrabDragAndDeleteIsOneEditAndALaunchKeepsItsOwn) {
     Session s = session();
     const World before = s.world();
