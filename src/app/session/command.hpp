@@ -19,6 +19,7 @@
 #include <particle_sandbox/particle_id.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 
+#include "session/box_area.hpp"
 #include "session/edit_prompt.hpp"
 
 namespace psb::app::cmd {
@@ -48,10 +49,13 @@ struct Zoom {
     double factor = 1.0;
 };  ///< about a screen point
 struct Fit {};
+/// The drawable area, pixels, and where the box may go in it (the app fills `layout` in from the
+/// view's layout of the window).
 struct Resize {
     int width = 0;
     int height = 0;
-};  ///< the drawable area, pixels
+    WindowLayout layout{};
+};
 struct ToggleArrows {};
 struct ToggleLabels {};
 struct ToggleHelp {};

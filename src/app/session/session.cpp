@@ -57,6 +57,7 @@ Session::Session(World world, std::string sceneName, SessionOptions options)
     view_.arrows = options_.arrows;
     showControls_ = options_.controls;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
+    layout_ = options_.layout;
     sceneDescription_ = options_.sceneDescription;
     sceneBins_ = options_.sceneBins;
     for (const auto& file : options_.presets)
@@ -337,7 +338,7 @@ void Session::apply(const Command& command) {
                 afterCameraMove();
                 fitted_ = true;
             } else if constexpr (std::is_same_v<T, cmd::Resize>) {
-                resize(c.width, c.height);
+                resize(c);
             } else if constexpr (std::is_same_v<T, cmd::ToggleArrows>) {
                 view_.arrows = !view_.arrows;
                 say(view_.arrows ? "Arrows on" : "Arrows off");

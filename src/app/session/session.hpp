@@ -36,6 +36,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "session/accuracy.hpp"
+#include "session/box_area.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
 #include "session/edit_prompt.hpp"
@@ -45,7 +46,6 @@
 #include "session/selection.hpp"
 #include "session/timeline.hpp"
 #include "session/undo_history.hpp"
-#include "session/view_insets.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -78,7 +78,9 @@ struct SessionOptions {
     bool controls = true;
     int viewportWidth = 800;  ///< pixels
     int viewportHeight = 800;
-    ViewInsets insets;
+    /// Where the box may go in that window, as the view lays it out (a Resize brings the
+    /// layout of each new size).
+    WindowLayout layout;
     TimelineSettings timeline;
     UndoSettings undo;
 };
@@ -150,13 +152,6 @@ class Session {
     [[nodiscard]] bool controlsShown() const { return showControls_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const;
-    /// Whether those panels are folded away: the window leaves the column no room beside the
-    /// box (sideColumnFits); the box keeps the width.
-    [[nodiscard]] bool sideColumnFolded() const;
-    /// Pixels at the left of the window the control panel takes now (open or folded).
-    [[nodiscard]] double controlsInset() const {
-        return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;
-    }
     /// What the left mouse button does.
     [[nodiscard]] cmd::Tool tool() const { return tool_; }
     /// The sizes of the obstacles the Peg and Wall tools make (at the scene's scale when it
@@ -283,7 +278,7 @@ class Session {
     void back();
     void quit();
     void fit();
-    void resize(int width, int height);
+    void resize(const cmd::Resize& c);
     void togglePanel(bool& flag, const char* on, const char* off);
     // The control panel's value commands (session_values.cpp).
     void setRestitution(const cmd::SetRestitution& c);
@@ -341,6 +336,8 @@ class Session {
 
     Camera camera_;
     bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
+    /// Where the box may go: the window's layout the app sent last.
+    WindowLayout layout_;
     ViewOptions view_;
     bool showHelp_ = false;
     std::size_t helpPage_ = 0;

@@ -94,10 +94,7 @@ void Session::seek(double seconds, bool oneFrameBack) {
 }
 
 void Session::toggleHelp() {
-    const int pages =
-        options_.insets.helpPagesFor
-            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight())
-            : 1;
+    const int pages = layout_.helpPages;
     if (!showHelp_) {
         showHelp_ = true;
         helpPage_ = 0;
