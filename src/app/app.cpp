@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <stdexcept>
+#include <variant>
 
 #include <particle_sandbox/atomic_file.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -15,9 +16,8 @@
 #include "session/benchmark_scene.hpp"
 #include "session/scene_io.hpp"
 #include "session/stopwatch.hpp"
+#include "view/box_area.hpp"
 #include "view/hud.hpp"
-#include "view/overlays.hpp"
-#include "view/screen_layout.hpp"
 
 namespace psb::app {
 
@@ -74,45 +74,13 @@ App::App(const AppOptions& options) : options_(options) {
     const SDL_Point out = sdl_->outputSize();
     s.viewportWidth = out.x;
     s.viewportHeight = out.y;
-    // Keep the HUD's lines clear of the box above it, the messages below it, and (while they
-    // are on) the panels beside it.
-    const int lh = sdl_->hudFont().lineHeight();
-    // One spare line for the HUD's notes about labels left out.
-    s.insets.top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
-    // In a narrow window the HUD's lines wrap (frame_view.cpp): the band grows with them,
-    // measured on readings as wide as they get.
-    s.insets.helpPagesFor = [font = &sdl_->hudFont()](int width, int height) {
-        const PixelRect room = helpRoom(width, height);
-        return static_cast<int>(helpPages(*font, helpLines(), {room.w, room.h}).size());
-    };
-    s.insets.topFor = [font = &sdl_->hudFont(), lh](int room, bool folded) {
-        HudData wide;
-        wide.simTime = 123.45;
-        wide.particles = 10000;
-        wide.kineticEnergy = 123.45;
-        wide.momentum = Vec2(-0.123, -0.123);
-        wide.spawnMass = 0.00123;
-        wide.spawnRadius = 0.00123;
-        wide.arrowSeconds = 0.0123;
-        std::size_t lines = wrapHudLines(*font, hudLines(wide), room - 8).size();
-        if (folded) {  // the longer of the two notes
-            lines += std::max(wrapLines(*font, {foldedChartsNote(true)}, room - 8).size(),
-                              wrapLines(*font, {foldedChartsNote(false)}, room - 8).size());
-        }
-        return static_cast<double>(lines + 1) * lh + 10.0;
-    };
-    s.insets.bottom = static_cast<double>(kMessageLines) * lh + 4.0 + kPanelMargin;
-    s.insets.panelColumn = kPanelMaxWidth + kPanelMargin;
-    // The inspector with long numbers in its widest line, and the margin.
-    s.insets.inspectorColumn =
-        textBoxSize(sdl_->hudFont(), {"momentum        (-123.45, -123.45) kg m/s"}).x +
-        2.0 * kPanelMargin;
-    const double ratio = sdl_->pixelRatio();
-    s.insets.controls = kControlsWidth * ratio;
-    s.insets.controlsFolded = kControlsFoldedWidth * ratio;
+    // Where the box goes: clear of the HUD's lines above it, the messages below it, the
+    // control panel and (while they are on) the panels beside it (view/box_area.hpp).
+    controls_ = controlsWidth(sdl_->pixelRatio());
+    s.layout = windowLayout(sdl_->hudFont(), out.x, out.y, controls_);
     // A window less than twice the panel's width would leave the box less room than the
     // panel: it opens folded (C or >> opens it).
-    s.controls = out.x >= 2.0 * s.insets.controls;
+    s.controls = out.x >= 2.0 * controls_.open;
     session_.emplace(std::move(world), std::move(meta), std::move(s));
     for (const char c : options_.benchOverlays) {
         if (c == 'V') session_->apply(cmd::ToggleMomentum{});
@@ -182,8 +150,12 @@ void App::apply(const Command& c) {
 void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
     if (gui_ && gui_->handleEvent(e)) return;
-    for (const Command& c :
+    for (Command& c :
          input_.translate(e, keyState(*session_), sdl_->pixelRatio(), sdl_->outputSize())) {
+        // A new window size comes with where the box may go in it.
+        if (auto* r = std::get_if<cmd::Resize>(&c)) {
+            r->layout = windowLayout(sdl_->hudFont(), r->width, r->height, controls_);
+        }
         apply(c);
     }
 }
@@ -275,7 +247,7 @@ void App::render() {
             apply(c);
         }
     }
-    lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont());
+    lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont(), controls_);
     const DrawStats drawn = draw_->draw(lastFrame_);
     if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
     updateTextInput();

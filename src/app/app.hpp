@@ -135,6 +135,8 @@ class App {
     std::vector<PanelItem> loggedItems_;  ///< what --log-controls last wrote
     std::vector<PanelItem> lastItems_;    ///< the panel's controls in the frame before
     bool panelSettling_ = true;           ///< they moved in the last frame
+    /// The control panel's width, pixels: the view keeps it out of the box's area.
+    ControlsWidth controls_;
     std::optional<Session> session_;
     std::unique_ptr<DrawLayer> draw_;
     Input input_;

@@ -1,6 +1,7 @@
-// The box the session fits against the panels the view lays out and the control panel's
-// width: at every window size no chart covers the box, and the session and the layout agree
-// on when the side column folds away. Across three layers, so it is tested with the whole app.
+// The box the session fits, into the areas the view gives it (view/box_area.hpp), against the
+// panels the view lays out and the control panel's width: at every window size no chart covers
+// the box, and the box's area and the layout agree on when the side column folds away. Across
+// three layers, so it is tested with the whole app.
 
 #include <gtest/gtest.h>
 
@@ -16,6 +17,8 @@
 #include "session/session.hpp"
 #include "session/session_fixture.hpp"
 #include "session/test_assets.hpp"
+#include "view/box_area.hpp"
+#include "view/fixed_measure.hpp"
 #include "view/screen_layout.hpp"
 
 namespace psb::app {
@@ -24,12 +27,20 @@ namespace {
 class BoxAndPanels : public SessionFixture {
   protected:
     BoxAndPanels() : SessionFixture("psb-box-panels", TestWindow{}) {}
+
+    /// The window `width` × `height` as the app lays it out for the session, beside `controls`.
+    [[nodiscard]] static cmd::Resize resize(int width, int height,
+                                            const ControlsWidth& controls = {}) {
+        return {width, height, windowLayout(test::FixedMeasure{}, width, height, controls)};
+    }
 };
 
 TEST_F(BoxAndPanels, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
     // The layout the app draws (HUD and messages sized as the 14 px font makes them) against
     // the box the fitted camera shows, with the plots, the histogram and the profile on.
-    Session s = session();
+    SessionOptions o = options();
+    o.layout = resize(o.viewportWidth, o.viewportHeight).layout;
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
     s.apply(cmd::TogglePlots{});
     s.apply(cmd::ToggleSpeeds{});
     s.apply(cmd::ToggleProfile{});
@@ -41,7 +52,7 @@ TEST_F(BoxAndPanels, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
                                {1600, 900},
                                {1920, 1080},
                                {800, 1200}}) {
-        s.apply(cmd::Resize{w, h});
+        s.apply(resize(w, h));
         const auto b = s.camera().boxOnScreen(7.0, 7.0);
         const PixelRect box{static_cast<int>(b.topLeft.x()), static_cast<int>(b.topLeft.y()),
                             static_cast<int>(b.size.x()), static_cast<int>(b.size.y())};
@@ -69,8 +80,8 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
     // fitted camera shows, from 500 px wide up; where the column does not fit beside the box the
     // charts fold away and the session says so.
     SessionOptions o = options();
-    o.insets.controls = kControlsWidth;
-    o.insets.controlsFolded = kControlsFoldedWidth;
+    const ControlsWidth panel = controlsWidth(1.0);
+    o.layout = resize(o.viewportWidth, o.viewportHeight, panel).layout;
     o.presets = testPresets();
     Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
     const auto& presets = s.presets();
@@ -86,7 +97,7 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
         if (s.controlsShown() != controls) s.apply(cmd::ToggleControls{});
         for (int w = 500; w <= 1400; w += 50) {
             for (const int h : {500, 600, 800}) {
-                s.apply(cmd::Resize{w, h});
+                s.apply(resize(w, h, panel));
                 const auto b =
                     s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
                 const PixelRect box{static_cast<int>(b.topLeft.x()),
@@ -95,21 +106,21 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
                 LayoutRequest req;
                 req.width = w;
                 req.height = h;
-                req.left = static_cast<int>(s.controlsInset());
+                req.left = controlsInset(s, panel);
                 req.hud = {300, 129};
                 req.messages = {300, 40};
                 req.plots = req.speeds = req.bins = true;
                 const PanelLayout l = layoutPanels(req);
-                EXPECT_EQ(l.columnFolded, s.sideColumnFolded()) << w << "x" << h;
-                for (const PixelRect& panel : {l.plots, l.speeds, l.bins}) {
-                    EXPECT_FALSE(overlaps(panel, box))
-                        << w << "x" << h << (controls ? ", controls open" : "") << ": panel at "
-                        << panel.x << "," << panel.y << " " << panel.w << "x" << panel.h << ", box "
+                EXPECT_EQ(l.columnFolded, sideColumnFolded(s, panel)) << w << "x" << h;
+                for (const PixelRect& chart : {l.plots, l.speeds, l.bins}) {
+                    EXPECT_FALSE(overlaps(chart, box))
+                        << w << "x" << h << (controls ? ", controls open" : "") << ": chart at "
+                        << chart.x << "," << chart.y << " " << chart.w << "x" << chart.h << ", box "
                         << box.x << "," << box.y << " " << box.w << "x" << box.h;
                 }
                 (l.columnFolded ? folded : shown) += 1;
                 if (w == 600 && h == 600 && controls) {
-                    EXPECT_TRUE(s.sideColumnFolded()) << "the case a new user met";
+                    EXPECT_TRUE(sideColumnFolded(s, panel)) << "the case a new user met";
                 }
             }
         }
@@ -122,23 +133,20 @@ TEST_F(BoxAndPanels, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
     // The HUD says the charts are folded; the fitted box starts below that note too.
     SessionOptions o = options();
     o.viewportWidth = o.viewportHeight = 600;
-    o.insets.controls = kControlsWidth;
-    o.insets.controlsFolded = kControlsFoldedWidth;
-    std::vector<bool> asked;
-    o.insets.topFor = [&asked](int, bool folded) {
-        asked.push_back(folded);
-        return folded ? 195.0 : 60.0;
-    };
+    const ControlsWidth controls = controlsWidth(1.0);
+    o.layout = resize(600, 600, controls).layout;
+    const double note = o.layout.controlsOpenColumn.top;
+    EXPECT_GT(note, o.layout.controlsOpen.top) << "the note's lines";
     Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
-    ASSERT_FALSE(asked.empty());
-    EXPECT_FALSE(asked.back());
+    const double before = s.camera().boxOnScreen(7.0, 7.0).topLeft.y();
     s.apply(cmd::TogglePlots{});
-    ASSERT_TRUE(s.sideColumnFolded());
-    EXPECT_TRUE(asked.back());
-    EXPECT_GE(s.camera().boxOnScreen(7.0, 7.0).topLeft.y(), 195.0 - 1e-9);
+    ASSERT_TRUE(sideColumnFolded(s, controls));
+    const double after = s.camera().boxOnScreen(7.0, 7.0).topLeft.y();
+    EXPECT_GE(after, note - 1e-9);
+    EXPECT_GT(after, before) << "moved down for the note";
     s.apply(cmd::ToggleControls{});  // folded to its strip: the column fits, no note
-    EXPECT_FALSE(s.sideColumnFolded());
-    EXPECT_FALSE(asked.back());
+    EXPECT_FALSE(sideColumnFolded(s, controls));
+    EXPECT_LT(o.layout.controlsFoldedColumn.top, note);
 }
 
 }  // namespace

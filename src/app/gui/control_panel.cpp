@@ -73,7 +73,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             time(s);
             scene(s);
             physics(s);
-            show(s);
+            show(s, pixelRatio);
             tools(s, pixelRatio);
             readouts(s);
             selected(s);
@@ -224,7 +224,7 @@ void ControlPanel::scene(const Session& s) {
     }
 }
 
-void ControlPanel::show(const Session& s) {
+void ControlPanel::show(const Session& s, float pixelRatio) {
     const bool open = ImGui::CollapsingHeader("Show", ImGuiTreeNodeFlags_DefaultOpen);
     mark("section Show");
     if (!open) return;
@@ -254,7 +254,7 @@ void ControlPanel::show(const Session& s) {
             "normal curve the board should give, and whether the difference is more than "
             "chance");
     }
-    if (s.sideColumnFolded()) {
+    if (sideColumnFolded(s, controlsWidth(pixelRatio))) {
         widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
                                 "Folded away: the window leaves the charts no room beside the "
                                 "box (fold this panel with C, or widen the window)");

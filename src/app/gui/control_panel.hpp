@@ -1,6 +1,6 @@
 #pragma once
 // The on-screen control panel (Dear ImGui): a column at the left of the window, beside the box
-// (the session's fit keeps that column free), with collapsible sections
+// (view/box_area.hpp keeps it out of the box's area), with collapsible sections
 //
 //   Time       play / pause, one step, time speed, reset
 //   Scene      presets with a line on each, open and save with a path field, recent files
@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "session/command.hpp"
+#include "view/box_area.hpp"
 #include "view/frame_view.hpp"
 
 namespace psb::app {
@@ -39,6 +40,13 @@ inline constexpr float kControlsWidth = 310.f;
 /// points with the frame padding) inside kControlsFoldedPadding either side.
 inline constexpr float kControlsFoldedWidth = 44.f;
 inline constexpr float kControlsFoldedPadding = 6.f;
+
+/// The panel's width open and folded, pixels, at `pixelRatio` pixels per point: what the view
+/// keeps free for it at the window's left.
+[[nodiscard]] inline ControlsWidth controlsWidth(double pixelRatio) {
+    return {kControlsWidth * pixelRatio, kControlsFoldedWidth * pixelRatio};
+}
+
 /// Scenes with more particles than this get no all-particles table.
 inline constexpr std::size_t kTableMaxParticles = 60;
 
@@ -68,7 +76,7 @@ class ControlPanel {
     void time(const Session& s);
     void scene(const Session& s);
     void physics(const Session& s);
-    void show(const Session& s);
+    void show(const Session& s, float pixelRatio);
     void tools(const Session& s, float pixelRatio);
     /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).
     void obstacleTools(const Session& s);

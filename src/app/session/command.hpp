@@ -25,6 +25,7 @@
 #include <particle_sandbox/particle_id.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 
+#include "session/box_area.hpp"
 #include "session/edit_prompt.hpp"
 
 namespace psb::app::cmd {
@@ -87,11 +88,14 @@ struct Zoom {
 struct Fit {
     static constexpr Traits traits = kLooks;
 };
+/// The drawable area, pixels, and where the box may go in it (the app fills `layout` in from the
+/// view's layout of the window).
 struct Resize {
     static constexpr Traits traits = kPassive;
     int width = 0;
     int height = 0;
-};  ///< the drawable area, pixels
+    WindowLayout layout{};
+};
 struct ToggleArrows {
     static constexpr Traits traits = kLooks;
 };

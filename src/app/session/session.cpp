@@ -30,6 +30,7 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
     view_.arrows = options_.arrows;
     showControls_ = options_.controls;
     camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
+    layout_ = options_.layout;
     for (const auto& file : options_.presets)
         presets_.push_back(describeScene(file));
     setWorld(std::move(world), std::move(meta));

@@ -46,6 +46,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "session/accuracy.hpp"
+#include "session/box_area.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
 #include "session/document.hpp"
@@ -54,7 +55,6 @@
 #include "session/scene_io.hpp"
 #include "session/sim_clock.hpp"
 #include "session/tools.hpp"
-#include "session/view_insets.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -84,7 +84,9 @@ struct SessionOptions {
     bool controls = true;
     int viewportWidth = 800;  ///< pixels
     int viewportHeight = 800;
-    ViewInsets insets;
+    /// Where the box may go in that window, as the view lays it out (a Resize brings the
+    /// layout of each new size).
+    WindowLayout layout;
     TimelineSettings timeline;
     UndoSettings undo;
 };
@@ -173,13 +175,6 @@ class Session {
     [[nodiscard]] bool controlsShown() const { return showControls_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const;
-    /// Whether those panels are folded away: the window leaves the column no room beside the
-    /// box (sideColumnFits); the box keeps the width.
-    [[nodiscard]] bool sideColumnFolded() const;
-    /// Pixels at the left of the window the control panel takes now (open or folded).
-    [[nodiscard]] double controlsInset() const {
-        return showControls_ ? options_.insets.controls : options_.insets.controlsFolded;
-    }
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
     [[nodiscard]] std::string overlayFlags() const;
 
@@ -384,6 +379,8 @@ class Session {
 
     Camera camera_;
     bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
+    /// Where the box may go: the window's layout the app sent last.
+    WindowLayout layout_;
     ViewOptions view_;
     bool showHelp_ = false;
     std::size_t helpPage_ = 0;

@@ -1,5 +1,5 @@
-// The session's view: the camera (pan, zoom, the box fitted to the window beside the panels),
-// the side column's folding, and what is shown.
+// The session's view: the camera (pan, zoom, the box fitted into the area the view lays out
+// for it: box_area.hpp) and what is shown, with the toggles that change which area that is.
 
 #include <algorithm>
 #include <cstdio>
@@ -16,58 +16,40 @@ bool Session::columnAsked() const {
     return view_.plots || view_.speeds || showProfile_ || binsShown();
 }
 
-bool Session::sideColumnFolded() const {
-    const ViewInsets& in = options_.insets;
-    const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
-    return columnAsked() &&
-           !sideColumnFits(camera_.viewportWidth(), static_cast<int>(controlsInset()), scale);
-}
-
 void Session::fit() {
-    const ViewInsets& in = options_.insets;
-    // The momentum legend is three short lines: it does not cost the box a column.
-    const bool column = columnAsked() && !sideColumnFolded();
+    // The area the view left the box beside the panels as they are now.
+    const BoxArea& a = layout_.area(showControls_, columnAsked());
     const double w = doc_.world.def().width, h = doc_.world.def().height, margin = 10.0;
-    const double left = controlsInset();
-    const double top =
-        in.topFor ? std::max(in.top, in.topFor(camera_.viewportWidth() - static_cast<int>(left),
-                                               sideColumnFolded()))
-                  : in.top;
-    double right = 0.0;
-    if (column) {
-        const double scale = in.panelColumn / (kSideColumnMaxWidth + kPanelMargin);
-        right = std::min(in.panelColumn,
-                         sideColumnWidth(camera_.viewportWidth(), static_cast<int>(left), scale) +
-                             1.0 * kPanelMargin);
-    } else {
+    double right = a.right;
+    if (a.spareColumn > 0.0) {
         // A box that the window's height limits may leave width to spare: when it leaves the
         // inspector's whole column, the box moves left, keeps its size, and the inspector
         // (bottom right, on a click) does not cover it. Less room would only move the box off
         // centre and still leave it covered.
-        camera_.fit(w, h, margin, top, in.bottom, 0.0, left);
-        const double spare = camera_.viewportWidth() - left - camera_.toScreen(w) - 2.0 * margin;
-        right = spare >= in.inspectorColumn ? in.inspectorColumn : 0.0;
+        camera_.fit(w, h, margin, a.top, a.bottom, right, a.left);
+        const double spare =
+            camera_.viewportWidth() - a.left - right - camera_.toScreen(w) - 2.0 * margin;
+        if (spare >= a.spareColumn) right += a.spareColumn;
     }
-    camera_.fit(w, h, margin, top, in.bottom, right, left);
+    camera_.fit(w, h, margin, a.top, a.bottom, right, a.left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px",
-                  camera_.zoom(), topLeft.x(), topLeft.y());
-    log(buf);
+    log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(), topLeft.x(),
+            topLeft.y()));
     fitted_ = true;
 }
 
 void Session::handle(const cmd::Resize& c) {
-    const int width = c.width, height = c.height;
-    if (width == camera_.viewportWidth() && height == camera_.viewportHeight()) return;
+    const bool sized = c.width != camera_.viewportWidth() || c.height != camera_.viewportHeight();
+    if (!sized && c.layout == layout_) return;
+    layout_ = c.layout;
     // A fitted view stays fitted; a view the user moved keeps its centre where it was.
     const Vec2 centre =
         camera_.screenToWorld(Vec2(camera_.viewportWidth() / 2.0, camera_.viewportHeight() / 2.0));
-    camera_.setViewport(width, height);
+    camera_.setViewport(c.width, c.height);
     if (fitted_) {
         fit();
-    } else {
-        camera_.set(camera_.zoom(), centre - Vec2(width / 2.0, height / 2.0) / camera_.zoom());
+    } else if (sized) {
+        camera_.set(camera_.zoom(), centre - Vec2(c.width / 2.0, c.height / 2.0) / camera_.zoom());
     }
 }
 
@@ -136,10 +118,7 @@ void Session::handle(const cmd::ToggleSpeeds&) {
 }
 
 void Session::handle(const cmd::ToggleHelp&) {
-    const int pages =
-        options_.insets.helpPagesFor
-            ? options_.insets.helpPagesFor(camera_.viewportWidth(), camera_.viewportHeight())
-            : 1;
+    const int pages = layout_.helpPages;
     if (!showHelp_) {
         showHelp_ = true;
         helpPage_ = 0;

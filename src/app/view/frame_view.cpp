@@ -6,6 +6,7 @@
 
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
+#include "view/box_area.hpp"
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
 #include "view/momentum_view.hpp"
@@ -73,7 +74,7 @@ std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, doubl
 }
 
 FrameView buildFrame(const Session& session, const FrameStats& stats, const TextMeasure& hudFont,
-                     const TextMeasure& labelFont) {
+                     const TextMeasure& labelFont, const ControlsWidth& controls) {
     const World& world = session.world();
     FrameView f;
     f.world = &world;
@@ -110,11 +111,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
 
     Overlays& o = f.overlays;
     // The HUD's readings wrap between their parts within the room right of the control panel.
-    const int hudRoom =
-        session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
+    const int left = controlsInset(session, controls);
+    const int hudRoom = session.camera().viewportWidth() - left;
     o.hud = wrapHudLines(hudFont, hudLines(hudData(session)), hudRoom - 8);
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
-    if (session.sideColumnFolded()) {
+    if (sideColumnFolded(session, controls)) {
         // Said where the eye is: the charts asked for are not drawn over the box.
         for (std::string& line :
              wrapLines(hudFont, {foldedChartsNote(session.controlsShown())}, hudRoom - 8)) {
@@ -145,7 +146,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     // Long messages wrap within the room right of the control panel; the newest lines that
     // fit the band below the box are shown.
-    const int room = session.camera().viewportWidth() - static_cast<int>(session.controlsInset());
+    const int room = session.camera().viewportWidth() - left;
     o.messages = wrapLines(hudFont, stats.messages, room - 8);
     if (o.messages.size() > kMessageLines) {
         o.messages.erase(o.messages.begin(), o.messages.end() - kMessageLines);
@@ -159,7 +160,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     LayoutRequest req;
     req.width = session.camera().viewportWidth();
     req.height = session.camera().viewportHeight();
-    req.left = static_cast<int>(session.controlsInset());
+    req.left = left;
     req.hud = textBoxSize(hudFont, o.hud);
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {

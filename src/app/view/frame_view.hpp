@@ -15,6 +15,7 @@
 #include "session/camera.hpp"
 #include "session/view_options.hpp"
 #include "view/bin_histogram.hpp"
+#include "view/box_area.hpp"
 #include "view/overlays.hpp"
 #include "view/screen_layout.hpp"
 #include "view/text_measure.hpp"
@@ -80,9 +81,11 @@ struct FrameStats {
     std::vector<std::string> messages;
 };
 
-/// The frame for `session`; the fonts only measure text for the layout.
+/// The frame for `session` beside the control panel `controls` wide; the fonts only measure
+/// text for the layout.
 [[nodiscard]] FrameView buildFrame(const Session& session, const FrameStats& stats,
-                                   const TextMeasure& hudFont, const TextMeasure& labelFont);
+                                   const TextMeasure& hudFont, const TextMeasure& labelFont,
+                                   const ControlsWidth& controls);
 
 /// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
 /// left", "dropper: empty".

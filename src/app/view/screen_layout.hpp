@@ -9,11 +9,36 @@
 // the box (sideColumnFits) folds the column's panels away, and says so (columnFolded), instead of
 // laying them over the box. No two rectangles returned overlap.
 
+#include <algorithm>
+
 #include "view/pixel_rect.hpp"
 
-#include "session/view_insets.hpp"
-
 namespace psb::app {
+
+/// Between the panels and the window's edges, pixels.
+inline constexpr int kPanelMargin = 8;
+/// Narrowest the side column's panels get, pixels.
+inline constexpr int kSideColumnMinWidth = 220;
+/// Widest the side column's panels get, pixels.
+inline constexpr int kSideColumnMaxWidth = 330;
+
+/// The side column's panel width for a window `windowWidth` pixels wide of which `leftInset`
+/// are the control panel's: two fifths of what is left, within [min, max].
+[[nodiscard]] inline int sideColumnWidth(int windowWidth, int leftInset) {
+    return std::clamp(static_cast<int>(0.4 * (windowWidth - leftInset)), kSideColumnMinWidth,
+                      kSideColumnMaxWidth);
+}
+
+/// Narrowest room the box keeps beside the side column, pixels: a window that would leave it
+/// less folds the column's panels away (the box keeps the width; the HUD says so).
+inline constexpr int kBoxMinRoom = 240;
+
+/// Whether the side column fits beside the box in a window `windowWidth` pixels wide of which
+/// `leftInset` are the control panel's.
+[[nodiscard]] inline bool sideColumnFits(int windowWidth, int leftInset) {
+    const int column = sideColumnWidth(windowWidth, leftInset) + kPanelMargin;
+    return windowWidth - leftInset - column >= kBoxMinRoom;
+}
 
 /// What to lay out; sizes in pixels, {0, 0} for a panel that is off.
 struct LayoutRequest {

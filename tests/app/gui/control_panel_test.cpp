@@ -37,7 +37,7 @@ class ControlPanelTest : public OffscreenTest {
         so.paused = true;
         so.viewportWidth = kSize;
         so.viewportHeight = kSize;
-        so.insets = {60.0, 44.0, 338.0, kControlsWidth, kControlsFoldedWidth};
+        so.layout = windowLayout(*font_, kSize, kSize, controlsWidth(1.0));
         so.presets = presetScenes();
         session_.emplace(makeWorld(defaultScene()), SceneMeta{"default"}, so);
         // ImGui settles its layout in the second frame (wrapped text takes the width the first

@@ -1,7 +1,8 @@
 #pragma once
 // What the session tests share: whether a notice said something, a drag with the left button in
-// world metres, and a fixture with a session over the default scene (paused, seed 3) that saves
-// into the test's own temporary directory.
+// world metres, a window's layout with fixed bands in place of the view's, and a fixture with a
+// session over the default scene (paused, seed 3) that saves into the test's own temporary
+// directory.
 
 #include <gtest/gtest.h>
 
@@ -13,10 +14,10 @@
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "session/box_area.hpp"
 #include "session/scene_io.hpp"
 #include "session/session.hpp"
 #include "session/test_assets.hpp"
-#include "session/view_insets.hpp"
 #include "temp_dir_test.hpp"
 
 namespace psb::app {
@@ -40,11 +41,38 @@ inline void drag(Session& s, Vec2 from, Vec2 to, double t0, int moves = 10, doub
     s.apply(cmd::PointerUp{c.worldToScreen(to), t0 + 0.1 + hold});
 }
 
+/// Fixed bands around the box, pixels, for a window's layout given without the view's fonts.
+struct TestBands {
+    double top = 0.0;
+    double bottom = 0.0;
+    double column = 0.0;  ///< the side column, kept free while a panel of it is asked for
+    double controls = 0.0;
+    double controlsFolded = 0.0;
+    double inspector = 0.0;  ///< the inspector's column, kept free when the box can spare it
+    int helpPages = 1;
+};
+
+/// The layout the view would send with `bands` around the box (view/box_area.hpp measures them).
+[[nodiscard]] inline WindowLayout testLayout(const TestBands& bands) {
+    const auto area = [&bands](double left, bool column) {
+        return BoxArea{left, bands.top, column ? bands.column : 0.0, bands.bottom,
+                       column ? 0.0 : bands.inspector};
+    };
+    WindowLayout l;
+    l.controlsOpen = area(bands.controls, false);
+    l.controlsFolded = area(bands.controlsFolded, false);
+    l.controlsOpenColumn = area(bands.controls, true);
+    l.controlsFoldedColumn = area(bands.controlsFolded, true);
+    l.helpPages = bands.helpPages;
+    return l;
+}
+
 /// The window a fixture's session is laid out in.
 struct TestWindow {
     int width = 800;
     int height = 800;
-    ViewInsets insets{110.0, 44.0, kSideColumnMaxWidth + kPanelMargin};
+    /// The side column as the view makes it in an 800-pixel window: 320 pixels and the margin.
+    TestBands bands{.top = 110.0, .bottom = 44.0, .column = 328.0};
     bool presets = false;  ///< the app's presets, for OpenPreset
 };
 
@@ -61,10 +89,12 @@ class SessionFixture : public TempDirTest {
         o.paused = true;
         o.viewportWidth = window_.width;
         o.viewportHeight = window_.height;
-        o.insets = window_.insets;
+        o.layout = layout();
         if (window_.presets) o.presets = testPresets();
         return o;
     }
+    /// The window's layout (at any size: the bands are fixed).
+    [[nodiscard]] WindowLayout layout() const { return testLayout(window_.bands); }
     [[nodiscard]] Session session() const {
         return Session(makeWorld(defaultScene()), SceneMeta{"default"}, options());
     }

@@ -118,11 +118,7 @@ TEST_F(SessionTest, ModeCyclingUnderGravityVisitsEveryMode) {
 
 TEST_F(SessionTest, HTurnsTheHelpsPagesAndClosesItAfterTheLast) {
     SessionOptions o = options();
-    int asked = 0;
-    o.insets.helpPagesFor = [&asked](int width, int height) {
-        ++asked;
-        return width < 700 || height < 700 ? 2 : 1;
-    };
+    o.layout.helpPages = 2;  // as the view pages the help in a 600 × 600 window
     o.viewportWidth = 600;
     o.viewportHeight = 600;
     Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
@@ -134,11 +130,12 @@ TEST_F(SessionTest, HTurnsTheHelpsPagesAndClosesItAfterTheLast) {
     EXPECT_EQ(s.helpPage(), 1u);
     s.apply(cmd::ToggleHelp{});
     EXPECT_FALSE(s.helpShown());
-    EXPECT_GT(asked, 0);
     // Opened again it starts at the first page; in a large window one press closes it.
     s.apply(cmd::ToggleHelp{});
     EXPECT_EQ(s.helpPage(), 0u);
-    s.apply(cmd::Resize{1000, 1000});
+    WindowLayout large = o.layout;
+    large.helpPages = 1;
+    s.apply(cmd::Resize{1000, 1000, large});
     s.apply(cmd::ToggleHelp{});
     EXPECT_FALSE(s.helpShown());
 }
@@ -311,50 +308,54 @@ TEST_F(SessionTest, StepsThatKeepUpShowTheSpeedAsked) {
 TEST_F(SessionTest, AFittedViewLeavesTheMessagesBandAndThePanelColumnFree) {
     Session s = session();
     const auto box = [&] { return s.camera().boxOnScreen(7.0, 7.0); };
-    const ViewInsets in = options().insets;
+    const TestBands& in = window_.bands;
     EXPECT_LE(box().topLeft.y() + box().size.y(), 800.0 - in.bottom);
     EXPECT_GE(box().topLeft.y(), in.top);
     s.apply(cmd::TogglePlots{});
-    EXPECT_LE(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);
+    EXPECT_LE(box().topLeft.x() + box().size.x(), 800.0 - in.column);
     s.apply(cmd::TogglePlots{});
-    EXPECT_GT(box().topLeft.x() + box().size.x(), 800.0 - in.panelColumn);  // room back
+    EXPECT_GT(box().topLeft.x() + box().size.x(), 800.0 - in.column);  // room back
 }
 
 TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
     // A window wider than the box needs: the box moves left, keeping its size, so that the
     // inspector (bottom right, when a particle is clicked) does not cover it.
     SessionOptions o = options();
-    o.insets.inspectorColumn = 240.0;
+    const auto layoutWith = [this](double inspector) {
+        TestBands bands = window_.bands;
+        bands.inspector = inspector;
+        return testLayout(bands);
+    };
     const auto boxAt = [&](double inspector) {
-        o.insets.inspectorColumn = inspector;
+        o.layout = layoutWith(inspector);
         Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
-        s.apply(cmd::Resize{800, 600});
+        s.apply(cmd::Resize{800, 600, o.layout});
         return s.camera().boxOnScreen(7.0, 7.0);
     };
     const auto centred = boxAt(0.0), moved = boxAt(240.0);
     EXPECT_NEAR(moved.size.x(), centred.size.x(), 1e-9);  // no smaller
     EXPECT_LE(moved.topLeft.x() + moved.size.x(), 800.0 - 240.0 + 1e-9);
     // A window with no width to spare keeps the box as big as it was.
-    o.insets.inspectorColumn = 240.0;
+    o.layout = layoutWith(240.0);
     Session square(makeWorld(defaultScene()), SceneMeta{"default"}, o);
-    square.apply(cmd::Resize{600, 900});
-    o.insets.inspectorColumn = 0.0;
+    square.apply(cmd::Resize{600, 900, o.layout});
+    o.layout = layoutWith(0.0);
     Session plain(makeWorld(defaultScene()), SceneMeta{"default"}, o);
-    plain.apply(cmd::Resize{600, 900});
+    plain.apply(cmd::Resize{600, 900, o.layout});
     EXPECT_NEAR(square.camera().zoom(), plain.camera().zoom(), 1e-12);
 }
 
 TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
     Session s = session();
     const double before = s.camera().zoom();
-    s.apply(cmd::Resize{1200, 1200});
+    s.apply(cmd::Resize{1200, 1200, layout()});
     EXPECT_GT(s.camera().zoom(), 1.4 * before);
     const auto b = s.camera().boxOnScreen(7.0, 7.0);
     EXPECT_NEAR(b.topLeft.x() + b.size.x() / 2.0, 600.0, 1.0);
     // A view the user moved keeps its zoom.
     s.apply(cmd::Pan{Vec2(30, 0)});
     const double z = s.camera().zoom();
-    s.apply(cmd::Resize{900, 900});
+    s.apply(cmd::Resize{900, 900, layout()});
     EXPECT_DOUBLE_EQ(s.camera().zoom(), z);
 }
 

@@ -15,8 +15,9 @@
 #include "temp_dir_test.hpp"
 #include "view/bin_histogram.hpp"
 #include "view/bins_fixture.hpp"
+#include "view/box_area.hpp"
+#include "view/fixed_measure.hpp"
 #include "view/frame_view.hpp"
-#include "view/screen_layout.hpp"
 
 namespace psb::app {
 namespace {
@@ -79,7 +80,7 @@ class SessionBinsTest : public TempDirTest {
         SessionOptions o;
         o.saveTo = dir_ / "save.json";
         o.paused = true;
-        o.insets = {110.0, 44.0, kPanelMaxWidth + kPanelMargin};
+        o.layout = windowLayout(test::FixedMeasure{}, o.viewportWidth, o.viewportHeight, {});
         return Session(makeWorld(psb::defaultScene()), SceneMeta{"default"}, o);
     }
     void writeBoard() const {

@@ -1,14 +1,15 @@
 // Step back in time (src/app/session/timeline.hpp) on 10^4 particles: the memory the timeline
 // holds for the last 10 s, and what one step back costs, in each step mode.
 //
-// The scene is the gas of gas_scene.hpp (10^4 discs of 1 m at packing fraction 0.1, dt = 0.01 s),
-// with gravity 9.81 m/s² in the discrete and substep (k = 4) modes and none in the exact mode.
+// The scene is the gas of bench/gas_scene.hpp (10^4 discs of 1 m at packing fraction 0.1,
+// dt = 0.01 s), with gravity 9.81 m/s² in the discrete and substep (k = 4) modes and none in
+// the exact mode.
 // It is run as the app runs it: 60 frames per second of wall time, each stepping the world by
 // dt as often as 1/60 s of simulated time allows, recorded into a Timeline with the default
 // settings (horizon 10 s, budget 200 MB), for 12 s. Then, as a paused user would, every frame
 // is stepped back to, one by one from the newest to the oldest; each iteration is one such pass.
 //
-//   build/release/bench/timeline_bench
+//   build/release/src/app/bench/timeline_bench
 //
 // BM_StepBack measures the Timeline alone; BM_SessionStepBack (below) the same through the
 // Session and its commands, with the undo history, for 10^2, 10^3 and 10^4 particles.

@@ -2,7 +2,7 @@
 // under Xvfb): Dear ImGui's frame (widgets, layout, draw lists) plus the SDL_Renderer adapter
 // (src/app/gui/imgui_renderer.hpp) drawing it into a 900 × 800 surface, without a window.
 //
-//   build/release/bench/gui_bench
+//   build/release/src/app/bench/gui_bench
 //
 // A frame without a panel (clear and present: the baseline), and three panels: a control panel of
 // the size issue 14 asks for (about forty widgets: buttons, sliders, checkboxes, a table of

@@ -1,0 +1,43 @@
+#pragma once
+// Where the box may go on screen. The view lays out the window (view/box_area.hpp) and hands
+// the session, with each window size (cmd::Resize), the area the box is fitted into for each
+// state of the panels the session switches: the control panel open or folded, a panel of the
+// side column (plots, histograms, profile) asked for or not. The session fits the box into the
+// area its panels are in; it knows no panel, font or margin, only these rectangles.
+
+namespace psb::app {
+
+/// The part of the window the box is fitted into, as the pixels kept free at each of the
+/// window's edges (all 0: the whole window).
+struct BoxArea {
+    double left = 0.0;
+    double top = 0.0;
+    double right = 0.0;
+    double bottom = 0.0;
+    /// A column this wide at the area's right (the inspector's) is kept free too when the box
+    /// fitted into the area leaves it whole beside it: the box then moves left and keeps its
+    /// size. Whether it does depends on the box's proportions, which the session knows.
+    double spareColumn = 0.0;
+
+    friend bool operator==(const BoxArea&, const BoxArea&) = default;
+};
+
+/// What the session is told of the window's layout at one window size.
+struct WindowLayout {
+    BoxArea controlsOpen;        ///< the control panel open, no side column asked for
+    BoxArea controlsFolded;      ///< the control panel folded to its strip, likewise
+    BoxArea controlsOpenColumn;  ///< the control panel open, a side-column panel asked for
+    BoxArea controlsFoldedColumn;
+    /// Pages the help takes in this window (H turns them, and closes the help after the last).
+    int helpPages = 1;
+
+    /// The area for the panels in this state.
+    [[nodiscard]] const BoxArea& area(bool controlsShown, bool columnAsked) const {
+        if (columnAsked) return controlsShown ? controlsOpenColumn : controlsFoldedColumn;
+        return controlsShown ? controlsOpen : controlsFolded;
+    }
+
+    friend bool operator==(const WindowLayout&, const WindowLayout&) = default;
+};
+
+}  // namespace psb::app

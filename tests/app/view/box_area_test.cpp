@@ -1,0 +1,77 @@
+// The areas the view gives the session for the box (view/box_area.hpp): beside the control panel
+// open or folded, below the HUD's band (taller when its lines wrap or the folded-charts note is
+// shown), above the messages, left of the side column where it fits, and the help's pages.
+
+#include <gtest/gtest.h>
+
+#include "view/box_area.hpp"
+#include "view/fixed_measure.hpp"
+#include "view/hud.hpp"
+#include "view/overlays.hpp"
+#include "view/screen_layout.hpp"
+
+namespace psb::app {
+namespace {
+
+const test::FixedMeasure kFont;
+const ControlsWidth kControls{310.0, 44.0};
+
+TEST(WindowLayout, TheBoxKeepsClearOfTheControlPanelTheHudAndTheMessages) {
+    const WindowLayout l = windowLayout(kFont, 1280, 800, kControls);
+    EXPECT_EQ(l.controlsOpen.left, 310.0);
+    EXPECT_EQ(l.controlsFolded.left, 44.0);
+    EXPECT_EQ(l.controlsOpenColumn.left, 310.0);
+    EXPECT_EQ(l.controlsFoldedColumn.left, 44.0);
+    for (const BoxArea& a :
+         {l.controlsOpen, l.controlsFolded, l.controlsOpenColumn, l.controlsFoldedColumn}) {
+        EXPECT_GT(a.top, 4.0 * kFont.lineHeight());  // the HUD's lines
+        EXPECT_EQ(a.bottom,
+                  static_cast<double>(kMessageLines) * kFont.lineHeight() + 4.0 + kPanelMargin);
+    }
+    // No side column asked for: nothing at the right but the inspector's column, when the box
+    // can spare it.
+    EXPECT_EQ(l.controlsOpen.right, 0.0);
+    EXPECT_GT(l.controlsOpen.spareColumn, 0.0);
+    EXPECT_EQ(l.controlsFolded.spareColumn, l.controlsOpen.spareColumn);
+}
+
+TEST(WindowLayout, TheSideColumnIsKeptFreeWhereItFitsAndFoldedWithANoteWhereNot) {
+    const WindowLayout wide = windowLayout(kFont, 1280, 800, kControls);
+    ASSERT_TRUE(sideColumnFits(1280, 310));
+    EXPECT_EQ(wide.controlsOpenColumn.right, sideColumnWidth(1280, 310) + kPanelMargin);
+    EXPECT_EQ(wide.controlsOpenColumn.spareColumn, 0.0);
+    EXPECT_EQ(wide.controlsOpenColumn.top, wide.controlsOpen.top);
+
+    // 600 pixels wide: no room for the column beside the open control panel, room beside the
+    // folded one.
+    const WindowLayout narrow = windowLayout(kFont, 600, 600, kControls);
+    ASSERT_FALSE(sideColumnFits(600, 310));
+    ASSERT_TRUE(sideColumnFits(600, 44));
+    EXPECT_EQ(narrow.controlsOpenColumn.right, 0.0);
+    EXPECT_EQ(narrow.controlsOpenColumn.spareColumn, narrow.controlsOpen.spareColumn);
+    EXPECT_GT(narrow.controlsOpenColumn.top, narrow.controlsOpen.top) << "the folded note";
+    EXPECT_EQ(narrow.controlsFoldedColumn.right, sideColumnWidth(600, 44) + kPanelMargin);
+    EXPECT_EQ(narrow.controlsFoldedColumn.top, narrow.controlsFolded.top);
+}
+
+TEST(WindowLayout, TheHudsBandGrowsWhenItsLinesWrap) {
+    const WindowLayout wide = windowLayout(kFont, 1600, 1000, kControls);
+    const WindowLayout narrow = windowLayout(kFont, 700, 1000, kControls);
+    EXPECT_GT(narrow.controlsOpen.top, wide.controlsOpen.top);
+    // Beside the folded strip the HUD has more room than beside the open panel.
+    EXPECT_LE(narrow.controlsFolded.top, narrow.controlsOpen.top);
+}
+
+TEST(WindowLayout, TheHelpsPagesAreCountedForTheWindow) {
+    const auto pages = [](int width, int height) {
+        const PixelRect room = helpRoom(width, height);
+        return static_cast<int>(helpPages(kFont, helpLines(), {room.w, room.h}).size());
+    };
+    const WindowLayout small = windowLayout(kFont, 500, 400, kControls);
+    EXPECT_EQ(small.helpPages, pages(500, 400));
+    EXPECT_GT(small.helpPages, 1);
+    EXPECT_EQ(windowLayout(kFont, 1600, 1000, kControls).helpPages, pages(1600, 1000));
+}
+
+}  // namespace
+}  // namespace psb::app
