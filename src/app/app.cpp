@@ -83,12 +83,11 @@ App::App(const AppOptions& options) : options_(options) {
     s.controls = out.x >= 2.0 * controls_.open;
     session_.emplace(std::move(world), std::move(meta), std::move(s));
     for (const char c : options_.benchOverlays) {
-        if (c == 'V') session_->apply(cmd::ToggleMomentum{});
-        if (c == 'K') session_->apply(cmd::TogglePlots{});
-        if (c == 'D') session_->apply(cmd::ToggleSpeeds{});
+        if (c == 'V') session_->apply(cmd::SetShow{ShowOption::Momentum, true});
+        if (c == 'K') session_->apply(cmd::SetShow{ShowOption::Plots, true});
+        if (c == 'D') session_->apply(cmd::SetShow{ShowOption::Speeds, true});
         if (c == 'L') {
-            session_->apply(cmd::CycleTrails{});
-            session_->apply(cmd::CycleTrails{});
+            session_->apply(cmd::SetTrails{static_cast<int>(TrailMode::All)});
         }
     }
     if (options_.benchParticles > 0) (void)session_->takeNotices();

@@ -13,6 +13,7 @@
 #include <particle_sandbox/scene.hpp>
 
 #include "gui/control_panel.hpp"
+#include "session/keys.hpp"
 #include "session/scene_io.hpp"
 #include "session/session.hpp"
 #include "session/session_fixture.hpp"
@@ -41,9 +42,9 @@ TEST_F(BoxAndPanels, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
     SessionOptions o = options();
     o.layout = resize(o.viewportWidth, o.viewportHeight).layout;
     Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
-    s.apply(cmd::TogglePlots{});
-    s.apply(cmd::ToggleSpeeds{});
-    s.apply(cmd::ToggleProfile{});
+    s.apply(keys::show(s, ShowOption::Plots));
+    s.apply(keys::show(s, ShowOption::Speeds));
+    s.apply(keys::show(s, ShowOption::Profile));
     for (const auto& [w, h] : {std::pair{800, 600},
                                {900, 800},
                                {1024, 768},
@@ -90,8 +91,8 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
     ASSERT_NE(galton, presets.end());
     s.apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
     ASSERT_TRUE(s.binsShown());
-    s.apply(cmd::TogglePlots{});
-    s.apply(cmd::ToggleSpeeds{});
+    s.apply(keys::show(s, ShowOption::Plots));
+    s.apply(keys::show(s, ShowOption::Speeds));
     int folded = 0, shown = 0;
     for (const bool controls : {true, false}) {
         if (s.controlsShown() != controls) s.apply(cmd::ToggleControls{});
@@ -139,7 +140,7 @@ TEST_F(BoxAndPanels, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
     EXPECT_GT(note, o.layout.controlsOpen.top) << "the note's lines";
     Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
     const double before = s.camera().boxOnScreen(7.0, 7.0).topLeft.y();
-    s.apply(cmd::TogglePlots{});
+    s.apply(keys::show(s, ShowOption::Plots));
     ASSERT_TRUE(sideColumnFolded(s, controls));
     const double after = s.camera().boxOnScreen(7.0, 7.0).topLeft.y();
     EXPECT_GE(after, note - 1e-9);

@@ -136,25 +136,14 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 10:
             return cmd::Resize{in.ConsumeIntegralInRange<int>(-10, 4000),
                                in.ConsumeIntegralInRange<int>(-10, 4000)};
-        case 11:
-            switch (in.ConsumeIntegralInRange<int>(0, 7)) {
-                case 0:
-                    return cmd::ToggleArrows{};
-                case 1:
-                    return cmd::ToggleLabels{};
-                case 2:
-                    return cmd::ToggleHelp{};
-                case 3:
-                    return cmd::ToggleProfile{};
-                case 4:
-                    return cmd::ToggleMomentum{};
-                case 5:
-                    return cmd::CycleTrails{};
-                case 6:
-                    return cmd::TogglePlots{};
-                default:
-                    return cmd::ToggleSpeeds{};
-            }
+        case 11: {
+            // A key that shows or hides something, the trails key, or the help.
+            const int k = in.ConsumeIntegralInRange<int>(0, 8);
+            if (k == 7) return cmd::ToggleHelp{};
+            if (k == 8) return cmd::SetTrails{static_cast<int>(nextTrailMode(s.view().trails))};
+            const auto option = static_cast<ShowOption>(k);
+            return cmd::SetShow{option, !s.view().shown(option)};
+        }
         case 12:
             return cmd::TogglePause{};
         case 13:

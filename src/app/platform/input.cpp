@@ -31,6 +31,11 @@ std::vector<Command> editKey(const SDL_KeyboardEvent& key) {
     }
 }
 
+/// What a key that shows or hides `option` sends: the other value.
+cmd::SetShow show(const KeyState& state, ShowOption option) {
+    return {option, !state.view.shown(option)};
+}
+
 }  // namespace
 
 KeyState keyState(const Session& session) {
@@ -41,6 +46,7 @@ KeyState keyState(const Session& session) {
     k.sceneGravity = session.loadedWorld().def().gravity;
     k.solver = session.world().solver();
     k.timeScale = session.timeScale();
+    k.view = session.view();
     return k;
 }
 
@@ -62,9 +68,9 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
             return {cmd::DeleteHeld{}};
         case SDLK_s:
             if (ctrl) return {cmd::Save{}};
-            return {cmd::ToggleLabels{}};
+            return {show(state, ShowOption::Labels)};
         case SDLK_a:
-            return {cmd::ToggleArrows{}};
+            return {show(state, ShowOption::Arrows)};
         case SDLK_c:
             return {cmd::ToggleControls{}};
         case SDLK_m:
@@ -76,18 +82,18 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
         case SDLK_h:
             return {cmd::ToggleHelp{}};
         case SDLK_v:
-            return {cmd::ToggleMomentum{}};
+            return {show(state, ShowOption::Momentum)};
         case SDLK_l:
-            return {cmd::CycleTrails{}};
+            return {cmd::SetTrails{static_cast<int>(nextTrailMode(state.view.trails))}};
         case SDLK_k:
-            return {cmd::TogglePlots{}};
+            return {show(state, ShowOption::Plots)};
         case SDLK_d:
-            return {cmd::ToggleSpeeds{}};
+            return {show(state, ShowOption::Speeds)};
         case SDLK_t:
             return {modeStep(state.solver)};
         case SDLK_o:
         case SDLK_F3:
-            return {cmd::ToggleProfile{}};
+            return {show(state, ShowOption::Profile)};
         case SDLK_f:
             return {cmd::Fit{}};
         case SDLK_SPACE:

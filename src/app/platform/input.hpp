@@ -15,6 +15,7 @@
 #include <particle_sandbox/solver_settings.hpp>
 
 #include "session/command.hpp"
+#include "session/view_options.hpp"
 
 namespace psb::app {
 
@@ -29,6 +30,7 @@ struct KeyState {
     Vec2 sceneGravity = Vec2::Zero();  ///< of the scene as loaded
     SolverSettings solver = {};
     double timeScale = 1.0;
+    ViewOptions view = {};  ///< what is shown (the keys that show or hide something flip it)
 };
 /// The session's KeyState now.
 [[nodiscard]] KeyState keyState(const Session& session);

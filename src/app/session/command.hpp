@@ -27,6 +27,7 @@
 
 #include "session/box_area.hpp"
 #include "session/edit_prompt.hpp"
+#include "session/view_options.hpp"
 
 namespace psb::app::cmd {
 
@@ -96,28 +97,7 @@ struct Resize {
     int height = 0;
     WindowLayout layout{};
 };
-struct ToggleArrows {
-    static constexpr Traits traits = kLooks;
-};
-struct ToggleLabels {
-    static constexpr Traits traits = kLooks;
-};
 struct ToggleHelp {
-    static constexpr Traits traits = kLooks;
-};
-struct ToggleProfile {
-    static constexpr Traits traits = kLooks;
-};
-struct ToggleMomentum {
-    static constexpr Traits traits = kLooks;
-};
-struct CycleTrails {
-    static constexpr Traits traits = kLooks;
-};
-struct TogglePlots {
-    static constexpr Traits traits = kLooks;
-};
-struct ToggleSpeeds {
     static constexpr Traits traits = kLooks;
 };
 
@@ -294,13 +274,14 @@ struct Select {
     static constexpr Traits traits = kPastPrompt;
     ParticleId id;
 };
-/// Show options set to a value (checkboxes).
-enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile, Bins };
+/// Show options set to a value (checkboxes, and the keys A, S, V, K, D, O with the flipped value).
+using psb::app::ShowOption;
 struct SetShow {
     static constexpr Traits traits = kPastPrompt;
     ShowOption option = ShowOption::Arrows;
     bool on = true;
 };
+/// The trails shown (the panel's choice, and the key L with the next mode).
 struct SetTrails {
     static constexpr Traits traits = kPastPrompt;
     int mode = 0;  ///< TrailMode as int: off, selected, all
@@ -337,16 +318,16 @@ struct Quit {
 
 namespace psb::app {
 
-using Command = std::variant<
-    cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan, cmd::Zoom,
-    cmd::Fit, cmd::Resize, cmd::ToggleArrows, cmd::ToggleLabels, cmd::ToggleHelp,
-    cmd::ToggleProfile, cmd::ToggleMomentum, cmd::CycleTrails, cmd::TogglePlots, cmd::ToggleSpeeds,
-    cmd::TogglePause, cmd::SingleStep, cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy,
-    cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::Reset, cmd::OpenPreset,
-    cmd::OpenFile, cmd::OpenEdit, cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply,
-    cmd::Save, cmd::Screenshot, cmd::Back, cmd::Quit, cmd::SetRestitution, cmd::SetFriction,
-    cmd::SetGravity, cmd::SetWalls, cmd::SetMode, cmd::SetTimeScale, cmd::SetTool,
-    cmd::SetLaunchBody, cmd::EditParticle, cmd::DeleteParticle, cmd::Select, cmd::SetShow,
-    cmd::SetTrails, cmd::ToggleControls, cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle>;
+using Command =
+    std::variant<cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan,
+                 cmd::Zoom, cmd::Fit, cmd::Resize, cmd::ToggleHelp, cmd::TogglePause,
+                 cmd::SingleStep, cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy,
+                 cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::Reset,
+                 cmd::OpenPreset, cmd::OpenFile, cmd::OpenEdit, cmd::EditType, cmd::EditField,
+                 cmd::EditBackspace, cmd::EditApply, cmd::Save, cmd::Screenshot, cmd::Back,
+                 cmd::Quit, cmd::SetRestitution, cmd::SetFriction, cmd::SetGravity, cmd::SetWalls,
+                 cmd::SetMode, cmd::SetTimeScale, cmd::SetTool, cmd::SetLaunchBody,
+                 cmd::EditParticle, cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails,
+                 cmd::ToggleControls, cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle>;
 
 }  // namespace psb::app

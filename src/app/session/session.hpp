@@ -170,7 +170,7 @@ class Session {
     [[nodiscard]] bool helpShown() const { return showHelp_; }
     /// The page of the help shown (H turns the page, and closes it after the last).
     [[nodiscard]] std::size_t helpPage() const { return helpPage_; }
-    [[nodiscard]] bool profileShown() const { return showProfile_; }
+    [[nodiscard]] bool profileShown() const { return view_.profile; }
     /// The control panel is open (else folded to a strip).
     [[nodiscard]] bool controlsShown() const { return showControls_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
@@ -299,14 +299,7 @@ class Session {
     void handle(const cmd::Zoom& c);
     void handle(const cmd::Fit& c);
     void handle(const cmd::Resize& c);
-    void handle(const cmd::ToggleArrows& c);
-    void handle(const cmd::ToggleLabels& c);
     void handle(const cmd::ToggleHelp& c);
-    void handle(const cmd::ToggleProfile& c);
-    void handle(const cmd::ToggleMomentum& c);
-    void handle(const cmd::CycleTrails& c);
-    void handle(const cmd::TogglePlots& c);
-    void handle(const cmd::ToggleSpeeds& c);
     void handle(const cmd::SetShow& c);
     void handle(const cmd::SetTrails& c);
     void handle(const cmd::ToggleControls& c);
@@ -339,7 +332,6 @@ class Session {
     void showSceneTrails(const std::vector<std::size_t>& trails);
     // The view (session_view.cpp).
     void fit();
-    void togglePanel(bool& flag, const char* on, const char* off);
     /// The hand did not move but the world under it did: the held particle follows the cursor.
     void afterCameraMove();
     // The clock and the history (session_time.cpp, session_history.cpp).
@@ -384,7 +376,6 @@ class Session {
     ViewOptions view_;
     bool showHelp_ = false;
     std::size_t helpPage_ = 0;
-    bool showProfile_ = false;
     bool showControls_ = true;
 
     Tools tools_;

@@ -13,7 +13,7 @@ namespace psb::app {
 // The view.
 
 bool Session::columnAsked() const {
-    return view_.plots || view_.speeds || showProfile_ || binsShown();
+    return view_.plots || view_.speeds || view_.profile || binsShown();
 }
 
 void Session::fit() {
@@ -53,13 +53,6 @@ void Session::handle(const cmd::Resize& c) {
     }
 }
 
-void Session::togglePanel(bool& flag, const char* on, const char* off) {
-    flag = !flag;
-    say(flag ? on : off);
-    // The panel column sits beside the box: a fitted view makes room for it (or takes it back).
-    if (fitted_) fit();
-}
-
 void Session::afterCameraMove() {
     fitted_ = false;
     if (tools_.hand.mode() != Interaction::Mode::Idle) {
@@ -85,38 +78,6 @@ void Session::handle(const cmd::Fit&) {
     fitted_ = true;
 }
 
-void Session::handle(const cmd::ToggleArrows&) {
-    view_.arrows = !view_.arrows;
-    say(view_.arrows ? "Arrows on" : "Arrows off");
-}
-
-void Session::handle(const cmd::ToggleLabels&) {
-    view_.labels = !view_.labels;
-    say(view_.labels ? "Labels on" : "Labels off");
-}
-
-void Session::handle(const cmd::ToggleProfile&) {
-    togglePanel(showProfile_, "Profile on", "Profile off");
-}
-
-void Session::handle(const cmd::ToggleMomentum&) {
-    view_.momentum = !view_.momentum;
-    say(view_.momentum ? "Momentum view on" : "Momentum view off");
-}
-
-void Session::handle(const cmd::CycleTrails&) {
-    view_.trails = nextTrailMode(view_.trails);
-    say(std::string("Trails: ") + toString(view_.trails));
-}
-
-void Session::handle(const cmd::TogglePlots&) {
-    togglePanel(view_.plots, "Plots on", "Plots off");
-}
-
-void Session::handle(const cmd::ToggleSpeeds&) {
-    togglePanel(view_.speeds, "Speed distribution on", "Speed distribution off");
-}
-
 void Session::handle(const cmd::ToggleHelp&) {
     const int pages = layout_.helpPages;
     if (!showHelp_) {
@@ -130,34 +91,12 @@ void Session::handle(const cmd::ToggleHelp&) {
 }
 
 void Session::handle(const cmd::SetShow& c) {
-    using O = cmd::ShowOption;
-    bool* flag = nullptr;
-    switch (c.option) {
-        case O::Arrows:
-            flag = &view_.arrows;
-            break;
-        case O::Labels:
-            flag = &view_.labels;
-            break;
-        case O::Momentum:
-            flag = &view_.momentum;
-            break;
-        case O::Plots:
-            flag = &view_.plots;
-            break;
-        case O::Speeds:
-            flag = &view_.speeds;
-            break;
-        case O::Bins:
-            flag = &view_.bins;
-            break;
-        case O::Profile:
-            flag = &showProfile_;
-            break;
-    }
-    if (flag == nullptr || *flag == c.on) return;
-    *flag = c.on;
+    bool& flag = view_.flag(c.option);
+    if (flag == c.on) return;
+    flag = c.on;
+    say(showMessage(c.option, c.on));
     // The side column's panels change what the box is fitted beside.
+    using O = cmd::ShowOption;
     if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile ||
                     c.option == O::Bins)) {
         fit();
@@ -165,7 +104,10 @@ void Session::handle(const cmd::SetShow& c) {
 }
 
 void Session::handle(const cmd::SetTrails& c) {
-    view_.trails = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
+    const auto mode = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
+    if (mode == view_.trails) return;
+    view_.trails = mode;
+    say(std::string("Trails: ") + toString(view_.trails));
 }
 
 void Session::handle(const cmd::ToggleControls&) {

@@ -56,4 +56,51 @@ double minArrowExtra(double spacingPixels) {
                                         : kMinArrowPixels;
 }
 
+bool& ViewOptions::flag(ShowOption option) {
+    switch (option) {
+        case ShowOption::Arrows:
+            return arrows;
+        case ShowOption::Labels:
+            return labels;
+        case ShowOption::Momentum:
+            return momentum;
+        case ShowOption::Plots:
+            return plots;
+        case ShowOption::Speeds:
+            return speeds;
+        case ShowOption::Profile:
+            return profile;
+        case ShowOption::Bins:
+            break;
+    }
+    return bins;
+}
+
+std::string showMessage(ShowOption option, bool on) {
+    const char* what = "Bin counts";
+    switch (option) {
+        case ShowOption::Arrows:
+            what = "Arrows";
+            break;
+        case ShowOption::Labels:
+            what = "Labels";
+            break;
+        case ShowOption::Momentum:
+            what = "Momentum view";
+            break;
+        case ShowOption::Plots:
+            what = "Plots";
+            break;
+        case ShowOption::Speeds:
+            what = "Speed distribution";
+            break;
+        case ShowOption::Profile:
+            what = "Profile";
+            break;
+        case ShowOption::Bins:
+            break;
+    }
+    return std::string(what) + (on ? " on" : " off");
+}
+
 }  // namespace psb::app

@@ -1,10 +1,12 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D and the arrow scale. No SDL, so the session and its
+// toggles of the keys A, S, V, L, K, D, O and the arrow scale. No SDL, so the session and its
 // tests can use it without a window.
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
 
 #include <particle_sandbox/world.hpp>
 
@@ -12,6 +14,9 @@ namespace psb::app {
 
 /// What L shows.
 enum class TrailMode { Off, Selected, All };
+
+/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O).
+enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile, Bins };
 
 /// Off -> Selected -> All -> Off.
 [[nodiscard]] TrailMode nextTrailMode(TrailMode mode);
@@ -37,7 +42,17 @@ struct ViewOptions {
     /// The bin counts of a scene with bins (a Galton board) against its expected distribution;
     /// on unless switched off, drawn only for a scene that has bins.
     bool bins = true;
+    bool profile = false;  ///< O: the step pipeline's stages, timed
+
+    /// The flag of `option`.
+    [[nodiscard]] bool& flag(ShowOption option);
+    [[nodiscard]] bool shown(ShowOption option) const {
+        return const_cast<ViewOptions&>(*this).flag(option);
+    }
 };
+
+/// What the message says when `option` is switched `on` ("Plots on", "Arrows off").
+[[nodiscard]] std::string showMessage(ShowOption option, bool on);
 
 /// An arrow scale for `world` (seconds, see ViewOptions::arrowSeconds): the original's 1/3 s,
 /// shortened when that would make the root-mean-square arrow longer than a fifth of the box or

@@ -23,7 +23,10 @@ bool is(const std::vector<Command>& c) {
 }
 
 TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
-    EXPECT_TRUE(is<cmd::ToggleLabels>(commandsForKey(keyEvent(SDLK_s), KeyState{})));
+    const auto labels = commandsForKey(keyEvent(SDLK_s), KeyState{});
+    ASSERT_TRUE(is<cmd::SetShow>(labels));
+    EXPECT_EQ(std::get<cmd::SetShow>(labels.front()).option, ShowOption::Labels);
+    EXPECT_TRUE(std::get<cmd::SetShow>(labels.front()).on);  // off at first: S turns them on
     EXPECT_TRUE(is<cmd::Save>(commandsForKey(keyEvent(SDLK_s, KMOD_LCTRL), KeyState{})));
     KeyState now;
     now.restitution = 0.9;

@@ -1,7 +1,7 @@
 #pragma once
-// The commands the keys that step a value send (E, G, T, ',' and '.'), as the key map makes
-// them from the session's state (platform/input.cpp), for tests that press those keys without
-// SDL.
+// The commands the keys that step or flip a value send (E, G, T, ',' '.', A, S, V, L, K, D, O), as
+// the key map makes them from the session's state (platform/input.cpp), for tests that press those
+// keys without SDL.
 
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
@@ -23,6 +23,15 @@ namespace psb::app::keys {
 /// ',' (0.5) and '.' (2).
 [[nodiscard]] inline Command timeSpeed(const Session& s, double factor) {
     return cmd::SetTimeScale{s.timeScale() * factor};
+}
+
+/// A, S, V, K, D, O: `option` flipped.
+[[nodiscard]] inline Command show(const Session& s, ShowOption option) {
+    return cmd::SetShow{option, !s.view().shown(option)};
+}
+/// L: the next trail mode.
+[[nodiscard]] inline Command trails(const Session& s) {
+    return cmd::SetTrails{static_cast<int>(nextTrailMode(s.view().trails))};
 }
 
 }  // namespace psb::app::keys

@@ -78,9 +78,9 @@ TEST_F(SessionTest, GravityIsEarthsInTheDefaultScene) {
 TEST_F(SessionTest, CommandsAreTheOnlyWayInAndEachSaysWhatItDid) {
     Session s = session();
     (void)s.takeNotices();
-    s.apply(cmd::ToggleLabels{});
+    s.apply(keys::show(s, ShowOption::Labels));
     EXPECT_TRUE(s.view().labels);
-    s.apply(cmd::ToggleArrows{});
+    s.apply(keys::show(s, ShowOption::Arrows));
     EXPECT_FALSE(s.view().arrows);
     s.apply(keys::timeSpeed(s, 2.0));
     EXPECT_DOUBLE_EQ(s.timeScale(), 2.0);
@@ -152,7 +152,7 @@ TEST_F(SessionTest, EscClosesTheHelpFirstAndAsksBeforeLosingUnsavedChanges) {
     EXPECT_TRUE(s.running());
     EXPECT_TRUE(s.quitPending());
     EXPECT_TRUE(said(s.takeNotices(), "Unsaved changes"));
-    s.apply(cmd::ToggleLabels{});  // any other command: stay
+    s.apply(keys::show(s, ShowOption::Labels));  // any other command: stay
     EXPECT_FALSE(s.quitPending());
     s.apply(cmd::Back{});
     s.apply(cmd::Back{});  // asked, answered
@@ -311,9 +311,9 @@ TEST_F(SessionTest, AFittedViewLeavesTheMessagesBandAndThePanelColumnFree) {
     const TestBands& in = window_.bands;
     EXPECT_LE(box().topLeft.y() + box().size.y(), 800.0 - in.bottom);
     EXPECT_GE(box().topLeft.y(), in.top);
-    s.apply(cmd::TogglePlots{});
+    s.apply(keys::show(s, ShowOption::Plots));
     EXPECT_LE(box().topLeft.x() + box().size.x(), 800.0 - in.column);
-    s.apply(cmd::TogglePlots{});
+    s.apply(keys::show(s, ShowOption::Plots));
     EXPECT_GT(box().topLeft.x() + box().size.x(), 800.0 - in.column);  // room back
 }
 
