@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace psb::app {
 
@@ -56,51 +57,36 @@ double minArrowExtra(double spacingPixels) {
                                         : kMinArrowPixels;
 }
 
+namespace {
+
+/// Each show option's flag and its name in messages, in ShowOption's order.
+struct ShowEntry {
+    bool ViewOptions::*flag;
+    const char* name;
+};
+constexpr ShowEntry kShowEntries[] = {
+    {&ViewOptions::arrows, "Arrows"},
+    {&ViewOptions::labels, "Labels"},
+    {&ViewOptions::momentum, "Momentum view"},
+    {&ViewOptions::plots, "Plots"},
+    {&ViewOptions::speeds, "Speed distribution"},
+    {&ViewOptions::profile, "Profile"},
+    {&ViewOptions::bins, "Bin counts"},
+};
+
+const ShowEntry& entry(ShowOption option) {
+    const auto k = static_cast<std::size_t>(option);
+    return kShowEntries[k < std::size(kShowEntries) ? k : std::size(kShowEntries) - 1];
+}
+
+}  // namespace
+
 bool& ViewOptions::flag(ShowOption option) {
-    switch (option) {
-        case ShowOption::Arrows:
-            return arrows;
-        case ShowOption::Labels:
-            return labels;
-        case ShowOption::Momentum:
-            return momentum;
-        case ShowOption::Plots:
-            return plots;
-        case ShowOption::Speeds:
-            return speeds;
-        case ShowOption::Profile:
-            return profile;
-        case ShowOption::Bins:
-            break;
-    }
-    return bins;
+    return this->*entry(option).flag;
 }
 
 std::string showMessage(ShowOption option, bool on) {
-    const char* what = "Bin counts";
-    switch (option) {
-        case ShowOption::Arrows:
-            what = "Arrows";
-            break;
-        case ShowOption::Labels:
-            what = "Labels";
-            break;
-        case ShowOption::Momentum:
-            what = "Momentum view";
-            break;
-        case ShowOption::Plots:
-            what = "Plots";
-            break;
-        case ShowOption::Speeds:
-            what = "Speed distribution";
-            break;
-        case ShowOption::Profile:
-            what = "Profile";
-            break;
-        case ShowOption::Bins:
-            break;
-    }
-    return std::string(what) + (on ? " on" : " off");
+    return std::string(entry(option).name) + (on ? " on" : " off");
 }
 
 }  // namespace psb::app

@@ -129,6 +129,24 @@ TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
     EXPECT_EQ(s.world().solver().mode, StepMode::Exact);
 }
 
+TEST_F(SessionValues, EachShowOptionIsSetAndSaysWhatItSwitched) {
+    Session s = session();
+    const ShowOption all[] = {ShowOption::Arrows, ShowOption::Labels, ShowOption::Momentum,
+                              ShowOption::Plots,  ShowOption::Speeds, ShowOption::Profile,
+                              ShowOption::Bins};
+    for (const ShowOption o : all) {
+        (void)s.takeNotices();
+        const bool was = s.view().shown(o);
+        s.apply(cmd::SetShow{o, !was});
+        EXPECT_EQ(s.view().shown(o), !was);
+        EXPECT_TRUE(said(s.takeNotices(), showMessage(o, !was))) << showMessage(o, !was);
+        s.apply(cmd::SetShow{o, !was});  // already so: nothing changes, nothing is said
+        EXPECT_TRUE(s.takeNotices().empty());
+    }
+    EXPECT_TRUE(s.profileShown() == s.view().profile);
+    EXPECT_EQ(showMessage(ShowOption::Speeds, true), "Speed distribution on");
+}
+
 TEST_F(SessionValues, TimeSpeedIsSetWithinItsLimits) {
     Session s = session();
     s.apply(cmd::SetTimeScale{0.25});
