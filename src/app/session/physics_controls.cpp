@@ -8,8 +8,9 @@ namespace psb::app {
 
 double steppedRestitution(double e, int direction) {
     // Snap to the grid, so that twenty presses from 1 land on 0 exactly, not on 1e-16.
-    const double steps = std::round(e / kRestitutionStep) + (direction < 0 ? -1.0 : 1.0);
-    return std::clamp(steps * kRestitutionStep, 0.0, 1.0);
+    const double n = kRestitutionSteps;
+    const double steps = std::round(e * n) + (direction < 0 ? -1.0 : 1.0);
+    return std::clamp(steps / n, 0.0, 1.0);
 }
 
 cmd::SetRestitution restitutionStep(double e, int direction) {

@@ -18,14 +18,16 @@
 
 namespace psb::app {
 
-/// Change per E / Shift+E press.
-inline constexpr double kRestitutionStep = 0.05;
+/// E / Shift+E presses from 0 to 1 (a step of 0.05).
+inline constexpr int kRestitutionSteps = 20;
 inline constexpr double kEarthGravity = 9.81;  ///< m/s²
 /// Substeps per dt the mode key uses when it switches to substep mode from a solver with fewer
 /// than two (one substep would be the discrete mode again).
 inline constexpr int kAppSubsteps = 4;
 
-/// `e` moved one step (direction -1 or +1) on the 0.05 grid, within [0, 1].
+/// `e` moved one step (direction -1 or +1) on the 0.05 grid, within [0, 1]: the double
+/// nearest the grid's decimal (0.7, not 14 × 0.05 = 0.7000000000000001, which a saved scene
+/// would show).
 [[nodiscard]] double steppedRestitution(double e, int direction);
 /// What E (-1) and Shift+E (+1) send for a world of restitution `e`.
 [[nodiscard]] cmd::SetRestitution restitutionStep(double e, int direction);

@@ -46,6 +46,18 @@ std::string grouped(double v) {
     return (v < 0.0 ? "-" : "") + out;
 }
 
+/// `v` as three significant figures times a power of ten: "1.03 × 10^24".
+std::string scientific(double v) {
+    int power = static_cast<int>(std::floor(std::log10(std::abs(v))));
+    // In two factors: 10^-323 alone is below the smallest double.
+    double mantissa = v / std::pow(10.0, power / 2) / std::pow(10.0, power - power / 2);
+    if (std::abs(std::stod(threeFigures(mantissa))) >= 10.0) {  // 9.996 rounds to 10.0
+        ++power;
+        mantissa /= 10.0;
+    }
+    return threeFigures(mantissa) + " \u00d7 10^" + std::to_string(power);
+}
+
 }  // namespace
 
 std::string quantity(double value, const std::string& unit, bool prefix) {
@@ -55,8 +67,13 @@ std::string quantity(double value, const std::string& unit, bool prefix) {
     if (value == 0.0) return "0" + u;
     const double a = std::abs(value);
     if (!prefix) {
+        // Grouped digits up to a billion; beyond, or below a millionth, a power of ten (no
+        // 31-digit number, no row of zeros).
+        if (a >= 1e9 || a < 1e-6) return scientific(value) + u;
         return (a >= 1000.0 ? grouped(value) : threeFigures(value)) + u;
     }
+    // Past the prefixes (exa, atto): a power of ten, not "1030000 EJ".
+    if (a >= 999.5e18 || a < 0.9995e-18) return scientific(value) + u;
     static const char* const big[] = {"", "k", "M", "G", "T", "P", "E"};
     static const char* const small[] = {"", "m", "\u00b5", "n", "p", "f", "a"};
     int k = static_cast<int>(std::floor(std::log10(a) / 3.0));

@@ -8,10 +8,12 @@
 
 namespace psb::app {
 
-/// `value` in `unit` with an SI prefix (k, M, G, T; m, µ, n) chosen so the number
-/// is in [1, 1000), three significant figures; zero is "0 unit". For units a prefix would
-/// garble ("kg m/s", "m/s^2") pass `prefix` false: the digits are then grouped by thousands
-/// ("12 300 kg m/s") and small values keep three significant figures ("0.00123 kg m/s").
+/// `value` in `unit` with an SI prefix (k, M, G, T, P, E; m, µ, n, p, f, a) chosen so the
+/// number is in [1, 1000), three significant figures; zero is "0 unit"; beyond the prefixes a
+/// power of ten ("1.03 × 10^24 J"). For units a prefix would garble ("kg m/s", "m/s^2") pass
+/// `prefix` false: the digits are then grouped by thousands ("12 300 kg m/s"), small values
+/// keep three significant figures ("0.00123 kg m/s"), and from a billion up or below a
+/// millionth it is a power of ten.
 [[nodiscard]] std::string quantity(double value, const std::string& unit, bool prefix = true);
 
 /// A relative change (|change| / reference) in words: "kept to 1 part in 10^14" (the power

@@ -34,6 +34,16 @@ TEST(Restitution, StepsByFiveHundredthsWithinZeroAndOne) {
     EXPECT_DOUBLE_EQ(restitutionStep(0.93, -1).value, 0.9);
 }
 
+TEST(Restitution, EveryStepIsTheDecimalAFileWouldShow) {
+    // A teacher's saved scene read "restitution": 0.7000000000000001 after E presses.
+    double e = 1.0;
+    for (int k = 20; k > 0; --k) {
+        e = steppedRestitution(e, -1);
+        EXPECT_EQ(e, (k - 1) / 20.0);  // the double nearest the decimal, which prints as it
+    }
+    EXPECT_EQ(steppedRestitution(0.65, +1), 0.7);
+}
+
 TEST(Restitution, TwentyPressesDownFromOneLandExactlyOnZero) {
     Session s = sessionOf(World{});
     for (int k = 0; k < 20; ++k)

@@ -35,6 +35,20 @@ TEST(Units, NoExponentNotationAndNonFiniteValuesInWords) {
     EXPECT_EQ(quantity(-std::numeric_limits<double>::infinity(), "J"), "-infinite");
 }
 
+TEST(Units, PastThePrefixesAPowerOfTenNotARowOfDigits) {
+    // A teacher saw "1030000000000 EJ" and a 31-digit momentum.
+    EXPECT_EQ(quantity(1.03e30, "J"), "1.03 \u00d7 10^30 J");
+    EXPECT_EQ(quantity(999.9e18, "J"), "1.00 \u00d7 10^21 J");
+    EXPECT_EQ(quantity(998e18, "J"), "998 EJ");
+    EXPECT_EQ(quantity(1.2e-20, "m"), "1.20 \u00d7 10^-20 m");
+    EXPECT_EQ(quantity(-1.234e31, "kg m/s", false), "-1.23 \u00d7 10^31 kg m/s");
+    EXPECT_EQ(quantity(9.996e30, "kg m/s", false), "1.00 \u00d7 10^31 kg m/s");
+    EXPECT_EQ(quantity(999e6, "kg m/s", false), "999 000 000 kg m/s");
+    EXPECT_EQ(quantity(2.5e-7, "kg m/s", false), "2.50 \u00d7 10^-7 kg m/s");
+    EXPECT_EQ(quantity(5e-324, "J"), "4.94 \u00d7 10^-324 J");  // the smallest double
+    EXPECT_EQ(quantity(-1.7976931348623157e308, "kg m/s", false), "-1.80 \u00d7 10^308 kg m/s");
+}
+
 TEST(Units, AccuracyInWords) {
     EXPECT_EQ(keptWords(3e-14), "kept to 1 part in 10^13");
     EXPECT_EQ(keptWords(-2.5e-4), "kept to 1 part in 10^3");
