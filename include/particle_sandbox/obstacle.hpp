@@ -33,6 +33,16 @@ struct Obstacle {
     [[nodiscard]] bool isPeg() const { return kind == Kind::Peg; }
     /// A segment's full thickness, 2·radius.
     [[nodiscard]] double thickness() const { return 2.0 * radius; }
+    /// Whether a disc of `discRadius` metres centred at `p` keeps clear of the obstacle
+    /// (touching counts as clear).
+    [[nodiscard]] bool clears(const Vec2& p, double discRadius) const {
+        const Vec2 along = b - a;
+        const double length2 = along.squaredNorm();
+        double t = length2 > 0.0 ? (p - a).dot(along) / length2 : 0.0;
+        t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        const double reach = discRadius + radius;
+        return (p - (a + t * along)).squaredNorm() >= reach * reach;
+    }
 
     bool operator==(const Obstacle&) const = default;
 };

@@ -51,16 +51,7 @@ bool insideBox(const World& world, const Vec2& p, double radius) {
            p.y() <= d.height - radius;
 }
 
-/// Whether a disc of `radius` at `p` stays clear of the obstacle: its centre at least the two
-/// radii from the obstacle's core (a peg's centre, or the nearest point of a segment's line).
-bool clearOf(const Obstacle& o, const Vec2& p, double radius) {
-    const Vec2 along = o.b - o.a;
-    const double length2 = along.squaredNorm();
-    const double t = length2 > 0.0 ? std::clamp((p - o.a).dot(along) / length2, 0.0, 1.0) : 0.0;
-    const double reach = radius + o.radius;
-    return (p - (o.a + t * along)).squaredNorm() >= reach * reach;
-}
-
+/// Whether a disc of `radius` at `p` overlaps none of the discs `near` and no obstacle.
 bool isFree(const std::vector<Disc>& near, const Obstacles& obstacles, const Vec2& p,
             double radius) {
     for (const Disc& d : near) {
@@ -70,7 +61,7 @@ bool isFree(const std::vector<Disc>& near, const Obstacles& obstacles, const Vec
     // A new particle inside a peg or a wall would be stuck there, impaled (the exact mode keeps
     // a placed overlap as it was placed).
     for (const Obstacle& o : obstacles)
-        if (!clearOf(o, p, radius)) return false;
+        if (!o.clears(p, radius)) return false;
     return true;
 }
 

@@ -27,6 +27,20 @@ std::string describe(const Obstacle& o) {
     return buf;
 }
 
+/// Why `o` may not go where it is: it would overlap a particle (a peg placed on one, a wall drawn
+/// or moved through one), which would then pass out through it as the steps push them apart.
+/// Empty when it keeps clear of every particle.
+std::string overlapRefusal(const World& world, const Obstacle& o, const char* doing) {
+    const ParticleArrays& p = world.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (!o.clears(Vec2(p.x[i], p.y[i]), p.radius[i])) {
+            return std::string(doing) + ": the " + obstacleNoun(o) +
+                   " would overlap a particle; put it where no particle is";
+        }
+    }
+    return {};
+}
+
 }  // namespace
 
 std::optional<Obstacle> Session::obstaclePreview() const {
@@ -57,6 +71,11 @@ void Session::obstacleRelease() {
         pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
     if (!p.obstacle) {
         if (!p.refusal.empty()) say(p.refusal, Notice::Level::Warning);
+        return;
+    }
+    if (const std::string why = overlapRefusal(doc_.world, *p.obstacle, "Not placed");
+        !why.empty()) {
+        say(why, Notice::Level::Warning);
         return;
     }
     try {
@@ -90,6 +109,11 @@ bool Session::obstacleMoveRelease() {
         return true;
     }
     if (index >= doc_.world.obstacles().size()) return true;
+    if (const std::string why = overlapRefusal(doc_.world, *p.obstacle, "Not moved");
+        !why.empty()) {
+        say(why, Notice::Level::Warning);
+        return true;
+    }
     Obstacles moved = doc_.world.obstacles();
     moved[index] = *p.obstacle;
     try {

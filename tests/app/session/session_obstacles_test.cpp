@@ -140,11 +140,35 @@ TEST_F(SessionObstacles, InvalidGesturesAndSizesAreRefusedWithANoticeAndNoUndoEn
     EXPECT_TRUE(said(s.takeNotices(), "No obstacle 3 to remove (there are 0)"));
 }
 
-TEST_F(SessionObstacles, AWallDrawnOverAParticleIsAllowed) {
+TEST_F(SessionObstacles, AnObstacleOverAParticleIsRefusedWithAMessage) {
+    // A teacher placed a peg on a particle; run, the particle passed out through the peg.
     Session s = session();
+    (void)s.takeNotices();
+    s.apply(cmd::SetTool{cmd::Tool::Peg});
+    click(s, Vec2(6.1, 6.0));  // on the particle at (6, 6)
+    EXPECT_TRUE(said(s.takeNotices(),
+                     "Not placed: the peg would overlap a particle; put it where no particle is"));
+    EXPECT_TRUE(s.world().obstacles().empty());
     s.apply(cmd::SetTool{cmd::Tool::Wall});
-    drag(s, Vec2(5.0, 6.0), Vec2(7.0, 6.0));  // through the particle at (6, 6)
-    EXPECT_EQ(s.world().obstacles().size(), 1u);
+    drag(s, Vec2(5.0, 6.0), Vec2(6.9, 6.0));  // through it
+    EXPECT_TRUE(said(s.takeNotices(),
+                     "Not placed: the wall would overlap a particle; put it where no particle is"));
+    EXPECT_TRUE(s.world().obstacles().empty());
+    EXPECT_FALSE(s.canUndo());
+    // Beside it, clear by a hair: placed.
+    const double clear = 0.2 + 0.5 * s.obstacleSizes().wallThickness + 1e-6;
+    drag(s, Vec2(5.0, 6.0 - clear), Vec2(6.9, 6.0 - clear));
+    ASSERT_EQ(s.world().obstacles().size(), 1u);
+    // Moved onto it: refused, nothing moved, no new undo entry.
+    const Obstacle wall = s.world().obstacles()[0];
+    const std::size_t entries = s.undoHistory().undoCount();
+    s.apply(cmd::SetTool{cmd::Tool::Select});
+    (void)s.takeNotices();
+    drag(s, Vec2(5.5, 6.0 - clear), Vec2(5.5, 6.0));
+    EXPECT_TRUE(said(s.takeNotices(),
+                     "Not moved: the wall would overlap a particle; put it where no particle is"));
+    EXPECT_EQ(s.world().obstacles()[0], wall);
+    EXPECT_EQ(s.undoHistory().undoCount(), entries);
     EXPECT_EQ(s.world().size(), 1u);
 }
 
