@@ -44,13 +44,13 @@ void accumulate(StepProfile& sum, const StepProfile& p) {
     sum.total += p.total;
 }
 
-/// Warms `w` up, then times one step per benchmark iteration and reports the profile.
+/// Warms `w` up, then times one step of kDt per benchmark iteration and reports the profile.
 void timeSteps(benchmark::State& state, World& w, std::size_t n) {
     for (int k = 0; k < kWarmup; ++k)
-        w.step(w.solver().dt);
+        w.step(kDt);
     StepProfile sum;
     for (auto _ : state) {
-        w.step(w.solver().dt);
+        w.step(kDt);
         accumulate(sum, w.profile());
     }
     reportProfile(state, sum, w, n);
@@ -97,7 +97,7 @@ void spread(benchmark::State& state, BroadPhaseKind kind, double span, std::size
     }
     WorldDef def;
     def.width = def.height = std::sqrt(area / kPackingFraction);
-    World w(def, {.dt = kDt, .broadphase = kind});
+    World w(def, {.broadphase = kind});
     w.setThreads(1);
     w.reserve(n);
     for (const double r : radius) {

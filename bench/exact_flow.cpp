@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
     scene.solver.mode = mode;
     psb::World w = psb::makeWorld(scene);
     // The exact mode in the app's frames; the others in the steps their accuracy needs.
-    const double dt = mode == psb::StepMode::Exact ? 1.0 / 60.0 : w.solver().dt;
+    const double dt = mode == psb::StepMode::Exact ? 1.0 / 60.0 : scene.dt;
     const auto frames = static_cast<long>(duration / dt + 0.5);
     const auto perRow = std::max(1L, static_cast<long>(every / dt + 0.5));
     std::printf(

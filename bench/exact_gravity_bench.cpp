@@ -54,7 +54,7 @@ psb::World settledPile(int n, psb::StepMode mode) {
     def.gravity = {0.0, 9.81};
     def.restitution = 0.5;
     def.friction = 0.3;
-    psb::World w(def, {.mode = mode, .dt = 1.0 / 60.0});
+    psb::World w(def, {.mode = mode});
     for (int k = 0; k < n; ++k) {
         const int row = k / perRow, col = k % perRow;
         w.add(

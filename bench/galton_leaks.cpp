@@ -69,7 +69,7 @@ struct Result {
 
 Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double duration) {
     psb::Scene s = scene;
-    s.solver.dt = dt;
+    s.dt = dt;
     s.solver.mode = mode;
     psb::World w = psb::makeWorld(s);
     w.setThreads(1);
@@ -96,7 +96,7 @@ Result run(const psb::Scene& scene, psb::StepMode mode, double dt, double durati
     double stepSeconds = 0.0;
     for (std::uint64_t k = 0; k < steps; ++k) {
         const auto t0 = std::chrono::steady_clock::now();
-        w.step(w.solver().dt);
+        w.step(dt);
         stepSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         // Balls a dropper released in this step start where they appeared.
         if (w.size() > ids.size()) {

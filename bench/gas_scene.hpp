@@ -51,7 +51,7 @@ inline GasState makeGas(std::size_t n, std::uint64_t seed = 42) {
 
 inline World makeGasWorld(std::size_t n, BroadPhaseKind broadphase, int threads) {
     Scene s = gasScene(n);
-    s.solver = {.mode = StepMode::Discrete, .dt = kDt, .broadphase = broadphase};
+    s.solver = {.mode = StepMode::Discrete, .broadphase = broadphase};
     World w(s.world, s.solver);
     w.setThreads(threads);
     w.reserve(n);

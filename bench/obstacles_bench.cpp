@@ -62,11 +62,11 @@ void obstacles(benchmark::State& state, std::size_t count, std::size_t n) {
     World w = makeGasWorld(n, BroadPhaseKind::Auto, 1);
     w.setObstacles(randomObstacles(count, w.def().width, 11));
     for (int k = 0; k < 20; ++k)
-        w.step(w.solver().dt);
+        w.step(kDt);
     w.resetCounters();
     double stageMs = 0.0;
     for (auto _ : state) {
-        w.step(w.solver().dt);
+        w.step(kDt);
         stageMs += w.profile().ms("obstacles");
     }
     const double steps = static_cast<double>(state.iterations());
@@ -78,14 +78,15 @@ void obstacles(benchmark::State& state, std::size_t count, std::size_t n) {
 
 void obstacleFrames(benchmark::State& state, std::size_t count, std::size_t n, StepMode mode) {
     World w = makeGasWorld(n, BroadPhaseKind::Auto, 1);
-    w.setSolver({.mode = mode, .dt = 1.0 / 60.0, .substeps = mode == StepMode::Substep ? 4 : 1});
+    const double frame = 1.0 / 60.0;
+    w.setSolver({.mode = mode, .substeps = mode == StepMode::Substep ? 4 : 1});
     w.setObstacles(randomObstacles(count, w.def().width, 11));
     for (int f = 0; f < 60; ++f)
-        w.step(w.solver().dt);
+        w.step(frame);
     w.resetCounters();
     for (auto _ : state) {
         for (int f = 0; f < 60; ++f)
-            w.step(w.solver().dt);
+            w.step(frame);
     }
     const double frames = 60.0 * static_cast<double>(state.iterations());
     state.SetItemsProcessed(state.iterations() * 60 * static_cast<std::int64_t>(n));

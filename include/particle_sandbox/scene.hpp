@@ -27,6 +27,10 @@ struct Scene {
     std::string description;
     WorldDef world;
     SolverSettings solver;
+    /// The frame length, seconds, finite and > 0: how far each World::step of this scene goes,
+    /// the `dt` the app and particle-sim pass to it (`world.step(scene.dt)`). The file keeps it
+    /// in its solver block, `"solver": {"dt": ...}`; the world keeps no copy.
+    double dt = 0.01;
     std::vector<ParticleDef> particles;
     /// Accept overlapping particles when loading. A file written by hand should not overlap, so
     /// the loader refuses overlaps by default; a snapshot of a running world may hold the small
@@ -82,14 +86,16 @@ class SaveError : public std::runtime_error {
 void saveScene(const Scene& scene, const std::filesystem::path& path);
 
 /// A world built from a scene (its box, laws, solver settings, particles and droppers),
-/// particles added in the scene's order. Throws InvalidArgument for a scene the world refuses
-/// (parseScene has already checked everything a file can get wrong).
+/// particles added in the scene's order. The scene's frame length (Scene::dt) is not the
+/// world's: step the world by it. Throws InvalidArgument for a scene the world refuses, or a
+/// dt not finite and > 0 (parseScene has already checked everything a file can get wrong).
 [[nodiscard]] World makeWorld(const Scene& scene);
 
 /// A scene describing the world's current state: its box, laws, solver settings, particles
-/// in storage order and droppers (a held particle is saved as a free one). Sets allowOverlaps when
+/// in storage order and droppers (a held particle is saved as a free one), with the frame
+/// length `dt` the world is stepped by (the world does not know it). Sets allowOverlaps when
 /// some particles overlap, so that the snapshot always loads back.
-[[nodiscard]] Scene sceneFromWorld(const World& world, std::string name = {},
+[[nodiscard]] Scene sceneFromWorld(const World& world, double dt, std::string name = {},
                                    std::string description = {});
 
 }  // namespace psb

@@ -25,12 +25,10 @@ enum class BroadPhaseKind {
 /// Most substeps per step: beyond this one step(dt) would take minutes, not milliseconds.
 inline constexpr int kMaxSubsteps = 100'000;
 
-/// The solver block of a scene.
+/// How a world steps: the solver block of a scene without its frame length (Scene::dt, which
+/// World::step takes as its argument).
 struct SolverSettings {
     StepMode mode = StepMode::Discrete;
-    /// The scene's frame length, seconds, finite and > 0: what the app and particle-sim pass
-    /// to World::step. World itself takes the step length only as step()'s argument.
-    double dt = 0.01;
     int substeps = 1;  ///< in [1, kMaxSubsteps]; used by StepMode::Substep
     BroadPhaseKind broadphase = BroadPhaseKind::Auto;
 };

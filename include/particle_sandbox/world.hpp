@@ -64,8 +64,8 @@ class World {
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
-    /// Throws InvalidArgument for dt not finite and > 0, substeps outside [1, kMaxSubsteps], or a
-    /// mode or broadphase this build does not have. Every mode takes gravity and obstacles.
+    /// Throws InvalidArgument for substeps outside [1, kMaxSubsteps], or a mode or broadphase
+    /// this build does not have. Every mode takes gravity and obstacles.
     void setSolver(const SolverSettings& solver);
 
     // --- obstacles ---------------------------------------------------------------------------
@@ -136,9 +136,9 @@ class World {
     /// between steps (particles, setters, box) is picked up by the next step.
     ///
     /// The argument is the one source of truth for how far a step goes: the world keeps no step
-    /// length of its own. SolverSettings::dt is the scene's frame length, the dt its driver (the
-    /// app, particle-sim) passes here, `world.step(world.solver().dt)`; World validates it with
-    /// the rest of the settings and never reads it otherwise.
+    /// length of its own. The frame length belongs to the scene (Scene::dt, the file's
+    /// `solver.dt`); its driver passes it here: particle-sim the scene's (or --dt), the app's
+    /// session the one it keeps in its SceneMeta (src/app/session/document.hpp).
     void step(double dt);
     /// Simulated seconds since the world was made.
     [[nodiscard]] double time() const { return time_; }

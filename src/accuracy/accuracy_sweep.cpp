@@ -58,7 +58,7 @@ RunTotals runMeasured(const Scene& scene, StepMode mode, double dt, int substeps
     const int k = mode == StepMode::Substep ? substeps : 1;
     const double h = dt / k;
     s.solver.mode = exact ? StepMode::Exact : StepMode::Discrete;
-    s.solver.dt = h;
+    s.dt = h;
     s.solver.substeps = 1;
     World world = makeWorld(s);
 
@@ -108,7 +108,7 @@ std::vector<AccuracyRow> runSweep(const std::vector<AccuracyScene>& scenes, cons
     std::vector<AccuracyRow> rows;
     for (const AccuracyScene& as : scenes) {
         const Scene scene = loadScene(as.file);
-        const double frame = scene.solver.dt;
+        const double frame = scene.dt;
         const double duration = as.duration * plan.durationScale;
         auto measure = [&](StepMode mode, double dt, int k) {
             RunTotals t = runMeasured(scene, mode, dt, k, duration);

@@ -24,7 +24,7 @@ namespace psb::cli {
 /// A standard scene of the sweep: a scene file and how long to run it.
 struct AccuracyScene {
     std::string name;            ///< short name for tables ("dilute-gas")
-    std::filesystem::path file;  ///< scene file; its solver dt is the frame dt
+    std::filesystem::path file;  ///< scene file; its dt (Scene::dt) is the frame dt
     double duration = 1.0;       ///< simulated seconds
 };
 

@@ -47,8 +47,10 @@ App::App(const AppOptions& options) : options_(options) {
     World world;
     SceneMeta meta;
     if (options_.benchParticles > 0) {
-        world = benchmarkWorld(options_.benchParticles);
+        const Scene scene = benchmarkScene(options_.benchParticles);
+        world = makeWorld(scene);
         meta.name = "benchmark";
+        meta.dt = scene.dt;
     } else {
         const Scene scene = psb::app::openScene(options_.scene);
         world = makeWorld(scene);
@@ -277,10 +279,10 @@ void App::logControls() {
 }
 
 int App::runBenchmark() {
-    // The normal frame, one step of the world's dt each, no frame limiter, vsync as configured.
+    // The normal frame, one step of the scene's dt each, no frame limiter, vsync as configured.
     if (session_->paused()) apply(cmd::TogglePause{});
     (void)session_->takeNotices();
-    const double dt = world().solver().dt;
+    const double dt = session_->meta().dt;
     double step = 0.0, draw = 0.0;
     const int warmup = std::min(10, options_.benchFrames / 10);
     for (int f = 0; f < warmup + options_.benchFrames && session_->running(); ++f) {

@@ -4,7 +4,7 @@
 //   while running:
 //     handleEvents()   SDL events -> Commands (platform/) -> Session::apply, the one place
 //                      where anything changes
-//     update(dt_real)  Session::update: fixed steps of the world's dt driven by an accumulator
+//     update(dt_real)  Session::update: fixed steps of the scene's dt driven by an accumulator
 //                      (scaled by the time speed), the held particle placed at the hand first
 //     render()         the control panel (gui/, Dear ImGui) reads the session and
 //                      returns Commands, applied like the keys'; view/buildFrame(): a read-only
@@ -21,10 +21,10 @@
 //
 // Session knows no SDL and is tested without a window; a command is the only way to change it,
 // whether it comes from a key, the mouse or a test. World and screen coordinates meet only in the
-// session's Camera. --bench runs this same frame (one step of the world's dt per frame) and
+// session's Camera. --bench runs this same frame (one step of the scene's dt per frame) and
 // prints what it cost.
 //
-// The world advances in steps of its solver's dt whatever the frame rate; when a frame is so
+// The world advances in steps of the scene's dt whatever the frame rate; when a frame is so
 // slow that catching up would take longer than the frame itself, the backlog is dropped (the
 // simulation slows down instead of spiralling, and the HUD shows the speed reached). While
 // paused the loop sleeps in SDL_WaitEventTimeout, so an idle paused window costs no CPU, and

@@ -41,7 +41,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
             writeFileAtomically(*options.timeseries, timeSeriesCsv(series, report.gravity));
         }
         if (options.save) {
-            Scene saved = sceneFromWorld(world, scene.name, scene.description);
+            // The frame length the run stepped by (--dt's, if given) goes with the state.
+            Scene saved = sceneFromWorld(world, report.dt, scene.name, scene.description);
             saved.bins = scene.bins;
             saveScene(saved, *options.save);
         }

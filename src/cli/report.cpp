@@ -8,7 +8,7 @@ std::string reportJson(const RunReport& r) {
     // nlohmann::ordered_json keeps the fields in the order a reader expects them.
     nlohmann::ordered_json j;
     j["mode"] = std::string(toString(r.solver.mode));
-    j["dt"] = r.solver.dt;
+    j["dt"] = r.dt;
     j["substeps"] = r.solver.substeps;
     j["broadphase"] = std::string(toString(r.broadphaseUsed));
     j["broadphase_requested"] = std::string(toString(r.solver.broadphase));

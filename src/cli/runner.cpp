@@ -14,7 +14,6 @@ namespace psb::cli {
 SolverSettings effectiveSolver(const Scene& scene, const RunOptions& o) {
     SolverSettings s = scene.solver;
     if (o.mode) s.mode = *o.mode;
-    if (o.dt) s.dt = *o.dt;
     if (o.substeps) s.substeps = *o.substeps;
     if (o.broadphase) s.broadphase = *o.broadphase;
     // World's own reasons, each named after the option that caused it: the mode (also for a
@@ -37,6 +36,10 @@ SolverSettings effectiveSolver(const Scene& scene, const RunOptions& o) {
     return s;
 }
 
+double effectiveDt(const Scene& scene, const RunOptions& o) {
+    return o.dt ? *o.dt : scene.dt;
+}
+
 std::uint64_t countEscaped(const World& world) {
     const ParticleArrays& p = world.particles();
     const double w = world.def().width, h = world.def().height;
@@ -52,14 +55,16 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
                    const ProgressFn& progress, TimeSeries* series) {
     Scene s = scene;
     s.solver = effectiveSolver(scene, options);
+    s.dt = effectiveDt(scene, options);
     world = makeWorld(s);
     world.setThreads(options.threads);
 
     RunReport r;
     r.solver = s.solver;
+    r.dt = s.dt;
     r.threads = options.threads;
     r.particles = world.size();
-    r.steps = stepsFor(options.duration, s.solver.dt);
+    r.steps = stepsFor(options.duration, s.dt);
     r.kineticEnergyInitial = kineticEnergy(world);
     r.gravity = !world.def().gravity.isZero();
     r.potentialEnergyInitial = potentialEnergy(world);
@@ -83,7 +88,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
 
     const auto start = std::chrono::steady_clock::now();
     for (std::uint64_t k = 0; k < r.steps; ++k) {
-        world.step(s.solver.dt);
+        world.step(s.dt);
         if (series != nullptr && ((k + 1) % every == 0 || k + 1 == r.steps)) series->record(world);
         if (progress) progress(k + 1, r.steps);
     }

@@ -18,6 +18,7 @@ namespace psb::cli {
 /// What a run did: the content of the JSON report.
 struct RunReport {
     SolverSettings solver;          ///< the settings used (scene overridden by options)
+    double dt = 0.0;                ///< seconds per step: the scene's frame length, or --dt
     BroadPhaseKind broadphaseUsed;  ///< what `auto` resolved to
     int threads = 1;                ///< as requested
     std::uint64_t particles = 0;
@@ -48,14 +49,18 @@ struct RunReport {
     std::vector<DropperCount> droppers;
 };
 
-/// The scene's solver block with the command line's overrides applied. Throws UsageError when
-/// the world refuses the result (e.g. a mode this build lacks), naming the option.
+/// The scene's solver settings with the command line's overrides applied. Throws UsageError
+/// when the world refuses the result (e.g. a mode this build lacks), naming the option.
 [[nodiscard]] SolverSettings effectiveSolver(const Scene& scene, const RunOptions& options);
+
+/// The frame length the run steps by: --dt when given, else the scene's (Scene::dt).
+[[nodiscard]] double effectiveDt(const Scene& scene, const RunOptions& options);
 
 /// Called after each step with (steps done, steps in all).
 using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
 
-/// Runs `scene` for stepsFor(options.duration, dt) steps of dt and returns the report. `world`
+/// Runs `scene` for stepsFor(options.duration, dt) steps of dt = effectiveDt(scene, options)
+/// and returns the report. `world`
 /// receives the final state (for --save). When `series` is given it is replaced by one sized
 /// for the whole run and receives the initial state, every options.timeseriesEvery-th step and
 /// the final state; a run that would need more than kMaxTimeSeriesRows samples throws

@@ -19,7 +19,7 @@ Scene defaultScene() {
     s.world.width = 7.0;  // the original's 700-pixel window at 1 px = 1 cm
     s.world.height = 7.0;
     s.solver.mode = StepMode::Discrete;
-    s.solver.dt = 1.0 / 60.0;  // the original's frame
+    s.dt = 1.0 / 60.0;  // the original's frame
     s.solver.substeps = 1;
     s.solver.broadphase = BroadPhaseKind::Auto;
     struct Seed {

@@ -266,13 +266,15 @@ auto readName(const Reader& r, const json& j, const std::string& path, const cha
     return *value;
 }
 
-void readSolver(const Reader& r, const json& j, SolverSettings& s) {
+/// The solver block: the settings, and the scene's frame length `dt` (kept in the file's solver
+/// block, by the scene in memory).
+void readSolver(const Reader& r, const json& j, SolverSettings& s, double& dt) {
     r.object(j, "solver", {"mode", "dt", "substeps", "broadphase"});
     if (const json* v = Reader::find(j, "mode")) {
         s.mode = readName(r, *v, "solver.mode", "mode", &parseStepMode,
                           {"discrete", "substep", "exact"});
     }
-    if (const json* v = Reader::find(j, "dt")) s.dt = r.positive(*v, "solver.dt");
+    if (const json* v = Reader::find(j, "dt")) dt = r.positive(*v, "solver.dt");
     if (const json* v = Reader::find(j, "substeps")) {
         s.substeps = static_cast<int>(r.integer(*v, "solver.substeps", 1, psb::kMaxSubsteps));
     }
@@ -714,7 +716,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
         s.allowOverlaps = r.boolean(*v, "allow_overlaps");
     }
     if (const json* v = Reader::find(root, "world")) readWorld(r, *v, s.world);
-    if (const json* v = Reader::find(root, "solver")) readSolver(r, *v, s.solver);
+    if (const json* v = Reader::find(root, "solver")) readSolver(r, *v, s.solver, s.dt);
     if (const json* v = Reader::find(root, "obstacles")) {
         readObstacles(r, *v, s.version, s.world);
     }

@@ -3,10 +3,13 @@
 #include <particle_sandbox/scene.hpp>
 
 #include "overlap_check.hpp"
+#include "validate.hpp"
 
 namespace psb {
 
 World makeWorld(const Scene& scene) {
+    // Not the world's to keep, but a scene that cannot be stepped is refused here, as the rest.
+    detail::requirePositive(scene.dt, "makeWorld", "dt");
     World world(scene.world, scene.solver);
     for (const ParticleDef& d : scene.particles)
         world.add(d);
@@ -14,12 +17,13 @@ World makeWorld(const Scene& scene) {
     return world;
 }
 
-Scene sceneFromWorld(const World& world, std::string name, std::string description) {
+Scene sceneFromWorld(const World& world, double dt, std::string name, std::string description) {
     Scene s;
     s.name = std::move(name);
     s.description = std::move(description);
     s.world = world.def();
     s.solver = world.solver();
+    s.dt = dt;
     s.droppers = world.droppers();
     const ParticleArrays& p = world.particles();
     s.particles.reserve(p.size());

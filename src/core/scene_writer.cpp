@@ -138,7 +138,7 @@ std::string serializeScene(const Scene& s) {
     out += ",\n  \"solver\": {\"mode\": \"";
     out += toString(v.mode);
     out += "\", \"dt\": ";
-    appendNumber(out, v.dt, "solver.dt");
+    appendNumber(out, s.dt, "solver.dt");
     out += ", \"substeps\": " + std::to_string(v.substeps) + ", \"broadphase\": \"";
     out += toString(v.broadphase);
     out += "\"}";

@@ -45,7 +45,6 @@ std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& 
     if (!std::isfinite(def.friction) || def.friction < 0.0) {
         p.add("friction", "must be finite and >= 0 " + detail::got(def.friction));
     }
-    p.positive("dt", s.dt);
     if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
         p.add("substeps", "must be in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
                               std::to_string(s.substeps) + ")");

@@ -102,7 +102,7 @@ TEST(Runner, OptionsOverrideTheScenesSolverBlock) {
     o.threads = 2;
     const RunReport r = run(R"({"version": 1, "solver": {"dt": 0.5}})", 1.0, o);
     EXPECT_EQ(r.solver.mode, StepMode::Substep);
-    EXPECT_EQ(r.solver.dt, 0.125);
+    EXPECT_EQ(r.dt, 0.125);
     EXPECT_EQ(r.solver.substeps, 3);
     EXPECT_EQ(r.broadphaseUsed, BroadPhaseKind::AllPairs);
     EXPECT_EQ(r.threads, 2);

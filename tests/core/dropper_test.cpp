@@ -23,7 +23,7 @@ Dropper spout(std::uint64_t balls, double interval) {
 
 World box(StepMode mode = StepMode::Discrete) {
     return World(WorldDef{.width = 1.0, .height = 1.0, .gravity = {0.0, 9.81}, .restitution = 0.5},
-                 SolverSettings{.mode = mode, .dt = 0.01});
+                 SolverSettings{.mode = mode});
 }
 
 TEST(Dropper, ReleasesOneBallEveryIntervalAsTheDropperSays) {

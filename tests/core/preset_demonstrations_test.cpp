@@ -27,11 +27,12 @@ namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(PSB_ASSETS_DIR) / "scenes";
 
-/// The preset, stepped in `mode` (nullopt: the one it opens in) with its own dt and substeps.
-World presetIn(const char* file, std::optional<StepMode> mode = std::nullopt) {
+/// The preset, to be stepped in `mode` (nullopt: the one it opens in) with its own dt and
+/// substeps.
+Scene presetIn(const char* file, std::optional<StepMode> mode = std::nullopt) {
     Scene s = loadScene(kScenes / file);
     if (mode) s.solver.mode = *mode;
-    return makeWorld(s);
+    return s;
 }
 
 std::string readFile(const std::filesystem::path& path) {
@@ -39,10 +40,11 @@ std::string readFile(const std::filesystem::path& path) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void runFor(World& w, double seconds) {
-    const long steps = std::lround(seconds / w.solver().dt);
+/// Steps `w` by `dt` (its scene's) for `seconds`.
+void runFor(World& w, double dt, double seconds) {
+    const long steps = std::lround(seconds / dt);
     for (long k = 0; k < steps; ++k)
-        w.step(w.solver().dt);
+        w.step(dt);
 }
 
 /// Grains whose centre is above the height `y` (y points down).
@@ -52,11 +54,11 @@ int above(const World& w, double y) {
         std::count_if(p.y.begin(), p.y.end(), [y](double py) { return py < y; }));
 }
 
-/// Grains above `y` every `every` seconds from t = 0 to `until`.
-std::vector<int> aboveOverTime(World& w, double y, double every, double until) {
+/// Grains above `y` every `every` seconds from t = 0 to `until`, in steps of `dt`.
+std::vector<int> aboveOverTime(World& w, double dt, double y, double every, double until) {
     std::vector<int> counts{above(w, y)};
     while (w.time() < until - 1e-9) {
-        runFor(w, every);
+        runFor(w, dt, every);
         counts.push_back(above(w, y));
     }
     return counts;
@@ -90,7 +92,7 @@ TEST(PresetDemonstrations, GaltonBoardInTheExactModeFillsItsBinsAsTheBinomialSay
     const std::uint64_t kBalls = s.droppers[0].balls;
     ASSERT_EQ(kBalls, 1000u);
     World w = makeWorld(s);
-    runFor(w, static_cast<double>(kBalls) * s.droppers[0].interval + 3.0);
+    runFor(w, s.dt, static_cast<double>(kBalls) * s.droppers[0].interval + 3.0);
     ASSERT_EQ(w.droppers()[0].balls, 0u);
     EXPECT_EQ(w.droppers()[0].released, kBalls);
     ASSERT_EQ(w.size(), kBalls);
@@ -115,10 +117,10 @@ TEST(PresetDemonstrations, GaltonBoardsSpoutDropsOneBallEveryIntervalInEveryMode
     for (const StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         Scene s = loadScene(kScenes / "09-galton-board.json");
         s.solver.mode = mode;
-        if (mode != StepMode::Exact) s.solver.dt = 0.001;
+        if (mode != StepMode::Exact) s.dt = 0.001;
         s.solver.substeps = mode == StepMode::Substep ? 4 : 1;
         World w = makeWorld(s);
-        runFor(w, 0.99);
+        runFor(w, s.dt, 0.99);
         EXPECT_EQ(w.size(), 20u) << toString(mode);
         EXPECT_EQ(w.droppers()[0].balls, 980u) << toString(mode);
         EXPECT_EQ(w.droppers()[0].released, 20u) << toString(mode);
@@ -141,9 +143,10 @@ void takeOutTheKeystone(World& w) {
 }
 
 TEST(PresetDemonstrations, FunnelFlowsInFitsThenAnArchHoldsUntilABallIsTakenOut) {
-    World w = presetIn("10-funnel.json");
+    const Scene s = presetIn("10-funnel.json");
+    World w = makeWorld(s);
     ASSERT_EQ(w.solver().mode, StepMode::Substep);
-    const std::vector<int> n = aboveOverTime(w, kFunnelNeck, 0.1, 3.0);  // n[i] at t = 0.1 i
+    const std::vector<int> n = aboveOverTime(w, s.dt, kFunnelNeck, 0.1, 3.0);  // n[i] at t = 0.1 i
     // Balls go through: some tens, not all.
     EXPECT_LE(n[20], 380);
     EXPECT_GE(n[20], 300);
@@ -158,18 +161,19 @@ TEST(PresetDemonstrations, FunnelFlowsInFitsThenAnArchHoldsUntilABallIsTakenOut)
     // Take out the arch's lowest ball (the one nearest the neck): the flow resumes.
     takeOutTheKeystone(w);
     const int before = above(w, kFunnelNeck);
-    runFor(w, 1.0);
+    runFor(w, s.dt, 1.0);
     EXPECT_LE(above(w, kFunnelNeck), before - 5);
     // Until a new arch holds.
-    runFor(w, 0.5);
+    runFor(w, s.dt, 0.5);
     const int again = above(w, kFunnelNeck);
-    runFor(w, 0.5);
+    runFor(w, s.dt, 0.5);
     EXPECT_EQ(above(w, kFunnelNeck), again);
 }
 
 TEST(PresetDemonstrations, FunnelInTheDiscreteModePoursOutLikeALiquid) {
-    World w = presetIn("10-funnel.json", StepMode::Discrete);
-    const std::vector<int> n = aboveOverTime(w, kFunnelNeck, 0.1, 4.5);
+    const Scene s = presetIn("10-funnel.json", StepMode::Discrete);
+    World w = makeWorld(s);
+    const std::vector<int> n = aboveOverTime(w, s.dt, kFunnelNeck, 0.1, 4.5);
     // No arch holds under the weight above it: balls go through in every 0.5 s while more
     // than 60 are left (the preset drains completely by 4.2 s; with other generate seeds an
     // arch can hold the last few dozen).
@@ -184,34 +188,35 @@ TEST(PresetDemonstrations, FunnelInTheDiscreteModePoursOutLikeALiquid) {
 TEST(PresetDemonstrations, FunnelInTheExactModeLocksAtOnceAndAgainWhenABallIsTakenOut) {
     // Rigid balls: an arch holds after a few balls, as in the substep mode with stiffer
     // contacts (at 8 substeps, generate seeds 1-5: 8-27 balls through, then locked).
-    World w = presetIn("10-funnel.json", StepMode::Exact);
-    runFor(w, 0.7);
+    const Scene s = presetIn("10-funnel.json", StepMode::Exact);
+    World w = makeWorld(s);
+    runFor(w, s.dt, 0.7);
     const int locked = above(w, kFunnelNeck);
     EXPECT_GE(locked, 370);  // a few tens of balls at most go through
-    runFor(w, 0.5);
+    runFor(w, s.dt, 0.5);
     EXPECT_EQ(above(w, kFunnelNeck), locked);
     // Taking out the keystone lets a ball or two through, and at once a new arch holds. (A
     // slider at rest against a neighbour once met it again at the same instant without end:
     // 4 million events in the first step, the event budget.)
     takeOutTheKeystone(w);
     const std::uint64_t events = w.counters().events;
-    w.step(w.solver().dt);
+    w.step(s.dt);
     ASSERT_LT(w.counters().events - events, 100000u);
-    runFor(w, 0.5);
+    runFor(w, s.dt, 0.5);
     const int relocked = above(w, kFunnelNeck);
     EXPECT_LE(relocked, locked - 2);
     EXPECT_GT(relocked, locked - 20);
-    runFor(w, 0.5);
+    runFor(w, s.dt, 0.5);
     EXPECT_EQ(above(w, kFunnelNeck), relocked);
 }
 
 /// The funnel preset with its neck widened to `neck` metres (ten balls for 8 cm).
-World funnelWithNeck(double neck, StepMode mode) {
+Scene funnelWithNeck(double neck, StepMode mode) {
     Scene s = loadScene(kScenes / "10-funnel.json");
     s.solver.mode = mode;
     s.world.obstacles[0].b.x() = 0.3 - 0.5 * neck;
     s.world.obstacles[1].b.x() = 0.3 + 0.5 * neck;
-    return makeWorld(s);
+    return s;
 }
 
 TEST(PresetDemonstrations, FunnelWithANeckTenBallsWideDrainsInTheExactModeAsInTheSubstepMode) {
@@ -220,8 +225,9 @@ TEST(PresetDemonstrations, FunnelWithANeckTenBallsWideDrainsInTheExactModeAsInTh
     // support, and a grain whose support left was never woken.
     for (StepMode mode : {StepMode::Substep, StepMode::Exact}) {
         SCOPED_TRACE(static_cast<int>(mode));
-        World w = funnelWithNeck(0.08, mode);
-        const std::vector<int> n = aboveOverTime(w, kFunnelNeck, 0.5, 2.5);
+        const Scene s = funnelWithNeck(0.08, mode);
+        World w = makeWorld(s);
+        const std::vector<int> n = aboveOverTime(w, s.dt, kFunnelNeck, 0.5, 2.5);
         EXPECT_LT(n[1], 300);  // the first 0.5 s
         EXPECT_EQ(n[5], 0);
     }
@@ -232,12 +238,14 @@ TEST(PresetDemonstrations, FunnelWithANeckTenBallsWideDrainsInTheExactModeAsInTh
 constexpr double kHourglassNeck = 0.45;
 
 TEST(PresetDemonstrations, HourglassFlowsAtANearlyConstantRateHoweverFullTheBulbIs) {
-    World w = presetIn("11-hourglass.json");
+    const Scene s = presetIn("11-hourglass.json");
+    World w = makeWorld(s);
     ASSERT_EQ(w.solver().mode, StepMode::Substep);
     // The first grains reach the neck at 0.25 s; after the first rush, from 0.4 s to 2 s the
     // bulb goes from 80 % full to nearly empty ...
-    runFor(w, 0.4);
-    const std::vector<int> n = aboveOverTime(w, kHourglassNeck, 0.4, 2.0);  // t = 0.4, 0.8, ...
+    runFor(w, s.dt, 0.4);
+    const std::vector<int> n =
+        aboveOverTime(w, s.dt, kHourglassNeck, 0.4, 2.0);  // t = 0.4, 0.8, ...
     EXPECT_GE(n[0], 300);
     EXPECT_LE(n[4], 20);
     // ... and lets through as many grains in the first 0.8 s as in the last, to 15 %, and in
@@ -252,8 +260,9 @@ TEST(PresetDemonstrations, HourglassFlowsAtANearlyConstantRateHoweverFullTheBulb
 }
 
 TEST(PresetDemonstrations, HourglassInTheDiscreteModeDrainsFastThenSlowlyLikeWater) {
-    World w = presetIn("11-hourglass.json", StepMode::Discrete);
-    const std::vector<int> n = aboveOverTime(w, kHourglassNeck, 0.1, 0.7);
+    const Scene s = presetIn("11-hourglass.json", StepMode::Discrete);
+    World w = makeWorld(s);
+    const std::vector<int> n = aboveOverTime(w, s.dt, kHourglassNeck, 0.1, 0.7);
     // The first grains reach the neck at 0.2 s. From 0.3 s each tenth of a second lets through
     // less than 2/3 of the one before, and by 0.7 s the bulb is empty.
     EXPECT_GT(2 * (n[3] - n[4]), 3 * (n[4] - n[5]));
@@ -268,8 +277,9 @@ TEST(PresetDemonstrations, HourglassInTheExactModeFlowsUntilTheBulbIsEmpty) {
     // 2: 73 and 61 by 0.5 s; seed 1 empties by 2.5 s, in seed 2 an arch holds the last 48.) The
     // exact mode once locked it into a fake arch after about 45 grains (grains held up by the
     // sleepers above or beside them).
-    World w = presetIn("11-hourglass.json", StepMode::Exact);
-    const std::vector<int> n = aboveOverTime(w, kHourglassNeck, 0.5, 3.0);  // t = 0, 0.5, ...
+    const Scene s = presetIn("11-hourglass.json", StepMode::Exact);
+    World w = makeWorld(s);
+    const std::vector<int> n = aboveOverTime(w, s.dt, kHourglassNeck, 0.5, 3.0);  // t = 0, 0.5, ...
     // Grains pass in every half second until the bulb is empty: no arch holds.
     for (std::size_t i = 1; i + 1 < n.size() && n[i] > 0; ++i)
         EXPECT_GE(n[i] - n[i + 1], std::min(n[i], 20)) << "from " << 0.5 * i << " s";
@@ -291,7 +301,7 @@ TEST(PresetDemonstrations, HourglassWithASevenCentimetreNeckDrainsInASecondInThe
     s.solver.mode = StepMode::Exact;
     World w = makeWorld(s);
     ASSERT_EQ(w.size(), 500u);
-    runFor(w, 1.5);
+    runFor(w, s.dt, 1.5);
     EXPECT_EQ(above(w, kHourglassNeck), 0);
 }
 
@@ -300,11 +310,12 @@ TEST(PresetDemonstrations, HourglassWithASevenCentimetreNeckDrainsInASecondInThe
 TEST(PresetDemonstrations, RampBallsEndInTheCornerOfTheLowerRampAndTheLeftWallInEveryMode) {
     for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         SCOPED_TRACE(static_cast<int>(mode));
-        World w = presetIn("12-ramp.json", mode);
-        runFor(w, 1.0);
+        const Scene s = presetIn("12-ramp.json", mode);
+        World w = makeWorld(s);
+        runFor(w, s.dt, 1.0);
         // On the way: sliding down the upper ramp, far from the corner.
         EXPECT_GT(w.particles().x[4], 2.0);
-        runFor(w, 7.0);
+        runFor(w, s.dt, 7.0);
         const ParticleArrays& p = w.particles();
         const Obstacle& lower = w.obstacles()[1];
         // All five, in the exact mode too: the ball squeezed against another as it lands on
@@ -332,16 +343,17 @@ TEST(PresetDemonstrations, RampBallsAllSlideWithTheAccelerationCoulombFrictionGi
     EXPECT_NEAR(a, 1.5115, 1e-3);
     for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         SCOPED_TRACE(static_cast<int>(mode));
-        World w = presetIn("12-ramp.json", mode);
+        const Scene s = presetIn("12-ramp.json", mode);
+        World w = makeWorld(s);
         const auto along = [&](std::size_t i) {
             const ParticleArrays& p = w.particles();
             return p.vx[i] * std::cos(angle) + p.vy[i] * std::sin(angle);
         };
-        runFor(w, 0.8);
+        runFor(w, s.dt, 0.8);
         std::vector<double> v08;
         for (std::size_t i = 0; i < w.size(); ++i)
             v08.push_back(along(i));
-        runFor(w, 0.2);
+        runFor(w, s.dt, 0.2);
         for (std::size_t i = 0; i < w.size(); ++i) {
             const double accel = (along(i) - v08[i]) / 0.2;
             // The exact mode slides on the face (Coulomb friction) as the others do.
@@ -367,12 +379,13 @@ TEST(PresetDemonstrations, TennisBallClimbsFiveTimesTheHeightThePairFell) {
     EXPECT_NEAR(ratio, 5.25, 0.01);
     for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         SCOPED_TRACE(static_cast<int>(mode));
-        World w = presetIn("13-basketball-and-tennis-ball.json", mode);
+        const Scene s = presetIn("13-basketball-and-tennis-ball.json", mode);
+        World w = makeWorld(s);
         const double floorY = w.def().height;
         ASSERT_NEAR(floorY - (w.particles().y[0] + w.particles().radius[0]), 1.0, 1e-12);
         double top = floorY;
         for (int k = 0; k < 180; ++k) {  // 1.5 s: the apex comes at about 1.48 s
-            w.step(w.solver().dt);
+            w.step(s.dt);
             top = std::min(top, w.particles().y[1]);
         }
         const double climb = (floorY - top) - 0.273;

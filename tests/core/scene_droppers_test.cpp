@@ -40,7 +40,7 @@ TEST(SceneDroppers, ARunningDropperRoundTripsBitForBitAndContinues) {
     World w = makeWorld(s);
     for (int k = 0; k < 77; ++k)
         w.step(0.01);  // mid-interval, some balls out
-    const Scene saved = sceneFromWorld(w);
+    const Scene saved = sceneFromWorld(w, s.dt);
     const std::string text = serializeScene(saved);
     EXPECT_NE(text.find("\"version\": 4"), std::string::npos);
     const Scene back = parseScene(text, "saved.json");

@@ -78,16 +78,17 @@ TEST(SceneObstacles, ARunSavedHalfwayContinuesIdentically) {
     Scene scene =
         loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / "09-galton-board.json");
     scene.solver.mode = StepMode::Discrete;
-    scene.solver.dt = 0.001;
+    scene.dt = 0.001;
     World straight = makeWorld(scene);
     straight.setThreads(1);
     for (int k = 0; k < 200; ++k)
-        straight.step(straight.solver().dt);
-    World resumed = makeWorld(parseScene(serializeScene(sceneFromWorld(straight)), "saved"));
+        straight.step(scene.dt);
+    const Scene saved = parseScene(serializeScene(sceneFromWorld(straight, scene.dt)), "saved");
+    World resumed = makeWorld(saved);
     resumed.setThreads(1);
     for (int k = 0; k < 200; ++k) {
-        straight.step(straight.solver().dt);
-        resumed.step(resumed.solver().dt);
+        straight.step(scene.dt);
+        resumed.step(saved.dt);
     }
     EXPECT_EQ(resumed.obstacles(), straight.obstacles());
     EXPECT_EQ(resumed.droppers(), straight.droppers());

@@ -35,7 +35,7 @@ TEST(SceneReader, OnlyTheVersionIsRequiredAndEverythingElseHasItsDocumentedDefau
     EXPECT_EQ(s.world.restitution, 1.0);
     EXPECT_EQ(s.world.friction, 0.0);
     EXPECT_EQ(s.solver.mode, StepMode::Discrete);
-    EXPECT_EQ(s.solver.dt, 0.01);
+    EXPECT_EQ(s.dt, 0.01);
     EXPECT_EQ(s.solver.substeps, 1);
     EXPECT_EQ(s.solver.broadphase, BroadPhaseKind::Auto);
     EXPECT_TRUE(s.particles.empty());
@@ -62,7 +62,7 @@ TEST(SceneReader, ReadsEveryFieldWithItsUnit) {
     EXPECT_EQ(s.world.restitution, 0.75);
     EXPECT_EQ(s.world.friction, 0.25);
     EXPECT_EQ(s.solver.mode, StepMode::Substep);
-    EXPECT_EQ(s.solver.dt, 0.002);
+    EXPECT_EQ(s.dt, 0.002);
     EXPECT_EQ(s.solver.substeps, 4);
     EXPECT_EQ(s.solver.broadphase, BroadPhaseKind::AllPairs);
     ASSERT_EQ(s.particles.size(), 2u);
@@ -84,6 +84,20 @@ TEST(SceneReader, KeyOrderDoesNotMatter) {
         parseScene(R"({"world": {"width": 6, "height": 5}, "name": "x", "version": 1})", "b");
     EXPECT_EQ(a.world.width, b.world.width);
     EXPECT_EQ(a.world.height, b.world.height);
+}
+
+TEST(SceneReader, SolverDtIsTheScenesFrameLengthFiniteAndPositive) {
+    // The file keeps the frame length in its solver block; the scene in memory has it as dt.
+    EXPECT_EQ(parseScene(R"({"version": 1, "solver": {"dt": 0.004}})", "s.json").dt, 0.004);
+    EXPECT_EQ(messageOf(R"({"version": 1, "solver": {"dt": 0}})"),
+              "s.json: solver.dt: must be > 0 (got 0)");
+    EXPECT_EQ(messageOf(R"({"version": 1, "solver": {"dt": -0.01}})"),
+              "s.json: solver.dt: must be > 0 (got -0.01)");
+    // JSON has no NaN or infinity: such a value is refused where it stands, at its path.
+    const std::string nan = messageOf(R"({"version": 1, "solver": {"dt": NaN}})");
+    EXPECT_EQ(nan.rfind("s.json: line 1, column 33 (solver.dt): syntax error", 0), 0u) << nan;
+    EXPECT_EQ(messageOf(R"({"version": 1, "solver": {"dt": 1e999}})"),
+              "s.json: line 1, column 33 (solver.dt): number overflow parsing '1e999'");
 }
 
 TEST(SceneReader, ParticlesOutsideTheBoxAreFineWhenThereAreNoWalls) {

@@ -43,7 +43,7 @@ void expectIdentical(const Scene& a, const Scene& b) {
     EXPECT_TRUE(sameBits(a.world.restitution, b.world.restitution));
     EXPECT_TRUE(sameBits(a.world.friction, b.world.friction));
     EXPECT_EQ(a.solver.mode, b.solver.mode);
-    EXPECT_TRUE(sameBits(a.solver.dt, b.solver.dt));
+    EXPECT_TRUE(sameBits(a.dt, b.dt));
     EXPECT_EQ(a.solver.substeps, b.solver.substeps);
     EXPECT_EQ(a.solver.broadphase, b.solver.broadphase);
     EXPECT_EQ(a.allowOverlaps, b.allowOverlaps);
@@ -69,7 +69,7 @@ TEST(SceneRoundTrip, AwkwardDoublesSurviveSerializeAndParseBitForBit) {
     s.world.width = 0.1 + 0.2;  // 0.30000000000000004
     s.world.gravity = {1.0 / 3.0, -9.81};
     s.world.restitution = std::nextafter(1.0, 0.0);
-    s.solver.dt = 1.0 / 60.0;
+    s.dt = 1.0 / 60.0;
     s.particles.push_back({.position = {0.1, 0.2},
                            .velocity = {-0.0, 5e-324},
                            .mass = 1e-300,
@@ -95,15 +95,17 @@ TEST(SceneRoundTrip, ARunningWorldSavedAndLoadedContinuesExactlyAsIfUninterrupte
                              "mem");
     World a = makeWorld(start);
     for (int k = 0; k < 50; ++k)
-        a.step(a.solver().dt);
+        a.step(start.dt);
 
     TempDir dir("psb-scene-test");
     const fs::path file = dir.path() / "snap.json";
-    saveScene(sceneFromWorld(a, "snap"), file);
-    World b = makeWorld(loadScene(file));
+    saveScene(sceneFromWorld(a, start.dt, "snap"), file);
+    const Scene saved = loadScene(file);
+    EXPECT_TRUE(sameBits(saved.dt, start.dt));
+    World b = makeWorld(saved);
     for (int k = 0; k < 50; ++k) {
-        a.step(a.solver().dt);
-        b.step(b.solver().dt);
+        a.step(start.dt);
+        b.step(saved.dt);
     }
     const ParticleArrays &pa = a.particles(), &pb = b.particles();
     ASSERT_EQ(pa.size(), pb.size());
@@ -118,12 +120,12 @@ TEST(SceneRoundTrip, ASnapshotWithOverlapsIsMarkedSoThatItLoads) {
     World w;
     w.add({.position = {100.0, 100.0}, .radius = 10.0});
     w.add({.position = {105.0, 100.0}, .radius = 10.0});
-    const Scene s = sceneFromWorld(w);
+    const Scene s = sceneFromWorld(w, Scene{}.dt);
     EXPECT_TRUE(s.allowOverlaps);
     EXPECT_EQ(parseScene(serializeScene(s), "mem").particles.size(), 2u);
     World apart;
     apart.add({.position = {100.0, 100.0}, .radius = 10.0});
-    EXPECT_FALSE(sceneFromWorld(apart).allowOverlaps);
+    EXPECT_FALSE(sceneFromWorld(apart, Scene{}.dt).allowOverlaps);
 }
 
 TEST(SceneRoundTrip, ASnapshotWithAParticleOverAnObstacleIsMarkedSoThatItLoads) {
@@ -132,13 +134,13 @@ TEST(SceneRoundTrip, ASnapshotWithAParticleOverAnObstacleIsMarkedSoThatItLoads) 
     World w;
     w.add({.position = {100.0, 100.0}, .radius = 10.0});
     w.addObstacle(Obstacle::segment({50.0, 105.0}, {150.0, 105.0}, 4.0));
-    const Scene s = sceneFromWorld(w);
+    const Scene s = sceneFromWorld(w, Scene{}.dt);
     EXPECT_TRUE(s.allowOverlaps);
     EXPECT_EQ(parseScene(serializeScene(s), "mem").world.obstacles.size(), 1u);
     World clear;
     clear.add({.position = {100.0, 100.0}, .radius = 10.0});
     clear.addObstacle(Obstacle::peg({100.0, 200.0}, 5.0));
-    EXPECT_FALSE(sceneFromWorld(clear).allowOverlaps);
+    EXPECT_FALSE(sceneFromWorld(clear, Scene{}.dt).allowOverlaps);
 }
 
 TEST(SceneRoundTrip, MakeWorldKeepsTheSceneOrderAndSettings) {
@@ -146,7 +148,9 @@ TEST(SceneRoundTrip, MakeWorldKeepsTheSceneOrderAndSettings) {
     const World w = makeWorld(s);
     ASSERT_EQ(w.size(), s.particles.size());
     EXPECT_EQ(w.def().width, s.world.width);
-    EXPECT_EQ(w.solver().dt, s.solver.dt);
+    EXPECT_EQ(w.solver().mode, s.solver.mode);
+    EXPECT_EQ(w.solver().substeps, s.solver.substeps);
+    EXPECT_EQ(sceneFromWorld(w, s.dt).dt, s.dt);  // the frame length is the scene's
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
         EXPECT_EQ(w.particles().x[i], s.particles[i].position.x());
         EXPECT_EQ(w.particles().mass[i], s.particles[i].mass);
@@ -277,6 +281,17 @@ TEST(SceneSave, ANonFiniteValueIsRefusedBeforeTheFileIsTouched) {
     Scene bad = defaultScene();
     bad.particles[2].velocity.x() = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW(saveScene(bad, file), SaveError);
+    EXPECT_EQ(readFile(file), before);
+    // The frame length too, named by its place in the file.
+    Scene badDt = defaultScene();
+    badDt.dt = std::numeric_limits<double>::quiet_NaN();
+    try {
+        (void)serializeScene(badDt);
+        ADD_FAILURE() << "a NaN dt was written";
+    } catch (const InvalidArgument& e) {
+        EXPECT_STREQ(e.what(), "serializeScene: solver.dt is not finite");
+    }
+    EXPECT_THROW(saveScene(badDt, file), SaveError);
     EXPECT_EQ(readFile(file), before);
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <particle_sandbox/error.hpp>
+#include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/validation.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -148,7 +149,6 @@ TEST(Validate, AcceptsWhatWorldAcceptsAndListsEveryProblemWithoutThrowing) {
     def.obstacles = {Obstacle::peg({1.0, 1.0}, 0.5)};  // accepted in every mode too
     SolverSettings s;
     s.mode = StepMode::Exact;
-    s.dt = 0.0;
     s.substeps = 0;
     s.broadphase = static_cast<BroadPhaseKind>(42);
     std::vector<SettingProblem> problems;
@@ -156,10 +156,16 @@ TEST(Validate, AcceptsWhatWorldAcceptsAndListsEveryProblemWithoutThrowing) {
     std::vector<std::string_view> settings;
     for (const SettingProblem& p : problems)
         settings.push_back(p.setting);
-    const std::vector<std::string_view> want{"width", "restitution", "dt", "substeps",
-                                             "broadphase"};
+    const std::vector<std::string_view> want{"width", "restitution", "substeps", "broadphase"};
     EXPECT_EQ(settings, want);
     EXPECT_EQ(describe(problems.front()), "width must be finite and > 0 (got -1)");
+    // The step length is not a setting: World::step refuses a bad one, makeWorld a scene's.
+    EXPECT_EQ(messageOf([] { World().step(0.0); }),
+              "World::step: dt must be finite and > 0 (got 0)");
+    Scene scene;
+    scene.dt = -1.0;
+    EXPECT_EQ(messageOf([&] { (void)makeWorld(scene); }),
+              "makeWorld: dt must be finite and > 0 (got -1)");
 }
 
 TEST(Validate, WorldThrowsTheFirstProblemWithTheSameWords) {

@@ -10,6 +10,7 @@
 #include <functional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <particle_sandbox/error.hpp>
@@ -58,20 +59,22 @@ double allowedDepth(StepMode mode) {
     return mode == StepMode::Exact ? 1e-9 : 0.02;
 }
 
-World worldOf(const char* file, StepMode mode) {
+/// The scene's world in `mode`, and the scene's frame length (dt) to step it by.
+std::pair<World, double> worldOf(const char* file, StepMode mode) {
     const Scene scene = test::corpusScene(file);
     World w = makeWorld(scene);
     SolverSettings s = w.solver();
     s.mode = mode;
     s.substeps = mode == StepMode::Substep ? 4 : 1;
     w.setSolver(s);
-    return w;
+    return {std::move(w), scene.dt};
 }
 
-void run(World& w, double seconds) {
-    const int steps = static_cast<int>(std::lround(seconds / w.solver().dt));
+/// Steps `w` by `dt` (its scene's) for `seconds`.
+void run(World& w, double dt, double seconds) {
+    const int steps = static_cast<int>(std::lround(seconds / dt));
     for (int k = 0; k < steps; ++k)
-        w.step(w.solver().dt);
+        w.step(dt);
 }
 
 using SceneCase = std::tuple<const char*, const char*, StepMode, std::size_t>;
@@ -80,8 +83,8 @@ class DropperScenes : public ::testing::TestWithParam<SceneCase> {};
 
 TEST_P(DropperScenes, ReleaseEveryBallWhileOthersSlideAndStaySound) {
     const auto& [name, json, mode, total] = GetParam();
-    World w = worldOf(json, mode);
-    run(w, 6.0);
+    auto [w, dt] = worldOf(json, mode);
+    run(w, dt, 6.0);
     EXPECT_EQ(w.size(), total) << name;
     expectSound(w, allowedDepth(mode), name);
 }
@@ -111,6 +114,7 @@ INSTANTIATE_TEST_SUITE_P(EveryMode, DropperScenes, ::testing::ValuesIn(sceneCase
 // 1.2 s the first ball slides down the ramp, the second sleeps.
 struct SlidingWorld {
     World world;
+    double dt;  ///< the scene's frame length, what the world is stepped by
     ParticleId slider, sleeper;
 };
 
@@ -121,8 +125,8 @@ SlidingWorld slidingWorld() {
     const ParticleId slider = w.ids()[0];
     const ParticleId sleeper = w.add({.position = {3.5, 2.9}, .radius = 0.1});
     w.addObstacle(Obstacle::peg({3.0, 2.0}, 0.05));
-    run(w, 1.2);
-    return {std::move(w), slider, sleeper};
+    run(w, scene.dt, 1.2);
+    return {std::move(w), scene.dt, slider, sleeper};
 }
 
 TEST(WorldChangesWhileSliding, TheRampBallSlidesAndTheFloorBallRestsWhenTheChangeComes) {
@@ -151,7 +155,7 @@ TEST_P(WorldChangesWhileSliding, LeaveTheExactModeSound) {
     SlidingWorld s = slidingWorld();
     std::get<1>(GetParam())(s);
     for (int k = 0; k < 300; ++k) {
-        s.world.step(s.world.solver().dt);
+        s.world.step(s.dt);
         if (k % 50 == 0) expectSound(s.world, 1e-9, std::get<0>(GetParam()));
     }
     expectSound(s.world, 1e-9, std::get<0>(GetParam()));
@@ -181,7 +185,7 @@ std::vector<std::tuple<const char*, Change>> changes() {
              for (int k = 0; k < 10; ++k) {
                  const Particle p = s.world.get(s.slider);
                  s.world.setPosition(s.slider, p.position + Vec2{0.01, 0.0});
-                 s.world.step(s.world.solver().dt);
+                 s.world.step(s.dt);
              }
              s.world.setKinematic(s.slider, false);
          }},
@@ -211,21 +215,21 @@ std::vector<std::tuple<const char*, Change>> changes() {
              SolverSettings solver = s.world.solver();
              solver.mode = StepMode::Discrete;
              s.world.setSolver(solver);
-             s.world.step(solver.dt);
+             s.world.step(s.dt);
              solver.mode = StepMode::Exact;
              s.world.setSolver(solver);
          }},
         {"RestoreACopy",  // undo: the world replaced by a copy kept earlier
          [](SlidingWorld& s) {
              const World kept = s.world;
-             s.world.step(s.world.solver().dt);
+             s.world.step(s.dt);
              s.world = kept;
          }},
         {"RestoreACopyWithoutEventState",  // the timeline keeps frames without event state
          [](SlidingWorld& s) {
              World kept = s.world;
              kept.dropEventState();
-             s.world.step(s.world.solver().dt);
+             s.world.step(s.dt);
              s.world = kept;
          }},
         {"ResizeTheBox", [](SlidingWorld& s) { s.world.setBox(4.0, 3.2); }},
@@ -238,7 +242,7 @@ TEST(WorldChangesWhileSliding, ABallPlacedInAnObstacleAgainstAWallStaysInTheBox)
     // of each step is flown freely: that flight once left it past the wall (found by the world
     // mutation fuzzer). It stays in the box.
     World w(WorldDef{.width = 5.9, .height = 11.6, .restitution = 0.36, .friction = 0.36},
-            SolverSettings{.mode = StepMode::Exact, .dt = 0.01});
+            SolverSettings{.mode = StepMode::Exact});
     Obstacle thick = Obstacle::segment({3.6, 5.67}, {4.0, 5.51}, 1.0);
     thick.radius = 11.6;  // as thick as World allows: twice the box's larger side
     w.addObstacle(thick);
@@ -255,8 +259,7 @@ TEST(WorldChangesWhileSliding, ABallPlacedInAnObstacleAgainstAWallStaysInTheBox)
 TEST(WorldChangesWhileSliding, AStepTheEventBudgetCutsShortIsCountedAndStaysInTheBox) {
     // A particle flung across a 4 m box at 10^8 m/s: 50 000 wall hits in a 2 ms step, past the
     // event budget. The step is counted as cut short; the free flight after it ends in the box.
-    World w(WorldDef{.width = 4.0, .height = 5.0},
-            SolverSettings{.mode = StepMode::Exact, .dt = 0.002});
+    World w(WorldDef{.width = 4.0, .height = 5.0}, SolverSettings{.mode = StepMode::Exact});
     const ParticleId fast =
         w.add({.position = {1.6, 2.4}, .velocity = {8.7e7, 0.0}, .radius = 0.29});
     w.add({.position = {0.5, 1.0}, .velocity = {-5.0, 3.0}, .radius = 0.16});
@@ -283,7 +286,7 @@ TEST(WorldChangesWhileSliding, ABallPlacedInsideASegmentDoesNotJumpOntoItsFaceTh
                      .gravity = {7.76, 6.39},
                      .restitution = 0.13,
                      .friction = 0.13},
-            SolverSettings{.mode = StepMode::Exact, .dt = 0.01});
+            SolverSettings{.mode = StepMode::Exact});
     w.addObstacle(Obstacle::segment({2.614, 2.389}, {0.3026, 5.061}, 0.131));
     const ParticleId id = w.add(
         {.position = {0.301, 4.369}, .velocity = {-86.6, -26.5}, .mass = 4.9, .radius = 0.705});
@@ -304,7 +307,7 @@ TEST(WorldChangesWhileSliding, ABoxResizedToAHairOrParticlesFarApartStillStepInT
     // integer (undefined behaviour; found by the world mutation fuzzer); so did particles
     // spread over 10^300 m without walls. The counts are bounded now.
     World w(WorldDef{.width = 8.2, .height = 5.5, .gravity = {-11.2, -7.9}, .restitution = 0.13},
-            SolverSettings{.mode = StepMode::Exact, .dt = 1.0 / 60.0});
+            SolverSettings{.mode = StepMode::Exact});
     w.add({.position = {1.6, 2.4}, .velocity = {20.0, -0.5}, .radius = 0.29});
     w.step(1.0 / 60.0);
     w.setBox(8.2, 1e-300);
@@ -312,7 +315,7 @@ TEST(WorldChangesWhileSliding, ABoxResizedToAHairOrParticlesFarApartStillStepInT
     w.step(1.0 / 60.0);
     EXPECT_TRUE(std::isfinite(w.get(w.ids()[0]).position.x()));
     World far(WorldDef{.width = 1.0, .height = 1.0, .walls = false},
-              SolverSettings{.mode = StepMode::Exact, .dt = 0.01});
+              SolverSettings{.mode = StepMode::Exact});
     far.add({.position = {-1e300, 0.0}, .velocity = {1.0, 0.0}, .radius = 1.0});
     far.add({.position = {1e300, 1e-300}, .velocity = {-1.0, 0.0}, .radius = 1.0});
     far.add({.position = {0.0, 0.0}, .radius = 1.0});

@@ -44,7 +44,7 @@ void checkRoundTrip(const psb::Scene& s) {
         }
     }
     if (!sameBits(t.world.width, s.world.width) || !sameBits(t.world.height, s.world.height) ||
-        !sameBits(t.solver.dt, s.solver.dt) || t.solver.mode != s.solver.mode ||
+        !sameBits(t.dt, s.dt) || t.solver.mode != s.solver.mode ||
         t.solver.substeps != s.solver.substeps || t.world.walls != s.world.walls) {
         violated("round trip", "world or solver changed");
     }
@@ -56,7 +56,7 @@ void checkSteps(const psb::Scene& s) {
     solver.substeps = std::min(solver.substeps, 4);  // the substep loop is not what is fuzzed
     world.setSolver(solver);
     for (int k = 0; k < 3; ++k)
-        world.step(world.solver().dt);
+        world.step(s.dt);
     const psb::ParticleArrays& p = world.particles();
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]) || !std::isfinite(p.vx[i]) ||

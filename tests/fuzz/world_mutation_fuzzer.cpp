@@ -167,7 +167,7 @@ struct Snapshot {
                sameBits(a.gravity.x(), b.gravity.x()) && sameBits(a.gravity.y(), b.gravity.y()) &&
                sameBits(a.restitution, b.restitution) && sameBits(a.friction, b.friction) &&
                a.obstacles == b.obstacles && solver.mode == o.solver.mode &&
-               sameBits(solver.dt, o.solver.dt) && solver.substeps == o.solver.substeps;
+               solver.substeps == o.solver.substeps;
     }
 };
 
@@ -228,12 +228,12 @@ double smallestRadius(const psb::World& w) {
     return r;
 }
 
-void dump(const psb::World& w) {
+void dump(const psb::World& w, double dt) {
     const psb::WorldDef& d = w.def();
     std::fprintf(
         stderr, "step %s dt %g: box %g x %g walls %d g (%g, %g) e %g mu %g, %zu obstacles\n",
-        std::string(psb::toString(w.solver().mode)).c_str(), w.solver().dt, d.width, d.height,
-        d.walls, d.gravity.x(), d.gravity.y(), d.restitution, d.friction, d.obstacles.size());
+        std::string(psb::toString(w.solver().mode)).c_str(), dt, d.width, d.height, d.walls,
+        d.gravity.x(), d.gravity.y(), d.restitution, d.friction, d.obstacles.size());
     for (const psb::Obstacle& o : d.obstacles)
         std::fprintf(stderr, "  %s (%.17g, %.17g) (%.17g, %.17g) r %.17g\n",
                      o.isPeg() ? "peg" : "segment", o.a.x(), o.a.y(), o.b.x(), o.b.y(), o.radius);
@@ -284,11 +284,12 @@ class Stepper {
   public:
     void changed(psb::World& w) { w.resetCounters(); }
 
-    void step(psb::World& w, int count) {
+    /// `count` steps of `dt` (the frame length, the driver's).
+    void step(psb::World& w, double dt, int count) {
         for (int k = 0; k < count; ++k) {
-            if (tracing()) dump(w);
+            if (tracing()) dump(w, dt);
             const std::uint64_t cutShort = w.counters().cutShort;
-            w.step(w.solver().dt);
+            w.step(dt);
             checkState(w, "step");
             if (w.solver().mode != psb::StepMode::Exact || w.size() < 2) continue;
             // A step the event budget cut short is not exact (StepCounters::cutShort): without
@@ -308,8 +309,8 @@ class Stepper {
     }
 };
 
-/// A world chosen by the bytes.
-psb::World worldFrom(FuzzedDataProvider& in) {
+/// A world chosen by the bytes, and in `dt` the frame length to step it by.
+psb::World worldFrom(FuzzedDataProvider& in, double& dt) {
     psb::WorldDef def;
     def.width = in.ConsumeFloatingPointInRange<double>(0.2, 20.0);
     def.height = in.ConsumeFloatingPointInRange<double>(0.2, 20.0);
@@ -329,7 +330,7 @@ psb::World worldFrom(FuzzedDataProvider& in) {
     def.friction = in.ConsumeBool() ? 0.0 : in.ConsumeFloatingPointInRange<double>(0.0, 1.0);
     psb::SolverSettings solver;
     solver.mode = static_cast<psb::StepMode>(in.ConsumeIntegralInRange<int>(0, 2));
-    solver.dt = in.PickValueInArray({1.0 / 60.0, 0.002, 0.01, 0.03});
+    dt = in.PickValueInArray({1.0 / 60.0, 0.002, 0.01, 0.03});
     solver.substeps = in.ConsumeIntegralInRange<int>(1, 6);
     psb::World world(def, solver);
 
@@ -358,6 +359,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     static constexpr std::string_view kOpsMark = "\n#ops\n";
     const std::string_view text(reinterpret_cast<const char*>(data), size);
     std::optional<psb::World> made;
+    double dt = 0.0;  // the frame length: the driver's, as the app keeps it beside the world
     std::size_t opsFrom = 0;
     if (const std::size_t mark = text.find(kOpsMark); !text.empty() && text[0] == '{') {
         if (mark == std::string_view::npos) return 0;
@@ -368,6 +370,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 balls += d.balls;
             if (scene.particles.size() + balls > kMaxSceneParticles) return 0;
             made.emplace(psb::makeWorld(scene));
+            dt = scene.dt;
         } catch (const psb::SceneError&) {
             return 0;
         } catch (const psb::InvalidArgument&) {
@@ -376,7 +379,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         opsFrom = mark + kOpsMark.size();
     }
     FuzzedDataProvider in(data + opsFrom, size - opsFrom);
-    psb::World world = made ? std::move(*made) : worldFrom(in);
+    psb::World world = made ? std::move(*made) : worldFrom(in, dt);
     world.setThreads(1);
 
     Stepper stepper;
@@ -386,10 +389,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const int what = in.ConsumeIntegralInRange<int>(0, 19);
         if (what <= 3) {
             const int count = in.ConsumeIntegralInRange<int>(1, kMaxStepsPerOp);
-            stepper.step(world, count);
+            stepper.step(world, dt, count);
             if (twin) {
                 for (int k = 0; k < count; ++k)
-                    twin->step(twin->solver().dt);
+                    twin->step(dt);
                 checkSame(world, *twin);
             }
             continue;
@@ -463,8 +466,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 psb::SolverSettings next = world.solver();
                 next.mode = static_cast<psb::StepMode>(in.ConsumeIntegralInRange<int>(0, 2));
                 next.substeps = in.ConsumeIntegralInRange<int>(0, 6);
-                next.dt = in.ConsumeBool() ? next.dt : quantity(in, 0.001, 0.03);
-                change(world, "setSolver", [&] { world.setSolver(next); });
+                // The frame length is the driver's, not the world's: a new one comes with the
+                // settings; a bad one World::step refuses, changing nothing.
+                const double frame = in.ConsumeBool() ? dt : quantity(in, 0.001, 0.03);
+                if (!(std::isfinite(frame) && frame > 0.0)) {
+                    change(world, "step by a bad dt", [&] { world.step(frame); });
+                    break;
+                }
+                const double before = dt;
+                change(world, "setSolver", [&] {
+                    world.setSolver(next);
+                    dt = frame;
+                });
+                if (!sameBits(dt, before)) differs = true;  // counted as a change, as it was
                 break;
             }
             case 16: {

@@ -82,19 +82,19 @@ Recorded& recorded(psb::StepMode mode) {
     slot = std::make_unique<Recorded>();
     psb::World w = psb::bench::makeGasWorld(10'000, psb::BroadPhaseKind::Auto, 1);
     if (mode != psb::StepMode::Exact) w.setGravity(psb::Vec2(0.0, 9.81));
-    w.setSolver({.mode = mode, .dt = psb::bench::kDt, .substeps = 4});
+    const double dt = psb::bench::kDt;
+    w.setSolver({.mode = mode, .substeps = 4});
     for (int k = 0; k < 20; ++k)
-        w.step(w.solver()
-                   .dt);  // the random placement's overlaps are separated before recording starts
+        w.step(dt);  // the random placement's overlaps are separated before recording starts
     constexpr int kFrames = 12 * 60;
     double accumulator = 0.0, stepMs = 0.0, recordMs = 0.0;
     for (int f = 0; f < kFrames; ++f) {
         accumulator += 1.0 / 60.0;
         const double c0 = cpuMs();
-        while (accumulator >= w.solver().dt) {
-            w.step(w.solver().dt);
-            slot->timeline.stepped(w.solver().dt);
-            accumulator -= w.solver().dt;
+        while (accumulator >= dt) {
+            w.step(dt);
+            slot->timeline.stepped(dt);
+            accumulator -= dt;
         }
         const double c1 = cpuMs();
         slot->timeline.record(w);
@@ -162,12 +162,13 @@ void BM_SessionStepBack(benchmark::State& state) {
     const auto mode = static_cast<psb::StepMode>(state.range(1));
     psb::World w = psb::bench::makeGasWorld(n, psb::BroadPhaseKind::Auto, 1);
     if (mode != psb::StepMode::Exact) w.setGravity(psb::Vec2(0.0, 9.81));
-    w.setSolver({.mode = mode, .dt = psb::bench::kDt, .substeps = 4});
+    w.setSolver({.mode = mode, .substeps = 4});
     for (int k = 0; k < 20; ++k)
-        w.step(w.solver().dt);  // the random placement's overlaps are separated first
+        w.step(psb::bench::kDt);  // the random placement's overlaps are separated first
     psb::app::SessionOptions options;
     options.saveTo = "/dev/null";
-    psb::app::Session s(std::move(w), psb::app::SceneMeta{"gas"}, options);
+    psb::app::Session s(std::move(w), psb::app::SceneMeta{.name = "gas", .dt = psb::bench::kDt},
+                        options);
     double now = 0.0;
     const double start = s.world().time();
     while (s.world().time() < start + 12.0) {

@@ -23,12 +23,13 @@ using widgets::tip;
 
 namespace {
 
-/// The farthest any particle moves in one step, in its own diameters (one substep in the
-/// substep mode): above about 1 a collision can be missed, a particle passing through another.
-double stepsPerDiameter(const World& w) {
+/// The farthest any particle moves in one step of `frame` seconds, in its own diameters (one
+/// substep in the substep mode): above about 1 a collision can be missed, a particle passing
+/// through another.
+double stepsPerDiameter(const World& w, double frame) {
     const ParticleArrays& p = w.particles();
     const SolverSettings& s = w.solver();
-    const double dt = s.dt / (s.mode == StepMode::Substep ? s.substeps : 1);
+    const double dt = frame / (s.mode == StepMode::Substep ? s.substeps : 1);
     double worst = 0.0;
     for (std::size_t i = 0; i < p.size(); ++i) {
         const double speed = std::hypot(p.vx[i], p.vy[i]);
@@ -90,7 +91,7 @@ void ControlPanel::readouts(const Session& s) {
     widgets::wrapped(overlapWords(s.accuracy().overlap(), s.spawn().typicalRadius));
     tip("Real balls never overlap; a step-by-step simulation lets them, a little, between steps");
     if (w.solver().mode != StepMode::Exact && w.size() > 0) {
-        const double d = stepsPerDiameter(w);
+        const double d = stepsPerDiameter(w, s.meta().dt);
         char buf[160];
         if (d > 1.0) {
             std::snprintf(buf, sizeof buf,
@@ -130,7 +131,7 @@ void ControlPanel::engine(const Session& s, const FrameStats& stats) {
             "How pairs that may touch are found: all pairs for a few particles, a grid of cells "
             "for many");
         row("Threads", std::to_string(w.threads()));
-        std::snprintf(buf, sizeof buf, "%g ms", w.solver().dt * 1000.0);
+        std::snprintf(buf, sizeof buf, "%g ms", s.meta().dt * 1000.0);
         row("Time step", buf);
         ImGui::EndTable();
     }

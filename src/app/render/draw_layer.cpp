@@ -31,8 +31,8 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
           frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
         if (r.w > 0) avoid.push_back(sdlRect(r));
     }
-    const DrawStats stats =
-        renderer_.draw(world, camera, frame.view, &trails_, frame.trailParticle, &avoid);
+    const DrawStats stats = renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_,
+                                           frame.trailParticle, &avoid);
     for (const DropperView& d : frame.droppers)
         drawDropper(camera, d);
     if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);

@@ -112,8 +112,9 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
     ghost.draw(renderer_, circle_);
 }
 
-DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOptions& options,
-                         Trails* trails, ParticleId selected, const RenderAvoid* avoid) {
+DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
+                         const ViewOptions& options, Trails* trails, ParticleId selected,
+                         const RenderAvoid* avoid) {
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
@@ -148,7 +149,7 @@ DrawStats Renderer::draw(const World& world, const Camera& camera, const ViewOpt
     // A particle resting on the floor or a ramp in the discrete and substep modes keeps the
     // speed one step of gravity gives it (the contact takes it back the next step): at rest,
     // no arrow; its minimum arrow pointed through the floor like a leak.
-    const double resting = restingSpeed(world);
+    const double resting = restingSpeed(world, frame);
     std::vector<std::size_t> visible;
     visible.reserve(p.size());
     arrowLength_.clear();

@@ -51,15 +51,16 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Clears to black and draws the box walls, the particles and the enabled overlays. When
-    /// `trails` is given they are drawn under the discs as options.trails says, `selected`
-    /// naming the particle of TrailMode::Selected. Labels go at whole pixels (glyphs drawn at
-    /// fractions of a pixel are resampled into garble), above, below, right or left of their
-    /// disc, wherever they overlap neither another label nor a rectangle of `avoid`; a label
-    /// with no such place is left out.
-    DrawStats draw(const World& world, const Camera& camera, const ViewOptions& options,
-                   Trails* trails = nullptr, ParticleId selected = kNullParticle,
-                   const RenderAvoid* avoid = nullptr);
+    /// Clears to black and draws the box walls, the particles and the enabled overlays.
+    /// `frame` is the length of the world's steps (the scene's dt): a particle slower than one
+    /// step of gravity gives it rests, and has no arrow (restingSpeed). When `trails` is given
+    /// they are drawn under the discs as options.trails says, `selected` naming the particle of
+    /// TrailMode::Selected. Labels go at whole pixels (glyphs drawn at fractions of a pixel are
+    /// resampled into garble), above, below, right or left of their disc, wherever they overlap
+    /// neither another label nor a rectangle of `avoid`; a label with no such place is left out.
+    DrawStats draw(const World& world, double frame, const Camera& camera,
+                   const ViewOptions& options, Trails* trails = nullptr,
+                   ParticleId selected = kNullParticle, const RenderAvoid* avoid = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius);

@@ -2,12 +2,11 @@
 
 #include <algorithm>
 
-#include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/scene_builders.hpp>
 
 namespace psb::app {
 
-World benchmarkWorld(std::size_t count, std::uint32_t seed) {
+Scene benchmarkScene(std::size_t count, std::uint32_t seed) {
     // The core's gas builder: equal discs on the generate block's jittered lattice.
     Scene s = scenes::gas({.count = std::max<std::size_t>(count, 1),
                            .radius = 2.0,
@@ -15,9 +14,9 @@ World benchmarkWorld(std::size_t count, std::uint32_t seed) {
                            .mass = 1.0,
                            .temperature = 800.0,  // speeds of tens of m/s
                            .seed = seed});
-    s.solver.dt = 1.0 / 120.0;
+    s.dt = 1.0 / 120.0;
     if (count == 0) s.particles.clear();
-    return makeWorld(s);
+    return s;
 }
 
 }  // namespace psb::app

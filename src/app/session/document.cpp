@@ -13,6 +13,7 @@ SceneMeta sceneMeta(const Scene& scene, const std::optional<std::filesystem::pat
     m.description = scene.description;
     m.trails = scene.trails;
     m.bins = scene.bins;
+    m.dt = scene.dt;
     return m;
 }
 

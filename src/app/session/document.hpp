@@ -27,6 +27,10 @@ struct SceneMeta {
     std::vector<std::size_t> trails = {};
     /// The board's bins and what they should hold (a Galton board's), if the scene has them.
     std::optional<Bins> bins = {};
+    /// The scene's frame length (Scene::dt, the file's `solver.dt`), seconds: what the session
+    /// steps the world by, and what a save writes. The world keeps no copy. The default is the
+    /// built-in scene's (the original's frame).
+    double dt = 1.0 / 60.0;
 };
 
 /// The metadata of `scene`, opened from `file` (none: the built-in scene). Its name is the

@@ -83,7 +83,7 @@ std::filesystem::path freeSavePath(const std::filesystem::path& path) {
 
 std::string saveWorld(const World& world, const SceneMeta& meta,
                       const std::filesystem::path& path) {
-    Scene scene = sceneFromWorld(world, meta.name, meta.description);
+    Scene scene = sceneFromWorld(world, meta.dt, meta.name, meta.description);
     scene.bins = meta.bins;
     saveScene(scene, path);
     std::error_code ec;

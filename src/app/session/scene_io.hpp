@@ -41,7 +41,7 @@ struct SceneInfo {
 [[nodiscard]] std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
                                                                 std::string& why);
 
-/// Saves `world` as a scene with `meta` (its name, description, trails and bins) to `path`,
+/// Saves `world` as a scene with `meta` (its name, description, trails, bins and dt) to `path`,
 /// atomically (psb::saveScene): the old file survives any failure. Returns a line for the user
 /// naming the absolute path; throws SaveError saying why it failed.
 std::string saveWorld(const World& world, const SceneMeta& meta, const std::filesystem::path& path);

@@ -129,9 +129,9 @@ class Session {
     /// Applies one command: the only way anything but time changes the session.
     void apply(const Command& command);
     /// Advances the world by `realSeconds` of real time (times the time speed) in fixed steps
-    /// of its dt, spending at most `budgetMs` of wall-clock time (the backlog is then dropped);
-    /// `now` is the pointer clock, for the held particle's velocity. While paused only a
-    /// requested single step runs.
+    /// of the scene's dt (meta().dt), spending at most `budgetMs` of wall-clock time (the
+    /// backlog is then dropped); `now` is the pointer clock, for the held particle's velocity.
+    /// While paused only a requested single step runs.
     void update(double realSeconds, double now, double budgetMs = kStepBudgetMs);
 
     /// What the session said since the last call.

@@ -39,7 +39,7 @@ void Session::handle(const cmd::SetTimeScale& c) {
 
 void Session::stepOnce(double now) {
     holdParticle(now);
-    const double dt = doc_.world.solver().dt;
+    const double dt = doc_.meta.dt;  // the scene's frame length
     doc_.world.step(dt);
     history_.timeline.stepped(dt);
 }
@@ -47,8 +47,7 @@ void Session::stepOnce(double now) {
 void Session::update(double realSeconds, double now, double budgetMs) {
     const auto t0 = std::chrono::steady_clock::now();
     monitor_.beginSteps(doc_.world);
-    clock_.run(realSeconds, now, doc_.world.solver().dt, budgetMs, t0,
-               [this, now] { stepOnce(now); });
+    clock_.run(realSeconds, now, doc_.meta.dt, budgetMs, t0, [this, now] { stepOnce(now); });
     monitor_.endSteps(doc_.world);
     // Arrows shorten when the motion speeds up (a bullet scattering a crowd) but never grow
     // back on their own, so their lengths stay comparable over time; opening a scene resets it.

@@ -45,10 +45,10 @@ double arrowSecondsFor(const World& world) {
     return std::min(kOriginal, longest / vrms);
 }
 
-double restingSpeed(const World& world) {
+double restingSpeed(const World& world, double frame) {
     const SolverSettings& s = world.solver();
     if (s.mode == StepMode::Exact) return 0.0;
-    const double dt = s.dt / (s.mode == StepMode::Substep ? std::max(1, s.substeps) : 1);
+    const double dt = frame / (s.mode == StepMode::Substep ? std::max(1, s.substeps) : 1);
     return 2.0 * world.def().gravity.norm() * dt;
 }
 

@@ -73,11 +73,12 @@ struct ViewOptions {
     return len > radiusPixels + 1.0 ? len : 0.0;
 }
 
-/// The speed below which a particle of `world` counts as resting for its arrow: in the discrete
-/// and substep modes twice what one step of gravity adds (2 |g| dt, dt the substep's), which a
-/// particle resting on the floor or an obstacle keeps between steps; 0 in the exact mode (its
-/// resting particles have no speed) and without gravity.
-[[nodiscard]] double restingSpeed(const World& world);
+/// The speed below which a particle of `world`, stepped in frames of `frame` seconds (the
+/// scene's dt), counts as resting for its arrow: in the discrete and substep modes twice what
+/// one step of gravity adds (2 |g| dt, dt the substep's), which a particle resting on the floor
+/// or an obstacle keeps between steps; 0 in the exact mode (its resting particles have no
+/// speed) and without gravity.
+[[nodiscard]] double restingSpeed(const World& world, double frame);
 
 /// The minimum arrow beyond the rim for a world whose mean particle spacing is `spacingPixels`
 /// on screen: kMinArrowPixels, or half the spacing when that is less (a dense gas is not

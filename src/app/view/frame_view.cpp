@@ -82,6 +82,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     f.series = &session.series();
     f.now = session.observables();
     f.view = session.view();
+    f.frameLength = session.meta().dt;
     f.sceneGeneration = session.sceneGeneration();
     f.trailParticle = session.trailParticle();
     f.selected = session.selected();

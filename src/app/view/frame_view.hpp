@@ -54,6 +54,7 @@ struct FrameView {
     const TimeSeries* series = nullptr;
     ObservablesSample now;
     ViewOptions view;
+    double frameLength = 0.0;  ///< the scene's dt (the session's meta().dt), seconds
     std::uint64_t sceneGeneration = 0;
     ParticleId trailParticle;
     std::optional<Particle> selected;

@@ -192,7 +192,7 @@ TEST_F(ControlPanelTest, ModesAreChosenInEveryScene) {
 
     World pegs(session_->world().def());
     pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
-    session_->setWorld(std::move(pegs), SceneMeta{"pegs"});
+    session_->setWorld(std::move(pegs), SceneMeta{.name = "pegs", .dt = Scene{}.dt});
     frame();
     click("mode Exact");  // obstacles are in every mode
     EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
@@ -329,7 +329,7 @@ TEST_F(ControlPanelTest, UndoRedoAndStepBackButtonsGoThroughTheSession) {
     EXPECT_DOUBLE_EQ(session_->world().def().restitution, 0.0);
 
     // Paused: three single steps, then one back shows the second one's time.
-    const double dt = session_->world().solver().dt;
+    const double dt = session_->meta().dt;
     for (int k = 0; k < 3; ++k) {
         click("Step");
         session_->update(0.0, 0.0);

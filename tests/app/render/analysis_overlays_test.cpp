@@ -24,6 +24,8 @@ namespace psb::app {
 namespace {
 
 constexpr int kSize = 800;
+/// The frame length the worlds drawn here are stepped by (a scene file's default dt).
+constexpr double kFrame = 0.01;
 
 World bigBox() {
     WorldDef def;
@@ -269,7 +271,7 @@ class OverlayRenderTest : public OffscreenTest {
 
     void draw(const World& w, const TimeSeries& series, Trails* trails = nullptr,
               ParticleId selected = kNullParticle) {
-        renderer_->draw(w, camera_, view_, trails, selected);
+        renderer_->draw(w, kFrame, camera_, view_, trails, selected);
         overlays_.draw(sdl_, *font_, w, sampleObservables(w), camera_, series, view_, layout());
         SDL_RenderPresent(sdl_);
     }

@@ -23,13 +23,16 @@ namespace psb::app {
 namespace {
 
 constexpr int kSize = 400;
+/// The frame length the worlds drawn here are stepped by (a scene file's default dt): what the
+/// renderer's resting speed is measured against.
+constexpr double kFrame = 0.01;
 
 class RenderTest : public OffscreenTest {
   protected:
     explicit RenderTest(int size = kSize) : OffscreenTest(size) {}
 
     DrawStats draw(const World& w, ViewOptions o) {
-        const DrawStats s = renderer_->draw(w, camera_, o);
+        const DrawStats s = renderer_->draw(w, kFrame, camera_, o);
         SDL_RenderPresent(sdl_);
         return s;
     }
@@ -187,7 +190,7 @@ TEST_F(RenderTest, AParticleRestingUnderGravityInTheDiscreteModeHasNoArrow) {
             red += pixel(200, y).r > 0;
         return red;
     };
-    const double gdt = g * SolverSettings{}.dt;
+    const double gdt = g * kFrame;
     EXPECT_EQ(redBelow(gdt), 0);
     EXPECT_GT(redBelow(10.0 * gdt), 5);
 }
@@ -271,7 +274,7 @@ TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
     o.labels = true;
     // Nothing may be drawn above y = 200 (a panel there).
     const RenderAvoid avoid{SDL_Rect{0, 0, kSize, 200}};
-    const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, &avoid);
+    const DrawStats s = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, &avoid);
     SDL_RenderPresent(sdl_);
     EXPECT_EQ(brightPixels(0, 0, kSize, 200), 0);
     // Three 150 px wide labels cannot all sit side by side at 35 px spacing: those that fit are
@@ -294,7 +297,7 @@ TEST_F(RenderTest, ALabelStaysOnOneSideOfTheWalls) {
     ViewOptions o;
     o.arrows = false;
     o.labels = true;
-    const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, nullptr);
+    const DrawStats s = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, nullptr);
     SDL_RenderPresent(sdl_);
     EXPECT_EQ(s.labelled, 1u);
     EXPECT_EQ(brightPixels(0, 0, kSize, 47), 0);    // above the wall (2 px thick)
@@ -326,7 +329,7 @@ TEST_F(RenderTest, ALabelOverOtherDiscsDoesNotDarkenThem) {
         ViewOptions o;
         o.arrows = false;
         o.labels = labels;
-        const DrawStats s = renderer_->draw(w, camera_, o, nullptr, kNullParticle, nullptr);
+        const DrawStats s = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, nullptr);
         SDL_RenderPresent(sdl_);
         if (labels) {
             EXPECT_GE(s.labelled, 1u);
@@ -399,7 +402,7 @@ TEST_F(RenderTest, TheSelectionOutlineRingsTheDiscOutsideItsRim) {
     const World w = worldWith({200, 200}, Vec2::Zero(), 20.0, {0, 0, 255});
     ViewOptions o;
     o.arrows = false;
-    renderer_->draw(w, camera_, o);
+    renderer_->draw(w, kFrame, camera_, o);
     drawSelectionOutline(sdl_, camera_, w.get(w.ids()[0]));
     SDL_RenderPresent(sdl_);
     // Rings 3 and 4 px outside the 20 px rim, in the outline's yellow; the disc stays blue.

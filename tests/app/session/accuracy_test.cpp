@@ -16,6 +16,8 @@
 namespace psb::app {
 namespace {
 
+constexpr double kDt = 0.01;  ///< the frame length the worlds here are stepped by
+
 TEST(MonitoredEnergy, IsKineticWithoutGravityAndMechanicalWithIt) {
     // Under gravity kinetic energy alone changes as particles fall, so the HUD's drift would
     // claim energy made or lost: it follows kinetic + potential instead.
@@ -27,7 +29,7 @@ TEST(MonitoredEnergy, IsKineticWithoutGravityAndMechanicalWithIt) {
     kinetic.resetReference(kineticEnergy(w));
     monitored.resetReference(monitoredEnergy(w));
     for (int k = 0; k < 30; ++k)
-        w.step(w.solver().dt);
+        w.step(kDt);
     // A falling gas gains kinetic energy; kinetic + potential changes far less.
     const double keDrift = kinetic.drift(kineticEnergy(w));
     const double drift = monitored.drift(monitoredEnergy(w));
@@ -54,7 +56,7 @@ TEST(AccuracyMonitor, DriftStartsAtZeroAfterAnActionInAnEnergyChangingWorld) {
     AccuracyMonitor m;
     m.resetReference(kineticEnergy(w));
     for (int k = 0; k < 20; ++k)
-        w.step(w.solver().dt);
+        w.step(kDt);
     EXPECT_GT(std::abs(m.drift(kineticEnergy(w))), 1e-3);
     m.resetReference(kineticEnergy(w));
     EXPECT_EQ(m.drift(kineticEnergy(w)), 0.0);
@@ -71,7 +73,7 @@ TEST(AccuracyMonitor, OverlapCoversOnlyTheLastFrameThatStepped) {
     w.add(b);
     AccuracyMonitor m;
     m.beginSteps(w);
-    w.step(w.solver().dt);
+    w.step(kDt);
     m.endSteps(w);
     EXPECT_NEAR(m.overlap(), 3.0, 1e-9);
     // A paused frame (no step) keeps the figure.
@@ -80,7 +82,7 @@ TEST(AccuracyMonitor, OverlapCoversOnlyTheLastFrameThatStepped) {
     EXPECT_NEAR(m.overlap(), 3.0, 1e-9);
     // The next stepping frame finds them apart: the cumulative counter would still say 3 m.
     m.beginSteps(w);
-    w.step(w.solver().dt);
+    w.step(kDt);
     m.endSteps(w);
     EXPECT_LT(m.overlap(), 1e-9);
 }
@@ -94,7 +96,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     s.substeps = 4;
     w.setSolver(s);
     for (int k = 0; k < 5; ++k)
-        w.step(w.solver().dt);
+        w.step(kDt);
 
     // Grab a particle and drag it right through the gas for half a second.
     Interaction in;
@@ -110,7 +112,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
         t = 0.01 * k;
         in.moveTo(start + Vec2(200.0 * t, 0.0), t);
         applyHold(in, w, t, ls);
-        w.step(w.solver().dt);
+        w.step(kDt);
     }
     // A step carries the held particle on with the hand's velocity; the app places it at the
     // hand again before drawing and before the next step.
@@ -123,7 +125,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     d.velocity = {-30, -10};
     d.radius = 5.0;
     const ParticleId added = w.add(d);
-    w.step(w.solver().dt);
+    w.step(kDt);
     EXPECT_LT(w.get(added).position.x(), 650.0);
 
     // Delete the held particle, then keep stepping.
@@ -132,7 +134,7 @@ TEST_P(EveryMode, GrabSpawnAndDeleteKeepWorking) {
     EXPECT_EQ(w.size(), before - 1);
     EXPECT_FALSE(w.contains(target));
     for (int k = 0; k < 20; ++k)
-        w.step(w.solver().dt);
+        w.step(kDt);
     for (std::size_t i = 0; i < w.size(); ++i) {
         EXPECT_TRUE(std::isfinite(w.particles().x[i]));
         EXPECT_TRUE(std::isfinite(w.particles().y[i]));

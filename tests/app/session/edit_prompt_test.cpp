@@ -12,10 +12,11 @@ namespace {
 
 using Texts = std::array<std::string, kEditFields>;
 
+constexpr double kDt = 0.01;  ///< the frame length the worlds here are stepped by
+
 World boxWorld(StepMode mode = StepMode::Discrete) {
     SolverSettings s;
     s.mode = mode;
-    s.dt = 0.01;
     return World(WorldDef{}, s);  // 700 m × 700 m, walls on, no gravity
 }
 
@@ -202,7 +203,7 @@ TEST(ApplyEdit, InExactModeTheEventQueueFollowsTheEdit) {
     };
     World edited = build({0, 0}, 10.0);
     for (int k = 0; k < 50; ++k)
-        edited.step(edited.solver().dt);
+        edited.step(kDt);
     const ParticleId target = edited.ids()[1];
     const Particle now = edited.get(target);
     // Toward the first particle, larger: the collision comes much earlier than predicted.
@@ -217,8 +218,8 @@ TEST(ApplyEdit, InExactModeTheEventQueueFollowsTheEdit) {
     EXPECT_EQ(fresh.get(fresh.ids()[1]).velocity, Vec2(-120, 0));
     EXPECT_NE(now.velocity, Vec2(-120, 0));
     for (int k = 0; k < 200; ++k) {
-        edited.step(edited.solver().dt);
-        fresh.step(fresh.solver().dt);
+        edited.step(kDt);
+        fresh.step(kDt);
     }
     EXPECT_GT(edited.counters().collisions, 0u);
     const auto ie = edited.ids(), iff = fresh.ids();

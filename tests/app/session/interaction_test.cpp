@@ -12,9 +12,7 @@ namespace psb::app {
 namespace {
 
 World boxWorld() {
-    SolverSettings s;
-    s.dt = 0.01;
-    return World(WorldDef{}, s);  // 700 m × 700 m, walls on
+    return World(WorldDef{});  // 700 m × 700 m, walls on
 }
 
 ParticleId addAt(World& w, Vec2 pos, double radius = 10.0, double mass = 2.0) {

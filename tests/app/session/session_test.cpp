@@ -99,7 +99,7 @@ TEST_F(SessionTest, PausedTheWorldStepsOnlyOnASingleStep) {
     EXPECT_EQ(s.world().time(), 0.0);
     s.apply(cmd::SingleStep{});
     s.update(0.0, 0.0);
-    EXPECT_DOUBLE_EQ(s.world().time(), s.world().solver().dt);
+    EXPECT_DOUBLE_EQ(s.world().time(), s.meta().dt);
 }
 
 TEST_F(SessionTest, ModeCyclingUnderGravityVisitsEveryMode) {
@@ -287,7 +287,7 @@ TEST_F(SessionTest, TheHudCanShowTheTimeSpeedReached) {
     for (int k = 0; k < 60; ++k)
         s.update(0.1, 0.0, 0.0);  // a budget of 0 ms: one step a frame
     // One dt of 1/60 s per 0.1 s of real time: x0.17 reached of x8 asked.
-    EXPECT_NEAR(s.reachedTimeScale(), s.world().solver().dt / 0.1, 0.02);
+    EXPECT_NEAR(s.reachedTimeScale(), s.meta().dt / 0.1, 0.02);
     EXPECT_LT(s.reachedTimeScale(), s.timeScale());
 }
 
@@ -360,8 +360,8 @@ TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
 }
 
 TEST_F(SessionTest, MFindsRoomInTheGasPreset) {
-    Session s(makeWorld(loadScene(testAsset("scenes/04-gas-in-a-box.json"))), SceneMeta{"gas"},
-              options());
+    const Scene gas = loadScene(testAsset("scenes/04-gas-in-a-box.json"));
+    Session s(makeWorld(gas), SceneMeta{.name = "gas", .dt = gas.dt}, options());
     const std::size_t n = s.world().size();
     for (int k = 0; k < 10; ++k)
         s.apply(cmd::SpawnRandom{});

@@ -123,7 +123,7 @@ TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
 
     World pegs(s.world().def());
     pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
-    s.setWorld(std::move(pegs), SceneMeta{"pegs"});
+    s.setWorld(std::move(pegs), SceneMeta{.name = "pegs", .dt = Scene{}.dt});
     (void)s.takeNotices();
     s.apply(cmd::SetMode{StepMode::Exact});
     EXPECT_EQ(s.world().solver().mode, StepMode::Exact);
@@ -342,10 +342,10 @@ TEST_F(SessionValues, AnotherSceneForgetsTheLastOnesOverlap) {
     pressed.add(a);
     a.position = {3.5, 3.0};
     pressed.add(a);
-    s.setWorld(std::move(pressed), SceneMeta{"pressed"});
+    s.setWorld(std::move(pressed), SceneMeta{.name = "pressed", .dt = Scene{}.dt});
     s.update(0.0, 0.0);
     ASSERT_GT(s.accuracy().overlap(), 0.4);
-    s.setWorld(World(def), SceneMeta{"empty"});
+    s.setWorld(World(def), SceneMeta{.name = "empty", .dt = Scene{}.dt});
     EXPECT_EQ(s.accuracy().overlap(), 0.0);
 }
 

@@ -21,13 +21,14 @@ namespace psb::app {
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+constexpr double kDt = 0.01;  ///< the frame length (the scene's dt) the gas is stepped by
 
 World gas(StepMode mode, int n = 150) {
     WorldDef def;
     def.width = def.height = 40.0;
     def.restitution = 0.95;
     if (mode != StepMode::Exact) def.gravity = Vec2(0.0, 9.81);
-    World w(def, {.mode = mode, .dt = 0.01, .substeps = 4});
+    World w(def, {.mode = mode, .substeps = 4});
     w.setThreads(1);
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(1.0, 39.0);
@@ -41,19 +42,19 @@ World gas(StepMode mode, int n = 150) {
     return w;
 }
 
-/// One 60 Hz frame as the app runs it: the world is stepped by its solver dt as often as the
+/// One 60 Hz frame as the app runs it: the world is stepped by the scene's dt as often as the
 /// accumulated time allows, each step reported, then the frame is recorded.
 std::int64_t frame(World& world, Timeline& timeline, double& accumulator) {
     accumulator += 1.0 / 60.0;
-    while (accumulator >= world.solver().dt) {
-        world.step(world.solver().dt);
-        timeline.stepped(world.solver().dt);
-        accumulator -= world.solver().dt;
+    while (accumulator >= kDt) {
+        world.step(kDt);
+        timeline.stepped(kDt);
+        accumulator -= kDt;
     }
     return timeline.record(world);
 }
 
-/// Runs `frames` frames the way the app does (a 60 Hz frame steps the world by its solver dt
+/// Runs `frames` frames the way the app does (a 60 Hz frame steps the world by the scene's dt
 /// as often as the accumulated time allows), recording each, with the user's edits of
 /// `edit(world, frame)` (which returns whether it changed anything). Keeps a copy of the world
 /// at every frame as the reference.
@@ -111,7 +112,7 @@ bool userEdits(World& w, int f) {
 /// rebuilding a frame re-simulates up to 15 frames.
 Timeline sparseTimeline(const World& world) {
     World probe = world;
-    probe.step(probe.solver().dt);  // the exact mode's event state exists after a step
+    probe.step(kDt);  // the exact mode's event state exists after a step
     return Timeline({.horizonSeconds = 10.0, .budgetBytes = 40 * probe.stateBytes()});
 }
 
@@ -142,8 +143,8 @@ TEST_P(TimelineModes, ARebuiltFrameStepsOnLikeTheWorldDid) {
         World a = timeline.seek(f);
         World b = ref[static_cast<std::size_t>(f)];
         for (int k = 0; k < 40; ++k) {
-            a.step(a.solver().dt);
-            b.step(b.solver().dt);
+            a.step(kDt);
+            b.step(kDt);
         }
         EXPECT_TRUE(identical(a, b)) << "frame " << f << " in " << toString(GetParam());
     }
@@ -174,15 +175,15 @@ TEST_P(TimelineModes, ADragThroughTheTimelinesSettersIsReplayedWithoutKeyframes)
     for (int f = 0; f < 120; ++f) {
         if (f == 10) timeline.setKinematic(world, held, true);
         accumulator += 1.0 / 60.0;
-        while (accumulator >= world.solver().dt) {
+        while (accumulator >= kDt) {
             if (f >= 10 && f < 90) {  // the hand moves the held particle before every step
                 const double t = world.time();
                 timeline.setPosition(world, held, Vec2(20.0 + 8.0 * std::sin(3.0 * t), 20.0));
                 timeline.setVelocity(world, held, Vec2(24.0 * std::cos(3.0 * t), 0.0));
             }
-            world.step(world.solver().dt);
-            timeline.stepped(world.solver().dt);
-            accumulator -= world.solver().dt;
+            world.step(kDt);
+            timeline.stepped(kDt);
+            accumulator -= kDt;
         }
         if (f == 90) {  // let go with a fling
             timeline.setKinematic(world, held, false);
@@ -299,12 +300,12 @@ TEST(Timeline, AChangeNobodyReportedIsStillRecordedRight) {
     World world = gas(StepMode::Discrete);
     Timeline timeline = sparseTimeline(world);
     std::vector<World> ref = run(world, timeline, 10, noEdits);
-    world.step(world.solver().dt);  // not reported
+    world.step(kDt);  // not reported
     timeline.record(world);
     ref.push_back(world);
     world.add({.position = {5.0, 5.0}});  // not reported either
-    world.step(world.solver().dt);
-    timeline.stepped(world.solver().dt);
+    world.step(kDt);
+    timeline.stepped(kDt);
     timeline.record(world);
     ref.push_back(world);
     EXPECT_EQ(timeline.unreportedChanges(), 2u);

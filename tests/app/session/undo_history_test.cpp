@@ -18,7 +18,7 @@ namespace {
 World crowd(int n, StepMode mode = StepMode::Discrete) {
     WorldDef def;
     def.width = def.height = 2.0 * n;
-    World w(def, {.mode = mode, .dt = 0.01});
+    World w(def, {.mode = mode});
     w.setThreads(1);
     for (int k = 0; k < n; ++k) {
         w.add({.position = {1.0 + 2.0 * (k % n), 1.0 + 2.0 * (k / n)},

@@ -694,9 +694,7 @@ TEST(DiscreteObstacles, NoBallHangsOnAGaltonBoardsPeg) {
     // top of it once hung there, its speed growing without bound (a time-0 "first contact"
     // threw its whole move away every step). Every ball must reach the bins, none faster than
     // a fall from the top of the board gives.
-    SolverSettings discrete;
-    discrete.dt = 0.001;
-    const GaltonDrop drop = dropBalls(discrete, 100, 0.001);
+    const GaltonDrop drop = dropBalls(SolverSettings{.mode = StepMode::Discrete}, 100, 0.001);
     EXPECT_EQ(drop.stuck, 0);
     EXPECT_LT(drop.fastest, 3.0);
     EXPECT_EQ(drop.outside, 0);
