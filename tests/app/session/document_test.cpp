@@ -35,9 +35,11 @@ TEST_F(DocumentTest, SceneMetaTakesTheFilesStemWhenTheSceneHasNoName) {
     Scene s = defaultScene();
     s.name.clear();
     s.trails = {0};
+    s.dt = 1.0 / 240.0;
     const SceneMeta m = sceneMeta(s, std::filesystem::path("lessons/cradle.json"));
     EXPECT_EQ(m.name, "cradle");
     EXPECT_EQ(m.trails, std::vector<std::size_t>{0});
+    EXPECT_EQ(m.dt, 1.0 / 240.0);  // the scene's frame length, what the session steps by
     EXPECT_EQ(sceneMeta(defaultScene(), std::nullopt).name, defaultScene().name);
 }
 
@@ -57,7 +59,9 @@ TEST_F(DocumentTest, RecentFilesAreNewestFirstOnceEachAndAtMostFive) {
 }
 
 TEST_F(DocumentTest, ASaveWritesTheMetaAndClearsTheUnsavedMark) {
-    Document d(makeWorld(defaultScene()), SceneMeta{"lesson", "Two discs."}, dir_ / "save.json");
+    Document d(makeWorld(defaultScene()),
+               SceneMeta{.name = "lesson", .description = "Two discs.", .dt = 1.0 / 240.0},
+               dir_ / "save.json");
     d.dirty = true;
     d.fileError = "Save failed: earlier";
     const std::string said = d.save(dir_ / "lesson.json");
@@ -70,6 +74,7 @@ TEST_F(DocumentTest, ASaveWritesTheMetaAndClearsTheUnsavedMark) {
     const Scene back = loadScene(dir_ / "lesson.json");
     EXPECT_EQ(back.name, "lesson");
     EXPECT_EQ(back.description, "Two discs.");
+    EXPECT_EQ(back.dt, 1.0 / 240.0);  // the meta's frame length: the world keeps none
     EXPECT_THROW(d.save(dir_ / "no-such-folder" / "x.json"), SaveError);
 }
 
