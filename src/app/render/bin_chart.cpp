@@ -26,7 +26,7 @@ BinChartLayout binChartLayout(const Font& font, float x, float width, float lege
 }
 
 void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
-                             const PixelRect& box) {
+                    const PixelRect& box) {
     const ChartFrame f = beginChart(font, box, boxes_, text_);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();

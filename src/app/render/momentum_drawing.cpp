@@ -34,8 +34,8 @@ void appendArrow(GeometryBatch& batch, const Vec2& a, const Vec2& b, double head
 }  // namespace
 
 void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World& world,
-                        const ObservablesSample& now, const Camera& camera,
-                        const TimeSeries& series, double arrowSeconds, const PixelRect& legend) {
+                           const ObservablesSample& now, const Camera& camera,
+                           const TimeSeries& series, double arrowSeconds, const PixelRect& legend) {
     const ParticleArrays& p = world.particles();
     arrows_.clear();
     text_.clear();

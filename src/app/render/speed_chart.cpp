@@ -11,7 +11,7 @@
 namespace psb::app {
 
 void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
-                               const PixelRect& box) {
+                      const PixelRect& box) {
     const ChartFrame f = beginChart(font, box, boxes_, text_);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
