@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Particle Sandbox needs, skipping those already present.
-#   scripts/install-deps.sh          build dependencies (compiler, CMake, libraries)
+#   scripts/install-deps.sh          build dependencies (compiler, CMake, ccache, libraries)
 #   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick,
 #                                    clang with libFuzzer for the fuzz targets, and for the
 #                                    install test man, desktop-file-validate, file (which
@@ -8,7 +8,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config ccache
   libeigen3-dev libsdl2-dev libsdl2-ttf-dev libstb-dev libimgui-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libboost-dev
