@@ -68,10 +68,13 @@ App::App(const AppOptions& options) : options_(options) {
 
     SessionOptions s;
     s.saveTo = options_.saveTo;
+    s.saveFolder = options_.screenshotDir;
+    if (options_.benchParticles == 0) s.sceneFile = options_.scene;
     s.presets = presetScenes();
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
-    s.paused = options_.startPaused;
+    // A scene named on the command line opens paused, as presets do: its start is shown first.
+    s.paused = options_.startPaused || (options_.scene && options_.benchParticles == 0);
     s.arrows = options_.arrows;
     const SDL_Point out = sdl_->outputSize();
     s.viewportWidth = out.x;

@@ -54,9 +54,10 @@ namespace psb::app {
 /// The command line, parsed.
 struct AppOptions {
     std::optional<std::filesystem::path> scene;  ///< scene file to open; the default if none
-    std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Ctrl+S writes first
-    std::filesystem::path screenshotDir = ".";                    ///< where F12 writes
-    int width = 800;                                              ///< window, pixels
+    /// What Save As proposes (--save-to); none: a name after the scene's in screenshotDir.
+    std::optional<std::filesystem::path> saveTo;
+    std::filesystem::path screenshotDir = ".";  ///< where F12 writes, and Save As proposes
+    int width = 800;                            ///< window, pixels
     int height = 800;
     bool vsync = true;
     bool startPaused = false;

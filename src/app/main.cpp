@@ -47,11 +47,14 @@ int main(int argc, char** argv) {
     const auto assets = psb::app::assetDirectory();
     cli.footer(assets ? "Preset scenes (P, 1-9) and fonts are read from " + assets->string()
                       : std::string("No fonts or preset scenes found; set PSB_ASSETS_DIR."));
-    std::string scene, window, saveTo = options.saveTo.string();
+    std::string scene, window, saveTo;
     std::string screenshotDir = options.screenshotDir.string();
     cli.add_option("SCENE", scene, "Scene file (JSON) to open; a built-in scene if omitted");
-    cli.add_option("--save-to", saveTo, "Where Ctrl+S saves the world")->capture_default_str();
-    cli.add_option("--screenshot-dir", screenshotDir, "Where F12 saves PNG screenshots")
+    cli.add_option("--save-to", saveTo,
+                   "The file Save As proposes (Enter in its dialog writes it; a free NAME-2.json "
+                   "beside it if it exists)");
+    cli.add_option("--screenshot-dir", screenshotDir,
+                   "Where F12 saves PNG screenshots, and where Save As proposes a file")
         ->capture_default_str();
     cli.add_option("--window", window, "Window size in pixels, WIDTHxHEIGHT (default 800x800)");
     cli.add_option("--renderer", options.renderDriver,
@@ -99,17 +102,20 @@ int main(int argc, char** argv) {
         options.benchParticles = static_cast<std::size_t>(bench);
     }
     // A path the app cannot write to is reported now, not at the first Ctrl+S or F12.
-    if (std::filesystem::is_directory(saveTo)) {
-        return badOption("--save-to: " + saveTo + " is a directory; give a file name");
-    }
-    if (const auto why = psb::app::outputDirectoryProblem(psb::app::directoryOf(saveTo))) {
-        return badOption("--save-to: " + *why);
+    if (cli.count("--save-to") > 0) {
+        if (saveTo.empty()) return badOption("--save-to: needs a file name");
+        if (std::filesystem::is_directory(saveTo)) {
+            return badOption("--save-to: " + saveTo + " is a directory; give a file name");
+        }
+        if (const auto why = psb::app::outputDirectoryProblem(psb::app::directoryOf(saveTo))) {
+            return badOption("--save-to: " + *why);
+        }
+        options.saveTo = saveTo;
     }
     if (const auto why = psb::app::outputDirectoryProblem(screenshotDir)) {
         return badOption("--screenshot-dir: " + *why);
     }
     if (!scene.empty()) options.scene = scene;
-    options.saveTo = saveTo;
     options.screenshotDir = screenshotDir;
     options.arrows = !noArrows;
     options.vsync = !noVsync && options.benchParticles == 0;

@@ -253,6 +253,33 @@ TEST_F(AppTest, RRestoresTheSceneAsLoadedEvenIfItsFileChanged) {
     EXPECT_EQ(test::stateHash(app.world()), loaded);
 }
 
+TEST_F(AppTest, ASceneNamedOnTheCommandLineOpensPausedAndCtrlSWritesItsFile) {
+    const fs::path file = dir_ / "lesson.json";
+    Scene s = defaultScene();
+    s.particles.resize(2);
+    saveScene(s, file);
+    AppOptions o = options();
+    o.startPaused = false;
+    o.scene = file;
+    App app(o);
+    EXPECT_TRUE(app.session().paused());
+    app.frame(0.2);
+    EXPECT_EQ(app.world().time(), 0.0);
+    key(app, SDLK_m);
+    EXPECT_TRUE(app.session().unsavedChanges());
+    // The user opened a file they may write: Ctrl+S writes it, no dialog.
+    key(app, SDLK_s, KMOD_LCTRL);
+    EXPECT_FALSE(app.session().dialog().open());
+    EXPECT_FALSE(app.session().unsavedChanges());
+    EXPECT_EQ(loadScene(file).particles.size(), 3u);
+    // Ctrl+Shift+S asks for a name; Esc cancels it and writes nothing.
+    key(app, SDLK_s, KMOD_LCTRL | KMOD_LSHIFT);
+    EXPECT_EQ(app.session().dialog().kind, Dialog::Kind::SaveAs);
+    key(app, SDLK_ESCAPE);
+    EXPECT_FALSE(app.session().dialog().open());
+    EXPECT_TRUE(app.session().running());
+}
+
 TEST_F(AppTest, F12WritesTheWindowAsAPng) {
     App app(options());
     key(app, SDLK_F12);

@@ -99,7 +99,7 @@ pass "overlap while paused: '$line'"
 
 # --- 7. a capped launch says so --------------------------------------------------------------
 key r
-wait_log "Reset to the scene as loaded"
+wait_log "Restarted: back to the scene as it opened"
 # From near the left wall across the box to near the right wall, low in the (empty) lower half:
 # 6.4 m of drag over a 1/3 s arrow is 19 m/s, over the cap of 2 box widths per second (14 m/s).
 xdotool mousemove --sync "$(sx 0.3)" "$(sy 6.2)" sleep 0.1 mousedown 1 sleep 0.1
@@ -142,6 +142,9 @@ LOG="$OUT/stdout-heavy.log"
 SNAPS=0
 start_app "$BIN" --renderer software --window 800x600 --no-arrows --seed 7 \
     --screenshot-dir "$OUT" "$OUT/heavy.json"
+wait_log "Opened heavy.json: .*, paused: Space starts it"  # a scene named on the command line
+key space
+wait_log "Resumed"
 key period
 key period
 key period

@@ -91,7 +91,9 @@ pass "peg placed: $(grep 'Added obstacle 1' "$LOG")"
 
 # --- 3. saved with the scene ------------------------------------------------------------------
 xdotool mousemove $((WX + 900)) $((WY + 700))
-key ctrl+s
+key ctrl+s  # no file yet: Save As, proposing --save-to; Enter saves
+wait_log "Save as: type a file name"
+key Return
 wait_log "Saved 6 particles to .*saved.json"
 S=$(saved)
 [[ -s "$S" ]] || fail "no file at $S"
@@ -109,8 +111,8 @@ pass "saved: wall [$sax, $say] - [$sbx, $sby] thickness $thick m, peg [$spx, $sp
 # --- 4. undo the peg --------------------------------------------------------------------------------
 key ctrl+z
 wait_log "Undone: place peg"
-key ctrl+s
-wait_log "Saved 6 particles to .*saved-2.json"
+key ctrl+s  # the scene belongs to saved.json now: written again
+wait_count "Saved 6 particles to .*saved.json" 2
 S2=$(saved)
 (($(count "$S2" peg) == 0)) || fail "the peg undone is still saved in $S2"
 (($(count "$S2" segment) == 1)) || fail "the wall is gone from $S2"
@@ -137,10 +139,10 @@ wait_log "Undone: remove wall"
 pass "wall selected, moved ($(grep 'Moved obstacle 0' "$LOG" | sed 's/.*: wall/wall/')), deleted and brought back"
 
 xdotool mousemove $((WX + 900)) $((WY + 700))
-key Escape  # the move is unsaved: the first Esc asks
-wait_log "Unsaved changes: Esc again quits"
+key Escape  # the move is unsaved: Esc asks in a dialog; D discards and quits
+wait_log "Unsaved changes to .*: Save, Discard or Cancel"
 # The window may be gone before xdotool sends the key release: that error is expected.
-xdotool key --window "$WID" Escape 2>/dev/null || true
+xdotool key --window "$WID" d 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""

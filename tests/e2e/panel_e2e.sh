@@ -17,7 +17,7 @@
 #                                                                   0.2 m particle, walls off,
 #                                                                   gravity 9.81, e = 0, substep
 #   5b. turns the wheel over the preset list, past its end      -> no zoom of the view
-#   6. clicks Play/Pause twice, Step                             -> time moves; Reset: 6 again
+#   6. clicks Play/Pause twice, Step                             -> time moves; Restart: 6 again
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
 #   8. Esc                                                       -> exits (reset: nothing unsaved)
 set -euo pipefail
@@ -131,9 +131,9 @@ sleep 0.5
 click "Play/Pause"
 wait_log "\] Paused"
 click Step
-click Reset
-wait_log "Reset to the scene as loaded: 6 particles"
-pass "Play, Pause, Step and Reset"
+click Restart
+wait_log "Restarted: back to .* \(6 particles"
+pass "Play, Pause, Step and Restart"
 
 # --- 7. fold and open ---------------------------------------------------------------------------
 before=$(box_left)

@@ -183,7 +183,11 @@ labelled=$(white_in "$OUT/5-labels.png" "$inner")
 pass "S shows labels ($plain -> $labelled white pixels)"
 
 # --- 6. save ------------------------------------------------------------------------------
+# The built-in scene has no file: Ctrl+S asks for a name, proposing --save-to; Enter saves.
 key ctrl+s
+wait_log "Save as: type a file name, Enter saves, Esc cancels \(folder /"
+shot 6-save-as
+key Return
 wait_log "Saved 6 particles to /.*/saved.json"  # the full path
 [[ -s "$OUT/saved.json" ]] || fail "Ctrl+S wrote no file"
 # One particle per line. The launched one is the scene's typical particle (the median: 12 kg,
@@ -198,11 +202,17 @@ awk -v vx="$svx" -v vy="$svy" 'BEGIN { exit !(vx > 1 && vy < -1) }' ||
     fail "saved launched particle does not move up-right: $launched"
 ((  $(grep -c '"mass":' "$OUT/saved.json") == 6 )) || fail "saved scene does not hold 6 particles"
 first_save=$(md5sum <"$OUT/saved.json")
-key ctrl+s  # again: a new file beside it, the first one kept
+# The scene now belongs to the file the user named: Ctrl+S writes it again, without asking.
+key ctrl+s
+wait_count "Saved 6 particles to /.*/saved.json" 2
+# Save As proposes a free name beside it, never the file itself.
+key ctrl+shift+s
+wait_count "Save as: type a file name" 2
+key Return
 wait_log "Saved 6 particles to /.*/saved-2.json"
 [[ -s "$OUT/saved-2.json" && $(md5sum <"$OUT/saved.json") == "$first_save" ]] ||
-    fail "a second Ctrl+S did not keep the first save"
-pass "Ctrl+S saved the scene; launched particle: vx $svx, vy $svy m/s; a second save went beside it"
+    fail "Save As did not keep the first save"
+pass "Ctrl+S asked for a name and saved; launched particle: vx $svx, vy $svy m/s; Ctrl+S wrote it again; Save As went beside it"
 
 # --- 7. analysis overlays ----------------------------------------------------------------
 # Pixels of one exact colour (hex, as ImageMagick prints it) in the window.
@@ -369,7 +379,8 @@ shot 9-fitted-again
 pass "box off screen: a $marker px marker points to it; F fits it again"
 
 # --- 15. quit -----------------------------------------------------------------------------
-# Esc closes the help first; with unsaved changes it asks; a second Esc quits.
+# Esc closes the help first; with unsaved changes it asks in a dialog, where Esc is Cancel and
+# D discards the changes and quits.
 key h
 key Escape
 sleep 0.3
@@ -377,12 +388,17 @@ kill -0 "$APP_PID" 2>/dev/null || fail "Esc with the help open quit the program"
 key m
 wait_log "Spawned particle"
 key Escape
-wait_log "\[W\] Unsaved changes: Esc again quits without saving"
+wait_log "\[W\] Unsaved changes to .*: Save, Discard or Cancel"
+shot 15-quit-dialog
+key Escape
+wait_log "Quit cancelled"
 sleep 0.3
 kill -0 "$APP_PID" 2>/dev/null || fail "Esc with unsaved changes quit without asking"
-pass "Esc closes the help, then asks before losing unsaved changes"
+pass "Esc closes the help, then asks before losing unsaved changes; Esc again cancels"
+key Escape
+wait_count "Unsaved changes to .*: Save, Discard or Cancel" 2
 # The window may be gone before xdotool sends the key release: that error is expected.
-xdotool key --window "$WID" Escape 2>/dev/null || true
+xdotool key --window "$WID" d 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
 if kill -0 "$APP_PID" 2>/dev/null; then fail "Esc did not quit"; fi
 wait "$APP_PID" && status=0 || status=$?

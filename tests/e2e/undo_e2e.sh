@@ -29,6 +29,11 @@ saves=0
 # save NAME: Ctrl+S, then the file it wrote copied to OUT/NAME.json
 save() {
     key ctrl+s
+    # The first save asks for a name (the scene has no file yet): Enter takes --save-to's.
+    if ((saves == 0)); then
+        wait_log "Save as: type a file name"
+        key Return
+    fi
     saves=$((saves + 1))
     wait_count "Saved [0-9]+ particles? to " "$saves" 8
     local file

@@ -115,7 +115,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 44)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 49)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -174,7 +174,7 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                                                             s.loadedWorld().def().gravity)}
                                     : Command{modeStep(s.world().solver())};
         case 25:
-            return cmd::Reset{};
+            return cmd::Restart{};
         case 26:
             return cmd::OpenPreset{presets.empty() ? -1
                                                    : in.ConsumeIntegralInRange<int>(
@@ -230,6 +230,28 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 43:
             if (in.ConsumeBool()) return cmd::Save{};
             return cmd::SaveAs{saveDir() / text(in), in.ConsumeBool()};
+        case 44:
+            // The dialogs: opened, answered, cancelled, in any order.
+            switch (in.ConsumeIntegralInRange<int>(0, 3)) {
+                case 0:
+                    return cmd::AskSaveAs{};
+                case 1:
+                    return cmd::AskNewScene{};
+                case 2:
+                    return cmd::CloseDialog{};
+                default:
+                    return cmd::Quit{};
+            }
+        case 45:
+            return cmd::AnswerQuit{
+                static_cast<cmd::AnswerQuit::Choice>(in.ConsumeIntegralInRange<int>(0, 2))};
+        case 46:
+            return cmd::NewScene{value(in, -1.0, 50.0), value(in, -1.0, 50.0),
+                                 value(in, -1.0, 100.0), in.ConsumeBool()};
+        case 47:
+            return in.ConsumeBool() ? Command{cmd::Revert{}} : Command{cmd::Restart{}};
+        case 48:
+            return cmd::SetSceneText{text(in), text(in)};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }

@@ -24,9 +24,9 @@ xdotool mousemove "$(sx 2)" "$(sy 2)" mousedown 1 mousemove "$(sx 3)" "$(sy 3)" 
 sleep 1
 # SDL may have replaced the window it first mapped (a GL visual): the window that is there now.
 WID=$(xdotool search --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" | tail -1)
-key Escape  # the launch is unsaved: the first Esc asks, the second quits
+key Escape  # the launch is unsaved: Esc asks in a dialog, D discards and quits
 sleep 0.5
-key Escape
+key d
 status=0
 for _ in $(seq 200); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.1; done
 kill -0 "$APP_PID" 2>/dev/null && fail "still running 20 s after Esc"

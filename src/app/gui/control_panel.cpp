@@ -85,6 +85,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     if (!open) ImGui::PopStyleVar();
     ImGui::PopStyleColor();
     launchPreview(s, pixelRatio);
+    dialog(s);
     return std::move(out_);
 }
 
@@ -104,9 +105,10 @@ void ControlPanel::time(const Session& s) {
     ImGui::EndDisabled();
     tip("Advance one time step while paused (key N)");
     ImGui::SameLine();
-    if (ImGui::Button("Reset")) out_.emplace_back(cmd::Reset{});
-    mark("Reset");
-    tip("Put every particle back where the scene started (key R)");
+    if (ImGui::Button("Restart")) out_.emplace_back(cmd::Restart{});
+    mark("Restart");
+    tip("Back to the set-up: every particle where it was when Play was last pressed after an "
+        "edit, or as the scene opened (key R). Scene: Revert goes back to the file");
 
     // Undo and redo of edits; back and forward in time (while paused).
     ImGui::BeginDisabled(!s.canUndo());
@@ -188,29 +190,30 @@ void ControlPanel::scene(const Session& s) {
     }
     ImGui::EndChild();
 
+    if (ImGui::Button("New scene...")) out_.emplace_back(cmd::AskNewScene{});
+    mark("New scene");
+    tip("Start from an empty box: its size, gravity and walls in a dialog (Ctrl+N)");
+    sceneText(s);
+    sceneFile(s);
+
     if (!pathFilled_) {
         copyPath(path_, s.lastSave() ? *s.lastSave() : std::filesystem::path("my-scene.json"));
         pathFilled_ = true;
     }
-    ImGui::SetNextItemWidth(-1.f);
+    ImGui::TextUnformatted("Open a scene file");
+    ImGui::SetNextItemWidth(-60.f);
     ImGui::InputText("##path", path_.data(), path_.size());
     mark("path");
-    tip("A scene file: type a path, then Open or Save");
+    tip("A scene file's path (JSON), absolute or from the folder the program started in");
+    ImGui::SameLine();
     if (ImGui::Button("Open"))
         out_.emplace_back(cmd::OpenFile{std::filesystem::path(path_.data())});
     mark("Open");
-    tip("Open the scene file named above");
-    ImGui::SameLine();
-    if (ImGui::Button("Save")) out_.emplace_back(cmd::SaveAs{path_.data(), false});
-    mark("Save");
-    tip("Save the world to the file named above; an existing file is kept and a new name "
-        "(NAME-2.json, ...) chosen (Ctrl+S saves too)");
+    tip("Open the scene file named on the left");
     if (!s.fileError().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
         ImGui::TextWrapped("%s", s.fileError().c_str());
         ImGui::PopStyleColor();
-    } else if (s.lastSave()) {
-        ImGui::TextWrapped("Saved to %s", s.lastSave()->string().c_str());
     }
     if (!s.recentFiles().empty()) {
         ImGui::TextUnformatted("Recent files");

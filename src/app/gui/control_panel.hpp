@@ -2,8 +2,9 @@
 // The on-screen control panel (Dear ImGui): a column at the left of the window, beside the box
 // (view/box_area.hpp keeps it out of the box's area), with collapsible sections
 //
-//   Time       play / pause, one step, time speed, reset
-//   Scene      presets with a line on each, open and save with a path field, recent files
+//   Time       play / pause, one step, time speed, restart
+//   Scene      presets with a line on each, new scene, title and description, the file with
+//              Save, Save As and Revert, open with a path field, recent files
 //   Physics    stepping mode (and why one is unavailable), restitution, friction, gravity, walls
 //   Show       arrows, labels, momentum and centre of mass, trails, plots, speed histogram
 //   Tools      what the left mouse does; what a launched particle is made of; obstacle sizes
@@ -17,9 +18,10 @@
 // narrow strip with one button that opens it again.
 //
 // The panel's pieces are in control_panel.cpp (the window, time, scene, show, tools), one file
-// per section after that: section_obstacles.cpp (the obstacle tools' sizes, removing an
-// obstacle), section_physics.cpp, section_readouts.cpp (readouts, engine) and
-// section_particles.cpp (selected, all particles); widgets.hpp holds the small widgets they
+// per section after that: section_scene_file.cpp (the scene's text and file),
+// section_dialogs.cpp (Save As, New scene, the quit question), section_obstacles.cpp (the obstacle
+// tools' sizes, removing an obstacle), section_physics.cpp, section_readouts.cpp (readouts, engine)
+// and section_particles.cpp (selected, all particles); widgets.hpp holds the small widgets they
 // share.
 
 #include <array>
@@ -75,6 +77,12 @@ class ControlPanel {
     void mark(const std::string& name);
     void time(const Session& s);
     void scene(const Session& s);
+    /// The scene's title and description, editable (section_scene_file.cpp).
+    void sceneText(const Session& s);
+    /// The scene's file, unsaved changes, Save, Save As, Revert (section_scene_file.cpp).
+    void sceneFile(const Session& s);
+    /// The dialog the session has open, as a modal window (section_dialogs.cpp).
+    void dialog(const Session& s);
     void physics(const Session& s);
     void show(const Session& s, float pixelRatio);
     void tools(const Session& s, float pixelRatio);
@@ -90,6 +98,15 @@ class ControlPanel {
     std::vector<PanelItem> items_;
     std::array<char, 512> path_{};
     bool pathFilled_ = false;
+    /// The title and description while they are typed in (else the scene's).
+    std::array<char, 128> title_{};
+    std::array<char, 2048> description_{};
+    bool titleActive_ = false, descriptionActive_ = false;
+    /// The dialog's fields while it is open: the name to save as, the new scene's box.
+    std::array<char, 512> saveName_{};
+    double newWidth_ = 10.0, newHeight_ = 10.0, newGravity_ = 0.0;
+    bool newWalls_ = true;
+    int shownDialog_ = 0;  ///< the Dialog::Kind the fields were filled for
     int substeps_ = 4;
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 6> fieldText_{};

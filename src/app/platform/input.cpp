@@ -31,6 +31,40 @@ std::vector<Command> editKey(const SDL_KeyboardEvent& key) {
     }
 }
 
+/// The keys of an open dialog (when ImGui does not take them: its text field takes Enter).
+std::vector<Command> dialogKey(const SDL_KeyboardEvent& key, const Dialog& dialog) {
+    if (key.repeat != 0) return {};
+    switch (key.keysym.sym) {
+        case SDLK_ESCAPE:
+            return {cmd::Back{}};
+        case SDLK_F12:
+            return {cmd::Screenshot{}};
+        case SDLK_RETURN:
+        case SDLK_KP_ENTER:
+            switch (dialog.kind) {
+                case Dialog::Kind::Quit:
+                    return {cmd::AnswerQuit{cmd::AnswerQuit::Choice::Save}};
+                case Dialog::Kind::SaveAs:
+                    if (!dialog.replace.empty()) return {cmd::SaveAs{dialog.replace, true}};
+                    return {cmd::SaveAs{dialog.proposal, false}};
+                case Dialog::Kind::NewScene: {
+                    const NewSceneSpec& n = dialog.newScene;
+                    return {cmd::NewScene{n.width, n.height, n.gravity, n.walls}};
+                }
+                case Dialog::Kind::None:
+                    break;
+            }
+            return {};
+        case SDLK_d:
+            if (dialog.kind == Dialog::Kind::Quit) {
+                return {cmd::AnswerQuit{cmd::AnswerQuit::Choice::Discard}};
+            }
+            return {};
+        default:
+            return {};
+    }
+}
+
 /// What a key that shows or hides `option` sends: the other value.
 cmd::SetShow show(const KeyState& state, ShowOption option) {
     return {option, !state.view.shown(option)};
@@ -41,6 +75,7 @@ cmd::SetShow show(const KeyState& state, ShowOption option) {
 KeyState keyState(const Session& session) {
     KeyState k;
     k.editing = session.prompt().active();
+    k.dialog = session.dialog();
     k.restitution = session.world().def().restitution;
     k.gravity = session.world().def().gravity;
     k.sceneGravity = session.loadedWorld().def().gravity;
@@ -51,6 +86,7 @@ KeyState keyState(const Session& session) {
 }
 
 std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState& state) {
+    if (state.dialog.open()) return dialogKey(key, state.dialog);
     if (state.editing) return editKey(key);
     const bool ctrl = (key.keysym.mod & KMOD_CTRL) != 0;
     const bool shift = (key.keysym.mod & KMOD_SHIFT) != 0;
@@ -67,7 +103,7 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
         case SDLK_DELETE:
             return {cmd::DeleteHeld{}};
         case SDLK_s:
-            if (ctrl) return {cmd::Save{}};
+            if (ctrl) return {shift ? Command{cmd::AskSaveAs{}} : Command{cmd::Save{}}};
             return {show(state, ShowOption::Labels)};
         case SDLK_a:
             return {show(state, ShowOption::Arrows)};
@@ -99,13 +135,15 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
         case SDLK_SPACE:
             return {cmd::TogglePause{}};
         case SDLK_n:
+            if (ctrl) return {cmd::AskNewScene{}};
             return {cmd::SingleStep{}};
         case SDLK_COMMA:
             return {cmd::SetTimeScale{state.timeScale * 0.5}};
         case SDLK_PERIOD:
             return {cmd::SetTimeScale{state.timeScale * 2.0}};
         case SDLK_r:
-            return {cmd::Reset{}};
+            if (ctrl) return {};
+            return {cmd::Restart{}};
         case SDLK_e:
             return {restitutionStep(state.restitution, shift ? +1 : -1)};
         case SDLK_g:

@@ -15,6 +15,7 @@
 #include <particle_sandbox/solver_settings.hpp>
 
 #include "session/command.hpp"
+#include "session/dialog.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -25,6 +26,9 @@ class Session;
 /// the keys that step one (E, G, T, ',' and '.') step from.
 struct KeyState {
     bool editing = false;  ///< the edit prompt is open
+    /// The dialog open (its keys: Enter answers with the default, Esc cancels), its proposal
+    /// and defaults.
+    Dialog dialog = {};
     double restitution = 1.0;
     Vec2 gravity = Vec2::Zero();
     Vec2 sceneGravity = Vec2::Zero();  ///< of the scene as loaded

@@ -65,6 +65,10 @@ SdlContext::SdlContext(const SdlContextOptions& options) {
         if (options.renderDriver == "software") {
             SDL_SetHintWithPriority(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0", SDL_HINT_DEFAULT);
         }
+        // SIGINT and SIGTERM (Ctrl+C in a terminal, a shutdown, `kill`) end the program as
+        // signals do; SDL would turn them into the window's close button, which asks about
+        // unsaved changes in a dialog nobody at a terminal or a shutdown sees.
+        SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
         if (SDL_Init(SDL_INIT_VIDEO) != 0) {
             throw std::runtime_error(std::string("cannot start SDL video: ") + SDL_GetError());
         }

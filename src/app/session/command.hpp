@@ -40,9 +40,10 @@ struct Traits {
     /// pointer, the view's geometry, the control panel's widgets (the mouse sends those),
     /// a screenshot and leaving. Every other command is held back while the prompt is open.
     bool whilePrompt = false;
-    /// Leaves a pending quit question standing: it answers it (Back, Quit), or the user did not
-    /// act (a pointer move, a resize). Any other command cancels the question.
-    bool keepsQuitQuestion = false;
+    /// Reaches the session while a dialog is open (dialog.hpp): the dialog's answers, Esc,
+    /// leaving, and what is not a user's choice (a pointer move, a resize). Every other command
+    /// is held back until the dialog closes.
+    bool whileDialog = false;
 };
 /// Looks, moves the view, steers time or files: never an edit; held back by the prompt.
 inline constexpr Traits kLooks{};
@@ -52,8 +53,10 @@ inline constexpr Traits kEdits{.edits = true};
 inline constexpr Traits kPastPrompt{.whilePrompt = true};
 /// An edit that reaches the session past the prompt (the mouse, the panel).
 inline constexpr Traits kEditsPastPrompt{.edits = true, .whilePrompt = true};
-/// Not a user's choice, or the answer to the quit question (a pointer move, a resize, leaving).
-inline constexpr Traits kPassive{.whilePrompt = true, .keepsQuitQuestion = true};
+/// Not a user's choice (a pointer move, a resize), leaving, or a dialog's answer.
+inline constexpr Traits kPassive{.whilePrompt = true, .whileDialog = true};
+/// A dialog's answer that edits (a new scene).
+inline constexpr Traits kEditsPassive{.edits = true, .whilePrompt = true, .whileDialog = true};
 
 // The left button: grab, fling, launch, select.
 struct PointerDown {
@@ -141,8 +144,32 @@ struct ChangeSpawnMass {
     static constexpr Traits traits = kEdits;
     int direction = 0;
 };  ///< -1 lighter, +1 heavier
-struct Reset {
-    static constexpr Traits traits = kEdits;
+/// Back to the set-up: the world when Play was last pressed after an edit (PhET's Restart).
+struct Restart {
+    static constexpr Traits traits = kEditsPastPrompt;
+};
+/// Back to the scene's file as last opened or saved (read again), or as built.
+struct Revert {
+    static constexpr Traits traits = kEditsPastPrompt;
+};
+/// Opens the New scene dialog (Ctrl+N).
+struct AskNewScene {
+    static constexpr Traits traits = kPastPrompt;
+};
+/// An empty box as `spec` says, with the laws and mode of the scene shown: the New scene
+/// dialog's answer.
+struct NewScene {
+    static constexpr Traits traits = kEditsPassive;
+    double width = 10.0;
+    double height = 10.0;
+    double gravity = 0.0;
+    bool walls = true;
+};
+/// The scene's title and description, as the user wrote them.
+struct SetSceneText {
+    static constexpr Traits traits = kEditsPastPrompt;
+    std::string name;
+    std::string description;
 };
 struct OpenPreset {
     static constexpr Traits traits = kEdits;
@@ -292,24 +319,42 @@ struct ToggleControls {
 };
 
 // Files and leaving.
+/// Ctrl+S: writes the scene's file when the user may (SceneFile::writable), else asks for a
+/// name (the Save As dialog).
 struct Save {
-    static constexpr Traits traits = kLooks;
-};
-/// Saves to `path` as given (an existing file is replaced only when `overwrite` is set).
-struct SaveAs {
     static constexpr Traits traits = kPastPrompt;
+};
+/// Ctrl+Shift+S: opens the Save As dialog.
+struct AskSaveAs {
+    static constexpr Traits traits = kPastPrompt;
+};
+/// Saves to `path` as given (an existing file is replaced only when `overwrite` is set; else the
+/// Save As dialog asks). The Save As dialog's answer.
+struct SaveAs {
+    static constexpr Traits traits = kPassive;
     std::filesystem::path path;
     bool overwrite = false;
 };
+/// The quit dialog's answer.
+struct AnswerQuit {
+    static constexpr Traits traits = kPassive;
+    enum class Choice { Save, Discard, Cancel };
+    Choice choice = Choice::Cancel;
+};
+/// Cancel: closes the dialog that is open, doing nothing.
+struct CloseDialog {
+    static constexpr Traits traits = kPassive;
+};
 struct Screenshot {
-    static constexpr Traits traits = kPastPrompt;
+    static constexpr Traits traits = kPassive;
 };  ///< the app writes the next frame's pixels
-/// Esc: closes what is open (the help, the edit prompt, a quit question); with nothing open,
-/// quits, asking first when there are unsaved changes.
+/// Esc: closes what is open (a dialog, the help, the edit prompt); with nothing open, quits,
+/// asking first when there are unsaved changes.
 struct Back {
     static constexpr Traits traits = kPassive;
 };
-/// The window's close button: quits, asking first when there are unsaved changes.
+/// The window's close button: quits, asking first (the quit dialog) when there are unsaved
+/// changes; while that dialog is open it stays open.
 struct Quit {
     static constexpr Traits traits = kPassive;
 };
@@ -318,16 +363,16 @@ struct Quit {
 
 namespace psb::app {
 
-using Command =
-    std::variant<cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan,
-                 cmd::Zoom, cmd::Fit, cmd::Resize, cmd::ToggleHelp, cmd::TogglePause,
-                 cmd::SingleStep, cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy,
-                 cmd::Undo, cmd::Redo, cmd::SpawnRandom, cmd::ChangeSpawnMass, cmd::Reset,
-                 cmd::OpenPreset, cmd::OpenFile, cmd::OpenEdit, cmd::EditType, cmd::EditField,
-                 cmd::EditBackspace, cmd::EditApply, cmd::Save, cmd::Screenshot, cmd::Back,
-                 cmd::Quit, cmd::SetRestitution, cmd::SetFriction, cmd::SetGravity, cmd::SetWalls,
-                 cmd::SetMode, cmd::SetTimeScale, cmd::SetTool, cmd::SetLaunchBody,
-                 cmd::EditParticle, cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails,
-                 cmd::ToggleControls, cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle>;
+using Command = std::variant<
+    cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan, cmd::Zoom,
+    cmd::Fit, cmd::Resize, cmd::ToggleHelp, cmd::TogglePause, cmd::SingleStep, cmd::StepBack,
+    cmd::StepForward, cmd::Seek, cmd::SeekBy, cmd::Undo, cmd::Redo, cmd::SpawnRandom,
+    cmd::ChangeSpawnMass, cmd::Restart, cmd::OpenPreset, cmd::OpenFile, cmd::OpenEdit,
+    cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply, cmd::Save, cmd::Screenshot,
+    cmd::Back, cmd::Quit, cmd::SetRestitution, cmd::SetFriction, cmd::SetGravity, cmd::SetWalls,
+    cmd::SetMode, cmd::SetTimeScale, cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle,
+    cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls,
+    cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
+    cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog>;
 
 }  // namespace psb::app

@@ -1,5 +1,7 @@
 #include "session/document.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <system_error>
 
@@ -17,22 +19,64 @@ SceneMeta sceneMeta(const Scene& scene, const std::optional<std::filesystem::pat
     return m;
 }
 
-Document::Document(World w, SceneMeta m, std::filesystem::path to) : saveTo(std::move(to)) {
-    replace(std::move(w), std::move(m));
+namespace {
+
+std::filesystem::path absolutePath(const std::filesystem::path& file) {
+    std::error_code ec;
+    const auto full = std::filesystem::absolute(file, ec).lexically_normal();
+    return ec ? file : full;
 }
 
-void Document::replace(World w, SceneMeta m) {
+}  // namespace
+
+SceneFile sceneFile(const std::optional<std::filesystem::path>& file,
+                    const std::vector<std::filesystem::path>& readOnly) {
+    SceneFile f;
+    if (!file) return f;
+    f.path = absolutePath(*file);
+    const bool preset = std::any_of(readOnly.begin(), readOnly.end(),
+                                    [&](const auto& p) { return absolutePath(p) == *f.path; });
+    f.writable = !preset && ::access(f.path->c_str(), W_OK) == 0;
+    return f;
+}
+
+Document::Document(World w, SceneMeta m, SceneFile f) {
+    replace(std::move(w), std::move(m), std::move(f));
+}
+
+void Document::replace(World w, SceneMeta m, SceneFile f) {
     loaded = std::make_shared<const World>(w);
+    setup = loaded;
+    editedSinceSetup = false;
     world = std::move(w);
     meta = std::move(m);
+    file = std::move(f);
+    loadedName = meta.name;
+    loadedDescription = meta.description;
+    savedSinceLoad = false;
     ++generation;
     dirty = false;
 }
 
-void Document::rememberFile(const std::filesystem::path& file) {
-    std::error_code ec;
-    const auto full = std::filesystem::absolute(file, ec).lexically_normal();
-    const std::filesystem::path f = ec ? file : full;
+void Document::edited() {
+    dirty = true;
+    editedSinceSetup = true;
+}
+
+bool Document::asOnDisk() const {
+    return !savedSinceLoad && setup == loaded && meta.name == loadedName &&
+           meta.description == loadedDescription;
+}
+
+bool Document::play() {
+    if (!editedSinceSetup) return false;
+    setup = std::make_shared<const World>(world);
+    editedSinceSetup = false;
+    return true;
+}
+
+void Document::rememberFile(const std::filesystem::path& known) {
+    const std::filesystem::path f = absolutePath(known);
     recent.erase(std::remove(recent.begin(), recent.end(), f), recent.end());
     recent.insert(recent.begin(), f);
     if (recent.size() > kRecentFiles) recent.resize(kRecentFiles);
@@ -40,9 +84,9 @@ void Document::rememberFile(const std::filesystem::path& file) {
 
 std::string Document::save(const std::filesystem::path& path) {
     std::string said = saveWorld(world, meta, path);
-    std::error_code ec;
-    const auto full = std::filesystem::absolute(path, ec).lexically_normal();
-    lastSave = ec ? path : full;
+    lastSave = absolutePath(path);
+    file = {lastSave, true};
+    savedSinceLoad = true;
     rememberFile(*lastSave);
     dirty = false;
     fileError.clear();

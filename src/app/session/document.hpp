@@ -1,7 +1,7 @@
 #pragma once
-// The scene the session shows, as a document: the world, the scene as it was loaded (Reset's
-// target), what the scene says beyond its world (SceneMeta), and the files it came from and
-// went to. The session owns one; undo keeps copies of the parts an edit can change.
+// The scene the session shows, as a document: the world, the scene as it was loaded, the set-up
+// Restart returns to, what the scene says beyond its world (SceneMeta), and the file it belongs
+// to. The session owns one; undo keeps copies of the parts an edit can change.
 
 #include <cstddef>
 #include <cstdint>
@@ -38,28 +38,58 @@ struct SceneMeta {
 [[nodiscard]] SceneMeta sceneMeta(const Scene& scene,
                                   const std::optional<std::filesystem::path>& file);
 
+/// The file a scene belongs to, as a document program sees it.
+struct SceneFile {
+    /// The file it was opened from or last saved to (a preset's too): Revert reads it again.
+    std::optional<std::filesystem::path> path;
+    /// Save writes `path` without asking: the user opened it from a file they may write, or
+    /// named it in Save As. Presets, new scenes and read-only files ask for a name first.
+    bool writable = false;
+};
+
+/// The SceneFile of a scene opened from `file` (none: a built-in or new scene): absolute, and
+/// writable when the user may write it and it is not one of `readOnly` (the presets).
+[[nodiscard]] SceneFile sceneFile(const std::optional<std::filesystem::path>& file,
+                                  const std::vector<std::filesystem::path>& readOnly = {});
+
 struct Document {
     /// Files opened or saved lately, newest first (at most this many).
     static constexpr std::size_t kRecentFiles = 5;
 
-    Document(World world, SceneMeta meta, std::filesystem::path saveTo);
+    Document(World world, SceneMeta meta, SceneFile file);
 
-    /// A new scene: `world` becomes the world and the scene as loaded; nothing is unsaved.
-    void replace(World world, SceneMeta meta);
+    /// A new scene from `file`: `world` becomes the world, the scene as loaded and the set-up;
+    /// nothing is unsaved.
+    void replace(World world, SceneMeta meta, SceneFile file);
+    /// The user edited the scene: unsaved, and the next Play makes a new set-up.
+    void edited();
+    /// Play was pressed: after an edit, the world as it is becomes the set-up Restart returns
+    /// to (PhET's Restart); returns whether it did.
+    bool play();
+    /// The world is the scene as loaded, with the title and description it had, and nothing was
+    /// saved since: the document is what its file (or the built-in scene) holds.
+    [[nodiscard]] bool asOnDisk() const;
     /// Puts `file` first in the recent files (absolute, once).
-    void rememberFile(const std::filesystem::path& file);
-    /// Writes the world with its metadata to `path` atomically and makes it the last save;
-    /// returns the line for the user. Throws SaveError (the old file is intact).
+    void rememberFile(const std::filesystem::path& known);
+    /// Writes the world with its metadata to `path` atomically, makes it the last save and the
+    /// scene's file (writable: the user named it); returns the line for the user. Throws
+    /// SaveError (the old file is intact, and nothing changes here).
     std::string save(const std::filesystem::path& path);
 
     World world;
     std::shared_ptr<const World> loaded;  ///< the world as loaded, shared with undo's snapshots
+    /// Restart's target: the world when Play was last pressed after an edit (else as loaded).
+    std::shared_ptr<const World> setup;
+    bool editedSinceSetup = false;
     SceneMeta meta;
+    SceneFile file;
+    /// The title and description as loaded, and whether a save came since (asOnDisk()).
+    std::string loadedName, loadedDescription;
+    bool savedSinceLoad = false;
     /// Changes whenever the world is replaced (open, preset, reset, an undo to another scene):
     /// views keyed to particles (trails) start over.
     std::uint64_t generation = 0;
-    bool dirty = false;            ///< changed since it was opened or last saved
-    std::filesystem::path saveTo;  ///< where Save writes first (Save As changes it)
+    bool dirty = false;                             ///< changed since it was opened or last saved
     std::optional<std::filesystem::path> lastSave;  ///< the file the last save wrote (absolute)
     std::string fileError;  ///< why the last open or save failed; empty once one succeeds
     std::vector<std::filesystem::path> recent;

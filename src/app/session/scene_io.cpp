@@ -1,6 +1,7 @@
 #include "session/scene_io.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <system_error>
 
 #include <particle_sandbox/presets.hpp>
@@ -67,6 +68,22 @@ std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& t
     std::filesystem::path path = typed.parent_path() / name;
     if (path.extension().empty()) path += ".json";
     return path;
+}
+
+std::filesystem::path sceneFileName(const std::string& name) {
+    std::string stem;
+    for (const char ch : name) {
+        const auto c = static_cast<unsigned char>(ch);
+        if (std::isalnum(c) != 0 && c < 128) {
+            stem += static_cast<char>(std::tolower(c));
+        } else if (!stem.empty() && stem.back() != '-') {
+            stem += '-';
+        }
+        if (stem.size() >= 60) break;
+    }
+    while (!stem.empty() && stem.back() == '-')
+        stem.pop_back();
+    return (stem.empty() ? std::string("scene") : stem) + ".json";
 }
 
 std::filesystem::path freeSavePath(const std::filesystem::path& path) {

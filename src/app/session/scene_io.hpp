@@ -33,6 +33,11 @@ struct SceneInfo {
 /// message names the file wherever the program was started.
 [[nodiscard]] std::filesystem::path freeSavePath(const std::filesystem::path& path);
 
+/// A file name for a scene called `name`, for Save As to propose: its letters and digits in
+/// lower case, other runs of characters as one '-', and ".json" ("Newton's cradle" is
+/// "newton-s-cradle.json"; a name with neither is "scene.json").
+[[nodiscard]] std::filesystem::path sceneFileName(const std::string& name);
+
 /// The file a name typed for Save As names: trailing dots and spaces dropped ("lesson." is
 /// "lesson"), then ".json" added when no extension is left. A name with nothing before its
 /// extension (".json"), or beginning with a dot (a hidden file no file list would show), or a

@@ -23,7 +23,8 @@ const char* logPrefix(Notice::Level level) {
 
 Session::Session(World world, SceneMeta meta, SessionOptions options)
     : options_(std::move(options)),
-      doc_(World(world.def()), {}, options_.saveTo),
+      doc_(std::move(world), std::move(meta),
+           psb::app::sceneFile(options_.sceneFile, options_.presets)),
       history_(options_.undo, options_.timeline) {
     tools_.rng.seed(options_.seed);
     clock_.paused = options_.paused;
@@ -33,13 +34,24 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
     layout_ = options_.layout;
     for (const auto& file : options_.presets)
         presets_.push_back(describeScene(file));
-    setWorld(std::move(world), std::move(meta));
+    sceneOpened();
     showSceneTrails(doc_.meta.trails);
+    if (options_.sceneFile) {
+        doc_.rememberFile(*options_.sceneFile);
+        if (clock_.paused) {
+            say("Opened " + options_.sceneFile->filename().string() + ": " + doc_.meta.name +
+                ", paused: Space starts it");
+        }
+    }
     if (!showControls_) say("The control panel is folded in this narrow window: C or >> opens it");
 }
 
-void Session::setWorld(World world, SceneMeta meta) {
-    doc_.replace(std::move(world), std::move(meta));
+void Session::setWorld(World world, SceneMeta meta, SceneFile file) {
+    doc_.replace(std::move(world), std::move(meta), std::move(file));
+    sceneOpened();
+}
+
+void Session::sceneOpened() {
     startOver(true);
     followScene(tools_.spawn, doc_.world);
     tools_.obstacleSizes = obstacleSizesFor(tools_.spawn.typicalRadius);
@@ -52,7 +64,6 @@ void Session::startOver(bool newScene) {
     history_.startOver();
     clock_.restart();
     monitor_.restart(doc_.world, newScene);
-    quitPending_ = false;
     if (newScene) view_.arrowSeconds = arrowSecondsFor(doc_.world);
 }
 
@@ -124,12 +135,8 @@ void Session::apply(const Command& command) {
     std::visit(
         [this](const auto& c) {
             using T = std::decay_t<decltype(c)>;
-            // A pending quit question is answered by the next Back or Quit; any other choice
-            // of the user cancels it.
-            if (quitPending_ && !T::traits.keepsQuitQuestion) {
-                quitPending_ = false;
-                say("Quit cancelled");
-            }
+            // A dialog holds everything but its answers until it closes.
+            if (dialog_.open() && !T::traits.whileDialog) return;
             // While the edit prompt is open it takes the keyboard.
             if (tools_.prompt.active() && !T::traits.whilePrompt) return;
             // The state before an edit, for the undo history. A press keeps the state before

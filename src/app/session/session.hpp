@@ -49,6 +49,7 @@
 #include "session/box_area.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
+#include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/history.hpp"
 #include "session/monitor.hpp"
@@ -75,9 +76,14 @@ struct Notice {
 [[nodiscard]] const char* logPrefix(Notice::Level level);
 
 struct SessionOptions {
-    std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
-    std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
-    std::uint32_t seed = 1;                                       ///< random spawns
+    /// The file the first world came from (none: built in), for Save and Revert.
+    std::optional<std::filesystem::path> sceneFile;
+    /// What Save As proposes (--save-to), when given; else a name from the scene's, in
+    /// `saveFolder`.
+    std::optional<std::filesystem::path> saveTo;
+    std::filesystem::path saveFolder = ".";
+    std::vector<std::filesystem::path> presets;  ///< what OpenPreset opens (read-only)
+    std::uint32_t seed = 1;                      ///< random spawns
     bool paused = false;
     bool arrows = true;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
@@ -157,6 +163,14 @@ class Session {
     }
     /// The user changed the world since it was opened or last saved.
     [[nodiscard]] bool unsavedChanges() const { return doc_.dirty; }
+    /// The file the scene belongs to, and whether Save writes it without asking.
+    [[nodiscard]] const SceneFile& sceneFile() const { return doc_.file; }
+    /// Restart's target: the world when Play was last pressed after an edit.
+    [[nodiscard]] const World& setupWorld() const { return *doc_.setup; }
+    /// What Save As proposes: --save-to, else a free name after the scene's in the save folder.
+    [[nodiscard]] std::filesystem::path saveProposal() const;
+    /// What the New scene dialog starts from: the box of the scene shown.
+    [[nodiscard]] NewSceneSpec newSceneDefaults() const;
     /// The file the last Save wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const {
         return doc_.lastSave;
@@ -238,14 +252,14 @@ class Session {
     [[nodiscard]] TimelineView timeline() const;
     [[nodiscard]] const Timeline& timelineRecord() const { return history_.timeline; }
 
-    // Leaving.
+    // Dialogs and leaving.
+    /// The dialog open (Save As, New scene, the quit question), if any.
+    [[nodiscard]] const Dialog& dialog() const { return dialog_; }
     [[nodiscard]] bool running() const { return running_; }
-    /// Quit was asked with unsaved changes: the next Back or Quit quits.
-    [[nodiscard]] bool quitPending() const { return quitPending_; }
 
     /// Replaces the world (a scene opened elsewhere, the benchmark); it becomes the scene as
-    /// loaded.
-    void setWorld(World world, SceneMeta meta);
+    /// loaded, from `file`.
+    void setWorld(World world, SceneMeta meta, SceneFile file = {});
 
   private:
     // One handler per command, in the file of its concept; apply() dispatches by type.
@@ -287,11 +301,18 @@ class Session {
     void handle(const cmd::Undo& c);
     void handle(const cmd::Redo& c);
     // The document and leaving (session_files.cpp).
-    void handle(const cmd::Reset& c);
     void handle(const cmd::OpenPreset& c);
     void handle(const cmd::OpenFile& c);
+    void handle(const cmd::AskNewScene& c);
+    void handle(const cmd::NewScene& c);
+    void handle(const cmd::Restart& c);
+    void handle(const cmd::Revert& c);
+    void handle(const cmd::SetSceneText& c);
     void handle(const cmd::Save& c);
+    void handle(const cmd::AskSaveAs& c);
     void handle(const cmd::SaveAs& c);
+    void handle(const cmd::AnswerQuit& c);
+    void handle(const cmd::CloseDialog& c);
     void handle(const cmd::Back& c);
     void handle(const cmd::Quit& c);
     // The view (session_view.cpp).
@@ -324,8 +345,12 @@ class Session {
     bool selectObstacleAt();
     void removeObstacle(std::size_t index);
     // The document (session_files.cpp).
-    void openFile(const std::optional<std::filesystem::path>& file);
-    void saveTo(const std::filesystem::path& path);
+    /// Opens `file` (none: the built-in scene), saying "VERB FILE: ..."; false when it could
+    /// not (the error is said).
+    bool openFile(const std::optional<std::filesystem::path>& file, const char* verb = "Opened");
+    /// Saves to `path`, saying so; false when it failed (the error is said).
+    bool saveTo(const std::filesystem::path& path);
+    void closeDialog();
     void quit();
     /// A scene that marks particles' trails opens with the first of them selected and its trail
     /// shown; `trails` are indices in the scene's order (the world's before any step).
@@ -352,6 +377,8 @@ class Session {
     [[nodiscard]] UndoState snapshot(World world) const;
     /// Puts `state` back (undo / redo).
     void restore(UndoState state);
+    /// A scene was opened: everything starts over from it, the view fitted to its box.
+    void sceneOpened();
     /// A world was put in place (a new scene, or an undo when `newScene` is false): the tools,
     /// the recorded past, the clock and the monitor start over from it.
     void startOver(bool newScene);
@@ -386,7 +413,7 @@ class Session {
     std::uint64_t userActions_ = 0;
     std::string lastAction_;
     bool running_ = true;
-    bool quitPending_ = false;
+    Dialog dialog_;
     bool screenshotRequested_ = false;
     std::vector<Notice> notices_;
 };

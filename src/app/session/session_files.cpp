@@ -1,21 +1,19 @@
-// The session's document: opening scenes and presets, resetting, saving, and leaving (the
-// document itself is document.hpp; reading and writing files is scene_io.hpp's).
+// The session's document: opening scenes and presets, a new scene, restarting and reverting,
+// saving (Save and Save As, as document programs do), and leaving with the quit dialog (the
+// document itself is document.hpp; reading and writing files is scene_io.hpp's; the dialogs'
+// state is dialog.hpp's).
 
+#include <cmath>
 #include <filesystem>
 
 #include "session/session.hpp"
 #include "session/session_text.hpp"
+#include "session/units.hpp"
 
 namespace psb::app {
 
-void Session::handle(const cmd::Reset&) {
-    // The scene as loaded stays the one shared with the undo history's snapshots.
-    std::shared_ptr<const World> loaded = doc_.loaded;
-    setWorld(World(*loaded), doc_.meta);
-    doc_.loaded = std::move(loaded);
-    remember("reset");
-    say("Reset to the scene as loaded: " + std::to_string(doc_.world.size()) + " particles");
-}
+// ---------------------------------------------------------------------------------------------
+// Opening.
 
 void Session::handle(const cmd::OpenPreset& c) {
     const auto& presets = options_.presets;
@@ -49,11 +47,12 @@ void Session::handle(const cmd::OpenFile& c) {
     openFile(c.file);
 }
 
-void Session::openFile(const std::optional<std::filesystem::path>& file) {
+bool Session::openFile(const std::optional<std::filesystem::path>& file, const char* verb) {
     try {
         const Scene scene = psb::app::openScene(file);
         World world = makeWorld(scene);
-        setWorld(std::move(world), sceneMeta(scene, file));
+        setWorld(std::move(world), sceneMeta(scene, file),
+                 psb::app::sceneFile(file, options_.presets));
         remember("open scene");
         // A new scene starts at its own pace: a time speed asked for the last one would make
         // this one look wrong without saying why.
@@ -64,13 +63,15 @@ void Session::openFile(const std::optional<std::filesystem::path>& file) {
         }
         showSceneTrails(doc_.meta.trails);
         if (file) doc_.rememberFile(*file);
-        say("Opened " + (file ? file->filename().string() : std::string("the built-in scene")) +
-            ": " + doc_.meta.name + " (" + std::to_string(doc_.world.size()) + " particles)" +
-            speedReset);
+        say(std::string(verb) + " " +
+            (file ? file->filename().string() : std::string("the built-in scene")) + ": " +
+            doc_.meta.name + " (" + std::to_string(doc_.world.size()) + " particles)" + speedReset);
         doc_.fileError.clear();
+        return true;
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
         doc_.fileError = std::string("Cannot open scene: ") + e.what();
         say(doc_.fileError, Notice::Level::Error);
+        return false;
     }
 }
 
@@ -81,42 +82,207 @@ void Session::showSceneTrails(const std::vector<std::size_t>& trails) {
     view_.trails = TrailMode::Selected;
 }
 
+NewSceneSpec Session::newSceneDefaults() const {
+    const WorldDef& d = doc_.world.def();
+    NewSceneSpec spec;
+    spec.width = d.width;
+    spec.height = d.height;
+    spec.gravity = d.gravity.norm();
+    spec.walls = d.walls;
+    return spec;
+}
+
+void Session::handle(const cmd::AskNewScene&) {
+    closeDialog();
+    dialog_.kind = Dialog::Kind::NewScene;
+    dialog_.newScene = newSceneDefaults();
+}
+
+void Session::handle(const cmd::NewScene& c) {
+    const auto refuse = [this](const std::string& why) {
+        dialog_.error = why;
+        say("New scene: " + why, Notice::Level::Warning);
+    };
+    const auto sizeOk = [](double v) { return std::isfinite(v) && v >= 0.01 && v <= 1e6; };
+    if (!sizeOk(c.width) || !sizeOk(c.height)) {
+        refuse(fmt("the box must be 0.01 m to 1e6 m wide and high, got %g m x %g m", c.width,
+                   c.height));
+        return;
+    }
+    if (!(std::isfinite(c.gravity) && c.gravity >= 0.0 && c.gravity <= kMaxPanelGravity)) {
+        refuse(fmt("gravity must be 0 to %g m/s\u00b2, got %g", kMaxPanelGravity, c.gravity));
+        return;
+    }
+    // The laws and the mode of the scene shown carry over: only the box is new.
+    WorldDef def;
+    def.width = c.width;
+    def.height = c.height;
+    def.walls = c.walls;
+    def.gravity = Vec2(0.0, c.gravity);
+    def.restitution = doc_.world.def().restitution;
+    def.friction = doc_.world.def().friction;
+    World world(def, doc_.world.solver());
+    SceneMeta meta{"New scene"};
+    meta.dt = doc_.meta.dt;
+    closeDialog();
+    setWorld(std::move(world), std::move(meta), SceneFile{});
+    remember("new scene");
+    clock_.paused = true;
+    clock_.restart();
+    say(fmt("New scene: an empty box %s x %s", quantity(c.width, "m").c_str(),
+            quantity(c.height, "m").c_str()) +
+        (c.gravity > 0.0 ? fmt(", gravity %g m/s\u00b2", c.gravity) : std::string(", no gravity")) +
+        ", paused: fling or launch particles into it, then Space");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Restart and revert.
+
+void Session::handle(const cmd::Restart&) {
+    // The set-up stays the one shared with the document (and the scene as loaded with undo).
+    const std::shared_ptr<const World> setup = doc_.setup;
+    const bool edited = doc_.editedSinceSetup;
+    doc_.world = World(*setup);
+    ++doc_.generation;  // views keyed to particles (trails) start over
+    startOver(true);
+    doc_.setup = setup;
+    doc_.editedSinceSetup = edited;
+    // Back to the scene exactly as its file has it: nothing is unsaved. Any other set-up keeps
+    // the changes that made it.
+    if (doc_.asOnDisk()) doc_.dirty = false;
+    remember("restart");
+    const bool loaded = setup == doc_.loaded;
+    say(std::string("Restarted: back to ") +
+        (loaded ? "the scene as it opened" : "the set-up as Play last started it") + " (" +
+        std::to_string(doc_.world.size()) + " particles, t = " + quantity(doc_.world.time(), "s") +
+        ")");
+}
+
+void Session::handle(const cmd::Revert&) {
+    if (doc_.file.path) {
+        openFile(doc_.file.path, "Reverted to");
+        return;
+    }
+    // A built-in or new scene: as it was made.
+    const std::shared_ptr<const World> loaded = doc_.loaded;
+    doc_.world = World(*loaded);
+    doc_.setup = loaded;
+    doc_.editedSinceSetup = false;
+    doc_.dirty = false;
+    ++doc_.generation;
+    startOver(true);
+    remember("revert");
+    say("Reverted to " + doc_.meta.name + " as it was made (it has no file)");
+}
+
+void Session::handle(const cmd::SetSceneText& c) {
+    if (c.name == doc_.meta.name && c.description == doc_.meta.description) return;
+    const bool renamed = c.name != doc_.meta.name;
+    doc_.meta.name = c.name;
+    doc_.meta.description = c.description;
+    say(renamed ? "Title: " + (c.name.empty() ? std::string("(none)") : c.name)
+                : std::string("Description changed"));
+    userAction(renamed ? "rename scene" : "describe scene");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Saving.
+
+std::filesystem::path Session::saveProposal() const {
+    if (options_.saveTo) return freeSavePath(*options_.saveTo);
+    const std::filesystem::path name =
+        doc_.file.path ? doc_.file.path->filename() : sceneFileName(doc_.meta.name);
+    return freeSavePath(options_.saveFolder / name);
+}
+
 void Session::handle(const cmd::Save&) {
-    saveTo(freeSavePath(doc_.saveTo));
+    if (doc_.file.writable && doc_.file.path) {
+        saveTo(*doc_.file.path);
+        return;
+    }
+    handle(cmd::AskSaveAs{});
+}
+
+void Session::handle(const cmd::AskSaveAs&) {
+    const bool quitAfter = dialog_.kind == Dialog::Kind::Quit;
+    closeDialog();
+    tools_.closePrompt();
+    dialog_.kind = Dialog::Kind::SaveAs;
+    dialog_.proposal = saveProposal();
+    dialog_.quitAfterSave = quitAfter;
+    say("Save as: type a file name, Enter saves, Esc cancels (folder " +
+        dialog_.proposal.parent_path().string() + ")");
 }
 
 void Session::handle(const cmd::SaveAs& c) {
+    std::string why;
+    const std::optional<std::filesystem::path> named =
+        c.path.empty() ? std::nullopt : saveFileName(c.path, why);
     if (c.path.empty()) {
-        say("Save: type a file name first", Notice::Level::Warning);
+        dialog_.error = "Save: type a file name first";
+        say(dialog_.error, Notice::Level::Warning);
         return;
     }
-    std::string why;
-    const std::optional<std::filesystem::path> named = saveFileName(c.path, why);
     if (!named) {
-        // The panel's status line says so too, not the save before it.
-        doc_.fileError = "Save: " + why;
+        // The dialog and the panel's status line say so too, not the save before it.
+        dialog_.error = doc_.fileError = "Save: " + why;
         say(doc_.fileError, Notice::Level::Warning);
         return;
     }
     std::filesystem::path path = *named;
+    // A relative name is in the folder the dialog shows.
+    if (path.is_relative() && dialog_.kind == Dialog::Kind::SaveAs) {
+        path = dialog_.proposal.parent_path() / path;
+    }
     std::error_code ec;
-    if (!c.overwrite && std::filesystem::exists(path, ec)) path = freeSavePath(path);
-    doc_.saveTo = path;
-    saveTo(path);
+    if (!c.overwrite && std::filesystem::exists(path, ec)) {
+        // Never a silent overwrite: the dialog asks.
+        const bool quitAfter = dialog_.quitAfterSave;
+        if (dialog_.kind != Dialog::Kind::SaveAs) dialog_.proposal = path;
+        dialog_.kind = Dialog::Kind::SaveAs;
+        dialog_.quitAfterSave = quitAfter;
+        dialog_.replace = std::filesystem::absolute(path, ec).lexically_normal();
+        say(path.filename().string() + " exists: Replace it, or choose another name",
+            Notice::Level::Warning);
+        return;
+    }
+    if (!saveTo(path)) {
+        dialog_.error = doc_.fileError;
+        return;
+    }
+    const bool quitAfter = dialog_.quitAfterSave;
+    closeDialog();
+    if (quitAfter) running_ = false;
 }
 
-void Session::saveTo(const std::filesystem::path& path) {
+bool Session::saveTo(const std::filesystem::path& path) {
     try {
         say(doc_.save(path));
+        return true;
     } catch (const std::exception& e) {  // SaveError; the old file is intact
         doc_.fileError = std::string("Save failed: ") + e.what();
         say(doc_.fileError, Notice::Level::Error);
+        return false;
     }
 }
 
+// ---------------------------------------------------------------------------------------------
+// Dialogs and leaving.
+
+void Session::closeDialog() {
+    dialog_ = Dialog{};
+}
+
+void Session::handle(const cmd::CloseDialog&) {
+    if (!dialog_.open()) return;
+    const bool quitting = dialog_.kind == Dialog::Kind::Quit || dialog_.quitAfterSave;
+    closeDialog();
+    say(quitting ? "Quit cancelled" : "Cancelled");
+}
+
 void Session::handle(const cmd::Back&) {
-    if (quitPending_) {
-        running_ = false;
+    if (dialog_.open()) {
+        handle(cmd::CloseDialog{});
     } else if (showHelp_) {
         showHelp_ = false;
     } else if (tools_.prompt.active()) {
@@ -128,17 +294,42 @@ void Session::handle(const cmd::Back&) {
 }
 
 void Session::handle(const cmd::Quit&) {
+    // While a dialog is open, closing the window again leaves the question standing.
+    if (dialog_.open()) return;
     quit();
 }
 
 void Session::quit() {
-    if (!doc_.dirty || quitPending_) {
+    if (!doc_.dirty) {
         running_ = false;
         return;
     }
-    quitPending_ = true;
-    say("Unsaved changes: Esc again quits without saving, Ctrl+S saves, any other key stays",
+    tools_.closePrompt();
+    dialog_.kind = Dialog::Kind::Quit;
+    say("Unsaved changes to " + doc_.meta.name + ": Save, Discard or Cancel",
         Notice::Level::Warning);
+}
+
+void Session::handle(const cmd::AnswerQuit& c) {
+    if (dialog_.kind != Dialog::Kind::Quit) return;
+    switch (c.choice) {
+        case cmd::AnswerQuit::Choice::Save:
+            if (doc_.file.writable && doc_.file.path) {
+                closeDialog();
+                if (saveTo(*doc_.file.path)) running_ = false;
+            } else {
+                handle(cmd::AskSaveAs{});  // keeps quitAfterSave
+            }
+            return;
+        case cmd::AnswerQuit::Choice::Discard:
+            closeDialog();
+            log("Quit without saving");
+            running_ = false;
+            return;
+        case cmd::AnswerQuit::Choice::Cancel:
+            handle(cmd::CloseDialog{});
+            return;
+    }
 }
 
 }  // namespace psb::app

@@ -20,7 +20,7 @@ void Session::userAction(const char* what, bool continues) {
     }
     remember(what);
     monitor_.edited(doc_.world);
-    doc_.dirty = true;
+    doc_.edited();
     history_.timeline.edited();
 }
 
@@ -38,7 +38,8 @@ UndoState Session::snapshot(World world) const {
                 tools_.selectedObstacle,
                 tools_.spawn,
                 clock_.scale(),
-                doc_.dirty};
+                doc_.dirty,
+                doc_.file};
     // A particle in the hand is kinematic only while held: restored, it is free again.
     if (tools_.hand.mode() == Interaction::Mode::Holding && s.world.contains(tools_.hand.held())) {
         s.world.setKinematic(tools_.hand.held(), false);
@@ -52,6 +53,13 @@ void Session::restore(UndoState state) {
     doc_.loaded = std::move(state.loaded);
     doc_.meta = std::move(state.meta);
     doc_.dirty = state.dirty;
+    if (otherScene) {
+        doc_.file = std::move(state.file);
+        doc_.setup = doc_.loaded;
+        doc_.editedSinceSetup = false;
+    } else {
+        doc_.editedSinceSetup = true;  // the world is not the set-up's any more
+    }
     ++doc_.generation;  // views keyed to particles (trails) start over
     // The recorded frames belong to the state undone: the record starts again from here.
     startOver(otherScene);

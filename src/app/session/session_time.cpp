@@ -15,8 +15,11 @@ void Session::handle(const cmd::TogglePause&) {
         const double t = doc_.world.time();
         leavePast();
         say(fmt("Resumed from %.2f s: the later frames are forgotten", t));
+    } else if (!clock_.paused) {
+        say("Paused");
     } else {
-        say(!clock_.paused ? "Paused" : "Resumed");
+        // Play after an edit: the world as it is becomes the set-up Restart returns to.
+        say(doc_.play() ? "Resumed; R restarts from this set-up" : "Resumed");
     }
     clock_.paused = !clock_.paused;
     clock_.restart();

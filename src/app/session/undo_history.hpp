@@ -52,6 +52,9 @@ struct UndoState {
     SpawnSettings spawn;
     double timeScale = 1.0;
     bool dirty = false;
+    /// The scene's file: restored with an undo to another scene (within one scene, a save
+    /// stays where it went).
+    SceneFile file = {};
 };
 
 struct UndoSettings {

@@ -173,7 +173,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
     f.layout = layoutPanels(req);
-    f.title = windowTitle(world.size(), session.paused(), session.meta().name);
+    f.title =
+        windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());
     return f;
 }
 

@@ -7,11 +7,14 @@
 
 namespace psb::app {
 
-std::string windowTitle(std::size_t particles, bool paused, const std::string& scene) {
-    std::string t = "Particle Sandbox - " + std::to_string(particles) +
-                    (particles == 1 ? " particle" : " particles");
+std::string windowTitle(std::size_t particles, bool paused, const std::string& scene,
+                        bool unsaved) {
+    // The unsaved mark first, as document programs put it, where a cut-off title keeps it.
+    std::string t = std::string(unsaved ? "* " : "") + "Particle Sandbox - " +
+                    std::to_string(particles) + (particles == 1 ? " particle" : " particles");
     if (paused) t += " - PAUSED";
     if (!scene.empty()) t += " - " + scene;
+    if (unsaved) t += " (unsaved changes)";
     return t;
 }
 
@@ -113,12 +116,13 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change (Time: Undo, Redo)"},
         {", / .", "slow down / speed up time (Time: Speed)"},
         {"P / 1-9, 0, Shift+1-3", "next preset / preset 1-9, 10, 11-13 (Scene)"},
-        {"R", "back to the scene as loaded (Time: Reset)"},
+        {"R", "restart: back to the set-up Play last started (Time: Restart)"},
         {"E / Shift+E", "restitution down / up by 0.05 (Physics)"},
         {"G", "gravity on / off (Physics)"},
         {"T", "next mode: discrete, substeps, exact (Physics)"},
         {"O / F3", "profile beside the box (Engine)"},
-        {"Ctrl+S", "save the world as a scene (Scene: Save)"},
+        {"Ctrl+S / Ctrl+Shift+S", "save the scene / save it under a new name (Scene)"},
+        {"Ctrl+N", "new scene: an empty box (Scene: New)"},
         {"V", "momentum and centre of mass (Show)"},
         {"L", "trails: off / selected particle / all (Show)"},
         {"K", "plots of energy, momentum, collisions (Show)"},
@@ -126,7 +130,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"C", "open / fold the control panel"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
-        {"Esc", "close help / edit; quit (asks if unsaved)"},
+        {"Esc", "close a dialog, help, edit; quit (asks if unsaved)"},
     };
     return list;
 }

@@ -44,9 +44,10 @@ struct ProfileData {
 };
 
 /// The window title: `Particle Sandbox - N particles`, plus ` - PAUSED`, plus ` - SCENE`
-/// when a scene name is given.
+/// when a scene name is given; with unsaved changes it starts with "* " and ends with
+/// " (unsaved changes)".
 [[nodiscard]] std::string windowTitle(std::size_t particles, bool paused,
-                                      const std::string& scene = {});
+                                      const std::string& scene = {}, bool unsaved = false);
 
 /// The status lines, top to bottom, numbers at human scale (quantity() of units.hpp); a time
 /// speed the steps cannot keep up with shows what is reached.

@@ -109,7 +109,7 @@ TEST_F(ControlPanelTest, EverySectionAndItsMainControlsAreThere) {
     for (const char* name : {"section Time",
                              "Play/Pause",
                              "Step",
-                             "Reset",
+                             "Restart",
                              "Speed",
                              "section Scene",
                              "section Physics",

@@ -1,5 +1,11 @@
-// The document: a new scene replaces the world and the scene as loaded, the recent files, and
-// a save that names the file it wrote and clears the unsaved mark.
+// The document: a new scene replaces the world and the scene as loaded, the set-up Restart
+// returns to, the file a scene belongs to (and whether Save may write it), the recent files, and
+// a save that names the file it wrote, binds the scene to it and clears the unsaved mark.
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
 
 #include <gtest/gtest.h>
 
@@ -18,17 +24,53 @@ class DocumentTest : public TempDirTest {
 };
 
 TEST_F(DocumentTest, ANewSceneIsTheSceneAsLoadedAndNothingIsUnsaved) {
-    Document d(makeWorld(defaultScene()), SceneMeta{"first"}, dir_ / "save.json");
+    Document d(makeWorld(defaultScene()), SceneMeta{"first"}, SceneFile{});
     const std::uint64_t g = d.generation;
-    d.dirty = true;
+    d.edited();
     World w;
-    d.replace(w, SceneMeta{"second", "described"});
+    d.replace(w, SceneMeta{"second", "described"}, SceneFile{dir_ / "x.json", true});
     EXPECT_NE(d.generation, g);
     EXPECT_FALSE(d.dirty);
     EXPECT_EQ(d.world.size(), 0u);
     EXPECT_EQ(d.loaded->size(), 0u);
     EXPECT_EQ(d.meta.name, "second");
     EXPECT_EQ(d.meta.description, "described");
+    EXPECT_EQ(d.setup, d.loaded);
+    EXPECT_FALSE(d.editedSinceSetup);
+    EXPECT_EQ(d.file.path, dir_ / "x.json");
+}
+
+TEST_F(DocumentTest, PlayAfterAnEditMakesTheWorldTheSetUpAndPlayWithoutOneDoesNot) {
+    Document d(makeWorld(defaultScene()), SceneMeta{"s"}, SceneFile{});
+    EXPECT_FALSE(d.play());  // nothing edited: the set-up is the scene as loaded
+    EXPECT_EQ(d.setup, d.loaded);
+    d.world.step(0.1);
+    d.edited();
+    EXPECT_TRUE(d.dirty);
+    EXPECT_TRUE(d.play());
+    EXPECT_NE(d.setup, d.loaded);
+    EXPECT_EQ(d.setup->time(), d.world.time());
+    d.world.step(0.1);
+    EXPECT_FALSE(d.play());  // a pause and a play without an edit keep the set-up
+    EXPECT_LT(d.setup->time(), d.world.time());
+}
+
+TEST_F(DocumentTest, AFileTheUserMayWriteIsWritableAPresetOrAReadOnlyFileIsNot) {
+    const auto touch = [](const std::filesystem::path& p) { std::ofstream(p) << "{}"; };
+    touch(dir_ / "mine.json");
+    touch(dir_ / "preset.json");
+    touch(dir_ / "locked.json");
+    ::chmod((dir_ / "locked.json").c_str(), 0444);
+    EXPECT_FALSE(sceneFile(std::nullopt).path);
+    const SceneFile mine = sceneFile(dir_ / "mine.json", {dir_ / "preset.json"});
+    EXPECT_TRUE(mine.writable);
+    EXPECT_TRUE(mine.path->is_absolute());
+    EXPECT_FALSE(sceneFile(dir_ / "preset.json", {dir_ / "preset.json"}).writable);
+    // root may write any file; everyone else is refused a read-only one.
+    if (::geteuid() != 0) {
+        EXPECT_FALSE(sceneFile(dir_ / "locked.json").writable);
+    }
+    EXPECT_FALSE(sceneFile(dir_ / "missing-folder" / "x.json").writable);
 }
 
 TEST_F(DocumentTest, SceneMetaTakesTheFilesStemWhenTheSceneHasNoName) {
@@ -44,7 +86,7 @@ TEST_F(DocumentTest, SceneMetaTakesTheFilesStemWhenTheSceneHasNoName) {
 }
 
 TEST_F(DocumentTest, RecentFilesAreNewestFirstOnceEachAndAtMostFive) {
-    Document d(World{}, SceneMeta{"x"}, dir_ / "save.json");
+    Document d(World{}, SceneMeta{"x"}, SceneFile{});
     for (int k = 0; k < 7; ++k) {
         std::string name = std::to_string(k);
         name.insert(0, 1, 'f');
@@ -61,7 +103,7 @@ TEST_F(DocumentTest, RecentFilesAreNewestFirstOnceEachAndAtMostFive) {
 TEST_F(DocumentTest, ASaveWritesTheMetaAndClearsTheUnsavedMark) {
     Document d(makeWorld(defaultScene()),
                SceneMeta{.name = "lesson", .description = "Two discs.", .dt = 1.0 / 240.0},
-               dir_ / "save.json");
+               SceneFile{});
     d.dirty = true;
     d.fileError = "Save failed: earlier";
     const std::string said = d.save(dir_ / "lesson.json");
@@ -71,11 +113,14 @@ TEST_F(DocumentTest, ASaveWritesTheMetaAndClearsTheUnsavedMark) {
     ASSERT_TRUE(d.lastSave);
     EXPECT_TRUE(d.lastSave->is_absolute());
     EXPECT_EQ(d.recent.front(), *d.lastSave);
+    EXPECT_EQ(d.file.path, d.lastSave);  // the scene now belongs to the file the user named
+    EXPECT_TRUE(d.file.writable);
     const Scene back = loadScene(dir_ / "lesson.json");
     EXPECT_EQ(back.name, "lesson");
     EXPECT_EQ(back.description, "Two discs.");
     EXPECT_EQ(back.dt, 1.0 / 240.0);  // the meta's frame length: the world keeps none
     EXPECT_THROW(d.save(dir_ / "no-such-folder" / "x.json"), SaveError);
+    EXPECT_EQ(d.file.path, d.lastSave);  // a failed save changes nothing
 }
 
 }  // namespace

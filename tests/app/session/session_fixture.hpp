@@ -28,6 +28,13 @@ namespace psb::app {
                        [&](const Notice& n) { return n.text.find(text) != std::string::npos; });
 }
 
+/// Ctrl+S, and Enter in the Save As dialog when it asks (the scene has no file yet): what a
+/// user does to save at once.
+inline void saveNow(Session& s) {
+    s.apply(cmd::Save{});
+    if (s.dialog().kind == Dialog::Kind::SaveAs) s.apply(cmd::SaveAs{s.dialog().proposal});
+}
+
 /// A drag with the left button from world point `from` to `to`: the press at `t0`, `moves`
 /// moves `step` seconds apart, the release at `t0` + 0.1 s + `hold` (the hand held still).
 inline void drag(Session& s, Vec2 from, Vec2 to, double t0, int moves = 10, double step = 0.01,

@@ -150,13 +150,51 @@ TEST_F(SessionTest, EscClosesTheHelpFirstAndAsksBeforeLosingUnsavedChanges) {
     ASSERT_TRUE(s.unsavedChanges());
     s.apply(cmd::Back{});
     EXPECT_TRUE(s.running());
-    EXPECT_TRUE(s.quitPending());
+    EXPECT_EQ(s.dialog().kind, Dialog::Kind::Quit);
     EXPECT_TRUE(said(s.takeNotices(), "Unsaved changes"));
-    s.apply(keys::show(s, ShowOption::Labels));  // any other command: stay
-    EXPECT_FALSE(s.quitPending());
+    // The dialog holds every other command: a key does nothing, and the window's close button
+    // again leaves the question standing.
+    const std::size_t n = s.world().size();
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Quit{});
+    EXPECT_EQ(s.world().size(), n);
+    EXPECT_TRUE(s.running());
+    EXPECT_EQ(s.dialog().kind, Dialog::Kind::Quit);
+    // A second Esc is Cancel, never a quit without saving.
     s.apply(cmd::Back{});
-    s.apply(cmd::Back{});  // asked, answered
+    EXPECT_TRUE(s.running());
+    EXPECT_FALSE(s.dialog().open());
+    EXPECT_TRUE(said(s.takeNotices(), "Quit cancelled"));
+    s.apply(cmd::Back{});
+    s.apply(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Discard});
     EXPECT_FALSE(s.running());
+    EXPECT_FALSE(fs::exists(dir_ / "save.json"));
+}
+
+TEST_F(SessionTest, TheQuitDialogsSaveAsksForANameThenQuitsOnceSaved) {
+    Session s = session();
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Quit{});
+    s.apply(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Save});
+    // The scene has no file: Save As, proposing --save-to.
+    ASSERT_EQ(s.dialog().kind, Dialog::Kind::SaveAs);
+    EXPECT_EQ(s.dialog().proposal, fs::absolute(dir_ / "save.json").lexically_normal());
+    EXPECT_TRUE(s.running());
+    // A refused name keeps the dialog (and the program) open.
+    s.apply(cmd::SaveAs{dir_ / "no-such-dir" / "x.json"});
+    EXPECT_TRUE(s.running());
+    EXPECT_NE(s.dialog().error.find("Save failed"), std::string::npos) << s.dialog().error;
+    s.apply(cmd::SaveAs{s.dialog().proposal});
+    EXPECT_FALSE(s.running());
+    EXPECT_EQ(loadScene(dir_ / "save.json").particles.size(), s.world().size());
+    // Cancel in the Save As dialog cancels the quit.
+    Session t = session();
+    t.apply(cmd::SpawnRandom{});
+    t.apply(cmd::Back{});
+    t.apply(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Save});
+    t.apply(cmd::Back{});
+    EXPECT_TRUE(t.running());
+    EXPECT_FALSE(t.dialog().open());
 }
 
 TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
@@ -165,7 +203,7 @@ TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
     EXPECT_FALSE(s.running());
     Session t = session();
     t.apply(cmd::SpawnRandom{});
-    t.apply(cmd::Save{});
+    saveNow(t);
     EXPECT_FALSE(t.unsavedChanges());
     t.apply(cmd::Quit{});
     EXPECT_FALSE(t.running());
@@ -173,11 +211,13 @@ TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
 
 TEST_F(SessionTest, ASaveKeepsTheScenesNameAndDescription) {
     Session s = session();
-    s.apply(cmd::OpenFile{testAsset("scenes/05-mass-ratio.json")});
+    // A copy: the scene belongs to the file it was opened from, and Save writes it.
+    fs::copy_file(testAsset("scenes/05-mass-ratio.json"), dir_ / "mass-ratio.json");
+    s.apply(cmd::OpenFile{dir_ / "mass-ratio.json"});
     s.apply(cmd::SpawnRandom{});
-    s.apply(cmd::Save{});
+    saveNow(s);
     const Scene original = loadScene(testAsset("scenes/05-mass-ratio.json"));
-    const Scene saved = loadScene(dir_ / "save.json");
+    const Scene saved = loadScene(dir_ / "mass-ratio.json");
     EXPECT_EQ(saved.name, original.name);
     EXPECT_EQ(saved.description, original.description);
     EXPECT_EQ(saved.particles.size(), original.particles.size() + 1);
@@ -185,7 +225,7 @@ TEST_F(SessionTest, ASaveKeepsTheScenesNameAndDescription) {
     SessionOptions o = options();
     o.saveTo = dir_ / "first.json";
     Session first(makeWorld(defaultScene()), SceneMeta{"default", "A scene described."}, o);
-    first.apply(cmd::Save{});
+    saveNow(first);
     EXPECT_EQ(loadScene(dir_ / "first.json").description, "A scene described.");
 }
 
@@ -214,7 +254,7 @@ TEST_F(SessionTest, APresetOpensPausedAndANewSceneStartsAtTimeSpeedOne) {
     EXPECT_GT(s.world().time(), t);
     // R keeps the time speed (the same scene).
     s.apply(keys::timeSpeed(s, 0.5));
-    s.apply(cmd::Reset{});
+    s.apply(cmd::Restart{});
     EXPECT_EQ(s.timeScale(), 0.5);
 }
 
@@ -239,18 +279,22 @@ TEST_F(SessionTest, NewParticlesFollowTheScenesScale) {
     EXPECT_NEAR(s.world().get(s.world().ids().back()).mass, 1.1 * m, 1e-12 * m);
 }
 
-TEST_F(SessionTest, SavingNeverOverwritesAnEarlierSaveAndNamesTheFullPath) {
+TEST_F(SessionTest, SaveAsProposesAFreeNameAndThenSaveWritesTheFileTheUserNamed) {
     Session s = session();
-    s.apply(cmd::Save{});
+    saveNow(s);
     s.apply(cmd::SpawnRandom{});
+    // The scene now belongs to save.json, which the user named: Ctrl+S writes it again.
     s.apply(cmd::Save{});
+    EXPECT_FALSE(s.dialog().open());
     const auto n = s.takeNotices();
-    ASSERT_TRUE(fs::exists(dir_ / "save.json"));
-    ASSERT_TRUE(fs::exists(dir_ / "save-2.json"));
-    EXPECT_EQ(loadScene(dir_ / "save.json").particles.size(), 6u);  // the first is kept
-    EXPECT_EQ(loadScene(dir_ / "save-2.json").particles.size(), 7u);
-    EXPECT_TRUE(said(n, (dir_ / "save-2.json").string()));
+    EXPECT_EQ(loadScene(dir_ / "save.json").particles.size(), 7u);
+    EXPECT_TRUE(said(n, (dir_ / "save.json").string()));
     EXPECT_TRUE(s.lastSave()->is_absolute());
+    // Save As proposes a free name beside --save-to, never the existing file.
+    s.apply(cmd::AskSaveAs{});
+    ASSERT_EQ(s.dialog().kind, Dialog::Kind::SaveAs);
+    EXPECT_EQ(s.dialog().proposal.filename(), "save-2.json");
+    EXPECT_TRUE(s.dialog().proposal.is_absolute());
 }
 
 TEST_F(SessionTest, ALaunchDraggedOutAndHeldStillHasTheDragsVelocityAsPreviewed) {
@@ -405,16 +449,20 @@ TEST_F(SessionTest, TheEditPromptTakesTheKeyboard) {
     EXPECT_TRUE(s.running());
 }
 
-TEST_F(SessionTest, ResetRestoresTheSceneAsLoaded) {
+TEST_F(SessionTest, RestartWithoutAPlayRestoresTheSceneAsLoaded) {
     Session s = session();
     const std::uint64_t loaded = test::stateHash(s.world());
     const std::uint64_t generation = s.sceneGeneration();
     s.apply(cmd::SpawnRandom{});
     s.apply(keys::restitution(s, -1));
-    s.apply(cmd::Reset{});
+    s.apply(cmd::Restart{});
     EXPECT_EQ(test::stateHash(s.world()), loaded);
     EXPECT_NE(s.sceneGeneration(), generation);
-    EXPECT_FALSE(s.unsavedChanges());
+    EXPECT_FALSE(s.unsavedChanges());  // exactly the scene as loaded
+    // A new title is a change Restart does not undo.
+    s.apply(cmd::SetSceneText{"renamed", ""});
+    s.apply(cmd::Restart{});
+    EXPECT_TRUE(s.unsavedChanges());
 }
 
 }  // namespace

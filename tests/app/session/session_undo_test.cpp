@@ -220,7 +220,7 @@ TEST(SessionUndo, UndoesAPresetAndAReset) {
     EXPECT_EQ(s.world().size(), original.size() + 1);
     EXPECT_TRUE(identical(s.loadedWorld(), original));
     EXPECT_TRUE(s.unsavedChanges());  // the spawn is unsaved again
-    s.apply(cmd::Reset{});
+    s.apply(cmd::Restart{});
     EXPECT_TRUE(identical(s.world(), original));
     s.apply(cmd::Undo{});
     EXPECT_EQ(s.world().size(), original.size() + 1);

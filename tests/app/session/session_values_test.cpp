@@ -288,15 +288,24 @@ TEST_F(SessionValues, TheBoxIsFittedBesideTheControlPanelOpenOrFolded) {
     EXPECT_LT(x, 310.0);
 }
 
-TEST_F(SessionValues, SaveAsWritesThePathKeepsAnOlderFileAndRemembersIt) {
+TEST_F(SessionValues, SaveAsWritesThePathAsksBeforeReplacingAFileAndRemembersIt) {
     Session s = session();
     s.apply(cmd::SaveAs{dir_ / "lesson"});
     ASSERT_TRUE(s.lastSave());
     EXPECT_EQ(*s.lastSave(), fs::absolute(dir_ / "lesson.json").lexically_normal());
     EXPECT_TRUE(fs::exists(dir_ / "lesson.json"));
     EXPECT_EQ(loadScene(dir_ / "lesson.json").particles.size(), s.world().size());
+    // An existing file is never replaced without asking: the dialog asks, and writes only when
+    // the user says Replace.
+    s.apply(cmd::SpawnRandom{});
     s.apply(cmd::SaveAs{dir_ / "lesson.json"});
-    EXPECT_EQ(s.lastSave()->filename(), "lesson-2.json");
+    ASSERT_EQ(s.dialog().kind, Dialog::Kind::SaveAs);
+    EXPECT_EQ(s.dialog().replace, fs::absolute(dir_ / "lesson.json").lexically_normal());
+    EXPECT_EQ(loadScene(dir_ / "lesson.json").particles.size(), s.world().size() - 1);
+    s.apply(cmd::SaveAs{s.dialog().replace, true});
+    EXPECT_FALSE(s.dialog().open());
+    EXPECT_EQ(loadScene(dir_ / "lesson.json").particles.size(), s.world().size());
+    s.apply(cmd::SaveAs{dir_ / "lesson-2.json"});
     ASSERT_EQ(s.recentFiles().size(), 2u);
     EXPECT_EQ(s.recentFiles().front().filename(), "lesson-2.json");
     s.apply(cmd::SaveAs{""});

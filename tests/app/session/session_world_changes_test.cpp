@@ -155,7 +155,8 @@ std::vector<std::tuple<const char*, Change>> changes() {
              s.apply(cmd::OpenFile{dir / "sliding.json"});
              if (s.paused()) s.apply(cmd::TogglePause{});
          }},
-        {"Reset", [](Session& s, const fs::path&) { s.apply(cmd::Reset{}); }},
+        {"Restart", [](Session& s, const fs::path&) { s.apply(cmd::Restart{}); }},
+        {"Revert", [](Session& s, const fs::path&) { s.apply(cmd::Revert{}); }},
     };
 }
 

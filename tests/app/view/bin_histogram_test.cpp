@@ -114,7 +114,7 @@ TEST_F(SessionBinsTest, AScenesBinsAreShownUnlessSwitchedOffAndKeptBySaveAndUndo
     s.apply(cmd::Undo{});  // back to the board, bins and all
     ASSERT_TRUE(s.meta().bins);
     EXPECT_TRUE(s.binsShown());
-    s.apply(cmd::Reset{});
+    s.apply(cmd::Restart{});
     EXPECT_TRUE(s.meta().bins);
 }
 
@@ -151,7 +151,7 @@ TEST_F(SessionBinsTest, TheGaltonBoardsDropperCountsDownAndSaveAndResetKeepItsSt
     ASSERT_EQ(saved.droppers.size(), 1u);
     EXPECT_EQ(saved.droppers[0], s.world().droppers()[0]);
     EXPECT_EQ(saved.particles.size(), 10u);
-    s.apply(cmd::Reset{});
+    s.apply(cmd::Restart{});
     EXPECT_EQ(s.world().droppers()[0].balls, 1000u);
     EXPECT_EQ(s.world().droppers()[0].released, 0u);
     EXPECT_EQ(s.world().size(), 0u);

@@ -13,6 +13,9 @@ TEST(Hud, TitleShowsTheCountAndPaused) {
     EXPECT_EQ(windowTitle(6, false), "Particle Sandbox - 6 particles");
     EXPECT_EQ(windowTitle(1, true), "Particle Sandbox - 1 particle - PAUSED");
     EXPECT_EQ(windowTitle(2, false, "Gas"), "Particle Sandbox - 2 particles - Gas");
+    // Unsaved changes: marked first (where a cut-off title keeps it) and said in words.
+    EXPECT_EQ(windowTitle(2, true, "Gas", true),
+              "* Particle Sandbox - 2 particles - PAUSED - Gas (unsaved changes)");
 }
 
 TEST(Hud, LinesShowTimeCountEnergyAndMomentumInHumanUnits) {

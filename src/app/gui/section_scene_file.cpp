@@ -1,0 +1,89 @@
+// The Scene section's document part: the title and description the user writes, the file the
+// scene belongs to with its unsaved mark, and Save, Save As and Revert.
+
+#include <cstring>
+#include <string>
+
+#include <imgui.h>
+
+#include "gui/control_panel.hpp"
+#include "gui/widgets.hpp"
+#include "session/session.hpp"
+
+namespace psb::app {
+
+using widgets::tip;
+
+namespace {
+
+template <std::size_t N>
+void copyText(std::array<char, N>& to, const std::string& from) {
+    const std::size_t n = std::min(from.size(), N - 1);
+    std::memcpy(to.data(), from.data(), n);
+    to[n] = '\0';
+}
+
+}  // namespace
+
+void ControlPanel::sceneText(const Session& s) {
+    // The fields show the scene's text except while they are being typed in; leaving a field
+    // after a change sends both (one undoable edit).
+    ImGui::TextUnformatted("Title");
+    if (!titleActive_) copyText(title_, s.meta().name);
+    ImGui::SetNextItemWidth(-1.f);
+    ImGui::InputText("##title", title_.data(), title_.size());
+    titleActive_ = ImGui::IsItemActive();
+    const bool titleDone = ImGui::IsItemDeactivatedAfterEdit();
+    mark("title");
+    tip("The scene's title: the window's title shows it, and a save keeps it");
+    if (!descriptionActive_) copyText(description_, s.meta().description);
+    ImGui::TextUnformatted("Description");
+    ImGui::InputTextMultiline("##description", description_.data(), description_.size(),
+                              ImVec2(-1.f, ImGui::GetTextLineHeight() * 4.f),
+                              ImGuiInputTextFlags_CtrlEnterForNewLine);
+    descriptionActive_ = ImGui::IsItemActive();
+    const bool descriptionDone = ImGui::IsItemDeactivatedAfterEdit();
+    mark("description");
+    tip("What the scene shows, for whoever opens it next; a save keeps it. Enter or a click "
+        "elsewhere keeps what you typed");
+    if (titleDone || descriptionDone) {
+        out_.emplace_back(cmd::SetSceneText{title_.data(), description_.data()});
+    }
+}
+
+void ControlPanel::sceneFile(const Session& s) {
+    const SceneFile& f = s.sceneFile();
+    if (f.path) {
+        widgets::wrapped("File: " + f.path->string());
+        if (!f.writable) {
+            widgets::wrappedDisabled("(read-only here: Save asks for a new name)");
+        }
+    } else {
+        widgets::wrappedDisabled("Not saved in a file yet: Save asks for a name");
+    }
+    mark("file");
+    if (s.unsavedChanges()) {
+        widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "Unsaved changes");
+        mark("unsaved");
+    }
+    if (ImGui::Button("Save")) out_.emplace_back(cmd::Save{});
+    mark("Save");
+    tip(f.writable ? ("Write the scene to " + f.path->string() + " (Ctrl+S)").c_str()
+                   : "Save the scene: asks for a file name first (Ctrl+S)");
+    ImGui::SameLine();
+    if (ImGui::Button("Save As...")) out_.emplace_back(cmd::AskSaveAs{});
+    mark("Save As");
+    tip("Save the scene under a new name; the scene then belongs to that file (Ctrl+Shift+S)");
+    ImGui::SameLine();
+    if (ImGui::Button("Revert")) out_.emplace_back(cmd::Revert{});
+    mark("Revert");
+    tip(f.path ? ("Back to the file as it was last opened or saved, read again: " +
+                  f.path->string() + " (undo brings the changes back)")
+                     .c_str()
+               : "Back to the scene as it was made (undo brings the changes back)");
+    if (s.fileError().empty() && s.lastSave()) {
+        widgets::wrappedDisabled("Saved to " + s.lastSave()->string());
+    }
+}
+
+}  // namespace psb::app
