@@ -17,9 +17,9 @@
 #                                                                   0.2 m particle, walls off,
 #                                                                   gravity 9.81, e = 0, substep
 #   5b. turns the wheel over the preset list, past its end      -> no zoom of the view
-#   6. clicks Play/Pause twice, Step                             -> time moves; Restart: 6 again
+#   6. clicks Play/Pause twice, Step                             -> time moves; Restart: the set-up
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
-#   8. Esc                                                       -> exits (reset: nothing unsaved)
+#   8. Esc                                                       -> exits (saved: nothing unsaved)
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -91,13 +91,15 @@ wait_log "Launched particle"
 pass "launched: $(grep 'Launched particle' "$LOG" | tail -1)"
 
 # --- 5. save to a typed path ------------------------------------------------------------------
+# Save As: a dialog with the proposed name selected; typing replaces it, Enter saves.
 click "section Scene"
-click path
-xdotool keydown ctrl sleep 0.1 keydown a sleep 0.1 keyup a sleep 0.1 keyup ctrl sleep 0.1 \
-    keydown BackSpace sleep 0.1 keyup BackSpace
+click "Save As"
+wait_log "Save as: type a file name"
+sleep 0.3
+shot 5-save-as-dialog
 xdotool type --delay 30 "$OUT/panel-save.json"
 sleep 0.3
-click Save
+key Return
 wait_log "Saved 7 particles to $OUT/panel-save.json"
 S="$OUT/panel-save.json"
 [[ -s "$S" ]] || fail "no file at $S"
@@ -132,7 +134,8 @@ click "Play/Pause"
 wait_log "\] Paused"
 click Step
 click Restart
-wait_log "Restarted: back to .* \(6 particles"
+# The launch (an edit) before Play made the set-up: Restart keeps the launched particle.
+wait_log "Restarted: back to the set-up as Play last started it \(7 particles"
 pass "Play, Pause, Step and Restart"
 
 # --- 7. fold and open ---------------------------------------------------------------------------
@@ -150,7 +153,7 @@ pass "fold and open: box left edge $before -> $folded -> $opened px"
 
 # --- 8. leaving -------------------------------------------------------------------------------
 xdotool mousemove $((WX + 700)) $((WY + 400))
-key Escape  # the scene was reset: nothing unsaved
+key Escape  # saved in step 5 and only run since: nothing unsaved, Esc quits at once
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""

@@ -284,9 +284,9 @@ pass "T cycles the modes: $(grep -o 'Mode: [a-z0-9 ]*' "$LOG" | paste -sd, -)"
 
 # --- 9. reset to the scene as loaded ------------------------------------------------------
 key r
-wait_log "\[I\] Reset to the scene as loaded: 6 particles"
+wait_log "\[I\] Restarted: back to .* \(6 particles"
 wait_title "6 particles - PAUSED"
-pass "R resets: $(grep 'Reset to the scene' "$LOG" | tail -1)"
+pass "R restarts: $(grep 'Restarted: ' "$LOG" | tail -1)"
 
 # --- 10. select: a click on the 12 kg particle at (1.5, 1.2) m -------------------------------
 # One xdotool chain, so that the press and release are well within a click's 0.3 s.
@@ -361,7 +361,7 @@ pass "F12: $(basename "$png"), $size"
 
 # --- 14. R again undoes the edit ------------------------------------------------------------
 key r
-wait_count "Reset to the scene as loaded" 2
+wait_count "Restarted: back to" 2
 xdotool mousemove --sync "$(sx 1.5)" "$(sy 1.2)" sleep 0.1 click 1
 wait_count "Selected particle" 2
 grep "Selected particle" "$LOG" | tail -1 | grep -q "mass 12 kg" ||
