@@ -15,7 +15,7 @@ namespace psb {
 class World;
 
 /// One particle's state at one instant.
-struct TrajectorySample {
+struct TrajectoryPoint {
     double time = 0.0;  ///< simulated seconds (World::time)
     ParticleId id;
     Vec2 position = Vec2::Zero();  ///< m
@@ -42,13 +42,13 @@ class Trajectory {
     void clear() { samples_.clear(); }
 
     [[nodiscard]] const std::vector<ParticleId>& ids() const { return ids_; }
-    [[nodiscard]] const std::vector<TrajectorySample>& samples() const { return samples_; }
+    [[nodiscard]] const std::vector<TrajectoryPoint>& samples() const { return samples_; }
     [[nodiscard]] bool full() const { return samples_.size() + ids_.size() > maxSamples_; }
 
   private:
     std::vector<ParticleId> ids_;
     std::size_t maxSamples_;
-    std::vector<TrajectorySample> samples_;
+    std::vector<TrajectoryPoint> samples_;
 };
 
 }  // namespace psb

@@ -10,6 +10,7 @@
 #include <particle_sandbox/scene.hpp>
 
 #include "platform/assets.hpp"
+#include "platform/clipboard.hpp"
 #include "platform/clock.hpp"
 #include "render/screen_text.hpp"
 #include "render/screenshot.hpp"
@@ -68,6 +69,7 @@ App::App(const AppOptions& options) : options_(options) {
 
     SessionOptions s;
     s.saveTo = options_.saveTo;
+    s.exportDir = options_.screenshotDir;
     s.presets = presetScenes();
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
@@ -145,6 +147,13 @@ std::vector<std::string> App::messages() const {
 
 void App::apply(const Command& c) {
     session_->apply(c);
+    if (const std::optional<std::string> text = session_->takeClipboardText()) {
+        if (const auto why = putOnClipboard(*text)) {
+            const std::string problem = "Could not put the table on the clipboard: " + *why;
+            logLine("[E] " + problem);
+            messages_.push_back({problem, now() + kMessageSeconds, {}});
+        }
+    }
     flushNotices();
 }
 

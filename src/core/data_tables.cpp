@@ -66,7 +66,7 @@ std::vector<ObservablesSample> samplesOf(const TimeSeries& series) {
 
 std::string trajectoryTable(const Trajectory& trajectory, Separator separator) {
     Table t(separator, {"time_s", "particle", "x_m", "y_m", "vx_m_per_s", "vy_m_per_s"});
-    for (const TrajectorySample& s : trajectory.samples()) {
+    for (const TrajectoryPoint& s : trajectory.samples()) {
         t.time(s.time)
             .count(s.id.slot)
             .number(s.position.x())

@@ -24,7 +24,7 @@ bool Trajectory::record(const World& world) {
 
 void Trajectory::dropAfter(double time) {
     const auto later = std::find_if(samples_.begin(), samples_.end(),
-                                    [time](const TrajectorySample& s) { return s.time > time; });
+                                    [time](const TrajectoryPoint& s) { return s.time > time; });
     samples_.erase(later, samples_.end());
 }
 

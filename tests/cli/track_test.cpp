@@ -24,8 +24,8 @@ constexpr const char* kTwoBalls = R"({"version": 1,
     "world": {"width": 10, "height": 10, "walls": false, "restitution": 1},
     "solver": {"dt": 0.01, "mode": "exact"},
     "particles": [
-        {"position": [3, 5], "velocity": [2, 0], "mass": 1, "radius": 0.5},
-        {"position": [6, 5], "velocity": [-1, 0], "mass": 3, "radius": 0.5}]})";
+        {"x": 3, "y": 5, "vx": 2, "vy": 0, "mass": 1, "radius": 0.5},
+        {"x": 6, "y": 5, "vx": -1, "vy": 0, "mass": 3, "radius": 0.5}]})";
 
 class Track : public ::testing::Test {
   protected:

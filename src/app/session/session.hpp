@@ -42,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include <particle_sandbox/csv.hpp>
 #include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -49,6 +50,7 @@
 #include "session/box_area.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
+#include "session/data_recorder.hpp"
 #include "session/document.hpp"
 #include "session/history.hpp"
 #include "session/monitor.hpp"
@@ -76,8 +78,9 @@ struct Notice {
 
 struct SessionOptions {
     std::filesystem::path saveTo = "particle-sandbox-save.json";  ///< where Save writes first
-    std::vector<std::filesystem::path> presets;                   ///< what OpenPreset opens
-    std::uint32_t seed = 1;                                       ///< random spawns
+    std::filesystem::path exportDir = ".";       ///< where ExportTable writes a relative name
+    std::vector<std::filesystem::path> presets;  ///< what OpenPreset opens
+    std::uint32_t seed = 1;                      ///< random spawns
     bool paused = false;
     bool arrows = true;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
@@ -138,6 +141,22 @@ class Session {
     [[nodiscard]] std::vector<Notice> takeNotices();
     /// True once after a Screenshot command: the app writes the next frame.
     [[nodiscard]] bool takeScreenshotRequest();
+    /// The text a CopyTable command put on the clipboard, once: the app hands it to the system.
+    [[nodiscard]] std::optional<std::string> takeClipboardText();
+
+    // Data out (data_recorder.hpp, session_data.cpp).
+    /// The run's series, the recorded trajectories and collisions.
+    [[nodiscard]] const DataRecorder& data() const { return data_; }
+    /// `table` as text with `separator` (what ExportTable writes and CopyTable copies).
+    [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const;
+    /// The folder ExportTable writes a relative name into (absolute).
+    [[nodiscard]] std::filesystem::path exportDir() const;
+    /// The file the last ExportTable wrote (absolute).
+    [[nodiscard]] const std::optional<std::filesystem::path>& lastExport() const {
+        return lastExport_;
+    }
+    /// Why the last export failed; empty once one succeeds.
+    [[nodiscard]] const std::string& exportError() const { return exportError_; }
 
     // The document (document.hpp).
     [[nodiscard]] const World& world() const { return doc_.world; }
@@ -304,6 +323,10 @@ class Session {
     void handle(const cmd::SetTrails& c);
     void handle(const cmd::ToggleControls& c);
     void handle(const cmd::Screenshot& c);
+    // Data out (session_data.cpp).
+    void handle(const cmd::ExportTable& c);
+    void handle(const cmd::CopyTable& c);
+    void handle(const cmd::SetRecording& c);
 
     // The hand's gestures (session_hand.cpp).
     void click(const ReleaseResult& r);
@@ -388,6 +411,10 @@ class Session {
     bool running_ = true;
     bool quitPending_ = false;
     bool screenshotRequested_ = false;
+    DataRecorder data_;
+    std::optional<std::string> clipboard_;
+    std::optional<std::filesystem::path> lastExport_;
+    std::string exportError_;
     std::vector<Notice> notices_;
 };
 
