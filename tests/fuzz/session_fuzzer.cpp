@@ -115,7 +115,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 44)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 47)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -230,6 +230,17 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 43:
             if (in.ConsumeBool()) return cmd::Save{};
             return cmd::SaveAs{saveDir() / text(in), in.ConsumeBool()};
+        case 44: {
+            // A name, not a path: the export folder is the fuzzer's own.
+            std::string name = text(in);
+            std::replace(name.begin(), name.end(), '/', '_');
+            return cmd::ExportTable{
+                static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3)), name};
+        }
+        case 45:
+            return cmd::CopyTable{static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3))};
+        case 46:
+            return cmd::SetRecording{in.ConsumeBool(), in.ConsumeIntegralInRange<int>(-2, 2000)};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }
@@ -259,6 +270,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Scene scene = pick == presets.size() ? defaultScene() : loadScene(presets[pick]);
     SessionOptions o;
     o.saveTo = saveDir() / "save.json";
+    o.exportDir = saveDir();
     o.presets = presets;
     o.seed = in.ConsumeIntegral<std::uint32_t>();
     o.paused = in.ConsumeBool();
@@ -283,6 +295,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         session.update(frame, now, 50.0);
         (void)session.takeNotices();
         (void)session.takeScreenshotRequest();
+        (void)session.takeClipboardText();
         checkWorld(session.world(), k);
     }
     return 0;
