@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Particle Sandbox needs, skipping those already present.
 #   scripts/install-deps.sh          build dependencies (compiler, CMake, ccache, libraries)
-#   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick,
+#   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick, xclip,
 #                                    clang with libFuzzer for the fuzz targets, and for the
 #                                    install test man, desktop-file-validate, file (which
 #                                    CPack's dependency scan uses), lintian and mmdebstrap)
@@ -15,7 +15,7 @@ packages=(
   libtbb-dev libbox2d-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(xvfb xauth xdotool imagemagick x11-utils)
+  packages+=(xvfb xauth xdotool imagemagick x11-utils xclip)
   packages+=(clang libclang-rt-14-dev)
   packages+=(man-db desktop-file-utils file lintian mmdebstrap)
 fi

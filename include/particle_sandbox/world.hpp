@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/detail/id_table.hpp>
 #include <particle_sandbox/dropper.hpp>
 #include <particle_sandbox/math.hpp>
@@ -130,6 +131,23 @@ class World {
         return p_;
     }
 
+    // --- collisions ------------------------------------------------------------------------
+    /// Starts recording the collisions of the next steps into `log` (collision_log.hpp: every
+    /// collision, or only those of chosen particles), replacing any log kept so far, in every
+    /// step mode. Until then, and after stopRecordingCollisions(), steps record nothing and
+    /// cost nothing more; recording or not, a step's results are bit-identical.
+    void recordCollisions(CollisionLog log = {});
+    void stopRecordingCollisions() { collisionLog_.reset(); }
+    [[nodiscard]] bool recordingCollisions() const { return collisionLog_.has_value(); }
+    /// The log being recorded (nullptr when not recording): the records since recording started
+    /// or the last takeCollisions(). A copy of the world carries it, and goes on recording.
+    [[nodiscard]] const CollisionLog* collisionLog() const {
+        return collisionLog_ ? &*collisionLog_ : nullptr;
+    }
+    /// The records so far, in the order the steps resolved them, leaving the log empty (still
+    /// recording); empty when not recording.
+    [[nodiscard]] std::vector<Collision> takeCollisions();
+
     // --- time ------------------------------------------------------------------------------
     /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
     /// every particle ends at its exact state at time() + dt; any change made to the world
@@ -191,6 +209,7 @@ class World {
     double time_ = 0.0;
     mutable StepProfile profile_;  ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
+    std::optional<CollisionLog> collisionLog_;  ///< recording when set
 };
 
 }  // namespace psb

@@ -10,6 +10,7 @@
 #include <particle_sandbox/scene.hpp>
 
 #include "platform/assets.hpp"
+#include "platform/clipboard.hpp"
 #include "platform/clock.hpp"
 #include "render/screen_text.hpp"
 #include "render/screenshot.hpp"
@@ -70,6 +71,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.saveTo = options_.saveTo;
     s.saveFolder = options_.screenshotDir;
     if (options_.benchParticles == 0) s.sceneFile = options_.scene;
+    s.exportDir = options_.screenshotDir;
     s.presets = presetScenes();
     s.seed =
         options_.seed != 0 ? options_.seed : static_cast<std::uint32_t>(std::random_device{}());
@@ -148,6 +150,13 @@ std::vector<std::string> App::messages() const {
 
 void App::apply(const Command& c) {
     session_->apply(c);
+    if (const std::optional<std::string> text = session_->takeClipboardText()) {
+        if (const auto why = putOnClipboard(*text)) {
+            const std::string problem = "Could not put the table on the clipboard: " + *why;
+            logLine("[E] " + problem);
+            messages_.push_back({problem, now() + kMessageSeconds, {}});
+        }
+    }
     flushNotices();
 }
 

@@ -1,6 +1,7 @@
 #include "cli_app.hpp"
 
 #include <particle_sandbox/atomic_file.hpp>
+#include <particle_sandbox/data_tables.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 
@@ -30,15 +31,20 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         World world;
         RunReport report;
         TimeSeries series(1);
+        Trajectory track;
         {
             ProgressBar bar(err, errIsTerminal, options.progress);
             report = runScene(
                 scene, options, world,
                 [&bar](std::uint64_t done, std::uint64_t total) { bar.update(done, total); },
-                options.timeseries ? &series : nullptr);
+                options.timeseries ? &series : nullptr, options.track.empty() ? nullptr : &track);
         }
         if (options.timeseries) {
             writeFileAtomically(*options.timeseries, timeSeriesCsv(series, report.gravity));
+        }
+        if (!options.track.empty()) {
+            writeFileAtomically(trackPath(*options.timeseries),
+                                trajectoryTable(track, csv::Separator::Comma));
         }
         if (options.save) {
             // The frame length the run stepped by (--dt's, if given) goes with the state.

@@ -4,6 +4,7 @@
 
 #include "build_info.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <limits>
@@ -26,7 +27,9 @@ constexpr const char* kFooter =
     "droppers, droppers [{released, left}]. See docs/scenes.md.\n"
     "--timeseries columns: time_s, kinetic_energy_J, momentum_x_kg_m_per_s,\n"
     "momentum_y_kg_m_per_s, com_x_m, com_y_m, collisions, collision_rate_per_s; with gravity\n"
-    "also potential_energy_J, mechanical_energy_J.";
+    "also potential_energy_J, mechanical_energy_J.\n"
+    "--track writes NAME-track.EXT beside the --timeseries file NAME.EXT, at the same rows:\n"
+    "time_s, particle, x_m, y_m, vx_m_per_s, vy_m_per_s (the app's trajectory columns).";
 
 std::string joined(std::initializer_list<std::string_view> names) {
     std::string s;
@@ -67,6 +70,29 @@ std::int64_t parseInteger(const std::string& text, const std::string& option, st
     return v;
 }
 
+std::vector<std::uint32_t> parseTrackList(const std::string& text) {
+    std::vector<std::uint32_t> ids;
+    if (text.empty()) throw UsageError("--track: needs particle numbers, e.g. --track 0,3");
+    std::size_t start = 0;
+    for (;;) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (item.empty()) {
+            throw UsageError("--track: an empty item in '" + text +
+                             "' (particle numbers separated by commas, e.g. 0,3)");
+        }
+        const auto id = static_cast<std::uint32_t>(
+            parseInteger(item, "--track", 0, std::numeric_limits<std::uint32_t>::max() - 1));
+        if (std::find(ids.begin(), ids.end(), id) != ids.end())
+            throw UsageError("--track: particle " + item + " is listed twice");
+        ids.push_back(id);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return ids;
+}
+
 std::uint64_t stepsFor(double duration, double dt) {
     const double q = duration / dt;
     if (!(q <= 1e15)) {
@@ -87,7 +113,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                          "Print the version (and git revision) and exit");
 
     std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
-    std::string timeseries, timeseriesEvery;
+    std::string timeseries, timeseriesEvery, track;
     bool progress = false;
     app.add_option("SCENE", scene, "Scene file (JSON, see docs/scenes.md)")->required();
     app.add_option("-d,--duration", duration, "Simulated time to run, seconds (>= 0)")
@@ -114,6 +140,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                    "A --timeseries row every N steps (default 1; the initial and final states "
                    "always)")
         ->type_name("N");
+    app.add_option("--track", track,
+                   "Also write these particles' positions and velocities (numbers: their "
+                   "indices in the scene's particle list) at each --timeseries row, to "
+                   "NAME-track.csv beside it")
+        ->type_name("ID,ID,...");
     app.add_flag("--progress", progress,
                  "Show a progress bar on stderr (only when stderr is a terminal; long runs "
                  "show one anyway)");
@@ -175,6 +206,10 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         o.timeseriesEvery = parseInteger(timeseriesEvery, "--timeseries-every", 1,
                                          std::numeric_limits<std::int64_t>::max());
         if (!o.timeseries) throw UsageError("--timeseries-every: needs --timeseries PATH");
+    }
+    if (app.count("--track") > 0) {
+        o.track = parseTrackList(track);
+        if (!o.timeseries) throw UsageError("--track: needs --timeseries PATH");
     }
     o.progress = progress;
     return o;

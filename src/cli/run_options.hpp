@@ -27,6 +27,9 @@ struct RunOptions {
     std::optional<std::filesystem::path> timeseries;
     /// A --timeseries row every this many steps (>= 1); the first and the last step always.
     std::int64_t timeseriesEvery = 1;
+    /// --track: the numbers of the particles whose paths are written beside the time series
+    /// (their indices in the scene's particle list), in the order given; empty: none.
+    std::vector<std::uint32_t> track;
     bool progress = false;
 };
 
@@ -51,6 +54,10 @@ class HelpRequested : public std::runtime_error {
 /// The whole text must be a decimal integer in [lo, hi]. Throws UsageError naming `option`.
 [[nodiscard]] std::int64_t parseInteger(const std::string& text, const std::string& option,
                                         std::int64_t lo, std::int64_t hi);
+
+/// --track's list: particle numbers (decimal integers >= 0) separated by commas, none twice.
+/// Throws UsageError naming the item that is wrong.
+[[nodiscard]] std::vector<std::uint32_t> parseTrackList(const std::string& text);
 
 /// Steps of `dt` that cover `duration`: duration / dt rounded up, except that a quotient
 /// within 1e-9 (relative) of an integer counts as that integer, so 1 s at 0.01 s is 100 steps

@@ -51,8 +51,25 @@ std::uint64_t countEscaped(const World& world) {
     return n;
 }
 
+std::vector<ParticleId> trackedIds(const World& world, const std::vector<std::uint32_t>& numbers) {
+    std::vector<ParticleId> live = world.ids();
+    std::vector<ParticleId> ids;
+    for (const std::uint32_t n : numbers) {
+        const auto it =
+            std::find_if(live.begin(), live.end(), [n](ParticleId id) { return id.slot == n; });
+        if (it == live.end()) {
+            throw UsageError("--track: no particle " + std::to_string(n) + ": the scene has " +
+                             std::to_string(live.size()) + " particles" +
+                             (live.empty() ? std::string()
+                                           : ", numbered 0 to " + std::to_string(live.size() - 1)));
+        }
+        ids.push_back(*it);
+    }
+    return ids;
+}
+
 RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
-                   const ProgressFn& progress, TimeSeries* series) {
+                   const ProgressFn& progress, TimeSeries* series, Trajectory* track) {
     Scene s = scene;
     s.solver = effectiveSolver(scene, options);
     s.dt = effectiveDt(scene, options);
@@ -85,11 +102,26 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
         *series = TimeSeries(static_cast<std::size_t>(rows));
         series->record(world);
     }
+    if (track != nullptr) {
+        const std::vector<ParticleId> ids = trackedIds(world, options.track);
+        const std::uint64_t rows = 1 + r.steps / every + (r.steps % every != 0 ? 1 : 0);
+        if (rows * ids.size() > kMaxTimeSeriesRows) {
+            throw UsageError("--track: " + std::to_string(rows * ids.size()) +
+                             " rows is more than the limit of " +
+                             std::to_string(kMaxTimeSeriesRows) +
+                             "; track fewer particles or use a larger --timeseries-every");
+        }
+        *track = Trajectory(ids, static_cast<std::size_t>(rows * ids.size()));
+        track->record(world);
+    }
 
     const auto start = std::chrono::steady_clock::now();
     for (std::uint64_t k = 0; k < r.steps; ++k) {
         world.step(s.dt);
-        if (series != nullptr && ((k + 1) % every == 0 || k + 1 == r.steps)) series->record(world);
+        if ((k + 1) % every == 0 || k + 1 == r.steps) {
+            if (series != nullptr) series->record(world);
+            if (track != nullptr) track->record(world);
+        }
         if (progress) progress(k + 1, r.steps);
     }
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

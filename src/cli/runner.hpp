@@ -10,6 +10,7 @@
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/trajectory.hpp>
 
 #include "run_options.hpp"
 
@@ -64,9 +65,18 @@ using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
 /// receives the final state (for --save). When `series` is given it is replaced by one sized
 /// for the whole run and receives the initial state, every options.timeseriesEvery-th step and
 /// the final state; a run that would need more than kMaxTimeSeriesRows samples throws
-/// UsageError naming --timeseries-every before any step.
+/// UsageError naming --timeseries-every before any step. When `track` is given it is replaced
+/// by a trajectory of the particles options.track names, sampled at the same instants as
+/// `series`; a number that names no particle of the scene throws UsageError naming --track
+/// before any step.
 [[nodiscard]] RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
-                                 const ProgressFn& progress = {}, TimeSeries* series = nullptr);
+                                 const ProgressFn& progress = {}, TimeSeries* series = nullptr,
+                                 Trajectory* track = nullptr);
+
+/// The ids of the particles numbered `numbers` in `world` (their id's slot). Throws UsageError
+/// naming --track and the first number that names no particle.
+[[nodiscard]] std::vector<ParticleId> trackedIds(const World& world,
+                                                 const std::vector<std::uint32_t>& numbers);
 
 /// Particles whose centre lies outside the box [0, width] × [0, height].
 [[nodiscard]] std::uint64_t countEscaped(const World& world);

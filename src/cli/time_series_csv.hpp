@@ -1,7 +1,9 @@
 #pragma once
-// particle-sim --timeseries: a run's observables as CSV, one row per sample.
+// particle-sim --timeseries: a run's observables as CSV, one row per sample (the columns are
+// data_tables.hpp's, shared with the app's export); with --track, the chosen particles' paths.
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 #include <particle_sandbox/time_series.hpp>
@@ -20,9 +22,14 @@ inline constexpr const char* kTimeSeriesCsvGravityColumns =
 /// Most rows --timeseries writes (about 1 GB of text); a run that would write more is refused.
 inline constexpr std::uint64_t kMaxTimeSeriesRows = 10'000'000;
 
-/// The header and one row per sample of `series`, oldest first, each line ending in '\n'.
-/// Doubles are written with 17 significant digits, so they read back bit-exact. With `gravity`
+/// The header and one row per sample of `series`, oldest first, each line ending in '\n'
+/// (psb::timeSeriesTable). Values are written as the shortest decimal that reads back
+/// bit-exact, times to 12 significant digits (0.3, not 0.30000000000000004). With `gravity`
 /// each row also has the potential and the mechanical (kinetic + potential) energy.
 [[nodiscard]] std::string timeSeriesCsv(const TimeSeries& series, bool gravity = false);
+
+/// Where --track writes the trajectories: beside the --timeseries file, "-track" added to its
+/// name (runs/gas.csv: runs/gas-track.csv).
+[[nodiscard]] std::filesystem::path trackPath(const std::filesystem::path& timeseries);
 
 }  // namespace psb::cli

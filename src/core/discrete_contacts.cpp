@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collision_capture.hpp"
 #include "contact.hpp"
 #include "discrete_step.hpp"
 
@@ -42,7 +43,9 @@ inline void prefetchPair(const ParticleArrays& p, const std::vector<ContactPair>
     }
 }
 
-template <bool kFriction>
+// kRecord: the world records collisions (ctx.collisionLog); a separate instance, so that a
+// world that records none runs exactly the loop it ran before recording existed.
+template <bool kFriction, bool kRecord>
 void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
                  StepCounters& counters) {
     const double e = def.restitution;
@@ -56,9 +59,15 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
         const Normal n = contactNormal(p, i, j, d);
         deepest = std::max(deepest, p.radius[i] + p.radius[j] - d);
 
+        [[maybe_unused]] const Vec2 iBefore(p.vx[i], p.vy[i]), jBefore(p.vx[j], p.vy[j]);
         if (collideDiscs<kFriction>(p.vx[i], p.vy[i], p.vx[j], p.vy[j], p.invMass[i], p.invMass[j],
                                     p.mass[i], p.mass[j], n, e, mu)) {
             ++counters.collisions;
+            if constexpr (kRecord) {
+                ctx.collisionLog->add(pairCollision(
+                    ctx.collisionTime, p.id[i], p.id[j], iBefore, Vec2(p.vx[i], p.vy[i]), jBefore,
+                    Vec2(p.vx[j], p.vy[j]), p.invMass[i], p.mass[i], p.mass[j]));
+            }
         }
     }
     counters.maxOverlap = deepest;
@@ -68,10 +77,13 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
 
 void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
              StepCounters& counters) {
+    const bool record = ctx.collisionLog != nullptr;
     if (def.friction > 0.0) {
-        resolveImpl<true>(p, def, ctx, counters);
+        record ? resolveImpl<true, true>(p, def, ctx, counters)
+               : resolveImpl<true, false>(p, def, ctx, counters);
     } else {
-        resolveImpl<false>(p, def, ctx, counters);
+        record ? resolveImpl<false, true>(p, def, ctx, counters)
+               : resolveImpl<false, false>(p, def, ctx, counters);
     }
 }
 

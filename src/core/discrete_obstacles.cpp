@@ -47,6 +47,7 @@
 #include <cmath>
 #include <span>
 
+#include "collision_capture.hpp"
 #include "contact.hpp"
 #include "discrete_step.hpp"
 #include "obstacle_geometry.hpp"
@@ -76,6 +77,7 @@ struct Body {
 struct Hits {
     std::uint64_t obstacles = 0, walls = 0;
     double wallImpulse = 0.0;
+    std::uint32_t lastObstacle = 0;  ///< the index of the last obstacle rebounded off
 };
 
 /// Turns the velocity's component into the obstacle (along -n, n the outward unit normal)
@@ -196,7 +198,10 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
         moved = true;
         double nx, ny, depth;
         contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
-        hits += rebound<kFriction>(b, nx, ny, e, mu);
+        if (rebound<kFriction>(b, nx, ny, e, mu)) {
+            ++hits;
+            out.lastObstacle = hit;
+        }
         if (leg == slides) break;
         // The rest of the move, without its part into the obstacle.
         double rx = (1.0 - first) * dx, ry = (1.0 - first) * dy;
@@ -243,7 +248,10 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
                 b.y = y;
                 moved = pushed = true;
             }
-            hits += rebound<kFriction>(b, nx, ny, e, mu);
+            if (rebound<kFriction>(b, nx, ny, e, mu)) {
+                ++hits;
+                out.lastObstacle = k;
+            }
         }
         if (!pushed) break;
     }
@@ -334,6 +342,10 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
     ctx.obstacleWallHitScratch.resize(blocks);
     ctx.obstacleWallImpulseScratch.resize(blocks);
     ctx.obstacleFallbackScratch.assign(blocks, 0);
+    // Recorded per block and appended in block order (parallel.hpp), one record per particle
+    // the stage turned: its velocity before and after all it did.
+    const bool record = ctx.collisionLog != nullptr;
+    if (record) ctx.collisionScratch.resize(blocks);
     // The free discs keep clear of the walls of the box they were made in.
     if (ctx.freeBox != std::array{def.width, def.height, def.walls ? 1.0 : 0.0}) {
         ctx.freeRadius.clear();
@@ -347,6 +359,7 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
         std::vector<std::uint32_t>& nearby = ctx.obstacleNearby[blk];
         Hits hits;
         std::uint64_t boxQueries = 0;
+        if (record) ctx.collisionScratch[blk].clear();
         // Particle i against the obstacles near it, steps 1 to 3 above.
         auto contact = [&](std::size_t i, double x0, double y0) {
             // 1. Candidates.
@@ -394,7 +407,22 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
             }
             if (!touchable) return;
             Body b{x1, y1, p.vx[i], p.vy[i], r, p.mass[i], p.invMass[i] == 0.0};
+            const std::uint64_t obstacleHits = hits.obstacles, wallHits = hits.walls;
             collideOne<kFriction>(b, x0, y0, obstacles, candidates, def, hits);
+            if (record && (hits.obstacles != obstacleHits || hits.walls != wallHits)) {
+                // An obstacle's record when one turned it, else the wall's this stage made.
+                const bool obstacle = hits.obstacles != obstacleHits;
+                std::uint32_t where = hits.lastObstacle;
+                if (!obstacle) {
+                    const double outX = x1 < r ? -1.0 : (x1 > def.width - r ? 1.0 : 0.0);
+                    where = static_cast<std::uint32_t>(
+                        outX != 0.0 ? (outX < 0.0 ? WallSide::Left : WallSide::Right)
+                                    : (y1 < r ? WallSide::Top : WallSide::Bottom));
+                }
+                ctx.collisionScratch[blk].push_back(surfaceCollision(
+                    ctx.collisionTime, obstacle ? Collision::With::Obstacle : Collision::With::Wall,
+                    where, p.id[i], Vec2(p.vx[i], p.vy[i]), Vec2(b.vx, b.vy), p.mass[i]));
+            }
             p.x[i] = b.x;
             p.y[i] = b.y;
             p.vx[i] = b.vx;
@@ -458,6 +486,10 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
         counters.obstacleCollisions += ctx.obstacleHitScratch[b];
         counters.wallCollisions += ctx.obstacleWallHitScratch[b];
         counters.wallImpulse += ctx.obstacleWallImpulseScratch[b];
+        if (record) {
+            for (const Collision& c : ctx.collisionScratch[b])
+                ctx.collisionLog->add(c);
+        }
     }
 }
 

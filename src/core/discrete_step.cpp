@@ -152,8 +152,11 @@ void discreteSteps(ParticleArrays& p, detail::IdTable& ids, const WorldDef& def,
         --stepsUntilReorder;
     }
     const double h = dt / substeps;
-    for (int k = 0; k < substeps; ++k)
+    for (int k = 0; k < substeps; ++k) {
+        // The last substep ends where World's clock will be.
+        ctx.collisionTime = k + 1 == substeps ? ctx.stepStart + dt : ctx.stepStart + (k + 1) * h;
         discreteStep(p, def, h, ctx, profile, counters);
+    }
     profile.total += reorderMs;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collision_capture.hpp"
 #include "contact.hpp"
 #include "discrete_step.hpp"
 #include "parallel.hpp"
@@ -52,7 +53,12 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCou
     const std::size_t blocks = parallel::blockCount(n);
     ctx.wallImpulseScratch.resize(blocks);
     ctx.wallHitScratch.resize(blocks);
+    // Recorded per block and appended in block order, as the sums are, so the log is the same
+    // for any thread count.
+    const bool record = ctx.collisionLog != nullptr;
+    if (record) ctx.collisionScratch.resize(blocks);
     parallel::forBlocks(ctx.threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
+        if (record) ctx.collisionScratch[b].clear();
         std::uint64_t hits = 0;
         double impulse = 0.0;
         const double* px = p.x.data();
@@ -90,13 +96,31 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCou
                     wallAxis<false>(p.y[i], vy, vt, r, def.height, e, mu);
                     continue;
                 }
+                const Vec2 before(p.vx[i], p.vy[i]);
                 const double jx =
                     wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
+                const Vec2 between(p.vx[i], p.vy[i]);
                 const double jy =
                     wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
                 if (jx > 0.0 || jy > 0.0) {
                     hits += (jx > 0.0) + (jy > 0.0);
                     impulse += p.mass[i] * (jx + jy);
+                    if (record) {
+                        // The wall hit is the one the particle was moving towards; a corner is
+                        // two records, x's rebound first.
+                        const Vec2 after(p.vx[i], p.vy[i]);
+                        auto wall = [&](WallSide low, WallSide high, double v, const Vec2& from,
+                                        const Vec2& to) {
+                            const WallSide side = v < 0.0 ? low : high;
+                            ctx.collisionScratch[b].push_back(surfaceCollision(
+                                ctx.collisionTime, Collision::With::Wall,
+                                static_cast<std::uint32_t>(side), p.id[i], from, to, p.mass[i]));
+                        };
+                        if (jx > 0.0)
+                            wall(WallSide::Left, WallSide::Right, before.x(), before, between);
+                        if (jy > 0.0)
+                            wall(WallSide::Top, WallSide::Bottom, between.y(), between, after);
+                    }
                 }
             }
         }
@@ -111,6 +135,12 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCou
     }
     counters.wallCollisions += hits;
     counters.wallImpulse += impulse;
+    if (record) {
+        for (std::size_t b = 0; b < blocks; ++b) {
+            for (const Collision& c : ctx.collisionScratch[b])
+                ctx.collisionLog->add(c);
+        }
+    }
 }
 
 }  // namespace

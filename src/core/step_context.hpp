@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 
 #include "broad_phase_grid.hpp"
@@ -41,6 +42,12 @@ struct StepContext {
     std::vector<std::uint64_t> obstacleHitScratch;
     std::vector<std::uint64_t> obstacleWallHitScratch;  ///< wall rebounds the stage made
     std::vector<double> obstacleWallImpulseScratch;
+    // Recording collisions (collision_log.hpp): null when the world records none, and then the
+    // stages do exactly what they do without it.
+    CollisionLog* collisionLog = nullptr;
+    double stepStart = 0.0;      ///< World::time() when the step began, seconds
+    double collisionTime = 0.0;  ///< the end of the substep being run, seconds
+    std::vector<std::vector<Collision>> collisionScratch;  ///< per block: walls and obstacles
 };
 
 }  // namespace psb

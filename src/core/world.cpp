@@ -82,7 +82,8 @@ World::World(const World& other)
       broadPhaseUsed_(other.broadPhaseUsed_),
       time_(other.time_),
       profile_(other.profile_),
-      counters_(other.counters_) {
+      counters_(other.counters_),
+      collisionLog_(other.collisionLog_) {
     if (exact_) exact_->setLog(nullptr);  // the original's log stays the original's
 }
 
@@ -370,6 +371,8 @@ void World::step(double dt) {
     if (!droppers_.empty()) releaseBalls(dt);
     ctx_->threads = threads_;
     ctx_->broadPhase = solver_.broadphase;
+    ctx_->collisionLog = collisionLog_ ? &*collisionLog_ : nullptr;
+    ctx_->stepStart = time_;
     // A step in another mode works on the arrays: they must hold the state, and the exact
     // stepper must rebuild from what that step leaves. The exact mode keeps its own copy in
     // cell order, so it never reorders the world's storage.
@@ -437,7 +440,16 @@ void World::stepExact(double dt) {
     // Every function that changes what the stepper read calls changed(), which makes it
     // rebuild at this step; otherwise it carries on from its own state.
     if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
+    exact_->record(ctx_->collisionLog, time_);
     exact_->step(p_, def_, dt, profile_, counters_);
+}
+
+void World::recordCollisions(CollisionLog log) {
+    collisionLog_ = std::move(log);
+}
+
+std::vector<Collision> World::takeCollisions() {
+    return collisionLog_ ? collisionLog_->take() : std::vector<Collision>{};
 }
 
 }  // namespace psb

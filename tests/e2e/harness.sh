@@ -1,17 +1,17 @@
 # Sourced by the end-to-end scripts (sandbox_e2e.sh, defects_e2e.sh, undo_e2e.sh, panel_e2e.sh,
-# obstacles_e2e.sh, galton_e2e.sh, tests/install/install_test.sh): e2e_begin, which the app's
-# scripts start with (their arguments, output folder and fail()), pass(), the ERR trap that
+# obstacles_e2e.sh, galton_e2e.sh, data_e2e.sh, tests/install/install_test.sh): e2e_begin, which
+# the app's scripts start with (their arguments, output folder and fail()), pass(), the ERR trap that
 # names the failing line, the clean-up at exit of the program under test (APP_PID) and of the X
 # server (XVFB_PID), start_xvfb, and for the app's scripts start_app with the functions that
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
 pass() { echo "ok: $*"; }
 
-# need_test_tools: Xvfb, xdotool and ImageMagick, installed (scripts/install-deps.sh --test)
+# need_test_tools: Xvfb, xdotool, ImageMagick and xclip, installed (scripts/install-deps.sh --test)
 # when one is missing.
 need_test_tools() {
     local here tool
     here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-    for tool in Xvfb xdpyinfo xdotool import convert; do
+    for tool in Xvfb xdpyinfo xdotool import convert xclip; do
         if ! command -v "$tool" >/dev/null; then
             "$here/../../scripts/install-deps.sh" --test
             break

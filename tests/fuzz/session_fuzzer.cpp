@@ -115,7 +115,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 49)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 52)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -252,6 +252,17 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
             return in.ConsumeBool() ? Command{cmd::Revert{}} : Command{cmd::Restart{}};
         case 48:
             return cmd::SetSceneText{text(in), text(in)};
+        case 49: {
+            // A name, not a path: the export folder is the fuzzer's own.
+            std::string name = text(in);
+            std::replace(name.begin(), name.end(), '/', '_');
+            return cmd::ExportTable{
+                static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3)), name};
+        }
+        case 50:
+            return cmd::CopyTable{static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3))};
+        case 51:
+            return cmd::SetRecording{in.ConsumeBool(), in.ConsumeIntegralInRange<int>(-2, 2000)};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }
@@ -281,6 +292,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Scene scene = pick == presets.size() ? defaultScene() : loadScene(presets[pick]);
     SessionOptions o;
     o.saveTo = saveDir() / "save.json";
+    o.exportDir = saveDir();
     o.presets = presets;
     o.seed = in.ConsumeIntegral<std::uint32_t>();
     o.paused = in.ConsumeBool();
@@ -305,6 +317,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         session.update(frame, now, 50.0);
         (void)session.takeNotices();
         (void)session.takeScreenshotRequest();
+        (void)session.takeClipboardText();
         checkWorld(session.world(), k);
     }
     return 0;

@@ -76,6 +76,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             show(s, pixelRatio);
             tools(s, pixelRatio);
             readouts(s);
+            data(s);
             selected(s);
             allParticles(s);
             engine(s, stats);

@@ -9,6 +9,7 @@
 //   Show       arrows, labels, momentum and centre of mass, trails, plots, speed histogram
 //   Tools      what the left mouse does; what a launched particle is made of; obstacle sizes
 //   Readouts   time, particles, energies, momentum, accuracy in words
+//   Data       record the particles' paths and collisions; export or copy each table
 //   Selected   the selected particle's values, editable in place
 //   All particles   a table, for scenes of up to kTableMaxParticles
 //   Engine     frame times, broadphase, threads, per-stage profile (closed at first)
@@ -20,9 +21,9 @@
 // The panel's pieces are in control_panel.cpp (the window, time, scene, show, tools), one file
 // per section after that: section_scene_file.cpp (the scene's text and file),
 // section_dialogs.cpp (Save As, New scene, the quit question), section_obstacles.cpp (the obstacle
-// tools' sizes, removing an obstacle), section_physics.cpp, section_readouts.cpp (readouts, engine)
-// and section_particles.cpp (selected, all particles); widgets.hpp holds the small widgets they
-// share.
+// tools' sizes, removing an obstacle), section_physics.cpp, section_readouts.cpp (readouts, engine),
+// section_data.cpp (recording, exports) and section_particles.cpp (selected, all particles);
+// widgets.hpp holds the small widgets they share.
 
 #include <array>
 #include <string>
@@ -89,6 +90,8 @@ class ControlPanel {
     /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).
     void obstacleTools(const Session& s);
     void readouts(const Session& s);
+    /// Recording, and the tables' Export and Copy buttons (section_data.cpp).
+    void data(const Session& s);
     void engine(const Session& s, const FrameStats& stats);
     void selected(const Session& s);
     void allParticles(const Session& s);
@@ -108,6 +111,9 @@ class ControlPanel {
     bool newWalls_ = true;
     int shownDialog_ = 0;  ///< the Dialog::Kind the fields were filled for
     int substeps_ = 4;
+    /// The Data section: the file name typed for Export, steps between trajectory samples.
+    std::array<char, 512> exportName_{};
+    int recordEvery_ = 0;
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 6> fieldText_{};
     std::array<bool, 6> fieldActive_{};

@@ -82,6 +82,7 @@ KeyState keyState(const Session& session) {
     k.solver = session.world().solver();
     k.timeScale = session.timeScale();
     k.view = session.view();
+    k.recording = session.data().recording();
     return k;
 }
 
@@ -111,6 +112,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
             return {cmd::ToggleControls{}};
         case SDLK_m:
             return {cmd::SpawnRandom{}};
+        case SDLK_x:
+            return {cmd::SetRecording{!state.recording}};
         case SDLK_b:
             return {cmd::SetTool{cmd::Tool::Peg, true}};
         case SDLK_w:

@@ -34,7 +34,8 @@ struct KeyState {
     Vec2 sceneGravity = Vec2::Zero();  ///< of the scene as loaded
     SolverSettings solver = {};
     double timeScale = 1.0;
-    ViewOptions view = {};  ///< what is shown (the keys that show or hide something flip it)
+    ViewOptions view = {};   ///< what is shown (the keys that show or hide something flip it)
+    bool recording = false;  ///< trajectories are being recorded (X stops, else starts)
 };
 /// The session's KeyState now.
 [[nodiscard]] KeyState keyState(const Session& session);

@@ -348,6 +348,35 @@ struct CloseDialog {
 struct Screenshot {
     static constexpr Traits traits = kPassive;
 };  ///< the app writes the next frame's pixels
+
+// Data out (session_data.cpp): tables to take away, and recording the particles' paths.
+/// The tables (psb::valuesTable and its neighbours in data_tables.hpp).
+enum class DataTable : std::uint8_t {
+    Values,        ///< every particle's state now
+    TimeSeries,    ///< the plots' observables from the run's start, with the collision rate
+    Trajectories,  ///< the recorded particles' t, x, y, vx, vy
+    Collisions,    ///< the recorded particles' collisions
+};
+/// Writes `table` as CSV to `path`, atomically: a relative path is in the export folder (the
+/// screenshots'), an empty one the table's own name there; ".csv" is added when the name has no
+/// extension, and an existing file is never replaced (NAME-2.csv, ... instead).
+struct ExportTable {
+    static constexpr Traits traits = kPastPrompt;
+    DataTable table = DataTable::Values;
+    std::filesystem::path path;
+};
+/// Puts `table` on the clipboard as tab-separated text (the app hands it to the system).
+struct CopyTable {
+    static constexpr Traits traits = kPastPrompt;
+    DataTable table = DataTable::Values;
+};
+/// Starts recording the selected particle (with none selected: every particle, up to
+/// DataRecorder's limit) every `every` steps, or stops; `every` 0 keeps the last choice.
+struct SetRecording {
+    static constexpr Traits traits = kPastPrompt;
+    bool on = true;
+    int every = 0;
+};
 /// Esc: closes what is open (a dialog, the help, the edit prompt); with nothing open, quits,
 /// asking first when there are unsaved changes.
 struct Back {
@@ -373,6 +402,6 @@ using Command = std::variant<
     cmd::SetMode, cmd::SetTimeScale, cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle,
     cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls,
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
-    cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog>;
+    cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog, cmd::ExportTable, cmd::CopyTable, cmd::SetRecording>;
 
 }  // namespace psb::app

@@ -34,7 +34,7 @@ SceneInfo describeScene(const std::filesystem::path& file) {
 }
 
 std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
-                                                  std::string& why) {
+                                                  std::string& why, const char* extension) {
     // Built by appending: GCC 12 warns wrongly (-Wrestrict) on "'" + string.
     const auto quoted = [](const std::string& text) {
         std::string q(1, '\'');
@@ -66,7 +66,7 @@ std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& t
         return std::nullopt;
     }
     std::filesystem::path path = typed.parent_path() / name;
-    if (path.extension().empty()) path += ".json";
+    if (path.extension().empty()) path += extension;
     return path;
 }
 

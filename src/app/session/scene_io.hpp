@@ -39,12 +39,13 @@ struct SceneInfo {
 [[nodiscard]] std::filesystem::path sceneFileName(const std::string& name);
 
 /// The file a name typed for Save As names: trailing dots and spaces dropped ("lesson." is
-/// "lesson"), then ".json" added when no extension is left. A name with nothing before its
-/// extension (".json"), or beginning with a dot (a hidden file no file list would show), or a
-/// path holding a NUL character (the system would read only the part before it), is refused:
-/// nullopt, and `why` says so.
+/// "lesson"), then `extension` (".json" for a scene) added when no extension is left. A name with
+/// nothing before its extension (".json"), or beginning with a dot (a hidden file no file list
+/// would show), or a path holding a NUL character (the system would read only the part before it),
+/// is refused: nullopt, and `why` says so.
 [[nodiscard]] std::optional<std::filesystem::path> saveFileName(const std::filesystem::path& typed,
-                                                                std::string& why);
+                                                                std::string& why,
+                                                                const char* extension = ".json");
 
 /// Saves `world` as a scene with `meta` (its name, description, trails, bins and dt) to `path`,
 /// atomically (psb::saveScene): the old file survives any failure. Returns a line for the user

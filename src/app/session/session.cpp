@@ -64,6 +64,7 @@ void Session::startOver(bool newScene) {
     history_.startOver();
     clock_.restart();
     monitor_.restart(doc_.world, newScene);
+    if (newScene) data_.restart(doc_.world);
     if (newScene) view_.arrowSeconds = arrowSecondsFor(doc_.world);
 }
 
@@ -77,6 +78,12 @@ bool Session::takeScreenshotRequest() {
     const bool r = screenshotRequested_;
     screenshotRequested_ = false;
     return r;
+}
+
+std::optional<std::string> Session::takeClipboardText() {
+    std::optional<std::string> text;
+    text.swap(clipboard_);
+    return text;
 }
 
 void Session::say(std::string text, Notice::Level level) {

@@ -42,6 +42,7 @@
 #include <utility>
 #include <vector>
 
+#include <particle_sandbox/csv.hpp>
 #include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -49,6 +50,7 @@
 #include "session/box_area.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
+#include "session/data_recorder.hpp"
 #include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/history.hpp"
@@ -82,6 +84,7 @@ struct SessionOptions {
     /// `saveFolder`.
     std::optional<std::filesystem::path> saveTo;
     std::filesystem::path saveFolder = ".";
+    std::filesystem::path exportDir = ".";  ///< where ExportTable writes a relative name
     std::vector<std::filesystem::path> presets;  ///< what OpenPreset opens (read-only)
     std::uint32_t seed = 1;                      ///< random spawns
     bool paused = false;
@@ -144,6 +147,22 @@ class Session {
     [[nodiscard]] std::vector<Notice> takeNotices();
     /// True once after a Screenshot command: the app writes the next frame.
     [[nodiscard]] bool takeScreenshotRequest();
+    /// The text a CopyTable command put on the clipboard, once: the app hands it to the system.
+    [[nodiscard]] std::optional<std::string> takeClipboardText();
+
+    // Data out (data_recorder.hpp, session_data.cpp).
+    /// The run's series, the recorded trajectories and collisions.
+    [[nodiscard]] const DataRecorder& data() const { return data_; }
+    /// `table` as text with `separator` (what ExportTable writes and CopyTable copies).
+    [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const;
+    /// The folder ExportTable writes a relative name into (absolute).
+    [[nodiscard]] std::filesystem::path exportDir() const;
+    /// The file the last ExportTable wrote (absolute).
+    [[nodiscard]] const std::optional<std::filesystem::path>& lastExport() const {
+        return lastExport_;
+    }
+    /// Why the last export failed; empty once one succeeds.
+    [[nodiscard]] const std::string& exportError() const { return exportError_; }
 
     // The document (document.hpp).
     [[nodiscard]] const World& world() const { return doc_.world; }
@@ -325,6 +344,10 @@ class Session {
     void handle(const cmd::SetTrails& c);
     void handle(const cmd::ToggleControls& c);
     void handle(const cmd::Screenshot& c);
+    // Data out (session_data.cpp).
+    void handle(const cmd::ExportTable& c);
+    void handle(const cmd::CopyTable& c);
+    void handle(const cmd::SetRecording& c);
 
     // The hand's gestures (session_hand.cpp).
     void click(const ReleaseResult& r);
@@ -415,6 +438,10 @@ class Session {
     bool running_ = true;
     Dialog dialog_;
     bool screenshotRequested_ = false;
+    DataRecorder data_;
+    std::optional<std::string> clipboard_;
+    std::optional<std::filesystem::path> lastExport_;
+    std::string exportError_;
     std::vector<Notice> notices_;
 };
 

@@ -43,7 +43,9 @@ void Session::handle(const cmd::SetTimeScale& c) {
 void Session::stepOnce(double now) {
     holdParticle(now);
     const double dt = doc_.meta.dt;  // the scene's frame length
+    data_.beforeStep(doc_.world);
     doc_.world.step(dt);
+    data_.afterStep(doc_.world);
     history_.timeline.stepped(dt);
 }
 
@@ -60,7 +62,13 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     checkSelection();
     // A past frame shown is neither the present nor a new sample.
     monitor_.frameDone(doc_.world, !history_.viewing);
-    if (!history_.viewing) history_.timeline.record(doc_.world);
+    if (!history_.viewing) {
+        data_.sample(monitor_.observables());
+        history_.timeline.record(doc_.world);
+    }
+    if (const std::string why = data_.takeStopReason(); !why.empty()) {
+        say("Recording stopped: " + why, Notice::Level::Warning);
+    }
     clock_.frameDone(t0);
 }
 

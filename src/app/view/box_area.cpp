@@ -24,6 +24,8 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
     wide.spawnMass = 0.00123;
     wide.spawnRadius = 0.00123;
     wide.arrowSeconds = 0.0123;
+    wide.paused = true;
+    wide.recording = true;
     std::size_t lines = wrapHudLines(font, hudLines(wide), room - 8).size();
     if (folded) {  // the longer of the two notes
         lines += std::max(wrapLines(font, {foldedChartsNote(true)}, room - 8).size(),

@@ -33,6 +33,7 @@ HudData hudData(const Session& session) {
     const TimelineView past = session.timeline();
     hud.past = past.viewingPast;
     hud.secondsBack = past.secondsBack();
+    hud.recording = session.data().recording();
     return hud;
 }
 

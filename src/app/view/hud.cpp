@@ -34,9 +34,9 @@ std::vector<std::string> hudLines(const HudData& d) {
     } else {
         std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
     }
-    std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s",
+    std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s%s",
                   quantity(d.simTime, "s").c_str(), speed, d.particles, d.particles == 1 ? "" : "s",
-                  d.paused ? " | PAUSED" : "");
+                  d.paused ? " | PAUSED" : "", d.recording ? " | REC (X stops)" : "");
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
                   quantity(d.kineticEnergy, "J").c_str(),
@@ -104,6 +104,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"Backspace / Delete", "delete the held or selected particle, or the selected wall or peg"},
         {"W / B", "draw walls / place pegs; again: back to Fling (Tools)"},
         {"M", "spawn a random particle"},
+        {"X", "record the selected (or every) particle's path and collisions (Data)"},
         {"[ / ]", "smaller / bigger new particles (Tools)"},
         {"S", "show / hide labels (Show)"},
         {"A", "show / hide velocity arrows (Show)"},

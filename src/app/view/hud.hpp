@@ -32,6 +32,8 @@ struct HudData {
     double overlap = 0.0;
     bool past = false;         ///< a recorded past frame is shown
     double secondsBack = 0.0;  ///< how far back it is, s
+    /// Trajectories are being recorded (the Data section, key X): the first line says REC.
+    bool recording = false;
 };
 
 /// What the profile overlay shows.

@@ -37,6 +37,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collision_capture.hpp"
 #include "contact.hpp"
 #include "exact/motion.hpp"
 #include "exact/stepper.hpp"
@@ -109,6 +110,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // And a rebound off it slower than the rest speed ends the approach, as on a wall the
     // particle rests on: a particle in a slot between sleepers stops instead of rattling.
     if (offStatic && approach * e < restSpeed_) e = 0.0;
+    const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
     const bool hit = def_.friction > 0.0
                          ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
                                               cold_[j].m, n, e, def_.friction)
@@ -121,6 +123,11 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         if (b.flags & kHeld) countHeldHit(i);
         if (a.flags & kHeld) countHeldHit(j);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
+        if (collisionLog_) {
+            collisionLog_->add(pairCollision(collisionOffset_ + ev.time, ids_[i], ids_[j], aBefore,
+                                             Vec2(a.vx, a.vy), bBefore, Vec2(b.vx, b.vy), wi,
+                                             cold_[i].m, cold_[j].m));
+        }
     }
     if (gravity_) {
         // Lift what gravity presses together (judged by how they moved into the contact), then
@@ -158,6 +165,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         const double extent = alongX ? def_.width : def_.height;
         x = std::clamp(x, a.r, extent - a.r);
     }
+    const Vec2 before(a.vx, a.vy);
     double dv = 0.0;
     if (a.flags & kHeld) {
         // A held particle stops moving across the wall; its owner sets its velocity again.
@@ -182,6 +190,11 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         ++counters.wallCollisions;
         counters.wallImpulse += cold_[i].m * dv;
         if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
+        if (collisionLog_) {
+            collisionLog_->add(surfaceCollision(collisionOffset_ + ev.time, Collision::With::Wall,
+                                                static_cast<std::uint32_t>(ev.side), ids_[i],
+                                                before, Vec2(a.vx, a.vy), cold_[i].m));
+        }
     }
     ++a.count;
     if (gravity_ && !(a.flags & kHeld))

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collision_capture.hpp"
 #include "contact.hpp"
 #include "exact/motion.hpp"
 #include "exact/obstacle_impact.hpp"
@@ -70,6 +71,7 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
         nx = v > 0.0 ? -a.vx / v : 0.0;
         ny = v > 0.0 ? -a.vy / v : -1.0;
     }
+    const Vec2 before(a.vx, a.vy);
     const double into = -(a.vx * nx + a.vy * ny);
     const double e = effectiveRestitution(into, recent);
     double dv = def_.friction > 0.0 ? reboundOffSurface<true>(a.vx, a.vy, nx, ny, e, def_.friction)
@@ -110,6 +112,10 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     if (dv > 0.0) {
         ++counters.obstacleCollisions;
         if (log_) log_->push_back({a.t, order_[i], CollisionRecord::kObstacle + k});
+        if (collisionLog_) {
+            collisionLog_->add(surfaceCollision(collisionOffset_ + a.t, Collision::With::Obstacle,
+                                                k, ids_[i], before, Vec2(a.vx, a.vy), cold_[i].m));
+        }
     }
 }
 

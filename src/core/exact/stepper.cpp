@@ -33,6 +33,7 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
         // met at collisions (which rounding keeps at a few ulps).
         counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
     }
+    collisionOffset_ = worldTime_ - clock_;
     events_ = 0;
     // The jam guard counts per step: clear only the particles it counted in the last one.
     for (const std::uint32_t i : heldHit_) {

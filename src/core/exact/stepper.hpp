@@ -65,6 +65,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
 #include <particle_sandbox/step_profile.hpp>
 #include <particle_sandbox/world_def.hpp>
@@ -170,6 +171,13 @@ class ExactStepper {
     /// Appends every resolved collision to `log` (nullptr to stop). Indices are storage
     /// indices of `p`; times restart from 0 at each rebuild.
     void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
+
+    /// The world's record of collisions (collision_log.hpp) for the next step, nullptr for none;
+    /// `worldTime` is World::time() at its start, the clock the records' times are on.
+    void record(CollisionLog* log, double worldTime) {
+        collisionLog_ = log;
+        worldTime_ = worldTime;
+    }
 
     /// Bytes held by the event state (per-particle records, every level's cells, the queue,
     /// placed overlaps): what a copy of a world in this mode carries besides its own arrays.
@@ -359,6 +367,11 @@ class ExactStepper {
     // what step() adds to StepCounters::events.
     std::uint64_t events_ = 0;
     std::vector<CollisionRecord>* log_ = nullptr;
+    // The world's record (record()): not state, set before every step. A record's time is
+    // collisionOffset_ + the event's time (on clock_, which restarts at each rebuild).
+    CollisionLog* collisionLog_ = nullptr;
+    double worldTime_ = 0.0;
+    double collisionOffset_ = 0.0;
     // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
     // storage indices (order_), with the contact distance they keep until they are found apart.
     std::unordered_map<std::uint64_t, double> overlapContact_;

@@ -54,6 +54,18 @@ TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
     EXPECT_EQ(std::get<cmd::OpenPreset>(preset.front()).index, 2);
 }
 
+TEST(Input, XStartsRecordingAndStopsIt) {
+    const auto start = commandsForKey(keyEvent(SDLK_x), KeyState{});
+    ASSERT_TRUE(is<cmd::SetRecording>(start));
+    EXPECT_TRUE(std::get<cmd::SetRecording>(start.front()).on);
+    EXPECT_EQ(std::get<cmd::SetRecording>(start.front()).every, 0) << "the last choice";
+    KeyState recording;
+    recording.recording = true;
+    const auto stop = commandsForKey(keyEvent(SDLK_x), recording);
+    ASSERT_TRUE(is<cmd::SetRecording>(stop));
+    EXPECT_FALSE(std::get<cmd::SetRecording>(stop.front()).on);
+}
+
 TEST(Input, WAndBChooseTheWallAndPegToolsAsAToggle) {
     const auto w = commandsForKey(keyEvent(SDLK_w), KeyState{});
     ASSERT_TRUE(is<cmd::SetTool>(w));

@@ -1,0 +1,70 @@
+#pragma once
+// What the user takes away from a run as tables (data_tables.hpp): the run's observables from
+// its start, sampled once a frame as the plots are; and, while the user records, the chosen
+// particles' trajectories and their collisions (the world's collision log, collision_log.hpp).
+//
+// Records follow the world's history: when its clock goes back (an undo, a reset, carrying on
+// from a past frame) what was recorded after the new time is dropped, so a table never holds
+// two futures.
+
+#include <cstddef>
+#include <vector>
+
+#include <particle_sandbox/collision_log.hpp>
+#include <particle_sandbox/time_series.hpp>
+#include <particle_sandbox/trajectory.hpp>
+#include <particle_sandbox/world.hpp>
+
+namespace psb::app {
+
+class DataRecorder {
+  public:
+    /// Samples kept of the run; beyond it every other one is dropped (and the spacing doubles):
+    /// 2^20 frames are 4.8 hours at 60 frames a second.
+    static constexpr std::size_t kMaxRunSamples = std::size_t{1} << 20;
+    /// Collisions kept while recording; recording stops when it is reached.
+    static constexpr std::size_t kMaxCollisions = 1'000'000;
+    /// Particles recorded at most when none is selected (all of them).
+    static constexpr std::size_t kMaxAllParticles = 100;
+    /// Steps between trajectory samples: 1 (every step) to this.
+    static constexpr int kMaxEvery = 1000;
+
+    /// A new scene: the run's series starts over and recording stops.
+    void restart(World& world);
+    /// The frame's observables (Monitor::observables), appended to the run's series.
+    void sample(const ObservablesSample& s);
+
+    /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state
+    /// now as the first sample; what an earlier recording held is dropped.
+    void start(World& world, std::vector<ParticleId> ids, int every);
+    void stop(World& world);
+    [[nodiscard]] bool recording() const { return recording_; }
+    /// Why recording stopped by itself (a limit reached), once; empty otherwise.
+    [[nodiscard]] std::string takeStopReason();
+
+    /// Around each step of the world: the world records the chosen particles' collisions while
+    /// recording (an undo may have put back a world that did not), and what it recorded joins
+    /// the log; the trajectory is sampled every `every` steps.
+    void beforeStep(World& world);
+    void afterStep(World& world);
+
+    [[nodiscard]] const std::vector<ObservablesSample>& run() const { return run_; }
+    [[nodiscard]] const Trajectory& trajectory() const { return trajectory_; }
+    [[nodiscard]] const std::vector<Collision>& collisions() const { return collisions_; }
+    [[nodiscard]] int every() const { return every_; }
+
+  private:
+    void dropAfter(double time);
+
+    std::vector<ObservablesSample> run_;
+    std::size_t runStride_ = 1;  ///< frames per kept sample (doubles at each thinning)
+    std::size_t runSkipped_ = 0;
+    bool recording_ = false;
+    int every_ = 1;
+    int stepsToSample_ = 0;
+    Trajectory trajectory_;
+    std::vector<Collision> collisions_;
+    std::string stopReason_;
+};
+
+}  // namespace psb::app

@@ -1,0 +1,86 @@
+// The run's series and the recording of trajectories and collisions (data_recorder.hpp),
+// without a session.
+
+#include <gtest/gtest.h>
+
+#include "session/data_recorder.hpp"
+
+namespace psb::app {
+namespace {
+
+ObservablesSample at(double time, std::uint64_t collisions) {
+    ObservablesSample s;
+    s.time = time;
+    s.collisions = collisions;
+    return s;
+}
+
+TEST(DataRecorder, TheRunSeriesKeepsItsStartAndThinsWhenFull) {
+    DataRecorder d;
+    for (std::size_t k = 0; k <= DataRecorder::kMaxRunSamples + 10; ++k)
+        d.sample(at(static_cast<double>(k), 3 * k));
+    const std::vector<ObservablesSample>& run = d.run();
+    ASSERT_LT(run.size(), DataRecorder::kMaxRunSamples);
+    EXPECT_GT(run.size(), DataRecorder::kMaxRunSamples / 2 - 10);
+    EXPECT_EQ(run.front().time, 0.0) << "t = 0 is kept";
+    EXPECT_EQ(run[1].time, 2.0);
+    for (std::size_t k = 1; k < run.size(); ++k) {
+        EXPECT_LT(run[k - 1].time, run[k].time);
+        EXPECT_DOUBLE_EQ(run[k].collisionRate, 3.0) << "the rate over the longer span";
+    }
+}
+
+TEST(DataRecorder, ASampleAtTheSameTimeIsSkippedAndAnEarlierOneCutsTheFuture) {
+    DataRecorder d;
+    d.sample(at(0.0, 0));
+    d.sample(at(1.0, 10));
+    d.sample(at(1.0, 10));
+    d.sample(at(2.0, 30));
+    ASSERT_EQ(d.run().size(), 3u);
+    EXPECT_DOUBLE_EQ(d.run()[2].collisionRate, 20.0);
+    d.sample(at(1.5, 40));  // an undo to 1.5 s
+    ASSERT_EQ(d.run().size(), 3u);
+    EXPECT_EQ(d.run()[2].time, 1.5);
+}
+
+TEST(DataRecorder, RecordsTheChosenParticlesAndStopsTheWorldsLog) {
+    WorldDef def;
+    def.width = def.height = 10.0;
+    World w(def);
+    const ParticleId a = w.add({.position = Vec2(5.0, 5.0), .velocity = Vec2(3.0, 0.0)});
+    w.add({.position = Vec2(2.0, 2.0)});
+    DataRecorder d;
+    d.start(w, {a}, 2);
+    EXPECT_TRUE(w.recordingCollisions());
+    for (int k = 0; k < 200; ++k) {
+        d.beforeStep(w);
+        w.step(0.01);
+        d.afterStep(w);
+    }
+    EXPECT_EQ(d.trajectory().samples().size(), 101u) << "t = 0 and every second step";
+    ASSERT_EQ(d.collisions().size(), 1u) << "it reaches the right wall at 4/3 s";
+    EXPECT_EQ(d.collisions()[0].wall(), WallSide::Right);
+    d.stop(w);
+    EXPECT_FALSE(w.recordingCollisions());
+    d.beforeStep(w);
+    w.step(0.01);
+    d.afterStep(w);
+    EXPECT_EQ(d.trajectory().samples().size(), 101u);
+}
+
+TEST(DataRecorder, AWorldPutBackWithoutItsLogRecordsAgain) {
+    WorldDef def;
+    def.width = def.height = 10.0;
+    World w(def);
+    const ParticleId a = w.add({.position = Vec2(5.0, 5.0), .velocity = Vec2(3.0, 0.0)});
+    DataRecorder d;
+    const World before = w;  // an undo snapshot taken before recording started
+    d.start(w, {a}, 1);
+    w = before;
+    d.beforeStep(w);
+    EXPECT_TRUE(w.recordingCollisions());
+    EXPECT_EQ(w.collisionLog()->chosen(), std::vector<ParticleId>{a});
+}
+
+}  // namespace
+}  // namespace psb::app
