@@ -92,7 +92,8 @@ void saveScene(const Scene& scene, const std::filesystem::path& path);
 [[nodiscard]] World makeWorld(const Scene& scene);
 
 /// A scene describing the world's current state: its box, laws, solver settings, particles
-/// in storage order and droppers (a held particle is saved as a free one), with the frame
+/// in number order (particleNumber: the scene opens with the numbers they had, less the gaps
+/// of removed ones) and droppers (a held particle is saved as a free one), with the frame
 /// length `dt` the world is stepped by (the world does not know it). Sets allowOverlaps when
 /// some particles overlap, so that the snapshot always loads back.
 [[nodiscard]] Scene sceneFromWorld(const World& world, double dt, std::string name = {},

@@ -271,6 +271,7 @@ void App::render() {
     if (options_.logControls) logControls();
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
+    stats_.labelsOffWindow = drawn.labelsOffWindow;
     if (session_->takeScreenshotRequest()) writeScreenshot(drawn);
     sdl_->setTitle(lastFrame_.title);
     sdl_->present();

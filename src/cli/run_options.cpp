@@ -72,7 +72,7 @@ std::int64_t parseInteger(const std::string& text, const std::string& option, st
 
 std::vector<std::uint32_t> parseTrackList(const std::string& text) {
     std::vector<std::uint32_t> ids;
-    if (text.empty()) throw UsageError("--track: needs particle numbers, e.g. --track 0,3");
+    if (text.empty()) throw UsageError("--track: needs particle numbers, e.g. --track 1,4");
     std::size_t start = 0;
     for (;;) {
         const std::size_t comma = text.find(',', start);
@@ -83,7 +83,7 @@ std::vector<std::uint32_t> parseTrackList(const std::string& text) {
                              "' (particle numbers separated by commas, e.g. 0,3)");
         }
         const auto id = static_cast<std::uint32_t>(
-            parseInteger(item, "--track", 0, std::numeric_limits<std::uint32_t>::max() - 1));
+            parseInteger(item, "--track", 1, std::numeric_limits<std::uint32_t>::max() - 1));
         if (std::find(ids.begin(), ids.end(), id) != ids.end())
             throw UsageError("--track: particle " + item + " is listed twice");
         ids.push_back(id);

@@ -56,12 +56,12 @@ std::vector<ParticleId> trackedIds(const World& world, const std::vector<std::ui
     std::vector<ParticleId> ids;
     for (const std::uint32_t n : numbers) {
         const auto it =
-            std::find_if(live.begin(), live.end(), [n](ParticleId id) { return id.slot == n; });
+            std::find_if(live.begin(), live.end(), [n](ParticleId id) { return particleNumber(id) == n; });
         if (it == live.end()) {
             throw UsageError("--track: no particle " + std::to_string(n) + ": the scene has " +
                              std::to_string(live.size()) + " particles" +
                              (live.empty() ? std::string()
-                                           : ", numbered 0 to " + std::to_string(live.size() - 1)));
+                                           : ", numbered 1 to " + std::to_string(live.size())));
         }
         ids.push_back(*it);
     }

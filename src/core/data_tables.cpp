@@ -17,7 +17,7 @@ std::string valuesTable(const World& world, Separator separator) {
     for (const ParticleId id : ids) {
         const Particle p = world.get(id);
         const Vec2 momentum = p.mass * p.velocity;
-        t.count(id.slot)
+        t.count(particleNumber(id))
             .number(p.position.x())
             .number(p.position.y())
             .number(p.velocity.x())
@@ -68,7 +68,7 @@ std::string trajectoryTable(const Trajectory& trajectory, Separator separator) {
     Table t(separator, {"time_s", "particle", "x_m", "y_m", "vx_m_per_s", "vy_m_per_s"});
     for (const TrajectoryPoint& s : trajectory.samples()) {
         t.time(s.time)
-            .count(s.id.slot)
+            .count(particleNumber(s.id))
             .number(s.position.x())
             .number(s.position.y())
             .number(s.velocity.x())
@@ -99,10 +99,10 @@ std::string collisionTable(const std::vector<Collision>& collisions, Separator s
              "other_vy_before_m_per_s", "other_vx_after_m_per_s", "other_vy_after_m_per_s",
              "impulse_x_N_s", "impulse_y_N_s"});
     for (const Collision& c : collisions) {
-        t.time(c.time).count(c.a.slot);
+        t.time(c.time).count(particleNumber(c.a));
         switch (c.with) {
             case Collision::With::Particle:
-                t.text("particle").count(c.b.slot);
+                t.text("particle").count(particleNumber(c.b));
                 break;
             case Collision::With::Wall:
                 t.text("wall").text(wallName(c.wall()));

@@ -1,10 +1,14 @@
 #include <particle_sandbox/detail/id_table.hpp>
 
+#include <algorithm>
+#include <functional>
+
 namespace psb::detail {
 
 ParticleId IdTable::allocate(std::uint32_t index) {
     std::uint32_t slot;
     if (!freeSlots_.empty()) {
+        std::pop_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>{});
         slot = freeSlots_.back();
         freeSlots_.pop_back();
     } else {
@@ -20,6 +24,7 @@ void IdTable::release(ParticleId id) {
     index_[id.slot] = kFree;
     ++generation_[id.slot];  // every id handed out for this slot so far is now stale
     freeSlots_.push_back(id.slot);
+    std::push_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>{});
 }
 
 void IdTable::relocate(ParticleId id, std::uint32_t index) {
@@ -42,6 +47,7 @@ void IdTable::clear() {
         index_[s] = kFree;
         freeSlots_.push_back(s);
     }
+    std::make_heap(freeSlots_.begin(), freeSlots_.end(), std::greater<>{});
 }
 
 void IdTable::reserve(std::size_t slots) {

@@ -2,6 +2,10 @@
 
 #include <particle_sandbox/scene.hpp>
 
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
 #include "overlap_check.hpp"
 #include "validate.hpp"
 
@@ -26,8 +30,14 @@ Scene sceneFromWorld(const World& world, double dt, std::string name, std::strin
     s.dt = dt;
     s.droppers = world.droppers();
     const ParticleArrays& p = world.particles();
+    // In number order (particleNumber), so that the scene opens with the particles numbered as
+    // they were, the gaps left by removed ones closed.
+    std::vector<std::size_t> order(p.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(),
+              [&p](std::size_t a, std::size_t b) { return p.id[a].slot < p.id[b].slot; });
     s.particles.reserve(p.size());
-    for (std::size_t i = 0; i < p.size(); ++i) {
+    for (const std::size_t i : order) {
         ParticleDef d;
         d.position = {p.x[i], p.y[i]};
         d.velocity = {p.vx[i], p.vy[i]};

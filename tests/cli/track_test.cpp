@@ -66,7 +66,7 @@ class Track : public ::testing::Test {
 TEST_F(Track, WritesEachChosenParticleAtEachTimeSeriesRow) {
     const fs::path ts = dir_ / "run.csv";
     ASSERT_EQ(run({"--duration", "1", "--timeseries", ts.string(), "--timeseries-every", "25",
-                   "--track", "1,0"}),
+                   "--track", "2,1"}),
               kExitOk)
         << err_.str();
     EXPECT_EQ(trackPath(ts), dir_ / "run-track.csv");
@@ -74,37 +74,37 @@ TEST_F(Track, WritesEachChosenParticleAtEachTimeSeriesRow) {
     ASSERT_EQ(rows.size(), 1u + 5u * 2u) << "t = 0, 0.25, 0.5, 0.75, 1 for two particles";
     EXPECT_EQ(rows[0], (std::vector<std::string>{"time_s", "particle", "x_m", "y_m", "vx_m_per_s",
                                                  "vy_m_per_s"}));
-    EXPECT_EQ(rows[1], (std::vector<std::string>{"0", "1", "6", "5", "-1", "0"}));
-    EXPECT_EQ(rows[2], (std::vector<std::string>{"0", "0", "3", "5", "2", "0"}));
+    EXPECT_EQ(rows[1], (std::vector<std::string>{"0", "2", "6", "5", "-1", "0"}));
+    EXPECT_EQ(rows[2], (std::vector<std::string>{"0", "1", "3", "5", "2", "0"}));
     EXPECT_EQ(rows[3][0], "0.25") << "a clean time, not 0.25000000000000006";
     // After the collision (t = 2/3 s): the textbook velocities, -2.5 and +0.5 m/s.
     EXPECT_EQ(rows[9][0], "1");
-    EXPECT_NEAR(std::stod(rows[9][4]), 0.5, 1e-12);    // particle 1
-    EXPECT_NEAR(std::stod(rows[10][4]), -2.5, 1e-12);  // particle 0
+    EXPECT_NEAR(std::stod(rows[9][4]), 0.5, 1e-12);    // particle 2
+    EXPECT_NEAR(std::stod(rows[10][4]), -2.5, 1e-12);  // particle 1
     // The time series has its rows at the same instants.
     EXPECT_EQ(read(ts).size(), 6u);
 }
 
 TEST_F(Track, BadListsAreRefusedNamingWhatIsWrong) {
     const std::string ts = (dir_ / "run.csv").string();
-    EXPECT_EQ(run({"--duration", "1", "--timeseries", ts, "--track", "0,7"}), kExitUsage);
-    EXPECT_NE(err_.str().find("--track: no particle 7: the scene has 2 particles, numbered 0 to 1"),
+    EXPECT_EQ(run({"--duration", "1", "--timeseries", ts, "--track", "1,7"}), kExitUsage);
+    EXPECT_NE(err_.str().find("--track: no particle 7: the scene has 2 particles, numbered 1 to 2"),
               std::string::npos)
         << err_.str();
     EXPECT_FALSE(fs::exists(dir_ / "run.csv")) << "refused before any file is written";
-    EXPECT_EQ(run({"--duration", "1", "--track", "0"}), kExitUsage);
+    EXPECT_EQ(run({"--duration", "1", "--track", "1"}), kExitUsage);
     EXPECT_NE(err_.str().find("--track: needs --timeseries PATH"), std::string::npos);
-    EXPECT_EQ(run({"--duration", "1", "--timeseries", ts, "--track", "0,0"}), kExitUsage);
-    EXPECT_NE(err_.str().find("--track: particle 0 is listed twice"), std::string::npos);
+    EXPECT_EQ(run({"--duration", "1", "--timeseries", ts, "--track", "1,1"}), kExitUsage);
+    EXPECT_NE(err_.str().find("--track: particle 1 is listed twice"), std::string::npos);
     EXPECT_EQ(run({"--duration", "1", "--timeseries", ts, "--track", "a"}), kExitUsage);
     EXPECT_NE(err_.str().find("--track: expected an integer, got 'a'"), std::string::npos);
 }
 
 TEST(TrackList, ParsesNumbersAndRefusesEverythingElse) {
-    EXPECT_EQ(parseTrackList("0"), (std::vector<std::uint32_t>{0}));
+    EXPECT_EQ(parseTrackList("1"), (std::vector<std::uint32_t>{1}));
     EXPECT_EQ(parseTrackList("5,2,17"), (std::vector<std::uint32_t>{5, 2, 17}));
     // Every malformed list is a UsageError with a message, never a crash or a silent skip.
-    for (const char* bad : {"", ",", "1,", ",1", "1,,2", "-1", "1.5", "x", "1 ,2", "1e3",
+    for (const char* bad : {"", ",", "0", "1,", ",1", "1,,2", "-1", "1.5", "x", "1 ,2", "1e3",
                             "99999999999999999999", "4294967295", "0x10", "+", "3,3"}) {
         try {
             (void)parseTrackList(bad);

@@ -50,8 +50,8 @@ TEST(ValuesTable, EveryParticleWithSignedComponentsAndUnits) {
                                                  "vy_m_per_s", "px_kg_m_per_s", "py_kg_m_per_s",
                                                  "kinetic_energy_J", "mass_kg", "radius_m"}));
     EXPECT_EQ(rows[1],
-              (std::vector<std::string>{"0", "3", "5", "2", "0", "2", "0", "2", "1", "0.5"}));
-    EXPECT_EQ(rows[2], (std::vector<std::string>{"1", "6", "5", "-1", "0.5", "-3", "1.5", "1.875",
+              (std::vector<std::string>{"1", "3", "5", "2", "0", "2", "0", "2", "1", "0.5"}));
+    EXPECT_EQ(rows[2], (std::vector<std::string>{"2", "6", "5", "-1", "0.5", "-3", "1.5", "1.875",
                                                  "3", "0.5"}));
 }
 
@@ -93,8 +93,8 @@ TEST(TrajectoryTable, RowsPerParticlePerInstant) {
     ASSERT_EQ(rows.size(), 5u);
     EXPECT_EQ(rows[0], (std::vector<std::string>{"time_s", "particle", "x_m", "y_m", "vx_m_per_s",
                                                  "vy_m_per_s"}));
-    EXPECT_EQ(rows[1], (std::vector<std::string>{"0", "1", "6", "5", "-1", "0.5"}));
-    EXPECT_EQ(rows[4], (std::vector<std::string>{"0.25", "0", "3.5", "5", "2", "0"}));
+    EXPECT_EQ(rows[1], (std::vector<std::string>{"0", "2", "6", "5", "-1", "0.5"}));
+    EXPECT_EQ(rows[4], (std::vector<std::string>{"0.25", "1", "3.5", "5", "2", "0"}));
 }
 
 TEST(Trajectory, FollowsTheWorldBackInTimeAndStopsWhenFull) {

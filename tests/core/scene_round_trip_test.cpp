@@ -116,6 +116,24 @@ TEST(SceneRoundTrip, ARunningWorldSavedAndLoadedContinuesExactlyAsIfUninterrupte
     }
 }
 
+TEST(SceneRoundTrip, ASavedWorldListsItsParticlesInNumberOrder) {
+    // Particles 1..5 with mass k kg; 2 removed (the last one moves into its place in storage):
+    // the scene lists 1, 3, 4, 5, which open as 1..4 in that order.
+    World w;
+    std::vector<ParticleId> ids;
+    for (int k = 1; k <= 5; ++k)
+        ids.push_back(w.add({.position = {10.0 * k, 5.0}, .mass = double(k)}));
+    w.remove(ids[1]);
+    const Scene s = sceneFromWorld(w, Scene{}.dt);
+    ASSERT_EQ(s.particles.size(), 4u);
+    const double masses[] = {1.0, 3.0, 4.0, 5.0};
+    for (std::size_t i = 0; i < 4; ++i)
+        EXPECT_EQ(s.particles[i].mass, masses[i]) << i;
+    const World reopened = makeWorld(s);
+    EXPECT_EQ(reopened.get(reopened.ids()[3]).mass, 5.0);
+    EXPECT_EQ(particleNumber(reopened.ids()[3]), 4u);
+}
+
 TEST(SceneRoundTrip, ASnapshotWithOverlapsIsMarkedSoThatItLoads) {
     World w;
     w.add({.position = {100.0, 100.0}, .radius = 10.0});

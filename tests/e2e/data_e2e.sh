@@ -69,10 +69,10 @@ wait_log "Exported 1 row of collisions to $OUT/exports/collisions.csv"
 C="$OUT/exports/collisions.csv"
 head -1 "$C" | grep -q '^time_s,particle,with,other,vx_before_m_per_s,vy_before_m_per_s,vx_after_m_per_s,vy_after_m_per_s,other_vx_before_m_per_s,other_vy_before_m_per_s,other_vx_after_m_per_s,other_vy_after_m_per_s,impulse_x_N_s,impulse_y_N_s$' ||
     fail "collisions.csv header: $(head -1 "$C")"
-# Seen from the 1 kg ball (particle 0), whichever the row names first.
+# Seen from the 1 kg ball (particle 1), whichever the row names first.
 awk -F, 'NR == 2 {
     if ($3 != "particle") exit 1
-    if ($2 == 0) { u = $5; v = $7; ou = $9; ov = $11; j = $13 } else { u = $9; v = $11; ou = $5; ov = $7; j = -$13 }
+    if ($2 == 1) { u = $5; v = $7; ou = $9; ov = $11; j = $13 } else { u = $9; v = $11; ou = $5; ov = $7; j = -$13 }
     ok = (u == 2 && v == -2.5 && ou == -1 && ov == 0.5 && j == -4.5 && $1 > 0.666 && $1 < 0.668)
     exit !ok }' "$C" || fail "the collision is not the textbook one: $(sed -n 2p "$C")"
 pass "collisions.csv: $(sed -n 2p "$C")"
@@ -82,9 +82,9 @@ click "Export trajectories"
 wait_log "Exported [0-9]+ rows of trajectories to $OUT/exports/trajectories.csv"
 T="$OUT/exports/trajectories.csv"
 head -1 "$T" | grep -q '^time_s,particle,x_m,y_m,vx_m_per_s,vy_m_per_s$' || fail "trajectories.csv header: $(head -1 "$T")"
-sed -n 2,3p "$T" | tr '\n' ' ' | grep -q '^0,0,3,5,2,0 0,1,6,5,-1,0 $' || fail "the first rows: $(sed -n 2,3p "$T")"
-awk -F, 'NR > 1 { if ($1 < last) exit 1; last = $1; if ($1 > 1 && $2 == 0 && $5 != -2.5) exit 1 }' "$T" ||
-    fail "times out of order, or particle 0 not at -2.5 m/s after the collision"
+sed -n 2,3p "$T" | tr '\n' ' ' | grep -q '^0,1,3,5,2,0 0,2,6,5,-1,0 $' || fail "the first rows: $(sed -n 2,3p "$T")"
+awk -F, 'NR > 1 { if ($1 < last) exit 1; last = $1; if ($1 > 1 && $2 == 1 && $5 != -2.5) exit 1 }' "$T" ||
+    fail "times out of order, or particle 1 not at -2.5 m/s after the collision"
 pass "trajectories.csv: $(($(wc -l <"$T") - 1)) rows up to t = $(tail -1 "$T" | cut -d, -f1) s"
 
 # --- 5. a typed name -----------------------------------------------------------------------------

@@ -6,7 +6,9 @@
 #
 #   1. opens preset 09 (paused)            -> the bins panel is there, on by default: 0 landed,
 #                                             1000 still to drop, "too few balls yet"; the
-#                                             dropper's spout is drawn, "dropper: 1000 balls left"
+#                                             dropper's spout is drawn, "dropper: 1000 balls left";
+#                                             the 9 counted bins of the 15 channels are marked
+#                                             on the board in the bars' orange
 #   2. Space, a few seconds, F12 (again    -> balls have landed: the counts add up to the
 #      until ten have landed)
 #                                             number the legend says, landed + not yet in the
@@ -41,7 +43,8 @@ wait_log "Preset 9 of"
 snap 1-opened
 box=$(rect 1-opened bins)
 [[ -n "$box" ]] || fail "no bins panel on opening the Galton board: $(cat "$OUT/1-opened.txt")"
-section 1-opened Bins | grep -q "^bars: balls in each bin (0 landed, 1000 still to drop)$" ||
+section 1-opened Bins |
+    grep -q "^bars: balls in bins 0 to 8, marked on the board (0 landed, 1000 still to drop)$" ||
     fail "legend before the run: $(section 1-opened Bins)"
 section 1-opened Bins | grep -q "^too few balls yet to compare with the curve$" ||
     fail "no 'too few' verdict before the run"
@@ -50,7 +53,12 @@ section 1-opened Droppers | grep -q "^dropper: 1000 balls left$" ||
 # The spout's colour (150 165 185) on the board.
 spout=$(convert "$OUT/1-opened.png" -depth 8 txt:- | grep -c "#96A5B9" || true)
 [[ "$spout" -gt 30 ]] || fail "only $spout spout-coloured pixels: no dropper drawn"
-pass "opened: bins panel at $box, $(section 1-opened Bins | head -1), spout $spout pixels"
+# The nine bins counted of the fifteen channels, marked on the board in the bars' colour (no
+# ball is on the board yet, and the balls share that colour).
+read -r bx by bw bh < <(rect 1-opened box)
+marks=$(bars_in "$OUT/1-opened.png" "$bx $by $bw $bh")
+[[ "$marks" -gt 1000 ]] || fail "only $marks bar-coloured pixels on the board: the bins are not marked"
+pass "opened: bins panel at $box, $(section 1-opened Bins | head -1), spout $spout pixels, bins marked ($marks pixels)"
 
 # --- 2. run it ----------------------------------------------------------------------------------
 # Until balls have landed (a loaded machine steps the thousand balls slower than real time),
@@ -61,7 +69,7 @@ for ((look = 1; look <= 8; look++)); do
     key space
     snap 2-running
     legend=$(section 2-running Bins)
-    landed=$(sed -nE 's/^bars: balls in each bin \(([0-9]+) landed.*/\1/p' <<<"$legend")
+    landed=$(sed -nE 's/^bars: balls in bins [0-9]+ to [0-9]+, marked on the board \(([0-9]+) landed.*/\1/p' <<<"$legend")
     [[ -n "$landed" && "$landed" -ge 10 ]] && break
 done
 [[ -n "$landed" && "$landed" -gt 0 ]] || fail "no balls landed after $((4 * look)) s: $legend"

@@ -13,7 +13,8 @@
 namespace psb::detail {
 
 /// Maps ids (slot + generation) to dense storage indices. A freed slot's generation is bumped,
-/// so stale ids are recognised; freed slots are reused last-in first-out.
+/// so stale ids are recognised; a new id takes the lowest free slot (particleNumber counts on
+/// it: a world's particles are numbered 1, 2, ... with no gap a new particle could skip).
 class IdTable {
   public:
     /// A new id pointing at dense index `index`.
@@ -31,7 +32,7 @@ class IdTable {
     static constexpr std::uint32_t kFree = UINT32_MAX;
     std::vector<std::uint32_t> index_;       ///< per slot: dense index, or kFree
     std::vector<std::uint32_t> generation_;  ///< per slot
-    std::vector<std::uint32_t> freeSlots_;
+    std::vector<std::uint32_t> freeSlots_;   ///< a min-heap: the lowest free slot first
 };
 
 }  // namespace psb::detail

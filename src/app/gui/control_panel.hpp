@@ -26,6 +26,7 @@
 // widgets.hpp holds the small widgets they share.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,6 +95,8 @@ class ControlPanel {
     void data(const Session& s);
     void engine(const Session& s, const FrameStats& stats);
     void selected(const Session& s);
+    /// The Selected particle section's content (section_particles.cpp).
+    void selectedValues(const Session& s, const std::optional<Particle>& p);
     void allParticles(const Session& s);
     void launchPreview(const Session& s, float pixelRatio);
 
@@ -114,6 +117,9 @@ class ControlPanel {
     /// The Data section: the file name typed for Export, steps between trajectory samples.
     std::array<char, 512> exportName_{};
     int recordEvery_ = 0;
+    /// The particle the Selected particle section last showed: a new selection scrolls the
+    /// panel to the section once (it is below the fold of an 800-pixel window).
+    ParticleId shownSelection_;
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 6> fieldText_{};
     std::array<bool, 6> fieldActive_{};

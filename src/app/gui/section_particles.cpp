@@ -1,8 +1,10 @@
 // The control panel's particle tables: the selected particle's values, editable in place, and
 // a table of every particle for small scenes (PhET's "more data").
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <imgui.h>
 
@@ -50,16 +52,31 @@ double fieldValue(const Particle& p, ParticleField f) {
 }  // namespace
 
 void ControlPanel::selected(const Session& s) {
+    const auto p = s.selected();
+    // A new selection opens the section and brings it into view, once: the user may scroll
+    // away from it after.
+    const bool newSelection = p && p->id != shownSelection_;
+    shownSelection_ = p ? p->id : kNullParticle;
+    if (newSelection) ImGui::SetNextItemOpen(true);
+    const float top = ImGui::GetCursorPosY();
     const bool open = ImGui::CollapsingHeader("Selected particle", ImGuiTreeNodeFlags_DefaultOpen);
     mark("section Selected particle");
-    if (!open) return;
-    const auto p = s.selected();
+    if (open) selectedValues(s, p);
+    if (newSelection) {
+        const float bottom = ImGui::GetCursorPosY(), scroll = ImGui::GetScrollY();
+        const float shown = ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y;
+        if (top < scroll || bottom > scroll + shown)
+            ImGui::SetScrollY(std::min(top, bottom - shown));
+    }
+}
+
+void ControlPanel::selectedValues(const Session& s, const std::optional<Particle>& p) {
     if (!p) {
         ImGui::TextDisabled("Click a particle (or a row below) to see its values");
         fieldActive_.fill(false);
         return;
     }
-    ImGui::Text("Particle %u", p->id.slot);
+    ImGui::Text("Particle %llu", static_cast<unsigned long long>(particleNumber(p->id)));
     ImGui::SameLine();
     if (ImGui::SmallButton("deselect")) out_.emplace_back(cmd::Select{kNullParticle});
     mark("deselect");
@@ -127,12 +144,17 @@ void ControlPanel::allParticles(const Session& s) {
     ImGui::TableSetupColumn("r (m)");
     ImGui::TableHeadersRow();
     const auto selectedId = s.selection().id();
-    for (const ParticleId id : w.ids()) {
+    // By number (particleNumber), as the labels and the Selected section name them.
+    std::vector<ParticleId> ids = w.ids();
+    std::sort(ids.begin(), ids.end(),
+              [](ParticleId a, ParticleId b) { return particleNumber(a) < particleNumber(b); });
+    for (const ParticleId id : ids) {
         const Particle p = w.get(id);
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         char label[32];
-        std::snprintf(label, sizeof label, "%u", id.slot);
+        std::snprintf(label, sizeof label, "%llu",
+                      static_cast<unsigned long long>(particleNumber(id)));
         if (ImGui::Selectable(label, selectedId && *selectedId == id,
                               ImGuiSelectableFlags_SpanAllColumns)) {
             out_.emplace_back(cmd::Select{id});

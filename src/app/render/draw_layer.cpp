@@ -33,6 +33,7 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     }
     const DrawStats stats = renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_,
                                            frame.trailParticle, &avoid);
+    if (frame.bins) binMarks_.draw(sdl_, labelFont_, camera, frame.bins->bins, world.def().height);
     for (const DropperView& d : frame.droppers)
         drawDropper(camera, d);
     if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);

@@ -1,11 +1,12 @@
 #pragma once
 // The drawing layer: the only code that calls SDL's drawing functions. It draws a FrameView,
-// in this order: the world (walls, trails, discs, arrows, labels; renderer.hpp), the selection
-// ring, the selected obstacle and the obstacle tool's preview, the analysis overlays
-// (analysis_overlays.hpp), the launch preview, the marker of an off-screen box, then the text
-// panels (overlay_drawing.hpp). The files it calls (renderer, text, overlay_drawing,
-// analysis_overlays, momentum_drawing, plot_chart, speed_chart, bin_chart, selection_outline,
-// geometry_batch) are its parts and are called from nowhere else.
+// in this order: the world (walls, trails, discs, arrows, labels; renderer.hpp), the bins the
+// scene counts marked on the board (bin_marks.hpp), the droppers, the selection ring, the selected
+// obstacle and the obstacle tool's preview, the analysis overlays (analysis_overlays.hpp), the
+// launch preview, the marker of an off-screen box, then the text panels (overlay_drawing.hpp). The
+// files it calls (renderer, text, overlay_drawing, analysis_overlays, momentum_drawing, plot_chart,
+// speed_chart, bin_chart, selection_outline, geometry_batch) are its parts and are called from
+// nowhere else.
 //
 // It keeps what drawing caches between frames: the circle texture, the glyph atlases (in the
 // fonts), the trails' history and raster, the plots' buffers.
@@ -15,6 +16,7 @@
 #include <SDL.h>
 
 #include "render/analysis_overlays.hpp"
+#include "render/bin_marks.hpp"
 #include "render/renderer.hpp"
 #include "render/trails.hpp"
 #include "view/frame_view.hpp"
@@ -43,6 +45,7 @@ class DrawLayer {
     const Font& labelFont_;
     Renderer renderer_;
     AnalysisOverlays analysis_;
+    BinMarks binMarks_;
     Trails trails_;
     std::uint64_t trailsGeneration_ = 0;
     GeometryBatch text_;

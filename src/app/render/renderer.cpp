@@ -274,11 +274,16 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     if (SDL_HasIntersection(&r, &o)) return true;
                 return false;
             };
-            // Preferences, dropped one by one until a place is found: clear of every disc,
-            // clear of the walls.
-            bool avoidDiscs = true, avoidWalls = true;
+            // Preferences, dropped one by one until a place is found: clear of every disc and
+            // in the box with its disc, clear of the walls.
+            bool avoidDiscs = true, avoidWalls = true, keepInBox = false;
+            const auto inWindow = [&](const SDL_Rect& r) {
+                return r.x >= 0 && r.y >= 0 && r.x + r.w <= w && r.y + r.h <= h;
+            };
             const auto free = [&](const SDL_Rect& r) {
+                if (!inWindow(r)) return false;
                 if (avoidWalls && crossesWalls(r)) return false;
+                if (keepInBox && !SDL_HasIntersection(&r, &walls)) return false;
                 for (const SDL_Rect& o : placed)
                     if (SDL_HasIntersection(&r, &o)) return false;
                 if (avoidDiscs && onDiscs(r)) return false;
@@ -286,32 +291,48 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     for (const SDL_Rect& o : *avoid)
                         if (SDL_HasIntersection(&r, &o)) return false;
                 }
-                return r.x >= 0 && r.y >= 0 && r.x + r.w <= w && r.y + r.h <= h;
+                return true;
             };
-            char lines[4][64];
+            // `at` moved along an edge of `room` to keep a size `size` inside it, if it can.
+            const auto along = [](int at, int size, int lo, int hi) {
+                return std::max(lo, std::min(at, hi - size));
+            };
+            char lines[5][64];
             for (std::size_t i : visible) {
                 const double vx = p.vx[i], vy = p.vy[i], m = p.mass[i];
-                std::snprintf(lines[0], sizeof lines[0], "x velocity: %.2f m/s", vx);
-                std::snprintf(lines[1], sizeof lines[1], "y velocity: %.2f m/s", vy);
-                std::snprintf(lines[2], sizeof lines[2], "momentum: %s",
+                // The number the panel and the log name it by (particleNumber).
+                std::snprintf(lines[0], sizeof lines[0], "particle %llu",
+                              static_cast<unsigned long long>(particleNumber(p.id[i])));
+                std::snprintf(lines[1], sizeof lines[1], "x velocity: %.2f m/s", vx);
+                std::snprintf(lines[2], sizeof lines[2], "y velocity: %.2f m/s", vy);
+                std::snprintf(lines[3], sizeof lines[3], "momentum: %s",
                               quantity(m * std::hypot(vx, vy), "kg m/s", false).c_str());
-                std::snprintf(lines[3], sizeof lines[3], "mass: %s",
+                std::snprintf(lines[4], sizeof lines[4], "mass: %s",
                               quantity(m, "kg", false).c_str());
                 int width = 0;
                 for (const auto& l : lines)
                     width = std::max(width, labelFont_->measure(l));
                 // A box of fixed pixel size at every zoom, at whole pixels, 2 px clear of the
-                // disc: above it, else below, right, left.
+                // disc: above it, else below, right, left; each slid along the disc's side to
+                // stay in the window, and in the box for a disc inside it (a disc near an edge
+                // has its label beside it, not cut by the edge or left out).
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
                 const int cx = static_cast<int>(std::lround(c.x()));
                 const int cy = static_cast<int>(std::lround(c.y()));
                 const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + 2;
-                const int bw = width + 4, bh = 4 * lh + 1;
-                const SDL_Rect candidates[4] = {{cx - bw / 2, cy - r - bh, bw, bh},
-                                                {cx - bw / 2, cy + r, bw, bh},
-                                                {cx + r, cy - bh / 2, bw, bh},
-                                                {cx - r - bw, cy - bh / 2, bw, bh}};
-                // First a place clear of every disc and the walls, else one clear of the walls,
+                const int bw = width + 4, bh = 5 * lh + 1;
+                const bool inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
+                                   p.x[i] <= world.def().width && p.y[i] <= world.def().height;
+                SDL_Rect room{0, 0, static_cast<int>(w), static_cast<int>(h)};
+                if (inBox) SDL_IntersectRect(&walls, &room, &room);
+                const int across = along(cx - bw / 2, bw, room.x, room.x + room.w);
+                const int down = along(cy - bh / 2, bh, room.y, room.y + room.h);
+                const SDL_Rect candidates[4] = {{across, cy - r - bh, bw, bh},
+                                                {across, cy + r, bw, bh},
+                                                {cx + r, down, bw, bh},
+                                                {cx - r - bw, down, bw, bh}};
+                // First a place clear of every disc and the walls (inside the box, for a disc in
+                // it), else one clear of the walls,
                 // else one clear of labels and panels only. A label over other discs gets no
                 // background, which would darken them, only a dark outline that keeps its
                 // text readable.
@@ -319,6 +340,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 for (const int level : {0, 1, 2}) {
                     avoidDiscs = level == 0;
                     avoidWalls = level <= 1;
+                    keepInBox = level == 0 && inBox;
                     for (const SDL_Rect& cand : candidates) {
                         if (free(cand)) {
                             box = &cand;
@@ -328,7 +350,11 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     if (box != nullptr) break;
                 }
                 if (box == nullptr) {
-                    ++stats.labelsCrowded;
+                    // Say why: other labels or panels in the way, or no side of the disc
+                    // inside the window at all.
+                    const bool anyInWindow =
+                        std::any_of(std::begin(candidates), std::end(candidates), inWindow);
+                    ++(anyInWindow ? stats.labelsCrowded : stats.labelsOffWindow);
                     continue;
                 }
                 placed.push_back(*box);
@@ -338,7 +364,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                                      static_cast<float>(box->x + box->w),
                                      static_cast<float>(box->y + box->h), SDL_Color{0, 0, 0, 150});
                 }
-                for (int k = 0; k < 4; ++k) {
+                for (int k = 0; k < 5; ++k) {
                     const float x = static_cast<float>(box->x + 2);
                     const float y = static_cast<float>(box->y + 1 + k * lh);
                     if (overDiscs) {

@@ -36,6 +36,9 @@ struct DrawStats {
     std::size_t drawn = 0;          ///< particles inside the viewport
     std::size_t labelled = 0;       ///< particles that got labels
     std::size_t labelsCrowded = 0;  ///< particles whose label found no free place
+    /// Particles whose label has no side inside the window at all (a disc nearly the window's
+    /// size): left out for want of room in the window, not for other labels.
+    std::size_t labelsOffWindow = 0;
     bool labelsSuppressed = false;  ///< too many particles on screen for labels
 };
 
@@ -56,7 +59,8 @@ class Renderer {
     /// step of gravity gives it rests, and has no arrow (restingSpeed). When `trails` is given
     /// they are drawn under the discs as options.trails says, `selected` naming the particle of
     /// TrailMode::Selected. Labels go at whole pixels (glyphs drawn at fractions of a pixel are
-    /// resampled into garble), above, below, right or left of their disc, wherever they overlap
+    /// resampled into garble), above, below, right or left of their disc (slid along that side
+    /// to stay in the window, and in the box for a disc inside it), wherever they overlap
     /// neither another label nor a rectangle of `avoid`; a label with no such place is left out.
     DrawStats draw(const World& world, double frame, const Camera& camera,
                    const ViewOptions& options, Trails* trails = nullptr,

@@ -60,7 +60,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     }
     if (frame.view.labels) {
         out += "Labels: " + std::to_string(drawn.labelled) + " drawn, " +
-               std::to_string(drawn.labelsCrowded) + " left out" +
+               std::to_string(drawn.labelsCrowded + drawn.labelsOffWindow) + " left out" +
                (drawn.labelsSuppressed ? " (too many particles on screen)" : "") + "\n";
     }
     out += "Layout:\n";

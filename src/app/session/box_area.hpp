@@ -30,6 +30,10 @@ struct WindowLayout {
     BoxArea controlsFoldedColumn;
     /// Pages the help takes in this window (H turns them, and closes the help after the last).
     int helpPages = 1;
+    /// The open control panel leaves the box a usable width beside it. When not, a window made
+    /// this narrow folds the panel; opened all the same, it lies over the box, which keeps the
+    /// folded panel's area (controlsOpen is then controlsFolded).
+    bool controlsFit = true;
 
     /// The area for the panels in this state.
     [[nodiscard]] const BoxArea& area(bool controlsShown, bool columnAsked) const {

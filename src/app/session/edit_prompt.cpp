@@ -267,9 +267,10 @@ EditResult setChecked(World& world, ParticleId id, double mass, double radius, c
     }
     char buf[200];
     std::snprintf(buf, sizeof buf,
-                  "Edited particle %u: mass %s kg, radius %s m, velocity [%s, %s] m/s", id.slot,
-                  formatValue(mass).c_str(), formatValue(radius).c_str(),
-                  formatValue(velocity.x()).c_str(), formatValue(velocity.y()).c_str());
+                  "Edited particle %llu: mass %s kg, radius %s m, velocity [%s, %s] m/s",
+                  static_cast<unsigned long long>(particleNumber(id)), formatValue(mass).c_str(),
+                  formatValue(radius).c_str(), formatValue(velocity.x()).c_str(),
+                  formatValue(velocity.y()).c_str());
     std::string message = buf;
     if (position != wanted) {
         std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",

@@ -157,6 +157,11 @@ class Interaction {
 
     [[nodiscard]] Mode mode() const { return mode_; }
     [[nodiscard]] ParticleId held() const { return held_; }
+    /// The pointer went further from the press than a click may (`launch.minDistance`): the
+    /// press is a drag.
+    [[nodiscard]] bool dragged(const LaunchSettings& launch) const {
+        return mode_ != Mode::Idle && travel_ >= launch.minDistance;
+    }
     /// Where the current press happened, metres.
     [[nodiscard]] const Vec2& pressPoint() const { return pressPoint_; }
     /// The latest pointer position, metres.

@@ -13,10 +13,10 @@ bool Selection::forgetIfGone(const World& world) {
 std::string selectionLogLine(const Particle& p) {
     char buf[256];
     std::snprintf(buf, sizeof buf,
-                  "[I] Selected particle %u at [%.2f, %.2f] m with velocity [%.2f, %.2f] m/s, "
+                  "[I] Selected particle %llu at [%.2f, %.2f] m with velocity [%.2f, %.2f] m/s, "
                   "mass %.4g kg, radius %.4g m",
-                  p.id.slot, p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y(), p.mass,
-                  p.radius);
+                  static_cast<unsigned long long>(particleNumber(p.id)), p.position.x(),
+                  p.position.y(), p.velocity.x(), p.velocity.y(), p.mass, p.radius);
     return buf;
 }
 

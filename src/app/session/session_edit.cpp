@@ -26,7 +26,7 @@ void Session::handle(const cmd::OpenEdit&) {
         return;
     }
     tools_.prompt.open(doc_.world.get(*id));
-    log("Editing particle " + std::to_string(id->slot));
+    log("Editing particle " + std::to_string(particleNumber(*id)));
 }
 
 void Session::handle(const cmd::EditType& c) {

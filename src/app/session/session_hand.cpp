@@ -30,6 +30,7 @@ void Session::handle(const cmd::PointerDown& c) {
     World& world = doc_.world;
     const auto grabbed =
         tools_.hand.press(world, pointerWorld(), c.time, tools_.tool == cmd::Tool::Fling);
+    tools_.pausedFlingTold = false;
     if (grabbed) {
         world.setKinematic(*grabbed, true);  // the hand moves it, not the steps
         const Particle p = world.get(*grabbed);
@@ -50,6 +51,16 @@ void Session::handle(const cmd::PointerMove& c) {
     tools_.pointerTime = c.time;
     tools_.obstacle.moveTo(pointerWorld());
     tools_.hand.moveTo(pointerWorld(), c.time);
+    // Paused, a flung particle stays where it is let go until time runs: its speed is kept for
+    // then, which the drag says (the particle would seem to have been dropped at rest).
+    if (clock_.paused && !tools_.pausedFlingTold &&
+        tools_.hand.mode() == Interaction::Mode::Holding && tools_.hand.dragged(launchSettings())) {
+        tools_.pausedFlingTold = true;
+        notices_.push_back({Notice::Level::Info,
+                            "Paused: let go and the particle keeps its speed (its arrow) until "
+                            "Space sets time running",
+                            true, false});
+    }
 }
 
 void Session::handle(const cmd::PointerUp& c) {
@@ -84,6 +95,11 @@ void Session::handle(const cmd::PointerUp& c) {
     const std::string at = fmt("at [%.2f, %.2f]", r.position.x(), r.position.y());
     const std::string v = fmt("with velocity [%.2f, %.2f] m/s", r.velocity.x(), r.velocity.y());
     if (r.kind == K::Flung) log("Released particle " + at + " " + v);
+    if (r.kind == K::Flung && clock_.paused) {
+        say(r.velocity.norm() > 0.0 ? fmt("Flung at %s while paused: Space sets it moving",
+                                          quantity(r.velocity.norm(), "m/s").c_str())
+                                    : std::string("Let go at rest (the hand had stopped)"));
+    }
     if (r.kind == K::Launched) log("Launched particle " + at + " " + v);
     if ((r.kind == K::Flung || r.kind == K::Launched) && r.capped) {
         say(fmt("Speed capped at %.3g m/s (%g box widths per second)", r.velocity.norm(),

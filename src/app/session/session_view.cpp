@@ -41,7 +41,15 @@ void Session::fit() {
 void Session::handle(const cmd::Resize& c) {
     const bool sized = c.width != camera_.viewportWidth() || c.height != camera_.viewportHeight();
     if (!sized && c.layout == layout_) return;
+    // A window made too narrow for the box beside the open control panel folds it (C opens it
+    // again, over the box).
+    const bool fold = showControls_ && layout_.controlsFit && !c.layout.controlsFit;
     layout_ = c.layout;
+    if (fold) {
+        showControls_ = false;
+        say("The control panel folded: the window leaves the box no room beside it (C or >> "
+            "opens it over the box)");
+    }
     // A fitted view stays fitted; a view the user moved keeps its centre where it was.
     const Vec2 centre =
         camera_.screenToWorld(Vec2(camera_.viewportWidth() / 2.0, camera_.viewportHeight() / 2.0));
@@ -112,6 +120,9 @@ void Session::handle(const cmd::SetTrails& c) {
 
 void Session::handle(const cmd::ToggleControls&) {
     showControls_ = !showControls_;
+    if (showControls_ && !layout_.controlsFit) {
+        say("The control panel covers the box in this narrow window: C or << folds it");
+    }
     if (fitted_) fit();
 }
 

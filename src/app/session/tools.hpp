@@ -33,6 +33,8 @@ struct Tools {
 
     cmd::Tool tool = cmd::Tool::Fling;  ///< what the left mouse button does
     Interaction hand;
+    /// This drag of a held particle while paused has been told that a fling keeps its speed.
+    bool pausedFlingTold = false;
     std::optional<Vec2> panFrom;  ///< the Pan tool's drag, screen pixels
     ObstacleTool obstacle;
     ObstacleSizes obstacleSizes;

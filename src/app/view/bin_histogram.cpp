@@ -43,7 +43,9 @@ BinHistogram binHistogram(const Bins& bins, const ParticleArrays& p, std::uint64
     h.bins = bins;
     h.now = measureBins(bins, p);
     const BinCounts& c = h.now.counts;
-    std::string bars = "bars: balls in each bin (" + std::to_string(c.counted()) + " landed";
+    // The board has more channels than bins: which ones count is marked on it (bin_marks.hpp).
+    std::string bars = "bars: balls in bins 0 to " + std::to_string(bins.size() - 1) +
+                       ", marked on the board (" + std::to_string(c.counted()) + " landed";
     if (c.above > 0) bars += ", " + std::to_string(c.above) + " not yet in the bins";
     if (c.outside > 0) bars += ", " + std::to_string(c.outside) + " outside the bins";
     if (stillToDrop > 0) bars += ", " + std::to_string(stillToDrop) + " still to drop";

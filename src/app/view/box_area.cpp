@@ -61,13 +61,21 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         return a;
     };
     WindowLayout l;
-    l.controlsOpen = area(controls.open, false);
+    l.controlsFit = controlsFit(width, controls);
+    // A panel opened in a window too narrow for it lies over the box, which stays where it was:
+    // squeezed into what is left, it would be a sliver, partly under the panel all the same.
+    const double open = l.controlsFit ? controls.open : controls.folded;
+    l.controlsOpen = area(open, false);
     l.controlsFolded = area(controls.folded, false);
-    l.controlsOpenColumn = area(controls.open, true);
+    l.controlsOpenColumn = area(open, true);
     l.controlsFoldedColumn = area(controls.folded, true);
     const PixelRect room = helpRoom(width, height);
     l.helpPages = static_cast<int>(helpPages(hudFont, helpLines(), {room.w, room.h}).size());
     return l;
+}
+
+bool controlsFit(int width, const ControlsWidth& controls) {
+    return width - controls.open >= kBoxMinRoom;
 }
 
 int controlsInset(const Session& session, const ControlsWidth& controls) {

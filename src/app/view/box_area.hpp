@@ -34,6 +34,10 @@ struct ControlsWidth {
 [[nodiscard]] WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
                                         const ControlsWidth& controls);
 
+/// Whether the open control panel leaves the box a usable width (kBoxMinRoom pixels) in a window
+/// `width` pixels wide: a window made narrower folds it (WindowLayout::controlsFit).
+[[nodiscard]] bool controlsFit(int width, const ControlsWidth& controls);
+
 /// Pixels at the window's left the control panel takes now: open or folded, as in `session`.
 [[nodiscard]] int controlsInset(const Session& session, const ControlsWidth& controls);
 

@@ -37,6 +37,19 @@ HudData hudData(const Session& session) {
     return hud;
 }
 
+/// Messages narrower than this beside the inspector go under it instead, pixels.
+constexpr int kMinMessageRoom = 200;
+
+/// The inspector's `lines` with the long ones wrapped at the width of the others (a refusal's
+/// reason), and never wider than `room`.
+std::vector<std::string> inspectorPanel(const TextMeasure& font, std::vector<std::string> lines,
+                                        int room) {
+    int width = 0;
+    for (const std::string& l : lines)
+        if (l.rfind("Refused: ", 0) != 0) width = std::max(width, font.measure(l));
+    return wrapLines(font, lines, std::min(width + 8, room - 2 * kPanelMargin));
+}
+
 std::string speedLabel(const CappedVelocity& v) {
     char buf[96];
     std::snprintf(buf, sizeof buf, "%.2f m/s%s", v.velocity.norm(),
@@ -124,9 +137,18 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
             o.hud.push_back(std::move(line));
         }
     }
-    if (stats.labelsCrowded > 0 && session.view().labels) {
-        o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
-                        " left out where they would overlap (zoom in)");
+    // What kept labels out, in words: other labels and panels in the way, or the window's
+    // edges all round a disc (the drawing layer slides a label along its disc's side before
+    // giving up, so a disc near an edge is not among these).
+    if (session.view().labels) {
+        if (stats.labelsCrowded > 0) {
+            o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
+                            " left out where they would overlap (zoom in)");
+        }
+        if (stats.labelsOffWindow > 0) {
+            o.hud.push_back("Labels: " + std::to_string(stats.labelsOffWindow) +
+                            " left out: no room beside the disc in the window (zoom out)");
+        }
     }
     o.showHelp = session.helpShown();
     if (o.showHelp) {
@@ -146,17 +168,22 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         pd.frameDrawMs = stats.lastDrawMs;
         o.profile = profileLines(pd);
     }
-    // Long messages wrap within the room right of the control panel; the newest lines that
-    // fit the band below the box are shown.
+    // With the control panel open the selected particle's values are in it; the inspector
+    // beside the box stays for the keyboard's edit prompt (Enter). Its long lines (a refusal's
+    // reason) wrap at the width of its readings.
     const int room = session.camera().viewportWidth() - left;
-    o.messages = wrapLines(hudFont, stats.messages, room - 8);
+    const bool editing = session.prompt().active();
+    if (f.selected && (!session.controlsShown() || editing)) {
+        o.inspector = inspectorPanel(hudFont, inspectorLines(*f.selected, session.prompt()), room);
+    }
+    // Long messages wrap within the room right of the control panel, beside the inspector when
+    // that leaves them room; the newest lines that fit the band below the box are shown.
+    const int besideInspector =
+        room - textBoxSize(hudFont, o.inspector).x - kPanelGap - kPanelMargin;
+    const bool beside = !o.inspector.empty() && besideInspector >= kMinMessageRoom;
+    o.messages = wrapLines(hudFont, stats.messages, (beside ? besideInspector : room) - 8);
     if (o.messages.size() > kMessageLines) {
         o.messages.erase(o.messages.begin(), o.messages.end() - kMessageLines);
-    }
-    // With the control panel open the selected particle's values are in it; the inspector
-    // beside the box stays for the keyboard's edit prompt (Enter).
-    if (f.selected && (!session.controlsShown() || session.prompt().active())) {
-        o.inspector = inspectorLines(*f.selected, session.prompt());
     }
 
     LayoutRequest req;
@@ -170,10 +197,19 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     req.messages = textBoxSize(hudFont, o.messages);
     req.inspector = textBoxSize(hudFont, o.inspector);
+    // The open prompt has the keyboard: it is never hidden, by a message or for want of room
+    // (then without the readings), or the keys typed would go into fields nobody sees.
+    req.inspectorFirst = editing;
     req.plots = f.view.plots;
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
     f.layout = layoutPanels(req);
+    if (editing && f.selected && f.layout.inspector.w == 0) {
+        o.inspector =
+            inspectorPanel(hudFont, inspectorLines(*f.selected, session.prompt(), false), room);
+        req.inspector = textBoxSize(hudFont, o.inspector);
+        f.layout = layoutPanels(req);
+    }
     f.title =
         windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());
     return f;

@@ -72,13 +72,14 @@ struct FrameView {
 /// What only the frame loop knows.
 struct FrameStats {
     double fps = 0.0;
-    double stepMs = 0.0;            ///< smoothed
-    double drawMs = 0.0;            ///< smoothed
-    double lastStepMs = 0.0;        ///< the last frame's
-    double lastDrawMs = 0.0;        ///< the last frame's
-    bool labelsSuppressed = false;  ///< the last draw had too many particles for labels
-    std::size_t labelsCrowded = 0;  ///< labels the last draw left out for want of room
-    std::string renderer;           ///< the render driver in use
+    double stepMs = 0.0;              ///< smoothed
+    double drawMs = 0.0;              ///< smoothed
+    double lastStepMs = 0.0;          ///< the last frame's
+    double lastDrawMs = 0.0;          ///< the last frame's
+    bool labelsSuppressed = false;    ///< the last draw had too many particles for labels
+    std::size_t labelsCrowded = 0;    ///< labels the last draw left out: others in the way
+    std::size_t labelsOffWindow = 0;  ///< labels left out: no side of the disc in the window
+    std::string renderer;             ///< the render driver in use
     std::vector<std::string> messages;
 };
 

@@ -10,7 +10,25 @@
 
 namespace psb::app {
 
-std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt) {
+namespace {
+
+/// The prompt's four fields, the active one marked, and the last refusal.
+void editLines(std::vector<std::string>& lines, const EditPrompt& prompt) {
+    char buf[160];
+    for (int k = 0; k < kEditFields; ++k) {
+        const auto f = static_cast<EditField>(k);
+        const bool active = f == prompt.field();
+        std::snprintf(buf, sizeof buf, "%s %-6s %s%s %s", active ? ">" : " ", fieldName(f),
+                      prompt.text(f).c_str(), active ? "_" : "", fieldUnit(f));
+        lines.emplace_back(buf);
+    }
+    if (!prompt.error().empty()) lines.push_back("Refused: " + prompt.error());
+}
+
+}  // namespace
+
+std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt,
+                                        bool readings) {
     char buf[160];
     std::vector<std::string> lines;
     const auto line = [&](const char* format, auto... values) {
@@ -22,7 +40,13 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
     const auto pair = [&](const char* name, const Vec2& v, const char* unit) {
         lines.push_back(std::string(name) + "(" + n(v.x()) + ", " + n(v.y()) + ") " + unit);
     };
-    line("Particle %u", p.id.slot);
+    line("Particle %llu", static_cast<unsigned long long>(particleNumber(p.id)));
+    const bool editing = prompt.active() && prompt.target() == p.id;
+    if (editing && !readings) {
+        lines.emplace_back("Edit  Tab: next  Enter: apply  Esc: cancel");
+        editLines(lines, prompt);
+        return lines;
+    }
     pair("position        ", p.position, "m");
     pair("velocity        ", p.velocity, "m/s");
     lines.push_back("speed           " + quantity(p.velocity.norm(), "m/s", false));
@@ -30,19 +54,13 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
     lines.push_back("kinetic energy  " + quantity(0.5 * p.mass * p.velocity.squaredNorm(), "J"));
     lines.push_back("mass            " + quantity(p.mass, "kg", false));
     lines.push_back("radius          " + quantity(p.radius, "m"));
-    if (!prompt.active() || prompt.target() != p.id) {
+    if (!editing) {
         lines.emplace_back("Enter: edit");
         return lines;
     }
     lines.emplace_back("");
     lines.emplace_back("Edit  Tab: next  Enter: apply  Esc: cancel");
-    for (int k = 0; k < kEditFields; ++k) {
-        const auto f = static_cast<EditField>(k);
-        const bool active = f == prompt.field();
-        line("%s %-6s %s%s %s", active ? ">" : " ", fieldName(f), prompt.text(f).c_str(),
-             active ? "_" : "", fieldUnit(f));
-    }
-    if (!prompt.error().empty()) lines.push_back("Refused: " + prompt.error());
+    editLines(lines, prompt);
     return lines;
 }
 

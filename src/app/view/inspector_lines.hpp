@@ -14,7 +14,9 @@ namespace psb::app {
 
 /// The panel's lines for `p`: position (m), velocity (m/s), speed (m/s), momentum (kg m/s),
 /// kinetic energy (J), mass (kg), radius (m); while `prompt` is active on p, its four fields
-/// (the active one marked) and the last refusal instead of the key hint.
-[[nodiscard]] std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt);
+/// (the active one marked) and the last refusal instead of the key hint. `readings` false: the
+/// prompt without the readings, for a window too small for both.
+[[nodiscard]] std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt,
+                                                      bool readings = true);
 
 }  // namespace psb::app

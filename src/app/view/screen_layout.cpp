@@ -27,9 +27,12 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         return PixelRect{x, y, size.x, size.y};
     };
     int bottom = r.height - m;
-    if (r.messages.x > 0 && r.messages.y > 0 && bottom - r.messages.y > hudBottom) {
-        l.messages = {r.left + 4, bottom - r.messages.y, r.messages.x, r.messages.y};
-    }
+    const auto placeMessages = [&] {
+        if (r.messages.x <= 0 || r.messages.y <= 0 || bottom - r.messages.y <= hudBottom) return;
+        const PixelRect box{r.left + 4, bottom - r.messages.y, r.messages.x, r.messages.y};
+        if (!overlaps(box, l.inspector)) l.messages = box;
+    };
+    if (!r.inspectorFirst) placeMessages();
 
     // The inspector is what the user just asked for by clicking: it goes first, at the bottom.
     if (r.inspector.x > 0 && r.inspector.y > 0 && r.inspector.x <= room) {
@@ -37,9 +40,10 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
                             r.inspector.x, r.inspector.y};
         if (box.y > hudBottom + gap && !overlaps(box, l.messages) && !overlaps(box, l.hud)) {
             l.inspector = box;
-            bottom = box.y - gap;
         }
     }
+    if (r.inspectorFirst) placeMessages();
+    if (l.inspector.w > 0) bottom = l.inspector.y - gap;
 
     const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
     const bool fits = sideColumnFits(r.width, r.left);

@@ -50,9 +50,12 @@ struct LayoutRequest {
     PixelPoint legend{0, 0};     ///< the momentum legend's box
     PixelPoint messages{0, 0};   ///< the messages' box, at the bottom-left
     PixelPoint inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
-    bool plots = false;          ///< K
-    bool speeds = false;         ///< D
-    bool bins = false;           ///< a scene's bins (a Galton board's histogram)
+    /// The inspector holds the open edit prompt, which has the keyboard: it is placed before the
+    /// messages, which are left out where they would cover it.
+    bool inspectorFirst = false;
+    bool plots = false;   ///< K
+    bool speeds = false;  ///< D
+    bool bins = false;    ///< a scene's bins (a Galton board's histogram)
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -286,6 +287,28 @@ TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
         click(section);
     click("deselect");
     EXPECT_FALSE(session_->selected());
+}
+
+TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPixelWindow) {
+    // The Selected particle section is below Time, Physics, Show and Readouts, under the fold
+    // of an 800-pixel window: a click on a particle scrolls the panel to it.
+    for (const ParticleId id : {session_->world().ids()[1], session_->world().ids()[4]}) {
+        session_->apply(cmd::Select{id});
+        frame();
+        frame();
+        for (const char* name : {"section Selected particle", "deselect", "selected x",
+                                 "selected mass", "selected radius"}) {
+            const PanelItem* i = panel_.item(name);
+            ASSERT_NE(i, nullptr) << name;
+            EXPECT_GE(i->y0, 0.f) << name;
+            EXPECT_LE(i->y1, static_cast<float>(kSize)) << name << " is below the window";
+        }
+        // The panel stays where the user scrolls it while the selection stays.
+        ImGui::SetScrollY(ImGui::FindWindowByName("Controls"), 0.f);
+        frame();
+        frame();
+        EXPECT_GT(panel_.item("selected radius")->y1, static_cast<float>(kSize));
+    }
 }
 
 TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {

@@ -304,6 +304,48 @@ TEST_F(RenderTest, ALabelStaysOnOneSideOfTheWalls) {
     EXPECT_GT(brightPixels(60, 82, 350, 160), 50);  // below the disc
 }
 
+TEST_F(RenderTest, ALabelThatWouldRunOffTheWindowGoesAlongItsEdgeInstead) {
+    // A disc in the box's top-right corner, the box filling the window: above it and right of
+    // it are off the window, left of it and centred below it run off the top and right edges.
+    // Nothing else is there to overlap: the label goes below, shifted left to fit (it used to
+    // be left out, counted as "where they would overlap").
+    WorldDef def;
+    def.width = def.height = kSize;
+    World w(def);
+    ParticleDef d;
+    d.position = {kSize - 15.0, 15.0};
+    d.radius = 10.0;
+    w.add(d);
+    ViewOptions o;
+    o.arrows = false;
+    o.labels = true;
+    const DrawStats s = draw(w, o);
+    EXPECT_EQ(s.labelled, 1u);
+    EXPECT_EQ(s.labelsCrowded, 0u);
+    EXPECT_EQ(s.labelsOffWindow, 0u);
+    EXPECT_GT(brightPixels(kSize / 2, 30, kSize - 2, 120), 100);  // below the disc, in the box
+}
+
+TEST_F(RenderTest, ALabelWithNoRoomInTheWindowIsCountedAsSuch) {
+    // A disc nearly as big as the window: every side of it is off the window's edges. The
+    // label is left out for want of room in the window, not "where labels would overlap".
+    WorldDef def;
+    def.width = def.height = 1000.0;
+    World w(def);
+    ParticleDef d;
+    d.position = {500.0, 500.0};
+    d.radius = 190.0;
+    w.add(d);
+    camera_.set(1.0, Vec2(300.0, 300.0));  // the disc's centre at (200, 200), 190 px across
+    ViewOptions o;
+    o.arrows = false;
+    o.labels = true;
+    const DrawStats s = draw(w, o);
+    EXPECT_EQ(s.labelled, 0u);
+    EXPECT_EQ(s.labelsCrowded, 0u);
+    EXPECT_EQ(s.labelsOffWindow, 1u);
+}
+
 TEST_F(RenderTest, ALabelOverOtherDiscsDoesNotDarkenThem) {
     // A disc hemmed in by four big ones leaves its label no place clear of discs: the label is
     // drawn over them without a background, so a big disc's pixels away from the glyphs keep

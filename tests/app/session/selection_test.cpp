@@ -36,7 +36,7 @@ TEST(Selection, ForgetsARemovedParticleOnce) {
     EXPECT_FALSE(s.id().has_value());
 }
 
-TEST(Selection, LogLineNamesStateWithUnits) {
+TEST(Selection, LogLineNamesStateWithUnitsAndTheParticlesNumber) {
     Particle p;
     p.id = {3, 0};
     p.position = {520, 160};
@@ -44,7 +44,7 @@ TEST(Selection, LogLineNamesStateWithUnits) {
     p.mass = 18;
     p.radius = 45;
     EXPECT_EQ(selectionLogLine(p),
-              "[I] Selected particle 3 at [520.00, 160.00] m with velocity [-60.00, 240.00] m/s, "
+              "[I] Selected particle 4 at [520.00, 160.00] m with velocity [-60.00, 240.00] m/s, "
               "mass 18 kg, radius 45 m");
 }
 

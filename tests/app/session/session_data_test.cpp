@@ -201,9 +201,9 @@ TEST_F(SessionData, RecordingTwoBallsGivesTheirPathsAndTheTextbookCollisionInEve
         s.apply(cmd::CopyTable{cmd::DataTable::Trajectories});
         const Rows path = parse(*s.takeClipboardText(), '\t');
         ASSERT_EQ(path.size(), 1u + 61u * 2u) << "t = 0 and each of 60 steps, two particles";
-        EXPECT_EQ(path[1], (std::vector<std::string>{"0", "0", "3", "5", "2", "0"}));
+        EXPECT_EQ(path[1], (std::vector<std::string>{"0", "1", "3", "5", "2", "0"}));
         EXPECT_EQ(path.back()[0], "1");
-        EXPECT_EQ(path.back()[1], "1");
+        EXPECT_EQ(path.back()[1], "2");
 
         s.apply(cmd::ExportTable{cmd::DataTable::Collisions, "hits"});
         const std::filesystem::path file = *s.lastExport();
@@ -213,7 +213,7 @@ TEST_F(SessionData, RecordingTwoBallsGivesTheirPathsAndTheTextbookCollisionInEve
         EXPECT_EQ(c[2], "particle");
         // Whichever the stepper named first: the 1 kg ball goes from 2 to -2.5 m/s, the 3 kg
         // from -1 to 0.5 m/s, and the impulse on the first is its m dv.
-        const bool oneFirst = c[1] == "0";
+        const bool oneFirst = c[1] == "1";
         const double m = oneFirst ? 1.0 : 3.0;
         EXPECT_NEAR(std::stod(c[4]), oneFirst ? 2.0 : -1.0, 1e-12);
         EXPECT_NEAR(std::stod(c[6]), oneFirst ? -2.5 : 0.5, 1e-12);

@@ -431,6 +431,35 @@ TEST_F(SessionTest, AParticleDraggedIntoAnotherWhilePausedShowsItsOverlap) {
     }
 }
 
+TEST_F(SessionTest, AParticleFlungWhilePausedKeepsItsSpeedForWhenTimeRunsAndSaysSo) {
+    // Paused, the yellow disc (5.2, 1.6) dragged 1 m left in 0.1 s and let go moving: it stays
+    // where it was let go until time runs (paused), so the message band says that the speed is
+    // kept, while dragging and on letting go, and Space sets it moving.
+    Session s = session();
+    ASSERT_TRUE(s.paused());
+    const ParticleId yellow = s.world().pick(Vec2(5.2, 1.6)).value();
+    (void)s.takeNotices();
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
+    EXPECT_FALSE(said(s.takeNotices(), "paused")) << "a click that only selects says nothing";
+    for (int k = 1; k <= 10; ++k) {
+        s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.2 - 0.1 * k, 1.6)), 1.0 + 0.01 * k});
+        s.update(0.0, 1.0 + 0.01 * k);
+    }
+    const auto dragging = s.takeNotices();
+    EXPECT_TRUE(said(dragging, "Paused: let go and the particle keeps its speed"))
+        << (dragging.empty() ? "" : dragging.back().text);
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(4.2, 1.6)), 1.1});
+    const Particle flung = s.world().get(yellow);
+    EXPECT_LT(flung.velocity.x(), -5.0);
+    const auto released = s.takeNotices();
+    EXPECT_TRUE(said(released, "while paused: Space sets it moving"))
+        << (released.empty() ? "" : released.back().text);
+    s.apply(cmd::TogglePause{});
+    s.update(0.1, 1.2);
+    EXPECT_LT(s.world().get(yellow).position.x(), flung.position.x() - 0.3);
+}
+
 TEST_F(SessionTest, TheEditPromptTakesTheKeyboard) {
     Session s = session();
     const Vec2 yellow(5.2, 1.6);

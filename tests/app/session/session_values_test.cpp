@@ -288,6 +288,25 @@ TEST_F(SessionValues, TheBoxIsFittedBesideTheControlPanelOpenOrFolded) {
     EXPECT_LT(x, 310.0);
 }
 
+TEST_F(SessionValues, AWindowTooNarrowForTheBoxBesideTheOpenPanelFoldsItAndSaysSo) {
+    // 800 pixels wide, then 400 x 300: the open panel (310 pixels) would leave the box 90.
+    Session s = session();
+    ASSERT_TRUE(s.controlsShown());
+    (void)s.takeNotices();
+    WindowLayout narrow = layout();
+    narrow.controlsFit = false;
+    s.apply(cmd::Resize{400, 300, narrow});
+    EXPECT_FALSE(s.controlsShown());
+    EXPECT_TRUE(said(s.takeNotices(), "control panel folded"));
+    EXPECT_LT(s.camera().worldToScreen(Vec2::Zero()).x(), 310.0);
+    // C opens it all the same, over the box, and says so; a wider window keeps it open.
+    s.apply(cmd::ToggleControls{});
+    EXPECT_TRUE(s.controlsShown());
+    EXPECT_TRUE(said(s.takeNotices(), "covers the box"));
+    s.apply(cmd::Resize{900, 800, layout()});
+    EXPECT_TRUE(s.controlsShown());
+}
+
 TEST_F(SessionValues, SaveAsWritesThePathAsksBeforeReplacingAFileAndRemembersIt) {
     Session s = session();
     s.apply(cmd::SaveAs{dir_ / "lesson"});

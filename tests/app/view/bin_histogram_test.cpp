@@ -29,7 +29,9 @@ using test::landed;
 TEST(BinHistogram, SaysInWordsWhatTheBarsDotsAndCurveAreAndHowFarTheCountsAreFromIt) {
     const BinHistogram h = binHistogram(eightRows(), landed(kBell, 12));
     ASSERT_EQ(h.legend.size(), 4u);
-    EXPECT_EQ(h.legend[0], "bars: balls in each bin (1000 landed, 12 not yet in the bins)");
+    EXPECT_EQ(
+        h.legend[0],
+        "bars: balls in bins 0 to 8, marked on the board (1000 landed, 12 not yet in the bins)");
     EXPECT_EQ(h.legend[1], "dots: binomial, 8 rows, p = 1/2");
     EXPECT_EQ(h.legend[2], "line: normal curve (mean 4, spread 1.41 bins)");
     EXPECT_EQ(h.legend[3].rfind("close to the curve: chi-squared ", 0), 0u) << h.legend[3];
@@ -43,7 +45,9 @@ TEST(BinHistogram, AFlatPileIsFarFromTheCurveAndAFewBallsAreTooFewToJudge) {
     EXPECT_EQ(flat.legend[3].rfind("far from the curve: chi-squared ", 0), 0u) << flat.legend[3];
     EXPECT_NE(flat.legend[3].find("> 16.8"), std::string::npos) << flat.legend[3];
     const BinHistogram few = binHistogram(eightRows(), landed({0, 0, 0, 1, 2, 1}, 900));
-    EXPECT_EQ(few.legend[0], "bars: balls in each bin (4 landed, 900 not yet in the bins)");
+    EXPECT_EQ(
+        few.legend[0],
+        "bars: balls in bins 0 to 8, marked on the board (4 landed, 900 not yet in the bins)");
     EXPECT_EQ(few.legend[3], "too few balls yet to compare with the curve");
 }
 
@@ -55,7 +59,8 @@ TEST(BinHistogram, BinsWithoutAnExpectationOnlyCount) {
     p.y.push_back(6.0);
     const BinHistogram h = binHistogram(b, p);
     ASSERT_EQ(h.legend.size(), 1u);
-    EXPECT_EQ(h.legend[0], "bars: balls in each bin (3 landed, 1 outside the bins)");
+    EXPECT_EQ(h.legend[0],
+              "bars: balls in bins 0 to 8, marked on the board (3 landed, 1 outside the bins)");
     EXPECT_TRUE(h.now.expected.empty());
 }
 
@@ -143,7 +148,8 @@ TEST_F(SessionBinsTest, TheGaltonBoardsDropperCountsDownAndSaveAndResetKeepItsSt
     // The legend counts the balls still in the dropper.
     const BinHistogram h = binHistogram(*s.meta().bins, s.world().particles(), 990);
     EXPECT_EQ(h.legend[0],
-              "bars: balls in each bin (0 landed, 10 not yet in the bins, 990 still to drop)");
+              "bars: balls in bins 0 to 8, marked on the board (0 landed, 10 not yet "
+              "in the bins, 990 still to drop)");
     EXPECT_EQ(dropperLabel(s.world().droppers()[0]), "dropper: 990 balls left");
     // Saved with how far it has got; reset gives the full dropper back.
     s.apply(cmd::SaveAs{dir_ / "galton.json"});

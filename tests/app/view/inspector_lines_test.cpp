@@ -20,7 +20,7 @@ Particle sample() {
 TEST(InspectorPanel, ShowsStateMomentumAndEnergyInSiUnits) {
     const auto lines = inspectorLines(sample(), EditPrompt{});
     const std::vector<std::string> want = {
-        "Particle 4",
+        "Particle 5",  // slot 4: the fifth particle (particleNumber)
         "position        (520, 160) m",
         "velocity        (-60.0, 80.0) m/s",
         "speed           100 m/s",

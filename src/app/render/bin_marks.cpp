@@ -1,0 +1,44 @@
+#include "render/bin_marks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "render/bin_chart.hpp"
+#include "render/text.hpp"
+
+namespace psb::app {
+
+void BinMarks::draw(SDL_Renderer* renderer, const Font& font, const Camera& camera,
+                    const Bins& bins, double floor) {
+    if (bins.edges.size() < 2) return;
+    const Vec2 topLeft = camera.worldToScreen(Vec2(bins.edges.front(), bins.top));
+    const Vec2 bottomRight = camera.worldToScreen(Vec2(bins.edges.back(), floor));
+    const float top = static_cast<float>(topLeft.y()), bottom = static_cast<float>(bottomRight.y());
+    if (!(bottom > top)) return;
+    // Two pixels wide, so that they show over the grey walls they follow.
+    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
+    SDL_SetRenderDrawColor(renderer, kBinBarColor.r, kBinBarColor.g, kBinBarColor.b, 255);
+    const SDL_FRect mouth{static_cast<float>(topLeft.x()) - 1.f, top - 1.f,
+                          static_cast<float>(bottomRight.x() - topLeft.x()) + 2.f, 2.f};
+    SDL_RenderFillRectF(renderer, &mouth);
+    for (const double edge : bins.edges) {
+        const float x = static_cast<float>(camera.worldToScreen(Vec2(edge, floor)).x());
+        const SDL_FRect line{x - 1.f, top, 2.f, bottom - top};
+        SDL_RenderFillRectF(renderer, &line);
+    }
+    // Each bin's number, where it fits between the edges, at whole pixels.
+    text_.clear();
+    for (std::size_t k = 0; k + 1 < bins.edges.size(); ++k) {
+        const std::string number = std::to_string(k);
+        const double left = camera.worldToScreen(Vec2(bins.edges[k], floor)).x();
+        const double right = camera.worldToScreen(Vec2(bins.edges[k + 1], floor)).x();
+        const int width = font.measure(number);
+        if (right - left < width + 4.0 || bottom - top < 2.0 * font.lineHeight()) continue;
+        font.layout(number, std::round(static_cast<float>(0.5 * (left + right)) - width / 2.f),
+                    std::round(top + 2.f), kBinBarColor, text_);
+    }
+    font.draw(text_);
+}
+
+}  // namespace psb::app
