@@ -142,9 +142,9 @@ TEST(CollisionTable, PairsWallsAndObstaclesWithSignedVelocitiesAndImpulse) {
     ASSERT_EQ(rows.size(), 4u);
     EXPECT_EQ(rows[0].size(), 14u);
     EXPECT_EQ(rows[0][12], "impulse_x_N_s");
-    EXPECT_EQ(rows[1], (std::vector<std::string>{"0.666666666667", "0", "particle", "1", "2", "0",
+    EXPECT_EQ(rows[1], (std::vector<std::string>{"0.666666666667", "1", "particle", "2", "2", "0",
                                                  "-2.5", "0", "-1", "0", "0.5", "0", "-4.5", "0"}));
-    EXPECT_EQ(rows[2], (std::vector<std::string>{"0.5", "4", "wall", "right", "3", "1", "-1.5", "1",
+    EXPECT_EQ(rows[2], (std::vector<std::string>{"0.5", "5", "wall", "right", "3", "1", "-1.5", "1",
                                                  "", "", "", "", "-9", "0"}));
     EXPECT_EQ(rows[3][2], "obstacle");
     EXPECT_EQ(rows[3][3], "7");
