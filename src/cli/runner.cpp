@@ -55,13 +55,13 @@ std::vector<ParticleId> trackedIds(const World& world, const std::vector<std::ui
     std::vector<ParticleId> live = world.ids();
     std::vector<ParticleId> ids;
     for (const std::uint32_t n : numbers) {
-        const auto it =
-            std::find_if(live.begin(), live.end(), [n](ParticleId id) { return particleNumber(id) == n; });
+        const auto it = std::find_if(live.begin(), live.end(),
+                                     [n](ParticleId id) { return particleNumber(id) == n; });
         if (it == live.end()) {
-            throw UsageError("--track: no particle " + std::to_string(n) + ": the scene has " +
-                             std::to_string(live.size()) + " particles" +
-                             (live.empty() ? std::string()
-                                           : ", numbered 1 to " + std::to_string(live.size())));
+            throw UsageError(
+                "--track: no particle " + std::to_string(n) + ": the scene has " +
+                std::to_string(live.size()) + " particles" +
+                (live.empty() ? std::string() : ", numbered 1 to " + std::to_string(live.size())));
         }
         ids.push_back(*it);
     }

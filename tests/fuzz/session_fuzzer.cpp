@@ -260,7 +260,8 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                 static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3)), name};
         }
         case 50:
-            return cmd::CopyTable{static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3))};
+            return cmd::CopyTable{
+                static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3))};
         case 51:
             return cmd::SetRecording{in.ConsumeBool(), in.ConsumeIntegralInRange<int>(-2, 2000)};
         default:

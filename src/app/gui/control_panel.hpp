@@ -21,9 +21,9 @@
 // The panel's pieces are in control_panel.cpp (the window, time, scene, show, tools), one file
 // per section after that: section_scene_file.cpp (the scene's text and file),
 // section_dialogs.cpp (Save As, New scene, the quit question), section_obstacles.cpp (the obstacle
-// tools' sizes, removing an obstacle), section_physics.cpp, section_readouts.cpp (readouts, engine),
-// section_data.cpp (recording, exports) and section_particles.cpp (selected, all particles);
-// widgets.hpp holds the small widgets they share.
+// tools' sizes, removing an obstacle), section_physics.cpp, section_readouts.cpp (readouts,
+// engine), section_data.cpp (recording, exports) and section_particles.cpp (selected, all
+// particles); widgets.hpp holds the small widgets they share.
 
 #include <array>
 #include <optional>

@@ -402,6 +402,7 @@ using Command = std::variant<
     cmd::SetMode, cmd::SetTimeScale, cmd::SetTool, cmd::SetLaunchBody, cmd::EditParticle,
     cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls,
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
-    cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog, cmd::ExportTable, cmd::CopyTable, cmd::SetRecording>;
+    cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
+    cmd::ExportTable, cmd::CopyTable, cmd::SetRecording>;
 
 }  // namespace psb::app

@@ -84,7 +84,7 @@ struct SessionOptions {
     /// `saveFolder`.
     std::optional<std::filesystem::path> saveTo;
     std::filesystem::path saveFolder = ".";
-    std::filesystem::path exportDir = ".";  ///< where ExportTable writes a relative name
+    std::filesystem::path exportDir = ".";       ///< where ExportTable writes a relative name
     std::vector<std::filesystem::path> presets;  ///< what OpenPreset opens (read-only)
     std::uint32_t seed = 1;                      ///< random spawns
     bool paused = false;

@@ -66,7 +66,8 @@ TEST(Hud, TheArrowScaleIsShownWhileArrowsAreOn) {
 TEST(Hud, HelpListsEveryControl) {
     const auto lines = helpLines();
     EXPECT_EQ(lines.size(), controls().size() + 2);
-    for (const char* key : {"M", "S", "A", "Space", "Wheel", "Ctrl+S / Ctrl+Shift+S", "Ctrl+N", "Esc", "H"}) {
+    for (const char* key :
+         {"M", "S", "A", "Space", "Wheel", "Ctrl+S / Ctrl+Shift+S", "Ctrl+N", "Esc", "H"}) {
         EXPECT_TRUE(std::any_of(controls().begin(), controls().end(), [&](const auto& c) {
             return c.first == key;
         })) << key;
