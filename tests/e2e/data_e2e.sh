@@ -96,8 +96,8 @@ wait_log "Exported 2 rows of values to $OUT/exports/lesson.csv"
 V="$OUT/exports/lesson.csv"
 head -1 "$V" | grep -q '^particle,x_m,y_m,vx_m_per_s,vy_m_per_s,px_kg_m_per_s,py_kg_m_per_s,kinetic_energy_J,mass_kg,radius_m$' ||
     fail "lesson.csv header: $(head -1 "$V")"
-awk -F, 'NR == 2 && !($1 == 0 && $4 == -2.5 && $6 == -2.5 && $9 == 1) { exit 1 }
-         NR == 3 && !($1 == 1 && $4 == 0.5 && $6 == 1.5 && $9 == 3) { exit 1 }' "$V" ||
+awk -F, 'NR == 2 && !($1 == 1 && $4 == -2.5 && $6 == -2.5 && $9 == 1) { exit 1 }
+         NR == 3 && !($1 == 2 && $4 == 0.5 && $6 == 1.5 && $9 == 3) { exit 1 }' "$V" ||
     fail "lesson.csv values: $(cat "$V")"
 pass "lesson.csv: $(sed -n 2p "$V")"
 

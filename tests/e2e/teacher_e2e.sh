@@ -87,7 +87,7 @@ pass "paused fling: $(grep -o "Flung at .*" "$LOG" | tail -1)"
 
 # --- 8. numbers people read: an emptied box's two new balls are 1 and 2 ---------------------------
 key r
-wait_log "Reset to the scene as loaded"
+wait_log "Restarted: back to the scene as it opened"
 for xy in "1.5 1.2" "3.2 0.9" "5.2 1.6" "2.5 2.6" "4.3 3.0" "6.0 3.3"; do
     read -r x y <<<"$xy"
     xdotool mousemove --sync "$(sx "$x")" "$(sy "$y")" sleep 0.1 click 1
@@ -103,11 +103,12 @@ wait_log "\[I\] Selected particle 1 at \[2.00, 5.00\]"
 xdotool mousemove --sync "$(sx 5.0)" "$(sy 5.0)" sleep 0.1 click 1
 wait_log "\[I\] Selected particle 2 at \[5.00, 5.00\]"
 pass "two balls launched into the emptied box are particles 1 and 2"
-# Unsaved changes: Esc asks, Esc again quits (a TERM would be asked about too).
+# Unsaved changes: Esc asks in a dialog, D discards and quits.
 key Escape
-xdotool key --window "$WID" Escape 2>/dev/null || true
+wait_log "Unsaved changes to .*: Save, Discard or Cancel"
+xdotool key --window "$WID" d 2>/dev/null || true
 for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
-kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc, Esc"
+kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc, D"
 APP_PID=""
 
 # --- 3. a label at the window's edge goes along it, inside the box --------------------------------
