@@ -2,6 +2,7 @@
 # Installs the Debian packages Particle Sandbox needs, skipping those already present.
 #   scripts/install-deps.sh          build dependencies (compiler, CMake, ccache, libraries)
 #   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick, xclip,
+#                                    ffprobe (ffmpeg) to read the recorded videos back,
 #                                    clang with libFuzzer for the fuzz targets, and for the
 #                                    install test man, desktop-file-validate, file (which
 #                                    CPack's dependency scan uses), lintian and mmdebstrap)
@@ -13,9 +14,10 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libboost-dev
   libtbb-dev libbox2d-dev
+  libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
 )
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(xvfb xauth xdotool imagemagick x11-utils xclip)
+  packages+=(xvfb xauth xdotool imagemagick x11-utils xclip ffmpeg)
   packages+=(clang libclang-rt-14-dev)
   packages+=(man-db desktop-file-utils file lintian mmdebstrap)
 fi

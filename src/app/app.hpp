@@ -45,6 +45,7 @@
 #include "gui/gui_context.hpp"
 #include "platform/input.hpp"
 #include "platform/sdl_context.hpp"
+#include "platform/video_recorder.hpp"
 #include "render/draw_layer.hpp"
 #include "session/session.hpp"
 #include "view/frame_view.hpp"
@@ -68,6 +69,9 @@ struct AppOptions {
     /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
     std::string benchOverlays;
     std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
+    /// Record a video from the start (--record); with --bench, every frame, waiting for the
+    /// encoder rather than leaving frames out, so that the figure is what recording sustains.
+    std::optional<VideoFormat> record;
     /// Log "[I] Control NAME at X Y" (window points, the control's centre) for every control of
     /// the panel whenever their places change, for scripts that drive the window.
     bool logControls = false;
@@ -80,6 +84,8 @@ class App {
     explicit App(const AppOptions& options);
     App(const App&) = delete;
     App& operator=(const App&) = delete;
+    /// Completes a video still recording.
+    ~App();
 
     /// Runs until the session stops running (Esc, the window closed); returns the exit code.
     int run();
@@ -128,6 +134,19 @@ class App {
     void updateTextInput();
     void logControls();
     [[nodiscard]] double now() const;
+    /// Logs `text` and shows it as a message; `level` as the session's notices.
+    void tell(const std::string& text, Notice::Level level = Notice::Level::Info);
+
+    // Video (app_video.cpp): Ctrl+R starts and stops a VideoRecorder fed from render().
+    void toggleVideo(const VideoSettings& settings);
+    void startVideo(const VideoSettings& settings, VideoRecorder::Pacing pacing);
+    /// Completes the video and says where it is; `why` (if any) says why it stopped by itself.
+    void stopVideo(const std::string& why = {});
+    /// After the frame is drawn, before the recording mark: the recorded area into the video.
+    void captureVideo();
+    /// The window's pixels a recording with `settings` takes: all of it, or right of the panel.
+    [[nodiscard]] SDL_Rect videoArea(const VideoSettings& settings) const;
+    void updateVideoStatus();
 
     AppOptions options_;
     std::unique_ptr<SdlContext> sdl_;
@@ -146,6 +165,11 @@ class App {
     std::vector<Message> messages_;
     std::optional<std::filesystem::path> lastScreenshot_;
     FrameView lastFrame_;
+
+    std::unique_ptr<VideoRecorder> video_;
+    VideoSettings videoSettings_;  ///< the running recording's
+    SDL_Rect videoArea_{};
+    double videoStart_ = 0.0;  ///< now() when it started
 
     // Frame statistics, smoothed for display.
     FrameStats stats_;

@@ -33,6 +33,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     section(out, "Messages", o.messages);
     section(out, "Inspector", o.inspector);
     if (o.showProfile) section(out, "Profile", o.profile);
+    if (frame.recordingMark) section(out, "Recording", {frame.recordingMark->label});
     if (o.showHelp) section(out, "Help", o.help);
     if (frame.bins && frame.layout.bins.w > 0) {
         std::vector<std::string> lines = frame.bins->legend;

@@ -58,6 +58,7 @@
 #include "session/scene_io.hpp"
 #include "session/sim_clock.hpp"
 #include "session/tools.hpp"
+#include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -149,6 +150,11 @@ class Session {
     [[nodiscard]] bool takeScreenshotRequest();
     /// The text a CopyTable command put on the clipboard, once: the app hands it to the system.
     [[nodiscard]] std::optional<std::string> takeClipboardText();
+    /// The settings of a ToggleVideo command, once: the app starts a recording with them, or
+    /// stops the one running.
+    [[nodiscard]] std::optional<VideoSettings> takeVideoToggle();
+    /// The video settings last asked for (Ctrl+R records with them).
+    [[nodiscard]] const VideoSettings& videoSettings() const { return videoSettings_; }
 
     // Data out (data_recorder.hpp, session_data.cpp).
     /// The run's series, the recorded trajectories and collisions.
@@ -348,6 +354,8 @@ class Session {
     void handle(const cmd::ExportTable& c);
     void handle(const cmd::CopyTable& c);
     void handle(const cmd::SetRecording& c);
+    void handle(const cmd::ToggleVideo& c);
+    void handle(const cmd::SetVideoSettings& c);
 
     // The hand's gestures (session_hand.cpp).
     void click(const ReleaseResult& r);
@@ -440,6 +448,8 @@ class Session {
     bool screenshotRequested_ = false;
     DataRecorder data_;
     std::optional<std::string> clipboard_;
+    VideoSettings videoSettings_;
+    std::optional<VideoSettings> videoToggle_;
     std::optional<std::filesystem::path> lastExport_;
     std::string exportError_;
     std::vector<Notice> notices_;

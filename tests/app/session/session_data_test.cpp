@@ -284,5 +284,49 @@ TEST_F(SessionData, ANewSceneStopsRecordingAndStartsTheSeriesOver) {
     EXPECT_TRUE(s.data().run().empty());
 }
 
+TEST_F(SessionData, ToggleVideoIsHandedToTheAppOnceWithTheLastSettings) {
+    Session s = session();
+    EXPECT_FALSE(s.takeVideoToggle().has_value());
+    EXPECT_EQ(s.videoSettings(), VideoSettings{});  // MP4 of the box at first
+    s.apply(cmd::ToggleVideo{});
+    auto toggle = s.takeVideoToggle();
+    ASSERT_TRUE(toggle.has_value());
+    EXPECT_EQ(toggle->format, VideoFormat::Mp4);
+    EXPECT_FALSE(toggle->withPanel);
+    EXPECT_FALSE(s.takeVideoToggle().has_value());  // once
+
+    // The panel's choice is kept: Ctrl+R (no settings of its own) records with it.
+    s.apply(cmd::SetVideoSettings{{VideoFormat::Gif, true}});
+    EXPECT_FALSE(s.takeVideoToggle().has_value());  // a choice records nothing
+    s.apply(cmd::ToggleVideo{});
+    toggle = s.takeVideoToggle();
+    ASSERT_TRUE(toggle.has_value());
+    EXPECT_EQ(*toggle, (VideoSettings{VideoFormat::Gif, true}));
+    // --record names its format, which becomes the choice.
+    s.apply(cmd::ToggleVideo{VideoSettings{VideoFormat::WebM, false}});
+    EXPECT_EQ(s.takeVideoToggle()->format, VideoFormat::WebM);
+    EXPECT_EQ(s.videoSettings().format, VideoFormat::WebM);
+}
+
+TEST_F(SessionData, RecordingIsNotAnEditAndLeavesTheSceneSaved) {
+    Session s = session();
+    const bool dirty = s.unsavedChanges();
+    s.apply(cmd::SetVideoSettings{{VideoFormat::WebM, false}});
+    s.apply(cmd::ToggleVideo{});
+    EXPECT_EQ(s.unsavedChanges(), dirty);
+    EXPECT_FALSE(s.canUndo());
+}
+
+TEST(VideoSettings, FormatsByNameAndExtension) {
+    EXPECT_EQ(parseVideoFormat("mp4"), VideoFormat::Mp4);
+    EXPECT_EQ(parseVideoFormat("WebM"), VideoFormat::WebM);
+    EXPECT_EQ(parseVideoFormat("GIF"), VideoFormat::Gif);
+    EXPECT_FALSE(parseVideoFormat("avi").has_value());
+    EXPECT_FALSE(parseVideoFormat("").has_value());
+    EXPECT_STREQ(extension(VideoFormat::Mp4), ".mp4");
+    EXPECT_STREQ(extension(VideoFormat::WebM), ".webm");
+    EXPECT_STREQ(extension(VideoFormat::Gif), ".gif");
+}
+
 }  // namespace
 }  // namespace psb::app
