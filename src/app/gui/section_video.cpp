@@ -34,7 +34,7 @@ void ControlPanel::video(const Session& s, const VideoStatus& status) {
         ImGui::EndCombo();
     }
     mark("video format");
-    tip("MP4 (H.264) plays in slides and everywhere; WebM (VP9) for web pages; GIF for slides, "
+    tip("MP4 (H.264) plays in slides and everywhere; WebM (VP8) for web pages; GIF for slides, "
         "25 frames a second, at most 640 pixels wide");
     ImGui::SameLine();
     bool withPanel = settings.withPanel;

@@ -1,7 +1,9 @@
 #include "platform/video_encoder.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <initializer_list>
 
 extern "C" {
 #include <libavcodec/avcodec.h>
@@ -30,30 +32,89 @@ int check(int code, const std::string& what) {
 struct Recipe {
     const char* muxer;
     const char* const* encoders;  ///< by preference; nullptr-terminated
-    const char* filters;          ///< from the RGBA frames to what the encoder takes
+    /// From the RGBA frames ([in]) to what the encoder takes ([out]); a GIF's also takes its
+    /// palette ([pal], one 16 × 16 frame made by `palette` from the first frame).
+    std::string filters;
+    const char* palette;  ///< nullptr: no palette
     AVPixelFormat pixels;
 };
 
 constexpr const char* kH264[] = {"libx264", nullptr};
-constexpr const char* kVp9[] = {"libvpx-vp9", nullptr};
+constexpr const char* kVp8[] = {"libvpx", nullptr};
 constexpr const char* kGif[] = {"gif", nullptr};
+constexpr const char* kEven =
+    "[in]crop=w=trunc(iw/2)*2:h=trunc(ih/2)*2:x=0:y=0,format=yuv420p[out]";
+constexpr const char* kGifScale = "scale=w='min(640,iw)':h=-2:flags=lanczos";
 
 Recipe recipe(VideoFormat format) {
     switch (format) {
         case VideoFormat::Mp4:
-            return {"mp4", kH264, "crop=w=trunc(iw/2)*2:h=trunc(ih/2)*2:x=0:y=0,format=yuv420p",
-                    AV_PIX_FMT_YUV420P};
+            return {"mp4", kH264, kEven, nullptr, AV_PIX_FMT_YUV420P};
         case VideoFormat::WebM:
-            return {"webm", kVp9, "crop=w=trunc(iw/2)*2:h=trunc(ih/2)*2:x=0:y=0,format=yuv420p",
-                    AV_PIX_FMT_YUV420P};
+            return {"webm", kVp8, kEven, nullptr, AV_PIX_FMT_YUV420P};
         case VideoFormat::Gif:
-            return {"gif", kGif,
-                    "scale=w='min(640,iw)':h=-2:flags=lanczos,split[a][b];"
-                    "[a]palettegen=stats_mode=single:reserve_transparent=0[p];"
-                    "[b][p]paletteuse=new=1:dither=bayer:bayer_scale=3:diff_mode=rectangle",
-                    AV_PIX_FMT_PAL8};
+            // One palette for the clip, from its first frame: a palette a frame (palettegen's
+            // single-frame mode) costs three times as much to apply, more than a frame's time.
+            return {
+                "gif", kGif,
+                std::string("[in]") + kGifScale +
+                    "[x];[x][pal]paletteuse=dither=bayer:bayer_scale=3:diff_mode=rectangle[out]",
+                "palettegen=max_colors=256:reserve_transparent=0", AV_PIX_FMT_PAL8};
     }
     return recipe(VideoFormat::Mp4);
+}
+
+/// A buffer source for frames `width` × `height` of `pixels`, counted at `fps`.
+AVFilterContext* source(AVFilterGraph* graph, const char* name, int width, int height,
+                        AVPixelFormat pixels, int fps) {
+    char args[160];
+    std::snprintf(args, sizeof args, "video_size=%dx%d:pix_fmt=%d:time_base=1/%d:pixel_aspect=1/1",
+                  width, height, static_cast<int>(pixels), fps);
+    AVFilterContext* c = nullptr;
+    check(avfilter_graph_create_filter(&c, avfilter_get_by_name("buffer"), name, args, nullptr,
+                                       graph),
+          "the video's frame source");
+    return c;
+}
+
+/// A buffer sink giving frames of `pixels`.
+AVFilterContext* sink(AVFilterGraph* graph, AVPixelFormat pixels) {
+    AVFilterContext* c =
+        avfilter_graph_alloc_filter(graph, avfilter_get_by_name("buffersink"), "out");
+    if (c == nullptr) throw VideoError("the video's frame sink: out of memory");
+    const AVPixelFormat formats[] = {pixels, AV_PIX_FMT_NONE};
+    check(av_opt_set_int_list(c, "pix_fmts", formats, AV_PIX_FMT_NONE, AV_OPT_SEARCH_CHILDREN),
+          "the video's pixel format");
+    check(avfilter_init_str(c, nullptr), "the video's frame sink");
+    return c;
+}
+
+/// Links `description` between the sources (by their names) and the sink "out", and checks
+/// the whole graph.
+void link(AVFilterGraph* graph, const char* description,
+          std::initializer_list<AVFilterContext*> sources, AVFilterContext* out) {
+    AVFilterInOut* outputs = nullptr;
+    AVFilterInOut* inputs = avfilter_inout_alloc();
+    if (inputs == nullptr) throw VideoError("out of memory for the video's filters");
+    inputs->name = av_strdup("out");
+    inputs->filter_ctx = out;
+    for (AVFilterContext* s : sources) {
+        AVFilterInOut* o = avfilter_inout_alloc();
+        if (o == nullptr) {
+            avfilter_inout_free(&outputs);
+            avfilter_inout_free(&inputs);
+            throw VideoError("out of memory for the video's filters");
+        }
+        o->name = av_strdup(s->name);
+        o->filter_ctx = s;
+        o->next = outputs;
+        outputs = o;
+    }
+    const int parsed = avfilter_graph_parse_ptr(graph, description, &inputs, &outputs, nullptr);
+    avfilter_inout_free(&outputs);
+    avfilter_inout_free(&inputs);
+    check(parsed, "the video's filters");
+    check(avfilter_graph_config(graph, nullptr), "the video's filters");
 }
 
 const AVCodec* findEncoder(const Recipe& r) {
@@ -83,11 +144,14 @@ struct VideoEncoder::Impl {
     AVCodecContext* codec = nullptr;
     AVStream* stream = nullptr;
     AVFilterGraph* graph = nullptr;
-    AVFilterContext* source = nullptr;
-    AVFilterContext* sink = nullptr;
+    AVFilterContext* source_ = nullptr;
+    AVFilterContext* sink_ = nullptr;
+    AVFilterContext* palette = nullptr;  ///< a GIF's [pal] source, until its palette is given
     AVFrame* in = nullptr;
     AVFrame* out = nullptr;
     AVPacket* packet = nullptr;
+    VideoFormat format_ = VideoFormat::Mp4;
+    int rate = 0;  ///< frames a second
     std::int64_t lastIndex = -1;
     bool finished = false;
 
@@ -107,36 +171,42 @@ struct VideoEncoder::Impl {
         graph = avfilter_graph_alloc();
         if (graph == nullptr) throw VideoError("out of memory for the video's filters");
         graph->nb_threads = 1;
-        char args[160];
-        std::snprintf(args, sizeof args,
-                      "video_size=%dx%d:pix_fmt=%d:time_base=1/%d:pixel_aspect=1/1", width, height,
-                      static_cast<int>(AV_PIX_FMT_RGBA), fps);
-        check(avfilter_graph_create_filter(&source, avfilter_get_by_name("buffer"), "in", args,
-                                           nullptr, graph),
-              "the video's frame source");
-        sink = avfilter_graph_alloc_filter(graph, avfilter_get_by_name("buffersink"), "out");
-        if (sink == nullptr) throw VideoError("the video's frame sink: out of memory");
-        const AVPixelFormat formats[] = {r.pixels, AV_PIX_FMT_NONE};
-        check(
-            av_opt_set_int_list(sink, "pix_fmts", formats, AV_PIX_FMT_NONE, AV_OPT_SEARCH_CHILDREN),
-            "the video's pixel format");
-        check(avfilter_init_str(sink, nullptr), "the video's frame sink");
-        AVFilterInOut* outputs = avfilter_inout_alloc();
-        AVFilterInOut* inputs = avfilter_inout_alloc();
-        if (outputs == nullptr || inputs == nullptr) {
-            avfilter_inout_free(&outputs);
-            avfilter_inout_free(&inputs);
-            throw VideoError("out of memory for the video's filters");
+        source_ = source(graph, "in", width, height, AV_PIX_FMT_RGBA, fps);
+        sink_ = sink(graph, r.pixels);
+        if (r.palette != nullptr) {
+            palette = source(graph, "pal", 16, 16, AV_PIX_FMT_RGB32, fps);
+            link(graph, r.filters.c_str(), {source_, palette}, sink_);
+        } else {
+            link(graph, r.filters.c_str(), {source_}, sink_);
         }
-        outputs->name = av_strdup("in");
-        outputs->filter_ctx = source;
-        inputs->name = av_strdup("out");
-        inputs->filter_ctx = sink;
-        const int parsed = avfilter_graph_parse_ptr(graph, r.filters, &inputs, &outputs, nullptr);
-        avfilter_inout_free(&outputs);
-        avfilter_inout_free(&inputs);
-        check(parsed, "the video's filters");
-        check(avfilter_graph_config(graph, nullptr), "the video's filters");
+    }
+
+    /// A GIF's palette, from its first frame (`in`), handed to the [pal] source once.
+    void makePalette(const Recipe& r, int fps) {
+        AVFilterGraph* g = avfilter_graph_alloc();
+        if (g == nullptr) throw VideoError("out of memory for the GIF's palette");
+        AVFrame* made = av_frame_alloc();
+        try {
+            AVFilterContext* from = source(g, "in", in->width, in->height, AV_PIX_FMT_RGBA, fps);
+            AVFilterContext* to = sink(g, AV_PIX_FMT_RGB32);
+            const std::string description =
+                std::string("[in]") + kGifScale + "," + r.palette + "[out]";
+            link(g, description.c_str(), {from}, to);
+            check(av_buffersrc_add_frame_flags(from, in, AV_BUFFERSRC_FLAG_KEEP_REF),
+                  "the GIF's palette");
+            check(av_buffersrc_add_frame_flags(from, nullptr, 0), "the GIF's palette");
+            check(av_buffersink_get_frame(to, made), "the GIF's palette");
+            made->pts = in->pts;
+            check(av_buffersrc_add_frame_flags(palette, made, 0), "the GIF's palette");
+            check(av_buffersrc_add_frame_flags(palette, nullptr, 0), "the GIF's palette");
+        } catch (...) {
+            av_frame_free(&made);
+            avfilter_graph_free(&g);
+            throw;
+        }
+        av_frame_free(&made);
+        avfilter_graph_free(&g);
+        palette = nullptr;  // given
     }
 
     void openCodec(const Recipe& r, VideoFormat kind, int fps) {
@@ -144,23 +214,25 @@ struct VideoEncoder::Impl {
         if (encoder == nullptr) throw VideoError(*videoFormatProblem(kind));
         codec = avcodec_alloc_context3(encoder);
         if (codec == nullptr) throw VideoError("out of memory for the video encoder");
-        codec->width = av_buffersink_get_w(sink);
-        codec->height = av_buffersink_get_h(sink);
-        codec->pix_fmt = static_cast<AVPixelFormat>(av_buffersink_get_format(sink));
+        codec->width = av_buffersink_get_w(sink_);
+        codec->height = av_buffersink_get_h(sink_);
+        codec->pix_fmt = static_cast<AVPixelFormat>(av_buffersink_get_format(sink_));
         codec->sample_aspect_ratio = {1, 1};
         codec->time_base = {1, fps};
         codec->framerate = {fps, 1};
         if (kind == VideoFormat::Mp4) {
             codec->gop_size = 2 * fps;
-            av_opt_set(codec->priv_data, "preset", "veryfast", 0);
+            av_opt_set(codec->priv_data, "preset", "superfast", 0);
             av_opt_set(codec->priv_data, "crf", "20", 0);
         } else if (kind == VideoFormat::WebM) {
+            // Constrained quality: near-lossless for a few discs, capped for a crowded box.
             codec->gop_size = 2 * fps;
-            codec->bit_rate = 0;  // constant quality
+            codec->bit_rate = 16'000'000;
+            codec->qmin = 0;
+            codec->qmax = 40;
             av_opt_set(codec->priv_data, "deadline", "realtime", 0);
-            av_opt_set(codec->priv_data, "cpu-used", "8", 0);
-            av_opt_set(codec->priv_data, "row-mt", "1", 0);
-            av_opt_set(codec->priv_data, "crf", "32", 0);
+            av_opt_set(codec->priv_data, "cpu-used", "16", 0);
+            av_opt_set(codec->priv_data, "crf", "4", 0);
         }
         if ((format->oformat->flags & AVFMT_GLOBALHEADER) != 0) {
             codec->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
@@ -172,7 +244,7 @@ struct VideoEncoder::Impl {
     /// Hands the filters' output to the encoder, and the encoder's output to the file.
     void drain(bool flushing) {
         for (;;) {
-            const int got = av_buffersink_get_frame(sink, out);
+            const int got = av_buffersink_get_frame(sink_, out);
             if (got == AVERROR(EAGAIN) || got == AVERROR_EOF) break;
             check(got, "converting a frame");
             out->pict_type = AV_PICTURE_TYPE_NONE;
@@ -208,6 +280,8 @@ VideoEncoder::VideoEncoder(const std::filesystem::path& file, VideoFormat kind, 
     av_log_set_level(AV_LOG_ERROR);
     Impl& m = *impl_;
     m.name = file.string();
+    m.format_ = kind;
+    m.rate = fps;
     const Recipe r = recipe(kind);
     check(avformat_alloc_output_context2(&m.format, nullptr, r.muxer, m.name.c_str()),
           std::string("the ") + toString(kind) + " writer");
@@ -253,7 +327,8 @@ void VideoEncoder::add(const std::uint8_t* rgba, int stride, std::int64_t index)
     }
     m.in->pts = index;
     m.lastIndex = index;
-    check(av_buffersrc_add_frame_flags(m.source, m.in, AV_BUFFERSRC_FLAG_KEEP_REF),
+    if (m.palette != nullptr) m.makePalette(recipe(m.format_), m.rate);
+    check(av_buffersrc_add_frame_flags(m.source_, m.in, AV_BUFFERSRC_FLAG_KEEP_REF),
           "converting a frame");
     m.drain(false);
 }
@@ -262,7 +337,8 @@ void VideoEncoder::finish() {
     Impl& m = *impl_;
     if (m.finished) return;
     m.finished = true;
-    check(av_buffersrc_add_frame_flags(m.source, nullptr, 0), "finishing the video");
+    if (m.lastIndex < 0) throw VideoError("the video " + m.name + " has no frame");
+    check(av_buffersrc_add_frame_flags(m.source_, nullptr, 0), "finishing the video");
     m.drain(true);
     check(av_write_trailer(m.format), "completing " + m.name);
     check(avio_closep(&m.format->pb), "closing " + m.name);

@@ -2,9 +2,10 @@
 // A video file written frame by frame through FFmpeg's libraries: libavfilter turns the window's
 // RGBA pixels into what the codec takes, libavcodec encodes them, libavformat writes the file.
 //
-//   MP4   H.264 (libx264, "veryfast", constant quality 20), yuv420p, the index at the front
+//   MP4   H.264 (libx264, "superfast", constant quality 20), yuv420p, the index at the front
 //         (faststart) so that slides and web pages play it at once
-//   WebM  VP9 (libvpx-vp9, real-time speed, constant quality 32), yuv420p
+//   WebM  VP8 (libvpx, real-time speed, constrained quality 4 up to 16 Mbit/s), yuv420p: VP9's
+//         real-time mode encodes a crowded box at a third of VP8's speed
 //   GIF   at most 640 pixels wide, each frame's own 256-colour palette (palettegen in its
 //         single-frame mode, then paletteuse), so a long clip needs no memory for a second pass
 //

@@ -12,7 +12,7 @@ namespace psb::app {
 
 enum class VideoFormat : std::uint8_t {
     Mp4,   ///< H.264 in MP4: plays everywhere, slides included
-    WebM,  ///< VP9 in WebM: for web pages
+    WebM,  ///< VP8 in WebM: for web pages
     Gif,   ///< an animated GIF, 25 frames a second, at most 640 pixels wide: for slides
 };
 

@@ -83,7 +83,7 @@ TEST_F(VideoEncoderFileTest, CodecsAreTheOnesNamed) {
         e.finish();
         const std::string codec = test::decodeVideo(file).codec;
         const std::string expected = f == VideoFormat::Mp4    ? "h264"
-                                     : f == VideoFormat::WebM ? "vp9"
+                                     : f == VideoFormat::WebM ? "vp8"
                                                               : "gif";
         EXPECT_NE(codec.find(expected), std::string::npos) << codec;
     }
