@@ -251,6 +251,11 @@ class Session {
     [[nodiscard]] const TimeSeries& series() const { return monitor_.series(); }
     /// The world's observables as the last update left them (summed once a frame).
     [[nodiscard]] const ObservablesSample& observables() const { return monitor_.observables(); }
+    /// The gas instruments' reading (gas_gauges.hpp), when they apply to the world shown.
+    [[nodiscard]] std::optional<GasReading> gasReading() const {
+        if (!gasGaugesApply(doc_.world)) return std::nullopt;
+        return monitor_.gas().reading(doc_.world);
+    }
 
     // The clock (sim_clock.hpp).
     [[nodiscard]] bool paused() const { return clock_.paused; }

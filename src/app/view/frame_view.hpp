@@ -14,6 +14,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "session/camera.hpp"
+#include "session/gas_gauges.hpp"
 #include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 #include "view/bin_histogram.hpp"
@@ -72,6 +73,8 @@ struct FrameView {
     std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
     std::optional<BoxMarkerView> boxMarker;
     std::optional<RecordingMarkView> recordingMark;
+    /// The gas instruments' reading, when they apply (the panel's Readouts show it).
+    std::optional<GasReading> gas;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     std::vector<DropperView> droppers;
     Overlays overlays;
