@@ -416,8 +416,9 @@ class Session {
     /// A scene was opened: everything starts over from it, the view fitted to its box.
     void sceneOpened();
     /// A world was put in place (a new scene, or an undo when `newScene` is false): the tools,
-    /// the recorded past, the clock and the monitor start over from it.
-    void startOver(bool newScene);
+    /// the recorded past, the clock and the monitor start over from it. A Restart
+    /// (`keepRecorded`) keeps what the Data section recorded, to export.
+    void startOver(bool newScene, bool keepRecorded = false);
     /// Viewing a past frame and about to change the world: carry on from that frame.
     void leavePast();
     /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.

@@ -274,14 +274,48 @@ TEST_F(SessionData, GoingBackInTimeDropsWhatWasRecordedAfter) {
         EXPECT_LT(run[k - 1].time, run[k].time);
 }
 
-TEST_F(SessionData, ANewSceneStopsRecordingAndStartsTheSeriesOver) {
+TEST_F(SessionData, RestartStopsRecordingAndKeepsWhatItRecordedToExport) {
+    // A teacher's lesson: record, run, R to run again, then export: the recording was gone.
     Session s = session();
     s.apply(cmd::SetRecording{true, 1});
     run(s, 10);
+    const std::size_t samples = s.data().trajectory().samples().size();
+    ASSERT_GT(samples, 10u);
+    (void)s.takeNotices();
     s.apply(cmd::Restart{});
     EXPECT_FALSE(s.data().recording());
+    EXPECT_EQ(s.data().trajectory().samples().size(), samples);
+    EXPECT_TRUE(said(s.takeNotices(), "Recording stopped: what it recorded stays"));
+    EXPECT_LE(s.data().run().size(), 1u);  // the plots' run starts over
+    run(s, 5);
+    EXPECT_EQ(s.data().trajectory().samples().size(), samples);  // not recording, not dropped
+    EXPECT_NE(s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma), "");
+}
+
+TEST_F(SessionData, ANewSceneStopsRecordingAndClearsIt) {
+    Session s = session();
+    s.apply(cmd::SetRecording{true, 1});
+    run(s, 10);
+    s.apply(cmd::NewScene{10.0, 4.0, 0.0, true});
+    EXPECT_FALSE(s.data().recording());
     EXPECT_TRUE(s.data().trajectory().samples().empty());
-    EXPECT_TRUE(s.data().run().empty());
+    EXPECT_LE(s.data().run().size(), 1u);
+}
+
+TEST_F(SessionData, TheTimeSeriesFirstRowIsTheSetUpAsPlayStartsIt) {
+    // Particles placed while paused at t = 0: the t = 0 row is the box as it starts, not as it
+    // was before they were placed.
+    Session s = session();
+    s.apply(cmd::NewScene{10.0, 4.0, 0.0, true});
+    s.update(0.0, 0.0);
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::SpawnRandom{});
+    s.update(0.0, 0.1);
+    ASSERT_EQ(s.world().size(), 2u);
+    ASSERT_FALSE(s.data().run().empty());
+    EXPECT_EQ(s.data().run().front().time, 0.0);
+    EXPECT_GT(s.data().run().front().kineticEnergy, 0.0);
+    EXPECT_NEAR(s.data().run().front().kineticEnergy, s.observables().kineticEnergy, 1e-12);
 }
 
 TEST_F(SessionData, ToggleVideoIsHandedToTheAppOnceWithTheLastSettings) {
