@@ -82,6 +82,14 @@ void App::stopVideo(const std::string& why) {
                       sizeText(s.width, s.height).c_str());
         std::string text =
             why + (why.empty() ? "Saved video " : ": saved video ") + s.file.string() + figures;
+        // A window drawing slower than the video's rate fills fewer slots: the video holds
+        // each frame longer, and the message says how many a second it has.
+        const double rate = s.seconds > 0.0 ? static_cast<double>(s.frames) / s.seconds : 0.0;
+        if (s.seconds > 0.5 && rate < 0.9 * s.fps) {
+            std::snprintf(figures, sizeof figures,
+                          " (%.0f frames a second of %d: the window drew no faster)", rate, s.fps);
+            text += figures;
+        }
         if (s.dropped > 0) {
             text += ", " + std::to_string(s.dropped) +
                     " frames left out (the encoder fell behind; each held the one before)";

@@ -42,8 +42,9 @@ sleep 0.5
 snap 1-recording
 section 1-recording Recording | grep -q "^REC 0:0[0-9] MP4 - Ctrl+R stops" ||
     fail "no REC mark on the screen: $(section 1-recording Recording)"
-# The mark is drawn: its red dot is in the window's top-right corner.
-red=$(convert "$OUT/1-recording.png" -crop "300x40+$((WIDTH - 300))+0" +repage \
+# The mark is drawn: its red dot is in the window's top-right corner (below the HUD when the
+# HUD reaches the corner).
+red=$(convert "$OUT/1-recording.png" -crop "300x120+$((WIDTH - 300))+0" +repage \
     -fill black +opaque "rgb(235,60,50)" -fill white -opaque "rgb(235,60,50)" \
     -format "%[fx:int(mean*w*h+0.5)]" info:)
 ((red > 10)) || fail "the REC mark's red dot is not drawn ($red pixels)"
@@ -64,11 +65,16 @@ read_frames=$(probe "$file" nb_read_frames)
 w=$(probe "$file" width)
 h=$(probe "$file" height)
 [[ "${w}x$h" == "$size" ]] || fail "ffprobe reads ${w}x$h, the app said $size"
-# About 2.5 s at 60 frames a second (the window keeps the display's rate): most slots filled.
-awk -v s="$seconds" -v n="$frames" 'BEGIN { exit !(s > 2 && s < 5 && n > 0.8 * 60 * s) }' ||
-    fail "$frames frames in $seconds s: frames were lost"
+# About 2.5 s. The window keeps the display's 60 Hz when the machine lets it; a loaded one
+# draws fewer frames, and then the message says how many a second the video has.
+awk -v s="$seconds" -v n="$frames" 'BEGIN { exit !(s > 2 && s < 6 && n > 20 * s) }' ||
+    fail "$frames frames in $seconds s"
+if awk -v s="$seconds" -v n="$frames" 'BEGIN { exit !(n < 0.9 * 60 * s) }'; then
+    grep -q "frames a second of [0-9]*: the window drew no faster" <<<"$saved" ||
+        fail "$frames frames in $seconds s, and the message does not say the rate: $saved"
+fi
 ffmpeg -v error -y -sseof -0.5 -i "$file" -frames:v 1 "$OUT/2-video-frame.png"
-vred=$(convert "$OUT/2-video-frame.png" -crop "300x40+$((w - 300))+0" +repage \
+vred=$(convert "$OUT/2-video-frame.png" -crop "300x120+$((w - 300))+0" +repage \
     -fuzz 8% -fill black +opaque "rgb(235,60,50)" -fill white -opaque "rgb(235,60,50)" \
     -format "%[fx:int(mean*w*h+0.5)]" info:)
 ((vred < 5)) || fail "the REC mark is in the video ($vred red pixels)"
@@ -95,7 +101,7 @@ read -r gif gseconds gframes gsize < <(sed -E 's/.*Saved video (.*): ([0-9.]+) s
 [[ "$(probe "$gif" codec_name)" == gif ]] || fail "not a GIF: $(probe "$gif" codec_name)"
 ((gframes == $(probe "$gif" nb_read_frames))) || fail "the GIF's frames: $(probe "$gif" nb_read_frames) of $gframes"
 [[ "$(probe "$gif" width)x$(probe "$gif" height)" == "$gsize" ]] || fail "the GIF's size"
-awk -v s="$gseconds" -v n="$gframes" 'BEGIN { exit !(n > 0.8 * 25 * s) }' ||
+awk -v s="$gseconds" -v n="$gframes" 'BEGIN { exit !(n > 10 * s) }' ||
     fail "$gframes GIF frames in $gseconds s"
 ffmpeg -v error -y -i "$gif" -vf "select=eq(n\,$((gframes / 2)))" -frames:v 1 "$OUT/3-gif-frame.png"
 pass "$(sed -E 's/^\[I\] //' <<<"$saved")"

@@ -324,13 +324,15 @@ void ControlPanel::tools(const Session& s, float) {
     bool autoColour = !sp.fixedColor.has_value();
     bool changed = false;
     ImGui::SetNextItemWidth(120.f);
-    changed |= ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.3g");
+    changed |=
+        ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.3g", ImGuiInputTextFlags_AutoSelectAll);
     mark("launch mass");
     tip("The mass of launched particles ([ and ] make them a tenth of the scene's typical particle "
         "smaller or bigger)");
     ImGui::BeginDisabled(autoRadius);
     ImGui::SetNextItemWidth(120.f);
-    changed |= ImGui::InputDouble("radius (m)", &radius, 0.0, 0.0, "%.3g");
+    changed |= ImGui::InputDouble("radius (m)", &radius, 0.0, 0.0, "%.3g",
+                                  ImGuiInputTextFlags_AutoSelectAll);
     mark("launch radius");
     ImGui::EndDisabled();
     tip("The radius of launched particles; untick 'auto' to choose it");

@@ -132,14 +132,16 @@ void ControlPanel::dialog(const Session& s) {
                 "An empty box. Restitution, friction and the stepping mode stay as "
                 "they are now.");
             ImGui::SetNextItemWidth(150.f);
-            ImGui::InputDouble("width (m)", &newWidth_, 0.0, 0.0, "%g");
+            ImGui::InputDouble("width (m)", &newWidth_, 0.0, 0.0, "%g",
+                               ImGuiInputTextFlags_AutoSelectAll);
             mark("dialog width");
             ImGui::SetNextItemWidth(150.f);
-            ImGui::InputDouble("height (m)", &newHeight_, 0.0, 0.0, "%g");
+            ImGui::InputDouble("height (m)", &newHeight_, 0.0, 0.0, "%g",
+                               ImGuiInputTextFlags_AutoSelectAll);
             mark("dialog height");
             ImGui::SetNextItemWidth(150.f);
-            ImGui::InputDouble("gravity (m/s\xc2\xb2, down; 0: none)", &newGravity_, 0.0, 0.0,
-                               "%g");
+            ImGui::InputDouble("gravity (m/s\xc2\xb2, down; 0: none)", &newGravity_, 0.0, 0.0, "%g",
+                               ImGuiInputTextFlags_AutoSelectAll);
             mark("dialog gravity");
             ImGui::Checkbox("walls around the box", &newWalls_);
             mark("dialog walls");

@@ -20,11 +20,13 @@ void ControlPanel::obstacleTools(const Session& s) {
     bool changed = false;
     ImGui::TextUnformatted("New obstacles:");
     ImGui::SetNextItemWidth(120.f);
-    changed |= ImGui::InputDouble("peg radius (m)", &peg, 0.0, 0.0, "%.3g");
+    changed |= ImGui::InputDouble("peg radius (m)", &peg, 0.0, 0.0, "%.3g",
+                                  ImGuiInputTextFlags_AutoSelectAll);
     mark("peg radius");
     tip("The radius of the pegs the Peg tool places (at first the scene's typical particle's)");
     ImGui::SetNextItemWidth(120.f);
-    changed |= ImGui::InputDouble("wall thickness (m)", &wall, 0.0, 0.0, "%.3g");
+    changed |= ImGui::InputDouble("wall thickness (m)", &wall, 0.0, 0.0, "%.3g",
+                                  ImGuiInputTextFlags_AutoSelectAll);
     mark("wall thickness");
     tip("How thick the walls the Wall tool draws are; their ends are round");
     // A size being typed passes through 0 ("0.2"): nothing is sent until both are positive.

@@ -99,9 +99,10 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         ImGui::TableNextColumn();
         ImGui::SetNextItemWidth(-1.f);
         ImGui::PushID(static_cast<int>(k));
-        const bool enter = ImGui::InputText(
-            "##v", text.data(), text.size(),
-            ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific);
+        const bool enter = ImGui::InputText("##v", text.data(), text.size(),
+                                            ImGuiInputTextFlags_EnterReturnsTrue |
+                                                ImGuiInputTextFlags_CharsScientific |
+                                                ImGuiInputTextFlags_AutoSelectAll);
         // Enter, or leaving the field (a click elsewhere, Tab) after typing, applies it.
         const bool left = ImGui::IsItemDeactivatedAfterEdit();
         fieldActive_[k] = ImGui::IsItemActive();

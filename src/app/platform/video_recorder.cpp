@@ -147,6 +147,7 @@ VideoSummary VideoRecorder::stop() {
     s.frames = encoded_;
     s.dropped = dropped_;
     s.seconds = static_cast<double>(lastSlot_ + 1) / fps_;
+    s.fps = fps_;
     s.width = encoder_.width();
     s.height = encoder_.height();
     return s;

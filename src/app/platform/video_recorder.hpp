@@ -32,6 +32,7 @@ struct VideoSummary {
     std::size_t frames = 0;      ///< in the file
     std::size_t dropped = 0;     ///< left out: the encoder was behind
     double seconds = 0.0;        ///< the video's length
+    int fps = 0;                 ///< the video's frame rate (frames a second at most)
     int width = 0;               ///< pixels, as encoded
     int height = 0;
 };

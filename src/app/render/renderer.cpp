@@ -305,8 +305,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                               static_cast<unsigned long long>(particleNumber(p.id[i])));
                 std::snprintf(lines[1], sizeof lines[1], "x velocity: %.2f m/s", vx);
                 std::snprintf(lines[2], sizeof lines[2], "y velocity: %.2f m/s", vy);
-                std::snprintf(lines[3], sizeof lines[3], "momentum: %s",
-                              quantity(m * std::hypot(vx, vy), "kg m/s", false).c_str());
+                // Signed components, as the velocity's: a ball moving left has px < 0.
+                std::snprintf(lines[3], sizeof lines[3], "p: (%s, %s) kg m/s",
+                              quantity(m * vx, "", false).c_str(),
+                              quantity(m * vy, "", false).c_str());
                 std::snprintf(lines[4], sizeof lines[4], "mass: %s",
                               quantity(m, "kg", false).c_str());
                 int width = 0;

@@ -162,7 +162,9 @@ void Session::handle(const cmd::SetRecording& c) {
     }
     data_.start(doc_.world, ids, c.every > 0 ? c.every : data_.every());
     const std::string who =
-        ids.size() == 1 ? fmt("particle %u", ids[0].slot) : fmt("all %zu particles", ids.size());
+        ids.size() == 1
+            ? fmt("particle %llu", static_cast<unsigned long long>(particleNumber(ids[0])))
+            : fmt("all %zu particles", ids.size());
     say(fmt("Recording %s every %d step%s (X stops)", who.c_str(), data_.every(),
             data_.every() == 1 ? "" : "s"));
 }

@@ -228,6 +228,15 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         req.inspector = textBoxSize(hudFont, o.inspector);
         f.layout = layoutPanels(req);
     }
+    if (f.recordingMark) {
+        // A HUD as wide as the window (a narrow one) has the corner: the mark goes below it.
+        PixelRect& m = f.recordingMark->at;
+        const PixelRect& hud = f.layout.hud;
+        if (hud.w > 0 && m.x < hud.x + hud.w && hud.x < m.x + m.w && m.y < hud.y + hud.h &&
+            hud.y < m.y + m.h) {
+            m.y = hud.y + hud.h + kPanelGap;
+        }
+    }
     f.title =
         windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());
     return f;

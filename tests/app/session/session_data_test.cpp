@@ -231,7 +231,9 @@ TEST_F(SessionData, RecordingTheSelectedParticleEveryNSteps) {
     const ParticleId chosen = s.world().ids()[2];
     s.apply(cmd::Select{chosen});
     s.apply(cmd::SetRecording{true, 5});
-    EXPECT_TRUE(said(s.takeNotices(), "Recording particle 2 every 5 steps"));
+    // Named by the number the app shows (the third particle is 3), not its storage slot.
+    ASSERT_EQ(particleNumber(chosen), 3u);
+    EXPECT_TRUE(said(s.takeNotices(), "Recording particle 3 every 5 steps"));
     run(s, 30);
     const std::vector<TrajectoryPoint>& samples = s.data().trajectory().samples();
     ASSERT_EQ(samples.size(), 7u) << "t = 0, then every 5th of 30 steps";

@@ -114,7 +114,7 @@ TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
 }
 
 TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
-    const Session s = sessionIn(800, 800, true);
+    const Session s = sessionIn(1600, 800, true);
     const test::FixedMeasure font;
     FrameStats stats;
     EXPECT_FALSE(buildFrame(s, stats, font, font, {310.0, 44.0}).recordingMark.has_value());
@@ -125,10 +125,26 @@ TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
     ASSERT_TRUE(f.recordingMark.has_value());
     EXPECT_EQ(f.recordingMark->label, "REC 1:05 WebM - Ctrl+R stops");
     const PixelRect& r = f.recordingMark->at;
-    EXPECT_LE(r.x + r.w, 800);
-    EXPECT_GT(r.x, 400);  // the right half, away from the HUD at the left
+    EXPECT_LE(r.x + r.w, 1600);
+    EXPECT_GT(r.x, 800);  // the right half, away from the HUD at the left
     EXPECT_GE(r.y, 0);
     EXPECT_LT(r.y, 40);
+}
+
+TEST(RecordingMark, InANarrowWindowItGoesBelowTheHudNotOverIt) {
+    const Session s = sessionIn(420, 700, false);
+    const test::FixedMeasure font;
+    FrameStats stats;
+    stats.video.recording = true;
+    const FrameView f = buildFrame(s, stats, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.recordingMark.has_value());
+    const PixelRect& m = f.recordingMark->at;
+    const PixelRect& hud = f.layout.hud;
+    ASSERT_GT(hud.w, 0);
+    const bool overlap =
+        m.x < hud.x + hud.w && hud.x < m.x + m.w && m.y < hud.y + hud.h && hud.y < m.y + m.h;
+    EXPECT_FALSE(overlap) << "mark " << m.x << "," << m.y << " " << m.w << "x" << m.h << ", HUD "
+                          << hud.x << "," << hud.y << " " << hud.w << "x" << hud.h;
 }
 
 }  // namespace
