@@ -173,30 +173,22 @@ void App::processEvent(const SDL_Event& e) {
     }
 }
 
-int App::run() {
+void App::greet() {
     logLine("[I] Particle Sandbox: " + std::to_string(world().size()) +
             " particles. Press H for help.");
     for (const auto& [keys, what] : controls())
         logLine("    " + keys + ": " + what);
+}
+
+int App::run() {
+    greet();
     SDL_DisplayMode mode;
     const double refresh = SDL_GetCurrentDisplayMode(0, &mode) == 0 && mode.refresh_rate > 0
                                ? mode.refresh_rate
                                : 60.0;
-    auto last = std::chrono::steady_clock::now();
     while (session_->running()) {
         const auto frameStart = std::chrono::steady_clock::now();
-        const double real = std::chrono::duration<double>(frameStart - last).count();
-        last = frameStart;
-        ++fpsFrames_;
-        fpsSeconds_ += real;
-        if (fpsSeconds_ >= 0.5) {
-            stats_.fps = fpsFrames_ / fpsSeconds_;
-            fpsFrames_ = 0;
-            fpsSeconds_ = 0.0;
-        }
-        handleEvents();
-        update(std::min(real, 0.25));
-        render();
+        loopOnce(true);
         // Where vsync is not honoured (a virtual display), do not spin faster than the display.
         const double spent =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
@@ -207,11 +199,28 @@ int App::run() {
     return 0;
 }
 
-void App::handleEvents() {
+void App::loopOnce(bool mayWait) {
+    const auto frameStart = std::chrono::steady_clock::now();
+    const double real =
+        lastLoop_ ? std::chrono::duration<double>(frameStart - *lastLoop_).count() : 0.0;
+    lastLoop_ = frameStart;
+    ++fpsFrames_;
+    fpsSeconds_ += real;
+    if (fpsSeconds_ >= 0.5) {
+        stats_.fps = fpsFrames_ / fpsSeconds_;
+        fpsFrames_ = 0;
+        fpsSeconds_ = 0.0;
+    }
+    handleEvents(mayWait);
+    update(std::min(real, 0.25));
+    render();
+}
+
+void App::handleEvents(bool mayWait) {
     SDL_Event e;
     // Paused and idle: sleep until something happens (or a quarter second, for the messages).
-    if (session_->paused() && session_->interaction().mode() == Interaction::Mode::Idle &&
-        !panelSettling_) {
+    if (mayWait && session_->paused() &&
+        session_->interaction().mode() == Interaction::Mode::Idle && !panelSettling_) {
         if (SDL_WaitEventTimeout(&e, 250) != 0) processEvent(e);
     }
     while (SDL_PollEvent(&e) != 0)
@@ -292,36 +301,50 @@ void App::logControls() {
 }
 
 int App::runBenchmark() {
-    // The normal frame, one step of the scene's dt each, no frame limiter, vsync as configured.
-    if (session_->paused()) apply(cmd::TogglePause{});
-    (void)session_->takeNotices();
-    const double dt = session_->meta().dt;
-    double step = 0.0, draw = 0.0;
-    const int warmup = std::min(10, options_.benchFrames / 10);
-    for (int f = 0; f < warmup + options_.benchFrames && session_->running(); ++f) {
-        SDL_Event e;
-        while (SDL_PollEvent(&e) != 0)
-            processEvent(e);
-        // The budget is the frame's: a benchmark frame never drops its one step.
-        session_->update(dt / session_->timeScale(), now(), 1e9);
-        stats_.lastStepMs = session_->lastStepMs();
-        render();
-        if (f >= warmup) {
-            step += stats_.lastStepMs;
-            draw += stats_.lastDrawMs;
-        }
+    while (benchmarkFrame()) {
     }
+    (void)benchmarkReport();
+    return 0;
+}
+
+bool App::benchmarkFrame() {
+    // The normal frame, one step of the scene's dt each, no frame limiter, vsync as configured.
+    const int warmup = std::min(10, options_.benchFrames / 10);
+    if (benchFrame_ >= warmup + options_.benchFrames || !session_->running()) return false;
+    if (benchFrame_ == 0) {
+        if (session_->paused()) apply(cmd::TogglePause{});
+        (void)session_->takeNotices();
+    }
+    SDL_Event e;
+    while (SDL_PollEvent(&e) != 0)
+        processEvent(e);
+    // The budget is the frame's: a benchmark frame never drops its one step.
+    session_->update(session_->meta().dt / session_->timeScale(), now(), 1e9);
+    stats_.lastStepMs = session_->lastStepMs();
+    render();
+    if (benchFrame_ >= warmup) {
+        benchStepMs_ += stats_.lastStepMs;
+        benchDrawMs_ += stats_.lastDrawMs;
+    }
+    ++benchFrame_;
+    return true;
+}
+
+std::string App::benchmarkReport() {
     const double n = options_.benchFrames;
+    const double step = benchStepMs_, draw = benchDrawMs_;
     const std::string overlays = session_->overlayFlags();
     const SDL_Point out = sdl_->outputSize();
-    std::printf(
+    char line[320];
+    std::snprintf(
+        line, sizeof line,
         "bench: %zu particles, %d frames, %dx%d, renderer %s: step %.3f ms, draw %.3f ms, "
-        "frame %.3f ms (%.1f fps)%s\n",
+        "frame %.3f ms (%.1f fps)%s",
         world().size(), options_.benchFrames, out.x, out.y, sdl_->rendererName().c_str(), step / n,
         draw / n, (step + draw) / n, 1000.0 * n / (step + draw),
         overlays.empty() ? "" : (", overlays " + overlays).c_str());
-    std::fflush(stdout);
-    return 0;
+    logLine(line);
+    return line;
 }
 
 }  // namespace psb::app

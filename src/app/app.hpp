@@ -32,6 +32,7 @@
 //
 // No globals: everything the loop touches is a member.
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -86,6 +87,18 @@ class App {
     /// Runs the benchmark frames (see AppOptions) and prints mean step and draw times.
     int runBenchmark();
 
+    // The loops' parts, for a caller that owns the loop (the browser's, one pass per animation
+    // frame; see browser_loop.hpp).
+    /// Logs the greeting and the controls, as run() does first.
+    void greet();
+    /// One pass of run()'s loop: the events (while paused and idle, waiting up to a quarter
+    /// second for one if `mayWait`), the update by the real time since the last pass, the render.
+    void loopOnce(bool mayWait);
+    /// One frame of the benchmark; false once every frame has run (or the session stopped).
+    bool benchmarkFrame();
+    /// Prints the benchmark's line (after the frames) and returns it.
+    std::string benchmarkReport();
+
     // Driving the app without run()'s loop, for the tests.
     /// Handles one event as run() does.
     void processEvent(const SDL_Event& e);
@@ -108,6 +121,8 @@ class App {
     [[nodiscard]] const FrameView& lastFrame() const { return lastFrame_; }
     /// The control panel as the last render() built it.
     [[nodiscard]] const ControlPanel& panel() const { return panel_; }
+    /// The control panel, for a loop that sets its mode and takes its requests (the browser's).
+    [[nodiscard]] ControlPanel& controlPanel() { return panel_; }
 
   private:
     struct Message {
@@ -116,7 +131,7 @@ class App {
         std::string topic = {};  ///< Notice::topic
     };
 
-    void handleEvents();
+    void handleEvents(bool mayWait);
     void apply(const Command& c);
     void update(double realSeconds);
     void render();
@@ -151,6 +166,9 @@ class App {
     FrameStats stats_;
     int fpsFrames_ = 0;
     double fpsSeconds_ = 0.0;
+    std::optional<std::chrono::steady_clock::time_point> lastLoop_;  ///< loopOnce's last pass
+    int benchFrame_ = 0;  ///< benchmark frames run, the warm-up's included
+    double benchStepMs_ = 0.0, benchDrawMs_ = 0.0;  ///< summed after the warm-up
 };
 
 }  // namespace psb::app
