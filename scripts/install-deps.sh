@@ -4,7 +4,10 @@
 #   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick, xclip,
 #                                    clang with libFuzzer for the fuzz targets, and for the
 #                                    install test man, desktop-file-validate, file (which
-#                                    CPack's dependency scan uses), lintian and mmdebstrap)
+#                                    CPack's dependency scan uses), lintian and mmdebstrap),
+#                                    and what the web build and its test need (--web)
+#   scripts/install-deps.sh --web    build dependencies and the web build's: Emscripten,
+#                                    dpkg-dev (apt-get source unpacks with it), Chromium, npm
 set -euo pipefail
 
 packages=(
@@ -14,7 +17,14 @@ packages=(
   nlohmann-json3-dev libcli11-dev libboost-dev
   libtbb-dev libbox2d-dev
 )
+web_packages=(emscripten dpkg-dev chromium)
+# npm installs playwright-core for the web test; a Node.js from elsewhere brings its own npm.
+command -v npm >/dev/null || web_packages+=(npm)
+if [[ "${1:-}" == "--web" ]]; then
+  packages+=("${web_packages[@]}")
+fi
 if [[ "${1:-}" == "--test" ]]; then
+  packages+=("${web_packages[@]}")
   packages+=(xvfb xauth xdotool imagemagick x11-utils xclip)
   packages+=(clang libclang-rt-14-dev)
   packages+=(man-db desktop-file-utils file lintian mmdebstrap)

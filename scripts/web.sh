@@ -17,23 +17,8 @@ out=$root/build/web
 # look in Debian's module folder by itself.
 export NODE_PATH=${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs
 
-install_packages() {
-  scripts/install-deps.sh
-  local packages=(emscripten dpkg-dev "$@") missing=()
-  for p in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-  done
-  [[ ${#missing[@]} -eq 0 ]] && return 0
-  echo "Installing: ${missing[*]}" >&2
-  local sudo_cmd=()
-  [[ $(id -u) -ne 0 ]] && sudo_cmd=(sudo)
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends \
-    "${missing[@]}" >/dev/null
-}
-
 build() {
-  install_packages
+  scripts/install-deps.sh --web
   scripts/web/fetch-sources.sh "$deps"
   scripts/web/build-deps.sh "$deps"
   emcmake cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Release -DPSB_WEB_DEPS="$deps" \
@@ -55,14 +40,18 @@ case "${1:-}" in
     ;;
   test)
     build
-    install_packages chromium
+    # The desktop runner reads back the scene the page saves.
+    if [[ -z ${PSB_SIM:-} ]]; then
+      cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release >/dev/null
+      cmake --build build/release -j"$(nproc)" --target particle-sim
+      export PSB_SIM=$root/build/release/src/cli/particle-sim
+    fi
     exec tests/web/run.sh
     ;;
   bench)
     shift
     [[ $# -gt 0 ]] || { echo "usage: scripts/web.sh bench N..." >&2; exit 2; }
     build
-    install_packages chromium
     exec tests/web/run.sh bench "$@"
     ;;
   *)

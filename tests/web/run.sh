@@ -20,7 +20,7 @@ log=$work/serve.log
 python3 scripts/web/serve.py build/web 0 >"$log" 2>&1 &
 server=$!
 trap 'kill "$server" 2>/dev/null || true' EXIT
-for _ in $(seq 50); do
+for _ in $(seq 300); do
   grep -q '^Serving ' "$log" && break
   sleep 0.1
 done
