@@ -11,6 +11,8 @@ target_link_options(particle-sandbox PRIVATE
   # The page calls psb_web_uploaded() (a scene picked with Open) and reads the file system.
   "-sEXPORTED_FUNCTIONS=_main,_psb_web_uploaded"
   "-sEXPORTED_RUNTIME_METHODS=FS,ccall"
+  # The settings live in IndexedDB (platform/browser_settings.hpp).
+  -lidbfs.js
   -sMIN_WEBGL_VERSION=1
   -sMAX_WEBGL_VERSION=2
   # SHELL: keeps each option with its value (CMake drops repeated options otherwise).

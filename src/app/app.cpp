@@ -160,6 +160,11 @@ void App::apply(const Command& c) {
     flushNotices();
 }
 
+void App::warn(const std::string& text) {
+    logLine("[W] " + text);
+    messages_.push_back({text, now() + kMessageSeconds, {}});
+}
+
 void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
     if (gui_ && gui_->handleEvent(e)) return;

@@ -98,6 +98,10 @@ class App {
     bool benchmarkFrame();
     /// Prints the benchmark's line (after the frames) and returns it.
     std::string benchmarkReport();
+    /// Applies `c` as a key or the panel would.
+    void command(const Command& c) { apply(c); }
+    /// Logs `text` as a warning and shows it as a message.
+    void warn(const std::string& text);
 
     // Driving the app without run()'s loop, for the tests.
     /// Handles one event as run() does.

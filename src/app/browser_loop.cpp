@@ -8,6 +8,7 @@
 #include <emscripten.h>
 
 #include "platform/browser_files.hpp"
+#include "platform/browser_settings.hpp"
 
 // The page's functions (web/index.html), called if it has them.
 // clang-format off
@@ -27,6 +28,7 @@ namespace {
 struct BrowserLoop {
     std::unique_ptr<App> app;
     DownloadFolder downloads;
+    BrowserSettings settings;
     bool benchmark = false;
     int benchFrames = 0;
     std::chrono::steady_clock::time_point benchStart;
@@ -63,6 +65,11 @@ void pass(void* arg) {
             return;
         }
         loop.app->loopOnce(false);
+        std::string problem;
+        for (const Command& c : loop.settings.load(loop.app->session().view(), problem))
+            loop.app->command(c);
+        if (!problem.empty()) loop.app->warn(problem);
+        loop.settings.save(loop.app->session().view());
         if (loop.app->controlPanel().takeUploadRequest()) askForUpload(loop.downloads.folder());
         loop.downloads.offerNew();
         if (!loop.app->running()) ended("The sandbox has closed. Reload the page to start again.");
@@ -77,7 +84,8 @@ void pass(void* arg) {
 void runInBrowser(std::unique_ptr<App> app, const std::filesystem::path& folder, bool benchmark) {
     app->controlPanel().setBrowserFiles(true);
     if (!benchmark) app->greet();
-    auto* loop = new BrowserLoop{std::move(app), DownloadFolder(folder), benchmark, 0, {}};
+    auto* loop = new BrowserLoop{
+        std::move(app), DownloadFolder(folder), BrowserSettings("/settings"), benchmark, 0, {}};
     psb_js_started(loop);
     // 0: the browser's animation frame rate; false: return, the loop runs after main().
     emscripten_set_main_loop_arg(pass, loop, 0, false);

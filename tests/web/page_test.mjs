@@ -6,7 +6,9 @@
 //   4. Save downloads a scene file, which the desktop runner (particle-sim) reads back;
 //   5. a malformed scene opened with Open is refused with the file's name and the problem, and
 //      the program goes on; the saved scene opened the same way opens;
-//   6. a one-finger touch drag launches a particle, two fingers pinch-zoom the view.
+//   6. a one-finger touch drag launches a particle, two fingers pinch-zoom the view;
+//   7. what is shown is kept in the browser's storage over a reload, and a broken entry there
+//      is ignored with a message.
 // Screenshots of each step are written to PSB_WEB_SHOTS for a person to look at.
 import { execFileSync } from "child_process";
 import fs from "fs";
@@ -283,6 +285,33 @@ const ratio = (box1.x1 - box1.x0) / (box0.x1 - box0.x0);
 check(ratio > 0.45 && ratio < 0.7,
       `two fingers closing zoom out: the box ${box0.x1 - box0.x0} -> ${box1.x1 - box1.x0} px wide`);
 check((await count()) === pinchCount, "a pinch launches nothing");
+
+// 7. Settings kept over a reload; a broken entry ignored with a message.
+const started = () => waitFor("the program", async () => /particles/.test(await title()), 60);
+await page.keyboard.press("s");  // labels on
+await waitFor("the settings", () => page.evaluate(() => {
+  try { return Module.FS.readFile("/settings/settings.json", { encoding: "utf8" }).includes('"labels": true'); }
+  catch (e) { return false; }
+}));
+await page.waitForTimeout(500);  // the storage is written in the background
+await page.reload();
+await started();
+await waitFor("the settings applied", async () => (await log()).some((l) => l.includes("Labels on")));
+check((await log()).some((l) => l.includes("Labels on")), "labels shown again after a reload");
+await page.waitForTimeout(500);
+await shot("7-settings-kept");
+await page.evaluate(() => new Promise((done) => {
+  Module.FS.writeFile("/settings/settings.json", '{"show": {"labels": ');
+  Module.FS.syncfs(false, done);
+}));
+await page.reload();
+await started();
+await waitFor("the warning", async () => (await log()).some((l) => l.includes("settings kept")));
+const warning = (await log()).find((l) => l.includes("settings kept")) || "";
+check(/^\[W\] The settings kept in this browser were ignored/.test(warning),
+      `a broken settings entry is ignored with a message: ${warning}`);
+await page.waitForTimeout(300);
+await shot("7-settings-broken");
 
 check(errors.length === 0, "no script errors" + (errors.length ? ": " + errors.join("; ") : ""));
 await browser.close();
