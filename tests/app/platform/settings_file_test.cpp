@@ -42,7 +42,7 @@ TEST(SettingsFile, ABrokenFileIsRefusedWithTheReason) {
         return std::string("accepted");
     };
     EXPECT_EQ(why("{\"show\": {\"arrows\": tru"),
-              "not JSON: it breaks off or goes wrong at character 22");
+              "not JSON: it breaks off or goes wrong at character 24");
     EXPECT_EQ(why("[1, 2]"), "expected an object with \"show\"");
     EXPECT_EQ(why(R"({"show": {"labels": "yes"}})"), "show.labels: expected true or false");
 }
