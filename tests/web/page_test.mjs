@@ -8,7 +8,9 @@
 //      the program goes on; the saved scene opened the same way opens;
 //   6. a one-finger touch drag launches a particle, two fingers pinch-zoom the view;
 //   7. what is shown is kept in the browser's storage over a reload, and a broken entry there
-//      is ignored with a message.
+//      is ignored with a message;
+//   8. a browser without WebAssembly gets a clear message; one without WebGL (no GPU) runs the
+//      page with the software renderer.
 // Screenshots of each step are written to PSB_WEB_SHOTS for a person to look at.
 import { execFileSync } from "child_process";
 import fs from "fs";
@@ -312,6 +314,28 @@ check(/^\[W\] The settings kept in this browser were ignored/.test(warning),
       `a broken settings entry is ignored with a message: ${warning}`);
 await page.waitForTimeout(300);
 await shot("7-settings-broken");
+
+// 8. No WebAssembly: a message instead of the program. No GPU: the software renderer.
+const bare = await browser.newPage();
+await bare.addInitScript(() => {
+  Object.defineProperty(window, "WebAssembly", { value: undefined, configurable: true });
+});
+await bare.goto(url);
+const noWasm = await bare.evaluate(() => document.getElementById("problem").innerText);
+check(/cannot run WebAssembly/.test(noWasm), `without WebAssembly the page says so: ${noWasm}`);
+await bare.screenshot({ path: path.join(shots, "8-no-webassembly.png") });
+await bare.close();
+const noGpu = await chromium.launch({ ...launchOptions(), args: ["--disable-gpu", "--disable-3d-apis"] });
+const plain = await noGpu.newPage({ viewport: { width: 900, height: 600 } });
+const plainLog = [];
+plain.on("console", (m) => plainLog.push(m.text()));
+await plain.goto(url);
+for (let t = 0; t < 300 && !/particles/.test(await plain.title()); t++) await plain.waitForTimeout(100);
+await plain.waitForTimeout(500);
+await plain.screenshot({ path: path.join(shots, "8-no-webgl.png") });
+check(/particles/.test(await plain.title()) && plainLog.some((l) => /Renderer: software/.test(l)),
+      `without WebGL the software renderer draws: ${plainLog.find((l) => /Renderer/.test(l))}`);
+await noGpu.close();
 
 check(errors.length === 0, "no script errors" + (errors.length ? ": " + errors.join("; ") : ""));
 await browser.close();
