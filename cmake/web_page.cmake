@@ -27,3 +27,11 @@ add_custom_command(TARGET particle-sandbox POST_BUILD
   COMMAND ${CMAKE_COMMAND} -E copy_if_different ${psb_web_dir}/index.html
           $<TARGET_FILE_DIR:particle-sandbox>/index.html
   VERBATIM)
+
+# Emscripten's C++ exceptions are JavaScript ones: every call that may throw inside a function
+# with something to destroy goes out through a JavaScript trampoline. The drawing and the view
+# throw only when they cannot start (a font, a texture) or a screenshot fails, and catch nothing:
+# compiled without landing pads they draw faster, and a throw still reaches the app's catch
+# (what their frames held is not freed then; the program stops or goes on without that file).
+target_compile_options(psb_app_render PRIVATE -fignore-exceptions)
+target_compile_options(psb_app_view PRIVATE -fignore-exceptions)
