@@ -162,7 +162,19 @@ void App::apply(const Command& c) {
 
 void App::warn(const std::string& text) {
     logLine("[W] " + text);
+    show(text);
+}
+
+void App::inform(const std::string& text) {
+    logLine("[I] " + text);
+    show(text);
+}
+
+void App::show(const std::string& text) {
     messages_.push_back({text, now() + kMessageSeconds, {}});
+    if (messages_.size() > kShownMessages) {
+        messages_.erase(messages_.begin(), messages_.end() - kShownMessages);
+    }
 }
 
 void App::processEvent(const SDL_Event& e) {

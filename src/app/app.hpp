@@ -102,6 +102,8 @@ class App {
     void command(const Command& c) { apply(c); }
     /// Logs `text` as a warning and shows it as a message.
     void warn(const std::string& text);
+    /// Logs `text` and shows it as a message.
+    void inform(const std::string& text);
 
     // Driving the app without run()'s loop, for the tests.
     /// Handles one event as run() does.
@@ -141,6 +143,8 @@ class App {
     void render();
     /// Logs and shows what the session said.
     void flushNotices();
+    /// Shows `text` as the newest message.
+    void show(const std::string& text);
     /// The window as NAME.png and the text it shows as NAME.txt (screen_text.hpp).
     void writeScreenshot(const DrawStats& drawn);
     /// SDL's text input on while the edit prompt or a panel field wants characters.

@@ -71,7 +71,9 @@ void pass(void* arg) {
         if (!problem.empty()) loop.app->warn(problem);
         loop.settings.save(loop.app->session().view());
         if (loop.app->controlPanel().takeUploadRequest()) askForUpload(loop.downloads.folder());
-        loop.downloads.offerNew();
+        for (const std::string& name : loop.downloads.offerNew()) {
+            loop.app->inform("Downloaded " + name + " (the browser's downloads)");
+        }
         if (!loop.app->running()) ended("The sandbox has closed. Reload the page to start again.");
     } catch (const std::exception& e) {  // what main() reports on the desktop
         std::fprintf(stderr, "particle-sandbox: %s\n", e.what());

@@ -201,6 +201,11 @@ try {
   console.log("  the program's last lines:\n    " + (await log()).slice(-8).join("\n    "));
 }
 check(saved !== null && saved.endsWith(".json"), `Save downloads ${saved && path.basename(saved)}`);
+await waitFor("the download message", async () =>
+  (await log()).some((l) => l.startsWith("[I] Downloaded ")));
+check((await log()).some((l) => saved && l.startsWith("[I] Downloaded " + path.basename(saved))),
+      "the program says where the file went: " +
+      ((await log()).find((l) => l.startsWith("[I] Downloaded ")) || "nothing"));
 if (saved && sim) {
   let ok = true, out = "";
   try {

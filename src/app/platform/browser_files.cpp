@@ -44,7 +44,8 @@ void DownloadFolder::markSeen(const std::filesystem::path& file) {
     seen_[file.string()] = versionOf(file);
 }
 
-void DownloadFolder::offerNew() {
+std::vector<std::string> DownloadFolder::offerNew() {
+    std::vector<std::string> offered;
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(folder_, ec)) {
         const std::filesystem::path& file = entry.path();
@@ -54,7 +55,9 @@ void DownloadFolder::offerNew() {
         if (!added && it->second == v) continue;
         it->second = v;
         psb_js_download(file.c_str());
+        offered.push_back(file.filename().string());
     }
+    return offered;
 }
 
 void askForUpload(const std::filesystem::path& folder) {

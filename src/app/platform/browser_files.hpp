@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace psb::app {
 
@@ -20,8 +21,9 @@ class DownloadFolder {
 
     [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
     /// Hands the browser every file the user saves (scenes, CSV tables, PNG screenshots) written
-    /// in the folder since the last call; a file replaced by an atomic write counts as written.
-    void offerNew();
+    /// in the folder since the last call (a file replaced by an atomic write counts as written);
+    /// returns their names.
+    std::vector<std::string> offerNew();
     /// Takes `file` as already offered (an upload written there by the page).
     void markSeen(const std::filesystem::path& file);
 
