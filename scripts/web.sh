@@ -21,8 +21,10 @@ build() {
   scripts/install-deps.sh --web
   scripts/web/fetch-sources.sh "$deps"
   scripts/web/build-deps.sh "$deps"
+  # No video recording in the page (it would need FFmpeg built for WebAssembly).
   emcmake cmake -S . -B "$tree" -DCMAKE_BUILD_TYPE=Release -DPSB_WEB_DEPS="$deps" \
-    -DPSB_BUILD_TESTS=OFF -DPSB_BUILD_BENCH=OFF -DPSB_WARNINGS_AS_ERRORS=ON >/dev/null
+    -DPSB_BUILD_TESTS=OFF -DPSB_BUILD_BENCH=OFF -DPSB_WARNINGS_AS_ERRORS=ON -DPSB_VIDEO=OFF \
+    --no-warn-unused-cli >/dev/null
   cmake --build "$tree" -j"$(nproc)" --target particle-sandbox
   mkdir -p "$out"
   for f in index.html particle-sandbox.js particle-sandbox.wasm particle-sandbox.data; do
