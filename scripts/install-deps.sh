@@ -2,6 +2,7 @@
 # Installs the Debian packages Particle Sandbox needs, skipping those already present.
 #   scripts/install-deps.sh          build dependencies (compiler, CMake, ccache, libraries)
 #   scripts/install-deps.sh --test   also what the tests need (Xvfb, xdotool, ImageMagick, xclip,
+#                                    ffprobe (ffmpeg) to read the recorded videos back,
 #                                    clang with libFuzzer for the fuzz targets, and for the
 #                                    install test man, desktop-file-validate, file (which
 #                                    CPack's dependency scan uses), lintian and mmdebstrap),
@@ -16,6 +17,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   nlohmann-json3-dev libcli11-dev libboost-dev
   libtbb-dev libbox2d-dev
+  libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
 )
 web_packages=(emscripten dpkg-dev chromium)
 # npm installs playwright-core for the web test; a Node.js from elsewhere brings its own npm.
@@ -25,7 +27,7 @@ if [[ "${1:-}" == "--web" ]]; then
 fi
 if [[ "${1:-}" == "--test" ]]; then
   packages+=("${web_packages[@]}")
-  packages+=(xvfb xauth xdotool imagemagick x11-utils xclip)
+  packages+=(xvfb xauth xdotool imagemagick x11-utils xclip ffmpeg)
   packages+=(clang libclang-rt-14-dev)
   packages+=(man-db desktop-file-utils file lintian mmdebstrap)
 fi

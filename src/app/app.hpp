@@ -46,6 +46,7 @@
 #include "gui/gui_context.hpp"
 #include "platform/input.hpp"
 #include "platform/sdl_context.hpp"
+#include "platform/video_recorder.hpp"
 #include "render/draw_layer.hpp"
 #include "session/session.hpp"
 #include "view/frame_view.hpp"
@@ -69,6 +70,9 @@ struct AppOptions {
     /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
     std::string benchOverlays;
     std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
+    /// Record a video from the start (--record); with --bench, every frame, waiting for the
+    /// encoder rather than leaving frames out, so that the figure is what recording sustains.
+    std::optional<VideoFormat> record;
     /// Log "[I] Control NAME at X Y" (window points, the control's centre) for every control of
     /// the panel whenever their places change, for scripts that drive the window.
     bool logControls = false;
@@ -81,6 +85,8 @@ class App {
     explicit App(const AppOptions& options);
     App(const App&) = delete;
     App& operator=(const App&) = delete;
+    /// Completes a video still recording.
+    ~App();
 
     /// Runs until the session stops running (Esc, the window closed); returns the exit code.
     int run();
@@ -96,7 +102,8 @@ class App {
     void loopOnce(bool mayWait);
     /// One frame of the benchmark; false once every frame has run (or the session stopped).
     bool benchmarkFrame();
-    /// Prints the benchmark's line (after the frames) and returns it.
+    /// Prints the benchmark's lines (after the frames: the mean step and draw times, the wall
+    /// clock's time a frame) and returns them as one.
     std::string benchmarkReport();
     /// Applies `c` as a key or the panel would.
     void command(const Command& c) { apply(c); }
@@ -151,6 +158,19 @@ class App {
     void updateTextInput();
     void logControls();
     [[nodiscard]] double now() const;
+    /// Logs `text` and shows it as a message; `level` as the session's notices.
+    void tell(const std::string& text, Notice::Level level = Notice::Level::Info);
+
+    // Video (app_video.cpp): Ctrl+R starts and stops a VideoRecorder fed from render().
+    void toggleVideo(const VideoSettings& settings);
+    void startVideo(const VideoSettings& settings, VideoRecorder::Pacing pacing);
+    /// Completes the video and says where it is; `why` (if any) says why it stopped by itself.
+    void stopVideo(const std::string& why = {});
+    /// After the frame is drawn, before the recording mark: the recorded area into the video.
+    void captureVideo();
+    /// The window's pixels a recording with `settings` takes: all of it, or right of the panel.
+    [[nodiscard]] SDL_Rect videoArea(const VideoSettings& settings) const;
+    void updateVideoStatus();
 
     AppOptions options_;
     std::unique_ptr<SdlContext> sdl_;
@@ -170,13 +190,19 @@ class App {
     std::optional<std::filesystem::path> lastScreenshot_;
     FrameView lastFrame_;
 
+    std::unique_ptr<VideoRecorder> video_;
+    VideoSettings videoSettings_;  ///< the running recording's
+    SDL_Rect videoArea_{};
+    double videoStart_ = 0.0;  ///< now() when it started
+
     // Frame statistics, smoothed for display.
     FrameStats stats_;
     int fpsFrames_ = 0;
     double fpsSeconds_ = 0.0;
     std::optional<std::chrono::steady_clock::time_point> lastLoop_;  ///< loopOnce's last pass
     int benchFrame_ = 0;  ///< benchmark frames run, the warm-up's included
-    double benchStepMs_ = 0.0, benchDrawMs_ = 0.0;  ///< summed after the warm-up
+    double benchStepMs_ = 0.0, benchDrawMs_ = 0.0;         ///< summed after the warm-up
+    std::chrono::steady_clock::time_point benchMeasured_;  ///< the first frame after the warm-up
 };
 
 }  // namespace psb::app

@@ -84,6 +84,10 @@ int main(int argc, char** argv) {
                        : "expected letters from VLKD, got '" + keys + "'";
         });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
+    std::string record;
+    cli.add_option("--record", record,
+                   "Record a video from the start, into --screenshot-dir: mp4, webm or gif "
+                   "(Ctrl+R stops); with --bench, every frame (what recording sustains)");
     cli.add_flag("--log-controls", options.logControls,
                  "Log where each control of the panel is when they move (for scripted input)");
     try {
@@ -118,6 +122,15 @@ int main(int argc, char** argv) {
     }
     if (const auto why = psb::app::outputDirectoryProblem(screenshotDir)) {
         return badOption("--screenshot-dir: " + *why);
+    }
+    if (cli.count("--record") > 0) {
+        options.record = psb::app::parseVideoFormat(record);
+        if (!options.record) {
+            return badOption("--record: expected mp4, webm or gif, got '" + record + "'");
+        }
+        if (const auto why = psb::app::videoFormatProblem(*options.record)) {
+            return badOption("--record: " + *why);
+        }
     }
     if (!scene.empty()) options.scene = scene;
     options.screenshotDir = screenshotDir;

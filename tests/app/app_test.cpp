@@ -301,5 +301,56 @@ TEST_F(AppTest, F12WritesTheWindowAsAPng) {
     stbi_image_free(px);
 }
 
+TEST_F(AppTest, CtrlRRecordsTheBoxsSideOfTheWindowAndCtrlRAgainSavesIt) {
+    if (const auto why = videoFormatProblem(VideoFormat::Mp4)) GTEST_SKIP() << *why;
+    App app(options());
+    key(app, SDLK_r, KMOD_LCTRL);
+    app.frame(0.0);
+    // The mark says so on the screen; the panel's button too.
+    ASSERT_TRUE(app.lastFrame().recordingMark.has_value());
+    EXPECT_NE(app.lastFrame().recordingMark->label.find("REC 0:00 MP4"), std::string::npos);
+    const auto said = [&](const std::string& text) {
+        for (const std::string& m : app.messages())
+            if (m.find(text) != std::string::npos) return true;
+        return false;
+    };
+    EXPECT_TRUE(said("Recording video (MP4, ")) << ::testing::PrintToString(app.messages());
+    for (int i = 0; i < 20; ++i) {
+        SDL_Delay(20);  // real time: a frame every 20 ms fills about one 60 Hz slot in each
+        app.frame(0.02);
+    }
+    key(app, SDLK_r, KMOD_LCTRL);
+    app.frame(0.0);
+    EXPECT_FALSE(app.lastFrame().recordingMark.has_value());
+    EXPECT_TRUE(said("Saved video " + dir_.string())) << ::testing::PrintToString(app.messages());
+    std::vector<fs::path> videos;
+    for (const auto& e : fs::directory_iterator(dir_))
+        if (e.path().extension() == ".mp4") videos.push_back(e.path());
+    ASSERT_EQ(videos.size(), 1u);
+    // Plain R still restarts: no second video.
+    key(app, SDLK_r);
+    app.frame(0.0);
+    EXPECT_FALSE(app.lastFrame().recordingMark.has_value());
+}
+
+TEST_F(AppTest, AVideoStillRecordingIsCompletedWhenTheAppCloses) {
+    if (const auto why = videoFormatProblem(VideoFormat::Gif)) GTEST_SKIP() << *why;
+    AppOptions o = options();
+    o.record = VideoFormat::Gif;
+    {
+        App app(o);
+        for (int i = 0; i < 5; ++i) {
+            SDL_Delay(40);
+            app.frame(0.04);
+        }
+    }
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir_))
+        files.push_back(e.path());
+    ASSERT_EQ(files.size(), 1u);
+    EXPECT_EQ(files[0].extension(), ".gif");  // complete: no part file left
+    EXPECT_GT(fs::file_size(files[0]), 100u);
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -83,9 +83,14 @@ double deepestInObstacle(const World& w) {
 
 TEST(PresetDemonstrations, GaltonBoardInTheExactModeFillsItsBinsAsTheBinomialSays) {
     // The preset as it opens (the exact mode) until its spout is empty (1000 balls, one every
-    // 0.05 s) and 3 s more for the last ball to land: about 12 s in Release. The first few
+    // 0.05 s) and 3 s more for the last ball to land: 12 to 30 s in Release. The first few
     // hundred balls alone are no cheaper check: balls that meet in a gap between two pegs
     // sometimes stay there, wedged, until later balls knock them through.
+#if defined(__SANITIZE_ADDRESS__)
+    // 1.3 million events take 12 to 30 s in Release and over the 5-minute limit under the
+    // sanitizers: the release stage runs it; the shorter Galton tests run under both.
+    GTEST_SKIP() << "too long under the sanitizers (the release stage runs it)";
+#endif
     const Scene s = loadScene(kScenes / "09-galton-board.json");
     ASSERT_EQ(s.solver.mode, StepMode::Exact);
     ASSERT_EQ(s.droppers.size(), 1u);

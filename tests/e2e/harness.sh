@@ -6,12 +6,12 @@
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
 pass() { echo "ok: $*"; }
 
-# need_test_tools: Xvfb, xdotool, ImageMagick and xclip, installed (scripts/install-deps.sh --test)
+# need_test_tools: Xvfb, xdotool, ImageMagick, xclip and ffprobe, installed (scripts/install-deps.sh --test)
 # when one is missing.
 need_test_tools() {
     local here tool
     here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-    for tool in Xvfb xdpyinfo xdotool import convert xclip; do
+    for tool in Xvfb xdpyinfo xdotool import convert xclip ffprobe; do
         if ! command -v "$tool" >/dev/null; then
             "$here/../../scripts/install-deps.sh" --test
             break

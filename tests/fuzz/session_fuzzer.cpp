@@ -115,7 +115,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 52)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 54)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -264,6 +264,14 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                 static_cast<cmd::DataTable>(in.ConsumeIntegralInRange<int>(0, 3))};
         case 51:
             return cmd::SetRecording{in.ConsumeBool(), in.ConsumeIntegralInRange<int>(-2, 2000)};
+        case 52: {
+            const VideoSettings v{static_cast<VideoFormat>(in.ConsumeIntegralInRange<int>(0, 2)),
+                                  in.ConsumeBool()};
+            return in.ConsumeBool() ? cmd::ToggleVideo{v} : cmd::ToggleVideo{};
+        }
+        case 53:
+            return cmd::SetVideoSettings{
+                {static_cast<VideoFormat>(in.ConsumeIntegralInRange<int>(0, 2)), in.ConsumeBool()}};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }
@@ -319,6 +327,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         (void)session.takeNotices();
         (void)session.takeScreenshotRequest();
         (void)session.takeClipboardText();
+        (void)session.takeVideoToggle();
         checkWorld(session.world(), k);
     }
     return 0;

@@ -77,6 +77,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             tools(s, pixelRatio);
             readouts(s);
             data(s);
+            video(s, stats.video);
             selected(s);
             allParticles(s);
             engine(s, stats);

@@ -103,6 +103,8 @@ class ControlPanel {
     void readouts(const Session& s);
     /// Recording, and the tables' Export and Copy buttons (section_data.cpp).
     void data(const Session& s);
+    /// Video recording: format, area, Record / Stop, where the last one went (section_video.cpp).
+    void video(const Session& s, const VideoStatus& status);
     void engine(const Session& s, const FrameStats& stats);
     void selected(const Session& s);
     /// The Selected particle section's content (section_particles.cpp).

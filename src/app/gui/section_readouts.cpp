@@ -15,6 +15,7 @@
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
 #include "session/units.hpp"
+#include "view/gas_lines.hpp"
 
 namespace psb::app {
 
@@ -78,6 +79,10 @@ void ControlPanel::readouts(const Session& s) {
                 "The total momentum, the sum of m v: walls and gravity change it, collisions "
                 "between particles never do");
         readout("  size", quantity(o.momentum.norm(), "kg m/s", false));
+        if (const std::optional<GasReading> gas = s.gasReading()) {
+            for (const GasLine& line : gasLines(*gas))
+                readout(line.name.c_str(), line.value, line.help.c_str());
+        }
         ImGui::EndTable();
     }
 

@@ -145,7 +145,7 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
         case SDLK_PERIOD:
             return {cmd::SetTimeScale{state.timeScale * 2.0}};
         case SDLK_r:
-            if (ctrl) return {};
+            if (ctrl) return {cmd::ToggleVideo{}};
             return {cmd::Restart{}};
         case SDLK_e:
             return {restitutionStep(state.restitution, shift ? +1 : -1)};

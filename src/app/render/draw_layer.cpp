@@ -125,3 +125,24 @@ void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {
 }
 
 }  // namespace psb::app
+
+namespace psb::app {
+
+void DrawLayer::drawRecordingMark(const RecordingMarkView& mark) {
+    // A dark plate, a red dot at its left and the label in red: read over any scene.
+    const PixelRect& r = mark.at;
+    const int dot = hudFont_.lineHeight() / 2;
+    const SDL_Rect plate{r.x - dot - 6, r.y, r.w + dot + 6, r.h};
+    SDL_SetRenderDrawBlendMode(sdl_, SDL_BLENDMODE_BLEND);
+    SDL_SetRenderDrawColor(sdl_, 20, 20, 24, 220);
+    SDL_RenderFillRect(sdl_, &plate);
+    const SDL_Rect red{plate.x + 5, r.y + (r.h - dot) / 2, dot, dot};
+    SDL_SetRenderDrawColor(sdl_, 235, 60, 50, 255);
+    SDL_RenderFillRect(sdl_, &red);
+    text_.clear();
+    hudFont_.layout(mark.label, static_cast<float>(r.x + 4), static_cast<float>(r.y + 4),
+                    SDL_Color{255, 110, 100, 255}, text_);
+    hudFont_.draw(text_);
+}
+
+}  // namespace psb::app

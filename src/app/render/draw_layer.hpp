@@ -32,6 +32,9 @@ class DrawLayer {
 
     /// Draws `frame` into the renderer's back buffer (the caller presents it).
     DrawStats draw(const FrameView& frame);
+    /// The recording mark (a red dot and its label), drawn after the frame is captured for the
+    /// video so that the video does not show it.
+    void drawRecordingMark(const RecordingMarkView& mark);
 
   private:
     void drawLaunch(const Camera& camera, const LaunchPreviewView& launch);

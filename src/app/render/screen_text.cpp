@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "view/gas_lines.hpp"
+
 namespace psb::app {
 namespace {
 
@@ -33,6 +35,13 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     section(out, "Messages", o.messages);
     section(out, "Inspector", o.inspector);
     if (o.showProfile) section(out, "Profile", o.profile);
+    if (frame.recordingMark) section(out, "Recording", {frame.recordingMark->label});
+    if (frame.gas) {
+        std::vector<std::string> lines;
+        for (const GasLine& l : gasLines(*frame.gas))
+            lines.push_back(l.name + ": " + l.value);
+        section(out, "Gas", lines);
+    }
     if (o.showHelp) section(out, "Help", o.help);
     if (frame.bins && frame.layout.bins.w > 0) {
         std::vector<std::string> lines = frame.bins->legend;

@@ -11,6 +11,16 @@
 
 namespace psb::app {
 
+void readPixels(SDL_Renderer* renderer, const SDL_Rect& area, std::uint8_t* rgba) {
+    if (SDL_RenderReadPixels(renderer, &area, SDL_PIXELFORMAT_RGBA32, rgba, area.w * 4) != 0) {
+        throw std::runtime_error(std::string("cannot read the window's pixels: ") + SDL_GetError());
+    }
+    const std::size_t bytes =
+        static_cast<std::size_t>(area.w) * static_cast<std::size_t>(area.h) * 4;
+    for (std::size_t i = 3; i < bytes; i += 4)
+        rgba[i] = 255;
+}
+
 std::string capturePng(SDL_Renderer* renderer) {
     int w = 0, h = 0;
     if (SDL_GetRendererOutputSize(renderer, &w, &h) != 0 || w <= 0 || h <= 0) {
@@ -37,14 +47,19 @@ std::string capturePng(SDL_Renderer* renderer) {
     return png;
 }
 
-std::filesystem::path screenshotPath(const std::filesystem::path& dir, const std::tm& when) {
+std::filesystem::path screenshotPath(const std::filesystem::path& dir, const std::tm& when,
+                                     const std::string& extension) {
     char stamp[32];
     std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &when);
     const std::string base = std::string("particle-sandbox-") + stamp;
-    std::filesystem::path p = dir / (base + ".png");
-    std::error_code ec;
-    for (int k = 2; std::filesystem::exists(p, ec); ++k)
-        p = dir / (base + "-" + std::to_string(k) + ".png");
+    std::filesystem::path p = dir / (base + extension);
+    const auto taken = [](const std::filesystem::path& q) {
+        std::error_code ec;
+        return std::filesystem::exists(q, ec) ||
+               std::filesystem::exists(std::filesystem::path(q.string() + ".part"), ec);
+    };
+    for (int k = 2; taken(p); ++k)
+        p = dir / (base + "-" + std::to_string(k) + extension);
     return p;
 }
 

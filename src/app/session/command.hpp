@@ -27,6 +27,7 @@
 
 #include "session/box_area.hpp"
 #include "session/edit_prompt.hpp"
+#include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app::cmd {
@@ -377,6 +378,17 @@ struct SetRecording {
     bool on = true;
     int every = 0;
 };
+/// Starts a video recording with `settings` (none: the last used), or stops the one running
+/// (Ctrl+R, the Data section). The app's recorder writes it; the session keeps the choice.
+struct ToggleVideo {
+    static constexpr Traits traits = kPassive;
+    std::optional<VideoSettings> settings;
+};
+/// The format and area the next video records with (the Video section); not a recording.
+struct SetVideoSettings {
+    static constexpr Traits traits = kPastPrompt;
+    VideoSettings settings;
+};
 /// Esc: closes what is open (a dialog, the help, the edit prompt); with nothing open, quits,
 /// asking first when there are unsaved changes.
 struct Back {
@@ -403,6 +415,6 @@ using Command = std::variant<
     cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls,
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
-    cmd::ExportTable, cmd::CopyTable, cmd::SetRecording>;
+    cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings>;
 
 }  // namespace psb::app

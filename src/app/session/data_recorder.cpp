@@ -22,9 +22,23 @@ void DataRecorder::restart(World& world) {
     collisions_.clear();
 }
 
+void DataRecorder::restartRun(World& world) {
+    run_.clear();
+    runStride_ = 1;
+    runSkipped_ = 0;
+    stop(world);
+}
+
 void DataRecorder::sample(const ObservablesSample& s) {
     if (!run_.empty() && s.time < run_.back().time) dropAfter(s.time);
-    if (!run_.empty() && s.time == run_.back().time) return;  // nothing stepped
+    if (!run_.empty() && s.time == run_.back().time) {
+        // Nothing stepped, but the world may have changed (particles placed before Play): the
+        // row for this time is the state as last seen.
+        ObservablesSample kept = s;
+        kept.collisionRate = run_.size() > 1 ? rateSince(run_[run_.size() - 2], kept) : 0.0;
+        run_.back() = kept;
+        return;
+    }
     if (!run_.empty() && ++runSkipped_ < runStride_) return;
     runSkipped_ = 0;
     ObservablesSample kept = s;

@@ -31,7 +31,11 @@ class DataRecorder {
 
     /// A new scene: the run's series starts over and recording stops.
     void restart(World& world);
-    /// The frame's observables (Monitor::observables), appended to the run's series.
+    /// The same scene run again (Restart): the run's series starts over and recording stops;
+    /// what was recorded stays, to export, until the next recording starts.
+    void restartRun(World& world);
+    /// The frame's observables (Monitor::observables), appended to the run's series; at the
+    /// same time as the last sample (paused), in its place.
     void sample(const ObservablesSample& s);
 
     /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state

@@ -14,11 +14,13 @@ void Monitor::restart(const World& world, bool newScene) {
     }
     now_ = sampleObservables(world);
     changedSinceMeasure_ = true;
+    gas_.restart();
 }
 
 void Monitor::edited(const World& world) {
     accuracy_.resetReference(monitoredEnergy(world));
     changedSinceMeasure_ = true;
+    gas_.restart();
 }
 
 void Monitor::resetEnergy(const World& world) {
@@ -27,6 +29,7 @@ void Monitor::resetEnergy(const World& world) {
 
 void Monitor::showFrame(const World& world) {
     changedSinceMeasure_ = true;
+    gas_.restart();
     now_ = sampleObservables(world);
     accuracy_.resetReference(monitoredEnergy(world));
 }
@@ -50,7 +53,10 @@ void Monitor::frameDone(const World& world, bool record) {
     collisions_ += world.counters().collisions;
     now_ = sampleObservables(world);
     now_.collisions = collisions_;
-    if (record) series_.record(now_);
+    if (record) {
+        series_.record(now_);
+        gas_.sample(world);
+    }
 }
 
 }  // namespace psb::app

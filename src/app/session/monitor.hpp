@@ -1,7 +1,8 @@
 #pragma once
 // What the session measures as the world runs, for the HUD and the plots: the accuracy
-// indicators (accuracy.hpp) and the time series of the world's observables, sampled once a
-// frame from the moment a scene opens, so that the plots have a history when switched on.
+// indicators (accuracy.hpp), the time series of the world's observables, sampled once a
+// frame from the moment a scene opens, so that the plots have a history when switched on, and
+// the gas instruments (gas_gauges.hpp).
 
 #include <cstddef>
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "session/accuracy.hpp"
+#include "session/gas_gauges.hpp"
 
 namespace psb::app {
 
@@ -38,6 +40,8 @@ class Monitor {
     [[nodiscard]] const TimeSeries& series() const { return series_; }
     /// The world's observables as the last frame left them.
     [[nodiscard]] const ObservablesSample& observables() const { return now_; }
+    /// The gas instruments over the frames recorded (gas_gauges.hpp).
+    [[nodiscard]] const GasGauges& gas() const { return gas_; }
 
   private:
     AccuracyMonitor accuracy_;
@@ -46,6 +50,7 @@ class Monitor {
     TimeSeries series_{kSeriesSamples};
     std::uint64_t collisions_ = 0;  ///< since the scene opened, for series_
     ObservablesSample now_;
+    GasGauges gas_;
     bool changedSinceMeasure_ = true;  ///< the world changed other than by stepping
 };
 

@@ -58,13 +58,17 @@ void Session::sceneOpened() {
     fit();
 }
 
-void Session::startOver(bool newScene) {
+void Session::startOver(bool newScene, bool keepRecorded) {
     tools_.letGo();
     tools_.selection.clear();
     history_.startOver();
     clock_.restart();
     monitor_.restart(doc_.world, newScene);
-    if (newScene) data_.restart(doc_.world);
+    if (newScene && keepRecorded) {
+        data_.restartRun(doc_.world);
+    } else if (newScene) {
+        data_.restart(doc_.world);
+    }
     if (newScene) view_.arrowSeconds = arrowSecondsFor(doc_.world);
 }
 

@@ -58,6 +58,7 @@
 #include "session/scene_io.hpp"
 #include "session/sim_clock.hpp"
 #include "session/tools.hpp"
+#include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -149,6 +150,11 @@ class Session {
     [[nodiscard]] bool takeScreenshotRequest();
     /// The text a CopyTable command put on the clipboard, once: the app hands it to the system.
     [[nodiscard]] std::optional<std::string> takeClipboardText();
+    /// The settings of a ToggleVideo command, once: the app starts a recording with them, or
+    /// stops the one running.
+    [[nodiscard]] std::optional<VideoSettings> takeVideoToggle();
+    /// The video settings last asked for (Ctrl+R records with them).
+    [[nodiscard]] const VideoSettings& videoSettings() const { return videoSettings_; }
 
     // Data out (data_recorder.hpp, session_data.cpp).
     /// The run's series, the recorded trajectories and collisions.
@@ -245,6 +251,11 @@ class Session {
     [[nodiscard]] const TimeSeries& series() const { return monitor_.series(); }
     /// The world's observables as the last update left them (summed once a frame).
     [[nodiscard]] const ObservablesSample& observables() const { return monitor_.observables(); }
+    /// The gas instruments' reading (gas_gauges.hpp), when they apply to the world shown.
+    [[nodiscard]] std::optional<GasReading> gasReading() const {
+        if (!gasGaugesApply(doc_.world)) return std::nullopt;
+        return monitor_.gas().reading(doc_.world);
+    }
 
     // The clock (sim_clock.hpp).
     [[nodiscard]] bool paused() const { return clock_.paused; }
@@ -348,6 +359,8 @@ class Session {
     void handle(const cmd::ExportTable& c);
     void handle(const cmd::CopyTable& c);
     void handle(const cmd::SetRecording& c);
+    void handle(const cmd::ToggleVideo& c);
+    void handle(const cmd::SetVideoSettings& c);
 
     // The hand's gestures (session_hand.cpp).
     void click(const ReleaseResult& r);
@@ -403,8 +416,9 @@ class Session {
     /// A scene was opened: everything starts over from it, the view fitted to its box.
     void sceneOpened();
     /// A world was put in place (a new scene, or an undo when `newScene` is false): the tools,
-    /// the recorded past, the clock and the monitor start over from it.
-    void startOver(bool newScene);
+    /// the recorded past, the clock and the monitor start over from it. A Restart
+    /// (`keepRecorded`) keeps what the Data section recorded, to export.
+    void startOver(bool newScene, bool keepRecorded = false);
     /// Viewing a past frame and about to change the world: carry on from that frame.
     void leavePast();
     /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.
@@ -440,6 +454,8 @@ class Session {
     bool screenshotRequested_ = false;
     DataRecorder data_;
     std::optional<std::string> clipboard_;
+    VideoSettings videoSettings_;
+    std::optional<VideoSettings> videoToggle_;
     std::optional<std::filesystem::path> lastExport_;
     std::string exportError_;
     std::vector<Notice> notices_;

@@ -117,6 +117,21 @@ void Session::handle(const cmd::CopyTable& c) {
             rows, rows == 1 ? "" : "s", tableName(c.table)));
 }
 
+void Session::handle(const cmd::ToggleVideo& c) {
+    if (c.settings) videoSettings_ = *c.settings;
+    videoToggle_ = videoSettings_;
+}
+
+void Session::handle(const cmd::SetVideoSettings& c) {
+    videoSettings_ = c.settings;
+}
+
+std::optional<VideoSettings> Session::takeVideoToggle() {
+    std::optional<VideoSettings> toggle;
+    toggle.swap(videoToggle_);
+    return toggle;
+}
+
 void Session::handle(const cmd::SetRecording& c) {
     if (!c.on) {
         if (!data_.recording()) return;

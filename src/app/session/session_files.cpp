@@ -142,9 +142,10 @@ void Session::handle(const cmd::Restart&) {
     // The set-up stays the one shared with the document (and the scene as loaded with undo).
     const std::shared_ptr<const World> setup = doc_.setup;
     const bool edited = doc_.editedSinceSetup;
+    const bool wasRecording = data_.recording();
     doc_.world = World(*setup);
     ++doc_.generation;  // views keyed to particles (trails) start over
-    startOver(true);
+    startOver(true, true);
     doc_.setup = setup;
     doc_.editedSinceSetup = edited;
     // Back to the scene exactly as its file has it: nothing is unsaved. Any other set-up keeps
@@ -156,6 +157,10 @@ void Session::handle(const cmd::Restart&) {
         (loaded ? "the scene as it opened" : "the set-up as Play last started it") + " (" +
         std::to_string(doc_.world.size()) + " particles, t = " + quantity(doc_.world.time(), "s") +
         ")");
+    if (wasRecording) {
+        say("Recording stopped: what it recorded stays in the Data section to export until X "
+            "records again");
+    }
 }
 
 void Session::handle(const cmd::Revert&) {

@@ -16,6 +16,8 @@ namespace psb::app {
 class SimClock {
   public:
     static constexpr double kMinScale = 1.0 / 16.0, kMaxScale = 8.0;
+    /// Real seconds the first frame after a pause counts at most: one frame at 60 Hz.
+    static constexpr double kResumeSeconds = 1.0 / 60.0;
 
     /// Requested simulated seconds per real second.
     [[nodiscard]] double scale() const { return scale_; }
@@ -48,6 +50,10 @@ class SimClock {
     void run(double realSeconds, double now, double dt, double budgetMs,
              std::chrono::steady_clock::time_point start, Step&& step) {
         lastNow_ = now;
+        // The real time since the last frame was spent paused (an idle paused window draws
+        // a frame every quarter second): it owes the world nothing but one frame's worth.
+        if (!paused && pausedLastFrame_) realSeconds = std::min(realSeconds, kResumeSeconds);
+        pausedLastFrame_ = paused;
         if (!paused) {
             accumulator_ += realSeconds * scale_;
             int steps = 0;
@@ -83,6 +89,7 @@ class SimClock {
     double lastNow_ = 0.0;
     double accumulator_ = 0.0;  ///< simulated seconds owed
     double lastStepMs_ = 0.0;
+    bool pausedLastFrame_ = false;
 };
 
 }  // namespace psb::app

@@ -59,6 +59,14 @@ std::string speedLabel(const CappedVelocity& v) {
 
 }  // namespace
 
+std::string recordingLabel(const VideoStatus& video) {
+    const auto whole = static_cast<long>(video.seconds);
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "REC %ld:%02ld %s - Ctrl+R stops", whole / 60, whole % 60,
+                  toString(video.format));
+    return buf;
+}
+
 std::string dropperLabel(const Dropper& d) {
     if (d.balls == 0) return "dropper: empty";
     return "dropper: " + std::to_string(d.balls) + (d.balls == 1 ? " ball left" : " balls left");
@@ -115,6 +123,16 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     f.obstaclePreview = session.obstaclePreview();
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
+    f.gas = session.gasReading();
+    if (stats.video.recording) {
+        // The top-right corner of the box's side of the window, clear of the HUD at its left.
+        RecordingMarkView mark;
+        mark.label = recordingLabel(stats.video);
+        const PixelPoint size = textBoxSize(hudFont, {mark.label});
+        mark.at = {session.camera().viewportWidth() - size.x - kPanelMargin, kPanelMargin, size.x,
+                   size.y};
+        f.recordingMark = mark;
+    }
     std::uint64_t stillToDrop = 0;
     for (const Dropper& d : world.droppers()) {
         stillToDrop += d.balls;

@@ -3,6 +3,7 @@
 // frame-time figures only the loop knows), the drawing layer (render/draw_layer.hpp) draws it.
 // Nothing in the view draws or includes SDL: text is measured through TextMeasure.
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -13,6 +14,8 @@
 #include <particle_sandbox/world.hpp>
 
 #include "session/camera.hpp"
+#include "session/gas_gauges.hpp"
+#include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 #include "view/bin_histogram.hpp"
 #include "view/box_area.hpp"
@@ -40,6 +43,13 @@ struct BoxMarkerView {
     std::string label;
 };
 
+/// A video is being recorded: a red mark in the box's top-right corner, drawn after the frame
+/// is captured, so that it is on the screen and not in the video.
+struct RecordingMarkView {
+    PixelRect at;       ///< the mark's box, pixels
+    std::string label;  ///< "REC 0:12 MP4 - Ctrl+R stops"
+};
+
 /// A ball dropper: its spout above where a ball starts, and what it has left.
 struct DropperView {
     Vec2 at = Vec2::Zero();  ///< where a ball starts (the middle of the spread), metres
@@ -62,11 +72,28 @@ struct FrameView {
     std::optional<Obstacle> selectedObstacle;  ///< drawn highlighted
     std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
     std::optional<BoxMarkerView> boxMarker;
+    std::optional<RecordingMarkView> recordingMark;
+    /// The gas instruments' reading, when they apply (the panel's Readouts show it).
+    std::optional<GasReading> gas;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     std::vector<DropperView> droppers;
     Overlays overlays;
     PanelLayout layout;
     std::string title;
+};
+
+/// The video the app's recorder is writing (platform/video_recorder.hpp), as the frame loop
+/// knows it.
+struct VideoStatus {
+    bool recording = false;
+    VideoFormat format = VideoFormat::Mp4;
+    double seconds = 0.0;     ///< recorded so far, real time
+    std::size_t frames = 0;   ///< captured so far
+    std::size_t dropped = 0;  ///< frames left out because the encoder was behind
+    std::string lastFile;     ///< the last video written (absolute); empty: none yet
+    /// Why this build or machine cannot record each format (by VideoFormat: no FFmpeg, no
+    /// encoder); empty: it can.
+    std::array<std::string, 3> unavailable;
 };
 
 /// What only the frame loop knows.
@@ -81,6 +108,7 @@ struct FrameStats {
     std::size_t labelsOffWindow = 0;  ///< labels left out: no side of the disc in the window
     std::string renderer;             ///< the render driver in use
     std::vector<std::string> messages;
+    VideoStatus video;
 };
 
 /// The frame for `session` beside the control panel `controls` wide; the fonts only measure
@@ -92,6 +120,9 @@ struct FrameStats {
 /// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
 /// left", "dropper: empty".
 [[nodiscard]] std::string dropperLabel(const Dropper& dropper);
+
+/// The recording mark's text: "REC 0:12 MP4 - Ctrl+R stops".
+[[nodiscard]] std::string recordingLabel(const VideoStatus& video);
 
 /// Where the box marker goes, or nullopt while any of the box [0, w] × [0, h] is on screen.
 [[nodiscard]] std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width,

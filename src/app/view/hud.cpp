@@ -105,6 +105,7 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"W / B", "draw walls / place pegs; again: back to Fling (Tools)"},
         {"M", "spawn a random particle"},
         {"X", "record the selected (or every) particle's path and collisions (Data)"},
+        {"Ctrl+R", "record a video of the box / stop and save it (Data: Video)"},
         {"[ / ]", "smaller / bigger new particles (Tools)"},
         {"S", "show / hide labels (Show)"},
         {"A", "show / hide velocity arrows (Show)"},

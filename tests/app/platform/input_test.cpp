@@ -66,6 +66,14 @@ TEST(Input, XStartsRecordingAndStopsIt) {
     EXPECT_FALSE(std::get<cmd::SetRecording>(stop.front()).on);
 }
 
+TEST(Input, CtrlRTogglesTheVideoAndPlainRRestarts) {
+    const auto video = commandsForKey(keyEvent(SDLK_r, KMOD_LCTRL), KeyState{});
+    ASSERT_TRUE(is<cmd::ToggleVideo>(video));
+    // The key records with the last settings the panel chose: it carries none of its own.
+    EXPECT_FALSE(std::get<cmd::ToggleVideo>(video.front()).settings.has_value());
+    EXPECT_TRUE(is<cmd::Restart>(commandsForKey(keyEvent(SDLK_r), KeyState{})));
+}
+
 TEST(Input, WAndBChooseTheWallAndPegToolsAsAToggle) {
     const auto w = commandsForKey(keyEvent(SDLK_w), KeyState{});
     ASSERT_TRUE(is<cmd::SetTool>(w));

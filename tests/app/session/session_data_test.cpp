@@ -274,14 +274,92 @@ TEST_F(SessionData, GoingBackInTimeDropsWhatWasRecordedAfter) {
         EXPECT_LT(run[k - 1].time, run[k].time);
 }
 
-TEST_F(SessionData, ANewSceneStopsRecordingAndStartsTheSeriesOver) {
+TEST_F(SessionData, RestartStopsRecordingAndKeepsWhatItRecordedToExport) {
+    // A teacher's lesson: record, run, R to run again, then export: the recording was gone.
     Session s = session();
     s.apply(cmd::SetRecording{true, 1});
     run(s, 10);
+    const std::size_t samples = s.data().trajectory().samples().size();
+    ASSERT_GT(samples, 10u);
+    (void)s.takeNotices();
     s.apply(cmd::Restart{});
     EXPECT_FALSE(s.data().recording());
+    EXPECT_EQ(s.data().trajectory().samples().size(), samples);
+    EXPECT_TRUE(said(s.takeNotices(), "Recording stopped: what it recorded stays"));
+    EXPECT_LE(s.data().run().size(), 1u);  // the plots' run starts over
+    run(s, 5);
+    EXPECT_EQ(s.data().trajectory().samples().size(), samples);  // not recording, not dropped
+    EXPECT_NE(s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma), "");
+}
+
+TEST_F(SessionData, ANewSceneStopsRecordingAndClearsIt) {
+    Session s = session();
+    s.apply(cmd::SetRecording{true, 1});
+    run(s, 10);
+    s.apply(cmd::NewScene{10.0, 4.0, 0.0, true});
+    EXPECT_FALSE(s.data().recording());
     EXPECT_TRUE(s.data().trajectory().samples().empty());
-    EXPECT_TRUE(s.data().run().empty());
+    EXPECT_LE(s.data().run().size(), 1u);
+}
+
+TEST_F(SessionData, TheTimeSeriesFirstRowIsTheSetUpAsPlayStartsIt) {
+    // Particles placed while paused at t = 0: the t = 0 row is the box as it starts, not as it
+    // was before they were placed.
+    Session s = session();
+    s.apply(cmd::NewScene{10.0, 4.0, 0.0, true});
+    s.update(0.0, 0.0);
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::SpawnRandom{});
+    s.update(0.0, 0.1);
+    ASSERT_EQ(s.world().size(), 2u);
+    ASSERT_FALSE(s.data().run().empty());
+    EXPECT_EQ(s.data().run().front().time, 0.0);
+    EXPECT_GT(s.data().run().front().kineticEnergy, 0.0);
+    EXPECT_NEAR(s.data().run().front().kineticEnergy, s.observables().kineticEnergy, 1e-12);
+}
+
+TEST_F(SessionData, ToggleVideoIsHandedToTheAppOnceWithTheLastSettings) {
+    Session s = session();
+    EXPECT_FALSE(s.takeVideoToggle().has_value());
+    EXPECT_EQ(s.videoSettings(), VideoSettings{});  // MP4 of the box at first
+    s.apply(cmd::ToggleVideo{});
+    auto toggle = s.takeVideoToggle();
+    ASSERT_TRUE(toggle.has_value());
+    EXPECT_EQ(toggle->format, VideoFormat::Mp4);
+    EXPECT_FALSE(toggle->withPanel);
+    EXPECT_FALSE(s.takeVideoToggle().has_value());  // once
+
+    // The panel's choice is kept: Ctrl+R (no settings of its own) records with it.
+    s.apply(cmd::SetVideoSettings{{VideoFormat::Gif, true}});
+    EXPECT_FALSE(s.takeVideoToggle().has_value());  // a choice records nothing
+    s.apply(cmd::ToggleVideo{});
+    toggle = s.takeVideoToggle();
+    ASSERT_TRUE(toggle.has_value());
+    EXPECT_EQ(*toggle, (VideoSettings{VideoFormat::Gif, true}));
+    // --record names its format, which becomes the choice.
+    s.apply(cmd::ToggleVideo{VideoSettings{VideoFormat::WebM, false}});
+    EXPECT_EQ(s.takeVideoToggle()->format, VideoFormat::WebM);
+    EXPECT_EQ(s.videoSettings().format, VideoFormat::WebM);
+}
+
+TEST_F(SessionData, RecordingIsNotAnEditAndLeavesTheSceneSaved) {
+    Session s = session();
+    const bool dirty = s.unsavedChanges();
+    s.apply(cmd::SetVideoSettings{{VideoFormat::WebM, false}});
+    s.apply(cmd::ToggleVideo{});
+    EXPECT_EQ(s.unsavedChanges(), dirty);
+    EXPECT_FALSE(s.canUndo());
+}
+
+TEST(VideoSettings, FormatsByNameAndExtension) {
+    EXPECT_EQ(parseVideoFormat("mp4"), VideoFormat::Mp4);
+    EXPECT_EQ(parseVideoFormat("WebM"), VideoFormat::WebM);
+    EXPECT_EQ(parseVideoFormat("GIF"), VideoFormat::Gif);
+    EXPECT_FALSE(parseVideoFormat("avi").has_value());
+    EXPECT_FALSE(parseVideoFormat("").has_value());
+    EXPECT_STREQ(extension(VideoFormat::Mp4), ".mp4");
+    EXPECT_STREQ(extension(VideoFormat::WebM), ".webm");
+    EXPECT_STREQ(extension(VideoFormat::Gif), ".gif");
 }
 
 }  // namespace

@@ -52,6 +52,17 @@ TEST(SimClock, PausedItStepsOnlyARequestedSingleStep) {
     EXPECT_EQ(frames(c, 1.0), 0);
 }
 
+TEST(SimClock, TheFirstFrameAfterAPauseOwesOneFrameNotThePause) {
+    // An idle paused window draws every quarter second; Space then used to run the world a
+    // quarter second in one frame (a jump on screen, a gap in the plots and the time series).
+    SimClock c;
+    c.paused = true;
+    EXPECT_EQ(frames(c, 0.25), 0);
+    c.paused = false;
+    EXPECT_EQ(frames(c, 0.25), 1);  // 1/60 s owed: one step of 0.01 s, the rest carried
+    EXPECT_EQ(frames(c, 0.25), 25);  // running: real time again
+}
+
 TEST(SimClock, ABacklogBeyondTheBudgetIsDroppedAndTheReachedSpeedSaysSo) {
     SimClock c;
     int steps = 0;

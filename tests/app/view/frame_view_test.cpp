@@ -113,5 +113,23 @@ TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
     EXPECT_TRUE(has("Labels: 1 left out: no room beside the disc in the window"));
 }
 
+TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
+    const Session s = sessionIn(800, 800, true);
+    const test::FixedMeasure font;
+    FrameStats stats;
+    EXPECT_FALSE(buildFrame(s, stats, font, font, {310.0, 44.0}).recordingMark.has_value());
+    stats.video.recording = true;
+    stats.video.format = VideoFormat::WebM;
+    stats.video.seconds = 65.7;
+    const FrameView f = buildFrame(s, stats, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.recordingMark.has_value());
+    EXPECT_EQ(f.recordingMark->label, "REC 1:05 WebM - Ctrl+R stops");
+    const PixelRect& r = f.recordingMark->at;
+    EXPECT_LE(r.x + r.w, 800);
+    EXPECT_GT(r.x, 400);  // the right half, away from the HUD at the left
+    EXPECT_GE(r.y, 0);
+    EXPECT_LT(r.y, 40);
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -1,0 +1,58 @@
+#include "view/gas_lines.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "session/units.hpp"
+
+namespace psb::app {
+
+namespace {
+
+std::string number(double value) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", value);
+    return buf;
+}
+
+}  // namespace
+
+std::vector<GasLine> gasLines(const GasReading& r) {
+    std::vector<GasLine> lines;
+    const std::string seconds = number(r.window) + " s";
+    lines.push_back({"Temperature kT", quantity(r.kT, "J"),
+                     "In two dimensions each particle has, on average, kT of kinetic energy "
+                     "(\u00bd kT for each of its two directions): kT is the mean \u00bd m v\u00b2. "
+                     "In joules, since these are balls of grams to kilograms: in kelvin, kT / k, "
+                     "they would read some 10\u00b2\u00b2 K."});
+    if (r.pressure) {
+        lines.push_back({"Pressure, measured",
+                         quantity(*r.pressure, "N/m") + " \u00b1 " + number(r.pressureError),
+                         "The momentum the particles give the walls each second, per metre of "
+                         "wall (a 2-D pressure is a force per length), over the last " +
+                             seconds + " of simulated time; \u00b1 one standard error."});
+    } else {
+        lines.push_back({"Pressure, measured", "measuring...",
+                         "The walls' push is averaged over at least half a second of simulated "
+                         "time: run the world."});
+    }
+    lines.push_back({"  ideal gas", quantity(r.idealPressure, "N/m"),
+                     "N kT / A: what point particles at this temperature would press, A the "
+                     "area their centres move in."});
+    char covered[16];
+    std::snprintf(covered, sizeof covered, "%.0f %%", 100.0 * r.coverage);
+    lines.push_back({"  hard discs", quantity(r.hardDiskPressure, "N/m"),
+                     std::string("Henderson's equation of state for discs covering ") + covered +
+                         " of the box: N kT / A (1 + \u03b7\u00b2/8) / (1 - \u03b7)\u00b2. "
+                         "Discs of a size take room, so they press harder than points."});
+    if (r.pressure) {
+        lines.push_back({"Collisions",
+                         number(r.pairRate) + " pair/s, " + number(r.wallRate) + " wall/s",
+                         "Particle-particle collisions and wall rebounds per second of simulated "
+                         "time, over the last " +
+                             seconds + "."});
+    }
+    return lines;
+}
+
+}  // namespace psb::app

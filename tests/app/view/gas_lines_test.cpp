@@ -1,0 +1,45 @@
+// The gas instruments' lines: names, units, the ± of the measured pressure, and what shows
+// before anything is measured.
+
+#include "view/gas_lines.hpp"
+
+#include <gtest/gtest.h>
+
+namespace psb::app {
+namespace {
+
+TEST(GasLines, ReadAsAPersonReadsThem) {
+    GasReading r;
+    r.particles = 4000;
+    r.kT = 0.101;
+    r.coverage = 0.16;
+    r.window = 5.0;
+    r.pressure = 12.21;
+    r.pressureError = 0.208;
+    r.idealPressure = 8.36;
+    r.hardDiskPressure = 11.9;
+    r.pairRate = 12194;
+    r.wallRate = 420;
+    const auto lines = gasLines(r);
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(lines[0].name, "Temperature kT");
+    EXPECT_EQ(lines[0].value, "101 mJ");
+    EXPECT_EQ(lines[1].name, "Pressure, measured");
+    EXPECT_EQ(lines[1].value, "12.2 N/m \u00b1 0.208");
+    EXPECT_NE(lines[1].help.find("over the last 5 s"), std::string::npos);
+    EXPECT_EQ(lines[2].value, "8.36 N/m");
+    EXPECT_EQ(lines[3].value, "11.9 N/m");
+    EXPECT_NE(lines[3].help.find("covering 16 %"), std::string::npos);
+    EXPECT_EQ(lines[4].value, "1.22e+04 pair/s, 420 wall/s");
+}
+
+TEST(GasLines, BeforeHalfASecondThePressureSaysItIsMeasuring) {
+    GasReading r;
+    r.kT = 0.1;
+    const auto lines = gasLines(r);
+    ASSERT_EQ(lines.size(), 4u);  // no collision rates yet
+    EXPECT_EQ(lines[1].value, "measuring...");
+}
+
+}  // namespace
+}  // namespace psb::app
