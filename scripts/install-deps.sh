@@ -5,7 +5,10 @@
 #                                    ffprobe (ffmpeg) to read the recorded videos back,
 #                                    clang with libFuzzer for the fuzz targets, and for the
 #                                    install test man, desktop-file-validate, file (which
-#                                    CPack's dependency scan uses), lintian and mmdebstrap)
+#                                    CPack's dependency scan uses), lintian and mmdebstrap),
+#                                    and what the web build and its test need (--web)
+#   scripts/install-deps.sh --web    build dependencies and the web build's: Emscripten,
+#                                    dpkg-dev (apt-get source unpacks with it), Chromium, npm
 set -euo pipefail
 
 packages=(
@@ -16,7 +19,14 @@ packages=(
   libtbb-dev libbox2d-dev
   libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
 )
+web_packages=(emscripten dpkg-dev chromium)
+# npm installs playwright-core for the web test; a Node.js from elsewhere brings its own npm.
+command -v npm >/dev/null || web_packages+=(npm)
+if [[ "${1:-}" == "--web" ]]; then
+  packages+=("${web_packages[@]}")
+fi
 if [[ "${1:-}" == "--test" ]]; then
+  packages+=("${web_packages[@]}")
   packages+=(xvfb xauth xdotool imagemagick x11-utils xclip ffmpeg)
   packages+=(clang libclang-rt-14-dev)
   packages+=(man-db desktop-file-utils file lintian mmdebstrap)

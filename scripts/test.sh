@@ -7,6 +7,8 @@
 #   asan     build/asan   ASan + UBSan + LeakSanitizer, -O1 -g: the same tests except those
 #                         labelled e2e or bench (why: see below)
 #   fuzz     build/fuzz   clang + libFuzzer: each fuzz target for PSB_FUZZ_SECONDS (default 60)
+#   web      build/web-cmake  the web build (scripts/web.sh), tested in headless Chromium
+#                         (tests/web/); its libraries built for WebAssembly stay in build/web-deps
 # Any failure, sanitizer report or fuzzer crash fails the script.
 #   scripts/test.sh [CTEST ARGS...]     extra arguments go to the release and asan ctest runs
 #   PSB_TEST_STAGES="release asan" scripts/test.sh   runs only the stages named
@@ -15,7 +17,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-stages=" ${PSB_TEST_STAGES:-release install asan fuzz} "
+stages=" ${PSB_TEST_STAGES:-release install asan fuzz web} "
 jobs=$(nproc)
 scripts/install-deps.sh --test
 
@@ -64,5 +66,13 @@ if [[ $stages == *" fuzz "* ]]; then
   cmake --build build/fuzz -j"$jobs"
   # One at a time: each fuzzer wants a whole core, and its run time is fixed anyway.
   ctest --test-dir build/fuzz --output-on-failure -L fuzz
+fi
+if [[ $stages == *" web "* ]]; then
+  stage "web build and browser test"
+  # The release tree's particle-sim reads back the scene the page saves (a no-op after the
+  # release stage).
+  cmake -S . -B build/test -DCMAKE_BUILD_TYPE=Release -DPSB_WARNINGS_AS_ERRORS=ON >/dev/null
+  cmake --build build/test -j"$jobs" --target particle-sim
+  PSB_SIM=$root/build/test/src/cli/particle-sim scripts/web.sh test
 fi
 stage "all tests passed"

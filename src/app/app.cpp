@@ -187,6 +187,23 @@ void App::apply(const Command& c) {
     flushNotices();
 }
 
+void App::warn(const std::string& text) {
+    logLine("[W] " + text);
+    show(text);
+}
+
+void App::inform(const std::string& text) {
+    logLine("[I] " + text);
+    show(text);
+}
+
+void App::show(const std::string& text) {
+    messages_.push_back({text, now() + kMessageSeconds, {}});
+    if (messages_.size() > kShownMessages) {
+        messages_.erase(messages_.begin(), messages_.end() - kShownMessages);
+    }
+}
+
 void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
     if (gui_ && gui_->handleEvent(e)) return;
@@ -200,30 +217,22 @@ void App::processEvent(const SDL_Event& e) {
     }
 }
 
-int App::run() {
+void App::greet() {
     logLine("[I] Particle Sandbox: " + std::to_string(world().size()) +
             " particles. Press H for help.");
     for (const auto& [keys, what] : controls())
         logLine("    " + keys + ": " + what);
+}
+
+int App::run() {
+    greet();
     SDL_DisplayMode mode;
     const double refresh = SDL_GetCurrentDisplayMode(0, &mode) == 0 && mode.refresh_rate > 0
                                ? mode.refresh_rate
                                : 60.0;
-    auto last = std::chrono::steady_clock::now();
     while (session_->running()) {
         const auto frameStart = std::chrono::steady_clock::now();
-        const double real = std::chrono::duration<double>(frameStart - last).count();
-        last = frameStart;
-        ++fpsFrames_;
-        fpsSeconds_ += real;
-        if (fpsSeconds_ >= 0.5) {
-            stats_.fps = fpsFrames_ / fpsSeconds_;
-            fpsFrames_ = 0;
-            fpsSeconds_ = 0.0;
-        }
-        handleEvents();
-        update(std::min(real, 0.25));
-        render();
+        loopOnce(true);
         // Where vsync is not honoured (a virtual display), do not spin faster than the display.
         const double spent =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
@@ -235,11 +244,28 @@ int App::run() {
     return 0;
 }
 
-void App::handleEvents() {
+void App::loopOnce(bool mayWait) {
+    const auto frameStart = std::chrono::steady_clock::now();
+    const double real =
+        lastLoop_ ? std::chrono::duration<double>(frameStart - *lastLoop_).count() : 0.0;
+    lastLoop_ = frameStart;
+    ++fpsFrames_;
+    fpsSeconds_ += real;
+    if (fpsSeconds_ >= 0.5) {
+        stats_.fps = fpsFrames_ / fpsSeconds_;
+        fpsFrames_ = 0;
+        fpsSeconds_ = 0.0;
+    }
+    handleEvents(mayWait);
+    update(std::min(real, 0.25));
+    render();
+}
+
+void App::handleEvents(bool mayWait) {
     SDL_Event e;
     // Paused and idle: sleep until something happens (or a quarter second, for the messages).
-    if (session_->paused() && session_->interaction().mode() == Interaction::Mode::Idle &&
-        !panelSettling_) {
+    if (mayWait && session_->paused() &&
+        session_->interaction().mode() == Interaction::Mode::Idle && !panelSettling_) {
         if (SDL_WaitEventTimeout(&e, 250) != 0) processEvent(e);
     }
     while (SDL_PollEvent(&e) != 0)
@@ -324,39 +350,9 @@ void App::logControls() {
 }
 
 int App::runBenchmark() {
-    // The normal frame, one step of the scene's dt each, no frame limiter, vsync as configured.
-    if (session_->paused()) apply(cmd::TogglePause{});
-    (void)session_->takeNotices();
-    const double dt = session_->meta().dt;
-    double step = 0.0, draw = 0.0;
-    const int warmup = std::min(10, options_.benchFrames / 10);
-    auto measured = std::chrono::steady_clock::now();
-    for (int f = 0; f < warmup + options_.benchFrames && session_->running(); ++f) {
-        if (f == warmup) measured = std::chrono::steady_clock::now();
-        SDL_Event e;
-        while (SDL_PollEvent(&e) != 0)
-            processEvent(e);
-        // The budget is the frame's: a benchmark frame never drops its one step.
-        session_->update(dt / session_->timeScale(), now(), 1e9);
-        stats_.lastStepMs = session_->lastStepMs();
-        render();
-        if (f >= warmup) {
-            step += stats_.lastStepMs;
-            draw += stats_.lastDrawMs;
-        }
+    while (benchmarkFrame()) {
     }
-    const double n = options_.benchFrames;
-    const std::string overlays = session_->overlayFlags();
-    const SDL_Point out = sdl_->outputSize();
-    std::printf(
-        "bench: %zu particles, %d frames, %dx%d, renderer %s: step %.3f ms, draw %.3f ms, "
-        "frame %.3f ms (%.1f fps)%s\n",
-        world().size(), options_.benchFrames, out.x, out.y, sdl_->rendererName().c_str(), step / n,
-        draw / n, (step + draw) / n, 1000.0 * n / (step + draw),
-        overlays.empty() ? "" : (", overlays " + overlays).c_str());
-    const double wall =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - measured).count();
-    std::printf("bench: wall clock %.3f ms a frame (%.1f fps)\n", 1000.0 * wall / n, n / wall);
+    (void)benchmarkReport();
     if (video_) {
         // Every frame went into the video (the frame waited for room in the encoder's queue):
         // the figures above are what recording sustains. The file is completed after timing.
@@ -376,6 +372,53 @@ int App::runBenchmark() {
     }
     std::fflush(stdout);
     return 0;
+}
+
+bool App::benchmarkFrame() {
+    // The normal frame, one step of the scene's dt each, no frame limiter, vsync as configured.
+    const int warmup = std::min(10, options_.benchFrames / 10);
+    if (benchFrame_ >= warmup + options_.benchFrames || !session_->running()) return false;
+    if (benchFrame_ == 0) {
+        if (session_->paused()) apply(cmd::TogglePause{});
+        (void)session_->takeNotices();
+    }
+    if (benchFrame_ == warmup) benchMeasured_ = std::chrono::steady_clock::now();
+    SDL_Event e;
+    while (SDL_PollEvent(&e) != 0)
+        processEvent(e);
+    // The budget is the frame's: a benchmark frame never drops its one step.
+    session_->update(session_->meta().dt / session_->timeScale(), now(), 1e9);
+    stats_.lastStepMs = session_->lastStepMs();
+    render();
+    if (benchFrame_ >= warmup) {
+        benchStepMs_ += stats_.lastStepMs;
+        benchDrawMs_ += stats_.lastDrawMs;
+    }
+    ++benchFrame_;
+    return true;
+}
+
+std::string App::benchmarkReport() {
+    const double n = options_.benchFrames;
+    const double step = benchStepMs_, draw = benchDrawMs_;
+    const std::string overlays = session_->overlayFlags();
+    const SDL_Point out = sdl_->outputSize();
+    char line[320];
+    std::snprintf(
+        line, sizeof line,
+        "bench: %zu particles, %d frames, %dx%d, renderer %s: step %.3f ms, draw %.3f ms, "
+        "frame %.3f ms (%.1f fps)%s",
+        world().size(), options_.benchFrames, out.x, out.y, sdl_->rendererName().c_str(), step / n,
+        draw / n, (step + draw) / n, 1000.0 * n / (step + draw),
+        overlays.empty() ? "" : (", overlays " + overlays).c_str());
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - benchMeasured_).count();
+    char wallLine[120];
+    std::snprintf(wallLine, sizeof wallLine, "bench: wall clock %.3f ms a frame (%.1f fps)",
+                  1000.0 * wall / n, n / wall);
+    logLine(line);
+    logLine(wallLine);
+    return std::string(line) + "; " + (wallLine + 7);
 }
 
 }  // namespace psb::app

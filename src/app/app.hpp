@@ -32,6 +32,7 @@
 //
 // No globals: everything the loop touches is a member.
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -92,6 +93,25 @@ class App {
     /// Runs the benchmark frames (see AppOptions) and prints mean step and draw times.
     int runBenchmark();
 
+    // The loops' parts, for a caller that owns the loop (the browser's, one pass per animation
+    // frame; see browser_loop.hpp).
+    /// Logs the greeting and the controls, as run() does first.
+    void greet();
+    /// One pass of run()'s loop: the events (while paused and idle, waiting up to a quarter
+    /// second for one if `mayWait`), the update by the real time since the last pass, the render.
+    void loopOnce(bool mayWait);
+    /// One frame of the benchmark; false once every frame has run (or the session stopped).
+    bool benchmarkFrame();
+    /// Prints the benchmark's lines (after the frames: the mean step and draw times, the wall
+    /// clock's time a frame) and returns them as one.
+    std::string benchmarkReport();
+    /// Applies `c` as a key or the panel would.
+    void command(const Command& c) { apply(c); }
+    /// Logs `text` as a warning and shows it as a message.
+    void warn(const std::string& text);
+    /// Logs `text` and shows it as a message.
+    void inform(const std::string& text);
+
     // Driving the app without run()'s loop, for the tests.
     /// Handles one event as run() does.
     void processEvent(const SDL_Event& e);
@@ -114,6 +134,8 @@ class App {
     [[nodiscard]] const FrameView& lastFrame() const { return lastFrame_; }
     /// The control panel as the last render() built it.
     [[nodiscard]] const ControlPanel& panel() const { return panel_; }
+    /// The control panel, for a loop that sets its mode and takes its requests (the browser's).
+    [[nodiscard]] ControlPanel& controlPanel() { return panel_; }
 
   private:
     struct Message {
@@ -122,12 +144,14 @@ class App {
         std::string topic = {};  ///< Notice::topic
     };
 
-    void handleEvents();
+    void handleEvents(bool mayWait);
     void apply(const Command& c);
     void update(double realSeconds);
     void render();
     /// Logs and shows what the session said.
     void flushNotices();
+    /// Shows `text` as the newest message.
+    void show(const std::string& text);
     /// The window as NAME.png and the text it shows as NAME.txt (screen_text.hpp).
     void writeScreenshot(const DrawStats& drawn);
     /// SDL's text input on while the edit prompt or a panel field wants characters.
@@ -175,6 +199,10 @@ class App {
     FrameStats stats_;
     int fpsFrames_ = 0;
     double fpsSeconds_ = 0.0;
+    std::optional<std::chrono::steady_clock::time_point> lastLoop_;  ///< loopOnce's last pass
+    int benchFrame_ = 0;  ///< benchmark frames run, the warm-up's included
+    double benchStepMs_ = 0.0, benchDrawMs_ = 0.0;         ///< summed after the warm-up
+    std::chrono::steady_clock::time_point benchMeasured_;  ///< the first frame after the warm-up
 };
 
 }  // namespace psb::app

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <regex>
 #include <string>
 
@@ -11,6 +12,9 @@
 #include "build_info.hpp"
 #include "platform/assets.hpp"
 #include "platform/output_directory.hpp"
+#ifdef __EMSCRIPTEN__
+#include "browser_loop.hpp"
+#endif
 
 namespace {
 
@@ -134,8 +138,14 @@ int main(int argc, char** argv) {
     options.vsync = !noVsync && options.benchParticles == 0;
 
     try {
-        psb::app::App app(options);
-        return options.benchParticles > 0 ? app.runBenchmark() : app.run();
+        auto app = std::make_unique<psb::app::App>(options);
+#ifdef __EMSCRIPTEN__
+        // The browser runs the loop, one pass per animation frame; main() returns at once.
+        psb::app::runInBrowser(std::move(app), options.screenshotDir, options.benchParticles > 0);
+        return 0;
+#else
+        return options.benchParticles > 0 ? app->runBenchmark() : app->run();
+#endif
     } catch (const std::exception& e) {
         std::fprintf(stderr, "particle-sandbox: %s\n", e.what());
         return 1;

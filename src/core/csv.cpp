@@ -1,4 +1,5 @@
 #include <particle_sandbox/csv.hpp>
+#include <particle_sandbox/detail/float_chars.hpp>
 
 #include <charconv>
 #include <cmath>
@@ -22,7 +23,7 @@ std::string number(double value) {
     const std::chars_format format = (size == 0.0 || (size >= 1e-4 && size < 1e6))
                                          ? std::chars_format::fixed
                                          : std::chars_format::scientific;
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value, format);
+    const auto [end, ec] = psb::detail::toChars(buffer, buffer + sizeof buffer, value, format);
     if (ec != std::errc{}) return notFinite(value);  // never for a finite double in 64 chars
     return std::string(buffer, end);
 }
@@ -31,8 +32,8 @@ std::string time(double seconds) {
     if (!std::isfinite(seconds)) return notFinite(seconds);
     char buffer[64];
     // %g's rule with 12 significant digits: trailing zeros dropped, scientific only past 10¹².
-    const auto [end, ec] =
-        std::to_chars(buffer, buffer + sizeof buffer, seconds, std::chars_format::general, 12);
+    const auto [end, ec] = psb::detail::toChars(buffer, buffer + sizeof buffer, seconds,
+                                                std::chars_format::general, 12);
     if (ec != std::errc{}) return notFinite(seconds);
     std::string text(buffer, end);
     return text == "-0" ? "0" : text;

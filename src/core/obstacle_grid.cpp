@@ -186,7 +186,7 @@ double ObstacleGrid::clearance(double x, double y) const {
     };
     // The cells within gap − 1 rings of this one list nothing (measureGaps).
     const std::int64_t gap =
-        gap_[std::size_t{static_cast<std::uint64_t>(cy)} * nx_ + static_cast<std::uint64_t>(cx)];
+        gap_[static_cast<std::size_t>(cy) * nx_ + static_cast<std::size_t>(cx)];
     if (gap > kClearanceRings) return pad_ + static_cast<double>(gap - 1) * cell_ + edge;
     for (std::int64_t ring = gap;; ++ring) {
         if (ring == 0) {

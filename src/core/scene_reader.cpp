@@ -18,6 +18,7 @@
 #include <optional>
 
 #include <nlohmann/json.hpp>
+#include <particle_sandbox/detail/float_chars.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/validation.hpp>
@@ -42,7 +43,7 @@ constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3, kDropp
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
     char buf[32];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    const auto r = detail::toChars(buf, buf + sizeof buf, v);
     return std::string(buf, r.ptr);
 }
 

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 #include <particle_sandbox/atomic_file.hpp>
+#include <particle_sandbox/detail/float_chars.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 
@@ -23,7 +24,7 @@ void appendNumber(std::string& out, double v, const char* what) {
         throw InvalidArgument(std::string("serializeScene: ") + what + " is not finite");
     }
     char buf[40];
-    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    const auto r = detail::toChars(buf, buf + sizeof buf, v);
     const std::string_view text(buf, static_cast<std::size_t>(r.ptr - buf));
     out += text;
     if (text.find_first_of(".e") == std::string_view::npos) out += ".0";

@@ -198,6 +198,13 @@ void ControlPanel::scene(const Session& s) {
     sceneText(s);
     sceneFile(s);
 
+    if (browserFiles_) {
+        if (ImGui::Button("Open a scene file...")) uploadAsked_ = true;
+        mark("Open");
+        tip("Open a scene file (JSON) from this computer, with the browser's file chooser");
+        fileError(s);
+        return;
+    }
     if (!pathFilled_) {
         copyPath(path_, s.lastSave() ? *s.lastSave() : std::filesystem::path("my-scene.json"));
         pathFilled_ = true;
@@ -212,11 +219,7 @@ void ControlPanel::scene(const Session& s) {
         out_.emplace_back(cmd::OpenFile{std::filesystem::path(path_.data())});
     mark("Open");
     tip("Open the scene file named on the left");
-    if (!s.fileError().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
-        ImGui::TextWrapped("%s", s.fileError().c_str());
-        ImGui::PopStyleColor();
-    }
+    fileError(s);
     if (!s.recentFiles().empty()) {
         ImGui::TextUnformatted("Recent files");
         for (const auto& f : s.recentFiles()) {
@@ -227,6 +230,13 @@ void ControlPanel::scene(const Session& s) {
             tip(f.string().c_str());
         }
     }
+}
+
+void ControlPanel::fileError(const Session& s) {
+    if (s.fileError().empty()) return;
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+    ImGui::TextWrapped("%s", s.fileError().c_str());
+    ImGui::PopStyleColor();
 }
 
 void ControlPanel::show(const Session& s, float pixelRatio) {

@@ -28,6 +28,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "session/command.hpp"
@@ -74,6 +75,13 @@ class ControlPanel {
     /// The item called `name` in the last build, or nullptr.
     [[nodiscard]] const PanelItem* item(const std::string& name) const;
 
+    /// In a browser the user's files have no path the page can read: Open asks the browser's
+    /// file chooser instead of reading the path field (the app asks, see takeUploadRequest),
+    /// and recent files are not listed.
+    void setBrowserFiles(bool on) { browserFiles_ = on; }
+    /// Whether Open was pressed in browser mode since the last call.
+    [[nodiscard]] bool takeUploadRequest() { return std::exchange(uploadAsked_, false); }
+
   private:
     /// Records the item just drawn as `name`.
     void mark(const std::string& name);
@@ -83,6 +91,8 @@ class ControlPanel {
     void sceneText(const Session& s);
     /// The scene's file, unsaved changes, Save, Save As, Revert (section_scene_file.cpp).
     void sceneFile(const Session& s);
+    /// The last open or save problem, in red (nothing when there is none).
+    void fileError(const Session& s);
     /// The dialog the session has open, as a modal window (section_dialogs.cpp).
     void dialog(const Session& s);
     void physics(const Session& s);
@@ -106,6 +116,8 @@ class ControlPanel {
     std::vector<PanelItem> items_;
     std::array<char, 512> path_{};
     bool pathFilled_ = false;
+    bool browserFiles_ = false;
+    bool uploadAsked_ = false;
     /// The title and description while they are typed in (else the scene's).
     std::array<char, 128> title_{};
     std::array<char, 2048> description_{};

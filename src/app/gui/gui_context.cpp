@@ -109,7 +109,10 @@ bool GuiContext::handleEvent(const SDL_Event& event) {
     switch (event.type) {
         case SDL_MOUSEBUTTONDOWN: {
             const ImVec2 at(static_cast<float>(event.button.x), static_cast<float>(event.button.y));
-            const bool taken = io.WantCaptureMouse || overWindow(at);
+            // A finger (SDL's mouse from touch) jumps: where the mouse was in the last frame,
+            // over the panel or not, says nothing about where it comes down.
+            const bool touch = event.button.which == SDL_TOUCH_MOUSEID;
+            const bool taken = (io.WantCaptureMouse && !touch) || overWindow(at);
             if (taken) takenButtons_ |= SDL_BUTTON(event.button.button);
             return taken;
         }

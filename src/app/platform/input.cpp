@@ -201,6 +201,11 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
 std::vector<Command> Input::translate(const SDL_Event& e, const KeyState& state, double pixelRatio,
                                       SDL_Point output) {
     const auto at = [pixelRatio](int x, int y) { return Vec2(x * pixelRatio, y * pixelRatio); };
+    // The mouse SDL makes of a finger, while two fingers pan and zoom (touch.hpp).
+    const bool fromTouch = (e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP)
+                               ? e.button.which == SDL_TOUCH_MOUSEID
+                               : e.type == SDL_MOUSEMOTION && e.motion.which == SDL_TOUCH_MOUSEID;
+    if (fromTouch && touch_.pinching()) return {};
     switch (e.type) {
         case SDL_QUIT:
             return {cmd::Quit{}};
@@ -246,6 +251,17 @@ std::vector<Command> Input::translate(const SDL_Event& e, const KeyState& state,
             SDL_GetMouseState(&x, &y);
             mouse_ = at(x, y);
             return {cmd::Zoom{mouse_, std::pow(kWheelZoomStep, e.wheel.preciseY)}};
+        }
+        case SDL_FINGERDOWN:
+        case SDL_FINGERMOTION:
+        case SDL_FINGERUP:
+            if (!kTouchGestures) return {};
+            return touch_.translate(e.tfinger, output, mouse_);
+        case SDL_DROPFILE: {
+            // A file dropped on the window, or picked with the page's Open (browser_files.hpp).
+            std::vector<Command> out{cmd::OpenFile{std::filesystem::path(e.drop.file)}};
+            SDL_free(e.drop.file);
+            return out;
         }
         default:
             return {};

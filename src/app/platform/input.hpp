@@ -14,6 +14,7 @@
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 
+#include "platform/touch.hpp"
 #include "session/command.hpp"
 #include "session/dialog.hpp"
 #include "session/view_options.hpp"
@@ -60,6 +61,7 @@ class Input {
                                                  double pixelRatio, SDL_Point output);
 
   private:
+    TouchGestures touch_;        ///< two fingers (the web build)
     bool panning_ = false;       ///< right or middle button held
     Vec2 mouse_ = Vec2::Zero();  ///< pixels
 };

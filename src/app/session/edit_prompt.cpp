@@ -8,6 +8,7 @@
 #include <optional>
 #include <system_error>
 
+#include <particle_sandbox/detail/float_chars.hpp>
 #include <particle_sandbox/error.hpp>
 
 namespace psb::app {
@@ -39,7 +40,7 @@ std::optional<double> parseNumber(const std::string& name, std::string_view text
     // from_chars takes no leading '+'; a user may well type one.
     const std::string_view digits = t.front() == '+' ? t.substr(1) : t;
     double v = 0.0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+    const auto [end, ec] = detail::fromChars(digits.data(), digits.data() + digits.size(), v);
     if (ec == std::errc::result_out_of_range) {
         why = name + ": " + std::string(t) + " is out of range";
         return std::nullopt;
