@@ -47,8 +47,17 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
 }
 
 void Session::setWorld(World world, SceneMeta meta, SceneFile file) {
+    // Replacing unsaved changes is undoable, as every change is; it is said, so that a scene
+    // opened by a stray key (a digit opens a preset) is not taken for lost.
+    const bool unsaved = doc_.dirty;
+    const std::string was = doc_.meta.name;
     doc_.replace(std::move(world), std::move(meta), std::move(file));
     sceneOpened();
+    if (unsaved) {
+        say("The unsaved changes to " + (was.empty() ? std::string("the scene") : was) +
+                " were replaced: Ctrl+Z brings them back",
+            Notice::Level::Warning);
+    }
 }
 
 void Session::sceneOpened() {

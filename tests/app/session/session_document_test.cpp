@@ -127,6 +127,28 @@ TEST_F(SessionDocument, RestartGoesBackToTheSetUpPlayLastStartedAfterAnEdit) {
     EXPECT_NE(test::stateHash(s.world()), setup);
 }
 
+TEST_F(SessionDocument, ReplacingUnsavedChangesSaysCtrlZBringsThemBack) {
+    // A new user's stray digit opened a preset over their unsaved lesson, without a word.
+    Session s = session();
+    const fs::path file = sceneFileOf(3);
+    s.apply(cmd::OpenFile{file});
+    (void)s.takeNotices();
+    s.apply(cmd::OpenPreset{1});  // nothing unsaved: nothing to say
+    EXPECT_FALSE(said(s.takeNotices(), "unsaved changes"));
+    s.apply(cmd::SpawnRandom{});
+    ASSERT_TRUE(s.unsavedChanges());
+    const std::size_t n = s.world().size();
+    const std::string name = s.meta().name;
+    s.apply(cmd::OpenPreset{0});
+    EXPECT_TRUE(said(s.takeNotices(),
+                     "The unsaved changes to " + name + " were replaced: Ctrl+Z brings them back"));
+    s.apply(cmd::Undo{});
+    EXPECT_EQ(s.world().size(), n);
+    EXPECT_TRUE(s.unsavedChanges());
+    s.apply(cmd::NewScene{5.0, 5.0, 0.0, true});
+    EXPECT_TRUE(said(s.takeNotices(), "were replaced: Ctrl+Z brings them back"));
+}
+
 TEST_F(SessionDocument, RevertReadsTheFileAgainAndUndoBringsTheChangesBack) {
     Session s = session();
     const fs::path file = sceneFileOf(3);
