@@ -138,6 +138,33 @@ wait_count() {  # wait_count REGEX N [SECONDS]: until N lines match
         sleep 0.05
     done
 }
+# A dialog takes its keys from the frame after the one it appears in; a loaded machine may not
+# have drawn that frame when the log says the dialog opened, and the key is then not taken.
+# press_until KEY REGEX: KEY, again every 3 s, until one more log line matches REGEX.
+press_until() {
+    local n
+    n=$(grep -Ec "$2" "$LOG" || true)
+    for _ in 1 2 3 4 5; do
+        xdotool key --window "$WID" "$1" 2>/dev/null || true
+        for _ in $(seq 30); do
+            (($(grep -Ec "$2" "$LOG" || true) > n)) && return 0
+            sleep 0.1
+        done
+    done
+    fail "no log line /$2/ after pressing $1 five times"
+}
+# quit_with KEY: KEY, again every 2 s, until the program has exited (the window may be gone
+# before xdotool sends the key's release: that error is expected).
+quit_with() {
+    for _ in 1 2 3 4 5 6; do
+        kill -0 "$APP_PID" 2>/dev/null || return 0
+        xdotool key --window "$WID" "$1" 2>/dev/null || true
+        for _ in $(seq 20); do
+            kill -0 "$APP_PID" 2>/dev/null || return 0
+            sleep 0.1
+        done
+    done
+}
 title() { xdotool getwindowname "$WID"; }
 wait_title() {  # wait_title REGEX
     local deadline=$((SECONDS + 5))

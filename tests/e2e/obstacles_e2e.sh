@@ -93,8 +93,7 @@ pass "peg placed: $(grep 'Added obstacle 1' "$LOG")"
 xdotool mousemove $((WX + 900)) $((WY + 700))
 key ctrl+s  # no file yet: Save As, proposing --save-to; Enter saves
 wait_log "Save as: type a file name"
-key Return
-wait_log "Saved 6 particles to .*saved.json"
+press_until Return "Saved 6 particles to .*saved.json"
 S=$(saved)
 [[ -s "$S" ]] || fail "no file at $S"
 grep -q '"version": 2' "$S" || fail "a scene with obstacles is not version 2: $(grep version "$S")"
@@ -141,9 +140,7 @@ pass "wall selected, moved ($(grep 'Moved obstacle 0' "$LOG" | sed 's/.*: wall/w
 xdotool mousemove $((WX + 900)) $((WY + 700))
 key Escape  # the move is unsaved: Esc asks in a dialog; D discards and quits
 wait_log "Unsaved changes to .*: Save, Discard or Cancel"
-# The window may be gone before xdotool sends the key release: that error is expected.
-xdotool key --window "$WID" d 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+quit_with d
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""
 echo "PASS: obstacles e2e ($OUT)"

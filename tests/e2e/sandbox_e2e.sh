@@ -187,8 +187,7 @@ pass "S shows labels ($plain -> $labelled white pixels)"
 key ctrl+s
 wait_log "Save as: type a file name, Enter saves, Esc cancels \(folder /"
 shot 6-save-as
-key Return
-wait_log "Saved 6 particles to /.*/saved.json"  # the full path
+press_until Return "Saved 6 particles to /.*/saved.json"  # the full path
 [[ -s "$OUT/saved.json" ]] || fail "Ctrl+S wrote no file"
 # One particle per line. The launched one is the scene's typical particle (the median: 12 kg,
 # 0.3 m), in the launch colour of that size (120 + 135 t, 200, 255 - 135 t at t = 0.9 / 3.9).
@@ -208,8 +207,7 @@ wait_count "Saved 6 particles to /.*/saved.json" 2
 # Save As proposes a free name beside it, never the file itself.
 key ctrl+shift+s
 wait_count "Save as: type a file name" 2
-key Return
-wait_log "Saved 6 particles to /.*/saved-2.json"
+press_until Return "Saved 6 particles to /.*/saved-2.json"
 [[ -s "$OUT/saved-2.json" && $(md5sum <"$OUT/saved.json") == "$first_save" ]] ||
     fail "Save As did not keep the first save"
 pass "Ctrl+S asked for a name and saved; launched particle: vx $svx, vy $svy m/s; Ctrl+S wrote it again; Save As went beside it"
@@ -390,16 +388,13 @@ wait_log "Spawned particle"
 key Escape
 wait_log "\[W\] Unsaved changes to .*: Save, Discard or Cancel"
 shot 15-quit-dialog
-key Escape
-wait_log "Quit cancelled"
+press_until Escape "Quit cancelled"
 sleep 0.3
 kill -0 "$APP_PID" 2>/dev/null || fail "Esc with unsaved changes quit without asking"
 pass "Esc closes the help, then asks before losing unsaved changes; Esc again cancels"
 key Escape
 wait_count "Unsaved changes to .*: Save, Discard or Cancel" 2
-# The window may be gone before xdotool sends the key release: that error is expected.
-xdotool key --window "$WID" d 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+quit_with d
 if kill -0 "$APP_PID" 2>/dev/null; then fail "Esc did not quit"; fi
 wait "$APP_PID" && status=0 || status=$?
 APP_PID=""

@@ -106,8 +106,7 @@ pass "two balls launched into the emptied box are particles 1 and 2"
 # Unsaved changes: Esc asks in a dialog, D discards and quits.
 key Escape
 wait_log "Unsaved changes to .*: Save, Discard or Cancel"
-xdotool key --window "$WID" d 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+quit_with d
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc, D"
 APP_PID=""
 

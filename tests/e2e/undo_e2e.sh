@@ -32,7 +32,7 @@ save() {
     # The first save asks for a name (the scene has no file yet): Enter takes --save-to's.
     if ((saves == 0)); then
         wait_log "Save as: type a file name"
-        key Return
+        press_until Return "Saved [0-9]+ particles? to "
     fi
     saves=$((saves + 1))
     wait_count "Saved [0-9]+ particles? to " "$saves" 8

@@ -29,11 +29,7 @@ wait_log "Unsaved changes to .*: Save, Discard or Cancel"
 # The dialog takes its keys from the frame after the one it appears in, and a sanitizer build
 # under load draws a frame in a good part of a second: D again until it is taken.
 status=0
-for _ in $(seq 10); do
-  sleep 1
-  kill -0 "$APP_PID" 2>/dev/null || break
-  xdotool key --window "$WID" d 2>/dev/null || true
-done
+quit_with d
 for _ in $(seq 200); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.1; done
 kill -0 "$APP_PID" 2>/dev/null && fail "still running 20 s after Esc"
 wait "$APP_PID" || status=$?
