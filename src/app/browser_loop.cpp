@@ -84,7 +84,7 @@ void pass(void* arg) {
 }  // namespace
 
 void runInBrowser(std::unique_ptr<App> app, const std::filesystem::path& folder, bool benchmark) {
-    app->controlPanel().setBrowserFiles(true);
+    app->controlPanel().setBrowser(true);
     if (!benchmark) app->greet();
     auto* loop = new BrowserLoop{
         std::move(app), DownloadFolder(folder), BrowserSettings("/settings"), benchmark, 0, {}};

@@ -174,6 +174,8 @@ await waitFor("the presets", async () =>
   (await log()).some((l) => l.startsWith("[I] Control preset ")));
 const presets = (await log()).filter((l) => l.startsWith("[I] Control preset "))
   .map((l) => l.match(/^\[I\] Control preset (.*) at /)[1]);
+check(!(await log()).some((l) => l.startsWith("[I] Control section Video")),
+      "the panel has no Video section (recording is desktop-only)");
 const preset = presets[1];
 await click("preset " + preset);
 await waitFor("the preset", async () => (await title()).includes(preset));

@@ -77,7 +77,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             tools(s, pixelRatio);
             readouts(s);
             data(s);
-            video(s, stats.video);
+            if (!browser_) video(s, stats.video);
             selected(s);
             allParticles(s);
             engine(s, stats);
@@ -198,7 +198,7 @@ void ControlPanel::scene(const Session& s) {
     sceneText(s);
     sceneFile(s);
 
-    if (browserFiles_) {
+    if (browser_) {
         if (ImGui::Button("Open a scene file...")) uploadAsked_ = true;
         mark("Open");
         tip("Open a scene file (JSON) from this computer, with the browser's file chooser");

@@ -77,8 +77,8 @@ class ControlPanel {
 
     /// In a browser the user's files have no path the page can read: Open asks the browser's
     /// file chooser instead of reading the path field (the app asks, see takeUploadRequest),
-    /// and recent files are not listed.
-    void setBrowserFiles(bool on) { browserFiles_ = on; }
+    /// and recent files are not listed. Video recording (FFmpeg) is not there: no Video section.
+    void setBrowser(bool on) { browser_ = on; }
     /// Whether Open was pressed in browser mode since the last call.
     [[nodiscard]] bool takeUploadRequest() { return std::exchange(uploadAsked_, false); }
 
@@ -116,7 +116,7 @@ class ControlPanel {
     std::vector<PanelItem> items_;
     std::array<char, 512> path_{};
     bool pathFilled_ = false;
-    bool browserFiles_ = false;
+    bool browser_ = false;
     bool uploadAsked_ = false;
     /// The title and description while they are typed in (else the scene's).
     std::array<char, 128> title_{};
