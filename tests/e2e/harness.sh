@@ -146,6 +146,7 @@ press_until() {
     n=$(grep -Ec "$2" "$LOG" || true)
     for _ in 1 2 3 4 5; do
         xdotool key --window "$WID" "$1" 2>/dev/null || true
+        sleep 0.15  # as key() does: the frame after the key has closed what it closes
         for _ in $(seq 30); do
             (($(grep -Ec "$2" "$LOG" || true) > n)) && return 0
             sleep 0.1
