@@ -78,6 +78,7 @@ App::App(const AppOptions& options) : options_(options) {
     // A scene named on the command line opens paused, as presets do: its start is shown first.
     s.paused = options_.startPaused || (options_.scene && options_.benchParticles == 0);
     s.arrows = options_.arrows;
+    s.escQuits = options_.escQuits;
     const SDL_Point out = sdl_->outputSize();
     s.viewportWidth = out.x;
     s.viewportHeight = out.y;

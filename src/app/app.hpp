@@ -63,7 +63,9 @@ struct AppOptions {
     int height = 800;
     bool vsync = true;
     bool startPaused = false;
-    bool arrows = true;              ///< velocity arrows shown at start (A toggles)
+    bool arrows = true;  ///< velocity arrows shown at start (A toggles)
+    /// Esc with nothing open quits (false in a web page: there is nothing to quit to).
+    bool escQuits = true;
     std::string renderDriver;        ///< SDL render driver name ("software", ...); chosen if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;

@@ -137,6 +137,9 @@ int main(int argc, char** argv) {
     options.arrows = !noArrows;
     options.vsync = !noVsync && options.benchParticles == 0;
 
+#ifdef __EMSCRIPTEN__
+    options.escQuits = false;  // a page has nothing to quit to: Esc only closes what is open
+#endif
     try {
         auto app = std::make_unique<psb::app::App>(options);
 #ifdef __EMSCRIPTEN__

@@ -90,6 +90,9 @@ struct SessionOptions {
     std::uint32_t seed = 1;                      ///< random spawns
     bool paused = false;
     bool arrows = true;
+    /// Esc with nothing open quits (asking first when there are unsaved changes): a window's
+    /// way. A web page has nothing to quit to, and there Esc only closes what is open.
+    bool escQuits = true;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
     bool controls = true;
     int viewportWidth = 800;  ///< pixels

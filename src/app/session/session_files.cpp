@@ -293,6 +293,8 @@ void Session::handle(const cmd::Back&) {
     } else if (tools_.prompt.active()) {
         tools_.closePrompt();
         say("Edit cancelled");
+    } else if (!options_.escQuits) {
+        say("Esc closes a dialog, the help or the edit prompt; nothing is open");
     } else {
         quit();
     }

@@ -149,6 +149,28 @@ TEST_F(SessionDocument, ReplacingUnsavedChangesSaysCtrlZBringsThemBack) {
     EXPECT_TRUE(said(s.takeNotices(), "were replaced: Ctrl+Z brings them back"));
 }
 
+TEST_F(SessionDocument, WhereEscDoesNotQuitItOnlyClosesWhatIsOpen) {
+    // A web page: nothing to quit to.
+    SessionOptions o = options();
+    o.escQuits = false;
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    s.apply(cmd::ToggleHelp{});
+    s.apply(cmd::Back{});
+    EXPECT_FALSE(s.helpShown());
+    s.apply(cmd::Back{});
+    EXPECT_TRUE(s.running());
+    EXPECT_FALSE(s.dialog().open());
+    EXPECT_TRUE(said(s.takeNotices(), "nothing is open"));
+    s.apply(cmd::SpawnRandom{});
+    s.apply(cmd::Back{});  // unsaved changes: still no quit dialog
+    EXPECT_TRUE(s.running());
+    EXPECT_FALSE(s.dialog().open());
+    // A desktop window's Esc quits.
+    Session d = session();
+    d.apply(cmd::Back{});
+    EXPECT_FALSE(d.running());
+}
+
 TEST_F(SessionDocument, RevertReadsTheFileAgainAndUndoBringsTheChangesBack) {
     Session s = session();
     const fs::path file = sceneFileOf(3);
