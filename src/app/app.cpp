@@ -78,14 +78,14 @@ App::App(const AppOptions& options) : options_(options) {
     // A scene named on the command line opens paused, as presets do: its start is shown first.
     s.paused = options_.startPaused || (options_.scene && options_.benchParticles == 0);
     s.arrows = options_.arrows;
-    s.escQuits = options_.escQuits;
+    s.inPage = options_.inPage;
     const SDL_Point out = sdl_->outputSize();
     s.viewportWidth = out.x;
     s.viewportHeight = out.y;
     // Where the box goes: clear of the HUD's lines above it, the messages below it, the
     // control panel and (while they are on) the panels beside it (view/box_area.hpp).
     controls_ = controlsWidth(sdl_->pixelRatio());
-    s.layout = windowLayout(sdl_->hudFont(), out.x, out.y, controls_);
+    s.layout = windowLayout(sdl_->hudFont(), out.x, out.y, controls_, options_.inPage);
     // A window less than twice the panel's width would leave the box less room than the
     // panel: it opens folded (C or >> opens it).
     s.controls = out.x >= 2.0 * controls_.open;
@@ -212,7 +212,8 @@ void App::processEvent(const SDL_Event& e) {
          input_.translate(e, keyState(*session_), sdl_->pixelRatio(), sdl_->outputSize())) {
         // A new window size comes with where the box may go in it.
         if (auto* r = std::get_if<cmd::Resize>(&c)) {
-            r->layout = windowLayout(sdl_->hudFont(), r->width, r->height, controls_);
+            r->layout =
+                windowLayout(sdl_->hudFont(), r->width, r->height, controls_, options_.inPage);
         }
         apply(c);
     }
@@ -221,7 +222,7 @@ void App::processEvent(const SDL_Event& e) {
 void App::greet() {
     logLine("[I] Particle Sandbox: " + std::to_string(world().size()) +
             " particles. Press H for help.");
-    for (const auto& [keys, what] : controls())
+    for (const auto& [keys, what] : controls(options_.inPage))
         logLine("    " + keys + ": " + what);
 }
 
@@ -293,8 +294,10 @@ void App::writeScreenshot(const DrawStats& drawn) {
         std::error_code ec;
         const auto shown = std::filesystem::absolute(*lastScreenshot_, ec).lexically_normal();
         logLine("[I] Saved screenshot " + lastScreenshot_->string());
-        messages_.push_back({"Saved screenshot " + (ec ? *lastScreenshot_ : shown).string(),
-                             now() + kMessageSeconds});
+        const std::filesystem::path named = options_.inPage ? lastScreenshot_->filename()
+                                            : ec            ? *lastScreenshot_
+                                                            : shown;
+        messages_.push_back({"Saved screenshot " + named.string(), now() + kMessageSeconds});
     } catch (const std::exception& e) {  // SaveError, or the pixels could not be read
         logLine(std::string("[E] Screenshot failed: ") + e.what());
         messages_.push_back(

@@ -64,8 +64,9 @@ struct AppOptions {
     bool vsync = true;
     bool startPaused = false;
     bool arrows = true;  ///< velocity arrows shown at start (A toggles)
-    /// Esc with nothing open quits (false in a web page: there is nothing to quit to).
-    bool escQuits = true;
+    /// The app runs in a web page (SessionOptions::inPage): Esc does not quit, files are
+    /// downloads, the help lists the page's keys.
+    bool inPage = false;
     std::string renderDriver;        ///< SDL render driver name ("software", ...); chosen if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;

@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
     options.vsync = !noVsync && options.benchParticles == 0;
 
 #ifdef __EMSCRIPTEN__
-    options.escQuits = false;  // a page has nothing to quit to: Esc only closes what is open
+    options.inPage = true;  // Esc does not quit, what is saved is downloaded
 #endif
     try {
         auto app = std::make_unique<psb::app::App>(options);

@@ -1,8 +1,20 @@
 #include <particle_sandbox/launch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace psb {
+
+namespace {
+
+/// How many of the gaps before the newest sample measure the pointer's reporting spacing.
+constexpr int kSpacingGaps = 3;
+/// The window holds at least this many spacings...
+constexpr double kSpacingsPerWindow = 1.5;
+/// ...but never more than this many times the settings' window.
+constexpr double kMaxWindowFactor = 4.0;
+
+}  // namespace
 
 Vec2 launchVelocity(std::span<const TrajectorySample> samples, const LaunchSettings& settings) {
     const auto finite = [](const TrajectorySample& s) {
@@ -16,11 +28,32 @@ Vec2 launchVelocity(std::span<const TrajectorySample> samples, const LaunchSetti
     if (last == 0) return Vec2::Zero();
     const TrajectorySample& newest = samples[last - 1];
 
+    // The window widens when the pointer reported sparsely: a page whose frames take longer
+    // than the window delivers one move per frame, and the release, at the last move's spot,
+    // would otherwise find no earlier sample inside the window and read as a hand at rest.
+    // The spacing is the longest gap between the samples before the newest (the gap before
+    // the newest is the one a stopped hand makes, so it does not count).
+    double spacing = 0.0;
+    {
+        const TrajectorySample* later = nullptr;
+        int gaps = 0;
+        for (std::size_t k = last - 1; k-- > 0 && gaps < kSpacingGaps;) {
+            if (!finite(samples[k])) continue;
+            if (later != nullptr) {
+                spacing = std::max(spacing, later->time - samples[k].time);
+                ++gaps;
+            }
+            later = &samples[k];
+        }
+    }
+    const double window = std::min(std::max(settings.window, kSpacingsPerWindow * spacing),
+                                   kMaxWindowFactor * settings.window);
+
     // Oldest finite sample still inside the window.
     const TrajectorySample* oldest = &newest;
     for (std::size_t k = last - 1; k-- > 0;) {
         if (!finite(samples[k])) continue;
-        if (newest.time - samples[k].time > settings.window) break;
+        if (newest.time - samples[k].time > window) break;
         oldest = &samples[k];
     }
     const double span = newest.time - oldest->time;

@@ -41,6 +41,39 @@ TEST(LaunchVelocity, PauseBeforeReleaseLaunchesAtRest) {
     EXPECT_EQ(launchVelocity(s), Vec2::Zero());
 }
 
+// A page drawing slow frames delivers one move per frame (here every 150 ms, longer than the
+// window), and the release comes at the last move's spot: the drag was still a fling.
+TEST(LaunchVelocity, SparseReportsWidenTheWindowSoAFlingIsNotReadAsAStop) {
+    std::vector<TrajectorySample> s;
+    for (int k = 0; k <= 4; ++k)
+        s.push_back({k * 0.15, Vec2(30.0 * k, 0.0)});
+    s.push_back({0.601, Vec2(120.0, 0.0)});  // the release, 1 ms after the last move
+    const Vec2 v = launchVelocity(s, {.window = 0.1});
+    EXPECT_NEAR(v.x(), 30.0 / 0.151, 1e-9);
+    EXPECT_EQ(v.y(), 0.0);
+}
+
+TEST(LaunchVelocity, SparseReportsThenAStopLongerThanTheirSpacingIsAtRest) {
+    std::vector<TrajectorySample> s;
+    for (int k = 0; k <= 4; ++k)
+        s.push_back({k * 0.15, Vec2(30.0 * k, 0.0)});
+    s.push_back({0.6 + 0.3, Vec2(120.0, 0.0)});  // released 0.3 s after the last move
+    EXPECT_EQ(launchVelocity(s, {.window = 0.1}), Vec2::Zero());
+}
+
+TEST(LaunchVelocity, TheWidenedWindowStopsAtFourTimesTheSetting) {
+    // Reports a second apart: the window would be 1.5 s, but stays at 0.4 s, so a release
+    // 0.5 s after the last move is a hand at rest.
+    const std::vector<TrajectorySample> s{
+        {0.0, {0.0, 0.0}}, {1.0, {10.0, 0.0}}, {2.0, {20.0, 0.0}}, {2.5, {20.0, 0.0}}};
+    EXPECT_EQ(launchVelocity(s, {.window = 0.1}), Vec2::Zero());
+    // Reports 0.3 s apart (a window of 0.45 s, held to 0.4 s), released 50 ms after the last:
+    // the move before it is 0.35 s back, inside.
+    const std::vector<TrajectorySample> t{
+        {0.0, {0.0, 0.0}}, {0.3, {10.0, 0.0}}, {0.6, {20.0, 0.0}}, {0.65, {20.0, 0.0}}};
+    EXPECT_NEAR(launchVelocity(t, {.window = 0.1}).x(), 10.0 / 0.35, 1e-9);
+}
+
 TEST(LaunchVelocity, ShortJitterBelowMinDistanceIsAtRest) {
     const std::vector<TrajectorySample> s{{0.0, {10.0, 10.0}}, {0.05, {10.4, 10.2}}};
     EXPECT_EQ(launchVelocity(s, {.minDistance = 1.0}), Vec2::Zero());

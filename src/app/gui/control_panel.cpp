@@ -175,10 +175,16 @@ void ControlPanel::scene(const Session& s) {
     const float listHeight = ImGui::GetTextLineHeightWithSpacing() * 9.f;
     if (ImGui::BeginChild("presets", ImVec2(0.f, listHeight), true)) {
         const auto& presets = s.presets();
+        // The preset the scene came from, by its file (a saved copy keeps the preset's name
+        // but is the user's file).
+        const std::optional<std::filesystem::path>& from = s.sceneFile().path;
         for (std::size_t k = 0; k < presets.size(); ++k) {
             const SceneInfo& p = presets[k];
             ImGui::PushID(static_cast<int>(k));
-            if (ImGui::Selectable(p.name.c_str(), p.name == s.meta().name)) {
+            std::error_code ec;
+            const bool current =
+                from && *from == std::filesystem::absolute(p.file, ec).lexically_normal();
+            if (ImGui::Selectable(p.name.c_str(), current)) {
                 out_.emplace_back(cmd::OpenPreset{static_cast<int>(k)});
             }
             mark("preset " + p.name);

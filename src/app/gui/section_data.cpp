@@ -70,14 +70,17 @@ void ControlPanel::data(const Session& s) {
                            hits, plural);
     }
 
-    ImGui::TextUnformatted("File (in the screenshot folder)");
+    ImGui::TextUnformatted(s.inPage() ? "File name (downloaded)"
+                                      : "File (in the screenshot folder)");
     ImGui::SetNextItemWidth(-1.f);
     ImGui::InputTextWithHint("##export", "empty: values.csv, ...", exportName_.data(),
                              exportName_.size());
     mark("export name");
-    tip(("A file name for Export; empty: the table's own name. A relative name goes into " +
-         s.exportDir().string() + "; an existing file is kept and NAME-2.csv, ... written")
-            .c_str());
+    tip(s.inPage()
+            ? "A file name for Export; empty: the table's own name. The browser downloads it"
+            : ("A file name for Export; empty: the table's own name. A relative name goes into " +
+               s.exportDir().string() + "; an existing file is kept and NAME-2.csv, ... written")
+                  .c_str());
     for (const TableRow& row : kTables) {
         ImGui::PushID(row.label);
         if (ImGui::Button("Export")) {

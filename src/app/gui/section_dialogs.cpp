@@ -103,7 +103,9 @@ void ControlPanel::dialog(const Session& s) {
                 }
                 break;
             }
-            widgets::wrapped("Folder: " + d.proposal.parent_path().string());
+            widgets::wrapped(d.download ? std::string("The browser downloads the file (to its "
+                                                      "downloads folder, or it asks where)")
+                                        : "Folder: " + d.proposal.parent_path().string());
             ImGui::TextUnformatted("File name");
             ImGui::SetNextItemWidth(-1.f);
             if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
@@ -112,9 +114,10 @@ void ControlPanel::dialog(const Session& s) {
                                  ImGuiInputTextFlags_EnterReturnsTrue);
             mark("dialog file name");
             errorLine(d.error);
-            widgets::wrappedDisabled(
-                "A name without a folder goes in the folder above; "
-                ".json is added when there is no extension.");
+            widgets::wrappedDisabled(d.download
+                                         ? ".json is added when there is no extension."
+                                         : "A name without a folder goes in the folder above; "
+                                           ".json is added when there is no extension.");
             const std::filesystem::path typed(saveName_.data());
             const std::filesystem::path path =
                 typed.is_absolute() ? typed : d.proposal.parent_path() / typed;

@@ -303,8 +303,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 // The number the panel and the log name it by (particleNumber).
                 std::snprintf(lines[0], sizeof lines[0], "particle %llu",
                               static_cast<unsigned long long>(particleNumber(p.id[i])));
-                std::snprintf(lines[1], sizeof lines[1], "x velocity: %.2f m/s", vx);
-                std::snprintf(lines[2], sizeof lines[2], "y velocity: %.2f m/s", vy);
+                // Two decimals; what rounds to zero reads "0.00", never "-0.00".
+                const auto twoDecimals = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
+                std::snprintf(lines[1], sizeof lines[1], "x velocity: %.2f m/s", twoDecimals(vx));
+                std::snprintf(lines[2], sizeof lines[2], "y velocity: %.2f m/s", twoDecimals(vy));
                 // Signed components, as the velocity's: a ball moving left has px < 0.
                 std::snprintf(lines[3], sizeof lines[3], "p: (%s, %s) kg m/s",
                               quantity(m * vx, "", false).c_str(),

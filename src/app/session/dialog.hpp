@@ -27,6 +27,8 @@ struct Dialog {
     std::filesystem::path replace;
     /// Why the last answer was refused (a bad name, a failed save), shown in the dialog.
     std::string error;
+    /// Save As: the file goes to the browser's downloads (a web page), not to a folder shown.
+    bool download = false;
     /// Save As was opened by the quit dialog's Save: a successful save quits.
     bool quitAfterSave = false;
     /// New scene: the values the dialog starts from.

@@ -90,9 +90,12 @@ struct SessionOptions {
     std::uint32_t seed = 1;                      ///< random spawns
     bool paused = false;
     bool arrows = true;
-    /// Esc with nothing open quits (asking first when there are unsaved changes): a window's
-    /// way. A web page has nothing to quit to, and there Esc only closes what is open.
-    bool escQuits = true;
+    /// The app runs in a web page: Esc with nothing open does not quit (a page has nothing
+    /// to quit to; a window's Esc quits, asking first when there are unsaved changes); files
+    /// written (scenes, tables) are handed to the browser as downloads, so messages and dialogs
+    /// name the file and the browser's downloads, not the page's folder; the help lists the
+    /// page's keys.
+    bool inPage = false;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
     bool controls = true;
     int viewportWidth = 800;  ///< pixels
@@ -166,6 +169,8 @@ class Session {
     [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const;
     /// The folder ExportTable writes a relative name into (absolute).
     [[nodiscard]] std::filesystem::path exportDir() const;
+    /// The app runs in a web page (SessionOptions::inPage).
+    [[nodiscard]] bool inPage() const { return options_.inPage; }
     /// The file the last ExportTable wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastExport() const {
         return lastExport_;

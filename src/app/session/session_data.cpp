@@ -101,8 +101,9 @@ void Session::handle(const cmd::ExportTable& c) {
     }
     exportError_.clear();
     lastExport_ = path;
-    say(fmt("Exported %zu row%s of %s to %s", rows, rows == 1 ? "" : "s", tableName(c.table),
-            path.string().c_str()));
+    say(fmt("Exported %zu row%s of %s %s %s", rows, rows == 1 ? "" : "s", tableName(c.table),
+            options_.inPage ? "as" : "to",
+            (options_.inPage ? path.filename() : path).string().c_str()));
 }
 
 void Session::handle(const cmd::CopyTable& c) {

@@ -215,8 +215,11 @@ void Session::handle(const cmd::AskSaveAs&) {
     dialog_.kind = Dialog::Kind::SaveAs;
     dialog_.proposal = saveProposal();
     dialog_.quitAfterSave = quitAfter;
-    say("Save as: type a file name, Enter saves, Esc cancels (folder " +
-        dialog_.proposal.parent_path().string() + ")");
+    dialog_.download = options_.inPage;
+    say("Save as: type a file name, Enter saves, Esc cancels (" +
+        (dialog_.download ? std::string("the browser downloads it")
+                          : "folder " + dialog_.proposal.parent_path().string()) +
+        ")");
 }
 
 void Session::handle(const cmd::SaveAs& c) {
@@ -240,7 +243,8 @@ void Session::handle(const cmd::SaveAs& c) {
         path = dialog_.proposal.parent_path() / path;
     }
     std::error_code ec;
-    if (!c.overwrite && std::filesystem::exists(path, ec)) {
+    // A download never replaces anything the user has: the browser names it anew.
+    if (!c.overwrite && !options_.inPage && std::filesystem::exists(path, ec)) {
         // Never a silent overwrite: the dialog asks.
         const bool quitAfter = dialog_.quitAfterSave;
         if (dialog_.kind != Dialog::Kind::SaveAs) dialog_.proposal = path;
@@ -262,7 +266,10 @@ void Session::handle(const cmd::SaveAs& c) {
 
 bool Session::saveTo(const std::filesystem::path& path) {
     try {
-        say(doc_.save(path));
+        const std::string saved = doc_.save(path);
+        say(options_.inPage ? fmt("Saved %zu particles as %s", doc_.world.size(),
+                                  path.filename().string().c_str())
+                            : saved);
         return true;
     } catch (const std::exception& e) {  // SaveError; the old file is intact
         doc_.fileError = std::string("Save failed: ") + e.what();
@@ -293,7 +300,7 @@ void Session::handle(const cmd::Back&) {
     } else if (tools_.prompt.active()) {
         tools_.closePrompt();
         say("Edit cancelled");
-    } else if (!options_.escQuits) {
+    } else if (options_.inPage) {
         say("Esc closes a dialog, the help or the edit prompt; nothing is open");
     } else {
         quit();

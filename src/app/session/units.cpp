@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace psb::app {
 
@@ -64,7 +65,9 @@ std::string quantity(double value, const std::string& unit, bool prefix) {
     if (std::isnan(value)) return "n/a";
     if (std::isinf(value)) return std::string(value < 0.0 ? "-" : "") + "infinite";
     const std::string u = unit.empty() ? "" : " " + unit;
-    if (value == 0.0) return "0" + u;
+    // Below the smallest normal double is underflow, never a measured value (a velocity decayed
+    // to 10^-323 m/s is at rest): "0", not "-3.46 × 10^-323".
+    if (std::abs(value) < std::numeric_limits<double>::min()) return "0" + u;
     const double a = std::abs(value);
     if (!prefix) {
         // Grouped digits up to a billion; beyond, or below a millionth, a power of ten (no

@@ -37,7 +37,7 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
 }  // namespace
 
 WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
-                          const ControlsWidth& controls) {
+                          const ControlsWidth& controls, bool inPage) {
     const int lh = hudFont.lineHeight();
     // The HUD's band at its shortest, with one spare line for the notes about labels left out.
     const double top = static_cast<double>(hudLines(HudData{}).size() + 1) * lh + 10.0;
@@ -70,7 +70,7 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
     l.controlsOpenColumn = area(open, true);
     l.controlsFoldedColumn = area(controls.folded, true);
     const PixelRect room = helpRoom(width, height);
-    l.helpPages = static_cast<int>(helpPages(hudFont, helpLines(), {room.w, room.h}).size());
+    l.helpPages = static_cast<int>(helpPages(hudFont, helpLines(inPage), {room.w, room.h}).size());
     return l;
 }
 

@@ -30,9 +30,9 @@ struct ControlsWidth {
 
 /// What the session is told of a window `width` × `height` pixels with the control panel
 /// `controls` wide at its left: the box's area for each state of the panels, the HUD's band
-/// and the help's pages measured in `hudFont`.
+/// and the help's pages measured in `hudFont` (the page's help when `inPage`).
 [[nodiscard]] WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
-                                        const ControlsWidth& controls);
+                                        const ControlsWidth& controls, bool inPage = false);
 
 /// Whether the open control panel leaves the box a usable width (kBoxMinRoom pixels) in a window
 /// `width` pixels wide: a window made narrower folds it (WindowLayout::controlsFit).

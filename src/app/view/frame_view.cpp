@@ -172,7 +172,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (o.showHelp) {
         const PixelRect room =
             helpRoom(session.camera().viewportWidth(), session.camera().viewportHeight());
-        const auto pages = helpPages(hudFont, helpLines(), {room.w, room.h});
+        const auto pages = helpPages(hudFont, helpLines(session.inPage()), {room.w, room.h});
         o.help = pages[std::min(session.helpPage(), pages.size() - 1)];
         o.helpAt = {room.x, room.y};
     }

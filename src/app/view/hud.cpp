@@ -92,9 +92,31 @@ std::vector<std::string> profileLines(const ProfileData& d) {
     return lines;
 }
 
-const std::vector<std::pair<std::string, std::string>>& controls() {
+namespace {
+
+using Controls = std::vector<std::pair<std::string, std::string>>;
+
+/// The page's list: the window's with what a page does differently.
+Controls pageControls(const Controls& window) {
+    Controls list;
+    for (const auto& [keys, what] : window) {
+        if (keys == "Ctrl+R") continue;  // video recording is desktop-only
+        if (keys == "Ctrl+N") {
+            list.emplace_back("Scene: New scene...", "an empty box (the browser keeps Ctrl+N)");
+        } else if (keys == "Esc") {
+            list.emplace_back(keys, "close a dialog, the help or the edit prompt");
+        } else {
+            list.emplace_back(keys, what);
+        }
+    }
+    return list;
+}
+
+}  // namespace
+
+const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
     // Each line says where its button is in the control panel (the column at the left).
-    static const std::vector<std::pair<std::string, std::string>> list = {
+    static const Controls list = {
         {"Left drag on a particle", "grab it; release to fling it (panel: Tools)"},
         {"Left drag on empty space", "launch a particle: the drag is its arrow (Tools)"},
         {"Left click on a particle", "select it (panel: Selected particle)"},
@@ -134,15 +156,16 @@ const std::vector<std::pair<std::string, std::string>>& controls() {
         {"H", "show / hide this help"},
         {"Esc", "close a dialog, help, edit; quit (asks if unsaved)"},
     };
-    return list;
+    static const Controls page = pageControls(list);
+    return inPage ? page : list;
 }
 
-std::vector<std::string> helpLines() {
+std::vector<std::string> helpLines(bool inPage) {
     std::vector<std::string> lines{"Controls", ""};
     std::size_t width = 0;
-    for (const auto& [keys, what] : controls())
+    for (const auto& [keys, what] : controls(inPage))
         width = std::max(width, keys.size());
-    for (const auto& [keys, what] : controls()) {
+    for (const auto& [keys, what] : controls(inPage)) {
         lines.push_back(keys + std::string(width + 3 - keys.size(), ' ') + what);
     }
     return lines;

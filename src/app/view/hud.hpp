@@ -61,10 +61,12 @@ struct ProfileData {
 /// The profile overlay, one line per stage then the frame's step and draw times.
 [[nodiscard]] std::vector<std::string> profileLines(const ProfileData& d);
 
-/// Every control, as (keys, what it does), in the order the help overlay shows them.
-[[nodiscard]] const std::vector<std::pair<std::string, std::string>>& controls();
+/// Every control, as (keys, what it does), in the order the help overlay shows them. In a web
+/// page (`inPage`) the list is the page's: no video recording (desktop-only), New scene from
+/// the panel (browsers keep Ctrl+N), and Esc never quits.
+[[nodiscard]] const std::vector<std::pair<std::string, std::string>>& controls(bool inPage = false);
 
 /// The help overlay, one line per control.
-[[nodiscard]] std::vector<std::string> helpLines();
+[[nodiscard]] std::vector<std::string> helpLines(bool inPage = false);
 
 }  // namespace psb::app

@@ -152,7 +152,7 @@ TEST_F(SessionDocument, ReplacingUnsavedChangesSaysCtrlZBringsThemBack) {
 TEST_F(SessionDocument, WhereEscDoesNotQuitItOnlyClosesWhatIsOpen) {
     // A web page: nothing to quit to.
     SessionOptions o = options();
-    o.escQuits = false;
+    o.inPage = true;
     Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
     s.apply(cmd::ToggleHelp{});
     s.apply(cmd::Back{});
@@ -169,6 +169,44 @@ TEST_F(SessionDocument, WhereEscDoesNotQuitItOnlyClosesWhatIsOpen) {
     Session d = session();
     d.apply(cmd::Back{});
     EXPECT_FALSE(d.running());
+}
+
+// A web page hands what it saves to the browser as a download: the dialog and the messages
+// speak of the browser's downloads and the file's name, never the page's own folder, and a
+// name saved before is not "replaced" (the browser keeps both).
+TEST_F(SessionDocument, InAPageSavingIsADownloadNamedByItsFileAlone) {
+    SessionOptions o = options();
+    o.inPage = true;
+    o.saveTo.reset();
+    o.saveFolder = dir_;
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    s.apply(cmd::Save{});
+    ASSERT_EQ(s.dialog().kind, Dialog::Kind::SaveAs);
+    EXPECT_TRUE(s.dialog().download);
+    auto notices = s.takeNotices();
+    EXPECT_TRUE(said(notices, "the browser downloads it"));
+    EXPECT_FALSE(said(notices, dir_.string()));
+    s.apply(cmd::SaveAs{"lesson"});
+    EXPECT_FALSE(s.dialog().open());
+    notices = s.takeNotices();
+    EXPECT_TRUE(said(notices, "as lesson.json"));
+    EXPECT_FALSE(said(notices, dir_.string()));
+    // The same name again: saved, not a Replace question.
+    s.apply(cmd::AskSaveAs{});
+    s.apply(cmd::SaveAs{"lesson"});
+    EXPECT_FALSE(s.dialog().open());
+    EXPECT_TRUE(said(s.takeNotices(), "as lesson.json"));
+    // On the desktop the folder is named in full, and an existing name is asked about.
+    SessionOptions w = options();
+    w.saveTo.reset();
+    w.saveFolder = dir_;
+    Session d(makeWorld(defaultScene()), SceneMeta{"default"}, w);
+    d.apply(cmd::AskSaveAs{});
+    EXPECT_FALSE(d.dialog().download);
+    EXPECT_TRUE(said(d.takeNotices(), fs::absolute(dir_).lexically_normal().string()));
+    d.apply(cmd::SaveAs{"lesson"});
+    EXPECT_EQ(d.dialog().kind, Dialog::Kind::SaveAs);
+    EXPECT_FALSE(d.dialog().replace.empty());
 }
 
 TEST_F(SessionDocument, RevertReadsTheFileAgainAndUndoBringsTheChangesBack) {

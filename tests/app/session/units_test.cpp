@@ -45,7 +45,10 @@ TEST(Units, PastThePrefixesAPowerOfTenNotARowOfDigits) {
     EXPECT_EQ(quantity(9.996e30, "kg m/s", false), "1.00 \u00d7 10^31 kg m/s");
     EXPECT_EQ(quantity(999e6, "kg m/s", false), "999 000 000 kg m/s");
     EXPECT_EQ(quantity(2.5e-7, "kg m/s", false), "2.50 \u00d7 10^-7 kg m/s");
-    EXPECT_EQ(quantity(5e-324, "J"), "4.94 \u00d7 10^-324 J");  // the smallest double
+    EXPECT_EQ(quantity(2.3e-308, "J"), "2.30 \u00d7 10^-308 J");  // just above underflow
+    // Underflow is not a value: a momentum of -3.46e-323 (a velocity decayed to nothing) is 0.
+    EXPECT_EQ(quantity(5e-324, "J"), "0 J");  // the smallest double
+    EXPECT_EQ(quantity(-3.46e-323, "kg m/s", false), "0 kg m/s");
     EXPECT_EQ(quantity(-1.7976931348623157e308, "kg m/s", false), "-1.80 \u00d7 10^308 kg m/s");
 }
 

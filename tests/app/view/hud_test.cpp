@@ -79,6 +79,22 @@ bool anyContains(const std::vector<std::string>& lines, const std::string& s) {
                        [&](const std::string& l) { return l.find(s) != std::string::npos; });
 }
 
+// The page's help lists the page's keys: no Ctrl+N (the browser keeps it), no video (Ctrl+R:
+// desktop-only), and Esc that closes things but never quits.
+TEST(Hud, ThePagesHelpListsOnlyWhatWorksInAPage) {
+    const auto window = helpLines(false);
+    const auto page = helpLines(true);
+    EXPECT_TRUE(anyContains(window, "Ctrl+N"));
+    EXPECT_TRUE(anyContains(window, "Ctrl+R"));
+    EXPECT_TRUE(anyContains(window, "quit"));
+    EXPECT_FALSE(anyContains(page, "Ctrl+N "));
+    EXPECT_FALSE(anyContains(page, "Ctrl+R"));
+    EXPECT_FALSE(anyContains(page, "quit"));
+    EXPECT_TRUE(anyContains(page, "New scene..."));
+    EXPECT_TRUE(anyContains(page, "close a dialog, the help or the edit prompt"));
+    EXPECT_EQ(page.size(), window.size() - 1);
+}
+
 TEST(Hud, ProfileListsEveryStageAndTheFrameTimes) {
     ProfileData d;
     for (const char* stage :
