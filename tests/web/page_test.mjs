@@ -1,9 +1,11 @@
 // The web build's end-to-end test: the page in headless Chromium (tests/web/run.sh serves it
 // and sets PSB_WEB_URL). It checks, as a user would see it:
 //   1. the default scene appears (coloured particles in the box) and moves (pixels change);
-//   2. a mouse drag on empty space launches a particle (the title's count goes up by one);
+//   2. a mouse drag on empty space launches a particle (the title's count goes up by one), and
+//      paused, a particle flung at a hand's pace keeps its speed;
 //   3. a preset opens from the control panel (the title names it);
-//   4. Save downloads a scene file, which the desktop runner (particle-sim) reads back;
+//   4. Save downloads a scene file, which the desktop runner (particle-sim) reads back, and the
+//      message names the download, not the page's folder;
 //   5. a malformed scene opened with Open is refused with the file's name and the problem, and
 //      the program goes on; the saved scene opened the same way opens;
 //   6. a one-finger touch drag launches a particle, two fingers pinch-zoom the view;
@@ -167,6 +169,17 @@ await page.mouse.up();
 await waitFor("the launch", async () => (await count()) === before + 1);
 check((await count()) === before + 1, `a mouse drag launches a particle: ${before} -> ${await count()}`);
 await shot("2-launched");
+// Paused, a particle grabbed and flung at a hand's pace keeps its speed for when time runs.
+await page.mouse.move(spot.x, spot.y);
+await page.mouse.down();
+for (let k = 1; k <= 8; k++) {
+  await page.mouse.move(spot.x - 5 * k, spot.y + 3 * k);
+  await page.waitForTimeout(20);
+}
+await page.mouse.up();
+await waitFor("the fling", async () => (await log()).some((l) => /Flung at|Let go at rest/.test(l)));
+const flung = (await log()).filter((l) => /Flung at|Let go at rest/.test(l)).pop() || "nothing";
+check(/Flung at .* while paused/.test(flung), `a paused fling keeps its speed: ${flung}`);
 
 // 3. A preset opens from the panel.
 await click("section Scene");
@@ -208,6 +221,9 @@ await waitFor("the download message", async () =>
 check((await log()).some((l) => saved && l.startsWith("[I] Downloaded " + path.basename(saved))),
       "the program says where the file went: " +
       ((await log()).find((l) => l.startsWith("[I] Downloaded ")) || "nothing"));
+const savedLine = (await log()).find((l) => /^\[I\] Saved \d+ particles/.test(l)) || "nothing";
+check(saved && savedLine.endsWith(" as " + path.basename(saved)) && !savedLine.includes("/files"),
+      "the save names the download, not the page's folder: " + savedLine);
 if (saved && sim) {
   let ok = true, out = "";
   try {
