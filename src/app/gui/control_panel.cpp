@@ -74,6 +74,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             scene(s);
             physics(s);
             show(s, pixelRatio);
+            lastCollision(s);
             tools(s, pixelRatio);
             readouts(s);
             data(s);
@@ -269,6 +270,9 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
+    box("Last collision card", v.collision, cmd::ShowOption::Collision,
+        "The selected particle's last collision (with none selected, the last between two "
+        "particles): velocities, momenta and energy just before and just after (key J)");
     if (s.meta().bins) {
         box("Bin counts against the bell curve", v.bins, cmd::ShowOption::Bins,
             "How many balls landed in each bin, against the binomial distribution and the "

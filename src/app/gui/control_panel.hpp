@@ -101,6 +101,9 @@ class ControlPanel {
     /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).
     void obstacleTools(const Session& s);
     void readouts(const Session& s);
+    /// The last collision card, while it is shown (section_collision.cpp).
+    void lastCollision(const Session& s);
+    void card(const Session& s);
     /// Recording, and the tables' Export and Copy buttons (section_data.cpp).
     void data(const Session& s);
     /// Video recording: format, area, Record / Stop, where the last one went (section_video.cpp).
@@ -134,6 +137,8 @@ class ControlPanel {
     /// The particle the Selected particle section last showed: a new selection scrolls the
     /// panel to the section once (it is below the fold of an 800-pixel window).
     ParticleId shownSelection_;
+    /// The last collision card was shown last frame: turned on, the panel scrolls to it once.
+    bool cardShown_ = false;
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 6> fieldText_{};
     std::array<bool, 6> fieldActive_{};

@@ -128,6 +128,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
             return {show(state, ShowOption::Plots)};
         case SDLK_d:
             return {show(state, ShowOption::Speeds)};
+        case SDLK_j:
+            return {show(state, ShowOption::Collision)};
         case SDLK_t:
             return {modeStep(state.solver)};
         case SDLK_o:

@@ -24,6 +24,8 @@ const char* keyOf(ShowOption option) {
             return "profile";
         case ShowOption::Bins:
             return "bins";
+        case ShowOption::Collision:
+            return "collision";
     }
     return "";
 }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "view/collision_card_lines.hpp"
 #include "view/gas_lines.hpp"
 
 namespace psb::app {
@@ -41,6 +42,9 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
         for (const GasLine& l : gasLines(*frame.gas))
             lines.push_back(l.name + ": " + l.value);
         section(out, "Gas", lines);
+    }
+    if (frame.collision) {
+        section(out, "Last collision", collisionCardLines(collisionCardText(*frame.collision)));
     }
     if (o.showHelp) section(out, "Help", o.help);
     if (frame.bins && frame.layout.bins.w > 0) {

@@ -13,20 +13,20 @@ double rateSince(const ObservablesSample& previous, const ObservablesSample& s) 
 
 }  // namespace
 
-void DataRecorder::restart(World& world) {
+void DataRecorder::restart() {
     run_.clear();
     runStride_ = 1;
     runSkipped_ = 0;
-    stop(world);
+    stop();
     trajectory_ = Trajectory();
     collisions_.clear();
 }
 
-void DataRecorder::restartRun(World& world) {
+void DataRecorder::restartRun() {
     run_.clear();
     runStride_ = 1;
     runSkipped_ = 0;
-    stop(world);
+    stop();
 }
 
 void DataRecorder::sample(const ObservablesSample& s) {
@@ -63,14 +63,11 @@ void DataRecorder::start(World& world, std::vector<ParticleId> ids, int every) {
     stopReason_.clear();
     recording_ = true;
     stepsToSample_ = every_;
-    (void)world.takeCollisions();
-    world.recordCollisions(CollisionLog(std::move(ids)));
     trajectory_.record(world);
 }
 
-void DataRecorder::stop(World& world) {
+void DataRecorder::stop() {
     recording_ = false;
-    world.stopRecordingCollisions();
 }
 
 std::string DataRecorder::takeStopReason() {
@@ -87,25 +84,21 @@ void DataRecorder::dropAfter(double time) {
         collisions_.pop_back();
 }
 
-void DataRecorder::beforeStep(World& world) {
-    if (!recording_) {
-        if (world.recordingCollisions()) world.stopRecordingCollisions();
-        return;
-    }
-    // Whatever the world holds now was not recorded by this recording's steps (a world put
-    // back by an undo, or rebuilt for a past frame, carries the log it had then).
-    if (!world.recordingCollisions()) {
-        world.recordCollisions(CollisionLog(trajectory_.ids()));
-    } else {
-        (void)world.takeCollisions();
-    }
-    dropAfter(world.time());
+std::optional<CollisionLog> DataRecorder::collisionsWanted() const {
+    if (!recording_) return std::nullopt;
+    return CollisionLog(trajectory_.ids());
 }
 
-void DataRecorder::afterStep(World& world) {
+void DataRecorder::beforeStep(const World& world) {
+    if (recording_) dropAfter(world.time());
+}
+
+void DataRecorder::afterStep(World& world, const std::vector<Collision>& heard) {
     if (!recording_) return;
-    const std::vector<Collision> more = world.takeCollisions();
-    collisions_.insert(collisions_.end(), more.begin(), more.end());
+    const CollisionLog chosen(trajectory_.ids());
+    for (const Collision& c : heard) {
+        if (chosen.chosen(c.a) || (!c.b.isNull() && chosen.chosen(c.b))) collisions_.push_back(c);
+    }
     if (--stepsToSample_ <= 0) {
         stepsToSample_ = every_;
         trajectory_.record(world);
@@ -116,7 +109,7 @@ void DataRecorder::afterStep(World& world) {
                                 std::to_string(trajectory_.samples().size()) + " samples"
                           : "the collision log reached its limit of " +
                                 std::to_string(collisions_.size()) + " collisions";
-        stop(world);
+        stop();
     }
 }
 

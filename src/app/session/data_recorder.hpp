@@ -8,6 +8,7 @@
 // two futures.
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include <particle_sandbox/collision_log.hpp>
@@ -30,10 +31,10 @@ class DataRecorder {
     static constexpr int kMaxEvery = 1000;
 
     /// A new scene: the run's series starts over and recording stops.
-    void restart(World& world);
+    void restart();
     /// The same scene run again (Restart): the run's series starts over and recording stops;
     /// what was recorded stays, to export, until the next recording starts.
-    void restartRun(World& world);
+    void restartRun();
     /// The frame's observables (Monitor::observables), appended to the run's series; at the
     /// same time as the last sample (paused), in its place.
     void sample(const ObservablesSample& s);
@@ -41,16 +42,20 @@ class DataRecorder {
     /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state
     /// now as the first sample; what an earlier recording held is dropped.
     void start(World& world, std::vector<ParticleId> ids, int every);
-    void stop(World& world);
+    void stop();
     [[nodiscard]] bool recording() const { return recording_; }
     /// Why recording stopped by itself (a limit reached), once; empty otherwise.
     [[nodiscard]] std::string takeStopReason();
 
-    /// Around each step of the world: the world records the chosen particles' collisions while
-    /// recording (an undo may have put back a world that did not), and what it recorded joins
-    /// the log; the trajectory is sampled every `every` steps.
-    void beforeStep(World& world);
-    void afterStep(World& world);
+    /// The collisions the world should record for the recording (none when not recording):
+    /// the chosen particles'. The session merges it with what the other instruments want.
+    [[nodiscard]] std::optional<CollisionLog> collisionsWanted() const;
+    /// Around each step of the world: before it, what was recorded after the world's time is
+    /// dropped (an undo or a step back took the clock back); after it, `heard` (the step's
+    /// collision records, perhaps of more particles than the recording's) joins the log, and
+    /// the trajectory is sampled every `every` steps.
+    void beforeStep(const World& world);
+    void afterStep(World& world, const std::vector<Collision>& heard);
 
     [[nodiscard]] const std::vector<ObservablesSample>& run() const { return run_; }
     [[nodiscard]] const Trajectory& trajectory() const { return trajectory_; }

@@ -74,8 +74,12 @@ class GasGauges {
     std::deque<Sample> samples_;
 };
 
+/// Particles a gas needs for its gauges: two balls colliding are a collision, not a gas, and
+/// their "pressure" (no wall hit yet: zero) and "temperature" would only confuse the lesson.
+inline constexpr std::size_t kGasMinParticles = 10;
+
 /// Whether the gas gauges apply to `world`: walls all round, no gravity (whose weight the walls
-/// would carry too), and at least two particles.
+/// would carry too), and at least kGasMinParticles particles.
 [[nodiscard]] bool gasGaugesApply(const World& world);
 
 }  // namespace psb::app

@@ -73,10 +73,11 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     history_.startOver();
     clock_.restart();
     monitor_.restart(doc_.world, newScene);
+    lastCollision_.clear();
     if (newScene && keepRecorded) {
-        data_.restartRun(doc_.world);
+        data_.restartRun();
     } else if (newScene) {
-        data_.restart(doc_.world);
+        data_.restart();
     }
     if (newScene) view_.arrowSeconds = arrowSecondsFor(doc_.world);
 }

@@ -54,6 +54,7 @@
 #include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/history.hpp"
+#include "session/last_collision.hpp"
 #include "session/monitor.hpp"
 #include "session/scene_io.hpp"
 #include "session/sim_clock.hpp"
@@ -165,6 +166,10 @@ class Session {
     // Data out (data_recorder.hpp, session_data.cpp).
     /// The run's series, the recorded trajectories and collisions.
     [[nodiscard]] const DataRecorder& data() const { return data_; }
+    /// The last collision card's content (last_collision.hpp), while the card is shown.
+    [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
+        return lastCollision_.card();
+    }
     /// `table` as text with `separator` (what ExportTable writes and CopyTable copies).
     [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const;
     /// The folder ExportTable writes a relative name into (absolute).
@@ -376,6 +381,8 @@ class Session {
     void holdParticle(double now);
     /// The selected particle is gone: forget it (and close its edit prompt), saying so.
     void checkSelection();
+    /// Has the world record the collisions the instruments want now (collision_feed.hpp).
+    void listenForCollisions();
     // The obstacle tools (session_obstacles.cpp).
     [[nodiscard]] bool obstacleToolOn() const;
     void obstaclePress();
@@ -461,6 +468,7 @@ class Session {
     Dialog dialog_;
     bool screenshotRequested_ = false;
     DataRecorder data_;
+    LastCollision lastCollision_;
     std::optional<std::string> clipboard_;
     VideoSettings videoSettings_;
     std::optional<VideoSettings> videoToggle_;

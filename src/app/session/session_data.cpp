@@ -136,7 +136,8 @@ std::optional<VideoSettings> Session::takeVideoToggle() {
 void Session::handle(const cmd::SetRecording& c) {
     if (!c.on) {
         if (!data_.recording()) return;
-        data_.stop(doc_.world);
+        data_.stop();
+        listenForCollisions();
         const std::size_t hits = data_.collisions().size();
         say(fmt("Recording stopped: %zu samples, %zu collision%s (Data section: Export or Copy)",
                 data_.trajectory().samples().size(), hits, hits == 1 ? "" : "s"));
@@ -162,6 +163,7 @@ void Session::handle(const cmd::SetRecording& c) {
         return;
     }
     data_.start(doc_.world, ids, c.every > 0 ? c.every : data_.every());
+    listenForCollisions();
     const std::string who =
         ids.size() == 1
             ? fmt("particle %llu", static_cast<unsigned long long>(particleNumber(ids[0])))

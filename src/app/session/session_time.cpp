@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "session/collision_feed.hpp"
 #include "session/session.hpp"
 #include "session/session_text.hpp"
 #include "session/units.hpp"
@@ -43,10 +44,22 @@ void Session::handle(const cmd::SetTimeScale& c) {
 void Session::stepOnce(double now) {
     holdParticle(now);
     const double dt = doc_.meta.dt;  // the scene's frame length
+    // One collision log for the instruments that read it (collision_feed.hpp).
+    const std::optional<ParticleId> selected = tools_.selection.id();
+    listen(doc_.world,
+           mergeWanted(data_.collisionsWanted(), LastCollision::wanted(view_.collision, selected)));
     data_.beforeStep(doc_.world);
     doc_.world.step(dt);
-    data_.afterStep(doc_.world);
+    const std::vector<Collision> records = heard(doc_.world);
+    data_.afterStep(doc_.world, records);
+    if (view_.collision) lastCollision_.heard(records, doc_.world, selected);
     history_.timeline.stepped(dt);
+}
+
+void Session::listenForCollisions() {
+    // One collision log for the instruments that read it (collision_feed.hpp).
+    listen(doc_.world, mergeWanted(data_.collisionsWanted(),
+                                   LastCollision::wanted(view_.collision, tools_.selection.id())));
 }
 
 void Session::update(double realSeconds, double now, double budgetMs) {
@@ -60,6 +73,8 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     // Show the held particle exactly at the hand, paused or not.
     holdParticle(now);
     checkSelection();
+    lastCollision_.follow(tools_.selection.id());
+    lastCollision_.dropAfter(doc_.world.time());
     // A past frame shown is neither the present nor a new sample.
     monitor_.frameDone(doc_.world, !history_.viewing);
     if (!history_.viewing) {

@@ -103,6 +103,10 @@ void Session::handle(const cmd::SetShow& c) {
     if (flag == c.on) return;
     flag = c.on;
     say(showMessage(c.option, c.on));
+    if (c.option == cmd::ShowOption::Collision) {
+        if (!c.on) lastCollision_.clear();
+        listenForCollisions();
+    }
     // The side column's panels change what the box is fitted beside.
     using O = cmd::ShowOption;
     if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile ||

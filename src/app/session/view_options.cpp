@@ -72,6 +72,7 @@ constexpr ShowEntry kShowEntries[] = {
     {&ViewOptions::speeds, "Speed distribution"},
     {&ViewOptions::profile, "Profile"},
     {&ViewOptions::bins, "Bin counts"},
+    {&ViewOptions::collision, "Last collision card"},
 };
 
 const ShowEntry& entry(ShowOption option) {

@@ -1,6 +1,6 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O and the arrow scale. No SDL, so the session and its
+// toggles of the keys A, S, V, L, K, D, O, J and the arrow scale. No SDL, so the session and its
 // tests can use it without a window.
 
 #include <algorithm>
@@ -15,8 +15,17 @@ namespace psb::app {
 /// What L shows.
 enum class TrailMode { Off, Selected, All };
 
-/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O).
-enum class ShowOption : std::uint8_t { Arrows, Labels, Momentum, Plots, Speeds, Profile, Bins };
+/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J).
+enum class ShowOption : std::uint8_t {
+    Arrows,
+    Labels,
+    Momentum,
+    Plots,
+    Speeds,
+    Profile,
+    Bins,
+    Collision
+};
 
 /// Off -> Selected -> All -> Off.
 [[nodiscard]] TrailMode nextTrailMode(TrailMode mode);
@@ -43,6 +52,8 @@ struct ViewOptions {
     /// on unless switched off, drawn only for a scene that has bins.
     bool bins = true;
     bool profile = false;  ///< O: the step pipeline's stages, timed
+    /// J: the last collision card (the selected particle's last collision, or any pair's).
+    bool collision = false;
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);

@@ -15,6 +15,7 @@
 
 #include "session/camera.hpp"
 #include "session/gas_gauges.hpp"
+#include "session/last_collision.hpp"
 #include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 #include "view/bin_histogram.hpp"
@@ -75,6 +76,8 @@ struct FrameView {
     std::optional<RecordingMarkView> recordingMark;
     /// The gas instruments' reading, when they apply (the panel's Readouts show it).
     std::optional<GasReading> gas;
+    /// The last collision card, while shown (J) and once there was a collision to show.
+    std::optional<CollisionCard> collision;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     std::vector<DropperView> droppers;
     Overlays overlays;

@@ -151,6 +151,7 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"L", "trails: off / selected particle / all (Show)"},
         {"K", "plots of energy, momentum, collisions (Show)"},
         {"D", "speed histogram (Show)"},
+        {"J", "last collision card: before and after, momentum, energy (Show)"},
         {"C", "open / fold the control panel"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "session/collision_feed.hpp"
 #include "session/data_recorder.hpp"
 
 namespace psb::app {
@@ -43,43 +44,33 @@ TEST(DataRecorder, ASampleAtTheSameTimeIsSkippedAndAnEarlierOneCutsTheFuture) {
     EXPECT_EQ(d.run()[2].time, 1.5);
 }
 
-TEST(DataRecorder, RecordsTheChosenParticlesAndStopsTheWorldsLog) {
+TEST(DataRecorder, RecordsTheChosenParticlesCollisionsFromWhatTheWorldHeard) {
     WorldDef def;
     def.width = def.height = 10.0;
     World w(def);
     const ParticleId a = w.add({.position = Vec2(5.0, 5.0), .velocity = Vec2(3.0, 0.0)});
-    w.add({.position = Vec2(2.0, 2.0)});
+    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(-3.0, 0.0)});
     DataRecorder d;
     d.start(w, {a}, 2);
-    EXPECT_TRUE(w.recordingCollisions());
+    ASSERT_TRUE(d.collisionsWanted());
+    EXPECT_EQ(d.collisionsWanted()->chosen(), std::vector<ParticleId>{a});
+    // The world records every collision (another instrument wants them all): the recorder
+    // keeps only its particle's.
+    listen(w, mergeWanted(d.collisionsWanted(), CollisionLog()));
     for (int k = 0; k < 200; ++k) {
         d.beforeStep(w);
         w.step(0.01);
-        d.afterStep(w);
+        d.afterStep(w, heard(w));
     }
     EXPECT_EQ(d.trajectory().samples().size(), 101u) << "t = 0 and every second step";
     ASSERT_EQ(d.collisions().size(), 1u) << "it reaches the right wall at 4/3 s";
     EXPECT_EQ(d.collisions()[0].wall(), WallSide::Right);
-    d.stop(w);
-    EXPECT_FALSE(w.recordingCollisions());
+    d.stop();
+    EXPECT_FALSE(d.collisionsWanted());
     d.beforeStep(w);
     w.step(0.01);
-    d.afterStep(w);
+    d.afterStep(w, {});
     EXPECT_EQ(d.trajectory().samples().size(), 101u);
-}
-
-TEST(DataRecorder, AWorldPutBackWithoutItsLogRecordsAgain) {
-    WorldDef def;
-    def.width = def.height = 10.0;
-    World w(def);
-    const ParticleId a = w.add({.position = Vec2(5.0, 5.0), .velocity = Vec2(3.0, 0.0)});
-    DataRecorder d;
-    const World before = w;  // an undo snapshot taken before recording started
-    d.start(w, {a}, 1);
-    w = before;
-    d.beforeStep(w);
-    EXPECT_TRUE(w.recordingCollisions());
-    EXPECT_EQ(w.collisionLog()->chosen(), std::vector<ParticleId>{a});
 }
 
 }  // namespace

@@ -97,6 +97,12 @@ TEST(GasGauges, ApplyOnlyToAWalledBoxWithoutGravity) {
     d.walls = false;
     EXPECT_FALSE(gasGaugesApply(World(d)));
     EXPECT_FALSE(gasGaugesApply(World(w.def())));  // no particles
+    World few(w.def());
+    for (std::size_t k = 0; k + 1 < kGasMinParticles; ++k)
+        few.add({.position = Vec2(1.0 + 0.5 * static_cast<double>(k), 1.0), .radius = 0.1});
+    EXPECT_FALSE(gasGaugesApply(few)) << "two balls colliding are not a gas";
+    few.add({.position = Vec2(1.0, 3.0), .radius = 0.1});
+    EXPECT_TRUE(gasGaugesApply(few));
 }
 
 }  // namespace

@@ -59,7 +59,7 @@ TEST(SimClock, TheFirstFrameAfterAPauseOwesOneFrameNotThePause) {
     c.paused = true;
     EXPECT_EQ(frames(c, 0.25), 0);
     c.paused = false;
-    EXPECT_EQ(frames(c, 0.25), 1);  // 1/60 s owed: one step of 0.01 s, the rest carried
+    EXPECT_EQ(frames(c, 0.25), 1);   // 1/60 s owed: one step of 0.01 s, the rest carried
     EXPECT_EQ(frames(c, 0.25), 25);  // running: real time again
 }
 

@@ -1,0 +1,78 @@
+// The last collision card as text (collision_card_lines.hpp): signed components with units,
+// before and after, and what was kept and lost.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "view/collision_card_lines.hpp"
+
+namespace psb::app {
+namespace {
+
+bool has(const std::vector<std::string>& lines, const std::string& s) {
+    return std::any_of(lines.begin(), lines.end(),
+                       [&](const std::string& l) { return l.find(s) != std::string::npos; });
+}
+
+CollisionCard headOn(double e) {
+    // 1 kg at 2 m/s meets 3 kg at -1 m/s.
+    CollisionCard card;
+    Collision& c = card.collision;
+    c.time = 2.0 / 3.0;
+    c.with = Collision::With::Particle;
+    c.a = ParticleId{0, 0};
+    c.b = ParticleId{1, 0};
+    card.massA = 1.0;
+    card.massB = 3.0;
+    card.numberA = 1;
+    card.numberB = 2;
+    c.aBefore = Vec2(2.0, 0.0);
+    c.bBefore = Vec2(-1.0, 0.0);
+    const double vcm = -0.25;  // the centre of mass's velocity
+    c.aAfter = Vec2(vcm - e * (2.0 - vcm), 0.0);
+    c.bAfter = Vec2(vcm - e * (-1.0 - vcm), 0.0);
+    c.impulse = card.massA * (c.aAfter - c.aBefore);
+    return card;
+}
+
+TEST(CollisionCardLines, AnElasticHeadOnCollisionKeepsMomentumAndEnergy) {
+    const CollisionCardText t = collisionCardText(headOn(1.0));
+    EXPECT_EQ(t.title, "Particles 1 and 2 at t = 667 ms");
+    const auto lines = collisionCardLines(t);
+    EXPECT_TRUE(has(lines, "v 1: (2.00, 0) m/s -> (-2.50, 0) m/s"));
+    EXPECT_TRUE(has(lines, "v 2: (-1.00, 0) m/s -> (0.500, 0) m/s"));
+    EXPECT_TRUE(has(lines, "p 2: (-3.00, 0) kg m/s -> (1.50, 0) kg m/s"));
+    EXPECT_TRUE(has(lines, "total p: (-1.00, 0) kg m/s -> (-1.00, 0) kg m/s"));
+    EXPECT_TRUE(has(lines, "kinetic energy: 3.50 J -> 3.50 J"));
+    EXPECT_TRUE(has(lines, "Impulse on 1: (-4.50, 0) N s (on 2: the opposite)"));
+    EXPECT_TRUE(has(lines, "Total momentum kept"));
+    EXPECT_TRUE(has(lines, "Kinetic energy kept (elastic"));
+}
+
+TEST(CollisionCardLines, AnInelasticOneSaysTheShareOfEnergyLost) {
+    // e = 0.5: the relative motion's energy (3.375 J of the 3.5 J) is cut to a quarter.
+    const auto lines = collisionCardLines(collisionCardText(headOn(0.5)));
+    EXPECT_TRUE(has(lines, "Kinetic energy lost: 72.3 % of it")) << lines.back();
+    EXPECT_TRUE(has(lines, "Total momentum kept"));
+}
+
+TEST(CollisionCardLines, AWallNamesItsSideAndShowsOneParticle) {
+    CollisionCard card;
+    card.collision.with = Collision::With::Wall;
+    card.collision.where = static_cast<std::uint32_t>(WallSide::Right);
+    card.collision.aBefore = Vec2(3.0, 1.0);
+    card.collision.aAfter = Vec2(-3.0, 1.0);
+    card.collision.impulse = Vec2(-12.0, 0.0);
+    card.massA = 2.0;
+    card.numberA = 4;
+    const CollisionCardText t = collisionCardText(card);
+    EXPECT_EQ(t.title.rfind("Particle 4 and the right wall", 0), 0u) << t.title;
+    EXPECT_EQ(t.rows.size(), 3u) << "v, p and the energy: no second particle";
+    const auto lines = collisionCardLines(t);
+    EXPECT_TRUE(has(lines, "p 4: (6.00, 2.00) kg m/s -> (-6.00, 2.00) kg m/s"));
+    EXPECT_FALSE(has(lines, "Total momentum"));
+}
+
+}  // namespace
+}  // namespace psb::app
