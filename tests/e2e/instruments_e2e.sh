@@ -10,6 +10,9 @@
 #                                               and the card reads the textbook's velocities,
 #                                               momenta and energy, before and after
 #   a click on the 3 kg ball                 -> the card follows it: the 3 kg ball first
+#   I, then 2 typed into ball 1's mass cell   -> the values table lists both balls' signed
+#                                               values and the totals (p -1.00 kg m/s, 3.50 J),
+#                                               then ball 1 is 2 kg and the total mass 5.00 kg
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -71,5 +74,26 @@ expect "Particles 2 and 1 at t = 1.33 s"
 expect "Impulse on 2: (4.50, 0) N s"
 pass "selected, the 3 kg ball comes first: $(head -1 <<<"$card")"
 
-quit_with Escape
+# --- the values table: read, then a mass typed into a cell ----------------------------------------
+key i
+wait_log "\[I\] Values table on"
+sleep 0.5
+snap values
+values=$(section values Values)
+grep -qP "^total\t\t\t\t\t-1.00\t0\t3.50\t4.00$" <<<"$values" ||
+    fail "the values table's totals are not p = (-1.00, 0), 3.50 J, 4.00 kg: $values"
+grep -qP "^2\t[0-9.]+\t2.00\t0.500\t0\t1.50\t0\t0.375\t3.00$" <<<"$values" ||
+    fail "ball 2's row is not v = (0.5, 0), p = (1.5, 0): $values"
+pass "the values table: $(tail -1 <<<"$values" | tr '\t' ' ')"
+type_into "values 1 mass" 2
+wait_log "\[I\] Edited particle 1: mass 2 kg"
+snap edited
+grep -qP "^total\t.*\t5.00$" <<<"$(section edited Values)" ||
+    fail "after the edit the total mass is not 5.00 kg: $(section edited Values)"
+pass "a mass typed into the table: $(section edited Values | tail -1 | tr '\t' ' ')"
+
+key Escape  # unsaved changes (the mass): the quit dialog; D discards
+wait_log "Unsaved changes to .*: Save, Discard or Cancel"
+quit_with d
+if kill -0 "$APP_PID" 2>/dev/null; then fail "the program did not quit"; fi
 echo "PASS"

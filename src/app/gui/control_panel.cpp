@@ -88,6 +88,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     if (!open) ImGui::PopStyleVar();
     ImGui::PopStyleColor();
     launchPreview(s, pixelRatio);
+    valuesWindow(s, height);
     dialog(s);
     return std::move(out_);
 }
@@ -270,6 +271,9 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
+    box("Values table", v.values, cmd::ShowOption::Values,
+        "Every particle's signed position, velocity, momentum and energy, with the totals, in a "
+        "window; position, velocity and mass can be typed in (key I)");
     box("Last collision card", v.collision, cmd::ShowOption::Collision,
         "The selected particle's last collision (with none selected, the last between two "
         "particles): velocities, momenta and energy just before and just after (key J)");

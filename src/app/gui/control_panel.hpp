@@ -104,6 +104,9 @@ class ControlPanel {
     /// The last collision card, while it is shown (section_collision.cpp).
     void lastCollision(const Session& s);
     void card(const Session& s);
+    /// The values table's window, while shown (section_values.cpp), in a display `height`
+    /// points high.
+    void valuesWindow(const Session& s, float height);
     /// Recording, and the tables' Export and Copy buttons (section_data.cpp).
     void data(const Session& s);
     /// Video recording: format, area, Record / Stop, where the last one went (section_video.cpp).
@@ -139,6 +142,9 @@ class ControlPanel {
     ParticleId shownSelection_;
     /// The last collision card was shown last frame: turned on, the panel scrolls to it once.
     bool cardShown_ = false;
+    /// The values table's cell being typed in (its particle and field) and its text.
+    std::optional<std::pair<ParticleId, ParticleField>> valuesEditing_;
+    std::array<char, 64> valuesText_{};
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 6> fieldText_{};
     std::array<bool, 6> fieldActive_{};

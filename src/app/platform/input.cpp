@@ -130,6 +130,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
             return {show(state, ShowOption::Speeds)};
         case SDLK_j:
             return {show(state, ShowOption::Collision)};
+        case SDLK_i:
+            return {show(state, ShowOption::Values)};
         case SDLK_t:
             return {modeStep(state.solver)};
         case SDLK_o:

@@ -26,6 +26,8 @@ const char* keyOf(ShowOption option) {
             return "bins";
         case ShowOption::Collision:
             return "collision";
+        case ShowOption::Values:
+            return "values";
     }
     return "";
 }

@@ -43,6 +43,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
             lines.push_back(l.name + ": " + l.value);
         section(out, "Gas", lines);
     }
+    if (frame.values) section(out, "Values", valuesLines(*frame.values));
     if (frame.collision) {
         section(out, "Last collision", collisionCardLines(collisionCardText(*frame.collision)));
     }

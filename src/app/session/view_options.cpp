@@ -73,6 +73,7 @@ constexpr ShowEntry kShowEntries[] = {
     {&ViewOptions::profile, "Profile"},
     {&ViewOptions::bins, "Bin counts"},
     {&ViewOptions::collision, "Last collision card"},
+    {&ViewOptions::values, "Values table"},
 };
 
 const ShowEntry& entry(ShowOption option) {

@@ -1,6 +1,7 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O, J and the arrow scale. No SDL, so the session and its
+// toggles of the keys A, S, V, L, K, D, O, J, I and the arrow
+// scale. No SDL, so the session and its
 // tests can use it without a window.
 
 #include <algorithm>
@@ -15,7 +16,7 @@ namespace psb::app {
 /// What L shows.
 enum class TrailMode { Off, Selected, All };
 
-/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J).
+/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I).
 enum class ShowOption : std::uint8_t {
     Arrows,
     Labels,
@@ -24,7 +25,8 @@ enum class ShowOption : std::uint8_t {
     Speeds,
     Profile,
     Bins,
-    Collision
+    Collision,
+    Values
 };
 
 /// Off -> Selected -> All -> Off.
@@ -54,6 +56,8 @@ struct ViewOptions {
     bool profile = false;  ///< O: the step pipeline's stages, timed
     /// J: the last collision card (the selected particle's last collision, or any pair's).
     bool collision = false;
+    /// I: the values table (every particle's signed values and their totals), in a window.
+    bool values = false;
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);

@@ -125,6 +125,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
     f.gas = session.gasReading();
     if (session.view().collision) f.collision = session.lastCollision();
+    if (session.view().values) f.values = valuesTable(world, session.selection().id());
     if (stats.video.recording) {
         // The top-right corner of the box's side of the window, clear of the HUD at its left.
         RecordingMarkView mark;

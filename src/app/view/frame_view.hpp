@@ -23,6 +23,7 @@
 #include "view/overlays.hpp"
 #include "view/screen_layout.hpp"
 #include "view/text_measure.hpp"
+#include "view/values_table.hpp"
 
 namespace psb::app {
 
@@ -78,6 +79,8 @@ struct FrameView {
     std::optional<GasReading> gas;
     /// The last collision card, while shown (J) and once there was a collision to show.
     std::optional<CollisionCard> collision;
+    /// The values table, while shown (I).
+    std::optional<ValuesTable> values;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     std::vector<DropperView> droppers;
     Overlays overlays;

@@ -152,6 +152,7 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"K", "plots of energy, momentum, collisions (Show)"},
         {"D", "speed histogram (Show)"},
         {"J", "last collision card: before and after, momentum, energy (Show)"},
+        {"I", "values table: every particle's x, v, p, energy, totals (Show)"},
         {"C", "open / fold the control panel"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},

@@ -1,0 +1,61 @@
+#pragma once
+// The values table (PhET's "More Data"), as plain rows: every particle's signed position,
+// velocity, momentum, kinetic energy and mass, and their totals (the momentum as a vector), with
+// each column's name and unit. The panel's Values table window shows it, with the position,
+// velocity and mass cells editable; the text F12 writes beside a screenshot lists it.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/world.hpp>
+
+#include "session/edit_prompt.hpp"
+
+namespace psb::app {
+
+/// Rows the table lists at most; beyond, the totals and the selected particle's row.
+inline constexpr std::size_t kValuesMaxRows = 60;
+
+struct ValuesColumn {
+    const char* name;  ///< "vx"
+    const char* unit;  ///< "m/s"
+    /// The particle's field a cell of this column edits (none: computed, read only).
+    std::optional<ParticleField> field;
+};
+
+/// x, y, vx, vy, px, py, kinetic energy, mass: the order of ValuesRow::values.
+inline constexpr std::size_t kValuesColumns = 8;
+[[nodiscard]] const std::array<ValuesColumn, kValuesColumns>& valuesColumns();
+
+struct ValuesRow {
+    ParticleId id;
+    std::uint64_t number = 0;  ///< particleNumber(id)
+    std::array<double, kValuesColumns> values{};
+};
+
+struct ValuesTable {
+    std::vector<ValuesRow> rows;  ///< by number
+    /// Sums: px, py, the kinetic energy and the mass (position and velocity columns: NaN, as a
+    /// sum of positions means nothing).
+    std::array<double, kValuesColumns> totals{};
+    std::size_t particles = 0;
+    /// Why rows were left out (more than kValuesMaxRows particles); empty when all are listed.
+    std::string note;
+};
+
+/// The table of `world`: every particle when there are at most kValuesMaxRows, else only
+/// `selected`'s row (if any); the totals always cover every particle.
+[[nodiscard]] ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected);
+
+/// A cell as shown: three significant figures, signed ("-2.50"), "" for NaN.
+[[nodiscard]] std::string valuesCell(double value);
+
+/// The table as text lines (a header naming each unit, a row per particle, the totals), for
+/// the screenshot's text file.
+[[nodiscard]] std::vector<std::string> valuesLines(const ValuesTable& table);
+
+}  // namespace psb::app
