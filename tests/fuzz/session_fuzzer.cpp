@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -115,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 54)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 56)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -138,9 +139,9 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                                in.ConsumeIntegralInRange<int>(-10, 4000)};
         case 11: {
             // A key that shows or hides something, the trails key, or the help.
-            const int k = in.ConsumeIntegralInRange<int>(0, 8);
-            if (k == 7) return cmd::ToggleHelp{};
-            if (k == 8) return cmd::SetTrails{static_cast<int>(nextTrailMode(s.view().trails))};
+            const int k = in.ConsumeIntegralInRange<int>(0, 10);
+            if (k == 9) return cmd::ToggleHelp{};
+            if (k == 10) return cmd::SetTrails{static_cast<int>(nextTrailMode(s.view().trails))};
             const auto option = static_cast<ShowOption>(k);
             return cmd::SetShow{option, !s.view().shown(option)};
         }
@@ -223,7 +224,7 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 40:
             return cmd::Select{someParticle(in, s)};
         case 41:
-            return cmd::SetShow{static_cast<cmd::ShowOption>(in.ConsumeIntegralInRange<int>(0, 6)),
+            return cmd::SetShow{static_cast<cmd::ShowOption>(in.ConsumeIntegralInRange<int>(0, 8)),
                                 in.ConsumeBool()};
         case 42:
             return in.ConsumeBool() ? Command{cmd::ToggleControls{}} : Command{cmd::Back{}};
@@ -272,6 +273,23 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 53:
             return cmd::SetVideoSettings{
                 {static_cast<VideoFormat>(in.ConsumeIntegralInRange<int>(0, 2)), in.ConsumeBool()}};
+        case 54:
+            return cmd::Stopwatch{
+                static_cast<cmd::Stopwatch::Action>(in.ConsumeIntegralInRange<int>(0, 3))};
+        case 55: {
+            static const double kFactors[] = {1.1,
+                                              1.0 / 1.1,
+                                              0.0,
+                                              -1.0,
+                                              10.0,
+                                              11.0,
+                                              1e-300,
+                                              std::numeric_limits<double>::quiet_NaN(),
+                                              std::numeric_limits<double>::infinity()};
+            return cmd::ScaleSpeeds{in.ConsumeBool()
+                                        ? value(in, 0.0, 20.0)
+                                        : kFactors[in.ConsumeIntegralInRange<int>(0, 8)]};
+        }
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }

@@ -167,6 +167,41 @@ void ControlPanel::time(const Session& s) {
         ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "Reaching only x%.2g: too much to compute",
                            s.reachedTimeScale());
     }
+    stopwatch(s);
+}
+
+void ControlPanel::stopwatch(const Session& s) {
+    using A = cmd::Stopwatch::Action;
+    const LabStopwatch& w = s.stopwatch();
+    const double now = s.world().time();
+    ImGui::TextUnformatted("Stopwatch");
+    ImGui::SameLine();
+    if (ImGui::SmallButton(w.running() ? "Stop" : "Start")) {
+        out_.emplace_back(cmd::Stopwatch{A::StartStop});
+    }
+    mark("Stopwatch start");
+    tip("Times simulated time: it stops while paused and reads the same at any speed (key U)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!w.running());
+    if (ImGui::SmallButton("Lap")) out_.emplace_back(cmd::Stopwatch{A::Lap});
+    mark("Stopwatch lap");
+    ImGui::EndDisabled();
+    tip("A split time, while it runs (Shift+U)");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!w.used());
+    if (ImGui::SmallButton("Reset")) out_.emplace_back(cmd::Stopwatch{A::Reset});
+    mark("Stopwatch reset");
+    ImGui::EndDisabled();
+    tip("Back to zero (Shift+U while stopped)");
+    if (w.used()) {
+        ImGui::SameLine();
+        if (w.beforeStart(now)) {
+            ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "before its start");
+        } else {
+            ImGui::Text("%.3f s", w.reading(now));
+        }
+        mark("Stopwatch reading");
+    }
 }
 
 void ControlPanel::scene(const Session& s) {

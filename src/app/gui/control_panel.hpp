@@ -96,6 +96,8 @@ class ControlPanel {
     /// The dialog the session has open, as a modal window (section_dialogs.cpp).
     void dialog(const Session& s);
     void physics(const Session& s);
+    /// The stopwatch's row in the Time section.
+    void stopwatch(const Session& s);
     void show(const Session& s, float pixelRatio);
     void tools(const Session& s, float pixelRatio);
     /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).

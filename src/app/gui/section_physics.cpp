@@ -16,6 +16,9 @@ using widgets::tip;
 
 namespace {
 
+/// What a press of Heat multiplies every speed by (Cool divides).
+constexpr double kHeatFactor = 1.1;
+
 /// What each mode trades, in a sentence a student can read.
 const char* modeSentence(StepMode mode) {
     switch (mode) {
@@ -104,6 +107,14 @@ void ControlPanel::physics(const Session& s) {
     if (ImGui::Checkbox("Walls", &walls)) out_.emplace_back(cmd::SetWalls{walls});
     mark("Walls");
     tip("The four walls of the box; without them particles fly away");
+    // Heat and cool: every speed times a factor, so the temperature changes by its square.
+    if (ImGui::Button("Heat")) out_.emplace_back(cmd::ScaleSpeeds{kHeatFactor});
+    mark("Heat");
+    tip("Every particle a tenth faster: the temperature (mean kinetic energy) up by 21 %");
+    ImGui::SameLine();
+    if (ImGui::Button("Cool")) out_.emplace_back(cmd::ScaleSpeeds{1.0 / kHeatFactor});
+    mark("Cool");
+    tip("Every particle a tenth slower (divided by 1.1): the temperature down by 17 %");
 }
 
 }  // namespace psb::app

@@ -309,6 +309,19 @@ struct SetShow {
     ShowOption option = ShowOption::Arrows;
     bool on = true;
 };
+/// Every free particle's velocity times `factor` (Heat, Cool in the Physics section): the
+/// temperature, the mean kinetic energy, times factor².
+struct ScaleSpeeds {
+    static constexpr Traits traits = kEditsPastPrompt;
+    double factor = 1.0;
+};
+/// The stopwatch (lab_stopwatch.hpp): the Time section's buttons, U (start / stop) and
+/// Shift+U (lap while running, reset while stopped).
+struct Stopwatch {
+    static constexpr Traits traits = kPastPrompt;
+    enum class Action { StartStop, Lap, Reset, LapOrReset };
+    Action action = Action::StartStop;
+};
 /// The trails shown (the panel's choice, and the key L with the next mode).
 struct SetTrails {
     static constexpr Traits traits = kPastPrompt;
@@ -415,6 +428,7 @@ using Command = std::variant<
     cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls,
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
-    cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings>;
+    cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings,
+    cmd::Stopwatch, cmd::ScaleSpeeds>;
 
 }  // namespace psb::app

@@ -8,7 +8,8 @@
 namespace psb::app {
 
 bool gasGaugesApply(const World& world) {
-    return world.def().walls && world.def().gravity == Vec2::Zero() && world.size() >= kGasMinParticles;
+    return world.def().walls && world.def().gravity == Vec2::Zero() &&
+           world.size() >= kGasMinParticles;
 }
 
 void GasGauges::sample(const World& world) {

@@ -74,6 +74,7 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     clock_.restart();
     monitor_.restart(doc_.world, newScene);
     lastCollision_.clear();
+    stopwatch_.reset();
     if (newScene && keepRecorded) {
         data_.restartRun();
     } else if (newScene) {

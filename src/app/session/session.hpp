@@ -54,6 +54,7 @@
 #include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/history.hpp"
+#include "session/lab_stopwatch.hpp"
 #include "session/last_collision.hpp"
 #include "session/monitor.hpp"
 #include "session/scene_io.hpp"
@@ -167,6 +168,8 @@ class Session {
     /// The run's series, the recorded trajectories and collisions.
     [[nodiscard]] const DataRecorder& data() const { return data_; }
     /// The last collision card's content (last_collision.hpp), while the card is shown.
+    /// The stopwatch on simulated time (lab_stopwatch.hpp).
+    [[nodiscard]] const LabStopwatch& stopwatch() const { return stopwatch_; }
     [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
         return lastCollision_.card();
     }
@@ -366,6 +369,8 @@ class Session {
     void handle(const cmd::ToggleHelp& c);
     void handle(const cmd::SetShow& c);
     void handle(const cmd::SetTrails& c);
+    void handle(const cmd::Stopwatch& c);
+    void handle(const cmd::ScaleSpeeds& c);
     void handle(const cmd::ToggleControls& c);
     void handle(const cmd::Screenshot& c);
     // Data out (session_data.cpp).
@@ -469,6 +474,7 @@ class Session {
     bool screenshotRequested_ = false;
     DataRecorder data_;
     LastCollision lastCollision_;
+    LabStopwatch stopwatch_;
     std::optional<std::string> clipboard_;
     VideoSettings videoSettings_;
     std::optional<VideoSettings> videoToggle_;

@@ -41,6 +41,36 @@ void Session::handle(const cmd::SetTimeScale& c) {
     if (clock_.scale() != before) remember("set time speed");
 }
 
+void Session::handle(const cmd::Stopwatch& c) {
+    using A = cmd::Stopwatch::Action;
+    const double t = doc_.world.time();
+    A action = c.action;
+    if (action == A::LapOrReset) action = stopwatch_.running() ? A::Lap : A::Reset;
+    switch (action) {
+        case A::StartStop:
+            if (stopwatch_.running()) {
+                stopwatch_.stop(t);
+                say(fmt("Stopwatch stopped at %.3f s", stopwatch_.reading(t)));
+            } else {
+                stopwatch_.start(t);
+                say(clock_.paused ? "Stopwatch started: it runs with simulated time (Space)"
+                                  : "Stopwatch started");
+            }
+            break;
+        case A::Lap:
+            if (!stopwatch_.running()) return;
+            stopwatch_.lap(t);
+            say(fmt("Lap %zu: %.3f s", stopwatch_.laps().size(), stopwatch_.laps().back()));
+            break;
+        case A::Reset:
+        case A::LapOrReset:
+            if (!stopwatch_.used()) return;
+            stopwatch_.reset();
+            say("Stopwatch reset");
+            break;
+    }
+}
+
 void Session::stepOnce(double now) {
     holdParticle(now);
     const double dt = doc_.meta.dt;  // the scene's frame length

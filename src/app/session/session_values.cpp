@@ -9,9 +9,11 @@
 
 #include <particle_sandbox/error.hpp>
 
+#include "session/edit_prompt.hpp"
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
 #include "session/session_text.hpp"
+#include "session/units.hpp"
 
 namespace psb::app {
 
@@ -37,6 +39,41 @@ void Session::handle(const cmd::SetFriction& c) {
     notices_.push_back(
         {Notice::Level::Info, fmt("Friction %.2f", c.value), true, !c.continues, "mu"});
     userAction("set friction", c.continues);
+}
+
+void Session::handle(const cmd::ScaleSpeeds& c) {
+    if (!(c.factor > 0.0 && c.factor <= 10.0)) {
+        say(fmt("Speeds can be scaled by more than 0 and at most 10, got %g", c.factor),
+            Notice::Level::Warning);
+        return;
+    }
+    World& w = doc_.world;
+    const ParticleArrays& p = w.particles();
+    double fastest = 0.0;
+    std::vector<ParticleId> free;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        if (p.isKinematic(i)) continue;  // the hand holds it
+        free.push_back(p.id[i]);
+        fastest = std::max(fastest, std::hypot(p.vx[i], p.vy[i]));
+    }
+    if (free.empty() || fastest == 0.0) {
+        say("Nothing moves: heating scales speeds, and every speed is zero (launch or fling "
+            "some first)",
+            Notice::Level::Warning);
+        return;
+    }
+    const double limit = kMaxEditSpeedBoxes * std::max(w.def().width, w.def().height);
+    if (fastest * c.factor > limit) {
+        say(fmt("Not heated: the fastest particle would move at %s, over %g box sizes a second",
+                quantity(fastest * c.factor, "m/s").c_str(), kMaxEditSpeedBoxes),
+            Notice::Level::Warning);
+        return;
+    }
+    for (const ParticleId id : free)
+        w.setVelocity(id, c.factor * w.get(id).velocity);
+    say(fmt("%s: every speed x%.3g, the temperature (mean kinetic energy) x%.3g",
+            c.factor >= 1.0 ? "Heated" : "Cooled", c.factor, c.factor * c.factor));
+    userAction(c.factor >= 1.0 ? "heat" : "cool");
 }
 
 void Session::handle(const cmd::SetGravity& c) {

@@ -148,7 +148,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // The HUD's readings wrap between their parts within the room right of the control panel.
     const int left = controlsInset(session, controls);
     const int hudRoom = session.camera().viewportWidth() - left;
-    o.hud = wrapHudLines(hudFont, hudLines(hudData(session)), hudRoom - 8);
+    std::vector<std::string> readings = hudLines(hudData(session));
+    // The stopwatch where the eye is, and in screenshots and videos of the box.
+    if (std::string line = stopwatchLine(session.stopwatch(), session.world().time());
+        !line.empty()) {
+        readings.push_back(std::move(line));
+    }
+    o.hud = wrapHudLines(hudFont, readings, hudRoom - 8);
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (sideColumnFolded(session, controls)) {
         // Said where the eye is: the charts asked for are not drawn over the box.

@@ -135,6 +135,7 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"Arrow keys, right or middle drag", "pan (Tools: Pan)"},
         {"F", "fit the box to the window"},
         {"Space", "pause / resume (Time: Play, Pause)"},
+        {"U / Shift+U", "stopwatch start, stop / lap, reset: simulated time (Time)"},
         {"N", "one step while paused (Time: Step)"},
         {"Shift+Left/Right, PgUp/PgDn", "a frame, a second back / forward in time (Time)"},
         {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change (Time: Undo, Redo)"},

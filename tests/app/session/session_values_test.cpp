@@ -111,6 +111,40 @@ TEST_F(SessionValues, WallsOnAndOff) {
     EXPECT_TRUE(s.world().def().walls);
 }
 
+// Heat and Cool scale every free particle's speed: the temperature goes with its square; a
+// factor out of range, or one that would make a particle absurdly fast, changes nothing.
+TEST_F(SessionValues, HeatAndCoolScaleEverySpeedUndoably) {
+    Session s = session();
+    const World before = s.world();
+    double energy = 0.0;
+    for (const ParticleId id : before.ids())
+        energy += 0.5 * before.get(id).mass * before.get(id).velocity.squaredNorm();
+    ASSERT_GT(energy, 0.0);
+    s.apply(cmd::ScaleSpeeds{1.1});
+    double heated = 0.0;
+    for (const ParticleId id : s.world().ids()) {
+        EXPECT_EQ(s.world().get(id).velocity, 1.1 * before.get(id).velocity);
+        heated += 0.5 * s.world().get(id).mass * s.world().get(id).velocity.squaredNorm();
+    }
+    EXPECT_NEAR(heated / energy, 1.21, 1e-12);
+    EXPECT_TRUE(said(s.takeNotices(), "Heated: every speed x1.1, the temperature"));
+    EXPECT_EQ(s.undoLabel(), "heat");
+    s.apply(cmd::Undo{});
+    for (const ParticleId id : s.world().ids())
+        EXPECT_EQ(s.world().get(id).velocity, before.get(id).velocity);
+    for (const double bad : {0.0, -1.0, 11.0, std::nan(""), HUGE_VAL}) {
+        s.apply(cmd::ScaleSpeeds{bad});
+        EXPECT_TRUE(said(s.takeNotices(), "Speeds can be scaled")) << bad;
+    }
+    s.apply(cmd::ScaleSpeeds{10.0});
+    s.apply(cmd::ScaleSpeeds{10.0});
+    s.apply(cmd::ScaleSpeeds{10.0});
+    s.apply(cmd::ScaleSpeeds{10.0});  // 10^4 times the speeds: over 1000 box sizes a second
+    EXPECT_TRUE(said(s.takeNotices(), "Not heated: the fastest particle would move at"));
+    s.apply(cmd::ScaleSpeeds{1.0 / 1.1});
+    EXPECT_TRUE(said(s.takeNotices(), "Cooled"));
+}
+
 TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
     Session s = session();
     s.apply(cmd::SetMode{StepMode::Substep, 8});
