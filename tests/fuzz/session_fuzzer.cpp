@@ -116,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 56)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 57)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -289,6 +289,14 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
             return cmd::ScaleSpeeds{in.ConsumeBool()
                                         ? value(in, 0.0, 20.0)
                                         : kFactors[in.ConsumeIntegralInRange<int>(0, 8)]};
+        }
+        case 56: {
+            static const double kSeconds[] = {
+                0.005, 5.0, 0.0, -1.0, 1e300, std::numeric_limits<double>::quiet_NaN()};
+            return cmd::SetArrowScale{in.ConsumeBool()
+                                          ? value(in, 0.0, 6.0)
+                                          : kSeconds[in.ConsumeIntegralInRange<int>(0, 5)],
+                                      in.ConsumeBool()};
         }
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};

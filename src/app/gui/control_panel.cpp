@@ -298,6 +298,21 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
+    double arrow = v.arrowSeconds;
+    bool dragging = false;
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
+    if (widgets::slider("Arrow scale", arrow, kMinArrowSeconds, kMaxArrowSeconds, "%.3g s",
+                        dragging, ImGuiSliderFlags_Logarithmic)) {
+        out_.emplace_back(cmd::SetArrowScale{arrow, dragging});
+    }
+    mark("Arrow scale");
+    tip(v.arrowScaleSet ? "Each arrow reaches where its particle will be after this much time "
+                          "(and a launch's drag gives that speed). Set by you: it stays until a "
+                          "scene opens"
+                        : "Each arrow reaches where its particle will be after this much time "
+                          "(and a launch's drag gives that speed). Chosen for the scene so that "
+                          "arrows do not hide it; it only shortens, when the motion speeds up. "
+                          "Set it and it stays");
     box("Momentum and centre of mass", v.momentum, cmd::ShowOption::Momentum,
         "Momentum arrows m v, the total momentum and the centre of mass with its path (key V)");
     box("Plots", v.plots, cmd::ShowOption::Plots,

@@ -315,6 +315,12 @@ struct ScaleSpeeds {
     static constexpr Traits traits = kEditsPastPrompt;
     double factor = 1.0;
 };
+/// The arrow scale, seconds of motion an arrow shows (the Show section's slider): kept as set.
+struct SetArrowScale {
+    static constexpr Traits traits = kPastPrompt;
+    double seconds = 1.0 / 3.0;
+    bool continues = false;  ///< part of a slider drag begun earlier (logged once)
+};
 /// The stopwatch (lab_stopwatch.hpp): the Time section's buttons, U (start / stop) and
 /// Shift+U (lap while running, reset while stopped).
 struct Stopwatch {
@@ -429,6 +435,6 @@ using Command = std::variant<
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
     cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings,
-    cmd::Stopwatch, cmd::ScaleSpeeds>;
+    cmd::Stopwatch, cmd::ScaleSpeeds, cmd::SetArrowScale>;
 
 }  // namespace psb::app

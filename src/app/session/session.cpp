@@ -80,7 +80,10 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     } else if (newScene) {
         data_.restart();
     }
-    if (newScene) view_.arrowSeconds = arrowSecondsFor(doc_.world);
+    if (newScene) {
+        view_.arrowSeconds = arrowSecondsFor(doc_.world);
+        view_.arrowScaleSet = false;
+    }
 }
 
 std::vector<Notice> Session::takeNotices() {

@@ -371,6 +371,7 @@ class Session {
     void handle(const cmd::SetTrails& c);
     void handle(const cmd::Stopwatch& c);
     void handle(const cmd::ScaleSpeeds& c);
+    void handle(const cmd::SetArrowScale& c);
     void handle(const cmd::ToggleControls& c);
     void handle(const cmd::Screenshot& c);
     // Data out (session_data.cpp).

@@ -99,7 +99,10 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     monitor_.endSteps(doc_.world);
     // Arrows shorten when the motion speeds up (a bullet scattering a crowd) but never grow
     // back on their own, so their lengths stay comparable over time; opening a scene resets it.
-    view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(doc_.world));
+    // The user's own scale stays as set.
+    if (!view_.arrowScaleSet) {
+        view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(doc_.world));
+    }
     // Show the held particle exactly at the hand, paused or not.
     holdParticle(now);
     checkSelection();

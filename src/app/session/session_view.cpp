@@ -115,6 +115,20 @@ void Session::handle(const cmd::SetShow& c) {
     }
 }
 
+void Session::handle(const cmd::SetArrowScale& c) {
+    if (!(c.seconds >= kMinArrowSeconds && c.seconds <= kMaxArrowSeconds)) {
+        say(fmt("The arrow scale must be %g s to %g s of motion, got %g", kMinArrowSeconds,
+                kMaxArrowSeconds, c.seconds),
+            Notice::Level::Warning);
+        return;
+    }
+    view_.arrowSeconds = c.seconds;
+    view_.arrowScaleSet = true;
+    notices_.push_back({Notice::Level::Info,
+                        fmt("Arrows: %.3g s of motion, kept until a scene opens", c.seconds), true,
+                        !c.continues, "arrow scale"});
+}
+
 void Session::handle(const cmd::SetTrails& c) {
     const auto mode = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
     if (mode == view_.trails) return;

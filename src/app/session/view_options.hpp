@@ -38,6 +38,10 @@ enum class ShowOption : std::uint8_t {
 /// particles show one (the HUD names the arrow scale, so a short arrow still reads as a speed).
 inline constexpr double kMinArrowPixels = 10.0;
 
+/// The arrow scale the user may set, seconds of motion.
+inline constexpr double kMinArrowSeconds = 0.005;
+inline constexpr double kMaxArrowSeconds = 5.0;
+
 /// What to draw besides the discs.
 struct ViewOptions {
     bool arrows = true;   ///< velocity arrows
@@ -45,6 +49,9 @@ struct ViewOptions {
     /// Arrow length per unit speed, seconds: an arrow reaches where the particle will be after
     /// this time. The original drew 20 × the per-frame displacement at 60 fps, i.e. 1/3 s.
     double arrowSeconds = 1.0 / 3.0;
+    /// The user set the arrow scale (the Show section's slider): it stays as set, no longer
+    /// shortening by itself, until a scene opens.
+    bool arrowScaleSet = false;
     // Analysis overlays (see docs/app.md, "Seeing the physics").
     bool momentum = false;              ///< V: momentum arrows, centre of mass, Σ m v
     TrailMode trails = TrailMode::Off;  ///< L: path traces

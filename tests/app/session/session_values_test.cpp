@@ -145,6 +145,40 @@ TEST_F(SessionValues, HeatAndCoolScaleEverySpeedUndoably) {
     EXPECT_TRUE(said(s.takeNotices(), "Cooled"));
 }
 
+TEST_F(SessionValues, TheArrowScaleStaysWhereTheUserSetItUntilASceneOpens) {
+    // Left alone, the scale shortens as the motion speeds up (heat the default scene 100 x).
+    Session alone = session();
+    const double chosen = alone.view().arrowSeconds;
+    alone.apply(cmd::ScaleSpeeds{10.0});
+    alone.apply(cmd::ScaleSpeeds{10.0});
+    alone.apply(cmd::TogglePause{});
+    alone.update(0.1, 0.1);
+    EXPECT_LT(alone.view().arrowSeconds, chosen / 10.0);
+
+    // Set by the user, it stays through the same speed-up.
+    Session s = session();
+    s.apply(cmd::SetArrowScale{1.0, false});
+    EXPECT_TRUE(said(s.takeNotices(), "Arrows: 1 s of motion, kept until a scene opens"));
+    EXPECT_TRUE(s.view().arrowScaleSet);
+    s.apply(cmd::ScaleSpeeds{10.0});
+    s.apply(cmd::ScaleSpeeds{10.0});
+    s.apply(cmd::TogglePause{});
+    s.update(0.1, 0.1);
+    EXPECT_DOUBLE_EQ(s.view().arrowSeconds, 1.0);
+
+    // Bad values are refused and change nothing.
+    for (const double bad : {0.0, -1.0, 0.001, 6.0, std::nan(""), HUGE_VAL}) {
+        s.apply(cmd::SetArrowScale{bad, false});
+        EXPECT_TRUE(said(s.takeNotices(), "The arrow scale must be")) << bad;
+        EXPECT_DOUBLE_EQ(s.view().arrowSeconds, 1.0) << bad;
+    }
+
+    // A new scene chooses its own scale again.
+    s.setWorld(World(s.world().def()), SceneMeta{.name = "empty", .dt = Scene{}.dt});
+    EXPECT_FALSE(s.view().arrowScaleSet);
+    EXPECT_DOUBLE_EQ(s.view().arrowSeconds, 1.0 / 3.0);
+}
+
 TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
     Session s = session();
     s.apply(cmd::SetMode{StepMode::Substep, 8});
