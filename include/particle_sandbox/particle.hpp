@@ -15,6 +15,10 @@ struct ParticleDef {
     double mass = 1.0;             ///< kilograms, finite and >= DBL_MIN (so 1/mass is finite)
     double radius = 1.0;           ///< metres, finite and > 0
     Color color{};
+    double angle = 0.0;            ///< radians, finite; positive turns +x toward +y
+    double angularVelocity = 0.0;  ///< radians per second, finite; 0 if fixedRotation
+    double inertiaFactor = 0.5;  ///< k in I = k m r², in (0, 1]: 1/2 a disc, 2/5 a ball, 1 a ring
+    bool fixedRotation = false;  ///< never turns (a sliding puck): contacts give it no spin
 };
 
 /// A copy of one particle's state, as World::get returns it.
@@ -25,6 +29,10 @@ struct Particle {
     double mass = 1.0;             ///< kilograms
     double radius = 1.0;           ///< metres
     Color color{};
+    double angle = 0.0;            ///< radians, positive turns +x toward +y
+    double angularVelocity = 0.0;  ///< radians per second, positive turns +x toward +y
+    double inertiaFactor = 0.5;    ///< k in I = k m r²
+    bool fixedRotation = false;    ///< never turns
 };
 
 }  // namespace psb
