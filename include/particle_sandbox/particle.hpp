@@ -8,6 +8,9 @@
 
 namespace psb {
 
+/// The inertia factor k of a particle made without one: I = k m r² with k = 1/2, a uniform disc.
+inline constexpr double kDefaultInertiaFactor = 0.5;
+
 /// What a new particle is made of. Validated by World::add.
 struct ParticleDef {
     Vec2 position = Vec2::Zero();  ///< centre, metres
@@ -17,7 +20,8 @@ struct ParticleDef {
     Color color{};
     double angle = 0.0;            ///< radians, finite; positive turns +x toward +y
     double angularVelocity = 0.0;  ///< radians per second, finite; 0 if fixedRotation
-    double inertiaFactor = 0.5;  ///< k in I = k m r², in (0, 1]: 1/2 a disc, 2/5 a ball, 1 a ring
+    /// k in I = k m r², in (0, 1]: 1/2 a uniform disc, 2/5 a ball, 1 a ring.
+    double inertiaFactor = kDefaultInertiaFactor;
     bool fixedRotation = false;  ///< never turns (a sliding puck): contacts give it no spin
 };
 
@@ -31,8 +35,8 @@ struct Particle {
     Color color{};
     double angle = 0.0;            ///< radians, positive turns +x toward +y
     double angularVelocity = 0.0;  ///< radians per second, positive turns +x toward +y
-    double inertiaFactor = 0.5;    ///< k in I = k m r²
-    bool fixedRotation = false;    ///< never turns
+    double inertiaFactor = kDefaultInertiaFactor;  ///< k in I = k m r²
+    bool fixedRotation = false;                    ///< never turns
 };
 
 }  // namespace psb

@@ -7,12 +7,10 @@
 #include <vector>
 
 #include <particle_sandbox/color.hpp>
+#include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/particle_id.hpp>
 
 namespace psb {
-
-/// The inertia factor k of a particle made without one: I = k m r² with k = 1/2, a uniform disc.
-inline constexpr double kDefaultInertiaFactor = 0.5;
 
 /// Hot data first (positions, velocities, inverse masses, radii), cold data last. Index i of
 /// every array is the same particle; indices are dense (0..size-1) and change when a particle is

@@ -16,7 +16,7 @@ struct SettingProblem {
     std::string_view setting;  ///< the field: "width", "height", "gravity", "restitution",
                                ///< "friction", "tangential restitution", "substeps", "mode",
                                ///< "broadphase" or "obstacles"
-    std::string message;  ///< what is wrong with it, e.g. "must be finite and > 0 (got -1)"
+    std::string message;       ///< what is wrong with it, e.g. "must be finite and > 0 (got -1)"
     /// For a value refused only in combination with another setting, that setting's name (the
     /// setting that refuses it); otherwise empty.
     std::string_view because;

@@ -137,6 +137,36 @@ inline bool collideDiscs(double& vxi, double& vyi, double& vxj, double& vyj, dou
     return true;
 }
 
+/// A rebound off a fixed wall: `v` is the velocity component along the wall's outward normal
+/// (> 0 means moving into the wall), `vt` the component along the wall. Turns v inward with
+/// speed e·|v| and, when kFriction, reduces |vt| by at most mu times the normal velocity change.
+/// Returns the normal velocity change per unit mass, >= 0 (0 when v <= 0: nothing to do).
+template <bool kFriction>
+inline double reboundOffWall(double& v, double& vt, double e, double mu) {
+    if (!(v > 0.0)) return 0.0;
+    const double dv = (1.0 + e) * v;
+    v -= dv;
+    if constexpr (kFriction) {
+        const double cut = std::min(std::abs(vt), mu * dv);
+        vt -= std::copysign(cut, vt);
+    }
+    return dv;
+}
+
+/// A rebound off a fixed surface whose outward unit normal (from the surface to the particle)
+/// is n: the walls' law (reboundOffWall) in the frame of n. Returns the normal velocity change
+/// per unit mass, >= 0 (0 when the velocity does not point into the surface).
+template <bool kFriction>
+inline double reboundOffSurface(double& vx, double& vy, double nx, double ny, double e, double mu) {
+    double into = -(vx * nx + vy * ny);
+    double along = vx * -ny + vy * nx;
+    const double dv = reboundOffWall<kFriction>(into, along, e, mu);
+    if (dv == 0.0) return 0.0;
+    vx = -into * nx + along * -ny;
+    vy = -into * ny + along * nx;
+    return dv;
+}
+
 /// What a rough contact reads and changes of one disc's rotation: its angular velocity (rad/s),
 /// radius and spin weight q = 1/k (0 for a disc that never turns: ParticleArrays::spinWeight).
 struct Spin {
@@ -182,57 +212,31 @@ inline bool collideRoughDiscs(double& vxi, double& vyi, Spin si, double& vxj, do
 }
 
 /// The rough tangential impulse of a fixed surface (a disc of infinite mass that does not turn)
-/// on a disc touching it, per unit of the disc's mass: `n` is the surface's outward unit normal
-/// (from the surface to the disc) and `dv` the normal velocity change the contact just gave
-/// (>= 0), which caps the tangential one at mu·dv.
-inline void roughOffSurfaceTangential(double& vx, double& vy, Spin s, double nx, double ny,
-                                      double dv, double mu, double beta) {
-    const double tx = -ny, ty = nx;
-    const double vt = vx * tx + vy * ty - s.omega * s.r;
+/// on a disc touching it, per unit of the disc's mass, on `along`, the disc's velocity component
+/// along the surface's tangent t = (−n_y, n_x) (n the outward unit normal, from the surface to
+/// the disc). `dv` is the normal velocity change the contact gave (>= 0), which caps the
+/// tangential one at mu·dv. For a disc that does not turn (q = 0, ω = 0) and β = 0 it is, bit
+/// for bit, the friction of reboundOffWall.
+inline void roughAlongSurface(double& along, Spin s, double dv, double mu, double beta) {
+    const double slip = along - s.omega * s.r;
     const double limit = mu * dv;
-    const double jt = std::clamp(-(1.0 + beta) * vt / (1.0 + s.q), -limit, limit);
-    vx += jt * tx;
-    vy += jt * ty;
+    const double jt = std::clamp(-(1.0 + beta) * slip / (1.0 + s.q), -limit, limit);
+    along += jt;
     s.omega -= jt * s.q / s.r;
 }
 
-/// A rebound off a fixed wall: `v` is the velocity component along the wall's outward normal
-/// (> 0 means moving into the wall), `vt` the component along the wall. Turns v inward with
-/// speed e·|v| and, when kFriction, reduces |vt| by at most mu times the normal velocity change.
-/// Returns the normal velocity change per unit mass, >= 0 (0 when v <= 0: nothing to do).
-template <bool kFriction>
-inline double reboundOffWall(double& v, double& vt, double e, double mu) {
-    if (!(v > 0.0)) return 0.0;
-    const double dv = (1.0 + e) * v;
-    v -= dv;
-    if constexpr (kFriction) {
-        const double cut = std::min(std::abs(vt), mu * dv);
-        vt -= std::copysign(cut, vt);
-    }
-    return dv;
-}
-
-/// A rebound off a fixed surface whose outward unit normal (from the surface to the particle)
-/// is n: the walls' law (reboundOffWall) in the frame of n. Returns the normal velocity change
-/// per unit mass, >= 0 (0 when the velocity does not point into the surface).
-template <bool kFriction>
-inline double reboundOffSurface(double& vx, double& vy, double nx, double ny, double e, double mu) {
-    double into = -(vx * nx + vy * ny);
-    double along = vx * -ny + vy * nx;
-    const double dv = reboundOffWall<kFriction>(into, along, e, mu);
-    if (dv == 0.0) return 0.0;
-    vx = -into * nx + along * -ny;
-    vy = -into * ny + along * nx;
-    return dv;
-}
-
 /// reboundOffSurface for a turning disc: the walls' law along n, then the rough tangential
-/// impulse. Returns the normal velocity change per unit mass, >= 0 (0: no contact, nothing
-/// changed).
+/// impulse (roughAlongSurface), in the frame of n as reboundOffSurface works. Returns the normal
+/// velocity change per unit mass, >= 0 (0: no contact, nothing changed).
 inline double roughReboundOffSurface(double& vx, double& vy, Spin s, double nx, double ny,
                                      const RoughLaws& laws) {
-    const double dv = reboundOffSurface<false>(vx, vy, nx, ny, laws.e, 0.0);
-    if (dv > 0.0) roughOffSurfaceTangential(vx, vy, s, nx, ny, dv, laws.mu, laws.beta);
+    double into = -(vx * nx + vy * ny);
+    double along = vx * -ny + vy * nx;
+    const double dv = reboundOffWall<false>(into, along, laws.e, 0.0);
+    if (dv == 0.0) return 0.0;
+    roughAlongSurface(along, s, dv, laws.mu, laws.beta);
+    vx = -into * nx + along * -ny;
+    vy = -into * ny + along * nx;
     return dv;
 }
 

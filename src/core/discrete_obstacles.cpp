@@ -277,9 +277,9 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
                 dv = reboundOffWall<false>(outwardSpeed, vt, e, 0.0);
                 if (dv > 0.0) {
                     const double sign = -outward * tSign;
-                    double along = sign * vt, across = 0.0;
-                    roughOffSurfaceTangential(along, across, {b.omega, b.r, b.q}, 0.0, -1.0, dv, mu,
-                                              def.tangentialRestitution);
+                    double along = sign * vt;
+                    roughAlongSurface(along, {b.omega, b.r, b.q}, dv, mu,
+                                      def.tangentialRestitution);
                     vt = sign * along;
                 }
             } else {

@@ -54,11 +54,10 @@ inline double roughWallAxis(double& x, double& v, double& vt, Spin s, double ext
     if (dv == 0.0) return 0.0;
     // The wall hit: the low one (outward normal +axis) if it was moving toward it.
     const double side = before < 0.0 ? 1.0 : -1.0;
-    // With n = side · axis the tangent t is side · tSign times the other axis: the law of a
-    // surface whose frame has t = +x (n = (0, −1)), on the one component along t.
+    // With n = side · axis the tangent t is side · tSign times the other axis.
     const double sign = side * tSign;
-    double along = sign * vt, across = 0.0;
-    roughOffSurfaceTangential(along, across, s, 0.0, -1.0, dv, laws.mu, laws.beta);
+    double along = sign * vt;
+    roughAlongSurface(along, s, dv, laws.mu, laws.beta);
     vt = sign * along;
     return dv;
 }

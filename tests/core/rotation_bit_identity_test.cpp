@@ -93,6 +93,45 @@ TEST(RotationBitIdentity, FrictionlessPresetsStepAsBeforeRotationInEveryMode) {
     }
 }
 
+World runPresetFixed(const std::string& file, StepMode mode) {
+    Scene s = loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / file);
+    s.solver.mode = mode;
+    s.solver.substeps = mode == StepMode::Substep ? 4 : 1;
+    // Every particle set not to turn, as every particle was before rotation existed.
+    for (ParticleDef& d : s.particles)
+        d.fixedRotation = true;
+    World w = makeWorld(s);
+    w.setThreads(1);
+    for (int k = 0; k < kSteps; ++k)
+        w.step(s.dt);
+    return w;
+}
+
+// Friction scenes whose discs do not turn (fixed rotation) and tangential restitution 0: the
+// rough contacts reduce, bit for bit, to the friction of discs before rotation existed.
+TEST(RotationBitIdentity, FrictionPresetsOfDiscsThatDoNotTurnStepAsBeforeRotation) {
+    const std::vector<PresetRun> runs = {
+        {"07-pile-under-gravity.json", StepMode::Discrete, 0xbf2d22ef7a1b20feull},
+        {"07-pile-under-gravity.json", StepMode::Substep, 0x508c11263843a6e0ull},
+        {"07-pile-under-gravity.json", StepMode::Exact, 0xbd6414e966f67dc2ull},
+        {"10-funnel.json", StepMode::Discrete, 0xb3acd938cdef3baeull},
+        {"10-funnel.json", StepMode::Substep, 0x9ed1d4860e407535ull},
+        {"10-funnel.json", StepMode::Exact, 0x734bd73deee4638full},
+        {"12-ramp.json", StepMode::Discrete, 0x6cccb7f04492d8c7ull},
+        {"12-ramp.json", StepMode::Substep, 0x69d23e464a5354acull},
+        {"12-ramp.json", StepMode::Exact, 0x31dc7ea40633055aull},
+    };
+    for (const PresetRun& run : runs) {
+        const World w = runPresetFixed(run.file, run.mode);
+        const std::uint64_t h = test::stateHash(w);
+        EXPECT_EQ(h, run.hash) << "{\"" << run.file << "\", StepMode::"
+                               << (run.mode == StepMode::Discrete  ? "Discrete"
+                                   : run.mode == StepMode::Substep ? "Substep"
+                                                                   : "Exact")
+                               << ", 0x" << std::hex << h << "ull},";
+    }
+}
+
 TEST(RotationBitIdentity, SpinWithoutFrictionLeavesEveryCentreAndVelocityAlone) {
     for (const StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         for (const char* file : {"04-gas-in-a-box.json", "09-galton-board.json"}) {

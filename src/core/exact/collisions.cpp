@@ -223,16 +223,14 @@ Spin ExactStepper::spinAt(std::uint32_t i, double now) {
 void ExactStepper::roughWallTangential(std::uint32_t i, int side, double dv, double now) {
     // Wall `side` has the outward normal n = −outward along its axis (outward: +1 for the
     // right and bottom walls), and the tangent t = (−n_y, n_x): −outward times the other axis
-    // for the x walls, +outward times it for the y walls. The law of a surface whose frame has
-    // t = +x (n = (0, −1)), on the one component along t (as the discrete mode's walls).
+    // for the x walls, +outward times it for the y walls (as in the discrete mode's walls).
     Body& a = bodies_[i];
     const bool alongX = side < 2;
     const double outward = (side % 2 == 0) ? -1.0 : 1.0;
     const double sign = alongX ? -outward : outward;
     double& vt = alongX ? a.vy : a.vx;
-    double along = sign * vt, across = 0.0;
-    roughOffSurfaceTangential(along, across, spinAt(i, now), 0.0, -1.0, dv, def_.friction,
-                              def_.tangentialRestitution);
+    double along = sign * vt;
+    roughAlongSurface(along, spinAt(i, now), dv, def_.friction, def_.tangentialRestitution);
     vt = sign * along;
 }
 

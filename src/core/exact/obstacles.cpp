@@ -100,8 +100,11 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
                 // rebound's part gave mu (1 + e)/2 in place of mu.
                 const double extra = lift - leaving;
                 if (rough_) {
-                    roughOffSurfaceTangential(a.vx, a.vy, spinAt(i, a.t), nx, ny, extra,
-                                              def_.friction, def_.tangentialRestitution);
+                    double along = a.vx * -ny + a.vy * nx;
+                    roughAlongSurface(along, spinAt(i, a.t), extra, def_.friction,
+                                      def_.tangentialRestitution);
+                    a.vx = leaving * nx + along * -ny;
+                    a.vy = leaving * ny + along * nx;
                 } else if (def_.friction > 0.0) {
                     double along = a.vx * -ny + a.vy * nx;
                     const double cut = std::min(std::abs(along), def_.friction * extra);
