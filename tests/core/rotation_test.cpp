@@ -113,6 +113,25 @@ TEST(Rotation, AFreeDiscTurnsAtItsAngularVelocityInEveryMode) {
     }
 }
 
+TEST(Rotation, TheExactModeTurnsADiscAtItsWallImpactInstant) {
+    // r = 1, ω = 2 rad/s, moving left at 1 m/s from x = 5: it meets the left wall (outward
+    // normal +x, tangent +y) at t = 4 s. Its contact point slips at −ω r = −2 m/s; sticking
+    // (μ large, β = 0) gives the impulse per unit mass 2 / (1 + 1/k) = 2/3 along +y, so
+    // vy = 2/3 and ω = 2 − (2/3)(1/k)/r = 2/3: it leaves rolling up the wall. The angle at 5 s
+    // is 2·4 + (2/3)·1.
+    World w(WorldDef{.width = 10.0, .height = 10.0, .restitution = 1.0, .friction = 100.0},
+            modeOf(StepMode::Exact));
+    const ParticleId a =
+        w.add({.position = {5.0, 5.0}, .velocity = {-1.0, 0.0}, .angularVelocity = 2.0});
+    w.step(5.0);
+    const Particle p = w.get(a);
+    EXPECT_NEAR(p.velocity.x(), 1.0, 1e-15);
+    EXPECT_NEAR(p.velocity.y(), 2.0 / 3.0, 1e-15);
+    EXPECT_NEAR(p.angularVelocity, 2.0 / 3.0, 1e-15);
+    EXPECT_NEAR(p.angle, 8.0 + 2.0 / 3.0, 1e-12);
+    EXPECT_NEAR(p.position.y(), 5.0 + 2.0 / 3.0, 1e-12);
+}
+
 TEST(Rotation, RemoveAndReorderKeepEachParticlesRotation) {
     // 5000 discs: the discrete mode sorts its storage by cell; every particle keeps its own.
     World w(WorldDef{.width = 400.0, .height = 400.0, .friction = 0.0});
