@@ -61,12 +61,14 @@ void gas(benchmark::State& state, BroadPhaseKind kind, int threads, std::size_t 
     timeSteps(state, w, n);
 }
 
-enum class Feature { Gravity, Friction, Walls };
+enum class Feature { Gravity, Friction, Walls, Rotation };
 
 /// The gas with one feature off or on. "On" uses a value too small to change the motion
 /// (gravity 1e-9 m/s², friction 1e-9) so that the scene, and so the broadphase work, is the
 /// same; only the stage (or the friction code path) differs. Walls are on in the gas scene, so
-/// "walls:off" removes them.
+/// "walls:off" removes them. Friction turns discs, so "friction:on" runs the rough contacts;
+/// "rotation" compares them (friction 1e-9) for discs that turn ("on") and discs with fixed
+/// rotation ("off"), the same code with no spin to give.
 void feature(benchmark::State& state, Feature f, bool on, std::size_t n) {
     World w = makeGasWorld(n, BroadPhaseKind::Auto, 1);
     switch (f) {
@@ -78,6 +80,13 @@ void feature(benchmark::State& state, Feature f, bool on, std::size_t n) {
             break;
         case Feature::Walls:
             w.setWalls(on);
+            break;
+        case Feature::Rotation:
+            w.setFriction(1e-9);
+            if (!on) {
+                for (const ParticleId id : w.ids())
+                    w.setFixedRotation(id, true);
+            }
             break;
     }
     timeSteps(state, w, n);
@@ -140,8 +149,10 @@ void registerAll() {
                 ->Iterations(4);
         }
     }
-    const std::pair<Feature, const char*> features[] = {
-        {Feature::Gravity, "gravity"}, {Feature::Friction, "friction"}, {Feature::Walls, "walls"}};
+    const std::pair<Feature, const char*> features[] = {{Feature::Gravity, "gravity"},
+                                                        {Feature::Friction, "friction"},
+                                                        {Feature::Walls, "walls"},
+                                                        {Feature::Rotation, "rotation"}};
     for (const auto& [f, fname] : features) {
         for (const bool on : {false, true}) {
             const std::size_t n = 100000;

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <initializer_list>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -31,6 +32,8 @@ enum class Separator : char { Comma = ',', Tab = '\t' };
 class Table {
   public:
     Table(Separator separator, std::initializer_list<std::string_view> header);
+    /// A header whose columns depend on the data (optional column groups).
+    Table(Separator separator, std::span<const std::string_view> header);
 
     Table& text(std::string_view cell);
     Table& number(double value) { return text(csv::number(value)); }

@@ -24,10 +24,13 @@ class World;
 
 /// The observables over time (time_series.hpp), one row per sample: time_s,
 /// kinetic_energy_J, momentum_x_kg_m_per_s, momentum_y_kg_m_per_s, com_x_m, com_y_m,
-/// collisions, collision_rate_per_s, and with `gravity` potential_energy_J and
-/// mechanical_energy_J (kinetic + potential).
+/// collisions, collision_rate_per_s, with `gravity` potential_energy_J and
+/// mechanical_energy_J (kinetic + rotational + potential), and with `rotation` (a world that
+/// keeps rotation: World::rotationInUse) rotational_energy_J and
+/// angular_momentum_kg_m2_per_s (orbital + spin, about the box's top-left corner).
 [[nodiscard]] std::string timeSeriesTable(const std::vector<ObservablesSample>& samples,
-                                          bool gravity, csv::Separator separator);
+                                          bool gravity, csv::Separator separator,
+                                          bool rotation = false);
 /// The samples `series` holds, oldest first.
 [[nodiscard]] std::vector<ObservablesSample> samplesOf(const TimeSeries& series);
 

@@ -9,9 +9,22 @@ namespace psb {
 
 class World;
 
-/// Total kinetic energy Σ ½ m |v|², joules. Summed with compensation so that it is reliable to
-/// ~1e-15 relative even for a million particles.
+/// Total kinetic energy of translation Σ ½ m |v|², joules. Summed with compensation so that it
+/// is reliable to ~1e-15 relative even for a million particles.
 [[nodiscard]] double kineticEnergy(const World& world);
+
+/// Total kinetic energy of rotation Σ ½ I ω² with I = k m r², joules; 0 in a world that keeps
+/// no rotation (World::rotationInUse). Summed with compensation.
+[[nodiscard]] double rotationalEnergy(const World& world);
+
+/// Total angular momentum about `point` (metres): orbital Σ m (r − point) × v plus spin Σ I ω,
+/// kg·m²/s, with a × b = a_x b_y − a_y b_x, so that it has the sign of ω: positive turns +x
+/// toward +y (clockwise on a screen whose y points down). About the box's top-left corner
+/// (the origin) by default. Summed with compensation.
+[[nodiscard]] double angularMomentum(const World& world, const Vec2& point = Vec2::Zero());
+
+/// Rotational energy Σ ½ I ω² of one particle, joules; throws InvalidArgument for a dead id.
+[[nodiscard]] double rotationalEnergy(const World& world, ParticleId id);
 
 /// Total gravitational potential energy Σ m g·(r_ref − r), joules: m g h for every particle,
 /// h its height above the reference level, the side (or corner) of the box furthest along
@@ -20,7 +33,8 @@ class World;
 /// count like any other (as in kineticEnergy). 0 without gravity. Summed with compensation.
 [[nodiscard]] double potentialEnergy(const World& world);
 
-/// kineticEnergy + potentialEnergy: conserved by elastic collisions under gravity.
+/// kineticEnergy + rotationalEnergy + potentialEnergy: conserved by elastic collisions under
+/// gravity, and by rolling without slipping.
 [[nodiscard]] double mechanicalEnergy(const World& world);
 
 /// Total linear momentum Σ m v, kg·m/s.

@@ -8,6 +8,9 @@
 
 namespace psb {
 
+/// The inertia factor k of a particle made without one: I = k m r² with k = 1/2, a uniform disc.
+inline constexpr double kDefaultInertiaFactor = 0.5;
+
 /// What a new particle is made of. Validated by World::add.
 struct ParticleDef {
     Vec2 position = Vec2::Zero();  ///< centre, metres
@@ -15,6 +18,11 @@ struct ParticleDef {
     double mass = 1.0;             ///< kilograms, finite and >= DBL_MIN (so 1/mass is finite)
     double radius = 1.0;           ///< metres, finite and > 0
     Color color{};
+    double angle = 0.0;            ///< radians, finite; positive turns +x toward +y
+    double angularVelocity = 0.0;  ///< radians per second, finite; 0 if fixedRotation
+    /// k in I = k m r², in (0, 1]: 1/2 a uniform disc, 2/5 a ball, 1 a ring.
+    double inertiaFactor = kDefaultInertiaFactor;
+    bool fixedRotation = false;  ///< never turns (a sliding puck): contacts give it no spin
 };
 
 /// A copy of one particle's state, as World::get returns it.
@@ -25,6 +33,10 @@ struct Particle {
     double mass = 1.0;             ///< kilograms
     double radius = 1.0;           ///< metres
     Color color{};
+    double angle = 0.0;            ///< radians, positive turns +x toward +y
+    double angularVelocity = 0.0;  ///< radians per second, positive turns +x toward +y
+    double inertiaFactor = kDefaultInertiaFactor;  ///< k in I = k m r²
+    bool fixedRotation = false;                    ///< never turns
 };
 
 }  // namespace psb

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <particle_sandbox/color.hpp>
+#include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/particle_id.hpp>
 
 namespace psb {
@@ -24,8 +25,24 @@ struct ParticleArrays {
     std::vector<Color> color;
     std::vector<ParticleId> id;  ///< the stable id of the particle stored at each index
 
+    /// Rotation, kept only while `rotation` is true (then each array has size() entries; else
+    /// all are empty and every particle has angle 0, angular velocity 0, inertia factor
+    /// kDefaultInertiaFactor and turns freely). A scene without friction and without spin never
+    /// needs them, and its steps never read them. Positive angles and angular velocities turn
+    /// +x toward +y (clockwise on a screen whose y points down).
+    bool rotation = false;
+    std::vector<double> angle;                ///< radians
+    std::vector<double> omega;                ///< angular velocity, radians per second
+    std::vector<double> inertiaFactor;        ///< k in I = k m r², in (0, 1]
+    std::vector<std::uint8_t> fixedRotation;  ///< 1: never turns (omega stays 0)
+
     [[nodiscard]] std::size_t size() const { return x.size(); }
     [[nodiscard]] bool isKinematic(std::size_t i) const { return invMass[i] == 0.0; }
+    /// 1/k, or 0 for a particle that never turns: the share of a tangential impulse that goes
+    /// into its spin (contact.hpp). Requires `rotation`.
+    [[nodiscard]] double spinWeight(std::size_t i) const {
+        return fixedRotation[i] ? 0.0 : 1.0 / inertiaFactor[i];
+    }
 };
 
 }  // namespace psb

@@ -17,6 +17,8 @@ struct ObservablesSample {
     double time = 0.0;                 ///< simulated time, s (World::time)
     double kineticEnergy = 0.0;        ///< Σ ½ m |v|², J
     double potentialEnergy = 0.0;      ///< gravitational, J (diagnostics.hpp; 0 without gravity)
+    double rotationalEnergy = 0.0;     ///< Σ ½ I ω², J (0 in a world without rotation)
+    double angularMomentum = 0.0;      ///< orbital + spin about the origin, kg·m²/s
     Vec2 momentum = Vec2::Zero();      ///< Σ m v, kg·m/s
     Vec2 centreOfMass = Vec2::Zero();  ///< m (the box centre for an empty world)
     std::uint64_t collisions = 0;      ///< particle–particle collisions so far (StepCounters)

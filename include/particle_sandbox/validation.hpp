@@ -14,8 +14,8 @@ namespace psb {
 /// One thing wrong with a WorldDef or SolverSettings.
 struct SettingProblem {
     std::string_view setting;  ///< the field: "width", "height", "gravity", "restitution",
-                               ///< "friction", "substeps", "mode", "broadphase" or
-                               ///< "obstacles"
+                               ///< "friction", "tangential restitution", "substeps", "mode",
+                               ///< "broadphase" or "obstacles"
     std::string message;       ///< what is wrong with it, e.g. "must be finite and > 0 (got -1)"
     /// For a value refused only in combination with another setting, that setting's name (the
     /// setting that refuses it); otherwise empty.

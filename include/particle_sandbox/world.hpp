@@ -65,6 +65,8 @@ class World {
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
     void setFriction(double mu);
+    /// Tangential restitution β of sticking contacts, in [−1, 1] (WorldDef::tangentialRestitution).
+    void setTangentialRestitution(double beta);
     /// Throws InvalidArgument for substeps outside [1, kMaxSubsteps], or a mode or broadphase
     /// this build does not have. Every mode takes gravity and obstacles.
     void setSolver(const SolverSettings& solver);
@@ -117,6 +119,25 @@ class World {
     void setMass(ParticleId id, double mass);
     void setRadius(ParticleId id, double radius);
     void setColor(ParticleId id, Color color);
+
+    // Rotation. Positive angles and angular velocities turn +x toward +y: clockwise on a screen
+    // whose y points down. Contacts change a particle's spin only where there is friction; a
+    // world whose particles all have the defaults stores and computes no rotation until then.
+    /// Radians, finite (any value: not wrapped).
+    void setAngle(ParticleId id, double angle);
+    /// Radians per second, finite; a fixed-rotation particle takes only 0.
+    void setAngularVelocity(ParticleId id, double omega);
+    /// k in the moment of inertia I = k m r², in (0, 1]: 1/2 a uniform disc, 2/5 a ball seen
+    /// from the side, 1 a ring.
+    void setInertiaFactor(ParticleId id, double k);
+    /// A fixed-rotation particle never turns (a puck or block sliding as before rotation
+    /// existed): its angular velocity becomes 0 and contacts give it no spin.
+    void setFixedRotation(ParticleId id, bool fixed);
+    /// Whether the world keeps rotation state (ParticleArrays::rotation): a particle was given
+    /// an angle, spin, inertia factor or fixed rotation other than the defaults, or a step ran
+    /// with friction. Until then every step is the one of a world without rotation.
+    [[nodiscard]] bool rotationInUse() const { return p_.rotation; }
+
     /// A kinematic particle (one the user holds) is moved by its owner, not by collisions: it
     /// pushes others as if its mass were infinite and is never pushed. It still stays in the box.
     void setKinematic(ParticleId id, bool kinematic);
@@ -192,6 +213,8 @@ class World {
     /// first, then tells the exact stepper to rebuild at its next step.
     void changed();
     void stepExact(double dt);
+    /// Makes the rotation arrays (every particle with the defaults) if there are none yet.
+    void useRotation();
     /// The drop stage: each dropper whose ball is due releases it (World::add) if its spot is
     /// clear.
     void releaseBalls(double dt);

@@ -16,7 +16,11 @@ struct WorldDef {
     Vec2 gravity = Vec2::Zero();  ///< m/s²; y points down, so (0, 9.81) is Earth's pull
     double restitution = 1.0;     ///< coefficient of restitution e in [0, 1], pairs and walls
     double friction = 0.0;        ///< Coulomb coefficient for tangential impulses, >= 0
-    Obstacles obstacles{};        ///< fixed pegs and segments (see World::setObstacles)
+    /// Tangential restitution β in [−1, 1]: a sticking contact (its tangential impulse below
+    /// friction·normal impulse) turns the contact points' tangential relative velocity into −β
+    /// times itself. 0 stops the slip; 1 is the perfectly rough, energy-conserving disc.
+    double tangentialRestitution = 0.0;
+    Obstacles obstacles{};  ///< fixed pegs and segments (see World::setObstacles)
 };
 
 }  // namespace psb

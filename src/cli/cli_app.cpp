@@ -40,7 +40,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
                 options.timeseries ? &series : nullptr, options.track.empty() ? nullptr : &track);
         }
         if (options.timeseries) {
-            writeFileAtomically(*options.timeseries, timeSeriesCsv(series, report.gravity));
+            writeFileAtomically(*options.timeseries,
+                                timeSeriesCsv(series, report.gravity, report.rotation));
         }
         if (!options.track.empty()) {
             writeFileAtomically(trackPath(*options.timeseries),

@@ -22,17 +22,26 @@ std::string reportJson(const RunReport& r) {
     j["obstacles"] = r.obstacles;
     j["obstacle_collisions"] = r.obstacleCollisions;
     j["kinetic_energy"] = {{"initial", r.kineticEnergyInitial}, {"final", r.kineticEnergyFinal}};
+    // Friction turns discs: translational kinetic energy flows into rotation and back.
+    j["rotational_energy"] = {{"initial", r.rotationalEnergyInitial},
+                              {"final", r.rotationalEnergyFinal}};
     if (r.gravity) {
         // Under gravity kinetic energy alone is not conserved; kinetic + potential is.
         j["potential_energy"] = {{"initial", r.potentialEnergyInitial},
                                  {"final", r.potentialEnergyFinal}};
-        j["mechanical_energy"] = {{"initial", r.kineticEnergyInitial + r.potentialEnergyInitial},
-                                  {"final", r.kineticEnergyFinal + r.potentialEnergyFinal}};
+        j["mechanical_energy"] = {
+            {"initial",
+             r.kineticEnergyInitial + r.rotationalEnergyInitial + r.potentialEnergyInitial},
+            {"final", r.kineticEnergyFinal + r.rotationalEnergyFinal + r.potentialEnergyFinal}};
     }
     j["momentum"] = {
         {"initial", {r.momentumInitial.x(), r.momentumInitial.y()}},
         {"final", {r.momentumFinal.x(), r.momentumFinal.y()}},
     };
+    // Orbital plus spin, about the box's top-left corner (the origin): kept by every pair
+    // contact; walls, obstacles and gravity change it.
+    j["angular_momentum"] = {{"initial", r.angularMomentumInitial},
+                             {"final", r.angularMomentumFinal}};
     j["wall_impulse"] = r.wallImpulse;
     j["max_overlap"] = r.maxOverlap;
     j["escaped"] = r.escaped;

@@ -21,13 +21,16 @@ constexpr const char* kDescription =
 constexpr const char* kFooter =
     "Report fields: mode, dt, substeps, broadphase (the one used), threads, particles, steps,\n"
     "sim_time, wall_seconds, collisions, wall_collisions, obstacles, obstacle_collisions,\n"
-    "kinetic_energy {initial, final}, with gravity potential_energy and mechanical_energy\n"
-    "{initial, final} (height measured from the floor), momentum {initial, final},\n"
-    "wall_impulse, max_overlap, escaped; with bins, bins {counts, ..., chi_square}; with ball\n"
-    "droppers, droppers [{released, left}]. See docs/scenes.md.\n"
+    "kinetic_energy {initial, final}, rotational_energy {initial, final}, with gravity\n"
+    "potential_energy and mechanical_energy {initial, final} (height measured from the\n"
+    "floor), momentum {initial, final}, angular_momentum {initial, final} (orbital + spin,\n"
+    "about the top-left corner), wall_impulse, max_overlap, escaped; with bins, bins\n"
+    "{counts, ..., chi_square}; with ball droppers, droppers [{released, left}]. See\n"
+    "docs/scenes.md.\n"
     "--timeseries columns: time_s, kinetic_energy_J, momentum_x_kg_m_per_s,\n"
     "momentum_y_kg_m_per_s, com_x_m, com_y_m, collisions, collision_rate_per_s; with gravity\n"
-    "also potential_energy_J, mechanical_energy_J.\n"
+    "also potential_energy_J, mechanical_energy_J; with discs that turn also\n"
+    "rotational_energy_J, angular_momentum_kg_m2_per_s.\n"
     "--track writes NAME-track.EXT beside the --timeseries file NAME.EXT, at the same rows:\n"
     "time_s, particle, x_m, y_m, vx_m_per_s, vy_m_per_s (the app's trajectory columns).";
 

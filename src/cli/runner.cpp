@@ -85,6 +85,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.kineticEnergyInitial = kineticEnergy(world);
     r.gravity = !world.def().gravity.isZero();
     r.potentialEnergyInitial = potentialEnergy(world);
+    r.rotationalEnergyInitial = rotationalEnergy(world);
+    r.angularMomentumInitial = angularMomentum(world);
     r.momentumInitial = momentum(world);
     const double overlapInitial = maxOverlap(world);
 
@@ -139,6 +141,9 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.maxOverlap = std::max({c.maxOverlap, overlapInitial, maxOverlap(world)});
     r.kineticEnergyFinal = kineticEnergy(world);
     r.potentialEnergyFinal = potentialEnergy(world);
+    r.rotationalEnergyFinal = rotationalEnergy(world);
+    r.angularMomentumFinal = angularMomentum(world);
+    r.rotation = world.rotationInUse();
     r.momentumFinal = momentum(world);
     r.escaped = countEscaped(world);
     if (scene.bins) r.bins = measureBins(*scene.bins, world.particles());

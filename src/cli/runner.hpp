@@ -35,6 +35,12 @@ struct RunReport {
     /// report lists it, and kinetic + potential, only when `gravity`.
     bool gravity = false;
     double potentialEnergyInitial = 0.0, potentialEnergyFinal = 0.0;
+    /// Rotational kinetic energy Σ ½ I ω², joules, and the total angular momentum (orbital +
+    /// spin, about the box's top-left corner), kg·m²/s. `rotation`: the world kept rotation by
+    /// the end of the run (World::rotationInUse), and the time series has both columns.
+    bool rotation = false;
+    double rotationalEnergyInitial = 0.0, rotationalEnergyFinal = 0.0;
+    double angularMomentumInitial = 0.0, angularMomentumFinal = 0.0;
     Vec2 momentumInitial = Vec2::Zero(), momentumFinal = Vec2::Zero();  ///< kg·m/s
     double wallImpulse = 0.0;                                           ///< kg·m/s
     double maxOverlap = 0.0;                                            ///< metres

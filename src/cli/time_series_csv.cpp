@@ -4,8 +4,8 @@
 
 namespace psb::cli {
 
-std::string timeSeriesCsv(const TimeSeries& series, bool gravity) {
-    return timeSeriesTable(samplesOf(series), gravity, csv::Separator::Comma);
+std::string timeSeriesCsv(const TimeSeries& series, bool gravity, bool rotation) {
+    return timeSeriesTable(samplesOf(series), gravity, csv::Separator::Comma, rotation);
 }
 
 std::filesystem::path trackPath(const std::filesystem::path& timeseries) {

@@ -19,6 +19,10 @@ inline constexpr const char* kTimeSeriesCsvHeader =
 inline constexpr const char* kTimeSeriesCsvGravityColumns =
     ",potential_energy_J,mechanical_energy_J";
 
+/// The two columns added last when the world keeps rotation (discs that turn).
+inline constexpr const char* kTimeSeriesCsvRotationColumns =
+    ",rotational_energy_J,angular_momentum_kg_m2_per_s";
+
 /// Most rows --timeseries writes (about 1 GB of text); a run that would write more is refused.
 inline constexpr std::uint64_t kMaxTimeSeriesRows = 10'000'000;
 
@@ -26,7 +30,10 @@ inline constexpr std::uint64_t kMaxTimeSeriesRows = 10'000'000;
 /// (psb::timeSeriesTable). Values are written as the shortest decimal that reads back
 /// bit-exact, times to 12 significant digits (0.3, not 0.30000000000000004). With `gravity`
 /// each row also has the potential and the mechanical (kinetic + potential) energy.
-[[nodiscard]] std::string timeSeriesCsv(const TimeSeries& series, bool gravity = false);
+/// With `rotation` (RunReport::rotation) each row ends with the rotational energy and the
+/// angular momentum (kRotationColumns).
+[[nodiscard]] std::string timeSeriesCsv(const TimeSeries& series, bool gravity = false,
+                                        bool rotation = false);
 
 /// Where --track writes the trajectories: beside the --timeseries file, "-track" added to its
 /// name (runs/gas.csv: runs/gas-track.csv).

@@ -40,6 +40,9 @@ std::string time(double seconds) {
 }
 
 Table::Table(Separator separator, std::initializer_list<std::string_view> header)
+    : Table(separator, std::span<const std::string_view>(header.begin(), header.size())) {}
+
+Table::Table(Separator separator, std::span<const std::string_view> header)
     : separator_(static_cast<char>(separator)) {
     for (const std::string_view name : header)
         text(name);

@@ -1,6 +1,9 @@
 #include <particle_sandbox/data_tables.hpp>
 
 #include <algorithm>
+#include <span>
+#include <string_view>
+#include <vector>
 
 #include <particle_sandbox/world.hpp>
 
@@ -33,14 +36,19 @@ std::string valuesTable(const World& world, Separator separator) {
 }
 
 std::string timeSeriesTable(const std::vector<ObservablesSample>& samples, bool gravity,
-                            Separator separator) {
-    Table t = gravity ? Table(separator,
-                              {"time_s", "kinetic_energy_J", "momentum_x_kg_m_per_s",
-                               "momentum_y_kg_m_per_s", "com_x_m", "com_y_m", "collisions",
-                               "collision_rate_per_s", "potential_energy_J", "mechanical_energy_J"})
-                      : Table(separator, {"time_s", "kinetic_energy_J", "momentum_x_kg_m_per_s",
-                                          "momentum_y_kg_m_per_s", "com_x_m", "com_y_m",
-                                          "collisions", "collision_rate_per_s"});
+                            Separator separator, bool rotation) {
+    std::vector<std::string_view> columns = {
+        "time_s",  "kinetic_energy_J", "momentum_x_kg_m_per_s", "momentum_y_kg_m_per_s", "com_x_m",
+        "com_y_m", "collisions",       "collision_rate_per_s"};
+    if (gravity) {
+        columns.push_back("potential_energy_J");
+        columns.push_back("mechanical_energy_J");
+    }
+    if (rotation) {
+        columns.push_back("rotational_energy_J");
+        columns.push_back("angular_momentum_kg_m2_per_s");
+    }
+    Table t(separator, std::span<const std::string_view>(columns));
     for (const ObservablesSample& s : samples) {
         t.time(s.time)
             .number(s.kineticEnergy)
@@ -50,7 +58,11 @@ std::string timeSeriesTable(const std::vector<ObservablesSample>& samples, bool 
             .number(s.centreOfMass.y())
             .count(s.collisions)
             .number(s.collisionRate);
-        if (gravity) t.number(s.potentialEnergy).number(s.kineticEnergy + s.potentialEnergy);
+        if (gravity) {
+            t.number(s.potentialEnergy)
+                .number(s.kineticEnergy + s.rotationalEnergy + s.potentialEnergy);
+        }
+        if (rotation) t.number(s.rotationalEnergy).number(s.angularMomentum);
         t.endRow();
     }
     return t.str();

@@ -37,6 +37,38 @@ double kineticEnergy(const World& world) {
     return sum.value();
 }
 
+double rotationalEnergy(const World& world) {
+    const ParticleArrays& p = world.particles();
+    if (!p.rotation) return 0.0;
+    CompensatedSum sum;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double inertia = p.inertiaFactor[i] * p.mass[i] * p.radius[i] * p.radius[i];
+        sum.add(0.5 * inertia * p.omega[i] * p.omega[i]);
+    }
+    return sum.value();
+}
+
+double rotationalEnergy(const World& world, ParticleId id) {
+    const Particle q = world.get(id);
+    return 0.5 * q.inertiaFactor * q.mass * q.radius * q.radius * q.angularVelocity *
+           q.angularVelocity;
+}
+
+double angularMomentum(const World& world, const Vec2& point) {
+    const ParticleArrays& p = world.particles();
+    CompensatedSum sum;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const double rx = p.x[i] - point.x(), ry = p.y[i] - point.y();
+        sum.add(p.mass[i] * rx * p.vy[i]);
+        sum.add(-p.mass[i] * ry * p.vx[i]);
+        if (p.rotation) {
+            const double inertia = p.inertiaFactor[i] * p.mass[i] * p.radius[i] * p.radius[i];
+            sum.add(inertia * p.omega[i]);
+        }
+    }
+    return sum.value();
+}
+
 double potentialEnergy(const World& world) {
     const ParticleArrays& p = world.particles();
     const WorldDef& def = world.def();
@@ -52,7 +84,7 @@ double potentialEnergy(const World& world) {
 }
 
 double mechanicalEnergy(const World& world) {
-    return kineticEnergy(world) + potentialEnergy(world);
+    return kineticEnergy(world) + rotationalEnergy(world) + potentialEnergy(world);
 }
 
 Vec2 momentum(const World& world) {

@@ -44,8 +44,9 @@ inline void prefetchPair(const ParticleArrays& p, const std::vector<ContactPair>
 }
 
 // kRecord: the world records collisions (ctx.collisionLog); a separate instance, so that a
-// world that records none runs exactly the loop it ran before recording existed.
-template <bool kFriction, bool kRecord>
+// world that records none runs exactly the loop it ran before recording existed. kRough: the
+// particles turn and there is friction (contact.hpp's Rough family), likewise separate.
+template <bool kFriction, bool kRough, bool kRecord>
 void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
                  StepCounters& counters) {
     const double e = def.restitution;
@@ -60,8 +61,17 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
         deepest = std::max(deepest, p.radius[i] + p.radius[j] - d);
 
         [[maybe_unused]] const Vec2 iBefore(p.vx[i], p.vy[i]), jBefore(p.vx[j], p.vy[j]);
-        if (collideDiscs<kFriction>(p.vx[i], p.vy[i], p.vx[j], p.vy[j], p.invMass[i], p.invMass[j],
-                                    p.mass[i], p.mass[j], n, e, mu)) {
+        bool hit;
+        if constexpr (kRough) {
+            hit = collideRoughDiscs(p.vx[i], p.vy[i], {p.omega[i], p.radius[i], p.spinWeight(i)},
+                                    p.vx[j], p.vy[j], {p.omega[j], p.radius[j], p.spinWeight(j)},
+                                    p.invMass[i], p.invMass[j], p.mass[i], p.mass[j], n,
+                                    {e, mu, def.tangentialRestitution});
+        } else {
+            hit = collideDiscs<kFriction>(p.vx[i], p.vy[i], p.vx[j], p.vy[j], p.invMass[i],
+                                          p.invMass[j], p.mass[i], p.mass[j], n, e, mu);
+        }
+        if (hit) {
             ++counters.collisions;
             if constexpr (kRecord) {
                 ctx.collisionLog->add(pairCollision(
@@ -78,12 +88,15 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
 void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
              StepCounters& counters) {
     const bool record = ctx.collisionLog != nullptr;
-    if (def.friction > 0.0) {
-        record ? resolveImpl<true, true>(p, def, ctx, counters)
-               : resolveImpl<true, false>(p, def, ctx, counters);
+    if (def.friction > 0.0 && p.rotation) {
+        record ? resolveImpl<true, true, true>(p, def, ctx, counters)
+               : resolveImpl<true, true, false>(p, def, ctx, counters);
+    } else if (def.friction > 0.0) {
+        record ? resolveImpl<true, false, true>(p, def, ctx, counters)
+               : resolveImpl<true, false, false>(p, def, ctx, counters);
     } else {
-        record ? resolveImpl<false, true>(p, def, ctx, counters)
-               : resolveImpl<false, false>(p, def, ctx, counters);
+        record ? resolveImpl<false, false, true>(p, def, ctx, counters)
+               : resolveImpl<false, false, false>(p, def, ctx, counters);
     }
 }
 

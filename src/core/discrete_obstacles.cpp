@@ -70,6 +70,7 @@ constexpr double kInward = 1e-9;
 struct Body {
     double x, y, vx, vy, r, m;
     bool held;
+    double omega = 0.0, q = 0.0;  ///< angular velocity and spin weight, read when kRough
 };
 
 /// What one particle's contacts did: obstacle rebounds, and the wall rebounds the stage made
@@ -82,10 +83,14 @@ struct Hits {
 
 /// Turns the velocity's component into the obstacle (along -n, n the outward unit normal)
 /// around with the walls' law. Returns whether it rebounded.
-template <bool kFriction>
-bool rebound(Body& b, double nx, double ny, double e, double mu) {
+template <bool kFriction, bool kRough>
+bool rebound(Body& b, double nx, double ny, const RoughLaws& laws) {
     if (b.held) return false;
-    return reboundOffSurface<kFriction>(b.vx, b.vy, nx, ny, e, mu) > 0.0;
+    if constexpr (kRough) {
+        return roughReboundOffSurface(b.vx, b.vy, {b.omega, b.r, b.q}, nx, ny, laws) > 0.0;
+    } else {
+        return reboundOffSurface<kFriction>(b.vx, b.vy, nx, ny, laws.e, laws.mu) > 0.0;
+    }
 }
 
 /// Brings a centre into the box as the wall stage does: into [r, extent − r] on each axis, or
@@ -137,10 +142,11 @@ void contactNormal(const Obstacle& o, double x, double y, double r, double x0, d
     depth = r + o.radius - dist;
 }
 
-template <bool kFriction>
+template <bool kFriction, bool kRough>
 void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
                 const std::vector<std::uint32_t>& candidates, const WorldDef& def, Hits& out) {
     const double e = def.restitution, mu = def.friction;
+    const RoughLaws laws{e, mu, def.tangentialRestitution};
     std::uint64_t hits = 0;
 
     // 2. The sweep: the earliest contact along p0 -> p1 with an obstacle not touched at p0. With
@@ -198,7 +204,7 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
         moved = true;
         double nx, ny, depth;
         contactNormal(obstacles[hit], b.x, b.y, b.r, x0, y0, nx, ny, depth);
-        if (rebound<kFriction>(b, nx, ny, e, mu)) {
+        if (rebound<kFriction, kRough>(b, nx, ny, laws)) {
             ++hits;
             out.lastObstacle = hit;
         }
@@ -248,7 +254,7 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
                 b.y = y;
                 moved = pushed = true;
             }
-            if (rebound<kFriction>(b, nx, ny, e, mu)) {
+            if (rebound<kFriction, kRough>(b, nx, ny, laws)) {
                 ++hits;
                 out.lastObstacle = k;
             }
@@ -262,17 +268,31 @@ void collideOne(Body& b, double x0, double y0, const Obstacles& obstacles,
     } else if (!b.held && (leftX != x1 || leftY != y1)) {
         // It was past a wall and this stage moved it inside, where the wall stage will not see
         // it: the wall's rebound, by the wall stage's law, is made here.
-        auto wall = [&](double& v, double& vt, double outward) {
+        auto wall = [&](double& v, double& vt, double outward, double tSign) {
             double outwardSpeed = outward * v;
-            const double dv = reboundOffWall<kFriction>(outwardSpeed, vt, e, mu);
+            double dv;
+            if constexpr (kRough) {
+                // The wall's outward normal is −outward along the axis; its tangent is
+                // −outward · tSign times the other axis (roughWallAxis in discrete_walls.cpp).
+                dv = reboundOffWall<false>(outwardSpeed, vt, e, 0.0);
+                if (dv > 0.0) {
+                    const double sign = -outward * tSign;
+                    double along = sign * vt;
+                    roughAlongSurface(along, {b.omega, b.r, b.q}, dv, mu,
+                                      def.tangentialRestitution);
+                    vt = sign * along;
+                }
+            } else {
+                dv = reboundOffWall<kFriction>(outwardSpeed, vt, e, mu);
+            }
             v = outward * outwardSpeed;
             if (dv > 0.0) {
                 ++out.walls;
                 out.wallImpulse += b.m * dv;
             }
         };
-        if (leftX != x1) wall(b.vx, b.vy, leftX > x1 ? 1.0 : -1.0);
-        if (leftY != y1) wall(b.vy, b.vx, leftY > y1 ? 1.0 : -1.0);
+        if (leftX != x1) wall(b.vx, b.vy, leftX > x1 ? 1.0 : -1.0, 1.0);
+        if (leftY != y1) wall(b.vy, b.vx, leftY > y1 ? 1.0 : -1.0, -1.0);
     }
     out.obstacles += hits;
 }
@@ -314,7 +334,7 @@ double choosePad(const ParticleArrays& p, const StepContext& ctx, bool haveStart
     return p.size() > 0 ? 1.25 * sum / static_cast<double>(p.size()) : 0.0;
 }
 
-template <bool kFriction>
+template <bool kFriction, bool kRough>
 void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
                    StepCounters& counters) {
     const std::size_t n = p.size();
@@ -407,8 +427,12 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
             }
             if (!touchable) return;
             Body b{x1, y1, p.vx[i], p.vy[i], r, p.mass[i], p.invMass[i] == 0.0};
+            if constexpr (kRough) {
+                b.omega = p.omega[i];
+                b.q = p.spinWeight(i);
+            }
             const std::uint64_t obstacleHits = hits.obstacles, wallHits = hits.walls;
-            collideOne<kFriction>(b, x0, y0, obstacles, candidates, def, hits);
+            collideOne<kFriction, kRough>(b, x0, y0, obstacles, candidates, def, hits);
             if (record && (hits.obstacles != obstacleHits || hits.walls != wallHits)) {
                 // An obstacle's record when one turned it, else the wall's this stage made.
                 const bool obstacle = hits.obstacles != obstacleHits;
@@ -427,6 +451,7 @@ void obstaclesImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx,
             p.y[i] = b.y;
             p.vx[i] = b.vx;
             p.vy[i] = b.vy;
+            if constexpr (kRough) p.omega[i] = b.omega;
         };
         const double* sx = haveStart ? ctx.startX.data() : p.x.data();
         const double* sy = haveStart ? ctx.startY.data() : p.y.data();
@@ -501,10 +526,12 @@ void saveStartPositions(const ParticleArrays& p, StepContext& ctx) {
 }
 
 void obstacles(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
-    if (def.friction > 0.0) {
-        obstaclesImpl<true>(p, def, ctx, counters);
+    if (def.friction > 0.0 && p.rotation) {
+        obstaclesImpl<true, true>(p, def, ctx, counters);
+    } else if (def.friction > 0.0) {
+        obstaclesImpl<true, false>(p, def, ctx, counters);
     } else {
-        obstaclesImpl<false>(p, def, ctx, counters);
+        obstaclesImpl<false, false>(p, def, ctx, counters);
     }
 }
 

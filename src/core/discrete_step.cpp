@@ -57,6 +57,15 @@ void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>*
     });
 }
 
+void turn(ParticleArrays& p, double dt) {
+    if (!p.rotation) return;
+    const std::size_t n = p.size();
+    double* angle = p.angle.data();
+    const double* omega = p.omega.data();
+    for (std::size_t i = 0; i < n; ++i)
+        angle[i] += omega[i] * dt;
+}
+
 void findPairs(const ParticleArrays& p, StepContext& ctx) {
     ctx.pairs.clear();
     const bool statsFresh = ctx.statsFresh, cellsFresh = ctx.cellsFresh;
@@ -112,6 +121,7 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
                                ? ctx.grid.cellsForMove(p.size())
                                : std::nullopt;
         move(p, dt, ctx.threads, &ctx.statsScratch, cells ? &*cells : nullptr);
+        turn(p, dt);
         ctx.statsFresh = p.size() > 0;
         ctx.cellsFresh = cells.has_value();
     }

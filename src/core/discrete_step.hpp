@@ -6,10 +6,13 @@
 //   │ gravity*  │ → │ move │ → │ find pairs │ → │ resolve │ → │ separate │ → │ walls*│
 //   └───────────┘   └──────┘   └────────────┘   └─────────┘   └──────────┘   └───────┘
 //   v += g·dt       r += v·dt   broadphase +     impulses on    push overlaps  clamp into
-//                               overlap test     approaching    apart by       the box, set
+//                   θ += ω·dt†  overlap test     approaching    apart by       the box, set
 //                                                pairs only     inverse mass   velocity sign
 //   (* skipped when the world has no gravity / no walls; friction math is compiled out of
 //    resolve and walls when the friction coefficient is zero.)
+//   († only in a world that keeps rotation. With friction and rotation, resolve, obstacles
+//    and walls run the rough contacts of contact.hpp, which turn the discs: rolling is what
+//    those contact passes make of a disc pressed onto a surface, step after step.)
 //
 // Obstacles. A world with fixed obstacles runs one more stage, `obstacles`, between separate
 // and walls: it sweeps each particle's move of the step against the pegs and segments near it
@@ -50,6 +53,9 @@ void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads
 void move(ParticleArrays& p, double dt, int threads = 1,
           std::vector<ParticleStats>* bounds = nullptr,
           const GridBroadPhase::MoveCells* cells = nullptr);
+/// Turns every particle by ω·dt, in a world that keeps rotation (ParticleArrays::rotation;
+/// nothing otherwise). Timed with move: a particle's angle moves as its centre does.
+void turn(ParticleArrays& p, double dt);
 /// Fills ctx.pairs with the overlapping pairs in ascending (i, j) order, using the broadphase
 /// ctx.broadPhase asks for (Auto resolved by broad_phase_auto.hpp); records the one used in
 /// ctx.broadPhaseUsed. Uses the bounds and grid cells move() wrote when ctx.statsFresh and

@@ -43,7 +43,26 @@ inline double wallAxis(double& x, double& v, double& vt, double r, double extent
     return 0.0;
 }
 
-template <bool kFriction>
+/// wallAxis for a turning disc: the walls' law along the axis, then the rough tangential impulse
+/// (contact.hpp) of the wall it hit. `vt` is the velocity component along the other axis and
+/// `tSign` the sign that turns it into the component along the tangent t = (−n_y, n_x) of a
+/// wall whose outward normal n points along +axis: +1 for the x axis, −1 for the y axis.
+inline double roughWallAxis(double& x, double& v, double& vt, Spin s, double extent, double tSign,
+                            const RoughLaws& laws) {
+    const double before = v;
+    const double dv = wallAxis<false>(x, v, vt, s.r, extent, laws.e, 0.0);
+    if (dv == 0.0) return 0.0;
+    // The wall hit: the low one (outward normal +axis) if it was moving toward it.
+    const double side = before < 0.0 ? 1.0 : -1.0;
+    // With n = side · axis the tangent t is side · tSign times the other axis.
+    const double sign = side * tSign;
+    double along = sign * vt;
+    roughAlongSurface(along, s, dv, laws.mu, laws.beta);
+    vt = sign * along;
+    return dv;
+}
+
+template <bool kFriction, bool kRough>
 void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
     const double e = def.restitution, mu = def.friction;
     const std::size_t n = p.size();
@@ -97,11 +116,19 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCou
                     continue;
                 }
                 const Vec2 before(p.vx[i], p.vy[i]);
-                const double jx =
-                    wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
-                const Vec2 between(p.vx[i], p.vy[i]);
-                const double jy =
-                    wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
+                double jx, jy;
+                Vec2 between;
+                if constexpr (kRough) {
+                    const Spin s{p.omega[i], r, p.spinWeight(i)};
+                    const RoughLaws laws{e, mu, def.tangentialRestitution};
+                    jx = roughWallAxis(p.x[i], p.vx[i], p.vy[i], s, def.width, 1.0, laws);
+                    between = Vec2(p.vx[i], p.vy[i]);
+                    jy = roughWallAxis(p.y[i], p.vy[i], p.vx[i], s, def.height, -1.0, laws);
+                } else {
+                    jx = wallAxis<kFriction>(p.x[i], p.vx[i], p.vy[i], r, def.width, e, mu);
+                    between = Vec2(p.vx[i], p.vy[i]);
+                    jy = wallAxis<kFriction>(p.y[i], p.vy[i], p.vx[i], r, def.height, e, mu);
+                }
                 if (jx > 0.0 || jy > 0.0) {
                     hits += (jx > 0.0) + (jy > 0.0);
                     impulse += p.mass[i] * (jx + jy);
@@ -146,10 +173,12 @@ void wallsImpl(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCou
 }  // namespace
 
 void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters) {
-    if (def.friction > 0.0) {
-        wallsImpl<true>(p, def, ctx, counters);
+    if (def.friction > 0.0 && p.rotation) {
+        wallsImpl<true, true>(p, def, ctx, counters);
+    } else if (def.friction > 0.0) {
+        wallsImpl<true, false>(p, def, ctx, counters);
     } else {
-        wallsImpl<false>(p, def, ctx, counters);
+        wallsImpl<false, false>(p, def, ctx, counters);
     }
 }
 

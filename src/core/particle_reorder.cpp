@@ -35,6 +35,12 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
         p.mass[dst] = p.mass[src];
         p.color[dst] = p.color[src];
         p.id[dst] = p.id[src];
+        if (p.rotation) {
+            p.angle[dst] = p.angle[src];
+            p.omega[dst] = p.omega[src];
+            p.inertiaFactor[dst] = p.inertiaFactor[src];
+            p.fixedRotation[dst] = p.fixedRotation[src];
+        }
     };
     for (std::size_t s = 0; s < n; ++s) {
         if (perm[s] & kDone) continue;
@@ -49,6 +55,10 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
         const ParticleId id = p.id[s];
         const float discX = withDiscs ? fx[s] : 0.0f, discY = withDiscs ? fy[s] : 0.0f;
         const float discRadius = withDiscs ? fr[s] : 0.0f;
+        const bool turns = p.rotation;
+        const double angle = turns ? p.angle[s] : 0.0, omega = turns ? p.omega[s] : 0.0;
+        const double inertia = turns ? p.inertiaFactor[s] : 0.0;
+        const std::uint8_t fixed = turns ? p.fixedRotation[s] : 0;
         std::size_t k = s;
         for (;;) {
             const std::size_t src = perm[k];
@@ -63,6 +73,12 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
                 p.mass[k] = mass;
                 p.color[k] = color;
                 p.id[k] = id;
+                if (turns) {
+                    p.angle[k] = angle;
+                    p.omega[k] = omega;
+                    p.inertiaFactor[k] = inertia;
+                    p.fixedRotation[k] = fixed;
+                }
                 if (withDiscs) {
                     fx[k] = discX;
                     fy[k] = discY;

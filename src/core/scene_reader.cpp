@@ -35,10 +35,12 @@ namespace {
 using json = nlohmann::json;
 using Keys = std::initializer_list<std::string_view>;
 
-constexpr int kVersion = 4;
-/// Version 2 added `obstacles`, version 3 `bins`, version 4 `droppers`; a file without them
-/// may say any version.
-constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3, kDroppersVersion = 4;
+constexpr int kVersion = 5;
+/// Version 2 added `obstacles`, version 3 `bins`, version 4 `droppers`, version 5 rotation (a
+/// particle's `angle`, `angular_velocity`, `inertia_factor`, `fixed_rotation` and the world's
+/// `tangential_restitution`); a file without them may say any version.
+constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3, kDroppersVersion = 4,
+              kRotationVersion = 5;
 
 /// Shortest text that reads back as the same double.
 std::string num(double v) {
@@ -240,9 +242,19 @@ std::string describe(const Origin& o) {
     return "particle " + std::to_string(o.index) + " of " + o.block;
 }
 
-void readWorld(const Reader& r, const json& j, WorldDef& w) {
+/// A key of version 5 (rotation) in a file that says an older version is refused.
+void requireRotationVersion(const Reader& r, const std::string& path, int version) {
+    if (version < kRotationVersion) {
+        r.fail(path, "need version " + std::to_string(kRotationVersion) +
+                         " or later (the file says version " + std::to_string(version) + ")");
+    }
+}
+
+void readWorld(const Reader& r, const json& j, WorldDef& w, int version) {
     const std::string path = "world";
-    r.object(j, path, {"width", "height", "walls", "gravity", "restitution", "friction"});
+    r.object(j, path,
+             {"width", "height", "walls", "gravity", "restitution", "friction",
+              "tangential_restitution"});
     if (const json* v = Reader::find(j, "width")) w.width = r.positive(*v, "world.width");
     if (const json* v = Reader::find(j, "height")) w.height = r.positive(*v, "world.height");
     if (const json* v = Reader::find(j, "walls")) w.walls = r.boolean(*v, "world.walls");
@@ -252,6 +264,10 @@ void readWorld(const Reader& r, const json& j, WorldDef& w) {
     }
     if (const json* v = Reader::find(j, "friction")) {
         w.friction = r.nonNegative(*v, "world.friction");
+    }
+    if (const json* v = Reader::find(j, "tangential_restitution")) {
+        requireRotationVersion(r, "world.tangential_restitution", version);
+        w.tangentialRestitution = r.inRange(*v, "world.tangential_restitution", -1.0, 1.0);
     }
 }
 
@@ -300,8 +316,11 @@ void checkWorldAccepts(const Reader& r, const WorldDef& def, const SolverSetting
     if (!problems.empty()) r.fail("solver", why(problems.front()));
 }
 
-ParticleDef readParticle(const Reader& r, const json& j, const std::string& path, bool& trail) {
-    r.object(j, path, {"x", "y", "vx", "vy", "mass", "radius", "color", "trail"});
+ParticleDef readParticle(const Reader& r, const json& j, const std::string& path, int version,
+                         bool& trail) {
+    r.object(j, path,
+             {"x", "y", "vx", "vy", "mass", "radius", "color", "trail", "angle", "angular_velocity",
+              "inertia_factor", "fixed_rotation"});
     ParticleDef d;
     d.position = {r.number(r.require(j, path, "x"), member(path, "x")),
                   r.number(r.require(j, path, "y"), member(path, "y"))};
@@ -312,6 +331,29 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
     if (const json* v = Reader::find(j, "color")) d.color = r.color(*v, member(path, "color"));
     trail = false;
     if (const json* v = Reader::find(j, "trail")) trail = r.boolean(*v, member(path, "trail"));
+    if (const json* v = Reader::find(j, "angle")) {
+        requireRotationVersion(r, member(path, "angle"), version);
+        d.angle = r.number(*v, member(path, "angle"));
+    }
+    if (const json* v = Reader::find(j, "angular_velocity")) {
+        requireRotationVersion(r, member(path, "angular_velocity"), version);
+        d.angularVelocity = r.number(*v, member(path, "angular_velocity"));
+    }
+    if (const json* v = Reader::find(j, "inertia_factor")) {
+        const std::string at = member(path, "inertia_factor");
+        requireRotationVersion(r, at, version);
+        d.inertiaFactor = r.positive(*v, at);
+        if (d.inertiaFactor > 1.0) r.fail(at, "must be <= 1 (got " + num(d.inertiaFactor) + ")");
+    }
+    if (const json* v = Reader::find(j, "fixed_rotation")) {
+        requireRotationVersion(r, member(path, "fixed_rotation"), version);
+        d.fixedRotation = r.boolean(*v, member(path, "fixed_rotation"));
+        if (d.fixedRotation && d.angularVelocity != 0.0) {
+            r.fail(member(path, "angular_velocity"),
+                   "must be 0 for a particle with fixed_rotation (got " + num(d.angularVelocity) +
+                       ")");
+        }
+    }
     return d;
 }
 
@@ -554,10 +596,10 @@ void readDroppers(const Reader& r, const json& j, Scene& s) {
 
 /// Reads one generate block and appends its particles.
 void readGenerate(const Reader& r, const json& j, const std::string& path, const WorldDef& world,
-                  std::vector<ParticleDef>& out, std::vector<Origin>& origins) {
-    r.object(
-        j, path,
-        {"count", "packing", "radius", "mass", "region", "temperature", "speed", "color", "seed"});
+                  int version, std::vector<ParticleDef>& out, std::vector<Origin>& origins) {
+    r.object(j, path,
+             {"count", "packing", "radius", "mass", "region", "temperature", "speed", "color",
+              "seed", "fixed_rotation"});
     detail::GenerateSpec spec;
     spec.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
     if (const json* v = Reader::find(j, "mass")) spec.mass = r.mass(*v, member(path, "mass"));
@@ -646,8 +688,15 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
         spec.seed = static_cast<std::uint64_t>(r.integer(*v, member(path, "seed"), 0, INT64_MAX));
     }
 
+    bool fixedRotation = false;
+    if (const json* v = Reader::find(j, "fixed_rotation")) {
+        requireRotationVersion(r, member(path, "fixed_rotation"), version);
+        fixedRotation = r.boolean(*v, member(path, "fixed_rotation"));
+    }
+
     std::vector<ParticleDef> made = detail::generateParticles(spec);
     for (std::size_t k = 0; k < made.size(); ++k) {
+        made[k].fixedRotation = fixedRotation;
         out.push_back(made[k]);
         origins.push_back({path, k});
     }
@@ -716,7 +765,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
     if (const json* v = Reader::find(root, "allow_overlaps")) {
         s.allowOverlaps = r.boolean(*v, "allow_overlaps");
     }
-    if (const json* v = Reader::find(root, "world")) readWorld(r, *v, s.world);
+    if (const json* v = Reader::find(root, "world")) readWorld(r, *v, s.world, s.version);
     if (const json* v = Reader::find(root, "solver")) readSolver(r, *v, s.solver, s.dt);
     if (const json* v = Reader::find(root, "obstacles")) {
         readObstacles(r, *v, s.version, s.world);
@@ -735,7 +784,8 @@ Scene parseScene(std::string_view text, std::string_view source) {
         s.particles.reserve(v->size());
         for (std::size_t i = 0; i < v->size(); ++i) {
             bool trail = false;
-            s.particles.push_back(readParticle(r, (*v)[i], element("particles", i), trail));
+            s.particles.push_back(
+                readParticle(r, (*v)[i], element("particles", i), s.version, trail));
             if (trail) s.trails.push_back(i);
             origins.push_back({"particles", i});
         }
@@ -743,11 +793,12 @@ Scene parseScene(std::string_view text, std::string_view source) {
     if (const json* v = Reader::find(root, "generate")) {
         if (v->is_array()) {
             for (std::size_t k = 0; k < v->size(); ++k) {
-                readGenerate(r, (*v)[k], element("generate", k), s.world, s.particles, origins);
+                readGenerate(r, (*v)[k], element("generate", k), s.world, s.version, s.particles,
+                             origins);
             }
         } else {
             r.expectType(*v, "generate", v->is_object(), "an object or an array of objects");
-            readGenerate(r, *v, "generate", s.world, s.particles, origins);
+            readGenerate(r, *v, "generate", s.world, s.version, s.particles, origins);
         }
     }
     if (const json* v = Reader::find(root, "droppers")) readDroppers(r, *v, s);

@@ -44,6 +44,12 @@ Scene sceneFromWorld(const World& world, double dt, std::string name, std::strin
         d.mass = p.mass[i];
         d.radius = p.radius[i];
         d.color = p.color[i];
+        if (p.rotation) {
+            d.angle = p.angle[i];
+            d.angularVelocity = p.omega[i];
+            d.inertiaFactor = p.inertiaFactor[i];
+            d.fixedRotation = p.fixedRotation[i] != 0;
+        }
         s.particles.push_back(d);
     }
     // A world may hold overlaps the loader refuses by default (particles placed overlapping, an

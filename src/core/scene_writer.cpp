@@ -123,6 +123,13 @@ std::string serializeScene(const Scene& s) {
     int version = s.world.obstacles.empty() ? s.version : std::max(s.version, 2);
     if (s.bins) version = std::max(version, 3);
     if (!s.droppers.empty()) version = std::max(version, 4);
+    const bool rotation =
+        s.world.tangentialRestitution != 0.0 ||
+        std::any_of(s.particles.begin(), s.particles.end(), [](const ParticleDef& p) {
+            return p.angle != 0.0 || p.angularVelocity != 0.0 ||
+                   p.inertiaFactor != kDefaultInertiaFactor || p.fixedRotation;
+        });
+    if (rotation) version = std::max(version, 5);
     out += ",\n  \"version\": " + std::to_string(version);
 
     const WorldDef& w = s.world;
@@ -133,6 +140,10 @@ std::string serializeScene(const Scene& s) {
     appendField(out, ", ", w.gravity.y(), "world.gravity");
     appendField(out, "], \"restitution\": ", w.restitution, "world.restitution");
     appendField(out, ", \"friction\": ", w.friction, "world.friction");
+    if (w.tangentialRestitution != 0.0) {
+        appendField(out, ", \"tangential_restitution\": ", w.tangentialRestitution,
+                    "world.tangential_restitution");
+    }
     out += "}";
 
     const SolverSettings& v = s.solver;
@@ -164,6 +175,16 @@ std::string serializeScene(const Scene& s) {
         if (std::find(s.trails.begin(), s.trails.end(), i) != s.trails.end()) {
             out += ", \"trail\": true";
         }
+        // Rotation only where it differs from the defaults: a scene without it stays as it was.
+        if (p.angle != 0.0) appendField(out, ", \"angle\": ", p.angle, "particle angle");
+        if (p.angularVelocity != 0.0) {
+            appendField(out, ", \"angular_velocity\": ", p.angularVelocity,
+                        "particle angular_velocity");
+        }
+        if (p.inertiaFactor != kDefaultInertiaFactor) {
+            appendField(out, ", \"inertia_factor\": ", p.inertiaFactor, "particle inertia_factor");
+        }
+        if (p.fixedRotation) out += ", \"fixed_rotation\": true";
         out += '}';
     }
     out += s.particles.empty() ? "]\n}\n" : "\n  ]\n}\n";

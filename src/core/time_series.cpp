@@ -12,6 +12,8 @@ ObservablesSample sampleObservables(const World& world) {
     s.time = world.time();
     s.kineticEnergy = kineticEnergy(world);
     s.potentialEnergy = potentialEnergy(world);
+    s.rotationalEnergy = rotationalEnergy(world);
+    s.angularMomentum = angularMomentum(world);
     s.momentum = momentum(world);
     s.centreOfMass = centreOfMass(world);
     s.collisions = world.counters().collisions;

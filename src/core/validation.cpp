@@ -45,6 +45,11 @@ std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& 
     if (!std::isfinite(def.friction) || def.friction < 0.0) {
         p.add("friction", "must be finite and >= 0 " + detail::got(def.friction));
     }
+    if (!std::isfinite(def.tangentialRestitution) || def.tangentialRestitution < -1.0 ||
+        def.tangentialRestitution > 1.0) {
+        p.add("tangential restitution",
+              "must be in [-1, 1] " + detail::got(def.tangentialRestitution));
+    }
     if (s.substeps < 1 || s.substeps > kMaxSubsteps) {
         p.add("substeps", "must be in [1, " + std::to_string(kMaxSubsteps) + "] (got " +
                               std::to_string(s.substeps) + ")");

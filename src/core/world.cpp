@@ -35,11 +35,28 @@ void require(const WorldDef& def, const SolverSettings& solver, const char* wher
     detail::validateObstacles(def.obstacles, def.width, def.height, where);
 }
 
+void requireInertiaFactor(double k, const char* where) {
+    if (!std::isfinite(k) || !(k > 0.0) || k > 1.0)
+        detail::fail(where, "inertia factor", "must be in (0, 1] " + detail::got(k));
+}
+
 void validateParticle(const ParticleDef& d, const char* where) {
     requireFinite(d.position, where, "position");
     requireFinite(d.velocity, where, "velocity");
     detail::requireMass(d.mass, where, "mass");
     requirePositive(d.radius, where, "radius");
+    requireFinite(d.angle, where, "angle");
+    requireFinite(d.angularVelocity, where, "angular velocity");
+    requireInertiaFactor(d.inertiaFactor, where);
+    if (d.fixedRotation && d.angularVelocity != 0.0) {
+        detail::fail(where, "angular velocity",
+                     "must be 0 for a fixed-rotation particle " + detail::got(d.angularVelocity));
+    }
+}
+
+bool defaultRotation(const ParticleDef& d) {
+    return d.angle == 0.0 && d.angularVelocity == 0.0 && d.inertiaFactor == kDefaultInertiaFactor &&
+           !d.fixedRotation;
 }
 
 int hardwareThreads() {
@@ -132,6 +149,14 @@ void World::setFriction(double mu) {
     def_.friction = mu;
 }
 
+void World::setTangentialRestitution(double beta) {
+    WorldDef d = def_;
+    d.tangentialRestitution = beta;
+    require(d, solver_, "World::setTangentialRestitution");
+    changed();
+    def_.tangentialRestitution = beta;
+}
+
 void World::setSolver(const SolverSettings& solver) {
     require(def_, solver, "World::setSolver");
     changed();
@@ -172,6 +197,8 @@ ParticleId World::add(const ParticleDef& d) {
     if (p_.size() >= UINT32_MAX - 1)
         detail::fail("World::add", "particle count", "is at its limit");
     changed();
+    // Rotation arrays are made for the particles there are before this one is added.
+    if (!defaultRotation(d)) useRotation();
     const auto index = static_cast<std::uint32_t>(p_.size());
     const ParticleId id = ids_.allocate(index);
     p_.x.push_back(d.position.x());
@@ -183,7 +210,24 @@ ParticleId World::add(const ParticleDef& d) {
     p_.mass.push_back(d.mass);
     p_.color.push_back(d.color);
     p_.id.push_back(id);
+    if (p_.rotation) {
+        p_.angle.push_back(d.angle);
+        p_.omega.push_back(d.angularVelocity);
+        p_.inertiaFactor.push_back(d.inertiaFactor);
+        p_.fixedRotation.push_back(d.fixedRotation ? 1 : 0);
+    }
     return id;
+}
+
+void World::useRotation() {
+    if (p_.rotation) return;
+    // Every particle so far has the defaults.
+    const std::size_t n = p_.size();
+    p_.rotation = true;
+    p_.angle.assign(n, 0.0);
+    p_.omega.assign(n, 0.0);
+    p_.inertiaFactor.assign(n, kDefaultInertiaFactor);
+    p_.fixedRotation.assign(n, 0);
 }
 
 bool World::remove(ParticleId id) {
@@ -203,6 +247,12 @@ bool World::remove(ParticleId id) {
     swapRemove(p_.mass, i);
     swapRemove(p_.color, i);
     swapRemove(p_.id, i);
+    if (p_.rotation) {
+        swapRemove(p_.angle, i);
+        swapRemove(p_.omega, i);
+        swapRemove(p_.inertiaFactor, i);
+        swapRemove(p_.fixedRotation, i);
+    }
     return true;
 }
 
@@ -238,6 +288,12 @@ void World::reserve(std::size_t n) {
     p_.mass.reserve(n);
     p_.color.reserve(n);
     p_.id.reserve(n);
+    if (p_.rotation) {
+        p_.angle.reserve(n);
+        p_.omega.reserve(n);
+        p_.inertiaFactor.reserve(n);
+        p_.fixedRotation.reserve(n);
+    }
     ids_.reserve(n);
 }
 
@@ -246,6 +302,9 @@ std::size_t World::memoryBytes() const {
         sizeof(double) * (p_.x.capacity() + p_.y.capacity() + p_.vx.capacity() + p_.vy.capacity() +
                           p_.invMass.capacity() + p_.radius.capacity() + p_.mass.capacity());
     bytes += sizeof(Color) * p_.color.capacity() + sizeof(ParticleId) * p_.id.capacity();
+    bytes +=
+        sizeof(double) * (p_.angle.capacity() + p_.omega.capacity() + p_.inertiaFactor.capacity()) +
+        p_.fixedRotation.capacity();
     bytes += ids_.memoryBytes();
     if (ctx_) {
         const StepContext& c = *ctx_;
@@ -267,10 +326,12 @@ std::size_t World::memoryBytes() const {
 }
 
 std::size_t World::stateBytes() const {
-    std::size_t bytes = sizeof(double) * (p_.x.size() + p_.y.size() + p_.vx.size() + p_.vy.size() +
-                                          p_.invMass.size() + p_.radius.size() + p_.mass.size()) +
-                        sizeof(Color) * p_.color.size() + sizeof(ParticleId) * p_.id.size() +
-                        ids_.memoryBytes();
+    std::size_t bytes =
+        sizeof(double) * (p_.x.size() + p_.y.size() + p_.vx.size() + p_.vy.size() +
+                          p_.invMass.size() + p_.radius.size() + p_.mass.size()) +
+        sizeof(Color) * p_.color.size() + sizeof(ParticleId) * p_.id.size() +
+        sizeof(double) * (p_.angle.size() + p_.omega.size() + p_.inertiaFactor.size()) +
+        p_.fixedRotation.size() + ids_.memoryBytes();
     if (exact_) bytes += exact_->memoryBytes();
     return bytes;
 }
@@ -303,8 +364,15 @@ std::size_t World::indexOrThrow(ParticleId id, const char* what) const {
 Particle World::get(ParticleId id) const {
     const std::size_t i = indexOrThrow(id, "World::get");
     settle();
-    return Particle{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
-                    p_.mass[i], p_.radius[i],           p_.color[i]};
+    Particle out{id,         Vec2(p_.x[i], p_.y[i]), Vec2(p_.vx[i], p_.vy[i]),
+                 p_.mass[i], p_.radius[i],           p_.color[i]};
+    if (p_.rotation) {
+        out.angle = p_.angle[i];
+        out.angularVelocity = p_.omega[i];
+        out.inertiaFactor = p_.inertiaFactor[i];
+        out.fixedRotation = p_.fixedRotation[i] != 0;
+    }
+    return out;
 }
 
 void World::setPosition(ParticleId id, const Vec2& position) {
@@ -337,6 +405,46 @@ void World::setRadius(ParticleId id, double radius) {
     const std::size_t i = indexOrThrow(id, "World::setRadius");
     changed();
     p_.radius[i] = radius;
+}
+
+void World::setAngle(ParticleId id, double angle) {
+    requireFinite(angle, "World::setAngle", "angle");
+    const std::size_t i = indexOrThrow(id, "World::setAngle");
+    if (!p_.rotation && angle == 0.0) return;
+    changed();
+    useRotation();
+    p_.angle[i] = angle;
+}
+
+void World::setAngularVelocity(ParticleId id, double omega) {
+    requireFinite(omega, "World::setAngularVelocity", "angular velocity");
+    const std::size_t i = indexOrThrow(id, "World::setAngularVelocity");
+    if (!p_.rotation && omega == 0.0) return;
+    if (p_.rotation && p_.fixedRotation[i] && omega != 0.0) {
+        detail::fail("World::setAngularVelocity", "angular velocity",
+                     "must be 0 for a fixed-rotation particle " + detail::got(omega));
+    }
+    changed();
+    useRotation();
+    p_.omega[i] = omega;
+}
+
+void World::setInertiaFactor(ParticleId id, double k) {
+    requireInertiaFactor(k, "World::setInertiaFactor");
+    const std::size_t i = indexOrThrow(id, "World::setInertiaFactor");
+    if (!p_.rotation && k == kDefaultInertiaFactor) return;
+    changed();
+    useRotation();
+    p_.inertiaFactor[i] = k;
+}
+
+void World::setFixedRotation(ParticleId id, bool fixed) {
+    const std::size_t i = indexOrThrow(id, "World::setFixedRotation");
+    if (!p_.rotation && !fixed) return;
+    changed();
+    useRotation();
+    p_.fixedRotation[i] = fixed ? 1 : 0;
+    if (fixed) p_.omega[i] = 0.0;
 }
 
 void World::setColor(ParticleId id, Color color) {
@@ -373,6 +481,11 @@ void World::step(double dt) {
     ctx_->broadPhase = solver_.broadphase;
     ctx_->collisionLog = collisionLog_ ? &*collisionLog_ : nullptr;
     ctx_->stepStart = time_;
+    // Friction turns discs: from the first step with friction on, the world keeps rotation.
+    if (def_.friction > 0.0 && !p_.rotation) {
+        changed();
+        useRotation();
+    }
     // A step in another mode works on the arrays: they must hold the state, and the exact
     // stepper must rebuild from what that step leaves. The exact mode keeps its own copy in
     // cell order, so it never reorders the world's storage.

@@ -208,6 +208,33 @@ TEST(Report, HasEveryFieldWithItsValue) {
     EXPECT_EQ(j.at("wall_impulse"), 32.0);
     EXPECT_EQ(j.at("max_overlap"), 0.0);
     EXPECT_EQ(j.at("escaped"), 0);
+    // A disc moving along y = 5 at 4 m/s: m (x vy − y vx) = 2 (0 − 5·4) = −40 about the origin;
+    // it does not turn.
+    EXPECT_EQ(j.at("angular_momentum").at("initial"), -40.0);
+    EXPECT_EQ(j.at("rotational_energy").at("initial"), 0.0);
+    EXPECT_EQ(j.at("rotational_energy").at("final"), 0.0);
+}
+
+TEST(Report, ADiscLaunchedSlidingOnTheFloorSpinsUpAndTheReportSaysHowMuch) {
+    // v0 = 3 m/s, mu = 0.2, r = 0.2, k = 1/2: it rolls at 2 m/s, 10 rad/s from 0.51 s. Rotational
+    // energy ½ (½ m r²) ω² = 1 J for m = 1; angular momentum about the origin, on the floor at
+    // y = 2 − r: m (x vy − y vx) + I ω = −1.8 · 2 + 0.02 · 10 = −3.4 kg m²/s.
+    const RunReport r = run(R"({"version": 5,
+        "world": {"width": 20, "height": 2, "gravity": [0, 9.81], "restitution": 0, "friction": 0.2},
+        "solver": {"dt": 0.001},
+        "particles": [{"x": 1, "y": 1.8, "vx": 3, "mass": 1, "radius": 0.2}]})",
+                            2.0, {});
+    const auto j = nlohmann::json::parse(reportJson(r));
+    EXPECT_TRUE(r.rotation);
+    EXPECT_EQ(j.at("rotational_energy").at("initial"), 0.0);
+    EXPECT_NEAR(j.at("rotational_energy").at("final").get<double>(), 1.0, 1e-9);
+    EXPECT_NEAR(j.at("kinetic_energy").at("final").get<double>(), 2.0, 1e-9);
+    EXPECT_NEAR(j.at("angular_momentum").at("initial").get<double>(), -1.8 * 3.0, 1e-12);
+    EXPECT_NEAR(j.at("angular_momentum").at("final").get<double>(), -3.4, 1e-9);
+    // Kinetic + rotational + potential: the friction's work is gone (4.5 J to 3 J).
+    EXPECT_NEAR(j.at("mechanical_energy").at("final").get<double>() -
+                    j.at("mechanical_energy").at("initial").get<double>(),
+                -1.5, 1e-9);
 }
 
 /// 12 discs in the left bin, 8 in the right, 3 above the bins; Binomial(1, 1/2) expected.

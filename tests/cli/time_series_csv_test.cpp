@@ -182,5 +182,35 @@ TEST(TimeSeriesCsvGravity, AddsPotentialAndMechanicalEnergyColumns) {
     EXPECT_EQ(timeSeriesCsv(series).find("potential"), std::string::npos);
 }
 
+TEST(TimeSeriesCsvRotation, AddsRotationalEnergyAndAngularMomentumColumns) {
+    WorldDef def;
+    def.width = def.height = 10.0;
+    World w(def, {.mode = StepMode::Exact});
+    // m = 2, r = 1, k = 1/2: I = 1; ω = 3: ½ I ω² = 4.5 J; L = m (x vy − y vx) + I ω = 2 (5·1) + 3.
+    w.add({.position = {5.0, 5.0},
+           .velocity = {0.0, 1.0},
+           .mass = 2.0,
+           .radius = 1.0,
+           .angularVelocity = 3.0});
+    TimeSeries series(4);
+    series.record(w);
+    w.step(1.0);
+    series.record(w);
+    const std::string csv = timeSeriesCsv(series, false, true);
+    std::istringstream in(csv);
+    std::string header, first;
+    std::getline(in, header);
+    std::getline(in, first);
+    EXPECT_EQ(header, std::string(kTimeSeriesCsvHeader) + kTimeSeriesCsvRotationColumns);
+    std::vector<double> row;
+    std::stringstream ss(first);
+    for (std::string cell; std::getline(ss, cell, ',');)
+        row.push_back(std::stod(cell));
+    ASSERT_EQ(row.size(), 10u);
+    EXPECT_EQ(row[8], 4.5);
+    EXPECT_EQ(row[9], 13.0);
+    EXPECT_EQ(timeSeriesCsv(series).find("rotational"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace psb::cli

@@ -110,12 +110,14 @@ TEST(ObstacleContacts, ElasticBouncesAmongPegsKeepTheEnergy) {
 }
 
 TEST(ObstacleContacts, ABallSettlesOnARampAndStaysAboveIt) {
-    // e = 0, high friction, gravity: it comes to rest on a 20° ramp, never sinking into it.
+    // e = 0, high friction, gravity: a disc that does not turn (a block) comes to rest on a 20°
+    // ramp, never sinking into it. (One that turns rolls down it.)
     World w = box(10.0, 0.0, 1.0, Vec2(0.0, 9.81));
     const Obstacle ramp =
         Obstacle::segment(Vec2(1.0, 5.0), Vec2(9.0, 5.0 + 8.0 * std::tan(0.35)), 0.05);
     w.addObstacle(ramp);
-    const ParticleId id = w.add({.position = {3.0, 4.0}, .mass = 1.0, .radius = 0.2});
+    const ParticleId id =
+        w.add({.position = {3.0, 4.0}, .mass = 1.0, .radius = 0.2, .fixedRotation = true});
     for (int k = 0; k < 600; ++k) {
         w.step(1.0 / 120.0);
         EXPECT_GE(coreDistance(ramp, w.get(id).position), 0.225 - 1e-9) << "step " << k;

@@ -288,8 +288,11 @@ TEST(WorldChangesWhileSliding, ABallPlacedInsideASegmentDoesNotJumpOntoItsFaceTh
                      .friction = 0.13},
             SolverSettings{.mode = StepMode::Exact});
     w.addObstacle(Obstacle::segment({2.614, 2.389}, {0.3026, 5.061}, 0.131));
-    const ParticleId id = w.add(
-        {.position = {0.301, 4.369}, .velocity = {-86.6, -26.5}, .mass = 4.9, .radius = 0.705});
+    const ParticleId id = w.add({.position = {0.301, 4.369},
+                                 .velocity = {-86.6, -26.5},
+                                 .mass = 4.9,
+                                 .radius = 0.705,
+                                 .fixedRotation = true});
     w.step(0.01);
     Vec2 last = w.get(id).position;
     for (int k = 0; k < 40; ++k) {

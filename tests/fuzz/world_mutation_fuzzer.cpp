@@ -3,7 +3,8 @@
 // The bytes choose a small world (box, walls, gravity, restitution, friction, step mode, pegs,
 // segments, droppers, particles) and then a sequence of steps and changes made through the
 // public API alone, as the app and the session make them: add, remove, move, push, resize,
-// reweigh, hold and let go, obstacles added and removed, laws and box changed, the mode
+// reweigh, hold and let go, spin, turn, change the inertia factor, fix the rotation and the
+// tangential restitution, obstacles added and removed, laws and box changed, the mode
 // switched, droppers replaced, the world copied and both copies stepped, the exact mode's
 // event state dropped, everything cleared. Values are mostly sensible and sometimes hostile
 // (NaN, infinities, zero, negative, huge).
@@ -386,7 +387,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     stepper.changed(world);
     std::optional<psb::World> twin;  // a copy stepped alike, until the next change
     for (int op = 0; op < kMaxOps && in.remaining_bytes() > 0; ++op) {
-        const int what = in.ConsumeIntegralInRange<int>(0, 19);
+        const int what = in.ConsumeIntegralInRange<int>(0, 22);
         if (what <= 3) {
             const int count = in.ConsumeIntegralInRange<int>(1, kMaxStepsPerOp);
             stepper.step(world, dt, count);
@@ -512,6 +513,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                 } else
                     world = psb::World(world);  // copy-assign, as undo restores a state
                 break;
+            case 20:
+                // Spin (hostile: NaN, infinite, huge), refused on a fixed-rotation particle.
+                if (id) {
+                    const double omega = quantity(in, -50.0, 50.0);
+                    const double angle = quantity(in, -10.0, 10.0);
+                    change(world, "setAngularVelocity",
+                           [&] { world.setAngularVelocity(*id, omega); });
+                    change(world, "setAngle", [&] { world.setAngle(*id, angle); });
+                }
+                break;
+            case 21:
+                // The inertia factor: (0, 1], else refused (0, negative, 1e-300 is accepted).
+                if (id) {
+                    const double k = quantity(in, 0.05, 1.0);
+                    const bool fixed = in.ConsumeIntegralInRange<int>(0, 3) == 0;
+                    change(world, "setInertiaFactor", [&] { world.setInertiaFactor(*id, k); });
+                    change(world, "setFixedRotation", [&] { world.setFixedRotation(*id, fixed); });
+                }
+                break;
+            case 22: {
+                const double beta = quantity(in, -1.0, 1.0);
+                change(world, "setTangentialRestitution",
+                       [&] { world.setTangentialRestitution(beta); });
+                break;
+            }
             default:
                 break;
         }

@@ -42,6 +42,15 @@ struct Slide {
     std::uint32_t obstacle = 0;
     double ax = 0.0, ay = 0.0;
 };
+// A particle's rotation (kept only in a world that keeps rotation): its angle at time t (on the
+// stepper's clock), its angular velocity since then, and its spin weight 1/k (0: fixed).
+// Only rough contacts change omega, so between two of them the angle grows linearly.
+struct Turn {
+    double angle;
+    double t;
+    double omega;
+    double q;
+};
 // Where a particle is at a time, and how it moves there (gravity only).
 struct Motion {
     double x, y, vx, vy, ax, ay;

@@ -111,7 +111,10 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // particle rests on: a particle in a slot between sleepers stops instead of rattling.
     if (offStatic && approach * e < restSpeed_) e = 0.0;
     const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
-    const bool hit = def_.friction > 0.0
+    const bool hit = rough_ ? collideRoughDiscs(a.vx, a.vy, spinAt(i, ev.time), b.vx, b.vy,
+                                                spinAt(j, ev.time), wi, wj, cold_[i].m, cold_[j].m,
+                                                n, {e, def_.friction, def_.tangentialRestitution})
+                     : def_.friction > 0.0
                          ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
                                               cold_[j].m, n, e, def_.friction)
                          : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
@@ -176,8 +179,14 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     } else {
         double out = outward * v;
         const double e = effectiveRestitution(out, recent);
-        dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
-                                 : reboundOffWall<false>(out, vt, e, 0.0);
+        if (rough_) {
+            dv = reboundOffWall<false>(out, vt, e, 0.0);
+            v = outward * out;
+            if (dv > 0.0) roughWallTangential(i, ev.side, dv, ev.time);
+        } else {
+            dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
+                                     : reboundOffWall<false>(out, vt, e, 0.0);
+        }
         v = outward * out;
         // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
         if (gravity_ && outward * (alongX ? gx_ : gy_) > 0.0 && std::abs(v) < restSpeed_) {
@@ -202,6 +211,27 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
                a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
+}
+
+Spin ExactStepper::spinAt(std::uint32_t i, double now) {
+    Turn& r = turn_[i];
+    r.angle += r.omega * (now - r.t);
+    r.t = now;
+    return Spin{r.omega, bodies_[i].r, r.q};
+}
+
+void ExactStepper::roughWallTangential(std::uint32_t i, int side, double dv, double now) {
+    // Wall `side` has the outward normal n = −outward along its axis (outward: +1 for the
+    // right and bottom walls), and the tangent t = (−n_y, n_x): −outward times the other axis
+    // for the x walls, +outward times it for the y walls (as in the discrete mode's walls).
+    Body& a = bodies_[i];
+    const bool alongX = side < 2;
+    const double outward = (side % 2 == 0) ? -1.0 : 1.0;
+    const double sign = alongX ? -outward : outward;
+    double& vt = alongX ? a.vy : a.vx;
+    double along = sign * vt;
+    roughAlongSurface(along, spinAt(i, now), dv, def_.friction, def_.tangentialRestitution);
+    vt = sign * along;
 }
 
 bool ExactStepper::collidedWithin(const Body& b, double now) {

@@ -252,6 +252,7 @@ void ExactStepper::sortByCell(bool midRun) {
         rate_.renumber(to);
     }
     if (!slide_.empty()) permute(slide_);
+    if (!turn_.empty()) permute(turn_);
     if (midRun) {
         // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));

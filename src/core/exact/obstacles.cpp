@@ -74,8 +74,11 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     const Vec2 before(a.vx, a.vy);
     const double into = -(a.vx * nx + a.vy * ny);
     const double e = effectiveRestitution(into, recent);
-    double dv = def_.friction > 0.0 ? reboundOffSurface<true>(a.vx, a.vy, nx, ny, e, def_.friction)
-                                    : reboundOffSurface<false>(a.vx, a.vy, nx, ny, e, 0.0);
+    const RoughLaws laws{e, def_.friction, def_.tangentialRestitution};
+    double dv = rough_ ? roughReboundOffSurface(a.vx, a.vy, spinAt(i, a.t), nx, ny, laws)
+                : def_.friction > 0.0
+                    ? reboundOffSurface<true>(a.vx, a.vy, nx, ny, e, def_.friction)
+                    : reboundOffSurface<false>(a.vx, a.vy, nx, ny, e, 0.0);
     if (gravity_) {
         // Pressed into the obstacle by gravity and leaving it slower than the lift: leave at the
         // lift, as a pressed pair does (see resting.cpp), so that a particle on a slope
@@ -96,7 +99,13 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
                 // and the mean deceleration is then g (sin θ − mu cos θ). Friction only on the
                 // rebound's part gave mu (1 + e)/2 in place of mu.
                 const double extra = lift - leaving;
-                if (def_.friction > 0.0) {
+                if (rough_) {
+                    double along = a.vx * -ny + a.vy * nx;
+                    roughAlongSurface(along, spinAt(i, a.t), extra, def_.friction,
+                                      def_.tangentialRestitution);
+                    a.vx = leaving * nx + along * -ny;
+                    a.vy = leaving * ny + along * nx;
+                } else if (def_.friction > 0.0) {
                     double along = a.vx * -ny + a.vy * nx;
                     const double cut = std::min(std::abs(along), def_.friction * extra);
                     along -= std::copysign(cut, along);

@@ -62,6 +62,10 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     depth_.assign(gravity_ ? n : 0, 0);
     recheckAt_.assign(gravity_ ? n : 0, kNever);
     slide_.assign(gravity_ && !def_.obstacles.empty() ? n : 0, Slide{});
+    turn_.resize(p.rotation ? n : 0);
+    for (std::uint32_t i = 0; i < turn_.size(); ++i)
+        turn_[i] = Turn{p.angle[i], 0.0, p.omega[i], p.spinWeight(i)};
+    rough_ = p.rotation && def.friction > 0.0;
     rate_.reset(gravity_ ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];

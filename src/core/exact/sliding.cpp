@@ -18,6 +18,11 @@
 // Pegs and caps keep the hop: round a circle the normal force is not constant, and the path
 // is not a parabola.
 //
+// The slide does not roll: a disc that turns slides like one that does not (the block's
+// g (sin θ − μ cos θ)), its spin left as its last collision made it. Rolling here would be
+// another piecewise-analytic contact (spin-up under kinetic friction until the slip-to-roll
+// instant, an event, then a = g sin θ / (1 + k)); docs/exact.md, Limits.
+//
 
 #include <cmath>
 

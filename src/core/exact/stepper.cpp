@@ -144,6 +144,13 @@ void ExactStepper::sync(ParticleArrays& p) {
         vx[i] = b.vx;
         vy[i] = b.vy;
     }
+    if (!turn_.empty()) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const Turn& r = turn_[k];
+            p.angle[order[k]] = r.angle + r.omega * (t - r.t);
+            p.omega[order[k]] = r.omega;
+        }
+    }
     if (flewFreely_ && def_.walls) {
         // Past a wall after the free flight (a particle the budget stopped between a wall and
         // an obstacle it was placed in, say): on the wall, turned inward with restitution e.
@@ -173,7 +180,7 @@ std::size_t ExactStepper::memoryBytes() const {
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
                         queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
-                        sizeof(Slide) * slide_.capacity();
+                        sizeof(Slide) * slide_.capacity() + sizeof(Turn) * turn_.capacity();
     for (const Level& level : upper_)
         bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one

@@ -160,7 +160,8 @@ class ExactStepper {
 
     /// Whether `p` has not yet received the state of the last step.
     [[nodiscard]] bool owesSync() const { return syncOwed_; }
-    /// Writes every particle's position and velocity at the end of the last step into `p`
+    /// Writes every particle's position and velocity (and, in a world that keeps rotation, its
+    /// angle and angular velocity) at the end of the last step into `p`
     /// (the arrays the last rebuild read): one pass over the particles.
     void sync(ParticleArrays& p);
 
@@ -261,6 +262,13 @@ class ExactStepper {
     std::uint32_t countHit(std::uint32_t i);
     void countHeldHit(std::uint32_t i);
 
+    // --- rotation (collisions.cpp) ------------------------------------------------------------
+    // i's rotation for a rough contact at time `now`: its angle brought up to now first, since
+    // the contact may change its angular velocity.
+    [[nodiscard]] Spin spinAt(std::uint32_t i, double now);
+    // The rough tangential impulse of wall `side` (0..3) on i, after a rebound of dv along it.
+    void roughWallTangential(std::uint32_t i, int side, double dv, double now);
+
     // --- resting, gravity only (resting.cpp) --------------------------------------------------
     // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
     // changes touch wakes.
@@ -330,6 +338,10 @@ class ExactStepper {
     // Per particle, in bodies_' order, with gravity and obstacles only: its sliding contact,
     // read where kSliding is set (sliding.cpp).
     std::vector<Slide> slide_;
+    // Per particle, in bodies_' order, only in a world that keeps rotation (else empty).
+    std::vector<Turn> turn_;
+    // Contacts are rough (contact.hpp): the world keeps rotation and has friction.
+    bool rough_ = false;
     // When each particle was last woken (gravity only): it does not fall asleep again within
     // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
     // by the next event of the cascade that woke it.

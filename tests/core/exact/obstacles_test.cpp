@@ -253,7 +253,8 @@ LongRamp longRamp(double degrees, double mu, double e) {
     const ParticleId id =
         ramp.world.add({.position = ramp.ramp.a + 0.8 * ramp.along + (r + 0.05) * ramp.normal,
                         .mass = 1.0,
-                        .radius = r});
+                        .radius = r,
+                        .fixedRotation = true});
     return {std::move(ramp), id};
 }
 
@@ -263,7 +264,7 @@ Ramp shortRamp(double length) {
 }
 
 TEST(ExactObstacles, BallSlidingDownARampWithFrictionFollowsCoulombsLaw) {
-    // Friction acts at the impulses of the contact (the model has no rotation): over the hops
+    // Friction acts at the impulses of the contact (a disc that does not turn): over the hops
     // down a slope steeper than the friction angle the normal impulses carry the weight's
     // normal share, so the mean acceleration along the slope is g (sin θ − mu cos θ), whatever
     // the restitution. Measured from the velocity along the slope between 0.5 s and 2.5 s.
