@@ -224,7 +224,7 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 40:
             return cmd::Select{someParticle(in, s)};
         case 41:
-            return cmd::SetShow{static_cast<cmd::ShowOption>(in.ConsumeIntegralInRange<int>(0, 8)),
+            return cmd::SetShow{static_cast<cmd::ShowOption>(in.ConsumeIntegralInRange<int>(0, 10)),
                                 in.ConsumeBool()};
         case 42:
             return in.ConsumeBool() ? Command{cmd::ToggleControls{}} : Command{cmd::Back{}};

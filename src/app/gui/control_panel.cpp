@@ -327,6 +327,13 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Last collision card", v.collision, cmd::ShowOption::Collision,
         "The selected particle's last collision (with none selected, the last between two "
         "particles): velocities, momenta and energy just before and just after (key J)");
+    box("Ruler", v.ruler, cmd::ShowOption::Ruler,
+        "A ruler over the box: drag its ends (or its edge to move it) to measure a distance in "
+        "metres and a slope in degrees (key Q)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    box("Grid", v.grid, cmd::ShowOption::Grid,
+        "Lines across the box at a round number of metres, labelled along its top and left "
+        "edges (Shift+G)");
     if (s.meta().bins) {
         box("Bin counts against the bell curve", v.bins, cmd::ShowOption::Bins,
             "How many balls landed in each bin, against the binomial distribution and the "

@@ -38,6 +38,7 @@
 namespace psb::app {
 
 class Session;
+struct CollisionCard;
 
 /// The panel's width open and folded, window points (pixels at a pixel ratio of 1).
 inline constexpr float kControlsWidth = 310.f;
@@ -103,9 +104,13 @@ class ControlPanel {
     /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).
     void obstacleTools(const Session& s);
     void readouts(const Session& s);
+    /// The gas instruments' pressure plot, under the readouts (section_readouts.cpp).
+    void pressurePlot(const Session& s);
     /// The last collision card, while it is shown (section_collision.cpp).
     void lastCollision(const Session& s);
     void card(const Session& s);
+    /// The momenta diagram under the card (view/momenta_diagram.hpp).
+    void momenta(const CollisionCard& card);
     /// The values table's window, while shown (section_values.cpp), in a display `height`
     /// points high.
     void valuesWindow(const Session& s, float height);

@@ -1,15 +1,19 @@
 // The control panel's Last collision section: the card (session/last_collision.hpp) as a table
 // of before and after, with what the collision kept and lost. Shown while J (or the Show
-// section's checkbox) has the card on.
+// section's checkbox) has the card on. Below the table, the momenta diagram
+// (view/momenta_diagram.hpp): before and after, tip to tail, on one scale.
 
 #include <algorithm>
+#include <cmath>
 
 #include <imgui.h>
 
 #include "gui/control_panel.hpp"
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
+#include "session/units.hpp"
 #include "view/collision_card_lines.hpp"
+#include "view/momenta_diagram.hpp"
 
 namespace psb::app {
 
@@ -69,6 +73,100 @@ void ControlPanel::card(const Session& s) {
     }
     for (const std::string& note : text.notes)
         widgets::wrapped(note);
+    momenta(*card);
+}
+
+namespace {
+
+/// The diagram's colours: Okabe and Ito's orange and sky blue, told apart by colour-blind
+/// viewers too; the total in the text's colour, so it reads on any background.
+ImU32 arrowColor(MomentaDiagram::Kind kind) {
+    switch (kind) {
+        case MomentaDiagram::Kind::First:
+            return IM_COL32(230, 159, 0, 255);
+        case MomentaDiagram::Kind::Second:
+            return IM_COL32(86, 180, 233, 255);
+        case MomentaDiagram::Kind::Total:
+            break;
+    }
+    return ImGui::GetColorU32(ImGuiCol_Text);
+}
+
+/// One half of the diagram in a square canvas `side` pixels wide at the cursor.
+void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>& arrows,
+              const char* id, float side) {
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton(id, ImVec2(side, side));
+    ImDrawList& draw = *ImGui::GetWindowDrawList();
+    const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
+    draw.AddRect(at, ImVec2(at.x + side, at.y + side), faint);
+    const ImVec2 centre(at.x + 0.5f * side, at.y + 0.5f * side);
+    draw.AddLine(ImVec2(at.x, centre.y), ImVec2(at.x + side, centre.y), faint);
+    draw.AddLine(ImVec2(centre.x, at.y), ImVec2(centre.x, at.y + side), faint);
+    const float font = ImGui::GetFontSize();
+    const float head = 0.45f * font;
+    for (const MomentaDiagram::Arrow& a : arrows) {
+        const Vec2 from = d.fromPixels(a, side), to = d.toPixels(a, side);
+        const ImVec2 p0(at.x + static_cast<float>(from.x()), at.y + static_cast<float>(from.y()));
+        const ImVec2 p1(at.x + static_cast<float>(to.x()), at.y + static_cast<float>(to.y()));
+        const ImU32 color = arrowColor(a.kind);
+        const float thick = a.kind == MomentaDiagram::Kind::Total ? 0.16f * font : 0.11f * font;
+        const Vec2 along = to - from;
+        const double length = along.norm();
+        if (!(length > 0.5)) {  // nothing to point: a dot, so "no momentum" still shows
+            draw.AddCircleFilled(p1, 0.2f * font, color);
+            continue;
+        }
+        const Vec2 u = along / length, n(-u.y(), u.x());
+        const double h = std::min<double>(head, 0.6 * length);
+        const Vec2 base = to - h * u;
+        draw.AddLine(
+            p0, ImVec2(at.x + static_cast<float>(base.x()), at.y + static_cast<float>(base.y())),
+            color, thick);
+        const Vec2 l = base + 0.5 * h * n, r = base - 0.5 * h * n;
+        draw.AddTriangleFilled(
+            p1, ImVec2(at.x + static_cast<float>(l.x()), at.y + static_cast<float>(l.y())),
+            ImVec2(at.x + static_cast<float>(r.x()), at.y + static_cast<float>(r.y())), color);
+        // The label beside the arrow's middle, on the side away from the total's arrow.
+        const double labelSide = a.kind == MomentaDiagram::Kind::Total ? -1.0 : 1.0;
+        const Vec2 mid = 0.5 * (from + to) + labelSide * 0.7 * font * n;
+        const ImVec2 size = ImGui::CalcTextSize(a.label.c_str());
+        draw.AddText(ImVec2(at.x + static_cast<float>(mid.x()) - 0.5f * size.x,
+                            at.y + static_cast<float>(mid.y()) - 0.5f * size.y),
+                     color, a.label.c_str());
+    }
+}
+
+}  // namespace
+
+void ControlPanel::momenta(const CollisionCard& card) {
+    const MomentaDiagram d = momentaDiagram(card);
+    ImGui::Spacing();
+    ImGui::TextUnformatted("Momenta, tip to tail");
+    widgets::tip(
+        card.pair() ? "Each particle's momentum m v as an arrow, the second drawn from the first's "
+                      "tip, and the total from the start to the last tip. Before and after are on "
+                      "one scale: the total's arrow does not change in a collision between two "
+                      "particles"
+                    : "The particle's momentum m v before and after, on one scale: a wall or an "
+                      "obstacle changes it");
+    mark("momenta diagram");
+    const float gap = ImGui::GetStyle().ItemSpacing.x;
+    const float side = std::clamp(0.5f * (ImGui::GetContentRegionAvail().x - gap),
+                                  4.0f * ImGui::GetFontSize(), 14.0f * ImGui::GetFontSize());
+    ImGui::BeginGroup();
+    ImGui::TextDisabled("before");
+    drawHalf(d, d.before, "##momenta before", side);
+    ImGui::EndGroup();
+    ImGui::SameLine();
+    ImGui::BeginGroup();
+    ImGui::TextDisabled("after");
+    drawHalf(d, d.after, "##momenta after", side);
+    ImGui::EndGroup();
+    std::string scale = "The square reaches ";
+    scale += quantity(d.reach, "kg m/s", false);
+    scale += " from its centre; x right, y down as in the box";
+    widgets::wrappedDisabled(scale);
 }
 
 }  // namespace psb::app

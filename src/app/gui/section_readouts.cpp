@@ -16,6 +16,7 @@
 #include "session/session.hpp"
 #include "session/units.hpp"
 #include "view/gas_lines.hpp"
+#include "view/pressure_plot.hpp"
 
 namespace psb::app {
 
@@ -85,6 +86,7 @@ void ControlPanel::readouts(const Session& s) {
         }
         ImGui::EndTable();
     }
+    if (s.gasReading()) pressurePlot(s);
 
     // Accuracy, in words.
     const double drift = s.accuracy().drift(monitoredEnergy(w));
@@ -113,6 +115,76 @@ void ControlPanel::readouts(const Session& s) {
         tip("A particle that moves more than its own size in one step can pass through another "
             "without touching it; the exact mode never misses one");
     }
+}
+
+namespace {
+
+/// Okabe and Ito's colours, told apart by colour-blind viewers too.
+constexpr ImU32 kMeasuredColor = IM_COL32(230, 159, 0, 255);   // orange
+constexpr ImU32 kHardDiskColor = IM_COL32(86, 180, 233, 255);  // sky blue
+constexpr ImU32 kIdealColor = IM_COL32(0, 158, 115, 255);      // bluish green
+
+ImVec2 onCanvas(const ImVec2& at, const ImVec2& size, const Vec2& unit) {
+    return {at.x + static_cast<float>(unit.x()) * size.x,
+            at.y + (1.f - static_cast<float>(unit.y())) * size.y};
+}
+
+void polyline(ImDrawList& draw, const ImVec2& at, const ImVec2& size, const std::vector<Vec2>& line,
+              ImU32 color, float thickness) {
+    std::vector<ImVec2> points;
+    points.reserve(line.size());
+    for (const Vec2& p : line)
+        points.push_back(onCanvas(at, size, p));
+    if (points.size() >= 2) {
+        draw.AddPolyline(points.data(), static_cast<int>(points.size()), color, ImDrawFlags_None,
+                         thickness);
+    }
+}
+
+}  // namespace
+
+void ControlPanel::pressurePlot(const Session& s) {
+    const PressurePlot plot = psb::app::pressurePlot(s.gasHistory());
+    ImGui::TextUnformatted("Pressure over time");
+    tip("The pressure measured on the walls (orange, with its standard error as a band) beside "
+        "the hard-disc value (blue) and the ideal gas's N kT / A (green), over the last minute "
+        "of simulated time. Heat or cool the gas and watch all three follow");
+    mark("pressure plot");
+    if (plot.empty()) {
+        widgets::wrappedDisabled("Run time (Space): a point every 0.25 s");
+        return;
+    }
+    const float font = ImGui::GetFontSize();
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, 6.0f * font);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("##pressure plot", size);
+    ImDrawList& draw = *ImGui::GetWindowDrawList();
+    const ImU32 frame = ImGui::GetColorU32(ImGuiCol_Border);
+    draw.AddRect(at, ImVec2(at.x + size.x, at.y + size.y), frame);
+    // The error band as thin vertical strokes between low and high: cheap and clear at any width.
+    for (std::size_t k = 0; k < plot.measured.size(); ++k) {
+        const std::vector<Vec2>& lo = plot.measuredLow[k];
+        const std::vector<Vec2>& hi = plot.measuredHigh[k];
+        for (std::size_t i = 0; i < lo.size(); ++i) {
+            draw.AddLine(onCanvas(at, size, lo[i]), onCanvas(at, size, hi[i]),
+                         (kMeasuredColor & 0x00FFFFFFu) | (0x70u << IM_COL32_A_SHIFT), 2.0f);
+        }
+    }
+    polyline(draw, at, size, plot.ideal, kIdealColor, 0.1f * font);
+    polyline(draw, at, size, plot.hardDisk, kHardDiskColor, 0.1f * font);
+    for (const std::vector<Vec2>& line : plot.measured)
+        polyline(draw, at, size, line, kMeasuredColor, 0.13f * font);
+    const ImU32 text = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    draw.AddText(ImVec2(at.x + 3.f, at.y + 1.f), text, quantity(plot.top, "N/m", false).c_str());
+    const std::string t0 = quantity(plot.t0, "s"), t1 = quantity(plot.t1, "s");
+    ImGui::TextDisabled("%s", t0.c_str());
+    ImGui::SameLine(std::max(0.f, size.x - ImGui::CalcTextSize(t1.c_str()).x));
+    ImGui::TextDisabled("%s", t1.c_str());
+    ImGui::TextColored(ImColor(kMeasuredColor), "measured");
+    ImGui::SameLine();
+    ImGui::TextColored(ImColor(kHardDiskColor), "hard discs");
+    ImGui::SameLine();
+    ImGui::TextColored(ImColor(kIdealColor), "ideal gas");
 }
 
 void ControlPanel::engine(const Session& s, const FrameStats& stats) {

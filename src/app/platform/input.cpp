@@ -157,7 +157,10 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
         case SDLK_e:
             return {restitutionStep(state.restitution, shift ? +1 : -1)};
         case SDLK_g:
+            if (shift) return {show(state, ShowOption::Grid)};
             return {gravityToggle(state.gravity, state.sceneGravity)};
+        case SDLK_q:
+            return {show(state, ShowOption::Ruler)};
         case SDLK_F12:
             return {cmd::Screenshot{}};
         case SDLK_RETURN:

@@ -28,6 +28,10 @@ const char* keyOf(ShowOption option) {
             return "collision";
         case ShowOption::Values:
             return "values";
+        case ShowOption::Ruler:
+            return "ruler";
+        case ShowOption::Grid:
+            return "grid";
     }
     return "";
 }

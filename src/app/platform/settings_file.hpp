@@ -15,7 +15,8 @@ namespace psb::app {
 /// The options kept, in their file's order.
 inline constexpr ShowOption kKeptOptions[] = {
     ShowOption::Arrows, ShowOption::Labels,  ShowOption::Momentum,  ShowOption::Plots,
-    ShowOption::Speeds, ShowOption::Profile, ShowOption::Collision, ShowOption::Values};
+    ShowOption::Speeds, ShowOption::Profile, ShowOption::Collision, ShowOption::Values,
+    ShowOption::Ruler,  ShowOption::Grid};
 
 /// `view`'s kept options as the file's text.
 [[nodiscard]] std::string settingsText(const ViewOptions& view);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/lab_marks_drawing.hpp"
 #include "render/obstacle_drawing.hpp"
 #include "render/overlay_drawing.hpp"
 #include "render/sdl_rect.hpp"
@@ -31,8 +32,10 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
           frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
         if (r.w > 0) avoid.push_back(sdlRect(r));
     }
+    gridLines_.clear();
+    if (frame.grid) batchGridLines(*frame.grid, gridLines_);
     const DrawStats stats = renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_,
-                                           frame.trailParticle, &avoid);
+                                           frame.trailParticle, &avoid, &gridLines_);
     if (frame.bins) binMarks_.draw(sdl_, labelFont_, camera, frame.bins->bins, world.def().height);
     for (const DropperView& d : frame.droppers)
         drawDropper(camera, d);
@@ -40,10 +43,22 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
     analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
                    frame.layout, frame.bins);
+    if (frame.grid || frame.ruler) drawLabMarks(frame);
     if (frame.launch) drawLaunch(camera, *frame.launch);
     if (frame.boxMarker) drawBoxMarker(*frame.boxMarker);
     drawOverlays(sdl_, hudFont_, frame.overlays, frame.layout);
     return stats;
+}
+
+void DrawLayer::drawLabMarks(const FrameView& frame) {
+    if (frame.ruler) {
+        rulerMarks_.clear();
+        batchRuler(*frame.ruler, rulerMarks_);
+        renderer_.drawBatch(rulerMarks_);
+    }
+    layoutMarkLabels(frame.grid ? &*frame.grid : nullptr, frame.ruler ? &*frame.ruler : nullptr,
+                     labelFont_, text_);
+    labelFont_.draw(text_);
 }
 
 void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch) {

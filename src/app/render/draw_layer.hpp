@@ -3,6 +3,7 @@
 // in this order: the world (walls, trails, discs, arrows, labels; renderer.hpp), the bins the
 // scene counts marked on the board (bin_marks.hpp), the droppers, the selection ring, the selected
 // obstacle and the obstacle tool's preview, the analysis overlays (analysis_overlays.hpp), the
+// grid's labels and the ruler (lab_marks_drawing.hpp; the grid's lines go under the discs), the
 // launch preview, the marker of an off-screen box, then the text panels (overlay_drawing.hpp). The
 // files it calls (renderer, text, overlay_drawing, analysis_overlays, momentum_drawing, plot_chart,
 // speed_chart, bin_chart, selection_outline, geometry_batch) are its parts and are called from
@@ -42,6 +43,8 @@ class DrawLayer {
     void drawDropper(const Camera& camera, const DropperView& dropper);
     /// The selected obstacle highlighted and the tool's preview, over the world.
     void drawObstacleMarks(const Camera& camera, const FrameView& frame);
+    /// The grid's labels and the ruler (lab_marks_drawing.hpp), over the world.
+    void drawLabMarks(const FrameView& frame);
 
     SDL_Renderer* sdl_;
     const Font& hudFont_;
@@ -53,6 +56,7 @@ class DrawLayer {
     std::uint64_t trailsGeneration_ = 0;
     GeometryBatch text_;
     GeometryBatch obstacleMarks_;
+    GeometryBatch gridLines_, rulerMarks_;
 };
 
 }  // namespace psb::app

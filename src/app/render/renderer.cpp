@@ -114,7 +114,7 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
 
 DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                          const ViewOptions& options, Trails* trails, ParticleId selected,
-                         const RenderAvoid* avoid) {
+                         const RenderAvoid* avoid, const GeometryBatch* underlay) {
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
     SDL_RenderClear(renderer_);
@@ -123,6 +123,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
         batchObstacles(world, camera, obstacles_);
         obstacles_.draw(renderer_, circle_);
     }
+    if (underlay != nullptr && !underlay->empty()) underlay->draw(renderer_, circle_);
     // Every particle's trail goes under the discs; the selected one's over them, so that the
     // gas around it cannot hide it.
     if (trails != nullptr && options.trails == TrailMode::All) {

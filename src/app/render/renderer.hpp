@@ -62,9 +62,12 @@ class Renderer {
     /// resampled into garble), above, below, right or left of their disc (slid along that side
     /// to stay in the window, and in the box for a disc inside it), wherever they overlap
     /// neither another label nor a rectangle of `avoid`; a label with no such place is left out.
+    /// `underlay` (drawn with the circle texture) goes over the walls and obstacles and under
+    /// the trails and discs: the grid's lines.
     DrawStats draw(const World& world, double frame, const Camera& camera,
                    const ViewOptions& options, Trails* trails = nullptr,
-                   ParticleId selected = kNullParticle, const RenderAvoid* avoid = nullptr);
+                   ParticleId selected = kNullParticle, const RenderAvoid* avoid = nullptr,
+                   const GeometryBatch* underlay = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius);

@@ -1,10 +1,12 @@
 #include "render/screen_text.hpp"
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include "view/collision_card_lines.hpp"
 #include "view/gas_lines.hpp"
+#include "view/momenta_diagram.hpp"
 
 namespace psb::app {
 namespace {
@@ -41,12 +43,18 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
         std::vector<std::string> lines;
         for (const GasLine& l : gasLines(*frame.gas))
             lines.push_back(l.name + ": " + l.value);
+        if (!frame.pressurePlot.empty()) lines.push_back(frame.pressurePlot);
         section(out, "Gas", lines);
     }
     if (frame.values) section(out, "Values", valuesLines(*frame.values));
     if (frame.collision) {
-        section(out, "Last collision", collisionCardLines(collisionCardText(*frame.collision)));
+        std::vector<std::string> lines = collisionCardLines(collisionCardText(*frame.collision));
+        for (std::string& l : momentaDiagramLines(momentaDiagram(*frame.collision)))
+            lines.push_back(std::move(l));
+        section(out, "Last collision", lines);
     }
+    if (frame.grid) section(out, "Grid", {frame.grid->legend});
+    if (frame.ruler) section(out, "Ruler", {frame.ruler->label.text});
     if (o.showHelp) section(out, "Help", o.help);
     if (frame.bins && frame.layout.bins.w > 0) {
         std::vector<std::string> lines = frame.bins->legend;

@@ -15,7 +15,9 @@ bool gasGaugesApply(const World& world) {
 void GasGauges::sample(const World& world) {
     const StepCounters& c = world.counters();  // this frame's steps (Monitor clears them)
     if (!samples_.empty() && world.time() < samples_.back().time) samples_.clear();  // went back
-    if (!samples_.empty() && world.time() == samples_.back().time) return;           // paused
+    while (!history_.empty() && history_.back().time > world.time())
+        history_.pop_back();
+    if (!samples_.empty() && world.time() == samples_.back().time) return;  // paused
     Sample s{world.time(), c.wallImpulse, c.collisions, c.wallCollisions};
     if (!samples_.empty()) {
         const Sample& last = samples_.back();
@@ -27,6 +29,14 @@ void GasGauges::sample(const World& world) {
     // Keep one sample at or before the window's start, so the window is whole.
     while (samples_.size() > 2 && samples_[1].time <= s.time - kWindow)
         samples_.pop_front();
+    // The plot's point, every kHistoryEvery seconds while the gauges apply.
+    if (gasGaugesApply(world) &&
+        (history_.empty() || s.time >= history_.back().time + kHistoryEvery - 1e-9)) {
+        const GasReading r = reading(world);
+        history_.push_back(
+            {s.time, r.pressure, r.pressureError, r.idealPressure, r.hardDiskPressure});
+        if (history_.size() > kHistoryPoints) history_.pop_front();
+    }
 }
 
 GasReading GasGauges::reading(const World& world) const {

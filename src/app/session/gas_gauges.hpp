@@ -23,6 +23,11 @@
 //
 // The window starts over whenever the world does not simply run on (an edit, an undo, a new
 // scene, time going back), so a reading never mixes two set-ups.
+//
+// The pressure plot's history: every kHistoryEvery seconds of simulated time the reading is
+// kept (measured, its error, the two predictions), so a plot shows both over time. An edit (heat,
+// cool) keeps the history: the plot shows the pressure's step; time going back drops what came
+// after, and a new scene starts it over.
 
 #include <cstddef>
 #include <cstdint>
@@ -49,19 +54,36 @@ struct GasReading {
     double wallRate = 0.0;          ///< wall rebounds per second over the window
 };
 
+/// One point of the pressure plot.
+struct GasHistoryPoint {
+    double time = 0.0;               ///< s, simulated
+    std::optional<double> pressure;  ///< measured, N/m (none while the window is short)
+    double pressureError = 0.0;      ///< N/m
+    double idealPressure = 0.0;      ///< N/m
+    double hardDiskPressure = 0.0;   ///< N/m
+};
+
 class GasGauges {
   public:
     static constexpr double kWindow = 5.0;     ///< s of simulated time averaged, at most
     static constexpr double kMinWindow = 0.5;  ///< s before a measured value is shown
     static constexpr int kBlocks = 8;
+    static constexpr double kHistoryEvery = 0.25;        ///< s of simulated time between points
+    static constexpr std::size_t kHistoryPoints = 1200;  ///< kept: the last 5 minutes
 
-    /// The world will not simply run on from here: the window starts over.
-    void restart() { samples_.clear(); }
+    /// The world will not simply run on from here: the window starts over (the history stays,
+    /// up to the world's time; `newScene` clears it).
+    void restart(bool newScene = false) {
+        samples_.clear();
+        if (newScene) history_.clear();
+    }
     /// The world after a frame's steps, its counters (World::counters) holding those steps' only
     /// (the Monitor clears them before each frame's steps).
     void sample(const World& world);
     /// What the gauges read for `world` now (the measured values from the window sampled).
     [[nodiscard]] GasReading reading(const World& world) const;
+    /// The pressure plot's points, oldest first.
+    [[nodiscard]] const std::deque<GasHistoryPoint>& history() const { return history_; }
 
   private:
     /// Running totals since the window started over.
@@ -72,6 +94,7 @@ class GasGauges {
         std::uint64_t wallCollisions;
     };
     std::deque<Sample> samples_;
+    std::deque<GasHistoryPoint> history_;
 };
 
 /// Particles a gas needs for its gauges: two balls colliding are a collision, not a gas, and

@@ -14,7 +14,7 @@ void Monitor::restart(const World& world, bool newScene) {
     }
     now_ = sampleObservables(world);
     changedSinceMeasure_ = true;
-    gas_.restart();
+    gas_.restart(newScene);
 }
 
 void Monitor::edited(const World& world) {

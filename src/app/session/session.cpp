@@ -83,6 +83,7 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     if (newScene) {
         view_.arrowSeconds = arrowSecondsFor(doc_.world);
         view_.arrowScaleSet = false;
+        ruler_.place(doc_.world.def().width, doc_.world.def().height);
     }
 }
 

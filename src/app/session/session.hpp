@@ -54,6 +54,7 @@
 #include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/history.hpp"
+#include "session/lab_ruler.hpp"
 #include "session/lab_stopwatch.hpp"
 #include "session/last_collision.hpp"
 #include "session/monitor.hpp"
@@ -170,6 +171,8 @@ class Session {
     /// The last collision card's content (last_collision.hpp), while the card is shown.
     /// The stopwatch on simulated time (lab_stopwatch.hpp).
     [[nodiscard]] const LabStopwatch& stopwatch() const { return stopwatch_; }
+    /// The ruler (lab_ruler.hpp), drawn while view().ruler.
+    [[nodiscard]] const LabRuler& ruler() const { return ruler_; }
     [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
         return lastCollision_.card();
     }
@@ -271,6 +274,10 @@ class Session {
     [[nodiscard]] std::optional<GasReading> gasReading() const {
         if (!gasGaugesApply(doc_.world)) return std::nullopt;
         return monitor_.gas().reading(doc_.world);
+    }
+    /// The pressure plot's points (gas_gauges.hpp), oldest first.
+    [[nodiscard]] const std::deque<GasHistoryPoint>& gasHistory() const {
+        return monitor_.gas().history();
     }
 
     // The clock (sim_clock.hpp).
@@ -476,6 +483,7 @@ class Session {
     DataRecorder data_;
     LastCollision lastCollision_;
     LabStopwatch stopwatch_;
+    LabRuler ruler_;
     std::optional<std::string> clipboard_;
     VideoSettings videoSettings_;
     std::optional<VideoSettings> videoToggle_;

@@ -15,6 +15,13 @@ namespace psb::app {
 void Session::handle(const cmd::PointerDown& c) {
     tools_.pointer = c.screen;
     tools_.pointerTime = c.time;
+    // The ruler's ends and edge come first, whatever the tool: they are what is under the hand.
+    if (view_.ruler) {
+        if (const auto part = ruler_.partAt(c.screen, camera_)) {
+            ruler_.take(*part, pointerWorld());
+            return;
+        }
+    }
     if (tools_.tool == cmd::Tool::Pan) {
         tools_.panFrom = c.screen;
         return;
@@ -49,6 +56,10 @@ void Session::handle(const cmd::PointerMove& c) {
     }
     tools_.pointer = c.screen;
     tools_.pointerTime = c.time;
+    if (ruler_.held()) {
+        ruler_.moveTo(pointerWorld());
+        return;
+    }
     tools_.obstacle.moveTo(pointerWorld());
     tools_.hand.moveTo(pointerWorld(), c.time);
     // Paused, a flung particle stays where it is let go until time runs: its speed is kept for
@@ -66,6 +77,13 @@ void Session::handle(const cmd::PointerMove& c) {
 void Session::handle(const cmd::PointerUp& c) {
     tools_.pointer = c.screen;
     tools_.pointerTime = c.time;
+    if (ruler_.held()) {
+        ruler_.moveTo(pointerWorld());
+        ruler_.letGo();
+        log(fmt("Ruler: %s, %.1f degrees from the horizontal",
+                quantity(ruler_.length(), "m").c_str(), ruler_.slopeDegrees()));
+        return;
+    }
     if (tools_.tool == cmd::Tool::Pan) {
         tools_.panFrom.reset();
         return;

@@ -103,6 +103,7 @@ void Session::handle(const cmd::SetShow& c) {
     if (flag == c.on) return;
     flag = c.on;
     say(showMessage(c.option, c.on));
+    if (c.option == cmd::ShowOption::Ruler && !c.on) ruler_.letGo();
     if (c.option == cmd::ShowOption::Collision) {
         if (!c.on) lastCollision_.clear();
         listenForCollisions();

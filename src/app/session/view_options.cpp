@@ -74,6 +74,8 @@ constexpr ShowEntry kShowEntries[] = {
     {&ViewOptions::bins, "Bin counts"},
     {&ViewOptions::collision, "Last collision card"},
     {&ViewOptions::values, "Values table"},
+    {&ViewOptions::ruler, "Ruler"},
+    {&ViewOptions::grid, "Grid"},
 };
 
 const ShowEntry& entry(ShowOption option) {

@@ -1,7 +1,7 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O, J, I and the arrow
-// scale. No SDL, so the session and its
+// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Y and the
+// arrow scale. No SDL, so the session and its
 // tests can use it without a window.
 
 #include <algorithm>
@@ -16,7 +16,7 @@ namespace psb::app {
 /// What L shows.
 enum class TrailMode { Off, Selected, All };
 
-/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I).
+/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I, Q, Y).
 enum class ShowOption : std::uint8_t {
     Arrows,
     Labels,
@@ -26,7 +26,9 @@ enum class ShowOption : std::uint8_t {
     Profile,
     Bins,
     Collision,
-    Values
+    Values,
+    Ruler,
+    Grid
 };
 
 /// Off -> Selected -> All -> Off.
@@ -65,6 +67,10 @@ struct ViewOptions {
     bool collision = false;
     /// I: the values table (every particle's signed values and their totals), in a window.
     bool values = false;
+    /// Q: the ruler (session/lab_ruler.hpp).
+    bool ruler = false;
+    /// Y: a grid of metres over the box, labelled along its top and left edges.
+    bool grid = false;
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);

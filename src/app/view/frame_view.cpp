@@ -10,6 +10,7 @@
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
 #include "view/momentum_view.hpp"
+#include "view/pressure_plot.hpp"
 
 namespace psb::app {
 
@@ -124,8 +125,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     f.obstaclePreview = session.obstaclePreview();
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
     f.gas = session.gasReading();
+    if (f.gas) f.pressurePlot = pressurePlotLine(session.gasHistory());
     if (session.view().collision) f.collision = session.lastCollision();
     if (session.view().values) f.values = valuesTable(world, session.selection().id());
+    if (session.view().grid) {
+        f.grid = gridView(session.camera(), world.def().width, world.def().height);
+    }
+    if (session.view().ruler) f.ruler = rulerView(session.ruler(), session.camera());
     if (stats.video.recording) {
         // The top-right corner of the box's side of the window, clear of the HUD at its left.
         RecordingMarkView mark;

@@ -20,6 +20,7 @@
 #include "session/view_options.hpp"
 #include "view/bin_histogram.hpp"
 #include "view/box_area.hpp"
+#include "view/lab_marks.hpp"
 #include "view/overlays.hpp"
 #include "view/screen_layout.hpp"
 #include "view/text_measure.hpp"
@@ -77,10 +78,15 @@ struct FrameView {
     std::optional<RecordingMarkView> recordingMark;
     /// The gas instruments' reading, when they apply (the panel's Readouts show it).
     std::optional<GasReading> gas;
+    /// The pressure plot's latest point as a line of text (view/pressure_plot.hpp), with the gas.
+    std::string pressurePlot;
     /// The last collision card, while shown (J) and once there was a collision to show.
     std::optional<CollisionCard> collision;
     /// The values table, while shown (I).
     std::optional<ValuesTable> values;
+    /// The grid of metres (Shift+G) and the ruler (Q), while shown (view/lab_marks.hpp).
+    std::optional<GridView> grid;
+    std::optional<RulerView> ruler;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     std::vector<DropperView> droppers;
     Overlays overlays;

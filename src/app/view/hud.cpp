@@ -144,6 +144,8 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"R", "restart: back to the set-up Play last started (Time: Restart)"},
         {"E / Shift+E", "restitution down / up by 0.05 (Physics)"},
         {"G", "gravity on / off (Physics)"},
+        {"Shift+G", "grid of metres over the box (Show)"},
+        {"Q", "ruler: drag its ends or its edge (Show)"},
         {"T", "next mode: discrete, substeps, exact (Physics)"},
         {"O / F3", "profile beside the box (Engine)"},
         {"Ctrl+S / Ctrl+Shift+S", "save the scene / save it under a new name (Scene)"},

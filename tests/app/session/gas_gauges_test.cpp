@@ -87,6 +87,36 @@ TEST(GasGauges, PausedFramesAddNothingAndTimeGoingBackStartsOver) {
     EXPECT_FALSE(g.reading(earlier).pressure.has_value());
 }
 
+TEST(GasGauges, ThePlotKeepsAPointEveryQuarterSecondThroughAHeatAndDropsThePastUndone) {
+    World w = gasPreset(StepMode::Discrete);
+    GasGauges g;
+    run(w, g, 2.0, 0.01);
+    ASSERT_GE(g.history().size(), 8u);
+    EXPECT_LE(g.history().size(), 9u);
+    for (std::size_t i = 1; i < g.history().size(); ++i)
+        EXPECT_NEAR(g.history()[i].time - g.history()[i - 1].time, 0.25, 0.011);
+    EXPECT_FALSE(g.history().front().pressure.has_value());  // the window was short
+    EXPECT_TRUE(g.history().back().pressure.has_value());
+    const double ideal = g.history().back().idealPressure;
+    // Heat: every speed x sqrt 2 doubles kT and so the predicted pressures. The window starts
+    // over; the plot keeps its past and shows the step.
+    for (const ParticleId id : w.ids())
+        w.setVelocity(id, std::sqrt(2.0) * w.get(id).velocity);
+    g.restart();
+    const std::size_t kept = g.history().size();
+    run(w, g, 1.0, 0.01);
+    EXPECT_GE(g.history().size(), kept + 3);
+    EXPECT_NEAR(g.history().back().idealPressure / ideal, 2.0, 0.01);
+    EXPECT_FALSE(g.history()[kept].pressure.has_value());  // the new window was short
+    // Time going back (an undo) drops the points after it; a new scene drops them all.
+    World earlier = gasPreset(StepMode::Discrete);
+    run(earlier, g, 1.0, 0.01);
+    EXPECT_LE(g.history().back().time, 1.0 + 1e-9);
+    EXPECT_LE(g.history().size(), 5u);
+    g.restart(true);
+    EXPECT_TRUE(g.history().empty());
+}
+
 TEST(GasGauges, ApplyOnlyToAWalledBoxWithoutGravity) {
     World w = gasPreset(StepMode::Discrete);
     EXPECT_TRUE(gasGaugesApply(w));

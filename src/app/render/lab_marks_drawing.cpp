@@ -1,0 +1,70 @@
+#include "render/lab_marks_drawing.hpp"
+
+#include <cmath>
+
+#include "render/text.hpp"
+
+namespace psb::app {
+
+namespace {
+
+SDL_FPoint point(const Vec2& v) {
+    return {static_cast<float>(v.x()), static_cast<float>(v.y())};
+}
+
+/// A line `width` pixels wide from a to b, solid (the circle texture's opaque centre).
+void line(GeometryBatch& batch, const Vec2& a, const Vec2& b, double width, SDL_Color color) {
+    const Vec2 d = b - a;
+    const double length = d.norm();
+    if (!(length > 0.0) || !std::isfinite(length)) return;
+    const Vec2 side = Vec2(-d.y(), d.x()) * (0.5 * width / length);
+    batch.polygon4(point(a + side), point(b + side), point(b - side), point(a - side), color,
+                   SDL_FPoint{0.5f, 0.5f});
+}
+
+void label(const MarkLabel& l, const Font& font, SDL_Color color, GeometryBatch& text) {
+    const int w = font.measure(l.text);
+    const float x = std::round(static_cast<float>(l.at.x()) - (l.left ? 0.f : 0.5f * w));
+    const float y = std::round(static_cast<float>(l.at.y()) - 0.5f * font.lineHeight());
+    font.layout(l.text, x, y, color, text);
+}
+
+}  // namespace
+
+void batchGridLines(const GridView& grid, GeometryBatch& batch) {
+    for (const MarkLine& l : grid.lines)
+        line(batch, l.a, l.b, l.strong ? 1.5 : 1.0, l.strong ? kGridStrongColor : kGridColor);
+}
+
+void batchRuler(const RulerView& r, GeometryBatch& batch) {
+    const Vec2 d = r.b - r.a;
+    const double length = d.norm();
+    if (length > 0.0 && std::isfinite(length)) {
+        // The band lies on the ticks' side of the edge, as a ruler's face does.
+        const Vec2 n = Vec2(-d.y(), d.x()) / length;
+        const SDL_Color face{kRulerColor.r, kRulerColor.g, kRulerColor.b, 60};
+        batch.polygon4(point(r.a), point(r.b), point(r.b + 14.0 * n), point(r.a + 14.0 * n), face,
+                       SDL_FPoint{0.5f, 0.5f});
+        line(batch, r.a, r.b, 1.5, kRulerColor);
+        for (const MarkLine& t : r.ticks)
+            line(batch, t.a, t.b, t.strong ? 1.5 : 1.0, kRulerColor);
+    }
+    // The handles: a disc at each end, white while held.
+    const SDL_Color handle = r.held ? SDL_Color{255, 255, 255, 255} : kRulerColor;
+    for (const Vec2& end : {r.a, r.b}) {
+        const auto x = static_cast<float>(end.x()), y = static_cast<float>(end.y());
+        batch.quad(x - 5.f, y - 5.f, x + 5.f, y + 5.f, handle);
+    }
+}
+
+void layoutMarkLabels(const GridView* grid, const RulerView* ruler, const Font& font,
+                      GeometryBatch& text) {
+    text.clear();
+    if (grid != nullptr) {
+        for (const MarkLabel& l : grid->labels)
+            label(l, font, SDL_Color{150, 165, 190, 255}, text);
+    }
+    if (ruler != nullptr) label(ruler->label, font, kRulerColor, text);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,126 @@
+#include "view/lab_marks.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "session/units.hpp"
+
+namespace psb::app {
+
+namespace {
+
+/// The smallest of 1, 2 or 5 × 10^k at least `least`.
+double roundStep(double least) {
+    if (!(least > 0.0) || !std::isfinite(least)) return 0.0;
+    const double p = std::pow(10.0, std::floor(std::log10(least)));
+    for (const double m : {1.0, 2.0, 5.0, 10.0}) {
+        if (m * p >= least * (1.0 - 1e-12)) return m * p;
+    }
+    return 10.0 * p;
+}
+
+/// `metres` with the digits a grid of `step` needs: "0", "0.5 m", "2 m", "150 m".
+std::string gridLabel(double metres, double step) {
+    if (std::abs(metres) < 1e-9 * step) return "0";
+    const int decimals = std::max(0, -static_cast<int>(std::floor(std::log10(step) + 1e-9)));
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.*f m", decimals, metres);
+    return buf;
+}
+
+/// The strong lines: every fifth step when the step starts with 1 or 2, every second with 5
+/// (so 0, 5, 10 m or 0, 1, 2 m at steps of 1 or 0.5 m).
+int strongEvery(double step) {
+    const double lead = step / std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+    return lead > 4.0 ? 2 : 5;
+}
+
+}  // namespace
+
+GridView gridView(const Camera& camera, double width, double height) {
+    GridView g;
+    const double zoom = camera.zoom();
+    if (!(zoom > 0.0) || !(width > 0.0) || !(height > 0.0)) return g;
+    g.step = roundStep(kGridMinPixels / zoom);
+    if (!(g.step > 0.0)) return g;
+    // The box's visible part, in metres.
+    const Vec2 lo = camera.screenToWorld(Vec2(0.0, 0.0));
+    const Vec2 hi = camera.screenToWorld(Vec2(camera.viewportWidth(), camera.viewportHeight()));
+    const double x0 = std::max(0.0, lo.x()), x1 = std::min(width, hi.x());
+    const double y0 = std::max(0.0, lo.y()), y1 = std::min(height, hi.y());
+    if (!(x1 > x0) || !(y1 > y0)) return g;
+    const Vec2 top0 = camera.worldToScreen(Vec2(x0, y0)),
+               bottom1 = camera.worldToScreen(Vec2(x1, y1));
+    const int every = strongEvery(g.step);
+    // Labels just inside the box's top and left edges, or the window's when those are off it.
+    const double labelY = top0.y() + 9.0, labelX = top0.x() + 4.0;
+    const auto first = static_cast<long long>(std::ceil(x0 / g.step - 1e-9));
+    const auto last = static_cast<long long>(std::floor(x1 / g.step + 1e-9));
+    for (long long k = first; k <= last; ++k) {
+        const double x = camera.worldToScreen(Vec2(static_cast<double>(k) * g.step, 0.0)).x();
+        g.lines.push_back({Vec2(x, top0.y()), Vec2(x, bottom1.y()), k % every == 0});
+        // The corner and the far edge are left bare (a label there would cross the wall).
+        if (k != 0 && static_cast<double>(k) * g.step < width - 1e-9 * g.step) {
+            g.labels.push_back(
+                {Vec2(x, labelY), gridLabel(static_cast<double>(k) * g.step, g.step)});
+        }
+    }
+    const auto firstY = static_cast<long long>(std::ceil(y0 / g.step - 1e-9));
+    const auto lastY = static_cast<long long>(std::floor(y1 / g.step + 1e-9));
+    for (long long k = firstY; k <= lastY; ++k) {
+        const double y = camera.worldToScreen(Vec2(0.0, static_cast<double>(k) * g.step)).y();
+        g.lines.push_back({Vec2(top0.x(), y), Vec2(bottom1.x(), y), k % every == 0});
+        if (k != 0 && static_cast<double>(k) * g.step < height - 1e-9 * g.step) {
+            g.labels.push_back(
+                {Vec2(labelX, y), gridLabel(static_cast<double>(k) * g.step, g.step), true});
+        }
+    }
+    g.legend = "Grid: ";
+    g.legend += quantity(g.step, "m");
+    g.legend += " squares, from the top-left corner";
+    return g;
+}
+
+RulerView rulerView(const LabRuler& ruler, const Camera& camera) {
+    RulerView v;
+    v.a = camera.worldToScreen(ruler.a());
+    v.b = camera.worldToScreen(ruler.b());
+    v.held = ruler.held();
+    const double length = ruler.length();
+    const double pixels = (v.b - v.a).norm();
+    const Vec2 u = pixels > 0.0 ? Vec2((v.b - v.a) / pixels) : Vec2(1.0, 0.0);
+    const Vec2 n(-u.y(), u.x());
+    if (length > 0.0 && camera.zoom() > 0.0) {
+        v.tickStep = roundStep(kRulerTickPixels / camera.zoom());
+        const int every = strongEvery(v.tickStep);
+        const auto count = static_cast<long long>(std::floor(length / v.tickStep + 1e-9));
+        for (long long k = 0; k <= count && k <= 2000; ++k) {
+            const Vec2 at = v.a + u * camera.toScreen(static_cast<double>(k) * v.tickStep);
+            const bool strong = k % every == 0;
+            v.ticks.push_back({at, at + n * (strong ? 9.0 : 5.0), strong});
+        }
+    }
+    v.label.text = rulerLine(ruler);
+    // Beside the middle, on the side of the ticks' normal turned to point down the screen.
+    const Vec2 side = n.y() >= 0.0 ? n : Vec2(-n);
+    v.label.at = 0.5 * (v.a + v.b) + side * 22.0;
+    return v;
+}
+
+std::string rulerLine(const LabRuler& ruler) {
+    const Vec2 d = ruler.b() - ruler.a();
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.1f\u00b0", ruler.slopeDegrees());
+    std::string s = quantity(ruler.length(), "m");
+    s += ", ";
+    s += angle;
+    s += " (horizontal ";
+    s += quantity(std::abs(d.x()), "m");
+    s += ", vertical ";
+    s += quantity(std::abs(d.y()), "m");
+    s += ")";
+    return s;
+}
+
+}  // namespace psb::app

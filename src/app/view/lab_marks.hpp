@@ -1,0 +1,59 @@
+#pragma once
+// The measuring marks drawn over the box, in screen pixels: the grid of metres (Shift+G) and
+// the ruler (Q, session/lab_ruler.hpp). Kept as plain numbers and strings so that the tests
+// check where every line and label goes; render/lab_marks_drawing.hpp draws them.
+
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/math.hpp>
+
+#include "session/camera.hpp"
+#include "session/lab_ruler.hpp"
+
+namespace psb::app {
+
+struct MarkLine {
+    Vec2 a, b;            ///< pixels
+    bool strong = false;  ///< a grid line at a round number of steps, or a ruler's major tick
+};
+
+struct MarkLabel {
+    Vec2 at;  ///< pixels: the label's centre, or the middle of its left side when `left`
+    std::string text;
+    bool left = false;
+};
+
+/// The grid: lines every `step` metres across the box (its visible part), labelled along the
+/// box's top and left edges (or the window's, when those are off screen).
+struct GridView {
+    double step = 0.0;  ///< metres between lines
+    std::vector<MarkLine> lines;
+    std::vector<MarkLabel> labels;
+    std::string legend;  ///< "Grid: 1 m squares", for the HUD and F12's text
+};
+
+/// Grid lines no closer than this on screen, pixels.
+inline constexpr double kGridMinPixels = 60.0;
+
+/// The grid over a `width` × `height` box seen through `camera`. Empty (no lines) when the box
+/// is not on screen.
+[[nodiscard]] GridView gridView(const Camera& camera, double width, double height);
+
+/// The ruler: its edge, its ticks, the handles at its ends and its reading.
+struct RulerView {
+    Vec2 a, b;  ///< its ends, pixels
+    std::vector<MarkLine> ticks;
+    double tickStep = 0.0;  ///< metres between ticks
+    MarkLabel label;        ///< "1.25 m, 20.0° (horizontal 1.17 m, vertical 0.428 m)" beside it
+    bool held = false;
+};
+
+/// Ticks no closer than this on screen, pixels.
+inline constexpr double kRulerTickPixels = 8.0;
+
+[[nodiscard]] RulerView rulerView(const LabRuler& ruler, const Camera& camera);
+/// The ruler's reading as F12's text says it.
+[[nodiscard]] std::string rulerLine(const LabRuler& ruler);
+
+}  // namespace psb::app

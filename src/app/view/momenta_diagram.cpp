@@ -1,0 +1,105 @@
+#include "view/momenta_diagram.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "session/units.hpp"
+
+namespace psb::app {
+
+namespace {
+
+/// The arrows of one moment: each particle's momentum tip to tail, then the total.
+std::vector<MomentaDiagram::Arrow> tipToTail(const CollisionCard& card, const Vec2& pA,
+                                             const Vec2& pB) {
+    using Kind = MomentaDiagram::Kind;
+    std::vector<MomentaDiagram::Arrow> arrows;
+    arrows.push_back({Vec2::Zero(), pA, Kind::First, "p " + std::to_string(card.numberA)});
+    Vec2 tip = pA;
+    if (card.pair()) {
+        arrows.push_back({pA, pA + pB, Kind::Second, "p " + std::to_string(card.numberB)});
+        tip = pA + pB;
+    }
+    arrows.push_back({Vec2::Zero(), tip, Kind::Total, "total p"});
+    return arrows;
+}
+
+std::string vec(const Vec2& v) {
+    // Built by appending: GCC 12 warns wrongly (-Wrestrict) on a chain of + from a literal.
+    std::string s = "(";
+    s += quantity(v.x(), "", false);
+    s += ", ";
+    s += quantity(v.y(), "", false);
+    s += ")";
+    return s;
+}
+
+std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arrows) {
+    std::string s = "Momenta ";
+    s += when;
+    s += ": ";
+    for (std::size_t i = 0; i < arrows.size(); ++i) {
+        const MomentaDiagram::Arrow& a = arrows[i];
+        if (a.kind == MomentaDiagram::Kind::Total) {
+            s += " = ";
+            s += a.label;
+            s += ' ';
+            s += vec(a.to);
+        } else {
+            if (i > 0) s += " + ";
+            s += a.label;
+            s += ' ';
+            s += vec(a.to - a.from);
+        }
+    }
+    s += " kg m/s";
+    return s;
+}
+
+}  // namespace
+
+Vec2 MomentaDiagram::toPixels(const Vec2& p, double side) const {
+    const double half = 0.5 * side, margin = 0.08 * side;
+    return Vec2(half, half) + ((half - margin) / reach) * p;
+}
+
+MomentaDiagram momentaDiagram(const CollisionCard& card) {
+    const Collision& c = card.collision;
+    MomentaDiagram d;
+    d.before = tipToTail(card, card.massA * c.aBefore, card.massB * c.bBefore);
+    d.after = tipToTail(card, card.massA * c.aAfter, card.massB * c.bAfter);
+    double reach = 0.0;
+    for (const auto* half : {&d.before, &d.after}) {
+        for (const MomentaDiagram::Arrow& a : *half) {
+            reach = std::max({reach, a.from.cwiseAbs().maxCoeff(), a.to.cwiseAbs().maxCoeff()});
+        }
+    }
+    // Resting particles still get a scale; a non-finite momentum (never from a valid world)
+    // would give a diagram of nothing rather than of NaN pixels.
+    d.reach = std::isfinite(reach) && reach > 0.0 ? reach : 1.0;
+    // Every momentum along x (or every one along y): a row each, across that axis.
+    bool alongX = true, alongY = true;
+    for (const auto* half : {&d.before, &d.after}) {
+        for (const MomentaDiagram::Arrow& a : *half) {
+            alongX = alongX && std::abs(a.to.y()) <= 1e-9 * d.reach;
+            alongY = alongY && std::abs(a.to.x()) <= 1e-9 * d.reach;
+        }
+    }
+    if (alongX != alongY) {
+        constexpr double kRow = 0.16;  // sides of the square between rows
+        for (auto* half : {&d.before, &d.after}) {
+            const double first = -0.5 * kRow * static_cast<double>(half->size() - 1);
+            for (std::size_t k = 0; k < half->size(); ++k) {
+                const double row = first + kRow * static_cast<double>(k);
+                (*half)[k].offset = alongX ? Vec2(0.0, row) : Vec2(row, 0.0);
+            }
+        }
+    }
+    return d;
+}
+
+std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram) {
+    return {line("before", diagram.before), line("after", diagram.after)};
+}
+
+}  // namespace psb::app

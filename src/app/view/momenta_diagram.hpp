@@ -1,0 +1,54 @@
+#pragma once
+// The momenta diagram of the last collision (PhET Collision Lab's "Momenta" diagram): each
+// particle's momentum m v as an arrow, placed tip to tail from the origin, and the total as its
+// own arrow from the origin to the last tip, once as it was just before the collision and once
+// just after, on one scale so the two can be compared. Between two particles the total's arrow
+// is the same before and after (momentum is kept); against a wall or an obstacle it changes.
+// Arrows point as the particles move in the box (the box's x to the right, y down). The panel's
+// Last collision section draws it; the text F12 writes lists it.
+
+#include <string>
+#include <vector>
+
+#include <particle_sandbox/math.hpp>
+
+#include "session/last_collision.hpp"
+
+namespace psb::app {
+
+struct MomentaDiagram {
+    enum class Kind { First, Second, Total };
+    struct Arrow {
+        Vec2 from;  ///< kg m/s, the diagram's origin at (0, 0)
+        Vec2 to;
+        Kind kind = Kind::First;
+        std::string label;  ///< "p 1", "p 2", "total p"
+        /// Added to both ends on screen, in sides of the square: when every momentum lies on
+        /// one axis (a head-on collision), the arrows would lie on top of each other, so each
+        /// gets a row of its own across that axis, as in PhET's one-dimensional diagram.
+        Vec2 offset = Vec2::Zero();
+    };
+    std::vector<Arrow> before, after;
+    /// The smallest square about the origin, half-width in kg m/s, that holds every arrow of both
+    /// halves (at least a tiny positive number, so a diagram of resting particles has a scale).
+    double reach = 0.0;
+
+    /// A momentum's place in a square of `side` pixels whose centre is the origin (x right,
+    /// y down as in the box), a small margin kept free.
+    [[nodiscard]] Vec2 toPixels(const Vec2& p, double side) const;
+    /// An arrow's ends on screen, its row's offset included.
+    [[nodiscard]] Vec2 fromPixels(const Arrow& a, double side) const {
+        return toPixels(a.from, side) + side * a.offset;
+    }
+    [[nodiscard]] Vec2 toPixels(const Arrow& a, double side) const {
+        return toPixels(a.to, side) + side * a.offset;
+    }
+};
+
+[[nodiscard]] MomentaDiagram momentaDiagram(const CollisionCard& card);
+
+/// The diagram as text, for the screenshot's file: "Momenta before: p 1 (3.00, 0) + p 2 (-3.00, 0)
+/// = total p (0, 0) kg m/s" and the same after.
+[[nodiscard]] std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram);
+
+}  // namespace psb::app

@@ -1,0 +1,81 @@
+// The grid and the ruler as drawn (lab_marks.hpp): round steps at least so many pixels apart,
+// lines within the box's visible part, labels in metres, the ruler's ticks and reading.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "view/lab_marks.hpp"
+
+namespace psb::app {
+namespace {
+
+Camera camera(double zoom, Vec2 offset = Vec2::Zero()) {
+    Camera c;
+    c.setViewport(800, 600);
+    c.set(zoom, offset);
+    return c;
+}
+
+bool hasLabel(const std::vector<MarkLabel>& labels, const std::string& text) {
+    return std::any_of(labels.begin(), labels.end(),
+                       [&](const MarkLabel& l) { return l.text == text; });
+}
+
+TEST(GridView, RoundStepsOfAtLeastSixtyPixelsAcrossTheBox) {
+    // 7 m at 80 pixels a metre: 60 pixels is 0.75 m, so lines every metre, 0 to 7 each way
+    // (the 600-pixel viewport shows 7.5 m).
+    const GridView g = gridView(camera(80.0), 7.0, 7.0);
+    EXPECT_DOUBLE_EQ(g.step, 1.0);
+    EXPECT_EQ(g.lines.size(), 8u + 8u);
+    EXPECT_TRUE(hasLabel(g.labels, "1 m"));
+    EXPECT_TRUE(hasLabel(g.labels, "6 m"));
+    EXPECT_FALSE(hasLabel(g.labels, "7 m"));  // the far edges and the corner are left bare
+    EXPECT_FALSE(hasLabel(g.labels, "0"));
+    EXPECT_EQ(g.legend, "Grid: 1.00 m squares, from the top-left corner");
+    // Every fifth line strong: x = 0 and 5.
+    EXPECT_EQ(std::count_if(g.lines.begin(), g.lines.end(),
+                            [](const MarkLine& l) { return l.strong && l.a.x() == l.b.x(); }),
+              2);
+    // At 0.1 pixel a metre, 60 pixels is 600 m: a 7 km box gets a line every kilometre.
+    const GridView far = gridView(camera(0.1), 7000.0, 7000.0);
+    EXPECT_DOUBLE_EQ(far.step, 1000.0);
+    EXPECT_TRUE(hasLabel(far.labels, "1000 m"));
+    // Small boxes get decimals: 5 cm steps at 1000 pixels a metre.
+    const GridView small = gridView(camera(1000.0), 0.4, 0.3);
+    EXPECT_DOUBLE_EQ(small.step, 0.1);
+    EXPECT_TRUE(hasLabel(small.labels, "0.1 m"));
+    EXPECT_TRUE(hasLabel(small.labels, "0.3 m"));
+}
+
+TEST(GridView, OnlyTheVisiblePartAndNothingForABoxOffScreen) {
+    // Looking at x from 3 m on: no line left of it.
+    const GridView g = gridView(camera(100.0, Vec2(3.0, 0.0)), 20.0, 5.0);
+    for (const MarkLine& l : g.lines)
+        EXPECT_GE(l.a.x(), -1e-9);
+    EXPECT_TRUE(gridView(camera(100.0, Vec2(50.0, 0.0)), 7.0, 7.0).lines.empty());
+    EXPECT_TRUE(gridView(camera(100.0), 0.0, 7.0).lines.empty());
+}
+
+TEST(RulerView, TicksAtRoundStepsAndItsReadingBesideIt) {
+    LabRuler r;
+    r.place(4.0, 2.0);  // (1, 1) to (3, 1): 2 m
+    const RulerView v = rulerView(r, camera(100.0));
+    EXPECT_EQ(v.a, Vec2(100.0, 100.0));
+    EXPECT_EQ(v.b, Vec2(300.0, 100.0));
+    EXPECT_DOUBLE_EQ(v.tickStep, 0.1);  // 8 pixels is 0.08 m
+    EXPECT_EQ(v.ticks.size(), 21u);
+    EXPECT_TRUE(v.ticks[0].strong);
+    EXPECT_FALSE(v.ticks[1].strong);
+    EXPECT_TRUE(v.ticks[5].strong);
+    EXPECT_EQ(v.label.text, "2.00 m, 0.0\u00b0 (horizontal 2.00 m, vertical 0 m)");
+    EXPECT_GT(v.label.at.y(), 100.0);  // below a level ruler
+    r.take(LabRuler::Part::EndB, r.b());
+    r.moveTo(Vec2(4.0, 5.0));  // a 3-4-5 triangle
+    EXPECT_EQ(rulerLine(r), "5.00 m, 53.1\u00b0 (horizontal 3.00 m, vertical 4.00 m)");
+    // Zoomed far out, the ticks stay countable.
+    EXPECT_LE(rulerView(r, camera(1e-3)).ticks.size(), 2001u);
+}
+
+}  // namespace
+}  // namespace psb::app

@@ -1,0 +1,120 @@
+// The momenta diagram (momenta_diagram.hpp): tip to tail, the total from the origin, one scale
+// for before and after, and its text.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "view/momenta_diagram.hpp"
+
+namespace psb::app {
+namespace {
+
+CollisionCard headOn() {
+    // 1 kg at 2 m/s meets 3 kg at -1 m/s, elastically: -2.5 and 0.5 m/s after.
+    CollisionCard card;
+    Collision& c = card.collision;
+    c.with = Collision::With::Particle;
+    c.a = ParticleId{0, 0};
+    c.b = ParticleId{1, 0};
+    card.massA = 1.0;
+    card.massB = 3.0;
+    card.numberA = 1;
+    card.numberB = 2;
+    c.aBefore = Vec2(2.0, 0.0);
+    c.bBefore = Vec2(-1.0, 0.0);
+    c.aAfter = Vec2(-2.5, 0.0);
+    c.bAfter = Vec2(0.5, 0.0);
+    return card;
+}
+
+TEST(MomentaDiagram, ThePairsArrowsGoTipToTailAndTheTotalIsKept) {
+    const MomentaDiagram d = momentaDiagram(headOn());
+    ASSERT_EQ(d.before.size(), 3u);
+    ASSERT_EQ(d.after.size(), 3u);
+    // Before: 1's (2, 0) from the origin, 2's (-3, 0) from its tip, the total (-1, 0).
+    EXPECT_EQ(d.before[0].from, Vec2(0, 0));
+    EXPECT_EQ(d.before[0].to, Vec2(2, 0));
+    EXPECT_EQ(d.before[0].label, "p 1");
+    EXPECT_EQ(d.before[1].from, Vec2(2, 0));
+    EXPECT_EQ(d.before[1].to, Vec2(-1, 0));
+    EXPECT_EQ(d.before[1].label, "p 2");
+    EXPECT_EQ(d.before[2].kind, MomentaDiagram::Kind::Total);
+    EXPECT_EQ(d.before[2].from, Vec2(0, 0));
+    EXPECT_EQ(d.before[2].to, Vec2(-1, 0));
+    // After: 1's (-2.5, 0), 2's (1.5, 0) from there, the same total.
+    EXPECT_EQ(d.after[1].from, Vec2(-2.5, 0));
+    EXPECT_EQ(d.after[2].to, d.before[2].to);
+    // One scale for both: the farthest point of either half, 2.5 kg m/s.
+    EXPECT_DOUBLE_EQ(d.reach, 2.5);
+}
+
+TEST(MomentaDiagram, PixelsKeepTheBoxsDirectionsAndStayInTheSquare) {
+    const MomentaDiagram d = momentaDiagram(headOn());
+    const double side = 200.0;
+    EXPECT_EQ(d.toPixels(Vec2(0, 0), side), Vec2(100, 100));
+    const Vec2 right = d.toPixels(Vec2(2.5, 0), side), down = d.toPixels(Vec2(0, 2.5), side);
+    EXPECT_GT(right.x(), 150.0);
+    EXPECT_LT(right.x(), side);
+    EXPECT_GT(down.y(), 150.0);  // y down, as in the box
+    EXPECT_LT(down.y(), side);
+    EXPECT_GT(d.toPixels(Vec2(-2.5, -2.5), side).minCoeff(), 0.0);
+}
+
+TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
+    const MomentaDiagram d = momentaDiagram(headOn());
+    // Three rows across x, the first above the middle, the last below, the same after.
+    EXPECT_LT(d.before[0].offset.y(), 0.0);
+    EXPECT_EQ(d.before[1].offset, Vec2(0, 0));
+    EXPECT_GT(d.before[2].offset.y(), 0.0);
+    EXPECT_EQ(d.after[2].offset, d.before[2].offset);
+    EXPECT_EQ(d.fromPixels(d.before[1], 200.0), d.toPixels(d.before[0].to, 200.0));
+    // Along y (a vertical collision): the rows are across y.
+    CollisionCard vertical = headOn();
+    Collision& c = vertical.collision;
+    for (Vec2* v : {&c.aBefore, &c.bBefore, &c.aAfter, &c.bAfter})
+        *v = Vec2(0.0, v->x());
+    const MomentaDiagram dv = momentaDiagram(vertical);
+    EXPECT_LT(dv.before[0].offset.x(), 0.0);
+    EXPECT_EQ(dv.before[0].offset.y(), 0.0);
+    // Oblique: the tip-to-tail triangle shows by itself.
+    c.aBefore = Vec2(1.0, 1.0);
+    for (const MomentaDiagram::Arrow& a : momentaDiagram(vertical).before)
+        EXPECT_EQ(a.offset, Vec2(0, 0));
+}
+
+TEST(MomentaDiagram, AWallChangesTheOneParticlesMomentum) {
+    CollisionCard card = headOn();
+    card.collision.with = Collision::With::Wall;
+    card.massB = 0.0;
+    card.numberB = 0;
+    card.collision.bBefore = card.collision.bAfter = Vec2::Zero();
+    card.collision.aAfter = Vec2(-2.0, 0.0);
+    const MomentaDiagram d = momentaDiagram(card);
+    ASSERT_EQ(d.before.size(), 2u);
+    EXPECT_EQ(d.before[1].to, Vec2(2, 0));
+    EXPECT_EQ(d.after[1].to, Vec2(-2, 0));
+}
+
+TEST(MomentaDiagram, ParticlesAtRestStillGetAScaleAndNoNaN) {
+    CollisionCard card = headOn();
+    Collision& c = card.collision;
+    c.aBefore = c.bBefore = c.aAfter = c.bAfter = Vec2::Zero();
+    EXPECT_GT(momentaDiagram(card).reach, 0.0);
+    c.aAfter = Vec2(std::numeric_limits<double>::infinity(), 0.0);
+    const MomentaDiagram d = momentaDiagram(card);
+    EXPECT_TRUE(std::isfinite(d.reach));
+}
+
+TEST(MomentaDiagram, ItsTextAddsTheMomentaUpToTheTotal) {
+    const auto lines = momentaDiagramLines(momentaDiagram(headOn()));
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0],
+              "Momenta before: p 1 (2.00, 0) + p 2 (-3.00, 0) = total p (-1.00, 0) kg m/s");
+    EXPECT_EQ(lines[1],
+              "Momenta after: p 1 (-2.50, 0) + p 2 (1.50, 0) = total p (-1.00, 0) kg m/s");
+}
+
+}  // namespace
+}  // namespace psb::app
