@@ -8,7 +8,8 @@
 #   800x800, a 1 kg ball at 2 m/s meeting a 3 kg ball at -1 m/s (e = 1, the exact mode):
 #   J, Space, then Space after the collision -> the Last collision section is in the window,
 #                                               and the card reads the textbook's velocities,
-#                                               momenta and energy, before and after
+#                                               momenta and energy, before and after, and its
+#                                               momenta diagram adds them up tip to tail
 #   a click on the 3 kg ball                 -> the card follows it: the 3 kg ball first
 #   I, then 2 typed into ball 1's mass cell   -> the values table lists both balls' signed
 #                                               values and the totals (p -1.00 kg m/s, 3.50 J),
@@ -59,6 +60,8 @@ expect "p 2: (-3.00, 0) kg m/s -> (1.50, 0) kg m/s"
 expect "total p: (-1.00, 0) kg m/s -> (-1.00, 0) kg m/s"
 expect "kinetic energy: 3.50 J -> 3.50 J"
 expect "Total momentum kept"
+expect "Momenta before: p 1 (2.00, 0) + p 2 (-3.00, 0) = total p (-1.00, 0) kg m/s"
+expect "Momenta after: p 1 (-2.50, 0) + p 2 (1.50, 0) = total p (-1.00, 0) kg m/s"
 pass "the card reads the textbook collision: $(sed -n 2p <<<"$card")"
 
 # --- a click on the 3 kg ball: the card follows it -------------------------------------------------

@@ -127,10 +127,12 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
         draw.AddTriangleFilled(
             p1, ImVec2(at.x + static_cast<float>(l.x()), at.y + static_cast<float>(l.y())),
             ImVec2(at.x + static_cast<float>(r.x()), at.y + static_cast<float>(r.y())), color);
-        // The label beside the arrow's middle, on the side away from the total's arrow.
-        const double labelSide = a.kind == MomentaDiagram::Kind::Total ? -1.0 : 1.0;
-        const Vec2 mid = 0.5 * (from + to) + labelSide * 0.7 * font * n;
+        // The label beside the arrow's middle, above it (left of an upright one): in a
+        // head-on collision's rows each label then sits in the gap above its own arrow.
+        const Vec2 up = n.y() < 0.0 || (n.y() == 0.0 && n.x() < 0.0) ? n : Vec2(-n);
         const ImVec2 size = ImGui::CalcTextSize(a.label.c_str());
+        const double clear = std::abs(up.y()) * 0.5 * size.y + std::abs(up.x()) * 0.5 * size.x;
+        const Vec2 mid = 0.5 * (from + to) + (clear + 0.15 * font) * up;
         draw.AddText(ImVec2(at.x + static_cast<float>(mid.x()) - 0.5f * size.x,
                             at.y + static_cast<float>(mid.y()) - 0.5f * size.y),
                      color, a.label.c_str());
