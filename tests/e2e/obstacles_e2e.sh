@@ -4,7 +4,8 @@
 #
 #   tests/e2e/obstacles_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
-#   1. chooses the Wall tool in the panel, drags in the box      -> a wall logged, drawn (grey)
+#   1. chooses the Wall tool in the panel, drags in the box      -> a wall logged, drawn (grey);
+#                                                                   while drawn, its slope shown
 #   2. chooses the Peg tool (pressed as the pointer arrives),    -> the tool, no refusal from
 #      clicks in the box                                            the world; a peg logged
 #   3. Ctrl+S                                                    -> the saved scene has the wall
@@ -59,6 +60,13 @@ chain=(mousemove --sync "$x0" "$y0" sleep 0.2 mousedown 1 sleep 0.1)
 for ((i = 1; i <= n; i++)); do chain+=(mousemove "$((x0 + i * dx))" "$((y0 + i * dy))" sleep 0.03); done
 xdotool "${chain[@]}"
 shot 1-wall-preview
+# The Wall tool's protractor: the length and slope beside the wall being drawn.
+snap 1-wall-angle
+angle=$(section 1-wall-angle "Wall tool")
+read -r deg < <(sed -E 's/^.*, ([0-9.]+)°$/\1/' <<<"$angle")
+awk -v d="$deg" -v dx="$dx" -v dy="$dy" 'BEGIN {
+    e = atan2(dy, dx) * 45 / atan2(1, 1); exit !(d > e - 0.3 && d < e + 0.3) }' ||
+    fail "the wall being drawn reads '$angle', not its slope of atan($dy/$dx)"
 xdotool mouseup 1
 wait_log "Added obstacle 0: wall from"
 # The ends as the window saw them (window pixels).

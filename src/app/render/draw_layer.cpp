@@ -111,6 +111,15 @@ void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) 
                       obstacleMarks_);
     }
     renderer_.drawBatch(obstacleMarks_);
+    if (frame.wallAngle) {
+        text_.clear();
+        const MarkLabel& l = *frame.wallAngle;
+        const int w = labelFont_.measure(l.text);
+        labelFont_.layout(l.text, std::round(static_cast<float>(l.at.x()) - 0.5f * w),
+                          std::round(static_cast<float>(l.at.y()) - 0.5f * labelFont_.lineHeight()),
+                          SDL_Color{230, 230, 230, 255}, text_);
+        labelFont_.draw(text_);
+    }
 }
 
 void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {

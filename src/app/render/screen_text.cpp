@@ -55,6 +55,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     }
     if (frame.grid) section(out, "Grid", {frame.grid->legend});
     if (frame.ruler) section(out, "Ruler", {frame.ruler->label.text});
+    if (frame.wallAngle) section(out, "Wall tool", {frame.wallAngle->text});
     if (o.showHelp) section(out, "Help", o.help);
     if (frame.bins && frame.layout.bins.w > 0) {
         std::vector<std::string> lines = frame.bins->legend;

@@ -60,9 +60,8 @@ void LabRuler::moveTo(const Vec2& at) {
     }
 }
 
-double LabRuler::slopeDegrees() const {
-    const Vec2 d = b_ - a_;
-    if (d == Vec2::Zero()) return 0.0;
+double slopeDegrees(const Vec2& d) {
+    if (d == Vec2::Zero() || !d.allFinite()) return 0.0;
     return std::atan2(std::abs(d.y()), std::abs(d.x())) * 180.0 / std::numbers::pi;
 }
 

@@ -14,6 +14,10 @@ namespace psb::app {
 
 class Camera;
 
+/// Degrees from the horizontal of a line along `d`, 0 to 90 whichever way it points: a ramp's
+/// slope (0 for a zero vector).
+[[nodiscard]] double slopeDegrees(const Vec2& d);
+
 class LabRuler {
   public:
     /// How near the pointer must be, pixels, to take an end (or the edge) of the ruler.
@@ -37,7 +41,7 @@ class LabRuler {
     [[nodiscard]] double length() const { return (b_ - a_).norm(); }
     /// Degrees from the horizontal, 0 to 90: the slope of a ramp it is laid along, whichever
     /// way it points.
-    [[nodiscard]] double slopeDegrees() const;
+    [[nodiscard]] double slopeDegrees() const { return psb::app::slopeDegrees(b_ - a_); }
 
   private:
     Vec2 a_{0.0, 0.0}, b_{1.0, 0.0};

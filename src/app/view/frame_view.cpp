@@ -123,6 +123,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         f.selectedObstacle = world.obstacles()[*i];
     }
     f.obstaclePreview = session.obstaclePreview();
+    if (f.obstaclePreview && !f.obstaclePreview->isPeg()) {
+        f.wallAngle = wallAngleLabel(f.obstaclePreview->a, f.obstaclePreview->b, session.camera());
+    }
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
     f.gas = session.gasReading();
     if (f.gas) f.pressurePlot = pressurePlotLine(session.gasHistory());

@@ -87,6 +87,8 @@ struct FrameView {
     /// The grid of metres (Shift+G) and the ruler (Q), while shown (view/lab_marks.hpp).
     std::optional<GridView> grid;
     std::optional<RulerView> ruler;
+    /// A wall being drawn: its length and slope beside its end (the Wall tool's protractor).
+    std::optional<MarkLabel> wallAngle;
     std::optional<BinHistogram> bins;  ///< the scene's bins, while shown
     std::vector<DropperView> droppers;
     Overlays overlays;

@@ -108,6 +108,21 @@ RulerView rulerView(const LabRuler& ruler, const Camera& camera) {
     return v;
 }
 
+MarkLabel wallAngleLabel(const Vec2& a, const Vec2& b, const Camera& camera) {
+    MarkLabel l;
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.1f\u00b0", slopeDegrees(b - a));
+    l.text = quantity((b - a).norm(), "m");
+    l.text += ", ";
+    l.text += angle;
+    // Beyond the end being dragged, clear of the pointer.
+    const Vec2 pa = camera.worldToScreen(a), pb = camera.worldToScreen(b);
+    const double length = (pb - pa).norm();
+    const Vec2 u = length > 0.0 && std::isfinite(length) ? Vec2((pb - pa) / length) : Vec2(1, 0);
+    l.at = pb + 18.0 * u + Vec2(0.0, -14.0);
+    return l;
+}
+
 std::string rulerLine(const LabRuler& ruler) {
     const Vec2 d = ruler.b() - ruler.a();
     char angle[32];

@@ -53,6 +53,10 @@ struct RulerView {
 inline constexpr double kRulerTickPixels = 8.0;
 
 [[nodiscard]] RulerView rulerView(const LabRuler& ruler, const Camera& camera);
+
+/// The protractor of the Wall tool: a wall being drawn from `a` to `b` (metres) labelled with
+/// its length and its slope ("2.60 m, 20.0°") beyond its end `b`, in pixels.
+[[nodiscard]] MarkLabel wallAngleLabel(const Vec2& a, const Vec2& b, const Camera& camera);
 /// The ruler's reading as F12's text says it.
 [[nodiscard]] std::string rulerLine(const LabRuler& ruler);
 

@@ -77,5 +77,14 @@ TEST(RulerView, TicksAtRoundStepsAndItsReadingBesideIt) {
     EXPECT_LE(rulerView(r, camera(1e-3)).ticks.size(), 2001u);
 }
 
+TEST(WallAngleLabel, TheWallBeingDrawnReadsItsLengthAndSlopeBeyondItsEnd) {
+    const Camera c = camera(100.0);
+    const MarkLabel l = wallAngleLabel(Vec2(0.0, 0.45), Vec2(2.6, 1.3963), c);
+    EXPECT_EQ(l.text, "2.77 m, 20.0\u00b0");
+    EXPECT_GT(l.at.x(), 260.0);  // beyond the end at x = 260 pixels
+    EXPECT_EQ(wallAngleLabel(Vec2(1, 1), Vec2(1, 3), c).text, "2.00 m, 90.0\u00b0");
+    EXPECT_EQ(wallAngleLabel(Vec2(1, 1), Vec2(1, 1), c).text, "0 m, 0.0\u00b0");
+}
+
 }  // namespace
 }  // namespace psb::app
