@@ -77,6 +77,13 @@ ErrorMeasures compareToExact(const RunTotals& run, const RunTotals& exact) {
         run.kineticEnergyInitial > 0.0
             ? std::abs(run.kineticEnergyFinal - exact.kineticEnergyFinal) / run.kineticEnergyInitial
             : nan;
+    e.positionErrorOverRadius = nan;
+    if (run.finalPositions.size() == exact.finalPositions.size() && exact.smallestRadius > 0.0) {
+        double worst = 0.0;
+        for (std::size_t i = 0; i < run.finalPositions.size(); ++i)
+            worst = std::max(worst, (run.finalPositions[i] - exact.finalPositions[i]).norm());
+        e.positionErrorOverRadius = worst / exact.smallestRadius;
+    }
     const double pe = wallPressure(exact);
     e.pressureRatio = pe > 0.0 ? wallPressure(run) / pe : nan;
     e.wallSecondsPerSimSecond = run.simTime > 0.0 ? run.wallSeconds / run.simTime : nan;

@@ -18,6 +18,7 @@
 // step costs O(N log N + K), K the pairs whose swept extents overlap in x.
 
 #include <cstdint>
+#include <vector>
 
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
@@ -50,6 +51,8 @@ struct RunTotals {
     double kineticEnergyFinal = 0.0;    ///< joules
     double wallImpulse = 0.0;           ///< kg·m/s, summed over the run
     double wallLength = 0.0;            ///< perimeter of the box, metres (0: no walls)
+    std::vector<Vec2> finalPositions;   ///< every particle's centre at the end, storage order
+    double smallestRadius = 0.0;        ///< metres
 };
 
 /// Wall pressure: wall impulse per unit time per unit wall length, N/m. NaN without walls or
@@ -65,6 +68,11 @@ struct ErrorMeasures {
     /// did not. With e = 1 it is the drift; with e < 1 the error in the cooling. NaN if KE(0) = 0.
     double kineticEnergyError = 0.0;
     double pressureRatio = 0.0;  ///< wall pressure / exact wall pressure (NaN if exact's is 0)
+    /// The farthest any particle ends from where the exact run puts it, over the smallest
+    /// radius: the trajectory error of a scene with a closed form (a disc rolling down a slope,
+    /// slipping then rolling on a floor); in a gas, where trajectories part after a few
+    /// collisions, only a sign of chaos. NaN if the runs' particles do not match.
+    double positionErrorOverRadius = 0.0;
     double wallSecondsPerSimSecond = 0.0;
     double cpuSecondsPerSimSecond = 0.0;  ///< the same in CPU time: less sensitive to load
     double nsPerParticleStep = 0.0;       ///< wall ns / (particles × steps)

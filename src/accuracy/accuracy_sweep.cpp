@@ -29,6 +29,9 @@ std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root) {
         {"bouncing-ball", bench / "bouncing-ball.json", 4.0},
         {"projectile-into-falling-crowd", bench / "projectile-into-falling-crowd.json", 1.5},
         {"pile-under-gravity", assets / "07-pile-under-gravity.json", 4.0},
+        // Rolling, with closed forms the exact mode follows to 1e-9 (tests/core/exact).
+        {"rolling-slope", bench / "rolling-slope.json", 1.0},
+        {"slip-to-roll", bench / "slip-to-roll.json", 2.0},
     };
 }
 
@@ -95,6 +98,11 @@ RunTotals runMeasured(const Scene& scene, StepMode mode, double dt, int substeps
     r.wallCollisions = c.wallCollisions;
     r.wallImpulse = c.wallImpulse;
     r.kineticEnergyFinal = kineticEnergy(world);
+    const ParticleArrays& p = world.particles();
+    r.smallestRadius = smallestRadius(p);
+    r.finalPositions.reserve(p.size());
+    for (std::size_t i = 0; i < p.size(); ++i)
+        r.finalPositions.emplace_back(p.x[i], p.y[i]);
     if (exact) {
         // The exact mode reports the deepest overlap it met at a collision (rounding only).
         const double rmin = smallestRadius(world.particles());
@@ -166,7 +174,7 @@ std::string accuracyCsv(const std::vector<AccuracyRow>& rows) {
     o << "scene,mode,dt_s,substeps,particles,steps,sim_s,wall_s,wall_s_per_sim_s,cpu_s_per_sim_s,"
          "ns_per_particle_step,collisions,wall_collisions,collisions_vs_exact,missed,max_overlap_"
          "over_r,"
-         "ke_error,wall_pressure_n_per_m,pressure_vs_exact\n";
+         "ke_error,wall_pressure_n_per_m,pressure_vs_exact,position_error_over_r\n";
     for (const AccuracyRow& r : rows) {
         const RunTotals& t = r.totals;
         const ErrorMeasures& e = r.errors;
@@ -176,7 +184,7 @@ std::string accuracyCsv(const std::vector<AccuracyRow>& rows) {
           << full(e.nsPerParticleStep) << ',' << t.collisions << ',' << t.wallCollisions << ','
           << full(e.collisionRatio) << ',' << e.missed << ',' << full(e.maxOverlapOverRadius) << ','
           << full(e.kineticEnergyError) << ',' << full(wallPressure(t)) << ','
-          << full(e.pressureRatio) << '\n';
+          << full(e.pressureRatio) << ',' << full(e.positionErrorOverRadius) << '\n';
     }
     return o.str();
 }
@@ -185,8 +193,8 @@ std::string accuracyMarkdown(const std::vector<AccuracyRow>& rows) {
     std::ostringstream o;
     o << "| scene | mode | dt (ms) | k | wall s / sim s | CPU s / sim s | ns / particle-step | "
          "collisions / exact"
-         " | missed | max overlap / r | KE error | pressure / exact |\n"
-         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+         " | missed | max overlap / r | KE error | pressure / exact | position error / r |\n"
+         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const AccuracyRow& r : rows) {
         const ErrorMeasures& e = r.errors;
         o << "| " << r.scene << " | " << toString(r.mode) << " | " << num(r.dt * 1e3, "—") << " | "
@@ -194,7 +202,7 @@ std::string accuracyMarkdown(const std::vector<AccuracyRow>& rows) {
           << num(e.cpuSecondsPerSimSecond, "—") << " | " << num(e.nsPerParticleStep, "—") << " | "
           << num(e.collisionRatio, "—") << " | " << e.missed << " | "
           << num(e.maxOverlapOverRadius, "—") << " | " << num(e.kineticEnergyError, "—") << " | "
-          << num(e.pressureRatio, "—") << " |\n";
+          << num(e.pressureRatio, "—") << " | " << num(e.positionErrorOverRadius, "—") << " |\n";
     }
     return o.str();
 }

@@ -28,7 +28,8 @@ struct AccuracyScene {
     double duration = 1.0;       ///< simulated seconds
 };
 
-/// The standard scenes (the six of the issue, plus a bullet at 10^4 times the speed of a row);
+/// The standard scenes (the six of the issue, a bullet at 10^4 times the speed of a row, three
+/// under gravity, two of a rolling disc);
 /// `root` is the source tree (files under assets/scenes, bench/scenes).
 [[nodiscard]] std::vector<AccuracyScene> standardScenes(const std::filesystem::path& root);
 

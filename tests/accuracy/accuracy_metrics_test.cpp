@@ -159,6 +159,18 @@ TEST(AccuracyMetrics, ErrorsAndCostAreTheStatedRatios) {
     EXPECT_NEAR(e.nsPerParticleStep, 2000.0, 1e-9);  // 0.5 s / 250 000 particle-steps
 }
 
+TEST(AccuracyMetrics, PositionErrorIsTheFarthestParticleOverTheSmallestRadius) {
+    RunTotals exact;
+    exact.finalPositions = {Vec2(1.0, 1.0), Vec2(5.0, 2.0)};
+    exact.smallestRadius = 0.5;
+    RunTotals run = exact;
+    run.finalPositions = {Vec2(1.0, 1.1), Vec2(5.3, 2.4)};  // 0.1 and 0.5 m off
+    EXPECT_NEAR(compareToExact(run, exact).positionErrorOverRadius, 1.0, 1e-12);
+    EXPECT_EQ(compareToExact(exact, exact).positionErrorOverRadius, 0.0);
+    run.finalPositions.pop_back();  // not the same particles: nothing to compare
+    EXPECT_TRUE(std::isnan(compareToExact(run, exact).positionErrorOverRadius));
+}
+
 TEST(AccuracyMetrics, SubstepModeIsKDiscreteStepsOfDtOverK) {
     // The sweep runs a substep row as k discrete steps of dt / k so that each move can be
     // checked; that is only honest if the world's substep mode does exactly that.

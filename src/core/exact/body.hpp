@@ -15,7 +15,7 @@
 namespace psb::exact {
 
 // What a particle's collision key holds (its cell key always holds a cell move).
-enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide, Recheck };
+enum class Kind : std::uint8_t { None, Pair, Wall, Obstacle, Slide, Recheck, Roll };
 
 // What an event and a neighbour's prediction read, in one 64-byte line.
 struct alignas(64) Body {
@@ -35,21 +35,30 @@ inline constexpr std::uint32_t kRestX = 16;         // no acceleration along x (
 inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y
 inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: slide_ holds how
 inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (resting.cpp)
+// A disc that turns, in a world with rough contacts, on the face it slides on (kSliding) or the
+// one wall it rests on (kRestX or kRestY): it slips or rolls (rolling.cpp); slide_ holds its
+// acceleration along the surface and the end of its slip, turn_ its angular acceleration.
+inline constexpr std::uint32_t kRolling = 256;
 // A particle sliding on a segment's face (kSliding; sliding.cpp): which
 // segment, and its constant acceleration along the face (gravity's share along it less the
-// kinetic friction, or none where static friction holds it).
+// kinetic friction, or none where static friction holds it). A disc that rolls (kRolling) keeps
+// here its acceleration along the face or wall and when its slip ends (rolling.cpp).
 struct Slide {
     std::uint32_t obstacle = 0;
     double ax = 0.0, ay = 0.0;
+    double slipEnds = 0.0;  // kRolling: the slip-to-roll instant (infinity: none ahead)
 };
 // A particle's rotation (kept only in a world that keeps rotation): its angle at time t (on the
-// stepper's clock), its angular velocity since then, and its spin weight 1/k (0: fixed).
-// Only rough contacts change omega, so between two of them the angle grows linearly.
+// stepper's clock), its angular velocity then, its spin weight 1/k (0: fixed) and its angular
+// acceleration since t. Rough impulses change omega; between two of them the angular
+// acceleration is zero, except while the disc slips or rolls on a surface (kRolling), where
+// the contact's friction makes it constant: the angle is then a parabola in time.
 struct Turn {
     double angle;
     double t;
     double omega;
     double q;
+    double alpha = 0.0;
 };
 // Where a particle is at a time, and how it moves there (gravity only).
 struct Motion {

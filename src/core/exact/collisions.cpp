@@ -63,13 +63,15 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A pair event ends a slide (the pair's impulses and lift are those of free particles); a
     // slider still on its face afterwards slides on (keepOnFace below). Its acceleration has
     // changed, so its counter does too.
+    // So does a pair event end a roll on a face or a wall (settleAfterPair gives the phase
+    // again where the disc is still in contact).
     const bool aSlid = (a.flags & kSliding) != 0, bSlid = (b.flags & kSliding) != 0;
-    if (aSlid) {
-        stopSliding(a);
+    if (a.flags & (kSliding | kRolling)) {
+        stopSliding(i);
         ++a.count;
     }
-    if (bSlid) {
-        stopSliding(b);
+    if (b.flags & (kSliding | kRolling)) {
+        stopSliding(j);
         ++b.count;
     }
     const double dx = b.x - a.x, dy = b.y - a.y;
@@ -154,7 +156,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     Body& a = bodies_[i];
     const bool recent = collidedWithin(a, ev.time);
     advance(i, ev.time);
-    stopSliding(a);
+    stopSliding(i);
     ++events_;
     const bool alongX = ev.side < 2;
     double& v = alongX ? a.vx : a.vy;
@@ -206,17 +208,19 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         }
     }
     ++a.count;
-    if (gravity_ && !(a.flags & kHeld))
+    if (gravity_ && !(a.flags & kHeld)) {
         settle(i, ev.time,
                a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
+        // Resting on a wall, a disc that turns slips or rolls along it (rolling.cpp).
+        setRoll(i);
+    }
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
 }
 
 Spin ExactStepper::spinAt(std::uint32_t i, double now) {
     Turn& r = turn_[i];
-    r.angle += r.omega * (now - r.t);
-    r.t = now;
+    advanceTurn(r, now);
     return Spin{r.omega, bodies_[i].r, r.q};
 }
 

@@ -47,9 +47,9 @@ inline void ExactStepper::accelerationOf(std::uint32_t i, const Body& b, double&
         ax = ay = 0.0;
         return;
     }
-    if (b.flags & kSliding) {
-        // The slide is found by the particle's index, never by the record's address: b may be a
-        // copy (rebuild() projects copies of the records to the clock).
+    if (b.flags & (kSliding | kRolling)) {
+        // The slide (or roll) is found by the particle's index, never by the record's address:
+        // b may be a copy (rebuild() projects copies of the records to the clock).
         const Slide& s = slide_[i];
         ax = s.ax;
         ay = s.ay;
@@ -68,6 +68,20 @@ inline Motion ExactStepper::motionAt(std::uint32_t i, const Body& b, double t) c
     m.vx = b.vx + m.ax * h;
     m.vy = b.vy + m.ay * h;
     return m;
+}
+
+// A rotation brought to time t: the angle grows linearly between rough impulses, and as a
+// parabola while the disc slips or rolls on a surface (alpha != 0). The linear case is the
+// expression of before rolling existed, bit for bit.
+inline void advanceTurn(Turn& r, double t) {
+    const double h = t - r.t;
+    if (r.alpha == 0.0) {
+        r.angle += r.omega * h;
+    } else {
+        r.angle += r.omega * h + 0.5 * r.alpha * h * h;
+        r.omega += r.alpha * h;
+    }
+    r.t = t;
 }
 
 }  // namespace psb::exact

@@ -43,7 +43,7 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
     Body& a = bodies_[i];
     const bool recent = collidedWithin(a, ev.time);
     advance(i, ev.time);
-    stopSliding(a);  // another obstacle ends a slide
+    stopSliding(i);  // another obstacle ends a slide
     ++events_;
     reboundOffObstacle(i, ev.partner, recent, counters);
     ++a.count;

@@ -61,11 +61,12 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
     depth_.assign(gravity_ ? n : 0, 0);
     recheckAt_.assign(gravity_ ? n : 0, kNever);
-    slide_.assign(gravity_ && !def_.obstacles.empty() ? n : 0, Slide{});
     turn_.resize(p.rotation ? n : 0);
     for (std::uint32_t i = 0; i < turn_.size(); ++i)
-        turn_[i] = Turn{p.angle[i], 0.0, p.omega[i], p.spinWeight(i)};
+        turn_[i] = Turn{p.angle[i], 0.0, p.omega[i], p.spinWeight(i), 0.0};
     rough_ = p.rotation && def.friction > 0.0;
+    // Slides on faces, and rolls on faces and walls (rolling.cpp).
+    slide_.assign(gravity_ && (!def_.obstacles.empty() || rough_) ? n : 0, Slide{});
     rate_.reset(gravity_ ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];

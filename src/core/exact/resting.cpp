@@ -159,6 +159,8 @@ void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
     if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
     settle(i, a.t,
            !justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t));
+    // Still on a wall or a face, a disc that turns slips or rolls along it (rolling.cpp).
+    setRoll(i);
 }
 
 void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid,
@@ -307,7 +309,12 @@ void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, 
         b.flags |= kProvisional;
         recheckAt_[i] = now + kRecheckAfter;
     }
-    stopSliding(b);
+    stopSliding(i);
+    // At rest a disc that turns does not turn either: its contacts' friction would stop it.
+    if (rough_ && turn_[i].q > 0.0) {
+        advanceTurn(turn_[i], now);
+        turn_[i].omega = 0.0;
+    }
     ++b.count;
 }
 
@@ -364,6 +371,7 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         b.t = now;
         wokeAt_[k] = now;
         ++b.count;
+        setRoll(k);  // on a wall it rests on, a disc that turns rolls (rolling.cpp)
     };
     rouse(i);
     wakeStack_.assign(1, i);

@@ -18,10 +18,9 @@
 // Pegs and caps keep the hop: round a circle the normal force is not constant, and the path
 // is not a parabola.
 //
-// The slide does not roll: a disc that turns slides like one that does not (the block's
-// g (sin θ − μ cos θ)), its spin left as its last collision made it. Rolling here would be
-// another piecewise-analytic contact (spin-up under kinetic friction until the slip-to-roll
-// instant, an event, then a = g sin θ / (1 + k)); docs/exact.md, Limits.
+// A disc that turns, with rough contacts, slips and rolls on the face instead (rolling.cpp:
+// kinetic friction on its contact point's slip until the slip-to-roll instant, an event, then
+// a = g sin θ / (1 + k)); the block's motion above is that of a disc that does not turn.
 //
 
 #include <cmath>
@@ -83,6 +82,10 @@ bool ExactStepper::startSliding(std::uint32_t i, std::uint32_t k, double nx, dou
 void ExactStepper::setSlideAcceleration(std::uint32_t i) {
     // Gravity along the face, less kinetic friction mu·|g_n| against the motion; at rest, none
     // while static friction holds (|g_t| <= mu·|g_n|), else down the face less the friction.
+    if (rough_ && turn_[i].q > 0.0) {
+        setRoll(i);  // a disc that turns slips or rolls (rolling.cpp)
+        return;
+    }
     Body& a = bodies_[i];
     Slide& s = slide_[i];
     const Obstacle& o = obstacles_[s.obstacle];
@@ -112,9 +115,11 @@ void ExactStepper::predictSlide(std::uint32_t i, const Motion& m, double now, Ev
     const double ux = ex / length, uy = ey / length;
     const double along = (m.x - o.a.x()) * ux + (m.y - o.a.y()) * uy;
     const double vt = m.vx * ux + m.vy * uy, at = s.ax * ux + s.ay * uy;
+    // A disc that rolls (or slips) does not stop where its centre does: its phase ends where its
+    // slip does (predictRoll).
+    const bool stops = vt != 0.0 && at * vt < 0.0 && !(bodies_[i].flags & kRolling);
     const double t[3] = {crossingTime(along, vt, at, 0.0, -1.0),
-                         crossingTime(along, vt, at, length, 1.0),
-                         vt != 0.0 && at * vt < 0.0 ? -vt / at : kNever};
+                         crossingTime(along, vt, at, length, 1.0), stops ? -vt / at : kNever};
     for (std::int8_t side = 0; side < 3; ++side) {
         if (now + t[side] < best.time) best = {now + t[side], s.obstacle, 0, Kind::Slide, side};
     }
@@ -131,7 +136,7 @@ void ExactStepper::handleSlide(std::uint32_t i, const Event& ev) {
         // margin (a nanometre on a metre-long face), at contact distance: at the end itself
         // rounding would decide whether it still touches the face, which gravity presses it
         // into, and a fast ball would be kicked by a hop it should not make.
-        stopSliding(a);
+        stopSliding(i);
         const Obstacle& o = obstacles_[ev.partner];
         const double ex = o.b.x() - o.a.x(), ey = o.b.y() - o.a.y();
         const double length = std::sqrt(ex * ex + ey * ey);

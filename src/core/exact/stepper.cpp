@@ -110,6 +110,9 @@ double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_
             case Kind::Recheck:
                 handleRecheck(i, ev);
                 break;
+            case Kind::Roll:
+                handleRoll(i, ev);
+                break;
             case Kind::None:
                 return tEnd;  // unreachable: None events are at +infinity
         }
@@ -146,8 +149,9 @@ void ExactStepper::sync(ParticleArrays& p) {
     }
     if (!turn_.empty()) {
         for (std::size_t k = 0; k < n; ++k) {
-            const Turn& r = turn_[k];
-            p.angle[order[k]] = r.angle + r.omega * (t - r.t);
+            Turn r = turn_[k];
+            advanceTurn(r, t);
+            p.angle[order[k]] = r.angle;
             p.omega[order[k]] = r.omega;
         }
     }

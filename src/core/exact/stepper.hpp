@@ -44,6 +44,7 @@
 //                    rattling, sleepers kept across a rebuild
 //   obstacles.cpp    events with fixed pegs and segments; obstacle_cells.* lists them per cell
 //   sliding.cpp      the sliding contact on a segment's face
+//   rolling.cpp      a disc that turns slipping, then rolling, on a face or a wall
 //   event_queue.*, cell_list.*, collision_rate.hpp, and the times of impact:
 //   time_of_impact.hpp (straight lines), parabolic_impact.hpp (gravity),
 //   obstacle_impact.hpp (obstacles)
@@ -325,8 +326,28 @@ class ExactStepper {
     void setSlideAcceleration(std::uint32_t i);
     void predictSlide(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void handleSlide(std::uint32_t i, const Event& ev);
-    void stopSliding(Body& b) const { b.flags &= ~kSliding; }
+    // Ends i's slide, and its roll on a face or a wall if it rolls (i is at bodies_[i].t):
+    // every event of a particle ends its contact's motion, and the event's handler starts it
+    // again where the particle is still in contact.
+    void stopSliding(std::uint32_t i) {
+        Body& b = bodies_[i];
+        b.flags &= ~kSliding;
+        if (b.flags & kRolling) endRoll(i);
+    }
     void keepOnFace(std::uint32_t i, StepCounters& counters, bool maySlide);
+
+    // --- slipping and rolling on a face or a wall (rolling.cpp) -------------------------------
+    // With rough contacts, a disc that turns on the face it slides on or the wall it rests on:
+    // setRoll gives it the phase its state at bodies_[i].t calls for (slipping under kinetic
+    // friction until the slip-to-roll instant, rolling, or slipping for good where friction
+    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn);
+    // endRoll takes it back to plain flight or rest (its spin brought to bodies_[i].t); the
+    // slip-to-roll event; the outward normal of the surface it rolls on.
+    void setRoll(std::uint32_t i);
+    void endRoll(std::uint32_t i);
+    void predictRoll(std::uint32_t i, double now, Event& best) const;
+    void handleRoll(std::uint32_t i, const Event& ev);
+    [[nodiscard]] bool rollingSurface(std::uint32_t i, double& nx, double& ny) const;
 
     WorldDef def_;
     bool stale_ = true;
@@ -335,8 +356,8 @@ class ExactStepper {
     double restSpeed_ = 0.0;  // see resting.cpp
     double restGap_ = 0.0;
     std::vector<std::uint32_t> wakeStack_;
-    // Per particle, in bodies_' order, with gravity and obstacles only: its sliding contact,
-    // read where kSliding is set (sliding.cpp).
+    // Per particle, in bodies_' order, with gravity and obstacles or rough contacts only: its
+    // sliding contact, read where kSliding or kRolling is set (sliding.cpp, rolling.cpp).
     std::vector<Slide> slide_;
     // Per particle, in bodies_' order, only in a world that keeps rotation (else empty).
     std::vector<Turn> turn_;

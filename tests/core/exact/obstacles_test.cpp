@@ -304,14 +304,14 @@ TEST(ExactObstacles, BallSlidingDownARampWithFrictionFollowsCoulombsLaw) {
 }
 
 TEST(ExactObstacles, BallSlidesInContactAndLeavesTheRampsEndWhereAndAsItShould) {
-    // A ball placed at rest on the face 0.5 m from the lower end slides in contact (its centre
-    // at exactly r + h from the core line: no hops), reaches the end after √(2·0.5/a) at
-    // a·t, and flies on from there on the parabola.
+    // A ball that does not turn placed at rest on the face 0.5 m from the lower end slides in
+    // contact (its centre at exactly r + h from the core line: no hops), reaches the end after
+    // √(2·0.5/a) at a·t, and flies on from there on the parabola.
     Ramp s = shortRamp(2.0);
     World& w = s.world;
     const double r = 0.1, h = s.ramp.radius, g = 9.81;
     const Vec2 end = s.ramp.b, start = end - 0.5 * s.along + (r + h) * s.normal;
-    const ParticleId id = w.add({.position = start, .radius = r});
+    const ParticleId id = w.add({.position = start, .radius = r, .fixedRotation = true});
     const double tEnd = std::sqrt(2.0 * 0.5 / s.accel), vEnd = s.accel * tEnd;
     double t = 0.0;
     const double dt = 1.0 / 240.0;
@@ -348,7 +348,8 @@ TEST(ExactObstacles, FrictionStopsASlideWhereTheClosedFormSaysAndTurnsOneUpAStee
         Ramp s = rampWorld(10.0, 0.3, 0.3, {1.0, 3.0}, 6.0, 10.0);
         World& w = s.world;
         const Vec2 along = s.along, start = s.ramp.a + 1.0 * along + (r + s.ramp.radius) * s.normal;
-        const ParticleId id = w.add({.position = start, .velocity = along, .radius = r});
+        const ParticleId id =
+            w.add({.position = start, .velocity = along, .radius = r, .fixedRotation = true});
         // (Placed at contact to rounding, a hair above it maybe: it lands within nanoseconds,
         // and the rebound's friction on that landing is of the order of 1e-8 m/s.)
         const double a = -s.accel;
@@ -367,7 +368,8 @@ TEST(ExactObstacles, FrictionStopsASlideWhereTheClosedFormSaysAndTurnsOneUpAStee
         Ramp s = rampWorld(30.0, 0.2, 0.3, {1.0, 3.0}, 6.0, 10.0);
         World& w = s.world;
         const Vec2 along = s.along, start = s.ramp.a + 4.0 * along + (r + s.ramp.radius) * s.normal;
-        const ParticleId id = w.add({.position = start, .velocity = -2.0 * along, .radius = r});
+        const ParticleId id = w.add(
+            {.position = start, .velocity = -2.0 * along, .radius = r, .fixedRotation = true});
         const double up = g * (std::sin(s.angle) + 0.2 * std::cos(s.angle)), down = s.accel;
         const double tStop = 2.0 / up, sStop = -2.0 * tStop + 0.5 * up * tStop * tStop;
         w.step(1.0);
