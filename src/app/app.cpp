@@ -94,6 +94,11 @@ App::App(const AppOptions& options) : options_(options) {
         if (c == 'V') session_->apply(cmd::SetShow{ShowOption::Momentum, true});
         if (c == 'K') session_->apply(cmd::SetShow{ShowOption::Plots, true});
         if (c == 'D') session_->apply(cmd::SetShow{ShowOption::Speeds, true});
+        if (c == 'I') session_->apply(cmd::SetShow{ShowOption::Values, true});
+        if (c == 'J') session_->apply(cmd::SetShow{ShowOption::Collision, true});
+        if (c == 'Q') session_->apply(cmd::SetShow{ShowOption::Ruler, true});
+        if (c == 'G') session_->apply(cmd::SetShow{ShowOption::Grid, true});
+        if (c == 'U') session_->apply(cmd::Stopwatch{cmd::Stopwatch::Action::StartStop});
         if (c == 'L') {
             session_->apply(cmd::SetTrails{static_cast<int>(TrailMode::All)});
         }

@@ -76,12 +76,14 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1'000'000))
         ->capture_default_str();
     cli.add_option("--bench-overlays", options.benchOverlays,
-                   "With --bench: also draw these overlays, by key: any of V (momentum), L (all "
-                   "trails), K (plots), D (speed histogram), e.g. VLKD")
+                   "With --bench: also draw these overlays and instruments, by key: any of V "
+                   "(momentum), L (all trails), K (plots), D (speed histogram), I (values "
+                   "table), J (last collision card), Q (ruler), G (grid), U (stopwatch), e.g. "
+                   "VLKD")
         ->check([](const std::string& keys) {
-            return keys.find_first_not_of("VLKD") == std::string::npos && !keys.empty()
+            return keys.find_first_not_of("VLKDIJQGU") == std::string::npos && !keys.empty()
                        ? std::string()
-                       : "expected letters from VLKD, got '" + keys + "'";
+                       : "expected letters from VLKDIJQGU, got '" + keys + "'";
         });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
     std::string record;
