@@ -77,11 +77,12 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     cli.add_option("--bench-overlays", options.benchOverlays,
                    "With --bench: also draw these overlays, by key: any of V (momentum), L (all "
-                   "trails), K (plots), D (speed histogram), e.g. VLKD")
+                   "trails), K (plots), D (speed histogram), Q (every particle turning, with its "
+                   "spin mark), e.g. VLKD")
         ->check([](const std::string& keys) {
-            return keys.find_first_not_of("VLKD") == std::string::npos && !keys.empty()
+            return keys.find_first_not_of("VLKDQ") == std::string::npos && !keys.empty()
                        ? std::string()
-                       : "expected letters from VLKD, got '" + keys + "'";
+                       : "expected letters from VLKDQ, got '" + keys + "'";
         });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
     std::string record;

@@ -298,6 +298,10 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
+    box("Spin", v.spin, cmd::ShowOption::Spin,
+        "A spoke from the centre to the rim of each disc that turns, turning with it: a rolling "
+        "ball's spoke goes round, a sliding one's does not (key Q). Particles with fixed "
+        "rotation have none, and nothing turns without friction or a spin given by hand");
     double arrow = v.arrowSeconds;
     bool dragging = false;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);

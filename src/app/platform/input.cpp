@@ -132,6 +132,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
             return {show(state, ShowOption::Collision)};
         case SDLK_i:
             return {show(state, ShowOption::Values)};
+        case SDLK_q:
+            return {show(state, ShowOption::Spin)};
         case SDLK_u:
             return {cmd::Stopwatch{shift ? cmd::Stopwatch::Action::LapOrReset
                                          : cmd::Stopwatch::Action::StartStop}};

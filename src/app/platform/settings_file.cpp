@@ -28,6 +28,8 @@ const char* keyOf(ShowOption option) {
             return "collision";
         case ShowOption::Values:
             return "values";
+        case ShowOption::Spin:
+            return "spin";
     }
     return "";
 }

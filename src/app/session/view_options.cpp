@@ -74,6 +74,7 @@ constexpr ShowEntry kShowEntries[] = {
     {&ViewOptions::bins, "Bin counts"},
     {&ViewOptions::collision, "Last collision card"},
     {&ViewOptions::values, "Values table"},
+    {&ViewOptions::spin, "Spin marks"},
 };
 
 const ShowEntry& entry(ShowOption option) {

@@ -1,6 +1,6 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O, J, I and the arrow
+// toggles of the keys A, S, V, L, K, D, O, J, I, Q and the arrow
 // scale. No SDL, so the session and its
 // tests can use it without a window.
 
@@ -16,7 +16,7 @@ namespace psb::app {
 /// What L shows.
 enum class TrailMode { Off, Selected, All };
 
-/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I).
+/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I, Q).
 enum class ShowOption : std::uint8_t {
     Arrows,
     Labels,
@@ -26,7 +26,8 @@ enum class ShowOption : std::uint8_t {
     Profile,
     Bins,
     Collision,
-    Values
+    Values,
+    Spin
 };
 
 /// Off -> Selected -> All -> Off.
@@ -65,6 +66,9 @@ struct ViewOptions {
     bool collision = false;
     /// I: the values table (every particle's signed values and their totals), in a window.
     bool values = false;
+    /// Q: each turning disc's rotation mark (a spoke from its centre to its rim), in a world
+    /// that keeps rotation; fixed-rotation discs have none.
+    bool spin = true;
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);

@@ -154,6 +154,7 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"D", "speed histogram (Show)"},
         {"J", "last collision card: before and after, momentum, energy (Show)"},
         {"I", "values table: every particle's x, v, p, energy, totals (Show)"},
+        {"Q", "spin marks: a spoke that turns with each turning disc (Show)"},
         {"C", "open / fold the control panel"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
