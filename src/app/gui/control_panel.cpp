@@ -298,10 +298,6 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
-    box("Spin", v.spin, cmd::ShowOption::Spin,
-        "A spoke from the centre to the rim of each disc that turns, turning with it: a rolling "
-        "ball's spoke goes round, a sliding one's does not (key Q). Particles with fixed "
-        "rotation have none, and nothing turns without friction or a spin given by hand");
     double arrow = v.arrowSeconds;
     bool dragging = false;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);
@@ -328,6 +324,11 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Values table", v.values, cmd::ShowOption::Values,
         "Every particle's signed position, velocity, momentum and energy, with the totals, in a "
         "window; position, velocity and mass can be typed in (key I)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    box("Spin", v.spin, cmd::ShowOption::Spin,
+        "A spoke from the centre to the rim of each disc that turns, turning with it: a rolling "
+        "ball's spoke goes round, a sliding one's does not (key Q). Particles with fixed "
+        "rotation have none, and nothing turns without friction or a spin given by hand");
     box("Last collision card", v.collision, cmd::ShowOption::Collision,
         "The selected particle's last collision (with none selected, the last between two "
         "particles): velocities, momenta and energy just before and just after (key J)");
