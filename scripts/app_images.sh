@@ -11,7 +11,8 @@
 #                the binomial and the normal curve, 1200x850
 #   funnel.png, hourglass.png, ramp.png, basketball.png  the obstacle presets 10-13, each run
 #                from paused for a few seconds then paused again, arrows off (the basketball
-#                with all trails), 800x800 windows scaled to 60 %
+#                with all trails; the ramp 1 s in, its spin marks shown), 800x800 windows scaled
+#                to 60 %
 #
 #   scripts/app_images.sh PATH/TO/particle-sandbox [OUTPUT_DIR [NAME]]
 #
@@ -123,7 +124,7 @@ run_preset() {
 }
 run_preset funnel 10-funnel.json 4
 run_preset hourglass 11-hourglass.json 1.2
-run_preset ramp 12-ramp.json 1.6 l l
+run_preset ramp 12-ramp.json 1.0
 run_preset basketball 13-basketball-and-tennis-ball.json 1.25 l l
 DRIVE
 ASSETS=$(cd "$(dirname "$0")/../assets" && pwd)

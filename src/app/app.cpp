@@ -48,7 +48,8 @@ App::App(const AppOptions& options) : options_(options) {
     World world;
     SceneMeta meta;
     if (options_.benchParticles > 0) {
-        const Scene scene = benchmarkScene(options_.benchParticles);
+        const Scene scene = benchmarkScene(options_.benchParticles, 1,
+                                           options_.benchOverlays.find('R') != std::string::npos);
         world = makeWorld(scene);
         meta.name = "benchmark";
         meta.dt = scene.dt;

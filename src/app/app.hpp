@@ -70,7 +70,9 @@ struct AppOptions {
     std::string renderDriver;        ///< SDL render driver name ("software", ...); chosen if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;
-    /// Overlays the benchmark draws, by key: any of "V", "L" (all trails), "K", "D".
+    /// Overlays and instruments the benchmark draws, by key: any of "V", "L" (all trails), "K",
+    /// "D", "I", "J", "Q", "G", "U", and "R" (every particle turning, so that each draws its
+    /// spin mark).
     std::string benchOverlays;
     std::uint32_t seed = 0;  ///< random spawns; 0 = from the clock
     /// Record a video from the start (--record); with --bench, every frame, waiting for the

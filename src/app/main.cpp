@@ -78,12 +78,12 @@ int main(int argc, char** argv) {
     cli.add_option("--bench-overlays", options.benchOverlays,
                    "With --bench: also draw these overlays and instruments, by key: any of V "
                    "(momentum), L (all trails), K (plots), D (speed histogram), I (values "
-                   "table), J (last collision card), Q (ruler), G (grid), U (stopwatch), e.g. "
-                   "VLKD")
+                   "table), J (last collision card), Q (ruler), G (grid), U (stopwatch), and R "
+                   "(every particle turning, with its spin mark), e.g. VLKD")
         ->check([](const std::string& keys) {
-            return keys.find_first_not_of("VLKDIJQGU") == std::string::npos && !keys.empty()
+            return keys.find_first_not_of("VLKDIJQGUR") == std::string::npos && !keys.empty()
                        ? std::string()
-                       : "expected letters from VLKDIJQGU, got '" + keys + "'";
+                       : "expected letters from VLKDIJQGUR, got '" + keys + "'";
         });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
     std::string record;

@@ -111,8 +111,9 @@ TEST(Runner, OptionsOverrideTheScenesSolverBlock) {
 
 TEST(Runner, ObstaclePresetsRunWithEveryBallInTheBoxAndOutOfEveryObstacle) {
     const std::string dir = std::string(PSB_ASSETS_DIR) + "/scenes/";
-    for (const char* name : {"09-galton-board.json", "10-funnel.json", "11-hourglass.json",
-                             "12-ramp.json", "13-basketball-and-tennis-ball.json"}) {
+    for (const char* name :
+         {"09-galton-board.json", "10-funnel.json", "11-hourglass.json", "12-ramp.json",
+          "13-basketball-and-tennis-ball.json", "14-bowling.json"}) {
         SCOPED_TRACE(name);
         const Scene scene = loadScene(dir + name);
         RunOptions o;

@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -310,69 +312,117 @@ TEST(PresetDemonstrations, HourglassWithASevenCentimetreNeckDrainsInASecondInThe
     EXPECT_EQ(above(w, kHourglassNeck), 0);
 }
 
-// --- 12-ramp.json: two ramps, the lower one ending on the left wall ----------------------------
+// --- 12-ramp.json: a ball, a disc and a block race down three 20 degree ramps ----------------
 
-TEST(PresetDemonstrations, RampBallsEndInTheCornerOfTheLowerRampAndTheLeftWallInEveryMode) {
+/// The distance along a 20° ramp (down and to the right) of particle `i`'s centre, metres.
+double alongRamp(const World& w, std::size_t i) {
+    const double angle = 20.0 * std::numbers::pi / 180.0;
+    return w.particles().x[i] * std::cos(angle) + w.particles().y[i] * std::sin(angle);
+}
+
+TEST(PresetDemonstrations, RampBallAndDiscRollAtGSinThetaOverOnePlusKAndTheBlockSlides) {
+    // Rolling without slipping (0.2 >= k tan 20 / (1 + k): 0.10 for the ball, 0.12 for the
+    // disc) at g sin 20 / (1 + k); the block, which cannot turn, slides at
+    // g (sin 20 - 0.2 cos 20), in every mode (the exact mode rolls them as closed-form motion).
+    const double angle = 20.0 * std::numbers::pi / 180.0, g = 9.81;
+    const double ball = g * std::sin(angle) / 1.4, disc = g * std::sin(angle) / 1.5;
+    const double block = g * (std::sin(angle) - 0.2 * std::cos(angle));
+    EXPECT_NEAR(ball, 2.40, 0.005);  // the figures of the description
+    EXPECT_NEAR(disc, 2.24, 0.005);
+    EXPECT_NEAR(block, 1.51, 0.005);
     for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         SCOPED_TRACE(static_cast<int>(mode));
         const Scene s = presetIn("12-ramp.json", mode);
         World w = makeWorld(s);
-        runFor(w, s.dt, 1.0);
-        // On the way: sliding down the upper ramp, far from the corner.
-        EXPECT_GT(w.particles().x[4], 2.0);
-        runFor(w, s.dt, 7.0);
+        ASSERT_EQ(w.size(), 3u);
+        // Distances at 0.4, 0.8 and 1.2 s (before the first reaches the wall, at 1.75 s): the
+        // second difference over (0.4 s)² is the acceleration.
+        std::array<double, 3> start{};
+        for (std::size_t i = 0; i < 3; ++i)
+            start[i] = alongRamp(w, i);
+        std::array<std::array<double, 3>, 3> d{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            runFor(w, s.dt, 0.4);
+            for (std::size_t i = 0; i < 3; ++i)
+                d[k][i] = alongRamp(w, i);
+        }
+        const auto accel = [&](std::size_t i) {
+            return (d[2][i] - 2.0 * d[1][i] + d[0][i]) / (0.4 * 0.4);
+        };
+        EXPECT_NEAR(accel(2), block, 0.005 * block);
+        EXPECT_EQ(w.get(w.ids()[2]).angularVelocity, 0.0) << "the block never turns";
+        EXPECT_NEAR(accel(0), ball, 0.005 * ball);
+        EXPECT_NEAR(accel(1), disc, 0.005 * disc);
+        // Rolling: the rim's speed is the centre's, omega r = v.
+        for (std::size_t i = 0; i < 2; ++i) {
+            const Particle p = w.get(w.ids()[i]);
+            EXPECT_NEAR(p.angularVelocity * p.radius, p.velocity.norm(), 1e-3 * p.velocity.norm())
+                << i;
+        }
+        // The race, each from the same start on its ramp: the ball ahead of the disc, the disc
+        // ahead of the block.
+        EXPECT_GT(d[2][0] - start[0], d[2][1] - start[1] + 0.05);
+        EXPECT_GT(d[2][1] - start[1], d[2][2] - start[2] + 0.3);
+    }
+}
+
+TEST(PresetDemonstrations, RampBodiesEndAtRestAgainstTheRightWallOnTheirOwnRampsInEveryMode) {
+    for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
+        SCOPED_TRACE(static_cast<int>(mode));
+        const Scene s = presetIn("12-ramp.json", mode);
+        World w = makeWorld(s);
+        runFor(w, s.dt, 8.0);
         const ParticleArrays& p = w.particles();
-        const Obstacle& lower = w.obstacles()[1];
-        // All five, in the exact mode too: the ball squeezed against another as it lands on
-        // the lower ramp, which the rattle guard once put to rest there for good, is checked
-        // again 10 ms later and slides on when its neighbour has left.
-        const long inCorner =
-            std::count_if(p.x.begin(), p.x.end(), [](double x) { return x < 0.8; });
-        EXPECT_EQ(inCorner, 5);
-        for (std::size_t i = 0; i < p.size(); ++i) {
-            // Above the lower ramp, never under it.
-            const double rampY = lower.a.y() + (p.x[i] - lower.a.x()) *
-                                                   (lower.b.y() - lower.a.y()) /
-                                                   (lower.b.x() - lower.a.x());
+        for (std::size_t i = 0; i < 3; ++i) {
+            // Touching the right wall, resting on its own ramp (which ends there 1.456 m below
+            // where it starts), at rest to the mode's jitter.
+            EXPECT_NEAR(p.x[i], w.def().width - p.radius[i], 1e-3) << i;
+            const Obstacle& ramp = w.obstacles()[i];
+            const double rampY =
+                ramp.b.y() - ramp.radius / std::cos(20.0 * std::numbers::pi / 180.0);
             EXPECT_LT(p.y[i], rampY) << i;
-            EXPECT_LT(std::hypot(p.vx[i], p.vy[i]), 0.1) << i;  // at rest, to the mode's jitter
+            EXPECT_GT(p.y[i], rampY - 2.5 * p.radius[i]) << i;
+            EXPECT_LT(std::hypot(p.vx[i], p.vy[i]), 0.02) << i;
         }
     }
 }
 
-TEST(PresetDemonstrations, RampBallsRollDownWithGSinThetaOverOnePlusK) {
-    // Discs (k = 1/2) rolling without slipping (0.2 >= k tan 20 / (1 + k) = 0.12):
-    // a = g sin 20 / 1.5 = 2.2368 m/s^2 for every ball, whatever its size and mass, in every
-    // mode (not a block's g (sin 20 - 0.2 cos 20) = 1.5115 m/s^2). At 0.8 s and 1 s all five
-    // are on the upper ramp, past their landing bounces. The exact mode rolls them as
-    // closed-form motion: their acceleration is the closed form's to rounding.
-    const double angle = std::atan2(1.3963 - 0.45, 2.6);
-    const double rolling = 9.81 * std::sin(angle) / 1.5;
-    const double sliding = 9.81 * (std::sin(angle) - 0.2 * std::cos(angle));
-    EXPECT_NEAR(rolling, 2.2368, 1e-3);
-    EXPECT_NEAR(sliding, 1.5115, 1e-3);
-    for (StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
+// --- 14-bowling.json: slide, then roll ----------------------------------------------------------
+
+TEST(PresetDemonstrations, BowlingBallRollsAfterSlidingTheBlockStopsTheDrawShotComesBack) {
+    // v0 = 4 m/s, mu = 0.2, k = 2/5, r = 0.11 m. The ball without spin rolls from
+    // t* = k v0 / (mu g (1 + k)) at v0 / (1 + k); the block stops after v0² / (2 mu g); the ball
+    // with backspin omega0 = -150 rad/s rolls back at (v0 + k r omega0) / (1 + k) from
+    // t = (v0 - omega0 r) / (mu g (1 + 1/k)). The exact mode is left out: a block resting on
+    // the box's floor feels no kinetic friction there (docs/exact.md, Limits).
+    const double g = 9.81, mu = 0.2, v0 = 4.0, k = 0.4, r = 0.11, w0 = -150.0;
+    const double tStar = k * v0 / (mu * g * (1 + k));
+    const double rolling = v0 / (1 + k);
+    const double stop = v0 * v0 / (2 * mu * g);
+    const double back = (v0 + k * r * w0) / (1 + k);
+    const double tBack = (v0 - w0 * r) / (mu * g * (1 + 1 / k));
+    // The figures of the description.
+    EXPECT_NEAR(tStar, 0.58, 0.005);
+    EXPECT_NEAR(rolling, 2.86, 0.005);
+    EXPECT_NEAR(stop, 4.08, 0.005);
+    EXPECT_NEAR(back, -1.86, 0.005);
+    EXPECT_NEAR(tBack, 2.99, 0.005);
+    for (StepMode mode : {StepMode::Discrete, StepMode::Substep}) {
         SCOPED_TRACE(static_cast<int>(mode));
-        const Scene s = presetIn("12-ramp.json", mode);
+        const Scene s = presetIn("14-bowling.json", mode);
         World w = makeWorld(s);
-        const auto along = [&](std::size_t i) {
-            const ParticleArrays& p = w.particles();
-            return p.vx[i] * std::cos(angle) + p.vy[i] * std::sin(angle);
-        };
-        runFor(w, s.dt, 0.8);
-        std::vector<double> v08;
-        for (std::size_t i = 0; i < w.size(); ++i)
-            v08.push_back(along(i));
-        runFor(w, s.dt, 0.2);
-        for (std::size_t i = 0; i < w.size(); ++i) {
-            const double accel = (along(i) - v08[i]) / 0.2;
-            if (i < 3) {  // the last two still bounce a little at 0.8 s
-                if (mode != StepMode::Exact) {
-                    EXPECT_NEAR(along(i), along(0), 1e-3) << i;  // side by side in speed
-                }
-                EXPECT_NEAR(accel, rolling, (mode == StepMode::Exact ? 1e-9 : 0.01) * rolling) << i;
-            }
-        }
+        const auto particle = [&](std::size_t i) { return w.get(w.ids()[i]); };
+        runFor(w, s.dt, 0.4);
+        EXPECT_GT(particle(0).velocity.x() - particle(0).angularVelocity * r, 0.5)
+            << "still sliding before t*";
+        runFor(w, s.dt, 0.6);  // t = 1 s
+        EXPECT_NEAR(particle(0).velocity.x(), rolling, 0.002 * rolling);
+        EXPECT_NEAR(particle(0).angularVelocity * r, rolling, 0.002 * rolling);
+        runFor(w, s.dt, 2.5);  // t = 3.5 s
+        EXPECT_NEAR(particle(1).position.x() - 0.5, stop, 0.01);
+        EXPECT_EQ(particle(1).velocity.x(), 0.0);
+        EXPECT_NEAR(particle(2).velocity.x(), back, 0.002 * std::abs(back));
+        EXPECT_NEAR(particle(2).angularVelocity * r, back, 0.002 * std::abs(back));
     }
 }
 

@@ -46,7 +46,8 @@ TEST(Presets, TheNumberedPresetsComeInOrder) {
                               "10-funnel.json",
                               "11-hourglass.json",
                               "12-ramp.json",
-                              "13-basketball-and-tennis-ball.json"};
+                              "13-basketball-and-tennis-ball.json",
+                              "14-bowling.json"};
     ASSERT_EQ(files.size(), std::size(expected));
     for (std::size_t i = 0; i < files.size(); ++i)
         EXPECT_EQ(files[i].filename(), expected[i]);

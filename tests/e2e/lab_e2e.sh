@@ -6,9 +6,10 @@
 #   tests/e2e/lab_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
 #   the ramp preset, 900x800:
-#   Q, then the ruler's ends dragged onto the ramp -> the ruler reads the ramp's 20 degrees and
+#   Q, then the ruler's ends dragged onto a ramp   -> the ruler reads the ramp's 20 degrees and
 #                                                     the length between the two points
-#   Shift+G                                        -> the grid is drawn (its colour) and named
+#   Shift+G                                        -> the grid is drawn (its colour), its squares
+#                                                     the round size the zoom asks for
 #   U, Space, 1.5 s, Space                         -> the stopwatch reads the simulated time
 #   the gas preset (key 4), run 6 s of simulated time
 #                                                  -> the pressure measured on the walls is the
@@ -27,12 +28,12 @@ LOG="$OUT/stdout.log"
 
 start_app "$BIN" --renderer software --window 900x800 --seed 7 --screenshot-dir "$OUT" \
     "$ROOT/assets/scenes/12-ramp.json"
-wait_title "5 particles - PAUSED"
+wait_title "3 particles - PAUSED"
 pass "window ${WIDTH}x$HEIGHT, box at ($BX, $BY), $ZOOM px/m"
 
-# --- the ruler laid along the ramp: (0, 0.45) to (2.6, 1.3963), 20 degrees ----------------------
-# Its ends start across the middle of the 4 m x 3 m box, at (1, 1.5) and (3, 1.5). Drag each onto
-# the ramp's face at 20 % and 80 % of its length.
+# --- the ruler laid along the top ramp: (0, 0.5) to (4, 1.9559), 20 degrees -----------------------
+# Its ends start across the middle of the 4 m x 3.9 m box, at (1, 1.95) and (3, 1.95). Drag each
+# onto the ramp's face at 20 % and 80 % of its length.
 key q
 wait_log "\[I\] Ruler on"
 move_end() {  # move_end FROM_X FROM_Y TO_X TO_Y (metres)
@@ -45,29 +46,39 @@ move_end() {  # move_end FROM_X FROM_Y TO_X TO_Y (metres)
     xdotool "${chain[@]}" sleep 0.1 mouseup 1
     sleep 0.2
 }
-move_end 1 1.5 0.52 0.63926
+move_end 1 1.95 0.8 0.79118
 wait_count "\[I\] Ruler: " 1
-move_end 3 1.5 2.08 1.20704
+move_end 3 1.95 3.2 1.66472
 wait_count "\[I\] Ruler: " 2
 snap ruler
 ruler=$(section ruler Ruler)
 [[ -n "$ruler" ]] || fail "the screenshot's text has no Ruler section"
 read -r len deg < <(sed -E 's/^([0-9.]+) m, ([0-9.]+)°.*/\1 \2/' <<<"$ruler")
-# 0.6 of the ramp's 2.7669 m, to a pixel at each end.
+# 0.6 of the ramp's 4.2567 m, to a pixel at each end.
 awk -v l="$len" -v d="$deg" -v z="$ZOOM" 'BEGIN {
     tol = 2.0 / z
-    exit !(l > 1.6601 - tol && l < 1.6601 + tol && d > 19.6 && d < 20.4) }' ||
-    fail "the ruler along the ramp reads '$ruler', not 1.66 m at 20.0 degrees"
+    exit !(l > 2.5540 - tol && l < 2.5540 + tol && d > 19.7 && d < 20.3) }' ||
+    fail "the ruler along the ramp reads '$ruler', not 2.55 m at 20.0 degrees"
 grep -q "particle" <<<"$(section ruler HUD)" || fail "no HUD"
-[[ $(title) == *"5 particles - PAUSED"* ]] || fail "the ruler's drags changed the scene: $(title)"
+[[ $(title) == *"3 particles - PAUSED"* ]] || fail "the ruler's drags changed the scene: $(title)"
 pass "the ruler along the ramp: $ruler"
 
 # --- the grid ------------------------------------------------------------------------------------
 key shift+g
 wait_log "\[I\] Grid on"
 snap grid
-grep -q "^Grid: 500 mm squares" <<<"$(section grid Grid)" ||
-    fail "the grid is not in 0.5 m squares: $(section grid Grid)"
+# Squares of a round size at least 60 pixels wide at the zoom the window chose.
+read -r step < <(awk -v z="$ZOOM" 'BEGIN {
+    least = 60 / z; p = 10 ^ int(log(least) / log(10) - (least < 1))
+    if (p >= least) { print p; exit }
+    if (2 * p >= least) { print 2 * p; exit }
+    if (5 * p >= least) { print 5 * p; exit }
+    print 10 * p }')
+legend=$(section grid Grid)
+read -r shown < <(sed -E 's/^Grid: ([0-9.]+) (m|mm) squares.*/\1 \2/' <<<"$legend" |
+    awk '{ print ($2 == "mm") ? $1 / 1000 : $1 }')
+awk -v a="$shown" -v b="$step" 'BEGIN { exit !(a > 0.999 * b && a < 1.001 * b) }' ||
+    fail "the grid's squares are not $step m at $ZOOM px/m: $legend"
 read -r _ _ n < <(centroid "$OUT/grid.png" 55 66 84)
 ((n > 500)) || fail "only $n pixels of the grid's colour on screen"
 pass "the grid: $(section grid Grid), $n pixels of its lines"

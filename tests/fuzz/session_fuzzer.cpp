@@ -116,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 57)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 59)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -139,10 +139,10 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                                in.ConsumeIntegralInRange<int>(-10, 4000)};
         case 11: {
             // A key that shows or hides something, the trails key, or the help.
-            const int k = in.ConsumeIntegralInRange<int>(0, 10);
+            const int k = in.ConsumeIntegralInRange<int>(0, 11);
             if (k == 9) return cmd::ToggleHelp{};
             if (k == 10) return cmd::SetTrails{static_cast<int>(nextTrailMode(s.view().trails))};
-            const auto option = static_cast<ShowOption>(k);
+            const auto option = k == 11 ? ShowOption::Spin : static_cast<ShowOption>(k);
             return cmd::SetShow{option, !s.view().shown(option)};
         }
         case 12:
@@ -218,13 +218,13 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         case 38:
             return cmd::EditParticle{
                 someParticle(in, s),
-                static_cast<ParticleField>(in.ConsumeIntegralInRange<int>(0, 5)), text(in)};
+                static_cast<ParticleField>(in.ConsumeIntegralInRange<int>(0, 7)), text(in)};
         case 39:
             return cmd::DeleteParticle{someParticle(in, s)};
         case 40:
             return cmd::Select{someParticle(in, s)};
         case 41:
-            return cmd::SetShow{static_cast<cmd::ShowOption>(in.ConsumeIntegralInRange<int>(0, 10)),
+            return cmd::SetShow{static_cast<cmd::ShowOption>(in.ConsumeIntegralInRange<int>(0, 11)),
                                 in.ConsumeBool()};
         case 42:
             return in.ConsumeBool() ? Command{cmd::ToggleControls{}} : Command{cmd::Back{}};
@@ -298,6 +298,16 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                                           : kSeconds[in.ConsumeIntegralInRange<int>(0, 5)],
                                       in.ConsumeBool()};
         }
+        case 57: {
+            static const double kBetas[] = {
+                -1.0, 1.0, 0.0, -1.5, 2.0, 1e300, std::numeric_limits<double>::quiet_NaN()};
+            return cmd::SetTangentialRestitution{in.ConsumeBool()
+                                                     ? value(in, -1.5, 1.5)
+                                                     : kBetas[in.ConsumeIntegralInRange<int>(0, 6)],
+                                                 in.ConsumeBool()};
+        }
+        case 58:
+            return cmd::SetDiscsTurn{in.ConsumeBool()};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }
@@ -309,6 +319,13 @@ void checkWorld(const World& w, int step) {
         if (!std::isfinite(p.x[i]) || !std::isfinite(p.y[i]) || !std::isfinite(p.vx[i]) ||
             !std::isfinite(p.vy[i])) {
             violated("frame", "particle " + std::to_string(i) + " is not finite after command " +
+                                  std::to_string(step));
+        }
+        if (p.rotation && (!std::isfinite(p.angle[i]) || !std::isfinite(p.omega[i]) ||
+                           !(p.inertiaFactor[i] > 0.0 && p.inertiaFactor[i] <= 1.0) ||
+                           (p.fixedRotation[i] != 0 && p.omega[i] != 0.0))) {
+            violated("frame", "particle " + std::to_string(i) +
+                                  "'s rotation is out of its rules after command " +
                                   std::to_string(step));
         }
     }

@@ -324,6 +324,11 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Values table", v.values, cmd::ShowOption::Values,
         "Every particle's signed position, velocity, momentum and energy, with the totals, in a "
         "window; position, velocity and mass can be typed in (key I)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    box("Spin", v.spin, cmd::ShowOption::Spin,
+        "A contrasting quarter of each disc that turns, turning with it: a rolling ball's goes "
+        "round, a sliding one's does not. Particles with fixed "
+        "rotation have none, and nothing turns without friction or a spin given by hand");
     box("Last collision card", v.collision, cmd::ShowOption::Collision,
         "The selected particle's last collision (with none selected, the last between two "
         "particles): velocities, momenta and energy just before and just after (key J)");

@@ -153,8 +153,8 @@ class ControlPanel {
     std::optional<std::pair<ParticleId, ParticleField>> valuesEditing_;
     std::array<char, 64> valuesText_{};
     /// The selected particle's table: each field's text while it is typed in.
-    std::array<std::array<char, 40>, 6> fieldText_{};
-    std::array<bool, 6> fieldActive_{};
+    std::array<std::array<char, 40>, 8> fieldText_{};
+    std::array<bool, 8> fieldActive_{};
 };
 
 }  // namespace psb::app

@@ -88,8 +88,10 @@ void GuiContext::loadFont(const GuiOptions& options, float pixelScale) {
     ImFontConfig config;
     config.OversampleH = 1;
     config.PixelSnapH = true;
+    // Latin-1 (ImGui's default) and Greek, for the physics' letters (omega, beta, mu, theta).
+    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0};
     if (io.Fonts->AddFontFromFileTTF(options.font.string().c_str(), options.fontPixels * pixelScale,
-                                     &config) == nullptr) {
+                                     &config, kRanges) == nullptr) {
         throw std::runtime_error("GuiContext: cannot load font " + options.font.string());
     }
     io.FontGlobalScale = 1.f / pixelScale;

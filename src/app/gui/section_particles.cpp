@@ -12,6 +12,7 @@
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
 #include "session/units.hpp"
+#include "view/inspector_lines.hpp"
 
 namespace psb::app {
 
@@ -26,10 +27,29 @@ struct EditableField {
     const char* unit;
 };
 constexpr EditableField kFields[] = {
-    {ParticleField::X, "x", "m"},        {ParticleField::Y, "y", "m"},
-    {ParticleField::Vx, "vx", "m/s"},    {ParticleField::Vy, "vy", "m/s"},
-    {ParticleField::Mass, "mass", "kg"}, {ParticleField::Radius, "radius", "m"},
+    {ParticleField::X, "x", "m"},
+    {ParticleField::Y, "y", "m"},
+    {ParticleField::Vx, "vx", "m/s"},
+    {ParticleField::Vy, "vy", "m/s"},
+    {ParticleField::Mass, "mass", "kg"},
+    {ParticleField::Radius, "radius", "m"},
+    {ParticleField::Omega, "\u03c9", "rad/s"},
+    {ParticleField::Inertia, "k", "I = k m r\u00b2"},
 };
+constexpr const char* fieldHelp(ParticleField f) {
+    switch (f) {
+        case ParticleField::Omega:
+            return "The angular velocity: how fast it turns, positive clockwise on screen. Type "
+                   "a new value and press Enter; a particle with fixed rotation keeps 0";
+        case ParticleField::Inertia:
+            return "The inertia factor k in the moment of inertia I = k m r\u00b2, above 0 and "
+                   "at most 1: 1/2 a uniform disc, 2/5 a ball, 1 a ring. The smaller k, the "
+                   "faster it rolls down a slope";
+        default:
+            return "Type a new value and press Enter (or click elsewhere); a value the world "
+                   "cannot take is refused with the reason";
+    }
+}
 
 double fieldValue(const Particle& p, ParticleField f) {
     switch (f) {
@@ -45,6 +65,10 @@ double fieldValue(const Particle& p, ParticleField f) {
             return p.mass;
         case ParticleField::Radius:
             return p.radius;
+        case ParticleField::Omega:
+            return p.angularVelocity;
+        case ParticleField::Inertia:
+            return p.inertiaFactor;
     }
     return 0.0;
 }
@@ -111,14 +135,26 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
             out_.emplace_back(cmd::EditParticle{p->id, f.field, text.data()});
             fieldActive_[k] = false;
         }
-        tip("Type a new value and press Enter (or click elsewhere); a value the world cannot take "
-            "is refused with the reason");
+        tip(fieldHelp(f.field));
         ImGui::PopID();
     }
     const double speed = p->velocity.norm();
     row("speed", quantity(speed, "m/s"), "How fast it moves, whatever the direction");
     row("momentum", quantity(p->mass * speed, "kg m/s", false), "m v: mass times speed");
-    row("kinetic energy", quantity(0.5 * p->mass * speed * speed, "J"), "\u00bd m v\u00b2");
+    const SpinReading spin = spinReading(*p);
+    if (s.world().rotationInUse()) {
+        row("turns",
+            p->fixedRotation ? std::string("never (fixed rotation)")
+                             : quantity(spin.revPerMin, "rev/min", false),
+            "Turns a minute, clockwise when positive; a particle with fixed rotation slides "
+            "without ever turning");
+        row("kinetic energy", quantity(spin.translational, "J"),
+            "Of its motion along its path, \u00bd m v\u00b2");
+        row("  of rotation", quantity(spin.rotational, "J"),
+            "Of its turning, \u00bd I \u03c9\u00b2 with I = k m r\u00b2");
+    } else {
+        row("kinetic energy", quantity(spin.translational, "J"), "\u00bd m v\u00b2");
+    }
     ImGui::EndTable();
     if (!s.editRefusal().empty()) {
         widgets::wrappedColored(ImVec4(1.f, 0.55f, 0.45f, 1.f), "Refused: " + s.editRefusal());

@@ -85,7 +85,17 @@ void ControlPanel::physics(const Session& s) {
     }
     mark("Friction");
     tip("Friction where surfaces touch: 0 is ice; higher values take more of the sliding "
-        "along the contact away in each collision.");
+        "along the contact away in each collision, and turn discs that touch: a ball on a "
+        "slope rolls.");
+    double beta = d.tangentialRestitution;
+    if (widgets::slider("Roughness", beta, -1.0, 1.0, "%.2f", continues)) {
+        out_.emplace_back(cmd::SetTangentialRestitution{beta, continues});
+    }
+    mark("Roughness");
+    tip("Tangential restitution \u03b2: what a gripping contact does to the slip of the touching "
+        "surfaces. 0 stops it (the usual choice), 1 reverses it (perfectly rough discs that "
+        "keep their energy, like a superball), -1 leaves it (smooth discs). Acts only with "
+        "friction.");
 
     const bool gravityOn = d.gravity != Vec2::Zero();
     bool on = gravityOn;
@@ -107,6 +117,13 @@ void ControlPanel::physics(const Session& s) {
     if (ImGui::Checkbox("Walls", &walls)) out_.emplace_back(cmd::SetWalls{walls});
     mark("Walls");
     tip("The four walls of the box; without them particles fly away");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    bool turn = s.spawn().turn;
+    if (ImGui::Checkbox("Discs turn", &turn)) out_.emplace_back(cmd::SetDiscsTurn{turn});
+    mark("Discs turn");
+    tip("Whether the particles you launch or add from now on turn: friction spins them and they "
+        "roll. Unticked they have fixed rotation and slide without turning, as a block or a "
+        "puck. The particles already there keep theirs.");
     // Heat and cool: every speed times a factor, so the temperature changes by its square.
     if (ImGui::Button("Heat")) out_.emplace_back(cmd::ScaleSpeeds{kHeatFactor});
     mark("Heat");

@@ -69,17 +69,34 @@ void ControlPanel::readouts(const Session& s) {
         readout("Time", quantity(w.time(), "s") + (s.paused() ? ", paused" : ""),
                 "Simulated time since the scene started");
         readout("Particles", std::to_string(w.size()));
+        const bool rotation = w.rotationInUse();
         readout("Kinetic energy", quantity(o.kineticEnergy, "J"),
-                "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
+                rotation ? "The energy of motion along the paths, the sum of \u00bd m v\u00b2 "
+                           "over every particle (the turning's is below)"
+                         : "The energy of motion, the sum of \u00bd m v\u00b2 over every particle");
+        if (rotation) {
+            readout("Rotational energy", quantity(o.rotationalEnergy, "J"),
+                    "The energy of turning, the sum of \u00bd I \u03c9\u00b2 with I = k m "
+                    "r\u00b2: a rolling ball carries part of its energy this way");
+        }
         if (gravity) {
-            readout("Mechanical energy", quantity(o.kineticEnergy + o.potentialEnergy, "J"),
-                    "Kinetic plus potential energy (m g h): what elastic collisions under gravity "
-                    "keep constant");
+            readout("Mechanical energy",
+                    quantity(o.kineticEnergy + o.rotationalEnergy + o.potentialEnergy, "J"),
+                    rotation ? "Kinetic, rotational and potential energy (m g h): what elastic "
+                               "collisions and rolling without slipping keep constant"
+                             : "Kinetic plus potential energy (m g h): what elastic collisions "
+                               "under gravity keep constant");
         }
         readout("Momentum", vector(o.momentum, "kg m/s"),
                 "The total momentum, the sum of m v: walls and gravity change it, collisions "
                 "between particles never do");
         readout("  size", quantity(o.momentum.norm(), "kg m/s", false));
+        if (rotation) {
+            readout("Angular momentum", quantity(o.angularMomentum, "kg m\u00b2/s", false),
+                    "The total angular momentum about the box's top-left corner, orbital (m r "
+                    "\u00d7 v) plus spin (I \u03c9), positive clockwise on screen: collisions "
+                    "between particles never change it, the walls and gravity do");
+        }
         if (const std::optional<GasReading> gas = s.gasReading()) {
             for (const GasLine& line : gasLines(*gas))
                 readout(line.name.c_str(), line.value, line.help.c_str());

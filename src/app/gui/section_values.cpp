@@ -48,10 +48,12 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
     mark("values Export");
     widgets::tip("Write every particle's values as a CSV file (values.csv)");
     ImGui::SameLine();
-    ImGui::TextDisabled("click a number to select; type in x, y, vx, vy or mass");
+    ImGui::TextDisabled(s.world().rotationInUse()
+                            ? "click a number to select; type in x, y, vx, vy, \u03c9 or mass"
+                            : "click a number to select; type in x, y, vx, vy or mass");
     if (!t.note.empty()) widgets::wrappedDisabled(t.note);
 
-    const auto& columns = valuesColumns();
+    const std::vector<ValuesColumn>& columns = t.columns;
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_ScrollY;
     if (!ImGui::BeginTable("values", static_cast<int>(columns.size()) + 1, flags)) {
@@ -117,8 +119,8 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
     ImGui::TableNextColumn();
     ImGui::TextUnformatted("total");
     widgets::tip(
-        "The sums over every particle: the total momentum (a vector), kinetic energy "
-        "and mass");
+        "The sums over every particle: the total momentum (a vector), kinetic energy (and, "
+        "for discs that turn, rotational kinetic energy) and mass");
     for (std::size_t k = 0; k < columns.size(); ++k) {
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(valuesCell(t.totals[k]).c_str());

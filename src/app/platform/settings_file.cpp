@@ -32,6 +32,8 @@ const char* keyOf(ShowOption option) {
             return "ruler";
         case ShowOption::Grid:
             return "grid";
+        case ShowOption::Spin:
+            return "spin";
     }
     return "";
 }

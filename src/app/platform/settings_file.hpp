@@ -1,6 +1,7 @@
 #pragma once
 // The settings the page keeps between visits (the web build; the desktop program keeps none):
-// what is shown (the Show section's checkboxes, keys A, S, V, K, D, O), as a small JSON file,
+// what is shown (the Show section's checkboxes, keys A, S, V, K, D, O, J, I, Q, Shift+G), as a small JSON
+// file,
 //   {"version": 1, "show": {"arrows": true, "labels": false, ...}}
 // which browser_settings.hpp keeps in the browser's storage.
 
@@ -14,9 +15,10 @@ namespace psb::app {
 
 /// The options kept, in their file's order.
 inline constexpr ShowOption kKeptOptions[] = {
-    ShowOption::Arrows, ShowOption::Labels,  ShowOption::Momentum,  ShowOption::Plots,
-    ShowOption::Speeds, ShowOption::Profile, ShowOption::Collision, ShowOption::Values,
-    ShowOption::Ruler,  ShowOption::Grid};
+    ShowOption::Arrows,    ShowOption::Labels, ShowOption::Momentum,
+    ShowOption::Plots,     ShowOption::Speeds, ShowOption::Profile,
+    ShowOption::Collision, ShowOption::Values, ShowOption::Ruler,
+    ShowOption::Grid,      ShowOption::Spin};
 
 /// `view`'s kept options as the file's text.
 [[nodiscard]] std::string settingsText(const ViewOptions& view);

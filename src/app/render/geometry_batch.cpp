@@ -32,6 +32,18 @@ void GeometryBatch::polygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoin
         indices_.push_back(base + k);
 }
 
+void GeometryBatch::texturedPolygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoint d,
+                                     SDL_Color color, SDL_FPoint ua, SDL_FPoint ub, SDL_FPoint uc,
+                                     SDL_FPoint ud) {
+    const int base = static_cast<int>(vertices_.size());
+    vertices_.push_back({a, color, ua});
+    vertices_.push_back({b, color, ub});
+    vertices_.push_back({c, color, uc});
+    vertices_.push_back({d, color, ud});
+    for (int k : {0, 1, 2, 0, 2, 3})
+        indices_.push_back(base + k);
+}
+
 int GeometryBatch::draw(SDL_Renderer* renderer, SDL_Texture* texture) const {
     if (indices_.empty()) return 0;
     return SDL_RenderGeometry(renderer, texture, vertices_.data(),

@@ -29,6 +29,11 @@ class GeometryBatch {
     void polygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoint d, SDL_Color color,
                   SDL_FPoint uv = {0.f, 0.f});
 
+    /// A convex quadrilateral a-b-c-d (pixels) showing the texture at ua, ub, uc, ud (normalised
+    /// texture coordinates): a texture's piece turned or sheared.
+    void texturedPolygon4(SDL_FPoint a, SDL_FPoint b, SDL_FPoint c, SDL_FPoint d, SDL_Color color,
+                          SDL_FPoint ua, SDL_FPoint ub, SDL_FPoint uc, SDL_FPoint ud);
+
     /// One SDL_RenderGeometry call (texture may be null). Returns SDL's result (0 on success).
     int draw(SDL_Renderer* renderer, SDL_Texture* texture) const;
 

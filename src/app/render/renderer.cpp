@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "render/obstacle_drawing.hpp"
+#include "render/spin_mark.hpp"
 #include "render/text.hpp"
 #include "session/units.hpp"
 
@@ -151,6 +152,8 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
     // speed one step of gravity gives it (the contact takes it back the next step): at rest,
     // no arrow; its minimum arrow pointed through the floor like a leak.
     const double resting = restingSpeed(world, frame);
+    // A world that keeps no rotation has no angles to show (and no arrays to read).
+    const bool spin = options.spin && p.rotation;
     std::vector<std::size_t> visible;
     visible.reserve(p.size());
     arrowLength_.clear();
@@ -182,6 +185,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
         const SDL_Color c{p.color[i].r, p.color[i].g, p.color[i].b, 255};
         discs_.quad(static_cast<float>(s.x() - r), static_cast<float>(s.y() - r),
                     static_cast<float>(s.x() + r), static_cast<float>(s.y() + r), c);
+        if (spin && r >= kSpinMarkPixels && p.fixedRotation[i] == 0) {
+            addSpinMark(discs_, static_cast<float>(s.x()), static_cast<float>(s.y()),
+                        static_cast<float>(r), p.angle[i], p.color[i]);
+        }
     }
 
     if (options.arrows) {

@@ -3,7 +3,8 @@
 // app, a software renderer over an offscreen surface in the tests.
 //
 // Each layer is one batched SDL_RenderGeometry call whatever the particle count: discs are
-// quads over one anti-aliased circle texture tinted by vertex colour, arrows are untextured
+// quads over one anti-aliased circle texture tinted by vertex colour (with the spoke of each
+// turning disc, spin_mark.hpp, in a world that keeps rotation), arrows are untextured
 // triangles, labels are glyph quads over the font atlas with their black boxes in one more
 // batch. Particles outside the viewport are skipped before any geometry is built.
 //

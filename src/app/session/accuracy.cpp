@@ -7,7 +7,9 @@
 namespace psb::app {
 
 double monitoredEnergy(const World& world) {
-    return world.def().gravity == Vec2::Zero() ? kineticEnergy(world) : mechanicalEnergy(world);
+    // The energy of turning counts too (0 in a world that keeps no rotation).
+    return world.def().gravity == Vec2::Zero() ? kineticEnergy(world) + rotationalEnergy(world)
+                                               : mechanicalEnergy(world);
 }
 
 void AccuracyMonitor::resetReference(double kineticEnergy) {

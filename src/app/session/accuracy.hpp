@@ -20,9 +20,9 @@
 
 namespace psb::app {
 
-/// The energy whose drift the HUD shows: kinetic, or kinetic + potential when the world has
-/// gravity (under gravity kinetic energy alone is not conserved, so its drift would look like
-/// energy lost or made).
+/// The energy whose drift the HUD shows: kinetic (of translation and rotation), plus potential
+/// when the world has gravity (under gravity kinetic energy alone is not conserved, so its drift
+/// would look like energy lost or made).
 [[nodiscard]] double monitoredEnergy(const World& world);
 
 class AccuracyMonitor {

@@ -227,6 +227,20 @@ struct SetFriction {
     double value = 0.0;  ///< Coulomb coefficient, >= 0
     bool continues = false;
 };
+/// The tangential restitution β of rough contacts, in [−1, 1] (WorldDef::tangentialRestitution):
+/// 0 a sticking contact stops the slip, 1 perfectly rough (it reverses it, keeping the energy),
+/// −1 smooth.
+struct SetTangentialRestitution {
+    static constexpr Traits traits = kEditsPastPrompt;
+    double value = 0.0;
+    bool continues = false;
+};
+/// Whether particles made from now on (launched, spawned) turn, or have fixed rotation (they
+/// slide without turning, as a block or a puck): the Physics section's "Discs turn".
+struct SetDiscsTurn {
+    static constexpr Traits traits = kEditsPastPrompt;
+    bool on = true;
+};
 /// Gravity on (`g` m/s² along `direction`, straight down unless said) or off.
 struct SetGravity {
     static constexpr Traits traits = kEditsPastPrompt;
@@ -435,6 +449,7 @@ using Command = std::variant<
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
     cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings,
-    cmd::Stopwatch, cmd::ScaleSpeeds, cmd::SetArrowScale>;
+    cmd::Stopwatch, cmd::ScaleSpeeds, cmd::SetArrowScale, cmd::SetTangentialRestitution,
+    cmd::SetDiscsTurn>;
 
 }  // namespace psb::app

@@ -72,6 +72,10 @@ const char* fieldName(ParticleField f) {
             return "mass";
         case ParticleField::Radius:
             return "radius";
+        case ParticleField::Omega:
+            return "omega";
+        case ParticleField::Inertia:
+            return "k";
     }
     return "?";
 }
@@ -86,6 +90,10 @@ const char* fieldName(EditField f) {
             return "vx";
         case EditField::Vy:
             return "vy";
+        case EditField::Omega:
+            return "omega";
+        case EditField::Inertia:
+            return "k";
     }
     return "?";
 }
@@ -99,6 +107,10 @@ const char* fieldUnit(EditField f) {
         case EditField::Vx:
         case EditField::Vy:
             return "m/s";
+        case EditField::Omega:
+            return "rad/s";
+        case EditField::Inertia:
+            return "(I = k m r\u00b2)";
     }
     return "";
 }
@@ -108,8 +120,9 @@ void EditPrompt::open(const Particle& p) {
     fresh_ = true;
     target_ = p.id;
     field_ = EditField::Mass;
-    texts_ = {formatValue(p.mass), formatValue(p.radius), formatValue(p.velocity.x()),
-              formatValue(p.velocity.y())};
+    texts_ = {
+        formatValue(p.mass),         formatValue(p.radius),          formatValue(p.velocity.x()),
+        formatValue(p.velocity.y()), formatValue(p.angularVelocity), formatValue(p.inertiaFactor)};
     error_.clear();
 }
 
@@ -158,7 +171,17 @@ EditResult applyEdit(World& world, ParticleId id,
         if (!parsed) return {false, why};
         v[static_cast<std::size_t>(k)] = *parsed;
     }
-    return setChecked(world, id, v[0], v[1], world.get(id).position, Vec2(v[2], v[3]));
+    EditedValues e = valuesOf(world.get(id));
+    e.mass = v[0];
+    e.radius = v[1];
+    e.velocity = Vec2(v[2], v[3]);
+    e.omega = v[4];
+    e.inertiaFactor = v[5];
+    return setChecked(world, id, e);
+}
+
+EditedValues valuesOf(const Particle& p) {
+    return {p.mass, p.radius, p.position, p.velocity, p.angularVelocity, p.inertiaFactor};
 }
 
 EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
@@ -168,8 +191,7 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
     const auto value = parseNumber(fieldName(field), text, why);
     if (!value) return {false, why};
     const Particle p = world.get(id);
-    double mass = p.mass, radius = p.radius;
-    Vec2 position = p.position, velocity = p.velocity;
+    EditedValues e = valuesOf(p);
     const WorldDef& def = world.def();
     const auto inside = [&](double v, double extent) -> std::optional<EditResult> {
         if (def.walls && (v < p.radius || v > extent - p.radius)) {
@@ -183,31 +205,40 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
     switch (field) {
         case ParticleField::X:
             if (auto refused = inside(*value, def.width)) return *refused;
-            position.x() = *value;
+            e.position.x() = *value;
             break;
         case ParticleField::Y:
             if (auto refused = inside(*value, def.height)) return *refused;
-            position.y() = *value;
+            e.position.y() = *value;
             break;
         case ParticleField::Vx:
-            velocity.x() = *value;
+            e.velocity.x() = *value;
             break;
         case ParticleField::Vy:
-            velocity.y() = *value;
+            e.velocity.y() = *value;
             break;
         case ParticleField::Mass:
-            mass = *value;
+            e.mass = *value;
             break;
         case ParticleField::Radius:
-            radius = *value;
+            e.radius = *value;
+            break;
+        case ParticleField::Omega:
+            e.omega = *value;
+            break;
+        case ParticleField::Inertia:
+            e.inertiaFactor = *value;
             break;
     }
-    return setChecked(world, id, mass, radius, position, velocity);
+    return setChecked(world, id, e);
 }
 
-EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& wanted,
-                      const Vec2& velocity) {
+EditResult setChecked(World& world, ParticleId id, const EditedValues& values) {
     const WorldDef& def = world.def();
+    const double mass = values.mass, radius = values.radius;
+    const Vec2& wanted = values.position;
+    const Vec2& velocity = values.velocity;
+    const double omega = values.omega, k = values.inertiaFactor;
 
     if (!(mass >= std::numeric_limits<double>::min())) {
         return {false, "mass: must be > 0 kg, got " + formatValue(mass)};
@@ -222,12 +253,32 @@ EditResult setChecked(World& world, ParticleId id, double mass, double radius, c
     if (!std::isfinite(0.5 * mass * velocity.squaredNorm())) {
         return {false, "mass and velocity: the kinetic energy would overflow"};
     }
+    if (!(k > 0.0 && k <= 1.0)) {
+        return {false,
+                "k: the inertia factor must be above 0 and at most 1 (1/2 a disc, 2/5 a "
+                "ball, 1 a ring), got " +
+                    formatValue(k)};
+    }
+    // The rim's speed, as a speed: a disc that turns a thousand times across the box per second
+    // turns many times in one step.
+    if (!(std::abs(omega) * radius <= maxSpeed)) {
+        return {false, "omega: the rim would move at " + formatValue(std::abs(omega) * radius) +
+                           " m/s, faster than " + formatValue(maxSpeed) + " m/s (" +
+                           formatValue(kMaxEditSpeedBoxes) + " box sizes per second)"};
+    }
+    if (!std::isfinite(0.5 * k * mass * radius * radius * omega * omega)) {
+        return {false, "mass and omega: the rotational energy would overflow"};
+    }
     if (def.walls && (2.0 * radius > def.width || 2.0 * radius > def.height)) {
         return {false, "radius: " + formatValue(radius) + " m does not fit in the " +
                            formatValue(def.width) + " x " + formatValue(def.height) + " m box"};
     }
 
     const Particle old = world.get(id);
+    if (old.fixedRotation && omega != 0.0) {
+        return {false, "omega: particle " + std::to_string(particleNumber(id)) +
+                           " has fixed rotation (it never turns), so its angular velocity stays 0"};
+    }
     Vec2 position = wanted;
     if (def.walls) {
         position = {std::clamp(position.x(), radius, def.width - radius),
@@ -259,11 +310,17 @@ EditResult setChecked(World& world, ParticleId id, double mass, double radius, c
         world.setRadius(id, radius);
         world.setPosition(id, position);
         world.setVelocity(id, velocity);
+        // Only when changed: a world that keeps no rotation keeps none after an edit of the
+        // rest.
+        if (k != old.inertiaFactor) world.setInertiaFactor(id, k);
+        if (omega != old.angularVelocity) world.setAngularVelocity(id, omega);
     } catch (const InvalidArgument& e) {
         world.setMass(id, old.mass);
         world.setRadius(id, old.radius);
         world.setPosition(id, old.position);
         world.setVelocity(id, old.velocity);
+        if (k != old.inertiaFactor) world.setInertiaFactor(id, old.inertiaFactor);
+        if (omega != old.angularVelocity) world.setAngularVelocity(id, old.angularVelocity);
         return {false, e.what()};
     }
     char buf[200];
@@ -273,6 +330,11 @@ EditResult setChecked(World& world, ParticleId id, double mass, double radius, c
                   formatValue(radius).c_str(), formatValue(velocity.x()).c_str(),
                   formatValue(velocity.y()).c_str());
     std::string message = buf;
+    if (world.rotationInUse()) {
+        std::snprintf(buf, sizeof buf, ", omega %s rad/s, k %s", formatValue(omega).c_str(),
+                      formatValue(k).c_str());
+        message += buf;
+    }
     if (position != wanted) {
         std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
                       position.x(), position.y());

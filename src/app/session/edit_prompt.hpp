@@ -2,16 +2,19 @@
 // Editing the selected particle from the keyboard, without SDL (the app feeds it the text of
 // SDL_TEXTINPUT events and the Tab, Backspace, Enter and Esc keys).
 //
-// The prompt holds four text fields, mass (kg), radius (m), vx and vy (m/s), filled with the
-// particle's values when it opens. Tab moves to the next field; the first character typed into
-// a field just entered replaces its text (as if it were selected). Enter hands the four texts
-// to applyEdit, which applies all of them or none.
+// The prompt holds six text fields, mass (kg), radius (m), vx and vy (m/s), the angular
+// velocity omega (rad/s, positive clockwise on screen) and the inertia factor k (I = k m r²),
+// filled with the particle's values when it opens. Tab moves to the next field; the first
+// character typed into a field just entered replaces its text (as if it were selected). Enter
+// hands the six texts to applyEdit, which applies all of them or none.
 //
 // What applyEdit accepts, so that an edit can never put the world in a state it would refuse
 // from a scene file:
 // - every field a finite decimal number (NaN, inf, "12kg" and empty fields are refused);
 // - mass a positive normal double (World::setMass's rule), radius > 0;
-// - speed at most kMaxEditSpeedBoxes box sizes per second, and a finite kinetic energy;
+// - speed at most kMaxEditSpeedBoxes box sizes per second, and a finite kinetic energy; the
+//   same for the rim's speed |omega| r and the rotational energy;
+// - k in (0, 1] (World::setInertiaFactor's rule); a fixed-rotation particle only omega 0;
 // - a radius that fits the box when walls are on. A disc that would then reach past a wall is
 //   moved inward just enough (the wall stage would push it there at the next step anyway);
 // - no new overlap: a disc that grows (or was moved inward) may not overlap a neighbour more
@@ -29,20 +32,20 @@
 
 namespace psb::app {
 
-enum class EditField { Mass, Radius, Vx, Vy };
+enum class EditField { Mass, Radius, Vx, Vy, Omega, Inertia };
 /// One value of a particle, for edits of a single field (the control panel's tables).
-enum class ParticleField : std::uint8_t { X, Y, Vx, Vy, Mass, Radius };
-inline constexpr int kEditFields = 4;
+enum class ParticleField : std::uint8_t { X, Y, Vx, Vy, Mass, Radius, Omega, Inertia };
+inline constexpr int kEditFields = 6;
 
 /// Fastest velocity an edit may give, in box sizes (the larger side) per second: beyond this a
 /// particle crosses the box many times in one step.
 inline constexpr double kMaxEditSpeedBoxes = 1000.0;
 
-/// "mass", "radius", "vx", "vy".
+/// "mass", "radius", "vx", "vy", "omega", "k".
 [[nodiscard]] const char* fieldName(EditField f);
-/// "x", "y", "vx", "vy", "mass", "radius".
+/// "x", "y", "vx", "vy", "mass", "radius", "omega", "k".
 [[nodiscard]] const char* fieldName(ParticleField f);
-/// "kg", "m", "m/s".
+/// "kg", "m", "m/s", "rad/s", "(I = k m r^2)".
 [[nodiscard]] const char* fieldUnit(EditField f);
 
 class EditPrompt {
@@ -86,8 +89,8 @@ struct EditResult {
     std::string message;  ///< what changed, or why nothing did
 };
 
-/// Parses, validates (see the top of this file) and applies `texts` (mass, radius, vx, vy) to
-/// particle `id` of `world`, all or nothing. Never throws for bad text or values.
+/// Parses, validates (see the top of this file) and applies `texts` (mass, radius, vx, vy,
+/// omega, k) to particle `id` of `world`, all or nothing. Never throws for bad text or values.
 EditResult applyEdit(World& world, ParticleId id,
                      const std::array<std::string, kEditFields>& texts);
 
@@ -96,9 +99,21 @@ EditResult applyEdit(World& world, ParticleId id,
 EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
                              std::string_view text);
 
-/// The checks and setters both edits share: mass, radius, position (moved inward to stay inside
-/// the walls) and velocity of `id`, all or nothing.
-EditResult setChecked(World& world, ParticleId id, double mass, double radius, const Vec2& position,
-                      const Vec2& velocity);
+/// What an edit sets: a particle's mass, radius, position, velocity, angular velocity and
+/// inertia factor.
+struct EditedValues {
+    double mass = 1.0;
+    double radius = 1.0;
+    Vec2 position = Vec2::Zero();
+    Vec2 velocity = Vec2::Zero();
+    double omega = 0.0;
+    double inertiaFactor = kDefaultInertiaFactor;
+};
+/// `p`'s values, as an edit that changes nothing would set them.
+[[nodiscard]] EditedValues valuesOf(const Particle& p);
+
+/// The checks and setters both edits share: the values of `id` (its position moved inward to
+/// stay inside the walls), all or nothing.
+EditResult setChecked(World& world, ParticleId id, const EditedValues& wanted);
 
 }  // namespace psb::app

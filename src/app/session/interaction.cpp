@@ -140,6 +140,10 @@ void followScene(SpawnSettings& spawn, const World& world) {
     // A mass or radius chosen for another scene would not fit this one; a colour still does.
     spawn.fixedMass.reset();
     spawn.fixedRadius.reset();
+    // New particles are made like the scene's: a scene of grains set not to turn gets more.
+    spawn.turn = !(p.rotation && p.size() > 0 &&
+                   std::all_of(p.fixedRotation.begin(), p.fixedRotation.end(),
+                               [](std::uint8_t fixed) { return fixed != 0; }));
 }
 
 double maxLaunchSpeed(const WorldDef& def) {
@@ -259,6 +263,7 @@ ReleaseResult Interaction::release(const World& world, const Vec2& point, double
             result.launch.mass = spawn.mass();
             result.launch.radius = spawn.radius();
             result.launch.color = spawn.color();
+            result.launch.fixedRotation = !spawn.turn;
             result.position = *spot;
             result.velocity = launched.velocity;
             result.capped = launched.capped;

@@ -55,6 +55,9 @@ struct SpawnSettings {
     std::optional<double> fixedMass;
     std::optional<double> fixedRadius;
     std::optional<Color> fixedColor;
+    /// New particles turn (friction spins them); false: fixed rotation, they slide without
+    /// turning. A scene whose particles all have fixed rotation makes it false.
+    bool turn = true;
     [[nodiscard]] double mass() const { return fixedMass ? *fixedMass : size * typicalMass; }
     [[nodiscard]] double radius() const {
         if (fixedRadius) return *fixedRadius;

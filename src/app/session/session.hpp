@@ -340,6 +340,8 @@ class Session {
     // The world's laws and the stepping mode (session_values.cpp).
     void handle(const cmd::SetRestitution& c);
     void handle(const cmd::SetFriction& c);
+    void handle(const cmd::SetTangentialRestitution& c);
+    void handle(const cmd::SetDiscsTurn& c);
     void handle(const cmd::SetGravity& c);
     void handle(const cmd::SetWalls& c);
     void handle(const cmd::SetMode& c);

@@ -55,7 +55,8 @@ std::string Session::tableText(cmd::DataTable table, csv::Separator separator) c
         case cmd::DataTable::Values:
             return valuesTable(doc_.world, separator);
         case cmd::DataTable::TimeSeries:
-            return timeSeriesTable(data_.run(), !doc_.world.def().gravity.isZero(), separator);
+            return timeSeriesTable(data_.run(), !doc_.world.def().gravity.isZero(), separator,
+                                   doc_.world.rotationInUse());
         case cmd::DataTable::Trajectories:
             return trajectoryTable(data_.trajectory(), separator);
         case cmd::DataTable::Collisions:

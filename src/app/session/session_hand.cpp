@@ -230,6 +230,7 @@ void Session::handle(const cmd::SpawnRandom&) {
     def.radius = radius;
     def.color = {static_cast<std::uint8_t>(channel(rng)), static_cast<std::uint8_t>(channel(rng)),
                  static_cast<std::uint8_t>(channel(rng))};
+    def.fixedRotation = !spawn.turn;
     doc_.world.add(def);
     userAction("spawn particle");
     log(fmt("Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass %.3g kg",
@@ -245,6 +246,14 @@ void Session::handle(const cmd::ChangeSpawnMass& c) {
                         fmt("New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
                             spawn.mass(), spawn.radius(), spawn.size),
                         true, false});
+}
+
+void Session::handle(const cmd::SetDiscsTurn& c) {
+    if (tools_.spawn.turn == c.on) return;
+    tools_.spawn.turn = c.on;
+    remember(c.on ? "let new particles turn" : "give new particles fixed rotation");
+    say(c.on ? "New particles turn: friction spins them, and they roll"
+             : "New particles have fixed rotation: they slide without turning");
 }
 
 void Session::handle(const cmd::SetLaunchBody& c) {

@@ -41,6 +41,19 @@ void Session::handle(const cmd::SetFriction& c) {
     userAction("set friction", c.continues);
 }
 
+void Session::handle(const cmd::SetTangentialRestitution& c) {
+    if (!(c.value >= -1.0 && c.value <= 1.0)) {
+        say(fmt("Tangential restitution must be between -1 and 1, got %g", c.value),
+            Notice::Level::Warning);
+        return;
+    }
+    if (doc_.world.def().tangentialRestitution == c.value) return;
+    doc_.world.setTangentialRestitution(c.value);
+    notices_.push_back({Notice::Level::Info, fmt("Tangential restitution %.2f", c.value), true,
+                        !c.continues, "beta"});
+    userAction("set tangential restitution", c.continues);
+}
+
 void Session::handle(const cmd::ScaleSpeeds& c) {
     if (!(c.factor > 0.0 && c.factor <= 10.0)) {
         say(fmt("Speeds can be scaled by more than 0 and at most 10, got %g", c.factor),

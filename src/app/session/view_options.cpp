@@ -76,6 +76,7 @@ constexpr ShowEntry kShowEntries[] = {
     {&ViewOptions::values, "Values table"},
     {&ViewOptions::ruler, "Ruler"},
     {&ViewOptions::grid, "Grid"},
+    {&ViewOptions::spin, "Spin marks"},
 };
 
 const ShowEntry& entry(ShowOption option) {

@@ -1,7 +1,7 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Y and the
-// arrow scale. No SDL, so the session and its
+// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Shift+G, the Spin checkbox and the arrow
+// scale. No SDL, so the session and its
 // tests can use it without a window.
 
 #include <algorithm>
@@ -16,7 +16,7 @@ namespace psb::app {
 /// What L shows.
 enum class TrailMode { Off, Selected, All };
 
-/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I, Q, Y).
+/// What can be shown or hidden (checkboxes, and the keys A, S, V, K, D, O, J, I, Q, Shift+G).
 enum class ShowOption : std::uint8_t {
     Arrows,
     Labels,
@@ -28,7 +28,8 @@ enum class ShowOption : std::uint8_t {
     Collision,
     Values,
     Ruler,
-    Grid
+    Grid,
+    Spin
 };
 
 /// Off -> Selected -> All -> Off.
@@ -69,8 +70,11 @@ struct ViewOptions {
     bool values = false;
     /// Q: the ruler (session/lab_ruler.hpp).
     bool ruler = false;
-    /// Y: a grid of metres over the box, labelled along its top and left edges.
+    /// Shift+G: a grid of metres over the box, labelled along its top and left edges.
     bool grid = false;
+    /// The Spin checkbox: each turning disc's rotation mark (a contrasting quarter that turns
+    /// with it), in a world that keeps rotation; fixed-rotation discs have none.
+    bool spin = true;
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);

@@ -209,7 +209,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     const int room = session.camera().viewportWidth() - left;
     const bool editing = session.prompt().active();
     if (f.selected && (!session.controlsShown() || editing)) {
-        o.inspector = inspectorPanel(hudFont, inspectorLines(*f.selected, session.prompt()), room);
+        o.inspector = inspectorPanel(
+            hudFont, inspectorLines(*f.selected, session.prompt(), true, world.rotationInUse()),
+            room);
     }
     // Long messages wrap within the room right of the control panel, beside the inspector when
     // that leaves them room; the newest lines that fit the band below the box are shown.
@@ -240,8 +242,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.bins = f.bins.has_value();
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
-        o.inspector =
-            inspectorPanel(hudFont, inspectorLines(*f.selected, session.prompt(), false), room);
+        o.inspector = inspectorPanel(
+            hudFont, inspectorLines(*f.selected, session.prompt(), false, world.rotationInUse()),
+            room);
         req.inspector = textBoxSize(hudFont, o.inspector);
         f.layout = layoutPanels(req);
     }

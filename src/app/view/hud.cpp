@@ -140,7 +140,7 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"Shift+Left/Right, PgUp/PgDn", "a frame, a second back / forward in time (Time)"},
         {"Ctrl+Z, Ctrl+Shift+Z or Ctrl+Y", "undo / redo the last change (Time: Undo, Redo)"},
         {", / .", "slow down / speed up time (Time: Speed)"},
-        {"P / 1-9, 0, Shift+1-3", "next preset / preset 1-9, 10, 11-13 (Scene)"},
+        {"P / 1-9, 0, Shift+1-4", "next preset / preset 1-9, 10, 11-14 (Scene)"},
         {"R", "restart: back to the set-up Play last started (Time: Restart)"},
         {"E / Shift+E", "restitution down / up by 0.05 (Physics)"},
         {"G", "gravity on / off (Physics)"},

@@ -12,7 +12,7 @@ namespace psb::app {
 
 namespace {
 
-/// The prompt's four fields, the active one marked, and the last refusal.
+/// The prompt's fields, the active one marked, and the last refusal.
 void editLines(std::vector<std::string>& lines, const EditPrompt& prompt) {
     char buf[160];
     for (int k = 0; k < kEditFields; ++k) {
@@ -27,8 +27,15 @@ void editLines(std::vector<std::string>& lines, const EditPrompt& prompt) {
 
 }  // namespace
 
-std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt,
-                                        bool readings) {
+SpinReading spinReading(const Particle& p) {
+    const double inertia = p.inertiaFactor * p.mass * p.radius * p.radius;
+    return {0.5 * p.mass * p.velocity.squaredNorm(),
+            0.5 * inertia * p.angularVelocity * p.angularVelocity,
+            p.angularVelocity * 60.0 / (2.0 * std::numbers::pi)};
+}
+
+std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt, bool readings,
+                                        bool rotation) {
     char buf[160];
     std::vector<std::string> lines;
     const auto line = [&](const char* format, auto... values) {
@@ -51,9 +58,25 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
     pair("velocity        ", p.velocity, "m/s");
     lines.push_back("speed           " + quantity(p.velocity.norm(), "m/s", false));
     pair("momentum        ", momentum, "kg m/s");
-    lines.push_back("kinetic energy  " + quantity(0.5 * p.mass * p.velocity.squaredNorm(), "J"));
+    const SpinReading spin = spinReading(p);
+    if (rotation) {
+        // The overlay's font has Latin-1 only: words, not Greek letters.
+        if (p.fixedRotation) {
+            lines.emplace_back("turning         fixed rotation (never turns)");
+        } else {
+            lines.push_back("angular velocity " + quantity(p.angularVelocity, "rad/s", false) +
+                            " = " + quantity(spin.revPerMin, "rev/min", false));
+        }
+        lines.push_back("kinetic energy  " + quantity(spin.translational, "J") + " translation");
+        lines.push_back("                " + quantity(spin.rotational, "J") + " rotation");
+    } else {
+        lines.push_back("kinetic energy  " + quantity(spin.translational, "J"));
+    }
     lines.push_back("mass            " + quantity(p.mass, "kg", false));
     lines.push_back("radius          " + quantity(p.radius, "m"));
+    if (rotation) {
+        line("inertia factor  k = %.3g (I = k m r\u00b2)", p.inertiaFactor);
+    }
     if (!editing) {
         lines.emplace_back("Enter: edit");
         return lines;

@@ -12,11 +12,21 @@
 
 namespace psb::app {
 
+/// A particle's turning and its energies, as the inspector and the panel show them.
+struct SpinReading {
+    double translational = 0.0;  ///< ½ m v², J
+    double rotational = 0.0;     ///< ½ I ω² with I = k m r², J
+    double revPerMin = 0.0;      ///< ω in turns a minute, positive clockwise on screen
+};
+[[nodiscard]] SpinReading spinReading(const Particle& p);
+
 /// The panel's lines for `p`: position (m), velocity (m/s), speed (m/s), momentum (kg m/s),
-/// kinetic energy (J), mass (kg), radius (m); while `prompt` is active on p, its four fields
-/// (the active one marked) and the last refusal instead of the key hint. `readings` false: the
-/// prompt without the readings, for a window too small for both.
+/// kinetic energy (J), mass (kg), radius (m); in a world that keeps rotation (`rotation`:
+/// World::rotationInUse) also the angular velocity (rad/s and rev/min, or "fixed rotation"),
+/// the kinetic energy of translation and of rotation, and the inertia factor k. While `prompt`
+/// is active on p, its fields (the active one marked) and the last refusal instead of the key
+/// hint. `readings` false: the prompt without the readings, for a window too small for both.
 [[nodiscard]] std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt,
-                                                      bool readings = true);
+                                                      bool readings = true, bool rotation = false);
 
 }  // namespace psb::app

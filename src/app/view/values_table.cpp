@@ -8,39 +8,51 @@
 
 namespace psb::app {
 
-const std::array<ValuesColumn, kValuesColumns>& valuesColumns() {
-    static const std::array<ValuesColumn, kValuesColumns> columns = {{
-        {"x", "m", ParticleField::X},
-        {"y", "m", ParticleField::Y},
-        {"vx", "m/s", ParticleField::Vx},
-        {"vy", "m/s", ParticleField::Vy},
-        {"px", "kg m/s", std::nullopt},
-        {"py", "kg m/s", std::nullopt},
-        {"KE", "J", std::nullopt},
-        {"mass", "kg", ParticleField::Mass},
-    }};
-    return columns;
+std::vector<ValuesColumn> valuesColumns(bool rotation) {
+    std::vector<ValuesColumn> c = {
+        {"x", "m", ParticleField::X},     {"y", "m", ParticleField::Y},
+        {"vx", "m/s", ParticleField::Vx}, {"vy", "m/s", ParticleField::Vy},
+        {"px", "kg m/s", std::nullopt},   {"py", "kg m/s", std::nullopt},
+        {"KE", "J", std::nullopt},        {"mass", "kg", ParticleField::Mass},
+    };
+    if (rotation) {
+        c.insert(c.begin() + 4, {"\u03c9", "rad/s", ParticleField::Omega});
+        c.insert(c.begin() + 8, {"KE rot", "J", std::nullopt});
+    }
+    return c;
 }
 
 namespace {
 
-std::array<double, kValuesColumns> valuesOf(const Particle& p) {
-    return {p.position.x(),
-            p.position.y(),
-            p.velocity.x(),
-            p.velocity.y(),
-            p.mass * p.velocity.x(),
-            p.mass * p.velocity.y(),
-            0.5 * p.mass * p.velocity.squaredNorm(),
-            p.mass};
+std::vector<double> valuesOf(const Particle& p, bool rotation) {
+    std::vector<double> v = {p.position.x(),
+                             p.position.y(),
+                             p.velocity.x(),
+                             p.velocity.y(),
+                             p.mass * p.velocity.x(),
+                             p.mass * p.velocity.y(),
+                             0.5 * p.mass * p.velocity.squaredNorm(),
+                             p.mass};
+    if (rotation) {
+        v.insert(v.begin() + 4, p.angularVelocity);
+        v.insert(v.begin() + 8, 0.5 * p.inertiaFactor * p.mass * p.radius * p.radius *
+                                    p.angularVelocity * p.angularVelocity);
+    }
+    return v;
 }
 
 }  // namespace
 
 ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected) {
     ValuesTable t;
+    const bool rotation = world.rotationInUse();
+    t.columns = valuesColumns(rotation);
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-    t.totals = {kNaN, kNaN, kNaN, kNaN, 0.0, 0.0, 0.0, 0.0};
+    // Positions and velocities have no meaningful sum; the rest (after the velocities) do.
+    const std::size_t firstSum = rotation ? 5 : 4;
+    t.totals.assign(t.columns.size(), 0.0);
+    for (std::size_t k = 0; k < firstSum; ++k)
+        t.totals[k] = kNaN;
     std::vector<ParticleId> ids = world.ids();
     t.particles = ids.size();
     std::sort(ids.begin(), ids.end(),
@@ -48,10 +60,12 @@ ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected) 
     const bool all = ids.size() <= kValuesMaxRows;
     for (const ParticleId id : ids) {
         const Particle p = world.get(id);
-        const auto v = valuesOf(p);
-        for (std::size_t k = 4; k < kValuesColumns; ++k)
+        std::vector<double> v = valuesOf(p, rotation);
+        for (std::size_t k = firstSum; k < v.size(); ++k)
             t.totals[k] += v[k];
-        if (all || (selected && *selected == id)) t.rows.push_back({id, particleNumber(id), v});
+        if (all || (selected && *selected == id)) {
+            t.rows.push_back({id, particleNumber(id), std::move(v)});
+        }
     }
     if (!all) {
         t.note = std::to_string(ids.size());
@@ -68,7 +82,7 @@ std::string valuesCell(double value) {
 
 std::vector<std::string> valuesLines(const ValuesTable& table) {
     std::string header = "#";
-    for (const ValuesColumn& c : valuesColumns()) {
+    for (const ValuesColumn& c : table.columns) {
         header += '\t';
         header += c.name;
         header += " (";

@@ -1,7 +1,8 @@
 #pragma once
 // The values table (PhET's "More Data"), as plain rows: every particle's signed position,
 // velocity, momentum, kinetic energy and mass, and their totals (the momentum as a vector), with
-// each column's name and unit. The panel's Values table window shows it, with the position,
+// each column's name and unit; in a world that keeps rotation also each angular velocity and
+// rotational kinetic energy. The panel's Values table window shows it, with the position,
 // velocity and mass cells editable; the text F12 writes beside a screenshot lists it.
 
 #include <array>
@@ -27,21 +28,25 @@ struct ValuesColumn {
     std::optional<ParticleField> field;
 };
 
-/// x, y, vx, vy, px, py, kinetic energy, mass: the order of ValuesRow::values.
-inline constexpr std::size_t kValuesColumns = 8;
-[[nodiscard]] const std::array<ValuesColumn, kValuesColumns>& valuesColumns();
+/// The most columns a table has.
+inline constexpr std::size_t kValuesColumns = 10;
+/// x, y, vx, vy, px, py, kinetic energy, mass: the order of ValuesRow::values; with `rotation`
+/// (World::rotationInUse) omega (rad/s) after vy and the rotational kinetic energy after the
+/// kinetic energy.
+[[nodiscard]] std::vector<ValuesColumn> valuesColumns(bool rotation = false);
 
 struct ValuesRow {
     ParticleId id;
-    std::uint64_t number = 0;  ///< particleNumber(id)
-    std::array<double, kValuesColumns> values{};
+    std::uint64_t number = 0;    ///< particleNumber(id)
+    std::vector<double> values;  ///< one per column
 };
 
 struct ValuesTable {
-    std::vector<ValuesRow> rows;  ///< by number
-    /// Sums: px, py, the kinetic energy and the mass (position and velocity columns: NaN, as a
-    /// sum of positions means nothing).
-    std::array<double, kValuesColumns> totals{};
+    std::vector<ValuesColumn> columns;  ///< valuesColumns(rotation in use)
+    std::vector<ValuesRow> rows;        ///< by number
+    /// Sums: px, py, the kinetic energies and the mass (position, velocity and angular velocity
+    /// columns: NaN, as a sum of positions means nothing).
+    std::vector<double> totals;
     std::size_t particles = 0;
     /// Why rows were left out (more than kValuesMaxRows particles); empty when all are listed.
     std::string note;

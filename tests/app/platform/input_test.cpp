@@ -88,7 +88,7 @@ TEST(Input, WAndBChooseTheWallAndPegToolsAsAToggle) {
 }
 
 TEST(Input, EveryPresetUpTo19HasAKeyAndTheKeyItsName) {
-    // 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to the 19th: the 13 presets each
+    // 1-9 the first nine, 0 the tenth, Shift+1-9 the 11th to the 19th: the 14 presets each
     // have one, and the message that opens one names the key that does.
     const auto index = [](SDL_Keycode sym, Uint16 mod) {
         const auto c = commandsForKey(keyEvent(sym, mod), KeyState{});

@@ -38,7 +38,7 @@ TEST(EditPrompt, OpensWithTheParticlesValuesOnTheMassField) {
     EXPECT_TRUE(p.active());
     EXPECT_EQ(p.target(), id);
     EXPECT_EQ(p.field(), EditField::Mass);
-    EXPECT_EQ(p.texts(), (Texts{"18", "12.5", "-60", "240"}));
+    EXPECT_EQ(p.texts(), (Texts{"18", "12.5", "-60", "240", "0", "0.5"}));
 }
 
 TEST(EditPrompt, TypingReplacesAFreshFieldThenAppends) {
@@ -58,17 +58,18 @@ TEST(EditPrompt, TypingReplacesAFreshFieldThenAppends) {
     EXPECT_EQ(p.text(EditField::Mass), "20.5");  // the other field keeps its text
 }
 
-TEST(EditPrompt, TabCyclesThroughTheFourFieldsBothWays) {
+TEST(EditPrompt, TabCyclesThroughTheSixFieldsBothWays) {
     World w = boxWorld();
     EditPrompt p;
     p.open(w.get(addAt(w, {100, 100})));
-    const EditField order[] = {EditField::Radius, EditField::Vx, EditField::Vy, EditField::Mass};
+    const EditField order[] = {EditField::Radius, EditField::Vx,      EditField::Vy,
+                               EditField::Omega,  EditField::Inertia, EditField::Mass};
     for (const EditField f : order) {
         p.nextField();
         EXPECT_EQ(p.field(), f);
     }
     p.previousField();
-    EXPECT_EQ(p.field(), EditField::Vy);
+    EXPECT_EQ(p.field(), EditField::Inertia);
 }
 
 TEST(EditPrompt, DropsControlCharactersAndStopsAtTheLengthLimit) {
@@ -81,12 +82,15 @@ TEST(EditPrompt, DropsControlCharactersAndStopsAtTheLengthLimit) {
     EXPECT_EQ(p.text(EditField::Mass).size(), EditPrompt::kMaxLength);
 }
 
-TEST(ApplyEdit, SetsAllFourValues) {
+TEST(ApplyEdit, SetsAllSixValues) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {300, 300}, 10.0, 2.0);
-    const EditResult r = applyEdit(w, id, {"25", " 12 ", "+1.5e2", "-40"});
+    const EditResult r = applyEdit(w, id, {"25", " 12 ", "+1.5e2", "-40", "-2.5", "0.4"});
     ASSERT_TRUE(r.applied) << r.message;
     const Particle p = w.get(id);
+    EXPECT_DOUBLE_EQ(p.angularVelocity, -2.5);
+    EXPECT_DOUBLE_EQ(p.inertiaFactor, 0.4);
+    EXPECT_NE(r.message.find("omega -2.5 rad/s, k 0.4"), std::string::npos) << r.message;
     EXPECT_DOUBLE_EQ(p.mass, 25.0);
     EXPECT_DOUBLE_EQ(p.radius, 12.0);
     EXPECT_EQ(p.velocity, Vec2(150.0, -40.0));
@@ -117,28 +121,35 @@ TEST_P(ApplyEditRefuses, AndChangesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(
     BadValues, ApplyEditRefuses,
-    ::testing::Values(Refusal{{"nan", "10", "0", "0"}, "mass: must be a finite number"},
-                      Refusal{{"2", "inf", "0", "0"}, "radius: must be a finite number"},
-                      Refusal{{"2", "10", "-infinity", "0"}, "vx: must be a finite number"},
-                      Refusal{{"2", "10", "0", "1e999"}, "vy: 1e999 is out of range"},
-                      Refusal{{"abc", "10", "0", "0"}, "mass: 'abc' is not a number"},
-                      Refusal{{"12kg", "10", "0", "0"}, "mass: '12kg' is not a number"},
-                      Refusal{{"", "10", "0", "0"}, "mass: empty"},
-                      Refusal{{"0", "10", "0", "0"}, "mass: must be > 0 kg"},
-                      Refusal{{"-3", "10", "0", "0"}, "mass: must be > 0 kg"},
-                      Refusal{{"1e-320", "10", "0", "0"}, "mass: must be > 0 kg"},
-                      Refusal{{"2", "0", "0", "0"}, "radius: must be > 0 m"},
-                      Refusal{{"2", "-1", "0", "0"}, "radius: must be > 0 m"},
-                      Refusal{{"2", "400", "0", "0"}, "does not fit in the 700 x 700 m box"},
-                      // 45 m at x = 160 reaches x = 115, past the neighbour's rim at 120.
-                      Refusal{{"2", "45", "0", "0"}, "would overlap the particle at [100.00"},
-                      Refusal{{"2", "10", "8e5", "0"}, "faster than 700000 m/s"},
-                      Refusal{{"1e300", "10", "1e5", "0"}, "kinetic energy would overflow"}));
+    ::testing::Values(
+        Refusal{{"nan", "10", "0", "0", "0", "0.5"}, "mass: must be a finite number"},
+        Refusal{{"2", "inf", "0", "0", "0", "0.5"}, "radius: must be a finite number"},
+        Refusal{{"2", "10", "-infinity", "0", "0", "0.5"}, "vx: must be a finite number"},
+        Refusal{{"2", "10", "0", "1e999", "0", "0.5"}, "vy: 1e999 is out of range"},
+        Refusal{{"abc", "10", "0", "0", "0", "0.5"}, "mass: 'abc' is not a number"},
+        Refusal{{"12kg", "10", "0", "0", "0", "0.5"}, "mass: '12kg' is not a number"},
+        Refusal{{"", "10", "0", "0", "0", "0.5"}, "mass: empty"},
+        Refusal{{"0", "10", "0", "0", "0", "0.5"}, "mass: must be > 0 kg"},
+        Refusal{{"-3", "10", "0", "0", "0", "0.5"}, "mass: must be > 0 kg"},
+        Refusal{{"1e-320", "10", "0", "0", "0", "0.5"}, "mass: must be > 0 kg"},
+        Refusal{{"2", "0", "0", "0", "0", "0.5"}, "radius: must be > 0 m"},
+        Refusal{{"2", "-1", "0", "0", "0", "0.5"}, "radius: must be > 0 m"},
+        Refusal{{"2", "400", "0", "0", "0", "0.5"}, "does not fit in the 700 x 700 m box"},
+        // 45 m at x = 160 reaches x = 115, past the neighbour's rim at 120.
+        Refusal{{"2", "45", "0", "0", "0", "0.5"}, "would overlap the particle at [100.00"},
+        Refusal{{"2", "10", "8e5", "0", "0", "0.5"}, "faster than 700000 m/s"},
+        Refusal{{"2", "10", "0", "0", "1e5", "0.5"},
+                "omega: the rim would move at 1e+06 m/s, faster than 700000 m/s"},
+        Refusal{{"2", "10", "0", "0", "0", "0"}, "k: the inertia factor must be"},
+        Refusal{{"2", "10", "0", "0", "0", "1.01"}, "k: the inertia factor must be"},
+        Refusal{{"2", "10", "0", "0", "nan", "0.5"}, "omega: must be a finite"},
+        Refusal{{"2", "10", "0", "0", "0", "x"}, "k: 'x' is not a number"},
+        Refusal{{"1e300", "10", "1e5", "0", "0", "0.5"}, "kinetic energy would overflow"}));
 
 TEST(ApplyEdit, ARadiusThatReachesPastAWallMovesTheCentreInward) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {690, 350}, 10.0);  // touching the right wall
-    const EditResult r = applyEdit(w, id, {"2", "30", "0", "0"});
+    const EditResult r = applyEdit(w, id, {"2", "30", "0", "0", "0", "0.5"});
     ASSERT_TRUE(r.applied) << r.message;
     EXPECT_NEAR(w.get(id).position.x(), 670.0, 1e-12);
     EXPECT_NEAR(w.get(id).position.y(), 350.0, 1e-12);
@@ -149,7 +160,7 @@ TEST(ApplyEdit, AMoveInwardThatWouldOverlapIsRefused) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {690, 350}, 10.0);
     addAt(w, {640, 350}, 10.0);  // 50 m inward: room for 10 m, not for a 30 m disc at 670
-    const EditResult r = applyEdit(w, id, {"2", "30", "0", "0"});
+    const EditResult r = applyEdit(w, id, {"2", "30", "0", "0", "0", "0.5"});
     EXPECT_FALSE(r.applied);
     EXPECT_NE(r.message.find("overlap the particle at [640.00, 350.00]"), std::string::npos)
         << r.message;
@@ -161,7 +172,7 @@ TEST(ApplyEdit, ShrinkingAnOverlappingParticleIsAllowed) {
     World w = boxWorld();
     addAt(w, {100, 100}, 10.0);
     const ParticleId id = addAt(w, {118, 100}, 10.0);  // 2 m overlap
-    EXPECT_TRUE(applyEdit(w, id, {"2", "9", "0", "0"}).applied);
+    EXPECT_TRUE(applyEdit(w, id, {"2", "9", "0", "0", "0", "0.5"}).applied);
     EXPECT_DOUBLE_EQ(w.get(id).radius, 9.0);
 }
 
@@ -169,14 +180,15 @@ TEST(ApplyEdit, ANeighbourJustTouchingIsNotAnOverlap) {
     World w = boxWorld();
     addAt(w, {100, 100}, 10.0);
     const ParticleId id = addAt(w, {130, 100}, 10.0);
-    EXPECT_TRUE(applyEdit(w, id, {"2", "20", "0", "0"}).applied);  // rims meet at x = 110
+    EXPECT_TRUE(
+        applyEdit(w, id, {"2", "20", "0", "0", "0", "0.5"}).applied);  // rims meet at x = 110
 }
 
 TEST(ApplyEdit, KeepsAHeldParticleKinematic) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {300, 300});
     w.setKinematic(id, true);
-    ASSERT_TRUE(applyEdit(w, id, {"50", "10", "0", "0"}).applied);
+    ASSERT_TRUE(applyEdit(w, id, {"50", "10", "0", "0", "0", "0.5"}).applied);
     EXPECT_TRUE(w.isKinematic(id));
     EXPECT_DOUBLE_EQ(w.get(id).mass, 50.0);
 }
@@ -185,7 +197,7 @@ TEST(ApplyEdit, RefusesAParticleThatIsGone) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {300, 300});
     w.remove(id);
-    const EditResult r = applyEdit(w, id, {"2", "10", "0", "0"});
+    const EditResult r = applyEdit(w, id, {"2", "10", "0", "0", "0", "0.5"});
     EXPECT_FALSE(r.applied);
     EXPECT_NE(r.message.find("no longer exists"), std::string::npos);
 }
@@ -207,7 +219,7 @@ TEST(ApplyEdit, InExactModeTheEventQueueFollowsTheEdit) {
     const ParticleId target = edited.ids()[1];
     const Particle now = edited.get(target);
     // Toward the first particle, larger: the collision comes much earlier than predicted.
-    const EditResult r = applyEdit(edited, target, {"3", "20", "-120", "0"});
+    const EditResult r = applyEdit(edited, target, {"3", "20", "-120", "0", "0", "0.5"});
     ASSERT_TRUE(r.applied) << r.message;
 
     World fresh = boxWorld(StepMode::Exact);

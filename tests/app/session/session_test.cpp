@@ -244,7 +244,7 @@ TEST_F(SessionTest, APresetOpensPausedAndANewSceneStartsAtTimeSpeedOne) {
     EXPECT_TRUE(s.paused());
     EXPECT_EQ(s.timeScale(), 1.0);
     EXPECT_TRUE(said(n, "time speed back to x1 (was x4)"));
-    EXPECT_TRUE(said(n, "Preset 12 of 13 (key Shift+2), paused: Space starts it"));
+    EXPECT_TRUE(said(n, "Preset 12 of 14 (key Shift+2), paused: Space starts it"));
     // Nothing moves until Space.
     const double t = s.world().time();
     s.update(0.5, 1.0);

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "view/inspector_lines.hpp"
 
 namespace psb::app {
@@ -40,16 +42,54 @@ TEST(InspectorPanel, ShowsThePromptFieldsWithTheActiveOneMarked) {
     prompt.nextField();
     prompt.setError("radius: must be > 0 m, got -1");
     const auto lines = inspectorLines(sample(), prompt);
-    ASSERT_GE(lines.size(), 5u);
-    const std::vector<std::string> tail(lines.end() - 5, lines.end());
+    ASSERT_GE(lines.size(), 7u);
+    const std::vector<std::string> tail(lines.end() - 7, lines.end());
     const std::vector<std::string> want = {
         "  mass   25 kg",
         "> radius 45_ m",
         "  vx     -60 m/s",
         "  vy     80 m/s",
+        "  omega  0 rad/s",
+        "  k      0.5 (I = k m r\u00b2)",
         "Refused: radius: must be > 0 m, got -1",
     };
     EXPECT_EQ(tail, want);
+}
+
+TEST(InspectorPanel, InAWorldWithRotationShowsTheSpinBothEnergiesAndK) {
+    Particle p = sample();
+    p.angularVelocity = 2.0 * 3.14159265358979323846;  // one turn a second
+    p.inertiaFactor = 0.4;
+    const auto lines = inspectorLines(p, EditPrompt{}, true, true);
+    const std::vector<std::string> want = {
+        "Particle 5",
+        "position        (520, 160) m",
+        "velocity        (-60.0, 80.0) m/s",
+        "speed           100 m/s",
+        "momentum        (-1 080, 1 440) kg m/s",
+        "angular velocity 6.28 rad/s = 60.0 rev/min",
+        "kinetic energy  90.0 kJ translation",
+        // 0.4 × 18 kg × (45 m)² × (2π /s)² / 2 = 287.8 kJ
+        "                288 kJ rotation",
+        "mass            18.0 kg",
+        "radius          45.0 m",
+        "inertia factor  k = 0.4 (I = k m r\u00b2)",
+        "Enter: edit",
+    };
+    EXPECT_EQ(lines, want);
+}
+
+TEST(InspectorPanel, AParticleWithFixedRotationSaysSo) {
+    Particle p = sample();
+    p.fixedRotation = true;
+    const auto lines = inspectorLines(p, EditPrompt{}, true, true);
+    EXPECT_NE(std::find(lines.begin(), lines.end(), "turning         fixed rotation (never turns)"),
+              lines.end());
+    EXPECT_EQ(std::count_if(lines.begin(), lines.end(),
+                            [](const std::string& l) {
+                                return l.find("angular velocity") != std::string::npos;
+                            }),
+              0);
 }
 
 TEST(InspectorPanel, APromptOnAnotherParticleIsNotShown) {

@@ -44,6 +44,30 @@ TEST(ValuesTable, SignedValuesByNumberAndTheirTotals) {
     EXPECT_EQ(lines[3], "total\t\t\t\t\t-1.00\t1.50\t3.88\t4.00");
 }
 
+TEST(ValuesTable, WithRotationInUseOmegaAndTheRotationalEnergyJoinTheColumns) {
+    World w = twoBalls();
+    const ParticleId second = w.ids().back();
+    w.setAngularVelocity(second, -5.0);
+    w.setInertiaFactor(second, 0.4);
+    const ValuesTable t = valuesTable(w, std::nullopt);
+    ASSERT_EQ(t.columns.size(), 10u);
+    ASSERT_EQ(t.rows[1].values.size(), 10u);
+    // x, y, vx, vy, omega, px, py, KE, KE rot, mass
+    EXPECT_EQ(t.rows[1].values[4], -5.0);
+    EXPECT_EQ(t.rows[0].values[4], 0.0);
+    const double rot = 0.5 * 0.4 * 3.0 * 0.36 * 25.0;  // ½ k m r² ω² = 5.4 J
+    EXPECT_DOUBLE_EQ(t.rows[1].values[8], rot);
+    EXPECT_TRUE(std::isnan(t.totals[4])) << "no sum of angular velocities";
+    EXPECT_DOUBLE_EQ(t.totals[8], rot);
+    EXPECT_EQ(t.totals[9], 4.0);
+    const auto lines = valuesLines(t);
+    EXPECT_EQ(lines[0],
+              "#\tx (m)\ty (m)\tvx (m/s)\tvy (m/s)\t\u03c9 (rad/s)\tpx (kg m/s)\tpy (kg "
+              "m/s)\tKE (J)\tKE rot (J)\tmass (kg)");
+    EXPECT_EQ(lines[2], "2\t7.00\t2.00\t-1.00\t0.500\t-5.00\t-3.00\t1.50\t1.88\t5.40\t3.00");
+    EXPECT_EQ(lines[3], "total\t\t\t\t\t\t-1.00\t1.50\t3.88\t5.40\t4.00");
+}
+
 TEST(ValuesTable, ACrowdListsTheSelectedRowAndTheTotalsOfAll) {
     WorldDef def;
     def.width = def.height = 100.0;
