@@ -15,6 +15,8 @@
 #                                                  -> the pressure measured on the walls is the
 #                                                     hard-disc value within 3 standard errors
 #                                                     and 2 %, well above the ideal gas's
+#   Squeeze                                        -> the box's area x 0.9, the ideal gas's
+#                                                     pressure / 0.9 (the same temperature)
 set -euo pipefail
 
 HERE=$(cd "$(dirname "$0")" && pwd)
@@ -26,7 +28,7 @@ start_xvfb "$OUT/xvfb.log" 1024x900x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
 LOG="$OUT/stdout.log"
 
-start_app "$BIN" --renderer software --window 900x800 --seed 7 --screenshot-dir "$OUT" \
+start_app "$BIN" --renderer software --window 900x800 --seed 7 --log-controls --screenshot-dir "$OUT" \
     "$ROOT/assets/scenes/12-ramp.json"
 wait_title "3 particles - PAUSED"
 pass "window ${WIDTH}x$HEIGHT, box at ($BX, $BY), $ZOOM px/m"
@@ -123,7 +125,16 @@ awk -v p="$p" -v dp="$dp" -v h="$hd" -v i="$ideal" 'BEGIN {
 grep -q "^Pressure plot: " <<<"$gas" || fail "no pressure plot line: $gas"
 pass "the gas at t = $t s: measured $p ± $dp N/m, hard discs $hd N/m, ideal gas $ideal N/m"
 
-key Escape
+# --- Squeeze: the box's area x 0.9 at the same temperature, the ideal gas's pressure / 0.9 ----------
+click "Squeeze"
+wait_log "\[I\] Box .* the area x0.9, the particles moved with it"
+snap squeezed
+read -r ideal2 < <(section squeezed Gas | grep "ideal gas:" | sed -E 's/.*ideal gas: ([0-9.]+) N\/m.*/\1/')
+awk -v a="$ideal" -v b="$ideal2" 'BEGIN { r = b / a; exit !(r > 1.10 && r < 1.125) }' ||
+    fail "squeezed, the ideal gas's pressure went from $ideal to $ideal2 N/m, not / 0.9"
+pass "squeezed: the ideal gas's pressure $ideal -> $ideal2 N/m"
+
+key Escape  # the squeeze is unsaved: the quit dialog; D discards
 quit_with d 2>/dev/null || true
 if kill -0 "$APP_PID" 2>/dev/null; then fail "the program did not quit"; fi
 echo "PASS"

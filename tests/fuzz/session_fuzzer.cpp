@@ -116,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 59)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 60)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -308,6 +308,19 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         }
         case 58:
             return cmd::SetDiscsTurn{in.ConsumeBool()};
+        case 59: {
+            static const double kSides[] = {0.0, -1.0,  0.01,
+                                            1e6, 1e300, std::numeric_limits<double>::quiet_NaN()};
+            const double w = s.world().def().width, h = s.world().def().height;
+            switch (in.ConsumeIntegralInRange<int>(0, 2)) {
+                case 0:
+                    return cmd::ResizeBox{w * value(in, 0.0, 2.0), h * value(in, 0.0, 2.0)};
+                case 1:
+                    return cmd::ResizeBox{kSides[in.ConsumeIntegralInRange<int>(0, 5)], h};
+                default:
+                    return cmd::ResizeBox{w * std::sqrt(0.9), h * std::sqrt(0.9)};
+            }
+        }
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }

@@ -2,6 +2,7 @@
 // forces are.
 
 #include <cmath>
+#include <string>
 
 #include <imgui.h>
 
@@ -9,6 +10,7 @@
 #include "gui/widgets.hpp"
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
+#include "session/units.hpp"
 
 namespace psb::app {
 
@@ -18,6 +20,8 @@ namespace {
 
 /// What a press of Heat multiplies every speed by (Cool divides).
 constexpr double kHeatFactor = 1.1;
+/// What a press of Squeeze multiplies the box's area by (Expand divides).
+constexpr double kSqueezeArea = 0.9;
 
 /// What each mode trades, in a sentence a student can read.
 const char* modeSentence(StepMode mode) {
@@ -132,6 +136,31 @@ void ControlPanel::physics(const Session& s) {
     if (ImGui::Button("Cool")) out_.emplace_back(cmd::ScaleSpeeds{1.0 / kHeatFactor});
     mark("Cool");
     tip("Every particle a tenth slower (divided by 1.1): the temperature down by 17 %");
+    // The volume: the box squeezed or expanded with the particles in it.
+    const double width = w.def().width, height = w.def().height;
+    const bool fixedBox = !w.obstacles().empty() || !w.droppers().empty();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(fixedBox);
+    const double side = std::sqrt(kSqueezeArea);
+    if (ImGui::Button("Squeeze")) out_.emplace_back(cmd::ResizeBox{width * side, height * side});
+    mark("Squeeze");
+    widgets::tip(fixedBox ? "This scene's walls, pegs or spouts are fixed in the box: it keeps "
+                            "its size"
+                          : "The box 10 % smaller in area, the particles moved in with it and "
+                            "their speeds kept: at the same temperature the gas's pressure "
+                            "goes up (Boyle). Ctrl+Z undoes it");
+    ImGui::SameLine();
+    if (ImGui::Button("Expand")) out_.emplace_back(cmd::ResizeBox{width / side, height / side});
+    mark("Expand");
+    widgets::tip("The box 10 % larger in area (divided by 0.9), the particles moved out with it");
+    ImGui::EndDisabled();
+    std::string box = "Box ";
+    box += quantity(width, "m");
+    box += " x ";
+    box += quantity(height, "m");
+    box += ", area ";
+    box += quantity(width * height, "m\u00b2", false);
+    widgets::wrappedDisabled(box);
 }
 
 }  // namespace psb::app

@@ -329,6 +329,15 @@ struct ScaleSpeeds {
     static constexpr Traits traits = kEditsPastPrompt;
     double factor = 1.0;
 };
+/// The box resized to `width` × `height` metres with the particles in it (the Physics section's
+/// Squeeze and Expand): their positions scaled with the box, their velocities kept, so a gas
+/// keeps its temperature and its pressure follows the area. Refused where a particle would not
+/// fit or two would overlap, and for a scene with obstacles or droppers.
+struct ResizeBox {
+    static constexpr Traits traits = kEditsPastPrompt;
+    double width = 1.0;
+    double height = 1.0;
+};
 /// The arrow scale, seconds of motion an arrow shows (the Show section's slider): kept as set.
 struct SetArrowScale {
     static constexpr Traits traits = kPastPrompt;
@@ -449,7 +458,7 @@ using Command = std::variant<
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
     cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings,
-    cmd::Stopwatch, cmd::ScaleSpeeds, cmd::SetArrowScale, cmd::SetTangentialRestitution,
-    cmd::SetDiscsTurn>;
+    cmd::Stopwatch, cmd::ScaleSpeeds, cmd::ResizeBox, cmd::SetArrowScale,
+    cmd::SetTangentialRestitution, cmd::SetDiscsTurn>;
 
 }  // namespace psb::app

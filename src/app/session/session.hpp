@@ -137,6 +137,9 @@ inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
 inline constexpr int kMaxPanelSubsteps = 64;
 inline constexpr double kMinLaunchMass = 1e-3;  ///< kg
 inline constexpr double kMaxLaunchMass = 1e6;   ///< kg
+/// A new or resized box's sides, metres.
+inline constexpr double kMinBoxSide = 0.01;
+inline constexpr double kMaxBoxSide = 1e6;
 
 class Session {
   public:
@@ -380,6 +383,7 @@ class Session {
     void handle(const cmd::SetTrails& c);
     void handle(const cmd::Stopwatch& c);
     void handle(const cmd::ScaleSpeeds& c);
+    void handle(const cmd::ResizeBox& c);
     void handle(const cmd::SetArrowScale& c);
     void handle(const cmd::ToggleControls& c);
     void handle(const cmd::Screenshot& c);

@@ -103,7 +103,9 @@ void Session::handle(const cmd::NewScene& c) {
         dialog_.error = why;
         say("New scene: " + why, Notice::Level::Warning);
     };
-    const auto sizeOk = [](double v) { return std::isfinite(v) && v >= 0.01 && v <= 1e6; };
+    const auto sizeOk = [](double v) {
+        return std::isfinite(v) && v >= kMinBoxSide && v <= kMaxBoxSide;
+    };
     if (!sizeOk(c.width) || !sizeOk(c.height)) {
         refuse(fmt("the box must be 0.01 m to 1e6 m wide and high, got %g m x %g m", c.width,
                    c.height));

@@ -9,6 +9,7 @@
 
 #include <particle_sandbox/error.hpp>
 
+#include "session/box_resize.hpp"
 #include "session/edit_prompt.hpp"
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
@@ -87,6 +88,36 @@ void Session::handle(const cmd::ScaleSpeeds& c) {
     say(fmt("%s: every speed x%.3g, the temperature (mean kinetic energy) x%.3g",
             c.factor >= 1.0 ? "Heated" : "Cooled", c.factor, c.factor * c.factor));
     userAction(c.factor >= 1.0 ? "heat" : "cool");
+}
+
+void Session::handle(const cmd::ResizeBox& c) {
+    const World& w = doc_.world;
+    const double width = w.def().width, height = w.def().height;
+    if (!(c.width >= kMinBoxSide && c.width <= kMaxBoxSide && c.height >= kMinBoxSide &&
+          c.height <= kMaxBoxSide)) {
+        say(fmt("The box must be %g m to %g m each way, got %g m x %g m", kMinBoxSide, kMaxBoxSide,
+                c.width, c.height),
+            Notice::Level::Warning);
+        return;
+    }
+    if (!w.obstacles().empty() || !w.droppers().empty()) {
+        say("Not resized: this scene's walls, pegs and spouts are fixed in the box; a box "
+            "without them (the gas) can be squeezed",
+            Notice::Level::Warning);
+        return;
+    }
+    if (c.width == width && c.height == height) return;
+    auto resized = resizedBox(w, c.width, c.height);
+    if (const auto* why = std::get_if<std::string>(&resized)) {
+        say("Not resized: " + *why, Notice::Level::Warning);
+        return;
+    }
+    doc_.world = std::move(std::get<World>(resized));
+    say(fmt("Box %s x %s: the area x%.3g, the particles moved with it, their speeds kept",
+            quantity(c.width, "m").c_str(), quantity(c.height, "m").c_str(),
+            (c.width * c.height) / (width * height)));
+    userAction(c.width * c.height < width * height ? "squeeze the box" : "expand the box");
+    if (fitted_) fit();
 }
 
 void Session::handle(const cmd::SetGravity& c) {

@@ -12,6 +12,8 @@
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "session/gas_gauges.hpp"
+#include "session/gas_world.hpp"
 #include "session/scene_io.hpp"
 #include "session/session.hpp"
 #include "session/session_fixture.hpp"
@@ -143,6 +145,54 @@ TEST_F(SessionValues, HeatAndCoolScaleEverySpeedUndoably) {
     EXPECT_TRUE(said(s.takeNotices(), "Not heated: the fastest particle would move at"));
     s.apply(cmd::ScaleSpeeds{1.0 / 1.1});
     EXPECT_TRUE(said(s.takeNotices(), "Cooled"));
+}
+
+TEST_F(SessionValues, SqueezeMovesTheParticlesWithTheBoxKeepsTheirSpeedsAndUndoes) {
+    Session s = session();
+    s.setWorld(gasWorld(), SceneMeta{.name = "gas", .dt = Scene{}.dt});
+    (void)s.takeNotices();
+    const World before = s.world();
+    const double side = std::sqrt(0.9);
+    s.apply(cmd::ResizeBox{700.0 * side, 700.0 * side});
+    EXPECT_TRUE(said(s.takeNotices(), "the area x0.9, the particles moved with it"));
+    EXPECT_DOUBLE_EQ(s.world().def().width, 700.0 * side);
+    // 40 discs far apart: no pushing, each centre scaled with the box.
+    for (const ParticleId id : before.ids()) {
+        const Particle a = before.get(id), b = s.world().get(id);
+        EXPECT_EQ(b.velocity, a.velocity);
+        EXPECT_NEAR(b.position.x(),
+                    std::clamp(a.position.x() * side, a.radius, 700.0 * side - a.radius), 1e-9);
+    }
+    // The same temperature in less room: the ideal gas's pressure up by the areas' ratio.
+    const auto ideal = [](const World& w) {
+        GasGauges g;
+        return g.reading(w).idealPressure;
+    };
+    const double reach = [](double l) { return (l - 16.0) * (l - 16.0); }(700.0);
+    const double squeezed = [](double l) { return (l - 16.0) * (l - 16.0); }(700.0 * side);
+    EXPECT_NEAR(ideal(s.world()) / ideal(before), reach / squeezed, 1e-9);
+    EXPECT_EQ(s.undoLabel(), "squeeze the box");
+    s.apply(cmd::Undo{});
+    EXPECT_DOUBLE_EQ(s.world().def().width, 700.0);
+    EXPECT_EQ(s.world().get(before.ids()[5]).position, before.get(before.ids()[5]).position);
+    // Too far: the discs would overlap, or one would not fit; nothing changes.
+    s.apply(cmd::ResizeBox{100.0, 100.0});
+    EXPECT_TRUE(said(s.takeNotices(), "Not resized: the particles would overlap by up to"));
+    s.apply(cmd::ResizeBox{10.0, 700.0});
+    EXPECT_TRUE(said(s.takeNotices(), "across) would not fit"));
+    EXPECT_DOUBLE_EQ(s.world().def().width, 700.0);
+    for (const double bad : {0.0, -5.0, 1e7, std::nan(""), HUGE_VAL}) {
+        s.apply(cmd::ResizeBox{bad, 700.0});
+        EXPECT_TRUE(said(s.takeNotices(), "The box must be 0.01 m to 1e+06 m")) << bad;
+    }
+    // A box with obstacles keeps its size.
+    World pegs = gasWorld();
+    pegs.addObstacle(Obstacle::peg(Vec2(650.0, 650.0), 5.0));
+    s.setWorld(std::move(pegs), SceneMeta{.name = "pegs", .dt = Scene{}.dt});
+    (void)s.takeNotices();
+    s.apply(cmd::ResizeBox{600.0, 600.0});
+    EXPECT_TRUE(said(s.takeNotices(), "Not resized: this scene's walls, pegs and spouts"));
+    EXPECT_DOUBLE_EQ(s.world().def().width, 700.0);
 }
 
 TEST_F(SessionValues, TheArrowScaleStaysWhereTheUserSetItUntilASceneOpens) {
