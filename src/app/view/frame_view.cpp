@@ -229,6 +229,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.plots = f.view.plots;
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
+    req.scale = controls.pointPixels;
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
         o.inspector =
