@@ -141,6 +141,8 @@ class App {
     [[nodiscard]] const FrameView& lastFrame() const { return lastFrame_; }
     /// The control panel as the last render() built it.
     [[nodiscard]] const ControlPanel& panel() const { return panel_; }
+    /// Whether the control panel has the keyboard (Tab gave it, Esc takes it back).
+    [[nodiscard]] bool panelHasKeyboard() const { return gui_->hasKeyboard(); }
     /// The control panel, for a loop that sets its mode and takes its requests (the browser's).
     [[nodiscard]] ControlPanel& controlPanel() { return panel_; }
 
@@ -202,8 +204,8 @@ class App {
     Input input_;
     bool textInput_ = false;
     std::optional<SettingsStore> settings_;
-    Theme theme_ = Theme::Dark;   ///< ImGui's colours now
-    double lookPoints_ = 0.0;     ///< pixels per UI point the fonts were made for (0: not yet)
+    Theme theme_ = Theme::Dark;  ///< ImGui's colours now
+    double lookPoints_ = 0.0;    ///< pixels per UI point the fonts were made for (0: not yet)
 
     std::vector<Message> messages_;
     std::optional<std::filesystem::path> lastScreenshot_;

@@ -38,15 +38,17 @@ GuiContext::GuiContext(SDL_Window* window, SDL_Renderer* renderer, const GuiOpti
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.LogFilename = nullptr;
-        // The keyboard moves through the panel; which keys reach it is decided in handleEvent,
-        // so ImGui's own capture flag (set whenever its window has focus) is not used.
-        io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavNoCaptureKeyboard;
         setTheme(Theme::Dark);
         if (window_ != nullptr) {
             if (!ImGui_ImplSDL2_InitForSDLRenderer(window_)) {
                 throw std::runtime_error("GuiContext: the SDL2 platform backend did not start");
             }
             platform_ = true;
+            // The keyboard moves through the panel (the backend maps the keys it needs); which
+            // keys reach it is decided in handleEvent, so ImGui's own capture flag (set whenever
+            // its window has focus) is not used.
+            io.ConfigFlags |=
+                ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavNoCaptureKeyboard;
         }
         const float scale = window_ != nullptr ? windowPixelScale(window_, sdl_) : 1.f;
         loadFont(scale);
@@ -261,7 +263,8 @@ void GuiContext::beginFrame() {
     // ImGui's point is scale_ window points (see the top of gui_context.hpp).
     io.DisplayFramebufferScale = ImVec2(scale * scale_, scale * scale_);
     io.DisplaySize = ImVec2(io.DisplaySize.x / scale_, io.DisplaySize.y / scale_);
-    if (io.MousePos.x > -FLT_MAX / 2) io.MousePos = ImVec2(io.MousePos.x / scale_, io.MousePos.y / scale_);
+    if (io.MousePos.x > -FLT_MAX / 2)
+        io.MousePos = ImVec2(io.MousePos.x / scale_, io.MousePos.y / scale_);
     ImGui::NewFrame();
 }
 
