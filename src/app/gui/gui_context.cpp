@@ -183,7 +183,15 @@ bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
     }
 }
 
+void GuiContext::releaseIfDue() {
+    if (releaseAfter_ > 0 && ImGui::GetFrameCount() >= releaseAfter_) {
+        releaseAfter_ = 0;
+        releaseKeyboard();
+    }
+}
+
 bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
+    releaseIfDue();  // a key right after the frame that saw an Esc is the sandbox's
     const SDL_Keycode key = event.key.keysym.sym;
     const bool modifier = key == SDLK_LCTRL || key == SDLK_RCTRL || key == SDLK_LSHIFT ||
                           key == SDLK_RSHIFT || key == SDLK_LALT || key == SDLK_RALT ||
@@ -205,11 +213,15 @@ bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
         if (ImGuiWindow* panel = ImGui::FindWindowByName("Controls")) ImGui::FocusWindow(panel);
         g.NavDisableHighlight = false;
         g.NavDisableMouseHover = true;
-    } else if (key == SDLK_ESCAPE && !ImGui::GetIO().WantTextInput) {
-        // Esc with nothing being typed: the keyboard back to the sandbox (ImGui would only
-        // move the cursor out of a child window).
-        releaseKeyboard();
-        return true;
+    } else if (key == SDLK_ESCAPE) {
+        // Esc: the keyboard back to the sandbox. With nothing being typed at once (ImGui would
+        // only move the cursor out of a child window); a field being typed in first sees the
+        // Esc (it drops what was typed), and the keyboard goes back after that frame.
+        if (!ImGui::GetIO().WantTextInput) {
+            releaseKeyboard();
+            return true;
+        }
+        releaseAfter_ = ImGui::GetFrameCount() + 1;
     }
     if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
     return true;
@@ -227,6 +239,10 @@ void GuiContext::releaseKeyboard() {
     ImGui::ClearActiveID();
     ImGui::FocusWindow(nullptr);
     g.NavDisableHighlight = true;
+    // The last frame's flags would still say a field wants the keys until the next frame.
+    g.IO.WantTextInput = false;
+    g.IO.WantCaptureKeyboard = false;
+    g.WantTextInputNextFrame = 0;
 }
 
 bool GuiContext::overWindow(ImVec2 p) const {
@@ -242,6 +258,7 @@ bool GuiContext::overWindow(ImVec2 p) const {
 
 void GuiContext::beginFrame() {
     makeCurrent();
+    releaseIfDue();
     if (!platform_) throw std::logic_error("GuiContext::beginFrame(): no window; give a size");
     ImGui_ImplSDL2_NewFrame();
     // The 1.86 backend polls SDL's global mouse state, which on X11 can lag the events (under

@@ -104,6 +104,8 @@ class GuiContext {
     bool loadFont(float pixelScale);
     /// Drops the keyboard: no focused window, no navigation cursor (Esc).
     void releaseKeyboard();
+    /// The keyboard back to the sandbox once the frame that saw an Esc (in a field) is done.
+    void releaseIfDue();
     /// handleEvent for a key press or release.
     bool handleKey(const SDL_Event& event, bool tabToPanel);
 
@@ -115,8 +117,9 @@ class GuiContext {
     Uint32 takenButtons_ = 0;      // SDL_BUTTON masks of the presses the controls took
     std::unique_ptr<ImGuiRenderer> renderer_;
     GuiOptions options_;
-    float scale_ = 1.f;       // the UI's scale
-    float fontScale_ = 0.f;   // pixels per ImGui point the atlas was rasterised for
+    float scale_ = 1.f;      // the UI's scale
+    float fontScale_ = 0.f;  // pixels per ImGui point the atlas was rasterised for
+    int releaseAfter_ = 0;   // the frame after which Esc gives the keyboard back (0: none)
 };
 
 }  // namespace psb::app
