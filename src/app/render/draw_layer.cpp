@@ -32,6 +32,10 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
           frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
         if (r.w > 0) avoid.push_back(sdlRect(r));
     }
+    // Labels keep out from under the control panel (drawn over them).
+    if (frame.controlsInset > 0) {
+        avoid.push_back({0, 0, frame.controlsInset, camera.viewportHeight()});
+    }
     const DrawStats stats = renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_,
                                            frame.trailParticle, &avoid);
     const Palette& colours = palette(frame.view.theme);
