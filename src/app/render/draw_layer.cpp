@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/sdl_color.hpp"
 #include "render/obstacle_drawing.hpp"
 #include "render/overlay_drawing.hpp"
+#include "render/sdl_color.hpp"
 #include "render/sdl_rect.hpp"
 #include "render/selection_outline.hpp"
 #include "render/text.hpp"
@@ -70,9 +70,8 @@ void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch
     labelFont_.draw(text_);
 }
 
-void DrawLayer::drawDropper(const Camera& camera, const DropperView& d,
-                            const Palette& colours) {
-    const SDL_Color spout = sdlColor(colours.obstacle);
+void DrawLayer::drawDropper(const Camera& camera, const DropperView& d, const Palette& colours) {
+    const SDL_Color spout = sdlColor(colours.dropper);
     // A spout: a funnel narrowing down to just above where a ball starts, as wide as the spread
     // and a ball either side, at least a few pixels whatever the zoom; its words to the right.
     const Vec2 at = camera.worldToScreen(d.at);
@@ -90,7 +89,7 @@ void DrawLayer::drawDropper(const Camera& camera, const DropperView& d,
     text_.clear();
     labelFont_.layout(d.label, static_cast<float>(at.x() + high + 6.0),
                       static_cast<float>(0.5 * (top + bottom) - labelFont_.lineHeight() / 2.0),
-                      sdlColor(colours.text), text_);
+                      sdlColor(colours.dropperText), text_);
     labelFont_.draw(text_);
 }
 
@@ -99,8 +98,7 @@ void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) 
     obstacleMarks_.clear();
     // The selection's yellow, as the selected particle's ring; the preview a dim ghost.
     if (frame.selectedObstacle) {
-        batchObstacle(*frame.selectedObstacle, camera, sdlColor(colours.highlight),
-                      obstacleMarks_);
+        batchObstacle(*frame.selectedObstacle, camera, sdlColor(colours.highlight), obstacleMarks_);
     }
     if (frame.obstaclePreview) {
         // Opaque: a translucent capsule would show its caps' overlap with the bar.

@@ -27,6 +27,8 @@ constexpr Palette kDark{
     .warning = {255, 110, 100},
     .obstacle = {190, 195, 205},
     .preview = {105, 108, 115},
+    .dropper = {150, 165, 185},
+    .dropperText = {200, 210, 225},
     .ghost = {200, 200, 200, 90},
     .launchArrow = {200, 200, 200},
     .momentumArrow = {255, 150, 30},
@@ -60,6 +62,8 @@ constexpr Palette kLight{
     .warning = {170, 51, 0},  // a dark vermillion: 6:1 on white, where the bright one is 3.8:1
     .obstacle = {100, 100, 110},
     .preview = {185, 185, 195},
+    .dropper = {90, 100, 120},
+    .dropperText = {40, 45, 60},
     .ghost = {0, 0, 0, 60},
     .launchArrow = {60, 60, 60},
     .momentumArrow = kOrange,
@@ -114,8 +118,11 @@ Color lightColour(Color c) {
         double hue;
         Rgba colour;
     };
-    constexpr Entry kHues[] = {{15.0, kVermillion},   {45.0, kOrange}, {160.0, kBluishGreen},
-                               {205.0, kSkyBlue},     {325.0, kReddishPurple}};
+    constexpr Entry kHues[] = {{15.0, kVermillion},
+                               {45.0, kOrange},
+                               {160.0, kBluishGreen},
+                               {205.0, kSkyBlue},
+                               {325.0, kReddishPurple}};
     const Entry* best = &kHues[0];
     double bestDistance = 360.0;
     for (const Entry& e : kHues) {

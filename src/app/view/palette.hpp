@@ -40,6 +40,8 @@ struct Palette {
     Rgba warning;        ///< the recording mark, notes in red
     Rgba obstacle;       ///< pegs and walls drawn in the box
     Rgba preview;        ///< the obstacle tool's preview
+    Rgba dropper;        ///< a ball dropper's spout
+    Rgba dropperText;    ///< the words beside it
     Rgba ghost;          ///< a launch's disc before it is let go
     Rgba launchArrow;    ///< a launch's arrow
     Rgba momentumArrow;  ///< each particle's m v
