@@ -112,6 +112,14 @@ App::App(const AppOptions& options) : options_(options) {
     gui.fontPixels = 15.f;
     gui_ = std::make_unique<GuiContext>(sdl_->window(), sdl_->renderer(), gui);
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
+    // The UI's scale for the window's height, then what the settings file keeps over it.
+    session_->apply(cmd::SetUiScale{automaticScale(), true});
+    (void)session_->takeNotices();  // the starting scale is no news
+    if (options_.settingsFile && options_.benchParticles == 0) {
+        settings_.emplace(*options_.settingsFile);
+        loadSettings();
+    }
+    syncLook();
     for (const VideoFormat f : {VideoFormat::Mp4, VideoFormat::WebM, VideoFormat::Gif}) {
         stats_.video.unavailable[static_cast<std::size_t>(f)] = videoFormatProblem(f).value_or("");
     }
@@ -180,7 +188,13 @@ std::vector<std::string> App::messages() const {
 }
 
 void App::apply(const Command& c) {
-    session_->apply(c);
+    if (const auto* u = std::get_if<cmd::SetUiScale>(&c); u && u->automatic) {
+        session_->apply(cmd::SetUiScale{automaticScale(), true});  // only the app knows the window
+    } else {
+        session_->apply(c);
+    }
+    syncLook();
+    saveSettings();
     if (const std::optional<VideoSettings> video = session_->takeVideoToggle()) {
         toggleVideo(*video);
     }
@@ -213,16 +227,67 @@ void App::show(const std::string& text) {
 
 void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
-    if (gui_ && gui_->handleEvent(e)) return;
+    const bool tabToPanel = !session_->prompt().active() && !session_->dialog().open();
+    if (gui_ && gui_->handleEvent(e, tabToPanel)) return;
     for (Command& c :
          input_.translate(e, keyState(*session_), sdl_->pixelRatio(), sdl_->outputSize())) {
         // A new window size comes with where the box may go in it.
         if (auto* r = std::get_if<cmd::Resize>(&c)) {
+            // An automatic scale follows the window's height: the fonts first, for the layout.
+            if (session_->view().uiScaleAutomatic) {
+                session_->apply(cmd::SetUiScale{automaticScale(), true});
+                syncLook();
+            }
             r->layout =
                 windowLayout(sdl_->hudFont(), r->width, r->height, controls_, options_.inPage);
         }
         apply(c);
     }
+}
+
+double App::automaticScale() const {
+    return automaticUiScale(sdl_->windowSize().y);
+}
+
+void App::syncLook() {
+    const ViewOptions& view = session_->view();
+    if (view.theme != theme_) {
+        gui_->setTheme(view.theme);
+        theme_ = view.theme;
+    }
+    const double points = sdl_->pixelRatio() * view.uiScale;
+    if (points == lookPoints_) return;
+    lookPoints_ = points;
+    try {
+        sdl_->setTextScale(points);
+        gui_->setScale(static_cast<float>(view.uiScale));
+    } catch (const std::exception& e) {  // a font file gone since the start
+        logLine(std::string("[E] The text could not be made at the new scale: ") + e.what());
+    }
+    controls_ = controlsWidth(points);
+    const SDL_Point out = sdl_->outputSize();
+    session_->apply(cmd::Resize{out.x, out.y,
+                                windowLayout(sdl_->hudFont(), out.x, out.y, controls_,
+                                             options_.inPage)});
+}
+
+void App::loadSettings() {
+    // Out of the way while its own settings are applied: they are what the file holds.
+    SettingsStore store = std::move(*settings_);
+    settings_.reset();
+    const SettingsRead read = store.load(session_->view());
+    for (const std::string& problem : read.problems)
+        warn(problem);
+    for (const Command& c : read.commands)
+        apply(c);
+    if (!read.commands.empty()) logLine("[I] Settings read from " + store.file().string());
+    store.keep(session_->view());
+    settings_.emplace(std::move(store));
+}
+
+void App::saveSettings() {
+    if (!settings_) return;
+    if (const auto problem = settings_->save(session_->view())) warn(*problem);
 }
 
 void App::greet() {
@@ -320,8 +385,10 @@ void App::render() {
     const SDL_Point out = sdl_->outputSize();
     // The help is read, then closed: meanwhile it takes the window's width, the panel's too.
     if (!session_->helpShown()) {
-        for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / ratio),
-                                             static_cast<float>(ratio))) {
+        // The panel's points are the UI's (gui_context.hpp): the pixel ratio × its scale.
+        const double points = ratio * session_->view().uiScale;
+        for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / points),
+                                             static_cast<float>(points))) {
             apply(c);
         }
     }
@@ -352,9 +419,10 @@ void App::logControls() {
     if (samePlaces(items, loggedItems_)) return;
     loggedItems_ = items;
     char buf[160];
+    const float scale = gui_->scale();  // the panel's points in window points
     for (const PanelItem& i : items) {
         std::snprintf(buf, sizeof buf, "[I] Control %s at %.0f %.0f", i.name.c_str(),
-                      (i.x0 + i.x1) / 2.f, (i.y0 + i.y1) / 2.f);
+                      scale * (i.x0 + i.x1) / 2.f, scale * (i.y0 + i.y1) / 2.f);
         logLine(buf);
     }
 }

@@ -46,6 +46,7 @@
 #include "gui/gui_context.hpp"
 #include "platform/input.hpp"
 #include "platform/sdl_context.hpp"
+#include "platform/settings_store.hpp"
 #include "platform/video_recorder.hpp"
 #include "render/draw_layer.hpp"
 #include "session/session.hpp"
@@ -81,6 +82,9 @@ struct AppOptions {
     /// Log "[I] Control NAME at X Y" (window points, the control's centre) for every control of
     /// the panel whenever their places change, for scripts that drive the window.
     bool logControls = false;
+    /// The settings file to read at start and keep the settings in (settings_store.hpp); none:
+    /// neither read nor written (--no-settings, --bench, the tests).
+    std::optional<std::filesystem::path> settingsFile;
 };
 
 class App {
@@ -139,6 +143,8 @@ class App {
     [[nodiscard]] const FrameView& lastFrame() const { return lastFrame_; }
     /// The control panel as the last render() built it.
     [[nodiscard]] const ControlPanel& panel() const { return panel_; }
+    /// Whether the control panel has the keyboard (Tab gave it, Esc takes it back).
+    [[nodiscard]] bool panelHasKeyboard() const { return gui_->hasKeyboard(); }
     /// The control panel, for a loop that sets its mode and takes its requests (the browser's).
     [[nodiscard]] ControlPanel& controlPanel() { return panel_; }
 
@@ -165,6 +171,15 @@ class App {
     [[nodiscard]] double now() const;
     /// Logs `text` and shows it as a message; `level` as the session's notices.
     void tell(const std::string& text, Notice::Level level = Notice::Level::Info);
+    /// The window's look as the session's view asks: ImGui's colours for its theme, and for its
+    /// UI scale the fonts (HUD, labels, panel) made again at their new size and the box fitted
+    /// to the layout they give.
+    void syncLook();
+    /// The automatic UI scale for the window as it is (automaticUiScale of its height).
+    [[nodiscard]] double automaticScale() const;
+    /// The settings file: read at start, written when a kept setting changes.
+    void loadSettings();
+    void saveSettings();
 
     // Video (app_video.cpp): Ctrl+R starts and stops a VideoRecorder fed from render().
     void toggleVideo(const VideoSettings& settings);
@@ -190,6 +205,9 @@ class App {
     std::unique_ptr<DrawLayer> draw_;
     Input input_;
     bool textInput_ = false;
+    std::optional<SettingsStore> settings_;
+    Theme theme_ = Theme::Dark;  ///< ImGui's colours now
+    double lookPoints_ = 0.0;    ///< pixels per UI point the fonts were made for (0: not yet)
 
     std::vector<Message> messages_;
     std::optional<std::filesystem::path> lastScreenshot_;

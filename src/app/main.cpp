@@ -1,6 +1,7 @@
 // particle-sandbox: the interactive window. Parses the command line and runs the App.
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <memory>
 #include <regex>
@@ -12,6 +13,7 @@
 #include "build_info.hpp"
 #include "platform/assets.hpp"
 #include "platform/output_directory.hpp"
+#include "platform/settings_store.hpp"
 #ifdef __EMSCRIPTEN__
 #include "browser_loop.hpp"
 #endif
@@ -90,6 +92,10 @@ int main(int argc, char** argv) {
     cli.add_option("--record", record,
                    "Record a video from the start, into --screenshot-dir: mp4, webm or gif "
                    "(Ctrl+R stops); with --bench, every frame (what recording sustains)");
+    bool noSettings = false;
+    cli.add_flag("--no-settings", noSettings,
+                 "Neither read nor write the settings file ($XDG_CONFIG_HOME/particle-sandbox/"
+                 "settings.json, else ~/.config/...): UI scale, theme, what is shown");
     cli.add_flag("--log-controls", options.logControls,
                  "Log where each control of the panel is when they move (for scripted input)");
     try {
@@ -138,6 +144,13 @@ int main(int argc, char** argv) {
     options.screenshotDir = screenshotDir;
     options.arrows = !noArrows;
     options.vsync = !noVsync && options.benchParticles == 0;
+#ifndef __EMSCRIPTEN__
+    // The benchmark measures the program's defaults, not the user's settings.
+    if (!noSettings && options.benchParticles == 0) {
+        options.settingsFile =
+            psb::app::settingsPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+    }
+#endif
 
 #ifdef __EMSCRIPTEN__
     options.inPage = true;  // Esc does not quit, what is saved is downloaded

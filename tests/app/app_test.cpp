@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -43,7 +44,10 @@ class AppTest : public TempDirTest {
         SDL_Event e{};
         e.type = SDL_KEYDOWN;
         e.key.keysym.sym = sym;
+        e.key.keysym.scancode = SDL_GetScancodeFromKey(sym);
         e.key.keysym.mod = mod;
+        app.processEvent(e);
+        e.type = SDL_KEYUP;
         app.processEvent(e);
     }
     /// A letter as the keyboard delivers it: the key, then its text (while text input is on).
@@ -278,6 +282,116 @@ TEST_F(AppTest, ASceneNamedOnTheCommandLineOpensPausedAndCtrlSWritesItsFile) {
     key(app, SDLK_ESCAPE);
     EXPECT_FALSE(app.session().dialog().open());
     EXPECT_TRUE(app.session().running());
+}
+
+TEST_F(AppTest, TabGivesThePanelTheKeysAndEscGivesThemBack) {
+    AppOptions o = options();
+    o.width = o.height = 800;  // the panel open
+    App app(o);
+    app.frame(0.0);
+    ASSERT_TRUE(app.session().controlsShown());
+    EXPECT_FALSE(app.panelHasKeyboard());
+    key(app, SDLK_a);
+    EXPECT_FALSE(app.session().view().arrows) << "A is the sandbox's while the panel has no keys";
+    key(app, SDLK_TAB);
+    app.frame(0.0);
+    EXPECT_TRUE(app.panelHasKeyboard());
+    const Vec2 centre = app.camera().screenToWorld(Vec2(400, 400));
+    key(app, SDLK_a);
+    key(app, SDLK_LEFT);
+    app.frame(0.0);
+    EXPECT_FALSE(app.session().view().arrows) << "A went to the panel";
+    EXPECT_TRUE(app.camera().screenToWorld(Vec2(400, 400)).isApprox(centre))
+        << "Left moved through the panel, not the view";
+    key(app, SDLK_ESCAPE);
+    app.frame(0.0);
+    EXPECT_FALSE(app.panelHasKeyboard());
+    EXPECT_TRUE(app.running()) << "that Esc was the panel's: no quit";
+    key(app, SDLK_a);
+    EXPECT_TRUE(app.session().view().arrows) << "the keys are the sandbox's again";
+    // While the edit prompt is open Tab is its own (next field), never the panel's.
+    click(app, kYellow, 1000);
+    key(app, SDLK_RETURN);
+    ASSERT_TRUE(app.editing());
+    key(app, SDLK_TAB);
+    app.frame(0.0);
+    EXPECT_FALSE(app.panelHasKeyboard());
+}
+
+TEST_F(AppTest, TheUiScaleAndThemeAreKeptInTheSettingsFileAndReadAtTheNextStart) {
+    AppOptions o = options();
+    o.width = o.height = 800;
+    o.settingsFile = dir_ / "config" / "particle-sandbox" / "settings.json";
+    int hudAtOne = 0;
+    {
+        App app(o);
+        app.frame(0.0);
+        hudAtOne = app.lastFrame().layout.hud.h;
+        EXPECT_EQ(app.session().view().uiScale, 1.0);
+        EXPECT_FALSE(std::filesystem::exists(*o.settingsFile)) << "nothing changed yet";
+        key(app, SDLK_t, KMOD_LCTRL);
+        for (int k = 0; k < 5; ++k)  // 110, 125, 150, 175, 200 %
+            key(app, SDLK_EQUALS, KMOD_LCTRL);
+        app.frame(0.0);
+        EXPECT_EQ(app.session().view().uiScale, 2.0);
+        EXPECT_EQ(app.session().view().theme, Theme::Light);
+        EXPECT_GT(app.lastFrame().layout.hud.h, 1.8 * hudAtOne) << "the HUD's text is bigger";
+        ASSERT_TRUE(std::filesystem::exists(*o.settingsFile));
+    }
+    App again(o);
+    again.frame(0.0);
+    EXPECT_EQ(again.session().view().uiScale, 2.0);
+    EXPECT_FALSE(again.session().view().uiScaleAutomatic);
+    EXPECT_EQ(again.session().view().theme, Theme::Light);
+    EXPECT_GT(again.lastFrame().layout.hud.h, 1.8 * hudAtOne);
+    // Ctrl+0: automatic again (100 % for an 800-point window), and the file says so.
+    key(again, SDLK_0, KMOD_LCTRL);
+    again.frame(0.0);
+    EXPECT_TRUE(again.session().view().uiScaleAutomatic);
+    EXPECT_EQ(again.session().view().uiScale, 1.0);
+    EXPECT_EQ(again.lastFrame().layout.hud.h, hudAtOne);
+    std::ifstream in(*o.settingsFile);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NE(text.find("\"scale\": \"auto\""), std::string::npos) << text;
+}
+
+TEST_F(AppTest, ABrokenSettingsFileIsReportedAndIgnored) {
+    AppOptions o = options();
+    o.settingsFile = dir_ / "settings.json";
+    std::ofstream(*o.settingsFile) << "{\"ui\": {\"theme\": ";
+    App app(o);
+    app.frame(0.0);
+    EXPECT_EQ(app.session().view().theme, Theme::Dark);
+    const auto shown = app.messages();
+    EXPECT_TRUE(std::any_of(shown.begin(), shown.end(), [&](const std::string& m) {
+        return m.find(o.settingsFile->string()) != std::string::npos &&
+               m.find("not JSON") != std::string::npos;
+    })) << "the message names the file and what is wrong";
+}
+
+TEST_F(AppTest, TheLightThemeDrawsALightWindow) {
+    App app(options());
+    key(app, SDLK_t, KMOD_LCTRL);
+    key(app, SDLK_F12);
+    app.frame(0.0);
+    ASSERT_TRUE(app.lastScreenshot().has_value());
+    int w = 0, h = 0, n = 0;
+    unsigned char* px = stbi_load(app.lastScreenshot()->c_str(), &w, &h, &n, 3);
+    ASSERT_NE(px, nullptr) << stbi_failure_reason();
+    const Vec2 c = app.camera().worldToScreen(kEmpty);
+    const std::size_t i = 3 * (static_cast<std::size_t>(std::lround(c.y())) * w +
+                               static_cast<std::size_t>(std::lround(c.x())));
+    EXPECT_EQ(px[i], 255);
+    EXPECT_EQ(px[i + 1], 255);
+    EXPECT_EQ(px[i + 2], 255);
+    // The yellow particle becomes Okabe–Ito's orange, seen on white.
+    const Vec2 y = app.camera().worldToScreen(kYellow);
+    const std::size_t j = 3 * (static_cast<std::size_t>(std::lround(y.y())) * w +
+                               static_cast<std::size_t>(std::lround(y.x())));
+    EXPECT_NEAR(px[j], 230, 8);
+    EXPECT_NEAR(px[j + 1], 159, 8);
+    EXPECT_NEAR(px[j + 2], 0, 8);
+    stbi_image_free(px);
 }
 
 TEST_F(AppTest, F12WritesTheWindowAsAPng) {

@@ -30,6 +30,9 @@ e2e_begin() {
     OUT=${2:-$(pwd)/${name}-e2e-out}
     mkdir -p "$OUT"
     rm -f "$OUT"/*.png "$OUT"/*.txt "$OUT"/*.log "$OUT"/*.json
+    # The program's settings file in a folder of the test's own, fresh: never the user's.
+    rm -rf "$OUT/config"
+    export XDG_CONFIG_HOME="$OUT/config"
     fail() {
         echo "FAIL: $*" >&2
         show_logs

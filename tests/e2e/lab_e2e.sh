@@ -81,7 +81,7 @@ read -r shown < <(sed -E 's/^Grid: ([0-9.]+) (m|mm) squares.*/\1 \2/' <<<"$legen
     awk '{ print ($2 == "mm") ? $1 / 1000 : $1 }')
 awk -v a="$shown" -v b="$step" 'BEGIN { exit !(a > 0.999 * b && a < 1.001 * b) }' ||
     fail "the grid's squares are not $step m at $ZOOM px/m: $legend"
-read -r _ _ n < <(centroid "$OUT/grid.png" 55 66 84)
+read -r _ _ n < <(centroid "$OUT/grid.png" 55 66 84)  # the dark theme's grid (view/palette.cpp)
 ((n > 500)) || fail "only $n pixels of the grid's colour on screen"
 pass "the grid: $(section grid Grid), $n pixels of its lines"
 

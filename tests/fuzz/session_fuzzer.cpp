@@ -116,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 60)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 62)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -321,6 +321,15 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                     return cmd::ResizeBox{w * std::sqrt(0.9), h * std::sqrt(0.9)};
             }
         }
+        case 60: {
+            static const double kScales[] = {
+                0.75, 3.0, 1.0, 0.0, 0.74, 3.01, -1.0, std::numeric_limits<double>::quiet_NaN()};
+            return cmd::SetUiScale{in.ConsumeBool() ? value(in, 0.0, 4.0)
+                                                    : kScales[in.ConsumeIntegralInRange<int>(0, 7)],
+                                   in.ConsumeBool()};
+        }
+        case 61:
+            return cmd::SetTheme{in.ConsumeBool() ? Theme::Light : Theme::Dark};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }

@@ -113,6 +113,7 @@ pass "particle-sim ran the installed Newton's cradle: $(grep -o '"collisions": [
 # --- 5. the sandbox under Xvfb ------------------------------------------------------------
 start_xvfb "$OUT/xvfb.log" 640x560x24 || fail "could not start Xvfb"
 export SDL_AUDIODRIVER=dummy
+export XDG_CONFIG_HOME="$OUT/config"  # the settings file, if written: not the user's
 env -u PSB_ASSETS_DIR "$STAGE/bin/particle-sandbox" \
     "$STAGE/share/particle-sandbox/scenes/03-billiards-break.json" --renderer software \
     --window 600x500 --screenshot-dir "$elsewhere" >"$OUT/sandbox.log" 2>"$OUT/sandbox.err" &

@@ -17,9 +17,6 @@ using widgets::tip;
 
 namespace {
 
-/// The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
-/// than blended ones (docs/app.md, "Frame time").
-const ImVec4 kPanelBackground{0.09f, 0.10f, 0.12f, 1.f};
 
 void copyPath(std::array<char, 512>& to, const std::filesystem::path& from) {
     const std::string s = from.string();
@@ -49,7 +46,9 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     const bool open = s.controlsShown();
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(open ? kControlsWidth : kControlsFoldedWidth, height));
-    ImGui::PushStyleColor(ImGuiCol_WindowBg, kPanelBackground);
+    // The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
+    // than blended ones (docs/app.md, "Frame time").
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, widgets::colour(palette(s.view().theme).controls));
     if (!open) {
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
                             ImVec2(kControlsFoldedPadding, ImGui::GetStyle().WindowPadding.y));
@@ -164,7 +163,7 @@ void ControlPanel::time(const Session& s) {
     mark("Speed");
     tip("Simulated seconds per real second: x1 is real time, x0.25 slow motion (keys , and .)");
     if (!s.paused() && s.reachedTimeScale() < 0.95 * s.timeScale()) {
-        ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "Reaching only x%.2g: too much to compute",
+        ImGui::TextColored(widgets::caution(s.view().theme), "Reaching only x%.2g: too much to compute",
                            s.reachedTimeScale());
     }
     stopwatch(s);
@@ -196,7 +195,7 @@ void ControlPanel::stopwatch(const Session& s) {
     if (w.used()) {
         ImGui::SameLine();
         if (w.beforeStart(now)) {
-            ImGui::TextColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "before its start");
+            ImGui::TextColored(widgets::caution(s.view().theme), "before its start");
         } else {
             ImGui::Text("%.3f s", w.reading(now));
         }
@@ -277,7 +276,7 @@ void ControlPanel::scene(const Session& s) {
 
 void ControlPanel::fileError(const Session& s) {
     if (s.fileError().empty()) return;
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+    ImGui::PushStyleColor(ImGuiCol_Text, widgets::problem(s.view().theme));
     ImGui::TextWrapped("%s", s.fileError().c_str());
     ImGui::PopStyleColor();
 }
@@ -346,7 +345,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
             "chance");
     }
     if (sideColumnFolded(s, controlsWidth(pixelRatio))) {
-        widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f),
+        widgets::wrappedColored(widgets::caution(s.view().theme),
                                 "Folded away: the window leaves the charts no room beside the "
                                 "box (fold this panel with C, or widen the window)");
     }
@@ -369,6 +368,49 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     if (ImGui::Button("Keys")) out_.emplace_back(cmd::ToggleHelp{});
     mark("Keys");
     tip("Show every key and where its control is here (key H; Esc closes it)");
+    look(s);
+}
+
+void ControlPanel::look(const Session& s) {
+    const ViewOptions& v = s.view();
+    // The scale is applied when the slider is let go: the panel grows under the pointer.
+    int percent = scaleHeld_ ? scaleDraft_ : static_cast<int>(std::lround(100.0 * v.uiScale));
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
+    if (ImGui::SliderInt("UI scale", &percent, static_cast<int>(100 * kMinUiScale),
+                         static_cast<int>(100 * kMaxUiScale), "%d %%",
+                         ImGuiSliderFlags_AlwaysClamp)) {
+        scaleDraft_ = percent;
+    }
+    scaleHeld_ = ImGui::IsItemActive();
+    if (ImGui::IsItemDeactivatedAfterEdit()) {
+        out_.emplace_back(cmd::SetUiScale{scaleDraft_ / 100.0, false});
+    }
+    mark("UI scale");
+    tip("The panel, the HUD, the labels and the charts together, 75 % to 300 %, the text drawn "
+        "at its size (Ctrl+plus, Ctrl+minus). Kept between runs");
+    ImGui::SameLine();
+    ImGui::BeginDisabled(v.uiScaleAutomatic);
+    if (ImGui::Button("Auto")) out_.emplace_back(cmd::SetUiScale{v.uiScale, true});
+    ImGui::EndDisabled();
+    mark("UI scale auto");
+    tip(v.uiScaleAutomatic ? "Automatic now: the scale follows the window's height (100 % up to "
+                             "899 points, 150 % at 1080)"
+                           : "Back to the automatic scale, which follows the window's height "
+                             "(Ctrl+0)");
+    ImGui::TextUnformatted("Theme");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Dark", v.theme == Theme::Dark)) {
+        out_.emplace_back(cmd::SetTheme{Theme::Dark});
+    }
+    mark("theme Dark");
+    tip("Light text on black (Ctrl+T switches)");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("Light (projector)", v.theme == Theme::Light)) {
+        out_.emplace_back(cmd::SetTheme{Theme::Light});
+    }
+    mark("theme Light");
+    tip("Dark text on white, high contrast, in colours colour-blind viewers tell apart: for a "
+        "projector (Ctrl+T switches)");
 }
 
 void ControlPanel::tools(const Session& s, float) {

@@ -50,7 +50,7 @@ inline constexpr float kControlsFoldedPadding = 6.f;
 /// The panel's width open and folded, pixels, at `pixelRatio` pixels per point: what the view
 /// keeps free for it at the window's left.
 [[nodiscard]] inline ControlsWidth controlsWidth(double pixelRatio) {
-    return {kControlsWidth * pixelRatio, kControlsFoldedWidth * pixelRatio};
+    return {kControlsWidth * pixelRatio, kControlsFoldedWidth * pixelRatio, pixelRatio};
 }
 
 /// Scenes with more particles than this get no all-particles table.
@@ -100,6 +100,8 @@ class ControlPanel {
     /// The stopwatch's row in the Time section.
     void stopwatch(const Session& s);
     void show(const Session& s, float pixelRatio);
+    /// The Show section's UI scale and theme.
+    void look(const Session& s);
     void tools(const Session& s, float pixelRatio);
     /// The obstacle tools' sizes and the selected obstacle's Delete button (section_obstacles.cpp).
     void obstacleTools(const Session& s);
@@ -141,6 +143,9 @@ class ControlPanel {
     bool newWalls_ = true;
     int shownDialog_ = 0;  ///< the Dialog::Kind the fields were filled for
     int substeps_ = 4;
+    /// The UI scale slider while it is held (percent): applied when let go.
+    int scaleDraft_ = 100;
+    bool scaleHeld_ = false;
     /// The Data section: the file name typed for Export, steps between trajectory samples.
     std::array<char, 512> exportName_{};
     int recordEvery_ = 0;

@@ -1,5 +1,6 @@
 #include "gui/gui_context.hpp"
 
+#include <algorithm>
 #include <cfloat>
 #include <stdexcept>
 #include <string>
@@ -27,7 +28,7 @@ GuiContext::GuiContext(SDL_Renderer* renderer, const GuiOptions& options)
     : GuiContext(nullptr, renderer, options) {}
 
 GuiContext::GuiContext(SDL_Window* window, SDL_Renderer* renderer, const GuiOptions& options)
-    : window_(window), sdl_(renderer) {
+    : window_(window), sdl_(renderer), options_(options) {
     if (sdl_ == nullptr) throw std::runtime_error("GuiContext: no SDL renderer");
     IMGUI_CHECKVERSION();
     ImGuiContext* previous = ImGui::GetCurrentContext();
@@ -37,15 +38,20 @@ GuiContext::GuiContext(SDL_Window* window, SDL_Renderer* renderer, const GuiOpti
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.LogFilename = nullptr;
-        ImGui::StyleColorsDark();
+        setTheme(Theme::Dark);
         if (window_ != nullptr) {
             if (!ImGui_ImplSDL2_InitForSDLRenderer(window_)) {
                 throw std::runtime_error("GuiContext: the SDL2 platform backend did not start");
             }
             platform_ = true;
+            // The keyboard moves through the panel (the backend maps the keys it needs); which
+            // keys reach it is decided in handleEvent, so ImGui's own capture flag (set whenever
+            // its window has focus) is not used.
+            io.ConfigFlags |=
+                ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavNoCaptureKeyboard;
         }
         const float scale = window_ != nullptr ? windowPixelScale(window_, sdl_) : 1.f;
-        loadFont(options, scale);
+        loadFont(scale);
         renderer_ = std::make_unique<ImGuiRenderer>(sdl_);
     } catch (...) {
         shutDown();
@@ -72,8 +78,39 @@ void GuiContext::makeCurrent() const {
     ImGui::SetCurrentContext(context_);
 }
 
-void GuiContext::loadFont(const GuiOptions& options, float pixelScale) {
-    if (options.font.empty()) return;
+void GuiContext::setScale(float scale) {
+    makeCurrent();
+    scale = std::clamp(scale, static_cast<float>(kMinUiScale), static_cast<float>(kMaxUiScale));
+    if (scale == scale_) return;
+    scale_ = scale;
+    if (loadFont(window_ != nullptr ? windowPixelScale(window_, sdl_) : 1.f)) {
+        renderer_->rebuildFontTexture();
+    }
+}
+
+void GuiContext::setTheme(Theme theme) {
+    makeCurrent();
+    ImGuiStyle& style = ImGui::GetStyle();
+    if (theme == Theme::Light) {
+        ImGui::StyleColorsLight(&style);
+        // Darker text, frames and headers than ImGui's light style: read from across a room.
+        style.Colors[ImGuiCol_Text] = ImVec4(0.f, 0.f, 0.f, 1.f);
+        style.Colors[ImGuiCol_TextDisabled] = ImVec4(0.33f, 0.33f, 0.33f, 1.f);
+        style.Colors[ImGuiCol_FrameBg] = ImVec4(0.86f, 0.86f, 0.86f, 1.f);
+        style.Colors[ImGuiCol_Border] = ImVec4(0.f, 0.f, 0.f, 0.45f);
+        style.Colors[ImGuiCol_NavHighlight] = ImVec4(0.f, 0.45f, 0.70f, 1.f);  // Okabe–Ito blue
+        style.FrameBorderSize = 1.f;
+    } else {
+        ImGui::StyleColorsDark(&style);
+        style.FrameBorderSize = 0.f;
+    }
+}
+
+bool GuiContext::loadFont(float pixelScale) {
+    const GuiOptions& options = options_;
+    if (options.font.empty()) return false;
+    pixelScale *= scale_;
+    if (pixelScale == fontScale_) return false;
     if (!(options.fontPixels > 0.f)) {
         throw std::runtime_error("GuiContext: font size must be > 0 points");
     }
@@ -85,6 +122,7 @@ void GuiContext::loadFont(const GuiOptions& options, float pixelScale) {
         throw std::runtime_error("GuiContext: no font file " + options.font.string());
     }
     ImGuiIO& io = ImGui::GetIO();
+    io.Fonts->Clear();
     ImFontConfig config;
     config.OversampleH = 1;
     config.PixelSnapH = true;
@@ -95,10 +133,13 @@ void GuiContext::loadFont(const GuiOptions& options, float pixelScale) {
         throw std::runtime_error("GuiContext: cannot load font " + options.font.string());
     }
     io.FontGlobalScale = 1.f / pixelScale;
+    fontScale_ = pixelScale;
+    return true;
 }
 
-bool GuiContext::handleEvent(const SDL_Event& event) {
+bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
     makeCurrent();
+    if (event.type == SDL_KEYDOWN || event.type == SDL_KEYUP) return handleKey(event, tabToPanel);
     if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
     if (event.type == SDL_MOUSEMOTION) {
         mouse_ = ImVec2(static_cast<float>(event.motion.x), static_cast<float>(event.motion.y));
@@ -136,9 +177,6 @@ bool GuiContext::handleEvent(const SDL_Event& event) {
         case SDL_MOUSEMOTION:
             // A drag the world started goes on over a panel; ImGui's own drags are captured.
             return io.WantCaptureMouse;
-        case SDL_KEYDOWN:
-        case SDL_KEYUP:
-            return io.WantCaptureKeyboard;
         case SDL_TEXTINPUT:
         case SDL_TEXTEDITING:
             return io.WantTextInput;
@@ -147,9 +185,72 @@ bool GuiContext::handleEvent(const SDL_Event& event) {
     }
 }
 
+void GuiContext::releaseIfDue() {
+    if (releaseAfter_ > 0 && ImGui::GetFrameCount() >= releaseAfter_) {
+        releaseAfter_ = 0;
+        releaseKeyboard();
+    }
+}
+
+bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
+    releaseIfDue();  // a key right after the frame that saw an Esc is the sandbox's
+    const SDL_Keycode key = event.key.keysym.sym;
+    const bool modifier = key == SDLK_LCTRL || key == SDLK_RCTRL || key == SDLK_LSHIFT ||
+                          key == SDLK_RSHIFT || key == SDLK_LALT || key == SDLK_RALT ||
+                          key == SDLK_LGUI || key == SDLK_RGUI;
+    // Releases and modifiers always reach ImGui: no key stays down in it, and Ctrl+click on a
+    // slider (type a value) sees Ctrl.
+    if (event.type == SDL_KEYUP || modifier) {
+        const bool had = hasKeyboard();
+        if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
+        return had && !modifier;
+    }
+    if (key == SDLK_F12) return false;
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    const bool plainTab = key == SDLK_TAB && (event.key.keysym.mod & (KMOD_CTRL | KMOD_ALT)) == 0;
+    if (!hasKeyboard()) {
+        if (!plainTab || !tabToPanel) return false;
+        // Tab: the keyboard to the panel, its navigation cursor shown, and the Tab itself to
+        // ImGui, which moves to the panel's first field.
+        if (ImGuiWindow* panel = ImGui::FindWindowByName("Controls")) ImGui::FocusWindow(panel);
+        g.NavDisableHighlight = false;
+        g.NavDisableMouseHover = true;
+    } else if (key == SDLK_ESCAPE) {
+        // Esc: the keyboard back to the sandbox. With nothing being typed at once (ImGui would
+        // only move the cursor out of a child window); a field being typed in first sees the
+        // Esc (it drops what was typed), and the keyboard goes back after that frame.
+        if (!ImGui::GetIO().WantTextInput) {
+            releaseKeyboard();
+            return true;
+        }
+        releaseAfter_ = ImGui::GetFrameCount() + 1;
+    }
+    if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
+    return true;
+}
+
+bool GuiContext::hasKeyboard() const {
+    makeCurrent();
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (g.IO.WantTextInput || g.ActiveId != 0) return true;
+    return g.NavWindow != nullptr && g.NavWindow->Active && !g.NavDisableHighlight;
+}
+
+void GuiContext::releaseKeyboard() {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    ImGui::ClearActiveID();
+    ImGui::FocusWindow(nullptr);
+    g.NavDisableHighlight = true;
+    // The last frame's flags would still say a field wants the keys until the next frame.
+    g.IO.WantTextInput = false;
+    g.IO.WantCaptureKeyboard = false;
+    g.WantTextInputNextFrame = 0;
+}
+
 bool GuiContext::overWindow(ImVec2 p) const {
     makeCurrent();
     const ImGuiContext& g = *ImGui::GetCurrentContext();
+    p = ImVec2(p.x / scale_, p.y / scale_);  // ImGui's points
     for (const ImGuiWindow* w : g.Windows) {
         if (!w->Active || w->Hidden || (w->Flags & ImGuiWindowFlags_NoMouseInputs) != 0) continue;
         if (w->OuterRectClipped.Contains(p)) return true;
@@ -159,6 +260,7 @@ bool GuiContext::overWindow(ImVec2 p) const {
 
 void GuiContext::beginFrame() {
     makeCurrent();
+    releaseIfDue();
     if (!platform_) throw std::logic_error("GuiContext::beginFrame(): no window; give a size");
     ImGui_ImplSDL2_NewFrame();
     // The 1.86 backend polls SDL's global mouse state, which on X11 can lag the events (under
@@ -174,15 +276,22 @@ void GuiContext::beginFrame() {
     // Debian's 1.86 backend takes the scale from SDL_GL_GetDrawableSize, which is the window
     // size for a window without OpenGL; the renderer's output size is the one drawn into.
     const float scale = windowPixelScale(window_, sdl_);
-    ImGui::GetIO().DisplayFramebufferScale = ImVec2(scale, scale);
+    ImGuiIO& io = ImGui::GetIO();
+    // A new pixel ratio (the window moved to another screen): the atlas again, crisp.
+    if (loadFont(scale)) renderer_->rebuildFontTexture();
+    // ImGui's point is scale_ window points (see the top of gui_context.hpp).
+    io.DisplayFramebufferScale = ImVec2(scale * scale_, scale * scale_);
+    io.DisplaySize = ImVec2(io.DisplaySize.x / scale_, io.DisplaySize.y / scale_);
+    if (io.MousePos.x > -FLT_MAX / 2)
+        io.MousePos = ImVec2(io.MousePos.x / scale_, io.MousePos.y / scale_);
     ImGui::NewFrame();
 }
 
 void GuiContext::beginFrame(float width, float height, float dt, float pixelScale) {
     makeCurrent();
     ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(width, height);
-    io.DisplayFramebufferScale = ImVec2(pixelScale, pixelScale);
+    io.DisplaySize = ImVec2(width / scale_, height / scale_);
+    io.DisplayFramebufferScale = ImVec2(pixelScale * scale_, pixelScale * scale_);
     io.DeltaTime = dt > 0.f ? dt : 1.f / 60.f;
     ImGui::NewFrame();
 }

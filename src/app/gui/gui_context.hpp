@@ -12,6 +12,18 @@
 // describe the frame before). Without a window (tests, offscreen images) there is no platform
 // backend: the caller feeds io() and gives the display size to beginFrame.
 //
+// The UI's scale (session/view_options.hpp) makes ImGui's unit, its "point", `scale` window
+// points: ImGui is told a display 1/scale the window's size, the pointer's position over scale,
+// and a framebuffer scale of the pixel ratio × scale, so that every size the panel asks for (its
+// width, a button's, the style's padding) grows with it; the font atlas is rasterised again at
+// the pixels a glyph takes on screen (crisp text, not a magnified atlas).
+//
+// Keyboard navigation (ImGui's NavEnableKeyboard) shares the keys with the sandbox by one rule
+// (docs/app.md, "Classroom"): a key goes to the panel only while the panel has the keyboard —
+// a field being typed in or a widget held (ImGui's active item), or the navigation cursor shown
+// in it (Tab gives it; Esc or a click outside the panel takes it away). Otherwise ImGui never
+// sees the key, so an arrow key pans the view rather than moving through the panel.
+//
 // No imgui.ini or log file is written: the app's layout is its own, not the working
 // directory's. ImGui keeps one "current" context per process; every member makes this one
 // current first, so two holders (tests) do not mix.
@@ -25,6 +37,7 @@
 #include <imgui.h>
 
 #include "gui/imgui_renderer.hpp"
+#include "session/view_options.hpp"
 
 namespace psb::app {
 
@@ -49,11 +62,24 @@ class GuiContext {
     /// turn is the controls' by where it happens (over any window the last frame drew), not by
     /// ImGui's capture flag alone: that flag is from the last frame, and a pointer that has
     /// just entered a panel (a first click, a wheel turn as the hand arrives) is not in it yet.
-    /// The release of a press the controls took is theirs too.
-    bool handleEvent(const SDL_Event& event);
+    /// The release of a press the controls took is theirs too. A key is theirs while the panel
+    /// has the keyboard (hasKeyboard); Tab gives it the keyboard when `tabToPanel` (not while
+    /// the sandbox's edit prompt wants Tab), and Esc takes it back (and is the panel's). F12 is
+    /// the sandbox's always (a screenshot of the panel with its cursor).
+    bool handleEvent(const SDL_Event& event, bool tabToPanel = true);
     /// Whether window point `p` is over a window (panel, list, open popup) the last frame
     /// drew; tooltips, which take no input, do not count.
     [[nodiscard]] bool overWindow(ImVec2 p) const;
+    /// Whether the panel has the keyboard (see the top of this file): keys go to it.
+    [[nodiscard]] bool hasKeyboard() const;
+
+    /// The UI's scale, kMinUiScale to kMaxUiScale (see the top of this file); the font atlas
+    /// is rasterised again when it changes. Throws std::runtime_error when the font cannot be
+    /// loaded.
+    void setScale(float scale);
+    [[nodiscard]] float scale() const { return scale_; }
+    /// ImGui's colours for `theme` (view/palette.hpp).
+    void setTheme(Theme theme);
 
     /// Starts a frame in the window: size and input from the platform backend, pixel scale
     /// from the renderer's output size over the window's size.
@@ -73,7 +99,15 @@ class GuiContext {
   private:
     void makeCurrent() const;
     void shutDown();
-    void loadFont(const GuiOptions& options, float pixelScale);
+    /// Rasterises the font for `pixelScale` pixels per window point (× the UI's scale); false
+    /// when the atlas is already that.
+    bool loadFont(float pixelScale);
+    /// Drops the keyboard: no focused window, no navigation cursor (Esc).
+    void releaseKeyboard();
+    /// The keyboard back to the sandbox once the frame that saw an Esc (in a field) is done.
+    void releaseIfDue();
+    /// handleEvent for a key press or release.
+    bool handleKey(const SDL_Event& event, bool tabToPanel);
 
     SDL_Window* window_ = nullptr;
     SDL_Renderer* sdl_ = nullptr;
@@ -82,6 +116,10 @@ class GuiContext {
     std::optional<ImVec2> mouse_;  // window points, from the last mouse event
     Uint32 takenButtons_ = 0;      // SDL_BUTTON masks of the presses the controls took
     std::unique_ptr<ImGuiRenderer> renderer_;
+    GuiOptions options_;
+    float scale_ = 1.f;      // the UI's scale
+    float fontScale_ = 0.f;  // pixels per ImGui point the atlas was rasterised for
+    int releaseAfter_ = 0;   // the frame after which Esc gives the keyboard back (0: none)
 };
 
 }  // namespace psb::app

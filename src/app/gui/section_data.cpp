@@ -63,7 +63,7 @@ void ControlPanel::data(const Session& s) {
     const char* plural = hits == 1 ? "" : "s";
     if (d.recording()) {
         ImGui::TextColored(
-            ImVec4(1.f, 0.35f, 0.3f, 1.f), "REC %zu particle%s: %zu samples, %zu collision%s",
+            widgets::problem(s.view().theme), "REC %zu particle%s: %zu samples, %zu collision%s",
             particles, particles == 1 ? "" : "s", d.trajectory().samples().size(), hits, plural);
     } else if (!d.trajectory().samples().empty()) {
         ImGui::TextWrapped("Recorded %zu samples, %zu collision%s", d.trajectory().samples().size(),
@@ -99,7 +99,7 @@ void ControlPanel::data(const Session& s) {
         ImGui::PopID();
     }
     if (!s.exportError().empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+        ImGui::PushStyleColor(ImGuiCol_Text, widgets::problem(s.view().theme));
         ImGui::TextWrapped("%s", s.exportError().c_str());
         ImGui::PopStyleColor();
     } else if (s.lastExport()) {

@@ -37,9 +37,9 @@ bool pressed(ImGuiKey key) {
     return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false);
 }
 
-void errorLine(const std::string& error) {
+void errorLine(const std::string& error, Theme theme) {
     if (error.empty()) return;
-    widgets::wrappedColored(ImVec4(1.f, 0.45f, 0.4f, 1.f), error);
+    widgets::wrappedColored(widgets::problem(theme), error);
 }
 
 }  // namespace
@@ -113,7 +113,7 @@ void ControlPanel::dialog(const Session& s) {
                 ImGui::InputText("##save name", saveName_.data(), saveName_.size(),
                                  ImGuiInputTextFlags_EnterReturnsTrue);
             mark("dialog file name");
-            errorLine(d.error);
+            errorLine(d.error, s.view().theme);
             widgets::wrappedDisabled(d.download
                                          ? ".json is added when there is no extension."
                                          : "A name without a folder goes in the folder above; "
@@ -148,7 +148,7 @@ void ControlPanel::dialog(const Session& s) {
             mark("dialog gravity");
             ImGui::Checkbox("walls around the box", &newWalls_);
             mark("dialog walls");
-            errorLine(d.error);
+            errorLine(d.error, s.view().theme);
             if (button("Create", "dialog Create") || enter) {
                 out_.emplace_back(cmd::NewScene{newWidth_, newHeight_, newGravity_, newWalls_});
             }

@@ -157,7 +157,7 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
     }
     ImGui::EndTable();
     if (!s.editRefusal().empty()) {
-        widgets::wrappedColored(ImVec4(1.f, 0.55f, 0.45f, 1.f), "Refused: " + s.editRefusal());
+        widgets::wrappedColored(widgets::problem(s.view().theme), "Refused: " + s.editRefusal());
     }
 }
 

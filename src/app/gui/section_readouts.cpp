@@ -122,7 +122,7 @@ void ControlPanel::readouts(const Session& s) {
                           "Fast particles move %.1f diameters a step: collisions can be missed "
                           "(try more substeps or Exact)",
                           d);
-            widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), buf);
+            widgets::wrappedColored(widgets::caution(s.view().theme), buf);
         } else {
             std::snprintf(buf, sizeof buf,
                           "No collision can be missed: the fastest moves %.2f of its size a step",

@@ -63,7 +63,7 @@ void ControlPanel::sceneFile(const Session& s) {
     }
     mark("file");
     if (s.unsavedChanges()) {
-        widgets::wrappedColored(ImVec4(1.f, 0.8f, 0.3f, 1.f), "Unsaved changes");
+        widgets::wrappedColored(widgets::caution(s.view().theme), "Unsaved changes");
         mark("unsaved");
     }
     if (ImGui::Button("Save")) out_.emplace_back(cmd::Save{});

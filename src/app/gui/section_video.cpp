@@ -58,7 +58,7 @@ void ControlPanel::video(const Session& s, const VideoStatus& status) {
             .c_str());
     if (status.recording) {
         ImGui::SameLine();
-        ImGui::TextColored(ImVec4(1.f, 0.35f, 0.3f, 1.f), "REC %d:%02d, %zu frames",
+        ImGui::TextColored(widgets::problem(s.view().theme), "REC %d:%02d, %zu frames",
                            static_cast<int>(status.seconds) / 60,
                            static_cast<int>(status.seconds) % 60, status.frames);
         if (status.dropped > 0) {

@@ -8,6 +8,8 @@
 
 #include <imgui.h>
 
+#include "session/view_options.hpp"
+#include "view/palette.hpp"
 #include "view/word_wrap.hpp"
 
 namespace psb::app::widgets {
@@ -24,6 +26,18 @@ inline void wrapped(std::string_view text, float width = 0.f) {
     for (const std::string& line : wrapAtSpaces(text, width, measure))
         ImGui::TextUnformatted(line.c_str(), line.c_str() + line.size());
     ImGui::EndGroup();
+}
+
+/// `c` as ImGui's colour.
+[[nodiscard]] inline ImVec4 colour(Rgba c) {
+    return {c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f};
+}
+/// The theme's amber for notes and red for problems, as ImGui's colours.
+[[nodiscard]] inline ImVec4 caution(Theme theme) {
+    return colour(palette(theme).caution);
+}
+[[nodiscard]] inline ImVec4 problem(Theme theme) {
+    return colour(palette(theme).warning);
 }
 
 /// wrapped() in the colour of greyed-out text.

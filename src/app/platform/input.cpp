@@ -97,6 +97,27 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
                             sym == SDLK_RIGHTBRACKET || sym == SDLK_PAGEUP ||
                             sym == SDLK_PAGEDOWN || (ctrl && (sym == SDLK_z || sym == SDLK_y));
     if (key.repeat != 0 && !repeatable) return {};
+    // The UI's scale: Ctrl with plus (on '=' of a US layout, or the keypad's), minus, 0. Before the
+    // digits: Ctrl+0 is not preset 0.
+    if (ctrl) {
+        switch (sym) {
+            case SDLK_EQUALS:
+            case SDLK_PLUS:
+            case SDLK_KP_PLUS:
+                return {cmd::SetUiScale{steppedUiScale(state.view.uiScale, +1), false}};
+            case SDLK_MINUS:
+            case SDLK_KP_MINUS:
+                return {cmd::SetUiScale{steppedUiScale(state.view.uiScale, -1), false}};
+            case SDLK_0:
+            case SDLK_KP_0:
+                return {cmd::SetUiScale{state.view.uiScale, true}};
+            case SDLK_t:
+                return {cmd::SetTheme{state.view.theme == Theme::Dark ? Theme::Light
+                                                                      : Theme::Dark}};
+            default:
+                break;
+        }
+    }
     switch (sym) {
         case SDLK_ESCAPE:
             return {cmd::Back{}};

@@ -1,11 +1,16 @@
 #include "platform/sdl_context.hpp"
 
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 
 namespace psb::app {
 
 namespace {
+
+/// The HUD's and the labels' text at a UI scale of 1, pixels per em.
+constexpr int kHudPoints = 14;
+constexpr int kLabelPoints = 12;
 
 std::string driverName(SDL_Renderer* renderer) {
     SDL_RendererInfo info{};
@@ -98,8 +103,9 @@ SdlContext::SdlContext(const SdlContextOptions& options) {
                                 "there; --renderer opengl overrides)";
             }
         }
-        hudFont_ = std::make_unique<Font>(renderer_, options.font, 14);
-        labelFont_ = std::make_unique<Font>(renderer_, options.font, 12);
+        fontFile_ = options.font;
+        hudFont_ = std::make_unique<Font>(renderer_, options.font, kHudPoints);
+        labelFont_ = std::make_unique<Font>(renderer_, options.font, kLabelPoints);
     } catch (...) {
         labelFont_.reset();
         hudFont_.reset();
@@ -135,6 +141,21 @@ void SdlContext::destroyWindow() {
     if (window_ != nullptr) SDL_DestroyWindow(window_);
     renderer_ = nullptr;
     window_ = nullptr;
+}
+
+void SdlContext::setTextScale(double pointPixels) {
+    if (pointPixels == textScale_) return;
+    Font hud(renderer_, fontFile_, static_cast<int>(std::lround(kHudPoints * pointPixels)));
+    Font label(renderer_, fontFile_, static_cast<int>(std::lround(kLabelPoints * pointPixels)));
+    swap(*hudFont_, hud);
+    swap(*labelFont_, label);
+    textScale_ = pointPixels;
+}
+
+SDL_Point SdlContext::windowSize() const {
+    SDL_Point p{0, 0};
+    SDL_GetWindowSize(window_, &p.x, &p.y);
+    return p;
 }
 
 SDL_Point SdlContext::outputSize() const {

@@ -58,6 +58,13 @@ class SdlContext {
     [[nodiscard]] SDL_Point outputSize() const;
     /// Drawable pixels per window point (mouse events come in points).
     [[nodiscard]] double pixelRatio() const;
+    /// The window's size in points (its height sets the automatic UI scale).
+    [[nodiscard]] SDL_Point windowSize() const;
+    /// Makes the HUD's and the labels' fonts again for `pointPixels` pixels per point of the UI
+    /// (the pixel ratio × the UI's scale): 14 and 12 points at 1. The fonts keep their places
+    /// (whoever holds them by reference draws the new size). Throws std::runtime_error naming
+    /// the file when it cannot be opened.
+    void setTextScale(double pointPixels);
     void setTitle(const std::string& title);
     void present();
 
@@ -70,6 +77,8 @@ class SdlContext {
     SDL_Renderer* renderer_ = nullptr;
     std::unique_ptr<Font> hudFont_;
     std::unique_ptr<Font> labelFont_;
+    std::filesystem::path fontFile_;
+    double textScale_ = 1.0;
     std::string rendererName_;
     std::string rendererNote_;
     std::string title_;

@@ -1,5 +1,7 @@
 #include "platform/settings_file.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -38,6 +40,37 @@ const char* keyOf(ShowOption option) {
     return "";
 }
 
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return buf;
+}
+
+void readUi(const nlohmann::json& ui, const ViewOptions& view, SettingsRead& out) {
+    if (const auto it = ui.find("scale"); it != ui.end()) {
+        if (it->is_string() && it->get<std::string>() == "auto") {
+            if (!view.uiScaleAutomatic) out.commands.emplace_back(cmd::SetUiScale{view.uiScale, true});
+        } else if (!it->is_number()) {
+            out.problems.push_back("ui.scale: expected \"auto\" or a number from " +
+                                   number(kMinUiScale) + " to " + number(kMaxUiScale));
+        } else if (const double s = it->get<double>(); !(s >= kMinUiScale && s <= kMaxUiScale)) {
+            out.problems.push_back("ui.scale: " + number(s) + " is outside " +
+                                   number(kMinUiScale) + " to " + number(kMaxUiScale));
+        } else if (s != view.uiScale || view.uiScaleAutomatic) {
+            out.commands.emplace_back(cmd::SetUiScale{s, false});
+        }
+    }
+    if (const auto it = ui.find("theme"); it != ui.end()) {
+        const std::string name = it->is_string() ? it->get<std::string>() : std::string();
+        if (name != "dark" && name != "light") {
+            out.problems.push_back("ui.theme: expected \"dark\" or \"light\"");
+        } else {
+            const Theme theme = name == "light" ? Theme::Light : Theme::Dark;
+            if (theme != view.theme) out.commands.emplace_back(cmd::SetTheme{theme});
+        }
+    }
+}
+
 }  // namespace
 
 std::string settingsText(const ViewOptions& view) {
@@ -45,10 +78,16 @@ std::string settingsText(const ViewOptions& view) {
     j["version"] = 1;
     for (const ShowOption o : kKeptOptions)
         j["show"][keyOf(o)] = view.shown(o);
+    if (view.uiScaleAutomatic) {
+        j["ui"]["scale"] = "auto";
+    } else {
+        j["ui"]["scale"] = view.uiScale;
+    }
+    j["ui"]["theme"] = toString(view.theme);
     return j.dump(2) + "\n";
 }
 
-std::vector<Command> settingsCommands(const std::string& text, const ViewOptions& view) {
+SettingsRead readSettings(const std::string& text, const ViewOptions& view) {
     nlohmann::json j;
     try {
         j = nlohmann::json::parse(text);
@@ -56,19 +95,42 @@ std::vector<Command> settingsCommands(const std::string& text, const ViewOptions
         throw std::runtime_error("not JSON: it breaks off or goes wrong at character " +
                                  std::to_string(e.byte));
     }
-    if (!j.is_object() || !j.contains("show") || !j["show"].is_object()) {
-        throw std::runtime_error("expected an object with \"show\"");
-    }
-    std::vector<Command> out;
-    for (const ShowOption o : kKeptOptions) {
-        const auto it = j["show"].find(keyOf(o));
-        if (it == j["show"].end()) continue;
-        if (!it->is_boolean()) {
-            throw std::runtime_error(std::string("show.") + keyOf(o) + ": expected true or false");
+    if (!j.is_object()) throw std::runtime_error("expected a JSON object, {...}");
+    SettingsRead out;
+    if (const auto show = j.find("show"); show != j.end()) {
+        if (!show->is_object()) {
+            out.problems.push_back("show: expected an object, {\"arrows\": true, ...}");
+        } else {
+            for (const ShowOption o : kKeptOptions) {
+                const auto it = show->find(keyOf(o));
+                if (it == show->end()) continue;
+                if (!it->is_boolean()) {
+                    out.problems.push_back(std::string("show.") + keyOf(o) +
+                                           ": expected true or false");
+                    continue;
+                }
+                if (it->get<bool>() != view.shown(o)) {
+                    out.commands.emplace_back(cmd::SetShow{o, it->get<bool>()});
+                }
+            }
         }
-        if (it->get<bool>() != view.shown(o)) out.emplace_back(cmd::SetShow{o, it->get<bool>()});
+    }
+    if (const auto ui = j.find("ui"); ui != j.end()) {
+        if (!ui->is_object()) {
+            out.problems.push_back("ui: expected an object, {\"scale\": ..., \"theme\": ...}");
+        } else {
+            readUi(*ui, view, out);
+        }
     }
     return out;
+}
+
+bool keptSettingsDiffer(const ViewOptions& view, const ViewOptions& other) {
+    for (const ShowOption o : kKeptOptions) {
+        if (view.shown(o) != other.shown(o)) return true;
+    }
+    return view.uiScaleAutomatic != other.uiScaleAutomatic || view.theme != other.theme ||
+           (!view.uiScaleAutomatic && view.uiScale != other.uiScale);
 }
 
 }  // namespace psb::app

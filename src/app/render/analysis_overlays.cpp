@@ -6,21 +6,22 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
                             const ObservablesSample& now, const Camera& camera,
                             const TimeSeries& series, const ViewOptions& view,
                             const PanelLayout& layout, const std::optional<BinHistogram>& bins) {
+    const Palette& colours = palette(view.theme);
     if (view.momentum) {
         momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds,
-                       layout.legend);
+                       layout.legend, colours);
     }
     if (view.plots && layout.plots.w > 0) {
         double mass = 0.0;
         for (const double m : world.particles().mass)
             mass += m;
         plots_.draw(renderer, font, series, layout.plots, layout.plotRows, layout.plotRowHeight,
-                    mass);
+                    mass, colours);
     }
     if (view.speeds && layout.speeds.w > 0) {
-        speeds_.draw(renderer, font, world.particles(), layout.speeds);
+        speeds_.draw(renderer, font, world.particles(), layout.speeds, colours);
     }
-    if (bins && layout.bins.w > 0) bins_.draw(renderer, font, *bins, layout.bins);
+    if (bins && layout.bins.w > 0) bins_.draw(renderer, font, *bins, layout.bins, colours);
 }
 
 }  // namespace psb::app

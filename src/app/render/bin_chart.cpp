@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/sdl_color.hpp"
 #include "render/plot_chart.hpp"
 #include "render/text.hpp"
 #include "view/overlays.hpp"
@@ -26,12 +27,14 @@ BinChartLayout binChartLayout(const Font& font, float x, float width, float lege
 }
 
 void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
-                    const PixelRect& box) {
-    const ChartFrame f = beginChart(font, box, boxes_, text_);
+                    const PixelRect& box, const Palette& colours) {
+    const ChartFrame f = beginChart(font, box, boxes_, text_, colours);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
-    const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
-    const SDL_Color colors[] = {kBinBarColor, kBinomialDotColor, kNormalCurveColor, grey};
+    const SDL_Color grey = sdlColor(colours.tickText), axis = sdlColor(colours.axis);
+    const SDL_Color bar = sdlColor(colours.binBar), dot = sdlColor(colours.theoryCurve),
+                    normal = sdlColor(colours.normalCurve);
+    const SDL_Color colors[] = {bar, dot, normal, grey};
     // Each legend line in its colour, wrapped to the box.
     float lineY = y + 4;
     for (std::size_t k = 0; k < h.legend.size(); ++k) {
@@ -71,11 +74,11 @@ void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram
     for (std::size_t k = 0; k < bins; ++k) {
         if (counts[k] == 0) continue;
         boxes_.quad(sx(static_cast<double>(k)) + 1, sy(static_cast<double>(counts[k])),
-                    sx(static_cast<double>(k + 1)) - 1, bottom, kBinBarColor);
+                    sx(static_cast<double>(k + 1)) - 1, bottom, bar);
     }
     for (std::size_t k = 0; k < h.now.expected.size(); ++k) {
         const float cx = sx(static_cast<double>(k) + 0.5), cy = sy(h.now.expected[k]);
-        boxes_.quad(cx - 3, cy - 3, cx + 3, cy + 3, kBinomialDotColor);
+        boxes_.quad(cx - 3, cy - 3, cx + 3, cy + 3, dot);
     }
     if (h.bins.binomial && total > 0.0) {
         constexpr int kPoints = 120;
@@ -86,7 +89,7 @@ void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram
         }
     }
 
-    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_, colours);
     // Bin numbers under the bars, as many as fit.
     const int every = std::max(
         1, static_cast<int>(std::ceil(static_cast<float>(font.measure("000") + 4) / binW)));
@@ -100,8 +103,7 @@ void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram
 
     boxes_.draw(renderer, nullptr);
     if (curve_.size() > 1) {
-        SDL_SetRenderDrawColor(renderer, kNormalCurveColor.r, kNormalCurveColor.g,
-                               kNormalCurveColor.b, 255);
+        SDL_SetRenderDrawColor(renderer, normal.r, normal.g, normal.b, 255);
         SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
     }
     font.draw(text_);

@@ -9,6 +9,7 @@
 
 #include "render/geometry_batch.hpp"
 #include "view/bin_histogram.hpp"
+#include "view/palette.hpp"
 #include "view/pixel_rect.hpp"
 
 namespace psb::app {
@@ -30,15 +31,13 @@ struct BinChartLayout {
                                             const std::string& yTitle, const std::string& xTitle);
 
 /// Colours, for the tests to look for.
-inline constexpr SDL_Color kBinBarColor{230, 160, 60, 255};
-inline constexpr SDL_Color kBinomialDotColor{255, 255, 255, 255};
-inline constexpr SDL_Color kNormalCurveColor{90, 200, 255, 255};
 
 class BinChart {
   public:
     /// Draws `h` in `box` (pixels, see PanelLayout).
     void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
-              const PixelRect& box);
+              const PixelRect& box,
+              const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch boxes_, text_;

@@ -4,13 +4,15 @@
 #include <cmath>
 #include <string>
 
+#include "render/sdl_color.hpp"
 #include "render/bin_chart.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {
 
 void BinMarks::draw(SDL_Renderer* renderer, const Font& font, const Camera& camera,
-                    const Bins& bins, double floor) {
+                    const Bins& bins, double floor, const Palette& colours) {
+    const SDL_Color bar = sdlColor(colours.binBar);
     if (bins.edges.size() < 2) return;
     const Vec2 topLeft = camera.worldToScreen(Vec2(bins.edges.front(), bins.top));
     const Vec2 bottomRight = camera.worldToScreen(Vec2(bins.edges.back(), floor));
@@ -18,7 +20,7 @@ void BinMarks::draw(SDL_Renderer* renderer, const Font& font, const Camera& came
     if (!(bottom > top)) return;
     // Two pixels wide, so that they show over the grey walls they follow.
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
-    SDL_SetRenderDrawColor(renderer, kBinBarColor.r, kBinBarColor.g, kBinBarColor.b, 255);
+    SDL_SetRenderDrawColor(renderer, bar.r, bar.g, bar.b, 255);
     const SDL_FRect mouth{static_cast<float>(topLeft.x()) - 1.f, top - 1.f,
                           static_cast<float>(bottomRight.x() - topLeft.x()) + 2.f, 2.f};
     SDL_RenderFillRectF(renderer, &mouth);
@@ -36,7 +38,7 @@ void BinMarks::draw(SDL_Renderer* renderer, const Font& font, const Camera& came
         const int width = font.measure(number);
         if (right - left < width + 4.0 || bottom - top < 2.0 * font.lineHeight()) continue;
         font.layout(number, std::round(static_cast<float>(0.5 * (left + right)) - width / 2.f),
-                    std::round(top + 2.f), kBinBarColor, text_);
+                    std::round(top + 2.f), bar, text_);
     }
     font.draw(text_);
 }

@@ -10,6 +10,7 @@
 
 #include "render/geometry_batch.hpp"
 #include "session/camera.hpp"
+#include "view/palette.hpp"
 
 namespace psb::app {
 
@@ -19,7 +20,8 @@ class BinMarks {
   public:
     /// Draws the marks of `bins` on a board whose floor is at y = `floor` metres.
     void draw(SDL_Renderer* renderer, const Font& font, const Camera& camera, const Bins& bins,
-              double floor);
+              double floor,
+              const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch text_;

@@ -6,6 +6,7 @@
 #include "render/lab_marks_drawing.hpp"
 #include "render/obstacle_drawing.hpp"
 #include "render/overlay_drawing.hpp"
+#include "render/sdl_color.hpp"
 #include "render/sdl_rect.hpp"
 #include "render/selection_outline.hpp"
 #include "render/text.hpp"
@@ -32,51 +33,60 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
           frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
         if (r.w > 0) avoid.push_back(sdlRect(r));
     }
+    // Labels keep out from under the control panel (drawn over them).
+    if (frame.controlsInset > 0) {
+        avoid.push_back({0, 0, frame.controlsInset, camera.viewportHeight()});
+    }
+    const Palette& colours = palette(frame.view.theme);
     gridLines_.clear();
-    if (frame.grid) batchGridLines(*frame.grid, gridLines_);
+    if (frame.grid) batchGridLines(*frame.grid, gridLines_, colours);
     const DrawStats stats = renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_,
                                            frame.trailParticle, &avoid, &gridLines_);
-    if (frame.bins) binMarks_.draw(sdl_, labelFont_, camera, frame.bins->bins, world.def().height);
+    if (frame.bins) {
+        binMarks_.draw(sdl_, labelFont_, camera, frame.bins->bins, world.def().height, colours);
+    }
     for (const DropperView& d : frame.droppers)
-        drawDropper(camera, d);
-    if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected);
+        drawDropper(camera, d, colours);
+    if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected, colours);
     if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
     analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
                    frame.layout, frame.bins);
-    if (frame.grid || frame.ruler) drawLabMarks(frame);
-    if (frame.launch) drawLaunch(camera, *frame.launch);
-    if (frame.boxMarker) drawBoxMarker(*frame.boxMarker);
-    drawOverlays(sdl_, hudFont_, frame.overlays, frame.layout);
+    if (frame.grid || frame.ruler) drawLabMarks(frame, colours);
+    if (frame.launch) drawLaunch(camera, *frame.launch, colours);
+    if (frame.boxMarker) drawBoxMarker(*frame.boxMarker, colours);
+    drawOverlays(sdl_, hudFont_, frame.overlays, frame.layout, colours);
     return stats;
 }
 
-void DrawLayer::drawLabMarks(const FrameView& frame) {
+void DrawLayer::drawLabMarks(const FrameView& frame, const Palette& colours) {
     if (frame.ruler) {
         rulerMarks_.clear();
-        batchRuler(*frame.ruler, rulerMarks_);
+        batchRuler(*frame.ruler, rulerMarks_, colours);
         renderer_.drawBatch(rulerMarks_);
     }
     layoutMarkLabels(frame.grid ? &*frame.grid : nullptr, frame.ruler ? &*frame.ruler : nullptr,
-                     labelFont_, text_);
+                     labelFont_, colours, text_);
     labelFont_.draw(text_);
 }
 
-void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch) {
+void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch,
+                           const Palette& colours) {
     // The ghost disc where the particle will appear and the velocity arrow it will have.
     const Vec2 a = camera.worldToScreen(launch.from);
     const Vec2 b = camera.worldToScreen(launch.to);
-    SDL_SetRenderDrawColor(sdl_, 200, 200, 200, 255);
+    setDrawColor(sdl_, colours.launchArrow);
     SDL_RenderDrawLineF(sdl_, static_cast<float>(a.x()), static_cast<float>(a.y()),
                         static_cast<float>(b.x()), static_cast<float>(b.y()));
-    renderer_.drawGhost(camera, launch.from, launch.radius);
+    renderer_.drawGhost(camera, launch.from, launch.radius, colours);
     text_.clear();
     labelFont_.layout(launch.label, static_cast<float>(b.x() + 8.0),
                       static_cast<float>(b.y() - labelFont_.lineHeight() / 2),
-                      SDL_Color{230, 230, 230, 255}, text_);
+                      sdlColor(colours.text), text_);
     labelFont_.draw(text_);
 }
 
-void DrawLayer::drawDropper(const Camera& camera, const DropperView& d) {
+void DrawLayer::drawDropper(const Camera& camera, const DropperView& d, const Palette& colours) {
+    const SDL_Color spout = sdlColor(colours.dropper);
     // A spout: a funnel narrowing down to just above where a ball starts, as wide as the spread
     // and a ball either side, at least a few pixels whatever the zoom; its words to the right.
     const Vec2 at = camera.worldToScreen(d.at);
@@ -84,9 +94,8 @@ void DrawLayer::drawDropper(const Camera& camera, const DropperView& d) {
     const double r = std::max(d.radius * ppm, 2.0);
     const double bottom = at.y() - 1.3 * r, top = bottom - std::max(3.5 * r, 10.0);
     const double low = d.spread * ppm + 1.5 * r, high = low + std::max(2.0 * r, 6.0);
-    const auto pt = [](double x, double y) {
-        return SDL_Vertex{
-            {static_cast<float>(x), static_cast<float>(y)}, {150, 165, 185, 255}, {0.f, 0.f}};
+    const auto pt = [&spout](double x, double y) {
+        return SDL_Vertex{{static_cast<float>(x), static_cast<float>(y)}, spout, {0.f, 0.f}};
     };
     const SDL_Vertex quad[4] = {pt(at.x() - high, top), pt(at.x() + high, top),
                                 pt(at.x() + low, bottom), pt(at.x() - low, bottom)};
@@ -95,20 +104,20 @@ void DrawLayer::drawDropper(const Camera& camera, const DropperView& d) {
     text_.clear();
     labelFont_.layout(d.label, static_cast<float>(at.x() + high + 6.0),
                       static_cast<float>(0.5 * (top + bottom) - labelFont_.lineHeight() / 2.0),
-                      SDL_Color{200, 210, 225, 255}, text_);
+                      sdlColor(colours.dropperText), text_);
     labelFont_.draw(text_);
 }
 
 void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) {
+    const Palette& colours = palette(frame.view.theme);
     obstacleMarks_.clear();
     // The selection's yellow, as the selected particle's ring; the preview a dim ghost.
     if (frame.selectedObstacle) {
-        batchObstacle(*frame.selectedObstacle, camera, SDL_Color{255, 230, 0, 255}, obstacleMarks_);
+        batchObstacle(*frame.selectedObstacle, camera, sdlColor(colours.highlight), obstacleMarks_);
     }
     if (frame.obstaclePreview) {
         // Opaque: a translucent capsule would show its caps' overlap with the bar.
-        batchObstacle(*frame.obstaclePreview, camera, SDL_Color{105, 108, 115, 255},
-                      obstacleMarks_);
+        batchObstacle(*frame.obstaclePreview, camera, sdlColor(colours.preview), obstacleMarks_);
     }
     renderer_.drawBatch(obstacleMarks_);
     if (frame.wallAngle) {
@@ -117,18 +126,18 @@ void DrawLayer::drawObstacleMarks(const Camera& camera, const FrameView& frame) 
         const int w = labelFont_.measure(l.text);
         labelFont_.layout(l.text, std::round(static_cast<float>(l.at.x()) - 0.5f * w),
                           std::round(static_cast<float>(l.at.y()) - 0.5f * labelFont_.lineHeight()),
-                          SDL_Color{230, 230, 230, 255}, text_);
+                          sdlColor(colours.text), text_);
         labelFont_.draw(text_);
     }
 }
 
-void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {
+void DrawLayer::drawBoxMarker(const BoxMarkerView& m, const Palette& colours) {
+    const SDL_Color mark = sdlColor(colours.highlight);
     // A filled arrow head pointing to the box, with its label beside it.
     const Vec2 u = m.direction, n(-u.y(), u.x());
     const Vec2 tip = m.at + 12.0 * u, base = m.at - 6.0 * u;
-    const auto pt = [](const Vec2& v) {
-        return SDL_Vertex{
-            {static_cast<float>(v.x()), static_cast<float>(v.y())}, {255, 230, 0, 255}, {0.f, 0.f}};
+    const auto pt = [&mark](const Vec2& v) {
+        return SDL_Vertex{{static_cast<float>(v.x()), static_cast<float>(v.y())}, mark, {0.f, 0.f}};
     };
     const SDL_Vertex tri[3] = {pt(tip), pt(base + 8.0 * n), pt(base - 8.0 * n)};
     SDL_RenderGeometry(sdl_, nullptr, tri, 3, nullptr, 0);
@@ -144,7 +153,7 @@ void DrawLayer::drawBoxMarker(const BoxMarkerView& m) {
     x = std::clamp(x, 4.f, static_cast<float>(vw - w - 4));
     y = std::clamp(y, 4.f, static_cast<float>(vh - hudFont_.lineHeight() - 4));
     text_.clear();
-    hudFont_.layout(m.label, x, y, SDL_Color{255, 230, 0, 255}, text_);
+    hudFont_.layout(m.label, x, y, mark, text_);
     hudFont_.draw(text_);
 }
 

@@ -38,13 +38,13 @@ class DrawLayer {
     void drawRecordingMark(const RecordingMarkView& mark);
 
   private:
-    void drawLaunch(const Camera& camera, const LaunchPreviewView& launch);
-    void drawBoxMarker(const BoxMarkerView& marker);
-    void drawDropper(const Camera& camera, const DropperView& dropper);
+    void drawLaunch(const Camera& camera, const LaunchPreviewView& launch, const Palette& colours);
+    void drawBoxMarker(const BoxMarkerView& marker, const Palette& colours);
+    void drawDropper(const Camera& camera, const DropperView& dropper, const Palette& colours);
     /// The selected obstacle highlighted and the tool's preview, over the world.
     void drawObstacleMarks(const Camera& camera, const FrameView& frame);
     /// The grid's labels and the ruler (lab_marks_drawing.hpp), over the world.
-    void drawLabMarks(const FrameView& frame);
+    void drawLabMarks(const FrameView& frame, const Palette& colours);
 
     SDL_Renderer* sdl_;
     const Font& hudFont_;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {
@@ -31,26 +32,29 @@ void label(const MarkLabel& l, const Font& font, SDL_Color color, GeometryBatch&
 
 }  // namespace
 
-void batchGridLines(const GridView& grid, GeometryBatch& batch) {
-    for (const MarkLine& l : grid.lines)
-        line(batch, l.a, l.b, l.strong ? 1.5 : 1.0, l.strong ? kGridStrongColor : kGridColor);
+void batchGridLines(const GridView& grid, GeometryBatch& batch, const Palette& colours) {
+    for (const MarkLine& l : grid.lines) {
+        line(batch, l.a, l.b, l.strong ? 1.5 : 1.0,
+             sdlColor(l.strong ? colours.gridStrong : colours.grid));
+    }
 }
 
-void batchRuler(const RulerView& r, GeometryBatch& batch) {
+void batchRuler(const RulerView& r, GeometryBatch& batch, const Palette& colours) {
+    const SDL_Color edge = sdlColor(colours.ruler);
     const Vec2 d = r.b - r.a;
     const double length = d.norm();
     if (length > 0.0 && std::isfinite(length)) {
         // The band lies on the ticks' side of the edge, as a ruler's face does.
         const Vec2 n = Vec2(-d.y(), d.x()) / length;
-        const SDL_Color face{kRulerColor.r, kRulerColor.g, kRulerColor.b, 60};
+        const SDL_Color face = sdlColor(colours.ruler, 60);
         batch.polygon4(point(r.a), point(r.b), point(r.b + 14.0 * n), point(r.a + 14.0 * n), face,
                        SDL_FPoint{0.5f, 0.5f});
-        line(batch, r.a, r.b, 1.5, kRulerColor);
+        line(batch, r.a, r.b, 1.5, edge);
         for (const MarkLine& t : r.ticks)
-            line(batch, t.a, t.b, t.strong ? 1.5 : 1.0, kRulerColor);
+            line(batch, t.a, t.b, t.strong ? 1.5 : 1.0, edge);
     }
     // The handles: a disc at each end, white while held.
-    const SDL_Color handle = r.held ? SDL_Color{255, 255, 255, 255} : kRulerColor;
+    const SDL_Color handle = r.held ? sdlColor(colours.text) : edge;
     for (const Vec2& end : {r.a, r.b}) {
         const auto x = static_cast<float>(end.x()), y = static_cast<float>(end.y());
         batch.quad(x - 5.f, y - 5.f, x + 5.f, y + 5.f, handle);
@@ -58,13 +62,13 @@ void batchRuler(const RulerView& r, GeometryBatch& batch) {
 }
 
 void layoutMarkLabels(const GridView* grid, const RulerView* ruler, const Font& font,
-                      GeometryBatch& text) {
+                      const Palette& colours, GeometryBatch& text) {
     text.clear();
     if (grid != nullptr) {
         for (const MarkLabel& l : grid->labels)
-            label(l, font, SDL_Color{150, 165, 190, 255}, text);
+            label(l, font, sdlColor(colours.tickText), text);
     }
-    if (ruler != nullptr) label(ruler->label, font, kRulerColor, text);
+    if (ruler != nullptr) label(ruler->label, font, sdlColor(colours.ruler), text);
 }
 
 }  // namespace psb::app

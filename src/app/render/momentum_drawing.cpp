@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {
@@ -35,7 +36,9 @@ void appendArrow(GeometryBatch& batch, const Vec2& a, const Vec2& b, double head
 
 void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World& world,
                            const ObservablesSample& now, const Camera& camera,
-                           const TimeSeries& series, double arrowSeconds, const PixelRect& legend) {
+                           const TimeSeries& series, double arrowSeconds, const PixelRect& legend,
+                           const Palette& colours) {
+    const SDL_Color each = sdlColor(colours.momentumArrow), sum = sdlColor(colours.totalMomentum);
     const ParticleArrays& p = world.particles();
     arrows_.clear();
     text_.clear();
@@ -49,7 +52,7 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
             std::max(c.y(), tip.y()) < 0 || std::min(c.y(), tip.y()) > h) {
             continue;
         }
-        appendArrow(arrows_, c, tip, 9.0, 0.75, kMomentumArrowColor);
+        appendArrow(arrows_, c, tip, 9.0, 0.75, each);
     }
 
     // The centre of mass's path, one polyline.
@@ -61,11 +64,11 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     path_.push_back(pt(com));
 
     // The marker: a ring of four quads around a cross, 7 px, so it reads at every zoom.
-    const SDL_Color cm = kCentreOfMassColor;
+    const SDL_Color cm = sdlColor(colours.centreOfMass);
     const float x = static_cast<float>(com.x()), y = static_cast<float>(com.y());
     arrows_.quad(x - 7, y - 1, x + 7, y + 1, cm);
     arrows_.quad(x - 1, y - 7, x + 1, y + 7, cm);
-    appendArrow(arrows_, com, camera.worldToScreen(total.to), 16.0, 2.0, kTotalMomentumColor);
+    appendArrow(arrows_, com, camera.worldToScreen(total.to), 16.0, 2.0, sum);
 
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
     arrows_.draw(renderer, nullptr);
@@ -81,10 +84,10 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     box.clear();
     const float lx = static_cast<float>(legend.x), ly = static_cast<float>(legend.y);
     box.quad(lx, ly, lx + static_cast<float>(legend.w), ly + static_cast<float>(legend.h),
-             SDL_Color{0, 0, 0, 190});
+             sdlColor(colours.panel, 190));
     box.draw(renderer, nullptr);
     const std::vector<std::string> lines = momentumLegend(world, now, arrowSeconds);
-    const SDL_Color colors[3] = {kTotalMomentumColor, kMomentumArrowColor, kCentreOfMassColor};
+    const SDL_Color colors[3] = {sum, each, cm};
     for (std::size_t k = 0; k < lines.size(); ++k) {
         font.layout(lines[k], lx + 4, ly + 2 + static_cast<float>(k * font.lineHeight()), colors[k],
                     text_);

@@ -11,6 +11,7 @@
 
 #include "render/geometry_batch.hpp"
 #include "session/camera.hpp"
+#include "view/palette.hpp"
 #include "view/momentum_view.hpp"
 #include "view/pixel_rect.hpp"
 
@@ -19,9 +20,6 @@ namespace psb::app {
 class Font;
 
 /// Colours of the momentum view, for the tests to look for.
-inline constexpr SDL_Color kMomentumArrowColor{255, 150, 30, 255};  ///< per particle, orange
-inline constexpr SDL_Color kTotalMomentumColor{255, 255, 0, 255};   ///< Σ m v, yellow
-inline constexpr SDL_Color kCentreOfMassColor{0, 230, 255, 255};    ///< marker and path, cyan
 
 class MomentumDrawing {
   public:
@@ -30,7 +28,8 @@ class MomentumDrawing {
     /// (pixels; not drawn when w == 0).
     void draw(SDL_Renderer* renderer, const Font& font, const World& world,
               const ObservablesSample& now, const Camera& camera, const TimeSeries& series,
-              double arrowSeconds, const PixelRect& legend);
+              double arrowSeconds, const PixelRect& legend,
+              const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch arrows_, text_;

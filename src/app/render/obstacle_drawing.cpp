@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/sdl_color.hpp"
+
 namespace psb::app {
 namespace {
-
-constexpr SDL_Color kObstacleColor{190, 195, 205, 255};
 
 void disc(GeometryBatch& batch, const Vec2& centre, double radius, SDL_Color color) {
     const auto x = static_cast<float>(centre.x()), y = static_cast<float>(centre.y());
@@ -34,10 +34,11 @@ void batchObstacle(const Obstacle& o, const Camera& camera, SDL_Color color, Geo
                    SDL_FPoint{0.5f, 0.5f});
 }
 
-void batchObstacles(const World& world, const Camera& camera, GeometryBatch& batch) {
+void batchObstacles(const World& world, const Camera& camera, GeometryBatch& batch,
+                    const Palette& colours) {
     batch.clear();
     for (const Obstacle& o : world.obstacles())
-        batchObstacle(o, camera, kObstacleColor, batch);
+        batchObstacle(o, camera, sdlColor(colours.obstacle), batch);
 }
 
 }  // namespace psb::app

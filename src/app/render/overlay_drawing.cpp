@@ -1,11 +1,12 @@
 #include "render/overlay_drawing.hpp"
 
+#include "render/sdl_color.hpp"
 #include "render/geometry_batch.hpp"
 
 namespace psb::app {
 
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
-                  const PanelLayout& layout) {
+                  const PanelLayout& layout, const Palette& colours) {
     GeometryBatch boxes, text;
     const float lh = static_cast<float>(font.lineHeight());
     // Dark enough that arrows and discs under a panel do not break up its text.
@@ -14,11 +15,11 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
         if (box.w <= 0 || ls.empty()) return;
         boxes.quad(static_cast<float>(box.x), static_cast<float>(box.y),
                    static_cast<float>(box.x + box.w), static_cast<float>(box.y + box.h),
-                   SDL_Color{0, 0, 0, alpha});
+                   sdlColor(colours.panel, alpha));
         for (std::size_t k = 0; k < ls.size(); ++k) {
             font.layout(ls[k], static_cast<float>(box.x + 4),
                         static_cast<float>(box.y + 2) + lh * static_cast<float>(k),
-                        SDL_Color{230, 230, 230, 255}, text);
+                        sdlColor(colours.text), text);
         }
     };
     panel(o.hud, layout.hud);

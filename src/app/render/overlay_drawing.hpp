@@ -6,6 +6,7 @@
 
 #include "render/text.hpp"
 #include "view/overlays.hpp"
+#include "view/palette.hpp"
 #include "view/screen_layout.hpp"
 
 namespace psb::app {
@@ -13,6 +14,6 @@ namespace psb::app {
 /// Draws the panels of `o` onto `renderer` in the boxes of `layout` (a box with w == 0 is not
 /// drawn). The help is drawn over everything when switched on.
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
-                  const PanelLayout& layout);
+                  const PanelLayout& layout, const Palette& colours = palette(Theme::Dark));
 
 }  // namespace psb::app

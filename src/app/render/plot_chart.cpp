@@ -5,25 +5,26 @@
 #include <cstdio>
 #include <string>
 
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {
 
 ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& boxes,
-                      GeometryBatch& text) {
+                      GeometryBatch& text, const Palette& colours) {
     boxes.clear();
     text.clear();
     const ChartFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
                        static_cast<float>(box.w), static_cast<float>(box.h),
                        static_cast<float>(font.lineHeight())};
-    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, SDL_Color{0, 0, 0, 190});
+    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, sdlColor(colours.panel, 190));
     return f;
 }
 
 void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
-                  GeometryBatch& labels) {
-    const SDL_Color axis{150, 150, 150, 255}, grey{200, 200, 200, 255};
+                  GeometryBatch& labels, const Palette& colours) {
+    const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
     const float lh = static_cast<float>(font.lineHeight());
     const double step = niceStep(lo, hi, 4);
     for (const double t : niceTicks(lo, hi, 4)) {
@@ -36,14 +37,16 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 }
 
 void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
-                     const PixelRect& box, int rows, int rowHeight, double totalMass) {
+                     const PixelRect& box, int rows, int rowHeight, double totalMass,
+                     const Palette& colours) {
     boxes_.clear();
     text_.clear();
     rows = std::clamp(rows, 1, 4);
     const float lh = static_cast<float>(font.lineHeight());
     const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
     const float width = static_cast<float>(box.w), rowH = static_cast<float>(rowHeight);
-    boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), SDL_Color{0, 0, 0, 190});
+    boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), sdlColor(colours.panel, 190));
+    const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
 
     struct Plot {
         const char* title;
@@ -52,13 +55,13 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     };
     const Plot plots[4] = {
         {"kinetic energy (J)", [](const ObservablesSample& s) { return s.kineticEnergy; },
-         kEnergyPlotColor},
+         sdlColor(colours.energyPlot)},
         {"momentum px (kg m/s)", [](const ObservablesSample& s) { return s.momentum.x(); },
-         kMomentumXPlotColor},
+         sdlColor(colours.pxPlot)},
         {"momentum py (kg m/s)", [](const ObservablesSample& s) { return s.momentum.y(); },
-         kMomentumYPlotColor},
+         sdlColor(colours.pyPlot)},
         {"collision rate (1/s)", [](const ObservablesSample& s) { return s.collisionRate; },
-         kRatePlotColor},
+         sdlColor(colours.ratePlot)},
     };
 
     const std::size_t n = series.size();
@@ -79,7 +82,6 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         const float bottom = top + rowH - 2 * lh - 8;
         font.layout(pl.title, left, top - lh - 1, pl.color, text_);
         // Axes: left and bottom, grey.
-        const SDL_Color axis{150, 150, 150, 255};
         boxes_.quad(left - 1, top, left, bottom, axis);
         boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
         if (n < 2) continue;
@@ -104,7 +106,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         const auto sx = [&](double t) {
             return left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
         };
-        layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_);
+        layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_, colours);
         for (std::size_t s = 0; s < n; ++s)
             line_.push_back({sx(series[s].time), sy(pl.value(series[s]))});
         lines.emplace_back(pl.color, line_.size());
@@ -115,12 +117,12 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         const double step = niceStep(t0, t1, 4);
         for (const double t : niceTicks(t0, t1, 4)) {
             const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
-            boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, SDL_Color{150, 150, 150, 255});
+            boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
             const std::string label = tickLabel(t, step);
             font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4,
-                        SDL_Color{200, 200, 200, 255}, text_);
+                        grey, text_);
         }
-        font.layout("t (s)", x + 8, bottom + 4, SDL_Color{200, 200, 200, 255}, text_);
+        font.layout("t (s)", x + 8, bottom + 4, grey, text_);
     }
 
     boxes_.draw(renderer, nullptr);

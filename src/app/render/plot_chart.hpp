@@ -17,6 +17,7 @@
 #include <particle_sandbox/time_series.hpp>
 
 #include "render/geometry_batch.hpp"
+#include "view/palette.hpp"
 #include "view/pixel_rect.hpp"
 #include "view/plot_scale.hpp"
 
@@ -29,21 +30,16 @@ struct ChartFrame {
     float x = 0, y = 0, w = 0, h = 0, lineHeight = 0;
 };
 /// Starts a panel in `box`: empties both batches and puts the panel's translucent background in
-/// `boxes`.
+/// `boxes`, in `colours`.
 [[nodiscard]] ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& boxes,
-                                    GeometryBatch& text);
+                                    GeometryBatch& text, const Palette& colours);
 
 /// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most 4) left of x = `left`:
 /// a tick mark and its label at the pixel row `row(v)` of each tick value v.
 void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
-                  GeometryBatch& labels);
+                  GeometryBatch& labels, const Palette& colours);
 
-/// Plot colours, for the tests to look for.
-inline constexpr SDL_Color kEnergyPlotColor{255, 90, 90, 255};
-inline constexpr SDL_Color kMomentumXPlotColor{90, 200, 255, 255};
-inline constexpr SDL_Color kMomentumYPlotColor{120, 255, 120, 255};
-inline constexpr SDL_Color kRatePlotColor{255, 200, 60, 255};
 
 class PlotChart {
   public:
@@ -51,7 +47,8 @@ class PlotChart {
     /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
     /// momentum plots' floor. Nothing but the frame when `series` has fewer than 2 samples.
     void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
-              const PixelRect& box, int rows, int rowHeight, double totalMass);
+              const PixelRect& box, int rows, int rowHeight, double totalMass,
+              const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch boxes_, text_;

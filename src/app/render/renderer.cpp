@@ -8,6 +8,7 @@
 #include <string>
 #include <utility>
 
+#include "render/sdl_color.hpp"
 #include "render/obstacle_drawing.hpp"
 #include "render/spin_mark.hpp"
 #include "render/text.hpp"
@@ -81,7 +82,7 @@ void Renderer::drawImage(const TrailImage& image, ImageLayer& layer) {
     SDL_RenderCopy(renderer_, layer.texture, &r, &r);
 }
 
-void Renderer::drawWalls(const World& world, const Camera& camera) {
+void Renderer::drawWalls(const World& world, const Camera& camera, const Palette& colours) {
     const WorldDef& d = world.def();
     const Vec2 a = camera.worldToScreen(Vec2::Zero());
     const Vec2 b = camera.worldToScreen(Vec2(d.width, d.height));
@@ -95,33 +96,31 @@ void Renderer::drawWalls(const World& world, const Camera& camera) {
                                 {x0 - t, y1, x1 - x0 + 2 * t, t},
                                 {x0 - t, y0, t, y1 - y0},
                                 {x1, y0, t, y1 - y0}};
-    if (d.walls) {
-        SDL_SetRenderDrawColor(renderer_, 255, 255, 255, 255);
-    } else {
-        SDL_SetRenderDrawColor(renderer_, 70, 70, 70, 255);  // an open box: only a hint
-    }
+    setDrawColor(renderer_, d.walls ? colours.walls : colours.openWalls);  // open: only a hint
     SDL_RenderFillRectsF(renderer_, rects, 4);
 }
 
-void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius) {
+void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius,
+                         const Palette& colours) {
     const Vec2 c = camera.worldToScreen(centre);
     const double r = std::max(1.0, camera.toScreen(radius));
     GeometryBatch ghost;
     ghost.quad(static_cast<float>(c.x() - r), static_cast<float>(c.y() - r),
                static_cast<float>(c.x() + r), static_cast<float>(c.y() + r),
-               SDL_Color{200, 200, 200, 90});
+               sdlColor(colours.ghost));
     ghost.draw(renderer_, circle_);
 }
 
 DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                          const ViewOptions& options, Trails* trails, ParticleId selected,
                          const RenderAvoid* avoid, const GeometryBatch* underlay) {
+    const Palette& colours = palette(options.theme);
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
-    SDL_SetRenderDrawColor(renderer_, 0, 0, 0, 255);
+    setDrawColor(renderer_, colours.background);
     SDL_RenderClear(renderer_);
-    drawWalls(world, camera);
+    drawWalls(world, camera, colours);
     if (!world.obstacles().empty()) {
-        batchObstacles(world, camera, obstacles_);
+        batchObstacles(world, camera, obstacles_, colours);
         obstacles_.draw(renderer_, circle_);
     }
     if (underlay != nullptr && !underlay->empty()) underlay->draw(renderer_, circle_);
@@ -140,6 +139,17 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
     labelOutline_.clear();
 
     const ParticleArrays& p = world.particles();
+    // A particle's colour as drawn: the scene's, or on the light theme the palette's for it
+    // (remembered for the last colour seen: a scene has few colours, often in runs).
+    Color seen = p.size() > 0 ? p.color[0] : Color{}, drawnAs = lightColour(seen);
+    const auto colourOf = [&](std::size_t i) {
+        if (!colours.mapParticles) return p.color[i];
+        if (!(p.color[i] == seen)) {
+            seen = p.color[i];
+            drawnAs = lightColour(seen);
+        }
+        return drawnAs;
+    };
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
     const double zoom = camera.zoom();
     DrawStats stats;
@@ -179,15 +189,16 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
         ++stats.drawn;
         if (r < kSmallDiscPixels) {
             small_.disc(static_cast<float>(s.x()), static_cast<float>(s.y()), static_cast<float>(r),
-                        argb(p.color[i]));
+                        argb(colourOf(i)));
             continue;
         }
-        const SDL_Color c{p.color[i].r, p.color[i].g, p.color[i].b, 255};
+        const Color drawn = colourOf(i);
+        const SDL_Color c{drawn.r, drawn.g, drawn.b, 255};
         discs_.quad(static_cast<float>(s.x() - r), static_cast<float>(s.y() - r),
                     static_cast<float>(s.x() + r), static_cast<float>(s.y() + r), c);
         if (spin && r >= kSpinMarkPixels && p.fixedRotation[i] == 0) {
             addSpinMark(discs_, static_cast<float>(s.x()), static_cast<float>(s.y()),
-                        static_cast<float>(r), p.angle[i], p.color[i]);
+                        static_cast<float>(r), p.angle[i], drawn);
         }
     }
 
@@ -205,7 +216,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             if (std::max(0.75, r) < kSmallDiscPixels) {
                 // A one-pixel shaft from the rim, and a head of two strokes when there is room.
                 const Vec2 start = c + r * u;
-                const std::uint32_t col = argb(p.color[i]);
+                const std::uint32_t col = argb(colourOf(i));
                 const auto line = [&](const Vec2& a, const Vec2& b) {
                     small_.line(static_cast<float>(a.x()), static_cast<float>(a.y()),
                                 static_cast<float>(b.x()), static_cast<float>(b.y()), col);
@@ -226,7 +237,8 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             const auto pt = [](const Vec2& v) {
                 return SDL_FPoint{static_cast<float>(v.x()), static_cast<float>(v.y())};
             };
-            const SDL_Color col{p.color[i].r, p.color[i].g, p.color[i].b, 255};
+            const Color drawn = colourOf(i);
+            const SDL_Color col{drawn.r, drawn.g, drawn.b, 255};
             arrows_.triangle(pt(tip), pt(base + halfWidth * n), pt(base - halfWidth * n), col);
             const Vec2 start = c + r * u;
             if ((base - start).dot(u) > 0.0) {
@@ -374,7 +386,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 if (!overDiscs) {
                     labelBoxes_.quad(static_cast<float>(box->x), static_cast<float>(box->y),
                                      static_cast<float>(box->x + box->w),
-                                     static_cast<float>(box->y + box->h), SDL_Color{0, 0, 0, 150});
+                                     static_cast<float>(box->y + box->h), sdlColor(colours.labelBox));
                 }
                 for (int k = 0; k < 5; ++k) {
                     const float x = static_cast<float>(box->x + 2);
@@ -382,10 +394,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     if (overDiscs) {
                         for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
                             labelFont_->layout(lines[k], x + static_cast<float>(dx),
-                                               y + static_cast<float>(dy), SDL_Color{0, 0, 0, 255},
+                                               y + static_cast<float>(dy), sdlColor(colours.labelOutline),
                                                labelOutline_);
                     }
-                    labelFont_->layout(lines[k], x, y, SDL_Color{255, 255, 255, 255}, labelText_);
+                    labelFont_->layout(lines[k], x, y, sdlColor(colours.labelText), labelText_);
                 }
                 ++stats.labelled;
             }

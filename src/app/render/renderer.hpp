@@ -24,6 +24,7 @@
 #include "render/trails.hpp"
 #include "session/camera.hpp"
 #include "session/view_options.hpp"
+#include "view/palette.hpp"
 
 namespace psb::app {
 
@@ -55,7 +56,8 @@ class Renderer {
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    /// Clears to black and draws the box walls, the particles and the enabled overlays.
+    /// Clears to the theme's background (options.theme) and draws the box walls, the particles
+    /// (in the theme's colours: palette.hpp) and the enabled overlays.
     /// `frame` is the length of the world's steps (the scene's dt): a particle slower than one
     /// step of gravity gives it rests, and has no arrow (restingSpeed). When `trails` is given
     /// they are drawn under the discs as options.trails says, `selected` naming the particle of
@@ -71,7 +73,8 @@ class Renderer {
                    const GeometryBatch* underlay = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
-    void drawGhost(const Camera& camera, const Vec2& centre, double radius);
+    void drawGhost(const Camera& camera, const Vec2& centre, double radius,
+                   const Palette& colours = palette(Theme::Dark));
     /// Draws `batch` over the circle texture (obstacle shapes: obstacle_drawing.hpp).
     void drawBatch(const GeometryBatch& batch) { batch.draw(renderer_, circle_); }
 
@@ -85,7 +88,7 @@ class Renderer {
         SDL_Texture* texture = nullptr;
         int width = 0, height = 0;
     };
-    void drawWalls(const World& world, const Camera& camera);
+    void drawWalls(const World& world, const Camera& camera, const Palette& colours);
     void drawImage(const TrailImage& image, ImageLayer& layer);
 
     SDL_Renderer* renderer_;

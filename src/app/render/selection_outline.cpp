@@ -5,14 +5,17 @@
 #include <cmath>
 #include <numbers>
 
+#include "render/sdl_color.hpp"
+
 namespace psb::app {
 
-void drawSelectionOutline(SDL_Renderer* renderer, const Camera& camera, const Particle& p) {
+void drawSelectionOutline(SDL_Renderer* renderer, const Camera& camera, const Particle& p,
+                          const Palette& colours) {
     constexpr int kSegments = 64;
     const Vec2 c = camera.worldToScreen(p.position);
     const double rim = camera.toScreen(p.radius);
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
-    SDL_SetRenderDrawColor(renderer, 255, 230, 0, 255);
+    setDrawColor(renderer, colours.highlight);
     for (const double gap : {3.0, 4.0}) {
         const double r = std::max(rim + gap, 6.0 + gap - 3.0);
         std::array<SDL_FPoint, kSegments + 1> ring{};

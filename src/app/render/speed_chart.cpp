@@ -5,28 +5,29 @@
 #include <cstdio>
 #include <string>
 
+#include "render/sdl_color.hpp"
 #include "render/plot_chart.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {
 
 void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
-                      const PixelRect& box) {
-    const ChartFrame f = beginChart(font, box, boxes_, text_);
+                      const PixelRect& box, const Palette& colours) {
+    const ChartFrame f = beginChart(font, box, boxes_, text_, colours);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
     const SpeedHistogram h = speedHistogram(p, kBins);
-    const SDL_Color grey{200, 200, 200, 255}, axis{150, 150, 150, 255};
+    const SDL_Color grey = sdlColor(colours.tickText), axis = sdlColor(colours.axis);
+    const SDL_Color bar = sdlColor(colours.histogramBar), curve = sdlColor(colours.theoryCurve);
     const float left = x + 62, right = x + boxW - 10;
     const float top = y + 6 + 2 * lh, bottom = y + height - 2 * lh - 6;
 
     char buf[128];
     std::snprintf(buf, sizeof buf, "bars: speeds of %zu particles%s", h.particles,
                   h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
-    font.layout(buf, x + 8, y + 4, kHistogramBarColor, text_);
+    font.layout(buf, x + 8, y + 4, bar, text_);
     // The 2-D Maxwell-Boltzmann distribution at kT = the mean kinetic energy per particle.
-    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh, kRayleighCurveColor,
-                text_);
+    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh, curve, text_);
     boxes_.quad(left - 1, top, left, bottom, axis);
     boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
 
@@ -50,14 +51,14 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
         if (h.counts[b] == 0) continue;
         const double d = static_cast<double>(h.counts[b]) / (n * width);
         boxes_.quad(sx(static_cast<double>(b) * width) + 1, sy(d),
-                    sx(static_cast<double>(b + 1) * width), bottom, kHistogramBarColor);
+                    sx(static_cast<double>(b + 1) * width), bottom, bar);
     }
     for (int k = 0; k <= kCurvePoints; ++k) {
         const double v = h.vmax * k / kCurvePoints;
         curve_.push_back({sx(v), sy(h.expectedDensity(v))});
     }
 
-    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_);
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_, colours);
     const double xstep = niceStep(0.0, h.vmax, 5);
     for (const double t : niceTicks(0.0, h.vmax, 5)) {
         const float tx = sx(t);
@@ -72,8 +73,7 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
 
     boxes_.draw(renderer, nullptr);
     if (h.particles > 0) {
-        SDL_SetRenderDrawColor(renderer, kRayleighCurveColor.r, kRayleighCurveColor.g,
-                               kRayleighCurveColor.b, 255);
+        SDL_SetRenderDrawColor(renderer, curve.r, curve.g, curve.b, 255);
         SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
     }
     font.draw(text_);

@@ -10,6 +10,7 @@
 #include <particle_sandbox/particle_arrays.hpp>
 
 #include "render/geometry_batch.hpp"
+#include "view/palette.hpp"
 #include "view/pixel_rect.hpp"
 #include "view/speed_histogram.hpp"
 
@@ -18,8 +19,6 @@ namespace psb::app {
 class Font;
 
 /// Histogram colours, for the tests to look for.
-inline constexpr SDL_Color kHistogramBarColor{70, 130, 230, 255};
-inline constexpr SDL_Color kRayleighCurveColor{255, 255, 255, 255};
 
 class SpeedChart {
   public:
@@ -27,7 +26,8 @@ class SpeedChart {
 
     /// Draws the histogram of `p` in `box` (pixels, see PanelLayout).
     void draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
-              const PixelRect& box);
+              const PixelRect& box,
+              const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch boxes_, text_;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <SDL_ttf.h>
 
@@ -84,6 +85,16 @@ Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelS
         throw std::runtime_error(std::string("glyph atlas texture: ") + SDL_GetError());
     }
     SDL_SetTextureBlendMode(atlas_, SDL_BLENDMODE_BLEND);
+}
+
+void swap(Font& a, Font& b) noexcept {
+    std::swap(a.renderer_, b.renderer_);
+    std::swap(a.font_, b.font_);
+    std::swap(a.atlas_, b.atlas_);
+    std::swap(a.atlasW_, b.atlasW_);
+    std::swap(a.atlasH_, b.atlasH_);
+    std::swap(a.lineHeight_, b.lineHeight_);
+    std::swap(a.glyphs_, b.glyphs_);
 }
 
 Font::~Font() {

@@ -26,6 +26,9 @@ class Font final : public TextMeasure {
     ~Font() override;
     Font(const Font&) = delete;
     Font& operator=(const Font&) = delete;
+    /// Exchanges two fonts' faces and atlases: a font made at a new size takes the place of one
+    /// that others hold by reference (the UI's scale changed).
+    friend void swap(Font& a, Font& b) noexcept;
 
     /// Distance between baselines, pixels.
     [[nodiscard]] int lineHeight() const override { return lineHeight_; }

@@ -35,8 +35,10 @@ void Camera::fit(double width, double height, double marginPixels, double topIns
     // The insets are given up only when the window is big enough to spare them.
     const double top = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
     const double bottom = std::clamp(bottomInsetPixels, 0.0, height_ / 3.0);
-    // The control panel's column is kept free down to windows ~520 pixels wide.
-    const double left = std::clamp(leftInsetPixels, 0.0, 0.6 * width_);
+    // The control panel's column is kept free while it leaves the box a quarter of the window
+    // (the view folds the panel before that: box_area.hpp's controlsFit; a panel at 200 % in a
+    // 1000-pixel window takes 62 % of it).
+    const double left = std::clamp(leftInsetPixels, 0.0, 0.75 * width_);
     const double right = std::clamp(rightInsetPixels, 0.0, std::max(0.0, 0.75 * width_ - left));
     const double usableW = std::max(1.0, width_ - left - right - 2.0 * marginPixels);
     const double usableH = std::max(1.0, height_ - top - bottom - 2.0 * marginPixels);

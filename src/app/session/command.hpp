@@ -344,6 +344,20 @@ struct SetArrowScale {
     double seconds = 1.0 / 3.0;
     bool continues = false;  ///< part of a slider drag begun earlier (logged once)
 };
+/// The UI's scale (Ctrl+plus, Ctrl+minus, the Show section's slider): `scale` × the panel's,
+/// the HUD's, the labels' and the charts' size at 100 %, kMinUiScale to kMaxUiScale (others are
+/// refused). `automatic` (Ctrl+0, Auto): follow the window's height, `scale` being what the rule
+/// gives now (the app fills it in: only it knows the window's size in points).
+struct SetUiScale {
+    static constexpr Traits traits = kPastPrompt;
+    double scale = 1.0;
+    bool automatic = false;
+};
+/// The window's colours (Ctrl+T, the Show section).
+struct SetTheme {
+    static constexpr Traits traits = kPastPrompt;
+    Theme theme = Theme::Dark;
+};
 /// The stopwatch (lab_stopwatch.hpp): the Time section's buttons, U (start / stop) and
 /// Shift+U (lap while running, reset while stopped).
 struct Stopwatch {
@@ -459,6 +473,6 @@ using Command = std::variant<
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
     cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings,
     cmd::Stopwatch, cmd::ScaleSpeeds, cmd::ResizeBox, cmd::SetArrowScale,
-    cmd::SetTangentialRestitution, cmd::SetDiscsTurn>;
+    cmd::SetTangentialRestitution, cmd::SetDiscsTurn, cmd::SetUiScale, cmd::SetTheme>;
 
 }  // namespace psb::app

@@ -385,6 +385,8 @@ class Session {
     void handle(const cmd::ScaleSpeeds& c);
     void handle(const cmd::ResizeBox& c);
     void handle(const cmd::SetArrowScale& c);
+    void handle(const cmd::SetUiScale& c);
+    void handle(const cmd::SetTheme& c);
     void handle(const cmd::ToggleControls& c);
     void handle(const cmd::Screenshot& c);
     // Data out (session_data.cpp).

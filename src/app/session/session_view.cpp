@@ -130,6 +130,34 @@ void Session::handle(const cmd::SetArrowScale& c) {
                         !c.continues, "arrow scale"});
 }
 
+void Session::handle(const cmd::SetUiScale& c) {
+    if (!(c.scale >= kMinUiScale && c.scale <= kMaxUiScale)) {
+        say(fmt("The UI scale must be %.0f %% to %.0f %%, got %g %%", 100.0 * kMinUiScale,
+                100.0 * kMaxUiScale, 100.0 * c.scale),
+            Notice::Level::Warning);
+        return;
+    }
+    if (c.scale == view_.uiScale && c.automatic == view_.uiScaleAutomatic) return;
+    const bool said = c.scale != view_.uiScale || !c.automatic;
+    view_.uiScale = c.scale;
+    view_.uiScaleAutomatic = c.automatic;
+    // The automatic scale follows the window by itself: a resize says nothing.
+    if (said) {
+        notices_.push_back({Notice::Level::Info,
+                            fmt("UI scale %.0f %%%s", 100.0 * c.scale,
+                                c.automatic ? " (automatic: by the window's height; Ctrl+0)"
+                                            : " (Ctrl+0: automatic)"),
+                            true, true, "ui scale"});
+    }
+}
+
+void Session::handle(const cmd::SetTheme& c) {
+    if (c.theme == view_.theme) return;
+    view_.theme = c.theme;
+    say(c.theme == Theme::Light ? "Theme: light (high contrast, for projectors; Ctrl+T)"
+                                : "Theme: dark (Ctrl+T)");
+}
+
 void Session::handle(const cmd::SetTrails& c) {
     const auto mode = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
     if (mode == view_.trails) return;

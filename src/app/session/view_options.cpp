@@ -30,6 +30,31 @@ const char* toString(TrailMode mode) {
     return "all";
 }
 
+const char* toString(Theme theme) {
+    return theme == Theme::Light ? "light" : "dark";
+}
+
+double automaticUiScale(double heightPoints) {
+    if (!(heightPoints >= 900.0)) return 1.0;  // NaN too
+    return std::min(kMaxUiScale, std::floor(heightPoints / 720.0 * 4.0) / 4.0);
+}
+
+double steppedUiScale(double scale, int steps) {
+    for (; steps > 0; --steps) {
+        const auto* up = std::upper_bound(std::begin(kUiScaleSteps), std::end(kUiScaleSteps),
+                                          scale + 1e-9);
+        if (up == std::end(kUiScaleSteps)) break;
+        scale = *up;
+    }
+    for (; steps < 0; ++steps) {
+        const auto* down = std::lower_bound(std::begin(kUiScaleSteps), std::end(kUiScaleSteps),
+                                            scale - 1e-9);
+        if (down == std::begin(kUiScaleSteps)) break;
+        scale = *(down - 1);
+    }
+    return scale;
+}
+
 double arrowSecondsFor(const World& world) {
     constexpr double kOriginal = 1.0 / 3.0;
     const ParticleArrays& p = world.particles();

@@ -1,8 +1,8 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Shift+G, the Spin checkbox and the arrow
-// scale. No SDL, so the session and its
-// tests can use it without a window.
+// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Shift+G, the Spin checkbox, the arrow scale,
+// and how the window looks to a room: the UI's scale (Ctrl+plus, Ctrl+minus, Ctrl+0) and the
+// theme (Ctrl+T). No SDL, so the session and its tests can use it without a window.
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +31,29 @@ enum class ShowOption : std::uint8_t {
     Grid,
     Spin
 };
+
+/// The window's colours (view/palette.hpp): today's dark theme, or a light, high-contrast one for
+/// projectors (white background, dark text, colours told apart by colour-blind viewers).
+enum class Theme : std::uint8_t { Dark, Light };
+/// "dark", "light".
+[[nodiscard]] const char* toString(Theme theme);
+
+/// The UI's scale: the panel, the HUD, the labels and the charts together, × their size at 100 %.
+inline constexpr double kMinUiScale = 0.75;
+inline constexpr double kMaxUiScale = 3.0;
+/// The scales Ctrl+plus and Ctrl+minus step through (a browser's zoom steps).
+inline constexpr double kUiScaleSteps[] = {0.75, 0.9, 1.0, 1.1, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
+
+/// The scale the UI takes by itself in a window `heightPoints` high (window points): 100 % up to
+/// 899 points, then a quarter step per 180 points (125 % at 900, 150 % at 1080, 200 % at 1440,
+/// 300 % at 2160 and above). The layout was drawn for the 800-point window the program opens;
+/// the rule keeps the text the same fraction of the window's height (about 1/48: 15-point panel
+/// text in 720 points), so a full-screen window on a 1920×1080 projector opens at 150 % (22-pixel
+/// text, docs/app.md "Classroom").
+[[nodiscard]] double automaticUiScale(double heightPoints);
+/// The next listed scale (kUiScaleSteps) above `scale` for `steps` > 0, below it for `steps` < 0,
+/// `steps` times; at the ends it stays.
+[[nodiscard]] double steppedUiScale(double scale, int steps);
 
 /// Off -> Selected -> All -> Off.
 [[nodiscard]] TrailMode nextTrailMode(TrailMode mode);
@@ -75,6 +98,11 @@ struct ViewOptions {
     /// The Spin checkbox: each turning disc's rotation mark (a contrasting quarter that turns
     /// with it), in a world that keeps rotation; fixed-rotation discs have none.
     bool spin = true;
+    /// The UI's scale in use (kMinUiScale to kMaxUiScale), and whether it follows the window's
+    /// height (automaticUiScale) rather than being set (Ctrl+plus, Ctrl+minus, the slider).
+    double uiScale = 1.0;
+    bool uiScaleAutomatic = true;
+    Theme theme = Theme::Dark;  ///< Ctrl+T
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);

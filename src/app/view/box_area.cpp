@@ -50,11 +50,12 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         a.left = left;
         a.bottom = bottom;
         const int room = width - static_cast<int>(left);
-        const bool fits = sideColumnFits(width, static_cast<int>(left));
+        const bool fits = sideColumnFits(width, static_cast<int>(left), controls.pointPixels);
         a.top = std::max(top, hudBand(hudFont, room, columnAsked && !fits));
         // The momentum legend is three short lines: it does not cost the box a column.
         if (columnAsked && fits) {
-            a.right = sideColumnWidth(width, static_cast<int>(left)) + 1.0 * kPanelMargin;
+            a.right = sideColumnWidth(width, static_cast<int>(left), controls.pointPixels) +
+                      1.0 * kPanelMargin;
         } else {
             a.spareColumn = inspector;
         }
@@ -84,7 +85,8 @@ int controlsInset(const Session& session, const ControlsWidth& controls) {
 
 bool sideColumnFolded(const Session& session, const ControlsWidth& controls) {
     return session.columnAsked() &&
-           !sideColumnFits(session.camera().viewportWidth(), controlsInset(session, controls));
+           !sideColumnFits(session.camera().viewportWidth(), controlsInset(session, controls),
+                           controls.pointPixels);
 }
 
 }  // namespace psb::app

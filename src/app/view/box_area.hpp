@@ -22,10 +22,13 @@ namespace psb::app {
 
 class Session;
 
-/// The control panel's width at the window's left, pixels: open, and folded to its strip.
+/// The control panel's width at the window's left, pixels: open, and folded to its strip; and
+/// the scale they were measured at, pixels per point of the UI (the pixel ratio × the UI's
+/// scale), which the side column's charts take too (sideColumnWidth).
 struct ControlsWidth {
     double open = 0.0;
     double folded = 0.0;
+    double pointPixels = 1.0;
 };
 
 /// What the session is told of a window `width` × `height` pixels with the control panel

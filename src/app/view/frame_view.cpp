@@ -156,6 +156,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     Overlays& o = f.overlays;
     // The HUD's readings wrap between their parts within the room right of the control panel.
     const int left = controlsInset(session, controls);
+    f.controlsInset = left;
     const int hudRoom = session.camera().viewportWidth() - left;
     std::vector<std::string> readings = hudLines(hudData(session));
     // The stopwatch where the eye is, and in screenshots and videos of the box.
@@ -240,6 +241,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.plots = f.view.plots;
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
+    req.scale = controls.pointPixels;
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
         o.inspector = inspectorPanel(

@@ -93,6 +93,7 @@ struct FrameView {
     std::vector<DropperView> droppers;
     Overlays overlays;
     PanelLayout layout;
+    int controlsInset = 0;  ///< pixels at the window's left the control panel covers
     std::string title;
 };
 

@@ -46,7 +46,8 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     if (l.inspector.w > 0) bottom = l.inspector.y - gap;
 
     const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
-    const bool fits = sideColumnFits(r.width, r.left);
+    const bool fits = sideColumnFits(r.width, r.left, r.scale);
+    const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits;
     int top = 4;
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
@@ -59,15 +60,16 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     }
     if (!fits || (!r.plots && !r.speeds && !r.bins)) return l;
 
-    const int width = std::min(room, sideColumnWidth(r.width, r.left));
-    if (width < kPanelMinWidth) return l;
+    const int width = std::min(room, sideColumnWidth(r.width, r.left, r.scale));
+    if (width < scaled(kPanelMinWidth)) return l;
     const PixelRect column = place({width, 0}, top);
     top = column.y;
     if (overlaps({column.x, top, width, bottom - top}, l.messages)) {
         bottom = l.messages.y - gap;
     }
     int height = bottom - top;
-    const int plotsMin = kPlotRowMinHeight + 8;  // one row plus the panel's padding
+    const int rowMin = scaled(kPlotRowMinHeight);
+    const int plotsMin = rowMin + 8;  // one row plus the panel's padding
     // The histograms take what is left after the plots' smallest useful size (one row), within
     // their own limits, from the bottom: the bins first (a scene with bins is about them), then
     // the speeds.
@@ -79,11 +81,11 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         bottom -= want + gap;
         height = bottom - top;
     };
-    stack(r.bins, kBinsMaxHeight, kBinsMinHeight, l.bins);
-    stack(r.speeds, kSpeedsMaxHeight, kSpeedsMinHeight, l.speeds);
+    stack(r.bins, scaled(kBinsMaxHeight), scaled(kBinsMinHeight), l.bins);
+    stack(r.speeds, scaled(kSpeedsMaxHeight), scaled(kSpeedsMinHeight), l.speeds);
     if (r.plots && height >= plotsMin) {
-        const int rows = std::clamp((height - 8) / kPlotRowMinHeight, 1, 4);
-        const int rowHeight = std::min(kPlotRowMaxHeight, (height - 8) / rows);
+        const int rows = std::clamp((height - 8) / rowMin, 1, 4);
+        const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (height - 8) / rows);
         const int h = rows * rowHeight + 8;
         l.plots = {column.x, bottom - h, width, h};
         l.plotRows = rows;

@@ -23,10 +23,12 @@ inline constexpr int kSideColumnMinWidth = 220;
 inline constexpr int kSideColumnMaxWidth = 330;
 
 /// The side column's panel width for a window `windowWidth` pixels wide of which `leftInset`
-/// are the control panel's: two fifths of what is left, within [min, max].
-[[nodiscard]] inline int sideColumnWidth(int windowWidth, int leftInset) {
-    return std::clamp(static_cast<int>(0.4 * (windowWidth - leftInset)), kSideColumnMinWidth,
-                      kSideColumnMaxWidth);
+/// are the control panel's: two fifths of what is left, within [min, max] × `scale` (pixels per
+/// point of the UI: the pixel ratio × the UI's scale; the charts grow with their text).
+[[nodiscard]] inline int sideColumnWidth(int windowWidth, int leftInset, double scale = 1.0) {
+    const int least = static_cast<int>(kSideColumnMinWidth * scale);
+    return std::clamp(static_cast<int>(0.4 * (windowWidth - leftInset)), least,
+                      std::max(least, static_cast<int>(kSideColumnMaxWidth * scale)));
 }
 
 /// Narrowest room the box keeps beside the side column, pixels: a window that would leave it
@@ -35,8 +37,8 @@ inline constexpr int kBoxMinRoom = 240;
 
 /// Whether the side column fits beside the box in a window `windowWidth` pixels wide of which
 /// `leftInset` are the control panel's.
-[[nodiscard]] inline bool sideColumnFits(int windowWidth, int leftInset) {
-    const int column = sideColumnWidth(windowWidth, leftInset) + kPanelMargin;
+[[nodiscard]] inline bool sideColumnFits(int windowWidth, int leftInset, double scale = 1.0) {
+    const int column = sideColumnWidth(windowWidth, leftInset, scale) + kPanelMargin;
     return windowWidth - leftInset - column >= kBoxMinRoom;
 }
 
@@ -56,6 +58,8 @@ struct LayoutRequest {
     bool plots = false;   ///< K
     bool speeds = false;  ///< D
     bool bins = false;    ///< a scene's bins (a Galton board's histogram)
+    /// Pixels per point of the UI (sideColumnWidth): the charts' sizes below are × this.
+    double scale = 1.0;
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.

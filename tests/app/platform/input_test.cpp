@@ -22,6 +22,38 @@ bool is(const std::vector<Command>& c) {
     return c.size() == 1 && std::holds_alternative<T>(c.front());
 }
 
+TEST(Input, CtrlPlusMinusAndZeroStepTheUiScaleAndCtrlTSwitchesTheTheme) {
+    KeyState now;
+    now.view.uiScale = 1.5;
+    for (const SDL_Keycode plus : {SDLK_EQUALS, SDLK_PLUS, SDLK_KP_PLUS}) {
+        const auto c = commandsForKey(keyEvent(plus, KMOD_LCTRL), now);
+        ASSERT_TRUE(is<cmd::SetUiScale>(c));
+        EXPECT_EQ(std::get<cmd::SetUiScale>(c.front()).scale, 1.75);
+        EXPECT_FALSE(std::get<cmd::SetUiScale>(c.front()).automatic);
+    }
+    for (const SDL_Keycode minus : {SDLK_MINUS, SDLK_KP_MINUS}) {
+        const auto c = commandsForKey(keyEvent(minus, KMOD_RCTRL), now);
+        ASSERT_TRUE(is<cmd::SetUiScale>(c));
+        EXPECT_EQ(std::get<cmd::SetUiScale>(c.front()).scale, 1.25);
+    }
+    const auto zero = commandsForKey(keyEvent(SDLK_0, KMOD_LCTRL), now);
+    ASSERT_TRUE(is<cmd::SetUiScale>(zero)) << "Ctrl+0 is not preset 10";
+    EXPECT_TRUE(std::get<cmd::SetUiScale>(zero.front()).automatic);
+    EXPECT_TRUE(is<cmd::OpenPreset>(commandsForKey(keyEvent(SDLK_0), now))) << "plain 0 still is";
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_EQUALS), now).empty());
+    const auto theme = commandsForKey(keyEvent(SDLK_t, KMOD_LCTRL), now);
+    ASSERT_TRUE(is<cmd::SetTheme>(theme));
+    EXPECT_EQ(std::get<cmd::SetTheme>(theme.front()).theme, Theme::Light);
+    now.view.theme = Theme::Light;
+    EXPECT_EQ(
+        std::get<cmd::SetTheme>(commandsForKey(keyEvent(SDLK_t, KMOD_LCTRL), now).front()).theme,
+        Theme::Dark);
+    EXPECT_TRUE(is<cmd::SetMode>(commandsForKey(keyEvent(SDLK_t), now))) << "plain T: the mode";
+    // The edit prompt has the keyboard: none of them reach the view.
+    now.editing = true;
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_EQUALS, KMOD_LCTRL), now).empty());
+}
+
 TEST(Input, EveryKeyOfTheHelpMapsToItsCommand) {
     const auto labels = commandsForKey(keyEvent(SDLK_s), KeyState{});
     ASSERT_TRUE(is<cmd::SetShow>(labels));

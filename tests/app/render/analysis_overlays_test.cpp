@@ -15,6 +15,7 @@
 #include "render/analysis_overlays.hpp"
 #include "render/offscreen_test.hpp"
 #include "render/renderer.hpp"
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 #include "render/trails.hpp"
 #include "session/camera.hpp"
@@ -325,22 +326,26 @@ TEST_F(OverlayRenderTest, MomentumViewDrawsParticleArrowsTheTotalAndTheCentreOfM
     series.record(w);
     view_.momentum = true;
     draw(w, series);
-    EXPECT_GT(count(kMomentumArrowColor, 96, 455, 105, 490), 10);  // above the left disc
-    EXPECT_GT(count(kMomentumArrowColor, 296, 455, 305, 490), 10);
-    EXPECT_GT(count(kTotalMomentumColor, 195, 410, 206, 480), 40);  // 100 px up from the CoM
-    EXPECT_GT(count(kCentreOfMassColor, 192, 497, 209, 504), 10);   // the cross
-    EXPECT_EQ(count(kTotalMomentumColor, 0, 520, layout().legend.x, kSize), 0);  // nothing below
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).momentumArrow), 96, 455, 105, 490),
+              10);  // above the left disc
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).momentumArrow), 296, 455, 305, 490), 10);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).totalMomentum), 195, 410, 206, 480),
+              40);  // 100 px up from the CoM
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).centreOfMass), 192, 497, 209, 504),
+              10);  // the cross
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).totalMomentum), 0, 520, layout().legend.x, kSize),
+              0);  // nothing below
     // The legend, top-right: the total's value in its colour.
     const PixelRect legend = layout().legend;
-    EXPECT_GT(
-        count(kTotalMomentumColor, legend.x, legend.y, legend.x + legend.w, legend.y + legend.h),
-        20);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).totalMomentum), legend.x, legend.y,
+                    legend.x + legend.w, legend.y + legend.h),
+              20);
 
     view_.momentum = false;
     draw(w, series);
-    EXPECT_EQ(count(kMomentumArrowColor, 0, 0, kSize, kSize), 0);
-    EXPECT_EQ(count(kTotalMomentumColor, 0, 0, kSize, kSize), 0);
-    EXPECT_EQ(count(kCentreOfMassColor, 0, 0, kSize, kSize), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).momentumArrow), 0, 0, kSize, kSize), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).totalMomentum), 0, 0, kSize, kSize), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).centreOfMass), 0, 0, kSize, kSize), 0);
 }
 
 TEST_F(OverlayRenderTest, TrailsFollowThePathAndOnlyWhenOn) {
@@ -401,10 +406,11 @@ TEST_F(OverlayRenderTest, PlotsShowAConservedEnergyFlatAndALosingOneFalling) {
         flat.record(s);
     }
     draw(w, flat);
-    EXPECT_LE(rows(kEnergyPlotColor, x0 + 80, y0 + 20, x1, y0 + 100), 2);
-    EXPECT_GT(count(kEnergyPlotColor, x0 + 80, y0 + 20, x1, y0 + 100), 200);
+    EXPECT_LE(rows(sdlColor(palette(Theme::Dark).energyPlot), x0 + 80, y0 + 20, x1, y0 + 100), 2);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).energyPlot), x0 + 80, y0 + 20, x1, y0 + 100),
+              200);
     // The rate plot: 100 collisions per 0.01 s.
-    EXPECT_GT(count(kRatePlotColor, x0 + 80, y0 + 300, x1, y0 + 400), 200);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).ratePlot), x0 + 80, y0 + 300, x1, y0 + 400), 200);
 
     TimeSeries falling(300);
     for (int k = 0; k < 300; ++k) {
@@ -414,12 +420,12 @@ TEST_F(OverlayRenderTest, PlotsShowAConservedEnergyFlatAndALosingOneFalling) {
         falling.record(s);
     }
     draw(w, falling);
-    EXPECT_GT(rows(kEnergyPlotColor, x0 + 80, y0 + 20, x1, y0 + 100), 30);
+    EXPECT_GT(rows(sdlColor(palette(Theme::Dark).energyPlot), x0 + 80, y0 + 20, x1, y0 + 100), 30);
 
     view_.plots = false;
     draw(w, falling);
-    EXPECT_EQ(count(kEnergyPlotColor, 0, 0, kSize, kSize), 0);
-    EXPECT_EQ(count(kRatePlotColor, 0, 0, kSize, kSize), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).energyPlot), 0, 0, kSize, kSize), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).ratePlot), 0, 0, kSize, kSize), 0);
 }
 
 TEST_F(OverlayRenderTest, SpeedHistogramDrawsBarsAndTheCurveOnlyWhenOn) {
@@ -429,13 +435,17 @@ TEST_F(OverlayRenderTest, SpeedHistogramDrawsBarsAndTheCurveOnlyWhenOn) {
     draw(w, series);
     const int x0 = layout().speeds.x, y0 = layout().speeds.y;
     ASSERT_EQ(layout().speeds.h, 210);
-    EXPECT_GT(count(kHistogramBarColor, x0 + 60, y0 + 30, kSize, kSize - 30), 2000);
+    EXPECT_GT(
+        count(sdlColor(palette(Theme::Dark).histogramBar), x0 + 60, y0 + 30, kSize, kSize - 30),
+        2000);
     // White: the curve (the font is grey or coloured).
-    EXPECT_GT(count(kRayleighCurveColor, x0 + 60, y0 + 30, kSize, kSize - 40, 0), 60);
+    EXPECT_GT(
+        count(sdlColor(palette(Theme::Dark).theoryCurve), x0 + 60, y0 + 30, kSize, kSize - 40, 0),
+        60);
 
     view_.speeds = false;
     draw(w, series);
-    EXPECT_EQ(count(kHistogramBarColor, 0, 0, kSize, kSize), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).histogramBar), 0, 0, kSize, kSize), 0);
 }
 
 }  // namespace

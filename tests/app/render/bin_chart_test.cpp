@@ -10,6 +10,7 @@
 #include "render/analysis_overlays.hpp"
 #include "render/bin_chart.hpp"
 #include "render/offscreen_test.hpp"
+#include "render/sdl_color.hpp"
 #include "view/bin_histogram.hpp"
 #include "view/bins_fixture.hpp"
 #include "view/screen_layout.hpp"
@@ -54,14 +55,15 @@ TEST_F(BinHistogramDrawTest, DrawsTheBarsTheDotsAndTheNormalCurveInItsBox) {
     // The plot area, below the legend's lines.
     const SDL_Rect plot{layout.bins.x + 44, layout.bins.y + 4 * font_->lineHeight() + 10,
                         layout.bins.w - 54, layout.bins.h - 6 * font_->lineHeight() - 16};
-    EXPECT_GT(count(kBinBarColor, plot), 2000);
-    EXPECT_GT(count(kNormalCurveColor, plot, 0), 100);
-    EXPECT_GT(count(kBinomialDotColor, plot, 0), 9 * 20);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).binBar), plot), 2000);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).normalCurve), plot, 0), 100);
+    EXPECT_GT(count(sdlColor(palette(Theme::Dark).theoryCurve), plot, 0), 9 * 20);
     // The middle bar is the tallest: its colour reaches higher than the first bar's.
     const auto topOf = [&](int column) {
         for (int y = plot.y; y < plot.y + plot.h; ++y) {
             const SDL_Color p = pixel(column, y);
-            if (std::abs(p.r - kBinBarColor.r) <= 10 && std::abs(p.g - kBinBarColor.g) <= 10)
+            if (std::abs(p.r - sdlColor(palette(Theme::Dark).binBar).r) <= 10 &&
+                std::abs(p.g - sdlColor(palette(Theme::Dark).binBar).g) <= 10)
                 return y;
         }
         return plot.y + plot.h;
@@ -71,7 +73,7 @@ TEST_F(BinHistogramDrawTest, DrawsTheBarsTheDotsAndTheNormalCurveInItsBox) {
               topOf(plot.x + static_cast<int>(1.3f * binW)));
     // Nothing outside its box.
     SDL_Rect left{0, 0, layout.bins.x - 1, 800};
-    EXPECT_EQ(count(kBinBarColor, left), 0);
+    EXPECT_EQ(count(sdlColor(palette(Theme::Dark).binBar), left), 0);
 }
 
 TEST_F(BinHistogramDrawTest, TheAxisCaptionsNeverOverlapEachOtherOrTheTickLabels) {

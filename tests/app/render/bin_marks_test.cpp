@@ -11,6 +11,7 @@
 #include "render/bin_chart.hpp"
 #include "render/bin_marks.hpp"
 #include "render/offscreen_test.hpp"
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 #include "view/bins_fixture.hpp"
 
@@ -25,8 +26,9 @@ class BinMarksTest : public OffscreenTest {
         for (int y = r.y; y < r.y + r.h; ++y) {
             for (int x = r.x; x < r.x + r.w; ++x) {
                 const SDL_Color p = pixel(x, y);
-                n += std::abs(p.r - kBinBarColor.r) <= 10 && std::abs(p.g - kBinBarColor.g) <= 10 &&
-                     std::abs(p.b - kBinBarColor.b) <= 10;
+                n += std::abs(p.r - sdlColor(palette(Theme::Dark).binBar).r) <= 10 &&
+                     std::abs(p.g - sdlColor(palette(Theme::Dark).binBar).g) <= 10 &&
+                     std::abs(p.b - sdlColor(palette(Theme::Dark).binBar).b) <= 10;
             }
         }
         return n;

@@ -229,6 +229,59 @@ TEST_F(SessionValues, TheArrowScaleStaysWhereTheUserSetItUntilASceneOpens) {
     EXPECT_DOUBLE_EQ(s.view().arrowSeconds, 1.0 / 3.0);
 }
 
+TEST_F(SessionValues, TheUiScaleIsSetWithinItsRangeAndBadValuesAreRefused) {
+    Session s = session();
+    EXPECT_TRUE(s.view().uiScaleAutomatic);
+    EXPECT_EQ(s.view().uiScale, 1.0);
+    s.apply(cmd::SetUiScale{2.0, false});
+    EXPECT_TRUE(said(s.takeNotices(), "UI scale 200 % (Ctrl+0: automatic)"));
+    EXPECT_EQ(s.view().uiScale, 2.0);
+    EXPECT_FALSE(s.view().uiScaleAutomatic);
+    for (const double bad : {0.0, 0.74, 3.01, -1.0, std::nan(""), HUGE_VAL}) {
+        s.apply(cmd::SetUiScale{bad, false});
+        EXPECT_TRUE(said(s.takeNotices(), "The UI scale must be 75 % to 300 %")) << bad;
+        EXPECT_EQ(s.view().uiScale, 2.0) << bad;
+    }
+    s.apply(cmd::SetUiScale{1.5, true});
+    EXPECT_TRUE(said(s.takeNotices(), "UI scale 150 % (automatic: by the window's height"));
+    EXPECT_TRUE(s.view().uiScaleAutomatic);
+    // A view setting, not an edit: nothing to undo, and a new scene keeps it.
+    EXPECT_FALSE(s.canUndo());
+    s.setWorld(World(s.world().def()), SceneMeta{.name = "empty", .dt = Scene{}.dt});
+    EXPECT_EQ(s.view().uiScale, 1.5);
+}
+
+TEST_F(SessionValues, TheThemeSwitchesAndIsNoEdit) {
+    Session s = session();
+    EXPECT_EQ(s.view().theme, Theme::Dark);
+    s.apply(cmd::SetTheme{Theme::Light});
+    EXPECT_TRUE(said(s.takeNotices(), "Theme: light"));
+    EXPECT_EQ(s.view().theme, Theme::Light);
+    EXPECT_FALSE(s.canUndo());
+    s.apply(cmd::SetTheme{Theme::Light});
+    EXPECT_TRUE(s.takeNotices().empty()) << "no news";
+    s.apply(cmd::SetTheme{Theme::Dark});
+    EXPECT_EQ(s.view().theme, Theme::Dark);
+}
+
+TEST(UiScale, StepsThroughTheListAndTheAutomaticRuleFollowsTheHeight) {
+    EXPECT_EQ(steppedUiScale(1.0, +1), 1.1);
+    EXPECT_EQ(steppedUiScale(1.0, -1), 0.9);
+    EXPECT_EQ(steppedUiScale(1.0, +5), 2.0);
+    EXPECT_EQ(steppedUiScale(3.0, +1), 3.0);
+    EXPECT_EQ(steppedUiScale(0.75, -1), 0.75);
+    EXPECT_EQ(steppedUiScale(1.3, +1), 1.5) << "from between two steps, the next one";
+    EXPECT_EQ(steppedUiScale(1.3, -1), 1.25);
+    EXPECT_EQ(automaticUiScale(800), 1.0) << "the window the program opens";
+    EXPECT_EQ(automaticUiScale(899), 1.0);
+    EXPECT_EQ(automaticUiScale(900), 1.25);
+    EXPECT_EQ(automaticUiScale(1080), 1.5) << "a 1920x1080 projector, full screen";
+    EXPECT_EQ(automaticUiScale(1440), 2.0);
+    EXPECT_EQ(automaticUiScale(2160), 3.0);
+    EXPECT_EQ(automaticUiScale(5000), 3.0);
+    EXPECT_EQ(automaticUiScale(std::nan("")), 1.0);
+}
+
 TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
     Session s = session();
     s.apply(cmd::SetMode{StepMode::Substep, 8});

@@ -54,6 +54,28 @@ TEST(WindowLayout, TheSideColumnIsKeptFreeWhereItFitsAndFoldedWithANoteWhereNot)
     EXPECT_EQ(narrow.controlsFoldedColumn.top, narrow.controlsFolded.top);
 }
 
+TEST(WindowLayout, AtTwiceTheScaleTheBandsAndTheColumnGrowWithTheText) {
+    // The UI at 200 %: fonts twice the size, the control panel twice as wide (controlsWidth of
+    // the pixel ratio × the scale), the side column's limits doubled.
+    const test::FixedMeasure big(2);
+    const ControlsWidth controls{620.0, 88.0, 2.0};
+    const WindowLayout one = windowLayout(kFont, 1920, 1080, kControls);
+    const WindowLayout two = windowLayout(big, 1920, 1080, controls);
+    EXPECT_EQ(two.controlsOpen.left, 620.0);
+    EXPECT_EQ(two.controlsOpen.bottom - kPanelMargin - 4.0,
+              2.0 * (one.controlsOpen.bottom - kPanelMargin - 4.0));
+    EXPECT_GT(two.controlsOpen.top, 1.8 * one.controlsOpen.top);
+    // The inspector's column: its text twice as wide (its few pixels of padding are not).
+    EXPECT_NEAR(two.controlsOpen.spareColumn, 2.0 * one.controlsOpen.spareColumn, 24.0);
+    ASSERT_TRUE(sideColumnFits(1920, 620, 2.0));
+    EXPECT_EQ(two.controlsOpenColumn.right, sideColumnWidth(1920, 620, 2.0) + kPanelMargin);
+    EXPECT_EQ(sideColumnWidth(1920, 620, 2.0), 520) << "two fifths of the room, within 440-660";
+    EXPECT_EQ(sideColumnWidth(1920, 310, 1.0), 330) << "the same window at 100 %: at most 330";
+    // A window the column fits beside at 100 % but not at 300 %.
+    EXPECT_TRUE(sideColumnFits(1280, 310, 1.0));
+    EXPECT_FALSE(sideColumnFits(1280, 930, 3.0));
+}
+
 TEST(WindowLayout, TheHudsBandGrowsWhenItsLinesWrap) {
     const WindowLayout wide = windowLayout(kFont, 1600, 1000, kControls);
     const WindowLayout narrow = windowLayout(kFont, 700, 1000, kControls);

@@ -11,13 +11,18 @@ namespace psb::app::test {
 
 class FixedMeasure final : public TextMeasure {
   public:
-    [[nodiscard]] int lineHeight() const override { return 17; }
+    /// At `scale` × the size (the UI's scale): `scale` × 8 pixels a character, × 17 a line.
+    explicit FixedMeasure(int scale = 1) : scale_(scale) {}
+    [[nodiscard]] int lineHeight() const override { return 17 * scale_; }
     [[nodiscard]] int measure(std::string_view text) const override {
         int n = 0;
         for (const char c : text)
             n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // not a continuation byte
-        return 8 * n;
+        return 8 * scale_ * n;
     }
+
+  private:
+    int scale_;
 };
 
 }  // namespace psb::app::test

@@ -86,6 +86,32 @@ TEST(PanelLayout, At800x800WithoutProfileThePlotsGetAllFourFullRows) {
     EXPECT_EQ(l.speeds.h, kSpeedsMaxHeight);
 }
 
+TEST(PanelLayout, AtTwiceTheScaleTheChartsAreTwiceTheSizeAndStillDoNotOverlap) {
+    // 2560x1600 at 200 %: the 800x800 case's panels, every size doubled.
+    LayoutRequest r = everythingOn(2560, 1600);
+    r.hud = {1080, 208};
+    r.profile = {0, 0};
+    r.legend = {0, 0};
+    r.messages = {0, 0};
+    r.inspector = {0, 0};
+    r.left = 620;
+    r.scale = 2.0;
+    const PanelLayout l = layoutPanels(r);
+    expectNoOverlapAndInside(r, l);
+    EXPECT_EQ(l.plotRows, 4);
+    EXPECT_EQ(l.plotRowHeight, 2 * kPlotRowMaxHeight);
+    EXPECT_EQ(l.speeds.h, 2 * kSpeedsMaxHeight);
+    EXPECT_EQ(l.plots.w, 2 * kPanelMaxWidth);
+    // Any window at any scale: still no overlap, still inside.
+    for (const double scale : {0.75, 1.5, 3.0}) {
+        for (int w = 611; w <= 2400; w += 211) {
+            LayoutRequest q = everythingOn(w, w * 3 / 4);
+            q.scale = scale;
+            expectNoOverlapAndInside(q, layoutPanels(q));
+        }
+    }
+}
+
 TEST(PanelLayout, NoWindowSizeOrPanelChoiceMakesBoxesOverlap) {
     for (int w = 200; w <= 1600; w += 37) {
         for (int h = 200; h <= 1200; h += 41) {
