@@ -63,11 +63,13 @@ wait_log "\[I\] Edit cancelled"
 pass "refused edit: the prompt stays, with '$(section 2-refused Inspector | grep "^Refused")'"
 
 # --- 7. a fling while paused keeps its speed, and says so -----------------------------------------
-# The green disc (2.5, 2.6) m dragged right and down, F12 half way, let go while moving.
+# The green disc (2.5, 2.6) m dragged right and down, F12 early on, let go while moving. The
+# screenshot's frame can take a while on a loaded machine, and the moves queued meanwhile reach
+# the program at once: the drag goes on for 0.6 s after it, so that its last 100 ms are moving.
 x0=$(sx 2.5)
 y0=$(sy 2.6)
 chain=(mousemove --sync "$x0" "$y0" sleep 0.1 mousedown 1 sleep 0.1)
-for ((i = 1; i <= 12; i++)); do
+for ((i = 1; i <= 26; i++)); do
     chain+=(mousemove "$((x0 + 6 * i))" "$((y0 + 3 * i))" sleep 0.03)
     ((i == 6)) && chain+=(key --window "$WID" F12 sleep 0.05)
 done

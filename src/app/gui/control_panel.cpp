@@ -17,7 +17,6 @@ using widgets::tip;
 
 namespace {
 
-
 void copyPath(std::array<char, 512>& to, const std::filesystem::path& from) {
     const std::string s = from.string();
     const std::size_t n = std::min(s.size(), to.size() - 1);
@@ -163,8 +162,8 @@ void ControlPanel::time(const Session& s) {
     mark("Speed");
     tip("Simulated seconds per real second: x1 is real time, x0.25 slow motion (keys , and .)");
     if (!s.paused() && s.reachedTimeScale() < 0.95 * s.timeScale()) {
-        ImGui::TextColored(widgets::caution(s.view().theme), "Reaching only x%.2g: too much to compute",
-                           s.reachedTimeScale());
+        ImGui::TextColored(widgets::caution(s.view().theme),
+                           "Reaching only x%.2g: too much to compute", s.reachedTimeScale());
     }
     stopwatch(s);
 }
@@ -305,13 +304,9 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         out_.emplace_back(cmd::SetArrowScale{arrow, dragging});
     }
     mark("Arrow scale");
-    tip(v.arrowScaleSet ? "Each arrow reaches where its particle will be after this much time "
-                          "(and a launch's drag gives that speed). Set by you: it stays until a "
-                          "scene opens"
-                        : "Each arrow reaches where its particle will be after this much time "
-                          "(and a launch's drag gives that speed). Chosen for the scene so that "
-                          "arrows do not hide it; it only shortens, when the motion speeds up. "
-                          "Set it and it stays");
+    tip("Each arrow reaches where its particle will be after this much time (and a launch's "
+        "drag gives that speed). A scene chooses it when it opens, so that arrows do not hide "
+        "the particles, and it does not change by itself after that; set it here");
     box("Momentum and centre of mass", v.momentum, cmd::ShowOption::Momentum,
         "Momentum arrows m v, the total momentum and the centre of mass with its path (key V)");
     box("Plots", v.plots, cmd::ShowOption::Plots,
@@ -320,24 +315,29 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
+    // Three to a row, two on the next: the Show section stays short enough that Tools is in an
+    // 800-pixel window's first screen.
+    const float row = ImGui::GetContentRegionAvail().x;
     box("Values table", v.values, cmd::ShowOption::Values,
         "Every particle's signed position, velocity, momentum and energy, with the totals, in a "
         "window; position, velocity and mass can be typed in (key I)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    ImGui::SameLine(row * 0.47f);
     box("Spin", v.spin, cmd::ShowOption::Spin,
         "A contrasting quarter of each disc that turns, turning with it: a rolling ball's goes "
         "round, a sliding one's does not. Particles with fixed "
         "rotation have none, and nothing turns without friction or a spin given by hand");
-    box("Last collision card", v.collision, cmd::ShowOption::Collision,
-        "The selected particle's last collision (with none selected, the last between two "
-        "particles): velocities, momenta and energy just before and just after (key J)");
-    box("Ruler", v.ruler, cmd::ShowOption::Ruler,
-        "A ruler over the box: drag its ends (or its edge to move it) to measure a distance in "
-        "metres and a slope in degrees (key Q)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    ImGui::SameLine(row * 0.74f);
     box("Grid", v.grid, cmd::ShowOption::Grid,
         "Lines across the box at a round number of metres, labelled along its top and left "
         "edges (Shift+G)");
+    box("Last collision card", v.collision, cmd::ShowOption::Collision,
+        "The selected particle's last collision (with none selected, the last between two "
+        "particles): velocities, momenta and energy just before and just after, and the momenta "
+        "diagram (key J)");
+    ImGui::SameLine(row * 0.64f);
+    box("Ruler", v.ruler, cmd::ShowOption::Ruler,
+        "A ruler over the box: drag its ends (or its edge to move it) to measure a distance in "
+        "metres and a slope in degrees (key Q)");
     if (s.meta().bins) {
         box("Bin counts against the bell curve", v.bins, cmd::ShowOption::Bins,
             "How many balls landed in each bin, against the binomial distribution and the "
@@ -356,6 +356,15 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     }
     mark("Trails");
     tip("Draw the path each particle has taken (key L cycles)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.64f);
+    bool light = v.theme == Theme::Light;
+    if (ImGui::Checkbox("Light", &light)) {
+        out_.emplace_back(cmd::SetTheme{light ? Theme::Light : Theme::Dark});
+    }
+    mark("theme Light");
+    tip("The light, high-contrast theme for a projector: white background, dark text, colours "
+        "colour-blind viewers tell apart; unticked, light text on black (Ctrl+T switches). Kept "
+        "between runs");
     if (ImGui::Button("Fit view")) out_.emplace_back(cmd::Fit{});
     mark("Fit view");
     tip("Zoom and pan so the whole box is in view (key F; the wheel zooms, the right button "
@@ -397,20 +406,6 @@ void ControlPanel::look(const Session& s) {
                              "899 points, 150 % at 1080)"
                            : "Back to the automatic scale, which follows the window's height "
                              "(Ctrl+0)");
-    ImGui::TextUnformatted("Theme");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("Dark", v.theme == Theme::Dark)) {
-        out_.emplace_back(cmd::SetTheme{Theme::Dark});
-    }
-    mark("theme Dark");
-    tip("Light text on black (Ctrl+T switches)");
-    ImGui::SameLine();
-    if (ImGui::RadioButton("Light (projector)", v.theme == Theme::Light)) {
-        out_.emplace_back(cmd::SetTheme{Theme::Light});
-    }
-    mark("theme Light");
-    tip("Dark text on white, high contrast, in colours colour-blind viewers tell apart: for a "
-        "projector (Ctrl+T switches)");
 }
 
 void ControlPanel::tools(const Session& s, float) {

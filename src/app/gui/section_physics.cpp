@@ -144,23 +144,25 @@ void ControlPanel::physics(const Session& s) {
     const double side = std::sqrt(kSqueezeArea);
     if (ImGui::Button("Squeeze")) out_.emplace_back(cmd::ResizeBox{width * side, height * side});
     mark("Squeeze");
-    widgets::tip(fixedBox ? "This scene's walls, pegs or spouts are fixed in the box: it keeps "
-                            "its size"
-                          : "The box 10 % smaller in area, the particles moved in with it and "
-                            "their speeds kept: at the same temperature the gas's pressure "
-                            "goes up (Boyle). Ctrl+Z undoes it");
-    ImGui::SameLine();
-    if (ImGui::Button("Expand")) out_.emplace_back(cmd::ResizeBox{width / side, height / side});
-    mark("Expand");
-    widgets::tip("The box 10 % larger in area (divided by 0.9), the particles moved out with it");
-    ImGui::EndDisabled();
     std::string box = "Box ";
     box += quantity(width, "m");
     box += " x ";
     box += quantity(height, "m");
     box += ", area ";
     box += quantity(width * height, "m\u00b2", false);
-    widgets::wrappedDisabled(box);
+    widgets::tip((box + (fixedBox ? ". This scene's walls, pegs or spouts are fixed in the box: "
+                                    "it keeps its size"
+                                  : ". Squeeze: 10 % less area, the particles moved in with it "
+                                    "and their speeds kept: at the same temperature the gas's "
+                                    "pressure goes up (Boyle). Ctrl+Z undoes it"))
+                     .c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Expand")) out_.emplace_back(cmd::ResizeBox{width / side, height / side});
+    mark("Expand");
+    widgets::tip((box + ". Expand: 10 % more area (divided by 0.9), the particles moved out with "
+                        "it")
+                     .c_str());
+    ImGui::EndDisabled();
 }
 
 }  // namespace psb::app

@@ -31,7 +31,7 @@ void ControlPanel::sceneText(const Session& s) {
     ImGui::TextUnformatted("Title");
     if (!titleActive_) copyText(title_, s.meta().name);
     ImGui::SetNextItemWidth(-1.f);
-    ImGui::InputText("##title", title_.data(), title_.size());
+    ImGui::InputText("##title", title_.data(), title_.size(), ImGuiInputTextFlags_AutoSelectAll);
     titleActive_ = ImGui::IsItemActive();
     const bool titleDone = ImGui::IsItemDeactivatedAfterEdit();
     mark("title");

@@ -20,10 +20,11 @@ namespace psb::app {
 
 /// The options kept, in their file's order.
 inline constexpr ShowOption kKeptOptions[] = {
-    ShowOption::Arrows,    ShowOption::Labels, ShowOption::Momentum,
-    ShowOption::Plots,     ShowOption::Speeds, ShowOption::Profile,
-    ShowOption::Collision, ShowOption::Values, ShowOption::Ruler,
-    ShowOption::Grid,      ShowOption::Spin};
+    ShowOption::Arrows, ShowOption::Labels,  ShowOption::Momentum,  ShowOption::Plots,
+    ShowOption::Speeds, ShowOption::Profile, ShowOption::Collision, ShowOption::Values,
+    ShowOption::Grid,   ShowOption::Spin};
+// Not kept: the ruler, laid across the middle of each scene's box, would come back lying over
+// the next run's particles.
 
 /// `view`'s kept settings as the file's text.
 [[nodiscard]] std::string settingsText(const ViewOptions& view);

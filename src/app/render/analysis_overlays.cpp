@@ -8,8 +8,8 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
                             const PanelLayout& layout, const std::optional<BinHistogram>& bins) {
     const Palette& colours = palette(view.theme);
     if (view.momentum) {
-        momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds,
-                       layout.legend, colours);
+        momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds, layout.legend,
+                       colours);
     }
     if (view.plots && layout.plots.w > 0) {
         double mass = 0.0;

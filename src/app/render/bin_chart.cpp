@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/sdl_color.hpp"
 #include "render/plot_chart.hpp"
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 #include "view/overlays.hpp"
 

@@ -35,8 +35,7 @@ struct BinChartLayout {
 class BinChart {
   public:
     /// Draws `h` in `box` (pixels, see PanelLayout).
-    void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
-              const PixelRect& box,
+    void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h, const PixelRect& box,
               const Palette& colours = palette(Theme::Dark));
 
   private:

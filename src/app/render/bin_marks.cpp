@@ -4,8 +4,8 @@
 #include <cmath>
 #include <string>
 
-#include "render/sdl_color.hpp"
 #include "render/bin_chart.hpp"
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {

@@ -20,8 +20,7 @@ class BinMarks {
   public:
     /// Draws the marks of `bins` on a board whose floor is at y = `floor` metres.
     void draw(SDL_Renderer* renderer, const Font& font, const Camera& camera, const Bins& bins,
-              double floor,
-              const Palette& colours = palette(Theme::Dark));
+              double floor, const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch text_;

@@ -11,8 +11,8 @@
 
 #include "render/geometry_batch.hpp"
 #include "session/camera.hpp"
-#include "view/palette.hpp"
 #include "view/momentum_view.hpp"
+#include "view/palette.hpp"
 #include "view/pixel_rect.hpp"
 
 namespace psb::app {

@@ -1,7 +1,7 @@
 #include "render/overlay_drawing.hpp"
 
-#include "render/sdl_color.hpp"
 #include "render/geometry_batch.hpp"
+#include "render/sdl_color.hpp"
 
 namespace psb::app {
 

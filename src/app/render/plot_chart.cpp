@@ -119,8 +119,8 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
             const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
             boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
             const std::string label = tickLabel(t, step);
-            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4,
-                        grey, text_);
+            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4, grey,
+                        text_);
         }
         font.layout("t (s)", x + 8, bottom + 4, grey, text_);
     }

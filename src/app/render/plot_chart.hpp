@@ -40,7 +40,6 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
                   GeometryBatch& labels, const Palette& colours);
 
-
 class PlotChart {
   public:
     /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels

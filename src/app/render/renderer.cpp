@@ -8,8 +8,8 @@
 #include <string>
 #include <utility>
 
-#include "render/sdl_color.hpp"
 #include "render/obstacle_drawing.hpp"
+#include "render/sdl_color.hpp"
 #include "render/spin_mark.hpp"
 #include "render/text.hpp"
 #include "session/units.hpp"
@@ -386,7 +386,8 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 if (!overDiscs) {
                     labelBoxes_.quad(static_cast<float>(box->x), static_cast<float>(box->y),
                                      static_cast<float>(box->x + box->w),
-                                     static_cast<float>(box->y + box->h), sdlColor(colours.labelBox));
+                                     static_cast<float>(box->y + box->h),
+                                     sdlColor(colours.labelBox));
                 }
                 for (int k = 0; k < 5; ++k) {
                     const float x = static_cast<float>(box->x + 2);
@@ -394,8 +395,8 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     if (overDiscs) {
                         for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
                             labelFont_->layout(lines[k], x + static_cast<float>(dx),
-                                               y + static_cast<float>(dy), sdlColor(colours.labelOutline),
-                                               labelOutline_);
+                                               y + static_cast<float>(dy),
+                                               sdlColor(colours.labelOutline), labelOutline_);
                     }
                     labelFont_->layout(lines[k], x, y, sdlColor(colours.labelText), labelText_);
                 }

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <string>
 
-#include "render/sdl_color.hpp"
 #include "render/plot_chart.hpp"
+#include "render/sdl_color.hpp"
 #include "render/text.hpp"
 
 namespace psb::app {

@@ -26,8 +26,7 @@ class SpeedChart {
 
     /// Draws the histogram of `p` in `box` (pixels, see PanelLayout).
     void draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
-              const PixelRect& box,
-              const Palette& colours = palette(Theme::Dark));
+              const PixelRect& box, const Palette& colours = palette(Theme::Dark));
 
   private:
     GeometryBatch boxes_, text_;

@@ -97,12 +97,9 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     monitor_.beginSteps(doc_.world);
     clock_.run(realSeconds, now, doc_.meta.dt, budgetMs, t0, [this, now] { stepOnce(now); });
     monitor_.endSteps(doc_.world);
-    // Arrows shorten when the motion speeds up (a bullet scattering a crowd) but never grow
-    // back on their own, so their lengths stay comparable over time; opening a scene resets it.
-    // The user's own scale stays as set.
-    if (!view_.arrowScaleSet) {
-        view_.arrowSeconds = std::min(view_.arrowSeconds, arrowSecondsFor(doc_.world));
-    }
+    // The arrow scale does not change by itself while a scene runs (launches, a bullet
+    // scattering a crowd): arrow lengths stay comparable over time. A scene opened chooses one;
+    // the Show section's slider sets it.
     // Show the held particle exactly at the hand, paused or not.
     holdParticle(now);
     checkSelection();

@@ -116,8 +116,8 @@ void Session::handle(const cmd::ResizeBox& c) {
     say(fmt("Box %s x %s: the area x%.3g, the particles moved with it, their speeds kept",
             quantity(c.width, "m").c_str(), quantity(c.height, "m").c_str(),
             (c.width * c.height) / (width * height)));
+    // The view stays as it was, so that the walls are seen to move in or out.
     userAction(c.width * c.height < width * height ? "squeeze the box" : "expand the box");
-    if (fitted_) fit();
 }
 
 void Session::handle(const cmd::SetGravity& c) {

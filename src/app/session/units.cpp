@@ -61,6 +61,16 @@ std::string scientific(double v) {
 
 }  // namespace
 
+std::string components(const Vec2& v) {
+    // Built by appending: GCC 12 warns wrongly (-Wrestrict) on a chain of + from a literal.
+    std::string s = "(";
+    s += quantity(v.x(), "", false);
+    s += ", ";
+    s += quantity(v.y(), "", false);
+    s += ")";
+    return s;
+}
+
 std::string quantity(double value, const std::string& unit, bool prefix) {
     if (std::isnan(value)) return "n/a";
     if (std::isinf(value)) return std::string(value < 0.0 ? "-" : "") + "infinite";

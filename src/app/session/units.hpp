@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include <particle_sandbox/math.hpp>
+
 namespace psb::app {
 
 /// `value` in `unit` with an SI prefix (k, M, G, T, P, E; m, µ, n, p, f, a) chosen so the
@@ -15,6 +17,10 @@ namespace psb::app {
 /// keep three significant figures ("0.00123 kg m/s"), and from a billion up or below a
 /// millionth it is a power of ten.
 [[nodiscard]] std::string quantity(double value, const std::string& unit, bool prefix = true);
+
+/// A vector's signed components as quantity() writes them without a prefix, in brackets:
+/// "(2.00, 0)", "(-2.50, 1.00)" (the unit goes after, once).
+[[nodiscard]] std::string components(const Vec2& v);
 
 /// A relative change (|change| / reference) in words: "kept to 1 part in 10^14" (the power
 /// rounded down), "kept exactly" below 10^-15 (rounding of the sums), "changed by 2.3 %" at a

@@ -41,14 +41,14 @@ double automaticUiScale(double heightPoints) {
 
 double steppedUiScale(double scale, int steps) {
     for (; steps > 0; --steps) {
-        const auto* up = std::upper_bound(std::begin(kUiScaleSteps), std::end(kUiScaleSteps),
-                                          scale + 1e-9);
+        const auto* up =
+            std::upper_bound(std::begin(kUiScaleSteps), std::end(kUiScaleSteps), scale + 1e-9);
         if (up == std::end(kUiScaleSteps)) break;
         scale = *up;
     }
     for (; steps < 0; ++steps) {
-        const auto* down = std::lower_bound(std::begin(kUiScaleSteps), std::end(kUiScaleSteps),
-                                            scale - 1e-9);
+        const auto* down =
+            std::lower_bound(std::begin(kUiScaleSteps), std::end(kUiScaleSteps), scale - 1e-9);
         if (down == std::begin(kUiScaleSteps)) break;
         scale = *(down - 1);
     }

@@ -8,17 +8,8 @@ namespace psb::app {
 
 namespace {
 
-std::string vec(const Vec2& v) {
-    std::string s = "(";
-    s += quantity(v.x(), "", false);
-    s += ", ";
-    s += quantity(v.y(), "", false);
-    s += ")";
-    return s;
-}
-
-std::string vec(const Vec2& v, const char* unit) {
-    std::string s = vec(v);
+std::string withUnit(const Vec2& v, const char* unit) {
+    std::string s = components(v);
     s += " ";
     s += unit;
     return s;
@@ -59,13 +50,18 @@ CollisionCardText collisionCardText(const CollisionCard& card) {
         const std::string b = std::to_string(card.numberB);
         t.title = "Particles " + a + " and " + b + at;
         t.rows = {
-            {"v " + a, "m/s", vec(c.aBefore), vec(c.aAfter), "Particle " + a + "'s velocity"},
-            {"v " + b, "m/s", vec(c.bBefore), vec(c.bAfter), "Particle " + b + "'s velocity"},
-            {"p " + a, "kg m/s", vec(card.massA * c.aBefore), vec(card.massA * c.aAfter),
+            {"v " + a, "m/s", components(c.aBefore), components(c.aAfter),
+             "Particle " + a + "'s velocity"},
+            {"v " + b, "m/s", components(c.bBefore), components(c.bAfter),
+             "Particle " + b + "'s velocity"},
+            {"p " + a, "kg m/s", components(card.massA * c.aBefore),
+             components(card.massA * c.aAfter),
              "Particle " + a + "'s momentum m v (m = " + quantity(card.massA, "kg", false) + ")"},
-            {"p " + b, "kg m/s", vec(card.massB * c.bBefore), vec(card.massB * c.bAfter),
+            {"p " + b, "kg m/s", components(card.massB * c.bBefore),
+             components(card.massB * c.bAfter),
              "Particle " + b + "'s momentum m v (m = " + quantity(card.massB, "kg", false) + ")"},
-            {"total p", "kg m/s", vec(card.momentumBefore()), vec(card.momentumAfter()),
+            {"total p", "kg m/s", components(card.momentumBefore()),
+             components(card.momentumAfter()),
              "The two momenta added: a collision between two particles never changes it"},
         };
     } else {
@@ -74,8 +70,10 @@ CollisionCardText collisionCardText(const CollisionCard& card) {
                                       : std::string(card.peg ? "a peg" : "a wall segment");
         t.title = "Particle " + a + " and " + other + at;
         t.rows = {
-            {"v " + a, "m/s", vec(c.aBefore), vec(c.aAfter), "Particle " + a + "'s velocity"},
-            {"p " + a, "kg m/s", vec(card.massA * c.aBefore), vec(card.massA * c.aAfter),
+            {"v " + a, "m/s", components(c.aBefore), components(c.aAfter),
+             "Particle " + a + "'s velocity"},
+            {"p " + a, "kg m/s", components(card.massA * c.aBefore),
+             components(card.massA * c.aAfter),
              "Particle " + a + "'s momentum m v (m = " + quantity(card.massA, "kg", false) +
                  "): a fixed wall or obstacle changes it"},
         };
@@ -84,7 +82,7 @@ CollisionCardText collisionCardText(const CollisionCard& card) {
                       quantity(card.energyAfter(), "J"),
                       "The sum of \u00bd m v\u00b2: kept by an elastic collision (e = 1)"});
     t.notes.push_back(
-        "Impulse on " + a + ": " + vec(c.impulse, "N s") +
+        "Impulse on " + a + ": " + withUnit(c.impulse, "N s") +
         (card.pair() ? " (on " + std::to_string(card.numberB) + ": the opposite)" : ""));
     if (card.pair()) {
         const Vec2 change = card.momentumAfter() - card.momentumBefore();
@@ -92,7 +90,7 @@ CollisionCardText collisionCardText(const CollisionCard& card) {
                              card.massB * (c.bBefore.norm() + c.bAfter.norm());
         t.notes.push_back(change.norm() <= 1e-12 * scale
                               ? std::string("Total momentum kept (to rounding)")
-                              : "Total momentum changed by " + vec(change, "kg m/s") +
+                              : "Total momentum changed by " + withUnit(change, "kg m/s") +
                                     " (a held particle pushes)");
     }
     t.notes.push_back(energyChange(card.energyBefore(), card.energyAfter()));

@@ -24,16 +24,6 @@ std::vector<MomentaDiagram::Arrow> tipToTail(const CollisionCard& card, const Ve
     return arrows;
 }
 
-std::string vec(const Vec2& v) {
-    // Built by appending: GCC 12 warns wrongly (-Wrestrict) on a chain of + from a literal.
-    std::string s = "(";
-    s += quantity(v.x(), "", false);
-    s += ", ";
-    s += quantity(v.y(), "", false);
-    s += ")";
-    return s;
-}
-
 std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arrows) {
     std::string s = "Momenta ";
     s += when;
@@ -44,12 +34,12 @@ std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arr
             s += " = ";
             s += a.label;
             s += ' ';
-            s += vec(a.to);
+            s += components(a.to);
         } else {
             if (i > 0) s += " + ";
             s += a.label;
             s += ' ';
-            s += vec(a.to - a.from);
+            s += components(a.to - a.from);
         }
     }
     s += " kg m/s";

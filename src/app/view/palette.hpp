@@ -48,12 +48,12 @@ struct Palette {
     Rgba totalMomentum;  ///< Σ m v
     Rgba centreOfMass;   ///< its marker and path
     Rgba energyPlot, pxPlot, pyPlot, ratePlot;
-    Rgba histogramBar;  ///< the speed histogram
-    Rgba theoryCurve;   ///< Maxwell–Boltzmann, the binomial's dots
-    Rgba binBar;        ///< the bins' counts
-    Rgba normalCurve;   ///< the bins' normal curve
-    Rgba controls;      ///< the control panel's background (opaque: see control_panel.cpp)
-    Rgba caution;       ///< the panel's notes in amber (unsaved changes, a slow step)
+    Rgba histogramBar;      ///< the speed histogram
+    Rgba theoryCurve;       ///< Maxwell–Boltzmann, the binomial's dots
+    Rgba binBar;            ///< the bins' counts
+    Rgba normalCurve;       ///< the bins' normal curve
+    Rgba controls;          ///< the control panel's background (opaque: see control_panel.cpp)
+    Rgba caution;           ///< the panel's notes in amber (unsaved changes, a slow step)
     Rgba grid, gridStrong;  ///< the grid of metres, its lines and every fifth (or second) one
     Rgba ruler;             ///< the ruler's edge, ticks, handles and reading
     /// The particles keep their scene's colours (dark), or take lightColour's (light).
