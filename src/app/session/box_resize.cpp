@@ -18,7 +18,11 @@ namespace {
 /// Returns the deepest overlap the pass found, metres.
 double pushApart(std::vector<Vec2>& at, const std::vector<double>& radius, double width,
                  double height) {
-    const double cell = 2.0 * *std::max_element(radius.begin(), radius.end());
+    // Cells at least as wide as the widest disc (so an overlapping pair is in neighbouring
+    // cells), and no more of them than about two a disc (tiny discs in a huge box).
+    const double cell =
+        std::max(2.0 * *std::max_element(radius.begin(), radius.end()),
+                 std::sqrt(width * height / (2.0 * static_cast<double>(at.size()))));
     const auto nx = static_cast<std::size_t>(std::max(1.0, std::ceil(width / cell)));
     const auto ny = static_cast<std::size_t>(std::max(1.0, std::ceil(height / cell)));
     std::vector<std::vector<std::size_t>> cells(nx * ny);

@@ -65,5 +65,18 @@ TEST(BoxResize, AFullBoxCannotBeSqueezedAndADiscWiderThanTheBoxIsNamed) {
         << std::get<std::string>(narrow);
 }
 
+TEST(BoxResize, TinyDiscsInAHugeBoxNeedNoHugeGrid) {
+    // Two micrometre discs a kilometre apart in a 10^6 m box, squeezed to a tenth: a grid of
+    // cells as wide as a disc would have 10^23 cells.
+    WorldDef def;
+    def.width = def.height = 1e6;
+    World w(def);
+    w.add({.position = Vec2(1000.0, 1000.0), .radius = 1e-6});
+    w.add({.position = Vec2(2000.0, 1000.0), .radius = 1e-6});
+    const auto out = resizedBox(w, 1e5, 1e5);
+    ASSERT_TRUE(std::holds_alternative<World>(out)) << std::get<std::string>(out);
+    EXPECT_NEAR(std::get<World>(out).get(w.ids()[1]).position.x(), 200.0, 1e-9);
+}
+
 }  // namespace
 }  // namespace psb::app
