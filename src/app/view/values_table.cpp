@@ -53,22 +53,39 @@ ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected) 
     t.totals.assign(t.columns.size(), 0.0);
     for (std::size_t k = 0; k < firstSum; ++k)
         t.totals[k] = kNaN;
-    std::vector<ParticleId> ids = world.ids();
-    t.particles = ids.size();
-    std::sort(ids.begin(), ids.end(),
-              [](ParticleId a, ParticleId b) { return particleNumber(a) < particleNumber(b); });
-    const bool all = ids.size() <= kValuesMaxRows;
-    for (const ParticleId id : ids) {
-        const Particle p = world.get(id);
-        std::vector<double> v = valuesOf(p, rotation);
-        for (std::size_t k = firstSum; k < v.size(); ++k)
-            t.totals[k] += v[k];
-        if (all || (selected && *selected == id)) {
-            t.rows.push_back({id, particleNumber(id), std::move(v)});
+    // The totals straight from the arrays: a table of 10^4 particles shows one row, and a
+    // Particle and a row of values built for each every frame cost a tenth of the frame.
+    const ParticleArrays& a = world.particles();
+    t.particles = a.size();
+    double px = 0.0, py = 0.0, ke = 0.0, keRot = 0.0, mass = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        px += a.mass[i] * a.vx[i];
+        py += a.mass[i] * a.vy[i];
+        ke += 0.5 * a.mass[i] * (a.vx[i] * a.vx[i] + a.vy[i] * a.vy[i]);
+        if (rotation) {
+            keRot += 0.5 * a.inertiaFactor[i] * a.mass[i] * a.radius[i] * a.radius[i] * a.omega[i] *
+                     a.omega[i];
         }
+        mass += a.mass[i];
+    }
+    std::size_t k = firstSum;
+    for (const double total : {px, py, ke})
+        t.totals[k++] = total;
+    if (rotation) t.totals[k++] = keRot;
+    t.totals[k] = mass;
+    const bool all = a.size() <= kValuesMaxRows;
+    if (all) {
+        std::vector<ParticleId> ids = world.ids();
+        std::sort(ids.begin(), ids.end(),
+                  [](ParticleId x, ParticleId y) { return particleNumber(x) < particleNumber(y); });
+        for (const ParticleId id : ids)
+            t.rows.push_back({id, particleNumber(id), valuesOf(world.get(id), rotation)});
+    } else if (selected && world.contains(*selected)) {
+        t.rows.push_back(
+            {*selected, particleNumber(*selected), valuesOf(world.get(*selected), rotation)});
     }
     if (!all) {
-        t.note = std::to_string(ids.size());
+        t.note = std::to_string(a.size());
         t.note += " particles: the totals of all, and the selected particle's row";
         if (t.rows.empty()) t.note += " (click one)";
     }
