@@ -266,9 +266,8 @@ void App::syncLook() {
     }
     controls_ = controlsWidth(points);
     const SDL_Point out = sdl_->outputSize();
-    session_->apply(cmd::Resize{out.x, out.y,
-                                windowLayout(sdl_->hudFont(), out.x, out.y, controls_,
-                                             options_.inPage)});
+    session_->apply(cmd::Resize{
+        out.x, out.y, windowLayout(sdl_->hudFont(), out.x, out.y, controls_, options_.inPage)});
 }
 
 void App::loadSettings() {

@@ -56,7 +56,8 @@ std::vector<Command> BrowserSettings::load(const ViewOptions& view, std::string&
         SettingsRead read = readSettings(written_, view);
         for (const std::string& p : read.problems)
             problem += (problem.empty() ? "" : "; ") + p;
-        if (!problem.empty()) problem = "The settings kept in this browser: " + problem + " (left out)";
+        if (!problem.empty())
+            problem = "The settings kept in this browser: " + problem + " (left out)";
         return std::move(read.commands);
     } catch (const std::exception& e) {
         problem = "The settings kept in this browser were ignored (" + std::string(e.what()) +

@@ -112,8 +112,8 @@ std::vector<Command> commandsForKey(const SDL_KeyboardEvent& key, const KeyState
             case SDLK_KP_0:
                 return {cmd::SetUiScale{state.view.uiScale, true}};
             case SDLK_t:
-                return {cmd::SetTheme{state.view.theme == Theme::Dark ? Theme::Light
-                                                                      : Theme::Dark}};
+                return {
+                    cmd::SetTheme{state.view.theme == Theme::Dark ? Theme::Light : Theme::Dark}};
             default:
                 break;
         }

@@ -49,13 +49,14 @@ std::string number(double v) {
 void readUi(const nlohmann::json& ui, const ViewOptions& view, SettingsRead& out) {
     if (const auto it = ui.find("scale"); it != ui.end()) {
         if (it->is_string() && it->get<std::string>() == "auto") {
-            if (!view.uiScaleAutomatic) out.commands.emplace_back(cmd::SetUiScale{view.uiScale, true});
+            if (!view.uiScaleAutomatic)
+                out.commands.emplace_back(cmd::SetUiScale{view.uiScale, true});
         } else if (!it->is_number()) {
             out.problems.push_back("ui.scale: expected \"auto\" or a number from " +
                                    number(kMinUiScale) + " to " + number(kMaxUiScale));
         } else if (const double s = it->get<double>(); !(s >= kMinUiScale && s <= kMaxUiScale)) {
-            out.problems.push_back("ui.scale: " + number(s) + " is outside " +
-                                   number(kMinUiScale) + " to " + number(kMaxUiScale));
+            out.problems.push_back("ui.scale: " + number(s) + " is outside " + number(kMinUiScale) +
+                                   " to " + number(kMaxUiScale));
         } else if (s != view.uiScale || view.uiScaleAutomatic) {
             out.commands.emplace_back(cmd::SetUiScale{s, false});
         }
