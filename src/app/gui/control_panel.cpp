@@ -356,7 +356,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     }
     mark("Trails");
     tip("Draw the path each particle has taken (key L cycles)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.64f);
+    ImGui::SameLine(0.f, 2.f * ImGui::GetStyle().ItemSpacing.x);
     bool light = v.theme == Theme::Light;
     if (ImGui::Checkbox("Light", &light)) {
         out_.emplace_back(cmd::SetTheme{light ? Theme::Light : Theme::Dark});

@@ -62,6 +62,14 @@ void DrawLayer::drawLabMarks(const FrameView& frame, const Palette& colours) {
     if (frame.ruler) {
         rulerMarks_.clear();
         batchRuler(*frame.ruler, rulerMarks_, colours);
+        // A box behind the reading, so that it reads over discs and their labels.
+        const MarkLabel& l = frame.ruler->label;
+        const float w = static_cast<float>(labelFont_.measure(l.text)) + 8.f;
+        const float h = static_cast<float>(labelFont_.lineHeight()) + 2.f;
+        const auto x = static_cast<float>(std::round(l.at.x())),
+                   y = static_cast<float>(std::round(l.at.y()));
+        rulerMarks_.quad(x - 0.5f * w, y - 0.5f * h, x + 0.5f * w, y + 0.5f * h,
+                         sdlColor(colours.labelBox), 0.5f, 0.5f, 0.5f, 0.5f);
         renderer_.drawBatch(rulerMarks_);
     }
     layoutMarkLabels(frame.grid ? &*frame.grid : nullptr, frame.ruler ? &*frame.ruler : nullptr,
