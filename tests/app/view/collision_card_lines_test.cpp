@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "view/collision_card_lines.hpp"
+#include "view/head_on_card.hpp"
 
 namespace psb::app {
 namespace {
@@ -15,29 +16,8 @@ bool has(const std::vector<std::string>& lines, const std::string& s) {
                        [&](const std::string& l) { return l.find(s) != std::string::npos; });
 }
 
-CollisionCard headOn(double e) {
-    // 1 kg at 2 m/s meets 3 kg at -1 m/s.
-    CollisionCard card;
-    Collision& c = card.collision;
-    c.time = 2.0 / 3.0;
-    c.with = Collision::With::Particle;
-    c.a = ParticleId{0, 0};
-    c.b = ParticleId{1, 0};
-    card.massA = 1.0;
-    card.massB = 3.0;
-    card.numberA = 1;
-    card.numberB = 2;
-    c.aBefore = Vec2(2.0, 0.0);
-    c.bBefore = Vec2(-1.0, 0.0);
-    const double vcm = -0.25;  // the centre of mass's velocity
-    c.aAfter = Vec2(vcm - e * (2.0 - vcm), 0.0);
-    c.bAfter = Vec2(vcm - e * (-1.0 - vcm), 0.0);
-    c.impulse = card.massA * (c.aAfter - c.aBefore);
-    return card;
-}
-
 TEST(CollisionCardLines, AnElasticHeadOnCollisionKeepsMomentumAndEnergy) {
-    const CollisionCardText t = collisionCardText(headOn(1.0));
+    const CollisionCardText t = collisionCardText(headOnCard(1.0));
     EXPECT_EQ(t.title, "Particles 1 and 2 at t = 667 ms");
     const auto lines = collisionCardLines(t);
     EXPECT_TRUE(has(lines, "v 1: (2.00, 0) m/s -> (-2.50, 0) m/s"));
@@ -52,7 +32,7 @@ TEST(CollisionCardLines, AnElasticHeadOnCollisionKeepsMomentumAndEnergy) {
 
 TEST(CollisionCardLines, AnInelasticOneSaysTheShareOfEnergyLost) {
     // e = 0.5: the relative motion's energy (3.375 J of the 3.5 J) is cut to a quarter.
-    const auto lines = collisionCardLines(collisionCardText(headOn(0.5)));
+    const auto lines = collisionCardLines(collisionCardText(headOnCard(0.5)));
     EXPECT_TRUE(has(lines, "Kinetic energy lost: 72.3 % of it")) << lines.back();
     EXPECT_TRUE(has(lines, "Total momentum kept"));
 }

@@ -6,31 +6,14 @@
 #include <cmath>
 #include <limits>
 
+#include "view/head_on_card.hpp"
 #include "view/momenta_diagram.hpp"
 
 namespace psb::app {
 namespace {
 
-CollisionCard headOn() {
-    // 1 kg at 2 m/s meets 3 kg at -1 m/s, elastically: -2.5 and 0.5 m/s after.
-    CollisionCard card;
-    Collision& c = card.collision;
-    c.with = Collision::With::Particle;
-    c.a = ParticleId{0, 0};
-    c.b = ParticleId{1, 0};
-    card.massA = 1.0;
-    card.massB = 3.0;
-    card.numberA = 1;
-    card.numberB = 2;
-    c.aBefore = Vec2(2.0, 0.0);
-    c.bBefore = Vec2(-1.0, 0.0);
-    c.aAfter = Vec2(-2.5, 0.0);
-    c.bAfter = Vec2(0.5, 0.0);
-    return card;
-}
-
 TEST(MomentaDiagram, ThePairsArrowsGoTipToTailAndTheTotalIsKept) {
-    const MomentaDiagram d = momentaDiagram(headOn());
+    const MomentaDiagram d = momentaDiagram(headOnCard());
     ASSERT_EQ(d.before.size(), 3u);
     ASSERT_EQ(d.after.size(), 3u);
     // Before: 1's (2, 0) from the origin, 2's (-3, 0) from its tip, the total (-1, 0).
@@ -51,7 +34,7 @@ TEST(MomentaDiagram, ThePairsArrowsGoTipToTailAndTheTotalIsKept) {
 }
 
 TEST(MomentaDiagram, PixelsKeepTheBoxsDirectionsAndStayInTheSquare) {
-    const MomentaDiagram d = momentaDiagram(headOn());
+    const MomentaDiagram d = momentaDiagram(headOnCard());
     const double side = 200.0;
     EXPECT_EQ(d.toPixels(Vec2(0, 0), side), Vec2(100, 100));
     const Vec2 right = d.toPixels(Vec2(2.5, 0), side), down = d.toPixels(Vec2(0, 2.5), side);
@@ -63,7 +46,7 @@ TEST(MomentaDiagram, PixelsKeepTheBoxsDirectionsAndStayInTheSquare) {
 }
 
 TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
-    const MomentaDiagram d = momentaDiagram(headOn());
+    const MomentaDiagram d = momentaDiagram(headOnCard());
     // Three rows across x, the first above the middle, the last below, the same after.
     EXPECT_LT(d.before[0].offset.y(), 0.0);
     EXPECT_EQ(d.before[1].offset, Vec2(0, 0));
@@ -71,7 +54,7 @@ TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
     EXPECT_EQ(d.after[2].offset, d.before[2].offset);
     EXPECT_EQ(d.fromPixels(d.before[1], 200.0), d.toPixels(d.before[0].to, 200.0));
     // Along y (a vertical collision): the rows are across y.
-    CollisionCard vertical = headOn();
+    CollisionCard vertical = headOnCard();
     Collision& c = vertical.collision;
     for (Vec2* v : {&c.aBefore, &c.bBefore, &c.aAfter, &c.bAfter})
         *v = Vec2(0.0, v->x());
@@ -85,7 +68,7 @@ TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
 }
 
 TEST(MomentaDiagram, AWallChangesTheOneParticlesMomentum) {
-    CollisionCard card = headOn();
+    CollisionCard card = headOnCard();
     card.collision.with = Collision::With::Wall;
     card.massB = 0.0;
     card.numberB = 0;
@@ -98,7 +81,7 @@ TEST(MomentaDiagram, AWallChangesTheOneParticlesMomentum) {
 }
 
 TEST(MomentaDiagram, ParticlesAtRestStillGetAScaleAndNoNaN) {
-    CollisionCard card = headOn();
+    CollisionCard card = headOnCard();
     Collision& c = card.collision;
     c.aBefore = c.bBefore = c.aAfter = c.bAfter = Vec2::Zero();
     EXPECT_GT(momentaDiagram(card).reach, 0.0);
@@ -108,7 +91,7 @@ TEST(MomentaDiagram, ParticlesAtRestStillGetAScaleAndNoNaN) {
 }
 
 TEST(MomentaDiagram, ItsTextAddsTheMomentaUpToTheTotal) {
-    const auto lines = momentaDiagramLines(momentaDiagram(headOn()));
+    const auto lines = momentaDiagramLines(momentaDiagram(headOnCard()));
     ASSERT_EQ(lines.size(), 2u);
     EXPECT_EQ(lines[0],
               "Momenta before: p 1 (2.00, 0) + p 2 (-3.00, 0) = total p (-1.00, 0) kg m/s");
