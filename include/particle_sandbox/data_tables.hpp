@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/csv.hpp>
 #include <particle_sandbox/time_series.hpp>
@@ -18,24 +19,34 @@ namespace psb {
 
 class World;
 
+// Every table takes the axes its numbers are in (axes.hpp): the world's, y down from the box's
+// top edge, by default; with y up each column of a y component is named with "_up" (y_up_m,
+// vy_up_m_per_s) and each of turning with "_ccw" (positive counterclockwise on screen).
+
 /// Every particle's state now, one row each in order of number: particle, x_m, y_m,
-/// vx_m_per_s, vy_m_per_s, px_kg_m_per_s, py_kg_m_per_s, kinetic_energy_J, mass_kg, radius_m.
-[[nodiscard]] std::string valuesTable(const World& world, csv::Separator separator);
+/// vx_m_per_s, vy_m_per_s, (omega_rad_per_s,) px_kg_m_per_s, py_kg_m_per_s, kinetic_energy_J,
+/// (rotational_energy_J,) mass_kg, radius_m; the bracketed ones in a world that keeps rotation
+/// (World::rotationInUse).
+[[nodiscard]] std::string valuesTable(const World& world, csv::Separator separator,
+                                      const Axes& axes = {});
 
 /// The observables over time (time_series.hpp), one row per sample: time_s,
 /// kinetic_energy_J, momentum_x_kg_m_per_s, momentum_y_kg_m_per_s, com_x_m, com_y_m,
 /// collisions, collision_rate_per_s, with `gravity` potential_energy_J and
 /// mechanical_energy_J (kinetic + rotational + potential), and with `rotation` (a world that
 /// keeps rotation: World::rotationInUse) rotational_energy_J and
-/// angular_momentum_kg_m2_per_s (orbital + spin, about the box's top-left corner).
+/// angular_momentum_kg_m2_per_s (orbital + spin, about the box's top-left corner; with y up,
+/// about its bottom-left corner).
 [[nodiscard]] std::string timeSeriesTable(const std::vector<ObservablesSample>& samples,
                                           bool gravity, csv::Separator separator,
-                                          bool rotation = false);
+                                          bool rotation = false, const Axes& axes = {});
 /// The samples `series` holds, oldest first.
 [[nodiscard]] std::vector<ObservablesSample> samplesOf(const TimeSeries& series);
 
-/// One row per particle per instant: time_s, particle, x_m, y_m, vx_m_per_s, vy_m_per_s.
-[[nodiscard]] std::string trajectoryTable(const Trajectory& trajectory, csv::Separator separator);
+/// One row per particle per instant: time_s, particle, x_m, y_m, vx_m_per_s, vy_m_per_s, and
+/// with `rotation` omega_rad_per_s.
+[[nodiscard]] std::string trajectoryTable(const Trajectory& trajectory, csv::Separator separator,
+                                          bool rotation = false, const Axes& axes = {});
 
 /// One row per collision (collision_log.hpp): time_s, particle, with (particle, wall or
 /// obstacle), other (the other particle's number, the wall: left, right, top, bottom, or the
@@ -43,7 +54,7 @@ class World;
 /// vy_after_m_per_s, the same four of the other particle (empty for a wall or an obstacle),
 /// impulse_x_N_s, impulse_y_N_s (on the particle).
 [[nodiscard]] std::string collisionTable(const std::vector<Collision>& collisions,
-                                         csv::Separator separator);
+                                         csv::Separator separator, const Axes& axes = {});
 
 /// "left", "right", "top", "bottom".
 [[nodiscard]] const char* wallName(WallSide side);

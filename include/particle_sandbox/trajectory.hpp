@@ -20,6 +20,7 @@ struct TrajectoryPoint {
     ParticleId id;
     Vec2 position = Vec2::Zero();  ///< m
     Vec2 velocity = Vec2::Zero();  ///< m/s
+    double angularVelocity = 0.0;  ///< rad/s
 };
 
 /// The samples of chosen particles, oldest first; at one instant, in the order the ids were

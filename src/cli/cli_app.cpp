@@ -45,7 +45,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         }
         if (!options.track.empty()) {
             writeFileAtomically(trackPath(*options.timeseries),
-                                trajectoryTable(track, csv::Separator::Comma));
+                                trajectoryTable(track, csv::Separator::Comma, report.rotation));
         }
         if (options.save) {
             // The frame length the run stepped by (--dt's, if given) goes with the state.

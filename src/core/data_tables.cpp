@@ -12,57 +12,102 @@ namespace psb {
 using csv::Separator;
 using csv::Table;
 
-std::string valuesTable(const World& world, Separator separator) {
-    Table t(separator, {"particle", "x_m", "y_m", "vx_m_per_s", "vy_m_per_s", "px_kg_m_per_s",
-                        "py_kg_m_per_s", "kinetic_energy_J", "mass_kg", "radius_m"});
+namespace {
+
+/// A header of column names, some built (the y ones name their direction).
+class Header {
+  public:
+    Header& add(std::string name) {
+        names_.push_back(std::move(name));
+        return *this;
+    }
+    /// "vy_m_per_s", or with y up "vy_up_m_per_s": `stem` then "_up" then `_unit`.
+    Header& y(const Axes& axes, std::string_view stem, std::string_view unit) {
+        std::string name(stem);
+        if (axes.yUp) name += "_up";
+        name += '_';
+        name += unit;
+        return add(std::move(name));
+    }
+    /// The angular velocity or momentum column: positive clockwise on screen with y down,
+    /// counterclockwise with y up (Axes::spin).
+    Header& turning(const Axes& axes, std::string_view stem, std::string_view unit) {
+        std::string name(stem);
+        if (axes.yUp) name += "_ccw";
+        name += '_';
+        name += unit;
+        return add(std::move(name));
+    }
+    [[nodiscard]] Table table(Separator separator) const {
+        std::vector<std::string_view> views(names_.begin(), names_.end());
+        return Table(separator, std::span<const std::string_view>(views));
+    }
+
+  private:
+    std::vector<std::string> names_;
+};
+
+}  // namespace
+
+std::string valuesTable(const World& world, Separator separator, const Axes& axes) {
+    const bool rotation = world.rotationInUse();
+    Header h;
+    h.add("particle").add("x_m").y(axes, "y", "m").add("vx_m_per_s").y(axes, "vy", "m_per_s");
+    if (rotation) h.turning(axes, "omega", "rad_per_s");
+    h.add("px_kg_m_per_s").y(axes, "py", "kg_m_per_s").add("kinetic_energy_J");
+    if (rotation) h.add("rotational_energy_J");
+    h.add("mass_kg").add("radius_m");
+    Table t = h.table(separator);
     std::vector<ParticleId> ids = world.ids();
     std::sort(ids.begin(), ids.end(), [](ParticleId a, ParticleId b) { return a.slot < b.slot; });
     for (const ParticleId id : ids) {
         const Particle p = world.get(id);
-        const Vec2 momentum = p.mass * p.velocity;
+        const Vec2 position = axes.point(p.position), velocity = axes.vector(p.velocity);
         t.count(particleNumber(id))
-            .number(p.position.x())
-            .number(p.position.y())
-            .number(p.velocity.x())
-            .number(p.velocity.y())
-            .number(momentum.x())
-            .number(momentum.y())
-            .number(0.5 * p.mass * p.velocity.squaredNorm())
-            .number(p.mass)
-            .number(p.radius);
+            .number(position.x())
+            .number(position.y())
+            .number(velocity.x())
+            .number(velocity.y());
+        if (rotation) t.number(axes.spin(p.angularVelocity));
+        t.number(p.mass * velocity.x())
+            .number(p.mass * velocity.y())
+            .number(0.5 * p.mass * p.velocity.squaredNorm());
+        if (rotation) {
+            t.number(0.5 * p.inertiaFactor * p.mass * p.radius * p.radius * p.angularVelocity *
+                     p.angularVelocity);
+        }
+        t.number(p.mass).number(p.radius);
         t.endRow();
     }
     return t.str();
 }
 
 std::string timeSeriesTable(const std::vector<ObservablesSample>& samples, bool gravity,
-                            Separator separator, bool rotation) {
-    std::vector<std::string_view> columns = {
-        "time_s",  "kinetic_energy_J", "momentum_x_kg_m_per_s", "momentum_y_kg_m_per_s", "com_x_m",
-        "com_y_m", "collisions",       "collision_rate_per_s"};
-    if (gravity) {
-        columns.push_back("potential_energy_J");
-        columns.push_back("mechanical_energy_J");
-    }
-    if (rotation) {
-        columns.push_back("rotational_energy_J");
-        columns.push_back("angular_momentum_kg_m2_per_s");
-    }
-    Table t(separator, std::span<const std::string_view>(columns));
+                            Separator separator, bool rotation, const Axes& axes) {
+    Header h;
+    h.add("time_s").add("kinetic_energy_J").add("momentum_x_kg_m_per_s");
+    h.y(axes, "momentum_y", "kg_m_per_s").add("com_x_m").y(axes, "com_y", "m");
+    h.add("collisions").add("collision_rate_per_s");
+    if (gravity) h.add("potential_energy_J").add("mechanical_energy_J");
+    if (rotation) h.add("rotational_energy_J").turning(axes, "angular_momentum", "kg_m2_per_s");
+    Table t = h.table(separator);
     for (const ObservablesSample& s : samples) {
         t.time(s.time)
             .number(s.kineticEnergy)
             .number(s.momentum.x())
-            .number(s.momentum.y())
+            .number(axes.up(s.momentum.y()))
             .number(s.centreOfMass.x())
-            .number(s.centreOfMass.y())
+            .number(axes.y(s.centreOfMass.y()))
             .count(s.collisions)
             .number(s.collisionRate);
         if (gravity) {
             t.number(s.potentialEnergy)
                 .number(s.kineticEnergy + s.rotationalEnergy + s.potentialEnergy);
         }
-        if (rotation) t.number(s.rotationalEnergy).number(s.angularMomentum);
+        if (rotation) {
+            t.number(s.rotationalEnergy)
+                .number(axes.angularMomentum(s.angularMomentum, s.momentum.x()));
+        }
         t.endRow();
     }
     return t.str();
@@ -76,15 +121,21 @@ std::vector<ObservablesSample> samplesOf(const TimeSeries& series) {
     return out;
 }
 
-std::string trajectoryTable(const Trajectory& trajectory, Separator separator) {
-    Table t(separator, {"time_s", "particle", "x_m", "y_m", "vx_m_per_s", "vy_m_per_s"});
+std::string trajectoryTable(const Trajectory& trajectory, Separator separator, bool rotation,
+                            const Axes& axes) {
+    Header h;
+    h.add("time_s").add("particle").add("x_m").y(axes, "y", "m").add("vx_m_per_s");
+    h.y(axes, "vy", "m_per_s");
+    if (rotation) h.turning(axes, "omega", "rad_per_s");
+    Table t = h.table(separator);
     for (const TrajectoryPoint& s : trajectory.samples()) {
         t.time(s.time)
             .count(particleNumber(s.id))
             .number(s.position.x())
-            .number(s.position.y())
+            .number(axes.y(s.position.y()))
             .number(s.velocity.x())
-            .number(s.velocity.y());
+            .number(axes.up(s.velocity.y()));
+        if (rotation) t.number(axes.spin(s.angularVelocity));
         t.endRow();
     }
     return t.str();
@@ -104,12 +155,18 @@ const char* wallName(WallSide side) {
     return "bottom";
 }
 
-std::string collisionTable(const std::vector<Collision>& collisions, Separator separator) {
-    Table t(separator,
-            {"time_s", "particle", "with", "other", "vx_before_m_per_s", "vy_before_m_per_s",
-             "vx_after_m_per_s", "vy_after_m_per_s", "other_vx_before_m_per_s",
-             "other_vy_before_m_per_s", "other_vx_after_m_per_s", "other_vy_after_m_per_s",
-             "impulse_x_N_s", "impulse_y_N_s"});
+std::string collisionTable(const std::vector<Collision>& collisions, Separator separator,
+                           const Axes& axes) {
+    Header h;
+    h.add("time_s").add("particle").add("with").add("other");
+    for (const char* who : {"", "other_"}) {
+        for (const char* when : {"before", "after"}) {
+            h.add(std::string(who) + "vx_" + when + "_m_per_s");
+            h.y(axes, std::string(who) + "vy", std::string(when) + "_m_per_s");
+        }
+    }
+    h.add("impulse_x_N_s").y(axes, "impulse_y", "N_s");
+    Table t = h.table(separator);
     for (const Collision& c : collisions) {
         t.time(c.time).count(particleNumber(c.a));
         switch (c.with) {
@@ -123,13 +180,16 @@ std::string collisionTable(const std::vector<Collision>& collisions, Separator s
                 t.text("obstacle").count(c.where);
                 break;
         }
-        t.number(c.aBefore.x()).number(c.aBefore.y()).number(c.aAfter.x()).number(c.aAfter.y());
+        const auto velocity = [&](const Vec2& v) { t.number(v.x()).number(axes.up(v.y())); };
+        velocity(c.aBefore);
+        velocity(c.aAfter);
         if (c.with == Collision::With::Particle) {
-            t.number(c.bBefore.x()).number(c.bBefore.y()).number(c.bAfter.x()).number(c.bAfter.y());
+            velocity(c.bBefore);
+            velocity(c.bAfter);
         } else {
             t.none().none().none().none();
         }
-        t.number(c.impulse.x()).number(c.impulse.y());
+        velocity(c.impulse);
         t.endRow();
     }
     return t.str();

@@ -17,7 +17,7 @@ bool Trajectory::record(const World& world) {
     for (const ParticleId id : ids_) {
         if (!world.contains(id)) continue;
         const Particle p = world.get(id);
-        samples_.push_back({now, id, p.position, p.velocity});
+        samples_.push_back({now, id, p.position, p.velocity, p.angularVelocity});
     }
     return true;
 }

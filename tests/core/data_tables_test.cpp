@@ -61,6 +61,21 @@ TEST(ValuesTable, TabSeparatedForTheClipboard) {
     EXPECT_EQ(parse(text, '\t')[2][3], "-1");
 }
 
+TEST(ValuesTable, YUpCountsFromTheFloorAndSaysSoInItsHeader) {
+    World w = twoBalls();
+    w.setAngularVelocity(w.ids()[0], 4.0);  // clockwise on screen
+    const Rows rows = parse(valuesTable(w, csv::Separator::Comma, Axes{true, 10.0}), ',');
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[0], (std::vector<std::string>{
+                           "particle", "x_m", "y_up_m", "vx_m_per_s", "vy_up_m_per_s",
+                           "omega_ccw_rad_per_s", "px_kg_m_per_s", "py_up_kg_m_per_s",
+                           "kinetic_energy_J", "rotational_energy_J", "mass_kg", "radius_m"}));
+    EXPECT_EQ(rows[1], (std::vector<std::string>{"1", "3", "5", "2", "0", "-4", "2", "0", "2", "1",
+                                                 "1", "0.5"}));
+    EXPECT_EQ(rows[2], (std::vector<std::string>{"2", "6", "5", "-1", "-0.5", "0", "-3", "-1.5",
+                                                 "1.875", "0", "3", "0.5"}));
+}
+
 TEST(TimeSeriesTable, CleanTimesAndTheGravityColumns) {
     World w = twoBalls();
     TimeSeries series(100);
@@ -95,6 +110,11 @@ TEST(TrajectoryTable, RowsPerParticlePerInstant) {
                                                  "vy_m_per_s"}));
     EXPECT_EQ(rows[1], (std::vector<std::string>{"0", "2", "6", "5", "-1", "0.5"}));
     EXPECT_EQ(rows[4], (std::vector<std::string>{"0.25", "1", "3.5", "5", "2", "0"}));
+    // With y up, heights from the floor and velocities up; with rotation, omega.
+    const Rows up = parse(trajectoryTable(t, csv::Separator::Comma, true, Axes{true, 10.0}), ',');
+    EXPECT_EQ(up[0], (std::vector<std::string>{"time_s", "particle", "x_m", "y_up_m", "vx_m_per_s",
+                                               "vy_up_m_per_s", "omega_ccw_rad_per_s"}));
+    EXPECT_EQ(up[1], (std::vector<std::string>{"0", "2", "6", "5", "-1", "-0.5", "0"}));
 }
 
 TEST(Trajectory, FollowsTheWorldBackInTimeAndStopsWhenFull) {
@@ -148,6 +168,10 @@ TEST(CollisionTable, PairsWallsAndObstaclesWithSignedVelocitiesAndImpulse) {
                                                  "", "", "", "", "-9", "0"}));
     EXPECT_EQ(rows[3][2], "obstacle");
     EXPECT_EQ(rows[3][3], "7");
+    const Rows up = parse(collisionTable({wall}, csv::Separator::Comma, Axes{true, 8.0}), ',');
+    EXPECT_EQ(up[0][5], "vy_up_before_m_per_s");
+    EXPECT_EQ(up[0][13], "impulse_y_up_N_s");
+    EXPECT_EQ(up[1][5], "-1") << "moving down the screen: negative with y up";
 }
 
 }  // namespace

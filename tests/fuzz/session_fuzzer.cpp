@@ -139,10 +139,12 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
                                in.ConsumeIntegralInRange<int>(-10, 4000)};
         case 11: {
             // A key that shows or hides something, the trails key, or the help.
-            const int k = in.ConsumeIntegralInRange<int>(0, 11);
+            const int k = in.ConsumeIntegralInRange<int>(0, 12);
             if (k == 9) return cmd::ToggleHelp{};
             if (k == 10) return cmd::SetTrails{static_cast<int>(nextTrailMode(s.view().trails))};
-            const auto option = k == 11 ? ShowOption::Spin : static_cast<ShowOption>(k);
+            const auto option = k == 11   ? ShowOption::Spin
+                                : k == 12 ? ShowOption::YUp
+                                          : static_cast<ShowOption>(k);
             return cmd::SetShow{option, !s.view().shown(option)};
         }
         case 12:

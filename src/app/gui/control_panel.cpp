@@ -296,6 +296,11 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
+    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.8f);
+    box("y up", v.yUp, cmd::ShowOption::YUp,
+        "Numbers count y upward from the box's floor, vy and momentum up and turning "
+        "counterclockwise positive, as in school physics; unticked, y counts down from the "
+        "box's top edge, as scene files and the screen do. Kept between runs");
     double arrow = v.arrowSeconds;
     bool dragging = false;
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.55f);

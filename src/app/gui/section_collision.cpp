@@ -45,7 +45,7 @@ void ControlPanel::card(const Session& s) {
                                    "or select a particle to follow its collisions"));
         return;
     }
-    const CollisionCardText text = collisionCardText(*card);
+    const CollisionCardText text = collisionCardText(*card, s.axes());
     widgets::wrapped(text.title);
     mark("collision title");
     widgets::wrappedDisabled(card->follows != 0 ? "The selected particle's last collision"

@@ -36,11 +36,25 @@ constexpr EditableField kFields[] = {
     {ParticleField::Omega, "\u03c9", "rad/s"},
     {ParticleField::Inertia, "k", "I = k m r\u00b2"},
 };
-constexpr const char* fieldHelp(ParticleField f) {
+constexpr const char* fieldHelp(ParticleField f, bool yUp) {
     switch (f) {
+        case ParticleField::Y:
+            return yUp ? "Its height above the box's floor (y up, Show). Type a new value and "
+                         "press Enter"
+                       : "How far below the box's top edge it is (y down: Show's y up is off). "
+                         "Type a new value and press Enter";
+        case ParticleField::Vy:
+            return yUp ? "Its velocity upward (y up, Show): negative while it falls. Type a new "
+                         "value and press Enter"
+                       : "Its velocity downward (y down: Show's y up is off). Type a new value "
+                         "and press Enter";
         case ParticleField::Omega:
-            return "The angular velocity: how fast it turns, positive clockwise on screen. Type "
-                   "a new value and press Enter; a particle with fixed rotation keeps 0";
+            return yUp ? "The angular velocity: how fast it turns, positive counterclockwise (y "
+                         "up). Type a new value and press Enter; a particle with fixed rotation "
+                         "keeps 0"
+                       : "The angular velocity: how fast it turns, positive clockwise on screen "
+                         "(y down). Type a new value and press Enter; a particle with fixed "
+                         "rotation keeps 0";
         case ParticleField::Inertia:
             return "The inertia factor k in the moment of inertia I = k m r\u00b2, above 0 and "
                    "at most 1: 1/2 a uniform disc, 2/5 a ball, 1 a ring. The smaller k, the "
@@ -51,22 +65,23 @@ constexpr const char* fieldHelp(ParticleField f) {
     }
 }
 
-double fieldValue(const Particle& p, ParticleField f) {
+/// `f`'s value as shown, in `axes` (the y up option).
+double fieldValue(const Particle& p, ParticleField f, const Axes& axes) {
     switch (f) {
         case ParticleField::X:
             return p.position.x();
         case ParticleField::Y:
-            return p.position.y();
+            return axes.y(p.position.y());
         case ParticleField::Vx:
             return p.velocity.x();
         case ParticleField::Vy:
-            return p.velocity.y();
+            return axes.up(p.velocity.y());
         case ParticleField::Mass:
             return p.mass;
         case ParticleField::Radius:
             return p.radius;
         case ParticleField::Omega:
-            return p.angularVelocity;
+            return axes.spin(p.angularVelocity);
         case ParticleField::Inertia:
             return p.inertiaFactor;
     }
@@ -111,12 +126,13 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
     tip("Remove this particle from the world (Ctrl+Z brings it back; Backspace or Delete "
         "removes a particle you hold)");
     if (!widgets::beginRows("selected")) return;
+    const Axes axes = s.axes();
     for (std::size_t k = 0; k < std::size(kFields); ++k) {
         const EditableField& f = kFields[k];
         auto& text = fieldText_[k];
         // While a field is typed in it keeps the user's text; otherwise it shows the value now.
         if (!fieldActive_[k])
-            std::snprintf(text.data(), text.size(), "%.6g", fieldValue(*p, f.field));
+            std::snprintf(text.data(), text.size(), "%.6g", fieldValue(*p, f.field, axes));
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         ImGui::Text("%s (%s)", f.name, f.unit);
@@ -135,19 +151,21 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
             out_.emplace_back(cmd::EditParticle{p->id, f.field, text.data()});
             fieldActive_[k] = false;
         }
-        tip(fieldHelp(f.field));
+        tip(fieldHelp(f.field, axes.yUp));
         ImGui::PopID();
     }
     const double speed = p->velocity.norm();
     row("speed", quantity(speed, "m/s"), "How fast it moves, whatever the direction");
     row("momentum", quantity(p->mass * speed, "kg m/s", false), "m v: mass times speed");
-    const SpinReading spin = spinReading(*p);
+    const SpinReading spin = spinReading(*p, axes);
     if (s.world().rotationInUse()) {
         row("turns",
             p->fixedRotation ? std::string("never (fixed rotation)")
                              : quantity(spin.revPerMin, "rev/min", false),
-            "Turns a minute, clockwise when positive; a particle with fixed rotation slides "
-            "without ever turning");
+            axes.yUp ? "Turns a minute, counterclockwise when positive (y up); a particle with "
+                       "fixed rotation slides without ever turning"
+                     : "Turns a minute, clockwise when positive (y down); a particle with fixed "
+                       "rotation slides without ever turning");
         row("kinetic energy", quantity(spin.translational, "J"),
             "Of its motion along its path, \u00bd m v\u00b2");
         row("  of rotation", quantity(spin.rotational, "J"),
@@ -198,7 +216,8 @@ void ControlPanel::allParticles(const Session& s) {
         }
         mark("row " + std::string(label));
         ImGui::TableNextColumn();
-        ImGui::Text("%.2f, %.2f", p.position.x(), p.position.y());
+        const Vec2 at = s.axes().point(p.position);
+        ImGui::Text("%.2f, %.2f", at.x(), at.y());
         ImGui::TableNextColumn();
         ImGui::TextUnformatted(quantity(p.velocity.norm(), "m/s").c_str());
         ImGui::TableNextColumn();

@@ -87,15 +87,23 @@ void ControlPanel::readouts(const Session& s) {
                              : "Kinetic plus potential energy (m g h): what elastic collisions "
                                "under gravity keep constant");
         }
-        readout("Momentum", vector(o.momentum, "kg m/s"),
+        readout("Momentum", vector(s.axes().vector(o.momentum), "kg m/s"),
                 "The total momentum, the sum of m v: walls and gravity change it, collisions "
                 "between particles never do");
         readout("  size", quantity(o.momentum.norm(), "kg m/s", false));
         if (rotation) {
-            readout("Angular momentum", quantity(o.angularMomentum, "kg m\u00b2/s", false),
-                    "The total angular momentum about the box's top-left corner, orbital (m r "
-                    "\u00d7 v) plus spin (I \u03c9), positive clockwise on screen: collisions "
-                    "between particles never change it, the walls and gravity do");
+            const Axes axes = s.axes();
+            readout("Angular momentum",
+                    quantity(axes.angularMomentum(o.angularMomentum, o.momentum.x()),
+                             "kg m\u00b2/s", false),
+                    axes.yUp ? "The total angular momentum about the box's bottom-left corner, "
+                               "orbital (m r \u00d7 v) plus spin (I \u03c9), positive "
+                               "counterclockwise: collisions between particles never change it, "
+                               "the walls and gravity do"
+                             : "The total angular momentum about the box's top-left corner, "
+                               "orbital (m r \u00d7 v) plus spin (I \u03c9), positive clockwise "
+                               "on screen (y down): collisions between particles never change "
+                               "it, the walls and gravity do");
         }
         if (const std::optional<GasReading> gas = s.gasReading()) {
             for (const GasLine& line : gasLines(*gas))

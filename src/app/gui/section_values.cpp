@@ -37,7 +37,7 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
         ImGui::End();
         return;
     }
-    const ValuesTable t = valuesTable(s.world(), s.selection().id());
+    const ValuesTable t = valuesTable(s.world(), s.selection().id(), s.axes());
     if (ImGui::SmallButton("Copy")) out_.emplace_back(cmd::CopyTable{cmd::DataTable::Values});
     mark("values Copy");
     widgets::tip("Every particle's values as tab-separated text, to paste into a spreadsheet");
@@ -52,6 +52,7 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
                             ? "click a number to select; type in x, y, vx, vy, \u03c9 or mass"
                             : "click a number to select; type in x, y, vx, vy or mass");
     if (!t.note.empty()) widgets::wrappedDisabled(t.note);
+    widgets::wrappedDisabled(t.axes);
 
     const std::vector<ValuesColumn>& columns = t.columns;
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |

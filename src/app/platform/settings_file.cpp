@@ -36,6 +36,8 @@ const char* keyOf(ShowOption option) {
             return "grid";
         case ShowOption::Spin:
             return "spin";
+        case ShowOption::YUp:
+            return "y_up";
     }
     return "";
 }

@@ -22,7 +22,7 @@ namespace psb::app {
 inline constexpr ShowOption kKeptOptions[] = {
     ShowOption::Arrows, ShowOption::Labels,  ShowOption::Momentum,  ShowOption::Plots,
     ShowOption::Speeds, ShowOption::Profile, ShowOption::Collision, ShowOption::Values,
-    ShowOption::Grid,   ShowOption::Spin};
+    ShowOption::Grid,   ShowOption::Spin,    ShowOption::YUp};
 // Not kept: the ruler, laid across the middle of each scene's box, would come back lying over
 // the next run's particles.
 

@@ -9,14 +9,14 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
     const Palette& colours = palette(view.theme);
     if (view.momentum) {
         momentum_.draw(renderer, font, world, now, camera, series, view.arrowSeconds, layout.legend,
-                       colours);
+                       colours, view.axes(world.def()));
     }
     if (view.plots && layout.plots.w > 0) {
         double mass = 0.0;
         for (const double m : world.particles().mass)
             mass += m;
         plots_.draw(renderer, font, series, layout.plots, layout.plotRows, layout.plotRowHeight,
-                    mass, colours);
+                    mass, colours, view.yUp);
     }
     if (view.speeds && layout.speeds.w > 0) {
         speeds_.draw(renderer, font, world.particles(), layout.speeds, colours);

@@ -37,7 +37,7 @@ void appendArrow(GeometryBatch& batch, const Vec2& a, const Vec2& b, double head
 void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World& world,
                            const ObservablesSample& now, const Camera& camera,
                            const TimeSeries& series, double arrowSeconds, const PixelRect& legend,
-                           const Palette& colours) {
+                           const Palette& colours, const Axes& axes) {
     const SDL_Color each = sdlColor(colours.momentumArrow), sum = sdlColor(colours.totalMomentum);
     const ParticleArrays& p = world.particles();
     arrows_.clear();
@@ -86,7 +86,7 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     box.quad(lx, ly, lx + static_cast<float>(legend.w), ly + static_cast<float>(legend.h),
              sdlColor(colours.panel, 190));
     box.draw(renderer, nullptr);
-    const std::vector<std::string> lines = momentumLegend(world, now, arrowSeconds);
+    const std::vector<std::string> lines = momentumLegend(world, now, arrowSeconds, axes);
     const SDL_Color colors[3] = {sum, each, cm};
     for (std::size_t k = 0; k < lines.size(); ++k) {
         font.layout(lines[k], lx + 4, ly + 2 + static_cast<float>(k * font.lineHeight()), colors[k],

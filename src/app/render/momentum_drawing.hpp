@@ -29,7 +29,7 @@ class MomentumDrawing {
     void draw(SDL_Renderer* renderer, const Font& font, const World& world,
               const ObservablesSample& now, const Camera& camera, const TimeSeries& series,
               double arrowSeconds, const PixelRect& legend,
-              const Palette& colours = palette(Theme::Dark));
+              const Palette& colours = palette(Theme::Dark), const Axes& axes = {});
 
   private:
     GeometryBatch arrows_, text_;

@@ -38,7 +38,7 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 
 void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
                      const PixelRect& box, int rows, int rowHeight, double totalMass,
-                     const Palette& colours) {
+                     const Palette& colours, bool yUp) {
     boxes_.clear();
     text_.clear();
     rows = std::clamp(rows, 1, 4);
@@ -52,6 +52,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         const char* title;
         double (*value)(const ObservablesSample&);
         SDL_Color color;
+        double sign = 1.0;  ///< -1: py with y up (the world's y points down)
     };
     const Plot plots[4] = {
         {"kinetic energy (J)", [](const ObservablesSample& s) { return s.kineticEnergy; },
@@ -59,7 +60,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         {"momentum px (kg m/s)", [](const ObservablesSample& s) { return s.momentum.x(); },
          sdlColor(colours.pxPlot)},
         {"momentum py (kg m/s)", [](const ObservablesSample& s) { return s.momentum.y(); },
-         sdlColor(colours.pyPlot)},
+         sdlColor(colours.pyPlot), yUp ? -1.0 : 1.0},
         {"collision rate (1/s)", [](const ObservablesSample& s) { return s.collisionRate; },
          sdlColor(colours.ratePlot)},
     };
@@ -86,9 +87,9 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
         if (n < 2) continue;
 
-        double lo = pl.value(series[0]), hi = lo;
+        double lo = pl.sign * pl.value(series[0]), hi = lo;
         for (std::size_t s = 1; s < n; ++s) {
-            const double v = pl.value(series[s]);
+            const double v = pl.sign * pl.value(series[s]);
             lo = std::min(lo, v);
             hi = std::max(hi, v);
         }
@@ -108,7 +109,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         };
         layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_, colours);
         for (std::size_t s = 0; s < n; ++s)
-            line_.push_back({sx(series[s].time), sy(pl.value(series[s]))});
+            line_.push_back({sx(series[s].time), sy(pl.sign * pl.value(series[s]))});
         lines.emplace_back(pl.color, line_.size());
     }
     // The time axis of the last plot carries the labels: simulated seconds.

@@ -44,10 +44,11 @@ class PlotChart {
   public:
     /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
     /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
-    /// momentum plots' floor. Nothing but the frame when `series` has fewer than 2 samples.
+    /// momentum plots' floor; `yUp`: py upward (the y up option). Nothing but the frame when
+    /// `series` has fewer than 2 samples.
     void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
               const PixelRect& box, int rows, int rowHeight, double totalMass,
-              const Palette& colours = palette(Theme::Dark));
+              const Palette& colours = palette(Theme::Dark), bool yUp = false);
 
   private:
     GeometryBatch boxes_, text_;

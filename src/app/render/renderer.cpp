@@ -318,8 +318,9 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 return std::max(lo, std::min(at, hi - size));
             };
             char lines[5][64];
+            const Axes axes = options.axes(world.def());  // vy up or down, as the user reads it
             for (std::size_t i : visible) {
-                const double vx = p.vx[i], vy = p.vy[i], m = p.mass[i];
+                const double vx = p.vx[i], vy = axes.up(p.vy[i]), m = p.mass[i];
                 // The number the panel and the log name it by (particleNumber).
                 std::snprintf(lines[0], sizeof lines[0], "particle %llu",
                               static_cast<unsigned long long>(particleNumber(p.id[i])));

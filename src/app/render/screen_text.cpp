@@ -7,6 +7,7 @@
 #include "view/collision_card_lines.hpp"
 #include "view/gas_lines.hpp"
 #include "view/momenta_diagram.hpp"
+#include "view/values_table.hpp"
 
 namespace psb::app {
 namespace {
@@ -34,6 +35,9 @@ void rect(std::string& out, const char* name, const PixelRect& r) {
 std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     const Overlays& o = frame.overlays;
     std::string out;
+    // How the signed numbers below count y (the y up option).
+    section(out, "Axes",
+            {axesNote(frame.view.axes(frame.world->def()), frame.world->rotationInUse())});
     section(out, "HUD", o.hud);
     section(out, "Messages", o.messages);
     section(out, "Inspector", o.inspector);
@@ -48,8 +52,10 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     }
     if (frame.values) section(out, "Values", valuesLines(*frame.values));
     if (frame.collision) {
-        std::vector<std::string> lines = collisionCardLines(collisionCardText(*frame.collision));
-        for (std::string& l : momentaDiagramLines(momentaDiagram(*frame.collision)))
+        const Axes axes = frame.view.axes(frame.world->def());
+        std::vector<std::string> lines =
+            collisionCardLines(collisionCardText(*frame.collision, axes));
+        for (std::string& l : momentaDiagramLines(momentaDiagram(*frame.collision), axes))
             lines.push_back(std::move(l));
         section(out, "Last collision", lines);
     }

@@ -115,14 +115,17 @@ const char* fieldUnit(EditField f) {
     return "";
 }
 
-void EditPrompt::open(const Particle& p) {
+void EditPrompt::open(const Particle& p, const Axes& axes) {
     active_ = true;
     fresh_ = true;
     target_ = p.id;
     field_ = EditField::Mass;
-    texts_ = {
-        formatValue(p.mass),         formatValue(p.radius),          formatValue(p.velocity.x()),
-        formatValue(p.velocity.y()), formatValue(p.angularVelocity), formatValue(p.inertiaFactor)};
+    texts_ = {formatValue(p.mass),
+              formatValue(p.radius),
+              formatValue(p.velocity.x()),
+              formatValue(axes.up(p.velocity.y())),
+              formatValue(axes.spin(p.angularVelocity)),
+              formatValue(p.inertiaFactor)};
     error_.clear();
 }
 
@@ -160,8 +163,8 @@ void EditPrompt::backspace() {
     fresh_ = false;
 }
 
-EditResult applyEdit(World& world, ParticleId id,
-                     const std::array<std::string, kEditFields>& texts) {
+EditResult applyEdit(World& world, ParticleId id, const std::array<std::string, kEditFields>& texts,
+                     const Axes& axes) {
     if (!world.contains(id)) return {false, "the particle no longer exists"};
     std::array<double, kEditFields> v{};
     for (int k = 0; k < kEditFields; ++k) {
@@ -174,10 +177,11 @@ EditResult applyEdit(World& world, ParticleId id,
     EditedValues e = valuesOf(world.get(id));
     e.mass = v[0];
     e.radius = v[1];
-    e.velocity = Vec2(v[2], v[3]);
-    e.omega = v[4];
+    // Typed as shown: the axes' conversions are their own inverses.
+    e.velocity = axes.vector(Vec2(v[2], v[3]));
+    e.omega = axes.spin(v[4]);
     e.inertiaFactor = v[5];
-    return setChecked(world, id, e);
+    return setChecked(world, id, e, axes);
 }
 
 EditedValues valuesOf(const Particle& p) {
@@ -185,7 +189,7 @@ EditedValues valuesOf(const Particle& p) {
 }
 
 EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
-                             std::string_view text) {
+                             std::string_view text, const Axes& axes) {
     if (!world.contains(id)) return {false, "the particle no longer exists"};
     std::string why;
     const auto value = parseNumber(fieldName(field), text, why);
@@ -208,14 +212,15 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
             e.position.x() = *value;
             break;
         case ParticleField::Y:
+            // The box's range of heights is the same counted up or down.
             if (auto refused = inside(*value, def.height)) return *refused;
-            e.position.y() = *value;
+            e.position.y() = axes.y(*value);
             break;
         case ParticleField::Vx:
             e.velocity.x() = *value;
             break;
         case ParticleField::Vy:
-            e.velocity.y() = *value;
+            e.velocity.y() = axes.up(*value);
             break;
         case ParticleField::Mass:
             e.mass = *value;
@@ -224,16 +229,16 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
             e.radius = *value;
             break;
         case ParticleField::Omega:
-            e.omega = *value;
+            e.omega = axes.spin(*value);
             break;
         case ParticleField::Inertia:
             e.inertiaFactor = *value;
             break;
     }
-    return setChecked(world, id, e);
+    return setChecked(world, id, e, axes);
 }
 
-EditResult setChecked(World& world, ParticleId id, const EditedValues& values) {
+EditResult setChecked(World& world, ParticleId id, const EditedValues& values, const Axes& axes) {
     const WorldDef& def = world.def();
     const double mass = values.mass, radius = values.radius;
     const Vec2& wanted = values.position;
@@ -297,7 +302,7 @@ EditResult setChecked(World& world, ParticleId id, const EditedValues& values) {
                               wanted != old.position
                                   ? "position: the new place"
                                   : ("radius: " + formatValue(radius) + " m").c_str(),
-                              c.x(), c.y());
+                              c.x(), axes.y(c.y()));
                 return {false, buf};
             }
         }
@@ -328,16 +333,16 @@ EditResult setChecked(World& world, ParticleId id, const EditedValues& values) {
                   "Edited particle %llu: mass %s kg, radius %s m, velocity [%s, %s] m/s",
                   static_cast<unsigned long long>(particleNumber(id)), formatValue(mass).c_str(),
                   formatValue(radius).c_str(), formatValue(velocity.x()).c_str(),
-                  formatValue(velocity.y()).c_str());
+                  formatValue(axes.up(velocity.y())).c_str());
     std::string message = buf;
     if (world.rotationInUse()) {
-        std::snprintf(buf, sizeof buf, ", omega %s rad/s, k %s", formatValue(omega).c_str(),
-                      formatValue(k).c_str());
+        std::snprintf(buf, sizeof buf, ", omega %s rad/s, k %s",
+                      formatValue(axes.spin(omega)).c_str(), formatValue(k).c_str());
         message += buf;
     }
     if (position != wanted) {
         std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
-                      position.x(), position.y());
+                      position.x(), axes.y(position.y()));
         message += buf;
     }
     return {true, message};

@@ -3,10 +3,11 @@
 // SDL_TEXTINPUT events and the Tab, Backspace, Enter and Esc keys).
 //
 // The prompt holds six text fields, mass (kg), radius (m), vx and vy (m/s), the angular
-// velocity omega (rad/s, positive clockwise on screen) and the inertia factor k (I = k m r²),
-// filled with the particle's values when it opens. Tab moves to the next field; the first
-// character typed into a field just entered replaces its text (as if it were selected). Enter
-// hands the six texts to applyEdit, which applies all of them or none.
+// velocity omega (rad/s) and the inertia factor k (I = k m r²), filled with the particle's
+// values when it opens. Values are shown and typed in the user's axes (Axes: with y up, vy
+// upward and omega counterclockwise-positive) and set in the world's. Tab moves to the next field;
+// the first character typed into a field just entered replaces its text (as if it were selected).
+// Enter hands the six texts to applyEdit, which applies all of them or none.
 //
 // What applyEdit accepts, so that an edit can never put the world in a state it would refuse
 // from a scene file:
@@ -27,6 +28,7 @@
 #include <string>
 #include <string_view>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -54,7 +56,7 @@ class EditPrompt {
     static constexpr std::size_t kMaxLength = 32;
 
     /// Opens the prompt on `p`, its fields holding p's values, the mass field active.
-    void open(const Particle& p);
+    void open(const Particle& p, const Axes& axes = {});
     void close();
     [[nodiscard]] bool active() const { return active_; }
     /// The particle being edited (null when closed).
@@ -91,13 +93,13 @@ struct EditResult {
 
 /// Parses, validates (see the top of this file) and applies `texts` (mass, radius, vx, vy,
 /// omega, k) to particle `id` of `world`, all or nothing. Never throws for bad text or values.
-EditResult applyEdit(World& world, ParticleId id,
-                     const std::array<std::string, kEditFields>& texts);
+EditResult applyEdit(World& world, ParticleId id, const std::array<std::string, kEditFields>& texts,
+                     const Axes& axes = {});
 
 /// One field of particle `id` set from `text`, validated as applyEdit validates (a position
 /// must also lie inside the walls, and may not overlap a neighbour more than before).
 EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
-                             std::string_view text);
+                             std::string_view text, const Axes& axes = {});
 
 /// What an edit sets: a particle's mass, radius, position, velocity, angular velocity and
 /// inertia factor.
@@ -114,6 +116,8 @@ struct EditedValues {
 
 /// The checks and setters both edits share: the values of `id` (its position moved inward to
 /// stay inside the walls), all or nothing.
-EditResult setChecked(World& world, ParticleId id, const EditedValues& wanted);
+/// `axes`: how its messages show the values.
+EditResult setChecked(World& world, ParticleId id, const EditedValues& wanted,
+                      const Axes& axes = {});
 
 }  // namespace psb::app

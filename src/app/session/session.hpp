@@ -228,6 +228,8 @@ class Session {
     // The view.
     [[nodiscard]] const Camera& camera() const { return camera_; }
     [[nodiscard]] const ViewOptions& view() const { return view_; }
+    /// The axes numbers are shown and typed in (the y up option, the box's height).
+    [[nodiscard]] Axes axes() const { return view_.axes(world().def()); }
     [[nodiscard]] bool helpShown() const { return showHelp_; }
     /// The page of the help shown (H turns the page, and closes it after the last).
     [[nodiscard]] std::size_t helpPage() const { return helpPage_; }

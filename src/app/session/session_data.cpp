@@ -52,17 +52,19 @@ std::size_t rowsOf(const std::string& text) {
 
 std::string Session::tableText(cmd::DataTable table, csv::Separator separator) const {
     switch (table) {
+        // In the axes the window shows (the y up option), so what is pasted reads as shown.
         case cmd::DataTable::Values:
-            return valuesTable(doc_.world, separator);
+            return valuesTable(doc_.world, separator, axes());
         case cmd::DataTable::TimeSeries:
             return timeSeriesTable(data_.run(), !doc_.world.def().gravity.isZero(), separator,
-                                   doc_.world.rotationInUse());
+                                   doc_.world.rotationInUse(), axes());
         case cmd::DataTable::Trajectories:
-            return trajectoryTable(data_.trajectory(), separator);
+            return trajectoryTable(data_.trajectory(), separator, doc_.world.rotationInUse(),
+                                   axes());
         case cmd::DataTable::Collisions:
             break;
     }
-    return collisionTable(data_.collisions(), separator);
+    return collisionTable(data_.collisions(), separator, axes());
 }
 
 std::filesystem::path Session::exportDir() const {

@@ -25,7 +25,7 @@ void Session::handle(const cmd::OpenEdit&) {
         say("Click a particle to select it, then Enter edits it");
         return;
     }
-    tools_.prompt.open(doc_.world.get(*id));
+    tools_.prompt.open(doc_.world.get(*id), axes());
     log("Editing particle " + std::to_string(particleNumber(*id)));
 }
 
@@ -47,7 +47,7 @@ void Session::handle(const cmd::EditBackspace&) {
 
 void Session::handle(const cmd::EditApply&) {
     EditPrompt& prompt = tools_.prompt;
-    const EditResult r = applyEdit(doc_.world, prompt.target(), prompt.texts());
+    const EditResult r = applyEdit(doc_.world, prompt.target(), prompt.texts(), axes());
     if (r.applied) {
         tools_.closePrompt();
         say(r.message);
@@ -61,7 +61,7 @@ void Session::handle(const cmd::EditApply&) {
 
 void Session::handle(const cmd::EditParticle& c) {
     if (tools_.prompt.active() && tools_.prompt.target() == c.id) tools_.closePrompt();
-    const EditResult r = editParticleValue(doc_.world, c.id, c.field, c.text);
+    const EditResult r = editParticleValue(doc_.world, c.id, c.field, c.text, axes());
     if (!r.applied) {
         tools_.editRefusal = r.message;
         say("Edit refused: " + r.message, Notice::Level::Warning);

@@ -102,6 +102,7 @@ constexpr ShowEntry kShowEntries[] = {
     {&ViewOptions::ruler, "Ruler"},
     {&ViewOptions::grid, "Grid"},
     {&ViewOptions::spin, "Spin marks"},
+    {&ViewOptions::yUp, "y up"},
 };
 
 const ShowEntry& entry(ShowOption option) {

@@ -1,14 +1,15 @@
 #pragma once
 // What the view shows, as plain data the session holds and the drawing layer reads: the
-// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Shift+G, the Spin checkbox, the arrow scale,
-// and how the window looks to a room: the UI's scale (Ctrl+plus, Ctrl+minus, Ctrl+0) and the
-// theme (Ctrl+T). No SDL, so the session and its tests can use it without a window.
+// toggles of the keys A, S, V, L, K, D, O, J, I, Q, Shift+G, the Spin and y up checkboxes, the
+// arrow scale, and how the window looks to a room: the UI's scale (Ctrl+plus, Ctrl+minus, Ctrl+0)
+// and the theme (Ctrl+T). No SDL, so the session and its tests can use it without a window.
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/world.hpp>
 
 namespace psb::app {
@@ -29,7 +30,8 @@ enum class ShowOption : std::uint8_t {
     Values,
     Ruler,
     Grid,
-    Spin
+    Spin,
+    YUp
 };
 
 /// The window's colours (view/palette.hpp): today's dark theme, or a light, high-contrast one for
@@ -98,6 +100,11 @@ struct ViewOptions {
     /// The Spin checkbox: each turning disc's rotation mark (a contrasting quarter that turns
     /// with it), in a world that keeps rotation; fixed-rotation discs have none.
     bool spin = true;
+    /// The "y up" checkbox (particle_sandbox/axes.hpp): numbers shown and typed count y upward from
+    /// the floor, as in school physics. On by default in every scene, not only those with gravity:
+    /// a student's vy should not change sign between two presets, and school problems put y up
+    /// whether or not something falls. The files keep the world's y down.
+    bool yUp = true;
     /// The UI's scale in use (kMinUiScale to kMaxUiScale), and whether it follows the window's
     /// height (automaticUiScale) rather than being set (Ctrl+plus, Ctrl+minus, the slider).
     double uiScale = 1.0;
@@ -106,6 +113,8 @@ struct ViewOptions {
 
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);
+    /// The axes numbers are shown in, for a box of `def`'s size.
+    [[nodiscard]] Axes axes(const WorldDef& def) const { return {yUp, def.height}; }
     [[nodiscard]] bool shown(ShowOption option) const {
         return const_cast<ViewOptions&>(*this).flag(option);
     }

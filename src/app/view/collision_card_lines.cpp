@@ -41,8 +41,10 @@ std::string energyChange(double before, double after) {
 
 }  // namespace
 
-CollisionCardText collisionCardText(const CollisionCard& card) {
+CollisionCardText collisionCardText(const CollisionCard& card, const Axes& axes) {
     const Collision& c = card.collision;
+    // Signed components as the user reads them (the y up option).
+    const auto components = [&](const Vec2& v) { return psb::app::components(axes.vector(v)); };
     CollisionCardText t;
     const std::string a = std::to_string(card.numberA);
     const std::string at = " at t = " + quantity(c.time, "s");
@@ -82,7 +84,7 @@ CollisionCardText collisionCardText(const CollisionCard& card) {
                       quantity(card.energyAfter(), "J"),
                       "The sum of \u00bd m v\u00b2: kept by an elastic collision (e = 1)"});
     t.notes.push_back(
-        "Impulse on " + a + ": " + withUnit(c.impulse, "N s") +
+        "Impulse on " + a + ": " + withUnit(axes.vector(c.impulse), "N s") +
         (card.pair() ? " (on " + std::to_string(card.numberB) + ": the opposite)" : ""));
     if (card.pair()) {
         const Vec2 change = card.momentumAfter() - card.momentumBefore();
@@ -90,7 +92,8 @@ CollisionCardText collisionCardText(const CollisionCard& card) {
                              card.massB * (c.bBefore.norm() + c.bAfter.norm());
         t.notes.push_back(change.norm() <= 1e-12 * scale
                               ? std::string("Total momentum kept (to rounding)")
-                              : "Total momentum changed by " + withUnit(change, "kg m/s") +
+                              : "Total momentum changed by " +
+                                    withUnit(axes.vector(change), "kg m/s") +
                                     " (a held particle pushes)");
     }
     t.notes.push_back(energyChange(card.energyBefore(), card.energyAfter()));

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
+
 #include "session/last_collision.hpp"
 
 namespace psb::app {
@@ -26,7 +28,8 @@ struct CollisionCardText {
     std::vector<std::string> notes;
 };
 
-[[nodiscard]] CollisionCardText collisionCardText(const CollisionCard& card);
+/// In `axes` (the y up option).
+[[nodiscard]] CollisionCardText collisionCardText(const CollisionCard& card, const Axes& axes = {});
 
 /// The card as lines of text ("v 1: (2.00, 0) m/s -> (-2.50, 0) m/s"), for the screenshot's
 /// text file.

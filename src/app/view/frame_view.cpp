@@ -24,7 +24,7 @@ HudData hudData(const Session& session) {
     hud.reachedTimeScale = session.reachedTimeScale();
     hud.particles = world.size();
     hud.kineticEnergy = session.observables().kineticEnergy;
-    hud.momentum = session.observables().momentum;
+    hud.momentum = session.axes().vector(session.observables().momentum);
     hud.spawnMass = session.spawn().mass();
     hud.spawnRadius = session.spawn().radius();
     hud.arrowSeconds = session.view().arrows ? session.view().arrowSeconds : 0.0;
@@ -130,9 +130,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     f.gas = session.gasReading();
     if (f.gas) f.pressurePlot = pressurePlotLine(session.gasHistory());
     if (session.view().collision) f.collision = session.lastCollision();
-    if (session.view().values) f.values = valuesTable(world, session.selection().id());
+    if (session.view().values)
+        f.values = valuesTable(world, session.selection().id(), session.axes());
     if (session.view().grid) {
-        f.grid = gridView(session.camera(), world.def().width, world.def().height);
+        f.grid =
+            gridView(session.camera(), world.def().width, world.def().height, session.view().yUp);
     }
     if (session.view().ruler) f.ruler = rulerView(session.ruler(), session.camera());
     if (stats.video.recording) {
@@ -210,9 +212,10 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     const int room = session.camera().viewportWidth() - left;
     const bool editing = session.prompt().active();
     if (f.selected && (!session.controlsShown() || editing)) {
-        o.inspector = inspectorPanel(
-            hudFont, inspectorLines(*f.selected, session.prompt(), true, world.rotationInUse()),
-            room);
+        o.inspector = inspectorPanel(hudFont,
+                                     inspectorLines(*f.selected, session.prompt(), true,
+                                                    world.rotationInUse(), session.axes()),
+                                     room);
     }
     // Long messages wrap within the room right of the control panel, beside the inspector when
     // that leaves them room; the newest lines that fit the band below the box are shown.
@@ -231,7 +234,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.hud = textBoxSize(hudFont, o.hud);
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {
-        req.legend = textBoxSize(labelFont, momentumLegend(world, f.now, f.view.arrowSeconds));
+        req.legend = textBoxSize(labelFont,
+                                 momentumLegend(world, f.now, f.view.arrowSeconds, session.axes()));
     }
     req.messages = textBoxSize(hudFont, o.messages);
     req.inspector = textBoxSize(hudFont, o.inspector);
@@ -244,9 +248,10 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.scale = controls.pointPixels;
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
-        o.inspector = inspectorPanel(
-            hudFont, inspectorLines(*f.selected, session.prompt(), false, world.rotationInUse()),
-            room);
+        o.inspector = inspectorPanel(hudFont,
+                                     inspectorLines(*f.selected, session.prompt(), false,
+                                                    world.rotationInUse(), session.axes()),
+                                     room);
         req.inspector = textBoxSize(hudFont, o.inspector);
         f.layout = layoutPanels(req);
     }

@@ -27,22 +27,22 @@ void editLines(std::vector<std::string>& lines, const EditPrompt& prompt) {
 
 }  // namespace
 
-SpinReading spinReading(const Particle& p) {
+SpinReading spinReading(const Particle& p, const Axes& axes) {
     const double inertia = p.inertiaFactor * p.mass * p.radius * p.radius;
     return {0.5 * p.mass * p.velocity.squaredNorm(),
             0.5 * inertia * p.angularVelocity * p.angularVelocity,
-            p.angularVelocity * 60.0 / (2.0 * std::numbers::pi)};
+            axes.spin(p.angularVelocity) * 60.0 / (2.0 * std::numbers::pi)};
 }
 
 std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt, bool readings,
-                                        bool rotation) {
+                                        bool rotation, const Axes& axes) {
     char buf[160];
     std::vector<std::string> lines;
     const auto line = [&](const char* format, auto... values) {
         std::snprintf(buf, sizeof buf, format, values...);
         lines.emplace_back(buf);
     };
-    const Vec2 momentum = p.mass * p.velocity;
+    const Vec2 velocity = axes.vector(p.velocity), momentum = p.mass * velocity;
     const auto n = [](double v) { return quantity(v, "", false); };  // "-40 400", "0.00200"
     const auto pair = [&](const char* name, const Vec2& v, const char* unit) {
         lines.push_back(std::string(name) + "(" + n(v.x()) + ", " + n(v.y()) + ") " + unit);
@@ -54,18 +54,19 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
         editLines(lines, prompt);
         return lines;
     }
-    pair("position        ", p.position, "m");
-    pair("velocity        ", p.velocity, "m/s");
+    pair("position        ", axes.point(p.position), "m");
+    pair("velocity        ", velocity, "m/s");
     lines.push_back("speed           " + quantity(p.velocity.norm(), "m/s", false));
     pair("momentum        ", momentum, "kg m/s");
-    const SpinReading spin = spinReading(p);
+    const SpinReading spin = spinReading(p, axes);
     if (rotation) {
         // The overlay's font has Latin-1 only: words, not Greek letters.
         if (p.fixedRotation) {
             lines.emplace_back("turning         fixed rotation (never turns)");
         } else {
-            lines.push_back("angular velocity " + quantity(p.angularVelocity, "rad/s", false) +
-                            " = " + quantity(spin.revPerMin, "rev/min", false));
+            lines.push_back("angular velocity " +
+                            quantity(axes.spin(p.angularVelocity), "rad/s", false) + " = " +
+                            quantity(spin.revPerMin, "rev/min", false));
         }
         lines.push_back("kinetic energy  " + quantity(spin.translational, "J") + " translation");
         lines.push_back("                " + quantity(spin.rotational, "J") + " rotation");

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/particle.hpp>
 
 #include "session/edit_prompt.hpp"
@@ -16,9 +17,10 @@ namespace psb::app {
 struct SpinReading {
     double translational = 0.0;  ///< ½ m v², J
     double rotational = 0.0;     ///< ½ I ω² with I = k m r², J
-    double revPerMin = 0.0;      ///< ω in turns a minute, positive clockwise on screen
+    /// ω in turns a minute, positive turning +x toward the shown +y (Axes::spin).
+    double revPerMin = 0.0;
 };
-[[nodiscard]] SpinReading spinReading(const Particle& p);
+[[nodiscard]] SpinReading spinReading(const Particle& p, const Axes& axes = {});
 
 /// The panel's lines for `p`: position (m), velocity (m/s), speed (m/s), momentum (kg m/s),
 /// kinetic energy (J), mass (kg), radius (m); in a world that keeps rotation (`rotation`:
@@ -26,7 +28,9 @@ struct SpinReading {
 /// the kinetic energy of translation and of rotation, and the inertia factor k. While `prompt`
 /// is active on p, its fields (the active one marked) and the last refusal instead of the key
 /// hint. `readings` false: the prompt without the readings, for a window too small for both.
+/// In `axes` (the y up option).
 [[nodiscard]] std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt,
-                                                      bool readings = true, bool rotation = false);
+                                                      bool readings = true, bool rotation = false,
+                                                      const Axes& axes = {});
 
 }  // namespace psb::app

@@ -38,7 +38,7 @@ int strongEvery(double step) {
 
 }  // namespace
 
-GridView gridView(const Camera& camera, double width, double height) {
+GridView gridView(const Camera& camera, double width, double height, bool yUp) {
     GridView g;
     const double zoom = camera.zoom();
     if (!(zoom > 0.0) || !(width > 0.0) || !(height > 0.0)) return g;
@@ -66,10 +66,14 @@ GridView gridView(const Camera& camera, double width, double height) {
                 {Vec2(x, labelY), gridLabel(static_cast<double>(k) * g.step, g.step)});
         }
     }
-    const auto firstY = static_cast<long long>(std::ceil(y0 / g.step - 1e-9));
-    const auto lastY = static_cast<long long>(std::floor(y1 / g.step + 1e-9));
+    // Heights as the numbers read them: from the floor up with y up (Axes), else from the top
+    // edge down; the lines at round numbers of those.
+    const double shown0 = yUp ? height - y1 : y0, shown1 = yUp ? height - y0 : y1;
+    const auto firstY = static_cast<long long>(std::ceil(shown0 / g.step - 1e-9));
+    const auto lastY = static_cast<long long>(std::floor(shown1 / g.step + 1e-9));
     for (long long k = firstY; k <= lastY; ++k) {
-        const double y = camera.worldToScreen(Vec2(0.0, static_cast<double>(k) * g.step)).y();
+        const double shown = static_cast<double>(k) * g.step;
+        const double y = camera.worldToScreen(Vec2(0.0, yUp ? height - shown : shown)).y();
         g.lines.push_back({Vec2(top0.x(), y), Vec2(bottom1.x(), y), k % every == 0});
         if (k != 0 && static_cast<double>(k) * g.step < height - 1e-9 * g.step) {
             g.labels.push_back(
@@ -78,7 +82,8 @@ GridView gridView(const Camera& camera, double width, double height) {
     }
     g.legend = "Grid: ";
     g.legend += quantity(g.step, "m");
-    g.legend += " squares, from the top-left corner";
+    g.legend += yUp ? " squares, from the bottom-left corner (y up)"
+                    : " squares, from the top-left corner (y down)";
     return g;
 }
 

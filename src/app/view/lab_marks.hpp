@@ -36,9 +36,11 @@ struct GridView {
 /// Grid lines no closer than this on screen, pixels.
 inline constexpr double kGridMinPixels = 60.0;
 
-/// The grid over a `width` × `height` box seen through `camera`. Empty (no lines) when the box
-/// is not on screen.
-[[nodiscard]] GridView gridView(const Camera& camera, double width, double height);
+/// The grid over a `width` × `height` box seen through `camera`, its heights counted from the
+/// floor up with `yUp` (Axes), else from the top edge down. Empty (no lines) when the box is not
+/// on screen.
+[[nodiscard]] GridView gridView(const Camera& camera, double width, double height,
+                                bool yUp = false);
 
 /// The ruler: its edge, its ticks, the handles at its ends and its reading.
 struct RulerView {

@@ -24,7 +24,8 @@ std::vector<MomentaDiagram::Arrow> tipToTail(const CollisionCard& card, const Ve
     return arrows;
 }
 
-std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arrows) {
+std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arrows,
+                 const Axes& axes) {
     std::string s = "Momenta ";
     s += when;
     s += ": ";
@@ -34,12 +35,12 @@ std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arr
             s += " = ";
             s += a.label;
             s += ' ';
-            s += components(a.to);
+            s += components(axes.vector(a.to));
         } else {
             if (i > 0) s += " + ";
             s += a.label;
             s += ' ';
-            s += components(a.to - a.from);
+            s += components(axes.vector(a.to - a.from));
         }
     }
     s += " kg m/s";
@@ -88,8 +89,8 @@ MomentaDiagram momentaDiagram(const CollisionCard& card) {
     return d;
 }
 
-std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram) {
-    return {line("before", diagram.before), line("after", diagram.after)};
+std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram, const Axes& axes) {
+    return {line("before", diagram.before, axes), line("after", diagram.after, axes)};
 }
 
 }  // namespace psb::app

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/math.hpp>
 
 #include "session/last_collision.hpp"
@@ -48,7 +49,8 @@ struct MomentaDiagram {
 [[nodiscard]] MomentaDiagram momentaDiagram(const CollisionCard& card);
 
 /// The diagram as text, for the screenshot's file: "Momenta before: p 1 (3.00, 0) + p 2 (-3.00, 0)
-/// = total p (0, 0) kg m/s" and the same after.
-[[nodiscard]] std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram);
+/// = total p (0, 0) kg m/s" and the same after, in `axes` (the y up option).
+[[nodiscard]] std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram,
+                                                           const Axes& axes = {});
 
 }  // namespace psb::app

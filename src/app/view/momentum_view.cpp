@@ -30,8 +30,8 @@ TotalMomentumArrow totalMomentumArrow(const World& world, const ObservablesSampl
 }
 
 std::vector<std::string> momentumLegend(const World& world, const ObservablesSample& now,
-                                        double arrowSeconds) {
-    const Vec2 P = now.momentum;
+                                        double arrowSeconds, const Axes& axes) {
+    const Vec2 P = axes.vector(now.momentum);
     char buf[96];
     std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
                   totalMomentumArrow(world, now, arrowSeconds).capped ? " (arrow capped)" : "");

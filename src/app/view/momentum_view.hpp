@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -34,9 +35,10 @@ struct TotalMomentumArrow {
 /// The mean mass of `p` (kg), 1 when it is empty: what sets the arrows' scale.
 [[nodiscard]] double meanMass(const ParticleArrays& p);
 
-/// The legend's lines: the total momentum's value, then what the colours mean.
+/// The legend's lines: the total momentum's value (in `axes`, the y up option), then what the
+/// colours mean.
 [[nodiscard]] std::vector<std::string> momentumLegend(const World& world,
                                                       const ObservablesSample& now,
-                                                      double arrowSeconds);
+                                                      double arrowSeconds, const Axes& axes = {});
 
 }  // namespace psb::app

@@ -24,17 +24,18 @@ std::vector<ValuesColumn> valuesColumns(bool rotation) {
 
 namespace {
 
-std::vector<double> valuesOf(const Particle& p, bool rotation) {
-    std::vector<double> v = {p.position.x(),
-                             p.position.y(),
-                             p.velocity.x(),
-                             p.velocity.y(),
-                             p.mass * p.velocity.x(),
-                             p.mass * p.velocity.y(),
+std::vector<double> valuesOf(const Particle& p, bool rotation, const Axes& axes) {
+    const Vec2 position = axes.point(p.position), velocity = axes.vector(p.velocity);
+    std::vector<double> v = {position.x(),
+                             position.y(),
+                             velocity.x(),
+                             velocity.y(),
+                             p.mass * velocity.x(),
+                             p.mass * velocity.y(),
                              0.5 * p.mass * p.velocity.squaredNorm(),
                              p.mass};
     if (rotation) {
-        v.insert(v.begin() + 4, p.angularVelocity);
+        v.insert(v.begin() + 4, axes.spin(p.angularVelocity));
         v.insert(v.begin() + 8, 0.5 * p.inertiaFactor * p.mass * p.radius * p.radius *
                                     p.angularVelocity * p.angularVelocity);
     }
@@ -43,7 +44,7 @@ std::vector<double> valuesOf(const Particle& p, bool rotation) {
 
 }  // namespace
 
-ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected) {
+ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected, const Axes& axes) {
     ValuesTable t;
     const bool rotation = world.rotationInUse();
     t.columns = valuesColumns(rotation);
@@ -69,7 +70,7 @@ ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected) 
         mass += a.mass[i];
     }
     std::size_t k = firstSum;
-    for (const double total : {px, py, ke})
+    for (const double total : {px, axes.up(py), ke})
         t.totals[k++] = total;
     if (rotation) t.totals[k++] = keRot;
     t.totals[k] = mass;
@@ -79,17 +80,26 @@ ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected) 
         std::sort(ids.begin(), ids.end(),
                   [](ParticleId x, ParticleId y) { return particleNumber(x) < particleNumber(y); });
         for (const ParticleId id : ids)
-            t.rows.push_back({id, particleNumber(id), valuesOf(world.get(id), rotation)});
+            t.rows.push_back({id, particleNumber(id), valuesOf(world.get(id), rotation, axes)});
     } else if (selected && world.contains(*selected)) {
         t.rows.push_back(
-            {*selected, particleNumber(*selected), valuesOf(world.get(*selected), rotation)});
+            {*selected, particleNumber(*selected), valuesOf(world.get(*selected), rotation, axes)});
     }
+    t.axes = axesNote(axes, rotation);
     if (!all) {
         t.note = std::to_string(a.size());
         t.note += " particles: the totals of all, and the selected particle's row";
         if (t.rows.empty()) t.note += " (click one)";
     }
     return t;
+}
+
+std::string axesNote(const Axes& axes, bool rotation) {
+    std::string s =
+        axes.yUp ? "y up from the floor; vy, py up" : "y down from the top edge; vy, py down";
+    if (rotation) s += axes.yUp ? "; \u03c9 counterclockwise" : "; \u03c9 clockwise";
+    s += axes.yUp ? " (Show: y up)" : " (Show: y up is off)";
+    return s;
 }
 
 std::string valuesCell(double value) {
@@ -122,6 +132,7 @@ std::vector<std::string> valuesLines(const ValuesTable& table) {
     }
     lines.push_back(totals);
     if (!table.note.empty()) lines.push_back(table.note);
+    if (!table.axes.empty()) lines.push_back(table.axes);
     return lines;
 }
 

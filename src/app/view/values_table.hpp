@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "session/edit_prompt.hpp"
@@ -50,11 +51,19 @@ struct ValuesTable {
     std::size_t particles = 0;
     /// Why rows were left out (more than kValuesMaxRows particles); empty when all are listed.
     std::string note;
+    /// Which way y and turning count (axesNote).
+    std::string axes;
 };
 
+/// "y up from the floor; vy, py up; omega counterclockwise (Show: y up)" or its y-down
+/// counterpart: what a signed y number means, said beside the numbers.
+[[nodiscard]] std::string axesNote(const Axes& axes, bool rotation);
+
 /// The table of `world`: every particle when there are at most kValuesMaxRows, else only
-/// `selected`'s row (if any); the totals always cover every particle.
-[[nodiscard]] ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected);
+/// `selected`'s row (if any); the totals always cover every particle. In `axes` (the y up
+/// option): y, vy, py and omega as the user reads them.
+[[nodiscard]] ValuesTable valuesTable(const World& world, std::optional<ParticleId> selected,
+                                      const Axes& axes = {});
 
 /// A cell as shown: three significant figures, signed ("-2.50"), "" for NaN.
 [[nodiscard]] std::string valuesCell(double value);

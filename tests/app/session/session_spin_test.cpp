@@ -98,14 +98,16 @@ TEST_F(SessionSpin, AnEditGivesSpinAndAnInertiaFactorAndUndoTakesThemBack) {
     EXPECT_FALSE(s.world().rotationInUse()) << "an edit of the rest keeps a world without spin";
     s.apply(cmd::EditParticle{id, ParticleField::Omega, "6.25"});
     EXPECT_TRUE(s.editRefusal().empty()) << s.editRefusal();
-    EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, 6.25);
+    // Typed with y up (the default): counterclockwise, which the world's y-down axes call -6.25.
+    ASSERT_TRUE(s.view().yUp);
+    EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, -6.25);
     EXPECT_TRUE(s.world().rotationInUse());
     s.apply(cmd::EditParticle{id, ParticleField::Inertia, "0.4"});
     EXPECT_DOUBLE_EQ(s.world().get(id).inertiaFactor, 0.4);
     EXPECT_EQ(s.lastAction(), "edit particle");
     s.apply(cmd::Undo{});
     EXPECT_DOUBLE_EQ(s.world().get(id).inertiaFactor, kDefaultInertiaFactor);
-    EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, 6.25);
+    EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, -6.25);
     s.apply(cmd::Undo{});
     EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, 0.0);
 }
@@ -159,7 +161,8 @@ TEST_F(SessionSpin, ThePromptEditsOmegaAndKWithTheRest) {
     s.apply(cmd::EditType{"0.4"});
     s.apply(cmd::EditApply{});
     EXPECT_FALSE(s.prompt().active());
-    EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, -3.5);
+    // -3.5 typed with y up is clockwise: +3.5 in the world's axes; the message says what was typed.
+    EXPECT_DOUBLE_EQ(s.world().get(id).angularVelocity, 3.5);
     EXPECT_DOUBLE_EQ(s.world().get(id).inertiaFactor, 0.4);
     EXPECT_TRUE(said(s.takeNotices(), "omega -3.5 rad/s, k 0.4"));
     // A bad k: refused, the prompt stays open with the reason.

@@ -417,9 +417,37 @@ TEST_F(SessionValues, EditingOneFieldAppliesItOrRefusesWithTheReason) {
     // Onto another particle: refused, naming it.
     const Particle other = s.world().get(s.world().ids().back());
     s.apply(cmd::EditParticle{id, ParticleField::X, std::to_string(other.position.x())});
-    s.apply(cmd::EditParticle{id, ParticleField::Y, std::to_string(other.position.y())});
+    s.apply(
+        cmd::EditParticle{id, ParticleField::Y, std::to_string(s.axes().y(other.position.y()))});
     EXPECT_NE(s.editRefusal().find("would overlap the particle at"), std::string::npos)
         << s.editRefusal();
+}
+
+TEST_F(SessionValues, YUpShowsAndTakesHeightsFromTheFloorAndUpwardVelocities) {
+    Session s = session();
+    ASSERT_TRUE(s.view().yUp) << "on by default";
+    const double h = s.world().def().height;
+    const ParticleId id = s.world().ids().front();
+    s.apply(cmd::EditParticle{id, ParticleField::Y, "0.75"});
+    ASSERT_TRUE(s.editRefusal().empty()) << s.editRefusal();
+    EXPECT_DOUBLE_EQ(s.world().get(id).position.y(), h - 0.75) << "0.75 m above the floor";
+    s.apply(cmd::EditParticle{id, ParticleField::Vy, "2"});
+    EXPECT_DOUBLE_EQ(s.world().get(id).velocity.y(), -2.0) << "upward: up the screen";
+    EXPECT_TRUE(said(s.takeNotices(), "velocity [")) << "the edit is reported";
+    // The axes the panel and the exports read: y and vy as typed.
+    EXPECT_DOUBLE_EQ(s.axes().y(s.world().get(id).position.y()), 0.75);
+    EXPECT_DOUBLE_EQ(s.axes().up(s.world().get(id).velocity.y()), 2.0);
+    const std::string table = s.tableText(cmd::DataTable::Values, csv::Separator::Tab);
+    EXPECT_NE(table.find("y_up_m"), std::string::npos) << table;
+    // Off: y counts down from the top edge, as the scene files do.
+    s.apply(cmd::SetShow{cmd::ShowOption::YUp, false});
+    EXPECT_FALSE(s.view().yUp);
+    s.apply(cmd::EditParticle{id, ParticleField::Y, "0.75"});
+    EXPECT_DOUBLE_EQ(s.world().get(id).position.y(), 0.75);
+    s.apply(cmd::EditParticle{id, ParticleField::Vy, "2"});
+    EXPECT_DOUBLE_EQ(s.world().get(id).velocity.y(), 2.0);
+    EXPECT_EQ(s.tableText(cmd::DataTable::Values, csv::Separator::Tab).find("y_up_m"),
+              std::string::npos);
 }
 
 TEST_F(SessionValues, SelectFromATableAndClear) {

@@ -32,7 +32,7 @@ TEST(GridView, RoundStepsOfAtLeastSixtyPixelsAcrossTheBox) {
     EXPECT_TRUE(hasLabel(g.labels, "6 m"));
     EXPECT_FALSE(hasLabel(g.labels, "7 m"));  // the far edges and the corner are left bare
     EXPECT_FALSE(hasLabel(g.labels, "0"));
-    EXPECT_EQ(g.legend, "Grid: 1.00 m squares, from the top-left corner");
+    EXPECT_EQ(g.legend, "Grid: 1.00 m squares, from the top-left corner (y down)");
     // Every fifth line strong: x = 0 and 5.
     EXPECT_EQ(std::count_if(g.lines.begin(), g.lines.end(),
                             [](const MarkLine& l) { return l.strong && l.a.x() == l.b.x(); }),
@@ -46,6 +46,31 @@ TEST(GridView, RoundStepsOfAtLeastSixtyPixelsAcrossTheBox) {
     EXPECT_DOUBLE_EQ(small.step, 0.1);
     EXPECT_TRUE(hasLabel(small.labels, "0.1 m"));
     EXPECT_TRUE(hasLabel(small.labels, "0.3 m"));
+}
+
+TEST(GridView, WithYUpTheHeightsCountFromTheFloor) {
+    // A 6.5 m high box at 80 pixels a metre: lines every metre up from the floor, so the
+    // label "1 m" is on the line 5.5 m below the top edge, and a line 0.5 m below the top edge
+    // (6 m up) is where y down would have none.
+    const Camera cam = camera(80.0);
+    const GridView g = gridView(cam, 7.0, 6.5, true);
+    EXPECT_EQ(g.legend, "Grid: 1.00 m squares, from the bottom-left corner (y up)");
+    const auto labelAt = [&](const std::string& text) {
+        for (const MarkLabel& l : g.labels)
+            if (l.text == text && l.left) {
+                return cam.screenToWorld(l.at).y();
+            }
+        return -1.0;
+    };
+    EXPECT_NEAR(labelAt("1 m"), 5.5, 1e-9);
+    EXPECT_NEAR(labelAt("6 m"), 0.5, 1e-9);
+    const GridView down = gridView(cam, 7.0, 6.5, false);
+    EXPECT_NEAR(
+        cam.screenToWorld(std::find_if(down.labels.begin(), down.labels.end(),
+                                       [](const MarkLabel& l) { return l.left && l.text == "1 m"; })
+                              ->at)
+            .y(),
+        1.0, 1e-9);
 }
 
 TEST(GridView, OnlyTheVisiblePartAndNothingForABoxOffScreen) {

@@ -68,6 +68,29 @@ TEST(ValuesTable, WithRotationInUseOmegaAndTheRotationalEnergyJoinTheColumns) {
     EXPECT_EQ(lines[3], "total\t\t\t\t\t\t-1.00\t1.50\t3.88\t5.40\t4.00");
 }
 
+TEST(ValuesTable, WithYUpHeightsFromTheFloorUpwardComponentsAndTurningCounterclockwise) {
+    World w = twoBalls();
+    w.setAngularVelocity(w.ids().back(), -5.0);  // counterclockwise on screen
+    const ValuesTable t = valuesTable(w, std::nullopt, Axes{true, 4.0});
+    // x, y, vx, vy, omega, px, py, KE, KE rot, mass; the 4 m box's second ball at y = 2 (down)
+    // moving at vy = 0.5 down the screen.
+    EXPECT_EQ(t.rows[1].values[1], 2.0);
+    EXPECT_EQ(t.rows[0].values[1], 2.0);
+    EXPECT_EQ(t.rows[1].values[3], -0.5) << "moving down: negative with y up";
+    EXPECT_EQ(t.rows[1].values[4], 5.0) << "counterclockwise: positive with y up";
+    EXPECT_EQ(t.rows[1].values[6], -1.5);
+    EXPECT_EQ(t.totals[6], -1.5) << "the total py, upward";
+    EXPECT_DOUBLE_EQ(t.totals[7], 2.0 + 1.875) << "energies do not change";
+    EXPECT_EQ(t.axes, "y up from the floor; vy, py up; \u03c9 counterclockwise (Show: y up)");
+    EXPECT_EQ(valuesLines(t).back(), t.axes);
+    World moved = twoBalls();
+    moved.setPosition(moved.ids().front(), Vec2(2.0, 3.5));
+    EXPECT_EQ(valuesTable(moved, std::nullopt, Axes{true, 4.0}).rows[0].values[1], 0.5)
+        << "0.5 m above the floor";
+    EXPECT_EQ(valuesTable(moved, std::nullopt).axes,
+              "y down from the top edge; vy, py down (Show: y up is off)");
+}
+
 TEST(ValuesTable, ACrowdListsTheSelectedRowAndTheTotalsOfAll) {
     WorldDef def;
     def.width = def.height = 100.0;
