@@ -59,7 +59,7 @@ key x
 wait_log "Recording stopped: [0-9]+ samples, 1 collision"
 pass "$(grep 'Recording stopped' "$LOG" | tail -1 | sed -E 's/^\[I\] //')"
 
-# --- 3. the collision log ------------------------------------------------------------------------
+# --- 3. the collision log (y up, the default: the y columns say so) ------------------------------------------------------------------------
 # Room for the Data section: fold the sections above it.
 for s in Physics Show Readouts; do click "section $s"; done
 click "section Data"
@@ -67,7 +67,7 @@ wait_log "\[I\] Control Export collisions at"
 click "Export collisions"
 wait_log "Exported 1 row of collisions to $OUT/exports/collisions.csv"
 C="$OUT/exports/collisions.csv"
-head -1 "$C" | grep -q '^time_s,particle,with,other,vx_before_m_per_s,vy_before_m_per_s,vx_after_m_per_s,vy_after_m_per_s,other_vx_before_m_per_s,other_vy_before_m_per_s,other_vx_after_m_per_s,other_vy_after_m_per_s,impulse_x_N_s,impulse_y_N_s$' ||
+head -1 "$C" | grep -q '^time_s,particle,with,other,vx_before_m_per_s,vy_up_before_m_per_s,vx_after_m_per_s,vy_up_after_m_per_s,other_vx_before_m_per_s,other_vy_up_before_m_per_s,other_vx_after_m_per_s,other_vy_up_after_m_per_s,impulse_x_N_s,impulse_y_up_N_s$' ||
     fail "collisions.csv header: $(head -1 "$C")"
 # Seen from the 1 kg ball (particle 1), whichever the row names first.
 awk -F, 'NR == 2 {
@@ -81,7 +81,7 @@ pass "collisions.csv: $(sed -n 2p "$C")"
 click "Export trajectories"
 wait_log "Exported [0-9]+ rows of trajectories to $OUT/exports/trajectories.csv"
 T="$OUT/exports/trajectories.csv"
-head -1 "$T" | grep -q '^time_s,particle,x_m,y_m,vx_m_per_s,vy_m_per_s$' || fail "trajectories.csv header: $(head -1 "$T")"
+head -1 "$T" | grep -q '^time_s,particle,x_m,y_up_m,vx_m_per_s,vy_up_m_per_s$' || fail "trajectories.csv header: $(head -1 "$T")"
 sed -n 2,3p "$T" | tr '\n' ' ' | grep -q '^0,1,3,5,2,0 0,2,6,5,-1,0 $' || fail "the first rows: $(sed -n 2,3p "$T")"
 awk -F, 'NR > 1 { if ($1 < last) exit 1; last = $1; if ($1 > 1 && $2 == 1 && $5 != -2.5) exit 1 }' "$T" ||
     fail "times out of order, or particle 1 not at -2.5 m/s after the collision"
@@ -94,7 +94,7 @@ sleep 0.3
 click "Export values"
 wait_log "Exported 2 rows of values to $OUT/exports/lesson.csv"
 V="$OUT/exports/lesson.csv"
-head -1 "$V" | grep -q '^particle,x_m,y_m,vx_m_per_s,vy_m_per_s,px_kg_m_per_s,py_kg_m_per_s,kinetic_energy_J,mass_kg,radius_m$' ||
+head -1 "$V" | grep -q '^particle,x_m,y_up_m,vx_m_per_s,vy_up_m_per_s,px_kg_m_per_s,py_up_kg_m_per_s,kinetic_energy_J,mass_kg,radius_m$' ||
     fail "lesson.csv header: $(head -1 "$V")"
 awk -F, 'NR == 2 && !($1 == 1 && $4 == -2.5 && $6 == -2.5 && $9 == 1) { exit 1 }
          NR == 3 && !($1 == 2 && $4 == 0.5 && $6 == 1.5 && $9 == 3) { exit 1 }' "$V" ||

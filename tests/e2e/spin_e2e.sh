@@ -68,7 +68,9 @@ grep -qF $'vy (m/s)\t\xcf\x89 (rad/s)\tpx' <<<"$(head -1 <<<"$values")" ||
 # Rolling: omega r = |v| (r = 0.12 m), to the table's three figures.
 for n in 1 2; do
     row=$(grep -P "^$n\t" <<<"$values") || fail "no row for particle $n: $values"
-    awk -F'\t' -v n="$n" '{ v = sqrt($4 * $4 + $5 * $5); w = $6 * 0.12;
+    # With y up (the default) omega is counterclockwise-positive: rolling to the right, it is
+    # negative (clockwise).
+    awk -F'\t' -v n="$n" '{ v = sqrt($4 * $4 + $5 * $5); w = -$6 * 0.12 * ($4 < 0 ? -1 : 1);
         if (v < 0.5 || w < 0.99 * v || w > 1.01 * v) { print "particle " n ": omega r " w " m/s against speed " v " m/s"; exit 1 } }' <<<"$row" ||
         fail "particle $n does not roll: $row"
 done
@@ -84,8 +86,9 @@ inspector=$(section inspector Inspector)
 [[ "$(head -1 <<<"$inspector")" == "Particle 1" ]] || fail "the inspector is not ball 1's: $inspector"
 line=$(grep "^angular velocity" <<<"$inspector") ||
     fail "the inspector shows no angular velocity: $inspector"
-read -r w rpm < <(sed -E 's/^angular velocity ([0-9.]+) rad\/s = ([0-9.]+) rev\/min$/\1 \2/' <<<"$line")
-awk -v w="$w" -v r="$rpm" 'BEGIN { exit !(r > 0 && w > 0 && (r - w * 60 / 6.2831853) ^ 2 < (0.01 * r) ^ 2) }' ||
+# Rolling to the right, with y up (the default): clockwise, negative.
+read -r w rpm < <(sed -E 's/^angular velocity (-?[0-9.]+) rad\/s = (-?[0-9.]+) rev\/min$/\1 \2/' <<<"$line")
+awk -v w="$w" -v r="$rpm" 'BEGIN { exit !(r < 0 && w < 0 && (r - w * 60 / 6.2831853) ^ 2 < (0.01 * r) ^ 2) }' ||
     fail "rev/min is not rad/s x 60 / 2 pi: $line"
 grep -q " J rotation$" <<<"$inspector" || fail "no rotational energy in the inspector: $inspector"
 grep -q "inertia factor  k = 0.4" <<<"$inspector" || fail "the ball's k is not 0.4: $inspector"
