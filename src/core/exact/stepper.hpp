@@ -340,7 +340,9 @@ class ExactStepper {
     // With rough contacts, a disc that turns on the face it slides on or the wall it rests on:
     // setRoll gives it the phase its state at bodies_[i].t calls for (slipping under kinetic
     // friction until the slip-to-roll instant, rolling, or slipping for good where friction
-    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn);
+    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn on a
+    // face); a disc that does not turn on a wall slides as a block under kinetic friction until
+    // it stops (the slip-to-roll event of a disc whose slip is its speed);
     // endRoll takes it back to plain flight or rest (its spin brought to bodies_[i].t); the
     // slip-to-roll event; the outward normal of the surface it rolls on.
     void setRoll(std::uint32_t i);
