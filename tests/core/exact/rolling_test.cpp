@@ -243,6 +243,38 @@ TEST(ExactRolling, ADiscThatDoesNotTurnStillSlidesAsABlock) {
     EXPECT_EQ(slide.omega, 0.0);
 }
 
+TEST(ExactRolling, ADiscRollingIntoASideWallFallsBackToTheFloorAndRollsBack) {
+    // In a 2 m box (e = 0.3, μ = 0.2) a disc launched at 3 m/s rolls into the right wall, whose
+    // friction on its spin kicks it up the wall: it leaves the floor, falls back under gravity,
+    // comes to rest on it again and rolls back. (It once kept the floor's rest after the kick
+    // and rose for ever at a constant speed, without gravity.)
+    World world(
+        WorldDef{
+            .width = 2.0, .height = 2.0, .gravity = {0.0, kG}, .restitution = 0.3, .friction = 0.2},
+        exactMode());
+    const double r = 0.2;
+    const ParticleId id =
+        world.add({.position = {1.0, 2.0 - r}, .velocity = {3.0, 0.0}, .radius = r});
+    double highest = 2.0 - r;
+    const int frames = static_cast<int>(std::lround(3.0 / kFrame));
+    double energy = mechanicalEnergy(world);
+    for (int f = 0; f < frames; ++f) {
+        world.step(kFrame);
+        const Particle p = world.get(id);
+        highest = std::min(highest, p.position.y());
+        EXPECT_LE(p.position.y(), 2.0 - r + 1e-12) << "frame " << f;
+        const double now = mechanicalEnergy(world);
+        EXPECT_LE(now, energy * (1.0 + 1e-12)) << "frame " << f;
+        energy = now;
+    }
+    EXPECT_LT(highest, 2.0 - r - 1e-3) << "kicked up the wall";
+    const Particle p = world.get(id);
+    EXPECT_EQ(p.position.y(), 2.0 - r);
+    EXPECT_EQ(p.velocity.y(), 0.0);
+    EXPECT_LT(p.velocity.x(), -0.3);
+    EXPECT_NEAR(p.angularVelocity * r, p.velocity.x(), 1e-9) << "rolling back";
+}
+
 /// Steps a disc that does not turn, launched at 3 m/s along the box's floor (μ = 0.2, r = 0.2,
 /// e = 0), in `mode` at frames of dt for `seconds`: where it is then along the floor.
 Along blockOnTheFloor(SolverSettings solver, double dt, double seconds) {
