@@ -290,7 +290,9 @@ class ExactStepper {
     };
     static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
     [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below, double now) const;
-    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count) const;
+    // `turns`: i is a disc that turns with rough contacts (a single tilted support cannot hold it).
+    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count,
+                                           bool turns) const;
     // After an event of i: asleep if slow and held, or caught rattling.
     void settle(std::uint32_t i, double now, bool slow);
     void handleRecheck(std::uint32_t i, const Event& ev);

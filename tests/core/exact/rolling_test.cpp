@@ -207,6 +207,23 @@ TEST(ExactRolling, DownASlopeAtGSinThetaOverOnePlusK) {
     }
 }
 
+TEST(ExactRolling, WithinTheFrictionAngleADiscThatTurnsStillRollsWhereABlockStays) {
+    // 10°, μ = 0.2: the slope is inside the friction angle (11.3°), so static friction holds a
+    // block there (asleep), but a disc that turns cannot be held on a single tilted face: it
+    // rolls down at g sin θ / (1 + k) (μ >= k tan θ / (1 + k) = 0.059).
+    const double theta = 10.0 * M_PI / 180.0, k = 0.5;
+    Slope turns(10.0, 0.2, k), block(10.0, 0.2, k, true);
+    runFrames(turns.world, 1.0);
+    runFrames(block.world, 1.0);
+    const double a = kG * std::sin(theta) / (1.0 + k);
+    EXPECT_NEAR(turns.read().distance, 0.5 * a, 1e-9 * 0.5 * a);
+    EXPECT_NEAR(turns.read().speed, a, 1e-9 * a);
+    EXPECT_LT(std::abs(block.read().distance), 1e-9);
+    const std::uint64_t events = block.world.counters().events;
+    runFrames(block.world, 0.5);
+    EXPECT_EQ(block.world.counters().events, events) << "asleep";
+}
+
 TEST(ExactRolling, TooLittleFrictionSlidesWithSpin) {
     // 20°, μ = 0.05 < k tan θ / (1 + k) = 0.121: the disc slips for good, at
     // a = g (sin θ − μ cos θ), while friction spins it up at α = μ g cos θ / (k r).
