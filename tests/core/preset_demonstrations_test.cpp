@@ -280,10 +280,10 @@ TEST(PresetDemonstrations, HourglassInTheDiscreteModeDrainsFastThenSlowlyLikeWat
 
 TEST(PresetDemonstrations, HourglassInTheExactModeFlowsUntilTheBulbIsEmpty) {
     // As in the substep mode, if slower: 57 grains through by 0.5 s, 143 by 1 s, all 400 by
-    // 2.5 s, against 94, 196 and all by 2.5 s in the substep mode. (Over generate seeds 1 and
-    // 2: 73 and 61 by 0.5 s; seed 1 empties by 2.5 s, in seed 2 an arch holds the last 48.) The
-    // exact mode once locked it into a fake arch after about 45 grains (grains held up by the
-    // sleepers above or beside them).
+    // 2.6 s, against 94, 196 and all by 2.5 s in the substep mode. (Over generate seeds 1 and
+    // 2: 73 and 61 by 0.5 s; seed 1 empties by 2.5 s, in seed 2 an arch holds the last 222 from
+    // 1.5 s: whether a pour arches is chance, docs/exact.md.) The exact mode once locked it into
+    // a fake arch after about 45 grains (grains held up by the sleepers above or beside them).
     const Scene s = presetIn("11-hourglass.json", StepMode::Exact);
     World w = makeWorld(s);
     const std::vector<int> n = aboveOverTime(w, s.dt, kHourglassNeck, 0.5, 3.0);  // t = 0, 0.5, ...

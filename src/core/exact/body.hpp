@@ -38,6 +38,8 @@ inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (
 // A disc that turns, in a world with rough contacts, on the face it slides on (kSliding) or the
 // one wall it rests on (kRestX or kRestY): it slips or rolls (rolling.cpp); slide_ holds its
 // acceleration along the surface and the end of its slip, turn_ its angular acceleration.
+// Also a disc that does not turn on the wall it rests on: it slides under kinetic friction
+// until it stops (slipEnds).
 inline constexpr std::uint32_t kRolling = 256;
 // A particle sliding on a segment's face (kSliding; sliding.cpp): which
 // segment, and its constant acceleration along the face (gravity's share along it less the

@@ -190,6 +190,12 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
                                      : reboundOffWall<false>(out, vt, e, 0.0);
         }
         v = outward * out;
+        // A rough wall's friction may send it along the wall, off the other wall it rested on (a
+        // disc rolling on the floor into a side wall is kicked up it by its spin): gravity takes
+        // it again, or, sent into that wall, the wall event comes at once and decides.
+        const std::uint32_t across = alongX ? kRestY : kRestX;
+        if ((a.flags & across) && vt != 0.0 && !(alongX ? cold_[i].pinY : cold_[i].pinX))
+            a.flags &= ~across;
         // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
         if (gravity_ && outward * (alongX ? gx_ : gy_) > 0.0 && std::abs(v) < restSpeed_) {
             dv += std::abs(v);

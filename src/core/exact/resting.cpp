@@ -12,7 +12,8 @@
 //     acceleration, no cell events) if the supports within restGap_ hold it (hold()): gravity
 //     lies in the cone of their contact normals (along one, or strictly between two less than
 //     a half turn apart), or the one face gravity slides it down (the loaded support no other
-//     blocks) is tilted less than the friction angle atan(mu). Not each normal's cone widened
+//     blocks) is tilted less than the friction angle atan(mu), but not when that face is the
+//     only support of a disc that turns (it rolls off a peg's top). Not each normal's cone widened
 //     by that angle: that counts a neighbour the slide only grazes (one above the particle) as
 //     pushing with any force, and grains above a neck locked into arches nothing held up.
 //     Supports are walls, obstacles, held particles at rest and sleepers. Each sleeper has a
@@ -250,7 +251,8 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     });
     Hold h;
     h.depth = lowest >= kUngrounded ? kUngrounded : lowest + 1;
-    h.firm = lowest < kUngrounded && holdsAgainstGravity(nx, ny, count);
+    const bool turns = rough_ && turn_[i].q > 0.0;
+    h.firm = lowest < kUngrounded && holdsAgainstGravity(nx, ny, count, turns);
     if (h.firm || count == 0 || free == 0) return h;
     // An arch of discs leaning on each other would wait for the others to sleep first, and
     // none would: the slow free neighbours count too, as long as something static is among the
@@ -258,11 +260,12 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     const int statics = count;
     for (int k = 0; k < free; ++k)
         add(fx[k], fy[k]);
-    h.withFree = count > statics && holdsAgainstGravity(nx, ny, count);
+    h.withFree = count > statics && holdsAgainstGravity(nx, ny, count, turns);
     return h;
 }
 
-bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int count) const {
+bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int count,
+                                       bool turns) const {
     // Without friction: gravity in the cone of the normals, along one of them (to 1e-9 rad) or
     // strictly between two less than a half turn apart. Anything else lets i move down.
     const double pi = 3.14159265358979323846;
@@ -278,6 +281,15 @@ bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int c
         if (d > 0.0 && d < hi) hi = d, right = true;
     }
     if (left && right && hi - lo < pi - 1e-9) return true;
+    // A disc that turns, on a single support: friction cannot hold it on a tilted face or a
+    // peg's side, since gravity's torque about the contact point rolls it off (only a support
+    // right under it holds it, above). With other supports, the friction of one that loads it
+    // (a grain on top of it) can stop the roll; judged grain by grain, without forces, any
+    // other support is taken to, and the friction angle below stands. (Taking none to, a
+    // friction angle of 0 for every disc that turns, left the pile preset with e = 0 rattling
+    // for good: a disc against a wall between a sleeper under it and one on top hopped between
+    // them 2·10³ times a second.)
+    if (turns && count == 1) return false;
     // Then i slides down the face of one support that gravity presses it into, the one that no
     // other support blocks (or falls free if it presses into none). Friction holds it there
     // only if that face is tilted less than the friction angle: it carries i's whole weight.

@@ -3,8 +3,8 @@
 //
 // Where. With rough contacts (the world keeps rotation and has friction), a disc whose rotation
 // is free on the face of a segment it slides on (kSliding, sliding.cpp) or on the one wall it
-// rests on (kRestX or kRestY, resting.cpp). A disc that does not turn keeps the block's motion
-// of those contacts, bit for bit (on a face g (sin θ − μ cos θ), on a wall no friction).
+// rests on (kRestX or kRestY, resting.cpp). A disc that does not turn slides as a block: on a
+// face by sliding.cpp's law, on a wall by the block's case below.
 //
 // How. n is the surface's outward normal (from the surface to the centre), t = (−n_y, n_x)
 // its tangent, g_t = g·t and g_n = −g·n > 0 gravity's shares, q = 1/k. The contact point slips
@@ -35,6 +35,14 @@
 // particle is still in contact (setRoll from handleWall, settleAfterPair, setSlideAcceleration,
 // wake). The end of a face and leaving a wall work as for a block; a disc that falls asleep
 // stops turning (its contacts' friction would stop it).
+//
+// A block on a wall. A disc that does not turn (q = 0) resting on a wall is the case q = 0 of
+// the above: its contact point moves with its centre, so its slip is its speed along the wall,
+// and it slides at a_t = g_t − σ μ g_n until it stops, at t* = −v_t / a_t (the slip-to-roll
+// event, Kind::Roll, of a disc that cannot roll); there static friction holds it if
+// |g_t| ≤ μ g_n (it then rests, asleep if held, as a slide stopped on a face does), else it
+// slides back the way gravity pulls it. The same law as a block on a segment's face
+// (sliding.cpp), so sliding along the floor costs no events between its ends either.
 
 #include <cmath>
 
@@ -80,7 +88,9 @@ void ExactStepper::setRoll(std::uint32_t i) {
     if (!rough_) return;
     Turn& r = turn_[i];
     double nx, ny;
-    if (r.q == 0.0 || (a.flags & (kHeld | kAsleep)) || !rollingSurface(i, nx, ny)) {
+    // A block on a segment's face slides by sliding.cpp's law (setSlideAcceleration).
+    if ((a.flags & (kHeld | kAsleep)) || (r.q == 0.0 && (a.flags & kSliding)) ||
+        !rollingSurface(i, nx, ny)) {
         if (a.flags & kRolling) endRoll(i);
         return;
     }
@@ -93,8 +103,18 @@ void ExactStepper::setRoll(std::uint32_t i) {
     Slide& s = slide_[i];
     s.slipEnds = kNever;
     double at;
-    if (std::abs(slip) <= kSlipRounding * (std::abs(vt) + std::abs(r.omega * a.r)) &&
-        std::abs(gt) <= friction * (1.0 + r.q)) {
+    if (r.q == 0.0) {
+        // A block on a wall: kinetic friction against its motion until it stops, an event; at
+        // rest none while static friction holds it, else down the wall less the friction.
+        at = 0.0;
+        if (vt != 0.0) {
+            at = gt - std::copysign(friction, vt);
+        } else if (std::abs(gt) > friction) {
+            at = gt - std::copysign(friction, gt);
+        }
+        if (at * vt < 0.0) s.slipEnds = a.t + -vt / at;
+    } else if (std::abs(slip) <= kSlipRounding * (std::abs(vt) + std::abs(r.omega * a.r)) &&
+               std::abs(gt) <= friction * (1.0 + r.q)) {
         // Rolling: the contact point stays at rest on the surface.
         r.omega = vt / a.r;
         at = gt * r.q / (1.0 + r.q);
@@ -138,10 +158,18 @@ void ExactStepper::handleRoll(std::uint32_t i, const Event& ev) {
     ++a.count;  // its acceleration changes: what neighbours predicted with it is stale
     Turn& r = turn_[i];
     advanceTurn(r, ev.time);
-    double nx, ny;
-    if (rollingSurface(i, nx, ny)) r.omega = (a.vx * -ny + a.vy * nx) / a.r;
-    endRoll(i);
-    setRoll(i);
+    if (r.q == 0.0) {
+        // A block stopped by friction (it has no velocity across the wall it rests on): at
+        // rest, asleep if it may sleep there, or sliding back (settleAfterPair gives the phase).
+        a.vx = a.vy = 0.0;
+        endRoll(i);
+        settleAfterPair(i, false);
+    } else {
+        double nx, ny;
+        if (rollingSurface(i, nx, ny)) r.omega = (a.vx * -ny + a.vy * nx) / a.r;
+        endRoll(i);
+        setRoll(i);
+    }
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
 }

@@ -290,7 +290,9 @@ class ExactStepper {
     };
     static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
     [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below, double now) const;
-    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count) const;
+    // `turns`: i is a disc that turns with rough contacts (a single tilted support cannot hold it).
+    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count,
+                                           bool turns) const;
     // After an event of i: asleep if slow and held, or caught rattling.
     void settle(std::uint32_t i, double now, bool slow);
     void handleRecheck(std::uint32_t i, const Event& ev);
@@ -340,7 +342,9 @@ class ExactStepper {
     // With rough contacts, a disc that turns on the face it slides on or the wall it rests on:
     // setRoll gives it the phase its state at bodies_[i].t calls for (slipping under kinetic
     // friction until the slip-to-roll instant, rolling, or slipping for good where friction
-    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn);
+    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn on a
+    // face); a disc that does not turn on a wall slides as a block under kinetic friction until
+    // it stops (the slip-to-roll event of a disc whose slip is its speed);
     // endRoll takes it back to plain flight or rest (its spin brought to bodies_[i].t); the
     // slip-to-roll event; the outward normal of the surface it rolls on.
     void setRoll(std::uint32_t i);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <particle_sandbox/bins.hpp>
@@ -189,15 +190,18 @@ TEST(ExactObstacles, BallDroppedOntoASegmentBouncesAsOnTheFloorThenRests) {
     EXPECT_EQ(seg.counters().events, events) << "a ball at rest on a segment makes no events";
 }
 
-TEST(ExactObstacles, FrictionlessRampIsSlidDownAndAFrictionalOneHolds) {
+TEST(ExactObstacles, FrictionlessRampIsSlidDownAFrictionalOneHoldsABlockAndADiscRollsDownIt) {
     // A 30° ramp: without friction a ball placed on it slides down (it must not rest there);
-    // with mu = 1 (friction angle 45°) it stays.
+    // with mu = 1 (friction angle 45°) a disc that does not turn stays, and one that turns
+    // (k = 1/2) rolls down at g sin 30° / (1 + k): friction cannot hold a disc that turns on a
+    // single tilted face.
     const double g = 9.81, r = 0.2, angle = 30.0 * 3.14159265358979 / 180.0;
     const Vec2 from(1.0, 5.0),
         to(from.x() + 6.0 * std::cos(angle), from.y() + 6.0 * std::sin(angle));
     const Vec2 n(std::sin(angle), -std::cos(angle));  // the ramp's upper normal (y down)
     const Vec2 start = from + 0.3 * (to - from) + (r + 0.05) * n;
-    for (const double mu : {0.0, 1.0}) {
+    for (const auto& [mu, fixed] : {std::pair{0.0, false}, {1.0, true}, {1.0, false}}) {
+        SCOPED_TRACE(testing::Message() << "mu " << mu << (fixed ? ", fixed" : ", turns"));
         World w(WorldDef{.width = 10.0,
                          .height = 10.0,
                          .gravity = {0.0, g},
@@ -205,15 +209,19 @@ TEST(ExactObstacles, FrictionlessRampIsSlidDownAndAFrictionalOneHolds) {
                          .friction = mu},
                 exactMode());
         w.addObstacle(Obstacle::segment(from, to, 0.1));
-        const ParticleId id = w.add({.position = start, .radius = r});
+        const ParticleId id = w.add({.position = start, .radius = r, .fixedRotation = fixed});
         for (int k = 0; k < 30; ++k)
             w.step(1.0 / 60.0);
         const Vec2 moved = w.get(id).position - start;
+        const double down = moved.dot((to - from).normalized());
         if (mu == 0.0) {
             // Down the slope by ½·g·sin30°·t² = 0.613 m in 0.5 s, to within the hops.
-            EXPECT_NEAR(moved.dot((to - from).normalized()), 0.5 * g * 0.5 * 0.25, 0.03);
-        } else {
+            EXPECT_NEAR(down, 0.5 * g * 0.5 * 0.25, 0.03);
+        } else if (fixed) {
             EXPECT_LT(moved.norm(), 0.01);
+        } else {
+            // Rolling from rest: ½·g·sin30°/1.5·t² = 0.409 m in 0.5 s.
+            EXPECT_NEAR(down, 0.5 * g * 0.5 / 1.5 * 0.25, 1e-9);
         }
         EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
     }
@@ -573,6 +581,48 @@ TEST(ExactObstacles, BallRestingOnAPegWakesWhenHit) {
         w.step(1.0 / 60.0);
     EXPECT_GT(w.get(top).position.y(), 6.0);  // fell off, below the peg's top
     EXPECT_LT(deepestObstacleOverlap(w), 1e-9);
+}
+
+/// A ball (r = 5 cm, k = 2/5, or fixed rotation) placed at rest on a peg of 5 cm, 3 mm right of
+/// its top, in a 1 m box (e = 0.3, μ = 0.5, g = 9.81), stepped in frames of 1/60 s for
+/// `seconds`: where its centre is then.
+Vec2 offAPeg(const SolverSettings& solver, bool fixed, double seconds) {
+    World w(WorldDef{.width = 1.0,
+                     .height = 1.0,
+                     .gravity = {0.0, 9.81},
+                     .restitution = 0.3,
+                     .friction = 0.5},
+            solver);
+    w.addObstacle(Obstacle::peg({0.5, 0.6}, 0.05));
+    const double off = 0.003, d = 0.1 * (1.0 + 1e-9);  // touching, to a tenth of a nanometre
+    const ParticleId id = w.add({.position = {0.5 + off, 0.6 - std::sqrt(d * d - off * off)},
+                                 .radius = 0.05,
+                                 .inertiaFactor = 0.4,
+                                 .fixedRotation = fixed});
+    const int frames = static_cast<int>(std::lround(seconds * 60.0));
+    for (int k = 0; k < frames; ++k)
+        w.step(1.0 / 60.0);
+    return w.get(id).position;
+}
+
+TEST(ExactObstacles, ABallThatTurnsRollsOffAPegTopAsInTheSubstepModeABlockStaysThere) {
+    // 3 mm off the top the contact is tilted 1.7°, well inside the friction angle (26.6°): a
+    // block is held there and sleeps, but a ball that turns rolls off, as it does in the substep
+    // mode (8 substeps of 1/480 s; 32 substeps put it 0.6 mm from there at 0.4 s, 0.8 mm at 0.5 s).
+    const SolverSettings exact{.mode = StepMode::Exact},
+        substep{.mode = StepMode::Substep, .substeps = 8};
+    for (const double t : {0.3, 0.4, 0.5}) {
+        SCOPED_TRACE(testing::Message() << "t " << t);
+        const Vec2 e = offAPeg(exact, false, t), s = offAPeg(substep, false, t);
+        EXPECT_NEAR(e.x(), s.x(), 2e-3);
+        EXPECT_NEAR(e.y(), s.y(), 2e-3);
+    }
+    // Off the peg by 0.6 s, 4 cm to its right and falling.
+    const Vec2 gone = offAPeg(exact, false, 0.6);
+    EXPECT_GT(gone.x(), 0.6);
+    EXPECT_GT(gone.y(), 0.6);
+    // The block lands through its tenth of a nanometre and stays.
+    EXPECT_LT((offAPeg(exact, true, 1.0) - offAPeg(exact, true, 0.0)).norm(), 1e-9);
 }
 
 /// What dropBalls saw.
