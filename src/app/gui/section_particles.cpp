@@ -110,8 +110,21 @@ void ControlPanel::selected(const Session& s) {
 }
 
 void ControlPanel::selectedValues(const Session& s, const std::optional<Particle>& p) {
+    // A field typed in belongs to the particle it was typed for: a click on another particle
+    // (or on empty space) both leaves the field, which applies the text, and changes the
+    // selection, and the text goes to the particle it was meant for, not the new one.
+    const bool typing = std::find(fieldActive_.begin(), fieldActive_.end(), true) !=
+                        fieldActive_.end();
+    if (!typing) fieldOwner_ = p ? p->id : kNullParticle;
     if (!p) {
         ImGui::TextDisabled("Click a particle (or a row below) to see its values");
+        // The fields are gone with the selection: what was being typed is applied.
+        for (std::size_t k = 0; k < std::size(kFields); ++k) {
+            if (fieldActive_[k] && fieldOwner_ != kNullParticle) {
+                out_.emplace_back(cmd::EditParticle{fieldOwner_, kFields[k].field,
+                                                    fieldText_[k].data()});
+            }
+        }
         fieldActive_.fill(false);
         return;
     }
@@ -148,7 +161,7 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         fieldActive_[k] = ImGui::IsItemActive();
         mark(std::string("selected ") + f.name);
         if (enter || left) {
-            out_.emplace_back(cmd::EditParticle{p->id, f.field, text.data()});
+            out_.emplace_back(cmd::EditParticle{fieldOwner_, f.field, text.data()});
             fieldActive_[k] = false;
         }
         tip(fieldHelp(f.field, axes.yUp));

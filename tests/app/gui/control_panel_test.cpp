@@ -292,6 +292,43 @@ TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
     EXPECT_FALSE(session_->selected());
 }
 
+TEST_F(ControlPanelTest, TextTypedForOneParticleGoesToItWhenAClickSelectsAnother) {
+    const std::vector<ParticleId> ids = session_->world().ids();
+    ASSERT_GE(ids.size(), 2u);
+    const ParticleId first = ids.front(), second = ids.back();
+    const double secondMass = session_->world().get(second).mass;
+    for (const bool toAnother : {true, false}) {
+        session_->apply(cmd::Select{first});
+        frame();
+        if (toAnother) {  // far down the panel: fold the sections above it, once
+            for (const char* section : {"section Physics", "section Show", "section Readouts"})
+                click(section);
+        }
+        ImGuiIO& io = gui_->io();
+        io.MousePos = centre("selected mass");
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        const char* typed = toAnother ? "4" : "5";
+        io.AddInputCharacter(static_cast<unsigned>(typed[0]));
+        frame();
+        // A click in the box: the session selects another particle (or none), and the click
+        // leaves the field, which applies what was typed.
+        session_->apply(cmd::Select{toAnother ? second : kNullParticle});
+        io.MousePos = ImVec2(kSize - 5.f, kSize / 2.f);
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        frame();
+        EXPECT_EQ(session_->world().get(first).mass, toAnother ? 4.0 : 5.0)
+            << "the text goes to the particle it was typed for";
+        EXPECT_EQ(session_->world().get(second).mass, secondMass) << "not to the one clicked";
+    }
+}
+
 TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPixelWindow) {
     // The Selected particle section is below Time, Physics, Show and Readouts, under the fold
     // of an 800-pixel window: a click on a particle scrolls the panel to it.
