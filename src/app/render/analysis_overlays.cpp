@@ -1,5 +1,7 @@
 #include "render/analysis_overlays.hpp"
 
+#include "render/polyline.hpp"
+
 namespace psb::app {
 
 void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const World& world,
@@ -16,12 +18,15 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
         for (const double m : world.particles().mass)
             mass += m;
         plots_.draw(renderer, font, series, layout.plots, layout.plotRows, layout.plotRowHeight,
-                    mass, colours, view.yUp);
+                    mass, colours, view.yUp, chartLineWidth(view.uiScale));
     }
     if (view.speeds && layout.speeds.w > 0) {
-        speeds_.draw(renderer, font, world.particles(), layout.speeds, colours);
+        speeds_.draw(renderer, font, world.particles(), layout.speeds, colours,
+                     chartLineWidth(view.uiScale));
     }
-    if (bins && layout.bins.w > 0) bins_.draw(renderer, font, *bins, layout.bins, colours);
+    if (bins && layout.bins.w > 0) {
+        bins_.draw(renderer, font, *bins, layout.bins, colours, chartLineWidth(view.uiScale));
+    }
 }
 
 }  // namespace psb::app

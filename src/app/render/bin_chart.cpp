@@ -1,5 +1,7 @@
 #include "render/bin_chart.hpp"
 
+#include "render/polyline.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -27,7 +29,7 @@ BinChartLayout binChartLayout(const Font& font, float x, float width, float lege
 }
 
 void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h,
-                    const PixelRect& box, const Palette& colours) {
+                    const PixelRect& box, const Palette& colours, float lineWidth) {
     const ChartFrame f = beginChart(font, box, boxes_, text_, colours);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
@@ -103,8 +105,8 @@ void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram
 
     boxes_.draw(renderer, nullptr);
     if (curve_.size() > 1) {
-        SDL_SetRenderDrawColor(renderer, normal.r, normal.g, normal.b, 255);
-        SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
+        drawPolyline(renderer, thick_, curve_.data(), static_cast<int>(curve_.size()), lineWidth,
+                     SDL_Color{normal.r, normal.g, normal.b, 255});
     }
     font.draw(text_);
 }

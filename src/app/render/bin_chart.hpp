@@ -36,10 +36,10 @@ class BinChart {
   public:
     /// Draws `h` in `box` (pixels, see PanelLayout).
     void draw(SDL_Renderer* renderer, const Font& font, const BinHistogram& h, const PixelRect& box,
-              const Palette& colours = palette(Theme::Dark));
+              const Palette& colours = palette(Theme::Dark), float lineWidth = 1.f);
 
   private:
-    GeometryBatch boxes_, text_;
+    GeometryBatch boxes_, text_, thick_;  // thick_: the curves wider than a pixel
     std::vector<SDL_FPoint> curve_;
 };
 

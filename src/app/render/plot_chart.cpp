@@ -1,5 +1,7 @@
 #include "render/plot_chart.hpp"
 
+#include "render/polyline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -38,7 +40,7 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 
 void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
                      const PixelRect& box, int rows, int rowHeight, double totalMass,
-                     const Palette& colours, bool yUp) {
+                     const Palette& colours, bool yUp, float lineWidth) {
     boxes_.clear();
     text_.clear();
     rows = std::clamp(rows, 1, 4);
@@ -129,8 +131,8 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     boxes_.draw(renderer, nullptr);
     std::size_t begin = 0;
     for (const auto& [color, end] : lines) {
-        SDL_SetRenderDrawColor(renderer, color.r, color.g, color.b, 255);
-        SDL_RenderDrawLinesF(renderer, line_.data() + begin, static_cast<int>(end - begin));
+        drawPolyline(renderer, thick_, line_.data() + begin, static_cast<int>(end - begin),
+                     lineWidth, SDL_Color{color.r, color.g, color.b, 255});
         begin = end;
     }
     font.draw(text_);

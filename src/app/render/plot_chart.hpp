@@ -44,14 +44,16 @@ class PlotChart {
   public:
     /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
     /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
-    /// momentum plots' floor; `yUp`: py upward (the y up option). Nothing but the frame when
+    /// momentum plots' floor; `yUp`: py upward (the y up option); `lineWidth` pixels
+    /// (chartLineWidth). Nothing but the frame when
     /// `series` has fewer than 2 samples.
     void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
               const PixelRect& box, int rows, int rowHeight, double totalMass,
-              const Palette& colours = palette(Theme::Dark), bool yUp = false);
+              const Palette& colours = palette(Theme::Dark), bool yUp = false,
+              float lineWidth = 1.f);
 
   private:
-    GeometryBatch boxes_, text_;
+    GeometryBatch boxes_, text_, thick_;  // thick_: the curves wider than a pixel
     std::vector<SDL_FPoint> line_;
 };
 

@@ -1,5 +1,7 @@
 #include "render/speed_chart.hpp"
 
+#include "render/polyline.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,7 +14,7 @@
 namespace psb::app {
 
 void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
-                      const PixelRect& box, const Palette& colours) {
+                      const PixelRect& box, const Palette& colours, float lineWidth) {
     const ChartFrame f = beginChart(font, box, boxes_, text_, colours);
     const float x = f.x, y = f.y, boxW = f.w, height = f.h, lh = f.lineHeight;
     curve_.clear();
@@ -73,8 +75,8 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
 
     boxes_.draw(renderer, nullptr);
     if (h.particles > 0) {
-        SDL_SetRenderDrawColor(renderer, curve.r, curve.g, curve.b, 255);
-        SDL_RenderDrawLinesF(renderer, curve_.data(), static_cast<int>(curve_.size()));
+        drawPolyline(renderer, thick_, curve_.data(), static_cast<int>(curve_.size()), lineWidth,
+                     SDL_Color{curve.r, curve.g, curve.b, 255});
     }
     font.draw(text_);
 }

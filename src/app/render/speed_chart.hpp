@@ -26,10 +26,11 @@ class SpeedChart {
 
     /// Draws the histogram of `p` in `box` (pixels, see PanelLayout).
     void draw(SDL_Renderer* renderer, const Font& font, const ParticleArrays& p,
-              const PixelRect& box, const Palette& colours = palette(Theme::Dark));
+              const PixelRect& box, const Palette& colours = palette(Theme::Dark),
+              float lineWidth = 1.f);
 
   private:
-    GeometryBatch boxes_, text_;
+    GeometryBatch boxes_, text_, thick_;  // thick_: the curves wider than a pixel
     std::vector<SDL_FPoint> curve_;
 };
 
