@@ -41,7 +41,8 @@ void BinChart::draw(SDL_Renderer* renderer, const Font& font, const BinHistogram
     float lineY = y + 4;
     for (std::size_t k = 0; k < h.legend.size(); ++k) {
         for (const std::string& line : wrapLines(font, {h.legend[k]}, box.w - 8)) {
-            font.layout(line, x + 8, lineY, colors[std::min<std::size_t>(k, 3)], text_);
+            font.layout(line, x + 8, lineY,
+                        sdlTextColor(colors[std::min<std::size_t>(k, 3)], colours.panel), text_);
             lineY += lh;
         }
     }

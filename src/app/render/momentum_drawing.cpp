@@ -89,8 +89,8 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     const std::vector<std::string> lines = momentumLegend(world, now, arrowSeconds, axes);
     const SDL_Color colors[3] = {sum, each, cm};
     for (std::size_t k = 0; k < lines.size(); ++k) {
-        font.layout(lines[k], lx + 4, ly + 2 + static_cast<float>(k * font.lineHeight()), colors[k],
-                    text_);
+        font.layout(lines[k], lx + 4, ly + 2 + static_cast<float>(k * font.lineHeight()),
+                    sdlTextColor(colors[k], colours.panel), text_);
     }
     font.draw(text_);
 }

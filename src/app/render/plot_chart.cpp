@@ -83,7 +83,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         const Plot& pl = plots[k];
         const float top = y + 6 + static_cast<float>(k) * rowH + lh;
         const float bottom = top + rowH - 2 * lh - 8;
-        font.layout(pl.title, left, top - lh - 1, pl.color, text_);
+        font.layout(pl.title, left, top - lh - 1, sdlTextColor(pl.color, colours.panel), text_);
         // Axes: left and bottom, grey.
         boxes_.quad(left - 1, top, left, bottom, axis);
         boxes_.quad(left - 1, bottom, right, bottom + 1, axis);

@@ -14,6 +14,11 @@ namespace psb::app {
 [[nodiscard]] inline SDL_Color sdlColor(Rgba c, Uint8 alpha) {
     return {c.r, c.g, c.b, alpha};
 }
+/// `c` as text on the palette's chart panels (`panel`), dark or light enough to read
+/// (readableText).
+[[nodiscard]] inline SDL_Color sdlTextColor(SDL_Color c, Rgba panel) {
+    return sdlColor(readableText(Rgba{c.r, c.g, c.b, c.a}, panel));
+}
 inline void setDrawColor(SDL_Renderer* renderer, Rgba c) {
     SDL_SetRenderDrawColor(renderer, c.r, c.g, c.b, c.a);
 }

@@ -27,9 +27,10 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
     char buf[128];
     std::snprintf(buf, sizeof buf, "bars: speeds of %zu particles%s", h.particles,
                   h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
-    font.layout(buf, x + 8, y + 4, bar, text_);
+    font.layout(buf, x + 8, y + 4, sdlTextColor(bar, colours.panel), text_);
     // The 2-D Maxwell-Boltzmann distribution at kT = the mean kinetic energy per particle.
-    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh, curve, text_);
+    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh,
+                sdlTextColor(curve, colours.panel), text_);
     boxes_.quad(left - 1, top, left, bottom, axis);
     boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
 

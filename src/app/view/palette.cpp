@@ -99,6 +99,24 @@ double luminance(Rgba c) {
 
 }  // namespace
 
+Rgba readableText(Rgba colour, Rgba background) {
+    const Rgba bg{background.r, background.g, background.b};
+    const Rgba start{colour.r, colour.g, colour.b};
+    if (contrastRatio(start, bg) >= 4.5) return colour;
+    const bool darken = luminance(bg) > 0.18;  // where black gives more contrast than white
+    const auto mix = [&](std::uint8_t c, double t) {
+        const double target = darken ? 0.0 : 255.0;
+        return static_cast<std::uint8_t>(std::lround(c + (target - c) * t));
+    };
+    Rgba out = colour;
+    for (int step = 1; step <= 20; ++step) {
+        const double t = step / 20.0;
+        out = {mix(colour.r, t), mix(colour.g, t), mix(colour.b, t), colour.a};
+        if (contrastRatio(Rgba{out.r, out.g, out.b}, bg) >= 4.5) break;
+    }
+    return out;
+}
+
 const Palette& palette(Theme theme) {
     return theme == Theme::Light ? kLight : kDark;
 }

@@ -71,4 +71,10 @@ struct Palette {
 /// WCAG 2's contrast ratio of two opaque colours, 1 (the same) to 21 (black on white).
 [[nodiscard]] double contrastRatio(Rgba a, Rgba b);
 
+/// `colour` as text on `background` (its alpha ignored): itself when their contrast ratio is
+/// at least 4.5:1 (WCAG AA for text), else moved towards black on a light background (towards
+/// white on a dark one) just far enough. A legend line in its curve's colour stays that colour's
+/// hue and reads: Okabe-Ito orange on the light panel is 2:1, the shade this gives 4.5:1.
+[[nodiscard]] Rgba readableText(Rgba colour, Rgba background);
+
 }  // namespace psb::app

@@ -49,6 +49,29 @@ TEST(Palette, TextIsReadableOnItsBackgroundInBothThemes) {
     EXPECT_GE(contrastRatio(palette(Theme::Light).text, {255, 255, 255}), 15.0);
 }
 
+TEST(Palette, LegendsInTheirCurvesColoursAreReadableOnThePanel) {
+    for (const Theme theme : {Theme::Dark, Theme::Light}) {
+        const Palette& p = palette(theme);
+        const Rgba panel = blend(p.panel, p.background);
+        SCOPED_TRACE(toString(theme));
+        for (const Rgba c : {p.energyPlot, p.pxPlot, p.pyPlot, p.ratePlot, p.histogramBar,
+                             p.theoryCurve, p.binBar, p.normalCurve, p.momentumArrow,
+                             p.totalMomentum, p.centreOfMass}) {
+            // The panel as drawn (its opacity over the background), and as the code passes it.
+            EXPECT_GE(contrastRatio(readableText(c, panel), panel), 4.5);
+            EXPECT_GE(contrastRatio(readableText(c, p.panel), panel), 4.4);
+        }
+    }
+    // Okabe-Ito orange on the light panel is 2:1; its text shade keeps the hue, darker.
+    const Rgba orange{230, 159, 0};
+    const Rgba text = readableText(orange, palette(Theme::Light).panel);
+    EXPECT_LT(contrastRatio(orange, {243, 243, 243}), 2.5);
+    EXPECT_LT(text.r, orange.r);
+    EXPECT_GT(text.r, text.g);
+    EXPECT_GT(text.g, text.b);
+    EXPECT_EQ(readableText({17, 17, 17}, {255, 255, 255}), (Rgba{17, 17, 17})) << "kept";
+}
+
 TEST(Palette, TheLightThemesChartColoursAreOkabeItoAndDistinct) {
     const Palette& p = palette(Theme::Light);
     const std::vector<Rgba> plots = {p.energyPlot, p.pxPlot, p.pyPlot, p.ratePlot};
