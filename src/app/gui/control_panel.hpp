@@ -160,6 +160,9 @@ class ControlPanel {
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 8> fieldText_{};
     std::array<bool, 8> fieldActive_{};
+    /// The scene's description is being edited (else shown wrapped), and its field is to take
+    /// the keyboard.
+    bool descriptionEditing_ = false, focusDescription_ = false;
     /// The particle the Selected particle fields were typed for (the selection may change
     /// before the typed text is applied).
     ParticleId fieldOwner_ = kNullParticle;

@@ -38,14 +38,48 @@ void ControlPanel::sceneText(const Session& s) {
     tip("The scene's title: the window's title shows it, and a save keeps it");
     if (!descriptionActive_) copyText(description_, s.meta().description);
     ImGui::TextUnformatted("Description");
-    ImGui::InputTextMultiline("##description", description_.data(), description_.size(),
-                              ImVec2(-1.f, ImGui::GetTextLineHeight() * 4.f),
-                              ImGuiInputTextFlags_CtrlEnterForNewLine);
-    descriptionActive_ = ImGui::IsItemActive();
-    const bool descriptionDone = ImGui::IsItemDeactivatedAfterEdit();
-    mark("description");
-    tip("What the scene shows, for whoever opens it next; a save keeps it. Enter or a click "
-        "elsewhere keeps what you typed");
+    bool edit = false;
+    if (!descriptionEditing_) {
+        ImGui::SameLine();
+        edit = ImGui::SmallButton("Edit");
+        mark("description edit");
+        tip("Write what the scene shows (Enter or a click elsewhere keeps it)");
+    }
+    const ImVec2 size(
+        -1.f, ImGui::GetTextLineHeightWithSpacing() * 4.f + 2.f * ImGui::GetStyle().FramePadding.y);
+    bool descriptionDone = false;
+    if (!descriptionEditing_) {
+        // Read with its words wrapped (this ImGui's multi-line field does not wrap them); a
+        // click on it, or Edit, opens the field.
+        ImGui::BeginChild("##description text", size, true);
+        ImGui::PushTextWrapPos(0.f);
+        if (description_[0] == '\0') {
+            ImGui::TextDisabled("(none yet: click to write one)");
+        } else {
+            ImGui::TextUnformatted(description_.data());
+        }
+        ImGui::PopTextWrapPos();
+        const bool clicked = ImGui::IsWindowHovered() && ImGui::IsMouseClicked(0);
+        ImGui::EndChild();
+        mark("description");
+        tip("What the scene shows, for whoever opens it next; a save keeps it. Click to edit");
+        if (clicked || edit) {
+            descriptionEditing_ = true;
+            focusDescription_ = true;
+        }
+    } else {
+        if (focusDescription_) ImGui::SetKeyboardFocusHere();
+        ImGui::InputTextMultiline("##description", description_.data(), description_.size(), size,
+                                  ImGuiInputTextFlags_CtrlEnterForNewLine);
+        descriptionActive_ = ImGui::IsItemActive();
+        if (descriptionActive_) focusDescription_ = false;
+        descriptionDone = ImGui::IsItemDeactivatedAfterEdit();
+        // Left (Enter, a click elsewhere, Esc) or Done: back to the wrapped text.
+        if (ImGui::IsItemDeactivated()) descriptionEditing_ = false;
+        mark("description");
+        tip("What the scene shows, for whoever opens it next; a save keeps it. Enter or a click "
+            "elsewhere keeps what you typed (Ctrl+Enter: a new line)");
+    }
     if (titleDone || descriptionDone) {
         out_.emplace_back(cmd::SetSceneText{title_.data(), description_.data()});
     }

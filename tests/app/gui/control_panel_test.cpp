@@ -329,6 +329,30 @@ TEST_F(ControlPanelTest, TextTypedForOneParticleGoesToItWhenAClickSelectsAnother
     }
 }
 
+TEST_F(ControlPanelTest, TheDescriptionReadsWrappedAndAClickEditsIt) {
+    if (panel_.item("description") == nullptr) click("section Scene");
+    ASSERT_NE(panel_.item("description"), nullptr);
+    ASSERT_NE(panel_.item("description edit"), nullptr) << "shown as text, with an Edit button";
+    const std::string before = session_->meta().description;
+    click("description");
+    EXPECT_EQ(panel_.item("description edit"), nullptr) << "now the field";
+    ImGuiIO& io = gui_->io();
+    frame();
+    for (const char c : std::string(" More."))
+        io.AddInputCharacter(static_cast<unsigned>(c));
+    frame();
+    io.MousePos = ImVec2(kSize - 5.f, kSize / 2.f);  // a click elsewhere keeps it
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+    frame();
+    EXPECT_NE(session_->meta().description, before);
+    EXPECT_NE(session_->meta().description.find("More."), std::string::npos)
+        << session_->meta().description;
+    EXPECT_NE(panel_.item("description edit"), nullptr) << "back to the wrapped text";
+}
+
 TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPixelWindow) {
     // The Selected particle section is below Time, Physics, Show and Readouts, under the fold
     // of an 800-pixel window: a click on a particle scrolls the panel to it.
