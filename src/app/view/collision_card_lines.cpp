@@ -44,7 +44,7 @@ std::string energyChange(double before, double after) {
 CollisionCardText collisionCardText(const CollisionCard& card, const Axes& axes) {
     const Collision& c = card.collision;
     // Signed components as the user reads them (the y up option).
-    const auto components = [&](const Vec2& v) { return psb::app::components(axes.vector(v)); };
+    const auto shown = [&](const Vec2& v) { return components(axes.vector(v)); };
     CollisionCardText t;
     const std::string a = std::to_string(card.numberA);
     const std::string at = " at t = " + quantity(c.time, "s");
@@ -52,18 +52,13 @@ CollisionCardText collisionCardText(const CollisionCard& card, const Axes& axes)
         const std::string b = std::to_string(card.numberB);
         t.title = "Particles " + a + " and " + b + at;
         t.rows = {
-            {"v " + a, "m/s", components(c.aBefore), components(c.aAfter),
-             "Particle " + a + "'s velocity"},
-            {"v " + b, "m/s", components(c.bBefore), components(c.bAfter),
-             "Particle " + b + "'s velocity"},
-            {"p " + a, "kg m/s", components(card.massA * c.aBefore),
-             components(card.massA * c.aAfter),
+            {"v " + a, "m/s", shown(c.aBefore), shown(c.aAfter), "Particle " + a + "'s velocity"},
+            {"v " + b, "m/s", shown(c.bBefore), shown(c.bAfter), "Particle " + b + "'s velocity"},
+            {"p " + a, "kg m/s", shown(card.massA * c.aBefore), shown(card.massA * c.aAfter),
              "Particle " + a + "'s momentum m v (m = " + quantity(card.massA, "kg", false) + ")"},
-            {"p " + b, "kg m/s", components(card.massB * c.bBefore),
-             components(card.massB * c.bAfter),
+            {"p " + b, "kg m/s", shown(card.massB * c.bBefore), shown(card.massB * c.bAfter),
              "Particle " + b + "'s momentum m v (m = " + quantity(card.massB, "kg", false) + ")"},
-            {"total p", "kg m/s", components(card.momentumBefore()),
-             components(card.momentumAfter()),
+            {"total p", "kg m/s", shown(card.momentumBefore()), shown(card.momentumAfter()),
              "The two momenta added: a collision between two particles never changes it"},
         };
     } else {
@@ -72,10 +67,8 @@ CollisionCardText collisionCardText(const CollisionCard& card, const Axes& axes)
                                       : std::string(card.peg ? "a peg" : "a wall segment");
         t.title = "Particle " + a + " and " + other + at;
         t.rows = {
-            {"v " + a, "m/s", components(c.aBefore), components(c.aAfter),
-             "Particle " + a + "'s velocity"},
-            {"p " + a, "kg m/s", components(card.massA * c.aBefore),
-             components(card.massA * c.aAfter),
+            {"v " + a, "m/s", shown(c.aBefore), shown(c.aAfter), "Particle " + a + "'s velocity"},
+            {"p " + a, "kg m/s", shown(card.massA * c.aBefore), shown(card.massA * c.aAfter),
              "Particle " + a + "'s momentum m v (m = " + quantity(card.massA, "kg", false) +
                  "): a fixed wall or obstacle changes it"},
         };
