@@ -23,20 +23,12 @@ class Header {
     }
     /// "vy_m_per_s", or with y up "vy_up_m_per_s": `stem` then "_up" then `_unit`.
     Header& y(const Axes& axes, std::string_view stem, std::string_view unit) {
-        std::string name(stem);
-        if (axes.yUp) name += "_up";
-        name += '_';
-        name += unit;
-        return add(std::move(name));
+        return named(stem, axes.yUp ? "_up" : "", unit);
     }
     /// The angular velocity or momentum column: positive clockwise on screen with y down,
-    /// counterclockwise with y up (Axes::spin).
+    /// counterclockwise with y up (Axes::spin), which "_ccw" says.
     Header& turning(const Axes& axes, std::string_view stem, std::string_view unit) {
-        std::string name(stem);
-        if (axes.yUp) name += "_ccw";
-        name += '_';
-        name += unit;
-        return add(std::move(name));
+        return named(stem, axes.yUp ? "_ccw" : "", unit);
     }
     [[nodiscard]] Table table(Separator separator) const {
         std::vector<std::string_view> views(names_.begin(), names_.end());
@@ -44,6 +36,13 @@ class Header {
     }
 
   private:
+    Header& named(std::string_view stem, std::string_view mark, std::string_view unit) {
+        std::string name(stem);
+        name += mark;
+        name += '_';
+        name += unit;
+        return add(std::move(name));
+    }
     std::vector<std::string> names_;
 };
 
