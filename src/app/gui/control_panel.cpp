@@ -261,16 +261,24 @@ void ControlPanel::scene(const Session& s) {
     mark("Open");
     tip("Open the scene file named on the left");
     fileError(s);
-    if (!s.recentFiles().empty()) {
-        ImGui::TextUnformatted("Recent files");
-        for (const auto& f : s.recentFiles()) {
+    // One line whether or not there are any, so that opening the first file does not move the
+    // controls below (a click aimed at one would land on another).
+    const auto& recent = s.recentFiles();
+    ImGui::BeginDisabled(recent.empty());
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Recent files").x -
+                            2.f * ImGui::GetStyle().ItemInnerSpacing.x);
+    if (ImGui::BeginCombo("Recent files", recent.empty() ? "(none yet)" : "open again...")) {
+        for (const auto& f : recent) {
             if (ImGui::Selectable(f.filename().string().c_str())) {
                 copyPath(path_, f);
                 out_.emplace_back(cmd::OpenFile{f});
             }
             tip(f.string().c_str());
         }
+        ImGui::EndCombo();
     }
+    ImGui::EndDisabled();
+    mark("Recent files");
 }
 
 void ControlPanel::fileError(const Session& s) {

@@ -246,6 +246,25 @@ TEST_F(ControlPanelTest, APresetIsOpenedByItsName) {
     EXPECT_EQ(session_->meta().name, "Newton's cradle");
 }
 
+TEST_F(ControlPanelTest, OpeningAFileDoesNotMoveTheControlsBelowTheRecentList) {
+    click("section Scene");
+    ASSERT_TRUE(session_->recentFiles().empty());
+    ASSERT_NE(panel_.item("Recent files"), nullptr) << "there, greyed, before any file";
+    // Two files whose paths are as long: the second adds a recent file, and nothing moves.
+    session_->apply(cmd::OpenFile{findAsset("scenes/02-newtons-cradle.json")});
+    frame();
+    frame();
+    const PanelItem* physics = panel_.item("section Physics");
+    ASSERT_NE(physics, nullptr);
+    const float before = physics->y0;
+    session_->apply(cmd::OpenFile{findAsset("scenes/03-billiards-break.json")});
+    frame();
+    frame();
+    ASSERT_EQ(session_->recentFiles().size(), 2u);
+    EXPECT_EQ(panel_.item("section Physics")->y0, before)
+        << "the recent files take one line however many there are";
+}
+
 TEST_F(ControlPanelTest, EveryReadoutsNameEndsBeforeItsValueBegins) {
     // Under gravity (the "Mechanical energy" row), with text larger and larger against the
     // panel's width (as a narrower panel would be): the names' column is as wide as its widest
