@@ -39,8 +39,9 @@ double CollisionCard::energyAfter() const {
     return energy(massA, collision.aAfter) + energy(massB, collision.bAfter);
 }
 
-std::optional<CollisionLog> LastCollision::wanted(bool shown, std::optional<ParticleId> selected) {
-    if (!shown) return std::nullopt;
+std::optional<CollisionLog> LastCollision::wanted(bool listening,
+                                                  std::optional<ParticleId> selected) {
+    if (!listening) return std::nullopt;
     if (selected) return CollisionLog({*selected});
     return CollisionLog();
 }

@@ -39,9 +39,17 @@ struct CollisionCard {
 
 class LastCollision {
   public:
-    /// Which collisions the world should record for the card, shown or not, following
-    /// `selected` (none: every collision, of which the card keeps the pairs).
-    [[nodiscard]] static std::optional<CollisionLog> wanted(bool shown,
+    /// Up to this many particles the card follows the collisions while hidden too, so that J
+    /// pressed after a collision shows it (a lesson's few balls); beyond, it listens only while
+    /// shown, and a large scene records nothing for a card nobody looks at.
+    static constexpr std::size_t kListensHiddenUpTo = 60;
+    /// Whether the card follows the collisions: shown, or a world of few particles.
+    [[nodiscard]] static bool listening(bool shown, std::size_t particles) {
+        return shown || particles <= kListensHiddenUpTo;
+    }
+    /// Which collisions the world should record for the card (none when not `listening`),
+    /// following `selected` (none: every collision, of which the card keeps the pairs).
+    [[nodiscard]] static std::optional<CollisionLog> wanted(bool listening,
                                                             std::optional<ParticleId> selected);
 
     /// The records of a step (any particles'; those the card does not follow are passed over):

@@ -76,20 +76,22 @@ void Session::stepOnce(double now) {
     const double dt = doc_.meta.dt;  // the scene's frame length
     // One collision log for the instruments that read it (collision_feed.hpp).
     const std::optional<ParticleId> selected = tools_.selection.id();
+    const bool card = LastCollision::listening(view_.collision, doc_.world.size());
     listen(doc_.world,
-           mergeWanted(data_.collisionsWanted(), LastCollision::wanted(view_.collision, selected)));
+           mergeWanted(data_.collisionsWanted(), LastCollision::wanted(card, selected)));
     data_.beforeStep(doc_.world);
     doc_.world.step(dt);
     const std::vector<Collision> records = heard(doc_.world);
     data_.afterStep(doc_.world, records);
-    if (view_.collision) lastCollision_.heard(records, doc_.world, selected);
+    if (card) lastCollision_.heard(records, doc_.world, selected);
     history_.timeline.stepped(dt);
 }
 
 void Session::listenForCollisions() {
     // One collision log for the instruments that read it (collision_feed.hpp).
+    const bool card = LastCollision::listening(view_.collision, doc_.world.size());
     listen(doc_.world, mergeWanted(data_.collisionsWanted(),
-                                   LastCollision::wanted(view_.collision, tools_.selection.id())));
+                                   LastCollision::wanted(card, tools_.selection.id())));
 }
 
 void Session::update(double realSeconds, double now, double budgetMs) {

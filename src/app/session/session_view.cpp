@@ -105,7 +105,8 @@ void Session::handle(const cmd::SetShow& c) {
     say(showMessage(c.option, c.on));
     if (c.option == cmd::ShowOption::Ruler && !c.on) ruler_.letGo();
     if (c.option == cmd::ShowOption::Collision) {
-        if (!c.on) lastCollision_.clear();
+        // Hidden in a large scene, it stops listening, and a card kept would go stale.
+        if (!LastCollision::listening(c.on, doc_.world.size())) lastCollision_.clear();
         listenForCollisions();
     }
     // The side column's panels change what the box is fitted beside.

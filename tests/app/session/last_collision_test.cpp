@@ -44,12 +44,14 @@ class LastCollisionCard : public SessionFixture, public ::testing::WithParamInte
     double now_ = 0.0;
 };
 
-TEST_P(LastCollisionCard, AHeadOnCollisionReadsOffTheCard) {
+TEST_P(LastCollisionCard, AHeadOnCollisionReadsOffTheCardOpenedAfterIt) {
     Session s = twoBallSession();
     run(s, 20);
-    EXPECT_FALSE(s.lastCollision()) << "hidden: nothing kept";
-    s.apply(cmd::SetShow{cmd::ShowOption::Collision, true});
+    EXPECT_FALSE(s.lastCollision()) << "no collision yet";
+    // The card hidden through the collision: a scene of two balls is followed all along, so J
+    // pressed afterwards shows it.
     run(s, 60);
+    s.apply(cmd::SetShow{cmd::ShowOption::Collision, true});
     ASSERT_TRUE(s.lastCollision());
     const CollisionCard& c = *s.lastCollision();
     ASSERT_TRUE(c.pair());
@@ -87,11 +89,28 @@ TEST_P(LastCollisionCard, TheCardFollowsTheSelectionAndGoesWhenTheClockGoesBackB
     EXPECT_EQ(s.lastCollision()->numberA, particleNumber(heavy));
     EXPECT_EQ(s.lastCollision()->massA, 3.0);
     EXPECT_NEAR(s.lastCollision()->collision.impulse.x(), 4.5, 1e-12) << "3 kg x (0.5 - -1)";
-    // Hidden, the card is gone; shown again, it waits for the next collision.
+    // Hidden and shown again, a small scene's card is still there.
     s.apply(cmd::SetShow{cmd::ShowOption::Collision, false});
-    EXPECT_FALSE(s.lastCollision());
     s.apply(cmd::SetShow{cmd::ShowOption::Collision, true});
-    EXPECT_FALSE(s.lastCollision());
+    EXPECT_TRUE(s.lastCollision());
+}
+
+TEST_P(LastCollisionCard, ALargeScenesCardListensOnlyWhileShown) {
+    World w = twoBalls(GetParam());
+    // Beyond the card's small-scene limit, the rest far from the two balls.
+    for (std::size_t k = 0; k < LastCollision::kListensHiddenUpTo; ++k) {
+        w.add({.position = Vec2(0.3 + 0.15 * static_cast<double>(k % 60), 9.7), .radius = 0.05});
+    }
+    Session s(std::move(w), SceneMeta{"crowd"}, options());
+    run(s, 60);
+    s.apply(cmd::SetShow{cmd::ShowOption::Collision, true});
+    EXPECT_FALSE(s.lastCollision()) << "hidden in a large scene: nothing recorded for it";
+    s.apply(cmd::Restart{});
+    s.update(0.0, now_);
+    run(s, 60);
+    EXPECT_TRUE(s.lastCollision()) << "shown: the collision is kept";
+    s.apply(cmd::SetShow{cmd::ShowOption::Collision, false});
+    EXPECT_FALSE(s.lastCollision()) << "hidden again: it stops listening and lets it go";
 }
 
 TEST_P(LastCollisionCard, AStepBackBeforeTheCollisionClearsTheCard) {

@@ -196,7 +196,10 @@ TEST_F(SessionData, RecordingTwoBallsGivesTheirPathsAndTheTextbookCollisionInEve
         run(s, 60);  // 1 s: the collision is at 2/3 s
         s.apply(cmd::SetRecording{false});
         EXPECT_FALSE(s.data().recording());
-        EXPECT_FALSE(s.world().recordingCollisions()) << "the world records nothing after";
+        // The world records nothing more for the recorder; a two-ball scene's collision card
+        // listens all along (last_collision.hpp).
+        EXPECT_EQ(s.world().recordingCollisions(),
+                  LastCollision::listening(false, s.world().size()));
 
         s.apply(cmd::CopyTable{cmd::DataTable::Trajectories});
         const Rows path = parse(*s.takeClipboardText(), '\t');
