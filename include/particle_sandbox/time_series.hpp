@@ -43,8 +43,10 @@ class TimeSeries {
     explicit TimeSeries(std::size_t capacity);
 
     /// Appends the world's observables, dropping the oldest sample when full. Returns false and
-    /// records nothing when the world's time equals the last sample's (no step since: a paused
-    /// app samples every frame, and a zero interval has no rate).
+    /// appends nothing when the world's time equals the last sample's (no step since: a paused
+    /// app samples every frame, and a zero interval has no rate); the last sample then becomes
+    /// the state now, its rate kept, so that a world set up before it runs starts its plots
+    /// from the set-up, not from the empty box it began as.
     bool record(const World& world);
     /// Appends `s` as record() would; its collisionRate is recomputed from the previous sample.
     bool record(ObservablesSample s);

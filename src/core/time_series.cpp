@@ -29,8 +29,14 @@ bool TimeSeries::record(const World& world) {
 bool TimeSeries::record(ObservablesSample s) {
     s.collisionRate = 0.0;
     if (size_ > 0) {
-        const ObservablesSample& last = back();
-        if (s.time == last.time && s.collisions == last.collisions) return false;
+        ObservablesSample& last = buffer_[(first_ + size_ - 1) % buffer_.size()];
+        if (s.time == last.time && s.collisions == last.collisions) {
+            // No step since, but the world may have been edited (particles placed or given
+            // their velocities before Play): the sample of this instant is the state as now.
+            s.collisionRate = last.collisionRate;
+            last = s;
+            return false;
+        }
         if (s.time <= last.time || s.collisions < last.collisions) {
             clear();  // another run: its first sample has no interval
         } else {

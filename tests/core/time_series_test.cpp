@@ -51,11 +51,19 @@ TEST(TimeSeries, RingKeepsTheNewestSamplesOldestFirst) {
     EXPECT_DOUBLE_EQ(series.back().collisionRate, 2.0);
 }
 
-TEST(TimeSeries, AnUnchangedClockRecordsNothing) {
+TEST(TimeSeries, AnUnchangedClockAppendsNothingButTakesTheStateNow) {
     TimeSeries series(4);
+    ASSERT_TRUE(series.record(at(0.0, 0)));
     ASSERT_TRUE(series.record(at(1.0, 5)));
-    EXPECT_FALSE(series.record(at(1.0, 5)));
-    EXPECT_EQ(series.size(), 1u);
+    const double rate = series.back().collisionRate;
+    // Paused at t = 1 s, the world edited (a ball given 3.5 J): the instant's sample is the
+    // state now, so the plots start from the set-up, not from what it was before it.
+    ObservablesSample edited = at(1.0, 5);
+    edited.kineticEnergy = 3.5;
+    EXPECT_FALSE(series.record(edited));
+    EXPECT_EQ(series.size(), 2u);
+    EXPECT_EQ(series.back().kineticEnergy, 3.5);
+    EXPECT_EQ(series.back().collisionRate, rate) << "the rate of the interval before it, kept";
 }
 
 TEST(TimeSeries, AClockGoingBackwardsStartsANewSeries) {

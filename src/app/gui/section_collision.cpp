@@ -172,7 +172,8 @@ void ControlPanel::momenta(const CollisionCard& card) {
     ImGui::EndGroup();
     std::string scale = "The square reaches ";
     scale += quantity(d.reach, "kg m/s", false);
-    scale += " from its centre; x right, y down as in the box";
+    // The arrows point as the particles move on screen, whichever way the numbers count y.
+    scale += " from its centre; each arrow points the way its particle moves in the box";
     widgets::wrappedDisabled(scale);
 }
 

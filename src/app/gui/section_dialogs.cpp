@@ -135,6 +135,9 @@ void ControlPanel::dialog(const Session& s) {
                 "An empty box. Restitution, friction and the stepping mode stay as "
                 "they are now.");
             ImGui::SetNextItemWidth(150.f);
+            // The width takes the keyboard at once, its text selected: typing replaces it, Tab
+            // goes on to the height.
+            if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
             ImGui::InputDouble("width (m)", &newWidth_, 0.0, 0.0, "%g",
                                ImGuiInputTextFlags_AutoSelectAll);
             mark("dialog width");

@@ -186,6 +186,8 @@ void ControlPanel::pressurePlot(const Session& s) {
     ImDrawList& draw = *ImGui::GetWindowDrawList();
     const ImU32 frame = ImGui::GetColorU32(ImGuiCol_Border);
     draw.AddRect(at, ImVec2(at.x + size.x, at.y + size.y), frame);
+    // Lines as thick as the text is large stay inside the frame.
+    draw.PushClipRect(at, ImVec2(at.x + size.x, at.y + size.y), true);
     // The error band as thin vertical strokes between low and high: cheap and clear at any width.
     for (std::size_t k = 0; k < plot.measured.size(); ++k) {
         const std::vector<Vec2>& lo = plot.measuredLow[k];
@@ -199,8 +201,11 @@ void ControlPanel::pressurePlot(const Session& s) {
     polyline(draw, at, size, plot.hardDisk, kHardDiskColor, 0.1f * font);
     for (const std::vector<Vec2>& line : plot.measured)
         polyline(draw, at, size, line, kMeasuredColor, 0.13f * font);
+    draw.PopClipRect();
+    // The vertical scale: its top and its bottom, 0.
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_TextDisabled);
     draw.AddText(ImVec2(at.x + 3.f, at.y + 1.f), text, quantity(plot.top, "N/m", false).c_str());
+    draw.AddText(ImVec2(at.x + 3.f, at.y + size.y - font - 1.f), text, "0 N/m");
     const std::string t0 = quantity(plot.t0, "s"), t1 = quantity(plot.t1, "s");
     ImGui::TextDisabled("%s", t0.c_str());
     ImGui::SameLine(std::max(0.f, size.x - ImGui::CalcTextSize(t1.c_str()).x));

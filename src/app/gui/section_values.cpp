@@ -94,7 +94,8 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
                 valuesEditing_ && valuesEditing_->first == r.id && valuesEditing_->second == field;
             std::array<char, 64> shownText{};
             std::array<char, 64>& text = editing ? valuesText_ : shownText;
-            if (!editing) std::snprintf(text.data(), text.size(), "%.6g", r.values[k]);
+            // Four figures, as the read-only cells show three: six were cut off at 200 %.
+            if (!editing) std::snprintf(text.data(), text.size(), "%.4g", r.values[k]);
             ImGui::SetNextItemWidth(-1.f);
             ImGui::PushID(static_cast<int>(r.number * kValuesColumns + k));
             const bool enter = ImGui::InputText("##cell", text.data(), text.size(),

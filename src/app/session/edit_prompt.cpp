@@ -344,6 +344,10 @@ EditResult setChecked(World& world, ParticleId id, const EditedValues& values, c
         std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
                       position.x(), axes.y(position.y()));
         message += buf;
+    } else if (position != old.position) {
+        // A move says where to (an edit of x or y would otherwise read as if nothing changed).
+        message += "; now at [" + formatValue(position.x()) + ", " +
+                   formatValue(axes.y(position.y())) + "] m";
     }
     return {true, message};
 }

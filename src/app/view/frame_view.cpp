@@ -133,8 +133,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (session.view().values)
         f.values = valuesTable(world, session.selection().id(), session.axes());
     if (session.view().grid) {
-        f.grid =
-            gridView(session.camera(), world.def().width, world.def().height, session.view().yUp);
+        f.grid = gridView(session.camera(), world.def().width, world.def().height,
+                          session.view().yUp, kGridMinPixels * controls.pointPixels);
     }
     if (session.view().ruler) f.ruler = rulerView(session.ruler(), session.camera());
     if (stats.video.recording) {

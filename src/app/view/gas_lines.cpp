@@ -27,7 +27,9 @@ std::vector<GasLine> gasLines(const GasReading& r) {
                      "they would read some 10\u00b2\u00b2 K."});
     if (r.pressure) {
         lines.push_back({"Pressure, measured",
-                         quantity(*r.pressure, "N/m") + " \u00b1 " + number(r.pressureError),
+                         // One unit for both, no prefix: "11.7 N/m \u00b1 0.151 N/m".
+                         quantity(*r.pressure, "N/m", false) + " \u00b1 " +
+                             quantity(r.pressureError, "N/m", false),
                          "The momentum the particles give the walls each second, per metre of "
                          "wall (a 2-D pressure is a force per length), over the last " +
                              seconds + " of simulated time; \u00b1 one standard error."});
@@ -46,11 +48,12 @@ std::vector<GasLine> gasLines(const GasReading& r) {
                          " of the box: N kT / A (1 + \u03b7\u00b2/8) / (1 - \u03b7)\u00b2. "
                          "Discs of a size take room, so they press harder than points."});
     if (r.pressure) {
-        lines.push_back({"Collisions",
-                         number(r.pairRate) + " pair/s, " + number(r.wallRate) + " wall/s",
-                         "Particle-particle collisions and wall rebounds per second of simulated "
-                         "time, over the last " +
-                             seconds + "."});
+        lines.push_back(
+            {"Collisions",
+             quantity(r.pairRate, "pair/s", false) + ", " + quantity(r.wallRate, "wall/s", false),
+             "Particle-particle collisions and wall rebounds per second of simulated "
+             "time, over the last " +
+                 seconds + "."});
     }
     return lines;
 }

@@ -38,11 +38,11 @@ int strongEvery(double step) {
 
 }  // namespace
 
-GridView gridView(const Camera& camera, double width, double height, bool yUp) {
+GridView gridView(const Camera& camera, double width, double height, bool yUp, double minPixels) {
     GridView g;
     const double zoom = camera.zoom();
     if (!(zoom > 0.0) || !(width > 0.0) || !(height > 0.0)) return g;
-    g.step = roundStep(kGridMinPixels / zoom);
+    g.step = roundStep(std::max(kGridMinPixels, minPixels) / zoom);
     if (!(g.step > 0.0)) return g;
     // The box's visible part, in metres.
     const Vec2 lo = camera.screenToWorld(Vec2(0.0, 0.0));

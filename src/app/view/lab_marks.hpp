@@ -39,8 +39,10 @@ inline constexpr double kGridMinPixels = 60.0;
 /// The grid over a `width` × `height` box seen through `camera`, its heights counted from the
 /// floor up with `yUp` (Axes), else from the top edge down. Empty (no lines) when the box is not
 /// on screen.
-[[nodiscard]] GridView gridView(const Camera& camera, double width, double height,
-                                bool yUp = false);
+/// `minPixels`: the closest lines may be, pixels (kGridMinPixels × the UI's scale, so that
+/// labels drawn larger stay apart).
+[[nodiscard]] GridView gridView(const Camera& camera, double width, double height, bool yUp = false,
+                                double minPixels = kGridMinPixels);
 
 /// The ruler: its edge, its ticks, the handles at its ends and its reading.
 struct RulerView {

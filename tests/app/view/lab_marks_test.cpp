@@ -37,6 +37,8 @@ TEST(GridView, RoundStepsOfAtLeastSixtyPixelsAcrossTheBox) {
     EXPECT_EQ(std::count_if(g.lines.begin(), g.lines.end(),
                             [](const MarkLine& l) { return l.strong && l.a.x() == l.b.x(); }),
               2);
+    // At 200 % the lines keep 120 pixels apart, so their larger labels do not run together.
+    EXPECT_DOUBLE_EQ(gridView(camera(80.0), 7.0, 7.0, false, 2.0 * kGridMinPixels).step, 2.0);
     // At 0.1 pixel a metre, 60 pixels is 600 m: a 7 km box gets a line every kilometre.
     const GridView far = gridView(camera(0.1), 7000.0, 7000.0);
     EXPECT_DOUBLE_EQ(far.step, 1000.0);
