@@ -148,7 +148,9 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
             std::snprintf(text.data(), text.size(), "%.6g", fieldValue(*p, f.field, axes));
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
-        ImGui::Text("%s (%s)", f.name, f.unit);
+        // Which way y counts, where the numbers are typed.
+        const bool upward = axes.yUp && (f.field == ParticleField::Y || f.field == ParticleField::Vy);
+        ImGui::Text("%s%s (%s)", f.name, upward ? " up" : "", f.unit);
         ImGui::TableNextColumn();
         ImGui::SetNextItemWidth(-1.f);
         ImGui::PushID(static_cast<int>(k));
