@@ -33,7 +33,7 @@ struct ParticleArrays {
     bool rotation = false;
     std::vector<double> angle;                ///< radians
     std::vector<double> omega;                ///< angular velocity, radians per second
-    std::vector<double> inertiaFactor;        ///< k in I = k m r², in (0, 1]
+    std::vector<double> inertiaFactor;        ///< k in I = k m r², 0.001 to 1
     std::vector<std::uint8_t> fixedRotation;  ///< 1: never turns (omega stays 0)
 
     [[nodiscard]] std::size_t size() const { return x.size(); }

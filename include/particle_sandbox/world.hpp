@@ -127,8 +127,8 @@ class World {
     void setAngle(ParticleId id, double angle);
     /// Radians per second, finite; a fixed-rotation particle takes only 0.
     void setAngularVelocity(ParticleId id, double omega);
-    /// k in the moment of inertia I = k m r², in (0, 1]: 1/2 a uniform disc, 2/5 a ball seen
-    /// from the side, 1 a ring.
+    /// k in the moment of inertia I = k m r², from kMinInertiaFactor (0.001) to 1: 1/2 a
+    /// uniform disc, 2/5 a ball seen from the side, 1 a ring.
     void setInertiaFactor(ParticleId id, double k);
     /// A fixed-rotation particle never turns (a puck or block sliding as before rotation
     /// existed): its angular velocity becomes 0 and contacts give it no spin.

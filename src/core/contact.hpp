@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include <particle_sandbox/particle_id.hpp>
 
@@ -190,6 +191,9 @@ inline void roughTangential(double& vxi, double& vyi, Spin si, double& vxj, doub
     const double tx = -n.y, ty = n.x;
     const double vt = (vxj - vxi) * tx + (vyj - vyi) * ty - sj.omega * sj.r - si.omega * si.r;
     const double weight = wi * (1.0 + si.q) + wj * (1.0 + sj.q);
+    // A disc of a mass near the smallest double has no finite 1/(k m): no tangential impulse
+    // then (it would be 0 times infinity in its spin).
+    if (!(weight <= std::numeric_limits<double>::max())) return;
     const double limit = mu * jn;
     const double jt = std::clamp(-(1.0 + beta) * vt / weight, -limit, limit);
     vxi -= jt * wi * tx;

@@ -344,6 +344,9 @@ ParticleDef readParticle(const Reader& r, const json& j, const std::string& path
         requireRotationVersion(r, at, version);
         d.inertiaFactor = r.positive(*v, at);
         if (d.inertiaFactor > 1.0) r.fail(at, "must be <= 1 (got " + num(d.inertiaFactor) + ")");
+        if (d.inertiaFactor < kMinInertiaFactor) {
+            r.fail(at, "must be >= 0.001 (got " + num(d.inertiaFactor) + ")");
+        }
     }
     if (const json* v = Reader::find(j, "fixed_rotation")) {
         requireRotationVersion(r, member(path, "fixed_rotation"), version);

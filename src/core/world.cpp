@@ -36,8 +36,8 @@ void require(const WorldDef& def, const SolverSettings& solver, const char* wher
 }
 
 void requireInertiaFactor(double k, const char* where) {
-    if (!std::isfinite(k) || !(k > 0.0) || k > 1.0)
-        detail::fail(where, "inertia factor", "must be in (0, 1] " + detail::got(k));
+    if (!std::isfinite(k) || !(k >= kMinInertiaFactor) || k > 1.0)
+        detail::fail(where, "inertia factor", "must be from 0.001 to 1 " + detail::got(k));
 }
 
 void validateParticle(const ParticleDef& d, const char* where) {

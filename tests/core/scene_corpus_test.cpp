@@ -163,6 +163,8 @@ const std::map<std::string, std::string> kExpected = {
      R"(particles[0].fixed_rotation: expected true or false, got an integer)"},
     {"particle_inertia_factor_above_one.json",
      R"(particles[0].inertia_factor: must be <= 1 (got 1.5))"},
+    {"particle_inertia_factor_denormal.json",
+     R"(particles[0].inertia_factor: must be >= 0.001 (got 1e-320))"},
     {"particle_inertia_factor_zero.json",
      R"(particles[0].inertia_factor: must be > 0 (got 0))"},
     {"particle_mass_negative.json",

@@ -384,9 +384,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                          c.index(), session.world().size(),
                          static_cast<int>(session.world().solver().mode), session.paused());
         }
-        if (tracing())
+        if (tracing()) {
             if (const auto* save = std::get_if<cmd::SaveAs>(&c))
                 std::fprintf(stderr, "  save as '%s'\n", save->path.c_str());
+            if (const auto* edit = std::get_if<cmd::EditParticle>(&c)) {
+                std::fprintf(stderr, "  edit %s of particle %llu: '%s'\n", fieldName(edit->field),
+                             static_cast<unsigned long long>(particleNumber(edit->id)),
+                             edit->text.c_str());
+            }
+        }
         session.apply(c);
         const double frame = in.PickValueInArray({0.0, 1.0 / 60.0, 1.0 / 30.0, 0.1, 0.5});
         now += frame;

@@ -258,10 +258,10 @@ EditResult setChecked(World& world, ParticleId id, const EditedValues& values, c
     if (!std::isfinite(0.5 * mass * velocity.squaredNorm())) {
         return {false, "mass and velocity: the kinetic energy would overflow"};
     }
-    if (!(k > 0.0 && k <= 1.0)) {
+    if (!(k >= kMinInertiaFactor && k <= 1.0)) {
         return {false,
-                "k: the inertia factor must be above 0 and at most 1 (1/2 a disc, 2/5 a "
-                "ball, 1 a ring), got " +
+                "k: the inertia factor must be from 0.001 to 1 (1/2 a disc, 2/5 a ball, 1 a "
+                "ring), got " +
                     formatValue(k)};
     }
     // The rim's speed, as a speed: a disc that turns a thousand times across the box per second

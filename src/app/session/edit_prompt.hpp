@@ -15,7 +15,7 @@
 // - mass a positive normal double (World::setMass's rule), radius > 0;
 // - speed at most kMaxEditSpeedBoxes box sizes per second, and a finite kinetic energy; the
 //   same for the rim's speed |omega| r and the rotational energy;
-// - k in (0, 1] (World::setInertiaFactor's rule); a fixed-rotation particle only omega 0;
+// - k from 0.001 to 1 (World::setInertiaFactor's rule); a fixed-rotation particle only omega 0;
 // - a radius that fits the box when walls are on. A disc that would then reach past a wall is
 //   moved inward just enough (the wall stage would push it there at the next step anyway);
 // - no new overlap: a disc that grows (or was moved inward) may not overlap a neighbour more
