@@ -239,10 +239,16 @@ void dump(const psb::World& w, double dt) {
         std::fprintf(stderr, "  %s (%.17g, %.17g) (%.17g, %.17g) r %.17g\n",
                      o.isPeg() ? "peg" : "segment", o.a.x(), o.a.y(), o.b.x(), o.b.y(), o.radius);
     const psb::ParticleArrays& p = w.particles();
-    for (std::size_t i = 0; i < p.size(); ++i)
-        std::fprintf(stderr, "  %zu: (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %g%s\n", i, p.x[i],
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        std::fprintf(stderr, "  %zu: (%.17g, %.17g) v (%.17g, %.17g) r %.17g m %g%s", i, p.x[i],
                      p.y[i], p.vx[i], p.vy[i], p.radius[i], p.mass[i],
                      p.invMass[i] == 0.0 ? " held" : "");
+        if (p.rotation) {
+            std::fprintf(stderr, " omega %g k %g%s", p.omega[i], p.inertiaFactor[i],
+                         p.fixedRotation[i] != 0 ? " fixed" : "");
+        }
+        std::fprintf(stderr, "\n");
+    }
 }
 
 double largestRadius(const psb::World& w) {
