@@ -196,12 +196,17 @@ inline void roughTangential(double& vxi, double& vyi, Spin si, double& vxj, doub
     if (!(weight <= std::numeric_limits<double>::max())) return;
     const double limit = mu * jn;
     const double jt = std::clamp(-(1.0 + beta) * vt / weight, -limit, limit);
+    const double omegaI = si.omega - jt * wi * si.q / si.r;
+    const double omegaJ = sj.omega - jt * wj * sj.q / sj.r;
+    // A disc so small that its spin (a rim speed over its radius) leaves the doubles gets no
+    // tangential impulse, rather than an infinite spin (radii of 1e-300 m, from the fuzzers).
+    if (!std::isfinite(omegaI) || !std::isfinite(omegaJ)) return;
     vxi -= jt * wi * tx;
     vyi -= jt * wi * ty;
     vxj += jt * wj * tx;
     vyj += jt * wj * ty;
-    si.omega -= jt * wi * si.q / si.r;
-    sj.omega -= jt * wj * sj.q / sj.r;
+    si.omega = omegaI;
+    sj.omega = omegaJ;
 }
 
 /// collideDiscs for turning discs: the same normal impulse, then the rough tangential one.
@@ -225,8 +230,10 @@ inline void roughAlongSurface(double& along, Spin s, double dv, double mu, doubl
     const double slip = along - s.omega * s.r;
     const double limit = mu * dv;
     const double jt = std::clamp(-(1.0 + beta) * slip / (1.0 + s.q), -limit, limit);
+    const double omega = s.omega - jt * s.q / s.r;
+    if (!std::isfinite(omega)) return;  // as in roughTangential: no spin past the doubles
     along += jt;
-    s.omega -= jt * s.q / s.r;
+    s.omega = omega;
 }
 
 /// reboundOffSurface for a turning disc: the walls' law along n, then the rough tangential
