@@ -48,6 +48,7 @@ std::optional<CollisionLog> LastCollision::wanted(bool listening,
 
 void LastCollision::heard(const std::vector<Collision>& records, const World& world,
                           std::optional<ParticleId> selected) {
+    ahead_.reset();  // the world stepped: the future put aside is not this one
     for (auto it = records.rbegin(); it != records.rend(); ++it) {
         const Collision& c = *it;
         const bool follows = selected ? c.involves(*selected) : c.with == Collision::With::Particle;
@@ -72,6 +73,9 @@ void LastCollision::heard(const std::vector<Collision>& records, const World& wo
 }
 
 void LastCollision::follow(std::optional<ParticleId> selected) {
+    if (ahead_ && (selected ? !ahead_->collision.involves(*selected) : !ahead_->pair())) {
+        ahead_.reset();
+    }
     if (!card_) return;
     if (selected ? !card_->collision.involves(*selected) : !card_->pair()) {
         card_.reset();
@@ -82,7 +86,13 @@ void LastCollision::follow(std::optional<ParticleId> selected) {
 }
 
 void LastCollision::dropAfter(double time) {
-    if (card_ && card_->collision.time > time) card_.reset();
+    if (card_ && card_->collision.time > time) {
+        ahead_ = std::move(card_);
+        card_.reset();
+    } else if (!card_ && ahead_ && ahead_->collision.time <= time) {
+        card_ = std::move(ahead_);
+        ahead_.reset();
+    }
 }
 
 }  // namespace psb::app

@@ -59,15 +59,21 @@ class LastCollision {
     /// The selection changed to `selected`: a card of another particle's collision (or, with
     /// none selected, of a wall's) is cleared; the selected particle is put first.
     void follow(std::optional<ParticleId> selected);
-    /// The world's clock went back to `time` (an undo, a step back, a restart): a card from
-    /// after it never happened.
+    /// The world's clock is at `time`. Gone back before the card's collision (an undo, a step
+    /// back, a restart), the card never happened yet: it is put aside, and comes back when the
+    /// clock passes it again through the same history (stepping forward through the recorded
+    /// frames). A step of the world (heard) makes a new history and forgets it.
     void dropAfter(double time);
-    void clear() { card_.reset(); }
+    void clear() {
+        card_.reset();
+        ahead_.reset();
+    }
 
     [[nodiscard]] const std::optional<CollisionCard>& card() const { return card_; }
 
   private:
     std::optional<CollisionCard> card_;
+    std::optional<CollisionCard> ahead_;  ///< the card put aside by a step back
 };
 
 }  // namespace psb::app

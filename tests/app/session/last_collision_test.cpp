@@ -123,6 +123,27 @@ TEST_P(LastCollisionCard, AStepBackBeforeTheCollisionClearsTheCard) {
     EXPECT_FALSE(s.lastCollision());
 }
 
+TEST_P(LastCollisionCard, SteppedBackBeforeTheCollisionAndForwardPastItTheCardComesBack) {
+    Session s = twoBallSession();
+    s.apply(cmd::SetShow{cmd::ShowOption::Collision, true});
+    run(s, 60);  // to 1 s; the collision at 2/3 s
+    ASSERT_TRUE(s.lastCollision());
+    const double at = s.lastCollision()->collision.time;
+    s.apply(cmd::Seek{0.5});
+    s.update(0.0, now_);
+    EXPECT_FALSE(s.lastCollision()) << "at 0.5 s the collision has not happened";
+    s.apply(cmd::Seek{0.9});
+    s.update(0.0, now_);
+    ASSERT_TRUE(s.lastCollision()) << "forward past it again: the same collision, shown";
+    EXPECT_EQ(s.lastCollision()->collision.time, at);
+    // Back before it, then the world runs on from there: a new history, found afresh.
+    s.apply(cmd::Seek{0.5});
+    s.update(0.0, now_);
+    run(s, 30);
+    ASSERT_TRUE(s.lastCollision());
+    EXPECT_NEAR(s.lastCollision()->collision.time, at, 1e-9);
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, LastCollisionCard,
                          ::testing::Values(StepMode::Discrete, StepMode::Substep, StepMode::Exact),
                          [](const auto& mode) {
