@@ -67,7 +67,7 @@ constexpr Palette kLight{
     .preview = {185, 185, 195},
     .dropper = {90, 100, 120},
     .dropperText = {40, 45, 60},
-    .ghost = {0, 0, 0, 60},
+    .ghost = {0, 0, 0, 110},  // the launch preview: a grey disc that reads on white
     .launchArrow = {60, 60, 60},
     .momentumArrow = kOrange,
     .totalMomentum = kBlue,
