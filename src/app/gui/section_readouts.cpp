@@ -116,7 +116,16 @@ void ControlPanel::readouts(const Session& s) {
     // Accuracy, in words.
     const double drift = s.accuracy().drift(monitoredEnergy(w));
     const char* which = gravity ? "Mechanical energy" : "Energy";
-    widgets::wrapped(std::string(which) + " " + keptWords(drift) + " since your last change");
+    std::string kept = std::string(which) + " " + keptWords(drift) + " since your last change";
+    // A loss the laws make on purpose is said so, lest it read as an error of the simulation.
+    const WorldDef& laws = w.def();
+    if (std::abs(drift) >= 1e-3 && (laws.restitution < 1.0 || laws.friction > 0.0)) {
+        kept += laws.friction > 0.0 && laws.restitution < 1.0
+                    ? ": friction and inelastic collisions take energy"
+                : laws.friction > 0.0 ? ": friction takes energy"
+                                      : ": inelastic collisions take energy";
+    }
+    widgets::wrapped(kept);
     tip("How well the simulation keeps the energy it should keep. Collisions with restitution "
         "below 1, friction and your own changes (a fling, a launch) change it on purpose; the "
         "count starts again at each change.");
