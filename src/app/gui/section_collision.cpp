@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <cstdint>
+
 #include <imgui.h>
 
 #include "gui/control_panel.hpp"
@@ -14,6 +16,7 @@
 #include "session/units.hpp"
 #include "view/collision_card_lines.hpp"
 #include "view/momenta_diagram.hpp"
+#include "view/palette.hpp"
 
 namespace psb::app {
 
@@ -97,6 +100,20 @@ ImU32 arrowColor(MomentaDiagram::Kind kind) {
     return ImGui::GetColorU32(ImGuiCol_Text);
 }
 
+/// `color` as a label on the panel: darkened (or lightened) to read (view/palette.hpp's
+/// readableText); Okabe-Ito orange on the light theme's panel is 2:1.
+ImU32 readableLabel(ImU32 color) {
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    const auto channel = [](float v) { return static_cast<std::uint8_t>(std::lround(255.f * v)); };
+    const auto part = [&](int shift) {
+        return static_cast<std::uint8_t>((color >> shift) & 0xFFu);
+    };
+    const Rgba r =
+        readableText(Rgba{part(IM_COL32_R_SHIFT), part(IM_COL32_G_SHIFT), part(IM_COL32_B_SHIFT)},
+                     Rgba{channel(bg.x), channel(bg.y), channel(bg.z)});
+    return IM_COL32(r.r, r.g, r.b, 255);
+}
+
 /// One half of the diagram in a square canvas `side` pixels wide at the cursor.
 void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>& arrows,
               const char* id, float side) {
@@ -140,7 +157,7 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
         const Vec2 mid = 0.5 * (from + to) + (clear + 0.15 * font) * up;
         draw.AddText(ImVec2(at.x + static_cast<float>(mid.x()) - 0.5f * size.x,
                             at.y + static_cast<float>(mid.y()) - 0.5f * size.y),
-                     color, a.label.c_str());
+                     readableLabel(color), a.label.c_str());
     }
 }
 
