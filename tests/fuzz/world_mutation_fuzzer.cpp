@@ -286,7 +286,9 @@ double deepestFreeOverlap(const psb::World& w) {
 /// the deepest overlap the steps since the last change met: at a collision (rounding) or placed
 /// (a pair found overlapping when the stepper rebuilt after the change: docs/exact.md, "Pairs
 /// placed overlapping keep the distance they were placed at"). StepCounters::maxOverlap records
-/// both, so the counters are reset at each change.
+/// both, a placed pair in every step that still keeps it at its placed distance (a change that
+/// does not rebuild, such as new droppers, resets the counters too), so the counters are reset
+/// at each change.
 class Stepper {
   public:
     void changed(psb::World& w) { w.resetCounters(); }

@@ -207,7 +207,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                     if (rx * rx + ry * ry >= sigma * sigma) {
                         overlapContact_.erase(it);
                     } else {
-                        sigma = it->second;
+                        sigma = it->second.distance;
                     }
                 }
             }

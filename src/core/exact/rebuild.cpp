@@ -131,7 +131,6 @@ void ExactStepper::recordPlacedOverlaps() {
     // are squeezed out into the gaps of everyone else until the pile jams and the collision
     // rate diverges.
     overlapContact_.clear();
-    placedOverlap_ = 0.0;
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     for (std::uint32_t i = 0; i < n; ++i) {
         const Body& a = bodies_[i];
@@ -141,12 +140,19 @@ void ExactStepper::recordPlacedOverlaps() {
             const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
             const double d2 = rx * rx + ry * ry;
             if (!(d2 < sigma * sigma)) return;
-            overlapContact_[pairKey(order_[i], order_[q])] = std::sqrt(d2);
-            placedOverlap_ = std::max(placedOverlap_, sigma - std::sqrt(d2));
+            const double d = std::sqrt(d2);
+            overlapContact_[pairKey(order_[i], order_[q])] = {d, sigma - d};
             bodies_[i].flags |= kPlacedOverlapping;
             b.flags |= kPlacedOverlapping;
         });
     }
+}
+
+double ExactStepper::placedOverlap() const {
+    double deepest = 0.0;
+    for (const auto& [key, contact] : overlapContact_)
+        deepest = std::max(deepest, contact.depth);
+    return deepest;
 }
 
 double ExactStepper::bucketWidth() const {

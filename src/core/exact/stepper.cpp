@@ -29,10 +29,12 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
         if (syncOwed_) sync(p);
         StageTimer t(rebuildMs);
         rebuild(p, def);
-        // Pairs placed overlapping are part of the state: report them, not only the overlaps
-        // met at collisions (which rounding keeps at a few ulps).
-        counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap_);
     }
+    // Pairs placed overlapping are part of the state: report them, not only the overlaps met
+    // at collisions (which rounding keeps at a few ulps). Every step that carries one at its
+    // placed distance reports it, not only the one that found it: counters reset between steps
+    // (the app's per frame) with no change to the world, so no rebuild, still bound the state.
+    counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap());
     collisionOffset_ = worldTime_ - clock_;
     events_ = 0;
     // The jam guard counts per step: clear only the particles it counted in the last one.
@@ -189,8 +191,9 @@ std::size_t ExactStepper::memoryBytes() const {
         bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one
     // pointer per bucket.
-    bytes += overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(double) + sizeof(void*)) +
-             overlapContact_.bucket_count() * sizeof(void*);
+    bytes +=
+        overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(PlacedContact) + sizeof(void*)) +
+        overlapContact_.bucket_count() * sizeof(void*);
     return bytes;
 }
 

@@ -202,6 +202,9 @@ class ExactStepper {
     // --- rebuild (rebuild.cpp) ----------------------------------------------------------------
     void rebuild(ParticleArrays& p, const WorldDef& def);
     void recordPlacedOverlaps();
+    // The deepest overlap of the pairs still kept at their placed distance: every step carries
+    // them, so every step reports it (StepCounters::maxOverlap).
+    [[nodiscard]] double placedOverlap() const;
     [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
         return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
     }
@@ -410,10 +413,14 @@ class ExactStepper {
     double worldTime_ = 0.0;
     double collisionOffset_ = 0.0;
     // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
-    // storage indices (order_), with the contact distance they keep until they are found apart.
-    std::unordered_map<std::uint64_t, double> overlapContact_;
-    double placedOverlap_ = 0.0;  // the deepest of those overlaps, metres
-    bool syncOwed_ = false;       // the world's arrays do not hold the state at clock_ yet
+    // storage indices (order_), with the contact distance they keep until they are found apart
+    // and how deep that distance is inside contact (r₁ + r₂ minus it, metres).
+    struct PlacedContact {
+        double distance;
+        double depth;
+    };
+    std::unordered_map<std::uint64_t, PlacedContact> overlapContact_;
+    bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
     // The budget ran out without gravity: the rest of the step was flown freely, so sync()
     // turns back into the box what the flight took past a wall (the next step rebuilds).
     bool flewFreely_ = false;

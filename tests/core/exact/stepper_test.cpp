@@ -385,6 +385,30 @@ TEST(ExactMode, PairPlacedOverlappingIsOrdinaryOnceApart) {
     EXPECT_NEAR(w.get(a).position.x(), -0.1, 1e-12);
 }
 
+TEST(ExactMode, CountersResetBetweenStepsStillReportAPairHeldAtItsPlacedDistance) {
+    // Placed 0.5 m deep, b drifts off at 1 m/s. The counters are reset after the first step
+    // (as the app does every frame) with nothing changed, so the next step does not rebuild:
+    // it still carries the pair at its placed contact distance, and must report it. Once a
+    // prediction has found the pair apart (b's bounce off the held disc at t = 1.5 s) it is
+    // an ordinary pair, and a step reports no overlap.
+    World w = openExactWorld();
+    w.add({.position = {0.0, 0.0}});
+    w.add({.position = {1.5, 0.0}, .velocity = {1.0, 0.0}});
+    const ParticleId wall = w.add({.position = {5.0, 0.0}});
+    w.setKinematic(wall, true);
+    w.step(0.2);
+    EXPECT_EQ(w.counters().maxOverlap, 0.5);
+    w.resetCounters();
+    w.step(0.2);
+    EXPECT_NEAR(maxOverlapBruteForce(w), 0.1, 1e-12);
+    EXPECT_EQ(w.counters().maxOverlap, 0.5);
+    w.step(1.4);
+    EXPECT_EQ(w.counters().collisions, 1u);
+    w.resetCounters();
+    w.step(0.1);
+    EXPECT_EQ(w.counters().maxOverlap, 0.0);
+}
+
 /// A hexagonal lattice at packing fraction 0.85 in a box `cols` spacings wide and `rows` row
 /// pitches high: with walls the rows do not fit (a staggered row needs cols − 1/2 spacings plus
 /// a diameter), so the discs at the row ends are clamped into the box overlapping their
