@@ -6,6 +6,8 @@
 
 #include <particle_sandbox/diagnostics.hpp>
 
+#include "session/units.hpp"
+
 namespace psb::app {
 double meanMass(const ParticleArrays& p) {
     double m = 0.0;
@@ -31,11 +33,10 @@ TotalMomentumArrow totalMomentumArrow(const World& world, const ObservablesSampl
 
 std::vector<std::string> momentumLegend(const World& world, const ObservablesSample& now,
                                         double arrowSeconds, const Axes& axes) {
-    const Vec2 P = axes.vector(now.momentum);
-    char buf[96];
-    std::snprintf(buf, sizeof buf, "P = [%.4g, %.4g] kg m/s%s", P.x(), P.y(),
-                  totalMomentumArrow(world, now, arrowSeconds).capped ? " (arrow capped)" : "");
-    return {buf, "m v per particle", "centre of mass and its path"};
+    // Signed components as every other reading writes them: "P = (14.3, -35.7) kg m/s".
+    std::string total = "P = " + components(axes.vector(now.momentum)) + " kg m/s";
+    if (totalMomentumArrow(world, now, arrowSeconds).capped) total += " (arrow capped)";
+    return {total, "m v per particle", "centre of mass and its path"};
 }
 
 }  // namespace psb::app
