@@ -113,16 +113,16 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
     // A field typed in belongs to the particle it was typed for: a click on another particle
     // (or on empty space) both leaves the field, which applies the text, and changes the
     // selection, and the text goes to the particle it was meant for, not the new one.
-    const bool typing = std::find(fieldActive_.begin(), fieldActive_.end(), true) !=
-                        fieldActive_.end();
+    const bool typing =
+        std::find(fieldActive_.begin(), fieldActive_.end(), true) != fieldActive_.end();
     if (!typing) fieldOwner_ = p ? p->id : kNullParticle;
     if (!p) {
         ImGui::TextDisabled("Click a particle (or a row below) to see its values");
         // The fields are gone with the selection: what was being typed is applied.
         for (std::size_t k = 0; k < std::size(kFields); ++k) {
             if (fieldActive_[k] && fieldOwner_ != kNullParticle) {
-                out_.emplace_back(cmd::EditParticle{fieldOwner_, kFields[k].field,
-                                                    fieldText_[k].data()});
+                out_.emplace_back(
+                    cmd::EditParticle{fieldOwner_, kFields[k].field, fieldText_[k].data()});
             }
         }
         fieldActive_.fill(false);
@@ -149,7 +149,8 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         // Which way y counts, where the numbers are typed.
-        const bool upward = axes.yUp && (f.field == ParticleField::Y || f.field == ParticleField::Vy);
+        const bool upward =
+            axes.yUp && (f.field == ParticleField::Y || f.field == ParticleField::Vy);
         ImGui::Text("%s%s (%s)", f.name, upward ? " up" : "", f.unit);
         ImGui::TableNextColumn();
         ImGui::SetNextItemWidth(-1.f);

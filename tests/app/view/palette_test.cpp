@@ -54,9 +54,9 @@ TEST(Palette, LegendsInTheirCurvesColoursAreReadableOnThePanel) {
         const Palette& p = palette(theme);
         const Rgba panel = blend(p.panel, p.background);
         SCOPED_TRACE(toString(theme));
-        for (const Rgba c : {p.energyPlot, p.pxPlot, p.pyPlot, p.ratePlot, p.histogramBar,
-                             p.theoryCurve, p.binBar, p.normalCurve, p.momentumArrow,
-                             p.totalMomentum, p.centreOfMass}) {
+        for (const Rgba c :
+             {p.energyPlot, p.pxPlot, p.pyPlot, p.ratePlot, p.histogramBar, p.theoryCurve, p.binBar,
+              p.normalCurve, p.momentumArrow, p.totalMomentum, p.centreOfMass}) {
             // The panel as drawn (its opacity over the background), and as the code passes it.
             EXPECT_GE(contrastRatio(readableText(c, panel), panel), 4.5);
             EXPECT_GE(contrastRatio(readableText(c, p.panel), panel), 4.4);
