@@ -1,5 +1,6 @@
 #include "exact/event_queue.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -91,8 +92,19 @@ bool EventQueue::advance() {
             }
         }
         if (first == std::numeric_limits<std::int64_t>::max()) {
-            overflow_.clear();
-            return false;
+            // Every entry left lies past the range of the bucket numbers (a width tiny against
+            // the times, as a box ten quadrillion times wider than high makes): the calendar
+            // starts again at the earliest of them rather than lose them all.
+            double earliest = kInf;
+            for (std::uint32_t i : overflow_) {
+                if (rec_[i].where == Where::Overflow) earliest = std::min(earliest, rec_[i].time);
+            }
+            if (earliest == kInf) {
+                overflow_.clear();
+                return false;
+            }
+            origin_ = earliest;
+            first = bucketOf(earliest);
         }
         cur_ = first;
         redistributeOverflow();

@@ -92,5 +92,23 @@ TEST(ExactEventQueue, PostponingTheTopRevealsTheNext) {
     EXPECT_EQ(q.top().key, 2u);
 }
 
+TEST(ExactEventQueue, EventsPastTheRangeOfTheBucketNumbersAreKept) {
+    // A bucket width tiny against the times (a box 1e-300 m high makes one of ~1e-304 s): every
+    // event lies past 4e18 buckets. They were all dropped, and a particle flew through a wall.
+    EventQueue q;
+    q.reset(3, 1e-304);
+    q.update(0, 0.0078);
+    q.update(1, 0.5);
+    q.update(2, 0.25);
+    std::vector<std::uint32_t> order;
+    for (int k = 0; k < 3; ++k) {
+        const EventQueue::Entry top = q.top();
+        ASSERT_NE(top.time, std::numeric_limits<double>::infinity()) << "event " << k << " lost";
+        order.push_back(top.key);
+        q.update(top.key, std::numeric_limits<double>::infinity());
+    }
+    EXPECT_EQ(order, (std::vector<std::uint32_t>{0, 2, 1}));
+}
+
 }  // namespace
 }  // namespace psb::exact
