@@ -60,10 +60,9 @@ struct StepCounters {
     double maxOverlap = 0.0;           ///< deepest pair overlap found by detection, metres
     std::uint64_t events = 0;          ///< exact mode: events processed (collisions, walls, cells)
     std::uint64_t obstacleCollisions = 0;  ///< rebounds off fixed obstacles (pegs, segments)
-    /// Exact mode: steps cut short by the event budget (kMaxEventsPerParticlePerStep; a particle
-    /// rattling in a wedge, or flung across the box thousands of times in one step). Such a
-    /// step's state is not exact: without gravity the rest of the step is flown freely, so pairs
-    /// may overlap (docs/exact.md, Limits).
+    /// Exact mode: steps the event budget cut short (World::setExactEventBudget; none is set
+    /// unless the caller sets one). Such a step ended at its first event left: its state is
+    /// exact, but at an earlier time than asked (World::time() says which).
     std::uint64_t cutShort = 0;
 };
 

@@ -3,6 +3,7 @@
 /// The particle world: a box, its material laws, its particles, and the step.
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -171,16 +172,28 @@ class World {
 
     // --- time ------------------------------------------------------------------------------
     /// Advances the world by `dt` seconds (finite, > 0) with the solver's mode. In Exact mode
-    /// every particle ends at its exact state at time() + dt; any change made to the world
+    /// every particle ends at its exact state at time() + dt, however many events that takes
+    /// (unless an event budget is set: setExactEventBudget); any change made to the world
     /// between steps (particles, setters, box) is picked up by the next step.
     ///
     /// The argument is the one source of truth for how far a step goes: the world keeps no step
     /// length of its own. The frame length belongs to the scene (Scene::dt, the file's
     /// `solver.dt`); its driver passes it here: particle-sim the scene's (or --dt), the app's
     /// session the one it keeps in its SceneMeta (src/app/session/document.hpp).
-    void step(double dt);
-    /// Simulated seconds since the world was made.
+    /// Returns the seconds simulated: dt itself, or less when the exact mode's event budget ran
+    /// out (setExactEventBudget).
+    double step(double dt);
+    /// Simulated seconds since the world was made: the instant the particles' state is at.
     [[nodiscard]] double time() const { return time_; }
+    /// Exact mode: the most events one step may process, per particle (the step may process
+    /// that many times the particle count plus one), or 0 for no limit (the default, and what a
+    /// measurement wants). A step that would process more ends at the first event left: the
+    /// state is the exact one at that instant (no pair overlaps, no particle is past a wall),
+    /// time() advances only to it, and StepCounters::cutShort counts the step. For a program
+    /// whose frames must end (the interactive app), at the price of running behind. Kept by
+    /// copies, like the solver settings.
+    void setExactEventBudget(std::uint64_t eventsPerParticle) { eventBudget_ = eventsPerParticle; }
+    [[nodiscard]] std::uint64_t exactEventBudget() const { return eventBudget_; }
 
     /// Threads the step may use: n >= 1, or 0 for one per hardware thread (the default).
     /// Results are bit-identical for every thread count.
@@ -212,7 +225,8 @@ class World {
     /// Called by every function that changes what a step reads (particles, box, laws): settles
     /// first, then tells the exact stepper to rebuild at its next step.
     void changed();
-    void stepExact(double dt);
+    /// Returns the seconds simulated: dt, or less when the event budget ran out.
+    double stepExact(double dt);
     /// Makes the rotation arrays (every particle with the defaults) if there are none yet.
     void useRotation();
     /// The drop stage: each dropper whose ball is due releases it (World::add) if its spot is
@@ -230,6 +244,7 @@ class World {
     unsigned stepsUntilReorder_ = 0;  ///< state, not scratch: it decides future storage order
     std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
+    std::uint64_t eventBudget_ = 0;  ///< setExactEventBudget's; 0: none
     mutable StepProfile profile_;  ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
     std::optional<CollisionLog> collisionLog_;  ///< recording when set

@@ -394,6 +394,9 @@ void App::render() {
     lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont(), controls_);
     const DrawStats drawn = draw_->draw(lastFrame_);
     if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
+    if (const auto problem = gui_->takeProblem()) {
+        logLine("[E] The text could not be made at the new scale: " + *problem);
+    }
     updateTextInput();
     // A panel whose controls moved (a section opened) settles in the next frame: draw it even
     // when nothing else happens.

@@ -44,6 +44,7 @@ std::string reportJson(const RunReport& r) {
                              {"final", r.angularMomentumFinal}};
     j["wall_impulse"] = r.wallImpulse;
     j["max_overlap"] = r.maxOverlap;
+    j["cut_short"] = r.cutShort;
     j["escaped"] = r.escaped;
     if (r.bins) {
         const BinsMeasurement& b = *r.bins;

@@ -136,6 +136,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     r.obstacles = world.obstacles().size();
     r.obstacleCollisions = c.obstacleCollisions;
     r.wallImpulse = c.wallImpulse;
+    r.cutShort = c.cutShort;
     // What detection met during the run, and what the states at both ends hold (the exact
     // mode meets overlaps only at collisions, where rounding keeps them at a few ulps).
     r.maxOverlap = std::max({c.maxOverlap, overlapInitial, maxOverlap(world)});

@@ -43,6 +43,9 @@ struct RunReport {
     double angularMomentumInitial = 0.0, angularMomentumFinal = 0.0;
     Vec2 momentumInitial = Vec2::Zero(), momentumFinal = Vec2::Zero();  ///< kg·m/s
     double wallImpulse = 0.0;                                           ///< kg·m/s
+    /// Exact mode: steps that ended before their end (an event budget ran out). The runner
+    /// sets none, so a run it reports is whole; a non-zero count fails the run.
+    std::uint64_t cutShort = 0;
     double maxOverlap = 0.0;                                            ///< metres
     std::uint64_t escaped = 0;
     /// The scene's bins at the end, when it has bins.

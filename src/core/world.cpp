@@ -98,6 +98,7 @@ World::World(const World& other)
       stepsUntilReorder_(other.stepsUntilReorder_),
       broadPhaseUsed_(other.broadPhaseUsed_),
       time_(other.time_),
+      eventBudget_(other.eventBudget_),
       profile_(other.profile_),
       counters_(other.counters_),
       collisionLog_(other.collisionLog_) {
@@ -472,7 +473,7 @@ std::optional<ParticleId> World::pick(const Vec2& point) const {
     return std::nullopt;
 }
 
-void World::step(double dt) {
+double World::step(double dt) {
     requirePositive(dt, "World::step", "dt");
     profile_ = {};
     if (!ctx_) ctx_ = std::make_unique<StepContext>();  // a moved-from world is still usable
@@ -489,6 +490,7 @@ void World::step(double dt) {
     // A step in another mode works on the arrays: they must hold the state, and the exact
     // stepper must rebuild from what that step leaves. The exact mode keeps its own copy in
     // cell order, so it never reorders the world's storage.
+    double simulated = dt;
     switch (solver_.mode) {
         case StepMode::Discrete:
         case StepMode::Substep:
@@ -498,12 +500,13 @@ void World::step(double dt) {
                                   stepsUntilReorder_, profile_, counters_);
             break;
         case StepMode::Exact:
-            stepExact(dt);
+            simulated = stepExact(dt);
             break;
     }
     if (solver_.mode != StepMode::Exact) broadPhaseUsed_ = ctx_->broadPhaseUsed;
     profile_.total += profile_.ms("drop");
-    time_ += dt;
+    time_ += simulated;
+    return simulated;
 }
 
 void World::releaseBalls(double dt) {
@@ -549,12 +552,12 @@ void World::changed() {
     if (exact_) exact_->invalidate();
 }
 
-void World::stepExact(double dt) {
+double World::stepExact(double dt) {
     // Every function that changes what the stepper read calls changed(), which makes it
     // rebuild at this step; otherwise it carries on from its own state.
     if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
     exact_->record(ctx_->collisionLog, time_);
-    exact_->step(p_, def_, dt, profile_, counters_);
+    return exact_->step(p_, def_, dt, eventBudget_, profile_, counters_);
 }
 
 void World::recordCollisions(CollisionLog log) {

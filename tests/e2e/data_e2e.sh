@@ -123,7 +123,7 @@ pass "time series: $(($(wc -l <"$S") - 1)) rows from t = 0, kinetic energy 3.5 J
 # --- 8. leave ------------------------------------------------------------------------------------
 # The window may be gone before xdotool sends the key release: that error is expected.
 xdotool key --window "$WID" Escape 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+wait_exit
 if kill -0 "$APP_PID" 2>/dev/null; then fail "Esc did not quit"; fi
 wait "$APP_PID" && status=0 || status=$?
 APP_PID=""

@@ -104,7 +104,7 @@ xdotool mousemove $((WX + 1100)) $((WY + 800))
 # Running a preset is no edit: one Esc quits. The window may be gone before xdotool sends the
 # key release: that error is expected.
 xdotool key --window "$WID" Escape 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+wait_exit
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""
 echo "PASS: galton e2e ($OUT)"

@@ -6,6 +6,15 @@
 # drive and read it (they use LOG, OUT and the window variables start_app sets).
 pass() { echo "ok: $*"; }
 
+# Every deadline below is for a condition (a log line, a title, a window, an exit), never a fixed
+# wait: a condition met returns at once, so a deadline costs only a failing run. They are
+# E2E_PATIENCE (default 4) times what a quiet 2-core machine needs, so that a machine four times
+# slower (a loaded CI runner) still passes; CTest's timeouts (tests/e2e/CMakeLists.txt) leave
+# the same room.
+E2E_PATIENCE=${E2E_PATIENCE:-4}
+# patient SECONDS: SECONDS times the patience, whole seconds.
+patient() { echo $(($1 * E2E_PATIENCE)); }
+
 # need_test_tools: Xvfb, xdotool, ImageMagick, xclip and ffprobe, installed (scripts/install-deps.sh --test)
 # when one is missing.
 need_test_tools() {
@@ -68,7 +77,7 @@ start_xvfb() {
         [[ -e /tmp/.X$n-lock || -e /tmp/.X11-unix/X$n ]] && continue
         Xvfb ":$n" -screen 0 "$screen" -nolisten tcp 2>"$log" &
         XVFB_PID=$!
-        for _ in $(seq 100); do
+        for _ in $(seq $((25 * E2E_PATIENCE))); do
             kill -0 "$XVFB_PID" 2>/dev/null || break
             xdpyinfo -display ":$n" >/dev/null 2>&1 && break
             sleep 0.05
@@ -102,12 +111,12 @@ show_logs() {
 start_app() {
     "$@" >"$LOG" 2>"$OUT/stderr.log" &
     APP_PID=$!
-    WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
+    WID=$(timeout "$(patient 20)" xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Particle Sandbox" |
         head -1) || {
         ps -o pid,stat,etime,wchan:30,args -p "$APP_PID" >&2 || true
         for t in /proc/"$APP_PID"/task/*; do echo "thread $t: $(cat "$t/wchan" 2>/dev/null)" >&2; done
         xdotool search --name "Particle Sandbox" >&2 || true
-        fail "no window within 20 s (display $DISPLAY)"
+        fail "no window within $(patient 20) s (display $DISPLAY)"
     }
     [[ -n "$WID" ]] || fail "no window"
     eval "$(xdotool getwindowgeometry --shell "$WID")"  # X, Y, WIDTH, HEIGHT
@@ -115,7 +124,7 @@ start_app() {
     WY=$Y
     xdotool windowfocus --sync "$WID" 2>/dev/null || true
     # The camera starts fitted to the box; the program logs the mapping it chose.
-    for _ in $(seq 100); do grep -q "\[I\] View: zoom" "$LOG" && break; sleep 0.05; done
+    for _ in $(seq $((100 * E2E_PATIENCE))); do grep -q "\[I\] View: zoom" "$LOG" && break; sleep 0.05; done
     read_view "$(grep "\[I\] View: zoom" "$LOG" | head -1)"
 }
 # read_view LINE: ZOOM, BX, BY from a logged "View: zoom ..." line.
@@ -127,15 +136,15 @@ read_view() {
 sx() { awk -v w="$1" -v z="$ZOOM" -v o="$WX" -v b="$BX" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
 sy() { awk -v w="$1" -v z="$ZOOM" -v o="$WY" -v b="$BY" 'BEGIN { printf "%d", o + b + w * z + 0.5 }'; }
 
-wait_log() {  # wait_log REGEX [SECONDS]
-    local deadline=$((SECONDS + ${2:-5}))
+wait_log() {  # wait_log REGEX [SECONDS]: SECONDS on a quiet machine (times the patience)
+    local deadline=$((SECONDS + $(patient "${2:-5}")))
     while ! grep -Eq "$1" "$LOG"; do
         ((SECONDS < deadline)) || fail "timed out waiting for log line /$1/"
         sleep 0.05
     done
 }
 wait_count() {  # wait_count REGEX N [SECONDS]: until N lines match
-    local deadline=$((SECONDS + ${3:-5}))
+    local deadline=$((SECONDS + $(patient "${3:-5}")))
     while (($(grep -Ec "$1" "$LOG" || true) < $2)); do
         ((SECONDS < deadline)) || fail "timed out waiting for $2 log lines /$1/"
         sleep 0.05
@@ -150,7 +159,7 @@ press_until() {
     for _ in 1 2 3 4 5; do
         xdotool key --window "$WID" "$1" 2>/dev/null || true
         sleep 0.15  # as key() does: the frame after the key has closed what it closes
-        for _ in $(seq 30); do
+        for _ in $(seq $((30 * E2E_PATIENCE))); do
             (($(grep -Ec "$2" "$LOG" || true) > n)) && return 0
             sleep 0.1
         done
@@ -163,15 +172,19 @@ quit_with() {
     for _ in 1 2 3 4 5 6; do
         kill -0 "$APP_PID" 2>/dev/null || return 0
         xdotool key --window "$WID" "$1" 2>/dev/null || true
-        for _ in $(seq 20); do
+        for _ in $(seq $((20 * E2E_PATIENCE))); do
             kill -0 "$APP_PID" 2>/dev/null || return 0
             sleep 0.1
         done
     done
 }
 title() { xdotool getwindowname "$WID"; }
+# wait_exit: until the program under test has ended (5 s on a quiet machine, times the patience).
+wait_exit() {
+    for _ in $(seq $((100 * E2E_PATIENCE))); do kill -0 "$APP_PID" 2>/dev/null || return 0; sleep 0.05; done
+}
 wait_title() {  # wait_title REGEX
-    local deadline=$((SECONDS + 5))
+    local deadline=$((SECONDS + $(patient 5)))
     until title | grep -Eq "$1"; do
         ((SECONDS < deadline)) || fail "title '$(title)' never matched /$1/"
         sleep 0.05

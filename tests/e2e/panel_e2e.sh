@@ -154,7 +154,7 @@ pass "fold and open: box left edge $before -> $folded -> $opened px"
 # --- 8. leaving -------------------------------------------------------------------------------
 xdotool mousemove $((WX + 700)) $((WY + 400))
 key Escape  # saved in step 5 and only run since: nothing unsaved, Esc quits at once
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+wait_exit
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""
 pass "Esc quit"

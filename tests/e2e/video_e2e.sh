@@ -108,7 +108,7 @@ pass "$(sed -E 's/^\[I\] //' <<<"$saved")"
 
 # --- 4. --record at launch; quitting completes the file ----------------------------------------
 xdotool key --window "$WID" Escape 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+wait_exit
 kill -0 "$APP_PID" 2>/dev/null && fail "Esc did not quit"
 APP_PID=""
 LOG="$OUT/stdout-webm.log"
@@ -116,7 +116,7 @@ start_app "$BIN" --renderer software --window 800x600 --screenshot-dir "$OUT/vid
 wait_log "Recording video \(WebM, "
 sleep 1.5
 xdotool key --window "$WID" Escape 2>/dev/null || true
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+wait_exit
 kill -0 "$APP_PID" 2>/dev/null && fail "Esc did not quit while recording"
 APP_PID=""
 wait_log "Saved video $OUT/videos/.*\.webm: [0-9.]+ s, [0-9]+ frames"

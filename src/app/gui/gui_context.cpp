@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <utility>
 
 #include <backends/imgui_impl_sdl.h>
 #include <imgui.h>
@@ -81,6 +82,14 @@ void GuiContext::makeCurrent() const {
 void GuiContext::setScale(float scale) {
     makeCurrent();
     scale = std::clamp(scale, static_cast<float>(kMinUiScale), static_cast<float>(kMaxUiScale));
+    if (inFrame_) {
+        // ImGui locks the font atlas from NewFrame to Render and aborts on a change in between
+        // (Debian's build keeps its assertions): a control of this very frame asked for it, so
+        // the next beginFrame makes it.
+        pendingScale_ = scale;
+        return;
+    }
+    pendingScale_.reset();
     if (scale == scale_) return;
     scale_ = scale;
     if (loadFont(window_ != nullptr ? windowPixelScale(window_, sdl_) : 1.f)) {
@@ -90,6 +99,11 @@ void GuiContext::setScale(float scale) {
 
 void GuiContext::setTheme(Theme theme) {
     makeCurrent();
+    if (inFrame_) {
+        pendingTheme_ = theme;  // the style is read while the frame is built: the next one
+        return;
+    }
+    pendingTheme_.reset();
     ImGuiStyle& style = ImGui::GetStyle();
     if (theme == Theme::Light) {
         ImGui::StyleColorsLight(&style);
@@ -258,10 +272,29 @@ bool GuiContext::overWindow(ImVec2 p) const {
     return false;
 }
 
+void GuiContext::applyPending() {
+    if (inFrame_) throw std::logic_error("GuiContext: a frame began before the last one ended");
+    if (const std::optional<Theme> theme = std::exchange(pendingTheme_, std::nullopt)) {
+        setTheme(*theme);
+    }
+    if (const std::optional<float> scale = std::exchange(pendingScale_, std::nullopt)) {
+        try {
+            setScale(*scale);
+        } catch (const std::runtime_error& e) {  // the font file gone since the start
+            problem_ = e.what();
+        }
+    }
+}
+
+std::optional<std::string> GuiContext::takeProblem() {
+    return std::exchange(problem_, std::nullopt);
+}
+
 void GuiContext::beginFrame() {
     makeCurrent();
     releaseIfDue();
     if (!platform_) throw std::logic_error("GuiContext::beginFrame(): no window; give a size");
+    applyPending();
     ImGui_ImplSDL2_NewFrame();
     // The 1.86 backend polls SDL's global mouse state, which on X11 can lag the events (under
     // Xvfb with XTest input it still held the start position when the click came); the last
@@ -278,27 +311,36 @@ void GuiContext::beginFrame() {
     const float scale = windowPixelScale(window_, sdl_);
     ImGuiIO& io = ImGui::GetIO();
     // A new pixel ratio (the window moved to another screen): the atlas again, crisp.
-    if (loadFont(scale)) renderer_->rebuildFontTexture();
+    try {
+        if (loadFont(scale)) renderer_->rebuildFontTexture();
+    } catch (const std::runtime_error& e) {  // the old atlas stays; not tried again each frame
+        problem_ = e.what();
+        fontScale_ = scale * scale_;
+    }
     // ImGui's point is scale_ window points (see the top of gui_context.hpp).
     io.DisplayFramebufferScale = ImVec2(scale * scale_, scale * scale_);
     io.DisplaySize = ImVec2(io.DisplaySize.x / scale_, io.DisplaySize.y / scale_);
     if (io.MousePos.x > -FLT_MAX / 2)
         io.MousePos = ImVec2(io.MousePos.x / scale_, io.MousePos.y / scale_);
     ImGui::NewFrame();
+    inFrame_ = true;
 }
 
 void GuiContext::beginFrame(float width, float height, float dt, float pixelScale) {
     makeCurrent();
+    applyPending();
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(width / scale_, height / scale_);
     io.DisplayFramebufferScale = ImVec2(pixelScale * scale_, pixelScale * scale_);
     io.DeltaTime = dt > 0.f ? dt : 1.f / 60.f;
     ImGui::NewFrame();
+    inFrame_ = true;
 }
 
 int GuiContext::endFrame() {
     makeCurrent();
     ImGui::Render();
+    inFrame_ = false;
     return renderer_->render(*ImGui::GetDrawData());
 }
 

@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <SDL.h>
 
@@ -75,11 +76,17 @@ class GuiContext {
 
     /// The UI's scale, kMinUiScale to kMaxUiScale (see the top of this file); the font atlas
     /// is rasterised again when it changes. Throws std::runtime_error when the font cannot be
-    /// loaded.
+    /// loaded. Called between beginFrame and endFrame (a control of the frame asked for it), it
+    /// takes effect at the next beginFrame: ImGui aborts on a change to its font atlas within a
+    /// frame.
     void setScale(float scale);
+    /// The scale the frames are drawn at (a scale asked for within a frame: from the next).
     [[nodiscard]] float scale() const { return scale_; }
-    /// ImGui's colours for `theme` (view/palette.hpp).
+    /// ImGui's colours for `theme` (view/palette.hpp); within a frame, from the next one.
     void setTheme(Theme theme);
+    /// What went wrong making a change asked for within a frame, or the atlas for a new pixel
+    /// ratio (the font file gone since the start: the old atlas stays), once; nullopt if nothing.
+    [[nodiscard]] std::optional<std::string> takeProblem();
 
     /// Starts a frame in the window: size and input from the platform backend, pixel scale
     /// from the renderer's output size over the window's size.
@@ -108,6 +115,8 @@ class GuiContext {
     void releaseIfDue();
     /// handleEvent for a key press or release.
     bool handleKey(const SDL_Event& event, bool tabToPanel);
+    /// Makes the scale and theme asked for within the last frame (before NewFrame).
+    void applyPending();
 
     SDL_Window* window_ = nullptr;
     SDL_Renderer* sdl_ = nullptr;
@@ -120,6 +129,10 @@ class GuiContext {
     float scale_ = 1.f;      // the UI's scale
     float fontScale_ = 0.f;  // pixels per ImGui point the atlas was rasterised for
     int releaseAfter_ = 0;   // the frame after which Esc gives the keyboard back (0: none)
+    bool inFrame_ = false;   // between NewFrame and Render: the font atlas is locked
+    std::optional<float> pendingScale_;  // asked for within the frame, made at the next
+    std::optional<Theme> pendingTheme_;
+    std::optional<std::string> problem_;
 };
 
 }  // namespace psb::app

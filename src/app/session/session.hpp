@@ -434,7 +434,8 @@ class Session {
     /// The hand did not move but the world under it did: the held particle follows the cursor.
     void afterCameraMove();
     // The clock and the history (session_time.cpp, session_history.cpp).
-    void stepOnce(double now);
+    /// One frame's step; returns the seconds simulated (less than the frame: behind).
+    double stepOnce(double now);
     /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.
     void seek(double seconds, bool oneFrameBack = false);
     void undoOrRedo(bool redo);

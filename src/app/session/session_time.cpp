@@ -5,6 +5,7 @@
 #include <chrono>
 
 #include "session/collision_feed.hpp"
+#include "session/frame_step.hpp"
 #include "session/session.hpp"
 #include "session/session_text.hpp"
 #include "session/units.hpp"
@@ -71,7 +72,7 @@ void Session::handle(const cmd::Stopwatch& c) {
     }
 }
 
-void Session::stepOnce(double now) {
+double Session::stepOnce(double now) {
     holdParticle(now);
     const double dt = doc_.meta.dt;  // the scene's frame length
     // One collision log for the instruments that read it (collision_feed.hpp).
@@ -80,11 +81,12 @@ void Session::stepOnce(double now) {
     listen(doc_.world,
            mergeWanted(data_.collisionsWanted(), LastCollision::wanted(card, selected)));
     data_.beforeStep(doc_.world);
-    doc_.world.step(dt);
+    const double simulated = stepFrame(doc_.world, dt);
     const std::vector<Collision> records = heard(doc_.world);
     data_.afterStep(doc_.world, records);
     if (card) lastCollision_.heard(records, doc_.world, selected);
     history_.timeline.stepped(dt);
+    return simulated;
 }
 
 void Session::listenForCollisions() {
@@ -97,7 +99,7 @@ void Session::listenForCollisions() {
 void Session::update(double realSeconds, double now, double budgetMs) {
     const auto t0 = std::chrono::steady_clock::now();
     monitor_.beginSteps(doc_.world);
-    clock_.run(realSeconds, now, doc_.meta.dt, budgetMs, t0, [this, now] { stepOnce(now); });
+    clock_.run(realSeconds, now, doc_.meta.dt, budgetMs, t0, [this, now] { return stepOnce(now); });
     monitor_.endSteps(doc_.world);
     // The arrow scale does not change by itself while a scene runs (launches, a bullet
     // scattering a crowd): arrow lengths stay comparable over time. A scene opened chooses one;

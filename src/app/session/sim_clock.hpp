@@ -45,7 +45,9 @@ class SimClock {
 
     /// One frame: `realSeconds` of real time at `now` on the pointer clock. Calls `step()` once
     /// per frame length `dt` owed (once if paused and a single step was requested), spending
-    /// at most `budgetMs` of wall-clock time from `start`.
+    /// at most `budgetMs` of wall-clock time from `start`. `step()` returns the simulated
+    /// seconds it covered: dt, or less when it could not finish (the exact mode's event
+    /// budget), which counts as falling behind.
     template <class Step>
     void run(double realSeconds, double now, double dt, double budgetMs,
              std::chrono::steady_clock::time_point start, Step&& step) {
@@ -56,23 +58,24 @@ class SimClock {
         pausedLastFrame_ = paused;
         if (!paused) {
             accumulator_ += realSeconds * scale_;
-            int steps = 0;
+            double simulated = 0.0;
             while (accumulator_ >= dt) {
-                step();
-                ++steps;
+                const double covered = step();
+                simulated += covered;
                 accumulator_ -= dt;
                 // Catching up must not take longer than a frame, or each frame would fall
-                // further behind: drop the backlog and run slower than real time.
-                if (msSince(start) > budgetMs) {
+                // further behind: drop the backlog and run slower than real time. A step that
+                // could not cover its frame is as far as this frame gets.
+                if (covered < dt || msSince(start) > budgetMs) {
                     accumulator_ = 0.0;
                     behindUntil_ = now + 1.0;
                     break;
                 }
             }
             // Smoothed over about half a second at 60 frames per second.
-            if (realSeconds > 0.0) reached_ += 0.1 * (steps * dt / realSeconds - reached_);
+            if (realSeconds > 0.0) reached_ += 0.1 * (simulated / realSeconds - reached_);
         } else if (stepRequested) {
-            step();
+            (void)step();
         }
         stepRequested = false;
     }

@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "session/frame_step.hpp"
+
 namespace psb::app {
 
 Timeline::Timeline(const TimelineSettings& settings) : settings_(settings) {
@@ -45,7 +47,7 @@ void Timeline::replay(World& world, const std::vector<Op>& log) {
     for (const Op& op : log) {
         switch (op.kind) {
             case Op::Kind::Step:
-                world.step(op.a);
+                (void)stepFrame(world, op.a);
                 break;
             case Op::Kind::SetPosition:
                 world.setPosition(op.id, Vec2(op.a, op.b));

@@ -17,15 +17,15 @@ constexpr std::uint64_t kResortEvery = 8;
 
 }  // namespace
 
-void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
-                        StepCounters& counters) {
+double ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt,
+                          std::uint64_t eventsPerParticle, StepProfile& profile,
+                          StepCounters& counters) {
     StageTimer total(profile.total);
     double& rebuildMs = profile.stage("rebuild");
     double& eventsMs = profile.stage("events");
     profile.stage("sync");  // added by World when the state is read
     if (stale_) {
-        // The world's arrays must hold the current state before they are read back in (after
-        // an exhausted budget the stepper invalidates itself with a sync still owed).
+        // The world's arrays must hold the current state before they are read back in.
         if (syncOwed_) sync(p);
         StageTimer t(rebuildMs);
         rebuild(p, def);
@@ -44,8 +44,12 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     }
     heldHit_.clear();
     maxOverlap_ = counters.maxOverlap;
-    const double tEnd = clock_ + dt;
-    const std::uint64_t budget = kMaxEventsPerParticlePerStep * (bodies_.size() + 1);
+    const double start = clock_;
+    const double tEnd = start + dt;
+    const std::uint64_t perStep = bodies_.size() + 1;
+    const std::uint64_t budget = eventsPerParticle > UINT64_MAX / perStep
+                                     ? UINT64_MAX
+                                     : eventsPerParticle * perStep;
     double reached = tEnd;
     {
         StageTimer t(eventsMs);
@@ -56,6 +60,8 @@ void ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt, StepP
     counters.maxOverlap = std::max(counters.maxOverlap, maxOverlap_);
     counters.events += events_;
     ++counters.steps;
+    // dt itself, not tEnd - start: the world's clock adds what it asked for, bit for bit.
+    return reached == tEnd ? dt : std::min(dt, reached - start);
 }
 
 double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_t budget) {
@@ -63,16 +69,11 @@ double ExactStepper::runEvents(double tEnd, StepCounters& counters, std::uint64_
     for (;;) {
         const EventQueue::Entry top = queue_.top();
         if (!(top.time <= tEnd)) break;
-        if (++processed > budget) {
+        if (budget > 0 && ++processed > budget) {
+            // The state is exact up to the next event: the step ends there, the time left is
+            // not simulated, and the next step goes on from there, the queue as it is. (Flying
+            // the rest freely would take particles through each other and the walls.)
             ++counters.cutShort;
-            if (!gravity_) {
-                stale_ = true;  // fly the rest freely; the next step rebuilds
-                flewFreely_ = true;
-                return tEnd;
-            }
-            // Under gravity flying freely would drop particles through the floor and into each
-            // other. The state is exact up to the next event: the step ends there, the time
-            // left is not simulated, and the next step goes on from there, the queue as it is.
             return top.time;
         }
         if (++eventsSinceSort_ > kResortEvery * bodies_.size()) {
@@ -157,27 +158,6 @@ void ExactStepper::sync(ParticleArrays& p) {
             p.omega[order[k]] = r.omega;
         }
     }
-    if (flewFreely_ && def_.walls) {
-        // Past a wall after the free flight (a particle the budget stopped between a wall and
-        // an obstacle it was placed in, say): on the wall, turned inward with restitution e.
-        const auto axis = [e = def_.restitution](double& c, double& v, double r, double extent) {
-            if (r >= extent - r) {
-                c = 0.5 * extent;
-                v = 0.0;
-            } else if (c < r) {
-                c = r;
-                if (v < 0.0) v = -e * v;
-            } else if (c > extent - r) {
-                c = extent - r;
-                if (v > 0.0) v = -e * v;
-            }
-        };
-        for (std::size_t i = 0; i < n; ++i) {
-            axis(x[i], vx[i], p.radius[i], def_.width);
-            axis(y[i], vy[i], p.radius[i], def_.height);
-        }
-    }
-    flewFreely_ = false;
     syncOwed_ = false;
 }
 

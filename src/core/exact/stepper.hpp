@@ -57,10 +57,11 @@
 // Walls off: no wall events, particles fly free; the cell grid folds onto itself
 // (cell_list.hpp) so space is unbounded.
 //
-// The event budget under gravity ends the step at the first event left (see
-// kMaxEventsPerParticlePerStep): never a particle through the floor. Without gravity the rest
-// of the step is flown freely, and a particle that flight takes past a wall is put back on it
-// and turned inward by the walls' law (as the discrete mode's wall stage would).
+// The event budget (World::setExactEventBudget; none unless the caller sets one, as the
+// interactive app does for its frames) ends a step that would process more events at the
+// first event left: the state is the exact one at that instant (never a pair through each
+// other, never a particle past a wall), step() returns the time it reached, and the rest of
+// the step is not simulated. Without a budget a step always reaches its end.
 
 #include <cstdint>
 #include <unordered_map>
@@ -95,16 +96,9 @@ inline constexpr double kElasticBelowSpeed = 1e-3;
 /// rest of the step.
 inline constexpr std::uint32_t kJamLimit = 1000;
 
-/// Events one step may process per particle (plus a fixed allowance) before the step ends
-/// early: a last-resort guard that keeps the app responsive. The state is then the exact one
-/// at the first event left (nothing overlaps, nothing is past a wall), and the rest of the
-/// step's time is not simulated; the next step goes on from there. No scene or test that
-/// settles reaches it.
-inline constexpr std::uint64_t kMaxEventsPerParticlePerStep = 10000;
-
 /// Under gravity: hits on sleeping particles in one step after which a particle wakes the
 /// sleepers it hits (see resting.cpp): a backstop for a particle wedged between sleepers,
-/// below the step's event budget. No scene or test reaches it.
+/// far below any event budget a caller sets. No scene or test reaches it.
 inline constexpr std::uint32_t kWakeAfterHits = 100000;
 
 /// Under gravity with e < 1, the rattle guard (see resting.cpp): a particle that collides
@@ -155,9 +149,12 @@ class ExactStepper {
     /// Advances the event state by dt seconds. Rebuilds it from `p` and `def` first if
     /// invalidate() was called since the last step (or there was none). Does not write `p`:
     /// the state at the end of the step is owed to it until sync(). Updates the counters
-    /// (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events).
-    void step(ParticleArrays& p, const WorldDef& def, double dt, StepProfile& profile,
-              StepCounters& counters);
+    /// (collisions, wallCollisions, wallImpulse, maxOverlap, steps, events, cutShort).
+    /// `eventsPerParticle` > 0 is the budget: a step that would process more than that many
+    /// events per particle (plus one particle's worth) ends at the first event left. Returns
+    /// the seconds simulated: dt (exactly the argument), or less when the budget ran out.
+    double step(ParticleArrays& p, const WorldDef& def, double dt, std::uint64_t eventsPerParticle,
+                StepProfile& profile, StepCounters& counters);
 
     /// Whether `p` has not yet received the state of the last step.
     [[nodiscard]] bool owesSync() const { return syncOwed_; }
@@ -196,7 +193,7 @@ class ExactStepper {
 
     // --- the loop (stepper.cpp) ---------------------------------------------------------------
     // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
-    // the budget ran out, the time of the first event left.
+    // the budget (0: none) ran out, the time of the first event left.
     double runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
 
     // --- rebuild (rebuild.cpp) ----------------------------------------------------------------
@@ -421,9 +418,6 @@ class ExactStepper {
     };
     std::unordered_map<std::uint64_t, PlacedContact> overlapContact_;
     bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
-    // The budget ran out without gravity: the rest of the step was flown freely, so sync()
-    // turns back into the box what the flight took past a wall (the next step rebuilds).
-    bool flewFreely_ = false;
     // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
     std::vector<std::uint32_t> heldHit_;
 };

@@ -191,6 +191,29 @@ TEST_F(GuiContextTest, LoadsTheAppsFontAndNamesAMissingOne) {
     frame(gui);
 }
 
+TEST_F(GuiContextTest, AScaleOrThemeAskedForWithinAFrameTakesEffectAtTheNext) {
+    // A control of the panel (UI scale, theme) acts while its frame is being built, when ImGui
+    // has locked the font atlas; a new atlas then aborted the program (ImFontAtlas::
+    // ClearInputData's assertion, found by random input on the window).
+    GuiOptions options;
+    options.font = findAsset("fonts/DejaVuSans.ttf");
+    GuiContext gui(sdl_, options);
+    gui.beginFrame(kSize, kSize);
+    ImGui::Begin("Controls");
+    gui.setScale(2.f);
+    gui.setTheme(Theme::Light);
+    EXPECT_FLOAT_EQ(gui.scale(), 1.f) << "this frame is drawn at the scale it began with";
+    ImGui::End();
+    EXPECT_EQ(gui.endFrame(), 0);
+    const ImVec4 darkText = ImGui::GetStyle().Colors[ImGuiCol_Text];
+    gui.beginFrame(kSize, kSize);
+    EXPECT_FLOAT_EQ(gui.scale(), 2.f);
+    EXPECT_FLOAT_EQ(gui.io().Fonts->Fonts[0]->FontSize, 2.f * options.fontPixels);
+    EXPECT_NE(ImGui::GetStyle().Colors[ImGuiCol_Text].x, darkText.x) << "the light theme's text";
+    EXPECT_EQ(gui.endFrame(), 0);
+    EXPECT_FALSE(gui.takeProblem());
+}
+
 TEST_F(GuiContextTest, AFrameWithoutAWindowNeedsASize) {
     GuiContext gui(sdl_);
     EXPECT_THROW(gui.beginFrame(), std::logic_error);

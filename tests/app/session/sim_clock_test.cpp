@@ -17,7 +17,10 @@ constexpr double kDt = 0.01;
 
 int frames(SimClock& c, double realSeconds, double now = 0.0, double budgetMs = 1e9) {
     int steps = 0;
-    c.run(realSeconds, now, kDt, budgetMs, std::chrono::steady_clock::now(), [&] { ++steps; });
+    c.run(realSeconds, now, kDt, budgetMs, std::chrono::steady_clock::now(), [&] {
+        ++steps;
+        return kDt;
+    });
     return steps;
 }
 
@@ -70,6 +73,7 @@ TEST(SimClock, ABacklogBeyondTheBudgetIsDroppedAndTheReachedSpeedSaysSo) {
     const auto slowStep = [&] {
         ++steps;
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        return kDt;
     };
     c.run(1.0, 10.0, kDt, 5.0, std::chrono::steady_clock::now(), slowStep);
     EXPECT_GE(steps, 1);
@@ -80,6 +84,24 @@ TEST(SimClock, ABacklogBeyondTheBudgetIsDroppedAndTheReachedSpeedSaysSo) {
     EXPECT_EQ(steps, 0) << "the backlog was dropped";
     c.run(0.0, 12.0, kDt, 5.0, std::chrono::steady_clock::now(), slowStep);
     EXPECT_EQ(c.reachedScale(), c.scale()) << "a second later it no longer counts as behind";
+}
+
+TEST(SimClock, AStepThatCannotCoverItsFrameEndsTheFrameAndCountsAsBehind) {
+    // The exact mode under the app's event budget: a step ends at its first event left, having
+    // simulated a quarter of its frame. The frame stops there, and the speed reached says so.
+    SimClock c;
+    int steps = 0;
+    const auto shortStep = [&] {
+        ++steps;
+        return kDt / 4;
+    };
+    for (int k = 0; k < 30; ++k) {
+        steps = 0;
+        c.run(0.05, 10.0 + 0.05 * k, kDt, 1e9, std::chrono::steady_clock::now(), shortStep);
+        EXPECT_EQ(steps, 1) << "frame " << k;
+    }
+    EXPECT_LT(c.reachedScale(), 0.1) << "a quarter of 0.01 s in each 0.05 s frame: x0.05";
+    EXPECT_GT(c.reachedScale(), 0.03);
 }
 
 }  // namespace

@@ -118,7 +118,7 @@ struct Drop {
         stepper.setLog(&log);
     }
     void step(double dt) {
-        stepper.step(p, def, dt, profile, counters);
+        stepper.step(p, def, dt, 0, profile, counters);
         stepper.sync(p);  // the state at the end of the step, as World reads it
     }
 };
@@ -183,7 +183,7 @@ TEST(ExactGravity, MonkeyAndHunterCollisionTimeIsTheGravityFreeOne) {
         s.setLog(&log);
         StepProfile prof;
         StepCounters c;
-        s.step(p, def, 3.0, prof, c);
+        s.step(p, def, 3.0, 0, prof, c);
         ASSERT_EQ(log.size(), 1u) << "g = " << g;
         EXPECT_LE(relErr(log[0].time, want), 1e-12) << "g = " << g;
     }

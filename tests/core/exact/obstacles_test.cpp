@@ -66,7 +66,7 @@ TEST(ExactObstacles, TheCollisionLogNamesTheObstacleHit) {
     StepProfile profile;
     StepCounters counters;
     for (int k = 0; k < 60; ++k)
-        stepper.step(p, def, 1.0 / 60.0, profile, counters);
+        stepper.step(p, def, 1.0 / 60.0, 0, profile, counters);
     ASSERT_GE(log.size(), 2u);
     for (const exact::CollisionRecord& c : log)
         EXPECT_EQ(c.j, exact::CollisionRecord::kObstacle + 1);

@@ -141,7 +141,7 @@ std::vector<CollisionRecord> expectSameEvents(const ParticleArrays& p, const Wor
     StepProfile profile;
     StepCounters counters;
     ParticleArrays copy = p;
-    stepper.step(copy, def, tEnd, profile, counters);
+    stepper.step(copy, def, tEnd, 0, profile, counters);
     EXPECT_GE(want.size(), count) << label << ": scene too quiet";
     EXPECT_GE(log.size(), count) << label;
     for (std::size_t k = 0; k < std::min({count, want.size(), log.size()}); ++k) {
