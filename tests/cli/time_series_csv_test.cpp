@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,7 +65,8 @@ class TimeSeriesCsv : public ::testing::Test {
             std::stringstream ss(line);
             std::string cell;
             while (std::getline(ss, cell, ','))
-                row.push_back(std::stod(cell));
+                row.push_back(cell.empty() ? std::nan("") : std::stod(cell));
+            if (!line.empty() && line.back() == ',') row.push_back(std::nan(""));
             EXPECT_EQ(row.size(), 8u) << line;
             rows.push_back(row);
         }
@@ -86,6 +88,7 @@ TEST_F(TimeSeriesCsv, ElasticClosedBoxKeepsItsKineticEnergyInEveryRow) {
     for (const auto& r : rows)
         EXPECT_NEAR(r[1], e0, 1e-9 * e0) << "t = " << r[0];
     EXPECT_EQ(rows[0][0], 0.0);
+    EXPECT_TRUE(std::isnan(rows[0][7])) << "the first row has no interval: an empty rate";
     EXPECT_NEAR(rows.back()[0], 2.0, 1e-12);
     EXPECT_GT(rows.back()[6], 0.0);  // the gas collided
 }

@@ -103,6 +103,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     f.world = &world;
     f.camera = &session.camera();
     f.series = &session.series();
+    f.rateWindow = session.rateWindow();
     f.now = session.observables();
     f.view = session.view();
     f.frameLength = session.meta().dt;
