@@ -178,7 +178,7 @@ TEST(TimeSeriesCsvGravity, AddsPotentialAndMechanicalEnergyColumns) {
     std::vector<double> row;
     std::stringstream ss(second);
     for (std::string cell; std::getline(ss, cell, ',');)
-        row.push_back(std::stod(cell));
+        row.push_back(cell.empty() ? std::nan("") : std::stod(cell));
     ASSERT_EQ(row.size(), 10u);
     EXPECT_NEAR(row[8], 24.0, 1e-12);
     EXPECT_NEAR(row[9], 30.0, 1e-12);
@@ -207,9 +207,11 @@ TEST(TimeSeriesCsvRotation, AddsRotationalEnergyAndAngularMomentumColumns) {
     EXPECT_EQ(header, std::string(kTimeSeriesCsvHeader) + kTimeSeriesCsvRotationColumns);
     std::vector<double> row;
     std::stringstream ss(first);
+    // The first row's rate is an empty cell: there is no interval yet.
     for (std::string cell; std::getline(ss, cell, ',');)
-        row.push_back(std::stod(cell));
+        row.push_back(cell.empty() ? std::nan("") : std::stod(cell));
     ASSERT_EQ(row.size(), 10u);
+    EXPECT_TRUE(std::isnan(row[7]));
     EXPECT_EQ(row[8], 4.5);
     EXPECT_EQ(row[9], 13.0);
     EXPECT_EQ(timeSeriesCsv(series).find("rotational"), std::string::npos);
