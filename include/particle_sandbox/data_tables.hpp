@@ -32,7 +32,8 @@ class World;
 
 /// The observables over time (time_series.hpp), one row per sample: time_s,
 /// kinetic_energy_J, momentum_x_kg_m_per_s, momentum_y_kg_m_per_s, com_x_m, com_y_m,
-/// collisions, collision_rate_per_s, with `gravity` potential_energy_J and
+/// collisions, collision_rate_per_s (empty where the sample has none: ObservablesSample),
+/// with `gravity` potential_energy_J and
 /// mechanical_energy_J (kinetic + rotational + potential), and with `rotation` (a world that
 /// keeps rotation: World::rotationInUse) rotational_energy_J and
 /// angular_momentum_kg_m2_per_s (orbital + spin, about the box's top-left corner; with y up,

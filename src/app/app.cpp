@@ -49,7 +49,8 @@ App::App(const AppOptions& options) : options_(options) {
     SceneMeta meta;
     if (options_.benchParticles > 0) {
         const Scene scene = benchmarkScene(options_.benchParticles, 1,
-                                           options_.benchOverlays.find('R') != std::string::npos);
+                                           options_.benchOverlays.find('R') != std::string::npos,
+                                           options_.benchOverlays.find('M') != std::string::npos);
         world = makeWorld(scene);
         meta.name = "benchmark";
         meta.dt = scene.dt;

@@ -80,12 +80,13 @@ int main(int argc, char** argv) {
     cli.add_option("--bench-overlays", options.benchOverlays,
                    "With --bench: also draw these overlays and instruments, by key: any of V "
                    "(momentum), L (all trails), K (plots), D (speed histogram), I (values "
-                   "table), J (last collision card), Q (ruler), G (grid), U (stopwatch), and R "
-                   "(every particle turning, with its spin mark), e.g. VLKD")
+                   "table), J (last collision card), Q (ruler), G (grid), U (stopwatch), R "
+                   "(every particle turning, with its spin mark), and M (masses of 1 to 4 kg, "
+                   "each disc shaded by its mass), e.g. VLKD")
         ->check([](const std::string& keys) {
-            return keys.find_first_not_of("VLKDIJQGUR") == std::string::npos && !keys.empty()
+            return keys.find_first_not_of("VLKDIJQGURM") == std::string::npos && !keys.empty()
                        ? std::string()
-                       : "expected letters from VLKDIJQGUR, got '" + keys + "'";
+                       : "expected letters from VLKDIJQGURM, got '" + keys + "'";
         });
     cli.add_option("--seed", options.seed, "Seed for random spawns (0: from the clock)");
     std::string record;

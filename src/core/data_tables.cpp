@@ -1,6 +1,7 @@
 #include <particle_sandbox/data_tables.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -97,8 +98,14 @@ std::string timeSeriesTable(const std::vector<ObservablesSample>& samples, bool 
             .number(axes.up(s.momentum.y()))
             .number(s.centreOfMass.x())
             .number(axes.y(s.centreOfMass.y()))
-            .count(s.collisions)
-            .number(s.collisionRate);
+            .count(s.collisions);
+        // No rate before the series reaches a whole window back: an empty cell, which a
+        // spreadsheet reads as missing, not "nan" text or a 0 that was never measured.
+        if (std::isnan(s.collisionRate)) {
+            t.text("");
+        } else {
+            t.number(s.collisionRate);
+        }
         if (gravity) {
             t.number(s.potentialEnergy)
                 .number(s.kineticEnergy + s.rotationalEnergy + s.potentialEnergy);

@@ -1,6 +1,7 @@
 #include <particle_sandbox/time_series.hpp>
 
 #include <algorithm>
+#include <limits>
 
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/world.hpp>
@@ -20,14 +21,17 @@ ObservablesSample sampleObservables(const World& world) {
     return s;
 }
 
-TimeSeries::TimeSeries(std::size_t capacity) : buffer_(std::max<std::size_t>(capacity, 1)) {}
+TimeSeries::TimeSeries(std::size_t capacity, std::size_t rateSamples)
+    : buffer_(std::max<std::size_t>(capacity, 1)),
+      rateSamples_(
+          std::clamp<std::size_t>(rateSamples, 1, std::max<std::size_t>(capacity, 2) - 1)) {}
 
 bool TimeSeries::record(const World& world) {
     return record(sampleObservables(world));
 }
 
 bool TimeSeries::record(ObservablesSample s) {
-    s.collisionRate = 0.0;
+    s.collisionRate = std::numeric_limits<double>::quiet_NaN();
     if (size_ > 0) {
         ObservablesSample& last = buffer_[(first_ + size_ - 1) % buffer_.size()];
         if (s.time == last.time && s.collisions == last.collisions) {
@@ -39,9 +43,11 @@ bool TimeSeries::record(ObservablesSample s) {
         }
         if (s.time <= last.time || s.collisions < last.collisions) {
             clear();  // another run: its first sample has no interval
-        } else {
+        } else if (size_ >= rateSamples_) {
+            // The window's start: rateSamples_ samples back from the one being added.
+            const ObservablesSample& start = (*this)[size_ - rateSamples_];
             s.collisionRate =
-                static_cast<double>(s.collisions - last.collisions) / (s.time - last.time);
+                static_cast<double>(s.collisions - start.collisions) / (s.time - start.time);
         }
     }
     if (size_ < buffer_.size()) {
@@ -53,6 +59,13 @@ bool TimeSeries::record(ObservablesSample s) {
     }
     ++recorded_;
     return true;
+}
+
+void TimeSeries::dropAfter(double time) {
+    while (size_ > 0 && back().time > time) {
+        --size_;
+        --recorded_;
+    }
 }
 
 void TimeSeries::clear() {

@@ -18,6 +18,8 @@
 #include "app.hpp"
 #include "core/test_util.hpp"
 #include "temp_dir_test.hpp"
+#include "view/mass_shade.hpp"
+#include "view/palette.hpp"
 
 namespace psb::app {
 namespace {
@@ -91,6 +93,16 @@ class AppTest : public TempDirTest {
             motion(app, s + Vec2(4.0 * k, 0), ms + 10 * k);
         button(app, SDL_MOUSEBUTTONUP, s + Vec2(40, 0), ms + 100);
     }
+    /// The fill the particle at `at` is drawn in: its colour (on the light theme, lightColour's)
+    /// in the shade of its mass among the scene's (view/mass_shade.hpp).
+    static Color fillAt(const App& app, Vec2 at, Theme theme) {
+        const Particle p = app.world().get(idAt(app, at));
+        const Color colour = theme == Theme::Light ? lightColour(p.color) : p.color;
+        const MassRange masses = massRange(app.world().particles().mass);
+        if (!masses.varies()) return colour;
+        return massShades(colour, theme).at(masses.place(p.mass));
+    }
+
     static ParticleId idAt(const App& app, Vec2 at) {
         const auto id = app.world().pick(at);
         EXPECT_TRUE(id.has_value());
@@ -384,13 +396,16 @@ TEST_F(AppTest, TheLightThemeDrawsALightWindow) {
     EXPECT_EQ(px[i], 255);
     EXPECT_EQ(px[i + 1], 255);
     EXPECT_EQ(px[i + 2], 255);
-    // The yellow particle becomes Okabe–Ito's orange, seen on white.
+    // The yellow particle becomes Okabe–Ito's orange, seen on white, in the shade of its
+    // 18 kg among the scene's masses.
     const Vec2 y = app.camera().worldToScreen(kYellow);
     const std::size_t j = 3 * (static_cast<std::size_t>(std::lround(y.y())) * w +
                                static_cast<std::size_t>(std::lround(y.x())));
-    EXPECT_NEAR(px[j], 230, 8);
-    EXPECT_NEAR(px[j + 1], 159, 8);
-    EXPECT_NEAR(px[j + 2], 0, 8);
+    const Color fill = fillAt(app, kYellow, Theme::Light);
+    EXPECT_EQ(lightColour(app.world().get(idAt(app, kYellow)).color), (Color{230, 159, 0}));
+    EXPECT_NEAR(px[j], fill.r, 8);
+    EXPECT_NEAR(px[j + 1], fill.g, 8);
+    EXPECT_NEAR(px[j + 2], fill.b, 8);
     stbi_image_free(px);
 }
 
@@ -405,13 +420,15 @@ TEST_F(AppTest, F12WritesTheWindowAsAPng) {
     ASSERT_NE(px, nullptr) << stbi_failure_reason();
     EXPECT_EQ(w, app.camera().viewportWidth());
     EXPECT_EQ(h, app.camera().viewportHeight());
-    // The yellow particle's centre is drawn in its colour (255, 210, 110).
+    // The yellow particle's centre is drawn in its colour (255, 210, 110) in the shade of its
+    // mass among the scene's.
     const Vec2 c = app.camera().worldToScreen(kYellow);
     const std::size_t i = 3 * (static_cast<std::size_t>(std::lround(c.y())) * w +
                                static_cast<std::size_t>(std::lround(c.x())));
-    EXPECT_NEAR(px[i], 255, 8);
-    EXPECT_NEAR(px[i + 1], 210, 8);
-    EXPECT_NEAR(px[i + 2], 110, 8);
+    const Color fill = fillAt(app, kYellow, Theme::Dark);
+    EXPECT_NEAR(px[i], fill.r, 8);
+    EXPECT_NEAR(px[i + 1], fill.g, 8);
+    EXPECT_NEAR(px[i + 2], fill.b, 8);
     stbi_image_free(px);
 }
 

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -64,7 +65,8 @@ class TimeSeriesCsv : public ::testing::Test {
             std::stringstream ss(line);
             std::string cell;
             while (std::getline(ss, cell, ','))
-                row.push_back(std::stod(cell));
+                row.push_back(cell.empty() ? std::nan("") : std::stod(cell));
+            if (!line.empty() && line.back() == ',') row.push_back(std::nan(""));
             EXPECT_EQ(row.size(), 8u) << line;
             rows.push_back(row);
         }
@@ -86,6 +88,7 @@ TEST_F(TimeSeriesCsv, ElasticClosedBoxKeepsItsKineticEnergyInEveryRow) {
     for (const auto& r : rows)
         EXPECT_NEAR(r[1], e0, 1e-9 * e0) << "t = " << r[0];
     EXPECT_EQ(rows[0][0], 0.0);
+    EXPECT_TRUE(std::isnan(rows[0][7])) << "the first row has no interval: an empty rate";
     EXPECT_NEAR(rows.back()[0], 2.0, 1e-12);
     EXPECT_GT(rows.back()[6], 0.0);  // the gas collided
 }
@@ -175,7 +178,7 @@ TEST(TimeSeriesCsvGravity, AddsPotentialAndMechanicalEnergyColumns) {
     std::vector<double> row;
     std::stringstream ss(second);
     for (std::string cell; std::getline(ss, cell, ',');)
-        row.push_back(std::stod(cell));
+        row.push_back(cell.empty() ? std::nan("") : std::stod(cell));
     ASSERT_EQ(row.size(), 10u);
     EXPECT_NEAR(row[8], 24.0, 1e-12);
     EXPECT_NEAR(row[9], 30.0, 1e-12);
@@ -204,9 +207,11 @@ TEST(TimeSeriesCsvRotation, AddsRotationalEnergyAndAngularMomentumColumns) {
     EXPECT_EQ(header, std::string(kTimeSeriesCsvHeader) + kTimeSeriesCsvRotationColumns);
     std::vector<double> row;
     std::stringstream ss(first);
+    // The first row's rate is an empty cell: there is no interval yet.
     for (std::string cell; std::getline(ss, cell, ',');)
-        row.push_back(std::stod(cell));
+        row.push_back(cell.empty() ? std::nan("") : std::stod(cell));
     ASSERT_EQ(row.size(), 10u);
+    EXPECT_TRUE(std::isnan(row[7]));
     EXPECT_EQ(row[8], 4.5);
     EXPECT_EQ(row[9], 13.0);
     EXPECT_EQ(timeSeriesCsv(series).find("rotational"), std::string::npos);

@@ -33,9 +33,51 @@ TEST(TimeSeries, RateIsCollisionsPerSimulatedSecondOverTheInterval) {
     ASSERT_TRUE(series.record(at(0.0, 0)));
     ASSERT_TRUE(series.record(at(0.5, 10)));
     ASSERT_TRUE(series.record(at(1.5, 13)));
-    EXPECT_EQ(series[0].collisionRate, 0.0);
+    EXPECT_TRUE(std::isnan(series[0].collisionRate)) << "no interval yet: no rate, not 0";
     EXPECT_DOUBLE_EQ(series[1].collisionRate, 20.0);  // 10 in 0.5 s
     EXPECT_DOUBLE_EQ(series[2].collisionRate, 3.0);   // 3 in 1 s
+}
+
+TEST(TimeSeries, TheRateCountsOverTheLastWindowOfSamples) {
+    // Samples every 0.1 s, the rate over the last 5 intervals (0.5 s): one collision at
+    // 0.3 s reads as 2 per second in each sample whose window holds it, not as 10 per second
+    // in one sample.
+    TimeSeries series(64, 5);
+    EXPECT_EQ(series.rateSamples(), 5u);
+    for (int k = 0; k <= 20; ++k)
+        ASSERT_TRUE(series.record(at(0.1 * k, k >= 3 ? 1 : 0)));
+    for (std::size_t k = 0; k < 5; ++k)
+        EXPECT_TRUE(std::isnan(series[k].collisionRate)) << "no whole window before 0.5 s: " << k;
+    for (std::size_t k = 5; k < series.size(); ++k) {
+        // The window (t - 0.5 s, t] holds the collision for samples 5 to 7 (t = 0.5 to 0.7).
+        EXPECT_NEAR(series[k].collisionRate, k <= 7 ? 2.0 : 0.0, 1e-12) << "t = " << series[k].time;
+    }
+}
+
+TEST(TimeSeries, AWindowNeverReachesPastTheRingsCapacity) {
+    EXPECT_EQ(TimeSeries(4, 10).rateSamples(), 3u);
+    EXPECT_EQ(TimeSeries(1, 10).rateSamples(), 1u);
+    EXPECT_EQ(TimeSeries(8, 0).rateSamples(), 1u);
+    // A full ring still finds its window's start: 3 back from the sample being added.
+    TimeSeries series(4, 3);
+    for (int k = 0; k < 10; ++k)
+        ASSERT_TRUE(series.record(at(k, 4 * static_cast<std::uint64_t>(k))));
+    EXPECT_DOUBLE_EQ(series.back().collisionRate, 4.0);
+}
+
+TEST(TimeSeries, DroppingTheFutureKeepsThePastAndItsRates) {
+    TimeSeries series(16, 2);
+    for (int k = 0; k <= 6; ++k)
+        ASSERT_TRUE(series.record(at(k, static_cast<std::uint64_t>(k * k))));
+    const double rate3 = series[3].collisionRate;
+    series.dropAfter(3.5);  // an undo to 3.5 s
+    ASSERT_EQ(series.size(), 4u);
+    EXPECT_EQ(series.recorded(), 4u);
+    EXPECT_EQ(series.back().time, 3.0);
+    EXPECT_EQ(series.back().collisionRate, rate3);
+    // Carrying on from there: the window reaches back into what was kept.
+    ASSERT_TRUE(series.record(at(4.0, 10)));
+    EXPECT_DOUBLE_EQ(series.back().collisionRate, (10.0 - 4.0) / 2.0);
 }
 
 TEST(TimeSeries, RingKeepsTheNewestSamplesOldestFirst) {
@@ -73,7 +115,7 @@ TEST(TimeSeries, AClockGoingBackwardsStartsANewSeries) {
     ASSERT_TRUE(series.record(at(0.0, 0)));  // a new world
     ASSERT_EQ(series.size(), 1u);
     EXPECT_EQ(series[0].time, 0.0);
-    EXPECT_EQ(series[0].collisionRate, 0.0);
+    EXPECT_TRUE(std::isnan(series[0].collisionRate));
     ASSERT_TRUE(series.record(at(1.0, 0)));
     ASSERT_TRUE(series.record(at(2.0, 0)));
     ASSERT_TRUE(series.record(at(3.0, 0)));  // the counters were reset under the series

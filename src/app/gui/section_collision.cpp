@@ -12,7 +12,6 @@
 #include "gui/control_panel.hpp"
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
-#include "session/units.hpp"
 #include "view/collision_card_lines.hpp"
 #include "view/momenta_diagram.hpp"
 #include "view/palette.hpp"
@@ -186,11 +185,7 @@ void ControlPanel::momenta(const CollisionCard& card) {
     ImGui::TextDisabled("after");
     drawHalf(d, d.after, "##momenta after", side);
     ImGui::EndGroup();
-    std::string scale = "The square reaches ";
-    scale += quantity(d.reach, "kg m/s", false);
-    // The arrows point as the particles move on screen, whichever way the numbers count y.
-    scale += " from its centre; each arrow points the way its particle moves in the box";
-    widgets::wrappedDisabled(scale);
+    widgets::wrappedDisabled(momentaDiagramScale(d));
 }
 
 }  // namespace psb::app

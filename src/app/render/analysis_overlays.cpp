@@ -6,7 +6,7 @@ namespace psb::app {
 
 void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const World& world,
                             const ObservablesSample& now, const Camera& camera,
-                            const TimeSeries& series, const ViewOptions& view,
+                            const TimeSeries& series, double rateWindow, const ViewOptions& view,
                             const PanelLayout& layout, const std::optional<BinHistogram>& bins) {
     const Palette& colours = palette(view.theme);
     if (view.momentum) {
@@ -18,7 +18,7 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
         for (const double m : world.particles().mass)
             mass += m;
         plots_.draw(renderer, font, series, layout.plots, layout.plotRows, layout.plotRowHeight,
-                    mass, colours, view.yUp, chartLineWidth(view.uiScale));
+                    mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScale));
     }
     if (view.speeds && layout.speeds.w > 0) {
         speeds_.draw(renderer, font, world.particles(), layout.speeds, colours,

@@ -27,10 +27,11 @@ class AnalysisOverlays {
   public:
     /// Draws what `view` switches on, the panels in `layout`'s boxes (a panel whose box is
     /// empty is not drawn); `now` is the world's current sample, `series` feeds the plots and
-    /// the centre of mass path; `bins` is the scene's bins panel, when it is shown.
+    /// the centre of mass path, its collision rate counted over `rateWindow` s; `bins` is the
+    /// scene's bins panel, when it is shown.
     void draw(SDL_Renderer* renderer, const Font& font, const World& world,
               const ObservablesSample& now, const Camera& camera, const TimeSeries& series,
-              const ViewOptions& view, const PanelLayout& layout,
+              double rateWindow, const ViewOptions& view, const PanelLayout& layout,
               const std::optional<BinHistogram>& bins = std::nullopt);
 
   private:

@@ -49,8 +49,8 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
         drawDropper(camera, d, colours);
     if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected, colours);
     if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
-    analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.view,
-                   frame.layout, frame.bins);
+    analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.rateWindow,
+                   frame.view, frame.layout, frame.bins);
     if (frame.grid || frame.ruler) drawLabMarks(frame, colours);
     if (frame.launch) drawLaunch(camera, *frame.launch, colours);
     if (frame.boxMarker) drawBoxMarker(*frame.boxMarker, colours);

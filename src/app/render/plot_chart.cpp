@@ -40,7 +40,7 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 
 void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
                      const PixelRect& box, int rows, int rowHeight, double totalMass,
-                     const Palette& colours, bool yUp, float lineWidth) {
+                     double rateWindow, const Palette& colours, bool yUp, float lineWidth) {
     boxes_.clear();
     text_.clear();
     rows = std::clamp(rows, 1, 4);
@@ -50,6 +50,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), sdlColor(colours.panel, 190));
     const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
 
+    const std::string rateTitle = collisionRateTitle(rateWindow);
     struct Plot {
         const char* title;
         double (*value)(const ObservablesSample&);
@@ -63,7 +64,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
          sdlColor(colours.pxPlot)},
         {"momentum py (kg m/s)", [](const ObservablesSample& s) { return s.momentum.y(); },
          sdlColor(colours.pyPlot), yUp ? -1.0 : 1.0},
-        {"collision rate (1/s)", [](const ObservablesSample& s) { return s.collisionRate; },
+        {rateTitle.c_str(), [](const ObservablesSample& s) { return s.collisionRate; },
          sdlColor(colours.ratePlot)},
     };
 
@@ -89,8 +90,12 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
         if (n < 2) continue;
 
-        double lo = pl.sign * pl.value(series[0]), hi = lo;
-        for (std::size_t s = 1; s < n; ++s) {
+        // A sample without a value (the rate before a whole window has run) is left out.
+        std::size_t first = 0;
+        while (first < n && std::isnan(pl.value(series[first])))
+            ++first;
+        double lo = first < n ? pl.sign * pl.value(series[first]) : 0.0, hi = lo;
+        for (std::size_t s = first; s < n; ++s) {
             const double v = pl.sign * pl.value(series[s]);
             lo = std::min(lo, v);
             hi = std::max(hi, v);
@@ -110,7 +115,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
             return left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
         };
         layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_, colours);
-        for (std::size_t s = 0; s < n; ++s)
+        for (std::size_t s = first; s < n; ++s)
             line_.push_back({sx(series[s].time), sy(pl.sign * pl.value(series[s]))});
         lines.emplace_back(pl.color, line_.size());
     }

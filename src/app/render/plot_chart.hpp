@@ -1,6 +1,8 @@
 #pragma once
 // The plots panel (the K key): total kinetic energy (J), momentum px and py (kg m/s) and the
-// collision rate (1/s) against simulated time, from the app's TimeSeries.
+// collision rate (1/s, counted over a window of simulated time its title states) against
+// simulated time, from the app's TimeSeries. The rate's line starts where the series first
+// reaches a whole window back.
 //
 // Each y range is fitted to the data but never narrower than a floor tied to the quantity's
 // own size: 1 % of the mean kinetic energy, 1 % of the momentum scale √(2 M E) (the largest
@@ -44,11 +46,11 @@ class PlotChart {
   public:
     /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
     /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
-    /// momentum plots' floor; `yUp`: py upward (the y up option); `lineWidth` pixels
-    /// (chartLineWidth). Nothing but the frame when
-    /// `series` has fewer than 2 samples.
+    /// momentum plots' floor; `rateWindow` (s) names the rate's window in its title; `yUp`: py
+    /// upward (the y up option); `lineWidth` pixels (chartLineWidth). Nothing but the frame
+    /// when `series` has fewer than 2 samples.
     void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
-              const PixelRect& box, int rows, int rowHeight, double totalMass,
+              const PixelRect& box, int rows, int rowHeight, double totalMass, double rateWindow,
               const Palette& colours = palette(Theme::Dark), bool yUp = false,
               float lineWidth = 1.f);
 

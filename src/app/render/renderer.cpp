@@ -13,6 +13,7 @@
 #include "render/spin_mark.hpp"
 #include "render/text.hpp"
 #include "session/units.hpp"
+#include "view/mass_shade.hpp"
 
 namespace psb::app {
 
@@ -150,6 +151,35 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
         }
         return drawnAs;
     };
+    // Its fill: that colour in the shade of its mass when the scene's masses differ
+    // (view/mass_shade.hpp). A colour's shades are worked out once (shades_), and a run of
+    // equal colour and mass, as scenes build them, reuses the last fill.
+    const MassRange masses = massRange(p.mass);
+    if (shadesTheme_ != options.theme) {
+        shades_.clear();
+        shadesTheme_ = options.theme;
+    }
+    Color shadedColour = seen;
+    const MassShades* shades = nullptr;
+    double lastMass = -1.0;
+    Color lastFill = seen;
+    const auto fillOf = [&](std::size_t i) {
+        const Color c = colourOf(i);
+        if (!masses.varies()) return c;
+        if (shades == nullptr || !(c == shadedColour)) {
+            shadedColour = c;
+            const std::uint32_t key = (std::uint32_t{c.r} << 16) | (std::uint32_t{c.g} << 8) | c.b;
+            auto it = shades_.find(key);
+            if (it == shades_.end()) it = shades_.emplace(key, massShades(c, options.theme)).first;
+            shades = &it->second;
+            lastMass = -1.0;
+        }
+        if (p.mass[i] != lastMass) {
+            lastMass = p.mass[i];
+            lastFill = shades->at(masses.place(lastMass));
+        }
+        return lastFill;
+    };
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
     const double zoom = camera.zoom();
     DrawStats stats;
@@ -189,10 +219,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
         ++stats.drawn;
         if (r < kSmallDiscPixels) {
             small_.disc(static_cast<float>(s.x()), static_cast<float>(s.y()), static_cast<float>(r),
-                        argb(colourOf(i)));
+                        argb(fillOf(i)));
             continue;
         }
-        const Color drawn = colourOf(i);
+        const Color drawn = fillOf(i);
         const SDL_Color c{drawn.r, drawn.g, drawn.b, 255};
         discs_.quad(static_cast<float>(s.x() - r), static_cast<float>(s.y() - r),
                     static_cast<float>(s.x() + r), static_cast<float>(s.y() + r), c);
@@ -216,7 +246,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             if (std::max(0.75, r) < kSmallDiscPixels) {
                 // A one-pixel shaft from the rim, and a head of two strokes when there is room.
                 const Vec2 start = c + r * u;
-                const std::uint32_t col = argb(colourOf(i));
+                const std::uint32_t col = argb(fillOf(i));
                 const auto line = [&](const Vec2& a, const Vec2& b) {
                     small_.line(static_cast<float>(a.x()), static_cast<float>(a.y()),
                                 static_cast<float>(b.x()), static_cast<float>(b.y()), col);
@@ -237,7 +267,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             const auto pt = [](const Vec2& v) {
                 return SDL_FPoint{static_cast<float>(v.x()), static_cast<float>(v.y())};
             };
-            const Color drawn = colourOf(i);
+            const Color drawn = fillOf(i);
             const SDL_Color col{drawn.r, drawn.g, drawn.b, 255};
             arrows_.triangle(pt(tip), pt(base + halfWidth * n), pt(base - halfWidth * n), col);
             const Vec2 start = c + r * u;

@@ -14,6 +14,8 @@
 // and the image is shown with one texture copy.
 
 #include <cstddef>
+#include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include <SDL.h>
@@ -24,6 +26,7 @@
 #include "render/trails.hpp"
 #include "session/camera.hpp"
 #include "session/view_options.hpp"
+#include "view/mass_shade.hpp"
 #include "view/palette.hpp"
 
 namespace psb::app {
@@ -99,6 +102,9 @@ class Renderer {
     TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
     std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none
     GeometryBatch obstacles_;          ///< the world's pegs and segments (obstacle_drawing.hpp)
+    /// Each colour's mass shades (view/mass_shade.hpp) on shadesTheme_, by 0xRRGGBB.
+    std::unordered_map<std::uint32_t, MassShades> shades_;
+    Theme shadesTheme_ = Theme::Dark;
 };
 
 }  // namespace psb::app

@@ -3,16 +3,6 @@
 #include <algorithm>
 
 namespace psb::app {
-namespace {
-
-/// The collision rate of `s` since `previous`, 1/s (TimeSeries's rule).
-double rateSince(const ObservablesSample& previous, const ObservablesSample& s) {
-    if (!(s.time > previous.time) || s.collisions < previous.collisions) return 0.0;
-    return static_cast<double>(s.collisions - previous.collisions) / (s.time - previous.time);
-}
-
-}  // namespace
-
 void DataRecorder::restart() {
     run_.clear();
     runStride_ = 1;
@@ -34,24 +24,18 @@ void DataRecorder::sample(const ObservablesSample& s) {
     if (!run_.empty() && s.time == run_.back().time) {
         // Nothing stepped, but the world may have changed (particles placed before Play): the
         // row for this time is the state as last seen.
-        ObservablesSample kept = s;
-        kept.collisionRate = run_.size() > 1 ? rateSince(run_[run_.size() - 2], kept) : 0.0;
-        run_.back() = kept;
+        run_.back() = s;
         return;
     }
     if (!run_.empty() && ++runSkipped_ < runStride_) return;
     runSkipped_ = 0;
-    ObservablesSample kept = s;
-    kept.collisionRate = run_.empty() ? 0.0 : rateSince(run_.back(), kept);
-    run_.push_back(kept);
+    run_.push_back(s);
     if (run_.size() < kMaxRunSamples) return;
-    // Full: keep every other sample, the first (t = 0) included; rates over the longer spans.
+    // Full: keep every other sample, the first (t = 0) included. Each keeps its collision
+    // rate, which counts over a window of simulated time, not since the row before.
     std::size_t out = 1;
-    for (std::size_t k = 2; k < run_.size(); k += 2) {
-        run_[out] = run_[k];
-        run_[out].collisionRate = rateSince(run_[out - 1], run_[out]);
-        ++out;
-    }
+    for (std::size_t k = 2; k < run_.size(); k += 2)
+        run_[out++] = run_[k];
     run_.resize(out);
     runStride_ *= 2;
 }

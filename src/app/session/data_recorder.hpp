@@ -1,6 +1,7 @@
 #pragma once
 // What the user takes away from a run as tables (data_tables.hpp): the run's observables from
-// its start, sampled once a frame as the plots are; and, while the user records, the chosen
+// its start, the samples the plots show (monitor.hpp: on simulated time, with their collision
+// rates); and, while the user records, the chosen
 // particles' trajectories and their collisions (the world's collision log, collision_log.hpp).
 //
 // Records follow the world's history: when its clock goes back (an undo, a reset, carrying on
@@ -21,7 +22,7 @@ namespace psb::app {
 class DataRecorder {
   public:
     /// Samples kept of the run; beyond it every other one is dropped (and the spacing doubles):
-    /// 2^20 frames are 4.8 hours at 60 frames a second.
+    /// 2^20 samples are 5.8 hours of simulated time at 0.02 s a sample.
     static constexpr std::size_t kMaxRunSamples = std::size_t{1} << 20;
     /// Collisions kept while recording; recording stops when it is reached.
     static constexpr std::size_t kMaxCollisions = 1'000'000;
@@ -35,8 +36,8 @@ class DataRecorder {
     /// The same scene run again (Restart): the run's series starts over and recording stops;
     /// what was recorded stays, to export, until the next recording starts.
     void restartRun();
-    /// The frame's observables (Monitor::observables), appended to the run's series; at the
-    /// same time as the last sample (paused), in its place.
+    /// A sample of the run (Monitor::stepped, Monitor::frameDone), appended to the run's
+    /// series; at the same time as the last sample (paused), in its place.
     void sample(const ObservablesSample& s);
 
     /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state
@@ -66,7 +67,7 @@ class DataRecorder {
     void dropAfter(double time);
 
     std::vector<ObservablesSample> run_;
-    std::size_t runStride_ = 1;  ///< frames per kept sample (doubles at each thinning)
+    std::size_t runStride_ = 1;  ///< samples per kept sample (doubles at each thinning)
     std::size_t runSkipped_ = 0;
     bool recording_ = false;
     int every_ = 1;

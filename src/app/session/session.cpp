@@ -72,7 +72,7 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     tools_.selection.clear();
     history_.startOver();
     clock_.restart();
-    monitor_.restart(doc_.world, newScene);
+    monitor_.restart(doc_.world, newScene, doc_.meta.dt);
     lastCollision_.clear();
     stopwatch_.reset();
     if (newScene && keepRecorded) {
@@ -80,6 +80,8 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     } else if (newScene) {
         data_.restart();
     }
+    // The run's first row: the world as it starts.
+    if (newScene) data_.sample(monitor_.series().back());
     if (newScene) {
         view_.arrowSeconds = arrowSecondsFor(doc_.world);
         view_.arrowScaleSet = false;

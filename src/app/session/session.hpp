@@ -273,6 +273,8 @@ class Session {
     // The monitor (monitor.hpp).
     [[nodiscard]] const AccuracyMonitor& accuracy() const { return monitor_.accuracy(); }
     [[nodiscard]] const TimeSeries& series() const { return monitor_.series(); }
+    /// The window the series' collision rate counts over, s of simulated time (monitor.hpp).
+    [[nodiscard]] double rateWindow() const { return Monitor::rateWindow(doc_.meta.dt); }
     /// The world's observables as the last update left them (summed once a frame).
     [[nodiscard]] const ObservablesSample& observables() const { return monitor_.observables(); }
     /// The gas instruments' reading (gas_gauges.hpp), when they apply to the world shown.

@@ -82,6 +82,8 @@ double Session::stepOnce(double now) {
            mergeWanted(data_.collisionsWanted(), LastCollision::wanted(card, selected)));
     data_.beforeStep(doc_.world);
     const double simulated = stepFrame(doc_.world, dt);
+    // The time series samples on simulated time, whatever the frames (monitor.hpp).
+    if (monitor_.stepped(doc_.world)) data_.sample(monitor_.series().back());
     const std::vector<Collision> records = heard(doc_.world);
     data_.afterStep(doc_.world, records);
     if (card) lastCollision_.heard(records, doc_.world, selected);
@@ -109,12 +111,10 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     checkSelection();
     lastCollision_.follow(tools_.selection.id());
     lastCollision_.dropAfter(doc_.world.time());
-    // A past frame shown is neither the present nor a new sample.
-    monitor_.frameDone(doc_.world, !history_.viewing);
-    if (!history_.viewing) {
-        data_.sample(monitor_.observables());
-        history_.timeline.record(doc_.world);
-    }
+    // A past frame shown is neither the present nor a new sample. At a sample's instant (paused
+    // there) the sample is the world as drawn, edits before Play included.
+    if (monitor_.frameDone(doc_.world, !history_.viewing)) data_.sample(monitor_.series().back());
+    if (!history_.viewing) history_.timeline.record(doc_.world);
     if (const std::string why = data_.takeStopReason(); !why.empty()) {
         say("Recording stopped: " + why, Notice::Level::Warning);
     }

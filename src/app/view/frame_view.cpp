@@ -9,6 +9,7 @@
 #include "view/box_area.hpp"
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
+#include "view/mass_shade.hpp"
 #include "view/momentum_view.hpp"
 #include "view/pressure_plot.hpp"
 
@@ -35,6 +36,10 @@ HudData hudData(const Session& session) {
     hud.past = past.viewingPast;
     hud.secondsBack = past.secondsBack();
     hud.recording = session.data().recording();
+    if (const MassRange masses = massRange(world.particles().mass); masses.varies()) {
+        hud.lightestMass = masses.lo;
+        hud.heaviestMass = masses.hi;
+    }
     return hud;
 }
 
@@ -103,6 +108,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     f.world = &world;
     f.camera = &session.camera();
     f.series = &session.series();
+    f.rateWindow = session.rateWindow();
     f.now = session.observables();
     f.view = session.view();
     f.frameLength = session.meta().dt;

@@ -65,6 +65,8 @@ struct FrameView {
     const World* world = nullptr;
     const Camera* camera = nullptr;
     const TimeSeries* series = nullptr;
+    /// The window its collision rate counts over, s of simulated time (Session::rateWindow).
+    double rateWindow = 0.0;
     ObservablesSample now;
     ViewOptions view;
     double frameLength = 0.0;  ///< the scene's dt (the session's meta().dt), seconds

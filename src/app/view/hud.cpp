@@ -51,6 +51,13 @@ std::vector<std::string> hudLines(const HudData& d) {
         last += buf;
     }
     lines.push_back(last + " | H: help");
+    if (d.heaviestMass > d.lightestMass) {
+        // The shading's key, where the discs are: without it a deeper shade reads as a team.
+        std::snprintf(buf, sizeof buf, "Shade shows mass: darker = heavier (%s to %s)",
+                      quantity(d.lightestMass, "", false).c_str(),
+                      quantity(d.heaviestMass, "kg", false).c_str());
+        lines.emplace_back(buf);
+    }
     if (d.overlap > 0.0) {
         std::snprintf(buf, sizeof buf, "Particles overlap by up to %s (real ones would not)",
                       quantity(d.overlap, "m").c_str());

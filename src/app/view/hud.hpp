@@ -34,6 +34,9 @@ struct HudData {
     double secondsBack = 0.0;  ///< how far back it is, s
     /// Trajectories are being recorded (the Data section, key X): the first line says REC.
     bool recording = false;
+    /// The scene's lightest and heaviest masses, kg, while they differ (mass_shade.hpp: the
+    /// discs' shades show them); 0 when every particle has one mass.
+    double lightestMass = 0.0, heaviestMass = 0.0;
 };
 
 /// What the profile overlay shows.

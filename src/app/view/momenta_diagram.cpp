@@ -47,11 +47,23 @@ std::string line(const char* when, const std::vector<MomentaDiagram::Arrow>& arr
     return s;
 }
 
+/// The smallest round number (1, 1.5, 2, 2.5, 3, 4, 5, 6, 8 times a power of ten) at least
+/// `x` > 0: a scale a student reads at a glance and that quantity() writes exactly.
+double roundUp(double x) {
+    static constexpr double kSteps[] = {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0};
+    const double decade = std::pow(10.0, std::floor(std::log10(x)));
+    for (const double step : kSteps) {
+        // The tolerance keeps 2.5 at 2.5 where log10 and pow round against it.
+        if (step * decade >= x * (1.0 - 1e-12)) return step * decade;
+    }
+    return 10.0 * decade;
+}
+
 }  // namespace
 
 Vec2 MomentaDiagram::toPixels(const Vec2& p, double side) const {
-    const double half = 0.5 * side, margin = 0.08 * side;
-    return Vec2(half, half) + ((half - margin) / reach) * p;
+    const double half = 0.5 * side;
+    return Vec2(half, half) + (half / reach) * p;
 }
 
 MomentaDiagram momentaDiagram(const CollisionCard& card) {
@@ -66,8 +78,11 @@ MomentaDiagram momentaDiagram(const CollisionCard& card) {
         }
     }
     // Resting particles still get a scale; a non-finite momentum (never from a valid world)
-    // would give a diagram of nothing rather than of NaN pixels.
-    d.reach = std::isfinite(reach) && reach > 0.0 ? reach : 1.0;
+    // would give a diagram of nothing rather than of NaN pixels. A tip at `reach` lies
+    // 1 - 2 kMargin of the half-width out.
+    d.reach = std::isfinite(reach) && reach > 0.0
+                  ? roundUp(reach / (1.0 - 2.0 * MomentaDiagram::kMargin))
+                  : 1.0;
     // Every momentum along x (or every one along y): a row each, across that axis.
     bool alongX = true, alongY = true;
     for (const auto* half : {&d.before, &d.after}) {
@@ -87,6 +102,12 @@ MomentaDiagram momentaDiagram(const CollisionCard& card) {
         }
     }
     return d;
+}
+
+std::string momentaDiagramScale(const MomentaDiagram& diagram) {
+    // The arrows point as the particles move on screen, whichever way the numbers count y.
+    return "The square reaches " + quantity(diagram.reach, "kg m/s", false) +
+           " from its centre; each arrow points the way its particle moves in the box";
 }
 
 std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram, const Axes& axes) {

@@ -30,12 +30,17 @@ struct MomentaDiagram {
         Vec2 offset = Vec2::Zero();
     };
     std::vector<Arrow> before, after;
-    /// The smallest square about the origin, half-width in kg m/s, that holds every arrow of both
-    /// halves (at least a tiny positive number, so a diagram of resting particles has a scale).
-    double reach = 0.0;
+    /// The square's half-width, kg m/s, as its caption states it (momentaDiagramScale): a round
+    /// number (1, 1.5, 2, 2.5, 3, 4, 5, 6 or 8 times a power of ten) that leaves every tip of
+    /// both halves at least kMargin of the side inside the square, so an arrowhead never
+    /// touches its edge. A diagram of resting particles still gets one.
+    double reach = 1.0;
+    /// The free band a tip keeps from the square's edge, in sides of the square.
+    static constexpr double kMargin = 0.05;
 
     /// A momentum's place in a square of `side` pixels whose centre is the origin (x right,
-    /// y down as in the box), a small margin kept free.
+    /// y down as in the box): `reach` reaches the square's edge, so an arrow of `reach` kg m/s
+    /// is side / 2 pixels long, exactly what the caption says.
     [[nodiscard]] Vec2 toPixels(const Vec2& p, double side) const;
     /// An arrow's ends on screen, its row's offset included.
     [[nodiscard]] Vec2 fromPixels(const Arrow& a, double side) const {
@@ -47,6 +52,10 @@ struct MomentaDiagram {
 };
 
 [[nodiscard]] MomentaDiagram momentaDiagram(const CollisionCard& card);
+
+/// The diagram's caption under the two squares: "The square reaches 3.00 kg m/s from its
+/// centre; ...", the number the arrows are drawn to (MomentaDiagram::reach).
+[[nodiscard]] std::string momentaDiagramScale(const MomentaDiagram& diagram);
 
 /// The diagram as text, for the screenshot's file: "Momenta before: p 1 (3.00, 0) + p 2 (-3.00, 0)
 /// = total p (0, 0) kg m/s" and the same after, in `axes` (the y up option).

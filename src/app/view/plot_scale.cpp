@@ -57,4 +57,11 @@ std::string tickLabel(double v, double step) {
     return buf;
 }
 
+std::string collisionRateTitle(double windowSeconds) {
+    // Two figures: 0.5 s, 0.52 s, 1 s; never a row of digits from a dt that does not divide it.
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "collisions/s, last %.2g s", windowSeconds);
+    return buf;
+}
+
 }  // namespace psb::app

@@ -27,4 +27,8 @@ struct PlotRange {
 /// [1e-3, 1e5): 4038789 with step 20000 -> "4.04M"; 0.5 -> "0.5"; 2e-5 -> "20u".
 [[nodiscard]] std::string tickLabel(double v, double step);
 
+/// The collision rate plot's title, naming the window of simulated time it counts over
+/// (Monitor::rateWindow): "collisions/s, last 0.5 s".
+[[nodiscard]] std::string collisionRateTitle(double windowSeconds);
+
 }  // namespace psb::app

@@ -273,7 +273,8 @@ class OverlayRenderTest : public OffscreenTest {
     void draw(const World& w, const TimeSeries& series, Trails* trails = nullptr,
               ParticleId selected = kNullParticle) {
         renderer_->draw(w, kFrame, camera_, view_, trails, selected);
-        overlays_.draw(sdl_, *font_, w, sampleObservables(w), camera_, series, view_, layout());
+        overlays_.draw(sdl_, *font_, w, sampleObservables(w), camera_, series, 0.5, view_,
+                       layout());
         SDL_RenderPresent(sdl_);
     }
 

@@ -50,7 +50,8 @@ TEST_F(BinHistogramDrawTest, DrawsTheBarsTheDotsAndTheNormalCurveInItsBox) {
     AnalysisOverlays overlays;
     ViewOptions view;
     const std::optional<BinHistogram> h = binHistogram(eightRows(), landed(kBell));
-    overlays.draw(sdl_, *font_, w, sampleObservables(w), camera_, TimeSeries(2), view, layout, h);
+    overlays.draw(sdl_, *font_, w, sampleObservables(w), camera_, TimeSeries(2), 0.5, view, layout,
+                  h);
     SDL_RenderPresent(sdl_);
     // The plot area, below the legend's lines.
     const SDL_Rect plot{layout.bins.x + 44, layout.bins.y + 4 * font_->lineHeight() + 10,

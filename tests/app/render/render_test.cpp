@@ -17,6 +17,7 @@
 #include "session/camera.hpp"
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
+#include "view/mass_shade.hpp"
 #include "view/overlays.hpp"
 
 namespace psb::app {
@@ -121,6 +122,32 @@ TEST_F(RenderTest, ManyParticlesAreDrawn) {
     EXPECT_EQ(s.drawn, 100u);
     for (int i = 0; i < 10; ++i) {
         EXPECT_TRUE(isColor(pixel(20 + 35 * i, 20 + 35 * (9 - i)), 0, 0, 255)) << i;
+    }
+}
+
+TEST_F(RenderTest, ABallThreeTimesAsHeavyIsFilledInADarkerShadeOfTheSameColour) {
+    for (const Theme theme : {Theme::Dark, Theme::Light}) {
+        World w = worldWith({100, 200}, {0, 0}, 20.0, Color{150, 170, 190});
+        ParticleDef heavy;
+        heavy.position = {300, 200};
+        heavy.radius = 20.0;
+        heavy.mass = 6.0;  // the first's 2 kg, three times
+        heavy.color = Color{150, 170, 190};
+        w.add(heavy);
+        ViewOptions o;
+        o.theme = theme;
+        draw(w, o);
+        const Color drawn = theme == Theme::Light ? lightColour(heavy.color) : heavy.color;
+        const MassShades shades = massShades(drawn, theme);
+        const SDL_Color a = pixel(100, 200), b = pixel(300, 200);
+        EXPECT_TRUE(isColor(a, shades.light.r, shades.light.g, shades.light.b, 2));
+        EXPECT_TRUE(isColor(b, shades.heavy.r, shades.heavy.g, shades.heavy.b, 2));
+        EXPECT_GE(contrastRatio(Rgba{a.r, a.g, a.b}, Rgba{b.r, b.g, b.b}), kMinContrast - 0.05);
+        // The same two discs of one mass: the scene's colour itself, as before.
+        w.setMass(w.ids()[1], 2.0);
+        draw(w, o);
+        EXPECT_TRUE(isColor(pixel(100, 200), drawn.r, drawn.g, drawn.b, 2));
+        EXPECT_TRUE(isColor(pixel(300, 200), drawn.r, drawn.g, drawn.b, 2));
     }
 }
 

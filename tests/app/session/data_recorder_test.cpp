@@ -18,8 +18,11 @@ ObservablesSample at(double time, std::uint64_t collisions) {
 
 TEST(DataRecorder, TheRunSeriesKeepsItsStartAndThinsWhenFull) {
     DataRecorder d;
-    for (std::size_t k = 0; k <= DataRecorder::kMaxRunSamples + 10; ++k)
-        d.sample(at(static_cast<double>(k), 3 * k));
+    for (std::size_t k = 0; k <= DataRecorder::kMaxRunSamples + 10; ++k) {
+        ObservablesSample s = at(static_cast<double>(k), 3 * k);
+        s.collisionRate = 3.0;  // over the monitor's window (monitor.hpp)
+        d.sample(s);
+    }
     const std::vector<ObservablesSample>& run = d.run();
     ASSERT_LT(run.size(), DataRecorder::kMaxRunSamples);
     EXPECT_GT(run.size(), DataRecorder::kMaxRunSamples / 2 - 10);
@@ -27,7 +30,7 @@ TEST(DataRecorder, TheRunSeriesKeepsItsStartAndThinsWhenFull) {
     EXPECT_EQ(run[1].time, 2.0);
     for (std::size_t k = 1; k < run.size(); ++k) {
         EXPECT_LT(run[k - 1].time, run[k].time);
-        EXPECT_DOUBLE_EQ(run[k].collisionRate, 3.0) << "the rate over the longer span";
+        EXPECT_EQ(run[k].collisionRate, 3.0) << "a kept sample's rate over its window stands";
     }
 }
 
@@ -38,7 +41,7 @@ TEST(DataRecorder, ASampleAtTheSameTimeIsSkippedAndAnEarlierOneCutsTheFuture) {
     d.sample(at(1.0, 10));
     d.sample(at(2.0, 30));
     ASSERT_EQ(d.run().size(), 3u);
-    EXPECT_DOUBLE_EQ(d.run()[2].collisionRate, 20.0);
+    EXPECT_EQ(d.run()[2].time, 2.0);
     d.sample(at(1.5, 40));  // an undo to 1.5 s
     ASSERT_EQ(d.run().size(), 3u);
     EXPECT_EQ(d.run()[2].time, 1.5);

@@ -149,5 +149,15 @@ TEST(Hud, ADeepOverlapIsShownOnTheBoxAndNoneIsNotMentioned) {
     EXPECT_EQ(lines.back(), "Particles overlap by up to 453 mm (real ones would not)");
 }
 
+TEST(Hud, MassesThatDifferAreKeyedToTheirShadeAndEqualOnesAreNotMentioned) {
+    HudData d;
+    for (const std::string& line : hudLines(d))
+        EXPECT_EQ(line.find("Shade"), std::string::npos);
+    d.lightestMass = 1.0;
+    d.heaviestMass = 3.0;
+    const auto lines = hudLines(d);
+    EXPECT_EQ(lines.back(), "Shade shows mass: darker = heavier (1.00 to 3.00 kg)");
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -3,8 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "view/head_on_card.hpp"
 #include "view/momenta_diagram.hpp"
@@ -29,8 +31,9 @@ TEST(MomentaDiagram, ThePairsArrowsGoTipToTailAndTheTotalIsKept) {
     // After: 1's (-2.5, 0), 2's (1.5, 0) from there, the same total.
     EXPECT_EQ(d.after[1].from, Vec2(-2.5, 0));
     EXPECT_EQ(d.after[2].to, d.before[2].to);
-    // One scale for both: the farthest point of either half, 2.5 kg m/s.
-    EXPECT_DOUBLE_EQ(d.reach, 2.5);
+    // One scale for both: the farthest point of either half is 2.5 kg m/s, so the square
+    // reaches the next round number with room for a head, 3 kg m/s.
+    EXPECT_DOUBLE_EQ(d.reach, 3.0);
 }
 
 TEST(MomentaDiagram, PixelsKeepTheBoxsDirectionsAndStayInTheSquare) {
@@ -43,6 +46,64 @@ TEST(MomentaDiagram, PixelsKeepTheBoxsDirectionsAndStayInTheSquare) {
     EXPECT_GT(down.y(), 150.0);  // y down, as in the box
     EXPECT_LT(down.y(), side);
     EXPECT_GT(d.toPixels(Vec2(-2.5, -2.5), side).minCoeff(), 0.0);
+}
+
+/// The number the caption states the square reaches, kg m/s (its digits grouped by thousands
+/// with spaces, as units.hpp writes them: "1 500").
+double captionReach(const MomentaDiagram& d) {
+    const std::string caption = momentaDiagramScale(d);
+    const std::string lead = "The square reaches ", unit = " kg m/s from its centre";
+    EXPECT_EQ(caption.rfind(lead, 0), 0u) << caption;
+    const std::size_t end = caption.find(unit);
+    EXPECT_NE(end, std::string::npos) << caption;
+    std::string number = caption.substr(lead.size(), end - lead.size());
+    std::erase(number, ' ');
+    std::size_t used = 0;
+    const double value = std::stod(number, &used);
+    EXPECT_EQ(used, number.size()) << caption;
+    return value;
+}
+
+TEST(MomentaDiagram, AnArrowOfTheCaptionsValueSpansHalfTheSquare) {
+    const MomentaDiagram d = momentaDiagram(headOnCard());
+    const double stated = captionReach(d);
+    EXPECT_EQ(stated, 3.0);
+    for (const double side : {120.0, 200.0, 333.0}) {
+        const Vec2 centre = d.toPixels(Vec2(0, 0), side);
+        // An arrow of the stated momentum, any way it points, reaches the square's edge.
+        for (const Vec2& u : {Vec2(1, 0), Vec2(0, -1), Vec2(0.6, 0.8)}) {
+            EXPECT_NEAR((d.toPixels(Vec2(stated * u), side) - centre).norm(), 0.5 * side, 1e-9)
+                << side;
+        }
+        // The card's 2.5 kg m/s (p 1 after) is 2.5 / 3 of the half-width, not more or less.
+        const MomentaDiagram::Arrow& p1 = d.after[0];
+        EXPECT_NEAR((d.toPixels(p1, side) - d.fromPixels(p1, side)).norm(),
+                    2.5 / stated * 0.5 * side, 1e-9);
+    }
+}
+
+TEST(MomentaDiagram, TheScaleIsRoundAndEveryTipKeepsItsMargin) {
+    CollisionCard card = headOnCard();
+    for (const double speed : {2.0, 0.0173, 7.0, 1234.0, 9.0e-5}) {
+        card.collision.aBefore = Vec2(speed, 0.0);
+        const MomentaDiagram d = momentaDiagram(card);
+        EXPECT_EQ(captionReach(d), d.reach) << "the caption states the scale drawn";
+        const double side = 200.0;
+        for (const auto* half : {&d.before, &d.after}) {
+            for (const MomentaDiagram::Arrow& a : *half) {
+                const Vec2 tip = d.toPixels(a.to, side) - d.toPixels(Vec2(0, 0), side);
+                EXPECT_LE(tip.cwiseAbs().maxCoeff(), (0.5 - MomentaDiagram::kMargin) * side + 1e-9)
+                    << speed;
+            }
+        }
+        // At most one round step above the farthest tip: the arrows fill the square.
+        double farthest = 0.0;
+        for (const MomentaDiagram::Arrow& a : d.before)
+            farthest = std::max(farthest, a.to.cwiseAbs().maxCoeff());
+        for (const MomentaDiagram::Arrow& a : d.after)
+            farthest = std::max(farthest, a.to.cwiseAbs().maxCoeff());
+        EXPECT_LE(d.reach, 1.5 * farthest / (1.0 - 2.0 * MomentaDiagram::kMargin)) << speed;
+    }
 }
 
 TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
