@@ -243,6 +243,12 @@ centroid() {
         }
         END { if (n) printf "%.1f %.1f %d\n", sx / n, sy / n, n; else print "0 0 0" }'
 }
+# fill_at PNG X Y: "r g b" of the screenshot's pixel at root point (X, Y) (a disc's centre: its
+# fill, in the shade of its mass among the scene's).
+fill_at() {
+    convert "$1" -crop "1x1+$2+$3" -depth 8 txt:- |
+        sed -nE '2s/^[^(]*\(([0-9]+),([0-9]+),([0-9]+).*/\1 \2 \3/p'
+}
 # Pure white pixels inside a rectangle "WxH+X+Y" of a screenshot.
 white_in() {
     convert "$1" -crop "$2" +repage -depth 8 txt:- | grep -c "#FFFFFF" || true

@@ -93,7 +93,11 @@ shot 0-start
 
 # The built-in scene (psb::defaultScene): six particles in the upper half of the box.
 # --- 1. fling: the 18 kg particle at (5.2, 1.6) m, yellow (255, 210, 110), downwards -------
-FLUNG="255 210 110"
+# Drawn in the shade of its mass among the scene's (view/mass_shade.hpp): its fill is read at
+# its centre, and must still be a yellow (red over green over blue).
+FLUNG=$(fill_at "$OUT/0-start.png" "$(sx 5.2)" "$(sy 1.6)")
+read -r fr fg fb <<<"$FLUNG"
+((fr > 150 && fr > fg && fg > fb)) || fail "the 18 kg particle's fill ($FLUNG) is not a yellow"
 read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" $FLUNG)
 ((fn0 > 500)) || fail "the yellow particle is not on screen ($fn0 pixels)"
 drag "$(sx 5.2)" "$(sy 1.6)" 0 12 8
@@ -132,13 +136,16 @@ awk -v x="$px" -v y="$py" -v vx="$vx" -v vy="$vy" \
 wait_title "6 particles - PAUSED"
 pass "launch: $line"
 shot 1-launched
-# A 10 kg launched particle is coloured (151, 200, 224).
-read -r lx0 ly0 ln0 < <(centroid "$OUT/1-launched.png" 151 200 224)
+# A 10 kg launched particle is coloured (151, 200, 224), in the shade of its mass.
+LAUNCHED=$(fill_at "$OUT/1-launched.png" "$(sx "$px")" "$(sy "$py")")
+read -r fr fg fb <<<"$LAUNCHED"
+((fb > fr && fg > fr)) || fail "the launched particle's fill ($LAUNCHED) is not a light blue"
+read -r lx0 ly0 ln0 < <(centroid "$OUT/1-launched.png" $LAUNCHED)
 read -r fx1 fy1 fn1 < <(centroid "$OUT/1-launched.png" $FLUNG)
 ((ln0 > 200)) || fail "the launched particle is not on screen ($ln0 pixels)"
 for _ in 1 2 3 4 5 6 7 8 9 10; do key n; done  # ten single steps while paused
 shot 2-stepped
-read -r lx1 ly1 ln1 < <(centroid "$OUT/2-stepped.png" 151 200 224)
+read -r lx1 ly1 ln1 < <(centroid "$OUT/2-stepped.png" $LAUNCHED)
 read -r fx2 fy2 fn2 < <(centroid "$OUT/2-stepped.png" $FLUNG)
 awk -v x0="$lx0" -v y0="$ly0" -v x1="$lx1" -v y1="$ly1" \
     'BEGIN { exit !(x1 - x0 > 5 && y0 - y1 > 5) }' ||
