@@ -2,6 +2,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include <particle_sandbox/csv.hpp>
+
 #include "build_info.hpp"
 
 #include <algorithm>
@@ -99,7 +101,7 @@ std::vector<std::uint32_t> parseTrackList(const std::string& text) {
 std::uint64_t stepsFor(double duration, double dt) {
     const double q = duration / dt;
     if (!(q <= 1e15)) {
-        throw UsageError("--duration / --dt: " + std::to_string(q) +
+        throw UsageError("--duration / --dt: " + csv::number(q) +
                          " steps is more than the limit of 1e15");
     }
     const double nearest = std::round(q);
