@@ -5,6 +5,7 @@
 #include <particle_sandbox/csv.hpp>
 
 #include "build_info.hpp"
+#include "parse_error_message.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -164,7 +165,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     } catch (const CLI::CallForVersion& version) {
         throw HelpRequested(std::string(version.what()) + "\n");
     } catch (const CLI::ParseError& e) {
-        throw UsageError(e.what());
+        throw UsageError(parseErrorMessage(app, e));
     }
 
     RunOptions o;

@@ -23,7 +23,7 @@
 #include <particle_sandbox/validation.hpp>
 
 #include "json_reader.hpp"
-#include "nearest_name.hpp"
+#include <particle_sandbox/detail/nearest_name.hpp>
 #include "obstacle_geometry.hpp"
 #include "overlap_check.hpp"
 #include "scene_generate.hpp"
