@@ -22,8 +22,8 @@
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/validation.hpp>
 
-#include "json_reader.hpp"
 #include <particle_sandbox/detail/nearest_name.hpp>
+#include "json_reader.hpp"
 #include "obstacle_geometry.hpp"
 #include "overlap_check.hpp"
 #include "scene_generate.hpp"
