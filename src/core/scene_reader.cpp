@@ -18,11 +18,11 @@
 
 #include <nlohmann/json.hpp>
 #include <particle_sandbox/csv.hpp>
+#include <particle_sandbox/detail/nearest_name.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/validation.hpp>
 
-#include <particle_sandbox/detail/nearest_name.hpp>
 #include "json_reader.hpp"
 #include "obstacle_geometry.hpp"
 #include "overlap_check.hpp"
