@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -53,6 +54,14 @@ inline constexpr std::size_t kMaxSceneObstacles = 100'000;    ///< pegs plus seg
 inline constexpr int kMaxSceneNesting = 64;                   ///< JSON object/array depth
 /// Largest magnitude accepted for any physical number in a scene (metres, m/s, kg, m/s²).
 inline constexpr double kMaxSceneMagnitude = 1e15;
+/// The densest packing fraction a `generate` block and scenes::gas and scenes::brownian accept:
+/// π/4 ≈ 0.785, the fraction of the plane a square lattice of touching discs covers. They place
+/// discs of one radius on such a lattice (scene_generate.hpp), so π/4 is the physical limit of
+/// their placement, approached but never reached in a finite region: a region holds
+/// ⌊w / 2r⌋ · ⌊h / 2r⌋ discs (a part in a million less), and a count above that is refused
+/// with that number. Discs of mixed radii (scenes::gas) are placed at random and jam far below
+/// it (see scenes::gas).
+inline constexpr double kMaxPackingFraction = std::numbers::pi / 4.0;
 
 /// A scene that cannot be read or is not valid. what() is one line for the user, naming the
 /// file, the JSON path and the problem, e.g.

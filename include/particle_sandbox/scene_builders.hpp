@@ -17,7 +17,7 @@ struct GasSpec {
     std::size_t count = 1000;
     double radius = 1.0;       ///< metres: every disc's, or the smallest when maxRadius > radius
     double maxRadius = 0.0;    ///< > radius: radii log-uniform in [radius, maxRadius]
-    double packing = 0.1;      ///< fraction of the box the discs cover, in (0, 0.5]
+    double packing = 0.1;      ///< fraction of the box the discs cover, in (0, π/4]
     double mass = 1.0;         ///< kilograms, of a disc of `radius`; others scale with their area
     double temperature = 1.0;  ///< kT, joules: each velocity component ~ N(0, kT / m)
     std::uint64_t seed = 42;
@@ -28,9 +28,13 @@ struct GasSpec {
     bool overlapping = false;
 };
 
-/// Discs of one radius sit on a jittered square lattice (never overlapping); mixed radii are
-/// placed at random, largest first, without overlaps. Throws InvalidArgument for a count of 0,
-/// a non-positive radius or mass, a packing outside (0, 0.5], or discs that cannot be placed.
+/// Discs of one radius sit on a jittered square lattice (never overlapping), as a scene's
+/// `generate` block places them; mixed radii are placed at random, largest first, without
+/// overlaps. Throws InvalidArgument for a count of 0, a non-positive radius or mass, a packing
+/// outside (0, kMaxPackingFraction], or discs that cannot be placed: more than the lattice in
+/// the box holds (which says how many it holds), or mixed radii that jam (random placement
+/// stops near 0.55 for nearly equal radii, and reaches π/4 only for widely spread ones; the
+/// error says how far it got, after at most 100000 tries per disc).
 [[nodiscard]] Scene gas(const GasSpec& spec);
 
 /// Brownian motion: a gas of `count` light discs at packing `packing` around one heavy disc at
@@ -42,13 +46,14 @@ struct BrownianSpec {
     double lightMass = 1.0;    ///< kilograms
     double bigRadius = 10.0;   ///< metres
     double bigMass = 100.0;    ///< kilograms
-    double packing = 0.2;      ///< fraction of the area the heavy disc leaves, in (0, 0.5]
+    double packing = 0.2;      ///< fraction of the area the heavy disc leaves, in (0, π/4]
     double temperature = 1.0;  ///< kT, joules: each velocity component ~ N(0, kT / m)
     std::uint64_t seed = 7;
 };
 
-/// Throws InvalidArgument for a count of 0, a non-positive radius, mass or temperature, or a
-/// packing outside (0, 0.5].
+/// Throws InvalidArgument for a count of 0, a non-positive radius, mass or temperature, a
+/// packing outside (0, kMaxPackingFraction], or more light discs than the lattice around the
+/// heavy one holds.
 [[nodiscard]] Scene brownian(const BrownianSpec& spec);
 
 /// A hexagonal lattice of `cols` × `rows` discs of radius `radius` at packing `fraction`, in

@@ -11,6 +11,7 @@
 
 #include "app.hpp"
 #include "build_info.hpp"
+#include "parse_error_message.hpp"
 #include "platform/assets.hpp"
 #include "platform/output_directory.hpp"
 #include "platform/settings_store.hpp"
@@ -105,7 +106,7 @@ int main(int argc, char** argv) {
         // --help and --version exit 0 with CLI11's text; every other problem is one line and
         // status 2, like particle-sim's.
         if (e.get_exit_code() == 0) return cli.exit(e);
-        return badOption(std::string(e.what()) + " (see --help)");
+        return badOption(psb::parseErrorMessage(cli, e) + " (see --help)");
     }
     if (!window.empty() && !parseWindowSize(window, options.width, options.height)) {
         return badOption("--window: expected WIDTHxHEIGHT between 200 and 10000 pixels, got '" +

@@ -5,6 +5,7 @@
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "output_check.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
 #include "run_options.hpp"
@@ -27,6 +28,9 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     }
 
     try {
+        // Before the scene is read and long before the last step: a bad output path costs
+        // nothing yet.
+        checkOutputs(options);
         const Scene scene = loadScene(options.scene);
         World world;
         RunReport report;
@@ -71,6 +75,9 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         err << "particle-sim: error: " << e.what() << "\n";
         return kExitUsage;
     } catch (const SceneError& e) {
+        err << "particle-sim: error: " << e.what() << "\n";
+        return kExitFailure;
+    } catch (const OutputError& e) {
         err << "particle-sim: error: " << e.what() << "\n";
         return kExitFailure;
     } catch (const SaveError& e) {

@@ -2,7 +2,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include <particle_sandbox/csv.hpp>
+
 #include "build_info.hpp"
+#include "parse_error_message.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -83,7 +86,7 @@ std::vector<std::uint32_t> parseTrackList(const std::string& text) {
             text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         if (item.empty()) {
             throw UsageError("--track: an empty item in '" + text +
-                             "' (particle numbers separated by commas, e.g. 0,3)");
+                             "' (particle numbers separated by commas, e.g. 1,4)");
         }
         const auto id = static_cast<std::uint32_t>(
             parseInteger(item, "--track", 1, std::numeric_limits<std::uint32_t>::max() - 1));
@@ -99,7 +102,7 @@ std::vector<std::uint32_t> parseTrackList(const std::string& text) {
 std::uint64_t stepsFor(double duration, double dt) {
     const double q = duration / dt;
     if (!(q <= 1e15)) {
-        throw UsageError("--duration / --dt: " + std::to_string(q) +
+        throw UsageError("--duration / --dt: " + csv::number(q) +
                          " steps is more than the limit of 1e15");
     }
     const double nearest = std::round(q);
@@ -144,9 +147,9 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                    "always)")
         ->type_name("N");
     app.add_option("--track", track,
-                   "Also write these particles' positions and velocities (numbers: their "
-                   "indices in the scene's particle list) at each --timeseries row, to "
-                   "NAME-track.csv beside it")
+                   "Also write these particles' positions and velocities at each --timeseries "
+                   "row, to NAME-track.csv beside it (a particle's number is the app's: 1 for "
+                   "the first in the scene's particle list)")
         ->type_name("ID,ID,...");
     app.add_flag("--progress", progress,
                  "Show a progress bar on stderr (only when stderr is a terminal; long runs "
@@ -162,7 +165,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     } catch (const CLI::CallForVersion& version) {
         throw HelpRequested(std::string(version.what()) + "\n");
     } catch (const CLI::ParseError& e) {
-        throw UsageError(e.what());
+        throw UsageError(parseErrorMessage(app, e));
     }
 
     RunOptions o;

@@ -28,7 +28,8 @@ struct RunOptions {
     /// A --timeseries row every this many steps (>= 1); the first and the last step always.
     std::int64_t timeseriesEvery = 1;
     /// --track: the numbers of the particles whose paths are written beside the time series
-    /// (their indices in the scene's particle list), in the order given; empty: none.
+    /// (particleNumber: 1 for the first in the scene's particle list), in the order given;
+    /// empty: none.
     std::vector<std::uint32_t> track;
     bool progress = false;
 };
@@ -55,7 +56,7 @@ class HelpRequested : public std::runtime_error {
 [[nodiscard]] std::int64_t parseInteger(const std::string& text, const std::string& option,
                                         std::int64_t lo, std::int64_t hi);
 
-/// --track's list: particle numbers (decimal integers >= 0) separated by commas, none twice.
+/// --track's list: particle numbers (decimal integers >= 1) separated by commas, none twice.
 /// Throws UsageError naming the item that is wrong.
 [[nodiscard]] std::vector<std::uint32_t> parseTrackList(const std::string& text);
 

@@ -9,6 +9,10 @@
 // rename. Elsewhere the temporary file has its name from the start, and a kill while writing
 // leaves it; so every save first removes the temporaries that earlier saves of the same file
 // left behind, those whose process (its id is in the name) no longer runs.
+//
+// A device or a pipe (/dev/null, /dev/stdout, a FIFO) is not a file to replace: renaming over
+// it would put a regular file in its place (as root, /dev/null itself), so it is written in
+// place, as a shell's `>` would.
 
 #include <particle_sandbox/atomic_file.hpp>
 
@@ -21,6 +25,7 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -95,25 +100,35 @@ void removeStaleTemporaries(const std::filesystem::path& dir, const std::filesys
         std::filesystem::remove(p, ec);
 }
 
-}  // namespace
+std::filesystem::path directoryOf(const std::filesystem::path& path) {
+    return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+}
 
-void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
-    if (path.empty()) fail(path, "empty path");
-    const std::filesystem::path dir =
-        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+/// Why a file cannot be renamed into place at `path`, as far as can be told without creating
+/// anything.
+std::optional<std::string> placeProblem(const std::filesystem::path& path) {
+    if (path.empty()) return "empty path";
+    const std::filesystem::path dir = directoryOf(path);
     std::error_code ec;
     const auto dirStatus = std::filesystem::status(dir, ec);
-    if (!std::filesystem::exists(dirStatus))
-        fail(path, "directory " + dir.string() + " does not exist");
-    if (!std::filesystem::is_directory(dirStatus)) fail(path, dir.string() + " is not a directory");
-    if (std::filesystem::is_directory(path, ec)) fail(path, "a directory is in the way");
+    if (!std::filesystem::exists(dirStatus)) return "directory " + dir.string() + " does not exist";
+    if (!std::filesystem::is_directory(dirStatus)) return dir.string() + " is not a directory";
+    if (std::filesystem::is_directory(path, ec)) return "a directory is in the way";
+    return std::nullopt;
+}
 
-    // A name that cannot collide with another writer: pid plus random bits, O_EXCL to be sure.
-    std::random_device rd;
-    const std::filesystem::path tmp =
-        dir / (tempPrefix(path) + std::to_string(::getpid()) + '-' + std::to_string(rd()));
-    // Unnamed until complete where the file system can (see the top of this file).
-    bool unnamed = true;
+/// A path that exists and is neither a regular file nor a directory: a device or a pipe,
+/// written in place (see the top of this file). stat follows links, so /dev/stdout counts.
+bool writtenInPlace(const std::filesystem::path& path) {
+    struct stat st {};
+    return ::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
+/// A new temporary file in `dir` for `target`, open for writing: unnamed where the file system
+/// can (`unnamed` set), else named `tmp` (created exclusively). -1 with errno on failure.
+int openTemporary(const std::filesystem::path& dir, const std::filesystem::path& tmp,
+                  bool& unnamed) {
+    unnamed = true;
 #ifdef O_TMPFILE
     int fd = ::open(dir.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0644);
 #else
@@ -123,6 +138,70 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
         unnamed = false;
         fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
     }
+    return fd;
+}
+
+/// A name that cannot collide with another writer: pid plus random bits (O_EXCL makes sure).
+std::filesystem::path temporaryName(const std::filesystem::path& dir,
+                                    const std::filesystem::path& target) {
+    std::random_device rd;
+    return dir / (tempPrefix(target) + std::to_string(::getpid()) + '-' + std::to_string(rd()));
+}
+
+void writeAll(const std::filesystem::path& path, int fd, std::string_view contents) {
+    const char* data = contents.data();
+    std::size_t left = contents.size();
+    while (left > 0) {
+        const ssize_t n = ::write(fd, data, left);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            fail(path, "write failed (" + errnoText(errno) + ")");
+        }
+        data += n;
+        left -= static_cast<std::size_t>(n);
+    }
+}
+
+void writeInPlace(const std::filesystem::path& path, std::string_view contents) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+    if (fd < 0) fail(path, "cannot open it for writing (" + errnoText(errno) + ")");
+    TempFile file(fd, {});  // only closes the descriptor: no path, nothing to remove
+    writeAll(path, file.fd(), contents);
+    if (file.close() != 0) fail(path, "close failed (" + errnoText(errno) + ")");
+}
+
+}  // namespace
+
+std::optional<std::string> atomicWriteProblem(const std::filesystem::path& path) {
+    if (!path.empty() && writtenInPlace(path)) {
+        if (::access(path.c_str(), W_OK) != 0)
+            return "cannot open it for writing (" + errnoText(errno) + ")";
+        return std::nullopt;
+    }
+    if (auto problem = placeProblem(path)) return problem;
+    const std::filesystem::path dir = directoryOf(path);
+    const std::filesystem::path tmp = temporaryName(dir, path);
+    bool unnamed = true;
+    const int fd = openTemporary(dir, tmp, unnamed);
+    if (fd < 0) {
+        return "cannot create a temporary file in " + dir.string() + " (" + errnoText(errno) + ")";
+    }
+    ::close(fd);
+    if (!unnamed) ::unlink(tmp.c_str());
+    return std::nullopt;
+}
+
+void writeFileAtomically(const std::filesystem::path& path, std::string_view contents) {
+    if (!path.empty() && writtenInPlace(path)) {
+        writeInPlace(path, contents);
+        return;
+    }
+    if (auto problem = placeProblem(path)) fail(path, *problem);
+    const std::filesystem::path dir = directoryOf(path);
+    const std::filesystem::path tmp = temporaryName(dir, path);
+    // Unnamed until complete where the file system can (see the top of this file).
+    bool unnamed = true;
+    const int fd = openTemporary(dir, tmp, unnamed);
     if (fd < 0)
         fail(path,
              "cannot create a temporary file in " + dir.string() + " (" + errnoText(errno) + ")");
@@ -131,17 +210,7 @@ void writeFileAtomically(const std::filesystem::path& path, std::string_view con
     // rely on it) and is never taken for a stale one (it has no name yet, or this process's id).
     removeStaleTemporaries(dir, path);
 
-    const char* data = contents.data();
-    std::size_t left = contents.size();
-    while (left > 0) {
-        const ssize_t n = ::write(file.fd(), data, left);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            fail(path, "write failed (" + errnoText(errno) + ")");
-        }
-        data += n;
-        left -= static_cast<std::size_t>(n);
-    }
+    writeAll(path, file.fd(), contents);
     if (::fsync(file.fd()) != 0) fail(path, "fsync failed (" + errnoText(errno) + ")");
     // Keep the target's permissions if it exists (a scene the user made read-only for others
     // stays so); otherwise the 0644 above, less the umask.

@@ -98,15 +98,15 @@ void validateDropper(const Dropper& d, std::size_t index, double width, double h
     const double margin = walls ? d.radius : 0.0;
     if (walls && (2.0 * d.radius > width || 2.0 * d.radius > height)) {
         fail(where, what("radius").c_str(),
-             "gives balls wider than the " + std::to_string(width) + " x " +
-                 std::to_string(height) + " m box " + got(d.radius));
+             "gives balls wider than the " + csv::number(width) + " x " + csv::number(height) +
+                 " m box " + got(d.radius));
     }
     const double x0 = d.position.x() - d.spread, x1 = d.position.x() + d.spread;
     const double y = d.position.y();
     if (x0 < margin || x1 > width - margin || y < margin || y > height - margin) {
-        std::string problem = "puts balls outside the box: x from " + std::to_string(x0) + " to " +
-                              std::to_string(x1) + ", y " + std::to_string(y) + " m, the box is " +
-                              std::to_string(width) + " x " + std::to_string(height) + " m";
+        std::string problem = "puts balls outside the box: x from " + csv::number(x0) + " to " +
+                              csv::number(x1) + ", y " + csv::number(y) + " m, the box is " +
+                              csv::number(width) + " x " + csv::number(height) + " m";
         if (walls) problem += " and a ball's centre must be a radius inside the walls";
         fail(where, what("position").c_str(), problem);
     }

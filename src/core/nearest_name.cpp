@@ -1,4 +1,4 @@
-#include "nearest_name.hpp"
+#include <particle_sandbox/detail/nearest_name.hpp>
 
 #include <algorithm>
 #include <vector>
@@ -21,7 +21,7 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
     return prev[b.size()];
 }
 
-std::string suggestion(std::string_view got, std::initializer_list<std::string_view> known) {
+std::string_view nearestName(std::string_view got, std::span<const std::string_view> known) {
     std::string_view best;
     std::size_t bestDistance = SIZE_MAX;
     // Compare at most a name's worth of letters: a 10 MB key must not cost 10 MB × names.
@@ -34,8 +34,14 @@ std::string suggestion(std::string_view got, std::initializer_list<std::string_v
         }
     }
     const std::size_t allowed = std::max<std::size_t>(1, std::max(probe.size(), best.size()) / 3);
-    if (got.size() <= 64 && bestDistance <= allowed)
-        return " (did you mean '" + std::string(best) + "'?)";
+    if (got.size() <= 64 && bestDistance <= allowed) return best;
+    return {};
+}
+
+std::string suggestion(std::string_view got, std::initializer_list<std::string_view> known) {
+    const std::string_view best =
+        nearestName(got, std::span<const std::string_view>(known.begin(), known.size()));
+    if (!best.empty()) return " (did you mean '" + std::string(best) + "'?)";
     std::string list = " (expected one of: ";
     bool first = true;
     for (const std::string_view name : known) {

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "validate.hpp"
@@ -11,17 +10,11 @@ namespace psb::detail {
 namespace {
 
 std::string point(const Vec2& v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << '[' << v.x() << ", " << v.y() << ']';
-    return os.str();
+    return pointText(v);
 }
 
 std::string number(double v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << v;
-    return os.str();
+    return csv::number(v);
 }
 
 bool finite(const Vec2& v) {
@@ -33,10 +26,7 @@ bool inBox(const Vec2& v, double width, double height) {
 }
 
 std::string boxText(double width, double height) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "the " << width << " x " << height << " m box";
-    return os.str();
+    return "the " + csv::number(width) + " x " + csv::number(height) + " m box";
 }
 
 }  // namespace

@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -18,13 +17,13 @@
 #include <optional>
 
 #include <nlohmann/json.hpp>
-#include <particle_sandbox/detail/float_chars.hpp>
+#include <particle_sandbox/csv.hpp>
+#include <particle_sandbox/detail/nearest_name.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/validation.hpp>
 
 #include "json_reader.hpp"
-#include "nearest_name.hpp"
 #include "obstacle_geometry.hpp"
 #include "overlap_check.hpp"
 #include "scene_generate.hpp"
@@ -42,11 +41,10 @@ constexpr int kVersion = 5;
 constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3, kDroppersVersion = 4,
               kRotationVersion = 5;
 
-/// Shortest text that reads back as the same double.
+/// Numbers in messages as the exports write them: the shortest text that reads back as the same
+/// double.
 std::string num(double v) {
-    char buf[32];
-    const auto r = detail::toChars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
+    return csv::number(v);
 }
 
 std::string typeName(const json& j) {
@@ -644,7 +642,12 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
             r.integer(*count, countPath, 0, static_cast<std::int64_t>(kMaxSceneParticles)));
     } else {
         countPath = member(path, "packing");
-        const double phi = r.inRange(*packing, countPath, 0.0, 1.0);
+        const double phi = r.number(*packing, countPath);
+        if (phi < 0.0 || phi > kMaxPackingFraction) {
+            r.fail(countPath, "must be from 0 to " + num(kMaxPackingFraction) +
+                                  " (π/4, the densest a square lattice of discs can be; got " +
+                                  num(phi) + ")");
+        }
         const double area = (spec.x1 - spec.x0) * (spec.y1 - spec.y0);
         // A radius below ~1e-154 squares to 0, and so can a tiny region's area: 0 / 0 must
         // not give NaN, which the integer cast below would turn into undefined behaviour.
@@ -653,7 +656,10 @@ void readGenerate(const Reader& r, const json& j, const std::string& path, const
                 ? 0.0
                 : std::floor(phi * area / (std::numbers::pi * spec.radius * spec.radius));
         if (!(n <= static_cast<double>(kMaxSceneParticles))) {
-            r.fail(countPath, "gives " + num(n) + " particles, more than the limit of " +
+            // A count in digits while it has them exactly (below 2^53), then as a number.
+            const std::string howMany =
+                n < 0x1p53 ? std::to_string(static_cast<std::uint64_t>(n)) : num(n);
+            r.fail(countPath, "gives " + howMany + " particles, more than the limit of " +
                                   std::to_string(kMaxSceneParticles));
         }
         spec.count = static_cast<std::uint64_t>(n);

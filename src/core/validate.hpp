@@ -1,12 +1,15 @@
 #pragma once
 // Argument checks shared by the core's public entry points. Each throws psb::InvalidArgument
-// with a message that names the function, the argument and the bad value.
+// with a message that names the function, the argument and the bad value. Numbers in messages
+// are csv::number's shortest text that reads back as the same double (0.6, not
+// 0.59999999999999998), as in the exports.
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 #include <string>
 
+#include <particle_sandbox/csv.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/math.hpp>
 
@@ -19,10 +22,17 @@ namespace psb::detail {
 }
 
 inline std::string got(double v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << "(got " << v << ")";
-    return os.str();
+    return "(got " + csv::number(v) + ")";
+}
+
+/// "[x, y]", each as csv::number writes it.
+inline std::string pointText(const Vec2& v) {
+    std::string s = "[";  // appended, not '+': GCC 12 warns wrongly on "[" + string
+    s += csv::number(v.x());
+    s += ", ";
+    s += csv::number(v.y());
+    s += ']';
+    return s;
 }
 
 inline void requireFinite(double v, const char* where, const char* what) {
@@ -30,12 +40,8 @@ inline void requireFinite(double v, const char* where, const char* what) {
 }
 
 inline void requireFinite(const Vec2& v, const char* where, const char* what) {
-    if (!std::isfinite(v.x()) || !std::isfinite(v.y())) {
-        std::ostringstream os;
-        os.precision(17);
-        os << "must be finite (got [" << v.x() << ", " << v.y() << "])";
-        fail(where, what, os.str());
-    }
+    if (!std::isfinite(v.x()) || !std::isfinite(v.y()))
+        fail(where, what, "must be finite (got " + pointText(v) + ")");
 }
 
 inline void requirePositive(double v, const char* where, const char* what) {
@@ -54,9 +60,8 @@ inline void requireMass(double v, const char* where, const char* what) {
 
 inline void requireInRange(double v, double lo, double hi, const char* where, const char* what) {
     if (!std::isfinite(v) || v < lo || v > hi) {
-        std::ostringstream os;
-        os << "must be in [" << lo << ", " << hi << "] " << got(v);
-        fail(where, what, os.str());
+        fail(where, what,
+             "must be in [" + csv::number(lo) + ", " + csv::number(hi) + "] " + got(v));
     }
 }
 

@@ -1,7 +1,6 @@
 #include <particle_sandbox/validation.hpp>
 
 #include <cmath>
-#include <sstream>
 
 #include "validate.hpp"
 
@@ -23,13 +22,6 @@ class Problems {
     std::vector<SettingProblem> out_;
 };
 
-std::string vec2(const Vec2& v) {
-    std::ostringstream os;
-    os.precision(17);
-    os << '[' << v.x() << ", " << v.y() << ']';
-    return os.str();
-}
-
 }  // namespace
 
 std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& s) {
@@ -37,7 +29,7 @@ std::vector<SettingProblem> validate(const WorldDef& def, const SolverSettings& 
     p.positive("width", def.width);
     p.positive("height", def.height);
     if (!std::isfinite(def.gravity.x()) || !std::isfinite(def.gravity.y())) {
-        p.add("gravity", "must be finite (got " + vec2(def.gravity) + ")");
+        p.add("gravity", "must be finite (got " + detail::pointText(def.gravity) + ")");
     }
     if (!std::isfinite(def.restitution) || def.restitution < 0.0 || def.restitution > 1.0) {
         p.add("restitution", "must be in [0, 1] " + detail::got(def.restitution));

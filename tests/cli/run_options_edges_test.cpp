@@ -50,6 +50,15 @@ TEST(RunOptionsEdges, NumbersAreWholeDecimalTextsOnly) {
               "--threads: must be in [1, 1024], got '-1'");
 }
 
+TEST(RunOptionsEdges, TooManyStepsAreCountedInTheMessageInShortestForm) {
+    try {
+        (void)stepsFor(1e21, 1.0);
+        ADD_FAILURE() << "accepted 1e21 steps";
+    } catch (const UsageError& e) {
+        EXPECT_STREQ(e.what(), "--duration / --dt: 1e+21 steps is more than the limit of 1e15");
+    }
+}
+
 TEST(RunOptionsEdges, ATimeStepTooSmallForTheDurationIsRefused) {
     // Both numbers are valid alone; together they ask for more steps than could ever finish.
     EXPECT_THROW((void)stepsFor(1.0, 5e-324), UsageError);

@@ -84,10 +84,27 @@ TEST(RunOptions, RefusesUnknownNamesAndOptions) {
     EXPECT_EQ(usageError({"s", "--duration", "1", "--broadphase", "octree"}),
               "--broadphase: unknown broadphase 'octree' (expected one of: auto, all-pairs, grid, "
               "quadtree)");
-    EXPECT_EQ(usageError({"s", "--duration", "1", "--bogus"}),
-              "The following argument was not expected: --bogus");
+    EXPECT_EQ(usageError({"s", "--duration", "1", "--bogus"}), "unknown option '--bogus'");
     EXPECT_EQ(usageError({"s"}), "--duration is required");
     EXPECT_EQ(usageError({"--duration", "1"}), "SCENE is required");
+}
+
+TEST(RunOptions, AnUnknownOptionIsNamedWithTheNearestKnownOne) {
+    EXPECT_EQ(usageError({"s", "--duration", "1", "--seve", "out.json"}),
+              "unknown option '--seve' (did you mean '--save'?)");
+    EXPECT_EQ(usageError({"s", "--duraton", "1"}),
+              "unknown option '--duraton' (did you mean '--duration'?)");
+    EXPECT_EQ(usageError({"s", "-d", "1", "--timeseries-evry=5"}),
+              "unknown option '--timeseries-evry' (did you mean '--timeseries-every'?)");
+    // Nothing near: the option alone (the runner points to --help after it).
+    EXPECT_EQ(usageError({"s", "-d", "1", "--seed", "3"}), "unknown option '--seed'");
+}
+
+TEST(RunOptions, AStrayArgumentIsNamedWithTheSceneAlreadyGiven) {
+    EXPECT_EQ(usageError({"a.json", "b.json", "--duration", "1"}),
+              "unexpected argument 'b.json' (SCENE is 'a.json'; options start with '-')");
+    EXPECT_EQ(usageError({"a.json", "--duration", "1", "2"}),
+              "unexpected argument '2' (SCENE is 'a.json'; options start with '-')");
 }
 
 TEST(RunOptions, HelpIsNotAnError) {

@@ -100,6 +100,25 @@ TEST_F(Track, BadListsAreRefusedNamingWhatIsWrong) {
     EXPECT_NE(err_.str().find("--track: expected an integer, got 'a'"), std::string::npos);
 }
 
+TEST(TrackList, NumbersCountFromOneInTheHelpAndTheMessages) {
+    std::string help;
+    try {
+        (void)parseRunOptions({"particle-sim", "--help"});
+    } catch (const HelpRequested& h) {
+        help = h.what();
+    }
+    EXPECT_EQ(help.find("indices"), std::string::npos) << "numbers are not 0-based indices";
+    EXPECT_NE(help.find("1 for the first"), std::string::npos) << help;
+    try {
+        (void)parseTrackList("1,,2");
+        ADD_FAILURE() << "accepted an empty item";
+    } catch (const UsageError& e) {
+        EXPECT_STREQ(e.what(),
+                     "--track: an empty item in '1,,2' (particle numbers separated by commas, e.g. "
+                     "1,4)");
+    }
+}
+
 TEST(TrackList, ParsesNumbersAndRefusesEverythingElse) {
     EXPECT_EQ(parseTrackList("1"), (std::vector<std::uint32_t>{1}));
     EXPECT_EQ(parseTrackList("5,2,17"), (std::vector<std::uint32_t>{5, 2, 17}));

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "nearest_name.hpp"
+#include <particle_sandbox/detail/nearest_name.hpp>
 
 namespace psb::detail {
 namespace {

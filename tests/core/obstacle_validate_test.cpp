@@ -36,7 +36,7 @@ TEST(ObstacleValidate, RefusesEachBadObstacleWithAClearMessage) {
               "World::addObstacle: obstacle 1 (peg) radius must be finite and > 0 (got 0)");
     EXPECT_EQ(refusal(Obstacle::segment(Vec2(1.0, 1.0), Vec2(2.0, 3.0), -0.2)),
               "World::addObstacle: obstacle 1 (segment) thickness must be finite and > 0 (got "
-              "-0.20000000000000001)");
+              "-0.2)");
     EXPECT_EQ(refusal(Obstacle::peg(Vec2(12.0, 3.0), 0.5)),
               "World::addObstacle: obstacle 1 (peg) cannot be drawn in the 10 x 10 m box: its "
               "centre [12, 3] lies outside it");

@@ -50,10 +50,10 @@ TEST(WorldArguments, AMassWhoseInverseOverflowsIsRefused) {
     const ParticleId a = w.add({.position = {10.0, 10.0}});
     EXPECT_EQ(messageOf([&] { w.add({.mass = kSubnormal}); }),
               "World::add: mass must be at least 2.2250738585072014e-308 so that its inverse is "
-              "finite (got 4.9406564584124654e-324)");
+              "finite (got 5e-324)");
     EXPECT_EQ(messageOf([&] { w.setMass(a, 1e-310); }),
               "World::setMass: mass must be at least 2.2250738585072014e-308 so that its "
-              "inverse is finite (got 9.9999999999999694e-311)");
+              "inverse is finite (got 1e-310)");
     EXPECT_EQ(w.size(), 1u);
     EXPECT_EQ(w.get(a).mass, 1.0);
 }
