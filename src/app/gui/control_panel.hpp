@@ -61,6 +61,7 @@ inline constexpr std::size_t kTableMaxParticles = 60;
 struct PanelItem {
     std::string name;
     float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
+    unsigned id = 0;  ///< ImGui's identity of the item (ImGuiID), which its keyboard cursor holds
 };
 
 class ControlPanel {

@@ -167,6 +167,34 @@ TEST_F(ControlPanelTest, PlayPauseAndStepAreTheSessionsCommands) {
     EXPECT_TRUE(session_->paused());
 }
 
+TEST_F(ControlPanelTest, AButtonWhoseWordsChangeStaysTheSameControl) {
+    // The keyboard's cursor holds a control by ImGui's identity: were it the words, Play
+    // turning into Pause would leave the cursor on nothing and a second Space would do nothing.
+    const auto idOf = [this](const std::string& name) {
+        frame();
+        const PanelItem* i = panel_.item(name);
+        EXPECT_NE(i, nullptr) << name;
+        return i != nullptr ? i->id : 0u;
+    };
+    const unsigned play = idOf("Play/Pause");
+    const unsigned start = idOf("Stopwatch start");
+    click("Play/Pause");
+    ASSERT_FALSE(session_->paused());
+    EXPECT_EQ(idOf("Play/Pause"), play) << "Pause is the Play button";
+    click("Stopwatch start");
+    ASSERT_TRUE(session_->stopwatch().running());
+    EXPECT_EQ(idOf("Stopwatch start"), start) << "Stop is the Start button";
+
+    // The Data section, below the window's bottom: opened, and recording started, directly.
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_NE(w, nullptr);
+    w->StateStorage.SetInt(ImHashStr("Data", 0, w->ID), 1);
+    const unsigned record = idOf("Record");
+    session_->apply(cmd::SetRecording{true, 1});
+    ASSERT_TRUE(session_->data().recording());
+    EXPECT_EQ(idOf("Record"), record) << "Stop recording is the Record button";
+}
+
 TEST_F(ControlPanelTest, ACheckboxSetsItsOption) {
     click("Walls");
     EXPECT_FALSE(session_->world().def().walls);
