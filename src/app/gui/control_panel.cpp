@@ -87,7 +87,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     if (!open) ImGui::PopStyleVar();
     ImGui::PopStyleColor();
     launchPreview(s, pixelRatio);
-    valuesWindow(s, height);
+    valuesWindow(s, pixelRatio);
     dialog(s);
     return std::move(out_);
 }

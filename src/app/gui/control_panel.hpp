@@ -114,9 +114,9 @@ class ControlPanel {
     void card(const Session& s);
     /// The momenta diagram under the card (view/momenta_diagram.hpp).
     void momenta(const CollisionCard& card);
-    /// The values table's window, while shown (section_values.cpp), in a display `height`
-    /// points high.
-    void valuesWindow(const Session& s, float height);
+    /// The values table's window, while shown (section_values.cpp), docked in its band at
+    /// `pointPixels` pixels per point of the UI.
+    void valuesWindow(const Session& s, float pointPixels);
     /// Recording, and the tables' Export and Copy buttons (section_data.cpp).
     void data(const Session& s);
     /// Video recording: format, area, Record / Stop, where the last one went (section_video.cpp).

@@ -2,8 +2,9 @@
 // Where the box may go on screen. The view lays out the window (view/box_area.hpp) and hands
 // the session, with each window size (cmd::Resize), the area the box is fitted into for each
 // state of the panels the session switches: the control panel open or folded, a panel of the
-// side column (plots, histograms, profile) asked for or not. The session fits the box into the
-// area its panels are in; it knows no panel, font or margin, only these rectangles.
+// side column (plots, histograms, profile) asked for or not, and the values table's band. The
+// session fits the box into the area its panels are in; it knows no panel, font or margin, only
+// these rectangles.
 
 namespace psb::app {
 
@@ -18,6 +19,9 @@ struct BoxArea {
     /// fitted into the area leaves it whole beside it: the box then moves left and keeps its
     /// size. Whether it does depends on the box's proportions, which the session knows.
     double spareColumn = 0.0;
+    /// A band this tall above the area's bottom is kept free too while the values table is
+    /// shown (it docks along the window's bottom, under the messages).
+    double valuesBand = 0.0;
 
     friend bool operator==(const BoxArea&, const BoxArea&) = default;
 };

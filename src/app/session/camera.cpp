@@ -34,7 +34,9 @@ void Camera::fit(double width, double height, double marginPixels, double topIns
     }
     // The insets are given up only when the window is big enough to spare them.
     const double top = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
-    const double bottom = std::clamp(bottomInsetPixels, 0.0, height_ / 3.0);
+    // The bottom holds the messages and, while shown, the values table's band: kept while they
+    // leave the box a quarter of the window (the view keeps the band smaller than that).
+    const double bottom = std::clamp(bottomInsetPixels, 0.0, std::max(0.0, 0.75 * height_ - top));
     // The control panel's column is kept free while it leaves the box a quarter of the window
     // (the view folds the panel before that: box_area.hpp's controlsFit; a panel at 200 % in a
     // 1000-pixel window takes 62 % of it).

@@ -238,6 +238,8 @@ class Session {
     [[nodiscard]] bool controlsShown() const { return showControls_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const;
+    /// The window's layout the app sent last (cmd::Resize).
+    [[nodiscard]] const WindowLayout& layout() const { return layout_; }
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
     [[nodiscard]] std::string overlayFlags() const;
 

@@ -21,17 +21,18 @@ void Session::fit() {
     const BoxArea& a = layout_.area(showControls_, columnAsked());
     const double w = doc_.world.def().width, h = doc_.world.def().height, margin = 10.0;
     double right = a.right;
+    const double bottom = a.bottom + (view_.values ? a.valuesBand : 0.0);
     if (a.spareColumn > 0.0) {
         // A box that the window's height limits may leave width to spare: when it leaves the
         // inspector's whole column, the box moves left, keeps its size, and the inspector
         // (bottom right, on a click) does not cover it. Less room would only move the box off
         // centre and still leave it covered.
-        camera_.fit(w, h, margin, a.top, a.bottom, right, a.left);
+        camera_.fit(w, h, margin, a.top, bottom, right, a.left);
         const double spare =
             camera_.viewportWidth() - a.left - right - camera_.toScreen(w) - 2.0 * margin;
         if (spare >= a.spareColumn) right += a.spareColumn;
     }
-    camera_.fit(w, h, margin, a.top, a.bottom, right, a.left);
+    camera_.fit(w, h, margin, a.top, bottom, right, a.left);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(), topLeft.x(),
             topLeft.y()));
@@ -109,10 +110,11 @@ void Session::handle(const cmd::SetShow& c) {
         if (!LastCollision::listening(c.on, doc_.world.size())) lastCollision_.clear();
         listenForCollisions();
     }
-    // The side column's panels change what the box is fitted beside.
+    // The side column's panels and the values table's band change what the box is fitted
+    // beside.
     using O = cmd::ShowOption;
     if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile ||
-                    c.option == O::Bins)) {
+                    c.option == O::Bins || c.option == O::Values)) {
         fit();
     }
 }

@@ -59,6 +59,7 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         } else {
             a.spareColumn = inspector;
         }
+        a.valuesBand = valuesBand(height, a.top, a.bottom, controls.pointPixels).keptFree;
         return a;
     };
     WindowLayout l;
@@ -81,6 +82,16 @@ bool controlsFit(int width, const ControlsWidth& controls) {
 
 int controlsInset(const Session& session, const ControlsWidth& controls) {
     return static_cast<int>(session.controlsShown() ? controls.open : controls.folded);
+}
+
+PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls) {
+    if (!session.view().values) return {};
+    const Camera& camera = session.camera();
+    const BoxArea& a = session.layout().area(session.controlsShown(), session.columnAsked());
+    const int band =
+        valuesBand(camera.viewportHeight(), a.top, a.bottom, controls.pointPixels).height;
+    return valuesBandRect(camera.viewportWidth(), camera.viewportHeight(),
+                          controlsInset(session, controls), band);
 }
 
 bool sideColumnFolded(const Session& session, const ControlsWidth& controls) {

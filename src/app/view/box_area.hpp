@@ -16,6 +16,7 @@
 //   └─────────┴──────────────────────────────────┴──────────┘
 
 #include "session/box_area.hpp"
+#include "view/pixel_rect.hpp"
 #include "view/text_measure.hpp"
 
 namespace psb::app {
@@ -47,5 +48,10 @@ struct ControlsWidth {
 /// Whether `session`'s side-column panels are folded away: one is asked for, but the window
 /// leaves the column no room beside the box (sideColumnFits); the box keeps the width.
 [[nodiscard]] bool sideColumnFolded(const Session& session, const ControlsWidth& controls);
+
+/// Where the values table docks while `session` shows it (valuesBandRect, in pixels; empty
+/// while it is hidden): the panel places its window there, the layout puts the other panels
+/// above it.
+[[nodiscard]] PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls);
 
 }  // namespace psb::app

@@ -138,12 +138,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     if (session.view().ruler) f.ruler = rulerView(session.ruler(), session.camera());
     if (stats.video.recording) {
-        // The top-right corner of the box's side of the window, clear of the HUD at its left.
+        // At the top of the side column (layoutPanels places it).
         RecordingMarkView mark;
         mark.label = recordingLabel(stats.video);
-        const PixelPoint size = textBoxSize(hudFont, {mark.label});
-        mark.at = {session.camera().viewportWidth() - size.x - kPanelMargin, kPanelMargin, size.x,
-                   size.y};
         f.recordingMark = mark;
     }
     std::uint64_t stillToDrop = 0;
@@ -246,6 +243,12 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
     req.scale = controls.pointPixels;
+    req.values = valuesTableRect(session, controls).h;
+    if (f.recordingMark) {
+        // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).
+        const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});
+        req.recording = {text.x + hudFont.lineHeight() / 2 + 6, text.y};
+    }
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
         o.inspector = inspectorPanel(hudFont,
@@ -255,14 +258,12 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         req.inspector = textBoxSize(hudFont, o.inspector);
         f.layout = layoutPanels(req);
     }
-    if (f.recordingMark) {
-        // A HUD as wide as the window (a narrow one) has the corner: the mark goes below it.
-        PixelRect& m = f.recordingMark->at;
-        const PixelRect& hud = f.layout.hud;
-        if (hud.w > 0 && m.x < hud.x + hud.w && hud.x < m.x + m.w && m.y < hud.y + hud.h &&
-            hud.y < m.y + m.h) {
-            m.y = hud.y + hud.h + kPanelGap;
-        }
+    if (f.recordingMark) f.recordingMark->at = f.layout.recording;
+    if (f.grid || f.ruler) {
+        // The marks' labels are read whole: in the window right of the control panel, clear of
+        // every panel and of each other.
+        keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
+                            {left, 0, req.width - left, req.height}, panelRects(f.layout));
     }
     f.title =
         windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());

@@ -1,12 +1,37 @@
 #include "view/screen_layout.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace psb::app {
 
 bool overlaps(const PixelRect& a, const PixelRect& b) {
     if (a.w <= 0 || a.h <= 0 || b.w <= 0 || b.h <= 0) return false;
     return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
+std::vector<PixelRect> panelRects(const PanelLayout& l) {
+    std::vector<PixelRect> out;
+    for (const PixelRect& r : {l.hud, l.recording, l.profile, l.legend, l.messages, l.inspector,
+                               l.plots, l.speeds, l.bins, l.values}) {
+        if (r.w > 0 && r.h > 0) out.push_back(r);
+    }
+    return out;
+}
+
+ValuesBand valuesBand(int windowHeight, double top, double bottom, double scale) {
+    const auto pixels = [scale](int points) { return static_cast<int>(std::ceil(points * scale)); };
+    const int want = pixels(kValuesChromePoints + kValuesBandRows * kValuesRowPoints);
+    const int least = pixels(kValuesChromePoints + kValuesRowPoints);
+    // The box's room below the HUD's band and above the messages' without the table.
+    const int room = windowHeight - static_cast<int>(std::ceil(top + bottom));
+    const int spare = std::max(0, room - kBoxMinHeight - kPanelGap);
+    ValuesBand b;
+    // Never up into the HUD's band, whatever the scale.
+    const int most = std::max(0, windowHeight - static_cast<int>(std::ceil(top)) - kPanelMargin);
+    b.height = std::min(most, std::max(least, std::min(want, spare)));
+    b.keptFree = std::min(b.height, spare) + (spare > 0 ? kPanelGap : 0);
+    return b;
 }
 
 PanelLayout layoutPanels(const LayoutRequest& r) {
@@ -27,6 +52,11 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         return PixelRect{x, y, size.x, size.y};
     };
     int bottom = r.height - m;
+    // The values table first, along the bottom: the other panels stand on it.
+    if (r.values > 0 && room > 0) {
+        l.values = valuesBandRect(r.width, r.height, r.left, r.values);
+        bottom = l.values.y - gap;
+    }
     const auto placeMessages = [&] {
         if (r.messages.x <= 0 || r.messages.y <= 0 || bottom - r.messages.y <= hudBottom) return;
         const PixelRect box{r.left + 4, bottom - r.messages.y, r.messages.x, r.messages.y};
@@ -50,6 +80,11 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits;
     int top = 4;
+    // The recording mark first: it is there for a while and says so; the others stand under it.
+    if (r.recording.x > 0 && r.recording.y > 0 && r.recording.x <= room) {
+        l.recording = place(r.recording, std::max(top, kPanelMargin));
+        top = l.recording.y + l.recording.h + gap;
+    }
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
         if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -193,6 +195,47 @@ TEST_F(ControlPanelTest, AButtonWhoseWordsChangeStaysTheSameControl) {
     session_->apply(cmd::SetRecording{true, 1});
     ASSERT_TRUE(session_->data().recording());
     EXPECT_EQ(idOf("Record"), record) << "Stop recording is the Record button";
+}
+
+TEST_F(ControlPanelTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale) {
+    // At 200 % the table's window ran off the window's right edge; at 125 % it covered half of
+    // the box. Docked in the band the view keeps for it, it does neither.
+    for (const auto& [width, height] : {std::pair{800, 600}, {1024, 768}, {1600, 1000}}) {
+        for (const float scale : {1.f, 1.25f, 2.f}) {
+            const std::string at = std::to_string(width) + "x" + std::to_string(height) + " at " +
+                                   std::to_string(scale);
+            SessionOptions so;
+            so.paused = true;
+            so.viewportWidth = width;
+            so.viewportHeight = height;
+            so.layout = windowLayout(*font_, width, height, controlsWidth(scale));
+            so.controls = so.layout.controlsFit;
+            Session s(makeWorld(defaultScene()), SceneMeta{"default"}, so);
+            s.apply(cmd::SetShow{ShowOption::Values, true});
+            gui_->setScale(scale);
+            ControlPanel panel;
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(static_cast<float>(width), static_cast<float>(height));
+                for (const Command& c :
+                     panel.build(s, FrameStats{}, static_cast<float>(height) / scale, scale))
+                    s.apply(c);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+            const PanelItem* w = panel.item("values window");
+            ASSERT_NE(w, nullptr) << at;
+            const float x0 = w->x0 * scale, y0 = w->y0 * scale, x1 = w->x1 * scale,
+                        y1 = w->y1 * scale;
+            EXPECT_GE(x0, 0.f) << at;
+            EXPECT_LE(x1, static_cast<float>(width) + 0.5f) << at << ": off the right edge";
+            EXPECT_LE(y1, static_cast<float>(height) + 0.5f) << at;
+            if (width >= 1024 && scale < 2.f) {
+                const Camera::ScreenBox box =
+                    s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
+                EXPECT_GE(y0, box.topLeft.y() + box.size.y() - 0.5) << at << ": over the box";
+            }
+        }
+    }
+    gui_->setScale(1.f);
 }
 
 TEST_F(ControlPanelTest, ACheckboxSetsItsOption) {

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -94,6 +96,58 @@ TEST(EditPromptPanel, AnOpenPromptIsShownEvenWhereTheWholePanelWouldNotFit) {
     }));
 }
 
+TEST(ValuesTable, DocksOnScreenUnderTheBoxAndThePanelsAtEveryScale) {
+    // The values table (I) at 100 to 200 %, in windows from 800 x 600 up, the plots on: its
+    // band is inside the window right of the control panel, under every other panel, and under
+    // the box wherever the window leaves the box kBoxMinHeight pixels above it. As a window of
+    // its own it ran off the window's right edge at 200 % and covered half the box and the
+    // plots at 125 %.
+    int offTheBox = 0;
+    for (const auto& [width, height] : {std::pair{800, 600}, {1024, 768}, {1600, 1000}}) {
+        for (const double scale : {1.0, 1.25, 1.5, 2.0}) {
+            const test::FixedMeasure font(scale);
+            const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
+            SessionOptions o;
+            o.paused = true;
+            o.viewportWidth = width;
+            o.viewportHeight = height;
+            o.layout = windowLayout(font, width, height, controls);
+            o.controls = o.layout.controlsFit;
+            Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+            s.apply(cmd::SetShow{ShowOption::Plots, true});
+            s.apply(cmd::SetShow{ShowOption::Values, true});
+            const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
+            const PixelRect& v = f.layout.values;
+            const std::string at = std::to_string(width) + "x" + std::to_string(height) + " at " +
+                                   std::to_string(scale);
+            ASSERT_GT(v.w, 0) << at;
+            EXPECT_EQ(v.x, f.controlsInset + kPanelMargin) << at;
+            EXPECT_LE(v.x + v.w, width) << at;
+            EXPECT_LE(v.y + v.h, height) << at;
+            EXPECT_GE(v.y, f.layout.hud.y + f.layout.hud.h) << at << ": under the HUD";
+            // Its chrome and a row at least, unless that would reach up into the HUD's band.
+            if (v.y > s.layout().area(s.controlsShown(), s.columnAsked()).top) {
+                EXPECT_GE(v.h, static_cast<int>(scale * (kValuesChromePoints + kValuesRowPoints)))
+                    << at;
+            }
+            EXPECT_EQ(v, valuesTableRect(s, controls)) << at << ": where the panel puts it";
+            for (const PixelRect& other : {f.layout.hud, f.layout.messages, f.layout.plots,
+                                           f.layout.legend, f.layout.inspector}) {
+                EXPECT_FALSE(overlaps(v, other)) << at;
+            }
+            const BoxArea& a = s.layout().area(s.controlsShown(), s.columnAsked());
+            const double room = height - a.top - a.bottom;
+            if (room >= kBoxMinHeight + v.h + kPanelGap) {
+                const Camera::ScreenBox box =
+                    s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
+                EXPECT_LE(box.topLeft.y() + box.size.y(), v.y) << at << ": the box is above it";
+                ++offTheBox;
+            }
+        }
+    }
+    EXPECT_GE(offTheBox, 6) << "most of these windows leave the box room above the table";
+}
+
 TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
     // Labels left out because others were in the way, and because no side of the disc was in
     // the window: two reasons, two different lines (a label only running off the window's
@@ -129,6 +183,26 @@ TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
     EXPECT_GT(r.x, 800);  // the right half, away from the HUD at the left
     EXPECT_GE(r.y, 0);
     EXPECT_LT(r.y, 40);
+}
+
+TEST(RecordingMark, TheMomentumLegendAndTheProfileGoUnderItNotUnderIt) {
+    // The mark was put in the window's top-right corner after the layout, where the momentum
+    // legend (V) already was: "REC" covered the legend's first line.
+    Session s = sessionIn(1280, 800, true);
+    s.apply(cmd::SetShow{ShowOption::Momentum, true});
+    s.apply(cmd::SetShow{ShowOption::Profile, true});
+    const test::FixedMeasure font;
+    FrameStats stats;
+    stats.video.recording = true;
+    const FrameView f = buildFrame(s, stats, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.recordingMark.has_value());
+    const PixelRect& mark = f.recordingMark->at;
+    ASSERT_GT(f.layout.legend.w, 0);
+    ASSERT_GT(f.layout.profile.w, 0);
+    EXPECT_FALSE(overlaps(mark, f.layout.legend));
+    EXPECT_FALSE(overlaps(mark, f.layout.profile));
+    EXPECT_FALSE(overlaps(mark, f.layout.hud));
+    EXPECT_EQ(mark.x + mark.w, 1280 - kPanelMargin) << "still in the top-right corner";
 }
 
 TEST(RecordingMark, InANarrowWindowItGoesBelowTheHudNotOverIt) {
