@@ -227,7 +227,7 @@ void ControlPanel::scene(const Session& s) {
             const std::string key = k < 9 ? " (key " + std::to_string(k + 1) + ")" : "";
             const std::string about = p.description.empty() ? p.summary : p.description + key;
             tip(about.c_str());
-            ImGui::TextDisabled("  %s", p.summary.c_str());
+            widgets::wrappedDisabled("  " + p.summary);
             tip(about.c_str());
             ImGui::PopID();
         }

@@ -238,6 +238,23 @@ TEST_F(ControlPanelTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale)
     gui_->setScale(1.f);
 }
 
+TEST_F(ControlPanelTest, NoLineOfThePanelRunsPastItsRightEdge) {
+    // Every section open, its vertical scroll bar shown: a line wider than the room left
+    // beside it was cut at the panel's edge ("...to see its va", a preset's description, the
+    // saved file's path). ImGui keeps the right end of everything laid out in the window.
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_NE(w, nullptr);
+    // Opened as a click would (their headers are below the window once the others are open).
+    for (const char* section : {"Scene", "Tools", "Video", "Data", "All particles", "Engine"})
+        w->StateStorage.SetInt(ImHashStr(section, 0, w->ID), 1);
+    frame();
+    frame();
+    EXPECT_TRUE(w->ScrollbarY) << "the case: the scroll bar takes its width from the lines";
+    EXPECT_LE(w->DC.CursorMaxPos.x, w->WorkRect.Max.x + 1.f)
+        << "something is laid out " << w->DC.CursorMaxPos.x - w->WorkRect.Max.x
+        << " points past the panel's right edge";
+}
+
 TEST_F(ControlPanelTest, ACheckboxSetsItsOption) {
     click("Walls");
     EXPECT_FALSE(session_->world().def().walls);
