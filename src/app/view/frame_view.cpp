@@ -176,13 +176,14 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // edges all round a disc (the drawing layer slides a label along its disc's side before
     // giving up, so a disc near an edge is not among these).
     if (session.view().labels) {
-        if (stats.labelsCrowded > 0) {
-            o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
-                            " left out where they would overlap (zoom in)");
-        }
-        if (stats.labelsOffWindow > 0) {
-            o.hud.push_back("Labels: " + std::to_string(stats.labelsOffWindow) +
-                            " left out: no room beside the disc in the window (zoom out)");
+        // Wrapped as the readings are: at 200 % a note ran past the window's right edge.
+        for (const auto& [count, offWindow] :
+             {std::pair{stats.labelsCrowded, false}, std::pair{stats.labelsOffWindow, true}}) {
+            if (count == 0) continue;
+            for (std::string& line :
+                 wrapLines(hudFont, {labelsLeftOutNote(count, offWindow)}, hudRoom - 8)) {
+                o.hud.push_back(std::move(line));
+            }
         }
     }
     o.showHelp = session.helpShown();

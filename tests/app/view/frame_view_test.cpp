@@ -167,6 +167,30 @@ TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
     EXPECT_TRUE(has("Labels: 1 left out: no room beside the disc in the window"));
 }
 
+TEST(LabelsLeftOut, TheHudsNoteWrapsWithinTheWindowAtTwiceTheScale) {
+    // At 200 % in 800 x 600 the note ran past the window's right edge ("...would overla").
+    const test::FixedMeasure font(2.0);
+    const ControlsWidth controls{620.0, 88.0, 2.0};
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 800;
+    o.viewportHeight = 600;
+    o.layout = windowLayout(font, 800, 600, controls);
+    o.controls = false;
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    s.apply(cmd::SetShow{ShowOption::Labels, true});
+    FrameStats stats;
+    stats.labelsCrowded = 2;
+    const FrameView f = buildFrame(s, stats, font, font, controls);
+    std::string said;
+    for (const std::string& line : f.overlays.hud) {
+        EXPECT_LE(f.layout.hud.x + font.measure(line) + 8, 800) << line;
+        said += line;
+    }
+    EXPECT_NE(said.find("Labels: 2 left out"), std::string::npos);
+    EXPECT_NE(said.find("(zoom in)"), std::string::npos);
+}
+
 TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
     const Session s = sessionIn(1600, 800, true);
     const test::FixedMeasure font;
