@@ -88,11 +88,26 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         } else {
             a.spareColumn = inspector;
         }
-        a.valuesBand = valuesBand(height, a.top, a.bottom, controls.pointPixels).keptFree;
+        ValuesBand band = valuesBand(height, a.top, controls.pointPixels);
+        // The values table's column takes the side column's place, whose charts then fold
+        // away (the HUD says so: its band makes room for the note).
+        a.valuesColumn = valuesColumn(width, a.left, 0.0, height, a.top, a.bottom, band.least,
+                                      controls.pointPixels);
+        if (a.valuesColumn > 0.0 && columnAsked && fits) {
+            a.top = std::max(top, hudBand(hudFont, room, true));
+            band = valuesBand(height, a.top, controls.pointPixels);
+        }
+        a.valuesBand = band.height + kPanelGap;
+        a.valuesRow = band.row;
+        a.valuesLeast = std::min(band.least, band.height) + kPanelGap;
         return a;
     };
     WindowLayout l;
-    l.controlsFit = controlsFit(width, controls);
+    // The open panel also leaves the box its height: beside a panel at 200 % in a window 1024
+    // pixels wide the HUD's lines wrap to half the window's height.
+    const BoxArea besideOpen = area(controls.open, false);
+    l.controlsFit = controlsFit(width, controls) &&
+                    height - besideOpen.top - besideOpen.bottom >= kBoxMinHeight;
     // A panel opened in a window too narrow for it lies over the box, which stays where it was:
     // squeezed into what is left, it would be a sliver, partly under the panel all the same.
     const double open = l.controlsFit ? controls.open : controls.folded;
@@ -117,13 +132,19 @@ PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls)
     if (!session.view().values) return {};
     const Camera& camera = session.camera();
     const BoxArea& a = session.layout().area(session.controlsShown(), session.columnAsked());
-    const int band =
-        valuesBand(camera.viewportHeight(), a.top, a.bottom, controls.pointPixels).height;
+    const ValuesDock& dock = session.valuesDock();
+    if (dock.right) {
+        return valuesColumnRect(camera.viewportWidth(), camera.viewportHeight(),
+                                static_cast<int>(a.top), static_cast<int>(dock.size));
+    }
+    // A band the session has not chosen yet (no fit since the table was shown): the full one.
+    const int band = static_cast<int>(dock.size > 0.0 ? dock.size : a.valuesBand) - kPanelGap;
     return valuesBandRect(camera.viewportWidth(), camera.viewportHeight(),
                           controlsInset(session, controls), band);
 }
 
 bool sideColumnFolded(const Session& session, const ControlsWidth& controls) {
+    if (session.columnAsked() && session.view().values && session.valuesDock().right) return true;
     return session.columnAsked() &&
            !sideColumnFits(session.camera().viewportWidth(), controlsInset(session, controls),
                            controls.pointPixels);

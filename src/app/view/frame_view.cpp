@@ -207,7 +207,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // With the control panel open the selected particle's values are in it; the inspector
     // beside the box stays for the keyboard's edit prompt (Enter). Its long lines (a refusal's
     // reason) wrap at the width of its readings.
-    const int room = session.camera().viewportWidth() - left;
+    // Left of the values table where it docks at the right.
+    const int room = session.camera().viewportWidth() - left -
+                     (session.view().values && session.valuesDock().right
+                          ? static_cast<int>(session.valuesDock().size)
+                          : 0);
     const bool editing = session.prompt().active();
     if (f.selected && (!session.controlsShown() || editing)) {
         o.inspector = inspectorPanel(hudFont,
@@ -244,7 +248,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
     req.scale = controls.pointPixels;
-    req.values = valuesTableRect(session, controls).h;
+    req.values = valuesTableRect(session, controls);
+    req.valuesRight = session.valuesDock().right;
     if (f.recordingMark) {
         // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).
         const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});

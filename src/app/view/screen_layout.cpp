@@ -19,27 +19,33 @@ std::vector<PixelRect> panelRects(const PanelLayout& l) {
     return out;
 }
 
-ValuesBand valuesBand(int windowHeight, double top, double bottom, double scale) {
+ValuesBand valuesBand(int windowHeight, double top, double scale) {
     const auto pixels = [scale](int points) { return static_cast<int>(std::ceil(points * scale)); };
-    const int want = pixels(kValuesChromePoints + kValuesBandRows * kValuesRowPoints);
-    const int least = pixels(kValuesChromePoints + kValuesRowPoints);
-    // The box's room below the HUD's band and above the messages' without the table.
-    const int room = windowHeight - static_cast<int>(std::ceil(top + bottom));
-    const int spare = std::max(0, room - kBoxMinHeight - kPanelGap);
     ValuesBand b;
+    b.row = pixels(kValuesRowPoints);
+    b.least = pixels(kValuesChromePoints + kValuesRowPoints);
     // Never up into the HUD's band, whatever the scale.
     const int most = std::max(0, windowHeight - static_cast<int>(std::ceil(top)) - kPanelMargin);
-    b.height = std::min(most, std::max(least, std::min(want, spare)));
-    b.keptFree = std::min(b.height, spare) + (spare > 0 ? kPanelGap : 0);
+    b.height = std::min(most, pixels(kValuesChromePoints + kValuesBandRows * kValuesRowPoints));
     return b;
+}
+
+int valuesColumn(int width, double left, double right, int height, double top, double bottom,
+                 int band, double scale) {
+    // A band that leaves the box its height is always as good.
+    if (height - top - bottom - band - kPanelGap >= kBoxMinHeight) return 0;
+    const double room = width - left - right;
+    const int column = static_cast<int>(
+        std::ceil(std::max(0.4 * room, kValuesColumnMinPoints * scale) + kPanelMargin));
+    return room - column >= kBoxMinRoom ? column : 0;
 }
 
 PanelLayout layoutPanels(const LayoutRequest& r) {
     PanelLayout l;
     const int m = kPanelMargin, gap = kPanelGap;
-    const int right = r.width - m;
+    int right = r.width - m;
     const int left = r.left + m;  // the leftmost a right-aligned panel may start
-    const int room = r.width - r.left - 2 * m;
+    int room = r.width - r.left - 2 * m;
     if (r.hud.x > 0 && r.hud.y > 0) l.hud = {r.left + 4, 4, r.hud.x, r.hud.y};
     const int hudRight = l.hud.w > 0 ? l.hud.x + l.hud.w : 0;
     const int hudBottom = l.hud.w > 0 ? l.hud.y + l.hud.h : 0;
@@ -52,10 +58,16 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         return PixelRect{x, y, size.x, size.y};
     };
     int bottom = r.height - m;
-    // The values table first, along the bottom: the other panels stand on it.
-    if (r.values > 0 && room > 0) {
-        l.values = valuesBandRect(r.width, r.height, r.left, r.values);
-        bottom = l.values.y - gap;
+    // The values table first, along the bottom: the other panels stand on it; or at the right:
+    // they go left of it.
+    if (r.values.w > 0 && room > 0) {
+        l.values = r.values;
+        if (r.valuesRight) {
+            right = l.values.x - gap;
+            room = right - left;
+        } else {
+            bottom = l.values.y - gap;
+        }
     }
     const auto placeMessages = [&] {
         if (r.messages.x <= 0 || r.messages.y <= 0 || bottom - r.messages.y <= hudBottom) return;
@@ -76,7 +88,8 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     if (l.inspector.w > 0) bottom = l.inspector.y - gap;
 
     const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
-    const bool fits = sideColumnFits(r.width, r.left, r.scale);
+    // The values table at the right takes the column's place.
+    const bool fits = sideColumnFits(r.width, r.left, r.scale) && !(r.values.w > 0 && r.valuesRight);
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits;
     int top = 4;

@@ -96,56 +96,88 @@ TEST(EditPromptPanel, AnOpenPromptIsShownEvenWhereTheWholePanelWouldNotFit) {
     }));
 }
 
-TEST(ValuesTable, DocksOnScreenUnderTheBoxAndThePanelsAtEveryScale) {
-    // The values table (I) at 100 to 200 %, in windows from 800 x 600 up, the plots on: its
-    // band is inside the window right of the control panel, under every other panel, and under
-    // the box wherever the window leaves the box kBoxMinHeight pixels above it. As a window of
-    // its own it ran off the window's right edge at 200 % and covered half the box and the
-    // plots at 125 %.
-    int offTheBox = 0;
+/// The momentum lesson's world: a 10 m x 4 m box, two balls of 1 and 3 kg.
+World lessonWorld() {
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(2.0, 0.0), .mass = 1.0, .radius = 0.25});
+    w.add({.position = Vec2(7.0, 2.0), .velocity = Vec2(-1.0, 0.0), .mass = 3.0, .radius = 0.35});
+    return w;
+}
+
+/// `world` in a `width` x `height` window at `scale`, laid out as the app lays it out (the
+/// control panel open where it fits), the plots and the values table on.
+Session tableSession(World world, int width, int height, double scale) {
+    const test::FixedMeasure font(scale);
+    const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = width;
+    o.viewportHeight = height;
+    o.layout = windowLayout(font, width, height, controls);
+    o.controls = o.layout.controlsFit;
+    Session s(std::move(world), SceneMeta{"table"}, o);
+    s.apply(cmd::SetShow{ShowOption::Plots, true});
+    s.apply(cmd::SetShow{ShowOption::Values, true});
+    return s;
+}
+
+TEST(ValuesTable, DocksOnScreenOffTheBoxAndThePanelsAtEveryScale) {
+    // The values table (I) at 100 to 200 %, in windows from 800 x 600 up, the plots on, for
+    // the default scene's square box and the lesson's wide one: inside the window, under the
+    // HUD, clear of every other panel, and never over the box. As a window of its own it ran
+    // off the window's right edge at 200 % and covered half the box and the plots at 125 %;
+    // docked along the bottom it still covered the lesson's box at 200 % in 800 x 600.
     for (const auto& [width, height] : {std::pair{800, 600}, {1024, 768}, {1600, 1000}}) {
         for (const double scale : {1.0, 1.25, 1.5, 2.0}) {
-            const test::FixedMeasure font(scale);
-            const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
-            SessionOptions o;
-            o.paused = true;
-            o.viewportWidth = width;
-            o.viewportHeight = height;
-            o.layout = windowLayout(font, width, height, controls);
-            o.controls = o.layout.controlsFit;
-            Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
-            s.apply(cmd::SetShow{ShowOption::Plots, true});
-            s.apply(cmd::SetShow{ShowOption::Values, true});
-            const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
-            const PixelRect& v = f.layout.values;
-            const std::string at = std::to_string(width) + "x" + std::to_string(height) + " at " +
-                                   std::to_string(scale);
-            ASSERT_GT(v.w, 0) << at;
-            EXPECT_EQ(v.x, f.controlsInset + kPanelMargin) << at;
-            EXPECT_LE(v.x + v.w, width) << at;
-            EXPECT_LE(v.y + v.h, height) << at;
-            EXPECT_GE(v.y, f.layout.hud.y + f.layout.hud.h) << at << ": under the HUD";
-            // Its chrome and a row at least, unless that would reach up into the HUD's band.
-            if (v.y > s.layout().area(s.controlsShown(), s.columnAsked()).top) {
-                EXPECT_GE(v.h, static_cast<int>(scale * (kValuesChromePoints + kValuesRowPoints)))
-                    << at;
-            }
-            EXPECT_EQ(v, valuesTableRect(s, controls)) << at << ": where the panel puts it";
-            for (const PixelRect& other : {f.layout.hud, f.layout.messages, f.layout.plots,
-                                           f.layout.legend, f.layout.inspector}) {
-                EXPECT_FALSE(overlaps(v, other)) << at;
-            }
-            const BoxArea& a = s.layout().area(s.controlsShown(), s.columnAsked());
-            const double room = height - a.top - a.bottom;
-            if (room >= kBoxMinHeight + v.h + kPanelGap) {
+            for (const bool lesson : {false, true}) {
+                const test::FixedMeasure font(scale);
+                const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
+                const Session s = tableSession(lesson ? lessonWorld() : makeWorld(defaultScene()),
+                                               width, height, scale);
+                const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
+                const PixelRect& v = f.layout.values;
+                const std::string at = std::to_string(width) + "x" + std::to_string(height) +
+                                       " at " + std::to_string(scale) +
+                                       (lesson ? ", the lesson" : ", the default scene");
+                ASSERT_GT(v.w, 0) << at;
+                EXPECT_GE(v.x, f.controlsInset + kPanelMargin) << at;
+                EXPECT_LE(v.x + v.w, width - kPanelMargin) << at;
+                EXPECT_LE(v.y + v.h, height - kPanelMargin) << at;
+                EXPECT_GE(v.y, f.layout.hud.y + f.layout.hud.h) << at << ": under the HUD";
+                EXPECT_EQ(v, valuesTableRect(s, controls)) << at << ": where the panel puts it";
+                for (const PixelRect& other : {f.layout.hud, f.layout.messages, f.layout.plots,
+                                               f.layout.legend, f.layout.inspector}) {
+                    EXPECT_FALSE(overlaps(v, other)) << at;
+                }
                 const Camera::ScreenBox box =
                     s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
-                EXPECT_LE(box.topLeft.y() + box.size.y(), v.y) << at << ": the box is above it";
-                ++offTheBox;
+                const PixelRect onScreen{static_cast<int>(box.topLeft.x()),
+                                         static_cast<int>(box.topLeft.y()),
+                                         static_cast<int>(box.size.x()),
+                                         static_cast<int>(box.size.y())};
+                EXPECT_FALSE(overlaps(v, onScreen)) << at << ": over the box";
+                // Readable: a sixth of the window's height for the square box (beside the
+                // panel open at 125 % in 800 x 600), 40 % of that for the wide one.
+                EXPECT_GE(box.size.y(), height / 6.0 * (lesson ? 0.4 : 1.0)) << at;
             }
         }
     }
-    EXPECT_GE(offTheBox, 6) << "most of these windows leave the box room above the table";
+}
+
+TEST(ValuesTable, InAShortWindowItDocksWhereTheBoxComesOutLargest) {
+    // The lesson at 200 % in 800 x 600: a band along the bottom, even with one row, would
+    // leave the box no height under the HUD; at the right it leaves the box most of the width.
+    const Session tall = tableSession(lessonWorld(), 800, 600, 2.0);
+    EXPECT_TRUE(tall.valuesDock().right);
+    EXPECT_GE(tall.camera().boxOnScreen(10.0, 4.0).size.x(), 280.0);
+    // At 100 % in 1600 x 1000 the band has all its rows.
+    const Session big = tableSession(lessonWorld(), 1600, 1000, 1.0);
+    EXPECT_FALSE(big.valuesDock().right);
+    EXPECT_EQ(big.valuesDock().size,
+              big.layout().area(big.controlsShown(), big.columnAsked()).valuesBand);
 }
 
 TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
