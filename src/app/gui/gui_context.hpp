@@ -37,6 +37,8 @@
 #include <imgui.h>
 
 #include "gui/imgui_renderer.hpp"
+#include "gui/panel_touch.hpp"
+#include "gui/tooltips.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -95,6 +97,8 @@ class GuiContext {
     [[nodiscard]] bool wantsMouse();
     [[nodiscard]] bool wantsKeyboard();
     [[nodiscard]] ImGuiRenderer& renderer() { return *renderer_; }
+    /// The tooltip the last frame showed (empty: none), for --log-controls.
+    [[nodiscard]] const std::string& shownTooltip() const { return tooltips_.shown; }
 
   private:
     void makeCurrent() const;
@@ -108,6 +112,12 @@ class GuiContext {
     void releaseIfDue();
     /// handleEvent for a key press or release.
     bool handleKey(const SDL_Event& event, bool tabToPanel);
+    /// handleEvent for the mouse SDL makes of a finger (panel_touch.hpp): true when the panel's
+    /// touch gesture takes it.
+    bool handleFinger(const SDL_Event& event);
+    /// The finger's part of a new frame: the gesture's pointer, the pointer of a finger lifted
+    /// off the world forgotten, whether tooltips may show.
+    void fingerFrame();
 
     SDL_Window* window_ = nullptr;
     SDL_Renderer* sdl_ = nullptr;
@@ -120,6 +130,10 @@ class GuiContext {
     float scale_ = 1.f;      // the UI's scale
     float fontScale_ = 0.f;  // pixels per ImGui point the atlas was rasterised for
     int releaseAfter_ = 0;   // the frame after which Esc gives the keyboard back (0: none)
+    PanelTouch panelTouch_;
+    TooltipState tooltips_;
+    bool pointerIsFinger_ = false;  // the last pointer event came from a finger
+    int forgetMouse_ = 0;           // frames until a lifted finger's pointer is forgotten
 };
 
 }  // namespace psb::app

@@ -37,8 +37,9 @@ struct ControlsWidth {
 [[nodiscard]] WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
                                         const ControlsWidth& controls, bool inPage = false);
 
-/// Whether the open control panel leaves the box a usable width (kBoxMinRoom pixels) in a window
-/// `width` pixels wide: a window made narrower folds it (WindowLayout::controlsFit).
+/// Whether the open control panel leaves the box a usable width (kBoxMinRoom points, pixels at a
+/// pixel ratio of 1) in a window `width` pixels wide: a window made narrower folds it
+/// (WindowLayout::controlsFit).
 [[nodiscard]] bool controlsFit(int width, const ControlsWidth& controls);
 
 /// Pixels at the window's left the control panel takes now: open or folded, as in `session`.
