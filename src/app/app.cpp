@@ -418,6 +418,15 @@ void App::render() {
 }
 
 void App::logControls() {
+    if (gui_->shownTooltip() != loggedTooltip_) {
+        loggedTooltip_ = gui_->shownTooltip();
+        logLine("[I] Tooltip " + (loggedTooltip_.empty() ? "none" : loggedTooltip_));
+    }
+    if (panel_.statusLines() != loggedStatus_) {
+        loggedStatus_ = panel_.statusLines();
+        for (const auto& [name, text] : loggedStatus_)
+            logLine("[I] Control " + name + " says " + text);
+    }
     const auto& items = panel_.items();
     if (samePlaces(items, loggedItems_)) return;
     loggedItems_ = items;

@@ -197,8 +197,10 @@ class App {
     std::unique_ptr<GuiContext> gui_;  ///< after sdl_: destroyed before the renderer it draws on
     ControlPanel panel_;
     std::vector<PanelItem> loggedItems_;  ///< what --log-controls last wrote
-    std::vector<PanelItem> lastItems_;    ///< the panel's controls in the frame before
-    bool panelSettling_ = true;           ///< they moved in the last frame
+    std::vector<std::pair<std::string, std::string>> loggedStatus_;  ///< and the status lines
+    std::string loggedTooltip_;         ///< the tooltip --log-controls last named
+    std::vector<PanelItem> lastItems_;  ///< the panel's controls in the frame before
+    bool panelSettling_ = true;         ///< they moved in the last frame
     /// The control panel's width, pixels: the view keeps it out of the box's area.
     ControlsWidth controls_;
     std::optional<Session> session_;

@@ -18,6 +18,9 @@ EM_JS(void, psb_js_started, (void* loop), {
 EM_JS(void, psb_js_ended, (const char* line), {
     if (typeof psbEnded === "function") psbEnded(UTF8ToString(line));
 });
+EM_JS(void, psb_js_show_about, (), {
+    if (typeof psbShowAbout === "function") psbShowAbout();
+});
 // clang-format on
 
 namespace psb::app {
@@ -71,6 +74,7 @@ void pass(void* arg) {
         if (!problem.empty()) loop.app->warn(problem);
         loop.settings.save(loop.app->session().view());
         if (loop.app->controlPanel().takeUploadRequest()) askForUpload(loop.downloads.folder());
+        if (loop.app->controlPanel().takeAboutRequest()) psb_js_show_about();
         for (const std::string& name : loop.downloads.offerNew()) {
             loop.app->inform("Downloaded " + name + " (the browser's downloads)");
         }

@@ -99,7 +99,8 @@ int main(int argc, char** argv) {
                  "Neither read nor write the settings file ($XDG_CONFIG_HOME/particle-sandbox/"
                  "settings.json, else ~/.config/...): UI scale, theme, what is shown");
     cli.add_flag("--log-controls", options.logControls,
-                 "Log where each control of the panel is when they move (for scripted input)");
+                 "Log where each control of the panel is when they move, and each tooltip shown "
+                 "(for scripted input)");
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

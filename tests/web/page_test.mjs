@@ -277,7 +277,9 @@ check(/particles\[0\]\.mass/.test(massRefusal),
 if (saved) {
   await upload("round-trip.json", fs.readFileSync(saved));
   await waitFor("the upload", async () => (await log()).some((l) => l.includes("round-trip.json")));
-  const opened = (await log()).filter((l) => l.includes("round-trip.json")).pop() || "";
+  // The program's own line, not the panel's status lines (--log-controls).
+  const opened = (await log())
+    .filter((l) => l.includes("round-trip.json") && !l.startsWith("[I] Control ")).pop() || "";
   check(/Opened|opened/.test(opened) && (await title()).includes(preset),
         `the saved scene opens again: ${opened}`);
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The web build's end-to-end test (tests/web/page_test.mjs) or benchmark (bench.mjs) in headless
+# The web build's end-to-end tests (tests/web/page_test.mjs, then classroom_test.mjs: touch,
+# tooltips, the browser's keys, a phone) or its benchmark (bench.mjs) in headless
 # Chromium, against build/web/ served on localhost. playwright-core comes from the npm registry,
 # at the version package-lock.json pins, installed into build/web-test/.
-#   tests/web/run.sh                 the test; screenshots in build/web-test/shots/
+#   tests/web/run.sh                 the tests; screenshots in build/web-test/shots/
 #   tests/web/run.sh bench N...      the page's ?bench=N for each N
 # scripts/web.sh test and bench build the page first.
 set -euo pipefail
@@ -33,5 +34,9 @@ if [[ ${1:-} == bench ]]; then
   shift
   node tests/web/bench.mjs "$@"
 else
-  node tests/web/page_test.mjs
+  # Both, whatever the first one found.
+  status=0
+  node tests/web/page_test.mjs || status=1
+  node tests/web/classroom_test.mjs || status=1
+  exit $status
 fi

@@ -27,9 +27,10 @@ void copyPath(std::array<char, 512>& to, const std::filesystem::path& from) {
 
 }  // namespace
 
-void ControlPanel::mark(const std::string& name) {
+void ControlPanel::mark(const std::string& name, std::string text) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     items_.push_back({name, a.x, a.y, b.x, b.y, ImGui::GetItemID()});
+    if (!text.empty()) status_.emplace_back(name, std::move(text));
 }
 
 const PanelItem* ControlPanel::item(const std::string& name) const {
@@ -43,9 +44,16 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
                                          float pixelRatio) {
     out_.clear();
     items_.clear();
+    status_.clear();
     const bool open = s.controlsShown();
+    // Opened in a window too narrow for the box beside it (a phone), the panel lies over the box
+    // as a sheet across the whole width: the rest of the box beside a column would be a sliver.
+    const float width = !open ? kControlsFoldedWidth
+                        : s.layout().controlsFit
+                            ? kControlsWidth
+                            : std::max(kControlsWidth, ImGui::GetIO().DisplaySize.x);
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
-    ImGui::SetNextWindowSize(ImVec2(open ? kControlsWidth : kControlsFoldedWidth, height));
+    ImGui::SetNextWindowSize(ImVec2(width, height));
     // The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
     // than blended ones (docs/app.md, "Frame time").
     ImGui::PushStyleColor(ImGuiCol_WindowBg, widgets::colour(palette(s.view().theme).controls));
@@ -62,9 +70,19 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             if (ImGui::Button(">>", ImVec2(-1.f, 0.f))) out_.emplace_back(cmd::ToggleControls{});
             mark("open panel");
             tip("Open the control panel (key C)");
+            if (browser_) aboutButton("?", ImVec2(-1.f, 0.f));
         } else {
             ImGui::TextUnformatted("Controls");
-            ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - ImGui::GetFrameHeight() * 1.4f);
+            const float fold = ImGui::GetFrameHeight() * 1.4f;
+            if (browser_) {
+                // The page's About is here, not floating over the canvas, where it covered
+                // readings (the momentum legend, a phone's Time).
+                ImGui::SameLine(
+                    ImGui::GetWindowContentRegionMax().x - fold - ImGui::CalcTextSize("About").x -
+                    2.f * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
+                aboutButton("About", ImVec2(0.f, 0.f));
+            }
+            ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - fold);
             if (ImGui::Button("<<")) out_.emplace_back(cmd::ToggleControls{});
             mark("fold panel");
             tip("Fold the panel away to give the box more room (key C)");
@@ -90,6 +108,13 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     valuesWindow(s, pixelRatio);
     dialog(s);
     return std::move(out_);
+}
+
+void ControlPanel::aboutButton(const char* label, ImVec2 size) {
+    if (ImGui::Button(label, size)) aboutAsked_ = true;
+    mark("About");
+    tip("What the page does differently from the desktop program, and how to use it on a touch "
+        "screen");
 }
 
 void ControlPanel::time(const Session& s) {
@@ -236,7 +261,10 @@ void ControlPanel::scene(const Session& s) {
 
     if (ImGui::Button("New scene...")) out_.emplace_back(cmd::AskNewScene{});
     mark("New scene");
-    tip("Start from an empty box: its size, gravity and walls in a dialog (Ctrl+N)");
+    // The browser keeps Ctrl+N (a new window), Ctrl+T (a tab) and Ctrl+plus, minus, 0 (its
+    // zoom): the page's tips name no key that never reaches it.
+    tip(browser_ ? "Start from an empty box: its size, gravity and walls in a dialog"
+                 : "Start from an empty box: its size, gravity and walls in a dialog (Ctrl+N)");
     sceneText(s);
     sceneFile(s);
 
@@ -376,9 +404,12 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         out_.emplace_back(cmd::SetTheme{light ? Theme::Light : Theme::Dark});
     }
     mark("theme Light");
-    tip("The light, high-contrast theme for a projector: white background, dark text, colours "
-        "colour-blind viewers tell apart; unticked, light text on black (Ctrl+T switches). Kept "
-        "between runs");
+    tip(browser_ ? "The light, high-contrast theme for a projector: white background, dark text, "
+                   "colours colour-blind viewers tell apart; unticked, light text on black. Kept "
+                   "between visits"
+                 : "The light, high-contrast theme for a projector: white background, dark text, "
+                   "colours colour-blind viewers tell apart; unticked, light text on black (Ctrl+T "
+                   "switches). Kept between runs");
     if (ImGui::Button("Fit view")) out_.emplace_back(cmd::Fit{});
     mark("Fit view");
     tip("Zoom and pan so the whole box is in view (key F; the wheel zooms, the right button "
@@ -409,8 +440,10 @@ void ControlPanel::look(const Session& s) {
         out_.emplace_back(cmd::SetUiScale{scaleDraft_ / 100.0, false});
     }
     mark("UI scale");
-    tip("The panel, the HUD, the labels and the charts together, 75 % to 300 %, the text drawn "
-        "at its size (Ctrl+plus, Ctrl+minus). Kept between runs");
+    tip(browser_ ? "The panel, the HUD, the labels and the charts together, 75 % to 300 %, the "
+                   "text drawn at its size. Kept between visits"
+                 : "The panel, the HUD, the labels and the charts together, 75 % to 300 %, the "
+                   "text drawn at its size (Ctrl+plus, Ctrl+minus). Kept between runs");
     ImGui::SameLine();
     ImGui::BeginDisabled(v.uiScaleAutomatic);
     if (ImGui::Button("Auto")) out_.emplace_back(cmd::SetUiScale{v.uiScale, true});
@@ -418,6 +451,7 @@ void ControlPanel::look(const Session& s) {
     mark("UI scale auto");
     tip(v.uiScaleAutomatic ? "Automatic now: the scale follows the window's height (100 % up to "
                              "899 points, 150 % at 1080)"
+        : browser_         ? "Back to the automatic scale, which follows the window's height"
                            : "Back to the automatic scale, which follows the window's height "
                              "(Ctrl+0)");
 }

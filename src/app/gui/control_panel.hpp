@@ -31,6 +31,8 @@
 #include <utility>
 #include <vector>
 
+#include <imgui.h>
+
 #include "session/command.hpp"
 #include "view/box_area.hpp"
 #include "view/frame_view.hpp"
@@ -74,6 +76,10 @@ class ControlPanel {
 
     /// The named controls of the last build, in drawing order.
     [[nodiscard]] const std::vector<PanelItem>& items() const { return items_; }
+    /// What the status lines of the last build said (where a file went), as (name, words).
+    [[nodiscard]] const std::vector<std::pair<std::string, std::string>>& statusLines() const {
+        return status_;
+    }
     /// The item called `name` in the last build, or nullptr.
     [[nodiscard]] const PanelItem* item(const std::string& name) const;
 
@@ -83,10 +89,14 @@ class ControlPanel {
     void setBrowser(bool on) { browser_ = on; }
     /// Whether Open was pressed in browser mode since the last call.
     [[nodiscard]] bool takeUploadRequest() { return std::exchange(uploadAsked_, false); }
+    /// Whether the page's About was pressed (browser mode) since the last call.
+    [[nodiscard]] bool takeAboutRequest() { return std::exchange(aboutAsked_, false); }
 
   private:
-    /// Records the item just drawn as `name`.
-    void mark(const std::string& name);
+    /// Records the item just drawn as `name`; a status line with what it says.
+    void mark(const std::string& name, std::string text = {});
+    /// The page's About button (browser mode), `size` as ImGui::Button's.
+    void aboutButton(const char* label, ImVec2 size);
     void time(const Session& s);
     void scene(const Session& s);
     /// The scene's title and description, editable (section_scene_file.cpp).
@@ -130,10 +140,12 @@ class ControlPanel {
 
     std::vector<Command> out_;
     std::vector<PanelItem> items_;
+    std::vector<std::pair<std::string, std::string>> status_;
     std::array<char, 512> path_{};
     bool pathFilled_ = false;
     bool browser_ = false;
     bool uploadAsked_ = false;
+    bool aboutAsked_ = false;
     /// The title and description while they are typed in (else the scene's).
     std::array<char, 128> title_{};
     std::array<char, 2048> description_{};

@@ -39,6 +39,7 @@ GuiContext::GuiContext(SDL_Window* window, SDL_Renderer* renderer, const GuiOpti
         ImGuiIO& io = ImGui::GetIO();
         io.IniFilename = nullptr;
         io.LogFilename = nullptr;
+        io.UserData = &tooltips_;  // widgets::tip
         setTheme(Theme::Dark);
         if (window_ != nullptr) {
             if (!ImGui_ImplSDL2_InitForSDLRenderer(window_)) {
@@ -159,6 +160,7 @@ bool GuiContext::loadFont(float pixelScale) {
 bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
     makeCurrent();
     if (event.type == SDL_KEYDOWN || event.type == SDL_KEYUP) return handleKey(event, tabToPanel);
+    if (handleFinger(event)) return true;
     if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
     if (event.type == SDL_MOUSEMOTION) {
         mouse_ = ImVec2(static_cast<float>(event.motion.x), static_cast<float>(event.motion.y));
@@ -248,6 +250,56 @@ bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
     return true;
 }
 
+bool GuiContext::handleFinger(const SDL_Event& e) {
+    const bool motion = e.type == SDL_MOUSEMOTION;
+    const bool button = e.type == SDL_MOUSEBUTTONDOWN || e.type == SDL_MOUSEBUTTONUP;
+    if (!motion && !button) return false;
+    const bool finger =
+        motion ? e.motion.which == SDL_TOUCH_MOUSEID
+               : e.button.which == SDL_TOUCH_MOUSEID && e.button.button == SDL_BUTTON_LEFT;
+    if (motion || e.type == SDL_MOUSEBUTTONDOWN) {
+        pointerIsFinger_ = finger;
+        forgetMouse_ = 0;
+    }
+    if (!finger) return false;
+    const ImVec2 at = motion
+                          ? ImVec2(static_cast<float>(e.motion.x), static_cast<float>(e.motion.y))
+                          : ImVec2(static_cast<float>(e.button.x), static_cast<float>(e.button.y));
+    const double seconds = (motion ? e.motion.timestamp : e.button.timestamp) / 1000.0;
+    if (e.type == SDL_MOUSEBUTTONDOWN) {
+        if (!overWindow(at)) return false;
+        panelTouch_.down(at, seconds);
+        mouse_.reset();  // where a finger was before means nothing once it is lifted
+        return true;
+    }
+    if (!panelTouch_.fingerDown()) {
+        // A finger lifted off the world: ImGui sees the release where it was, then no pointer.
+        if (!motion) forgetMouse_ = 2;
+        return false;
+    }
+    if (motion) {
+        panelTouch_.move(at, seconds);
+    } else {
+        panelTouch_.up(at, seconds);
+    }
+    return true;
+}
+
+void GuiContext::fingerFrame() {
+    ImGuiIO& io = ImGui::GetIO();
+    if (forgetMouse_ > 0 && --forgetMouse_ == 0) {
+        mouse_.reset();
+        if (!ImGui::IsAnyMouseDown()) io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    }
+    const double now = static_cast<double>(SDL_GetTicks64()) / 1000.0;
+    if (const std::optional<PanelTouch::Pointer> p = panelTouch_.frame(now)) {
+        io.MousePos = p->at.value_or(ImVec2(-FLT_MAX, -FLT_MAX));
+        io.MouseDown[0] = p->down;
+        if (p->scroll != 0.f) scrollWindowAt(p->scrollFrom, p->scroll, scale_);
+    }
+    tooltips_.startFrame(now, !pointerIsFinger_);
+}
+
 bool GuiContext::hasKeyboard() const {
     makeCurrent();
     const ImGuiContext& g = *ImGui::GetCurrentContext();
@@ -311,6 +363,7 @@ void GuiContext::beginFrame() {
         // global position the backend polled (a launch preview drawn where no pointer is).
         ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     }
+    fingerFrame();
     // Debian's 1.86 backend takes the scale from SDL_GL_GetDrawableSize, which is the window
     // size for a window without OpenGL; the renderer's output size is the one drawn into.
     const float scale = windowPixelScale(window_, sdl_);

@@ -38,6 +38,8 @@
 #include <imgui.h>
 
 #include "gui/imgui_renderer.hpp"
+#include "gui/panel_touch.hpp"
+#include "gui/tooltips.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
@@ -102,6 +104,8 @@ class GuiContext {
     [[nodiscard]] bool wantsMouse();
     [[nodiscard]] bool wantsKeyboard();
     [[nodiscard]] ImGuiRenderer& renderer() { return *renderer_; }
+    /// The tooltip the last frame showed (empty: none), for --log-controls.
+    [[nodiscard]] const std::string& shownTooltip() const { return tooltips_.shown; }
 
   private:
     void makeCurrent() const;
@@ -117,6 +121,12 @@ class GuiContext {
     bool handleKey(const SDL_Event& event, bool tabToPanel);
     /// Makes the scale and theme asked for within the last frame (before NewFrame).
     void applyPending();
+    /// handleEvent for the mouse SDL makes of a finger (panel_touch.hpp): true when the panel's
+    /// touch gesture takes it.
+    bool handleFinger(const SDL_Event& event);
+    /// The finger's part of a new frame: the gesture's pointer, the pointer of a finger lifted
+    /// off the world forgotten, whether tooltips may show.
+    void fingerFrame();
 
     SDL_Window* window_ = nullptr;
     SDL_Renderer* sdl_ = nullptr;
@@ -133,6 +143,10 @@ class GuiContext {
     std::optional<float> pendingScale_;  // asked for within the frame, made at the next
     std::optional<Theme> pendingTheme_;
     std::optional<std::string> problem_;
+    PanelTouch panelTouch_;
+    TooltipState tooltips_;
+    bool pointerIsFinger_ = false;  // the last pointer event came from a finger
+    int forgetMouse_ = 0;           // frames until a lifted finger's pointer is forgotten
 };
 
 }  // namespace psb::app

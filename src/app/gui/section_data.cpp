@@ -103,7 +103,14 @@ void ControlPanel::data(const Session& s) {
         ImGui::TextWrapped("%s", s.exportError().c_str());
         ImGui::PopStyleColor();
     } else if (s.lastExport()) {
-        ImGui::TextWrapped("Exported to %s", s.lastExport()->string().c_str());
+        // In a page the path is in the page's own memory: the download is what the user has.
+        const std::string exported =
+            s.inPage() ? "Exported " + s.lastExport()->filename().string() +
+                             ", a download: in this computer's Downloads folder (or where the "
+                             "browser asked)"
+                       : "Exported to " + s.lastExport()->string();
+        widgets::wrapped(exported);
+        mark("exported", exported);
     }
 }
 

@@ -87,23 +87,29 @@ void ControlPanel::sceneText(const Session& s) {
 
 void ControlPanel::sceneFile(const Session& s) {
     const SceneFile& f = s.sceneFile();
+    // In a page the path is in the page's own memory, which means nothing to the user: the file
+    // is named, and a save says it went to the browser's downloads.
+    const std::string file = !f.path    ? std::string()
+                             : browser_ ? f.path->filename().string()
+                                        : f.path->string();
     if (f.path) {
-        widgets::wrapped("File: " + f.path->string());
+        widgets::wrapped("File: " + file);
         if (!f.writable) {
             widgets::wrappedDisabled("(read-only here: Save asks for a new name)");
         }
     } else {
         widgets::wrappedDisabled("Not saved in a file yet: Save asks for a name");
     }
-    mark("file");
+    mark("file", f.path ? "File: " + file : std::string());
     if (s.unsavedChanges()) {
         widgets::wrappedColored(widgets::caution(s.view().theme), "Unsaved changes");
         mark("unsaved");
     }
     if (ImGui::Button("Save")) out_.emplace_back(cmd::Save{});
     mark("Save");
-    tip(f.writable ? ("Write the scene to " + f.path->string() + " (Ctrl+S)").c_str()
-                   : "Save the scene: asks for a file name first (Ctrl+S)");
+    tip(!f.writable ? "Save the scene: asks for a file name first (Ctrl+S)"
+        : browser_  ? ("Download the scene again as " + file + " (Ctrl+S)").c_str()
+                    : ("Write the scene to " + file + " (Ctrl+S)").c_str());
     ImGui::SameLine();
     if (ImGui::Button("Save As...")) out_.emplace_back(cmd::AskSaveAs{});
     mark("Save As");
@@ -111,12 +117,18 @@ void ControlPanel::sceneFile(const Session& s) {
     ImGui::SameLine();
     if (ImGui::Button("Revert")) out_.emplace_back(cmd::Revert{});
     mark("Revert");
-    tip(f.path ? ("Back to the file as it was last opened or saved, read again: " +
-                  f.path->string() + " (undo brings the changes back)")
+    tip(f.path ? ("Back to the file as it was last opened or saved, read again: " + file +
+                  " (undo brings the changes back)")
                      .c_str()
                : "Back to the scene as it was made (undo brings the changes back)");
     if (s.fileError().empty() && s.lastSave()) {
-        widgets::wrappedDisabled("Saved to " + s.lastSave()->string());
+        const std::string saved = browser_ ? "Saved as " + s.lastSave()->filename().string() +
+                                                 ", a download: in this computer's Downloads "
+                                                 "folder (or where the browser asked). Open "
+                                                 "reads it back"
+                                           : "Saved to " + s.lastSave()->string();
+        widgets::wrappedDisabled(saved);
+        mark("saved", saved);
     }
 }
 

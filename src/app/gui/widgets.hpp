@@ -8,6 +8,7 @@
 
 #include <imgui.h>
 
+#include "gui/tooltips.hpp"
 #include "session/view_options.hpp"
 #include "view/palette.hpp"
 #include "view/word_wrap.hpp"
@@ -66,13 +67,17 @@ inline bool smallStateButton(const char* id, const char* words) {
     return ImGui::SmallButton(label.c_str());
 }
 
-/// A tooltip for the item just drawn (also while it is disabled).
+/// A tooltip for the item just drawn (also while it is disabled), after a real hover
+/// (tooltips.hpp): never for a finger, nor while a control is held or a field typed in.
 inline void tip(const char* text) {
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-        ImGui::BeginTooltip();
-        wrapped(text, ImGui::GetFontSize() * 22.f);
-        ImGui::EndTooltip();
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    if (auto* state = static_cast<TooltipState*>(ImGui::GetIO().UserData)) {
+        if (!state->show(text) || ImGui::IsAnyItemActive() || ImGui::GetIO().WantTextInput) return;
+        state->shown = text;
     }
+    ImGui::BeginTooltip();
+    wrapped(text, ImGui::GetFontSize() * 22.f);
+    ImGui::EndTooltip();
 }
 
 /// A slider of `value` in [lo, hi]; true when the user changed it, with `continues` set when

@@ -236,6 +236,8 @@ class Session {
     [[nodiscard]] bool profileShown() const { return view_.profile; }
     /// The control panel is open (else folded to a strip).
     [[nodiscard]] bool controlsShown() const { return showControls_; }
+    /// Where the box may go in the window, as the app sent it last.
+    [[nodiscard]] const WindowLayout& layout() const { return layout_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const;
     /// The window's layout the app sent last (cmd::Resize).

@@ -177,19 +177,25 @@ void Session::handle(const cmd::SetUiScale& c) {
     view_.uiScaleAutomatic = c.automatic;
     // The automatic scale follows the window by itself: a resize says nothing.
     if (said) {
-        notices_.push_back({Notice::Level::Info,
-                            fmt("UI scale %.0f %%%s", 100.0 * c.scale,
-                                c.automatic ? " (automatic: by the window's height; Ctrl+0)"
-                                            : " (Ctrl+0: automatic)"),
-                            true, true, "ui scale"});
+        notices_.push_back(
+            {Notice::Level::Info,
+             fmt("UI scale %.0f %%%s", 100.0 * c.scale,
+                 c.automatic       ? (options_.inPage ? " (automatic: by the page's height)"
+                                                      : " (automatic: by the window's "
+                                                        "height; Ctrl+0)")
+                 : options_.inPage ? " (Show: Auto makes it automatic)"
+                                   : " (Ctrl+0: automatic)"),
+             true, true, "ui scale"});
     }
 }
 
 void Session::handle(const cmd::SetTheme& c) {
     if (c.theme == view_.theme) return;
     view_.theme = c.theme;
-    say(c.theme == Theme::Light ? "Theme: light (high contrast, for projectors; Ctrl+T)"
-                                : "Theme: dark (Ctrl+T)");
+    // The browser keeps Ctrl+T for a new tab.
+    const char* key = options_.inPage ? "" : "; Ctrl+T";
+    say(c.theme == Theme::Light ? fmt("Theme: light (high contrast, for projectors%s)", key)
+                                : fmt("Theme: dark%s", options_.inPage ? "" : " (Ctrl+T)"));
 }
 
 void Session::handle(const cmd::SetTrails& c) {

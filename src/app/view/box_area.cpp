@@ -121,7 +121,8 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
 }
 
 bool controlsFit(int width, const ControlsWidth& controls) {
-    return width - controls.open >= kBoxMinRoom;
+    // In points: on a phone's screen of 3 pixels a point, 240 pixels were a sliver of box.
+    return width - controls.open >= kBoxMinRoom * controls.pointPixels;
 }
 
 int controlsInset(const Session& session, const ControlsWidth& controls) {

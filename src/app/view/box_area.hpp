@@ -38,9 +38,10 @@ struct ControlsWidth {
 [[nodiscard]] WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
                                         const ControlsWidth& controls, bool inPage = false);
 
-/// Whether the open control panel leaves the box a usable width (kBoxMinRoom pixels) in a window
-/// `width` pixels wide: a window made narrower folds it (WindowLayout::controlsFit, which also
-/// asks that the HUD's lines, wrapped beside it, leave the box kBoxMinHeight pixels).
+/// Whether the open control panel leaves the box a usable width (kBoxMinRoom points, pixels at a
+/// pixel ratio of 1) in a window `width` pixels wide: a window made narrower folds it
+/// (WindowLayout::controlsFit, which also asks that the HUD's lines, wrapped beside it, leave the
+/// box kBoxMinHeight pixels).
 [[nodiscard]] bool controlsFit(int width, const ControlsWidth& controls);
 
 /// Pixels at the window's left the control panel takes now: open or folded, as in `session`.

@@ -109,13 +109,19 @@ namespace {
 
 using Controls = std::vector<std::pair<std::string, std::string>>;
 
-/// The page's list: the window's with what a page does differently.
+/// The page's list: the window's with what a page does differently. The keys a browser keeps
+/// for itself (Ctrl+N a window, Ctrl+T a tab, Ctrl+plus, minus and 0 its zoom) never reach
+/// the page: their lines name the panel's control instead.
 Controls pageControls(const Controls& window) {
     Controls list;
     for (const auto& [keys, what] : window) {
         if (keys == "Ctrl+R") continue;  // video recording is desktop-only
         if (keys == "Ctrl+N") {
-            list.emplace_back("Scene: New scene...", "an empty box (the browser keeps Ctrl+N)");
+            list.emplace_back("Scene: New scene...", "an empty box");
+        } else if (keys == "Ctrl+plus / minus / 0") {
+            list.emplace_back("Show: UI scale, Auto", "bigger / smaller UI, automatic size");
+        } else if (keys == "Ctrl+T") {
+            list.emplace_back("Show: Light", "theme: dark / light, for a projector");
         } else if (keys == "Esc") {
             list.emplace_back(keys, "close a dialog, the help or the edit prompt");
         } else {

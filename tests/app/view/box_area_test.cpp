@@ -80,6 +80,17 @@ TEST(WindowLayout, AtTwiceTheScaleTheBandsAndTheColumnGrowWithTheText) {
     EXPECT_FALSE(sideColumnFits(1280, 930, 3.0));
 }
 
+// A phone upright, 390 CSS pixels at 3 pixels a point: the panel's 930 pixels would leave the box
+// 240 pixels, 80 points, a sliver. The box's room is counted in points.
+TEST(WindowLayout, ThePanelFitsBesideTheBoxByPointsNotPixels) {
+    EXPECT_TRUE(controlsFit(550, kControls));
+    EXPECT_FALSE(controlsFit(549, kControls));
+    const ControlsWidth phone{930.0, 132.0, 3.0};
+    EXPECT_FALSE(controlsFit(1170, phone));
+    EXPECT_FALSE(windowLayout(kFont, 1170, 2532, phone).controlsFit);
+    EXPECT_TRUE(controlsFit(1650, phone));
+}
+
 TEST(WindowLayout, TheHudsBandGrowsWhenItsLinesWrap) {
     const WindowLayout wide = windowLayout(kFont, 1600, 1000, kControls);
     const WindowLayout narrow = windowLayout(kFont, 700, 1000, kControls);

@@ -79,7 +79,8 @@ bool anyContains(const std::vector<std::string>& lines, const std::string& s) {
                        [&](const std::string& l) { return l.find(s) != std::string::npos; });
 }
 
-// The page's help lists the page's keys: no Ctrl+N (the browser keeps it), no video (Ctrl+R:
+// The page's help lists the page's keys: none that the browser keeps (Ctrl+N, Ctrl+T, its zoom's
+// Ctrl+plus, minus and 0), whose actions it names by their panel controls; no video (Ctrl+R:
 // desktop-only), and Esc that closes things but never quits.
 TEST(Hud, ThePagesHelpListsOnlyWhatWorksInAPage) {
     const auto window = helpLines(false);
@@ -87,7 +88,13 @@ TEST(Hud, ThePagesHelpListsOnlyWhatWorksInAPage) {
     EXPECT_TRUE(anyContains(window, "Ctrl+N"));
     EXPECT_TRUE(anyContains(window, "Ctrl+R"));
     EXPECT_TRUE(anyContains(window, "quit"));
-    EXPECT_FALSE(anyContains(page, "Ctrl+N "));
+    for (const char* kept : {"Ctrl+N", "Ctrl+T", "Ctrl+plus"}) {
+        EXPECT_TRUE(anyContains(window, kept)) << kept;
+        EXPECT_FALSE(anyContains(page, kept)) << kept;
+    }
+    EXPECT_FALSE(anyContains(page, "Ctrl+0"));
+    EXPECT_TRUE(anyContains(page, "Show: UI scale, Auto"));
+    EXPECT_TRUE(anyContains(page, "Show: Light"));
     EXPECT_FALSE(anyContains(page, "Ctrl+R"));
     EXPECT_FALSE(anyContains(page, "quit"));
     EXPECT_TRUE(anyContains(page, "New scene..."));
