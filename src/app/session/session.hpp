@@ -240,8 +240,6 @@ class Session {
     [[nodiscard]] const WindowLayout& layout() const { return layout_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const;
-    /// The window's layout the app sent last (cmd::Resize).
-    [[nodiscard]] const WindowLayout& layout() const { return layout_; }
     /// Where the values table docks (I): where it left the box largest when the box was last
     /// fitted (BoxArea).
     [[nodiscard]] const ValuesDock& valuesDock() const { return valuesDock_; }
