@@ -245,7 +245,7 @@ class World {
     std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
     std::uint64_t eventBudget_ = 0;  ///< setExactEventBudget's; 0: none
-    mutable StepProfile profile_;  ///< mutable: settle() adds the time of the owed sync
+    mutable StepProfile profile_;    ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
     std::optional<CollisionLog> collisionLog_;  ///< recording when set
 };

@@ -46,7 +46,7 @@ struct RunReport {
     /// Exact mode: steps that ended before their end (an event budget ran out). The runner
     /// sets none, so a run it reports is whole; a non-zero count fails the run.
     std::uint64_t cutShort = 0;
-    double maxOverlap = 0.0;                                            ///< metres
+    double maxOverlap = 0.0;  ///< metres
     std::uint64_t escaped = 0;
     /// The scene's bins at the end, when it has bins.
     std::optional<BinsMeasurement> bins;

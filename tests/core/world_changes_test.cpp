@@ -293,7 +293,8 @@ TEST(WorldChangesWhileSliding, AStepTheEventBudgetCutsShortEndsExactlyAtItsFirst
     World w(WorldDef{.width = 4.0, .height = 5.0}, SolverSettings{.mode = StepMode::Exact});
     const ParticleId fast =
         w.add({.position = {1.6, 2.4}, .velocity = {8.7e7, 0.0}, .radius = 0.29});
-    const ParticleId slow = w.add({.position = {0.5, 1.0}, .velocity = {-5.0, 3.0}, .radius = 0.16});
+    const ParticleId slow =
+        w.add({.position = {0.5, 1.0}, .velocity = {-5.0, 3.0}, .radius = 0.16});
     w.setExactEventBudget(10000);
     const double simulated = w.step(0.002);
     EXPECT_EQ(w.counters().cutShort, 1u);

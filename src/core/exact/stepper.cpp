@@ -47,9 +47,8 @@ double ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt,
     const double start = clock_;
     const double tEnd = start + dt;
     const std::uint64_t perStep = bodies_.size() + 1;
-    const std::uint64_t budget = eventsPerParticle > UINT64_MAX / perStep
-                                     ? UINT64_MAX
-                                     : eventsPerParticle * perStep;
+    const std::uint64_t budget =
+        eventsPerParticle > UINT64_MAX / perStep ? UINT64_MAX : eventsPerParticle * perStep;
     double reached = tEnd;
     {
         StageTimer t(eventsMs);
