@@ -30,9 +30,10 @@
 // pass through held particles for the rest of that step.
 //
 // Particles that do not fit. A particle wider than the box along an axis stays on the box's
-// centre line on that axis (as in the discrete mode); the walls absorb at once any velocity it
-// gains across it. Such a particle makes the cells as large as the box: correct but O(N) per
-// event.
+// centre line on that axis (as in the discrete mode): the walls hold it there, so a collision
+// gives it no velocity across that axis (its inverse mass along the normal is that along its
+// free axis; see handlePair), and the walls absorb at once any it has. Such a particle makes
+// the cells as large as the box: correct but O(N) per event.
 
 #include <algorithm>
 #include <cmath>
@@ -56,6 +57,9 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         return;
     }
     ++events_;
+    // Squeezed by a held particle: the held jam guard's (countHeldHit).
+    const bool byHeld = ((a.flags | b.flags) & kHeld) != 0;
+    const bool aJammed = !byHeld && jamsAt(i, ev.time), bJammed = !byHeld && jamsAt(j, ev.time);
     const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
     // A sleeper does not move; advancing it would only restart its clock (t).
     if (!(a.flags & kAsleep)) advance(i, ev.time);
@@ -104,7 +108,19 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         aStays = hitsSleeper(i, j);
         bStays = hitsSleeper(j, i);
     }
-    const double wi = aStays ? 0.0 : cold_[i].w, wj = bStays ? 0.0 : cold_[j].w;
+    // A particle wider than the box along an axis takes no impulse across it: the walls hold
+    // it there. Seen along the normal, its inverse mass is w·|P n|² (P keeps its free axes), so
+    // a disc that hits it across a pinned axis bounces as off a wall, and one pinned on both
+    // axes is as fixed as a sleeper.
+    // A particle jammed at this instant is as fixed as a sleeper.
+    aStays = aStays || aJammed;
+    bStays = bStays || bJammed;
+    const double wi = inverseMassAlong(i, n, aStays ? 0.0 : cold_[i].w);
+    const double wj = inverseMassAlong(j, n, bStays ? 0.0 : cold_[j].w);
+    const auto massSeen = [](const Cold& c, double w) {
+        return (c.pinX || c.pinY) && w > 0.0 ? 1.0 / w : c.m;
+    };
+    const double mi = massSeen(cold_[i], wi), mj = massSeen(cold_[j], wj);
     // Off a sleeper, which does not move, a bounce cannot start a collapse: the TC model's
     // elastic rule would only keep a particle wedged between sleepers rattling at full speed.
     const bool offStatic = aStays || bStays;
@@ -113,15 +129,18 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // particle rests on: a particle in a slot between sleepers stops instead of rattling.
     if (offStatic && approach * e < restSpeed_) e = 0.0;
     const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
-    const bool hit = rough_ ? collideRoughDiscs(a.vx, a.vy, spinAt(i, ev.time), b.vx, b.vy,
-                                                spinAt(j, ev.time), wi, wj, cold_[i].m, cold_[j].m,
-                                                n, {e, def_.friction, def_.tangentialRestitution})
-                     : def_.friction > 0.0
-                         ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
-                                              cold_[j].m, n, e, def_.friction)
-                         : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, cold_[i].m,
-                                               cold_[j].m, n, e, 0.0);
+    const bool hit =
+        rough_
+            ? collideRoughDiscs(a.vx, a.vy, spinAt(i, ev.time), b.vx, b.vy, spinAt(j, ev.time), wi,
+                                wj, mi, mj, n, {e, def_.friction, def_.tangentialRestitution})
+        : def_.friction > 0.0
+            ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, mi, mj, n, e, def_.friction)
+            : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, mi, mj, n, e, 0.0);
     if (hit) {
+        // A pinned particle's impulse, found for the inverse mass it has along n, moves it
+        // along its free axis only: Δv = (w / w_seen)·P·Δv_seen.
+        holdAcrossPinnedAxes(i, aBefore, wi);
+        holdAcrossPinnedAxes(j, bBefore, wj);
         ++counters.collisions;
         if (!aStays) ++a.count;
         if (!bStays) ++b.count;
@@ -129,9 +148,12 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         if (a.flags & kHeld) countHeldHit(j);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
         if (collisionLog_) {
+            // A pinned a's momentum changes by less than the contact's impulse (the walls
+            // take the rest): the impulse is then what b received.
+            const bool aPinned = cold_[i].pinX || cold_[i].pinY;
             collisionLog_->add(pairCollision(collisionOffset_ + ev.time, ids_[i], ids_[j], aBefore,
-                                             Vec2(a.vx, a.vy), bBefore, Vec2(b.vx, b.vy), wi,
-                                             cold_[i].m, cold_[j].m));
+                                             Vec2(a.vx, a.vy), bBefore, Vec2(b.vx, b.vy),
+                                             aPinned ? 0.0 : wi, cold_[i].m, cold_[j].m));
         }
     }
     if (gravity_) {
@@ -152,8 +174,30 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     predictCell(j, ev.time);
 }
 
+double ExactStepper::inverseMassAlong(std::uint32_t i, Normal n, double w) const {
+    const Cold& c = cold_[i];
+    if (!(c.pinX || c.pinY)) return w;
+    const double fx = c.pinX ? 0.0 : n.x, fy = c.pinY ? 0.0 : n.y;
+    return w * (fx * fx + fy * fy);
+}
+
+void ExactStepper::holdAcrossPinnedAxes(std::uint32_t i, const Vec2& before, double wSeen) {
+    const Cold& c = cold_[i];
+    if (!(c.pinX || c.pinY)) return;
+    Body& a = bodies_[i];
+    const double scale = wSeen > 0.0 ? c.w / wSeen : 0.0;
+    a.vx = c.pinX ? before.x() : before.x() + scale * (a.vx - before.x());
+    a.vy = c.pinY ? before.y() : before.y() + scale * (a.vy - before.y());
+}
+
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
     Body& a = bodies_[i];
+    if (jamsAt(i, ev.time)) {  // jammed here: its velocity is gone, nothing to rebound
+        ++events_;
+        predictCollision(i, ev.time);
+        predictCell(i, ev.time);
+        return;
+    }
     const bool recent = collidedWithin(a, ev.time);
     advance(i, ev.time);
     stopSliding(i);
@@ -260,6 +304,35 @@ double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const
 std::uint32_t ExactStepper::countHit(std::uint32_t i) {
     if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
     return cold_[i].heldHits;
+}
+
+bool ExactStepper::jamsAt(std::uint32_t i, double t) {
+    Body& a = bodies_[i];
+    if (a.flags & (kHeld | kAsleep)) return false;  // cannot jam
+    // Without time or room since its last change: within kJamTime, moved less than kJamRoom of
+    // its radius (the speed it had since then times the time).
+    const double h = t - a.t;
+    const bool stuck = h <= kJamTime && h * std::hypot(a.vx, a.vy) <= kJamRoom * a.r;
+    if (!stuck && repeats_.empty()) return false;  // the usual case: nothing to count
+    const std::uint32_t who = order_[i];           // stable while indices are re-sorted
+    if (!stuck) {
+        repeats_.erase(who);  // it moved: its run of hits ends
+        return false;
+    }
+    std::uint32_t& hits = repeats_[who];
+    if (hits < kJamHits && ++hits < kJamHits) return false;
+    // Jammed: no room to move. Its velocity, and any it is given while its hits keep coming
+    // without time between, goes to the bodies that hold it.
+    if (gravity_) {
+        const Hold hold = this->hold(i, kUngrounded + 1, t);
+        fallAsleep(i, t, hold.depth, !hold.firm);
+    } else if (a.vx != 0.0 || a.vy != 0.0) {
+        advance(i, t);
+        stopSliding(i);
+        a.vx = a.vy = 0.0;
+        ++a.count;
+    }
+    return true;
 }
 
 void ExactStepper::countHeldHit(std::uint32_t i) {

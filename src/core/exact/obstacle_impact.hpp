@@ -69,6 +69,31 @@ namespace psb::exact {
     return (along > 0.0 && along < length) ? t : kNever;
 }
 
+/// Relative slack of the end-cap rule below (segmentCapContactTime): far above the rounding of
+/// a coordinate, far below any disc's size.
+inline constexpr double kCapSlack = 1e-9;
+
+/// The time t of a disc's contact with the end cap of a segment at (cx, cy), or kNever if that
+/// contact is not the segment's: a cap's contact counts only with the centre then at or beyond
+/// its end ((centre − c)·(ox, oy) >= 0 within rounding, (ox, oy) the unit vector out of the
+/// segment at that end), where the end is the nearest core point and the rebound's normal
+/// (the exact stepper's, from the nearest core point) is the cap's. A "contact" with the
+/// centre between the endpoints lies inside the band of the flat sides: from a state outside
+/// the segment the side is met first (segmentSideImpactTimeAccelerated), and a disc that
+/// already overlaps the side is the side rule's to judge. Counted anyway, such a contact
+/// would be an event whose rebound along the side's normal changes nothing, predicted again
+/// at the same instant, forever.
+[[nodiscard]] inline double segmentCapContactTime(double t, double px, double py, double vx,
+                                                  double vy, double ax, double ay, double r,
+                                                  double cx, double cy, double h, double ox,
+                                                  double oy) {
+    if (!(t < kNever)) return kNever;
+    const double beyond =
+        (px + t * (vx + 0.5 * ax * t) - cx) * ox + (py + t * (vy + 0.5 * ay * t) - cy) * oy;
+    const double slack = kCapSlack * (r + h + std::abs(cx) + std::abs(cy));
+    return beyond >= -slack ? t : kNever;
+}
+
 /// Time until the disc touches the segment (its two sides and its two caps), searched in
 /// [0, horizon] for the caps.
 [[nodiscard]] inline double segmentImpactTimeAccelerated(double px, double py, double vx, double vy,
@@ -77,10 +102,16 @@ namespace psb::exact {
                                                          double h, double horizon) {
     const double side =
         segmentSideImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, sax, say, sbx, sby, h);
-    const double capA =
-        pegImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, sax, say, h, std::min(horizon, side));
-    const double capB = pegImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, sbx, sby, h,
-                                                 std::min({horizon, side, capA}));
+    const double ex = sbx - sax, ey = sby - say;
+    const double length = std::sqrt(ex * ex + ey * ey);
+    const double ux = length > 0.0 ? ex / length : 0.0, uy = length > 0.0 ? ey / length : 0.0;
+    const double capA = segmentCapContactTime(
+        pegImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, sax, say, h, std::min(horizon, side)),
+        px, py, vx, vy, ax, ay, r, sax, say, h, -ux, -uy);
+    const double capB =
+        segmentCapContactTime(pegImpactTimeAccelerated(px, py, vx, vy, ax, ay, r, sbx, sby, h,
+                                                       std::min({horizon, side, capA})),
+                              px, py, vx, vy, ax, ay, r, sbx, sby, h, ux, uy);
     return std::min({side, capA, capB});
 }
 

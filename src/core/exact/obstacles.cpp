@@ -41,6 +41,12 @@ void ExactStepper::predictObstacles(std::uint32_t i, const Motion& m, double now
 
 void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters) {
     Body& a = bodies_[i];
+    if (jamsAt(i, ev.time)) {  // jammed here: its velocity is gone, nothing to rebound
+        ++events_;
+        predictCollision(i, ev.time);
+        predictCell(i, ev.time);
+        return;
+    }
     const bool recent = collidedWithin(a, ev.time);
     advance(i, ev.time);
     stopSliding(i);  // another obstacle ends a slide

@@ -58,6 +58,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
 
     ids_ = p.id;
     heldHit_.clear();
+    repeats_.clear();
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
     depth_.assign(gravity_ ? n : 0, 0);
     recheckAt_.assign(gravity_ ? n : 0, kNever);

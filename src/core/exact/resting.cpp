@@ -168,8 +168,9 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, b
                                    bool bSlid) {
     Body& a = bodies_[i];
     Body& b = bodies_[j];
-    const double wi = (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w;
-    const double wj = (b.flags & (kAsleep | kHeld)) ? 0.0 : cold_[j].w;
+    // A particle wider than the box along an axis is held across it (see handlePair).
+    const double wi = inverseMassAlong(i, n, (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w);
+    const double wj = inverseMassAlong(j, n, (b.flags & (kAsleep | kHeld)) ? 0.0 : cold_[j].w);
     if (wi == 0.0 && wj == 0.0) return;
     // Pressed together by gravity (one falls, the other does not, or less) and leaving each
     // other slower than the lift: leave at the lift, by an impulse along n shared as a
@@ -189,10 +190,13 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, b
     const double leaving = (b.vx - a.vx) * n.x + (b.vy - a.vy) * n.y;
     if (!(leaving < lift)) return;
     const double dv = lift - leaving, share = wi / (wi + wj);
+    const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
     a.vx -= dv * share * n.x;
     a.vy -= dv * share * n.y;
     b.vx += dv * (1.0 - share) * n.x;
     b.vy += dv * (1.0 - share) * n.y;
+    holdAcrossPinnedAxes(i, aBefore, wi);
+    holdAcrossPinnedAxes(j, bBefore, wj);
     if (wi > 0.0) ++a.count;
     if (wj > 0.0) ++b.count;
 }

@@ -18,6 +18,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "../test_util.hpp"
+#include "exact/stepper.hpp"
 #include "scenes.hpp"
 
 namespace psb {
@@ -317,6 +318,76 @@ TEST(ExactMode, ParticleWiderThanTheBoxStaysOnTheCentreLine) {
     const Particle s = w.get(small);
     EXPECT_GE(s.position.y(), 0.5);
     EXPECT_LE(s.position.y(), 39.5);
+}
+
+TEST(ExactMode, ADiscWiderThanTheBoxTakesImpulsesAlongItsFreeAxisOnly) {
+    // A light disc (1 g) wider than the box's width (pinned on x) struck off-centre by a heavy
+    // one (10 kg, e = 1): the walls hold it across x, so it gains no x velocity, and since
+    // those frictionless walls push only along x, the pair keeps its y momentum and (e = 1)
+    // its energy. Taking the impulse as a free disc and having the walls absorb its x part
+    // lost energy at every hit; with a far lighter disc (a fuzzed world's 1e-300 kg) the
+    // heavy one pushed it at zero gap, collision after wall after collision, and the step
+    // never ended.
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 40.0;
+    World w(def, {.mode = StepMode::Exact});
+    const double m = 1e-3, M = 10.0;
+    const ParticleId thin = w.add({.position = {5.0, 20.0}, .mass = m, .radius = 6.0});
+    const ParticleId heavy =
+        w.add({.position = {6.5, 30.0}, .velocity = {0.0, -2.0}, .mass = M, .radius = 1.0});
+    w.setExactEventBudget(10000);
+    w.step(2.0);  // contact after 1.58 s
+    EXPECT_EQ(w.counters().cutShort, 0u);
+    EXPECT_EQ(w.counters().collisions, 1u);
+    const Particle t = w.get(thin), h = w.get(heavy);
+    EXPECT_EQ(t.velocity.x(), 0.0);
+    EXPECT_NEAR(m * t.velocity.y() + M * h.velocity.y(), M * -2.0, 1e-12);
+    EXPECT_NEAR(0.5 * m * t.velocity.squaredNorm() + 0.5 * M * h.velocity.squaredNorm(),
+                0.5 * M * 4.0, 1e-12);
+    EXPECT_GT(h.velocity.x(), 0.0) << "struck off-centre, the heavy disc is turned aside";
+
+    // Pinned on both axes it is as fixed as a wall, however light.
+    WorldDef square;
+    square.width = 4.0;
+    square.height = 5.0;
+    World jam(square, {.mode = StepMode::Exact});
+    const ParticleId fixed = jam.add({.position = {2.0, 2.5}, .mass = 1e-300, .radius = 649.0});
+    const ParticleId ball =
+        jam.add({.position = {2.0, 4.0}, .velocity = {3.0, -60.0}, .mass = 4.0, .radius = 0.1});
+    jam.setExactEventBudget(10000);
+    jam.step(0.01);
+    EXPECT_EQ(jam.counters().cutShort, 0u);
+    EXPECT_EQ(jam.get(fixed).velocity, Vec2(0.0, 0.0));
+    EXPECT_EQ(jam.get(ball).velocity.y(), 60.0);
+    EXPECT_EQ(jam.get(ball).velocity.x(), 3.0);
+}
+
+TEST(ExactMode, ADiscPlacedInsideBodiesThatSurroundItIsJammedAndTheStepEnds) {
+    // A disc placed overlapping three pegs around it, moving: every direction approaches one
+    // of them, so it bounces between them at the same instant (elastic: for ever). After
+    // kJamHits bounces it is jammed: its velocity is absorbed, and the step ends.
+    // Under gravity it falls asleep there.
+    for (const double g : {0.0, 9.81}) {
+        WorldDef def;
+        def.width = 10.0;
+        def.height = 10.0;
+        def.gravity = {0.0, g};
+        for (int k = 0; k < 3; ++k) {
+            const double angle = 2.0 * std::numbers::pi * k / 3.0;
+            def.obstacles.push_back(
+                Obstacle::peg({5.0 + 1.0 * std::cos(angle), 5.0 + 1.0 * std::sin(angle)}, 0.6));
+        }
+        World w(def, {.mode = StepMode::Exact});
+        const ParticleId id =
+            w.add({.position = {5.0, 5.0}, .velocity = {3.0, 1.0}, .radius = 0.5});
+        w.setExactEventBudget(100000);
+        w.step(0.01);
+        EXPECT_EQ(w.counters().cutShort, 0u) << "g " << g;
+        EXPECT_EQ(w.get(id).velocity, Vec2(0.0, 0.0)) << "g " << g;
+        EXPECT_LT(w.counters().events, 2u * exact::kJamHits) << "g " << g;
+        EXPECT_EQ(w.get(id).position, Vec2(5.0, 5.0)) << "g " << g;
+    }
 }
 
 TEST(ExactMode, OverlappingApproachingPairCollidesAtOnce) {
