@@ -92,6 +92,9 @@ pixels=$(bars_in "$OUT/2-running.png" "$(rect 2-running bins)")
 pass "$landed landed (counts add up), ${falling:-0} falling, $todrop still to drop; $pixels bar pixels; $(sed -n 4p <<<"$legend")"
 
 # --- 3. switched off in the Show section (open by default) ---------------------------------------
+# The velocity arrows share the bars' orange and a fast ball's arrow can reach past the box into
+# the panel's place: they go first, so that only the bars could colour it.
+click "Velocity arrows"
 click "Bin counts against the bell curve"
 snap 3-off
 [[ -z "$(rect 3-off bins)" ]] || fail "the bins panel is still laid out after switching it off"

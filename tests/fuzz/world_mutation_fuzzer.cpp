@@ -232,7 +232,7 @@ double smallestRadius(const psb::World& w) {
 void dump(const psb::World& w, double dt) {
     const psb::WorldDef& d = w.def();
     std::fprintf(
-        stderr, "step %s dt %g: box %g x %g walls %d g (%g, %g) e %g mu %g, %zu obstacles\n",
+        stderr, "step %s dt %g: box %.17g x %.17g walls %d g (%g, %g) e %g mu %g, %zu obstacles\n",
         std::string(psb::toString(w.solver().mode)).c_str(), dt, d.width, d.height, d.walls,
         d.gravity.x(), d.gravity.y(), d.restitution, d.friction, d.obstacles.size());
     for (const psb::Obstacle& o : d.obstacles)

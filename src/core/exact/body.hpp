@@ -80,7 +80,7 @@ struct alignas(64) Cold {
     double m;                // mass
     std::int64_t kx, ky;     // cell coordinates
     std::int8_t cellSide;    // the face its next cell event crosses: -x, +x, -y, +y
-    bool pinX, pinY;         // does not fit between the walls along this axis
+    bool pinX, pinY;         // no room between the walls along this axis (kNoRoom)
     std::uint8_t level;      // its size class (grid.cpp, "Size levels")
     std::uint32_t heldHits;  // collisions with held particles this step (jam guard)
     double w;                // inverse mass, 0 = held

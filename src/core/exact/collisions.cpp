@@ -207,12 +207,15 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     double& vt = alongX ? a.vy : a.vx;
     const double outward = (ev.side % 2 == 0) ? -1.0 : 1.0;
     const bool pinned = alongX ? cold_[i].pinX : cold_[i].pinY;
-    if (gravity_ && !pinned) {
+    if (!pinned) {
         // At the wall by definition of the event: a parabola's root can leave the centre a few
-        // ulps past it, which a particle resting there would keep.
+        // ulps past it, which a particle resting there would keep. A straight line's root is
+        // left as computed (an ulp or two off the wall) unless the speed makes that rounding a
+        // distance: at 10¹³ m/s one ulp of the event's time is micrometres.
         double& x = alongX ? a.x : a.y;
         const double extent = alongX ? def_.width : def_.height;
-        x = std::clamp(x, a.r, extent - a.r);
+        const double inside = std::clamp(x, a.r, extent - a.r);
+        if (gravity_ || std::abs(x - inside) > kWallSlack * extent) x = inside;
     }
     const Vec2 before(a.vx, a.vy);
     double dv = 0.0;

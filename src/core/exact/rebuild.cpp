@@ -88,9 +88,12 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         order_[i] = i;
         if (def_.walls) {
             // Into the box, as the discrete mode's wall stage would; a particle too wide for
-            // an axis sits on the centre line with no velocity across it.
-            const auto place = [](double& x, double& v, double r, double extent) {
-                if (r >= extent - r) {
+            // an axis sits on the centre line with no velocity across it. So does one with no
+            // room at the scene's scale (kNoRoom): bouncing across it would take ~10¹² events
+            // per second for each metre per second of its speed across the box.
+            const double noRoom = kNoRoom * std::max(def_.width, def_.height);
+            const auto place = [noRoom](double& x, double& v, double r, double extent) {
+                if (r >= extent - r || extent - 2.0 * r < noRoom) {
                     x = 0.5 * extent;
                     v = 0.0;
                     return true;

@@ -110,6 +110,17 @@ inline constexpr std::uint32_t kJamHits = 100000;
 inline constexpr double kJamTime = 1e-9;  ///< seconds: 10⁻⁴ of the contact duration t_c
 inline constexpr double kJamRoom = 1e-9;  ///< of the radius
 
+/// Of the box's extent: how far past a wall its event may leave a particle's centre before
+/// handleWall puts it back on the wall (rounding of the event's time at extreme speeds; found by
+/// the world mutation fuzzer with 10¹³ m/s).
+inline constexpr double kWallSlack = 1e-12;
+
+/// Of the box's larger extent: the room across an axis (extent − 2r) below which a particle is
+/// held on the centre line like one wider than the box (Cold::pinX, pinY). Found by the world
+/// mutation fuzzer: a disc of 10⁻³⁰¹ m in a box 10⁻³⁰⁰ m wide and 2.7 m high bounced between
+/// the side walls every 10⁻³⁰¹ s.
+inline constexpr double kNoRoom = 1e-12;
+
 /// Under gravity: hits on sleeping particles in one step after which a particle wakes the
 /// sleepers it hits (see resting.cpp): a backstop for a particle wedged between sleepers,
 /// far below any event budget a caller sets. No scene or test reaches it.

@@ -390,6 +390,33 @@ TEST(ExactMode, ADiscPlacedInsideBodiesThatSurroundItIsJammedAndTheStepEnds) {
     }
 }
 
+TEST(ExactMode, ADiscWithNoRoomAtTheScenesScaleIsHeldOnTheCentreLine) {
+    // A box 10⁻³⁰⁰ m wide and 2.7 m high, a disc of 10⁻³⁰¹ m crossing it at 13 m/s: it fits,
+    // and bounced between the side walls every 10⁻³⁰¹ s (10²⁹⁹ events a step). With no room at
+    // the scene's scale it is held on the centre line, as a disc wider than the box is, and
+    // moves freely along y. Found by the world mutation fuzzer.
+    WorldDef def;
+    def.width = 1e-300;
+    def.height = 2.6881215996790151;
+    World w(def, {.mode = StepMode::Exact});
+    const ParticleId id =
+        w.add({.position = {0.3e-300, 1.0}, .velocity = {-13.0, -1.0}, .radius = 1.2e-301});
+    w.setExactEventBudget(100000);
+    w.step(1.0 / 60.0);
+    EXPECT_EQ(w.counters().cutShort, 0u);
+    EXPECT_EQ(w.get(id).position.x(), 0.5e-300);
+    EXPECT_EQ(w.get(id).velocity.x(), 0.0);
+    EXPECT_DOUBLE_EQ(w.get(id).position.y(), 1.0 - 1.0 / 60.0);
+    // A room of 10⁻⁹ of the box is room: the disc bounces in it as before.
+    def.width = 1e-9 * def.height + 2.0 * 1.2e-301;
+    World roomy(def, {.mode = StepMode::Exact});
+    const ParticleId free = roomy.add(
+        {.position = {0.5 * def.width, 1.0}, .velocity = {-1e-9, 0.0}, .radius = 1.2e-301});
+    roomy.step(2.0);
+    EXPECT_EQ(roomy.counters().wallCollisions, 1u);
+    EXPECT_EQ(roomy.get(free).velocity.x(), 1e-9);
+}
+
 TEST(ExactMode, OverlappingApproachingPairCollidesAtOnce) {
     World w = openExactWorld();
     const ParticleId a = w.add({.position = {0.0, 0.0}, .velocity = {1.0, 0.0}});
