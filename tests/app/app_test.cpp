@@ -9,6 +9,8 @@
 #include <fstream>
 #include <iterator>
 
+#include <imgui.h>
+#include <imgui_internal.h>
 #include <stb_image.h>
 #include <unistd.h>
 
@@ -328,6 +330,43 @@ TEST_F(AppTest, TabGivesThePanelTheKeysAndEscGivesThemBack) {
     key(app, SDLK_TAB);
     app.frame(0.0);
     EXPECT_FALSE(app.panelHasKeyboard());
+}
+
+TEST_F(AppTest, SpaceOnThePlayButtonStartsTimeAndSpaceAgainStopsIt) {
+    AppOptions o = options();
+    o.width = o.height = 800;  // the panel open
+    App app(o);
+    app.frame(0.0);
+    // ImGui reads a key as held in one frame and let go in the next, as a hand presses it.
+    const auto press = [&app](SDL_Keycode sym) {
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = sym;
+        e.key.keysym.scancode = SDL_GetScancodeFromKey(sym);
+        app.processEvent(e);
+        app.frame(0.0);
+        e.type = SDL_KEYUP;
+        app.processEvent(e);
+        app.frame(0.0);
+    };
+    const auto cursorOn = [&app](const char* name) {
+        const PanelItem* i = app.panel().item(name);
+        return i != nullptr && GImGui != nullptr && GImGui->NavId == i->id;
+    };
+    press(SDLK_TAB);
+    ASSERT_TRUE(app.panelHasKeyboard());
+    // From the field Tab chose, up the panel with the arrow keys to Play.
+    for (int k = 0; k < 20 && !cursorOn("Play/Pause"); ++k)
+        press(SDLK_UP);
+    ASSERT_TRUE(cursorOn("Play/Pause"));
+    ASSERT_TRUE(app.session().paused());
+    press(SDLK_SPACE);
+    EXPECT_FALSE(app.session().paused()) << "Space on Play starts time";
+    EXPECT_TRUE(cursorOn("Play/Pause")) << "the cursor stays on the button, now Pause";
+    EXPECT_TRUE(app.panelHasKeyboard());
+    press(SDLK_SPACE);
+    EXPECT_TRUE(app.session().paused()) << "Space on Pause stops it";
+    EXPECT_TRUE(cursorOn("Play/Pause"));
 }
 
 TEST_F(AppTest, TheUiScaleAndThemeAreKeptInTheSettingsFileAndReadAtTheNextStart) {

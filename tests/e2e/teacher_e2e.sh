@@ -160,7 +160,11 @@ snap 10-narrow
 read -r hx _ < <(rect 10-narrow hud)
 read -r bx by bw bh < <(rect 10-narrow box)
 ((hx < 100)) || fail "at 400x300 the panel is still open (the HUD at x $hx)"
-((bx >= 44 && bw >= 100)) || fail "the box ($bx $by $bw $bh) is not beside the folded panel"
+read -r _ hy _ hh < <(rect 10-narrow hud)
+# Below the HUD's seven wrapped lines (the labels' note among them) and above the messages: a
+# small box, never one under the HUD's text.
+((bx >= 44 && bw >= 60)) || fail "the box ($bx $by $bw $bh) is not beside the folded panel"
+((by >= hy + hh)) || fail "the box ($bx $by $bw $bh) runs under the HUD (bottom $((hy + hh)))"
 section 10-narrow Messages | grep -q "control panel folded" ||
     fail "nothing says the panel folded: $(section 10-narrow Messages)"
 pass "400x300: the panel folded, the box at x $bx, ${bw}px wide"

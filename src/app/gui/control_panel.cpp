@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
@@ -28,7 +29,7 @@ void copyPath(std::array<char, 512>& to, const std::filesystem::path& from) {
 
 void ControlPanel::mark(const std::string& name, std::string text) {
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    items_.push_back({name, a.x, a.y, b.x, b.y});
+    items_.push_back({name, a.x, a.y, b.x, b.y, ImGui::GetItemID()});
     if (!text.empty()) status_.emplace_back(name, std::move(text));
 }
 
@@ -104,7 +105,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     if (!open) ImGui::PopStyleVar();
     ImGui::PopStyleColor();
     launchPreview(s, pixelRatio);
-    valuesWindow(s, height);
+    valuesWindow(s, pixelRatio);
     dialog(s);
     return std::move(out_);
 }
@@ -120,7 +121,7 @@ void ControlPanel::time(const Session& s) {
     const bool open = ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen);
     mark("section Time");
     if (!open) return;
-    if (ImGui::Button(s.paused() ? "Play" : "Pause", ImVec2(70.f, 0.f))) {
+    if (widgets::stateButton("Play/Pause", s.paused() ? "Play" : "Pause", ImVec2(70.f, 0.f))) {
         out_.emplace_back(cmd::TogglePause{});
     }
     mark("Play/Pause");
@@ -199,7 +200,7 @@ void ControlPanel::stopwatch(const Session& s) {
     const double now = s.world().time();
     ImGui::TextUnformatted("Stopwatch");
     ImGui::SameLine();
-    if (ImGui::SmallButton(w.running() ? "Stop" : "Start")) {
+    if (widgets::smallStateButton("Stopwatch start", w.running() ? "Stop" : "Start")) {
         out_.emplace_back(cmd::Stopwatch{A::StartStop});
     }
     mark("Stopwatch start");
@@ -251,7 +252,7 @@ void ControlPanel::scene(const Session& s) {
             const std::string key = k < 9 ? " (key " + std::to_string(k + 1) + ")" : "";
             const std::string about = p.description.empty() ? p.summary : p.description + key;
             tip(about.c_str());
-            ImGui::TextDisabled("  %s", p.summary.c_str());
+            widgets::wrappedDisabled("  " + p.summary);
             tip(about.c_str());
             ImGui::PopID();
         }

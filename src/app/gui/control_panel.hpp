@@ -63,6 +63,7 @@ inline constexpr std::size_t kTableMaxParticles = 60;
 struct PanelItem {
     std::string name;
     float x0 = 0.f, y0 = 0.f, x1 = 0.f, y1 = 0.f;
+    unsigned id = 0;  ///< ImGui's identity of the item (ImGuiID), which its keyboard cursor holds
 };
 
 class ControlPanel {
@@ -123,9 +124,9 @@ class ControlPanel {
     void card(const Session& s);
     /// The momenta diagram under the card (view/momenta_diagram.hpp).
     void momenta(const CollisionCard& card);
-    /// The values table's window, while shown (section_values.cpp), in a display `height`
-    /// points high.
-    void valuesWindow(const Session& s, float height);
+    /// The values table's window, while shown (section_values.cpp), docked in its band at
+    /// `pointPixels` pixels per point of the UI.
+    void valuesWindow(const Session& s, float pointPixels);
     /// Recording, and the tables' Export and Copy buttons (section_data.cpp).
     void data(const Session& s);
     /// Video recording: format, area, Record / Stop, where the last one went (section_video.cpp).

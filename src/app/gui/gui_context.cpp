@@ -119,6 +119,11 @@ void GuiContext::setTheme(Theme theme) {
         ImGui::StyleColorsDark(&style);
         style.FrameBorderSize = 0.f;
     }
+    // A slider's value is written over its handle: a faint handle keeps the digits under it
+    // legible ("0.▮0" read as nothing on a projector), its frame's border still shows it.
+    const ImVec4 text = style.Colors[ImGuiCol_Text];
+    style.Colors[ImGuiCol_SliderGrab] = ImVec4(text.x, text.y, text.z, 0.22f);
+    style.Colors[ImGuiCol_SliderGrabActive] = ImVec4(text.x, text.y, text.z, 0.32f);
 }
 
 bool GuiContext::loadFont(float pixelScale) {

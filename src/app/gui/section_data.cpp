@@ -45,7 +45,7 @@ void ControlPanel::data(const Session& s) {
     mark("section Data");
     if (!open) return;
     const DataRecorder& d = s.data();
-    if (ImGui::Button(d.recording() ? "Stop recording" : "Record")) {
+    if (widgets::stateButton("Record", d.recording() ? "Stop recording" : "Record")) {
         out_.emplace_back(cmd::SetRecording{!d.recording(), recordEvery_});
     }
     mark("Record");

@@ -44,7 +44,7 @@ void ControlPanel::obstacleTools(const Session& s) {
                       quantity(o.thickness(), "m").c_str());
     }
     ImGui::TextUnformatted(buf);
-    if (ImGui::Button(o.isPeg() ? "Delete peg" : "Delete wall")) {
+    if (widgets::stateButton("delete obstacle", o.isPeg() ? "Delete peg" : "Delete wall")) {
         out_.emplace_back(cmd::RemoveObstacle{*selected});
     }
     mark("delete obstacle");

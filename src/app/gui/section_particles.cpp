@@ -117,7 +117,7 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         std::find(fieldActive_.begin(), fieldActive_.end(), true) != fieldActive_.end();
     if (!typing) fieldOwner_ = p ? p->id : kNullParticle;
     if (!p) {
-        ImGui::TextDisabled("Click a particle (or a row below) to see its values");
+        widgets::wrappedDisabled("Click a particle (or a row below) to see its values");
         // The fields are gone with the selection: what was being typed is applied.
         for (std::size_t k = 0; k < std::size(kFields); ++k) {
             if (fieldActive_[k] && fieldOwner_ != kNullParticle) {

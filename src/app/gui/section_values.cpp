@@ -1,10 +1,15 @@
 // The values table's window (view/values_table.hpp): every particle's signed position,
 // velocity, momentum, kinetic energy and mass with units in the headers, the totals, the cells
 // of position, velocity and mass editable in place (type, then Enter or click elsewhere, as the
-// Selected particle section's fields), Copy and Export. A window of its own, movable and
-// resizable, as eight columns do not fit the panel; I or the Show section's checkbox opens it.
+// Selected particle section's fields), Copy and Export. I or the Show section's checkbox shows
+// it, docked in the band the view keeps for it along the window's bottom (valuesTableRect):
+// its columns as wide as their numbers, scrolled sideways where the band is narrower than
+// them, the particles' numbers staying at the left; its rows scrolled where there are more
+// than the band holds.
 
 #include <algorithm>
+#include <array>
+#include <cfloat>
 #include <cstdio>
 #include <string>
 
@@ -13,30 +18,54 @@
 #include "gui/control_panel.hpp"
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
+#include "view/box_area.hpp"
 #include "view/values_table.hpp"
 
 namespace psb::app {
 
-void ControlPanel::valuesWindow(const Session& s, float height) {
+namespace {
+
+/// An editable cell's text: four figures, as the read-only cells show three (six were cut off
+/// at 200 %).
+std::array<char, 64> fieldText(double value) {
+    std::array<char, 64> text{};
+    std::snprintf(text.data(), text.size(), "%.4g", value);
+    return text;
+}
+
+}  // namespace
+
+void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     if (!s.view().values) {
         valuesEditing_.reset();
         return;
     }
-    const ImVec2 display = ImGui::GetIO().DisplaySize;
-    const float left = s.controlsShown() ? kControlsWidth + 8.f : kControlsFoldedWidth + 8.f;
-    const float tall = std::min(260.f, 0.4f * height);
-    // Above the message band (bottom left), which it would hide.
-    ImGui::SetNextWindowPos(ImVec2(left, height - tall - 64.f), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(std::max(320.f, display.x - left - 8.f), tall),
-                             ImGuiCond_FirstUseEver);
-    bool open = true;
-    const bool shown = ImGui::Begin("Values table (I)", &open);
-    mark("values window");
-    if (!open) out_.emplace_back(cmd::SetShow{cmd::ShowOption::Values, false});
+    // The band in pixels, the window in the UI's points.
+    const PixelRect band = valuesTableRect(s, controlsWidth(pointPixels));
+    ImGui::SetNextWindowPos(
+        ImVec2(static_cast<float>(band.x) / pointPixels, static_cast<float>(band.y) / pointPixels));
+    ImGui::SetNextWindowSize(
+        ImVec2(static_cast<float>(band.w) / pointPixels, static_cast<float>(band.h) / pointPixels));
+    const ImGuiWindowFlags windowFlags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
+                                         ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                         ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoScrollbar;
+    const bool shown = ImGui::Begin("Values table (I)", nullptr, windowFlags);
+    {
+        const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+        items_.push_back({"values window", at.x, at.y, at.x + size.x, at.y + size.y,
+                          ImGui::GetID("Values table (I)")});
+    }
     if (!shown) {
         ImGui::End();
         return;
     }
+    ImGui::TextUnformatted("Values table");
+    widgets::tip(
+        s.world().rotationInUse()
+            ? "Click a particle's number to select it; type in x, y, vx, vy, \u03c9 or mass"
+            : "Click a particle's number to select it; type in x, y, vx, vy or mass");
+    ImGui::SameLine();
     const ValuesTable t = valuesTable(s.world(), s.selection().id(), s.axes());
     if (ImGui::SmallButton("Copy")) out_.emplace_back(cmd::CopyTable{cmd::DataTable::Values});
     mark("values Copy");
@@ -48,24 +77,51 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
     mark("values Export");
     widgets::tip("Write every particle's values as a CSV file (values.csv)");
     ImGui::SameLine();
-    ImGui::TextDisabled(s.world().rotationInUse()
-                            ? "click a number to select; type in x, y, vx, vy, \u03c9 or mass"
-                            : "click a number to select; type in x, y, vx, vy or mass");
-    if (!t.note.empty()) widgets::wrappedDisabled(t.note);
-    widgets::wrappedDisabled(t.axes);
+    if (ImGui::SmallButton("Hide")) out_.emplace_back(cmd::SetShow{cmd::ShowOption::Values, false});
+    mark("values Hide");
+    widgets::tip("Hide the values table (key I)");
+    // Which way y counts, and why rows are missing: the band keeps a line for them
+    // (kValuesChromePoints); in a narrow one they wrap and the rows scroll.
+    widgets::wrappedDisabled(t.note.empty() ? t.axes : t.axes + "; " + t.note);
 
     const std::vector<ValuesColumn>& columns = t.columns;
+    // Each column as wide as its name, its unit and its widest number (the fields with their
+    // frames), so no number is cut; the band scrolls sideways when they are wider than it.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    std::vector<float> widths(columns.size(), 0.f);
+    const auto widen = [&widths](std::size_t k, const std::string& text, float extra) {
+        widths[k] = std::max(widths[k], ImGui::CalcTextSize(text.c_str()).x + extra);
+    };
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const float frame = columns[k].field ? 2.f * style.FramePadding.x : 0.f;
+        widen(k, columns[k].name, 0.f);
+        widen(k, columns[k].unit, 0.f);
+        widen(k, valuesCell(t.totals[k]), 0.f);
+        for (const ValuesRow& r : t.rows) {
+            widen(k,
+                  columns[k].field ? std::string(fieldText(r.values[k]).data())
+                                   : valuesCell(r.values[k]),
+                  frame);
+        }
+        // Room for a digit more while a value is typed.
+        if (columns[k].field) widen(k, "-0.0000e-00", frame);
+    }
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                  ImGuiTableFlags_SizingStretchSame | ImGuiTableFlags_ScrollY;
+                                  ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |
+                                  ImGuiTableFlags_ScrollY;
+    // Fields as tall as a line of text with a pixel either side: the rows the band counts
+    // (kValuesRowPoints).
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(style.FramePadding.x, 1.f));
     if (!ImGui::BeginTable("values", static_cast<int>(columns.size()) + 1, flags)) {
+        ImGui::PopStyleVar();
         ImGui::End();
         return;
     }
-    ImGui::TableSetupScrollFreeze(0, 2);
-    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed);
+    ImGui::TableSetupScrollFreeze(1, 2);
+    ImGui::TableSetupColumn("#", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("total").x);
     // Names in the header, units in a row under it: "px (kg m/s)" would not fit a column.
-    for (const ValuesColumn& c : columns)
-        ImGui::TableSetupColumn(c.name);
+    for (std::size_t k = 0; k < columns.size(); ++k)
+        ImGui::TableSetupColumn(columns[k].name, ImGuiTableColumnFlags_WidthFixed, widths[k]);
     ImGui::TableHeadersRow();
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
@@ -92,11 +148,9 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
             const ParticleField field = *columns[k].field;
             const bool editing =
                 valuesEditing_ && valuesEditing_->first == r.id && valuesEditing_->second == field;
-            std::array<char, 64> shownText{};
+            std::array<char, 64> shownText = fieldText(r.values[k]);
             std::array<char, 64>& text = editing ? valuesText_ : shownText;
-            // Four figures, as the read-only cells show three: six were cut off at 200 %.
-            if (!editing) std::snprintf(text.data(), text.size(), "%.4g", r.values[k]);
-            ImGui::SetNextItemWidth(-1.f);
+            ImGui::SetNextItemWidth(-FLT_MIN);
             ImGui::PushID(static_cast<int>(r.number * kValuesColumns + k));
             const bool enter = ImGui::InputText("##cell", text.data(), text.size(),
                                                 ImGuiInputTextFlags_EnterReturnsTrue |
@@ -129,6 +183,7 @@ void ControlPanel::valuesWindow(const Session& s, float height) {
         mark(std::string("values total ") + columns[k].name);
     }
     ImGui::EndTable();
+    ImGui::PopStyleVar();
     ImGui::End();
 }
 

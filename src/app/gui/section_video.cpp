@@ -48,7 +48,7 @@ void ControlPanel::video(const Session& s, const VideoStatus& status) {
 
     const std::string& problem = status.unavailable[static_cast<std::size_t>(settings.format)];
     ImGui::BeginDisabled(!status.recording && !problem.empty());
-    if (ImGui::Button(status.recording ? "Stop video" : "Record video")) {
+    if (widgets::stateButton("Record video", status.recording ? "Stop video" : "Record video")) {
         out_.emplace_back(cmd::ToggleVideo{});
     }
     ImGui::EndDisabled();

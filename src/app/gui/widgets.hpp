@@ -54,6 +54,19 @@ inline void wrappedColored(const ImVec4& color, std::string_view text) {
     ImGui::PopStyleColor();
 }
 
+/// A button whose words change with the state it switches ("Play" / "Pause"). ImGui knows an
+/// item by its label: with new words it would be a new item, and the keyboard's cursor, left on
+/// the old one, would be on nothing (a second Space did nothing). Its identity is `id` instead.
+inline bool stateButton(const char* id, const char* words, const ImVec2& size = ImVec2(0.f, 0.f)) {
+    const std::string label = std::string(words) + "###" + id;
+    return ImGui::Button(label.c_str(), size);
+}
+/// stateButton() as a small button.
+inline bool smallStateButton(const char* id, const char* words) {
+    const std::string label = std::string(words) + "###" + id;
+    return ImGui::SmallButton(label.c_str());
+}
+
 /// A tooltip for the item just drawn (also while it is disabled), after a real hover
 /// (tooltips.hpp): never for a finger, nor while a control is held or a field typed in.
 inline void tip(const char* text) {

@@ -28,11 +28,8 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     if (frame.view.trails != TrailMode::Off) trails_.update(world);
 
     RenderAvoid avoid;
-    for (const PixelRect& r :
-         {frame.layout.hud, frame.layout.messages, frame.layout.inspector, frame.layout.profile,
-          frame.layout.legend, frame.layout.plots, frame.layout.speeds, frame.layout.bins}) {
-        if (r.w > 0) avoid.push_back(sdlRect(r));
-    }
+    for (const PixelRect& r : panelRects(frame.layout))
+        avoid.push_back(sdlRect(r));
     // Labels keep out from under the control panel (drawn over them).
     if (frame.controlsInset > 0) {
         avoid.push_back({0, 0, frame.controlsInset, camera.viewportHeight()});
@@ -63,12 +60,9 @@ void DrawLayer::drawLabMarks(const FrameView& frame, const Palette& colours) {
         rulerMarks_.clear();
         batchRuler(*frame.ruler, rulerMarks_, colours);
         // A box behind the reading, so that it reads over discs and their labels.
-        const MarkLabel& l = frame.ruler->label;
-        const float w = static_cast<float>(labelFont_.measure(l.text)) + 8.f;
-        const float h = static_cast<float>(labelFont_.lineHeight()) + 2.f;
-        const auto x = static_cast<float>(std::round(l.at.x())),
-                   y = static_cast<float>(std::round(l.at.y()));
-        rulerMarks_.quad(x - 0.5f * w, y - 0.5f * h, x + 0.5f * w, y + 0.5f * h,
+        const PixelRect r = labelRect(frame.ruler->label, labelFont_, kReadingPad);
+        rulerMarks_.quad(static_cast<float>(r.x), static_cast<float>(r.y),
+                         static_cast<float>(r.x + r.w), static_cast<float>(r.y + r.h),
                          sdlColor(colours.labelBox), 0.5f, 0.5f, 0.5f, 0.5f);
         renderer_.drawBatch(rulerMarks_);
     }
@@ -171,9 +165,11 @@ namespace psb::app {
 
 void DrawLayer::drawRecordingMark(const RecordingMarkView& mark) {
     // A dark plate, a red dot at its left and the label in red: read over any scene.
+    // Its box holds the dot and the text (frame_view.cpp sizes it; the layout places it).
     const PixelRect& r = mark.at;
+    if (r.w <= 0) return;
     const int dot = hudFont_.lineHeight() / 2;
-    const SDL_Rect plate{r.x - dot - 6, r.y, r.w + dot + 6, r.h};
+    const SDL_Rect plate = sdlRect(r);
     SDL_SetRenderDrawBlendMode(sdl_, SDL_BLENDMODE_BLEND);
     SDL_SetRenderDrawColor(sdl_, 20, 20, 24, 220);
     SDL_RenderFillRect(sdl_, &plate);
@@ -181,7 +177,7 @@ void DrawLayer::drawRecordingMark(const RecordingMarkView& mark) {
     SDL_SetRenderDrawColor(sdl_, 235, 60, 50, 255);
     SDL_RenderFillRect(sdl_, &red);
     text_.clear();
-    hudFont_.layout(mark.label, static_cast<float>(r.x + 4), static_cast<float>(r.y + 4),
+    hudFont_.layout(mark.label, static_cast<float>(r.x + dot + 6 + 4), static_cast<float>(r.y + 4),
                     SDL_Color{255, 110, 100, 255}, text_);
     hudFont_.draw(text_);
 }

@@ -13,6 +13,7 @@
 #include "render/spin_mark.hpp"
 #include "render/text.hpp"
 #include "session/units.hpp"
+#include "view/label_places.hpp"
 #include "view/mass_shade.hpp"
 
 namespace psb::app {
@@ -297,139 +298,100 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             stats.labelsSuppressed = true;
         } else {
             const int lh = labelFont_->lineHeight();
-            std::vector<SDL_Rect> placed;
-            // Discs' boxes: a label keeps off other particles where it can.
-            std::vector<SDL_Rect> discBoxes;
-            discBoxes.reserve(visible.size());
-            for (std::size_t i : visible) {
-                const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
-                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i])));
-                discBoxes.push_back({static_cast<int>(std::lround(c.x())) - r,
-                                     static_cast<int>(std::lround(c.y())) - r, 2 * r, 2 * r});
-            }
             // The box's outline on screen: a label is inside it or outside, never across a wall.
             const Camera::ScreenBox sb = camera.boxOnScreen(world.def().width, world.def().height);
-            const SDL_Rect walls{static_cast<int>(std::floor(sb.topLeft.x())),
-                                 static_cast<int>(std::floor(sb.topLeft.y())),
-                                 static_cast<int>(std::ceil(sb.size.x())) + 1,
-                                 static_cast<int>(std::ceil(sb.size.y())) + 1};
-            const auto crossesWalls = [&](const SDL_Rect& r) {
-                if (!world.def().walls) return false;
-                SDL_Rect in;
-                if (!SDL_IntersectRect(&r, &walls, &in)) return false;  // all outside
-                return in.w != r.w || in.h != r.h;                      // partly outside
-            };
-            const auto onDiscs = [&](const SDL_Rect& r) {
-                for (const SDL_Rect& o : discBoxes)
-                    if (SDL_HasIntersection(&r, &o)) return true;
-                return false;
-            };
-            // Preferences, dropped one by one until a place is found: clear of every disc and
-            // in the box with its disc, clear of the walls.
-            bool avoidDiscs = true, avoidWalls = true, keepInBox = false;
-            const auto inWindow = [&](const SDL_Rect& r) {
-                return r.x >= 0 && r.y >= 0 && r.x + r.w <= w && r.y + r.h <= h;
-            };
-            const auto free = [&](const SDL_Rect& r) {
-                if (!inWindow(r)) return false;
-                if (avoidWalls && crossesWalls(r)) return false;
-                if (keepInBox && !SDL_HasIntersection(&r, &walls)) return false;
-                for (const SDL_Rect& o : placed)
-                    if (SDL_HasIntersection(&r, &o)) return false;
-                if (avoidDiscs && onDiscs(r)) return false;
-                if (avoid != nullptr) {
-                    for (const SDL_Rect& o : *avoid)
-                        if (SDL_HasIntersection(&r, &o)) return false;
-                }
-                return true;
-            };
-            // `at` moved along an edge of `room` to keep a size `size` inside it, if it can.
-            const auto along = [](int at, int size, int lo, int hi) {
-                return std::max(lo, std::min(at, hi - size));
-            };
-            char lines[5][64];
+            const PixelRect walls = world.def().walls
+                                        ? PixelRect{static_cast<int>(std::floor(sb.topLeft.x())),
+                                                    static_cast<int>(std::floor(sb.topLeft.y())),
+                                                    static_cast<int>(std::ceil(sb.size.x())) + 1,
+                                                    static_cast<int>(std::ceil(sb.size.y())) + 1}
+                                        : PixelRect{};
+            std::vector<PixelRect> keepOut;
+            if (avoid != nullptr) {
+                for (const SDL_Rect& r : *avoid)
+                    keepOut.push_back({r.x, r.y, r.w, r.h});
+            }
+            using Lines = std::array<std::array<char, 64>, 5>;
+            std::vector<Lines> texts(visible.size());
+            std::vector<LabelAsk> asks(visible.size());
             const Axes axes = options.axes(world.def());  // vy up or down, as the user reads it
-            for (std::size_t i : visible) {
+            for (std::size_t k = 0; k < visible.size(); ++k) {
+                const std::size_t i = visible[k];
+                Lines& lines = texts[k];
                 const double vx = p.vx[i], vy = axes.up(p.vy[i]), m = p.mass[i];
                 // The number the panel and the log name it by (particleNumber).
-                std::snprintf(lines[0], sizeof lines[0], "particle %llu",
+                std::snprintf(lines[0].data(), lines[0].size(), "particle %llu",
                               static_cast<unsigned long long>(particleNumber(p.id[i])));
                 // Two decimals; what rounds to zero reads "0.00", never "-0.00".
                 const auto twoDecimals = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
-                std::snprintf(lines[1], sizeof lines[1], "x velocity: %.2f m/s", twoDecimals(vx));
-                std::snprintf(lines[2], sizeof lines[2], "y velocity: %.2f m/s", twoDecimals(vy));
+                std::snprintf(lines[1].data(), lines[1].size(), "x velocity: %.2f m/s",
+                              twoDecimals(vx));
+                std::snprintf(lines[2].data(), lines[2].size(), "y velocity: %.2f m/s",
+                              twoDecimals(vy));
                 // Signed components, as the velocity's: a ball moving left has px < 0.
-                std::snprintf(lines[3], sizeof lines[3], "p: (%s, %s) kg m/s",
+                std::snprintf(lines[3].data(), lines[3].size(), "p: (%s, %s) kg m/s",
                               quantity(m * vx, "", false).c_str(),
                               quantity(m * vy, "", false).c_str());
-                std::snprintf(lines[4], sizeof lines[4], "mass: %s",
+                std::snprintf(lines[4].data(), lines[4].size(), "mass: %s",
                               quantity(m, "kg", false).c_str());
                 int width = 0;
                 for (const auto& l : lines)
-                    width = std::max(width, labelFont_->measure(l));
+                    width = std::max(width, labelFont_->measure(l.data()));
                 // A box of fixed pixel size at every zoom, at whole pixels, 2 px clear of the
-                // disc: above it, else below, right, left; each slid along the disc's side to
-                // stay in the window, and in the box for a disc inside it (a disc near an edge
-                // has its label beside it, not cut by the edge or left out).
+                // disc (view/label_places.hpp chooses where).
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
                 const int cx = static_cast<int>(std::lround(c.x()));
                 const int cy = static_cast<int>(std::lround(c.y()));
                 const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + 2;
-                const int bw = width + 4, bh = 5 * lh + 1;
-                const bool inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
-                                   p.x[i] <= world.def().width && p.y[i] <= world.def().height;
-                SDL_Rect room{0, 0, static_cast<int>(w), static_cast<int>(h)};
-                if (inBox) SDL_IntersectRect(&walls, &room, &room);
-                const int across = along(cx - bw / 2, bw, room.x, room.x + room.w);
-                const int down = along(cy - bh / 2, bh, room.y, room.y + room.h);
-                const SDL_Rect candidates[4] = {{across, cy - r - bh, bw, bh},
-                                                {across, cy + r, bw, bh},
-                                                {cx + r, down, bw, bh},
-                                                {cx - r - bw, down, bw, bh}};
-                // First a place clear of every disc and the walls (inside the box, for a disc in
-                // it), else one clear of the walls,
-                // else one clear of labels and panels only. A label over other discs gets no
-                // background, which would darken them, only a dark outline that keeps its
-                // text readable.
-                const SDL_Rect* box = nullptr;
-                for (const int level : {0, 1, 2}) {
-                    avoidDiscs = level == 0;
-                    avoidWalls = level <= 1;
-                    keepInBox = level == 0 && inBox;
-                    for (const SDL_Rect& cand : candidates) {
-                        if (free(cand)) {
-                            box = &cand;
-                            break;
-                        }
-                    }
-                    if (box != nullptr) break;
-                }
-                if (box == nullptr) {
+                asks[k].disc = {cx - r, cy - r, 2 * r, 2 * r};
+                asks[k].size = {width + 4, 5 * lh + 1};
+                asks[k].inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
+                                p.x[i] <= world.def().width && p.y[i] <= world.def().height;
+            }
+            const std::vector<LabelPlace> places =
+                placeLabels(asks, {0, 0, static_cast<int>(w), static_cast<int>(h)}, walls, keepOut);
+            for (std::size_t k = 0; k < places.size(); ++k) {
+                const LabelPlace& place = places[k];
+                const PixelRect& box = place.at;
+                if (box.w == 0) {
                     // Say why: other labels or panels in the way, or no side of the disc
                     // inside the window at all.
-                    const bool anyInWindow =
-                        std::any_of(std::begin(candidates), std::end(candidates), inWindow);
-                    ++(anyInWindow ? stats.labelsCrowded : stats.labelsOffWindow);
+                    ++(place.offWindow ? stats.labelsOffWindow : stats.labelsCrowded);
                     continue;
                 }
-                placed.push_back(*box);
-                const bool overDiscs = !avoidDiscs && onDiscs(*box);
-                if (!overDiscs) {
-                    labelBoxes_.quad(static_cast<float>(box->x), static_cast<float>(box->y),
-                                     static_cast<float>(box->x + box->w),
-                                     static_cast<float>(box->y + box->h),
-                                     sdlColor(colours.labelBox));
+                if (place.leader) {
+                    // From the disc's rim to the label's nearest point: whose label it is.
+                    const PixelRect& d = asks[k].disc;
+                    const Vec2 c(d.x + 0.5 * d.w, d.y + 0.5 * d.h);
+                    const auto x0 = static_cast<double>(box.x), y0 = static_cast<double>(box.y);
+                    const Vec2 near(std::clamp(c.x(), x0, x0 + box.w),
+                                    std::clamp(c.y(), y0, y0 + box.h));
+                    const Vec2 u = (near - c).normalized();
+                    const Vec2 from = c + u * (0.5 * d.w - 2.0);
+                    const Vec2 side = Vec2(-u.y(), u.x()) * 0.75;
+                    const SDL_Color ink = sdlColor(colours.labelText);
+                    const auto pt = [](const Vec2& v) {
+                        return SDL_FPoint{static_cast<float>(v.x()), static_cast<float>(v.y())};
+                    };
+                    labelBoxes_.polygon4(pt(from + side), pt(near + side), pt(near - side),
+                                         pt(from - side), ink);
                 }
-                for (int k = 0; k < 5; ++k) {
-                    const float x = static_cast<float>(box->x + 2);
-                    const float y = static_cast<float>(box->y + 1 + k * lh);
-                    if (overDiscs) {
+                if (!place.overDiscs) {
+                    labelBoxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
+                                     static_cast<float>(box.x + box.w),
+                                     static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
+                }
+                for (int line = 0; line < 5; ++line) {
+                    const char* text = texts[k][static_cast<std::size_t>(line)].data();
+                    const float x = static_cast<float>(box.x + 2);
+                    const float y = static_cast<float>(box.y + 1 + line * lh);
+                    if (place.overDiscs) {
                         for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
-                            labelFont_->layout(lines[k], x + static_cast<float>(dx),
+                            labelFont_->layout(text, x + static_cast<float>(dx),
                                                y + static_cast<float>(dy),
                                                sdlColor(colours.labelOutline), labelOutline_);
                     }
-                    labelFont_->layout(lines[k], x, y, sdlColor(colours.labelText), labelText_);
+                    labelFont_->layout(text, x, y, sdlColor(colours.labelText), labelText_);
                 }
                 ++stats.labelled;
             }

@@ -109,6 +109,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
     rect(out, "plots", l.plots);
     rect(out, "speeds", l.speeds);
     rect(out, "bins", l.bins);
+    rect(out, "values", l.values);
     return out;
 }
 

@@ -2,8 +2,9 @@
 // Where the box may go on screen. The view lays out the window (view/box_area.hpp) and hands
 // the session, with each window size (cmd::Resize), the area the box is fitted into for each
 // state of the panels the session switches: the control panel open or folded, a panel of the
-// side column (plots, histograms, profile) asked for or not. The session fits the box into the
-// area its panels are in; it knows no panel, font or margin, only these rectangles.
+// side column (plots, histograms, profile) asked for or not, and the values table's band. The
+// session fits the box into the area its panels are in; it knows no panel, font or margin, only
+// these rectangles.
 
 namespace psb::app {
 
@@ -18,8 +19,25 @@ struct BoxArea {
     /// fitted into the area leaves it whole beside it: the box then moves left and keeps its
     /// size. Whether it does depends on the box's proportions, which the session knows.
     double spareColumn = 0.0;
+    /// While the values table is shown it docks where it leaves the box largest, and never
+    /// over it: in a band this tall above the area's bottom (its chrome and its few rows; it
+    /// docks along the window's bottom, under the messages), or that band less a row or more
+    /// (`valuesRow` pixels each, down to `valuesLeast`: one row; the others scroll), or in a column
+    /// `valuesColumn` wide at the area's right, below the HUD (0: no room for it there, the
+    /// side column is).
+    double valuesBand = 0.0;
+    double valuesRow = 0.0;
+    double valuesLeast = 0.0;
+    double valuesColumn = 0.0;
 
     friend bool operator==(const BoxArea&, const BoxArea&) = default;
+};
+
+/// Where the values table docks, as the session chose in fitting the box (BoxArea).
+struct ValuesDock {
+    bool right = false;  ///< in a column at the right, else in a band along the bottom
+    double size = 0.0;   ///< the band's height or the column's width, pixels
+    friend bool operator==(const ValuesDock&, const ValuesDock&) = default;
 };
 
 /// What the session is told of the window's layout at one window size.

@@ -32,9 +32,12 @@ void Camera::fit(double width, double height, double marginPixels, double topIns
     if (!(width > 0.0) || !(height > 0.0) || !std::isfinite(width) || !std::isfinite(height)) {
         return;
     }
-    // The insets are given up only when the window is big enough to spare them.
-    const double top = std::clamp(topInsetPixels, 0.0, height_ / 3.0);
-    const double bottom = std::clamp(bottomInsetPixels, 0.0, height_ / 3.0);
+    // The top band holds the HUD: a box drawn under its lines is read through text, a smaller
+    // one is still read. Given up past 60 % of the window (a window no one could use).
+    const double top = std::clamp(topInsetPixels, 0.0, 0.6 * height_);
+    // The bottom holds the messages and, while shown, the values table's band: kept while they
+    // leave the box a fifth of the window (the view keeps the band smaller than that).
+    const double bottom = std::clamp(bottomInsetPixels, 0.0, std::max(0.0, 0.8 * height_ - top));
     // The control panel's column is kept free while it leaves the box a quarter of the window
     // (the view folds the panel before that: box_area.hpp's controlsFit; a panel at 200 % in a
     // 1000-pixel window takes 62 % of it).

@@ -54,11 +54,11 @@ class Camera {
     void panPixels(const Vec2& pixels);
     /// Centres a `width` × `height` metre box in the viewport with `marginPixels` around it,
     /// between a band of `topInsetPixels` kept free above (for the HUD), one of
-    /// `bottomInsetPixels` below (the messages) and a column of `rightInsetPixels` at the right
-    /// (the panels) and one of `leftInsetPixels` at the left (the control panel), and resets the
-    /// zoom limits around that zoom (1/50 to 500 times it). A band is given up as far as needed
-    /// to keep the box at least a third of the viewport high, and a quarter of it wide (the left
-    /// column is kept up to 60 % of the width, the right one up to 75 % less the left).
+    /// `bottomInsetPixels` below (the messages, the values table) and a column of
+    /// `rightInsetPixels` at the right (the panels) and one of `leftInsetPixels` at the left (the
+    /// control panel), and resets the zoom limits around that zoom (1/50 to 500 times it). The
+    /// top band is kept up to 60 % of the viewport (the HUD's wrapped lines at 200 % in a short
+    /// window), the bottom one up to 80 % of it less the top; the left column up to 75 % of the width, the right one up to 75 % less the left.
     void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0,
              double bottomInsetPixels = 0.0, double rightInsetPixels = 0.0,
              double leftInsetPixels = 0.0);

@@ -240,6 +240,9 @@ class Session {
     [[nodiscard]] const WindowLayout& layout() const { return layout_; }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const;
+    /// Where the values table docks (I): where it left the box largest when the box was last
+    /// fitted (BoxArea).
+    [[nodiscard]] const ValuesDock& valuesDock() const { return valuesDock_; }
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
     [[nodiscard]] std::string overlayFlags() const;
 
@@ -480,6 +483,7 @@ class Session {
     bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
     /// Where the box may go: the window's layout the app sent last.
     WindowLayout layout_;
+    ValuesDock valuesDock_;
     ViewOptions view_;
     bool showHelp_ = false;
     std::size_t helpPage_ = 0;

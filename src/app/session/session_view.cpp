@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <vector>
 
 #include "session/session.hpp"
 #include "session/session_text.hpp"
@@ -20,18 +21,49 @@ void Session::fit() {
     // The area the view left the box beside the panels as they are now.
     const BoxArea& a = layout_.area(showControls_, columnAsked());
     const double w = doc_.world.def().width, h = doc_.world.def().height, margin = 10.0;
-    double right = a.right;
-    if (a.spareColumn > 0.0) {
-        // A box that the window's height limits may leave width to spare: when it leaves the
-        // inspector's whole column, the box moves left, keeps its size, and the inspector
-        // (bottom right, on a click) does not cover it. Less room would only move the box off
-        // centre and still leave it covered.
-        camera_.fit(w, h, margin, a.top, a.bottom, right, a.left);
-        const double spare =
-            camera_.viewportWidth() - a.left - right - camera_.toScreen(w) - 2.0 * margin;
-        if (spare >= a.spareColumn) right += a.spareColumn;
+    // The values table docks where the box comes out largest: along the bottom with its rows,
+    // with fewer rows (the rest scroll), or at the right. Among places within 2 % of the
+    // largest the first is kept: a band of rows reads best.
+    std::vector<ValuesDock> docks;
+    if (view_.values) {
+        docks.push_back({false, a.valuesBand});
+        for (double band = a.valuesBand - a.valuesRow; a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0;
+             band -= a.valuesRow) {
+            docks.push_back({false, band});
+        }
+        if (a.valuesColumn > 0.0) docks.push_back({true, a.valuesColumn});
     }
-    camera_.fit(w, h, margin, a.top, a.bottom, right, a.left);
+    if (docks.empty()) docks.push_back({});
+    const auto fitWith = [&](const ValuesDock& d) {
+        // The table's column takes the side column's place (its charts fold away).
+        double right = d.right ? d.size : a.right;
+        const double bottom = a.bottom + (d.right ? 0.0 : d.size);
+        if (a.spareColumn > 0.0 && !d.right) {
+            // A box that the window's height limits may leave width to spare: when it leaves
+            // the inspector's whole column, the box moves left, keeps its size, and the
+            // inspector (bottom right, on a click) does not cover it. Less room would only move
+            // the box off centre and still leave it covered.
+            camera_.fit(w, h, margin, a.top, bottom, right, a.left);
+            const double spare =
+                camera_.viewportWidth() - a.left - right - camera_.toScreen(w) - 2.0 * margin;
+            if (spare >= a.spareColumn) right += a.spareColumn;
+        }
+        camera_.fit(w, h, margin, a.top, bottom, right, a.left);
+        // The zoom the area itself allows: the camera gives up insets in a window too small
+        // for them (the box then runs under a panel), which must not make a place look good.
+        const double usableW = camera_.viewportWidth() - a.left - right - 2.0 * margin;
+        const double usableH = camera_.viewportHeight() - a.top - bottom - 2.0 * margin;
+        return std::max(0.0, std::min(usableW / w, usableH / h));
+    };
+    std::vector<double> zooms;
+    for (const ValuesDock& d : docks)
+        zooms.push_back(fitWith(d));
+    const double best = *std::max_element(zooms.begin(), zooms.end());
+    std::size_t chosen = 0;
+    while (zooms[chosen] < 0.98 * best)
+        ++chosen;
+    valuesDock_ = view_.values ? docks[chosen] : ValuesDock{};
+    fitWith(docks[chosen]);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(), topLeft.x(),
             topLeft.y()));
@@ -109,10 +141,11 @@ void Session::handle(const cmd::SetShow& c) {
         if (!LastCollision::listening(c.on, doc_.world.size())) lastCollision_.clear();
         listenForCollisions();
     }
-    // The side column's panels change what the box is fitted beside.
+    // The side column's panels and the values table's band change what the box is fitted
+    // beside.
     using O = cmd::ShowOption;
     if (fitted_ && (c.option == O::Plots || c.option == O::Speeds || c.option == O::Profile ||
-                    c.option == O::Bins)) {
+                    c.option == O::Bins || c.option == O::Values)) {
         fit();
     }
 }

@@ -1,6 +1,8 @@
 #include "view/box_area.hpp"
 
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include "session/session.hpp"
 #include "view/hud.hpp"
@@ -12,9 +14,11 @@ namespace psb::app {
 namespace {
 
 /// The band above the box the HUD takes in a window that leaves it `room` pixels right of the
-/// control panel: its lines as wide as the readings get, wrapped to the room (frame_view.cpp
-/// wraps them so), with the note that the side column is folded when `folded`, one spare line
-/// for the notes about labels left out, and the margin.
+/// control panel: its lines wrapped to the room (frame_view.cpp wraps them so), each as many
+/// lines as the most it takes for readings short or long (a line broken between its parts can
+/// take more lines with shorter numbers: "momentum (0, 0) kg" and "m/s"), the note that the
+/// side column is folded when `folded`, room for the note about labels left out, and the
+/// margin.
 double hudBand(const TextMeasure& font, int room, bool folded) {
     HudData wide;
     wide.simTime = 123.45;
@@ -26,12 +30,37 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
     wide.arrowSeconds = 0.0123;
     wide.paused = true;
     wide.recording = true;
-    std::size_t lines = wrapHudLines(font, hudLines(wide), room - 8).size();
-    if (folded) {  // the longer of the two notes
-        lines += std::max(wrapLines(font, {foldedChartsNote(true)}, room - 8).size(),
-                          wrapLines(font, {foldedChartsNote(false)}, room - 8).size());
+    HudData lesson;  // a lesson's two balls at rest in the HUD's shortest figures
+    lesson.particles = 2;
+    lesson.kineticEnergy = 3.5;
+    lesson.momentum = Vec2(-1.0, 0.0);
+    lesson.spawnMass = 1.0;
+    lesson.spawnRadius = 0.12;
+    lesson.arrowSeconds = 1.0 / 3.0;
+    lesson.paused = true;
+    HudData zero = lesson;
+    zero.kineticEnergy = 0.0;
+    zero.momentum = Vec2::Zero();
+    HudData noArrows = zero;
+    noArrows.arrowSeconds = 0.0;
+    const int width = room - 8;
+    std::vector<std::size_t> most;
+    for (const HudData& d : {wide, lesson, zero, noArrows}) {
+        const std::vector<std::string> lines = hudLines(d);
+        most.resize(std::max(most.size(), lines.size()));
+        for (std::size_t k = 0; k < lines.size(); ++k)
+            most[k] = std::max(most[k], wrapHudLines(font, {lines[k]}, width).size());
     }
-    return static_cast<double>(lines + 1) * font.lineHeight() + 10.0;
+    std::size_t lines = 0;
+    for (const std::size_t n : most)
+        lines += n;
+    if (folded) {  // the longer of the two notes
+        lines += std::max(wrapLines(font, {foldedChartsNote(true)}, width).size(),
+                          wrapLines(font, {foldedChartsNote(false)}, width).size());
+    }
+    lines += std::max(wrapLines(font, {labelsLeftOutNote(99, false)}, width).size(),
+                      wrapLines(font, {labelsLeftOutNote(99, true)}, width).size());
+    return static_cast<double>(lines) * font.lineHeight() + 10.0;
 }
 
 }  // namespace
@@ -59,10 +88,26 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         } else {
             a.spareColumn = inspector;
         }
+        ValuesBand band = valuesBand(height, a.top, controls.pointPixels);
+        // The values table's column takes the side column's place, whose charts then fold
+        // away (the HUD says so: its band makes room for the note).
+        a.valuesColumn = valuesColumn(width, a.left, 0.0, height, a.top, a.bottom, band.least,
+                                      controls.pointPixels);
+        if (a.valuesColumn > 0.0 && columnAsked && fits) {
+            a.top = std::max(top, hudBand(hudFont, room, true));
+            band = valuesBand(height, a.top, controls.pointPixels);
+        }
+        a.valuesBand = band.height + kPanelGap;
+        a.valuesRow = band.row;
+        a.valuesLeast = std::min(band.least, band.height) + kPanelGap;
         return a;
     };
     WindowLayout l;
-    l.controlsFit = controlsFit(width, controls);
+    // The open panel also leaves the box its height: beside a panel at 200 % in a window 1024
+    // pixels wide the HUD's lines wrap to half the window's height.
+    const BoxArea besideOpen = area(controls.open, false);
+    l.controlsFit = controlsFit(width, controls) &&
+                    height - besideOpen.top - besideOpen.bottom >= kBoxMinHeight;
     // A panel opened in a window too narrow for it lies over the box, which stays where it was:
     // squeezed into what is left, it would be a sliver, partly under the panel all the same.
     const double open = l.controlsFit ? controls.open : controls.folded;
@@ -84,7 +129,23 @@ int controlsInset(const Session& session, const ControlsWidth& controls) {
     return static_cast<int>(session.controlsShown() ? controls.open : controls.folded);
 }
 
+PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls) {
+    if (!session.view().values) return {};
+    const Camera& camera = session.camera();
+    const BoxArea& a = session.layout().area(session.controlsShown(), session.columnAsked());
+    const ValuesDock& dock = session.valuesDock();
+    if (dock.right) {
+        return valuesColumnRect(camera.viewportWidth(), camera.viewportHeight(),
+                                static_cast<int>(a.top), static_cast<int>(dock.size));
+    }
+    // A band the session has not chosen yet (no fit since the table was shown): the full one.
+    const int band = static_cast<int>(dock.size > 0.0 ? dock.size : a.valuesBand) - kPanelGap;
+    return valuesBandRect(camera.viewportWidth(), camera.viewportHeight(),
+                          controlsInset(session, controls), band);
+}
+
 bool sideColumnFolded(const Session& session, const ControlsWidth& controls) {
+    if (session.columnAsked() && session.view().values && session.valuesDock().right) return true;
     return session.columnAsked() &&
            !sideColumnFits(session.camera().viewportWidth(), controlsInset(session, controls),
                            controls.pointPixels);

@@ -16,6 +16,7 @@
 //   └─────────┴──────────────────────────────────┴──────────┘
 
 #include "session/box_area.hpp"
+#include "view/pixel_rect.hpp"
 #include "view/text_measure.hpp"
 
 namespace psb::app {
@@ -39,14 +40,21 @@ struct ControlsWidth {
 
 /// Whether the open control panel leaves the box a usable width (kBoxMinRoom points, pixels at a
 /// pixel ratio of 1) in a window `width` pixels wide: a window made narrower folds it
-/// (WindowLayout::controlsFit).
+/// (WindowLayout::controlsFit, which also asks that the HUD's lines, wrapped beside it, leave the
+/// box kBoxMinHeight pixels).
 [[nodiscard]] bool controlsFit(int width, const ControlsWidth& controls);
 
 /// Pixels at the window's left the control panel takes now: open or folded, as in `session`.
 [[nodiscard]] int controlsInset(const Session& session, const ControlsWidth& controls);
 
 /// Whether `session`'s side-column panels are folded away: one is asked for, but the window
-/// leaves the column no room beside the box (sideColumnFits); the box keeps the width.
+/// leaves the column no room beside the box (sideColumnFits; the box keeps the width), or the
+/// values table docks at the right in its place (a short window).
 [[nodiscard]] bool sideColumnFolded(const Session& session, const ControlsWidth& controls);
+
+/// Where the values table docks while `session` shows it (valuesBandRect, in pixels; empty
+/// while it is hidden): the panel places its window there, the layout puts the other panels
+/// above it.
+[[nodiscard]] PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls);
 
 }  // namespace psb::app

@@ -144,12 +144,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     if (session.view().ruler) f.ruler = rulerView(session.ruler(), session.camera());
     if (stats.video.recording) {
-        // The top-right corner of the box's side of the window, clear of the HUD at its left.
+        // At the top of the side column (layoutPanels places it).
         RecordingMarkView mark;
         mark.label = recordingLabel(stats.video);
-        const PixelPoint size = textBoxSize(hudFont, {mark.label});
-        mark.at = {session.camera().viewportWidth() - size.x - kPanelMargin, kPanelMargin, size.x,
-                   size.y};
         f.recordingMark = mark;
     }
     std::uint64_t stillToDrop = 0;
@@ -185,13 +182,14 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // edges all round a disc (the drawing layer slides a label along its disc's side before
     // giving up, so a disc near an edge is not among these).
     if (session.view().labels) {
-        if (stats.labelsCrowded > 0) {
-            o.hud.push_back("Labels: " + std::to_string(stats.labelsCrowded) +
-                            " left out where they would overlap (zoom in)");
-        }
-        if (stats.labelsOffWindow > 0) {
-            o.hud.push_back("Labels: " + std::to_string(stats.labelsOffWindow) +
-                            " left out: no room beside the disc in the window (zoom out)");
+        // Wrapped as the readings are: at 200 % a note ran past the window's right edge.
+        for (const auto& [count, offWindow] :
+             {std::pair{stats.labelsCrowded, false}, std::pair{stats.labelsOffWindow, true}}) {
+            if (count == 0) continue;
+            for (std::string& line :
+                 wrapLines(hudFont, {labelsLeftOutNote(count, offWindow)}, hudRoom - 8)) {
+                o.hud.push_back(std::move(line));
+            }
         }
     }
     o.showHelp = session.helpShown();
@@ -215,7 +213,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // With the control panel open the selected particle's values are in it; the inspector
     // beside the box stays for the keyboard's edit prompt (Enter). Its long lines (a refusal's
     // reason) wrap at the width of its readings.
-    const int room = session.camera().viewportWidth() - left;
+    // Left of the values table where it docks at the right.
+    const int room = session.camera().viewportWidth() - left -
+                     (session.view().values && session.valuesDock().right
+                          ? static_cast<int>(session.valuesDock().size)
+                          : 0);
     const bool editing = session.prompt().active();
     if (f.selected && (!session.controlsShown() || editing)) {
         o.inspector = inspectorPanel(hudFont,
@@ -252,6 +254,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();
     req.scale = controls.pointPixels;
+    req.values = valuesTableRect(session, controls);
+    req.valuesRight = session.valuesDock().right;
+    if (f.recordingMark) {
+        // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).
+        const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});
+        req.recording = {text.x + hudFont.lineHeight() / 2 + 6, text.y};
+    }
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
         o.inspector = inspectorPanel(hudFont,
@@ -261,14 +270,12 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         req.inspector = textBoxSize(hudFont, o.inspector);
         f.layout = layoutPanels(req);
     }
-    if (f.recordingMark) {
-        // A HUD as wide as the window (a narrow one) has the corner: the mark goes below it.
-        PixelRect& m = f.recordingMark->at;
-        const PixelRect& hud = f.layout.hud;
-        if (hud.w > 0 && m.x < hud.x + hud.w && hud.x < m.x + m.w && m.y < hud.y + hud.h &&
-            hud.y < m.y + m.h) {
-            m.y = hud.y + hud.h + kPanelGap;
-        }
+    if (f.recordingMark) f.recordingMark->at = f.layout.recording;
+    if (f.grid || f.ruler) {
+        // The marks' labels are read whole: in the window right of the control panel, clear of
+        // every panel and of each other.
+        keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
+                            {left, 0, req.width - left, req.height}, panelRects(f.layout));
     }
     f.title =
         windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());

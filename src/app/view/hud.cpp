@@ -23,6 +23,12 @@ std::string foldedChartsNote(bool controlsOpen) {
                         : "Charts folded away: no room beside the box (widen the window)";
 }
 
+std::string labelsLeftOutNote(std::size_t count, bool offWindow) {
+    return "Labels: " + std::to_string(count) +
+           (offWindow ? " left out: no room beside the disc in the window (zoom out)"
+                      : " left out where they would overlap (zoom in)");
+}
+
 std::vector<std::string> hudLines(const HudData& d) {
     char buf[200];
     std::vector<std::string> lines;

@@ -60,6 +60,9 @@ struct ProfileData {
 /// The HUD's note while the side column's charts are folded away (sideColumnFits), with the
 /// way to get them back: fold the control panel while it is open, else widen the window.
 [[nodiscard]] std::string foldedChartsNote(bool controlsOpen);
+/// The HUD's note while `count` labels (S) are left out: where others were in the way, or with
+/// no side of their disc in the window (`offWindow`), with what to do about it.
+[[nodiscard]] std::string labelsLeftOutNote(std::size_t count, bool offWindow);
 
 /// The profile overlay, one line per stage then the frame's step and draw times.
 [[nodiscard]] std::vector<std::string> profileLines(const ProfileData& d);

@@ -5,10 +5,14 @@
 #include <cstdio>
 
 #include "session/units.hpp"
+#include "view/screen_layout.hpp"
 
 namespace psb::app {
 
 namespace {
+
+/// How far the reading's centre is from the ruler's middle, pixels.
+constexpr double kReadingOffset = 22.0;
 
 /// The smallest of 1, 2 or 5 × 10^k at least `least`.
 double roundStep(double least) {
@@ -109,8 +113,69 @@ RulerView rulerView(const LabRuler& ruler, const Camera& camera) {
     v.label.text = rulerLine(ruler);
     // Beside the middle, on the side of the ticks' normal turned to point down the screen.
     const Vec2 side = n.y() >= 0.0 ? n : Vec2(-n);
-    v.label.at = 0.5 * (v.a + v.b) + side * 22.0;
+    v.label.at = 0.5 * (v.a + v.b) + side * kReadingOffset;
     return v;
+}
+
+PixelRect labelRect(const MarkLabel& label, const TextMeasure& font, int pad) {
+    const int w = font.measure(label.text), h = font.lineHeight();
+    // As the drawing layer places the text: whole pixels, centred or from the left.
+    const int x = static_cast<int>(std::lround(label.at.x() - (label.left ? 0.0 : 0.5 * w)));
+    const int y = static_cast<int>(std::lround(label.at.y() - 0.5 * h));
+    return {x - pad, y - pad / 2, w + 2 * pad, h + pad};
+}
+
+void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& font,
+                         const PixelRect& room, const std::vector<PixelRect>& keepOut) {
+    const auto inside = [&room](const PixelRect& r) {
+        return r.x >= room.x && r.y >= room.y && r.x + r.w <= room.x + room.w &&
+               r.y + r.h <= room.y + room.h;
+    };
+    const auto clear = [&keepOut](const PixelRect& r) {
+        return std::none_of(keepOut.begin(), keepOut.end(),
+                            [&r](const PixelRect& k) { return overlaps(r, k); });
+    };
+    PixelRect reading{};
+    if (ruler != nullptr) {
+        MarkLabel& l = ruler->label;
+        const Vec2 middle = 0.5 * (ruler->a + ruler->b);
+        const Vec2 below = l.at - middle;  // the side chosen by rulerView
+        // The label's centre moved so that its rectangle lies in the room, if it can.
+        const auto slid = [&](Vec2 at) {
+            MarkLabel moved = l;
+            moved.at = at;
+            const PixelRect r = labelRect(moved, font, kReadingPad);
+            double dx = 0.0, dy = 0.0;
+            if (r.x < room.x) dx = room.x - r.x;
+            if (r.x + r.w + dx > room.x + room.w) dx = room.x + room.w - (r.x + r.w);
+            if (r.y < room.y) dy = room.y - r.y;
+            if (r.y + r.h + dy > room.y + room.h) dy = room.y + room.h - (r.y + r.h);
+            return Vec2(at + Vec2(dx, dy));
+        };
+        const Vec2 candidates[4] = {middle + below, middle - below, slid(middle + below),
+                                    slid(middle - below)};
+        Vec2 chosen = candidates[2];
+        for (const Vec2& c : candidates) {
+            MarkLabel moved = l;
+            moved.at = c;
+            const PixelRect r = labelRect(moved, font, kReadingPad);
+            if (inside(r) && clear(r)) {
+                chosen = c;
+                break;
+            }
+        }
+        l.at = Vec2(std::round(chosen.x()), std::round(chosen.y()));
+        reading = labelRect(l, font, kReadingPad);
+    }
+    if (grid != nullptr) {
+        std::vector<MarkLabel>& labels = grid->labels;
+        labels.erase(std::remove_if(labels.begin(), labels.end(),
+                                    [&](const MarkLabel& g) {
+                                        const PixelRect r = labelRect(g, font);
+                                        return !inside(r) || !clear(r) || overlaps(r, reading);
+                                    }),
+                     labels.end());
+    }
 }
 
 MarkLabel wallAngleLabel(const Vec2& a, const Vec2& b, const Camera& camera) {

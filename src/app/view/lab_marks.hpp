@@ -10,6 +10,8 @@
 
 #include "session/camera.hpp"
 #include "session/lab_ruler.hpp"
+#include "view/pixel_rect.hpp"
+#include "view/text_measure.hpp"
 
 namespace psb::app {
 
@@ -57,6 +59,22 @@ struct RulerView {
 inline constexpr double kRulerTickPixels = 8.0;
 
 [[nodiscard]] RulerView rulerView(const LabRuler& ruler, const Camera& camera);
+
+/// The rectangle `label` takes when drawn in `font`, pixels, with `pad` pixels of background
+/// around its text.
+[[nodiscard]] PixelRect labelRect(const MarkLabel& label, const TextMeasure& font, int pad = 0);
+
+/// The ruler's reading's background beyond its text, pixels each side (the drawing layer's).
+inline constexpr int kReadingPad = 4;
+
+/// The rule every measuring mark's label obeys: it is read whole. The ruler's reading goes
+/// where all of it is inside `room` (the window right of the control panel) and clear of
+/// `keepOut` (the panels): beside the ruler's middle on the side its ticks point down the
+/// screen, else on the other side, each slid along the room's edges if need be; a grid label
+/// that would cross the reading, a panel or the room's edge is left out (its line stays).
+/// Sizes are measured in `font`, the labels' font.
+void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& font,
+                         const PixelRect& room, const std::vector<PixelRect>& keepOut);
 
 /// The protractor of the Wall tool: a wall being drawn from `a` to `b` (metres) labelled with
 /// its length and its slope ("2.60 m, 20.0°") beyond its end `b`, in pixels.

@@ -17,6 +17,8 @@ struct PixelRect {
     int y = 0;
     int w = 0;
     int h = 0;
+
+    friend bool operator==(const PixelRect&, const PixelRect&) = default;
 };
 
 }  // namespace psb::app

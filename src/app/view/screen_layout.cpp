@@ -1,6 +1,7 @@
 #include "view/screen_layout.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace psb::app {
 
@@ -9,12 +10,42 @@ bool overlaps(const PixelRect& a, const PixelRect& b) {
     return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
 }
 
+std::vector<PixelRect> panelRects(const PanelLayout& l) {
+    std::vector<PixelRect> out;
+    for (const PixelRect& r : {l.hud, l.recording, l.profile, l.legend, l.messages, l.inspector,
+                               l.plots, l.speeds, l.bins, l.values}) {
+        if (r.w > 0 && r.h > 0) out.push_back(r);
+    }
+    return out;
+}
+
+ValuesBand valuesBand(int windowHeight, double top, double scale) {
+    const auto pixels = [scale](int points) { return static_cast<int>(std::ceil(points * scale)); };
+    ValuesBand b;
+    b.row = pixels(kValuesRowPoints);
+    b.least = pixels(kValuesChromePoints + kValuesRowPoints);
+    // Never up into the HUD's band, whatever the scale.
+    const int most = std::max(0, windowHeight - static_cast<int>(std::ceil(top)) - kPanelMargin);
+    b.height = std::min(most, pixels(kValuesChromePoints + kValuesBandRows * kValuesRowPoints));
+    return b;
+}
+
+int valuesColumn(int width, double left, double right, int height, double top, double bottom,
+                 int band, double scale) {
+    // A band that leaves the box its height is always as good.
+    if (height - top - bottom - band - kPanelGap >= kBoxMinHeight) return 0;
+    const double room = width - left - right;
+    const int column = static_cast<int>(
+        std::ceil(std::max(0.4 * room, kValuesColumnMinPoints * scale) + kPanelMargin));
+    return room - column >= kBoxMinRoom ? column : 0;
+}
+
 PanelLayout layoutPanels(const LayoutRequest& r) {
     PanelLayout l;
     const int m = kPanelMargin, gap = kPanelGap;
-    const int right = r.width - m;
+    int right = r.width - m;
     const int left = r.left + m;  // the leftmost a right-aligned panel may start
-    const int room = r.width - r.left - 2 * m;
+    int room = r.width - r.left - 2 * m;
     if (r.hud.x > 0 && r.hud.y > 0) l.hud = {r.left + 4, 4, r.hud.x, r.hud.y};
     const int hudRight = l.hud.w > 0 ? l.hud.x + l.hud.w : 0;
     const int hudBottom = l.hud.w > 0 ? l.hud.y + l.hud.h : 0;
@@ -27,6 +58,17 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         return PixelRect{x, y, size.x, size.y};
     };
     int bottom = r.height - m;
+    // The values table first, along the bottom: the other panels stand on it; or at the right:
+    // they go left of it.
+    if (r.values.w > 0 && room > 0) {
+        l.values = r.values;
+        if (r.valuesRight) {
+            right = l.values.x - gap;
+            room = right - left;
+        } else {
+            bottom = l.values.y - gap;
+        }
+    }
     const auto placeMessages = [&] {
         if (r.messages.x <= 0 || r.messages.y <= 0 || bottom - r.messages.y <= hudBottom) return;
         const PixelRect box{r.left + 4, bottom - r.messages.y, r.messages.x, r.messages.y};
@@ -46,10 +88,16 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     if (l.inspector.w > 0) bottom = l.inspector.y - gap;
 
     const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
-    const bool fits = sideColumnFits(r.width, r.left, r.scale);
+    // The values table at the right takes the column's place.
+    const bool fits = sideColumnFits(r.width, r.left, r.scale) && !(r.values.w > 0 && r.valuesRight);
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits;
     int top = 4;
+    // The recording mark first: it is there for a while and says so; the others stand under it.
+    if (r.recording.x > 0 && r.recording.y > 0 && r.recording.x <= room) {
+        l.recording = place(r.recording, std::max(top, kPanelMargin));
+        top = l.recording.y + l.recording.h + gap;
+    }
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
         if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;

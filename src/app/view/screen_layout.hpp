@@ -1,15 +1,20 @@
 #pragma once
 // Where the text and analysis panels go, as a pure function of the window size and what each
 // panel would need: the HUD at the top-left (right of the control panel's column), then a column at
-// the right edge holding, from the top, the profile and the momentum legend, and from the bottom
+// the right edge holding, from the top, the recording mark, the profile and the momentum legend,
+// and from the bottom
 // the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
 // column starts below the HUD when the window is too narrow for both side by side, panels shrink to
 // the room there is (the plots drop their least important rows first: rate, then py, then px), and
-// a panel that does not fit at its smallest is left out. A window too narrow for the column beside
-// the box (sideColumnFits) folds the column's panels away, and says so (columnFolded), instead of
-// laying them over the box. No two rectangles returned overlap.
+// a panel that does not fit at its smallest is left out. The values table (I) docks in a band
+// along the window's bottom, right of the control panel and under everything else (valuesBand):
+// the messages, the inspector and the column sit above it; or, in a window too short for that,
+// in a column at the right below the HUD (valuesColumn), left of which the other panels go. A window too narrow for the column
+// beside the box (sideColumnFits) folds the column's panels away, and says so (columnFolded),
+// instead of laying them over the box. No two rectangles returned overlap.
 
 #include <algorithm>
+#include <vector>
 
 #include "view/pixel_rect.hpp"
 
@@ -42,6 +47,56 @@ inline constexpr int kBoxMinRoom = 240;
     return windowWidth - leftInset - column >= kBoxMinRoom;
 }
 
+/// The values table's band (I), in points of the UI: its chrome (the line of its name and
+/// buttons, the line saying which way y counts, the header and units rows, the totals row, a
+/// horizontal scroll bar, the padding) and its particles' rows. The band holds up to
+/// kValuesBandRows rows (a lesson's few balls); more scroll. The gui's table keeps to these
+/// (section_values.cpp).
+inline constexpr int kValuesChromePoints = 136;
+inline constexpr int kValuesRowPoints = 21;
+inline constexpr int kValuesBandRows = 3;
+/// The values table's column, when it docks at the right (a short window, where a band along
+/// the bottom would leave the box too low), is 40 % of the room right of the control panel
+/// and at least this wide, points.
+inline constexpr int kValuesColumnMinPoints = 160;
+/// The box keeps at least this height beside the values table's band, pixels, for its
+/// column to be offered (a taller band is then not worth a narrower box).
+inline constexpr int kBoxMinHeight = 240;
+
+/// The values table's band, pixels: with its kValuesBandRows rows, the height of a row, and
+/// with one row.
+struct ValuesBand {
+    int height = 0;
+    int row = 0;
+    int least = 0;
+};
+
+/// The values table's band in a window `windowHeight` pixels high whose HUD's band is `top`
+/// pixels high, at `scale` pixels per point: never up into the HUD's band (then shorter than
+/// `least`: its rows scroll).
+[[nodiscard]] ValuesBand valuesBand(int windowHeight, double top, double scale);
+
+/// The values table's column at the right of a window `width` pixels wide of which `left`
+/// are the control panel's and `right` the side column's, at `scale` pixels per point, in a
+/// window `height` high whose box's area is `top` and `bottom` from its edges: 0 when the box
+/// would be left less than kBoxMinRoom beside it, or when a band along the bottom leaves the
+/// box kBoxMinHeight pixels (`band` high).
+[[nodiscard]] int valuesColumn(int width, double left, double right, int height, double top,
+                               double bottom, int band, double scale);
+
+/// The band's rectangle at the bottom of a window `width` × `height` pixels whose left `left`
+/// pixels are the control panel's, for a band `band` pixels high.
+[[nodiscard]] inline PixelRect valuesBandRect(int width, int height, int left, int band) {
+    return {left + kPanelMargin, height - kPanelMargin - band, width - left - 2 * kPanelMargin,
+            band};
+}
+
+/// The column's rectangle at the right of a window `width` × `height` pixels, below a HUD's
+/// band `top` pixels high, for a column `column` pixels wide (valuesColumn, with its margin).
+[[nodiscard]] inline PixelRect valuesColumnRect(int width, int height, int top, int column) {
+    return {width - column, top, column - kPanelMargin, height - top - kPanelMargin};
+}
+
 /// What to lay out; sizes in pixels, {0, 0} for a panel that is off.
 struct LayoutRequest {
     int width = 0;               ///< the window
@@ -49,9 +104,14 @@ struct LayoutRequest {
     int height = 0;              ///< the window
     PixelPoint hud{0, 0};        ///< the HUD's box (text plus padding)
     PixelPoint profile{0, 0};    ///< the profile overlay's box
+    PixelPoint recording{0, 0};  ///< the recording mark's box, at the top of the column
     PixelPoint legend{0, 0};     ///< the momentum legend's box
     PixelPoint messages{0, 0};   ///< the messages' box, at the bottom-left
     PixelPoint inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
+    /// The values table (valuesTableRect): along the bottom, or at the right (`valuesRight`);
+    /// w == 0: not shown.
+    PixelRect values{};
+    bool valuesRight = false;
     /// The inspector holds the open edit prompt, which has the keyboard: it is placed before the
     /// messages, which are left out where they would cover it.
     bool inspectorFirst = false;
@@ -65,6 +125,7 @@ struct LayoutRequest {
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
 struct PanelLayout {
     PixelRect hud{};
+    PixelRect recording{};
     PixelRect profile{};
     PixelRect legend{};
     PixelRect messages{};
@@ -72,6 +133,7 @@ struct PanelLayout {
     PixelRect plots{};
     PixelRect speeds{};
     PixelRect bins{};
+    PixelRect values{};     ///< the values table (valuesBandRect or valuesColumnRect)
     int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
     int plotRowHeight = 0;  ///< pixels per plot
     /// The profile, plots or histograms were asked for but folded away: the window leaves the
@@ -91,6 +153,9 @@ inline constexpr int kBinsMinHeight = 170;                  ///< pixels
 
 /// Lays out the panels `r` asks for.
 [[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);
+
+/// Every panel `layout` places (those that are off or left out are not listed).
+[[nodiscard]] std::vector<PixelRect> panelRects(const PanelLayout& layout);
 
 /// Whether two rectangles share a pixel (an empty one never does).
 [[nodiscard]] bool overlaps(const PixelRect& a, const PixelRect& b);

@@ -19,13 +19,38 @@ std::vector<std::string> wrapAtSpaces(std::string_view text, float room, const M
                 const std::size_t space = line.find(' ', at + 1);
                 const std::size_t end = space == std::string_view::npos ? line.size() : space;
                 const std::string_view word = line.substr(at, end - at);  // with its leading space
-                if (!current.empty() && measure(std::string(current).append(word)) > room) {
+                // A path wider than the room starts on this line and goes on after a separator
+                // (its folders a line each): it has no space to break at.
+                const bool path =
+                    word.find_first_of("/\\") != std::string_view::npos && measure(word) > room;
+                if (!current.empty() && !path &&
+                    measure(std::string(current).append(word)) > room) {
                     out.push_back(current);
                     const std::size_t first = word.find_first_not_of(' ');
                     current = std::string(indent);
                     if (first != std::string_view::npos) current.append(word.substr(first));
                 } else {
                     current.append(word);
+                }
+                while (measure(current) > room) {
+                    const std::size_t start = current.find_first_not_of(' ');
+                    std::size_t cut = std::string::npos;
+                    for (std::size_t k = current.find_first_of("/\\", start);
+                         k != std::string::npos; k = current.find_first_of("/\\", k + 1)) {
+                        if (k + 1 < current.size() && measure(current.substr(0, k + 1)) <= room)
+                            cut = k + 1;
+                    }
+                    std::size_t skip = 0;
+                    if (cut == std::string::npos) {
+                        // Not even the path's first folder fits after the words before it:
+                        // those words keep the line.
+                        const std::size_t lastSpace = current.rfind(' ');
+                        if (lastSpace == std::string::npos || lastSpace <= start) break;
+                        cut = lastSpace;
+                        skip = 1;
+                    }
+                    out.push_back(current.substr(0, cut));
+                    current = std::string(indent) + current.substr(cut + skip);
                 }
                 at = end;
             }

@@ -14,8 +14,9 @@ namespace psb::app {
 using MeasureText = std::function<float(std::string_view)>;
 
 /// `text` in lines no wider than `room` by `measure`, broken only at spaces (and at '\n'); a
-/// word wider than the room stands alone on its line, unbroken. Lines after the first of a
-/// paragraph start with `indent` in place of the spaces they were broken at.
+/// word wider than the room is broken after a '/' or '\\' where one leaves a piece that fits
+/// (a file's path, a folder a line), else stands alone on its line, unbroken. Lines after the first
+/// of a paragraph start with `indent` in place of the spaces they were broken at.
 [[nodiscard]] std::vector<std::string> wrapAtSpaces(std::string_view text, float room,
                                                     const MeasureText& measure,
                                                     std::string_view indent = "");

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -165,6 +167,93 @@ TEST_F(ControlPanelTest, PlayPauseAndStepAreTheSessionsCommands) {
     EXPECT_FALSE(session_->paused());
     click("Play/Pause");
     EXPECT_TRUE(session_->paused());
+}
+
+TEST_F(ControlPanelTest, AButtonWhoseWordsChangeStaysTheSameControl) {
+    // The keyboard's cursor holds a control by ImGui's identity: were it the words, Play
+    // turning into Pause would leave the cursor on nothing and a second Space would do nothing.
+    const auto idOf = [this](const std::string& name) {
+        frame();
+        const PanelItem* i = panel_.item(name);
+        EXPECT_NE(i, nullptr) << name;
+        return i != nullptr ? i->id : 0u;
+    };
+    const unsigned play = idOf("Play/Pause");
+    const unsigned start = idOf("Stopwatch start");
+    click("Play/Pause");
+    ASSERT_FALSE(session_->paused());
+    EXPECT_EQ(idOf("Play/Pause"), play) << "Pause is the Play button";
+    click("Stopwatch start");
+    ASSERT_TRUE(session_->stopwatch().running());
+    EXPECT_EQ(idOf("Stopwatch start"), start) << "Stop is the Start button";
+
+    // The Data section, below the window's bottom: opened, and recording started, directly.
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_NE(w, nullptr);
+    w->StateStorage.SetInt(ImHashStr("Data", 0, w->ID), 1);
+    const unsigned record = idOf("Record");
+    session_->apply(cmd::SetRecording{true, 1});
+    ASSERT_TRUE(session_->data().recording());
+    EXPECT_EQ(idOf("Record"), record) << "Stop recording is the Record button";
+}
+
+TEST_F(ControlPanelTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale) {
+    // At 200 % the table's window ran off the window's right edge; at 125 % it covered half of
+    // the box. Docked where the view keeps room for it, it does neither, at every size.
+    for (const auto& [width, height] : {std::pair{800, 600}, {1024, 768}, {1600, 1000}}) {
+        for (const float scale : {1.f, 1.25f, 2.f}) {
+            const std::string at = std::to_string(width) + "x" + std::to_string(height) + " at " +
+                                   std::to_string(scale);
+            SessionOptions so;
+            so.paused = true;
+            so.viewportWidth = width;
+            so.viewportHeight = height;
+            so.layout = windowLayout(*font_, width, height, controlsWidth(scale));
+            so.controls = so.layout.controlsFit;
+            Session s(makeWorld(defaultScene()), SceneMeta{"default"}, so);
+            s.apply(cmd::SetShow{ShowOption::Values, true});
+            gui_->setScale(scale);
+            ControlPanel panel;
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(static_cast<float>(width), static_cast<float>(height));
+                for (const Command& c :
+                     panel.build(s, FrameStats{}, static_cast<float>(height) / scale, scale))
+                    s.apply(c);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+            const PanelItem* w = panel.item("values window");
+            ASSERT_NE(w, nullptr) << at;
+            const float x0 = w->x0 * scale, y0 = w->y0 * scale, x1 = w->x1 * scale,
+                        y1 = w->y1 * scale;
+            EXPECT_GE(x0, 0.f) << at;
+            EXPECT_LE(x1, static_cast<float>(width) + 0.5f) << at << ": off the right edge";
+            EXPECT_LE(y1, static_cast<float>(height) + 0.5f) << at;
+            // Under the box or beside it (a short window docks it at the right), never over it.
+            const Camera::ScreenBox box =
+                s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
+            const bool under = y0 >= box.topLeft.y() + box.size.y() - 0.5;
+            const bool beside = x0 >= box.topLeft.x() + box.size.x() - 0.5;
+            EXPECT_TRUE(under || beside) << at << ": over the box";
+        }
+    }
+    gui_->setScale(1.f);
+}
+
+TEST_F(ControlPanelTest, NoLineOfThePanelRunsPastItsRightEdge) {
+    // Every section open, its vertical scroll bar shown: a line wider than the room left
+    // beside it was cut at the panel's edge ("...to see its va", a preset's description, the
+    // saved file's path). ImGui keeps the right end of everything laid out in the window.
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_NE(w, nullptr);
+    // Opened as a click would (their headers are below the window once the others are open).
+    for (const char* section : {"Scene", "Tools", "Video", "Data", "All particles", "Engine"})
+        w->StateStorage.SetInt(ImHashStr(section, 0, w->ID), 1);
+    frame();
+    frame();
+    EXPECT_TRUE(w->ScrollbarY) << "the case: the scroll bar takes its width from the lines";
+    EXPECT_LE(w->DC.CursorMaxPos.x, w->WorkRect.Max.x + 1.f)
+        << "something is laid out " << w->DC.CursorMaxPos.x - w->WorkRect.Max.x
+        << " points past the panel's right edge";
 }
 
 TEST_F(ControlPanelTest, ACheckboxSetsItsOption) {

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <stdexcept>
 
 #include <imgui.h>
@@ -9,6 +10,7 @@
 #include "gui/gui_context.hpp"
 #include "platform/assets.hpp"
 #include "render/offscreen_test.hpp"
+#include "view/palette.hpp"
 
 namespace psb::app {
 namespace {
@@ -212,6 +214,27 @@ TEST_F(GuiContextTest, AScaleOrThemeAskedForWithinAFrameTakesEffectAtTheNext) {
     EXPECT_NE(ImGui::GetStyle().Colors[ImGuiCol_Text].x, darkText.x) << "the light theme's text";
     EXPECT_EQ(gui.endFrame(), 0);
     EXPECT_FALSE(gui.takeProblem());
+}
+
+TEST_F(GuiContextTest, ASlidersDigitsReadOverItsHandleInBothThemes) {
+    // The value is written over the handle; an opaque blue handle hid the digit under it.
+    GuiContext gui(sdl_);
+    for (const Theme theme : {Theme::Dark, Theme::Light}) {
+        gui.setTheme(theme);
+        const ImGuiStyle& style = ImGui::GetStyle();
+        const auto over = [](ImVec4 top, ImVec4 under) {
+            const auto mix = [&](float a, float b) {
+                return static_cast<std::uint8_t>(255.f * (top.w * a + (1.f - top.w) * b) + 0.5f);
+            };
+            return Rgba{mix(top.x, under.x), mix(top.y, under.y), mix(top.z, under.z), 255};
+        };
+        const ImVec4 window = style.Colors[ImGuiCol_WindowBg];
+        const Rgba frame = over(style.Colors[ImGuiCol_FrameBg], window);
+        const ImVec4 frameOpaque(frame.r / 255.f, frame.g / 255.f, frame.b / 255.f, 1.f);
+        const Rgba handle = over(style.Colors[ImGuiCol_SliderGrabActive], frameOpaque);
+        const Rgba text = over(style.Colors[ImGuiCol_Text], ImVec4(0, 0, 0, 1));
+        EXPECT_GE(contrastRatio(text, handle), 4.5) << (theme == Theme::Light ? "light" : "dark");
+    }
 }
 
 TEST_F(GuiContextTest, AFrameWithoutAWindowNeedsASize) {

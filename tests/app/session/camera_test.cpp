@@ -86,6 +86,18 @@ TEST(Camera, FitKeepsATopInsetFreeForTheHud) {
     EXPECT_NEAR(c.worldToScreen(Vec2(350, 0)).x(), 300.0, kTol);
 }
 
+TEST(Camera, FitKeepsTheHudsBandFreeWhenItsLinesWrapToNearHalfTheWindow) {
+    // The ramp at 200 % in 1024 x 768 beside the open control panel: the HUD's lines wrap to
+    // a band 340 pixels high, and the messages take 111 at the bottom. The top inset was given
+    // up past a third of the window (256 pixels), and the box's top ran under the HUD's lines.
+    Camera c;
+    c.setViewport(400, 768);
+    c.fit(10.0, 10.0, 10.0, 340.0, 111.0);
+    const Camera::ScreenBox b = c.boxOnScreen(10.0, 10.0);
+    EXPECT_GE(b.topLeft.y(), 340.0 + 10.0 - kTol);
+    EXPECT_LE(b.topLeft.y() + b.size.y(), 768.0 - 111.0 - 10.0 + kTol);
+}
+
 TEST(Camera, PanMovesTheWorldWithTheDrag) {
     Camera c;
     c.setViewport(800, 800);

@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
+#include <vector>
+
 #include "view/box_area.hpp"
 #include "view/fixed_measure.hpp"
 #include "view/hud.hpp"
@@ -93,6 +97,51 @@ TEST(WindowLayout, TheHudsBandGrowsWhenItsLinesWrap) {
     EXPECT_GT(narrow.controlsOpen.top, wide.controlsOpen.top);
     // Beside the folded strip the HUD has more room than beside the open panel.
     EXPECT_LE(narrow.controlsFolded.top, narrow.controlsOpen.top);
+}
+
+TEST(WindowLayout, TheHudsBandHoldsItsWrappedLinesAndTheLabelsNoteAtEveryScale) {
+    // The HUD as the ramp and the lesson show it, with the note about labels left out, wrapped
+    // to the room right of the control panel: the box's area starts below all of it. At 200 %
+    // in 1024 x 768 beside the open panel the ramp's lines wrapped to more lines than the band
+    // counted ("momentum (0, 0) kg" and "m/s"), and the box's top ran under them.
+    HudData ramp;
+    ramp.particles = 3;
+    ramp.spawnMass = 1.0;
+    ramp.spawnRadius = 0.12;
+    ramp.arrowSeconds = 1.0 / 3.0;
+    ramp.paused = true;
+    HudData lesson = ramp;
+    lesson.particles = 2;
+    lesson.kineticEnergy = 3.5;
+    lesson.momentum = Vec2(-1.0, 0.0);
+    lesson.spawnMass = 3.0;
+    lesson.spawnRadius = 0.35;
+    HudData running = lesson;
+    running.simTime = 2.47;
+    running.paused = false;
+    running.momentum = Vec2(12.3, -4.56);
+    for (const double scale : {1.0, 1.25, 2.0}) {
+        const test::FixedMeasure font(scale);
+        const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
+        for (const auto& [width, height] : {std::pair{800, 600}, {1024, 768}, {1600, 1000}}) {
+            const WindowLayout l = windowLayout(font, width, height, controls);
+            for (const BoxArea& a : {l.controlsOpen, l.controlsFolded}) {
+                const int room = width - static_cast<int>(a.left);
+                for (const HudData& d : {ramp, lesson, running}) {
+                    std::vector<std::string> hud = wrapHudLines(font, hudLines(d), room - 8);
+                    for (const std::string& line :
+                         wrapLines(font, {labelsLeftOutNote(2, false)}, room - 8)) {
+                        hud.push_back(line);
+                    }
+                    const PixelPoint box = textBoxSize(font, hud);
+                    EXPECT_GE(a.top, 4 + box.y)
+                        << width << "x" << height << " at " << scale << ", " << room
+                        << " pixels beside the panel";
+                    EXPECT_LE(box.x, room) << "no line runs past the window's edge";
+                }
+            }
+        }
+    }
 }
 
 TEST(WindowLayout, TheHelpsPagesAreCountedForTheWindow) {

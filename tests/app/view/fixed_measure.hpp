@@ -12,17 +12,17 @@ namespace psb::app::test {
 class FixedMeasure final : public TextMeasure {
   public:
     /// At `scale` × the size (the UI's scale): `scale` × 8 pixels a character, × 17 a line.
-    explicit FixedMeasure(int scale = 1) : scale_(scale) {}
-    [[nodiscard]] int lineHeight() const override { return 17 * scale_; }
+    explicit FixedMeasure(double scale = 1.0) : scale_(scale) {}
+    [[nodiscard]] int lineHeight() const override { return static_cast<int>(17 * scale_); }
     [[nodiscard]] int measure(std::string_view text) const override {
         int n = 0;
         for (const char c : text)
             n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;  // not a continuation byte
-        return 8 * scale_ * n;
+        return static_cast<int>(8 * scale_ * n);
     }
 
   private:
-    int scale_;
+    double scale_;
 };
 
 }  // namespace psb::app::test

@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include <particle_sandbox/presets.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -94,6 +96,90 @@ TEST(EditPromptPanel, AnOpenPromptIsShownEvenWhereTheWholePanelWouldNotFit) {
     }));
 }
 
+/// The momentum lesson's world: a 10 m x 4 m box, two balls of 1 and 3 kg.
+World lessonWorld() {
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(2.0, 0.0), .mass = 1.0, .radius = 0.25});
+    w.add({.position = Vec2(7.0, 2.0), .velocity = Vec2(-1.0, 0.0), .mass = 3.0, .radius = 0.35});
+    return w;
+}
+
+/// `world` in a `width` x `height` window at `scale`, laid out as the app lays it out (the
+/// control panel open where it fits), the plots and the values table on.
+Session tableSession(World world, int width, int height, double scale) {
+    const test::FixedMeasure font(scale);
+    const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = width;
+    o.viewportHeight = height;
+    o.layout = windowLayout(font, width, height, controls);
+    o.controls = o.layout.controlsFit;
+    Session s(std::move(world), SceneMeta{"table"}, o);
+    s.apply(cmd::SetShow{ShowOption::Plots, true});
+    s.apply(cmd::SetShow{ShowOption::Values, true});
+    return s;
+}
+
+TEST(ValuesTable, DocksOnScreenOffTheBoxAndThePanelsAtEveryScale) {
+    // The values table (I) at 100 to 200 %, in windows from 800 x 600 up, the plots on, for
+    // the default scene's square box and the lesson's wide one: inside the window, under the
+    // HUD, clear of every other panel, and never over the box. As a window of its own it ran
+    // off the window's right edge at 200 % and covered half the box and the plots at 125 %;
+    // docked along the bottom it still covered the lesson's box at 200 % in 800 x 600.
+    for (const auto& [width, height] : {std::pair{800, 600}, {1024, 768}, {1600, 1000}}) {
+        for (const double scale : {1.0, 1.25, 1.5, 2.0}) {
+            for (const bool lesson : {false, true}) {
+                const test::FixedMeasure font(scale);
+                const ControlsWidth controls{310.0 * scale, 44.0 * scale, scale};
+                const Session s = tableSession(lesson ? lessonWorld() : makeWorld(defaultScene()),
+                                               width, height, scale);
+                const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
+                const PixelRect& v = f.layout.values;
+                const std::string at = std::to_string(width) + "x" + std::to_string(height) +
+                                       " at " + std::to_string(scale) +
+                                       (lesson ? ", the lesson" : ", the default scene");
+                ASSERT_GT(v.w, 0) << at;
+                EXPECT_GE(v.x, f.controlsInset + kPanelMargin) << at;
+                EXPECT_LE(v.x + v.w, width - kPanelMargin) << at;
+                EXPECT_LE(v.y + v.h, height - kPanelMargin) << at;
+                EXPECT_GE(v.y, f.layout.hud.y + f.layout.hud.h) << at << ": under the HUD";
+                EXPECT_EQ(v, valuesTableRect(s, controls)) << at << ": where the panel puts it";
+                for (const PixelRect& other : {f.layout.hud, f.layout.messages, f.layout.plots,
+                                               f.layout.legend, f.layout.inspector}) {
+                    EXPECT_FALSE(overlaps(v, other)) << at;
+                }
+                const Camera::ScreenBox box =
+                    s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
+                const PixelRect onScreen{static_cast<int>(box.topLeft.x()),
+                                         static_cast<int>(box.topLeft.y()),
+                                         static_cast<int>(box.size.x()),
+                                         static_cast<int>(box.size.y())};
+                EXPECT_FALSE(overlaps(v, onScreen)) << at << ": over the box";
+                // Readable: a sixth of the window's height for the square box (beside the
+                // panel open at 125 % in 800 x 600), 40 % of that for the wide one.
+                EXPECT_GE(box.size.y(), height / 6.0 * (lesson ? 0.4 : 1.0)) << at;
+            }
+        }
+    }
+}
+
+TEST(ValuesTable, InAShortWindowItDocksWhereTheBoxComesOutLargest) {
+    // The lesson at 200 % in 800 x 600: a band along the bottom, even with one row, would
+    // leave the box no height under the HUD; at the right it leaves the box most of the width.
+    const Session tall = tableSession(lessonWorld(), 800, 600, 2.0);
+    EXPECT_TRUE(tall.valuesDock().right);
+    EXPECT_GE(tall.camera().boxOnScreen(10.0, 4.0).size.x(), 280.0);
+    // At 100 % in 1600 x 1000 the band has all its rows.
+    const Session big = tableSession(lessonWorld(), 1600, 1000, 1.0);
+    EXPECT_FALSE(big.valuesDock().right);
+    EXPECT_EQ(big.valuesDock().size,
+              big.layout().area(big.controlsShown(), big.columnAsked()).valuesBand);
+}
+
 TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
     // Labels left out because others were in the way, and because no side of the disc was in
     // the window: two reasons, two different lines (a label only running off the window's
@@ -113,6 +199,30 @@ TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
     EXPECT_TRUE(has("Labels: 1 left out: no room beside the disc in the window"));
 }
 
+TEST(LabelsLeftOut, TheHudsNoteWrapsWithinTheWindowAtTwiceTheScale) {
+    // At 200 % in 800 x 600 the note ran past the window's right edge ("...would overla").
+    const test::FixedMeasure font(2.0);
+    const ControlsWidth controls{620.0, 88.0, 2.0};
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 800;
+    o.viewportHeight = 600;
+    o.layout = windowLayout(font, 800, 600, controls);
+    o.controls = false;
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    s.apply(cmd::SetShow{ShowOption::Labels, true});
+    FrameStats stats;
+    stats.labelsCrowded = 2;
+    const FrameView f = buildFrame(s, stats, font, font, controls);
+    std::string said;
+    for (const std::string& line : f.overlays.hud) {
+        EXPECT_LE(f.layout.hud.x + font.measure(line) + 8, 800) << line;
+        said += line;
+    }
+    EXPECT_NE(said.find("Labels: 2 left out"), std::string::npos);
+    EXPECT_NE(said.find("(zoom in)"), std::string::npos);
+}
+
 TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
     const Session s = sessionIn(1600, 800, true);
     const test::FixedMeasure font;
@@ -129,6 +239,26 @@ TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
     EXPECT_GT(r.x, 800);  // the right half, away from the HUD at the left
     EXPECT_GE(r.y, 0);
     EXPECT_LT(r.y, 40);
+}
+
+TEST(RecordingMark, TheMomentumLegendAndTheProfileGoUnderItNotUnderIt) {
+    // The mark was put in the window's top-right corner after the layout, where the momentum
+    // legend (V) already was: "REC" covered the legend's first line.
+    Session s = sessionIn(1280, 800, true);
+    s.apply(cmd::SetShow{ShowOption::Momentum, true});
+    s.apply(cmd::SetShow{ShowOption::Profile, true});
+    const test::FixedMeasure font;
+    FrameStats stats;
+    stats.video.recording = true;
+    const FrameView f = buildFrame(s, stats, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.recordingMark.has_value());
+    const PixelRect& mark = f.recordingMark->at;
+    ASSERT_GT(f.layout.legend.w, 0);
+    ASSERT_GT(f.layout.profile.w, 0);
+    EXPECT_FALSE(overlaps(mark, f.layout.legend));
+    EXPECT_FALSE(overlaps(mark, f.layout.profile));
+    EXPECT_FALSE(overlaps(mark, f.layout.hud));
+    EXPECT_EQ(mark.x + mark.w, 1280 - kPanelMargin) << "still in the top-right corner";
 }
 
 TEST(RecordingMark, InANarrowWindowItGoesBelowTheHudNotOverIt) {

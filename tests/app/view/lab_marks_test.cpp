@@ -5,7 +5,9 @@
 
 #include <algorithm>
 
+#include "view/fixed_measure.hpp"
 #include "view/lab_marks.hpp"
+#include "view/screen_layout.hpp"
 
 namespace psb::app {
 namespace {
@@ -102,6 +104,38 @@ TEST(RulerView, TicksAtRoundStepsAndItsReadingBesideIt) {
     EXPECT_EQ(rulerLine(r), "5.00 m, 53.1\u00b0 (horizontal 3.00 m, vertical 4.00 m)");
     // Zoomed far out, the ticks stay countable.
     EXPECT_LE(rulerView(r, camera(1e-3)).ticks.size(), 2001u);
+}
+
+TEST(MarkLabels, TheRulersReadingIsReadWholeBesideThePanelAndNoGridLabelCrossesIt) {
+    // The ramp lesson's ruler on the top ramp, near the left wall, beside the control panel
+    // (310 pixels): its reading, centred on the ruler's middle, ran under the panel and lost its
+    // first digit (".55 m"), and a grid label along the top edge was drawn across it.
+    const test::FixedMeasure font;
+    const Camera c = camera(100.0, Vec2(-3.3, -0.2));  // the box's top-left at (330, 20)
+    LabRuler r;
+    r.place(8.0, 5.0);
+    r.take(LabRuler::Part::EndA, r.a());
+    r.moveTo(Vec2(0.2, 0.75));
+    r.take(LabRuler::Part::EndB, r.b());
+    r.moveTo(Vec2(0.9, 1.0));
+    RulerView ruler = rulerView(r, c);
+    GridView grid = gridView(c, 8.0, 5.0);
+    const PixelRect room{310, 0, 490, 600};
+    ASSERT_LT(labelRect(ruler.label, font, kReadingPad).x, room.x) << "the case: under the panel";
+    const std::size_t labels = grid.labels.size();
+    const PixelRect hud{320, 0, 400, 12};
+    keepMarkLabelsClear(&grid, &ruler, font, room, {hud});
+    const PixelRect reading = labelRect(ruler.label, font, kReadingPad);
+    EXPECT_GE(reading.x, room.x);
+    EXPECT_LE(reading.x + reading.w, room.x + room.w);
+    EXPECT_FALSE(overlaps(reading, hud));
+    for (const MarkLabel& l : grid.labels) {
+        EXPECT_FALSE(overlaps(labelRect(l, font), reading)) << l.text;
+        EXPECT_FALSE(overlaps(labelRect(l, font), hud)) << l.text;
+        EXPECT_GE(labelRect(l, font).x, room.x) << l.text;
+    }
+    EXPECT_LT(grid.labels.size(), labels) << "the labels under the reading are left out";
+    EXPECT_GT(grid.labels.size(), labels / 2) << "the others stay";
 }
 
 TEST(WallAngleLabel, TheWallBeingDrawnReadsItsLengthAndSlopeBeyondItsEnd) {

@@ -19,7 +19,8 @@ TEST(WordWrap, BreaksOnlyAtSpacesAtEveryWidth) {
     const std::string text =
         "Balls poured through 8 rows of pegs under g = 9.81 m/s², restitution 0.30, p = 1/2; "
         "a ball 2.50 mm across.";
-    for (int room = 1; room <= static_cast<int>(text.size()) + 1; ++room) {
+    // From the widest word up: a narrower room breaks "m/s²" after its '/', as a path.
+    for (int room = 7; room <= static_cast<int>(text.size()) + 1; ++room) {
         const std::vector<std::string> lines = wrapAtSpaces(text, room, characters);
         std::string joined;
         for (const std::string& line : lines) {
@@ -33,6 +34,20 @@ TEST(WordWrap, BreaksOnlyAtSpacesAtEveryWidth) {
         }
         EXPECT_EQ(joined, text) << "room " << room << ": the lines are the text broken at spaces";
     }
+}
+
+TEST(WordWrap, APathWiderThanTheLineGoesOnAfterASeparator) {
+    // A saved file's path has no space: it ran past the panel's edge, cut.
+    const std::string text = "Saved to /home/teacher/lessons/momentum/collision-2.json";
+    const auto lines = wrapAtSpaces(text, 24, characters);
+    ASSERT_EQ(lines.size(), 3u);
+    EXPECT_EQ(lines[0], "Saved to /home/teacher/");
+    EXPECT_EQ(lines[1], "lessons/momentum/");
+    EXPECT_EQ(lines[2], "collision-2.json");
+    for (const std::string& line : lines)
+        EXPECT_LE(line.size(), 24u) << line;
+    // A word without a separator still stands whole.
+    EXPECT_EQ(wrapAtSpaces("a 0123456789", 5, characters).back(), "0123456789");
 }
 
 TEST(WordWrap, KeepsLineBreaksAndIndentsContinuations) {
