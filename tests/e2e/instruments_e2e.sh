@@ -88,6 +88,16 @@ grep -qP "^total\t\t\t\t\t-1.00\t0\t3.50\t4.00$" <<<"$values" ||
 grep -qP "^2\t[0-9.]+\t2.00\t0.500\t0\t1.50\t0\t0.375\t3.00$" <<<"$values" ||
     fail "ball 2's row is not v = (0.5, 0), p = (1.5, 0): $values"
 pass "the values table: $(tail -1 <<<"$values" | tr '\t' ' ')"
+# An 800-pixel window shows the table's first columns: it scrolls sideways (wheel sideways over
+# it) to the mass, as a user would.
+read -r tx ty < <(ctl "values 1 x")
+for ((turn = 0; turn < 20; turn++)); do
+    read -r mx _ < <(ctl "values 1 mass")
+    ((mx < WX + 760)) && break
+    xdotool mousemove "$tx" "$ty" sleep 0.1 click 6  # no --sync: the pointer may be there
+    sleep 0.2
+done
+((mx < WX + 760)) || fail "the values table does not scroll to its mass column (at $mx)"
 type_into "values 1 mass" 2
 wait_log "\[I\] Edited particle 1: mass 2 kg"
 snap edited

@@ -313,6 +313,9 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             }
             using Lines = std::array<std::array<char, 64>, 5>;
             std::vector<Lines> texts(visible.size());
+            // The short form, where the full labels find no clear place (label_places.hpp): whose
+            // ball, its mass and its velocity.
+            std::vector<std::array<std::array<char, 64>, 2>> shortTexts(visible.size());
             std::vector<LabelAsk> asks(visible.size());
             const Axes axes = options.axes(world.def());  // vy up or down, as the user reads it
             for (std::size_t k = 0; k < visible.size(); ++k) {
@@ -334,9 +337,18 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                               quantity(m * vy, "", false).c_str());
                 std::snprintf(lines[4].data(), lines[4].size(), "mass: %s",
                               quantity(m, "kg", false).c_str());
+                auto& brief = shortTexts[k];
+                std::snprintf(brief[0].data(), brief[0].size(), "particle %llu, %s",
+                              static_cast<unsigned long long>(particleNumber(p.id[i])),
+                              quantity(m, "kg", false).c_str());
+                std::snprintf(brief[1].data(), brief[1].size(), "v (%.2f, %.2f) m/s",
+                              twoDecimals(vx), twoDecimals(vy));
                 int width = 0;
                 for (const auto& l : lines)
                     width = std::max(width, labelFont_->measure(l.data()));
+                int shortWidth = 0;
+                for (const auto& l : brief)
+                    shortWidth = std::max(shortWidth, labelFont_->measure(l.data()));
                 // A box of fixed pixel size at every zoom, at whole pixels, 2 px clear of the
                 // disc (view/label_places.hpp chooses where).
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
@@ -345,6 +357,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + 2;
                 asks[k].disc = {cx - r, cy - r, 2 * r, 2 * r};
                 asks[k].size = {width + 4, 5 * lh + 1};
+                asks[k].shortSize = {shortWidth + 4, 2 * lh + 1};
                 asks[k].inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
                                 p.x[i] <= world.def().width && p.y[i] <= world.def().height;
             }
@@ -381,8 +394,11 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                                      static_cast<float>(box.x + box.w),
                                      static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
                 }
-                for (int line = 0; line < 5; ++line) {
-                    const char* text = texts[k][static_cast<std::size_t>(line)].data();
+                const int lineCount = place.shortForm ? 2 : 5;
+                for (int line = 0; line < lineCount; ++line) {
+                    const auto at = static_cast<std::size_t>(line);
+                    const char* text =
+                        place.shortForm ? shortTexts[k][at].data() : texts[k][at].data();
                     const float x = static_cast<float>(box.x + 2);
                     const float y = static_cast<float>(box.y + 1 + line * lh);
                     if (place.overDiscs) {

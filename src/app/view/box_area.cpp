@@ -14,7 +14,8 @@ namespace psb::app {
 namespace {
 
 /// The band above the box the HUD takes in a window that leaves it `room` pixels right of the
-/// control panel: its lines wrapped to the room (frame_view.cpp wraps them so), each as many
+/// control panel: its lines wrapped to the room (frame_view.cpp wraps them so), the key to the
+/// discs' shades among them, each as many
 /// lines as the most it takes for readings short or long (a line broken between its parts can
 /// take more lines with shorter numbers: "momentum (0, 0) kg" and "m/s"), the note that the
 /// side column is folded when `folded`, room for the note about labels left out, and the
@@ -30,6 +31,8 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
     wide.arrowSeconds = 0.0123;
     wide.paused = true;
     wide.recording = true;
+    wide.lightestMass = 0.00123;  // the shade's key: a scene of several masses
+    wide.heaviestMass = 123.45;
     HudData lesson;  // a lesson's two balls at rest in the HUD's shortest figures
     lesson.particles = 2;
     lesson.kineticEnergy = 3.5;

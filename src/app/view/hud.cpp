@@ -59,7 +59,7 @@ std::vector<std::string> hudLines(const HudData& d) {
     lines.push_back(last + " | H: help");
     if (d.heaviestMass > d.lightestMass) {
         // The shading's key, where the discs are: without it a deeper shade reads as a team.
-        std::snprintf(buf, sizeof buf, "Shade shows mass: darker = heavier (%s to %s)",
+        std::snprintf(buf, sizeof buf, "Darker discs are heavier (%s to %s)",
                       quantity(d.lightestMass, "", false).c_str(),
                       quantity(d.heaviestMass, "kg", false).c_str());
         lines.emplace_back(buf);

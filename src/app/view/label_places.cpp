@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 #include <utility>
 
 #include "view/screen_layout.hpp"
@@ -91,6 +92,7 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
         LabelPlace& p = out[i];
         const auto take = [&](const PixelRect& r) {
             p.at = r;
+            p.acrossWall = crossesWalls(r);
             placed.push_back(r);
         };
         const auto firstBeside = [&](bool inRoom, bool overDiscs, bool acrossWalls) {
@@ -147,35 +149,60 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
     return out;
 }
 
-}  // namespace
+/// How bad a placing is: labels left out, then labels over discs, then across a wall.
+std::tuple<std::size_t, std::size_t, std::size_t> cost(const std::vector<LabelPlace>& places) {
+    std::size_t out = 0, over = 0, across = 0;
+    for (const LabelPlace& p : places) {
+        out += p.at.w == 0;
+        over += p.overDiscs;
+        across += p.acrossWall;
+    }
+    return {out, over, across};
+}
 
-std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const PixelRect& window,
-                                    const PixelRect& walls, const std::vector<PixelRect>& keepOut) {
+bool isClean(const std::vector<LabelPlace>& places) {
+    return cost(places) == std::tuple<std::size_t, std::size_t, std::size_t>{0, 0, 0};
+}
+
+/// placeLabels in the sizes `asks` give: in order, then, in a small scene, a few times with the
+/// labels that fared worst first, keeping the best placing.
+std::vector<LabelPlace> placeBest(const std::vector<LabelAsk>& asks, const PixelRect& window,
+                                  const PixelRect& walls, const std::vector<PixelRect>& keepOut) {
     std::vector<std::size_t> order(asks.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = i;
     std::vector<LabelPlace> best = placeInOrder(asks, order, window, walls, keepOut);
-    // How bad a placing is: labels left out, then labels over discs.
-    const auto cost = [](const std::vector<LabelPlace>& places) {
-        std::size_t out = 0, over = 0;
-        for (const LabelPlace& p : places) {
-            out += p.at.w == 0;
-            over += p.overDiscs;
-        }
-        return std::pair{out, over};
-    };
     // In a small scene a label placed first can take the one place another had: the labels
     // that fared worst go first, a few times, and the best placing is kept.
-    for (int attempt = 0; attempt < 4 && asks.size() <= kMaxLeaderLabels &&
-                          cost(best) != std::pair<std::size_t, std::size_t>{0, 0};
+    for (int attempt = 0; attempt < 4 && asks.size() <= kMaxLeaderLabels && !isClean(best);
          ++attempt) {
         std::stable_partition(order.begin(), order.end(), [&best](std::size_t i) {
-            return best[i].at.w == 0 || best[i].overDiscs;
+            return best[i].at.w == 0 || best[i].overDiscs || best[i].acrossWall;
         });
         std::vector<LabelPlace> again = placeInOrder(asks, order, window, walls, keepOut);
         if (cost(again) < cost(best)) best = std::move(again);
     }
     return best;
+}
+
+}  // namespace
+
+std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const PixelRect& window,
+                                    const PixelRect& walls, const std::vector<PixelRect>& keepOut) {
+    std::vector<LabelPlace> best = placeBest(asks, window, walls, keepOut);
+    const bool shortForms =
+        !asks.empty() && std::all_of(asks.begin(), asks.end(), [](const LabelAsk& a) {
+            return a.shortSize.x > 0 && a.shortSize.y > 0;
+        });
+    if (isClean(best) || !shortForms) return best;
+    std::vector<LabelAsk> shorter = asks;
+    for (LabelAsk& a : shorter)
+        a.size = a.shortSize;
+    std::vector<LabelPlace> brief = placeBest(shorter, window, walls, keepOut);
+    if (!(cost(brief) < cost(best))) return best;
+    for (LabelPlace& p : brief)
+        p.shortForm = true;
+    return brief;
 }
 
 }  // namespace psb::app

@@ -16,7 +16,10 @@
 //      them);
 //
 // and is left out when none is free. Free: inside the window, clear of the labels already
-// placed and of the panels.
+// placed and of the panels. Where that leaves a label out, over discs or across a wall and the
+// labels have a short form (LabelAsk::shortSize), every label takes its short form if that
+// places them better (a small box at 200 %: two lines beside each ball rather than five over
+// the walls).
 
 #include <vector>
 
@@ -29,6 +32,7 @@ struct LabelAsk {
     PixelRect disc;      ///< the disc's bounding square, pixels, with the gap kept round it
     PixelPoint size;     ///< the label's box, pixels
     bool inBox = false;  ///< the disc is inside the walled box: its label stays in it if it can
+    PixelPoint shortSize{0, 0};  ///< its short form's box, pixels; {0, 0}: none
 };
 
 /// Where one label goes.
@@ -38,6 +42,10 @@ struct LabelPlace {
     bool overDiscs = false;
     /// Away from its disc (the ring rule): a line joins its nearest edge to the disc.
     bool leader = false;
+    /// Across a wall (the fourth rule).
+    bool acrossWall = false;
+    /// In its short form (every label is, or none).
+    bool shortForm = false;
     /// Left out with no side of its disc inside the window at all (a disc nearly the window's
     /// size), rather than for want of a free place.
     bool offWindow = false;

@@ -163,7 +163,7 @@ TEST(Hud, MassesThatDifferAreKeyedToTheirShadeAndEqualOnesAreNotMentioned) {
     d.lightestMass = 1.0;
     d.heaviestMass = 3.0;
     const auto lines = hudLines(d);
-    EXPECT_EQ(lines.back(), "Shade shows mass: darker = heavier (1.00 to 3.00 kg)");
+    EXPECT_EQ(lines.back(), "Darker discs are heavier (1.00 to 3.00 kg)");
 }
 
 }  // namespace

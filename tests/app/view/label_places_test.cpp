@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -107,6 +108,43 @@ TEST(LabelPlaces, ALabelThatFitsBesideItsBallStaysThereWithoutALeader) {
         EXPECT_FALSE(places[i].leader);
         EXPECT_EQ(places[i].at.y + places[i].at.h, asks[i].disc.y) << "above its ball";
     }
+}
+
+TEST(LabelPlaces, LabelsWithNoClearPlaceTakeTheirShortFormRatherThanCrossAWall) {
+    // The original program's six balls at 800 x 600 (a box 405 pixels square between the
+    // panel, the HUD and the messages): their five-line labels (170 x 71) fit only across the
+    // walls. Their two-line forms (150 x 29) fit inside the box, clear of every ball.
+    const PixelRect window{0, 0, 800, 600};
+    const PixelRect box{353, 122, 405, 405};
+    const std::vector<PixelRect> panels = {
+        {0, 0, 310, 600}, {314, 4, 464, 72}, {314, 537, 440, 55}};
+    std::vector<LabelAsk> asks = {ball(437, 190, 16, {170, 71}), ball(537, 173, 7, {170, 71}),
+                                  ball(652, 213, 25, {170, 71}), ball(496, 271, 11, {170, 71}),
+                                  ball(600, 295, 5, {170, 71}),  ball(698, 313, 21, {170, 71})};
+    const std::vector<LabelPlace> full = placeLabels(asks, window, box, panels);
+    const bool fullIsClean = std::none_of(full.begin(), full.end(), [](const LabelPlace& p) {
+        return p.at.w == 0 || p.overDiscs || p.acrossWall;
+    });
+    ASSERT_FALSE(fullIsClean) << "the case no longer needs the short form";
+    EXPECT_FALSE(full[0].shortForm) << "no short form asked: the full labels stay";
+    for (LabelAsk& a : asks)
+        a.shortSize = {150, 29};
+    const std::vector<LabelPlace> places = placeLabels(asks, window, box, panels);
+    expectReadable(asks, places, window, panels);
+    for (const LabelPlace& p : places) {
+        EXPECT_TRUE(p.shortForm);
+        EXPECT_FALSE(p.acrossWall);
+        EXPECT_EQ(p.at.h, 29);
+        EXPECT_GE(p.at.x, box.x);
+        EXPECT_GE(p.at.y, box.y);
+        EXPECT_LE(p.at.x + p.at.w, box.x + box.w);
+        EXPECT_LE(p.at.y + p.at.h, box.y + box.h);
+    }
+    // Where the full labels fit, they are kept.
+    const std::vector<LabelAsk> two = {{{240, 290, 20, 20}, {140, 86}, true, {100, 29}},
+                                       {{540, 290, 20, 20}, {140, 86}, true, {100, 29}}};
+    for (const LabelPlace& p : placeLabels(two, window, {100, 100, 600, 400}, {}))
+        EXPECT_FALSE(p.shortForm);
 }
 
 TEST(LabelPlaces, WithNoFreePlaceALabelIsLeftOutAndSaysWhy) {
