@@ -153,7 +153,9 @@ pass "fold and open: box left edge $before -> $folded -> $opened px"
 
 # --- 8. leaving -------------------------------------------------------------------------------
 xdotool mousemove $((WX + 700)) $((WY + 400))
-key Escape  # saved in step 5 and only run since: nothing unsaved, Esc quits at once
+# Saved in step 5 and only run since: nothing unsaved, Esc quits at once (the window may be gone
+# before xdotool sends the key's release: quit_with expects that).
+quit_with Escape
 wait_exit
 kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
 APP_PID=""
