@@ -21,27 +21,6 @@ struct ContactPair {
     }
 };
 
-/// Appends (i, j) for each j in `partners` (all > i), in ascending j. The list is short (the
-/// partners of one particle), so insertion sort is the fast choice.
-inline void appendPartners(std::uint32_t i, std::uint32_t* partners, std::size_t n,
-                           std::vector<ContactPair>& out) {
-    for (std::size_t a = 1; a < n; ++a) {
-        const std::uint32_t v = partners[a];
-        std::size_t b = a;
-        for (; b > 0 && partners[b - 1] > v; --b)
-            partners[b] = partners[b - 1];
-        partners[b] = v;
-    }
-    for (std::size_t a = 0; a < n; ++a)
-        out.push_back({i, partners[a]});
-}
-
-inline void appendPartners(std::uint32_t i, std::vector<std::uint32_t>& partners,
-                           std::vector<ContactPair>& out) {
-    appendPartners(i, partners.data(), partners.size(), out);
-    partners.clear();
-}
-
 /// Sorts pairs[from..] into ascending (i, j) order; every index is below `indexLimit`. Pairs
 /// must be distinct (then any correct sort gives the same list). LSD radix sort on 11-bit
 /// digits of j, then of i, using `scratch`; short lists use insertion into std::sort.

@@ -42,7 +42,6 @@ class AccuracyMonitor {
     /// Relative drift of `kineticEnergy` from the reference; NaN without a reference or when
     /// the reference is 0 (nothing moving).
     [[nodiscard]] double drift(double kineticEnergy) const;
-    [[nodiscard]] double referenceEnergy() const { return reference_; }
     /// Deepest overlap met by the last frame that stepped or present in the state measured
     /// last, metres.
     [[nodiscard]] double overlap() const { return std::max(overlap_, stateOverlap_); }

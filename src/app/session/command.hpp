@@ -1,6 +1,6 @@
 #pragma once
-// Every change a user makes, as a value. Keys, the mouse, the tests and (next) on-screen
-// buttons all turn what they mean into a Command and hand it to Session::apply, the one place
+// Every change a user makes, as a value. Keys, the mouse, the panel's controls and the tests
+// all turn what they mean into a Command and hand it to Session::apply, the one place
 // where commands change anything; keeping them plain values is what lets an undo history or a
 // recorded session replay them later.
 //

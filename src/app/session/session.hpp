@@ -171,7 +171,6 @@ class Session {
     // Data out (data_recorder.hpp, session_data.cpp).
     /// The run's series, the recorded trajectories and collisions.
     [[nodiscard]] const DataRecorder& data() const { return data_; }
-    /// The last collision card's content (last_collision.hpp), while the card is shown.
     /// The stopwatch on simulated time (lab_stopwatch.hpp).
     [[nodiscard]] const LabStopwatch& stopwatch() const { return stopwatch_; }
     /// The ruler (lab_ruler.hpp), drawn while view().ruler.

@@ -44,9 +44,8 @@ int strongEvery(double step) {
 
 GridView gridView(const Camera& camera, double width, double height, bool yUp, double minPixels) {
     GridView g;
-    const double zoom = camera.zoom();
-    if (!(zoom > 0.0) || !(width > 0.0) || !(height > 0.0)) return g;
-    g.step = roundStep(std::max(kGridMinPixels, minPixels) / zoom);
+    if (!(camera.zoom() > 0.0) || !(width > 0.0) || !(height > 0.0)) return g;
+    g.step = roundStep(camera.toWorld(std::max(kGridMinPixels, minPixels)));
     if (!(g.step > 0.0)) return g;
     // The box's visible part, in metres.
     const Vec2 lo = camera.screenToWorld(Vec2(0.0, 0.0));
@@ -101,7 +100,7 @@ RulerView rulerView(const LabRuler& ruler, const Camera& camera) {
     const Vec2 u = pixels > 0.0 ? Vec2((v.b - v.a) / pixels) : Vec2(1.0, 0.0);
     const Vec2 n(-u.y(), u.x());
     if (length > 0.0 && camera.zoom() > 0.0) {
-        v.tickStep = roundStep(kRulerTickPixels / camera.zoom());
+        v.tickStep = roundStep(camera.toWorld(kRulerTickPixels));
         const int every = strongEvery(v.tickStep);
         const auto count = static_cast<long long>(std::floor(length / v.tickStep + 1e-9));
         for (long long k = 0; k <= count && k <= 2000; ++k) {
