@@ -138,6 +138,9 @@ function pixels(op, a, b, rect) {
 
 // The box, right of the panel, below the HUD's lines.
 const scene = { x0: 320, y0: 70, x1: 1190, y1: 760 };
+// Inside the walled box (442..1067 x 104..729 at 1200 x 800 under the HUD's band), with a margin:
+// a spot found right of the box is empty too, and a particle launched there is put inside it.
+const inBox = { x0: 460, y0: 120, x1: 1040, y1: 700, size: 90 };
 
 // 1. The default scene appears and moves.
 await page.goto(url + "?log-controls&seed=7");
@@ -159,7 +162,7 @@ check(moved > 500, `the scene moves: ${moved} pixels changed in 1 s`);
 await page.keyboard.press("Space");
 await waitFor("the pause", async () => /PAUSED/.test(await title()));
 const paused = await shot("2-paused");
-const spot = await pixels("empty", paused, null, { ...scene, x0: 440, y0: 100, size: 90 });
+const spot = await pixels("empty", paused, null, inBox);
 check(spot !== null, `an empty spot in the box: ${JSON.stringify(spot)}`);
 const before = await count();
 await page.mouse.move(spot.x, spot.y);
@@ -291,7 +294,7 @@ const touch = (type, points) => cdp.send("Input.dispatchTouchEvent", {
 if (!/PAUSED/.test(await title())) await page.keyboard.press("Space");
 await waitFor("the pause", async () => /PAUSED/.test(await title()));
 const beforeTouch = await shot("6-before-touch");
-const tspot = await pixels("empty", beforeTouch, null, { ...scene, x0: 440, y0: 100, size: 90 });
+const tspot = await pixels("empty", beforeTouch, null, inBox);
 const touchCount = await count();
 if (tspot) {
   await touch("touchStart", [[tspot.x, tspot.y]]);
