@@ -58,7 +58,8 @@ class Camera {
     /// `rightInsetPixels` at the right (the panels) and one of `leftInsetPixels` at the left (the
     /// control panel), and resets the zoom limits around that zoom (1/50 to 500 times it). The
     /// top band is kept up to 60 % of the viewport (the HUD's wrapped lines at 200 % in a short
-    /// window), the bottom one up to 80 % of it less the top; the left column up to 75 % of the width, the right one up to 75 % less the left.
+    /// window), the bottom one up to 80 % of it less the top; the left column up to 75 % of the
+    /// width, the right one up to 75 % less the left.
     void fit(double width, double height, double marginPixels = 10.0, double topInsetPixels = 0.0,
              double bottomInsetPixels = 0.0, double rightInsetPixels = 0.0,
              double leftInsetPixels = 0.0);

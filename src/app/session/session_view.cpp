@@ -27,8 +27,8 @@ void Session::fit() {
     std::vector<ValuesDock> docks;
     if (view_.values) {
         docks.push_back({false, a.valuesBand});
-        for (double band = a.valuesBand - a.valuesRow; a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0;
-             band -= a.valuesRow) {
+        for (double band = a.valuesBand - a.valuesRow;
+             a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0; band -= a.valuesRow) {
             docks.push_back({false, band});
         }
         if (a.valuesColumn > 0.0) docks.push_back({true, a.valuesColumn});

@@ -89,7 +89,8 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
 
     const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
     // The values table at the right takes the column's place.
-    const bool fits = sideColumnFits(r.width, r.left, r.scale) && !(r.values.w > 0 && r.valuesRight);
+    const bool fits =
+        sideColumnFits(r.width, r.left, r.scale) && !(r.values.w > 0 && r.valuesRight);
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits;
     int top = 4;

@@ -9,9 +9,10 @@
 // a panel that does not fit at its smallest is left out. The values table (I) docks in a band
 // along the window's bottom, right of the control panel and under everything else (valuesBand):
 // the messages, the inspector and the column sit above it; or, in a window too short for that,
-// in a column at the right below the HUD (valuesColumn), left of which the other panels go. A window too narrow for the column
-// beside the box (sideColumnFits) folds the column's panels away, and says so (columnFolded),
-// instead of laying them over the box. No two rectangles returned overlap.
+// in a column at the right below the HUD (valuesColumn), left of which the other panels go. A
+// window too narrow for the column beside the box (sideColumnFits) folds the column's panels away,
+// and says so (columnFolded), instead of laying them over the box. No two rectangles returned
+// overlap.
 
 #include <algorithm>
 #include <vector>

@@ -134,9 +134,8 @@ TEST(WindowLayout, TheHudsBandHoldsItsWrappedLinesAndTheLabelsNoteAtEveryScale) 
                         hud.push_back(line);
                     }
                     const PixelPoint box = textBoxSize(font, hud);
-                    EXPECT_GE(a.top, 4 + box.y)
-                        << width << "x" << height << " at " << scale << ", " << room
-                        << " pixels beside the panel";
+                    EXPECT_GE(a.top, 4 + box.y) << width << "x" << height << " at " << scale << ", "
+                                                << room << " pixels beside the panel";
                     EXPECT_LE(box.x, room) << "no line runs past the window's edge";
                 }
             }

@@ -154,10 +154,9 @@ TEST(ValuesTable, DocksOnScreenOffTheBoxAndThePanelsAtEveryScale) {
                 }
                 const Camera::ScreenBox box =
                     s.camera().boxOnScreen(s.world().def().width, s.world().def().height);
-                const PixelRect onScreen{static_cast<int>(box.topLeft.x()),
-                                         static_cast<int>(box.topLeft.y()),
-                                         static_cast<int>(box.size.x()),
-                                         static_cast<int>(box.size.y())};
+                const PixelRect onScreen{
+                    static_cast<int>(box.topLeft.x()), static_cast<int>(box.topLeft.y()),
+                    static_cast<int>(box.size.x()), static_cast<int>(box.size.y())};
                 EXPECT_FALSE(overlaps(v, onScreen)) << at << ": over the box";
                 // Readable: a sixth of the window's height for the square box (beside the
                 // panel open at 125 % in 800 x 600), 40 % of that for the wide one.
