@@ -18,6 +18,7 @@
 #                                                                   gravity 9.81, e = 0, substep
 #   5b. turns the wheel over the preset list, past its end      -> no zoom of the view
 #   6. clicks Play/Pause twice, Step                             -> time moves; Restart: the set-up
+#   6b. Tab three times, Space, Space                            -> time starts and stops (Play)
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
 #   8. Esc                                                       -> exits (saved: nothing unsaved)
 set -euo pipefail
@@ -137,6 +138,24 @@ click Restart
 # The launch (an edit) before Play made the set-up: Restart keeps the launched particle.
 wait_log "Restarted: back to the set-up as Play last started it \(7 particles"
 pass "Play, Pause, Step and Restart"
+
+# --- 6b. the keyboard alone: Tab to Play, Space, Space -------------------------------------------
+# Tab gives the panel the keys; three Tabs (fold button, the Time section, Play) reach Play, each
+# a quick tap (xdotool presses and releases between two frames). Space starts time; the cursor
+# stays on the button, now Pause, and a second Space stops it; Esc gives the keys back.
+resumed=$(grep -c "Resumed" "$LOG")
+paused=$(grep -c "\] Paused" "$LOG")
+key Tab Tab Tab
+key space
+wait_count "Resumed" $((resumed + 1))
+sleep 0.3
+key space
+wait_count "\] Paused" $((paused + 1))
+shot 6b-keyboard-pause
+key Escape
+sleep 0.3
+kill -0 "$APP_PID" 2>/dev/null || fail "Esc with the panel's cursor shown quit the program"
+pass "Tab, Tab, Tab, Space, Space: started and stopped time from the keyboard"
 
 # --- 7. fold and open ---------------------------------------------------------------------------
 before=$(box_left)

@@ -65,7 +65,11 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
                                    ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
                                    ImGuiWindowFlags_NoSavedSettings |
                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
-    if (ImGui::Begin("Controls", nullptr, flags)) {
+    const bool shown = ImGui::Begin("Controls", nullptr, flags);
+    // Every control a tab stop: Tab walks through buttons, boxes and sections too, not only
+    // the fields ImGui 1.86 tabs through (GuiContext::tabOnward goes on from the cursor).
+    ImGui::PushItemFlag(ImGuiItemFlags_Inputable, true);
+    if (shown) {
         if (!open) {
             if (ImGui::Button(">>", ImVec2(-1.f, 0.f))) out_.emplace_back(cmd::ToggleControls{});
             mark("open panel");
@@ -101,6 +105,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             engine(s, stats);
         }
     }
+    ImGui::PopItemFlag();
     ImGui::End();
     if (!open) ImGui::PopStyleVar();
     ImGui::PopStyleColor();

@@ -15,6 +15,29 @@ namespace psb::app {
 
 namespace {
 
+// Without a window (tests), the keys the SDL2 backend maps for ImGui, by SDL scancode as it
+// maps them, so that key events fed to handleEvent move through the panel as in the window.
+void mapKeys(ImGuiIO& io) {
+    const std::pair<ImGuiKey, SDL_Scancode> keys[] = {
+        {ImGuiKey_Tab, SDL_SCANCODE_TAB},
+        {ImGuiKey_LeftArrow, SDL_SCANCODE_LEFT},
+        {ImGuiKey_RightArrow, SDL_SCANCODE_RIGHT},
+        {ImGuiKey_UpArrow, SDL_SCANCODE_UP},
+        {ImGuiKey_DownArrow, SDL_SCANCODE_DOWN},
+        {ImGuiKey_PageUp, SDL_SCANCODE_PAGEUP},
+        {ImGuiKey_PageDown, SDL_SCANCODE_PAGEDOWN},
+        {ImGuiKey_Home, SDL_SCANCODE_HOME},
+        {ImGuiKey_End, SDL_SCANCODE_END},
+        {ImGuiKey_Delete, SDL_SCANCODE_DELETE},
+        {ImGuiKey_Backspace, SDL_SCANCODE_BACKSPACE},
+        {ImGuiKey_Space, SDL_SCANCODE_SPACE},
+        {ImGuiKey_Enter, SDL_SCANCODE_RETURN},
+        {ImGuiKey_Escape, SDL_SCANCODE_ESCAPE},
+    };
+    for (const auto& [key, scancode] : keys)
+        io.KeyMap[key] = scancode;
+}
+
 // Target pixels per window point: 2 on a high-DPI window, 1 elsewhere.
 float windowPixelScale(SDL_Window* window, SDL_Renderer* renderer) {
     int w = 0, h = 0, pw = 0, ph = 0;
@@ -46,12 +69,14 @@ GuiContext::GuiContext(SDL_Window* window, SDL_Renderer* renderer, const GuiOpti
                 throw std::runtime_error("GuiContext: the SDL2 platform backend did not start");
             }
             platform_ = true;
-            // The keyboard moves through the panel (the backend maps the keys it needs); which
-            // keys reach it is decided in handleEvent, so ImGui's own capture flag (set whenever
-            // its window has focus) is not used.
-            io.ConfigFlags |=
-                ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavNoCaptureKeyboard;
+        } else {
+            mapKeys(io);
         }
+        // The keyboard moves through the panel (the backend maps the keys it needs); which
+        // keys reach it is decided in handleEvent, so ImGui's own capture flag (set whenever
+        // its window has focus) is not used.
+        io.ConfigFlags |=
+            ImGuiConfigFlags_NavEnableKeyboard | ImGuiConfigFlags_NavNoCaptureKeyboard;
         const float scale = window_ != nullptr ? windowPixelScale(window_, sdl_) : 1.f;
         loadFont(scale);
         renderer_ = std::make_unique<ImGuiRenderer>(sdl_);
@@ -223,7 +248,7 @@ bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
     // slider (type a value) sees Ctrl.
     if (event.type == SDL_KEYUP || modifier) {
         const bool had = hasKeyboard();
-        if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
+        forwardKey(event);
         return had && !modifier;
     }
     if (key == SDLK_F12) return false;
@@ -236,6 +261,7 @@ bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
         if (ImGuiWindow* panel = ImGui::FindWindowByName("Controls")) ImGui::FocusWindow(panel);
         g.NavDisableHighlight = false;
         g.NavDisableMouseHover = true;
+        tabEnters_ = true;
     } else if (key == SDLK_ESCAPE) {
         // Esc: the keyboard back to the sandbox. With nothing being typed at once (ImGui would
         // only move the cursor out of a child window); a field being typed in first sees the
@@ -246,8 +272,60 @@ bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
         }
         releaseAfter_ = ImGui::GetFrameCount() + 1;
     }
-    if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
+    forwardKey(event);
     return true;
+}
+
+void GuiContext::forwardKey(const SDL_Event& event) {
+    // ImGui 1.86 reads which keys are down at each frame: a key pressed and released between
+    // two frames (a quick tap, xdotool's key) would never be seen, and three Tabs typed fast
+    // would be one. The events trickle in: each frame takes them in order until a key that has
+    // already changed in it, the rest wait for the next (as ImGui 1.87's input queue does).
+    keyQueue_.push_back(event);
+    if (!inFrame_) trickleKeys();  // within a frame ImGui's keys must not change (it checks)
+}
+
+void GuiContext::trickleKeys() {
+    while (!keyQueue_.empty()) {
+        const SDL_Scancode code = keyQueue_.front().key.keysym.scancode;
+        if (std::find(changedKeys_.begin(), changedKeys_.end(), code) != changedKeys_.end()) return;
+        changedKeys_.push_back(code);
+        passKey(keyQueue_.front());
+        keyQueue_.pop_front();
+    }
+}
+
+void GuiContext::passKey(const SDL_Event& event) {
+    // What the 1.86 SDL2 backend does with a key, but with the modifiers the event was sent
+    // with, not SDL's state now (which a queued Tab would read after Shift's release).
+    ImGuiIO& io = ImGui::GetIO();
+    const int code = event.key.keysym.scancode;
+    if (code >= 0 && code < IM_ARRAYSIZE(io.KeysDown))
+        io.KeysDown[code] = event.type == SDL_KEYDOWN;
+    const Uint16 mod = event.key.keysym.mod;
+    io.KeyShift = (mod & KMOD_SHIFT) != 0;
+    io.KeyCtrl = (mod & KMOD_CTRL) != 0;
+    io.KeyAlt = (mod & KMOD_ALT) != 0;
+    io.KeySuper = (mod & KMOD_GUI) != 0;
+}
+
+void GuiContext::keysAfterFrame() {
+    // The frame has seen every change so far; the keys that wait come in before the next.
+    changedKeys_.clear();
+    tabOnward();
+}
+
+void GuiContext::tabOnward() {
+    // ImGui 1.86 tabs only through fields (sliders, text) and, from a button or a check box,
+    // starts again at the window's first item: the panel marks every item a tab stop
+    // (ControlPanel::build), and a Tab within the panel goes on from the item that has the
+    // cursor, as later ImGui versions do. The first Tab from the sandbox starts at the top.
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    const bool tabbing = g.NavMoveSubmitted && (g.NavMoveFlags & ImGuiNavMoveFlags_Tabbing) != 0;
+    if (tabbing && g.NavTabbingDir == 0 && g.NavId != 0 && !std::exchange(tabEnters_, false)) {
+        g.NavTabbingDir = +1;
+    }
+    tabEnters_ = false;
 }
 
 bool GuiContext::handleFinger(const SDL_Event& e) {
@@ -380,7 +458,9 @@ void GuiContext::beginFrame() {
     io.DisplaySize = ImVec2(io.DisplaySize.x / scale_, io.DisplaySize.y / scale_);
     if (io.MousePos.x > -FLT_MAX / 2)
         io.MousePos = ImVec2(io.MousePos.x / scale_, io.MousePos.y / scale_);
+    trickleKeys();
     ImGui::NewFrame();
+    keysAfterFrame();
     inFrame_ = true;
 }
 
@@ -391,7 +471,9 @@ void GuiContext::beginFrame(float width, float height, float dt, float pixelScal
     io.DisplaySize = ImVec2(width / scale_, height / scale_);
     io.DisplayFramebufferScale = ImVec2(pixelScale * scale_, pixelScale * scale_);
     io.DeltaTime = dt > 0.f ? dt : 1.f / 60.f;
+    trickleKeys();
     ImGui::NewFrame();
+    keysAfterFrame();
     inFrame_ = true;
 }
 

@@ -28,10 +28,12 @@
 // directory's. ImGui keeps one "current" context per process; every member makes this one
 // current first, so two holders (tests) do not mix.
 
+#include <deque>
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <SDL.h>
 
@@ -119,6 +121,16 @@ class GuiContext {
     void releaseIfDue();
     /// handleEvent for a key press or release.
     bool handleKey(const SDL_Event& event, bool tabToPanel);
+    /// A key event to ImGui by passKey, in order, at most one change of a key per frame.
+    void forwardKey(const SDL_Event& event);
+    /// Passes the queued key events the next frame can still take (between frames only).
+    void trickleKeys();
+    /// A key event into ImGui's io (by scancode, as the SDL2 backend maps the keys).
+    void passKey(const SDL_Event& event);
+    /// After NewFrame: a new frame to take key changes, and Tab's way on.
+    void keysAfterFrame();
+    /// After NewFrame: a Tab within the panel goes to the item after the cursor's.
+    void tabOnward();
     /// Makes the scale and theme asked for within the last frame (before NewFrame).
     void applyPending();
     /// handleEvent for the mouse SDL makes of a finger (panel_touch.hpp): true when the panel's
@@ -145,8 +157,11 @@ class GuiContext {
     std::optional<std::string> problem_;
     PanelTouch panelTouch_;
     TooltipState tooltips_;
-    bool pointerIsFinger_ = false;  // the last pointer event came from a finger
-    int forgetMouse_ = 0;           // frames until a lifted finger's pointer is forgotten
+    bool pointerIsFinger_ = false;           // the last pointer event came from a finger
+    int forgetMouse_ = 0;                    // frames until a lifted finger's pointer is forgotten
+    bool tabEnters_ = false;                 // this frame's Tab gave the panel the keyboard
+    std::deque<SDL_Event> keyQueue_;         // key events the frames have not taken yet
+    std::vector<SDL_Scancode> changedKeys_;  // keys changed since the last NewFrame
 };
 
 }  // namespace psb::app

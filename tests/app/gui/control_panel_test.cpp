@@ -197,6 +197,61 @@ TEST_F(ControlPanelTest, AButtonWhoseWordsChangeStaysTheSameControl) {
     EXPECT_EQ(idOf("Record"), record) << "Stop recording is the Record button";
 }
 
+TEST_F(ControlPanelTest, TabWalksThroughButtonsToPlayAndSpaceStartsAndStopsTime) {
+    // ImGui 1.86 tabs through fields only (Tab from the box landed in Speed, typing its value)
+    // and, from a button, goes back to the top: a keyboard user could not reach Play by Tab.
+    const auto navId = [this] {
+        (void)gui_->io();  // makes the context current
+        return static_cast<unsigned>(ImGui::GetCurrentContext()->NavId);
+    };
+    const auto key = [this](SDL_Keycode k, Uint16 mod = KMOD_NONE) {  // Tab or Space
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = k;
+        e.key.keysym.scancode = k == SDLK_TAB ? SDL_SCANCODE_TAB : SDL_SCANCODE_SPACE;
+        e.key.keysym.mod = mod;
+        // Pressed and released between two frames, as a quick tap (or xdotool) does: ImGui
+        // 1.86 reads the keys' state at the frame, and must still see the press.
+        const bool taken = gui_->handleEvent(e);
+        e.type = SDL_KEYUP;
+        gui_->handleEvent(e);
+        frame();
+        frame();
+        return taken;
+    };
+    const PanelItem* play = panel_.item("Play/Pause");
+    ASSERT_NE(play, nullptr);
+    int tabs = 0;
+    while (navId() != play->id && tabs < 8) {
+        EXPECT_TRUE(key(SDLK_TAB));
+        ++tabs;
+    }
+    ASSERT_EQ(navId(), play->id) << "Tab did not reach Play in 8 presses";
+    EXPECT_LE(tabs, 3) << "the fold button and the Time section come before Play";
+    EXPECT_FALSE(gui_->io().WantTextInput) << "no field is being typed in";
+
+    ASSERT_TRUE(session_->paused());
+    EXPECT_TRUE(key(SDLK_SPACE)) << "Space is the focused button's";
+    EXPECT_FALSE(session_->paused()) << "Space pressed Play";
+    EXPECT_EQ(navId(), play->id) << "the cursor stays on the button, now Pause";
+    EXPECT_TRUE(key(SDLK_SPACE));
+    EXPECT_TRUE(session_->paused()) << "a second Space pressed Pause";
+
+    // Tab goes on from the cursor (not back to the top), and Shift+Tab comes back.
+    EXPECT_TRUE(key(SDLK_TAB));
+    EXPECT_EQ(navId(), panel_.item("Step")->id);
+    EXPECT_TRUE(key(SDLK_TAB));
+    EXPECT_EQ(navId(), panel_.item("Restart")->id);
+    EXPECT_TRUE(key(SDLK_TAB, KMOD_LSHIFT));
+    EXPECT_EQ(navId(), panel_.item("Step")->id);
+    // Enter on Step: one step, the cursor still there.
+    const double t0 = session_->world().time();
+    EXPECT_TRUE(key(SDLK_SPACE));
+    session_->update(0.0, 0.0);
+    EXPECT_GT(session_->world().time(), t0);
+    EXPECT_EQ(navId(), panel_.item("Step")->id);
+}
+
 TEST_F(ControlPanelTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale) {
     // At 200 % the table's window ran off the window's right edge; at 125 % it covered half of
     // the box. Docked where the view keeps room for it, it does neither, at every size.
