@@ -32,7 +32,9 @@ class World;
 
 /// The observables over time (time_series.hpp), one row per sample: time_s,
 /// kinetic_energy_J, momentum_x_kg_m_per_s, momentum_y_kg_m_per_s, com_x_m, com_y_m,
-/// collisions, collision_rate_per_s (empty where the sample has none: ObservablesSample),
+/// collisions, collision_rate_per_s (empty where the sample has none: ObservablesSample;
+/// named collision_rate_per_s_last_W_s when the rate is counted over the last
+/// `rateWindowSeconds` W rather than since the row before),
 /// with `gravity` potential_energy_J and
 /// mechanical_energy_J (kinetic + rotational + potential), and with `rotation` (a world that
 /// keeps rotation: World::rotationInUse) rotational_energy_J and
@@ -40,7 +42,8 @@ class World;
 /// about its bottom-left corner).
 [[nodiscard]] std::string timeSeriesTable(const std::vector<ObservablesSample>& samples,
                                           bool gravity, csv::Separator separator,
-                                          bool rotation = false, const Axes& axes = {});
+                                          bool rotation = false, const Axes& axes = {},
+                                          double rateWindowSeconds = 0.0);
 /// The samples `series` holds, oldest first.
 [[nodiscard]] std::vector<ObservablesSample> samplesOf(const TimeSeries& series);
 

@@ -83,11 +83,16 @@ std::string valuesTable(const World& world, Separator separator, const Axes& axe
 }
 
 std::string timeSeriesTable(const std::vector<ObservablesSample>& samples, bool gravity,
-                            Separator separator, bool rotation, const Axes& axes) {
+                            Separator separator, bool rotation, const Axes& axes,
+                            double rateWindowSeconds) {
     Header h;
     h.add("time_s").add("kinetic_energy_J").add("momentum_x_kg_m_per_s");
     h.y(axes, "momentum_y", "kg_m_per_s").add("com_x_m").y(axes, "com_y", "m");
-    h.add("collisions").add("collision_rate_per_s");
+    // A rate over a window says which: its column is read without the docs at hand.
+    h.add("collisions")
+        .add(rateWindowSeconds > 0.0
+                 ? "collision_rate_per_s_last_" + csv::number(rateWindowSeconds) + "_s"
+                 : std::string("collision_rate_per_s"));
     if (gravity) h.add("potential_energy_J").add("mechanical_energy_J");
     if (rotation) h.add("rotational_energy_J").turning(axes, "angular_momentum", "kg_m2_per_s");
     Table t = h.table(separator);

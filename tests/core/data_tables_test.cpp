@@ -94,6 +94,10 @@ TEST(TimeSeriesTable, CleanTimesAndTheGravityColumns) {
     const Rows g = parse(timeSeriesTable(samplesOf(series), true, csv::Separator::Comma), ',');
     EXPECT_EQ(g[0].back(), "mechanical_energy_J");
     EXPECT_EQ(g[1].size(), 10u);
+    // A rate counted over a window names it.
+    const Rows windowed = parse(
+        timeSeriesTable(samplesOf(series), false, csv::Separator::Comma, false, Axes{}, 0.5), ',');
+    EXPECT_EQ(windowed[0].back(), "collision_rate_per_s_last_0.5_s");
 }
 
 TEST(TrajectoryTable, RowsPerParticlePerInstant) {

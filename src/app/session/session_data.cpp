@@ -57,7 +57,7 @@ std::string Session::tableText(cmd::DataTable table, csv::Separator separator) c
             return valuesTable(doc_.world, separator, axes());
         case cmd::DataTable::TimeSeries:
             return timeSeriesTable(data_.run(), !doc_.world.def().gravity.isZero(), separator,
-                                   doc_.world.rotationInUse(), axes());
+                                   doc_.world.rotationInUse(), axes(), rateWindow());
         case cmd::DataTable::Trajectories:
             return trajectoryTable(data_.trajectory(), separator, doc_.world.rotationInUse(),
                                    axes());

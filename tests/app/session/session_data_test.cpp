@@ -168,7 +168,9 @@ TEST_F(SessionData, TheTimeSeriesRunsFromTheStartWithCleanTimes) {
     const Rows rows = parse(readFile(dir_ / "out" / "series.csv"), ',');
     ASSERT_GE(rows.size(), 80u);
     EXPECT_EQ(rows[0][0], "time_s");
-    EXPECT_EQ(rows[0][7], "collision_rate_per_s");
+    // The rate is counted over the plots' window, and its column says how long that is.
+    EXPECT_EQ(rows[0][7], "collision_rate_per_s_last_" + csv::number(s.rateWindow()) + "_s");
+    EXPECT_EQ(rows[1][7], "") << "no rate at t = 0: no interval yet";
     ASSERT_FALSE(s.world().def().gravity.isZero()) << "the default scene has gravity";
     EXPECT_EQ(rows[0].back(), "mechanical_energy_J");
     EXPECT_EQ(rows[1][0], "0");
