@@ -8,7 +8,8 @@
 #                         labelled e2e or bench (why: see below)
 #   fuzz     build/fuzz   clang + libFuzzer: each fuzz target for PSB_FUZZ_SECONDS (default 60)
 #   web      build/web-cmake  the web build (scripts/web.sh), tested in headless Chromium
-#                         (tests/web/); its libraries built for WebAssembly stay in build/web-deps
+#                         (tests/web/); its libraries built for WebAssembly are kept in
+#                         ~/.cache/particle-sandbox (scripts/web.sh), for the next clone too
 # Any failure, sanitizer report or fuzzer crash fails the script.
 #   scripts/test.sh [CTEST ARGS...]     extra arguments go to the release and asan ctest runs
 #   PSB_TEST_STAGES="release asan" scripts/test.sh   runs only the stages named

@@ -4,12 +4,23 @@
 #   scripts/web.sh serve [PORT]   serve build/web/ on localhost (default port 8080)
 #   scripts/web.sh test           build, then test the page in headless Chromium (tests/web/)
 #   scripts/web.sh bench N...     the page's frame-time benchmark in headless Chromium, N particles
-# The libraries built for WebAssembly are kept in build/web-deps/ (delete it to rebuild them);
-# the program's CMake tree is build/web-cmake/.
+# The libraries built for WebAssembly are kept outside the checkout, in
+# ${XDG_CACHE_HOME:-~/.cache}/particle-sandbox/web-deps-KEY (PSB_WEB_DEPS names another folder),
+# KEY a digest of the scripts that fetch and build them, Emscripten's version and the Debian
+# release: a fresh clone reuses them, a change to any of those builds them anew (delete the folder
+# to rebuild them). The program's CMake tree is build/web-cmake/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
-deps=$root/build/web-deps
+cache=${XDG_CACHE_HOME:-$HOME/.cache}
+[[ $cache == /* ]] || cache=$HOME/.cache
+deps_key() {
+  {
+    cat scripts/web/fetch-sources.sh scripts/web/build-deps.sh
+    emcc --version 2>/dev/null | head -n 1
+    . /etc/os-release && echo "${VERSION_CODENAME:-}"
+  } | sha256sum | cut -c1-12
+}
 tree=$root/build/web-cmake
 out=$root/build/web
 
@@ -19,6 +30,8 @@ export NODE_PATH=${NODE_PATH:+$NODE_PATH:}/usr/share/nodejs
 
 build() {
   scripts/install-deps.sh --web
+  deps=${PSB_WEB_DEPS:-$cache/particle-sandbox/web-deps-$(deps_key)}
+  echo "Libraries for WebAssembly: $deps"
   scripts/web/fetch-sources.sh "$deps"
   scripts/web/build-deps.sh "$deps"
   # No video recording in the page (it would need FFmpeg built for WebAssembly).
