@@ -1,7 +1,7 @@
 #pragma once
 // What the tests of changes made to a running world check after each step, shared by the core's
 // and the session's: every particle finite and, with walls, inside the box. And where the
-// scenes they run live: tests/core/scene_corpus/good.
+// scenes they run live: tests/core/scene/scene_corpus/good.
 
 #include <gtest/gtest.h>
 
@@ -31,10 +31,10 @@ inline void expectInsideTheBox(const World& w, const std::string& when) {
     }
 }
 
-/// A scene of the loader's good corpus (tests/core/scene_corpus/good) by file name.
+/// A scene of the loader's good corpus (tests/core/scene/scene_corpus/good) by file name.
 inline Scene corpusScene(const std::string& file) {
-    return loadScene(std::filesystem::path(PSB_TEST_SOURCE_DIR) / "core" / "scene_corpus" / "good" /
-                     file);
+    return loadScene(std::filesystem::path(PSB_TEST_SOURCE_DIR) / "core" / "scene" /
+                     "scene_corpus" / "good" / file);
 }
 
 }  // namespace psb::test

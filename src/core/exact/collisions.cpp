@@ -38,8 +38,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collision_capture.hpp"
-#include "contact.hpp"
+#include "contact/collision_capture.hpp"
+#include "contact/contact.hpp"
 #include "exact/motion.hpp"
 #include "exact/stepper.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "obstacle_geometry.hpp"
+#include "obstacles/obstacle_geometry.hpp"
 
 namespace psb::exact {
 namespace {

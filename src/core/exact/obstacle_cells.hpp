@@ -24,7 +24,7 @@
 #include <particle_sandbox/obstacle.hpp>
 
 #include "exact/cell_list.hpp"
-#include "obstacle_grid.hpp"
+#include "obstacles/obstacle_grid.hpp"
 
 namespace psb::exact {
 

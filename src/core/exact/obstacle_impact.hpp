@@ -22,8 +22,8 @@
 #include <particle_sandbox/obstacle.hpp>
 
 #include "exact/parabolic_impact.hpp"
-#include "obstacle_geometry.hpp"
-#include "obstacle_time_of_impact.hpp"
+#include "obstacles/obstacle_geometry.hpp"
+#include "obstacles/obstacle_time_of_impact.hpp"
 
 namespace psb::exact {
 

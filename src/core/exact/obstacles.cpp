@@ -14,12 +14,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collision_capture.hpp"
-#include "contact.hpp"
+#include "contact/collision_capture.hpp"
+#include "contact/contact.hpp"
 #include "exact/motion.hpp"
 #include "exact/obstacle_impact.hpp"
 #include "exact/stepper.hpp"
-#include "obstacle_geometry.hpp"
+#include "obstacles/obstacle_geometry.hpp"
 
 namespace psb::exact {
 

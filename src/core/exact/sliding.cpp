@@ -25,11 +25,11 @@
 
 #include <cmath>
 
-#include "contact.hpp"
+#include "contact/contact.hpp"
 #include "exact/motion.hpp"
 #include "exact/parabolic_impact.hpp"
 #include "exact/stepper.hpp"
-#include "obstacle_geometry.hpp"
+#include "obstacles/obstacle_geometry.hpp"
 
 namespace psb::exact {
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 
 #include "exact/motion.hpp"
-#include "stage_timer.hpp"
+#include "world/stage_timer.hpp"
 
 namespace psb::exact {
 

@@ -72,7 +72,7 @@
 #include <particle_sandbox/step_profile.hpp>
 #include <particle_sandbox/world_def.hpp>
 
-#include "contact.hpp"
+#include "contact/contact.hpp"
 #include "exact/body.hpp"
 #include "exact/cell_list.hpp"
 #include "exact/collision_rate.hpp"

@@ -29,7 +29,7 @@ class SessionWorldChanges : public TempDirTest,
   protected:
     SessionWorldChanges() : TempDirTest("psb-session-world-changes") {}
 
-    /// The ramp scene that crashed (tests/core/scene_corpus/good), with a ball on the floor
+    /// The ramp scene that crashed (tests/core/scene/scene_corpus/good), with a ball on the floor
     /// and its dropper slowed to one ball every 2 s (the first at once, the next after the
     /// change).
     [[nodiscard]] Session session() const {

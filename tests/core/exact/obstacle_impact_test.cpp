@@ -7,7 +7,7 @@
 #include <random>
 
 #include "exact/obstacle_impact.hpp"
-#include "obstacle_geometry.hpp"
+#include "obstacles/obstacle_geometry.hpp"
 
 namespace psb::exact {
 namespace {

@@ -16,7 +16,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "exact/stepper.hpp"
-#include "obstacle_geometry.hpp"
+#include "obstacles/obstacle_geometry.hpp"
 
 namespace psb {
 namespace {

@@ -16,7 +16,7 @@
 #include <particle_sandbox/step_profile.hpp>
 #include <particle_sandbox/world_def.hpp>
 
-#include "contact.hpp"
+#include "contact/contact.hpp"
 #include "exact/stepper.hpp"
 
 namespace psb::exact {

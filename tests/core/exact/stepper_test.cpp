@@ -17,9 +17,9 @@
 #include <particle_sandbox/scene_builders.hpp>
 #include <particle_sandbox/world.hpp>
 
-#include "../test_util.hpp"
 #include "exact/stepper.hpp"
 #include "scenes.hpp"
+#include "test_util.hpp"
 
 namespace psb {
 namespace {
