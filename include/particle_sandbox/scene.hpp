@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <numbers>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -78,12 +79,31 @@ class SaveError : public std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// Parses and validates scene JSON. `source` names the input in messages (a path or "<stdin>").
-/// Throws SceneError.
-[[nodiscard]] Scene parseScene(std::string_view json, std::string_view source);
+/// One change made to a scene file's JSON before it is read, as a sweep asks for it: the value
+/// at `path` (keys joined by dots, array elements by index: `world.restitution`,
+/// `generate.count`, `generate[1].seed`, `particles[0].velocity`) set to `value`, JSON text
+/// (`0.9`, `true`, `[1, 2]`, `"text"`; anything that is not JSON is taken as a string). Missing
+/// objects on the way are made; the scene is then checked as a file would be, so a key the
+/// format does not know is refused with the nearest known one.
+struct SceneOverride {
+    std::string path;
+    std::string value;
+    /// What asked for it, for messages (the runner's option).
+    std::string option = "--set";
+    /// Make missing objects on the way; false: everything before the last key must be there.
+    bool create = true;
+};
 
-/// Reads and parses a scene file. Throws SceneError (also for a file that cannot be read).
-[[nodiscard]] Scene loadScene(const std::filesystem::path& path);
+/// Parses and validates scene JSON, `overrides` applied in order first. `source` names the
+/// input in messages (a path or "<stdin>"). Throws SceneError (a path that crosses a value
+/// that is not an object or array, or an index past an array's end, included).
+[[nodiscard]] Scene parseScene(std::string_view json, std::string_view source,
+                               std::span<const SceneOverride> overrides = {});
+
+/// Reads and parses a scene file, `overrides` applied first. Throws SceneError (also for a
+/// file that cannot be read).
+[[nodiscard]] Scene loadScene(const std::filesystem::path& path,
+                              std::span<const SceneOverride> overrides = {});
 
 /// Scene JSON for `scene`; doubles are written so that they read back bit for bit. Throws
 /// InvalidArgument if a number is not finite (JSON cannot hold it).

@@ -31,7 +31,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         // Before the scene is read and long before the last step: a bad output path costs
         // nothing yet.
         checkOutputs(options);
-        const Scene scene = loadScene(options.scene);
+        const Scene scene = loadScene(options.scene, options.sets);
         World world;
         RunReport report;
         TimeSeries series(1);

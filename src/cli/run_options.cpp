@@ -119,9 +119,20 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                          "Print the version (and git revision) and exit");
 
     std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
-    std::string timeseries, timeseriesEvery, track;
+    std::string timeseries, timeseriesEvery, track, seed;
+    std::vector<std::string> sets;
     bool progress = false;
     app.add_option("SCENE", scene, "Scene file (JSON, see docs/scenes.md)")->required();
+    app.add_option("--set", sets,
+                   "Change the scene before it is read: the value at PATH (keys joined by dots, "
+                   "array elements by index, e.g. world.restitution, generate[1].count) set to "
+                   "VALUE (JSON; other text is a string); repeatable, later ones win")
+        ->type_name("PATH=VALUE")
+        ->allow_extra_args(false);
+    app.add_option("--seed", seed,
+                   "The generate block's random seed (as --set generate.seed=N; a scene with "
+                   "several blocks says which with --set generate[K].seed=N)")
+        ->type_name("N");
     app.add_option("-d,--duration", duration, "Simulated time to run, seconds (>= 0)")
         ->required()
         ->type_name("SECONDS");
@@ -171,6 +182,19 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     RunOptions o;
     if (scene.empty()) throw UsageError("SCENE: the path is empty");
     o.scene = scene;
+    for (const std::string& set : sets) {
+        const std::size_t eq = set.find('=');
+        if (eq == std::string::npos || eq == 0) {
+            throw UsageError("--set: expected PATH=VALUE, as in world.restitution=0.9, got '" +
+                             set + "'");
+        }
+        o.sets.push_back({set.substr(0, eq), set.substr(eq + 1)});
+    }
+    if (!seed.empty()) {
+        const std::int64_t n =
+            parseInteger(seed, "--seed", 0, std::numeric_limits<std::int64_t>::max());
+        o.sets.push_back({"generate.seed", std::to_string(n), "--seed", false});
+    }
     o.duration = parseFiniteNumber(duration, "--duration");
     if (o.duration < 0.0) throw UsageError("--duration: must be >= 0, got '" + duration + "'");
     if (!mode.empty()) {

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 
 namespace psb::cli {
@@ -15,6 +16,9 @@ namespace psb::cli {
 /// Everything the command line says. Solver fields left empty keep the scene's values.
 struct RunOptions {
     std::filesystem::path scene;
+    /// --set PATH=VALUE in order, then --seed N as generate.seed: applied to the scene's JSON
+    /// before it is read (SceneOverride).
+    std::vector<SceneOverride> sets;
     double duration = 0.0;  ///< simulated seconds, finite and >= 0
     std::optional<StepMode> mode;
     std::optional<double> dt;  ///< seconds, finite and > 0

@@ -28,6 +28,7 @@
 #include "scene/json_reader.hpp"
 #include "scene/json_values.hpp"
 #include "scene/scene_generate.hpp"
+#include "scene/scene_overrides.hpp"
 #include "support/printable.hpp"
 
 namespace psb {
@@ -576,12 +577,15 @@ void checkPlacement(const ValueReader& r, const Scene& s, const std::vector<Orig
 
 }  // namespace
 
-Scene parseScene(std::string_view text, std::string_view source) {
+Scene parseScene(std::string_view text, std::string_view source,
+                 std::span<const SceneOverride> overrides) {
     if (text.size() > kMaxSceneFileBytes) {
         throw SceneError(std::string(source) + ": larger than the limit of " +
                          std::to_string(kMaxSceneFileBytes >> 20) + " MiB");
     }
-    const json root = detail::readJson(text, source);
+    json root = detail::readJson(text, source);
+    for (const SceneOverride& o : overrides)
+        detail::applyOverride(root, o, source);
     const ValueReader r(source);
     r.object(root, "",
              {"version", "name", "description", "world", "solver", "particles", "generate",
@@ -647,7 +651,7 @@ Scene parseScene(std::string_view text, std::string_view source) {
     return s;
 }
 
-Scene loadScene(const std::filesystem::path& path) {
+Scene loadScene(const std::filesystem::path& path, std::span<const SceneOverride> overrides) {
     const std::string source = path.string();
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) {
@@ -665,7 +669,7 @@ Scene loadScene(const std::filesystem::path& path) {
         }
     }
     if (in.bad()) throw SceneError(source + ": read error");
-    return parseScene(text, source);
+    return parseScene(text, source, overrides);
 }
 
 }  // namespace psb
