@@ -11,6 +11,7 @@
 // the particle of the likely next event is prefetched while this one is handled.
 
 #include <cstdint>
+#include <vector>
 
 namespace psb::exact {
 
@@ -86,5 +87,15 @@ struct alignas(64) Cold {
     double w;                // inverse mass, 0 = held
 };
 static_assert(sizeof(Cold) == 64);
+
+// Follows a renumbering of the particles (a sort into cell order, grid.hpp): the element of
+// particle i moves to to[i].
+template <typename T>
+void renumber(std::vector<T>& v, const std::vector<std::uint32_t>& to) {
+    std::vector<T> out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out[to[i]] = v[i];
+    v.swap(out);
+}
 
 }  // namespace psb::exact

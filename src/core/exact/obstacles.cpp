@@ -31,7 +31,7 @@ void ExactStepper::predictObstacles(std::uint32_t i, const Motion& m, double now
     const Cold& c = cold_[i];
     // The face a particle slides on is left at its end (predictSlide), never hit.
     const std::uint32_t sliding = (a.flags & kSliding) ? slide_[i].obstacle : UINT32_MAX;
-    for (const std::uint32_t k : obstacles_.near(cells_, c.kx, c.ky)) {
+    for (const std::uint32_t k : obstacles_.near(grid_.fine(), c.kx, c.ky)) {
         if (k == sliding) continue;
         const double t = now + obstacleEventTime(m.x, m.y, m.vx, m.vy, m.ax, m.ay, a.r,
                                                  obstacles_[k], best.time - now);
@@ -138,7 +138,7 @@ int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, int 
                                    int max) const {
     const Body& a = bodies_[i];
     const Cold& c = cold_[i];
-    for (const std::uint32_t k : obstacles_.near(cells_, c.kx, c.ky)) {
+    for (const std::uint32_t k : obstacles_.near(grid_.fine(), c.kx, c.ky)) {
         if (count == max) break;
         const Obstacle& o = obstacles_[k];
         double qx, qy;

@@ -111,18 +111,19 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     std::int8_t side = 0;
     // With walls the outer faces are never crossed (the wall comes first).
     int face;
-    const double tx = exitTime(m.x, m.vx, m.ax, cells_.faceX(ac.kx) - skinX_,
-                               cells_.faceX(ac.kx + 1) + skinX_, face);
+    const CellList& cells = grid_.fine();
+    const double tx = exitTime(m.x, m.vx, m.ax, cells.faceX(ac.kx) - grid_.skinX(),
+                               cells.faceX(ac.kx + 1) + grid_.skinX(), face);
     const bool outerX =
-        !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
+        !cells.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells.nx() - 1));
     if (face != 0 && !outerX) {
         best = tx;
         side = face < 0 ? 0 : 1;
     }
-    const double ty = exitTime(m.y, m.vy, m.ay, cells_.faceY(ac.ky) - skinY_,
-                               cells_.faceY(ac.ky + 1) + skinY_, face);
+    const double ty = exitTime(m.y, m.vy, m.ay, cells.faceY(ac.ky) - grid_.skinY(),
+                               cells.faceY(ac.ky + 1) + grid_.skinY(), face);
     const bool outerY =
-        !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
+        !cells.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells.ny() - 1));
     if (face != 0 && !outerY && ty < best) {
         best = ty;
         side = face < 0 ? 2 : 3;
@@ -133,8 +134,8 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
 
 void ExactStepper::scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best) {
     const Cold& c = cold_[i];
-    for (std::uint8_t l = 0; l < levelCount_; ++l) {
-        const std::int64_t k = reach(c.level, l);
+    for (std::uint8_t l = 0; l < grid_.levelCount(); ++l) {
+        const std::int64_t k = grid_.reach(c.level, l);
         scanBlock(i, now, ax, ay, l, c.kx - k, c.kx + k, c.ky - k, c.ky + k, best);
     }
 }
@@ -142,11 +143,11 @@ void ExactStepper::scanNeighbours(std::uint32_t i, double now, double ax, double
 void ExactStepper::scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                              std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
                              Event& best) {
-    const CellList& list = listOf(level);
+    const CellList& list = grid_.listOf(level);
     constexpr int kCells = 16;
     std::uint32_t cells[kCells];
     int count = 0;
-    forCells(level, x0, x1, y0, y1, [&](std::uint32_t c) {
+    grid_.forCells(level, x0, x1, y0, y1, [&](std::uint32_t c) {
         cells[count++] = c;
         if (count == kCells) {
             scanCells(i, now, ax, ay, list, cells, count, best);
@@ -249,30 +250,8 @@ double ExactStepper::pairTimeUnderGravity(const Body& a, const Motion& am, const
 void ExactStepper::handleCell(std::uint32_t i, double now) {
     Cold& a = cold_[i];
     ++events_;
-    const std::uint32_t oldCell = memberCell(i);
     const std::int8_t side = a.cellSide;  // predictCell below overwrites it
-    switch (side) {
-        case 0:
-            --a.kx;
-            break;
-        case 1:
-            ++a.kx;
-            break;
-        case 2:
-            --a.ky;
-            break;
-        default:
-            ++a.ky;
-            break;
-    }
-    if (a.level == 0) {
-        cells_.erase(i);
-        cells_.insert(i, cells_.cell(a.kx, a.ky));
-    } else if (const std::uint32_t cell = memberCell(i); cell != oldCell) {
-        CellList& list = upper_[a.level - 1].cells;
-        list.erase(i);
-        list.insert(i, cell);
-    }
+    grid_.move(i, a, side);
     predictCell(i, now);
 
     // The cells that just came within reach at each level: the far column (or row) in the
@@ -289,8 +268,8 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
         ay = m.y;
     }
     Event best = a.coll;
-    for (std::uint8_t l = 0; l < levelCount_; ++l) {
-        const std::int64_t k = reach(a.level, l);
+    for (std::uint8_t l = 0; l < grid_.levelCount(); ++l) {
+        const std::int64_t k = grid_.reach(a.level, l);
         switch (side) {
             case 0:
                 scanBlock(i, now, ax, ay, l, a.kx - k, a.kx - k, a.ky - k, a.ky + k, best);

@@ -108,13 +108,13 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
             if (gravity_ && c.pinY) b.flags |= kRestY;
         }
     }
-    setUpGrid();
-    obstacles_.build(def_.obstacles, cells_, skinX_, skinY_,
-                     *std::max_element(levelRadius_.begin(), levelRadius_.end()));
+    grid_.setUp(def_, bodies_, cold_);
+    obstacles_.build(def_.obstacles, grid_.fine(), grid_.skinX(), grid_.skinY(),
+                     grid_.largestRadius());
     sortByCell(false);
     eventsSinceSort_ = 0;
     for (std::uint32_t i = 0; i < n; ++i)
-        insertMember(i);
+        grid_.insert(i, cold_[i]);
     recordPlacedOverlaps();
     queue_.reset(2 * n, bucketWidth());
     keptSleepers_ = !before.empty();
@@ -138,7 +138,7 @@ void ExactStepper::recordPlacedOverlaps() {
     const auto n = static_cast<std::uint32_t>(bodies_.size());
     for (std::uint32_t i = 0; i < n; ++i) {
         const Body& a = bodies_[i];
-        forEachAround(i, [&](std::uint32_t q) {
+        grid_.forEachAround(cold_[i], [&](std::uint32_t q) {
             Body& b = bodies_[q];
             if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) return;
             const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
@@ -165,8 +165,8 @@ double ExactStepper::bucketWidth() const {
     double v2 = 0.0;
     for (const Body& b : bodies_)
         v2 += b.vx * b.vx + b.vy * b.vy;
-    const double side =
-        std::min(cells_.faceX(1) - cells_.faceX(0), cells_.faceY(1) - cells_.faceY(0));
+    const CellList& cells = grid_.fine();
+    const double side = std::min(cells.faceX(1) - cells.faceX(0), cells.faceY(1) - cells.faceY(0));
     // Under gravity speeds grow to about √(g·side) within a cell crossing.
     if (gravity_) v2 += static_cast<double>(bodies_.size()) * std::hypot(gx_, gy_) * side;
     if (!(v2 > 0.0)) return 1.0;

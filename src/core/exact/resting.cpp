@@ -227,7 +227,7 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     double fx[kMax], fy[kMax];
     int free = 0;
     const bool freeCount = def_.restitution < 1.0 && (keptSleepers_ || now >= kSettleTime);
-    forEachAround(i, [&](std::uint32_t q) {
+    grid_.forEachAround(cold_[i], [&](std::uint32_t q) {
         const Body& b = bodies_[q];
         if (q == i || (b.flags & kHeld && !isStatic(b))) return;
         const bool still = isStatic(b);
@@ -359,7 +359,7 @@ void ExactStepper::sleepNeighboursAtRest(std::uint32_t i, double now) {
     // floor, say) has no event of its own to fall asleep at, and would keep i provisional for
     // ever: it falls asleep now if what is static holds it.
     const Body& a = bodies_[i];
-    forEachAround(i, [&](std::uint32_t q) {
+    grid_.forEachAround(cold_[i], [&](std::uint32_t q) {
         const Body& b = bodies_[q];
         if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return;
         double ax, ay;
@@ -395,7 +395,7 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         const std::uint32_t p = wakeStack_.back();
         wakeStack_.pop_back();
         const Body& a = bodies_[p];
-        forEachAround(p, [&](std::uint32_t q) {
+        grid_.forEachAround(cold_[p], [&](std::uint32_t q) {
             Body& b = bodies_[q];
             if (!(b.flags & kAsleep)) return;
             const double rx = b.x - a.x, ry = b.y - a.y;

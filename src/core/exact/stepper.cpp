@@ -160,14 +160,48 @@ void ExactStepper::sync(ParticleArrays& p) {
     syncOwed_ = false;
 }
 
+void ExactStepper::sortByCell(bool midRun) {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    const std::vector<std::uint32_t> to = grid_.cellOrder(cold_);
+    renumber(bodies_, to);
+    renumber(cold_, to);
+    renumber(order_, to);
+    renumber(ids_, to);
+    if (gravity_) {
+        renumber(wokeAt_, to);
+        renumber(depth_, to);
+        renumber(recheckAt_, to);
+        rate_.renumber(to);
+    }
+    if (!slide_.empty()) renumber(slide_, to);
+    if (!turn_.empty()) renumber(turn_, to);
+    if (midRun) {
+        // Carry the scheduled events over to the new indices.
+        std::vector<double> times(2 * static_cast<std::size_t>(n));
+        for (std::uint32_t i = 0; i < n; ++i) {
+            times[2 * to[i]] = queue_.timeOf(2 * i);
+            times[2 * to[i] + 1] = queue_.timeOf(2 * i + 1);
+        }
+        for (Cold& c : cold_) {
+            if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
+        }
+        for (std::uint32_t& i : heldHit_)
+            i = to[i];
+        queue_.reset(2 * n, queue_.bucketWidth());
+        for (std::uint32_t k = 0; k < 2 * n; ++k)
+            queue_.update(k, times[k]);
+        grid_.clearMembers();
+        for (std::uint32_t i = 0; i < n; ++i)
+            grid_.insert(i, cold_[i]);
+    }
+}
+
 std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
-                        sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
+                        sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
                         queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
                         sizeof(Slide) * slide_.capacity() + sizeof(Turn) * turn_.capacity();
-    for (const Level& level : upper_)
-        bytes += level.cells.memoryBytes();
     // An unordered_map node holds the key, the value and the next pointer; the table one
     // pointer per bucket.
     bytes +=

@@ -77,6 +77,7 @@
 #include "exact/cell_list.hpp"
 #include "exact/collision_rate.hpp"
 #include "exact/event_queue.hpp"
+#include "exact/grid.hpp"
 #include "exact/obstacle_cells.hpp"
 
 namespace psb::exact {
@@ -209,13 +210,6 @@ class ExactStepper {
     [[nodiscard]] std::size_t memoryBytes() const;
 
   private:
-    // A size class above level 0: its members are listed in cells of block × block fine cells
-    // (cells_ is level 0's list and the fine grid everyone's cell moves follow).
-    struct Level {
-        CellList cells;
-        std::int64_t block = 1;
-    };
-
     // --- the loop (stepper.cpp) ---------------------------------------------------------------
     // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
     // the budget (0: none) ran out, the time of the first event left.
@@ -232,28 +226,9 @@ class ExactStepper {
     }
     [[nodiscard]] double bucketWidth() const;
 
-    // --- grid and size levels (grid.cpp, grid.hpp) --------------------------------------------
-    void setUpGrid();
-    void assignLevels(double spacing, double& fineDiameter);
-    void setUpLevels();
-    [[nodiscard]] bool populous(std::uint8_t level) const;
-    [[nodiscard]] bool populousUpperLevel() const;
+    // Re-sorts the particles into cell order (grid.hpp), every per-particle array with them;
+    // `midRun`: the scheduled events and the cell lists follow.
     void sortByCell(bool midRun);
-    [[nodiscard]] std::int64_t reach(std::uint8_t a, std::uint8_t b) const {
-        return reach_[a * levelCount_ + b];
-    }
-    [[nodiscard]] const CellList& listOf(std::uint8_t level) const {
-        return level == 0 ? cells_ : upper_[level - 1].cells;
-    }
-    [[nodiscard]] std::uint32_t memberCell(std::uint32_t i) const;
-    void insertMember(std::uint32_t i);
-    template <typename F>
-    void forCells(std::uint8_t level, std::int64_t x0, std::int64_t x1, std::int64_t y0,
-                  std::int64_t y1, F&& f) const;
-    // Calls f(q) for every particle q near enough to touch i (i included): the cells of every
-    // level within its reach of i's level.
-    template <typename F>
-    void forEachAround(std::uint32_t i, F&& f) const;
 
     // --- motion (motion.hpp) ------------------------------------------------------------------
     void advance(std::uint32_t i, double t);
@@ -423,16 +398,8 @@ class ExactStepper {
     std::vector<Cold> cold_;
     std::vector<std::uint32_t> order_;
     std::vector<ParticleId> ids_;
-    CellList cells_;                    // level 0's members; the fine grid of every cell move
-    double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
-    std::vector<Level> upper_;          // levels 1, 2, ...
-    ObstacleCells obstacles_;           // the fixed obstacles each fine cell may reach
-    std::uint8_t levelCount_ = 1;
-    // reach_[a · levelCount_ + b]: how many fine cells apart (per axis) a particle of level a
-    // and one of level b may be and still touch; 1 for two of level 0.
-    std::vector<std::int64_t> reach_;
-    std::vector<double> levelRadius_;          // largest radius of each level
-    std::vector<std::uint32_t> levelMembers_;  // particles of each level
+    Grid grid_;                // the cells and size levels
+    ObstacleCells obstacles_;  // the fixed obstacles each fine cell may reach
     EventQueue queue_;
     std::uint64_t eventsSinceSort_ = 0;
     double maxOverlap_ = 0.0;
