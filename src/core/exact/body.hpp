@@ -30,7 +30,7 @@ struct alignas(64) Body {
 };
 inline constexpr std::uint32_t kHeld = 1;               // kinematic: infinite mass
 inline constexpr std::uint32_t kJammed = 2;             // passes through held particles (jam guard)
-inline constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
+inline constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of PlacedContacts
 inline constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity, no acceleration
 inline constexpr std::uint32_t kRestX = 16;         // no acceleration along x (on a wall, pinned)
 inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y

@@ -201,17 +201,8 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                 ry = b.y + b.vy * h - ay;
             }
             double sigma = a.r + b.r;
-            if (a.flags & b.flags & kPlacedOverlapping) {
-                const auto it = overlapContact_.find(pairKey(order_[i], order_[q]));
-                if (it != overlapContact_.end()) {
-                    // Apart at last: from now on the pair is an ordinary one.
-                    if (rx * rx + ry * ry >= sigma * sigma) {
-                        overlapContact_.erase(it);
-                    } else {
-                        sigma = it->second.distance;
-                    }
-                }
-            }
+            if (a.flags & b.flags & kPlacedOverlapping)
+                sigma = placed_.contactDistance(order_[i], order_[q], rx, ry, sigma);
             const double t =
                 now + (gravity_ ? pairTimeUnderGravity(a, am, b, bm, sigma,
                                                        std::min(best.time, b.nextColl) - now)

@@ -1,7 +1,7 @@
 // The exact stepper's state rebuilt from the world's arrays, after any change to the world:
 // the particles copied and clamped into the box, the grid and its levels set up, the particles
-// sorted into cell order, the pairs placed overlapping recorded, and every particle's two events
-// predicted. What slept and still may sleeps on (keepSleepers, resting.cpp).
+// sorted into cell order, the pairs placed overlapping recorded (placed_contacts.hpp), and every
+// particle's two events predicted. What slept and still may sleeps on (keepSleepers, resting.cpp).
 
 #include <algorithm>
 #include <cmath>
@@ -115,7 +115,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     eventsSinceSort_ = 0;
     for (std::uint32_t i = 0; i < n; ++i)
         grid_.insert(i, cold_[i]);
-    recordPlacedOverlaps();
+    placed_.record(bodies_, cold_, order_, grid_);
     queue_.reset(2 * n, bucketWidth());
     keptSleepers_ = !before.empty();
     if (keptSleepers_) keepSleepers(before);
@@ -124,39 +124,6 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         predictCell(i, 0.0);
     }
     stale_ = false;
-}
-
-void ExactStepper::recordPlacedOverlaps() {
-    // A pair that overlaps here was placed so from outside (spawned, dragged, clamped into a
-    // box too small for its lattice): rounding alone leaves overlaps of a few ulps only. Its
-    // contact distance is the distance it was placed at, until it is found apart (scanCells).
-    // Colliding it at whatever distance it happens to have instead would be a ratchet: every
-    // time it drifts apart the gain is kept, so in a box too full for its discs the overlaps
-    // are squeezed out into the gaps of everyone else until the pile jams and the collision
-    // rate diverges.
-    overlapContact_.clear();
-    const auto n = static_cast<std::uint32_t>(bodies_.size());
-    for (std::uint32_t i = 0; i < n; ++i) {
-        const Body& a = bodies_[i];
-        grid_.forEachAround(cold_[i], [&](std::uint32_t q) {
-            Body& b = bodies_[q];
-            if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) return;
-            const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
-            const double d2 = rx * rx + ry * ry;
-            if (!(d2 < sigma * sigma)) return;
-            const double d = std::sqrt(d2);
-            overlapContact_[pairKey(order_[i], order_[q])] = {d, sigma - d};
-            bodies_[i].flags |= kPlacedOverlapping;
-            b.flags |= kPlacedOverlapping;
-        });
-    }
-}
-
-double ExactStepper::placedOverlap() const {
-    double deepest = 0.0;
-    for (const auto& [key, contact] : overlapContact_)
-        deepest = std::max(deepest, contact.depth);
-    return deepest;
 }
 
 double ExactStepper::bucketWidth() const {

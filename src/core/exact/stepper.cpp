@@ -34,7 +34,7 @@ double ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt,
     // at collisions (which rounding keeps at a few ulps). Every step that carries one at its
     // placed distance reports it, not only the one that found it: counters reset between steps
     // (the app's per frame) with no change to the world, so no rebuild, still bound the state.
-    counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap());
+    counters.maxOverlap = std::max(counters.maxOverlap, placed_.deepest());
     collisionOffset_ = worldTime_ - clock_;
     events_ = 0;
     // The jam guard counts per step: clear only the particles it counted in the last one.
@@ -202,12 +202,7 @@ std::size_t ExactStepper::memoryBytes() const {
                         sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
                         queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
                         sizeof(Slide) * slide_.capacity() + sizeof(Turn) * turn_.capacity();
-    // An unordered_map node holds the key, the value and the next pointer; the table one
-    // pointer per bucket.
-    bytes +=
-        overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(PlacedContact) + sizeof(void*)) +
-        overlapContact_.bucket_count() * sizeof(void*);
-    return bytes;
+    return bytes + placed_.memoryBytes();
 }
 
 }  // namespace psb::exact

@@ -79,6 +79,7 @@
 #include "exact/event_queue.hpp"
 #include "exact/grid.hpp"
 #include "exact/obstacle_cells.hpp"
+#include "exact/placed_contacts.hpp"
 
 namespace psb::exact {
 
@@ -217,13 +218,6 @@ class ExactStepper {
 
     // --- rebuild (rebuild.cpp) ----------------------------------------------------------------
     void rebuild(ParticleArrays& p, const WorldDef& def);
-    void recordPlacedOverlaps();
-    // The deepest overlap of the pairs still kept at their placed distance: every step carries
-    // them, so every step reports it (StepCounters::maxOverlap).
-    [[nodiscard]] double placedOverlap() const;
-    [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
-        return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
-    }
     [[nodiscard]] double bucketWidth() const;
 
     // Re-sorts the particles into cell order (grid.hpp), every per-particle array with them;
@@ -412,14 +406,9 @@ class ExactStepper {
     CollisionLog* collisionLog_ = nullptr;
     double worldTime_ = 0.0;
     double collisionOffset_ = 0.0;
-    // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
-    // storage indices (order_), with the contact distance they keep until they are found apart
-    // and how deep that distance is inside contact (r₁ + r₂ minus it, metres).
-    struct PlacedContact {
-        double distance;
-        double depth;
-    };
-    std::unordered_map<std::uint64_t, PlacedContact> overlapContact_;
+    // Pairs found overlapping at the last rebuild (placed so from outside): the contact
+    // distance each keeps until it is found apart.
+    PlacedContacts placed_;
     bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
     // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
     std::vector<std::uint32_t> heldHit_;
