@@ -57,7 +57,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         return;
     }
     ++events_;
-    // Squeezed by a held particle: the held jam guard's (countHeldHit).
+    // Squeezed by a held particle: the held jam guard's (JamGuard::countHeldHit).
     const bool byHeld = ((a.flags | b.flags) & kHeld) != 0;
     const bool aJammed = !byHeld && jamsAt(i, ev.time), bJammed = !byHeld && jamsAt(j, ev.time);
     const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
@@ -98,7 +98,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
             // them ever faster: after kWakeAfterHits such hits in a step it wakes them, and the
             // wedge opens as it would, by pushing them apart.
             if ((bodies_[o].flags & kHeld) || approach > 2.0 * restSpeed_ ||
-                countHit(o) >= kWakeAfterHits) {
+                jams_.countHit(o, cold_[o]) >= kWakeAfterHits) {
                 wake(s, ev.time);
                 woke = true;
                 return false;
@@ -144,8 +144,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         ++counters.collisions;
         if (!aStays) ++a.count;
         if (!bStays) ++b.count;
-        if (b.flags & kHeld) countHeldHit(i);
-        if (a.flags & kHeld) countHeldHit(j);
+        if (b.flags & kHeld) jams_.countHeldHit(i, a, cold_[i]);
+        if (a.flags & kHeld) jams_.countHeldHit(j, b, cold_[j]);
         if (log_) log_->push_back({ev.time, order_[i], order_[j]});
         if (collisionLog_) {
             // A pinned a's momentum changes by less than the contact's impulse (the walls
@@ -304,26 +304,10 @@ double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const
     return 1.0 - (1.0 - e) * (impactSpeed / kElasticBelowSpeed);
 }
 
-std::uint32_t ExactStepper::countHit(std::uint32_t i) {
-    if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
-    return cold_[i].heldHits;
-}
-
 bool ExactStepper::jamsAt(std::uint32_t i, double t) {
     Body& a = bodies_[i];
     if (a.flags & (kHeld | kAsleep)) return false;  // cannot jam
-    // Without time or room since its last change: within kJamTime, moved less than kJamRoom of
-    // its radius (the speed it had since then times the time).
-    const double h = t - a.t;
-    const bool stuck = h <= kJamTime && h * std::hypot(a.vx, a.vy) <= kJamRoom * a.r;
-    if (!stuck && repeats_.empty()) return false;  // the usual case: nothing to count
-    const std::uint32_t who = order_[i];           // stable while indices are re-sorted
-    if (!stuck) {
-        repeats_.erase(who);  // it moved: its run of hits ends
-        return false;
-    }
-    std::uint32_t& hits = repeats_[who];
-    if (hits < kJamHits && ++hits < kJamHits) return false;
+    if (!jams_.jams(a, i, order_, t)) return false;
     // Jammed: no room to move. Its velocity, and any it is given while its hits keep coming
     // without time between, goes to the bodies that hold it.
     if (gravity_) {
@@ -336,10 +320,6 @@ bool ExactStepper::jamsAt(std::uint32_t i, double t) {
         ++a.count;
     }
     return true;
-}
-
-void ExactStepper::countHeldHit(std::uint32_t i) {
-    if (countHit(i) >= kJamLimit) bodies_[i].flags |= kJammed;
 }
 
 }  // namespace psb::exact

@@ -57,8 +57,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     order_.resize(n);
 
     ids_ = p.id;
-    heldHit_.clear();
-    repeats_.clear();
+    jams_.reset();
     wokeAt_.assign(gravity_ ? n : 0, -kNever);
     depth_.assign(gravity_ ? n : 0, 0);
     recheckAt_.assign(gravity_ ? n : 0, kNever);

@@ -37,12 +37,8 @@ double ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt,
     counters.maxOverlap = std::max(counters.maxOverlap, placed_.deepest());
     collisionOffset_ = worldTime_ - clock_;
     events_ = 0;
-    // The jam guard counts per step: clear only the particles it counted in the last one.
-    for (const std::uint32_t i : heldHit_) {
-        bodies_[i].flags &= ~kJammed;
-        cold_[i].heldHits = 0;
-    }
-    heldHit_.clear();
+    // The jam guard counts per step.
+    jams_.startStep(bodies_, cold_);
     maxOverlap_ = counters.maxOverlap;
     const double start = clock_;
     const double tEnd = start + dt;
@@ -185,8 +181,7 @@ void ExactStepper::sortByCell(bool midRun) {
         for (Cold& c : cold_) {
             if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
         }
-        for (std::uint32_t& i : heldHit_)
-            i = to[i];
+        jams_.renumber(to);
         queue_.reset(2 * n, queue_.bucketWidth());
         for (std::uint32_t k = 0; k < 2 * n; ++k)
             queue_.update(k, times[k]);

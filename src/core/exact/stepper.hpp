@@ -78,6 +78,7 @@
 #include "exact/collision_rate.hpp"
 #include "exact/event_queue.hpp"
 #include "exact/grid.hpp"
+#include "exact/jam_guard.hpp"
 #include "exact/obstacle_cells.hpp"
 #include "exact/placed_contacts.hpp"
 
@@ -93,24 +94,6 @@ inline constexpr double kContactDuration = 1e-5;
 /// One millimetre per second: far below the speeds of the sandbox's scenes (metres per second),
 /// far above the rounding noise of their velocities.
 inline constexpr double kElasticBelowSpeed = 1e-3;
-
-/// Collisions with held particles after which a squeezed particle passes through them for the
-/// rest of the step.
-inline constexpr std::uint32_t kJamLimit = 1000;
-
-/// Collisions of one particle in a row without time or room between them (each within
-/// kJamTime of its last change, having moved less than kJamRoom of its radius since) after
-/// which it is jammed: placed overlapping bodies that surround it (walls, obstacles, discs
-/// wider than the box), it has no room to move, and the rules for invalid states would bounce
-/// it between them for ever. Its velocity is absorbed (under gravity it falls asleep where it
-/// is), and while its hits keep coming without time between it is as fixed as a sleeper.
-/// Squeezes by held particles are kJamLimit's. Found by the world mutation fuzzer. Legitimate
-/// runs are far shorter: at most 6,800 in a row in the exact mode's pile, Galton, funnel and
-/// hourglass tests (a disc settling in a pocket with e = 0), and a disc that can leave a wedge,
-/// however narrow, leaves after about π/θ bounces.
-inline constexpr std::uint32_t kJamHits = 100000;
-inline constexpr double kJamTime = 1e-9;  ///< seconds: 10⁻⁴ of the contact duration t_c
-inline constexpr double kJamRoom = 1e-9;  ///< of the radius
 
 /// Of the box's extent: how far past a wall its event may leave a particle's centre before
 /// handleWall puts it back on the wall (rounding of the event's time at extreme speeds; found by
@@ -259,13 +242,8 @@ class ExactStepper {
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
     [[nodiscard]] static bool collidedWithin(const Body& b, double now);
     [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
-    // Counts a hit of i on a held particle or a sleeper this step (heldHits, reset per step);
-    // returns the count.
-    std::uint32_t countHit(std::uint32_t i);
-    void countHeldHit(std::uint32_t i);
-    // Before a collision of i at time t: counts it if it comes without time or room since i's
-    // last change, and past kJamHits in a row jams i (its velocity absorbed). True while
-    // i is jammed.
+    // Before a collision of i at time t: true while i is jammed (jam_guard.hpp), its velocity
+    // absorbed.
     bool jamsAt(std::uint32_t i, double t);
 
     // --- rotation (collisions.cpp) ------------------------------------------------------------
@@ -410,11 +388,7 @@ class ExactStepper {
     // distance each keeps until it is found apart.
     PlacedContacts placed_;
     bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
-    // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
-    std::vector<std::uint32_t> heldHit_;
-    // The jam guard (jamsAt): the particles whose last collisions came without time or room
-    // between, by world index, and how many in a row.
-    std::unordered_map<std::uint32_t, std::uint32_t> repeats_;
+    JamGuard jams_;
 };
 
 }  // namespace psb::exact
