@@ -146,14 +146,14 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         if (!bStays) ++b.count;
         if (b.flags & kHeld) jams_.countHeldHit(i, a, cold_[i]);
         if (a.flags & kHeld) jams_.countHeldHit(j, b, cold_[j]);
-        if (log_) log_->push_back({ev.time, order_[i], order_[j]});
-        if (collisionLog_) {
-            // A pinned a's momentum changes by less than the contact's impulse (the walls
-            // take the rest): the impulse is then what b received.
-            const bool aPinned = cold_[i].pinX || cold_[i].pinY;
-            collisionLog_->add(pairCollision(collisionOffset_ + ev.time, ids_[i], ids_[j], aBefore,
-                                             Vec2(a.vx, a.vy), bBefore, Vec2(b.vx, b.vy),
-                                             aPinned ? 0.0 : wi, cold_[i].m, cold_[j].m));
+        if (recorder_.on()) {
+            recorder_.add({ev.time, order_[i], order_[j]}, [&](double t) {
+                // A pinned a's momentum changes by less than the contact's impulse (the walls
+                // take the rest): the impulse is then what b received.
+                const bool aPinned = cold_[i].pinX || cold_[i].pinY;
+                return pairCollision(t, ids_[i], ids_[j], aBefore, Vec2(a.vx, a.vy), bBefore,
+                                     Vec2(b.vx, b.vy), aPinned ? 0.0 : wi, cold_[i].m, cold_[j].m);
+            });
         }
     }
     if (gravity_) {
@@ -253,11 +253,12 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     if (dv > 0.0) {
         ++counters.wallCollisions;
         counters.wallImpulse += cold_[i].m * dv;
-        if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
-        if (collisionLog_) {
-            collisionLog_->add(surfaceCollision(collisionOffset_ + ev.time, Collision::With::Wall,
-                                                static_cast<std::uint32_t>(ev.side), ids_[i],
-                                                before, Vec2(a.vx, a.vy), cold_[i].m));
+        if (recorder_.on()) {
+            recorder_.add({ev.time, order_[i], CollisionRecord::kWall + ev.side}, [&](double t) {
+                return surfaceCollision(t, Collision::With::Wall,
+                                        static_cast<std::uint32_t>(ev.side), ids_[i], before,
+                                        Vec2(a.vx, a.vy), cold_[i].m);
+            });
         }
     }
     ++a.count;

@@ -126,10 +126,11 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     }
     if (dv > 0.0) {
         ++counters.obstacleCollisions;
-        if (log_) log_->push_back({a.t, order_[i], CollisionRecord::kObstacle + k});
-        if (collisionLog_) {
-            collisionLog_->add(surfaceCollision(collisionOffset_ + a.t, Collision::With::Obstacle,
-                                                k, ids_[i], before, Vec2(a.vx, a.vy), cold_[i].m));
+        if (recorder_.on()) {
+            recorder_.add({a.t, order_[i], CollisionRecord::kObstacle + k}, [&](double t) {
+                return surfaceCollision(t, Collision::With::Obstacle, k, ids_[i], before,
+                                        Vec2(a.vx, a.vy), cold_[i].m);
+            });
         }
     }
 }

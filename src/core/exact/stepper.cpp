@@ -35,7 +35,7 @@ double ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt,
     // placed distance reports it, not only the one that found it: counters reset between steps
     // (the app's per frame) with no change to the world, so no rebuild, still bound the state.
     counters.maxOverlap = std::max(counters.maxOverlap, placed_.deepest());
-    collisionOffset_ = worldTime_ - clock_;
+    recorder_.startStep(clock_);
     events_ = 0;
     // The jam guard counts per step.
     jams_.startStep(bodies_, cold_);

@@ -76,6 +76,7 @@
 #include "exact/body.hpp"
 #include "exact/cell_list.hpp"
 #include "exact/collision_rate.hpp"
+#include "exact/collision_recorder.hpp"
 #include "exact/event_queue.hpp"
 #include "exact/grid.hpp"
 #include "exact/jam_guard.hpp"
@@ -143,17 +144,6 @@ inline constexpr double kRestHop = 5e-4;
 /// rest on the floor rests, a particle that moves never does.
 inline constexpr double kRestRoundingGap = 1e-12;
 
-/// One resolved collision, for tests and diagnostics. `j` is a particle index for a pair,
-/// kWall + w for wall w (0 = left, 1 = right, 2 = top, 3 = bottom), or kObstacle + k for the
-/// world's obstacle k.
-struct CollisionRecord {
-    static constexpr std::uint32_t kWall = UINT32_MAX - 3;
-    static constexpr std::uint32_t kObstacle = 1u << 31;  ///< particle indices stay below it
-    double time;  ///< seconds since the stepper's last rebuild
-    std::uint32_t i;
-    std::uint32_t j;
-};
-
 class ExactStepper {
   public:
     /// Advances the event state by dt seconds. Rebuilds it from `p` and `def` first if
@@ -179,14 +169,11 @@ class ExactStepper {
 
     /// Appends every resolved collision to `log` (nullptr to stop). Indices are storage
     /// indices of `p`; times restart from 0 at each rebuild.
-    void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
+    void setLog(std::vector<CollisionRecord>* log) { recorder_.setLog(log); }
 
     /// The world's record of collisions (collision_log.hpp) for the next step, nullptr for none;
     /// `worldTime` is World::time() at its start, the clock the records' times are on.
-    void record(CollisionLog* log, double worldTime) {
-        collisionLog_ = log;
-        worldTime_ = worldTime;
-    }
+    void record(CollisionLog* log, double worldTime) { recorder_.setWorldLog(log, worldTime); }
 
     /// Bytes held by the event state (per-particle records, every level's cells, the queue,
     /// placed overlaps): what a copy of a world in this mode carries besides its own arrays.
@@ -378,12 +365,7 @@ class ExactStepper {
     // Events handled in this step (pairs, stale pairs, walls, obstacles, slides, cell moves):
     // what step() adds to StepCounters::events.
     std::uint64_t events_ = 0;
-    std::vector<CollisionRecord>* log_ = nullptr;
-    // The world's record (record()): not state, set before every step. A record's time is
-    // collisionOffset_ + the event's time (on clock_, which restarts at each rebuild).
-    CollisionLog* collisionLog_ = nullptr;
-    double worldTime_ = 0.0;
-    double collisionOffset_ = 0.0;
+    CollisionRecorder recorder_;  // where resolved collisions go (setLog, record)
     // Pairs found overlapping at the last rebuild (placed so from outside): the contact
     // distance each keeps until it is found apart.
     PlacedContacts placed_;
