@@ -1,7 +1,8 @@
 #pragma once
 // The exact stepper's records: what it keeps per particle (Body, what a neighbour's prediction
 // reads; Cold, what only the particle's own events read), the events it schedules, where a
-// particle is at a time and how it moves there (Motion), and a sliding contact (Slide).
+// particle is at a time and how it moves there (Motion, Gravity), a sliding contact (Slide) and
+// a rotation (Turn).
 //
 // Memory. Events come in time order, which is random in space, so at 10^5 particles nearly
 // every particle an event touches is a cache miss. What an event reads about a neighbour is one
@@ -34,10 +35,10 @@ inline constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of PlacedCo
 inline constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity, no acceleration
 inline constexpr std::uint32_t kRestX = 16;         // no acceleration along x (on a wall, pinned)
 inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y
-inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: slide_ holds how
+inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: Slides holds how
 inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (resting.cpp)
 // A disc that turns, in a world with rough contacts, on the face it slides on (kSliding) or the
-// one wall it rests on (kRestX or kRestY): it slips or rolls (rolling.cpp); slide_ holds its
+// one wall it rests on (kRestX or kRestY): it slips or rolls (rolling.cpp); Slides holds its
 // acceleration along the surface and the end of its slip, turn_ its angular acceleration.
 // Also a disc that does not turn on the wall it rests on: it slides under kinetic friction
 // until it stops (slipEnds).
@@ -66,6 +67,11 @@ struct Turn {
 // Where a particle is at a time, and how it moves there (gravity only).
 struct Motion {
     double x, y, vx, vy, ax, ay;
+};
+// The gravity particles fall under (m/s²); `on`: it is not zero.
+struct Gravity {
+    double x = 0.0, y = 0.0;
+    bool on = false;
 };
 struct Event {
     double time;

@@ -91,7 +91,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A sleeper hit hard enough, or by a held particle, wakes; otherwise it stays put and the
     // other bounces off it as off an infinitely heavy disc.
     bool aStays = false, bStays = false, woke = false;
-    if (gravity_) {
+    if (gravity_.on) {
         const auto hitsSleeper = [&](std::uint32_t s, std::uint32_t o) {
             if (!(bodies_[s].flags & kAsleep)) return false;
             // A particle wedged between sleepers (no room between them) would bounce between
@@ -156,7 +156,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
             });
         }
     }
-    if (gravity_) {
+    if (gravity_.on) {
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
         liftPressedPair(i, j, n, aSlid, bSlid);
@@ -215,7 +215,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         double& x = alongX ? a.x : a.y;
         const double extent = alongX ? def_.width : def_.height;
         const double inside = std::clamp(x, a.r, extent - a.r);
-        if (gravity_ || std::abs(x - inside) > kWallSlack * extent) x = inside;
+        if (gravity_.on || std::abs(x - inside) > kWallSlack * extent) x = inside;
     }
     const Vec2 before(a.vx, a.vy);
     double dv = 0.0;
@@ -244,7 +244,8 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if ((a.flags & across) && vt != 0.0 && !(alongX ? cold_[i].pinY : cold_[i].pinX))
             a.flags &= ~across;
         // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
-        if (gravity_ && outward * (alongX ? gx_ : gy_) > 0.0 && std::abs(v) < restSpeed_) {
+        if (gravity_.on && outward * (alongX ? gravity_.x : gravity_.y) > 0.0 &&
+            std::abs(v) < restSpeed_) {
             dv += std::abs(v);
             v = 0.0;
             a.flags |= alongX ? kRestX : kRestY;
@@ -262,7 +263,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         }
     }
     ++a.count;
-    if (gravity_ && !(a.flags & kHeld)) {
+    if (gravity_.on && !(a.flags & kHeld)) {
         settle(i, ev.time,
                a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
         // Resting on a wall, a disc that turns slips or rolls along it (rolling.cpp).
@@ -311,7 +312,7 @@ bool ExactStepper::jamsAt(std::uint32_t i, double t) {
     if (!jams_.jams(a, i, order_, t)) return false;
     // Jammed: no room to move. Its velocity, and any it is given while its hits keep coming
     // without time between, goes to the bodies that hold it.
-    if (gravity_) {
+    if (gravity_.on) {
         const Hold hold = this->hold(i, kUngrounded + 1, t);
         fallAsleep(i, t, hold.depth, !hold.firm);
     } else if (a.vx != 0.0 || a.vy != 0.0) {

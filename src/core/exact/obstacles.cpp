@@ -29,8 +29,8 @@ void ExactStepper::predictObstacles(std::uint32_t i, const Motion& m, double now
     // sleepers do not move.
     if (a.flags & (kHeld | kAsleep)) return;
     const Cold& c = cold_[i];
-    // The face a particle slides on is left at its end (predictSlide), never hit.
-    const std::uint32_t sliding = (a.flags & kSliding) ? slide_[i].obstacle : UINT32_MAX;
+    // The face a particle slides on is left at its end (a slide event), never hit.
+    const std::uint32_t sliding = (a.flags & kSliding) ? slides_[i].obstacle : UINT32_MAX;
     for (const std::uint32_t k : obstacles_.near(grid_.fine(), c.kx, c.ky)) {
         if (k == sliding) continue;
         const double t = now + obstacleEventTime(m.x, m.y, m.vx, m.vy, m.ax, m.ay, a.r,
@@ -54,7 +54,7 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
     reboundOffObstacle(i, ev.partner, recent, counters);
     ++a.count;
     // Off the wall it rested on if the obstacle pushed it off; asleep if it is slow and held.
-    if (gravity_) settleAfterPair(i, false);
+    if (gravity_.on) settleAfterPair(i, false);
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
 }
@@ -85,7 +85,7 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
                 : def_.friction > 0.0
                     ? reboundOffSurface<true>(a.vx, a.vy, nx, ny, e, def_.friction)
                     : reboundOffSurface<false>(a.vx, a.vy, nx, ny, e, 0.0);
-    if (gravity_) {
+    if (gravity_.on) {
         // Pressed into the obstacle by gravity and leaving it slower than the lift: leave at the
         // lift, as a pressed pair does (see resting.cpp), so that a particle on a slope
         // hops down it instead of making ever faster tiny bounces, and the next impact is never
@@ -133,6 +133,49 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
             });
         }
     }
+}
+
+bool ExactStepper::startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny) {
+    if (!slides_.start(i, bodies_[i], cold_[i], obstacles_, k, nx, ny)) return false;
+    setSlideAcceleration(i);
+    return true;
+}
+
+void ExactStepper::setSlideAcceleration(std::uint32_t i) {
+    if (rough_ && turn_[i].q > 0.0) {
+        setRoll(i);  // a disc that turns slips or rolls (rolling.cpp)
+        return;
+    }
+    slides_.setBlockAcceleration(i, bodies_[i], obstacles_, gravity_, def_.friction);
+}
+
+void ExactStepper::handleSlide(std::uint32_t i, const Event& ev) {
+    Body& a = bodies_[i];
+    advance(i, ev.time);
+    ++events_;
+    ++a.count;
+    if (ev.side < 2) {
+        // Off the end of the face: free flight.
+        stopSliding(i);
+        Slides::leaveEnd(a, obstacles_[ev.partner], ev.side);
+    } else {
+        // Stopped by friction: at rest, held by static friction (and asleep if it may sleep
+        // there), or sliding back down a slope steeper than the friction angle.
+        a.vx = a.vy = 0.0;
+        setSlideAcceleration(i);
+        settleAfterPair(i, false);
+    }
+    predictCollision(i, ev.time);
+    predictCell(i, ev.time);
+}
+
+void ExactStepper::keepOnFace(std::uint32_t i, StepCounters& counters, bool maySlide) {
+    // i slid on a face until a pair hit it just now. Sent off the face, it flies; still on it
+    // (not moving away from it), the face answers at once, as the obstacle event that its next
+    // prediction would find at this instant would: a rebound, and a slide again if slow.
+    Body& a = bodies_[i];
+    if (!slides_.stillOnFace(i, a, obstacles_)) return;
+    reboundOffObstacle(i, slides_[i].obstacle, collidedWithin(a, a.t), counters, maySlide);
 }
 
 int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, int count,

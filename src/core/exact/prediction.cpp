@@ -37,7 +37,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     Event best{kNever, 0, 0, Kind::None, 0};
 
     Motion m{ax, ay, a.vx, a.vy, 0.0, 0.0};
-    if (gravity_) {
+    if (gravity_.on) {
         m = motionAt(i, a, now);
         ax = m.x;
         ay = m.y;
@@ -64,7 +64,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     }
     if (!obstacles_.empty()) {
         predictObstacles(i, m, now, best);
-        if (a.flags & kSliding) predictSlide(i, m, now, best);
+        if (a.flags & kSliding) slides_.predict(i, a, obstacles_, m, now, best);
     }
     if (a.flags & kRolling) predictRoll(i, now, best);
     scanNeighbours(i, now, ax, ay, best);
@@ -102,10 +102,10 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     const Cold& ac = cold_[i];
     const double ha = now - a.t;
     Motion m{a.x + a.vx * ha, a.y + a.vy * ha, a.vx, a.vy, 0.0, 0.0};
-    if (gravity_) m = motionAt(i, a, now);
+    if (gravity_.on) m = motionAt(i, a, now);
     const auto exitTime = [&](double x, double v, double acc, double lo, double hi, int& f) {
-        return gravity_ ? slabExitTimeAccelerated(x, v, acc, lo, hi, f)
-                        : slabExitTime(x, v, lo, hi, f);
+        return gravity_.on ? slabExitTimeAccelerated(x, v, acc, lo, hi, f)
+                           : slabExitTime(x, v, lo, hi, f);
     };
     double best = kNever;
     std::int8_t side = 0;
@@ -162,7 +162,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                              Event& best) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
-    const Motion am = gravity_ ? motionAt(i, a, now) : Motion{};
+    const Motion am = gravity_.on ? motionAt(i, a, now) : Motion{};
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
     // neighbourhood overlap instead of following one another.
     constexpr int kBatch = 32;
@@ -192,7 +192,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             const double h = now - b.t;
             Motion bm{};
             double rx, ry;
-            if (gravity_) {
+            if (gravity_.on) {
                 bm = motionAt(q, b, now);
                 rx = bm.x - am.x;
                 ry = bm.y - am.y;
@@ -204,9 +204,9 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             if (a.flags & b.flags & kPlacedOverlapping)
                 sigma = placed_.contactDistance(order_[i], order_[q], rx, ry, sigma);
             const double t =
-                now + (gravity_ ? pairTimeUnderGravity(a, am, b, bm, sigma,
-                                                       std::min(best.time, b.nextColl) - now)
-                                : pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma));
+                now + (gravity_.on ? pairTimeUnderGravity(a, am, b, bm, sigma,
+                                                          std::min(best.time, b.nextColl) - now)
+                                   : pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma));
             // Only a collision before q's own scheduled collision can happen as predicted: at
             // that time q changes course or is predicted again against everything around it,
             // i included (Smallenburg 2022). Skipping later ones saves stale events.
@@ -253,7 +253,7 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     const double h = now - b.t;
     double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
     Motion m{ax, ay, b.vx, b.vy, 0.0, 0.0};
-    if (gravity_) {
+    if (gravity_.on) {
         m = motionAt(i, b, now);
         ax = m.x;
         ay = m.y;

@@ -16,7 +16,7 @@ namespace psb::exact {
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     // What was asleep before, where it was (gravity only; see resting.cpp).
     std::unordered_map<ParticleId, Kept> before;
-    const bool sameLaws = gravity_ && def.gravity == def_.gravity && def.width == def_.width &&
+    const bool sameLaws = gravity_.on && def.gravity == def_.gravity && def.width == def_.width &&
                           def.height == def_.height && def.walls == def_.walls &&
                           def.restitution == def_.restitution && def.friction == def_.friction;
     if (sameLaws) {
@@ -35,11 +35,11 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     }
     def_ = def;
     clock_ = 0.0;
-    gx_ = def.gravity.x();
-    gy_ = def.gravity.y();
-    gravity_ = gx_ != 0.0 || gy_ != 0.0;
-    if (gravity_) {
-        const double g = std::hypot(gx_, gy_);
+    gravity_.x = def.gravity.x();
+    gravity_.y = def.gravity.y();
+    gravity_.on = gravity_.x != 0.0 || gravity_.y != 0.0;
+    if (gravity_.on) {
+        const double g = std::hypot(gravity_.x, gravity_.y);
         restSpeed_ = def.restitution < 1.0
                          ? kRestSpeed
                          : std::sqrt(2.0 * g * kRestRoundingGap * std::max(def.width, def.height));
@@ -58,16 +58,16 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
 
     ids_ = p.id;
     jams_.reset();
-    wokeAt_.assign(gravity_ ? n : 0, -kNever);
-    depth_.assign(gravity_ ? n : 0, 0);
-    recheckAt_.assign(gravity_ ? n : 0, kNever);
+    wokeAt_.assign(gravity_.on ? n : 0, -kNever);
+    depth_.assign(gravity_.on ? n : 0, 0);
+    recheckAt_.assign(gravity_.on ? n : 0, kNever);
     turn_.resize(p.rotation ? n : 0);
     for (std::uint32_t i = 0; i < turn_.size(); ++i)
         turn_[i] = Turn{p.angle[i], 0.0, p.omega[i], p.spinWeight(i), 0.0};
     rough_ = p.rotation && def.friction > 0.0;
     // Slides on faces, and rolls on faces and walls (rolling.cpp).
-    slide_.assign(gravity_ && (!def_.obstacles.empty() || rough_) ? n : 0, Slide{});
-    rate_.reset(gravity_ ? n : 0);
+    slides_.reset(gravity_.on && (!def_.obstacles.empty() || rough_) ? n : 0);
+    rate_.reset(gravity_.on ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -103,8 +103,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
             c.pinX = place(b.x, b.vx, b.r, def_.width);
             c.pinY = place(b.y, b.vy, b.r, def_.height);
             // A pinned axis has no room to fall along: gravity across it is held by the walls.
-            if (gravity_ && c.pinX) b.flags |= kRestX;
-            if (gravity_ && c.pinY) b.flags |= kRestY;
+            if (gravity_.on && c.pinX) b.flags |= kRestX;
+            if (gravity_.on && c.pinY) b.flags |= kRestY;
         }
     }
     grid_.setUp(def_, bodies_, cold_);
@@ -134,7 +134,8 @@ double ExactStepper::bucketWidth() const {
     const CellList& cells = grid_.fine();
     const double side = std::min(cells.faceX(1) - cells.faceX(0), cells.faceY(1) - cells.faceY(0));
     // Under gravity speeds grow to about √(g·side) within a cell crossing.
-    if (gravity_) v2 += static_cast<double>(bodies_.size()) * std::hypot(gx_, gy_) * side;
+    if (gravity_.on)
+        v2 += static_cast<double>(bodies_.size()) * std::hypot(gravity_.x, gravity_.y) * side;
     if (!(v2 > 0.0)) return 1.0;
     const double vrms = std::sqrt(v2 / static_cast<double>(bodies_.size()));
     return side / vrms / 64.0;

@@ -181,8 +181,8 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, b
     double aax, aay, bax, bay;
     accelerationOf(i, a, aax, aay);
     accelerationOf(j, b, bax, bay);
-    if (aSlid) aax = slide_[i].ax, aay = slide_[i].ay;
-    if (bSlid) bax = slide_[j].ax, bay = slide_[j].ay;
+    if (aSlid) aax = slides_[i].ax, aay = slides_[i].ay;
+    if (bSlid) bax = slides_[j].ax, bay = slides_[j].ay;
     const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
     if (!(an < 0.0 && an * an > kPressTolerance * kPressTolerance * (rax * rax + ray * ray)))
         return;
@@ -273,7 +273,7 @@ bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int c
     // Without friction: gravity in the cone of the normals, along one of them (to 1e-9 rad) or
     // strictly between two less than a half turn apart. Anything else lets i move down.
     const double pi = 3.14159265358979323846;
-    const double ga = std::atan2(gy_, gx_);
+    const double ga = std::atan2(gravity_.y, gravity_.x);
     double lo = -kNever, hi = kNever;  // the nearest normals on either side of gravity
     bool left = false, right = false;
     for (int k = 0; k < count; ++k) {
@@ -300,7 +300,7 @@ bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int c
     // (Widening every normal's cone by the friction angle instead would count a neighbour that
     // the slide only grazes as pushing, with any force: a grain between one above and one
     // below it would be held, and the grains above a neck would lock into a fake arch.)
-    const double g = std::hypot(gx_, gy_), ux = gx_ / g, uy = gy_ / g;
+    const double g = std::hypot(gravity_.x, gravity_.y), ux = gravity_.x / g, uy = gravity_.y / g;
     bool pressed = false;
     for (int k = 0; k < count; ++k) {
         const double c = ux * nx[k] + uy * ny[k];  // cos of the face's tilt

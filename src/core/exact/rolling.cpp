@@ -64,7 +64,7 @@ bool ExactStepper::rollingSurface(std::uint32_t i, double& nx, double& ny) const
     const Body& a = bodies_[i];
     if (a.flags & kSliding) {
         // The face's normal on the side the centre is on.
-        const Obstacle& o = obstacles_[slide_[i].obstacle];
+        const Obstacle& o = obstacles_[slides_[i].obstacle];
         const double ex = o.b.x() - o.a.x(), ey = o.b.y() - o.a.y();
         const double length = std::sqrt(ex * ex + ey * ey);
         const double px = -ey / length, py = ex / length;
@@ -78,8 +78,8 @@ bool ExactStepper::rollingSurface(std::uint32_t i, double& nx, double& ny) const
     const Cold& c = cold_[i];
     const bool restX = (a.flags & kRestX) != 0, restY = (a.flags & kRestY) != 0;
     if (restX == restY || c.pinX || c.pinY) return false;
-    nx = restX ? (gx_ > 0.0 ? -1.0 : 1.0) : 0.0;
-    ny = restY ? (gy_ > 0.0 ? -1.0 : 1.0) : 0.0;
+    nx = restX ? (gravity_.x > 0.0 ? -1.0 : 1.0) : 0.0;
+    ny = restY ? (gravity_.y > 0.0 ? -1.0 : 1.0) : 0.0;
     return true;
 }
 
@@ -96,11 +96,11 @@ void ExactStepper::setRoll(std::uint32_t i) {
     }
     advanceTurn(r, a.t);
     const double tx = -ny, ty = nx;
-    const double gt = gx_ * tx + gy_ * ty, gn = -(gx_ * nx + gy_ * ny);
+    const double gt = gravity_.x * tx + gravity_.y * ty, gn = -(gravity_.x * nx + gravity_.y * ny);
     const double friction = def_.friction * gn;
     const double vt = a.vx * tx + a.vy * ty;
     const double slip = vt - r.omega * a.r;
-    Slide& s = slide_[i];
+    Slide& s = slides_[i];
     s.slipEnds = kNever;
     double at;
     if (r.q == 0.0) {
@@ -145,7 +145,7 @@ void ExactStepper::endRoll(std::uint32_t i) {
 }
 
 void ExactStepper::predictRoll(std::uint32_t i, double now, Event& best) const {
-    const double t = std::max(now, slide_[i].slipEnds);
+    const double t = std::max(now, slides_[i].slipEnds);
     if (t < best.time) best = {t, 0, 0, Kind::Roll, 0};
 }
 

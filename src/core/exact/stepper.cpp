@@ -131,7 +131,7 @@ void ExactStepper::sync(ParticleArrays& p) {
     for (std::size_t k = 0; k < n; ++k) {
         const Body& b = bodies[k];
         const std::uint32_t i = order[k];
-        if (gravity_) {
+        if (gravity_.on) {
             const Motion m = motionAt(k, b, t);
             x[i] = m.x;
             y[i] = m.y;
@@ -163,13 +163,13 @@ void ExactStepper::sortByCell(bool midRun) {
     renumber(cold_, to);
     renumber(order_, to);
     renumber(ids_, to);
-    if (gravity_) {
+    if (gravity_.on) {
         renumber(wokeAt_, to);
         renumber(depth_, to);
         renumber(recheckAt_, to);
         rate_.renumber(to);
     }
-    if (!slide_.empty()) renumber(slide_, to);
+    slides_.renumber(to);
     if (!turn_.empty()) renumber(turn_, to);
     if (midRun) {
         // Carry the scheduled events over to the new indices.
@@ -196,7 +196,7 @@ std::size_t ExactStepper::memoryBytes() const {
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
                         queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
-                        sizeof(Slide) * slide_.capacity() + sizeof(Turn) * turn_.capacity();
+                        slides_.memoryBytes() + sizeof(Turn) * turn_.capacity();
     return bytes + placed_.memoryBytes();
 }
 

@@ -80,8 +80,10 @@
 #include "exact/event_queue.hpp"
 #include "exact/grid.hpp"
 #include "exact/jam_guard.hpp"
+#include "exact/motion.hpp"
 #include "exact/obstacle_cells.hpp"
 #include "exact/placed_contacts.hpp"
+#include "exact/slides.hpp"
 
 namespace psb::exact {
 
@@ -195,12 +197,14 @@ class ExactStepper {
     void sortByCell(bool midRun);
 
     // --- motion (motion.hpp) ------------------------------------------------------------------
-    void advance(std::uint32_t i, double t);
-    // i names the particle (its slide, if any, is slide_[i]); b is its record or a copy of it.
-    void accelerationOf(std::uint32_t i, const Body& b, double& ax, double& ay) const;
-    [[nodiscard]] Motion motionAt(std::uint32_t i, const Body& b, double t) const;
-    [[nodiscard]] static bool isStatic(const Body& b) {
-        return (b.flags & kAsleep) || ((b.flags & kHeld) && b.vx == 0.0 && b.vy == 0.0);
+    // Particle i brought to time t; its acceleration and its motion at t (b: its record or a
+    // copy of it).
+    void advance(std::uint32_t i, double t) { exact::advance(i, bodies_[i], gravity_, slides_, t); }
+    void accelerationOf(std::uint32_t i, const Body& b, double& ax, double& ay) const {
+        exact::accelerationOf(i, b, gravity_, slides_, ax, ay);
+    }
+    [[nodiscard]] Motion motionAt(std::uint32_t i, const Body& b, double t) const {
+        return exact::motionAt(i, b, gravity_, slides_, t);
     }
 
     // --- prediction (prediction.cpp) ----------------------------------------------------------
@@ -290,13 +294,12 @@ class ExactStepper {
                             bool maySlide = true);
     int obstacleSupports(std::uint32_t i, double* nx, double* ny, int count, int max) const;
 
-    // --- sliding on a segment's face (sliding.cpp) --------------------------------------------
-    // Entering it at a rebound off a face (false if the face's end is too near), the
-    // acceleration along the face, the end-of-face and stop events, leaving it; and the face's
-    // answer to a slider hit by a pair that is still on it.
+    // --- sliding on a segment's face (slides.hpp; obstacles.cpp) ------------------------------
+    // Entering it at a rebound off a face (false where slides.hpp says no), its acceleration (a
+    // block's, or a roll's for a disc that turns), the end-of-face and stop events; and the
+    // face's answer to a slider hit by a pair that is still on it.
     bool startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny);
     void setSlideAcceleration(std::uint32_t i);
-    void predictSlide(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void handleSlide(std::uint32_t i, const Event& ev);
     // Ends i's slide, and its roll on a face or a wall if it rolls (i is at bodies_[i].t):
     // every event of a particle ends its contact's motion, and the event's handler starts it
@@ -325,14 +328,12 @@ class ExactStepper {
 
     WorldDef def_;
     bool stale_ = true;
-    bool gravity_ = false;  // def_.gravity is not zero
-    double gx_ = 0.0, gy_ = 0.0;
+    Gravity gravity_;         // def_.gravity
     double restSpeed_ = 0.0;  // see resting.cpp
     double restGap_ = 0.0;
     std::vector<std::uint32_t> wakeStack_;
-    // Per particle, in bodies_' order, with gravity and obstacles or rough contacts only: its
-    // sliding contact, read where kSliding or kRolling is set (sliding.cpp, rolling.cpp).
-    std::vector<Slide> slide_;
+    // Each particle's sliding contact, with gravity and obstacles or rough contacts only.
+    Slides slides_;
     // Per particle, in bodies_' order, only in a world that keeps rotation (else empty).
     std::vector<Turn> turn_;
     // Contacts are rough (contact.hpp): the world keeps rotation and has friction.
