@@ -38,15 +38,15 @@ inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y
 inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: Slides holds how
 inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (resting.cpp)
 // A disc that turns, in a world with rough contacts, on the face it slides on (kSliding) or the
-// one wall it rests on (kRestX or kRestY): it slips or rolls (rolling.cpp); Slides holds its
-// acceleration along the surface and the end of its slip, turn_ its angular acceleration.
-// Also a disc that does not turn on the wall it rests on: it slides under kinetic friction
-// until it stops (slipEnds).
+// one wall it rests on (kRestX or kRestY): it slips or rolls (rolls.hpp); Slides holds its
+// acceleration along the surface and the end of its slip, its Turn (Rolls) its angular
+// acceleration. Also a disc that does not turn on the wall it rests on: it slides under kinetic
+// friction until it stops (slipEnds).
 inline constexpr std::uint32_t kRolling = 256;
-// A particle sliding on a segment's face (kSliding; sliding.cpp): which
+// A particle sliding on a segment's face (kSliding; slides.cpp): which
 // segment, and its constant acceleration along the face (gravity's share along it less the
 // kinetic friction, or none where static friction holds it). A disc that rolls (kRolling) keeps
-// here its acceleration along the face or wall and when its slip ends (rolling.cpp).
+// here its acceleration along the face or wall and when its slip ends (rolls.hpp).
 struct Slide {
     std::uint32_t obstacle = 0;
     double ax = 0.0, ay = 0.0;

@@ -45,6 +45,25 @@
 
 namespace psb::exact {
 
+namespace {
+
+// The rough tangential impulse of wall `side` (0..3) on a (spin: its rotation), after a rebound
+// of dv along the wall's normal.
+void roughWallTangential(Body& a, Spin spin, int side, double dv, const WorldDef& def) {
+    // Wall `side` has the outward normal n = −outward along its axis (outward: +1 for the
+    // right and bottom walls), and the tangent t = (−n_y, n_x): −outward times the other axis
+    // for the x walls, +outward times it for the y walls (as in the discrete mode's walls).
+    const bool alongX = side < 2;
+    const double outward = (side % 2 == 0) ? -1.0 : 1.0;
+    const double sign = alongX ? -outward : outward;
+    double& vt = alongX ? a.vy : a.vx;
+    double along = sign * vt;
+    roughAlongSurface(along, spin, dv, def.friction, def.tangentialRestitution);
+    vt = sign * along;
+}
+
+}  // namespace
+
 void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& counters) {
     const std::uint32_t j = ev.partner;
     __builtin_prefetch(&cold_[j]);
@@ -130,9 +149,9 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     if (offStatic && approach * e < restSpeed_) e = 0.0;
     const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
     const bool hit =
-        rough_
-            ? collideRoughDiscs(a.vx, a.vy, spinAt(i, ev.time), b.vx, b.vy, spinAt(j, ev.time), wi,
-                                wj, mi, mj, n, {e, def_.friction, def_.tangentialRestitution})
+        rolls_.rough() ? collideRoughDiscs(a.vx, a.vy, rolls_.spinAt(i, a.r, ev.time), b.vx, b.vy,
+                                           rolls_.spinAt(j, b.r, ev.time), wi, wj, mi, mj, n,
+                                           {e, def_.friction, def_.tangentialRestitution})
         : def_.friction > 0.0
             ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, mi, mj, n, e, def_.friction)
             : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, mi, mj, n, e, 0.0);
@@ -228,10 +247,10 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     } else {
         double out = outward * v;
         const double e = effectiveRestitution(out, recent);
-        if (rough_) {
+        if (rolls_.rough()) {
             dv = reboundOffWall<false>(out, vt, e, 0.0);
             v = outward * out;
-            if (dv > 0.0) roughWallTangential(i, ev.side, dv, ev.time);
+            if (dv > 0.0) roughWallTangential(a, rolls_.spinAt(i, a.r, ev.time), ev.side, dv, def_);
         } else {
             dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
                                      : reboundOffWall<false>(out, vt, e, 0.0);
@@ -266,31 +285,11 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     if (gravity_.on && !(a.flags & kHeld)) {
         settle(i, ev.time,
                a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
-        // Resting on a wall, a disc that turns slips or rolls along it (rolling.cpp).
+        // Resting on a wall, a disc that turns slips or rolls along it (rolls.hpp).
         setRoll(i);
     }
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
-}
-
-Spin ExactStepper::spinAt(std::uint32_t i, double now) {
-    Turn& r = turn_[i];
-    advanceTurn(r, now);
-    return Spin{r.omega, bodies_[i].r, r.q};
-}
-
-void ExactStepper::roughWallTangential(std::uint32_t i, int side, double dv, double now) {
-    // Wall `side` has the outward normal n = −outward along its axis (outward: +1 for the
-    // right and bottom walls), and the tangent t = (−n_y, n_x): −outward times the other axis
-    // for the x walls, +outward times it for the y walls (as in the discrete mode's walls).
-    Body& a = bodies_[i];
-    const bool alongX = side < 2;
-    const double outward = (side % 2 == 0) ? -1.0 : 1.0;
-    const double sign = alongX ? -outward : outward;
-    double& vt = alongX ? a.vy : a.vx;
-    double along = sign * vt;
-    roughAlongSurface(along, spinAt(i, now), dv, def_.friction, def_.tangentialRestitution);
-    vt = sign * along;
 }
 
 bool ExactStepper::collidedWithin(const Body& b, double now) {

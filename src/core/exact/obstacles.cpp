@@ -1,6 +1,6 @@
 // The exact stepper's events with fixed obstacles (pegs and segments): prediction, rebound and
 // the support a resting particle finds on them. The times of impact are obstacle_impact.hpp's;
-// a rebound that starts a slide hands over to sliding.cpp.
+// a rebound that starts a slide hands over to slides.cpp.
 //
 // Obstacles (fixed pegs and segments). A third kind of collision
 // event, kept in a particle's collision key like a wall's and replaced like it at every change
@@ -81,7 +81,8 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     const double into = -(a.vx * nx + a.vy * ny);
     const double e = effectiveRestitution(into, recent);
     const RoughLaws laws{e, def_.friction, def_.tangentialRestitution};
-    double dv = rough_ ? roughReboundOffSurface(a.vx, a.vy, spinAt(i, a.t), nx, ny, laws)
+    double dv = rolls_.rough()
+                    ? roughReboundOffSurface(a.vx, a.vy, rolls_.spinAt(i, a.r, a.t), nx, ny, laws)
                 : def_.friction > 0.0
                     ? reboundOffSurface<true>(a.vx, a.vy, nx, ny, e, def_.friction)
                     : reboundOffSurface<false>(a.vx, a.vy, nx, ny, e, 0.0);
@@ -97,7 +98,7 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
             const double lift = 0.5 * restSpeed_, leaving = a.vx * nx + a.vy * ny;
             if (leaving < lift && maySlide && !o.isPeg() && startSliding(i, k, nx, ny)) {
                 // On a segment's face: it slides along it instead of hopping
-                // (sliding.cpp), what is left of its normal velocity absorbed by the contact.
+                // (slides.cpp), what is left of its normal velocity absorbed by the contact.
             } else if (leaving < lift) {
                 // The lift is part of the normal impulse the contact gives, so Coulomb's law
                 // bounds the friction by mu times all of it: over the hops down a slope the
@@ -105,9 +106,9 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
                 // and the mean deceleration is then g (sin θ − mu cos θ). Friction only on the
                 // rebound's part gave mu (1 + e)/2 in place of mu.
                 const double extra = lift - leaving;
-                if (rough_) {
+                if (rolls_.rough()) {
                     double along = a.vx * -ny + a.vy * nx;
-                    roughAlongSurface(along, spinAt(i, a.t), extra, def_.friction,
+                    roughAlongSurface(along, rolls_.spinAt(i, a.r, a.t), extra, def_.friction,
                                       def_.tangentialRestitution);
                     a.vx = leaving * nx + along * -ny;
                     a.vy = leaving * ny + along * nx;
@@ -142,8 +143,8 @@ bool ExactStepper::startSliding(std::uint32_t i, std::uint32_t k, double nx, dou
 }
 
 void ExactStepper::setSlideAcceleration(std::uint32_t i) {
-    if (rough_ && turn_[i].q > 0.0) {
-        setRoll(i);  // a disc that turns slips or rolls (rolling.cpp)
+    if (rolls_.turns(i)) {
+        setRoll(i);  // a disc that turns slips or rolls (rolls.hpp)
         return;
     }
     slides_.setBlockAcceleration(i, bodies_[i], obstacles_, gravity_, def_.friction);
@@ -176,6 +177,19 @@ void ExactStepper::keepOnFace(std::uint32_t i, StepCounters& counters, bool mayS
     Body& a = bodies_[i];
     if (!slides_.stillOnFace(i, a, obstacles_)) return;
     reboundOffObstacle(i, slides_[i].obstacle, collidedWithin(a, a.t), counters, maySlide);
+}
+
+void ExactStepper::handleRoll(std::uint32_t i, const Event& ev) {
+    Body& a = bodies_[i];
+    advance(i, ev.time);
+    ++events_;
+    ++a.count;  // its acceleration changes: what neighbours predicted with it is stale
+    // A block stopped by friction rests, asleep if it may sleep there, or slides back
+    // (settleAfterPair gives the phase).
+    if (rolls_.endSlip(i, a, cold_[i], slides_, obstacles_, gravity_, def_.friction, ev.time))
+        settleAfterPair(i, false);
+    predictCollision(i, ev.time);
+    predictCell(i, ev.time);
 }
 
 int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, int count,

@@ -66,7 +66,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
         predictObstacles(i, m, now, best);
         if (a.flags & kSliding) slides_.predict(i, a, obstacles_, m, now, best);
     }
-    if (a.flags & kRolling) predictRoll(i, now, best);
+    if (a.flags & kRolling) rolls_.predict(i, slides_, now, best);
     scanNeighbours(i, now, ax, ay, best);
     if ((a.flags & kProvisional) && recheckAt_[i] < best.time)
         best = {std::max(now, recheckAt_[i]), 0, 0, Kind::Recheck, 0};

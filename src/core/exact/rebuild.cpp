@@ -61,12 +61,9 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     wokeAt_.assign(gravity_.on ? n : 0, -kNever);
     depth_.assign(gravity_.on ? n : 0, 0);
     recheckAt_.assign(gravity_.on ? n : 0, kNever);
-    turn_.resize(p.rotation ? n : 0);
-    for (std::uint32_t i = 0; i < turn_.size(); ++i)
-        turn_[i] = Turn{p.angle[i], 0.0, p.omega[i], p.spinWeight(i), 0.0};
-    rough_ = p.rotation && def.friction > 0.0;
-    // Slides on faces, and rolls on faces and walls (rolling.cpp).
-    slides_.reset(gravity_.on && (!def_.obstacles.empty() || rough_) ? n : 0);
+    rolls_.reset(p, def.friction);
+    // Slides on faces, and rolls on faces and walls (rolls.hpp).
+    slides_.reset(gravity_.on && (!def_.obstacles.empty() || rolls_.rough()) ? n : 0);
     rate_.reset(gravity_.on ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];

@@ -160,7 +160,7 @@ void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
     if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
     settle(i, a.t,
            !justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t));
-    // Still on a wall or a face, a disc that turns slips or rolls along it (rolling.cpp).
+    // Still on a wall or a face, a disc that turns slips or rolls along it (rolls.hpp).
     setRoll(i);
 }
 
@@ -255,7 +255,7 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     });
     Hold h;
     h.depth = lowest >= kUngrounded ? kUngrounded : lowest + 1;
-    const bool turns = rough_ && turn_[i].q > 0.0;
+    const bool turns = rolls_.turns(i);
     h.firm = lowest < kUngrounded && holdsAgainstGravity(nx, ny, count, turns);
     if (h.firm || count == 0 || free == 0) return h;
     // An arch of discs leaning on each other would wait for the others to sleep first, and
@@ -327,10 +327,7 @@ void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, 
     }
     stopSliding(i);
     // At rest a disc that turns does not turn either: its contacts' friction would stop it.
-    if (rough_ && turn_[i].q > 0.0) {
-        advanceTurn(turn_[i], now);
-        turn_[i].omega = 0.0;
-    }
+    rolls_.stopTurning(i, now);
     ++b.count;
 }
 
@@ -387,7 +384,7 @@ void ExactStepper::wake(std::uint32_t i, double now) {
         b.t = now;
         wokeAt_[k] = now;
         ++b.count;
-        setRoll(k);  // on a wall it rests on, a disc that turns rolls (rolling.cpp)
+        setRoll(k);  // on a wall it rests on, a disc that turns rolls (rolls.hpp)
     };
     rouse(i);
     wakeStack_.assign(1, i);

@@ -18,7 +18,7 @@
 // and caps keep the hop: round a circle the normal force is not constant, and the path is not a
 // parabola.
 //
-// A disc that turns, with rough contacts, slips and rolls on the face instead (rolling.cpp:
+// A disc that turns, with rough contacts, slips and rolls on the face instead (rolls.cpp:
 // kinetic friction on its contact point's slip until the slip-to-roll instant, an event, then
 // a = g sin θ / (1 + k)); the block's motion above is that of a disc that does not turn.
 //

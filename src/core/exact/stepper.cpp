@@ -145,14 +145,7 @@ void ExactStepper::sync(ParticleArrays& p) {
         vx[i] = b.vx;
         vy[i] = b.vy;
     }
-    if (!turn_.empty()) {
-        for (std::size_t k = 0; k < n; ++k) {
-            Turn r = turn_[k];
-            advanceTurn(r, t);
-            p.angle[order[k]] = r.angle;
-            p.omega[order[k]] = r.omega;
-        }
-    }
+    rolls_.sync(p, order_, t);
     syncOwed_ = false;
 }
 
@@ -170,7 +163,7 @@ void ExactStepper::sortByCell(bool midRun) {
         rate_.renumber(to);
     }
     slides_.renumber(to);
-    if (!turn_.empty()) renumber(turn_, to);
+    rolls_.renumber(to);
     if (midRun) {
         // Carry the scheduled events over to the new indices.
         std::vector<double> times(2 * static_cast<std::size_t>(n));
@@ -196,7 +189,7 @@ std::size_t ExactStepper::memoryBytes() const {
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
                         queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
-                        slides_.memoryBytes() + sizeof(Turn) * turn_.capacity();
+                        slides_.memoryBytes() + rolls_.memoryBytes();
     return bytes + placed_.memoryBytes();
 }
 

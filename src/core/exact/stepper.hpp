@@ -83,6 +83,7 @@
 #include "exact/motion.hpp"
 #include "exact/obstacle_cells.hpp"
 #include "exact/placed_contacts.hpp"
+#include "exact/rolls.hpp"
 #include "exact/slides.hpp"
 
 namespace psb::exact {
@@ -237,13 +238,6 @@ class ExactStepper {
     // absorbed.
     bool jamsAt(std::uint32_t i, double t);
 
-    // --- rotation (collisions.cpp) ------------------------------------------------------------
-    // i's rotation for a rough contact at time `now`: its angle brought up to now first, since
-    // the contact may change its angular velocity.
-    [[nodiscard]] Spin spinAt(std::uint32_t i, double now);
-    // The rough tangential impulse of wall `side` (0..3) on i, after a rebound of dv along it.
-    void roughWallTangential(std::uint32_t i, int side, double dv, double now);
-
     // --- resting, gravity only (resting.cpp) --------------------------------------------------
     // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
     // changes touch wakes.
@@ -307,24 +301,16 @@ class ExactStepper {
     void stopSliding(std::uint32_t i) {
         Body& b = bodies_[i];
         b.flags &= ~kSliding;
-        if (b.flags & kRolling) endRoll(i);
+        if (b.flags & kRolling) rolls_.end(i, b);
     }
     void keepOnFace(std::uint32_t i, StepCounters& counters, bool maySlide);
 
-    // --- slipping and rolling on a face or a wall (rolling.cpp) -------------------------------
-    // With rough contacts, a disc that turns on the face it slides on or the wall it rests on:
-    // setRoll gives it the phase its state at bodies_[i].t calls for (slipping under kinetic
-    // friction until the slip-to-roll instant, rolling, or slipping for good where friction
-    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn on a
-    // face); a disc that does not turn on a wall slides as a block under kinetic friction until
-    // it stops (the slip-to-roll event of a disc whose slip is its speed);
-    // endRoll takes it back to plain flight or rest (its spin brought to bodies_[i].t); the
-    // slip-to-roll event; the outward normal of the surface it rolls on.
-    void setRoll(std::uint32_t i);
-    void endRoll(std::uint32_t i);
-    void predictRoll(std::uint32_t i, double now, Event& best) const;
+    // --- slipping and rolling on a face or a wall (rolls.hpp; obstacles.cpp) -----------------
+    // The phase i's contact calls for at bodies_[i].t (Rolls::set); the slip-to-roll event.
+    void setRoll(std::uint32_t i) {
+        rolls_.set(i, bodies_[i], cold_[i], slides_, obstacles_, gravity_, def_.friction);
+    }
     void handleRoll(std::uint32_t i, const Event& ev);
-    [[nodiscard]] bool rollingSurface(std::uint32_t i, double& nx, double& ny) const;
 
     WorldDef def_;
     bool stale_ = true;
@@ -334,10 +320,8 @@ class ExactStepper {
     std::vector<std::uint32_t> wakeStack_;
     // Each particle's sliding contact, with gravity and obstacles or rough contacts only.
     Slides slides_;
-    // Per particle, in bodies_' order, only in a world that keeps rotation (else empty).
-    std::vector<Turn> turn_;
-    // Contacts are rough (contact.hpp): the world keeps rotation and has friction.
-    bool rough_ = false;
+    // Each particle's rotation, in a world that keeps rotation; whether contacts are rough.
+    Rolls rolls_;
     // When each particle was last woken (gravity only): it does not fall asleep again within
     // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
     // by the next event of the cascade that woke it.
