@@ -116,7 +116,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
             // A particle wedged between sleepers (no room between them) would bounce between
             // them ever faster: after kWakeAfterHits such hits in a step it wakes them, and the
             // wedge opens as it would, by pushing them apart.
-            if ((bodies_[o].flags & kHeld) || approach > 2.0 * restSpeed_ ||
+            if ((bodies_[o].flags & kHeld) || approach > 2.0 * rest_.restSpeed() ||
                 jams_.countHit(o, cold_[o]) >= kWakeAfterHits) {
                 wake(s, ev.time);
                 woke = true;
@@ -134,8 +134,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A particle jammed at this instant is as fixed as a sleeper.
     aStays = aStays || aJammed;
     bStays = bStays || bJammed;
-    const double wi = inverseMassAlong(i, n, aStays ? 0.0 : cold_[i].w);
-    const double wj = inverseMassAlong(j, n, bStays ? 0.0 : cold_[j].w);
+    const double wi = inverseMassAlong(cold_[i], n, aStays ? 0.0 : cold_[i].w);
+    const double wj = inverseMassAlong(cold_[j], n, bStays ? 0.0 : cold_[j].w);
     const auto massSeen = [](const Cold& c, double w) {
         return (c.pinX || c.pinY) && w > 0.0 ? 1.0 / w : c.m;
     };
@@ -143,10 +143,10 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // Off a sleeper, which does not move, a bounce cannot start a collapse: the TC model's
     // elastic rule would only keep a particle wedged between sleepers rattling at full speed.
     const bool offStatic = aStays || bStays;
-    double e = effectiveRestitution(approach, recent && !offStatic);
+    double e = effectiveRestitution(def_.restitution, approach, recent && !offStatic);
     // And a rebound off it slower than the rest speed ends the approach, as on a wall the
     // particle rests on: a particle in a slot between sleepers stops instead of rattling.
-    if (offStatic && approach * e < restSpeed_) e = 0.0;
+    if (offStatic && approach * e < rest_.restSpeed()) e = 0.0;
     const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
     const bool hit =
         rolls_.rough() ? collideRoughDiscs(a.vx, a.vy, rolls_.spinAt(i, a.r, ev.time), b.vx, b.vy,
@@ -158,8 +158,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     if (hit) {
         // A pinned particle's impulse, found for the inverse mass it has along n, moves it
         // along its free axis only: Δv = (w / w_seen)·P·Δv_seen.
-        holdAcrossPinnedAxes(i, aBefore, wi);
-        holdAcrossPinnedAxes(j, bBefore, wj);
+        holdAcrossPinnedAxes(a, cold_[i], aBefore, wi);
+        holdAcrossPinnedAxes(b, cold_[j], bBefore, wj);
         ++counters.collisions;
         if (!aStays) ++a.count;
         if (!bStays) ++b.count;
@@ -178,7 +178,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     if (gravity_.on) {
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
-        liftPressedPair(i, j, n, aSlid, bSlid);
+        rest_.liftPressedPair(i, j, n, aSlid, bSlid, around());
         // A slider pressed along its face into a neighbour without an impulse (at rest against
         // it) would slide into it again at once, the same event at the same instant without
         // end: it hops off the face instead, as before slides, and slides again when it lands.
@@ -191,22 +191,6 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     predictCollision(j, ev.time);
     predictCell(i, ev.time);
     predictCell(j, ev.time);
-}
-
-double ExactStepper::inverseMassAlong(std::uint32_t i, Normal n, double w) const {
-    const Cold& c = cold_[i];
-    if (!(c.pinX || c.pinY)) return w;
-    const double fx = c.pinX ? 0.0 : n.x, fy = c.pinY ? 0.0 : n.y;
-    return w * (fx * fx + fy * fy);
-}
-
-void ExactStepper::holdAcrossPinnedAxes(std::uint32_t i, const Vec2& before, double wSeen) {
-    const Cold& c = cold_[i];
-    if (!(c.pinX || c.pinY)) return;
-    Body& a = bodies_[i];
-    const double scale = wSeen > 0.0 ? c.w / wSeen : 0.0;
-    a.vx = c.pinX ? before.x() : before.x() + scale * (a.vx - before.x());
-    a.vy = c.pinY ? before.y() : before.y() + scale * (a.vy - before.y());
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -246,7 +230,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         v = 0.0;
     } else {
         double out = outward * v;
-        const double e = effectiveRestitution(out, recent);
+        const double e = effectiveRestitution(def_.restitution, out, recent);
         if (rolls_.rough()) {
             dv = reboundOffWall<false>(out, vt, e, 0.0);
             v = outward * out;
@@ -264,7 +248,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
             a.flags &= ~across;
         // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
         if (gravity_.on && outward * (alongX ? gravity_.x : gravity_.y) > 0.0 &&
-            std::abs(v) < restSpeed_) {
+            std::abs(v) < rest_.restSpeed()) {
             dv += std::abs(v);
             v = 0.0;
             a.flags |= alongX ? kRestX : kRestY;
@@ -283,26 +267,12 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     }
     ++a.count;
     if (gravity_.on && !(a.flags & kHeld)) {
-        settle(i, ev.time,
-               a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
+        settle(i, ev.time, rest_.slow(a) && rest_.mayRest(i, ev.time));
         // Resting on a wall, a disc that turns slips or rolls along it (rolls.hpp).
         setRoll(i);
     }
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
-}
-
-bool ExactStepper::collidedWithin(const Body& b, double now) {
-    // t is the time of b's last velocity change; count > 0 says there was one since the last
-    // rebuild (t = 0 at a rebuild is not a collision).
-    return b.count > 0 && now - b.t < kContactDuration;
-}
-
-double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const {
-    const double e = def_.restitution;
-    if (e >= 1.0 || recent) return 1.0;
-    if (impactSpeed >= kElasticBelowSpeed) return e;
-    return 1.0 - (1.0 - e) * (impactSpeed / kElasticBelowSpeed);
 }
 
 bool ExactStepper::jamsAt(std::uint32_t i, double t) {
@@ -312,8 +282,8 @@ bool ExactStepper::jamsAt(std::uint32_t i, double t) {
     // Jammed: no room to move. Its velocity, and any it is given while its hits keep coming
     // without time between, goes to the bodies that hold it.
     if (gravity_.on) {
-        const Hold hold = this->hold(i, kUngrounded + 1, t);
-        fallAsleep(i, t, hold.depth, !hold.firm);
+        const Resting::Sleep s = rest_.caught(i, t, around());
+        fallAsleep(i, t, s.depth, s.provisional);
     } else if (a.vx != 0.0 || a.vy != 0.0) {
         advance(i, t);
         stopSliding(i);

@@ -79,7 +79,7 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     }
     const Vec2 before(a.vx, a.vy);
     const double into = -(a.vx * nx + a.vy * ny);
-    const double e = effectiveRestitution(into, recent);
+    const double e = effectiveRestitution(def_.restitution, into, recent);
     const RoughLaws laws{e, def_.friction, def_.tangentialRestitution};
     double dv = rolls_.rough()
                     ? roughReboundOffSurface(a.vx, a.vy, rolls_.spinAt(i, a.r, a.t), nx, ny, laws)
@@ -95,7 +95,7 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
         accelerationOf(i, a, gax, gay);
         const double an = gax * nx + gay * ny;
         if (an < 0.0 && an * an > kPressTolerance * kPressTolerance * (gax * gax + gay * gay)) {
-            const double lift = 0.5 * restSpeed_, leaving = a.vx * nx + a.vy * ny;
+            const double lift = 0.5 * rest_.restSpeed(), leaving = a.vx * nx + a.vy * ny;
             if (leaving < lift && maySlide && !o.isPeg() && startSliding(i, k, nx, ny)) {
                 // On a segment's face: it slides along it instead of hopping
                 // (slides.cpp), what is left of its normal velocity absorbed by the contact.
@@ -190,24 +190,6 @@ void ExactStepper::handleRoll(std::uint32_t i, const Event& ev) {
         settleAfterPair(i, false);
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
-}
-
-int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, int count,
-                                   int max) const {
-    const Body& a = bodies_[i];
-    const Cold& c = cold_[i];
-    for (const std::uint32_t k : obstacles_.near(grid_.fine(), c.kx, c.ky)) {
-        if (count == max) break;
-        const Obstacle& o = obstacles_[k];
-        double qx, qy;
-        nearestCorePoint(o, a.x, a.y, qx, qy);
-        const double rx = qx - a.x, ry = qy - a.y;  // from i to the obstacle
-        const double d = std::sqrt(rx * rx + ry * ry);
-        if (!(d > 0.0) || d - (a.r + o.radius) > restGap_) continue;
-        nx[count] = rx / d;
-        ny[count++] = ry / d;
-    }
-    return count;
 }
 
 }  // namespace psb::exact

@@ -68,8 +68,8 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     }
     if (a.flags & kRolling) rolls_.predict(i, slides_, now, best);
     scanNeighbours(i, now, ax, ay, best);
-    if ((a.flags & kProvisional) && recheckAt_[i] < best.time)
-        best = {std::max(now, recheckAt_[i]), 0, 0, Kind::Recheck, 0};
+    if ((a.flags & kProvisional) && rest_.recheckAt(i) < best.time)
+        best = {std::max(now, rest_.recheckAt(i)), 0, 0, Kind::Recheck, 0};
     cold_[i].coll = best;
     bodies_[i].nextColl = best.time;
     queue_.update(2 * i, best.time);

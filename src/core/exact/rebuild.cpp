@@ -14,43 +14,17 @@
 namespace psb::exact {
 
 void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
-    // What was asleep before, where it was (gravity only; see resting.cpp).
-    std::unordered_map<ParticleId, Kept> before;
+    // What was asleep before, where it was (gravity only; see resting.hpp).
+    Resting::Snapshot before;
     const bool sameLaws = gravity_.on && def.gravity == def_.gravity && def.width == def_.width &&
                           def.height == def_.height && def.walls == def_.walls &&
                           def.restitution == def_.restitution && def.friction == def_.friction;
-    if (sameLaws) {
-        for (std::uint32_t i = 0; i < bodies_.size(); ++i) {
-            // Each particle as sync() wrote it: one that went on unchanged is no disturbance.
-            Body b = bodies_[i];
-            if (!(b.flags & kAsleep)) {
-                const Motion m = motionAt(i, b, clock_);
-                b.x = m.x;
-                b.y = m.y;
-                b.vx = m.vx;
-                b.vy = m.vy;
-            }
-            before.emplace(ids_[i], Kept{b, depth_[i]});
-        }
-    }
+    if (sameLaws) rest_.remember(bodies_, ids_, gravity_, slides_, clock_, before);
     def_ = def;
     clock_ = 0.0;
     gravity_.x = def.gravity.x();
     gravity_.y = def.gravity.y();
     gravity_.on = gravity_.x != 0.0 || gravity_.y != 0.0;
-    if (gravity_.on) {
-        const double g = std::hypot(gravity_.x, gravity_.y);
-        restSpeed_ = def.restitution < 1.0
-                         ? kRestSpeed
-                         : std::sqrt(2.0 * g * kRestRoundingGap * std::max(def.width, def.height));
-        // In a scene of large discs under strong gravity the rest speed is the speed of a hop
-        // of kRestHop radii, so that resting means the same there as in a scene at human scale.
-        if (def.restitution < 1.0 && p.size() > 0) {
-            const double rmin = *std::min_element(p.radius.begin(), p.radius.end());
-            restSpeed_ = std::max(restSpeed_, std::sqrt(2.0 * g * kRestHop * rmin));
-        }
-        restGap_ = restSpeed_ * restSpeed_ / (2.0 * g);
-    }
     const auto n = static_cast<std::uint32_t>(p.size());
     bodies_.resize(n);
     cold_.resize(n);
@@ -58,13 +32,10 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
 
     ids_ = p.id;
     jams_.reset();
-    wokeAt_.assign(gravity_.on ? n : 0, -kNever);
-    depth_.assign(gravity_.on ? n : 0, 0);
-    recheckAt_.assign(gravity_.on ? n : 0, kNever);
+    rest_.reset(def_, gravity_, p, n);
     rolls_.reset(p, def.friction);
     // Slides on faces, and rolls on faces and walls (rolls.hpp).
     slides_.reset(gravity_.on && (!def_.obstacles.empty() || rolls_.rough()) ? n : 0);
-    rate_.reset(gravity_.on ? n : 0);
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -113,8 +84,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
         grid_.insert(i, cold_[i]);
     placed_.record(bodies_, cold_, order_, grid_);
     queue_.reset(2 * n, bucketWidth());
-    keptSleepers_ = !before.empty();
-    if (keptSleepers_) keepSleepers(before);
+    if (!before.empty()) keepSleepers(before);
     for (std::uint32_t i = 0; i < n; ++i) {
         predictCollision(i, 0.0);
         predictCell(i, 0.0);

@@ -156,12 +156,7 @@ void ExactStepper::sortByCell(bool midRun) {
     renumber(cold_, to);
     renumber(order_, to);
     renumber(ids_, to);
-    if (gravity_.on) {
-        renumber(wokeAt_, to);
-        renumber(depth_, to);
-        renumber(recheckAt_, to);
-        rate_.renumber(to);
-    }
+    if (gravity_.on) rest_.renumber(to);
     slides_.renumber(to);
     rolls_.renumber(to);
     if (midRun) {
@@ -188,7 +183,7 @@ std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
                         sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
-                        queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
+                        queue_.memoryBytes() + obstacles_.memoryBytes() + rest_.memoryBytes() +
                         slides_.memoryBytes() + rolls_.memoryBytes();
     return bytes + placed_.memoryBytes();
 }

@@ -75,29 +75,19 @@
 #include "contact.hpp"
 #include "exact/body.hpp"
 #include "exact/cell_list.hpp"
-#include "exact/collision_rate.hpp"
 #include "exact/collision_recorder.hpp"
+#include "exact/collision_rules.hpp"
 #include "exact/event_queue.hpp"
 #include "exact/grid.hpp"
 #include "exact/jam_guard.hpp"
 #include "exact/motion.hpp"
 #include "exact/obstacle_cells.hpp"
 #include "exact/placed_contacts.hpp"
+#include "exact/resting.hpp"
 #include "exact/rolls.hpp"
 #include "exact/slides.hpp"
 
 namespace psb::exact {
-
-/// The TC model's contact duration t_c (seconds): a collision of a particle that already
-/// collided less than t_c ago is elastic (see collisions.cpp). Ten microseconds: far below a
-/// frame (16 ms) and the free flight times of the sandbox's scenes, far above the time between
-/// the zero-gap collisions of a collapsing cluster.
-inline constexpr double kContactDuration = 1e-5;
-
-/// Impact speed (m/s) below which restitution rises linearly to 1 (see collisions.cpp).
-/// One millimetre per second: far below the speeds of the sandbox's scenes (metres per second),
-/// far above the rounding noise of their velocities.
-inline constexpr double kElasticBelowSpeed = 1e-3;
 
 /// Of the box's extent: how far past a wall its event may leave a particle's centre before
 /// handleWall puts it back on the wall (rounding of the event's time at extreme speeds; found by
@@ -109,43 +99,6 @@ inline constexpr double kWallSlack = 1e-12;
 /// mutation fuzzer: a disc of 10⁻³⁰¹ m in a box 10⁻³⁰⁰ m wide and 2.7 m high bounced between
 /// the side walls every 10⁻³⁰¹ s.
 inline constexpr double kNoRoom = 1e-12;
-
-/// Under gravity: hits on sleeping particles in one step after which a particle wakes the
-/// sleepers it hits (see resting.cpp): a backstop for a particle wedged between sleepers,
-/// far below any event budget a caller sets. No scene or test reaches it.
-inline constexpr std::uint32_t kWakeAfterHits = 100000;
-
-/// Under gravity with e < 1, the rattle guard (see resting.cpp): a particle that collides
-/// more than kRattleLimit times within kRattleWindow seconds of simulated time falls asleep
-/// where it is. 200 collisions in a millisecond (2·10⁵ per second): the rattles measured in the
-/// frictionless pile preset were 10⁵ collisions of one pair within one 1/60 s step.
-inline constexpr std::uint32_t kRattleLimit = 200;
-inline constexpr double kRattleWindow = 1e-3;
-
-/// Under gravity with e < 1: for this long after a rebuild (seconds) slow free neighbours do not
-/// hold a particle up and the rattle guard leaves alone what the rebuild set free: ten times
-/// the u_r/g = 5 ms in which a particle set free from rest is still slower than the rest speed.
-inline constexpr double kSettleTime = 0.05;
-
-/// Under gravity with e < 1: a sleep that needed slow free neighbours, or that the rattle guard
-/// imposed, is checked again this long after (seconds; see resting.cpp). Ten milliseconds:
-/// four times the 2.6 ms in which a neighbour at the rest speed moves out of the rest gap.
-inline constexpr double kRecheckAfter = 0.01;
-
-/// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see
-/// resting.cpp). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
-inline constexpr double kRestSpeed = 0.05;
-
-/// Under gravity with e < 1: the rest speed is at least that of a hop this many smallest
-/// radii high, √(2·g·kRestHop·r): 5·10⁻⁴ is the hop at kRestSpeed of a 0.25 m disc under
-/// 9.81 m/s² (the pile preset), so scenes at that scale keep kRestSpeed, and a scene of 2.5 m
-/// discs under 343 m/s² (the gas preset with the app's gravity) rests below 0.93 m/s.
-inline constexpr double kRestHop = 5e-4;
-
-/// Under gravity with e = 1: the fall, as a fraction of the box's larger side, that sets the
-/// rest speed, √(2·g·fall). 10⁻¹² is a few thousand ulps of a coordinate: a particle placed at
-/// rest on the floor rests, a particle that moves never does.
-inline constexpr double kRestRoundingGap = 1e-12;
 
 class ExactStepper {
   public:
@@ -224,69 +177,40 @@ class ExactStepper {
 
     // --- pair and wall events (collisions.cpp) ------------------------------------------------
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
-    /// Particle i's inverse mass seen along n, w being its own: for one wider than the box
-    /// along an axis, what is left of w along its free axis, w·|P n|² (collisions.cpp).
-    [[nodiscard]] double inverseMassAlong(std::uint32_t i, Normal n, double w) const;
-    /// After a collision of particle i that is wider than the box along an axis: its velocity
-    /// change, found for the inverse mass `wSeen` it has along the normal, turned into the
-    /// change along its free axis (collisions.cpp).
-    void holdAcrossPinnedAxes(std::uint32_t i, const Vec2& before, double wSeen);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
-    [[nodiscard]] static bool collidedWithin(const Body& b, double now);
-    [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
     // Before a collision of i at time t: true while i is jammed (jam_guard.hpp), its velocity
     // absorbed.
     bool jamsAt(std::uint32_t i, double t);
 
-    // --- resting, gravity only (resting.cpp) --------------------------------------------------
+    // --- resting, gravity only (resting.hpp; stepper_resting.cpp) ----------------------------
+    // What resting reads around a particle: the stepper's parts.
+    [[nodiscard]] Surroundings around() {
+        return {bodies_, cold_, grid_, obstacles_, slides_, rolls_, gravity_, def_};
+    }
     // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
     // changes touch wakes.
-    struct Kept {
-        Body body;
-        std::uint32_t depth;
-    };
-    void keepSleepers(std::unordered_map<ParticleId, Kept>& before);
-    // Changed particles beyond which a rebuild wakes everything (an O(N) search per change).
-    static constexpr std::size_t kMaxDisturbances = 64;
-    // What holds i up at time `now` (i is at its position then; see resting.cpp): `firm` if the
-    // static supports do, with one of depth below `below` among them (depth: the sleeper's
-    // `depth`, 1 + the least of theirs); `withFree` if they do only with the slow free
-    // neighbours added.
-    struct Hold {
-        bool firm = false, withFree = false;
-        std::uint32_t depth = kUngrounded;
-    };
-    static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
-    [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below, double now) const;
-    // `turns`: i is a disc that turns with rough contacts (a single tilted support cannot hold it).
-    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count,
-                                           bool turns) const;
-    // After an event of i: asleep if slow and held, or caught rattling.
+    void keepSleepers(Resting::Snapshot& before);
+    // After an event of i: asleep if slow and held, or caught rattling; after a pair (or an
+    // event that ends like one), off the wall it rested on if pushed off, settled, and its roll
+    // set again.
     void settle(std::uint32_t i, double now, bool slow);
-    void handleRecheck(std::uint32_t i, const Event& ev);
-    void sleepNeighboursAtRest(std::uint32_t i, double now);
-    [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
-        return now - wokeAt_[i] >= kContactDuration;
-    }
+    void settleAfterPair(std::uint32_t i, bool justWoken);
+    // Particle i asleep at `now`, brought there; awake at `now`, and with it every sleeper it
+    // held up (each predicted again as it wakes).
     void fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional);
     void wake(std::uint32_t i, double now);
-    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid, bool bSlid);
-    void settleAfterPair(std::uint32_t i, bool justWoken);
-    [[nodiscard]] bool rattles(std::uint32_t i, double now) {
-        return def_.restitution < 1.0 && rate_.exceeds(i, now, kRattleWindow, kRattleLimit);
-    }
+    void handleRecheck(std::uint32_t i, const Event& ev);
+    void sleepNeighboursAtRest(std::uint32_t i, double now);
 
     // --- fixed obstacles (obstacles.cpp) ------------------------------------------------------
     // i's earliest impact with an obstacle of its cell's list, if earlier than best; the
-    // rebound; the supports obstacles give a resting particle (normals appended to nx, ny up to
-    // max, returns the new count).
+    // rebound.
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
     void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
     // The rebound off obstacle k at i's current state (a lift or a slide where gravity presses
     // i into it), without the event's bookkeeping.
     void reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool recent, StepCounters& counters,
                             bool maySlide = true);
-    int obstacleSupports(std::uint32_t i, double* nx, double* ny, int count, int max) const;
 
     // --- sliding on a segment's face (slides.hpp; obstacles.cpp) ------------------------------
     // Entering it at a rebound off a face (false where slides.hpp says no), its acceleration (a
@@ -314,27 +238,14 @@ class ExactStepper {
 
     WorldDef def_;
     bool stale_ = true;
-    Gravity gravity_;         // def_.gravity
-    double restSpeed_ = 0.0;  // see resting.cpp
-    double restGap_ = 0.0;
-    std::vector<std::uint32_t> wakeStack_;
+    Gravity gravity_;  // def_.gravity
+    // Each particle's rest state (gravity only).
+    Resting rest_;
+    std::vector<std::uint32_t> wakeStack_;  // the wake cascade's particles to look around
     // Each particle's sliding contact, with gravity and obstacles or rough contacts only.
     Slides slides_;
     // Each particle's rotation, in a world that keeps rotation; whether contacts are rough.
     Rolls rolls_;
-    // When each particle was last woken (gravity only): it does not fall asleep again within
-    // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
-    // by the next event of the cascade that woke it.
-    std::vector<double> wokeAt_;
-    // Per sleeper (gravity only): its depth, 1 for one on a wall, an obstacle or a held
-    // particle, else 1 + the least depth of the sleepers it rests on; and when a provisional
-    // one is checked again.
-    std::vector<std::uint32_t> depth_;
-    std::vector<double> recheckAt_;
-    CollisionRate rate_;  // the rattle guard's counts (gravity only)
-    /// The last rebuild kept what slept (keepSleepers): only the particles it set free or added
-    /// are settling (rate_.quietAt), not everything.
-    bool keptSleepers_ = false;
     double clock_ = 0.0;  // seconds since the last rebuild
     // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
     // three short runs of memory; order_ maps this order back to the world's storage indices.
