@@ -36,7 +36,7 @@ inline constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity,
 inline constexpr std::uint32_t kRestX = 16;         // no acceleration along x (on a wall, pinned)
 inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y
 inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: Slides holds how
-inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (resting.cpp)
+inline constexpr std::uint32_t kProvisional = 128;  // asleep until its recheck (resting.hpp)
 // A disc that turns, in a world with rough contacts, on the face it slides on (kSliding) or the
 // one wall it rests on (kRestX or kRestY): it slips or rolls (rolls.hpp); Slides holds its
 // acceleration along the surface and the end of its slip, its Turn (Rolls) its angular

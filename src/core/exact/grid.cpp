@@ -16,9 +16,9 @@
 // at most reach(a, b) apart along each axis, the distance at which two such discs can still
 // touch (1 for two of level 0: the 3 × 3 search). The relation is symmetric and changes only
 // at a cell move of one of the two, which searches the strip of cells that just came within
-// reach, at every level: that is all the argument of prediction.cpp ("Two scheduled events")
-// needs. Level 0 is listed in the fine cells; level l > 0 in cells of block × block fine cells
-// (block = 2 reach(0, l) + 1), so that a small disc looks at a few cells of each upper level,
+// reach, at every level: that is all the argument of stepper_prediction.cpp ("Two scheduled
+// events") needs. Level 0 is listed in the fine cells; level l > 0 in cells of block × block fine
+// cells (block = 2 reach(0, l) + 1), so that a small disc looks at a few cells of each upper level,
 // and a big disc's search is the (2 reach + 1)² fine cells around it, mostly inside the disc
 // itself and so empty. A scene of one size has one level and runs the code it ran before levels
 // existed, bit for bit.

@@ -16,7 +16,7 @@
 // through the face it came in by). All in parabolic_impact.hpp. A world without gravity
 // takes none of these paths: its trajectories are bit for bit those of the linear code.
 //
-// Inline: the searches of prediction.cpp call these for every neighbour they test.
+// Inline: the searches of stepper_prediction.cpp call these for every neighbour they test.
 
 #include <cstdint>
 

@@ -3,7 +3,7 @@
 //
 // Resting (gravity only; Bannerman et al. 2014, DynamO's sleeping particles, after Luding &
 // McNamara 1998). A ball with e < 1 makes infinitely many bounces in finite time, and the guards
-// against inelastic collapse (collisions.cpp) only slow the cascade, so particles that come to
+// against inelastic collapse (collision_rules.hpp) only slow the cascade, so particles that come to
 // rest are taken out of the dynamics:
 //   - a wall that gravity presses a particle into: a rebound slower than restSpeed_ ends with
 //     the particle resting on the wall (its velocity and acceleration across the wall zero); it

@@ -31,23 +31,35 @@
 //        state at the end of the last step in one pass. A run of frames that nobody looks
 //        at costs its events and nothing per particle.
 //
-// Where each part is (src/core/exact/):
-//   stepper.cpp      this loop: step(), runEvents(), sync()
-//   body.hpp         the per-particle records (Body, Cold), events, motions; their memory layout
-//   motion.hpp       lazy advance: where a particle is at a time, under gravity on a parabola
-//   rebuild.cpp      the state rebuilt from the world's arrays; pairs placed overlapping
-//   grid.cpp/.hpp    the fine cells with a skin, the size levels, the sort into cell order
-//   prediction.cpp   a particle's next collision and next cell move; the cell move's search
-//   collisions.cpp   pair and wall events: the rules for invalid states, inelastic collapse,
-//                    held particles
-//   resting.cpp      sleep and wake under gravity: the support test, provisional sleep,
-//                    rattling, sleepers kept across a rebuild
-//   obstacles.cpp    events with fixed pegs and segments; obstacle_cells.* lists them per cell
-//   sliding.cpp      the sliding contact on a segment's face
-//   rolling.cpp      a disc that turns slipping, then rolling, on a face or a wall
-//   event_queue.*, cell_list.*, collision_rate.hpp, and the times of impact:
-//   time_of_impact.hpp (straight lines), parabolic_impact.hpp (gravity),
-//   obstacle_impact.hpp (obstacles)
+// What it is made of (src/core/exact/). Each concept is a type that owns its state:
+//   EventQueue         event_queue.*         the event calendar: two keys per particle
+//   Grid               grid.*, cell_list.*   the cells: fine cells with a skin, size levels,
+//                                            the walks over them, the order of a re-sort
+//   ObstacleCells      obstacle_cells.*      the fixed obstacles each fine cell may reach
+//   PlacedContacts     placed_contacts.*     pairs placed overlapping, at their placed distance
+//   Resting            resting.*             the resting contacts under gravity: what holds a
+//                                            particle, sleep, provisional sleep, waking,
+//                                            rattling, sleepers kept across a rebuild
+//   Slides             slides.*              the sliding contact on a segment's face
+//   Rolls              rolls.*               each disc's rotation; slipping, then rolling, on
+//                                            a face or a wall
+//   JamGuard           jam_guard.*           particles with no room: held squeezes, jams
+//   CollisionRecorder  collision_recorder.hpp  where resolved collisions go
+// They share the per-particle records (body.hpp: Body, Cold, and the Slide and Turn the
+// slides and rolls keep; all in the stepper's cell order) and lean on free functions: motion
+// (motion.hpp: lazy advance, on a parabola under gravity), the collision rules
+// (collision_rules.hpp) and the times of impact (time_of_impact.hpp for straight lines,
+// parabolic_impact.hpp under gravity, obstacle_impact.hpp for obstacles).
+//
+// The stepper owns the particle records and composes the parts. What is left to it is the
+// orchestration: which part is asked what, in which order, and every prediction that follows:
+//   stepper.cpp             the loop: step(), runEvents(), sync(); the re-sort into cell order
+//   stepper_rebuild.cpp     the state rebuilt from the world's arrays
+//   stepper_prediction.cpp  a particle's next collision and next cell move; the cell move
+//   stepper_collisions.cpp  pair and wall events
+//   stepper_obstacles.cpp   events with fixed pegs and segments
+//   stepper_surfaces.cpp    slides and rolls started, and their own events
+//   stepper_resting.cpp     sleep and wake carried out (Resting decides), predicted again
 //
 // Ties. Events at the same instant are handled in key order (particle index, collision before
 // cell move); equal candidate times in a prediction go to the lower partner index. Indices are
@@ -64,7 +76,6 @@
 // the step is not simulated. Without a budget a step always reaches its end.
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include <particle_sandbox/collision_log.hpp>
@@ -141,14 +152,13 @@ class ExactStepper {
     // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
     // the budget (0: none) ran out, the time of the first event left.
     double runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
+    // Re-sorts the particles into cell order (Grid::cellOrder), every part's per-particle
+    // state with them; `midRun`: the scheduled events and the cell lists follow.
+    void sortByCell(bool midRun);
 
-    // --- rebuild (rebuild.cpp) ----------------------------------------------------------------
+    // --- rebuild (stepper_rebuild.cpp) --------------------------------------------------------
     void rebuild(ParticleArrays& p, const WorldDef& def);
     [[nodiscard]] double bucketWidth() const;
-
-    // Re-sorts the particles into cell order (grid.hpp), every per-particle array with them;
-    // `midRun`: the scheduled events and the cell lists follow.
-    void sortByCell(bool midRun);
 
     // --- motion (motion.hpp) ------------------------------------------------------------------
     // Particle i brought to time t; its acceleration and its motion at t (b: its record or a
@@ -161,7 +171,7 @@ class ExactStepper {
         return exact::motionAt(i, b, gravity_, slides_, t);
     }
 
-    // --- prediction (prediction.cpp) ----------------------------------------------------------
+    // --- prediction (stepper_prediction.cpp) --------------------------------------------------
     void predictCollision(std::uint32_t i, double now);
     void predictWallsUnderGravity(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void predictCell(std::uint32_t i, double now);
@@ -175,7 +185,7 @@ class ExactStepper {
                                                      double horizon);
     void handleCell(std::uint32_t i, double now);
 
-    // --- pair and wall events (collisions.cpp) ------------------------------------------------
+    // --- pair and wall events (stepper_collisions.cpp) ----------------------------------------
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
     // Before a collision of i at time t: true while i is jammed (jam_guard.hpp), its velocity
@@ -202,7 +212,7 @@ class ExactStepper {
     void handleRecheck(std::uint32_t i, const Event& ev);
     void sleepNeighboursAtRest(std::uint32_t i, double now);
 
-    // --- fixed obstacles (obstacles.cpp) ------------------------------------------------------
+    // --- fixed obstacles (stepper_obstacles.cpp) ----------------------------------------------
     // i's earliest impact with an obstacle of its cell's list, if earlier than best; the
     // rebound.
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
@@ -212,7 +222,7 @@ class ExactStepper {
     void reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool recent, StepCounters& counters,
                             bool maySlide = true);
 
-    // --- sliding on a segment's face (slides.hpp; obstacles.cpp) ------------------------------
+    // --- sliding on a segment's face (slides.hpp; stepper_surfaces.cpp) -----------------------
     // Entering it at a rebound off a face (false where slides.hpp says no), its acceleration (a
     // block's, or a roll's for a disc that turns), the end-of-face and stop events; and the
     // face's answer to a slider hit by a pair that is still on it.
@@ -229,44 +239,43 @@ class ExactStepper {
     }
     void keepOnFace(std::uint32_t i, StepCounters& counters, bool maySlide);
 
-    // --- slipping and rolling on a face or a wall (rolls.hpp; obstacles.cpp) -----------------
+    // --- slipping and rolling on a face or a wall (rolls.hpp; stepper_surfaces.cpp) ----------
     // The phase i's contact calls for at bodies_[i].t (Rolls::set); the slip-to-roll event.
     void setRoll(std::uint32_t i) {
         rolls_.set(i, bodies_[i], cold_[i], slides_, obstacles_, gravity_, def_.friction);
     }
     void handleRoll(std::uint32_t i, const Event& ev);
 
+    // --- what it is made of ---------------------------------------------------------------
     WorldDef def_;
-    bool stale_ = true;
     Gravity gravity_;  // def_.gravity
-    // Each particle's rest state (gravity only).
-    Resting rest_;
-    std::vector<std::uint32_t> wakeStack_;  // the wake cascade's particles to look around
-    // Each particle's sliding contact, with gravity and obstacles or rough contacts only.
-    Slides slides_;
-    // Each particle's rotation, in a world that keeps rotation; whether contacts are rough.
-    Rolls rolls_;
-    double clock_ = 0.0;  // seconds since the last rebuild
-    // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
-    // three short runs of memory; order_ maps this order back to the world's storage indices.
+    // The particles, in cell order (a rebuild sorts them, and the loop every kResortEvery·N
+    // events) so that a 3 × 3 neighbourhood is three short runs of memory; order_ maps this
+    // order back to the world's storage indices, ids_ to their ids.
     std::vector<Body> bodies_;
     std::vector<Cold> cold_;
     std::vector<std::uint32_t> order_;
     std::vector<ParticleId> ids_;
+    EventQueue queue_;         // the event calendar
     Grid grid_;                // the cells and size levels
     ObstacleCells obstacles_;  // the fixed obstacles each fine cell may reach
-    EventQueue queue_;
-    std::uint64_t eventsSinceSort_ = 0;
-    double maxOverlap_ = 0.0;
-    // Events handled in this step (pairs, stale pairs, walls, obstacles, slides, cell moves):
-    // what step() adds to StepCounters::events.
-    std::uint64_t events_ = 0;
-    CollisionRecorder recorder_;  // where resolved collisions go (setLog, record)
-    // Pairs found overlapping at the last rebuild (placed so from outside): the contact
-    // distance each keeps until it is found apart.
-    PlacedContacts placed_;
-    bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
+    PlacedContacts placed_;    // pairs placed overlapping at the last rebuild
+    Resting rest_;             // the resting contacts (gravity only)
+    Slides slides_;            // sliding contacts (gravity with obstacles or rough contacts)
+    Rolls rolls_;              // rotations (a world that keeps rotation); rough contacts
     JamGuard jams_;
+    CollisionRecorder recorder_;  // where resolved collisions go (setLog, record)
+
+    // --- the loop's bookkeeping ----------------------------------------------------------------
+    bool stale_ = true;      // a rebuild is due (invalidate)
+    double clock_ = 0.0;     // seconds since the last rebuild
+    bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
+    std::uint64_t eventsSinceSort_ = 0;
+    // Events handled in this step (pairs, stale pairs, walls, obstacles, slides, cell moves):
+    // what step() adds to StepCounters::events; and the deepest overlap met in it.
+    std::uint64_t events_ = 0;
+    double maxOverlap_ = 0.0;
+    std::vector<std::uint32_t> wakeStack_;  // the wake cascade's particles to look around
 };
 
 }  // namespace psb::exact

@@ -1,6 +1,6 @@
 // Pair and wall events of the exact stepper: the collision at the instant of contact, its
-// restitution, and the guards that keep rounding, inelastic collapse and held particles from
-// stalling the event loop.
+// restitution, what it does to sleepers and slides, and the rules that keep rounding from
+// deciding.
 //
 // Rules for invalid states (Bannerman et al. 2014), so rounding never decides:
 //   - no event is scheduled before the current time (times of impact are durations >= 0);
@@ -12,28 +12,12 @@
 //   - a disc past a wall collides with it at once if moving outward, else is left alone;
 //   - a collision whose pair turns out not to approach at its instant changes nothing.
 //
-// Inelastic collapse. With e < 1 a cluster can collide infinitely often in finite time, and an
-// event-driven code then stalls; with e = 0 it does so at once (a pair leaves a collision
-// touching, at zero relative speed, so the next collision in the cluster is at zero gap). Two
-// guards make restitution tend to 1 where the collapse would happen:
-//   - the TC model (Luding & McNamara 1998): a particle that collided less than
-//     kContactDuration ago collides elastically, so a cascade of near-simultaneous collisions
-//     re-opens gaps instead of closing them;
-//   - impacts slower than kElasticBelowSpeed use e_eff = 1 − (1 − e)·u/u_c, rising linearly to
-//     1 as the speed goes to 0, so ever slower collisions lose ever less energy.
-// A cooling pile therefore settles to small speeds with a bounded number of events per step.
+// Inelastic collapse and particles that do not fit in the box: the rules in collision_rules.hpp.
 //
 // Held (kinematic) particles. Infinite mass, straight lines: they push and are not pushed
 // (contact.hpp's kinematic limit). A held particle that reaches a wall stops moving across it.
-// A free particle squeezed between a held one and a wall or another held one would collide
-// infinitely often; after kJamLimit collisions with held particles in one step it is allowed to
-// pass through held particles for the rest of that step.
-//
-// Particles that do not fit. A particle wider than the box along an axis stays on the box's
-// centre line on that axis (as in the discrete mode): the walls hold it there, so a collision
-// gives it no velocity across that axis (its inverse mass along the normal is that along its
-// free axis; see handlePair), and the walls absorb at once any it has. Such a particle makes
-// the cells as large as the box: correct but O(N) per event.
+// A free particle squeezed between a held one and a wall or another held one is the jam
+// guard's (jam_guard.hpp).
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // The exact stepper's state rebuilt from the world's arrays, after any change to the world:
 // the particles copied and clamped into the box, the grid and its levels set up, the particles
 // sorted into cell order, the pairs placed overlapping recorded (placed_contacts.hpp), and every
-// particle's two events predicted. What slept and still may sleeps on (keepSleepers, resting.cpp).
+// particle's two events predicted. What slept and still may sleeps on (keepSleepers, resting.hpp).
 
 #include <algorithm>
 #include <cmath>
