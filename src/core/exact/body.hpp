@@ -1,7 +1,8 @@
 #pragma once
 // The exact stepper's records: what it keeps per particle (Body, what a neighbour's prediction
 // reads; Cold, what only the particle's own events read), the events it schedules, where a
-// particle is at a time and how it moves there (Motion), and a sliding contact (Slide).
+// particle is at a time and how it moves there (Motion, Gravity), a sliding contact (Slide) and
+// a rotation (Turn).
 //
 // Memory. Events come in time order, which is random in space, so at 10^5 particles nearly
 // every particle an event touches is a cache miss. What an event reads about a neighbour is one
@@ -11,6 +12,7 @@
 // the particle of the likely next event is prefetched while this one is handled.
 
 #include <cstdint>
+#include <vector>
 
 namespace psb::exact {
 
@@ -29,22 +31,22 @@ struct alignas(64) Body {
 };
 inline constexpr std::uint32_t kHeld = 1;               // kinematic: infinite mass
 inline constexpr std::uint32_t kJammed = 2;             // passes through held particles (jam guard)
-inline constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of overlapContact_
+inline constexpr std::uint32_t kPlacedOverlapping = 4;  // in a pair of PlacedContacts
 inline constexpr std::uint32_t kAsleep = 8;             // at rest: no velocity, no acceleration
 inline constexpr std::uint32_t kRestX = 16;         // no acceleration along x (on a wall, pinned)
 inline constexpr std::uint32_t kRestY = 32;         // no acceleration along y
-inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: slide_ holds how
-inline constexpr std::uint32_t kProvisional = 128;  // asleep until recheckAt_ (resting.cpp)
+inline constexpr std::uint32_t kSliding = 64;       // on a segment's face: Slides holds how
+inline constexpr std::uint32_t kProvisional = 128;  // asleep until its recheck (resting.hpp)
 // A disc that turns, in a world with rough contacts, on the face it slides on (kSliding) or the
-// one wall it rests on (kRestX or kRestY): it slips or rolls (rolling.cpp); slide_ holds its
-// acceleration along the surface and the end of its slip, turn_ its angular acceleration.
-// Also a disc that does not turn on the wall it rests on: it slides under kinetic friction
-// until it stops (slipEnds).
+// one wall it rests on (kRestX or kRestY): it slips or rolls (rolls.hpp); Slides holds its
+// acceleration along the surface and the end of its slip, its Turn (Rolls) its angular
+// acceleration. Also a disc that does not turn on the wall it rests on: it slides under kinetic
+// friction until it stops (slipEnds).
 inline constexpr std::uint32_t kRolling = 256;
-// A particle sliding on a segment's face (kSliding; sliding.cpp): which
+// A particle sliding on a segment's face (kSliding; slides.cpp): which
 // segment, and its constant acceleration along the face (gravity's share along it less the
 // kinetic friction, or none where static friction holds it). A disc that rolls (kRolling) keeps
-// here its acceleration along the face or wall and when its slip ends (rolling.cpp).
+// here its acceleration along the face or wall and when its slip ends (rolls.hpp).
 struct Slide {
     std::uint32_t obstacle = 0;
     double ax = 0.0, ay = 0.0;
@@ -66,6 +68,11 @@ struct Turn {
 struct Motion {
     double x, y, vx, vy, ax, ay;
 };
+// The gravity particles fall under (m/s²); `on`: it is not zero.
+struct Gravity {
+    double x = 0.0, y = 0.0;
+    bool on = false;
+};
 struct Event {
     double time;
     std::uint32_t partner;       // pair: the other particle; obstacle: its index
@@ -86,5 +93,15 @@ struct alignas(64) Cold {
     double w;                // inverse mass, 0 = held
 };
 static_assert(sizeof(Cold) == 64);
+
+// Follows a renumbering of the particles (a sort into cell order, grid.hpp): the element of
+// particle i moves to to[i].
+template <typename T>
+void renumber(std::vector<T>& v, const std::vector<std::uint32_t>& to) {
+    std::vector<T> out(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i)
+        out[to[i]] = v[i];
+    v.swap(out);
+}
 
 }  // namespace psb::exact

@@ -1,5 +1,5 @@
-// The exact stepper's grid: the fine cells everyone's cell moves follow, the size levels above
-// them, and the sort of the particles into cell order. The walks over the cells are grid.hpp's.
+// The exact stepper's cells: the fine cells everyone's cell moves follow, the size levels above
+// them, and the order that sorts the particles into cell order. The walks are grid.hpp's.
 //
 // Cells with a skin. Cells are at least one largest diameter (of level 0, below) plus twice a
 // skin wide, and a particle moves to the next cell only once its centre is a skin's width past
@@ -16,9 +16,9 @@
 // at most reach(a, b) apart along each axis, the distance at which two such discs can still
 // touch (1 for two of level 0: the 3 × 3 search). The relation is symmetric and changes only
 // at a cell move of one of the two, which searches the strip of cells that just came within
-// reach, at every level: that is all the argument of prediction.cpp ("Two scheduled events")
-// needs. Level 0 is listed in the fine cells; level l > 0 in cells of block × block fine cells
-// (block = 2 reach(0, l) + 1), so that a small disc looks at a few cells of each upper level,
+// reach, at every level: that is all the argument of stepper_prediction.cpp ("Two scheduled
+// events") needs. Level 0 is listed in the fine cells; level l > 0 in cells of block × block fine
+// cells (block = 2 reach(0, l) + 1), so that a small disc looks at a few cells of each upper level,
 // and a big disc's search is the (2 reach + 1)² fine cells around it, mostly inside the disc
 // itself and so empty. A scene of one size has one level and runs the code it ran before levels
 // existed, bit for bit.
@@ -28,7 +28,6 @@
 #include <type_traits>
 
 #include "exact/grid.hpp"
-#include "exact/stepper.hpp"
 #include "exact/time_of_impact.hpp"
 
 namespace psb::exact {
@@ -55,8 +54,8 @@ constexpr double kCrowdedSkin = 0.05;
 
 }  // namespace
 
-void ExactStepper::setUpGrid() {
-    const auto n = static_cast<std::uint32_t>(bodies_.size());
+void Grid::setUp(const WorldDef& def, const std::vector<Body>& bodies, std::vector<Cold>& cold) {
+    const auto n = static_cast<std::uint32_t>(bodies.size());
     // Unbounded, so the grid folds onto itself (cell_list.hpp) and need not cover every
     // particle: it is sized for the bulk of them (the middle 90 % along each axis), so
     // that one particle flung far away does not make every cell huge.
@@ -64,26 +63,26 @@ void ExactStepper::setUpGrid() {
         if (n < 2) return 0.0;
         std::vector<double> v(n);
         for (std::uint32_t i = 0; i < n; ++i)
-            v[i] = coord(bodies_[i]);
+            v[i] = coord(bodies[i]);
         const auto lo = v.begin() + n / 20, hi = v.begin() + (n - 1 - n / 20);
         std::nth_element(v.begin(), lo, v.end());
         const double a = *lo;
         std::nth_element(v.begin(), hi, v.end());
         return *hi - a;
     };
-    double bulkW = def_.width, bulkH = def_.height;
-    if (!def_.walls) {
+    double bulkW = def.width, bulkH = def.height;
+    if (!def.walls) {
         bulkW = spread([](const Body& b) { return b.x; });
         bulkH = spread([](const Body& b) { return b.y; });
     }
     double dmax = 0.0;
-    assignLevels(std::sqrt(bulkW * bulkH / std::max(n, 1u)), dmax);
+    assignLevels(bodies, cold, std::sqrt(bulkW * bulkH / std::max(n, 1u)), dmax);
     const double minSide = std::max(dmax * kCellSlack, 1e-300);
     // At most a few cells per particle: enough for the 3 × 3 searches to see ~1 particle each,
     // and memory stays O(N) however large the box.
     const double maxCells = 4.0 * n + 64.0;
-    if (def_.walls) {
-        const double area = def_.width * def_.height;
+    if (def.walls) {
+        const double area = def.width * def.height;
         double side = std::max(minSide, kCellSpacings * std::sqrt(area / std::max(n, 1u)));
         side = std::max(side, std::sqrt(area / maxCells));
         const auto count = [&](double extent) {
@@ -95,9 +94,9 @@ void ExactStepper::setUpGrid() {
             const double k = std::min(extent / side, maxCells);
             return k < 4.0 ? std::int64_t{1} : static_cast<std::int64_t>(k);
         };
-        const std::int64_t nx = count(def_.width), ny = count(def_.height);
-        cells_.reset(0.0, 0.0, def_.width / static_cast<double>(nx),
-                     def_.height / static_cast<double>(ny), nx, ny, false, n);
+        const std::int64_t nx = count(def.width), ny = count(def.height);
+        cells_.reset(0.0, 0.0, def.width / static_cast<double>(nx),
+                     def.height / static_cast<double>(ny), nx, ny, false, n);
     } else {
         const double w = bulkW + 2.0 * minSide;
         const double h = bulkH + 2.0 * minSide;
@@ -126,16 +125,17 @@ void ExactStepper::setUpGrid() {
         skinY_ = std::min(skinY_, kCrowdedSkin * sy);
     }
     for (std::uint32_t i = 0; i < n; ++i) {
-        cold_[i].kx = cells_.coordX(bodies_[i].x);
-        cold_[i].ky = cells_.coordY(bodies_[i].y);
+        cold[i].kx = cells_.coordX(bodies[i].x);
+        cold[i].ky = cells_.coordY(bodies[i].y);
     }
-    setUpLevels();
+    setUpLevels(n);
 }
 
-void ExactStepper::assignLevels(double spacing, double& fineDiameter) {
-    const auto n = static_cast<std::uint32_t>(bodies_.size());
+void Grid::assignLevels(const std::vector<Body>& bodies, std::vector<Cold>& cold, double spacing,
+                        double& fineDiameter) {
+    const auto n = static_cast<std::uint32_t>(bodies.size());
     double rmin = kNever;
-    for (const Body& b : bodies_)
+    for (const Body& b : bodies)
         rmin = std::min(rmin, b.r);
     // Level 0 holds every disc the cells would be wide enough for anyway (cells are about a
     // mean spacing wide): up to kLevelZeroSpacings spacings across, and at least twice the
@@ -149,7 +149,7 @@ void ExactStepper::assignLevels(double spacing, double& fineDiameter) {
             ++l;
         return l;
     };
-    for (const Body& b : bodies_)
+    for (const Body& b : bodies)
         raw[rawLevel(b.r)] = 1;
     std::uint8_t compact[kMaxRaw + 1];
     std::uint8_t count = 0;
@@ -161,16 +161,15 @@ void ExactStepper::assignLevels(double spacing, double& fineDiameter) {
     levelRadius_.assign(levelCount_, 0.0);
     levelMembers_.assign(levelCount_, 0);
     for (std::uint32_t i = 0; i < n; ++i) {
-        const std::uint8_t l = compact[rawLevel(bodies_[i].r)];
-        cold_[i].level = l;
-        levelRadius_[l] = std::max(levelRadius_[l], bodies_[i].r);
+        const std::uint8_t l = compact[rawLevel(bodies[i].r)];
+        cold[i].level = l;
+        levelRadius_[l] = std::max(levelRadius_[l], bodies[i].r);
         ++levelMembers_[l];
     }
     fineDiameter = 2.0 * levelRadius_[0];
 }
 
-void ExactStepper::setUpLevels() {
-    const auto n = static_cast<std::uint32_t>(bodies_.size());
+void Grid::setUpLevels(std::uint32_t n) {
     const double sx = cells_.faceX(1) - cells_.faceX(0), sy = cells_.faceY(1) - cells_.faceY(0);
     reach_.assign(std::size_t{levelCount_} * levelCount_, 1);
     for (std::uint8_t a = 0; a < levelCount_; ++a) {
@@ -204,76 +203,50 @@ void ExactStepper::setUpLevels() {
     }
 }
 
-bool ExactStepper::populous(std::uint8_t level) const {
+bool Grid::populous(std::uint8_t level) const {
     // More than one particle in kSparseCells fine cells.
     return static_cast<double>(levelMembers_[level]) * kSparseCells >=
            static_cast<double>(cells_.nx() * cells_.ny());
 }
 
-bool ExactStepper::populousUpperLevel() const {
+bool Grid::populousUpperLevel() const {
     for (std::uint8_t l = 1; l < levelCount_; ++l) {
         if (populous(l)) return true;
     }
     return false;
 }
 
-void ExactStepper::insertMember(std::uint32_t i) {
-    const std::uint8_t level = cold_[i].level;
-    CellList& list = level == 0 ? cells_ : upper_[level - 1].cells;
-    list.insert(i, memberCell(i));
+void Grid::insert(std::uint32_t i, const Cold& c) {
+    CellList& list = c.level == 0 ? cells_ : upper_[c.level - 1].cells;
+    list.insert(i, memberCell(c));
 }
 
-void ExactStepper::sortByCell(bool midRun) {
-    const auto n = static_cast<std::uint32_t>(bodies_.size());
+void Grid::clearMembers() {
+    cells_.clearMembers();
+    for (Level& l : upper_)
+        l.cells.clearMembers();
+}
+
+std::vector<std::uint32_t> Grid::cellOrder(const std::vector<Cold>& cold) const {
+    const auto n = static_cast<std::uint32_t>(cold.size());
     const auto cellCount = static_cast<std::size_t>(cells_.nx() * cells_.ny());
     std::vector<std::uint32_t> start(cellCount + 1, 0), cellOf(n), to(n);
     for (std::uint32_t i = 0; i < n; ++i) {
-        cellOf[i] = cells_.cell(cold_[i].kx, cold_[i].ky);
+        cellOf[i] = cells_.cell(cold[i].kx, cold[i].ky);
         ++start[cellOf[i] + 1];
     }
     for (std::size_t c = 0; c < cellCount; ++c)
         start[c + 1] += start[c];
     for (std::uint32_t i = 0; i < n; ++i)
         to[i] = start[cellOf[i]]++;
-    const auto permute = [&](auto& v) {
-        std::remove_reference_t<decltype(v)> out(v.size());
-        for (std::uint32_t i = 0; i < n; ++i)
-            out[to[i]] = v[i];
-        v.swap(out);
-    };
-    permute(bodies_);
-    permute(cold_);
-    permute(order_);
-    permute(ids_);
-    if (gravity_) {
-        permute(wokeAt_);
-        permute(depth_);
-        permute(recheckAt_);
-        rate_.renumber(to);
-    }
-    if (!slide_.empty()) permute(slide_);
-    if (!turn_.empty()) permute(turn_);
-    if (midRun) {
-        // Carry the scheduled events over to the new indices.
-        std::vector<double> times(2 * static_cast<std::size_t>(n));
-        for (std::uint32_t i = 0; i < n; ++i) {
-            times[2 * to[i]] = queue_.timeOf(2 * i);
-            times[2 * to[i] + 1] = queue_.timeOf(2 * i + 1);
-        }
-        for (Cold& c : cold_) {
-            if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
-        }
-        for (std::uint32_t& i : heldHit_)
-            i = to[i];
-        queue_.reset(2 * n, queue_.bucketWidth());
-        for (std::uint32_t k = 0; k < 2 * n; ++k)
-            queue_.update(k, times[k]);
-        cells_.clearMembers();
-        for (Level& l : upper_)
-            l.cells.clearMembers();
-        for (std::uint32_t i = 0; i < n; ++i)
-            insertMember(i);
-    }
+    return to;
+}
+
+std::size_t Grid::memoryBytes() const {
+    std::size_t bytes = cells_.memoryBytes();
+    for (const Level& level : upper_)
+        bytes += level.cells.memoryBytes();
+    return bytes;
 }
 
 }  // namespace psb::exact

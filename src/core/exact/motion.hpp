@@ -16,19 +16,60 @@
 // through the face it came in by). All in parabolic_impact.hpp. A world without gravity
 // takes none of these paths: its trajectories are bit for bit those of the linear code.
 //
-// Inline: the searches of prediction.cpp call these for every neighbour they test.
+// Inline: the searches of stepper_prediction.cpp call these for every neighbour they test.
 
-#include "exact/stepper.hpp"
+#include <cstdint>
+
+#include "exact/body.hpp"
+#include "exact/slides.hpp"
 
 namespace psb::exact {
 
-inline void ExactStepper::advance(std::uint32_t i, double t) {
-    Body& b = bodies_[i];
+// At rest: asleep, or held and not moving.
+[[nodiscard]] inline bool isStatic(const Body& b) {
+    return (b.flags & kAsleep) || ((b.flags & kHeld) && b.vx == 0.0 && b.vy == 0.0);
+}
+
+// The acceleration of particle i, whose record is b (its own, or a copy of it): none held or
+// asleep; its surface's while it slides or rolls (found by the index, never by b's address:
+// rebuild() projects copies of the records to the clock); else gravity, less what a wall it
+// rests on holds.
+inline void accelerationOf(std::uint32_t i, const Body& b, const Gravity& g, const Slides& slides,
+                           double& ax, double& ay) {
+    if (b.flags & (kHeld | kAsleep)) {
+        ax = ay = 0.0;
+        return;
+    }
+    if (b.flags & (kSliding | kRolling)) {
+        const Slide& s = slides[i];
+        ax = s.ax;
+        ay = s.ay;
+        return;
+    }
+    ax = (b.flags & kRestX) ? 0.0 : g.x;
+    ay = (b.flags & kRestY) ? 0.0 : g.y;
+}
+
+// Where particle i (record b) is at time t, and how it moves there.
+[[nodiscard]] inline Motion motionAt(std::uint32_t i, const Body& b, const Gravity& g,
+                                     const Slides& slides, double t) {
+    Motion m{};
+    accelerationOf(i, b, g, slides, m.ax, m.ay);
+    const double h = t - b.t;
+    m.x = b.x + b.vx * h + 0.5 * m.ax * h * h;
+    m.y = b.y + b.vy * h + 0.5 * m.ay * h * h;
+    m.vx = b.vx + m.ax * h;
+    m.vy = b.vy + m.ay * h;
+    return m;
+}
+
+// Brings particle i's record b to time t.
+inline void advance(std::uint32_t i, Body& b, const Gravity& g, const Slides& slides, double t) {
     const double h = t - b.t;
     if (h != 0.0) {
-        if (gravity_) {
+        if (g.on) {
             double ax, ay;
-            accelerationOf(i, b, ax, ay);
+            accelerationOf(i, b, g, slides, ax, ay);
             b.x += b.vx * h + 0.5 * ax * h * h;
             b.y += b.vy * h + 0.5 * ay * h * h;
             b.vx += ax * h;
@@ -39,35 +80,6 @@ inline void ExactStepper::advance(std::uint32_t i, double t) {
         }
         b.t = t;
     }
-}
-
-inline void ExactStepper::accelerationOf(std::uint32_t i, const Body& b, double& ax,
-                                         double& ay) const {
-    if (b.flags & (kHeld | kAsleep)) {
-        ax = ay = 0.0;
-        return;
-    }
-    if (b.flags & (kSliding | kRolling)) {
-        // The slide (or roll) is found by the particle's index, never by the record's address:
-        // b may be a copy (rebuild() projects copies of the records to the clock).
-        const Slide& s = slide_[i];
-        ax = s.ax;
-        ay = s.ay;
-        return;
-    }
-    ax = (b.flags & kRestX) ? 0.0 : gx_;
-    ay = (b.flags & kRestY) ? 0.0 : gy_;
-}
-
-inline Motion ExactStepper::motionAt(std::uint32_t i, const Body& b, double t) const {
-    Motion m{};
-    accelerationOf(i, b, m.ax, m.ay);
-    const double h = t - b.t;
-    m.x = b.x + b.vx * h + 0.5 * m.ax * h * h;
-    m.y = b.y + b.vy * h + 0.5 * m.ay * h * h;
-    m.vx = b.vx + m.ax * h;
-    m.vy = b.vy + m.ay * h;
-    return m;
 }
 
 // A rotation brought to time t: the angle grows linearly between rough impulses, and as a

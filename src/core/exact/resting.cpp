@@ -1,9 +1,9 @@
-// Rest under gravity in the exact stepper: when a particle falls asleep, what holds it up, when
-// it wakes, and what a rebuild keeps asleep.
+// The exact stepper's resting contacts (gravity only): when a particle falls asleep, what holds
+// it up, when it wakes, and what a rebuild keeps asleep.
 //
 // Resting (gravity only; Bannerman et al. 2014, DynamO's sleeping particles, after Luding &
 // McNamara 1998). A ball with e < 1 makes infinitely many bounces in finite time, and the guards
-// against inelastic collapse (collisions.cpp) only slow the cascade, so particles that come to
+// against inelastic collapse (collision_rules.hpp) only slow the cascade, so particles that come to
 // rest are taken out of the dynamics:
 //   - a wall that gravity presses a particle into: a rebound slower than restSpeed_ ends with
 //     the particle resting on the wall (its velocity and acceleration across the wall zero); it
@@ -68,29 +68,67 @@
 // kMaxDisturbances such changes, or changed laws, wake everything. A drag through a settled
 // pile therefore wakes only what the dragged particle touches.
 
+#include "exact/resting.hpp"
+
 #include <algorithm>
 #include <cmath>
 
-#include "exact/grid.hpp"
+#include "exact/collision_rules.hpp"
 #include "exact/motion.hpp"
 #include "exact/parabolic_impact.hpp"
-#include "exact/stepper.hpp"
+#include "obstacles/obstacle_geometry.hpp"
 
 namespace psb::exact {
 
-void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
+void Resting::remember(const std::vector<Body>& bodies, const std::vector<ParticleId>& ids,
+                       const Gravity& g, const Slides& slides, double clock, Snapshot& out) const {
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        // Each particle as sync() wrote it: one that went on unchanged is no disturbance.
+        Body b = bodies[i];
+        if (!(b.flags & kAsleep)) {
+            const Motion m = motionAt(i, b, g, slides, clock);
+            b.x = m.x;
+            b.y = m.y;
+            b.vx = m.vx;
+            b.vy = m.vy;
+        }
+        out.emplace(ids[i], Kept{b, depth_[i]});
+    }
+}
+
+void Resting::reset(const WorldDef& def, const Gravity& g, const ParticleArrays& p,
+                    std::uint32_t n) {
+    if (g.on) {
+        const double gn = std::hypot(g.x, g.y);
+        restSpeed_ = def.restitution < 1.0
+                         ? kRestSpeed
+                         : std::sqrt(2.0 * gn * kRestRoundingGap * std::max(def.width, def.height));
+        // In a scene of large discs under strong gravity the rest speed is the speed of a hop
+        // of kRestHop radii, so that resting means the same there as in a scene at human scale.
+        if (def.restitution < 1.0 && p.size() > 0) {
+            const double rmin = *std::min_element(p.radius.begin(), p.radius.end());
+            restSpeed_ = std::max(restSpeed_, std::sqrt(2.0 * gn * kRestHop * rmin));
+        }
+        restGap_ = restSpeed_ * restSpeed_ / (2.0 * gn);
+    }
+    wokeAt_.assign(g.on ? n : 0, -kNever);
+    depth_.assign(g.on ? n : 0, 0);
+    recheckAt_.assign(g.on ? n : 0, kNever);
+    rate_.reset(g.on ? n : 0);
+    keptSleepers_ = false;
+}
+
+bool Resting::keep(Snapshot& before, std::vector<Body>& bodies, const std::vector<ParticleId>& ids,
+                   std::vector<Spot>& spots, std::vector<bool>& carried) {
     // A sleeper still where it slept, at rest, sleeps on. Everything else is a disturbance: a
     // particle removed (where it was), added, moved or set in motion (where it is now); the
     // sleepers it touches wake, and with them what rests on them.
-    struct Spot {
-        double x, y, r;
-    };
-    std::vector<Spot> spots;
-    const auto n = static_cast<std::uint32_t>(bodies_.size());
-    std::vector<bool> carried(n, false);  // awake, and going on as it was
+    keptSleepers_ = true;
+    const auto n = static_cast<std::uint32_t>(bodies.size());
+    carried.assign(n, false);  // awake, and going on as it was
     for (std::uint32_t i = 0; i < n; ++i) {
-        Body& b = bodies_[i];
-        const auto it = before.find(ids_[i]);
+        Body& b = bodies[i];
+        const auto it = before.find(ids[i]);
         const Body* was = it != before.end() ? &it->second.body : nullptr;
         const bool same = was && was->x == b.x && was->y == b.y && was->r == b.r &&
                           was->vx == b.vx && was->vy == b.vy;
@@ -110,67 +148,135 @@ void ExactStepper::keepSleepers(std::unordered_map<ParticleId, Kept>& before) {
         spots.push_back({kept.body.x, kept.body.y, kept.body.r});
     // A change to many particles at once (a setter, a load) starts everything afresh.
     if (spots.size() > kMaxDisturbances) {
-        for (Body& b : bodies_)
+        for (Body& b : bodies)
             b.flags &= ~(kAsleep | kProvisional);
         keptSleepers_ = false;
-        return;
+        return false;
     }
-    for (const Spot& s : spots) {
-        for (std::uint32_t q = 0; q < n; ++q) {
-            const Body& b = bodies_[q];
-            if (!(b.flags & kAsleep)) continue;
-            const double reach = s.r + b.r + restGap_;
-            const double dx = b.x - s.x, dy = b.y - s.y;
-            if (dx * dx + dy * dy <= reach * reach) wake(q, 0.0);
-        }
-    }
+    return true;
+}
+
+bool Resting::touches(const Spot& s, const Body& b) const {
+    const double reach = s.r + b.r + restGap_;
+    const double dx = b.x - s.x, dy = b.y - s.y;
+    return dx * dx + dy * dy <= reach * reach;
+}
+
+void Resting::settleFreed(const std::vector<Body>& bodies, const std::vector<bool>& carried) {
     // What the changes set free falls: the rattle guard leaves it alone for a while.
-    for (std::uint32_t i = 0; i < n; ++i) {
-        if (!(bodies_[i].flags & kAsleep) && !carried[i]) rate_.quiet(i, kSettleTime);
+    for (std::uint32_t i = 0; i < bodies.size(); ++i) {
+        if (!(bodies[i].flags & kAsleep) && !carried[i]) rate_.quiet(i, kSettleTime);
     }
 }
 
-void ExactStepper::settle(std::uint32_t i, double now, bool slow) {
+bool Resting::mayRest(std::uint32_t i, double now) const {
+    return now - wokeAt_[i] >= kContactDuration;
+}
+
+Resting::Sleep Resting::settle(std::uint32_t i, double now, bool slow, const Surroundings& s) {
     // Slow and held by what does not move: asleep for good. Held only with slow free
     // neighbours' help, or caught rattling: asleep until a recheck kRecheckAfter later.
-    Hold h;
     if (slow) {
-        h = hold(i, kUngrounded + 1, now);
-        if (h.firm) {
-            fallAsleep(i, now, h.depth, false);
-            return;
-        }
-        if (h.withFree) {
-            fallAsleep(i, now, h.depth, true);
-            return;
-        }
+        const Hold h = hold(i, kUngrounded + 1, now, s);
+        if (h.firm) return {true, h.depth, false};
+        if (h.withFree) return {true, h.depth, true};
+        if (!rattles(i, now, s.def.restitution)) return {};
+        return {true, h.depth, !h.firm};
     }
-    if (!rattles(i, now)) return;
-    if (!slow) h = hold(i, kUngrounded + 1, now);
-    fallAsleep(i, now, h.depth, !h.firm);
+    if (!rattles(i, now, s.def.restitution)) return {};
+    return caught(i, now, s);
 }
 
-void ExactStepper::settleAfterPair(std::uint32_t i, bool justWoken) {
-    Body& a = bodies_[i];
-    if (a.flags & (kHeld | kAsleep)) return;
-    // Off the wall it rested on if the pair pushed it off (or into it: the wall event comes
-    // at once and decides).
-    const Cold& ac = cold_[i];
-    if ((a.flags & kRestX) && !ac.pinX && a.vx != 0.0) a.flags &= ~kRestX;
-    if ((a.flags & kRestY) && !ac.pinY && a.vy != 0.0) a.flags &= ~kRestY;
-    settle(i, a.t,
-           !justWoken && a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, a.t));
-    // Still on a wall or a face, a disc that turns slips or rolls along it (rolling.cpp).
-    setRoll(i);
+Resting::Sleep Resting::caught(std::uint32_t i, double now, const Surroundings& s) const {
+    const Hold h = hold(i, kUngrounded + 1, now, s);
+    return {true, h.depth, !h.firm};
 }
 
-void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid,
-                                   bool bSlid) {
-    Body& a = bodies_[i];
-    Body& b = bodies_[j];
-    // A particle wider than the box along an axis is held across it (see handlePair).
-    const double wi = inverseMassAlong(i, n, (a.flags & (kAsleep | kHeld)) ? 0.0 : cold_[i].w);
-    const double wj = inverseMassAlong(j, n, (b.flags & (kAsleep | kHeld)) ? 0.0 : cold_[j].w);
+Resting::Sleep Resting::atRestBeside(std::uint32_t q, std::uint32_t i, double now,
+                                     const Surroundings& s) const {
+    // A free neighbour with no velocity and no acceleration (one woken or hit at rest on the
+    // floor, say) has no event of its own to fall asleep at, and would keep i provisional for
+    // ever: it falls asleep now if what is static holds it.
+    const Body& a = s.bodies[i];
+    const Body& b = s.bodies[q];
+    if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return {};
+    double ax, ay;
+    accelerationOf(q, b, s.gravity, s.slides, ax, ay);
+    if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return {};
+    const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
+    if (rx * rx + ry * ry > reach * reach) return {};
+    const Hold h = hold(q, kUngrounded + 1, now, s);
+    if (!h.firm) return {};
+    return {true, h.depth, false};
+}
+
+void Resting::fallAsleep(std::uint32_t i, Body& b, double now, std::uint32_t depth,
+                         bool provisional) {
+    b.vx = b.vy = 0.0;
+    b.flags |= kAsleep;
+    depth_[i] = depth;
+    if (provisional) makeProvisional(i, b, now);
+}
+
+void Resting::makeProvisional(std::uint32_t i, Body& b, double now) {
+    b.flags |= kProvisional;
+    recheckAt_[i] = now + kRecheckAfter;
+}
+
+void Resting::rouse(std::uint32_t i, Body& b, double now) {
+    // It still rests on the walls it rested on (until it moves off them): what presses it
+    // into them is then lifted off it, not pressed through it.
+    b.flags &= ~(kAsleep | kProvisional);
+    b.t = now;
+    wokeAt_[i] = now;
+    ++b.count;
+}
+
+Resting::Support Resting::afterWake(std::uint32_t q, std::uint32_t p, double now,
+                                    const Surroundings& s) {
+    // A sleeper nearer the ground does not rest on p (see hold()); one farther from it that
+    // what stays asleep no longer holds (with a support nearer the ground than itself) wakes.
+    const Body& a = s.bodies[p];
+    Body& b = s.bodies[q];
+    if (!(b.flags & kAsleep)) return Support::Holds;
+    const double rx = b.x - a.x, ry = b.y - a.y;
+    const double reach = a.r + b.r + restGap_;
+    if (rx * rx + ry * ry > reach * reach) return Support::Holds;
+    const Hold h = hold(q, depth_[q], now, s);
+    if (h.firm) return Support::Holds;
+    if (h.withFree) {
+        // Held now only with slow free neighbours' help: provisional, as if it had just
+        // fallen asleep so (one that already is keeps its recheck).
+        if (b.flags & kProvisional) return Support::Holds;
+        makeProvisional(q, b, now);
+        return Support::Provisional;
+    }
+    return Support::Gone;
+}
+
+Resting::Support Resting::recheck(std::uint32_t i, double now, const Surroundings& s) {
+    // A provisional sleeper: held now by what does not move, with a support nearer the ground
+    // than itself, it sleeps for good; still held with slow free neighbours' help, it waits
+    // another kRecheckAfter; else it wakes (and what it holds up).
+    Body& a = s.bodies[i];
+    a.flags &= ~kProvisional;
+    const Hold h = hold(i, depth_[i], now, s);
+    if (h.firm) {
+        depth_[i] = std::min(depth_[i], h.depth);
+        return Support::Holds;
+    }
+    return h.withFree ? Support::Provisional : Support::Gone;
+}
+
+void Resting::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid, bool bSlid,
+                              const Surroundings& s) const {
+    Body& a = s.bodies[i];
+    Body& b = s.bodies[j];
+    // A particle wider than the box along an axis is held across it (collision_rules.hpp).
+    const Cold& ac = s.cold[i];
+    const Cold& bc = s.cold[j];
+    const double wi = inverseMassAlong(ac, n, (a.flags & (kAsleep | kHeld)) ? 0.0 : ac.w);
+    const double wj = inverseMassAlong(bc, n, (b.flags & (kAsleep | kHeld)) ? 0.0 : bc.w);
     if (wi == 0.0 && wj == 0.0) return;
     // Pressed together by gravity (one falls, the other does not, or less) and leaving each
     // other slower than the lift: leave at the lift, by an impulse along n shared as a
@@ -179,10 +285,10 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, b
     // the contact, it does not fall (else a ball at rest on a slider, both woken at once, would
     // meet it again at the same instant without end).
     double aax, aay, bax, bay;
-    accelerationOf(i, a, aax, aay);
-    accelerationOf(j, b, bax, bay);
-    if (aSlid) aax = slide_[i].ax, aay = slide_[i].ay;
-    if (bSlid) bax = slide_[j].ax, bay = slide_[j].ay;
+    accelerationOf(i, a, s.gravity, s.slides, aax, aay);
+    accelerationOf(j, b, s.gravity, s.slides, bax, bay);
+    if (aSlid) aax = s.slides[i].ax, aay = s.slides[i].ay;
+    if (bSlid) bax = s.slides[j].ax, bay = s.slides[j].ay;
     const double rax = bax - aax, ray = bay - aay, an = rax * n.x + ray * n.y;
     if (!(an < 0.0 && an * an > kPressTolerance * kPressTolerance * (rax * rax + ray * ray)))
         return;
@@ -195,17 +301,18 @@ void ExactStepper::liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, b
     a.vy -= dv * share * n.y;
     b.vx += dv * (1.0 - share) * n.x;
     b.vy += dv * (1.0 - share) * n.y;
-    holdAcrossPinnedAxes(i, aBefore, wi);
-    holdAcrossPinnedAxes(j, bBefore, wj);
+    holdAcrossPinnedAxes(a, ac, aBefore, wi);
+    holdAcrossPinnedAxes(b, bc, bBefore, wj);
     if (wi > 0.0) ++a.count;
     if (wj > 0.0) ++b.count;
 }
 
-ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, double now) const {
+Resting::Hold Resting::hold(std::uint32_t i, std::uint32_t below, double now,
+                            const Surroundings& s) const {
     // The contact normals (from i to what holds it) of everything within restGap_ that does not
     // move: walls, obstacles, held particles at rest (depth 0), sleepers (their depth); then the
     // same with the slow free neighbours added. holdsAgainstGravity says whether they hold i.
-    const Body& a = bodies_[i];
+    const Body& a = s.bodies[i];
     constexpr int kMax = 16;
     double nx[kMax], ny[kMax];
     int count = 0;
@@ -213,22 +320,22 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     const auto add = [&](double x, double y) {
         if (count < kMax) nx[count] = x, ny[count++] = y;
     };
-    if (def_.walls) {
+    if (s.def.walls) {
         if (a.x - a.r <= restGap_) add(-1.0, 0.0);
-        if (def_.width - a.r - a.x <= restGap_) add(1.0, 0.0);
+        if (s.def.width - a.r - a.x <= restGap_) add(1.0, 0.0);
         if (a.y - a.r <= restGap_) add(0.0, -1.0);
-        if (def_.height - a.r - a.y <= restGap_) add(0.0, 1.0);
+        if (s.def.height - a.r - a.y <= restGap_) add(0.0, 1.0);
     }
-    if (!obstacles_.empty()) count = obstacleSupports(i, nx, ny, count, kMax);
+    if (!s.obstacles.empty()) count = obstacleSupports(i, nx, ny, count, kMax, s);
     if (count > 0) lowest = 0;
     // Slow free neighbours, kept apart: a sleep that needs them is provisional (see
     // above). With e = 1 only what is static holds; a neighbour rebuilt or woken less than
     // kRecheckAfter ago may be falling away.
     double fx[kMax], fy[kMax];
     int free = 0;
-    const bool freeCount = def_.restitution < 1.0 && (keptSleepers_ || now >= kSettleTime);
-    forEachAround(i, [&](std::uint32_t q) {
-        const Body& b = bodies_[q];
+    const bool freeCount = s.def.restitution < 1.0 && (keptSleepers_ || now >= kSettleTime);
+    s.grid.forEachAround(s.cold[i], [&](std::uint32_t q) {
+        const Body& b = s.bodies[q];
         if (q == i || (b.flags & kHeld && !isStatic(b))) return;
         const bool still = isStatic(b);
         double bx = b.x, by = b.y;  // a static b does not move: b.x is now
@@ -237,7 +344,7 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
             // settling, not everything.
             if (!freeCount || now - wokeAt_[q] < kRecheckAfter) return;
             if (keptSleepers_ && rate_.quietAt(q, now)) return;
-            const Motion m = motionAt(q, b, now);
+            const Motion m = motionAt(q, b, s.gravity, s.slides, now);
             if (m.vx * m.vx + m.vy * m.vy >= restSpeed_ * restSpeed_) return;
             bx = m.x;
             by = m.y;
@@ -255,8 +362,9 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     });
     Hold h;
     h.depth = lowest >= kUngrounded ? kUngrounded : lowest + 1;
-    const bool turns = rough_ && turn_[i].q > 0.0;
-    h.firm = lowest < kUngrounded && holdsAgainstGravity(nx, ny, count, turns);
+    const bool turns = s.rolls.turns(i);
+    h.firm = lowest < kUngrounded &&
+             holdsAgainstGravity(nx, ny, count, turns, s.gravity, s.def.friction);
     if (h.firm || count == 0 || free == 0) return h;
     // An arch of discs leaning on each other would wait for the others to sleep first, and
     // none would: the slow free neighbours count too, as long as something static is among the
@@ -264,16 +372,17 @@ ExactStepper::Hold ExactStepper::hold(std::uint32_t i, std::uint32_t below, doub
     const int statics = count;
     for (int k = 0; k < free; ++k)
         add(fx[k], fy[k]);
-    h.withFree = count > statics && holdsAgainstGravity(nx, ny, count, turns);
+    h.withFree =
+        count > statics && holdsAgainstGravity(nx, ny, count, turns, s.gravity, s.def.friction);
     return h;
 }
 
-bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int count,
-                                       bool turns) const {
+bool Resting::holdsAgainstGravity(const double* nx, const double* ny, int count, bool turns,
+                                  const Gravity& g, double friction) {
     // Without friction: gravity in the cone of the normals, along one of them (to 1e-9 rad) or
     // strictly between two less than a half turn apart. Anything else lets i move down.
     const double pi = 3.14159265358979323846;
-    const double ga = std::atan2(gy_, gx_);
+    const double ga = std::atan2(g.y, g.x);
     double lo = -kNever, hi = kNever;  // the nearest normals on either side of gravity
     bool left = false, right = false;
     for (int k = 0; k < count; ++k) {
@@ -300,7 +409,7 @@ bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int c
     // (Widening every normal's cone by the friction angle instead would count a neighbour that
     // the slide only grazes as pushing, with any force: a grain between one above and one
     // below it would be held, and the grains above a neck would lock into a fake arch.)
-    const double g = std::hypot(gx_, gy_), ux = gx_ / g, uy = gy_ / g;
+    const double gn = std::hypot(g.x, g.y), ux = g.x / gn, uy = g.y / gn;
     bool pressed = false;
     for (int k = 0; k < count; ++k) {
         const double c = ux * nx[k] + uy * ny[k];  // cos of the face's tilt
@@ -310,115 +419,34 @@ bool ExactStepper::holdsAgainstGravity(const double* nx, const double* ny, int c
         bool blocked = false;
         for (int m = 0; m < count && !blocked; ++m)
             blocked = m != k && tx * nx[m] + ty * ny[m] > 1e-9;
-        if (!blocked && std::sqrt(tx * tx + ty * ty) > def_.friction * c + 1e-9) return false;
+        if (!blocked && std::sqrt(tx * tx + ty * ty) > friction * c + 1e-9) return false;
     }
     return pressed;
 }
 
-void ExactStepper::fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional) {
-    Body& b = bodies_[i];
-    advance(i, now);
-    b.vx = b.vy = 0.0;
-    b.flags |= kAsleep;
-    depth_[i] = depth;
-    if (provisional) {
-        b.flags |= kProvisional;
-        recheckAt_[i] = now + kRecheckAfter;
+int Resting::obstacleSupports(std::uint32_t i, double* nx, double* ny, int count, int max,
+                              const Surroundings& s) const {
+    const Body& a = s.bodies[i];
+    const Cold& c = s.cold[i];
+    for (const std::uint32_t k : s.obstacles.near(s.grid.fine(), c.kx, c.ky)) {
+        if (count == max) break;
+        const Obstacle& o = s.obstacles[k];
+        double qx, qy;
+        nearestCorePoint(o, a.x, a.y, qx, qy);
+        const double rx = qx - a.x, ry = qy - a.y;  // from i to the obstacle
+        const double d = std::sqrt(rx * rx + ry * ry);
+        if (!(d > 0.0) || d - (a.r + o.radius) > restGap_) continue;
+        nx[count] = rx / d;
+        ny[count++] = ry / d;
     }
-    stopSliding(i);
-    // At rest a disc that turns does not turn either: its contacts' friction would stop it.
-    if (rough_ && turn_[i].q > 0.0) {
-        advanceTurn(turn_[i], now);
-        turn_[i].omega = 0.0;
-    }
-    ++b.count;
+    return count;
 }
 
-void ExactStepper::handleRecheck(std::uint32_t i, const Event& ev) {
-    // A provisional sleeper: held now by what does not move, with a support nearer the ground
-    // than itself, it sleeps for good; still held with slow free neighbours' help, it waits
-    // another kRecheckAfter; else it wakes (and what it holds up, see wake()).
-    Body& a = bodies_[i];
-    a.flags &= ~kProvisional;
-    const Hold h = hold(i, depth_[i], ev.time);
-    if (h.firm) {
-        depth_[i] = std::min(depth_[i], h.depth);
-    } else if (h.withFree) {
-        sleepNeighboursAtRest(i, ev.time);
-        a.flags |= kProvisional;
-        recheckAt_[i] = ev.time + kRecheckAfter;
-    } else {
-        wake(i, ev.time);
-        predictCell(i, ev.time);
-    }
-    predictCollision(i, ev.time);
-}
-
-void ExactStepper::sleepNeighboursAtRest(std::uint32_t i, double now) {
-    // A free neighbour with no velocity and no acceleration (one woken or hit at rest on the
-    // floor, say) has no event of its own to fall asleep at, and would keep i provisional for
-    // ever: it falls asleep now if what is static holds it.
-    const Body& a = bodies_[i];
-    forEachAround(i, [&](std::uint32_t q) {
-        const Body& b = bodies_[q];
-        if (q == i || (b.flags & (kAsleep | kHeld)) || b.vx != 0.0 || b.vy != 0.0) return;
-        double ax, ay;
-        accelerationOf(q, b, ax, ay);
-        if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return;
-        const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
-        if (rx * rx + ry * ry > reach * reach) return;
-        const Hold h = hold(q, kUngrounded + 1, now);
-        if (!h.firm) return;
-        fallAsleep(q, now, h.depth, false);
-        predictCollision(q, now);
-        predictCell(q, now);
-    });
-}
-
-void ExactStepper::wake(std::uint32_t i, double now) {
-    // i wakes, and with it every sleeper it held up: a sleeper nearer the ground does not rest
-    // on i (see above); one farther from it that what stays asleep no longer holds
-    // (with a support nearer the ground than itself) wakes in turn.
-    const auto rouse = [&](std::uint32_t k) {
-        // It still rests on the walls it rested on (until it moves off them): what presses it
-        // into them is then lifted off it, not pressed through it.
-        Body& b = bodies_[k];
-        b.flags &= ~(kAsleep | kProvisional);
-        b.t = now;
-        wokeAt_[k] = now;
-        ++b.count;
-        setRoll(k);  // on a wall it rests on, a disc that turns rolls (rolling.cpp)
-    };
-    rouse(i);
-    wakeStack_.assign(1, i);
-    while (!wakeStack_.empty()) {
-        const std::uint32_t p = wakeStack_.back();
-        wakeStack_.pop_back();
-        const Body& a = bodies_[p];
-        forEachAround(p, [&](std::uint32_t q) {
-            Body& b = bodies_[q];
-            if (!(b.flags & kAsleep)) return;
-            const double rx = b.x - a.x, ry = b.y - a.y;
-            const double reach = a.r + b.r + restGap_;
-            if (rx * rx + ry * ry > reach * reach) return;
-            const Hold h = hold(q, depth_[q], now);
-            if (h.firm) return;
-            if (h.withFree) {
-                // Held now only with slow free neighbours' help: provisional, as if it had just
-                // fallen asleep so (one that already is keeps its recheck).
-                if (!(b.flags & kProvisional)) {
-                    b.flags |= kProvisional;
-                    recheckAt_[q] = now + kRecheckAfter;
-                    predictCollision(q, now);
-                }
-                return;
-            }
-            rouse(q);
-            predictCollision(q, now);
-            predictCell(q, now);
-            wakeStack_.push_back(q);
-        });
-    }
+void Resting::renumber(const std::vector<std::uint32_t>& to) {
+    exact::renumber(wokeAt_, to);
+    exact::renumber(depth_, to);
+    exact::renumber(recheckAt_, to);
+    rate_.renumber(to);
 }
 
 }  // namespace psb::exact

@@ -34,15 +34,11 @@ double ExactStepper::step(ParticleArrays& p, const WorldDef& def, double dt,
     // at collisions (which rounding keeps at a few ulps). Every step that carries one at its
     // placed distance reports it, not only the one that found it: counters reset between steps
     // (the app's per frame) with no change to the world, so no rebuild, still bound the state.
-    counters.maxOverlap = std::max(counters.maxOverlap, placedOverlap());
-    collisionOffset_ = worldTime_ - clock_;
+    counters.maxOverlap = std::max(counters.maxOverlap, placed_.deepest());
+    recorder_.startStep(clock_);
     events_ = 0;
-    // The jam guard counts per step: clear only the particles it counted in the last one.
-    for (const std::uint32_t i : heldHit_) {
-        bodies_[i].flags &= ~kJammed;
-        cold_[i].heldHits = 0;
-    }
-    heldHit_.clear();
+    // The jam guard counts per step.
+    jams_.startStep(bodies_, cold_);
     maxOverlap_ = counters.maxOverlap;
     const double start = clock_;
     const double tEnd = start + dt;
@@ -135,7 +131,7 @@ void ExactStepper::sync(ParticleArrays& p) {
     for (std::size_t k = 0; k < n; ++k) {
         const Body& b = bodies[k];
         const std::uint32_t i = order[k];
-        if (gravity_) {
+        if (gravity_.on) {
             const Motion m = motionAt(k, b, t);
             x[i] = m.x;
             y[i] = m.y;
@@ -149,31 +145,47 @@ void ExactStepper::sync(ParticleArrays& p) {
         vx[i] = b.vx;
         vy[i] = b.vy;
     }
-    if (!turn_.empty()) {
-        for (std::size_t k = 0; k < n; ++k) {
-            Turn r = turn_[k];
-            advanceTurn(r, t);
-            p.angle[order[k]] = r.angle;
-            p.omega[order[k]] = r.omega;
-        }
-    }
+    rolls_.sync(p, order_, t);
     syncOwed_ = false;
+}
+
+void ExactStepper::sortByCell(bool midRun) {
+    const auto n = static_cast<std::uint32_t>(bodies_.size());
+    const std::vector<std::uint32_t> to = grid_.cellOrder(cold_);
+    renumber(bodies_, to);
+    renumber(cold_, to);
+    renumber(order_, to);
+    renumber(ids_, to);
+    if (gravity_.on) rest_.renumber(to);
+    slides_.renumber(to);
+    rolls_.renumber(to);
+    if (midRun) {
+        // Carry the scheduled events over to the new indices.
+        std::vector<double> times(2 * static_cast<std::size_t>(n));
+        for (std::uint32_t i = 0; i < n; ++i) {
+            times[2 * to[i]] = queue_.timeOf(2 * i);
+            times[2 * to[i] + 1] = queue_.timeOf(2 * i + 1);
+        }
+        for (Cold& c : cold_) {
+            if (c.coll.kind == Kind::Pair) c.coll.partner = to[c.coll.partner];
+        }
+        jams_.renumber(to);
+        queue_.reset(2 * n, queue_.bucketWidth());
+        for (std::uint32_t k = 0; k < 2 * n; ++k)
+            queue_.update(k, times[k]);
+        grid_.clearMembers();
+        for (std::uint32_t i = 0; i < n; ++i)
+            grid_.insert(i, cold_[i]);
+    }
 }
 
 std::size_t ExactStepper::memoryBytes() const {
     std::size_t bytes = sizeof(Body) * bodies_.capacity() + sizeof(Cold) * cold_.capacity() +
                         sizeof(std::uint32_t) * order_.capacity() +
-                        sizeof(ParticleId) * ids_.capacity() + cells_.memoryBytes() +
-                        queue_.memoryBytes() + obstacles_.memoryBytes() + rate_.memoryBytes() +
-                        sizeof(Slide) * slide_.capacity() + sizeof(Turn) * turn_.capacity();
-    for (const Level& level : upper_)
-        bytes += level.cells.memoryBytes();
-    // An unordered_map node holds the key, the value and the next pointer; the table one
-    // pointer per bucket.
-    bytes +=
-        overlapContact_.size() * (sizeof(std::uint64_t) + sizeof(PlacedContact) + sizeof(void*)) +
-        overlapContact_.bucket_count() * sizeof(void*);
-    return bytes;
+                        sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
+                        queue_.memoryBytes() + obstacles_.memoryBytes() + rest_.memoryBytes() +
+                        slides_.memoryBytes() + rolls_.memoryBytes();
+    return bytes + placed_.memoryBytes();
 }
 
 }  // namespace psb::exact

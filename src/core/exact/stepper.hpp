@@ -31,23 +31,35 @@
 //        state at the end of the last step in one pass. A run of frames that nobody looks
 //        at costs its events and nothing per particle.
 //
-// Where each part is (src/core/exact/):
-//   stepper.cpp      this loop: step(), runEvents(), sync()
-//   body.hpp         the per-particle records (Body, Cold), events, motions; their memory layout
-//   motion.hpp       lazy advance: where a particle is at a time, under gravity on a parabola
-//   rebuild.cpp      the state rebuilt from the world's arrays; pairs placed overlapping
-//   grid.cpp/.hpp    the fine cells with a skin, the size levels, the sort into cell order
-//   prediction.cpp   a particle's next collision and next cell move; the cell move's search
-//   collisions.cpp   pair and wall events: the rules for invalid states, inelastic collapse,
-//                    held particles
-//   resting.cpp      sleep and wake under gravity: the support test, provisional sleep,
-//                    rattling, sleepers kept across a rebuild
-//   obstacles.cpp    events with fixed pegs and segments; obstacle_cells.* lists them per cell
-//   sliding.cpp      the sliding contact on a segment's face
-//   rolling.cpp      a disc that turns slipping, then rolling, on a face or a wall
-//   event_queue.*, cell_list.*, collision_rate.hpp, and the times of impact:
-//   time_of_impact.hpp (straight lines), parabolic_impact.hpp (gravity),
-//   obstacle_impact.hpp (obstacles)
+// What it is made of (src/core/exact/). Each concept is a type that owns its state:
+//   EventQueue         event_queue.*         the event calendar: two keys per particle
+//   Grid               grid.*, cell_list.*   the cells: fine cells with a skin, size levels,
+//                                            the walks over them, the order of a re-sort
+//   ObstacleCells      obstacle_cells.*      the fixed obstacles each fine cell may reach
+//   PlacedContacts     placed_contacts.*     pairs placed overlapping, at their placed distance
+//   Resting            resting.*             the resting contacts under gravity: what holds a
+//                                            particle, sleep, provisional sleep, waking,
+//                                            rattling, sleepers kept across a rebuild
+//   Slides             slides.*              the sliding contact on a segment's face
+//   Rolls              rolls.*               each disc's rotation; slipping, then rolling, on
+//                                            a face or a wall
+//   JamGuard           jam_guard.*           particles with no room: held squeezes, jams
+//   CollisionRecorder  collision_recorder.hpp  where resolved collisions go
+// They share the per-particle records (body.hpp: Body, Cold, and the Slide and Turn the
+// slides and rolls keep; all in the stepper's cell order) and lean on free functions: motion
+// (motion.hpp: lazy advance, on a parabola under gravity), the collision rules
+// (collision_rules.hpp) and the times of impact (time_of_impact.hpp for straight lines,
+// parabolic_impact.hpp under gravity, obstacle_impact.hpp for obstacles).
+//
+// The stepper owns the particle records and composes the parts. What is left to it is the
+// orchestration: which part is asked what, in which order, and every prediction that follows:
+//   stepper.cpp             the loop: step(), runEvents(), sync(); the re-sort into cell order
+//   stepper_rebuild.cpp     the state rebuilt from the world's arrays
+//   stepper_prediction.cpp  a particle's next collision and next cell move; the cell move
+//   stepper_collisions.cpp  pair and wall events
+//   stepper_obstacles.cpp   events with fixed pegs and segments
+//   stepper_surfaces.cpp    slides and rolls started, and their own events
+//   stepper_resting.cpp     sleep and wake carried out (Resting decides), predicted again
 //
 // Ties. Events at the same instant are handled in key order (particle index, collision before
 // cell move); equal candidate times in a prediction go to the lower partner index. Indices are
@@ -64,7 +76,6 @@
 // the step is not simulated. Without a budget a step always reaches its end.
 
 #include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 #include <particle_sandbox/collision_log.hpp>
@@ -75,40 +86,19 @@
 #include "contact/contact.hpp"
 #include "exact/body.hpp"
 #include "exact/cell_list.hpp"
-#include "exact/collision_rate.hpp"
+#include "exact/collision_recorder.hpp"
+#include "exact/collision_rules.hpp"
 #include "exact/event_queue.hpp"
+#include "exact/grid.hpp"
+#include "exact/jam_guard.hpp"
+#include "exact/motion.hpp"
 #include "exact/obstacle_cells.hpp"
+#include "exact/placed_contacts.hpp"
+#include "exact/resting.hpp"
+#include "exact/rolls.hpp"
+#include "exact/slides.hpp"
 
 namespace psb::exact {
-
-/// The TC model's contact duration t_c (seconds): a collision of a particle that already
-/// collided less than t_c ago is elastic (see collisions.cpp). Ten microseconds: far below a
-/// frame (16 ms) and the free flight times of the sandbox's scenes, far above the time between
-/// the zero-gap collisions of a collapsing cluster.
-inline constexpr double kContactDuration = 1e-5;
-
-/// Impact speed (m/s) below which restitution rises linearly to 1 (see collisions.cpp).
-/// One millimetre per second: far below the speeds of the sandbox's scenes (metres per second),
-/// far above the rounding noise of their velocities.
-inline constexpr double kElasticBelowSpeed = 1e-3;
-
-/// Collisions with held particles after which a squeezed particle passes through them for the
-/// rest of the step.
-inline constexpr std::uint32_t kJamLimit = 1000;
-
-/// Collisions of one particle in a row without time or room between them (each within
-/// kJamTime of its last change, having moved less than kJamRoom of its radius since) after
-/// which it is jammed: placed overlapping bodies that surround it (walls, obstacles, discs
-/// wider than the box), it has no room to move, and the rules for invalid states would bounce
-/// it between them for ever. Its velocity is absorbed (under gravity it falls asleep where it
-/// is), and while its hits keep coming without time between it is as fixed as a sleeper.
-/// Squeezes by held particles are kJamLimit's. Found by the world mutation fuzzer. Legitimate
-/// runs are far shorter: at most 6,800 in a row in the exact mode's pile, Galton, funnel and
-/// hourglass tests (a disc settling in a pocket with e = 0), and a disc that can leave a wedge,
-/// however narrow, leaves after about π/θ bounces.
-inline constexpr std::uint32_t kJamHits = 100000;
-inline constexpr double kJamTime = 1e-9;  ///< seconds: 10⁻⁴ of the contact duration t_c
-inline constexpr double kJamRoom = 1e-9;  ///< of the radius
 
 /// Of the box's extent: how far past a wall its event may leave a particle's centre before
 /// handleWall puts it back on the wall (rounding of the event's time at extreme speeds; found by
@@ -120,54 +110,6 @@ inline constexpr double kWallSlack = 1e-12;
 /// mutation fuzzer: a disc of 10⁻³⁰¹ m in a box 10⁻³⁰⁰ m wide and 2.7 m high bounced between
 /// the side walls every 10⁻³⁰¹ s.
 inline constexpr double kNoRoom = 1e-12;
-
-/// Under gravity: hits on sleeping particles in one step after which a particle wakes the
-/// sleepers it hits (see resting.cpp): a backstop for a particle wedged between sleepers,
-/// far below any event budget a caller sets. No scene or test reaches it.
-inline constexpr std::uint32_t kWakeAfterHits = 100000;
-
-/// Under gravity with e < 1, the rattle guard (see resting.cpp): a particle that collides
-/// more than kRattleLimit times within kRattleWindow seconds of simulated time falls asleep
-/// where it is. 200 collisions in a millisecond (2·10⁵ per second): the rattles measured in the
-/// frictionless pile preset were 10⁵ collisions of one pair within one 1/60 s step.
-inline constexpr std::uint32_t kRattleLimit = 200;
-inline constexpr double kRattleWindow = 1e-3;
-
-/// Under gravity with e < 1: for this long after a rebuild (seconds) slow free neighbours do not
-/// hold a particle up and the rattle guard leaves alone what the rebuild set free: ten times
-/// the u_r/g = 5 ms in which a particle set free from rest is still slower than the rest speed.
-inline constexpr double kSettleTime = 0.05;
-
-/// Under gravity with e < 1: a sleep that needed slow free neighbours, or that the rattle guard
-/// imposed, is checked again this long after (seconds; see resting.cpp). Ten milliseconds:
-/// four times the 2.6 ms in which a neighbour at the rest speed moves out of the rest gap.
-inline constexpr double kRecheckAfter = 0.01;
-
-/// Under gravity with e < 1: speed (m/s) below which a particle comes to rest (see
-/// resting.cpp). The guards' kElasticBelowSpeed: bounces above it follow the closed form h·e^(2n).
-inline constexpr double kRestSpeed = 0.05;
-
-/// Under gravity with e < 1: the rest speed is at least that of a hop this many smallest
-/// radii high, √(2·g·kRestHop·r): 5·10⁻⁴ is the hop at kRestSpeed of a 0.25 m disc under
-/// 9.81 m/s² (the pile preset), so scenes at that scale keep kRestSpeed, and a scene of 2.5 m
-/// discs under 343 m/s² (the gas preset with the app's gravity) rests below 0.93 m/s.
-inline constexpr double kRestHop = 5e-4;
-
-/// Under gravity with e = 1: the fall, as a fraction of the box's larger side, that sets the
-/// rest speed, √(2·g·fall). 10⁻¹² is a few thousand ulps of a coordinate: a particle placed at
-/// rest on the floor rests, a particle that moves never does.
-inline constexpr double kRestRoundingGap = 1e-12;
-
-/// One resolved collision, for tests and diagnostics. `j` is a particle index for a pair,
-/// kWall + w for wall w (0 = left, 1 = right, 2 = top, 3 = bottom), or kObstacle + k for the
-/// world's obstacle k.
-struct CollisionRecord {
-    static constexpr std::uint32_t kWall = UINT32_MAX - 3;
-    static constexpr std::uint32_t kObstacle = 1u << 31;  ///< particle indices stay below it
-    double time;  ///< seconds since the stepper's last rebuild
-    std::uint32_t i;
-    std::uint32_t j;
-};
 
 class ExactStepper {
   public:
@@ -194,14 +136,11 @@ class ExactStepper {
 
     /// Appends every resolved collision to `log` (nullptr to stop). Indices are storage
     /// indices of `p`; times restart from 0 at each rebuild.
-    void setLog(std::vector<CollisionRecord>* log) { log_ = log; }
+    void setLog(std::vector<CollisionRecord>* log) { recorder_.setLog(log); }
 
     /// The world's record of collisions (collision_log.hpp) for the next step, nullptr for none;
     /// `worldTime` is World::time() at its start, the clock the records' times are on.
-    void record(CollisionLog* log, double worldTime) {
-        collisionLog_ = log;
-        worldTime_ = worldTime;
-    }
+    void record(CollisionLog* log, double worldTime) { recorder_.setWorldLog(log, worldTime); }
 
     /// Bytes held by the event state (per-particle records, every level's cells, the queue,
     /// placed overlaps): what a copy of a world in this mode carries besides its own arrays.
@@ -209,62 +148,30 @@ class ExactStepper {
     [[nodiscard]] std::size_t memoryBytes() const;
 
   private:
-    // A size class above level 0: its members are listed in cells of block × block fine cells
-    // (cells_ is level 0's list and the fine grid everyone's cell moves follow).
-    struct Level {
-        CellList cells;
-        std::int64_t block = 1;
-    };
-
     // --- the loop (stepper.cpp) ---------------------------------------------------------------
     // Handles the events up to tEnd; returns the time the state is exact at: tEnd, or, when
     // the budget (0: none) ran out, the time of the first event left.
     double runEvents(double tEnd, StepCounters& counters, std::uint64_t budget);
+    // Re-sorts the particles into cell order (Grid::cellOrder), every part's per-particle
+    // state with them; `midRun`: the scheduled events and the cell lists follow.
+    void sortByCell(bool midRun);
 
-    // --- rebuild (rebuild.cpp) ----------------------------------------------------------------
+    // --- rebuild (stepper_rebuild.cpp) --------------------------------------------------------
     void rebuild(ParticleArrays& p, const WorldDef& def);
-    void recordPlacedOverlaps();
-    // The deepest overlap of the pairs still kept at their placed distance: every step carries
-    // them, so every step reports it (StepCounters::maxOverlap).
-    [[nodiscard]] double placedOverlap() const;
-    [[nodiscard]] static std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) {
-        return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
-    }
     [[nodiscard]] double bucketWidth() const;
 
-    // --- grid and size levels (grid.cpp, grid.hpp) --------------------------------------------
-    void setUpGrid();
-    void assignLevels(double spacing, double& fineDiameter);
-    void setUpLevels();
-    [[nodiscard]] bool populous(std::uint8_t level) const;
-    [[nodiscard]] bool populousUpperLevel() const;
-    void sortByCell(bool midRun);
-    [[nodiscard]] std::int64_t reach(std::uint8_t a, std::uint8_t b) const {
-        return reach_[a * levelCount_ + b];
-    }
-    [[nodiscard]] const CellList& listOf(std::uint8_t level) const {
-        return level == 0 ? cells_ : upper_[level - 1].cells;
-    }
-    [[nodiscard]] std::uint32_t memberCell(std::uint32_t i) const;
-    void insertMember(std::uint32_t i);
-    template <typename F>
-    void forCells(std::uint8_t level, std::int64_t x0, std::int64_t x1, std::int64_t y0,
-                  std::int64_t y1, F&& f) const;
-    // Calls f(q) for every particle q near enough to touch i (i included): the cells of every
-    // level within its reach of i's level.
-    template <typename F>
-    void forEachAround(std::uint32_t i, F&& f) const;
-
     // --- motion (motion.hpp) ------------------------------------------------------------------
-    void advance(std::uint32_t i, double t);
-    // i names the particle (its slide, if any, is slide_[i]); b is its record or a copy of it.
-    void accelerationOf(std::uint32_t i, const Body& b, double& ax, double& ay) const;
-    [[nodiscard]] Motion motionAt(std::uint32_t i, const Body& b, double t) const;
-    [[nodiscard]] static bool isStatic(const Body& b) {
-        return (b.flags & kAsleep) || ((b.flags & kHeld) && b.vx == 0.0 && b.vy == 0.0);
+    // Particle i brought to time t; its acceleration and its motion at t (b: its record or a
+    // copy of it).
+    void advance(std::uint32_t i, double t) { exact::advance(i, bodies_[i], gravity_, slides_, t); }
+    void accelerationOf(std::uint32_t i, const Body& b, double& ax, double& ay) const {
+        exact::accelerationOf(i, b, gravity_, slides_, ax, ay);
+    }
+    [[nodiscard]] Motion motionAt(std::uint32_t i, const Body& b, double t) const {
+        return exact::motionAt(i, b, gravity_, slides_, t);
     }
 
-    // --- prediction (prediction.cpp) ----------------------------------------------------------
+    // --- prediction (stepper_prediction.cpp) --------------------------------------------------
     void predictCollision(std::uint32_t i, double now);
     void predictWallsUnderGravity(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void predictCell(std::uint32_t i, double now);
@@ -278,91 +185,49 @@ class ExactStepper {
                                                      double horizon);
     void handleCell(std::uint32_t i, double now);
 
-    // --- pair and wall events (collisions.cpp) ------------------------------------------------
+    // --- pair and wall events (stepper_collisions.cpp) ----------------------------------------
     void handlePair(std::uint32_t i, const Event& ev, StepCounters& counters);
-    /// Particle i's inverse mass seen along n, w being its own: for one wider than the box
-    /// along an axis, what is left of w along its free axis, w·|P n|² (collisions.cpp).
-    [[nodiscard]] double inverseMassAlong(std::uint32_t i, Normal n, double w) const;
-    /// After a collision of particle i that is wider than the box along an axis: its velocity
-    /// change, found for the inverse mass `wSeen` it has along the normal, turned into the
-    /// change along its free axis (collisions.cpp).
-    void holdAcrossPinnedAxes(std::uint32_t i, const Vec2& before, double wSeen);
     void handleWall(std::uint32_t i, const Event& ev, StepCounters& counters);
-    [[nodiscard]] static bool collidedWithin(const Body& b, double now);
-    [[nodiscard]] double effectiveRestitution(double impactSpeed, bool recent) const;
-    // Counts a hit of i on a held particle or a sleeper this step (heldHits, reset per step);
-    // returns the count.
-    std::uint32_t countHit(std::uint32_t i);
-    void countHeldHit(std::uint32_t i);
-    // Before a collision of i at time t: counts it if it comes without time or room since i's
-    // last change, and past kJamHits in a row jams i (its velocity absorbed). True while
-    // i is jammed.
+    // Before a collision of i at time t: true while i is jammed (jam_guard.hpp), its velocity
+    // absorbed.
     bool jamsAt(std::uint32_t i, double t);
 
-    // --- rotation (collisions.cpp) ------------------------------------------------------------
-    // i's rotation for a rough contact at time `now`: its angle brought up to now first, since
-    // the contact may change its angular velocity.
-    [[nodiscard]] Spin spinAt(std::uint32_t i, double now);
-    // The rough tangential impulse of wall `side` (0..3) on i, after a rebound of dv along it.
-    void roughWallTangential(std::uint32_t i, int side, double dv, double now);
-
-    // --- resting, gravity only (resting.cpp) --------------------------------------------------
+    // --- resting, gravity only (resting.hpp; stepper_resting.cpp) ----------------------------
+    // What resting reads around a particle: the stepper's parts.
+    [[nodiscard]] Surroundings around() {
+        return {bodies_, cold_, grid_, obstacles_, slides_, rolls_, gravity_, def_};
+    }
     // At a rebuild under unchanged laws: what slept and has not moved sleeps on; what the
     // changes touch wakes.
-    struct Kept {
-        Body body;
-        std::uint32_t depth;
-    };
-    void keepSleepers(std::unordered_map<ParticleId, Kept>& before);
-    // Changed particles beyond which a rebuild wakes everything (an O(N) search per change).
-    static constexpr std::size_t kMaxDisturbances = 64;
-    // What holds i up at time `now` (i is at its position then; see resting.cpp): `firm` if the
-    // static supports do, with one of depth below `below` among them (depth: the sleeper's
-    // `depth`, 1 + the least of theirs); `withFree` if they do only with the slow free
-    // neighbours added.
-    struct Hold {
-        bool firm = false, withFree = false;
-        std::uint32_t depth = kUngrounded;
-    };
-    static constexpr std::uint32_t kUngrounded = UINT32_MAX / 2;
-    [[nodiscard]] Hold hold(std::uint32_t i, std::uint32_t below, double now) const;
-    // `turns`: i is a disc that turns with rough contacts (a single tilted support cannot hold it).
-    [[nodiscard]] bool holdsAgainstGravity(const double* nx, const double* ny, int count,
-                                           bool turns) const;
-    // After an event of i: asleep if slow and held, or caught rattling.
+    void keepSleepers(Resting::Snapshot& before);
+    // After an event of i: asleep if slow and held, or caught rattling; after a pair (or an
+    // event that ends like one), off the wall it rested on if pushed off, settled, and its roll
+    // set again.
     void settle(std::uint32_t i, double now, bool slow);
-    void handleRecheck(std::uint32_t i, const Event& ev);
-    void sleepNeighboursAtRest(std::uint32_t i, double now);
-    [[nodiscard]] bool mayRest(std::uint32_t i, double now) const {
-        return now - wokeAt_[i] >= kContactDuration;
-    }
+    void settleAfterPair(std::uint32_t i, bool justWoken);
+    // Particle i asleep at `now`, brought there; awake at `now`, and with it every sleeper it
+    // held up (each predicted again as it wakes).
     void fallAsleep(std::uint32_t i, double now, std::uint32_t depth, bool provisional);
     void wake(std::uint32_t i, double now);
-    void liftPressedPair(std::uint32_t i, std::uint32_t j, Normal n, bool aSlid, bool bSlid);
-    void settleAfterPair(std::uint32_t i, bool justWoken);
-    [[nodiscard]] bool rattles(std::uint32_t i, double now) {
-        return def_.restitution < 1.0 && rate_.exceeds(i, now, kRattleWindow, kRattleLimit);
-    }
+    void handleRecheck(std::uint32_t i, const Event& ev);
+    void sleepNeighboursAtRest(std::uint32_t i, double now);
 
-    // --- fixed obstacles (obstacles.cpp) ------------------------------------------------------
+    // --- fixed obstacles (stepper_obstacles.cpp) ----------------------------------------------
     // i's earliest impact with an obstacle of its cell's list, if earlier than best; the
-    // rebound; the supports obstacles give a resting particle (normals appended to nx, ny up to
-    // max, returns the new count).
+    // rebound.
     void predictObstacles(std::uint32_t i, const Motion& m, double now, Event& best);
     void handleObstacle(std::uint32_t i, const Event& ev, StepCounters& counters);
     // The rebound off obstacle k at i's current state (a lift or a slide where gravity presses
     // i into it), without the event's bookkeeping.
     void reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool recent, StepCounters& counters,
                             bool maySlide = true);
-    int obstacleSupports(std::uint32_t i, double* nx, double* ny, int count, int max) const;
 
-    // --- sliding on a segment's face (sliding.cpp) --------------------------------------------
-    // Entering it at a rebound off a face (false if the face's end is too near), the
-    // acceleration along the face, the end-of-face and stop events, leaving it; and the face's
-    // answer to a slider hit by a pair that is still on it.
+    // --- sliding on a segment's face (slides.hpp; stepper_surfaces.cpp) -----------------------
+    // Entering it at a rebound off a face (false where slides.hpp says no), its acceleration (a
+    // block's, or a roll's for a disc that turns), the end-of-face and stop events; and the
+    // face's answer to a slider hit by a pair that is still on it.
     bool startSliding(std::uint32_t i, std::uint32_t k, double nx, double ny);
     void setSlideAcceleration(std::uint32_t i);
-    void predictSlide(std::uint32_t i, const Motion& m, double now, Event& best) const;
     void handleSlide(std::uint32_t i, const Event& ev);
     // Ends i's slide, and its roll on a face or a wall if it rolls (i is at bodies_[i].t):
     // every event of a particle ends its contact's motion, and the event's handler starts it
@@ -370,95 +235,47 @@ class ExactStepper {
     void stopSliding(std::uint32_t i) {
         Body& b = bodies_[i];
         b.flags &= ~kSliding;
-        if (b.flags & kRolling) endRoll(i);
+        if (b.flags & kRolling) rolls_.end(i, b);
     }
     void keepOnFace(std::uint32_t i, StepCounters& counters, bool maySlide);
 
-    // --- slipping and rolling on a face or a wall (rolling.cpp) -------------------------------
-    // With rough contacts, a disc that turns on the face it slides on or the wall it rests on:
-    // setRoll gives it the phase its state at bodies_[i].t calls for (slipping under kinetic
-    // friction until the slip-to-roll instant, rolling, or slipping for good where friction
-    // cannot hold a rolling disc), or none (no such contact, a disc that does not turn on a
-    // face); a disc that does not turn on a wall slides as a block under kinetic friction until
-    // it stops (the slip-to-roll event of a disc whose slip is its speed);
-    // endRoll takes it back to plain flight or rest (its spin brought to bodies_[i].t); the
-    // slip-to-roll event; the outward normal of the surface it rolls on.
-    void setRoll(std::uint32_t i);
-    void endRoll(std::uint32_t i);
-    void predictRoll(std::uint32_t i, double now, Event& best) const;
+    // --- slipping and rolling on a face or a wall (rolls.hpp; stepper_surfaces.cpp) ----------
+    // The phase i's contact calls for at bodies_[i].t (Rolls::set); the slip-to-roll event.
+    void setRoll(std::uint32_t i) {
+        rolls_.set(i, bodies_[i], cold_[i], slides_, obstacles_, gravity_, def_.friction);
+    }
     void handleRoll(std::uint32_t i, const Event& ev);
-    [[nodiscard]] bool rollingSurface(std::uint32_t i, double& nx, double& ny) const;
 
+    // --- what it is made of ---------------------------------------------------------------
     WorldDef def_;
-    bool stale_ = true;
-    bool gravity_ = false;  // def_.gravity is not zero
-    double gx_ = 0.0, gy_ = 0.0;
-    double restSpeed_ = 0.0;  // see resting.cpp
-    double restGap_ = 0.0;
-    std::vector<std::uint32_t> wakeStack_;
-    // Per particle, in bodies_' order, with gravity and obstacles or rough contacts only: its
-    // sliding contact, read where kSliding or kRolling is set (sliding.cpp, rolling.cpp).
-    std::vector<Slide> slide_;
-    // Per particle, in bodies_' order, only in a world that keeps rotation (else empty).
-    std::vector<Turn> turn_;
-    // Contacts are rough (contact.hpp): the world keeps rotation and has friction.
-    bool rough_ = false;
-    // When each particle was last woken (gravity only): it does not fall asleep again within
-    // kContactDuration, so a sleeper hit awake cannot be put back to sleep at the same instant
-    // by the next event of the cascade that woke it.
-    std::vector<double> wokeAt_;
-    // Per sleeper (gravity only): its depth, 1 for one on a wall, an obstacle or a held
-    // particle, else 1 + the least depth of the sleepers it rests on; and when a provisional
-    // one is checked again.
-    std::vector<std::uint32_t> depth_;
-    std::vector<double> recheckAt_;
-    CollisionRate rate_;  // the rattle guard's counts (gravity only)
-    /// The last rebuild kept what slept (keepSleepers): only the particles it set free or added
-    /// are settling (rate_.quietAt), not everything.
-    bool keptSleepers_ = false;
-    double clock_ = 0.0;  // seconds since the last rebuild
-    // Particles are kept in cell order (rebuild sorts them) so that a 3 × 3 neighbourhood is
-    // three short runs of memory; order_ maps this order back to the world's storage indices.
+    Gravity gravity_;  // def_.gravity
+    // The particles, in cell order (a rebuild sorts them, and the loop every kResortEvery·N
+    // events) so that a 3 × 3 neighbourhood is three short runs of memory; order_ maps this
+    // order back to the world's storage indices, ids_ to their ids.
     std::vector<Body> bodies_;
     std::vector<Cold> cold_;
     std::vector<std::uint32_t> order_;
     std::vector<ParticleId> ids_;
-    CellList cells_;                    // level 0's members; the fine grid of every cell move
-    double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
-    std::vector<Level> upper_;          // levels 1, 2, ...
-    ObstacleCells obstacles_;           // the fixed obstacles each fine cell may reach
-    std::uint8_t levelCount_ = 1;
-    // reach_[a · levelCount_ + b]: how many fine cells apart (per axis) a particle of level a
-    // and one of level b may be and still touch; 1 for two of level 0.
-    std::vector<std::int64_t> reach_;
-    std::vector<double> levelRadius_;          // largest radius of each level
-    std::vector<std::uint32_t> levelMembers_;  // particles of each level
-    EventQueue queue_;
-    std::uint64_t eventsSinceSort_ = 0;
-    double maxOverlap_ = 0.0;
-    // Events handled in this step (pairs, stale pairs, walls, obstacles, slides, cell moves):
-    // what step() adds to StepCounters::events.
-    std::uint64_t events_ = 0;
-    std::vector<CollisionRecord>* log_ = nullptr;
-    // The world's record (record()): not state, set before every step. A record's time is
-    // collisionOffset_ + the event's time (on clock_, which restarts at each rebuild).
-    CollisionLog* collisionLog_ = nullptr;
-    double worldTime_ = 0.0;
-    double collisionOffset_ = 0.0;
-    // Pairs found overlapping at the last rebuild (placed so from outside), keyed by their
-    // storage indices (order_), with the contact distance they keep until they are found apart
-    // and how deep that distance is inside contact (r₁ + r₂ minus it, metres).
-    struct PlacedContact {
-        double distance;
-        double depth;
-    };
-    std::unordered_map<std::uint64_t, PlacedContact> overlapContact_;
+    EventQueue queue_;         // the event calendar
+    Grid grid_;                // the cells and size levels
+    ObstacleCells obstacles_;  // the fixed obstacles each fine cell may reach
+    PlacedContacts placed_;    // pairs placed overlapping at the last rebuild
+    Resting rest_;             // the resting contacts (gravity only)
+    Slides slides_;            // sliding contacts (gravity with obstacles or rough contacts)
+    Rolls rolls_;              // rotations (a world that keeps rotation); rough contacts
+    JamGuard jams_;
+    CollisionRecorder recorder_;  // where resolved collisions go (setLog, record)
+
+    // --- the loop's bookkeeping ----------------------------------------------------------------
+    bool stale_ = true;      // a rebuild is due (invalidate)
+    double clock_ = 0.0;     // seconds since the last rebuild
     bool syncOwed_ = false;  // the world's arrays do not hold the state at clock_ yet
-    // Particles with heldHits > 0 this step (the jam guard's counts are reset per step).
-    std::vector<std::uint32_t> heldHit_;
-    // The jam guard (jamsAt): the particles whose last collisions came without time or room
-    // between, by world index, and how many in a row.
-    std::unordered_map<std::uint32_t, std::uint32_t> repeats_;
+    std::uint64_t eventsSinceSort_ = 0;
+    // Events handled in this step (pairs, stale pairs, walls, obstacles, slides, cell moves):
+    // what step() adds to StepCounters::events; and the deepest overlap met in it.
+    std::uint64_t events_ = 0;
+    double maxOverlap_ = 0.0;
+    std::vector<std::uint32_t> wakeStack_;  // the wake cascade's particles to look around
 };
 
 }  // namespace psb::exact

@@ -1,6 +1,6 @@
-// The exact stepper's events with fixed obstacles (pegs and segments): prediction, rebound and
-// the support a resting particle finds on them. The times of impact are obstacle_impact.hpp's;
-// a rebound that starts a slide hands over to sliding.cpp.
+// The exact stepper's events with fixed obstacles (pegs and segments): prediction and rebound.
+// The times of impact are obstacle_impact.hpp's; a rebound that starts a slide hands over to
+// the slides (slides.hpp, stepper_surfaces.cpp).
 //
 // Obstacles (fixed pegs and segments). A third kind of collision
 // event, kept in a particle's collision key like a wall's and replaced like it at every change
@@ -8,7 +8,7 @@
 // move (obstacle_cells.hpp); a prediction tests its cell's list, a cell move the new
 // cell's. Times of impact: obstacle_impact.hpp (quadratics; under gravity the quartic
 // for pegs and caps, a quadratic across a flat side). Rebound: the walls' law along the normal
-// from the nearest core point. Under gravity obstacles are supports for resting (resting.cpp), a
+// from the nearest core point. Under gravity obstacles are supports for resting (resting.hpp), a
 // single one only within the friction angle, so a ball slides down a slope steeper than that.
 
 #include <algorithm>
@@ -29,9 +29,9 @@ void ExactStepper::predictObstacles(std::uint32_t i, const Motion& m, double now
     // sleepers do not move.
     if (a.flags & (kHeld | kAsleep)) return;
     const Cold& c = cold_[i];
-    // The face a particle slides on is left at its end (predictSlide), never hit.
-    const std::uint32_t sliding = (a.flags & kSliding) ? slide_[i].obstacle : UINT32_MAX;
-    for (const std::uint32_t k : obstacles_.near(cells_, c.kx, c.ky)) {
+    // The face a particle slides on is left at its end (a slide event), never hit.
+    const std::uint32_t sliding = (a.flags & kSliding) ? slides_[i].obstacle : UINT32_MAX;
+    for (const std::uint32_t k : obstacles_.near(grid_.fine(), c.kx, c.ky)) {
         if (k == sliding) continue;
         const double t = now + obstacleEventTime(m.x, m.y, m.vx, m.vy, m.ax, m.ay, a.r,
                                                  obstacles_[k], best.time - now);
@@ -54,7 +54,7 @@ void ExactStepper::handleObstacle(std::uint32_t i, const Event& ev, StepCounters
     reboundOffObstacle(i, ev.partner, recent, counters);
     ++a.count;
     // Off the wall it rested on if the obstacle pushed it off; asleep if it is slow and held.
-    if (gravity_) settleAfterPair(i, false);
+    if (gravity_.on) settleAfterPair(i, false);
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
 }
@@ -79,13 +79,14 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     }
     const Vec2 before(a.vx, a.vy);
     const double into = -(a.vx * nx + a.vy * ny);
-    const double e = effectiveRestitution(into, recent);
+    const double e = effectiveRestitution(def_.restitution, into, recent);
     const RoughLaws laws{e, def_.friction, def_.tangentialRestitution};
-    double dv = rough_ ? roughReboundOffSurface(a.vx, a.vy, spinAt(i, a.t), nx, ny, laws)
+    double dv = rolls_.rough()
+                    ? roughReboundOffSurface(a.vx, a.vy, rolls_.spinAt(i, a.r, a.t), nx, ny, laws)
                 : def_.friction > 0.0
                     ? reboundOffSurface<true>(a.vx, a.vy, nx, ny, e, def_.friction)
                     : reboundOffSurface<false>(a.vx, a.vy, nx, ny, e, 0.0);
-    if (gravity_) {
+    if (gravity_.on) {
         // Pressed into the obstacle by gravity and leaving it slower than the lift: leave at the
         // lift, as a pressed pair does (see resting.cpp), so that a particle on a slope
         // hops down it instead of making ever faster tiny bounces, and the next impact is never
@@ -94,10 +95,10 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
         accelerationOf(i, a, gax, gay);
         const double an = gax * nx + gay * ny;
         if (an < 0.0 && an * an > kPressTolerance * kPressTolerance * (gax * gax + gay * gay)) {
-            const double lift = 0.5 * restSpeed_, leaving = a.vx * nx + a.vy * ny;
+            const double lift = 0.5 * rest_.restSpeed(), leaving = a.vx * nx + a.vy * ny;
             if (leaving < lift && maySlide && !o.isPeg() && startSliding(i, k, nx, ny)) {
                 // On a segment's face: it slides along it instead of hopping
-                // (sliding.cpp), what is left of its normal velocity absorbed by the contact.
+                // (slides.cpp), what is left of its normal velocity absorbed by the contact.
             } else if (leaving < lift) {
                 // The lift is part of the normal impulse the contact gives, so Coulomb's law
                 // bounds the friction by mu times all of it: over the hops down a slope the
@@ -105,9 +106,9 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
                 // and the mean deceleration is then g (sin θ − mu cos θ). Friction only on the
                 // rebound's part gave mu (1 + e)/2 in place of mu.
                 const double extra = lift - leaving;
-                if (rough_) {
+                if (rolls_.rough()) {
                     double along = a.vx * -ny + a.vy * nx;
-                    roughAlongSurface(along, spinAt(i, a.t), extra, def_.friction,
+                    roughAlongSurface(along, rolls_.spinAt(i, a.r, a.t), extra, def_.friction,
                                       def_.tangentialRestitution);
                     a.vx = leaving * nx + along * -ny;
                     a.vy = leaving * ny + along * nx;
@@ -126,30 +127,13 @@ void ExactStepper::reboundOffObstacle(std::uint32_t i, std::uint32_t k, bool rec
     }
     if (dv > 0.0) {
         ++counters.obstacleCollisions;
-        if (log_) log_->push_back({a.t, order_[i], CollisionRecord::kObstacle + k});
-        if (collisionLog_) {
-            collisionLog_->add(surfaceCollision(collisionOffset_ + a.t, Collision::With::Obstacle,
-                                                k, ids_[i], before, Vec2(a.vx, a.vy), cold_[i].m));
+        if (recorder_.on()) {
+            recorder_.add({a.t, order_[i], CollisionRecord::kObstacle + k}, [&](double t) {
+                return surfaceCollision(t, Collision::With::Obstacle, k, ids_[i], before,
+                                        Vec2(a.vx, a.vy), cold_[i].m);
+            });
         }
     }
-}
-
-int ExactStepper::obstacleSupports(std::uint32_t i, double* nx, double* ny, int count,
-                                   int max) const {
-    const Body& a = bodies_[i];
-    const Cold& c = cold_[i];
-    for (const std::uint32_t k : obstacles_.near(cells_, c.kx, c.ky)) {
-        if (count == max) break;
-        const Obstacle& o = obstacles_[k];
-        double qx, qy;
-        nearestCorePoint(o, a.x, a.y, qx, qy);
-        const double rx = qx - a.x, ry = qy - a.y;  // from i to the obstacle
-        const double d = std::sqrt(rx * rx + ry * ry);
-        if (!(d > 0.0) || d - (a.r + o.radius) > restGap_) continue;
-        nx[count] = rx / d;
-        ny[count++] = ry / d;
-    }
-    return count;
 }
 
 }  // namespace psb::exact

@@ -37,7 +37,7 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     Event best{kNever, 0, 0, Kind::None, 0};
 
     Motion m{ax, ay, a.vx, a.vy, 0.0, 0.0};
-    if (gravity_) {
+    if (gravity_.on) {
         m = motionAt(i, a, now);
         ax = m.x;
         ay = m.y;
@@ -64,12 +64,12 @@ void ExactStepper::predictCollision(std::uint32_t i, double now) {
     }
     if (!obstacles_.empty()) {
         predictObstacles(i, m, now, best);
-        if (a.flags & kSliding) predictSlide(i, m, now, best);
+        if (a.flags & kSliding) slides_.predict(i, a, obstacles_, m, now, best);
     }
-    if (a.flags & kRolling) predictRoll(i, now, best);
+    if (a.flags & kRolling) rolls_.predict(i, slides_, now, best);
     scanNeighbours(i, now, ax, ay, best);
-    if ((a.flags & kProvisional) && recheckAt_[i] < best.time)
-        best = {std::max(now, recheckAt_[i]), 0, 0, Kind::Recheck, 0};
+    if ((a.flags & kProvisional) && rest_.recheckAt(i) < best.time)
+        best = {std::max(now, rest_.recheckAt(i)), 0, 0, Kind::Recheck, 0};
     cold_[i].coll = best;
     bodies_[i].nextColl = best.time;
     queue_.update(2 * i, best.time);
@@ -102,27 +102,28 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     const Cold& ac = cold_[i];
     const double ha = now - a.t;
     Motion m{a.x + a.vx * ha, a.y + a.vy * ha, a.vx, a.vy, 0.0, 0.0};
-    if (gravity_) m = motionAt(i, a, now);
+    if (gravity_.on) m = motionAt(i, a, now);
     const auto exitTime = [&](double x, double v, double acc, double lo, double hi, int& f) {
-        return gravity_ ? slabExitTimeAccelerated(x, v, acc, lo, hi, f)
-                        : slabExitTime(x, v, lo, hi, f);
+        return gravity_.on ? slabExitTimeAccelerated(x, v, acc, lo, hi, f)
+                           : slabExitTime(x, v, lo, hi, f);
     };
     double best = kNever;
     std::int8_t side = 0;
     // With walls the outer faces are never crossed (the wall comes first).
     int face;
-    const double tx = exitTime(m.x, m.vx, m.ax, cells_.faceX(ac.kx) - skinX_,
-                               cells_.faceX(ac.kx + 1) + skinX_, face);
+    const CellList& cells = grid_.fine();
+    const double tx = exitTime(m.x, m.vx, m.ax, cells.faceX(ac.kx) - grid_.skinX(),
+                               cells.faceX(ac.kx + 1) + grid_.skinX(), face);
     const bool outerX =
-        !cells_.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells_.nx() - 1));
+        !cells.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells.nx() - 1));
     if (face != 0 && !outerX) {
         best = tx;
         side = face < 0 ? 0 : 1;
     }
-    const double ty = exitTime(m.y, m.vy, m.ay, cells_.faceY(ac.ky) - skinY_,
-                               cells_.faceY(ac.ky + 1) + skinY_, face);
+    const double ty = exitTime(m.y, m.vy, m.ay, cells.faceY(ac.ky) - grid_.skinY(),
+                               cells.faceY(ac.ky + 1) + grid_.skinY(), face);
     const bool outerY =
-        !cells_.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells_.ny() - 1));
+        !cells.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells.ny() - 1));
     if (face != 0 && !outerY && ty < best) {
         best = ty;
         side = face < 0 ? 2 : 3;
@@ -133,8 +134,8 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
 
 void ExactStepper::scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best) {
     const Cold& c = cold_[i];
-    for (std::uint8_t l = 0; l < levelCount_; ++l) {
-        const std::int64_t k = reach(c.level, l);
+    for (std::uint8_t l = 0; l < grid_.levelCount(); ++l) {
+        const std::int64_t k = grid_.reach(c.level, l);
         scanBlock(i, now, ax, ay, l, c.kx - k, c.kx + k, c.ky - k, c.ky + k, best);
     }
 }
@@ -142,11 +143,11 @@ void ExactStepper::scanNeighbours(std::uint32_t i, double now, double ax, double
 void ExactStepper::scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                              std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
                              Event& best) {
-    const CellList& list = listOf(level);
+    const CellList& list = grid_.listOf(level);
     constexpr int kCells = 16;
     std::uint32_t cells[kCells];
     int count = 0;
-    forCells(level, x0, x1, y0, y1, [&](std::uint32_t c) {
+    grid_.forCells(level, x0, x1, y0, y1, [&](std::uint32_t c) {
         cells[count++] = c;
         if (count == kCells) {
             scanCells(i, now, ax, ay, list, cells, count, best);
@@ -161,7 +162,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                              Event& best) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
-    const Motion am = gravity_ ? motionAt(i, a, now) : Motion{};
+    const Motion am = gravity_.on ? motionAt(i, a, now) : Motion{};
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
     // neighbourhood overlap instead of following one another.
     constexpr int kBatch = 32;
@@ -191,7 +192,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             const double h = now - b.t;
             Motion bm{};
             double rx, ry;
-            if (gravity_) {
+            if (gravity_.on) {
                 bm = motionAt(q, b, now);
                 rx = bm.x - am.x;
                 ry = bm.y - am.y;
@@ -200,21 +201,12 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                 ry = b.y + b.vy * h - ay;
             }
             double sigma = a.r + b.r;
-            if (a.flags & b.flags & kPlacedOverlapping) {
-                const auto it = overlapContact_.find(pairKey(order_[i], order_[q]));
-                if (it != overlapContact_.end()) {
-                    // Apart at last: from now on the pair is an ordinary one.
-                    if (rx * rx + ry * ry >= sigma * sigma) {
-                        overlapContact_.erase(it);
-                    } else {
-                        sigma = it->second.distance;
-                    }
-                }
-            }
+            if (a.flags & b.flags & kPlacedOverlapping)
+                sigma = placed_.contactDistance(order_[i], order_[q], rx, ry, sigma);
             const double t =
-                now + (gravity_ ? pairTimeUnderGravity(a, am, b, bm, sigma,
-                                                       std::min(best.time, b.nextColl) - now)
-                                : pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma));
+                now + (gravity_.on ? pairTimeUnderGravity(a, am, b, bm, sigma,
+                                                          std::min(best.time, b.nextColl) - now)
+                                   : pairImpactTime(rx, ry, b.vx - a.vx, b.vy - a.vy, sigma));
             // Only a collision before q's own scheduled collision can happen as predicted: at
             // that time q changes course or is predicted again against everything around it,
             // i included (Smallenburg 2022). Skipping later ones saves stale events.
@@ -249,30 +241,8 @@ double ExactStepper::pairTimeUnderGravity(const Body& a, const Motion& am, const
 void ExactStepper::handleCell(std::uint32_t i, double now) {
     Cold& a = cold_[i];
     ++events_;
-    const std::uint32_t oldCell = memberCell(i);
     const std::int8_t side = a.cellSide;  // predictCell below overwrites it
-    switch (side) {
-        case 0:
-            --a.kx;
-            break;
-        case 1:
-            ++a.kx;
-            break;
-        case 2:
-            --a.ky;
-            break;
-        default:
-            ++a.ky;
-            break;
-    }
-    if (a.level == 0) {
-        cells_.erase(i);
-        cells_.insert(i, cells_.cell(a.kx, a.ky));
-    } else if (const std::uint32_t cell = memberCell(i); cell != oldCell) {
-        CellList& list = upper_[a.level - 1].cells;
-        list.erase(i);
-        list.insert(i, cell);
-    }
+    grid_.move(i, a, side);
     predictCell(i, now);
 
     // The cells that just came within reach at each level: the far column (or row) in the
@@ -283,14 +253,14 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     const double h = now - b.t;
     double ax = b.x + b.vx * h, ay = b.y + b.vy * h;
     Motion m{ax, ay, b.vx, b.vy, 0.0, 0.0};
-    if (gravity_) {
+    if (gravity_.on) {
         m = motionAt(i, b, now);
         ax = m.x;
         ay = m.y;
     }
     Event best = a.coll;
-    for (std::uint8_t l = 0; l < levelCount_; ++l) {
-        const std::int64_t k = reach(a.level, l);
+    for (std::uint8_t l = 0; l < grid_.levelCount(); ++l) {
+        const std::int64_t k = grid_.reach(a.level, l);
         switch (side) {
             case 0:
                 scanBlock(i, now, ax, ay, l, a.kx - k, a.kx - k, a.ky - k, a.ky + k, best);

@@ -1,6 +1,6 @@
 // Pair and wall events of the exact stepper: the collision at the instant of contact, its
-// restitution, and the guards that keep rounding, inelastic collapse and held particles from
-// stalling the event loop.
+// restitution, what it does to sleepers and slides, and the rules that keep rounding from
+// deciding.
 //
 // Rules for invalid states (Bannerman et al. 2014), so rounding never decides:
 //   - no event is scheduled before the current time (times of impact are durations >= 0);
@@ -12,28 +12,12 @@
 //   - a disc past a wall collides with it at once if moving outward, else is left alone;
 //   - a collision whose pair turns out not to approach at its instant changes nothing.
 //
-// Inelastic collapse. With e < 1 a cluster can collide infinitely often in finite time, and an
-// event-driven code then stalls; with e = 0 it does so at once (a pair leaves a collision
-// touching, at zero relative speed, so the next collision in the cluster is at zero gap). Two
-// guards make restitution tend to 1 where the collapse would happen:
-//   - the TC model (Luding & McNamara 1998): a particle that collided less than
-//     kContactDuration ago collides elastically, so a cascade of near-simultaneous collisions
-//     re-opens gaps instead of closing them;
-//   - impacts slower than kElasticBelowSpeed use e_eff = 1 − (1 − e)·u/u_c, rising linearly to
-//     1 as the speed goes to 0, so ever slower collisions lose ever less energy.
-// A cooling pile therefore settles to small speeds with a bounded number of events per step.
+// Inelastic collapse and particles that do not fit in the box: the rules in collision_rules.hpp.
 //
 // Held (kinematic) particles. Infinite mass, straight lines: they push and are not pushed
 // (contact.hpp's kinematic limit). A held particle that reaches a wall stops moving across it.
-// A free particle squeezed between a held one and a wall or another held one would collide
-// infinitely often; after kJamLimit collisions with held particles in one step it is allowed to
-// pass through held particles for the rest of that step.
-//
-// Particles that do not fit. A particle wider than the box along an axis stays on the box's
-// centre line on that axis (as in the discrete mode): the walls hold it there, so a collision
-// gives it no velocity across that axis (its inverse mass along the normal is that along its
-// free axis; see handlePair), and the walls absorb at once any it has. Such a particle makes
-// the cells as large as the box: correct but O(N) per event.
+// A free particle squeezed between a held one and a wall or another held one is the jam
+// guard's (jam_guard.hpp).
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +28,25 @@
 #include "exact/stepper.hpp"
 
 namespace psb::exact {
+
+namespace {
+
+// The rough tangential impulse of wall `side` (0..3) on a (spin: its rotation), after a rebound
+// of dv along the wall's normal.
+void roughWallTangential(Body& a, Spin spin, int side, double dv, const WorldDef& def) {
+    // Wall `side` has the outward normal n = −outward along its axis (outward: +1 for the
+    // right and bottom walls), and the tangent t = (−n_y, n_x): −outward times the other axis
+    // for the x walls, +outward times it for the y walls (as in the discrete mode's walls).
+    const bool alongX = side < 2;
+    const double outward = (side % 2 == 0) ? -1.0 : 1.0;
+    const double sign = alongX ? -outward : outward;
+    double& vt = alongX ? a.vy : a.vx;
+    double along = sign * vt;
+    roughAlongSurface(along, spin, dv, def.friction, def.tangentialRestitution);
+    vt = sign * along;
+}
+
+}  // namespace
 
 void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& counters) {
     const std::uint32_t j = ev.partner;
@@ -57,7 +60,7 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         return;
     }
     ++events_;
-    // Squeezed by a held particle: the held jam guard's (countHeldHit).
+    // Squeezed by a held particle: the held jam guard's (JamGuard::countHeldHit).
     const bool byHeld = ((a.flags | b.flags) & kHeld) != 0;
     const bool aJammed = !byHeld && jamsAt(i, ev.time), bJammed = !byHeld && jamsAt(j, ev.time);
     const bool recent = collidedWithin(a, ev.time) || collidedWithin(b, ev.time);
@@ -91,14 +94,14 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A sleeper hit hard enough, or by a held particle, wakes; otherwise it stays put and the
     // other bounces off it as off an infinitely heavy disc.
     bool aStays = false, bStays = false, woke = false;
-    if (gravity_) {
+    if (gravity_.on) {
         const auto hitsSleeper = [&](std::uint32_t s, std::uint32_t o) {
             if (!(bodies_[s].flags & kAsleep)) return false;
             // A particle wedged between sleepers (no room between them) would bounce between
             // them ever faster: after kWakeAfterHits such hits in a step it wakes them, and the
             // wedge opens as it would, by pushing them apart.
-            if ((bodies_[o].flags & kHeld) || approach > 2.0 * restSpeed_ ||
-                countHit(o) >= kWakeAfterHits) {
+            if ((bodies_[o].flags & kHeld) || approach > 2.0 * rest_.restSpeed() ||
+                jams_.countHit(o, cold_[o]) >= kWakeAfterHits) {
                 wake(s, ev.time);
                 woke = true;
                 return false;
@@ -115,8 +118,8 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // A particle jammed at this instant is as fixed as a sleeper.
     aStays = aStays || aJammed;
     bStays = bStays || bJammed;
-    const double wi = inverseMassAlong(i, n, aStays ? 0.0 : cold_[i].w);
-    const double wj = inverseMassAlong(j, n, bStays ? 0.0 : cold_[j].w);
+    const double wi = inverseMassAlong(cold_[i], n, aStays ? 0.0 : cold_[i].w);
+    const double wj = inverseMassAlong(cold_[j], n, bStays ? 0.0 : cold_[j].w);
     const auto massSeen = [](const Cold& c, double w) {
         return (c.pinX || c.pinY) && w > 0.0 ? 1.0 / w : c.m;
     };
@@ -124,42 +127,42 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     // Off a sleeper, which does not move, a bounce cannot start a collapse: the TC model's
     // elastic rule would only keep a particle wedged between sleepers rattling at full speed.
     const bool offStatic = aStays || bStays;
-    double e = effectiveRestitution(approach, recent && !offStatic);
+    double e = effectiveRestitution(def_.restitution, approach, recent && !offStatic);
     // And a rebound off it slower than the rest speed ends the approach, as on a wall the
     // particle rests on: a particle in a slot between sleepers stops instead of rattling.
-    if (offStatic && approach * e < restSpeed_) e = 0.0;
+    if (offStatic && approach * e < rest_.restSpeed()) e = 0.0;
     const Vec2 aBefore(a.vx, a.vy), bBefore(b.vx, b.vy);
     const bool hit =
-        rough_
-            ? collideRoughDiscs(a.vx, a.vy, spinAt(i, ev.time), b.vx, b.vy, spinAt(j, ev.time), wi,
-                                wj, mi, mj, n, {e, def_.friction, def_.tangentialRestitution})
+        rolls_.rough() ? collideRoughDiscs(a.vx, a.vy, rolls_.spinAt(i, a.r, ev.time), b.vx, b.vy,
+                                           rolls_.spinAt(j, b.r, ev.time), wi, wj, mi, mj, n,
+                                           {e, def_.friction, def_.tangentialRestitution})
         : def_.friction > 0.0
             ? collideDiscs<true>(a.vx, a.vy, b.vx, b.vy, wi, wj, mi, mj, n, e, def_.friction)
             : collideDiscs<false>(a.vx, a.vy, b.vx, b.vy, wi, wj, mi, mj, n, e, 0.0);
     if (hit) {
         // A pinned particle's impulse, found for the inverse mass it has along n, moves it
         // along its free axis only: Δv = (w / w_seen)·P·Δv_seen.
-        holdAcrossPinnedAxes(i, aBefore, wi);
-        holdAcrossPinnedAxes(j, bBefore, wj);
+        holdAcrossPinnedAxes(a, cold_[i], aBefore, wi);
+        holdAcrossPinnedAxes(b, cold_[j], bBefore, wj);
         ++counters.collisions;
         if (!aStays) ++a.count;
         if (!bStays) ++b.count;
-        if (b.flags & kHeld) countHeldHit(i);
-        if (a.flags & kHeld) countHeldHit(j);
-        if (log_) log_->push_back({ev.time, order_[i], order_[j]});
-        if (collisionLog_) {
-            // A pinned a's momentum changes by less than the contact's impulse (the walls
-            // take the rest): the impulse is then what b received.
-            const bool aPinned = cold_[i].pinX || cold_[i].pinY;
-            collisionLog_->add(pairCollision(collisionOffset_ + ev.time, ids_[i], ids_[j], aBefore,
-                                             Vec2(a.vx, a.vy), bBefore, Vec2(b.vx, b.vy),
-                                             aPinned ? 0.0 : wi, cold_[i].m, cold_[j].m));
+        if (b.flags & kHeld) jams_.countHeldHit(i, a, cold_[i]);
+        if (a.flags & kHeld) jams_.countHeldHit(j, b, cold_[j]);
+        if (recorder_.on()) {
+            recorder_.add({ev.time, order_[i], order_[j]}, [&](double t) {
+                // A pinned a's momentum changes by less than the contact's impulse (the walls
+                // take the rest): the impulse is then what b received.
+                const bool aPinned = cold_[i].pinX || cold_[i].pinY;
+                return pairCollision(t, ids_[i], ids_[j], aBefore, Vec2(a.vx, a.vy), bBefore,
+                                     Vec2(b.vx, b.vy), aPinned ? 0.0 : wi, cold_[i].m, cold_[j].m);
+            });
         }
     }
-    if (gravity_) {
+    if (gravity_.on) {
         // Lift what gravity presses together (judged by how they moved into the contact), then
         // let them rest (what this hit just woke does not).
-        liftPressedPair(i, j, n, aSlid, bSlid);
+        rest_.liftPressedPair(i, j, n, aSlid, bSlid, around());
         // A slider pressed along its face into a neighbour without an impulse (at rest against
         // it) would slide into it again at once, the same event at the same instant without
         // end: it hops off the face instead, as before slides, and slides again when it lands.
@@ -172,22 +175,6 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
     predictCollision(j, ev.time);
     predictCell(i, ev.time);
     predictCell(j, ev.time);
-}
-
-double ExactStepper::inverseMassAlong(std::uint32_t i, Normal n, double w) const {
-    const Cold& c = cold_[i];
-    if (!(c.pinX || c.pinY)) return w;
-    const double fx = c.pinX ? 0.0 : n.x, fy = c.pinY ? 0.0 : n.y;
-    return w * (fx * fx + fy * fy);
-}
-
-void ExactStepper::holdAcrossPinnedAxes(std::uint32_t i, const Vec2& before, double wSeen) {
-    const Cold& c = cold_[i];
-    if (!(c.pinX || c.pinY)) return;
-    Body& a = bodies_[i];
-    const double scale = wSeen > 0.0 ? c.w / wSeen : 0.0;
-    a.vx = c.pinX ? before.x() : before.x() + scale * (a.vx - before.x());
-    a.vy = c.pinY ? before.y() : before.y() + scale * (a.vy - before.y());
 }
 
 void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& counters) {
@@ -215,7 +202,7 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         double& x = alongX ? a.x : a.y;
         const double extent = alongX ? def_.width : def_.height;
         const double inside = std::clamp(x, a.r, extent - a.r);
-        if (gravity_ || std::abs(x - inside) > kWallSlack * extent) x = inside;
+        if (gravity_.on || std::abs(x - inside) > kWallSlack * extent) x = inside;
     }
     const Vec2 before(a.vx, a.vy);
     double dv = 0.0;
@@ -227,11 +214,11 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         v = 0.0;
     } else {
         double out = outward * v;
-        const double e = effectiveRestitution(out, recent);
-        if (rough_) {
+        const double e = effectiveRestitution(def_.restitution, out, recent);
+        if (rolls_.rough()) {
             dv = reboundOffWall<false>(out, vt, e, 0.0);
             v = outward * out;
-            if (dv > 0.0) roughWallTangential(i, ev.side, dv, ev.time);
+            if (dv > 0.0) roughWallTangential(a, rolls_.spinAt(i, a.r, ev.time), ev.side, dv, def_);
         } else {
             dv = def_.friction > 0.0 ? reboundOffWall<true>(out, vt, e, def_.friction)
                                      : reboundOffWall<false>(out, vt, e, 0.0);
@@ -244,7 +231,8 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
         if ((a.flags & across) && vt != 0.0 && !(alongX ? cold_[i].pinY : cold_[i].pinX))
             a.flags &= ~across;
         // Pressed into this wall by gravity and leaving it too slowly to fly: it rests on it.
-        if (gravity_ && outward * (alongX ? gx_ : gy_) > 0.0 && std::abs(v) < restSpeed_) {
+        if (gravity_.on && outward * (alongX ? gravity_.x : gravity_.y) > 0.0 &&
+            std::abs(v) < rest_.restSpeed()) {
             dv += std::abs(v);
             v = 0.0;
             a.flags |= alongX ? kRestX : kRestY;
@@ -253,82 +241,33 @@ void ExactStepper::handleWall(std::uint32_t i, const Event& ev, StepCounters& co
     if (dv > 0.0) {
         ++counters.wallCollisions;
         counters.wallImpulse += cold_[i].m * dv;
-        if (log_) log_->push_back({ev.time, order_[i], CollisionRecord::kWall + ev.side});
-        if (collisionLog_) {
-            collisionLog_->add(surfaceCollision(collisionOffset_ + ev.time, Collision::With::Wall,
-                                                static_cast<std::uint32_t>(ev.side), ids_[i],
-                                                before, Vec2(a.vx, a.vy), cold_[i].m));
+        if (recorder_.on()) {
+            recorder_.add({ev.time, order_[i], CollisionRecord::kWall + ev.side}, [&](double t) {
+                return surfaceCollision(t, Collision::With::Wall,
+                                        static_cast<std::uint32_t>(ev.side), ids_[i], before,
+                                        Vec2(a.vx, a.vy), cold_[i].m);
+            });
         }
     }
     ++a.count;
-    if (gravity_ && !(a.flags & kHeld)) {
-        settle(i, ev.time,
-               a.vx * a.vx + a.vy * a.vy < restSpeed_ * restSpeed_ && mayRest(i, ev.time));
-        // Resting on a wall, a disc that turns slips or rolls along it (rolling.cpp).
+    if (gravity_.on && !(a.flags & kHeld)) {
+        settle(i, ev.time, rest_.slow(a) && rest_.mayRest(i, ev.time));
+        // Resting on a wall, a disc that turns slips or rolls along it (rolls.hpp).
         setRoll(i);
     }
     predictCollision(i, ev.time);
     predictCell(i, ev.time);
 }
 
-Spin ExactStepper::spinAt(std::uint32_t i, double now) {
-    Turn& r = turn_[i];
-    advanceTurn(r, now);
-    return Spin{r.omega, bodies_[i].r, r.q};
-}
-
-void ExactStepper::roughWallTangential(std::uint32_t i, int side, double dv, double now) {
-    // Wall `side` has the outward normal n = −outward along its axis (outward: +1 for the
-    // right and bottom walls), and the tangent t = (−n_y, n_x): −outward times the other axis
-    // for the x walls, +outward times it for the y walls (as in the discrete mode's walls).
-    Body& a = bodies_[i];
-    const bool alongX = side < 2;
-    const double outward = (side % 2 == 0) ? -1.0 : 1.0;
-    const double sign = alongX ? -outward : outward;
-    double& vt = alongX ? a.vy : a.vx;
-    double along = sign * vt;
-    roughAlongSurface(along, spinAt(i, now), dv, def_.friction, def_.tangentialRestitution);
-    vt = sign * along;
-}
-
-bool ExactStepper::collidedWithin(const Body& b, double now) {
-    // t is the time of b's last velocity change; count > 0 says there was one since the last
-    // rebuild (t = 0 at a rebuild is not a collision).
-    return b.count > 0 && now - b.t < kContactDuration;
-}
-
-double ExactStepper::effectiveRestitution(double impactSpeed, bool recent) const {
-    const double e = def_.restitution;
-    if (e >= 1.0 || recent) return 1.0;
-    if (impactSpeed >= kElasticBelowSpeed) return e;
-    return 1.0 - (1.0 - e) * (impactSpeed / kElasticBelowSpeed);
-}
-
-std::uint32_t ExactStepper::countHit(std::uint32_t i) {
-    if (cold_[i].heldHits++ == 0) heldHit_.push_back(i);
-    return cold_[i].heldHits;
-}
-
 bool ExactStepper::jamsAt(std::uint32_t i, double t) {
     Body& a = bodies_[i];
     if (a.flags & (kHeld | kAsleep)) return false;  // cannot jam
-    // Without time or room since its last change: within kJamTime, moved less than kJamRoom of
-    // its radius (the speed it had since then times the time).
-    const double h = t - a.t;
-    const bool stuck = h <= kJamTime && h * std::hypot(a.vx, a.vy) <= kJamRoom * a.r;
-    if (!stuck && repeats_.empty()) return false;  // the usual case: nothing to count
-    const std::uint32_t who = order_[i];           // stable while indices are re-sorted
-    if (!stuck) {
-        repeats_.erase(who);  // it moved: its run of hits ends
-        return false;
-    }
-    std::uint32_t& hits = repeats_[who];
-    if (hits < kJamHits && ++hits < kJamHits) return false;
+    if (!jams_.jams(a, i, order_, t)) return false;
     // Jammed: no room to move. Its velocity, and any it is given while its hits keep coming
     // without time between, goes to the bodies that hold it.
-    if (gravity_) {
-        const Hold hold = this->hold(i, kUngrounded + 1, t);
-        fallAsleep(i, t, hold.depth, !hold.firm);
+    if (gravity_.on) {
+        const Resting::Sleep s = rest_.caught(i, t, around());
+        fallAsleep(i, t, s.depth, s.provisional);
     } else if (a.vx != 0.0 || a.vy != 0.0) {
         advance(i, t);
         stopSliding(i);
@@ -336,10 +275,6 @@ bool ExactStepper::jamsAt(std::uint32_t i, double t) {
         ++a.count;
     }
     return true;
-}
-
-void ExactStepper::countHeldHit(std::uint32_t i) {
-    if (countHit(i) >= kJamLimit) bodies_[i].flags |= kJammed;
 }
 
 }  // namespace psb::exact

@@ -1,10 +1,10 @@
-// A disc that turns, in continuous contact with a surface, in the exact stepper: slipping under
-// kinetic friction, the slip-to-roll instant, and rolling; all of it closed-form motion.
+// The exact stepper's rolls: a disc that turns, in continuous contact with a surface, slipping
+// under kinetic friction, the slip-to-roll instant, and rolling; all of it closed-form motion.
 //
 // Where. With rough contacts (the world keeps rotation and has friction), a disc whose rotation
-// is free on the face of a segment it slides on (kSliding, sliding.cpp) or on the one wall it
+// is free on the face of a segment it slides on (kSliding, slides.cpp) or on the one wall it
 // rests on (kRestX or kRestY, resting.cpp). A disc that does not turn slides as a block: on a
-// face by sliding.cpp's law, on a wall by the block's case below.
+// face by slides.cpp's law, on a wall by the block's case below.
 //
 // How. n is the surface's outward normal (from the surface to the centre), t = (−n_y, n_x)
 // its tangent, g_t = g·t and g_n = −g·n > 0 gravity's shares, q = 1/k. The contact point slips
@@ -28,11 +28,11 @@
 // A slip smaller than kSlipRounding of the speeds is rounding (a sticking rough impulse with
 // β = 0 leaves it so): the disc rolls, its ω set to v_t / r.
 //
-// What stays as it was. The acceleration along the surface is held in slide_, read by
-// accelerationOf like a slide's, so pair times of impact, walls and cell faces take it as any
-// other parabola. Any event of the particle ends the roll (stopSliding, endRoll: its spin
-// brought to the event, alpha back to 0); the event's handler gives the phase again where the
-// particle is still in contact (setRoll from handleWall, settleAfterPair, setSlideAcceleration,
+// What stays as it was. The acceleration along the surface is held in the particle's Slide,
+// read by accelerationOf (motion.hpp) like a slide's, so pair times of impact, walls and cell
+// faces take it as any other parabola. Any event of the particle ends the roll (end(): its spin
+// brought to the event, alpha back to 0); the stepper's handler of the event gives the phase
+// again where the particle is still in contact (set(), after a wall, a pair, a slide's stop, a
 // wake). The end of a face and leaving a wall work as for a block; a disc that falls asleep
 // stops turning (its contacts' friction would stop it).
 //
@@ -42,12 +42,12 @@
 // event, Kind::Roll, of a disc that cannot roll); there static friction holds it if
 // |g_t| ≤ μ g_n (it then rests, asleep if held, as a slide stopped on a face does), else it
 // slides back the way gravity pulls it. The same law as a block on a segment's face
-// (sliding.cpp), so sliding along the floor costs no events between its ends either.
+// (slides.cpp), so sliding along the floor costs no events between its ends either.
+
+#include "exact/rolls.hpp"
 
 #include <cmath>
 
-#include "exact/motion.hpp"
-#include "exact/stepper.hpp"
 #include "exact/time_of_impact.hpp"
 
 namespace psb::exact {
@@ -60,11 +60,26 @@ constexpr double kSlipRounding = 1e-12;
 
 }  // namespace
 
-bool ExactStepper::rollingSurface(std::uint32_t i, double& nx, double& ny) const {
-    const Body& a = bodies_[i];
+void Rolls::reset(const ParticleArrays& p, double friction) {
+    turn_.resize(p.rotation ? p.size() : 0);
+    for (std::uint32_t i = 0; i < turn_.size(); ++i)
+        turn_[i] = Turn{p.angle[i], 0.0, p.omega[i], p.spinWeight(i), 0.0};
+    rough_ = p.rotation && friction > 0.0;
+}
+
+void Rolls::stopTurning(std::uint32_t i, double now) {
+    if (rough_ && turn_[i].q > 0.0) {
+        advanceTurn(turn_[i], now);
+        turn_[i].omega = 0.0;
+    }
+}
+
+bool Rolls::surface(std::uint32_t i, const Body& a, const Cold& c, const Slides& slides,
+                    const ObstacleCells& obstacles, const Gravity& g, double& nx,
+                    double& ny) const {
     if (a.flags & kSliding) {
         // The face's normal on the side the centre is on.
-        const Obstacle& o = obstacles_[slide_[i].obstacle];
+        const Obstacle& o = obstacles[slides[i].obstacle];
         const double ex = o.b.x() - o.a.x(), ey = o.b.y() - o.a.y();
         const double length = std::sqrt(ex * ex + ey * ey);
         const double px = -ey / length, py = ex / length;
@@ -75,32 +90,31 @@ bool ExactStepper::rollingSurface(std::uint32_t i, double& nx, double& ny) const
     }
     // One wall, that gravity presses the disc into (a corner holds it along both axes; a disc
     // pinned across an axis touches both walls of it).
-    const Cold& c = cold_[i];
     const bool restX = (a.flags & kRestX) != 0, restY = (a.flags & kRestY) != 0;
     if (restX == restY || c.pinX || c.pinY) return false;
-    nx = restX ? (gx_ > 0.0 ? -1.0 : 1.0) : 0.0;
-    ny = restY ? (gy_ > 0.0 ? -1.0 : 1.0) : 0.0;
+    nx = restX ? (g.x > 0.0 ? -1.0 : 1.0) : 0.0;
+    ny = restY ? (g.y > 0.0 ? -1.0 : 1.0) : 0.0;
     return true;
 }
 
-void ExactStepper::setRoll(std::uint32_t i) {
-    Body& a = bodies_[i];
+void Rolls::set(std::uint32_t i, Body& a, const Cold& c, Slides& slides,
+                const ObstacleCells& obstacles, const Gravity& g, double mu) {
     if (!rough_) return;
     Turn& r = turn_[i];
     double nx, ny;
-    // A block on a segment's face slides by sliding.cpp's law (setSlideAcceleration).
+    // A block on a segment's face slides by slides.cpp's law (Slides::setBlockAcceleration).
     if ((a.flags & (kHeld | kAsleep)) || (r.q == 0.0 && (a.flags & kSliding)) ||
-        !rollingSurface(i, nx, ny)) {
-        if (a.flags & kRolling) endRoll(i);
+        !surface(i, a, c, slides, obstacles, g, nx, ny)) {
+        if (a.flags & kRolling) end(i, a);
         return;
     }
     advanceTurn(r, a.t);
     const double tx = -ny, ty = nx;
-    const double gt = gx_ * tx + gy_ * ty, gn = -(gx_ * nx + gy_ * ny);
-    const double friction = def_.friction * gn;
+    const double gt = g.x * tx + g.y * ty, gn = -(g.x * nx + g.y * ny);
+    const double friction = mu * gn;
     const double vt = a.vx * tx + a.vy * ty;
     const double slip = vt - r.omega * a.r;
-    Slide& s = slide_[i];
+    Slide& s = slides[i];
     s.slipEnds = kNever;
     double at;
     if (r.q == 0.0) {
@@ -136,42 +150,40 @@ void ExactStepper::setRoll(std::uint32_t i) {
     a.flags |= kRolling;
 }
 
-void ExactStepper::endRoll(std::uint32_t i) {
-    Body& a = bodies_[i];
+void Rolls::end(std::uint32_t i, Body& a) {
     Turn& r = turn_[i];
     advanceTurn(r, a.t);
     r.alpha = 0.0;
     a.flags &= ~kRolling;
 }
 
-void ExactStepper::predictRoll(std::uint32_t i, double now, Event& best) const {
-    const double t = std::max(now, slide_[i].slipEnds);
-    if (t < best.time) best = {t, 0, 0, Kind::Roll, 0};
-}
-
-void ExactStepper::handleRoll(std::uint32_t i, const Event& ev) {
+bool Rolls::endSlip(std::uint32_t i, Body& a, const Cold& c, Slides& slides,
+                    const ObstacleCells& obstacles, const Gravity& g, double friction, double now) {
     // The slip is zero now, to rounding: the disc rolls from here (ω = v_t / r exactly), or
     // slips the other way if friction cannot hold a rolling disc.
-    Body& a = bodies_[i];
-    advance(i, ev.time);
-    ++events_;
-    ++a.count;  // its acceleration changes: what neighbours predicted with it is stale
     Turn& r = turn_[i];
-    advanceTurn(r, ev.time);
+    advanceTurn(r, now);
     if (r.q == 0.0) {
         // A block stopped by friction (it has no velocity across the wall it rests on): at
-        // rest, asleep if it may sleep there, or sliding back (settleAfterPair gives the phase).
+        // rest, or sliding back (the stepper settles it, and that gives the phase).
         a.vx = a.vy = 0.0;
-        endRoll(i);
-        settleAfterPair(i, false);
-    } else {
-        double nx, ny;
-        if (rollingSurface(i, nx, ny)) r.omega = (a.vx * -ny + a.vy * nx) / a.r;
-        endRoll(i);
-        setRoll(i);
+        end(i, a);
+        return true;
     }
-    predictCollision(i, ev.time);
-    predictCell(i, ev.time);
+    double nx, ny;
+    if (surface(i, a, c, slides, obstacles, g, nx, ny)) r.omega = (a.vx * -ny + a.vy * nx) / a.r;
+    end(i, a);
+    set(i, a, c, slides, obstacles, g, friction);
+    return false;
+}
+
+void Rolls::sync(ParticleArrays& p, const std::vector<std::uint32_t>& order, double t) const {
+    for (std::size_t k = 0; k < turn_.size(); ++k) {
+        Turn r = turn_[k];
+        advanceTurn(r, t);
+        p.angle[order[k]] = r.angle;
+        p.omega[order[k]] = r.omega;
+    }
 }
 
 }  // namespace psb::exact
