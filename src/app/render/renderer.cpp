@@ -115,7 +115,7 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
 
 DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                          const ViewOptions& options, Trails* trails, ParticleId selected,
-                         const RenderAvoid* avoid, const GeometryBatch* underlay) {
+                         const LabelKeepOut* avoid, const GeometryBatch* underlay) {
     const Palette& colours = palette(options.theme);
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     setDrawColor(renderer_, colours.background);
@@ -297,33 +297,16 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             stats.labelsSuppressed = true;
         } else {
             const int lh = labelFont_->lineHeight();
-            // The box's outline on screen: a label is inside it or outside, never across a wall.
-            const Camera::ScreenBox sb = camera.boxOnScreen(world.def().width, world.def().height);
-            LabelRoom room;
-            room.window = {0, 0, static_cast<int>(w), static_cast<int>(h)};
-            if (world.def().walls) {
-                room.box = {static_cast<int>(std::floor(sb.topLeft.x())),
-                            static_cast<int>(std::floor(sb.topLeft.y())),
-                            static_cast<int>(std::ceil(sb.size.x())) + 1,
-                            static_cast<int>(std::ceil(sb.size.y())) + 1};
-            }
+            std::vector<PixelRect> keepOut;
+            if (avoid != nullptr) keepOut = avoid->rects;
+            // Pegs are as solid as the discs.
+            for (const PixelRect& r : pegsOnScreen(world, camera))
+                keepOut.push_back(r);
+            LabelRoom room =
+                labelRoom(world, camera, {0, 0, static_cast<int>(w), static_cast<int>(h)},
+                          std::move(keepOut));
             if (avoid != nullptr) {
-                for (const SDL_Rect& r : *avoid)
-                    room.keepOut.push_back({r.x, r.y, r.w, r.h});
-            }
-            // The scene's walls at any angle are walls too (the funnel's sides), its pegs
-            // solid as the discs: a label crosses none of them.
-            for (const Obstacle& o : world.obstacles()) {
-                const Vec2 a = camera.worldToScreen(o.a), b = camera.worldToScreen(o.b);
-                const double r = camera.toScreen(o.radius) + 1.0;
-                if (o.isPeg()) {
-                    room.keepOut.push_back({static_cast<int>(std::floor(a.x() - r)),
-                                            static_cast<int>(std::floor(a.y() - r)),
-                                            static_cast<int>(std::ceil(2.0 * r)) + 1,
-                                            static_cast<int>(std::ceil(2.0 * r)) + 1});
-                } else {
-                    room.walls.push_back({a.x(), a.y(), b.x(), b.y(), r});
-                }
+                room.walls.insert(room.walls.end(), avoid->walls.begin(), avoid->walls.end());
             }
             using Lines = std::array<std::array<char, 64>, 5>;
             std::vector<Lines> texts(visible.size());
@@ -368,7 +351,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
                 const int cx = static_cast<int>(std::lround(c.x()));
                 const int cy = static_cast<int>(std::lround(c.y()));
-                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + 2;
+                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
                 asks[k].disc = {cx - r, cy - r, 2 * r, 2 * r};
                 asks[k].size = {width + 4, 5 * lh + 1};
                 asks[k].shortSize = {shortWidth + 4, 2 * lh + 1};

@@ -26,6 +26,7 @@
 #include "render/trails.hpp"
 #include "session/camera.hpp"
 #include "session/view_options.hpp"
+#include "view/label_places.hpp"
 #include "view/mass_shade.hpp"
 #include "view/palette.hpp"
 
@@ -34,7 +35,6 @@ namespace psb::app {
 class Font;
 
 /// Screen rectangles labels keep clear of (the HUD and the panels), pixels.
-using RenderAvoid = std::vector<SDL_Rect>;
 
 /// What the last draw() did, for the HUD.
 struct DrawStats {
@@ -66,13 +66,13 @@ class Renderer {
     /// they are drawn under the discs as options.trails says, `selected` naming the particle of
     /// TrailMode::Selected. Labels go at whole pixels (glyphs drawn at fractions of a pixel are
     /// resampled into garble), where view/label_places.hpp says: clear of every disc, peg,
-    /// other label and rectangle of `avoid`, across no wall; a label with no such place is left
-    /// out.
+    /// other label and rectangle of `avoid`, across no wall of the scene nor of `avoid`; a label
+    /// with no such place is left out.
     /// `underlay` (drawn with the circle texture) goes over the walls and obstacles and under
     /// the trails and discs: the grid's lines.
     DrawStats draw(const World& world, double frame, const Camera& camera,
                    const ViewOptions& options, Trails* trails = nullptr,
-                   ParticleId selected = kNullParticle, const RenderAvoid* avoid = nullptr,
+                   ParticleId selected = kNullParticle, const LabelKeepOut* avoid = nullptr,
                    const GeometryBatch* underlay = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.

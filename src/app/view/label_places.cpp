@@ -11,6 +11,11 @@ namespace psb::app {
 
 namespace {
 
+/// overlaps() for rectangles known not to be empty, inline in the loops over discs.
+inline bool meet(const PixelRect& a, const PixelRect& b) {
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
+
 bool contains(const PixelRect& outer, const PixelRect& r) {
     return r.x >= outer.x && r.y >= outer.y && r.x + r.w <= outer.x + outer.w &&
            r.y + r.h <= outer.y + outer.h;
@@ -88,7 +93,7 @@ class DiscIndex {
         for (int row = s.r0; row <= s.r1; ++row) {
             for (int column = s.c0; column <= s.c1; ++column) {
                 for (const int i : cell(row, column))
-                    if (overlaps(r, discs_[static_cast<std::size_t>(i)])) return true;
+                    if (meet(r, discs_[static_cast<std::size_t>(i)])) return true;
             }
         }
         return false;
@@ -105,7 +110,7 @@ class DiscIndex {
                     const auto k = static_cast<std::size_t>(i);
                     if (seen_[k] == stamp_) continue;
                     seen_[k] = stamp_;
-                    n += overlaps(r, discs_[k]);
+                    n += meet(r, discs_[k]);
                 }
             }
         }
@@ -313,6 +318,85 @@ std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const Lab
     for (LabelPlace& p : brief)
         p.shortForm = true;
     return brief;
+}
+
+ReadingPlace firstClearPlace(const std::vector<std::vector<PixelRect>>& places,
+                             const std::vector<PixelRect>& discRects, const LabelRoom& room) {
+    DiscIndex discs(discRects, room.window);
+    const auto allowed = [&room](const PixelRect& r) {
+        return contains(room.window, r) && clearOf(r, room.keepOut);
+    };
+    // A clear place: any disc rules one out, quickly found in a crowd.
+    for (std::size_t form = 0; form < places.size(); ++form) {
+        for (const PixelRect& r : places[form]) {
+            if (allowed(r) && !discs.any(r) && !crossesWalls(r, room)) return {r, form, 0, false};
+        }
+    }
+    // None: the least covered of each form's first few allowed (counting costs in a gas).
+    ReadingPlace best;
+    for (std::size_t form = 0; form < places.size(); ++form) {
+        std::size_t tried = 0;
+        for (const PixelRect& r : places[form]) {
+            if (!allowed(r)) continue;
+            const ReadingPlace here{r, form, discs.count(r), crossesWalls(r, room)};
+            if (best.at.w == 0 ||
+                std::pair{here.discs, here.acrossWall} < std::pair{best.discs, best.acrossWall}) {
+                best = here;
+            }
+            if (++tried == kReadingFallbacks) break;
+        }
+    }
+    return best;
+}
+
+LabelRoom labelRoom(const World& world, const Camera& camera, const PixelRect& window,
+                    std::vector<PixelRect> keepOut) {
+    LabelRoom room;
+    room.window = window;
+    if (world.def().walls) {
+        // The box's outline on screen: a label is inside it or outside, never across a wall.
+        const Camera::ScreenBox sb = camera.boxOnScreen(world.def().width, world.def().height);
+        room.box = {static_cast<int>(std::floor(sb.topLeft.x())),
+                    static_cast<int>(std::floor(sb.topLeft.y())),
+                    static_cast<int>(std::ceil(sb.size.x())) + 1,
+                    static_cast<int>(std::ceil(sb.size.y())) + 1};
+    }
+    room.keepOut = std::move(keepOut);
+    // The scene's walls at any angle are walls too (the funnel's sides).
+    for (const Obstacle& o : world.obstacles()) {
+        if (o.isPeg()) continue;
+        const Vec2 a = camera.worldToScreen(o.a), b = camera.worldToScreen(o.b);
+        room.walls.push_back({a.x(), a.y(), b.x(), b.y(), camera.toScreen(o.radius) + 1.0});
+    }
+    return room;
+}
+
+std::vector<PixelRect> pegsOnScreen(const World& world, const Camera& camera) {
+    std::vector<PixelRect> out;
+    for (const Obstacle& o : world.obstacles()) {
+        if (!o.isPeg()) continue;
+        const Vec2 c = camera.worldToScreen(o.a);
+        const double r = camera.toScreen(o.radius) + 1.0;
+        const int side = static_cast<int>(std::ceil(2.0 * r)) + 1;
+        out.push_back({static_cast<int>(std::floor(c.x() - r)),
+                       static_cast<int>(std::floor(c.y() - r)), side, side});
+    }
+    return out;
+}
+
+std::vector<PixelRect> discsOnScreen(const World& world, const Camera& camera,
+                                     const PixelRect& window) {
+    std::vector<PixelRect> out;
+    const ParticleArrays& p = world.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+        const int cx = static_cast<int>(std::lround(c.x()));
+        const int cy = static_cast<int>(std::lround(c.y()));
+        const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
+        const PixelRect d{cx - r, cy - r, 2 * r, 2 * r};
+        if (overlaps(d, window)) out.push_back(d);
+    }
+    return out;
 }
 
 }  // namespace psb::app

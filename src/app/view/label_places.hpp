@@ -17,10 +17,16 @@
 // many. Where that leaves a label out and the labels have a short form (LabelAsk::shortSize),
 // every label takes its short form if that leaves fewer out (a small box at 200 %: two lines
 // beside each ball rather than none).
+//
+// The ruler's reading is placed among the same places (firstClearPlace): clear of the discs
+// where a place is, over the fewest where none is.
 
 #include <cstddef>
 #include <vector>
 
+#include <particle_sandbox/world.hpp>
+
+#include "session/camera.hpp"
 #include "view/pixel_rect.hpp"
 
 namespace psb::app {
@@ -42,6 +48,13 @@ struct LabelRoom {
     PixelRect box;
     std::vector<ScreenWall> walls;
     std::vector<PixelRect> keepOut;
+};
+
+/// What the particles' labels keep clear of besides the discs and the scene's walls: the
+/// panels and the ruler's reading (`rects`), the ruler itself (`walls`).
+struct LabelKeepOut {
+    std::vector<PixelRect> rects;
+    std::vector<ScreenWall> walls;
 };
 
 /// One label to place.
@@ -85,5 +98,44 @@ inline constexpr int kLabelRings = 48;
 /// that gap in every direction.
 [[nodiscard]] std::vector<PixelRect> placesOnRings(const PixelRect& anchor, PixelPoint size,
                                                    int rings);
+
+/// The room for labels over `world` seen through `camera` in `window`: its walled box's outline,
+/// its walls at an angle, and `keepOut`.
+[[nodiscard]] LabelRoom labelRoom(const World& world, const Camera& camera, const PixelRect& window,
+                                  std::vector<PixelRect> keepOut);
+
+/// The pegs of `world` seen through `camera`, each one's bounding square and a pixel round it:
+/// as solid as the discs to a label.
+[[nodiscard]] std::vector<PixelRect> pegsOnScreen(const World& world, const Camera& camera);
+
+/// The discs of `world` seen through `camera` that meet `window`, as labels keep clear of them:
+/// each one's bounding square with a gap of kLabelGap pixels round it.
+[[nodiscard]] std::vector<PixelRect> discsOnScreen(const World& world, const Camera& camera,
+                                                   const PixelRect& window);
+
+/// Pixels a label keeps from its disc's rim.
+inline constexpr int kLabelGap = 2;
+
+/// A place for a box that must be read whole (firstClearPlace), and what it covers.
+struct ReadingPlace {
+    PixelRect at;             ///< w == 0: none inside the window and clear of keepOut
+    std::size_t form = 0;     ///< which of the forms' places it is
+    std::size_t discs = 0;    ///< discs it covers
+    bool acrossWall = false;  ///< it crosses a wall
+    [[nodiscard]] bool clear() const { return at.w > 0 && discs == 0 && !acrossWall; }
+};
+
+/// Places counted for the discs they cover when none is clear (firstClearPlace).
+inline constexpr std::size_t kReadingFallbacks = 24;
+
+/// For a box that can take several forms (the ruler's reading in one, two or three lines),
+/// `places` for each form in order of preference: the first place inside the room's window,
+/// clear of its keepOut, of every one of `discs` and across no wall, trying the first form's
+/// places, then the second's...; where none is, of the first kReadingFallbacks of each form's
+/// places inside the window and clear of keepOut, the one that covers the fewest discs, then
+/// crosses no wall (the first of equals).
+[[nodiscard]] ReadingPlace firstClearPlace(const std::vector<std::vector<PixelRect>>& places,
+                                           const std::vector<PixelRect>& discs,
+                                           const LabelRoom& room);
 
 }  // namespace psb::app

@@ -300,7 +300,7 @@ TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
     o.arrows = false;
     o.labels = true;
     // Nothing may be drawn above y = 200 (a panel there).
-    const RenderAvoid avoid{SDL_Rect{0, 0, kSize, 200}};
+    const LabelKeepOut avoid{{PixelRect{0, 0, kSize, 200}}, {}};
     const DrawStats s = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, &avoid);
     SDL_RenderPresent(sdl_);
     EXPECT_EQ(brightPixels(0, 0, kSize, 200), 0);
