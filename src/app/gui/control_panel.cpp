@@ -435,9 +435,9 @@ void ControlPanel::look(const Session& s) {
     // The scale is applied when the slider is let go: the panel grows under the pointer.
     int percent = scaleHeld_ ? scaleDraft_ : static_cast<int>(std::lround(100.0 * v.uiScale));
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x * 0.45f);
-    if (ImGui::SliderInt("UI scale", &percent, static_cast<int>(100 * kMinUiScale),
-                         static_cast<int>(100 * kMaxUiScale), "%d %%",
-                         ImGuiSliderFlags_AlwaysClamp)) {
+    if (widgets::sliderInt("UI scale", percent, static_cast<int>(100 * kMinUiScale),
+                           static_cast<int>(100 * kMaxUiScale), "%d %%",
+                           ImGuiSliderFlags_AlwaysClamp)) {
         scaleDraft_ = percent;
     }
     scaleHeld_ = ImGui::IsItemActive();

@@ -65,7 +65,7 @@ void ControlPanel::physics(const Session& s) {
     if (solver.mode == StepMode::Substep) {
         ImGui::SetNextItemWidth(150.f);
         int k = substeps_;
-        if (ImGui::SliderInt("k substeps", &k, 2, kMaxPanelSubsteps)) {
+        if (widgets::sliderInt("k substeps", k, 2, kMaxPanelSubsteps)) {
             substeps_ = k;
             out_.emplace_back(cmd::SetMode{StepMode::Substep, k});
         }

@@ -1,13 +1,17 @@
 #pragma once
 // Small widgets the control panel's sections share: text wrapped at spaces, a tooltip on the
-// last item, a slider of a double that reports whether this change continues a drag, and a
+// last item, sliders whose value reads over their handle (a double's reporting whether this
+// change continues a drag), and a
 // two-column row of a readout.
 
+#include <array>
+#include <cstdio>
 #include <string>
 #include <string_view>
 
 #include <imgui.h>
 
+#include "gui/slider.hpp"
 #include "gui/tooltips.hpp"
 #include "session/view_options.hpp"
 #include "view/palette.hpp"
@@ -82,11 +86,35 @@ inline void tip(const char* text) {
 
 /// A slider of `value` in [lo, hi]; true when the user changed it, with `continues` set when
 /// the change is part of a drag that started in an earlier frame (one user action per drag).
+/// Its value reads wherever its handle is (slider.hpp).
 inline bool slider(const char* label, double& value, double lo, double hi, const char* format,
                    bool& continues, ImGuiSliderFlags flags = 0) {
-    const bool changed =
-        ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+    const float width = ImGui::CalcItemWidth();
+    bool changed = false;
+    {
+        const SliderHandleStyle narrow;
+        changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
+    }
     continues = !ImGui::IsItemActivated();
+    std::array<char, 64> text{};
+    std::snprintf(text.data(), text.size(), format, value);
+    valueOverHandle(text.data(), width);
+    return changed;
+}
+
+/// A slider of a whole number `value` in [lo, hi], as ImGui::SliderInt, its value reading
+/// wherever its handle is (slider.hpp).
+inline bool sliderInt(const char* label, int& value, int lo, int hi, const char* format = "%d",
+                      ImGuiSliderFlags flags = 0) {
+    const float width = ImGui::CalcItemWidth();
+    bool changed = false;
+    {
+        const SliderHandleStyle narrow;
+        changed = ImGui::SliderInt(label, &value, lo, hi, format, flags);
+    }
+    std::array<char, 64> text{};
+    std::snprintf(text.data(), text.size(), format, value);
+    valueOverHandle(text.data(), width);
     return changed;
 }
 

@@ -27,13 +27,7 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     if (frame.view.trails == TrailMode::Selected) trails_.follow(frame.trailParticle);
     if (frame.view.trails != TrailMode::Off) trails_.update(world);
 
-    RenderAvoid avoid;
-    for (const PixelRect& r : panelRects(frame.layout))
-        avoid.push_back(sdlRect(r));
-    // Labels keep out from under the control panel (drawn over them).
-    if (frame.controlsInset > 0) {
-        avoid.push_back({0, 0, frame.controlsInset, camera.viewportHeight()});
-    }
+    const LabelKeepOut avoid = labelKeepOut(frame, labelFont_);
     const Palette& colours = palette(frame.view.theme);
     gridLines_.clear();
     if (frame.grid) batchGridLines(*frame.grid, gridLines_, colours);

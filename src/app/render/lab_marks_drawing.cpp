@@ -1,6 +1,9 @@
 #include "render/lab_marks_drawing.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "render/sdl_color.hpp"
 #include "render/text.hpp"
@@ -23,11 +26,22 @@ void line(GeometryBatch& batch, const Vec2& a, const Vec2& b, double width, SDL_
                    SDL_FPoint{0.5f, 0.5f});
 }
 
+/// Each of its lines centred on its place (or from its left), the block centred on it.
 void label(const MarkLabel& l, const Font& font, SDL_Color color, GeometryBatch& text) {
-    const int w = font.measure(l.text);
-    const float x = std::round(static_cast<float>(l.at.x()) - (l.left ? 0.f : 0.5f * w));
-    const float y = std::round(static_cast<float>(l.at.y()) - 0.5f * font.lineHeight());
-    font.layout(l.text, x, y, color, text);
+    std::vector<std::string> lines;
+    for (std::size_t from = 0; from <= l.text.size();) {
+        const std::size_t end = std::min(l.text.find('\n', from), l.text.size());
+        lines.push_back(l.text.substr(from, end - from));
+        from = end + 1;
+    }
+    const int lh = font.lineHeight();
+    const float top = std::round(static_cast<float>(l.at.y()) -
+                                 0.5f * static_cast<float>(lh * static_cast<int>(lines.size())));
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const int w = font.measure(lines[k]);
+        const float x = std::round(static_cast<float>(l.at.x()) - (l.left ? 0.f : 0.5f * w));
+        font.layout(lines[k], x, top + static_cast<float>(lh * static_cast<int>(k)), color, text);
+    }
 }
 
 }  // namespace

@@ -115,7 +115,7 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
 
 DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                          const ViewOptions& options, Trails* trails, ParticleId selected,
-                         const RenderAvoid* avoid, const GeometryBatch* underlay) {
+                         const LabelKeepOut* avoid, const GeometryBatch* underlay) {
     const Palette& colours = palette(options.theme);
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     setDrawColor(renderer_, colours.background);
@@ -138,7 +138,6 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
     arrows_.clear();
     labelBoxes_.clear();
     labelText_.clear();
-    labelOutline_.clear();
 
     const ParticleArrays& p = world.particles();
     // A particle's colour as drawn: the scene's, or on the light theme the palette's for it
@@ -298,18 +297,16 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             stats.labelsSuppressed = true;
         } else {
             const int lh = labelFont_->lineHeight();
-            // The box's outline on screen: a label is inside it or outside, never across a wall.
-            const Camera::ScreenBox sb = camera.boxOnScreen(world.def().width, world.def().height);
-            const PixelRect walls = world.def().walls
-                                        ? PixelRect{static_cast<int>(std::floor(sb.topLeft.x())),
-                                                    static_cast<int>(std::floor(sb.topLeft.y())),
-                                                    static_cast<int>(std::ceil(sb.size.x())) + 1,
-                                                    static_cast<int>(std::ceil(sb.size.y())) + 1}
-                                        : PixelRect{};
             std::vector<PixelRect> keepOut;
+            if (avoid != nullptr) keepOut = avoid->rects;
+            // Pegs are as solid as the discs.
+            for (const PixelRect& r : pegsOnScreen(world, camera))
+                keepOut.push_back(r);
+            LabelRoom room =
+                labelRoom(world, camera, {0, 0, static_cast<int>(w), static_cast<int>(h)},
+                          std::move(keepOut));
             if (avoid != nullptr) {
-                for (const SDL_Rect& r : *avoid)
-                    keepOut.push_back({r.x, r.y, r.w, r.h});
+                room.walls.insert(room.walls.end(), avoid->walls.begin(), avoid->walls.end());
             }
             using Lines = std::array<std::array<char, 64>, 5>;
             std::vector<Lines> texts(visible.size());
@@ -354,15 +351,14 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
                 const int cx = static_cast<int>(std::lround(c.x()));
                 const int cy = static_cast<int>(std::lround(c.y()));
-                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + 2;
+                const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
                 asks[k].disc = {cx - r, cy - r, 2 * r, 2 * r};
                 asks[k].size = {width + 4, 5 * lh + 1};
                 asks[k].shortSize = {shortWidth + 4, 2 * lh + 1};
                 asks[k].inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
                                 p.x[i] <= world.def().width && p.y[i] <= world.def().height;
             }
-            const std::vector<LabelPlace> places =
-                placeLabels(asks, {0, 0, static_cast<int>(w), static_cast<int>(h)}, walls, keepOut);
+            const std::vector<LabelPlace> places = placeLabels(asks, room);
             for (std::size_t k = 0; k < places.size(); ++k) {
                 const LabelPlace& place = places[k];
                 const PixelRect& box = place.at;
@@ -389,11 +385,9 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     labelBoxes_.polygon4(pt(from + side), pt(near + side), pt(near - side),
                                          pt(from - side), ink);
                 }
-                if (!place.overDiscs) {
-                    labelBoxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
-                                     static_cast<float>(box.x + box.w),
-                                     static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
-                }
+                labelBoxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
+                                 static_cast<float>(box.x + box.w),
+                                 static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
                 const int lineCount = place.shortForm ? 2 : 5;
                 for (int line = 0; line < lineCount; ++line) {
                     const auto at = static_cast<std::size_t>(line);
@@ -401,18 +395,11 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                         place.shortForm ? shortTexts[k][at].data() : texts[k][at].data();
                     const float x = static_cast<float>(box.x + 2);
                     const float y = static_cast<float>(box.y + 1 + line * lh);
-                    if (place.overDiscs) {
-                        for (const auto& [dx, dy] : {std::pair{-1, 0}, {1, 0}, {0, -1}, {0, 1}})
-                            labelFont_->layout(text, x + static_cast<float>(dx),
-                                               y + static_cast<float>(dy),
-                                               sdlColor(colours.labelOutline), labelOutline_);
-                    }
                     labelFont_->layout(text, x, y, sdlColor(colours.labelText), labelText_);
                 }
                 ++stats.labelled;
             }
             labelBoxes_.draw(renderer_, nullptr);
-            labelFont_->draw(labelOutline_);
             labelFont_->draw(labelText_);
         }
     }

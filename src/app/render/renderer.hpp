@@ -26,6 +26,7 @@
 #include "render/trails.hpp"
 #include "session/camera.hpp"
 #include "session/view_options.hpp"
+#include "view/label_places.hpp"
 #include "view/mass_shade.hpp"
 #include "view/palette.hpp"
 
@@ -34,7 +35,6 @@ namespace psb::app {
 class Font;
 
 /// Screen rectangles labels keep clear of (the HUD and the panels), pixels.
-using RenderAvoid = std::vector<SDL_Rect>;
 
 /// What the last draw() did, for the HUD.
 struct DrawStats {
@@ -65,14 +65,14 @@ class Renderer {
     /// step of gravity gives it rests, and has no arrow (restingSpeed). When `trails` is given
     /// they are drawn under the discs as options.trails says, `selected` naming the particle of
     /// TrailMode::Selected. Labels go at whole pixels (glyphs drawn at fractions of a pixel are
-    /// resampled into garble), above, below, right or left of their disc (slid along that side
-    /// to stay in the window, and in the box for a disc inside it), wherever they overlap
-    /// neither another label nor a rectangle of `avoid`; a label with no such place is left out.
+    /// resampled into garble), where view/label_places.hpp says: clear of every disc, peg,
+    /// other label and rectangle of `avoid`, across no wall of the scene nor of `avoid`; a label
+    /// with no such place is left out.
     /// `underlay` (drawn with the circle texture) goes over the walls and obstacles and under
     /// the trails and discs: the grid's lines.
     DrawStats draw(const World& world, double frame, const Camera& camera,
                    const ViewOptions& options, Trails* trails = nullptr,
-                   ParticleId selected = kNullParticle, const RenderAvoid* avoid = nullptr,
+                   ParticleId selected = kNullParticle, const LabelKeepOut* avoid = nullptr,
                    const GeometryBatch* underlay = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
@@ -97,7 +97,7 @@ class Renderer {
     SDL_Renderer* renderer_;
     const Font* labelFont_;
     SDL_Texture* circle_ = nullptr;
-    GeometryBatch discs_, arrows_, labelBoxes_, labelText_, labelOutline_;
+    GeometryBatch discs_, arrows_, labelBoxes_, labelText_;
     ImageLayer trailLayer_, smallLayer_;
     TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
     std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none

@@ -60,7 +60,7 @@ std::string screenText(const FrameView& frame, const DrawStats& drawn) {
         section(out, "Last collision", lines);
     }
     if (frame.grid) section(out, "Grid", {frame.grid->legend});
-    if (frame.ruler) section(out, "Ruler", {frame.ruler->label.text});
+    if (frame.ruler) section(out, "Ruler", {frame.ruler->line});
     if (frame.wallAngle) section(out, "Wall tool", {frame.wallAngle->text});
     if (o.showHelp) section(out, "Help", o.help);
     if (frame.bins && frame.layout.bins.w > 0) {

@@ -65,6 +65,22 @@ std::string speedLabel(const CappedVelocity& v) {
 
 }  // namespace
 
+LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) {
+    LabelKeepOut out;
+    out.rects = panelRects(frame.layout);
+    // Labels keep out from under the control panel (drawn over them).
+    if (frame.controlsInset > 0 && frame.camera != nullptr) {
+        out.rects.push_back({0, 0, frame.controlsInset, frame.camera->viewportHeight()});
+    }
+    // The ruler's reading is placed first, among the discs; the labels go round it and the
+    // ruler.
+    if (frame.ruler) {
+        out.rects.push_back(labelRect(frame.ruler->label, labelFont, kReadingPad));
+        out.walls.push_back(rulerBand(*frame.ruler));
+    }
+    return out;
+}
+
 std::string recordingLabel(const VideoStatus& video) {
     const auto whole = static_cast<long>(video.seconds);
     char buf[96];
@@ -273,9 +289,17 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (f.recordingMark) f.recordingMark->at = f.layout.recording;
     if (f.grid || f.ruler) {
         // The marks' labels are read whole: in the window right of the control panel, clear of
-        // every panel and of each other.
+        // every panel and of each other; the ruler's reading off the discs and pegs where it can.
+        const PixelRect window{left, 0, req.width - left, req.height};
+        std::vector<PixelRect> discs;
+        if (f.ruler) {
+            discs = discsOnScreen(world, session.camera(), window);
+            for (const PixelRect& r : pegsOnScreen(world, session.camera()))
+                discs.push_back(r);
+        }
         keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
-                            {left, 0, req.width - left, req.height}, panelRects(f.layout));
+                            labelRoom(world, session.camera(), window, panelRects(f.layout)),
+                            discs);
     }
     f.title =
         windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());

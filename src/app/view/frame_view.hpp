@@ -134,6 +134,10 @@ struct FrameStats {
                                    const TextMeasure& hudFont, const TextMeasure& labelFont,
                                    const ControlsWidth& controls);
 
+/// What the particles' labels keep clear of besides the discs and the scene's walls: the
+/// panels, the control panel's column, the ruler and its reading (measured in `labelFont`).
+[[nodiscard]] LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont);
+
 /// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
 /// left", "dropper: empty".
 [[nodiscard]] std::string dropperLabel(const Dropper& dropper);

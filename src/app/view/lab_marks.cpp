@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
+#include <utility>
 
 #include "session/units.hpp"
 #include "view/screen_layout.hpp"
@@ -13,6 +15,10 @@ namespace {
 
 /// How far the reading's centre is from the ruler's middle, pixels.
 constexpr double kReadingOffset = 22.0;
+/// The reading's places are tried beside the ruler's middle and this many steps further out,
+/// kReadingStep pixels each.
+constexpr int kReadingSteps = 24;
+constexpr int kReadingStep = 8;
 
 /// The smallest of 1, 2 or 5 × 10^k at least `least`.
 double roundStep(double least) {
@@ -109,7 +115,10 @@ RulerView rulerView(const LabRuler& ruler, const Camera& camera) {
             v.ticks.push_back({at, at + n * (strong ? 9.0 : 5.0), strong});
         }
     }
-    v.label.text = rulerLine(ruler);
+    v.line = rulerLine(ruler);
+    for (int k = 0; k < 3; ++k)
+        v.forms[static_cast<std::size_t>(k)] = rulerLines(ruler, k + 1);
+    v.label.text = v.line;
     // Beside the middle, on the side of the ticks' normal turned to point down the screen.
     const Vec2 side = n.y() >= 0.0 ? n : Vec2(-n);
     v.label.at = 0.5 * (v.a + v.b) + side * kReadingOffset;
@@ -117,53 +126,96 @@ RulerView rulerView(const LabRuler& ruler, const Camera& camera) {
 }
 
 PixelRect labelRect(const MarkLabel& label, const TextMeasure& font, int pad) {
-    const int w = font.measure(label.text), h = font.lineHeight();
+    int w = 0, lines = 0;
+    for (std::size_t from = 0; from <= label.text.size(); ++lines) {
+        const std::size_t end = std::min(label.text.find('\n', from), label.text.size());
+        w = std::max(w, font.measure(std::string_view(label.text).substr(from, end - from)));
+        from = end + 1;
+    }
+    const int h = lines * font.lineHeight();
     // As the drawing layer places the text: whole pixels, centred or from the left.
     const int x = static_cast<int>(std::lround(label.at.x() - (label.left ? 0.0 : 0.5 * w)));
     const int y = static_cast<int>(std::lround(label.at.y() - 0.5 * h));
     return {x - pad, y - pad / 2, w + 2 * pad, h + pad};
 }
 
+ScreenWall rulerBand(const RulerView& ruler) {
+    const Vec2 d = ruler.b - ruler.a;
+    const double length = d.norm();
+    const Vec2 n =
+        length > 0.0 && std::isfinite(length) ? Vec2(Vec2(-d.y(), d.x()) / length) : Vec2(0.0, 1.0);
+    // The ticks' side, as rulerView turned it.
+    const Vec2 face = (ruler.label.at - 0.5 * (ruler.a + ruler.b)).dot(n) >= 0.0 ? n : Vec2(-n);
+    // The face is 14 pixels (as drawn), the handles 5 either side of the edge.
+    const Vec2 a = ruler.a + 7.0 * face, b = ruler.b + 7.0 * face;
+    return {a.x(), a.y(), b.x(), b.y(), 9.0};
+}
+
+namespace {
+
+/// The reading's places round the ruler's middle: beside it, below first (the ticks' side, down
+/// the screen), then above, right and left, each slid along its side; then the same a step
+/// further out, kReadingSteps times.
+std::vector<PixelRect> readingPlaces(const Vec2& middle, PixelPoint size, const PixelRect& room) {
+    std::vector<PixelRect> places;
+    for (int k = 0; k <= kReadingSteps; ++k) {
+        const int half = static_cast<int>(kReadingOffset) - 4 + k * kReadingStep;
+        const PixelRect around{static_cast<int>(std::lround(middle.x())) - half,
+                               static_cast<int>(std::lround(middle.y())) - half, 2 * half,
+                               2 * half};
+        std::vector<PixelRect> beside = placesBeside(around, size, room);
+        for (std::size_t j = 0; j + 1 < beside.size() && j < 20; j += 4)
+            std::swap(beside[j], beside[j + 1]);  // below before above
+        places.insert(places.end(), beside.begin(), beside.end());
+    }
+    return places;
+}
+
+}  // namespace
+
 void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& font,
-                         const PixelRect& room, const std::vector<PixelRect>& keepOut) {
-    const auto inside = [&room](const PixelRect& r) {
-        return r.x >= room.x && r.y >= room.y && r.x + r.w <= room.x + room.w &&
-               r.y + r.h <= room.y + room.h;
+                         const LabelRoom& room, const std::vector<PixelRect>& discs) {
+    const PixelRect& window = room.window;
+    const auto inside = [&window](const PixelRect& r) {
+        return r.x >= window.x && r.y >= window.y && r.x + r.w <= window.x + window.w &&
+               r.y + r.h <= window.y + window.h;
     };
-    const auto clear = [&keepOut](const PixelRect& r) {
-        return std::none_of(keepOut.begin(), keepOut.end(),
+    const auto clear = [&room](const PixelRect& r) {
+        return std::none_of(room.keepOut.begin(), room.keepOut.end(),
                             [&r](const PixelRect& k) { return overlaps(r, k); });
     };
     PixelRect reading{};
     if (ruler != nullptr) {
         MarkLabel& l = ruler->label;
         const Vec2 middle = 0.5 * (ruler->a + ruler->b);
-        const Vec2 below = l.at - middle;  // the side chosen by rulerView
-        // The label's centre moved so that its rectangle lies in the room, if it can.
-        const auto slid = [&](Vec2 at) {
-            MarkLabel moved = l;
-            moved.at = at;
-            const PixelRect r = labelRect(moved, font, kReadingPad);
-            double dx = 0.0, dy = 0.0;
-            if (r.x < room.x) dx = room.x - r.x;
-            if (r.x + r.w + dx > room.x + room.w) dx = room.x + room.w - (r.x + r.w);
-            if (r.y < room.y) dy = room.y - r.y;
-            if (r.y + r.h + dy > room.y + room.h) dy = room.y + room.h - (r.y + r.h);
-            return Vec2(at + Vec2(dx, dy));
-        };
-        const Vec2 candidates[4] = {middle + below, middle - below, slid(middle + below),
-                                    slid(middle - below)};
-        Vec2 chosen = candidates[2];
-        for (const Vec2& c : candidates) {
-            MarkLabel moved = l;
-            moved.at = c;
-            const PixelRect r = labelRect(moved, font, kReadingPad);
-            if (inside(r) && clear(r)) {
-                chosen = c;
-                break;
-            }
+        LabelRoom around = room;
+        around.walls.push_back(rulerBand(*ruler));
+        // In one line where it reads clear, else in two, else three; else the one that covers
+        // least.
+        std::vector<std::vector<PixelRect>> places;
+        for (const std::string& form : ruler->forms) {
+            MarkLabel sized = l;
+            sized.text = form;
+            const PixelRect r = labelRect(sized, font, kReadingPad);
+            places.push_back(readingPlaces(middle, {r.w, r.h}, window));
         }
-        l.at = Vec2(std::round(chosen.x()), std::round(chosen.y()));
+        const ReadingPlace chosen = firstClearPlace(places, discs, around);
+        if (chosen.at.w > 0) {
+            l.text = ruler->forms[chosen.form];
+            l.at = Vec2(chosen.at.x + 0.5 * chosen.at.w, chosen.at.y + 0.5 * chosen.at.h);
+        } else {
+            // No place clear of the panels at all (a room narrower than the reading): below the
+            // middle in three lines, slid into the room as far as it goes.
+            l.text = ruler->forms[2];
+            const PixelRect r = labelRect(l, font, kReadingPad);
+            double dx = 0.0, dy = 0.0;
+            if (r.x < window.x) dx = window.x - r.x;
+            if (r.x + r.w + dx > window.x + window.w) dx = window.x + window.w - (r.x + r.w);
+            if (r.y < window.y) dy = window.y - r.y;
+            if (r.y + r.h + dy > window.y + window.h) dy = window.y + window.h - (r.y + r.h);
+            l.at += Vec2(dx, dy);
+        }
+        l.at = Vec2(std::round(l.at.x()), std::round(l.at.y()));
         reading = labelRect(l, font, kReadingPad);
     }
     if (grid != nullptr) {
@@ -190,6 +242,16 @@ MarkLabel wallAngleLabel(const Vec2& a, const Vec2& b, const Camera& camera) {
     const Vec2 u = length > 0.0 && std::isfinite(length) ? Vec2((pb - pa) / length) : Vec2(1, 0);
     l.at = pb + 18.0 * u + Vec2(0.0, -14.0);
     return l;
+}
+
+std::string rulerLines(const LabRuler& ruler, int count) {
+    if (count <= 1) return rulerLine(ruler);
+    const Vec2 d = ruler.b() - ruler.a();
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%.1f\u00b0", ruler.slopeDegrees());
+    return quantity(ruler.length(), "m") + ", " + angle + "\nhorizontal " +
+           quantity(std::abs(d.x()), "m") + (count == 2 ? ", vertical " : "\nvertical ") +
+           quantity(std::abs(d.y()), "m");
 }
 
 std::string rulerLine(const LabRuler& ruler) {

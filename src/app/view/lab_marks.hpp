@@ -3,6 +3,7 @@
 // the ruler (Q, session/lab_ruler.hpp). Kept as plain numbers and strings so that the tests
 // check where every line and label goes; render/lab_marks_drawing.hpp draws them.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 
 #include "session/camera.hpp"
 #include "session/lab_ruler.hpp"
+#include "view/label_places.hpp"
 #include "view/pixel_rect.hpp"
 #include "view/text_measure.hpp"
 
@@ -21,8 +23,8 @@ struct MarkLine {
 };
 
 struct MarkLabel {
-    Vec2 at;  ///< pixels: the label's centre, or the middle of its left side when `left`
-    std::string text;
+    Vec2 at;           ///< pixels: the label's centre, or the middle of its left side when `left`
+    std::string text;  ///< its lines, separated by '\n', each centred (or from the left)
     bool left = false;
 };
 
@@ -51,7 +53,12 @@ struct RulerView {
     Vec2 a, b;  ///< its ends, pixels
     std::vector<MarkLine> ticks;
     double tickStep = 0.0;  ///< metres between ticks
-    MarkLabel label;        ///< "1.25 m, 20.0° (horizontal 1.17 m, vertical 0.428 m)" beside it
+    /// Its reading as drawn beside it: in one line, or in two or three where one does not fit
+    /// or read clear (keepMarkLabelsClear).
+    MarkLabel label;
+    std::string line;  ///< the reading in one line (rulerLine), as F12's text says it
+    /// The reading in one, two and three lines (rulerLines).
+    std::array<std::string, 3> forms;
     bool held = false;
 };
 
@@ -60,26 +67,38 @@ inline constexpr double kRulerTickPixels = 8.0;
 
 [[nodiscard]] RulerView rulerView(const LabRuler& ruler, const Camera& camera);
 
-/// The rectangle `label` takes when drawn in `font`, pixels, with `pad` pixels of background
-/// around its text.
+/// The rectangle `label` takes when drawn in `font` (its widest line, its lines' height),
+/// pixels, with `pad` pixels of background around its text.
 [[nodiscard]] PixelRect labelRect(const MarkLabel& label, const TextMeasure& font, int pad = 0);
 
 /// The ruler's reading's background beyond its text, pixels each side (the drawing layer's).
 inline constexpr int kReadingPad = 4;
 
 /// The rule every measuring mark's label obeys: it is read whole. The ruler's reading goes
-/// where all of it is inside `room` (the window right of the control panel) and clear of
-/// `keepOut` (the panels): beside the ruler's middle on the side its ticks point down the
-/// screen, else on the other side, each slid along the room's edges if need be; a grid label
-/// that would cross the reading, a panel or the room's edge is left out (its line stays).
-/// Sizes are measured in `font`, the labels' font.
+/// where all of it is inside the room's window (the window right of the control panel), clear
+/// of its keepOut (the panels) and of the ruler itself, and, where such a place is, clear of
+/// `discs` (discsOnScreen) and across no wall: beside the ruler's middle, below it first (the
+/// side its ticks point down the screen), then above, right and left, each slid along that
+/// side; then further out on rings round the middle; in one line, else in two (the length and
+/// the slope over the distances) where only those fit or read clear (firstClearPlace,
+/// label_places.hpp). Where no place clear of the panels is, it goes below the middle, slid
+/// into the room as far as it can. A grid label that would cross the reading, a panel or the
+/// room's edge is left out (its line stays). Sizes are measured in `font`, the labels' font.
 void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& font,
-                         const PixelRect& room, const std::vector<PixelRect>& keepOut);
+                         const LabelRoom& room, const std::vector<PixelRect>& discs = {});
+
+/// The ruler on screen as labels keep clear of it: its edge, the face its ticks are on and the
+/// handles at its ends.
+[[nodiscard]] ScreenWall rulerBand(const RulerView& ruler);
 
 /// The protractor of the Wall tool: a wall being drawn from `a` to `b` (metres) labelled with
 /// its length and its slope ("2.60 m, 20.0°") beyond its end `b`, in pixels.
 [[nodiscard]] MarkLabel wallAngleLabel(const Vec2& a, const Vec2& b, const Camera& camera);
-/// The ruler's reading as F12's text says it.
+/// The ruler's reading as F12's text says it: "1.25 m, 20.0° (horizontal 1.17 m, vertical
+/// 0.428 m)".
 [[nodiscard]] std::string rulerLine(const LabRuler& ruler);
+/// The same in `count` lines (1 to 3), separated by '\n': "1.25 m, 20.0°" over "horizontal
+/// 1.17 m, vertical 0.428 m", or over "horizontal 1.17 m" over "vertical 0.428 m".
+[[nodiscard]] std::string rulerLines(const LabRuler& ruler, int count);
 
 }  // namespace psb::app

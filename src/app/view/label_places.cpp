@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <tuple>
 #include <utility>
 
 #include "view/screen_layout.hpp"
@@ -11,6 +10,11 @@
 namespace psb::app {
 
 namespace {
+
+/// overlaps() for rectangles known not to be empty, inline in the loops over discs.
+inline bool meet(const PixelRect& a, const PixelRect& b) {
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+}
 
 bool contains(const PixelRect& outer, const PixelRect& r) {
     return r.x >= outer.x && r.y >= outer.y && r.x + r.w <= outer.x + outer.w &&
@@ -25,184 +29,374 @@ int along(int at, int size, int lo, int hi) {
 /// Directions the rings try, from straight up round both ways: a label above or below its
 /// disc reads most naturally, then beside it, then at the corners.
 constexpr int kRingDirections = 32;
-/// Rings tried, each a gap further out than the last.
-constexpr int kRings = 48;
 
-}  // namespace
+/// Whether the segment from a to b meets the rectangle [x0, x1] × [y0, y1] (Liang–Barsky).
+bool segmentMeetsRect(double ax, double ay, double bx, double by, double x0, double y0, double x1,
+                      double y1) {
+    double t0 = 0.0, t1 = 1.0;
+    const double dx = bx - ax, dy = by - ay;
+    for (const auto& [p, q] :
+         {std::pair{-dx, ax - x0}, {dx, x1 - ax}, {-dy, ay - y0}, {dy, y1 - ay}}) {
+        if (p == 0.0) {
+            if (q < 0.0) return false;
+            continue;
+        }
+        const double t = q / p;
+        if (p < 0.0) {
+            t0 = std::max(t0, t);
+        } else {
+            t1 = std::min(t1, t);
+        }
+        if (t0 > t1) return false;
+    }
+    return true;
+}
 
-namespace {
+/// The squared distance from (px, py) to the segment from a to b.
+double squaredDistanceToSegment(double px, double py, double ax, double ay, double bx, double by) {
+    const double dx = bx - ax, dy = by - ay;
+    const double length2 = dx * dx + dy * dy;
+    double t = length2 > 0.0 ? ((px - ax) * dx + (py - ay) * dy) / length2 : 0.0;
+    t = std::clamp(t, 0.0, 1.0);
+    const double ex = ax + t * dx - px, ey = ay + t * dy - py;
+    return ex * ex + ey * ey;
+}
+
+/// The squared distance from (px, py) to the rectangle [x0, x1] × [y0, y1].
+double squaredDistanceToRect(double px, double py, double x0, double y0, double x1, double y1) {
+    const double ex = std::max({x0 - px, 0.0, px - x1}), ey = std::max({y0 - py, 0.0, py - y1});
+    return ex * ex + ey * ey;
+}
+
+/// The discs, found by the cells of a grid over the window they meet: a label's trial place
+/// is checked against the few discs near it, not all of them (the funnel's 400 balls, each
+/// label trying dozens of places).
+class DiscIndex {
+  public:
+    DiscIndex(const std::vector<PixelRect>& discs, const PixelRect& window)
+        : discs_(discs), window_(window) {
+        columns_ = std::max(1, (window.w + kCell - 1) / kCell);
+        rows_ = std::max(1, (window.h + kCell - 1) / kCell);
+        cells_.resize(static_cast<std::size_t>(columns_ * rows_));
+        for (std::size_t i = 0; i < discs.size(); ++i) {
+            const Span s = span(discs[i]);
+            for (int row = s.r0; row <= s.r1; ++row)
+                for (int column = s.c0; column <= s.c1; ++column)
+                    cell(row, column).push_back(static_cast<int>(i));
+        }
+        seen_.assign(discs.size(), 0);
+    }
+
+    /// Whether `r` overlaps any disc.
+    [[nodiscard]] bool any(const PixelRect& r) const {
+        const Span s = span(r);
+        for (int row = s.r0; row <= s.r1; ++row) {
+            for (int column = s.c0; column <= s.c1; ++column) {
+                for (const int i : cell(row, column))
+                    if (meet(r, discs_[static_cast<std::size_t>(i)])) return true;
+            }
+        }
+        return false;
+    }
+
+    /// How many discs `r` overlaps.
+    [[nodiscard]] std::size_t count(const PixelRect& r) {
+        ++stamp_;
+        std::size_t n = 0;
+        const Span s = span(r);
+        for (int row = s.r0; row <= s.r1; ++row) {
+            for (int column = s.c0; column <= s.c1; ++column) {
+                for (const int i : cell(row, column)) {
+                    const auto k = static_cast<std::size_t>(i);
+                    if (seen_[k] == stamp_) continue;
+                    seen_[k] = stamp_;
+                    n += meet(r, discs_[k]);
+                }
+            }
+        }
+        return n;
+    }
+
+  private:
+    static constexpr int kCell = 64;  ///< pixels
+
+    /// The cells `r` meets (none: c0 > c1).
+    struct Span {
+        int c0 = 1, r0 = 1, c1 = 0, r1 = 0;
+    };
+    [[nodiscard]] Span span(const PixelRect& r) const {
+        if (r.w <= 0 || r.h <= 0 || r.x + r.w <= window_.x || r.y + r.h <= window_.y) return {};
+        return {std::max(0, (r.x - window_.x) / kCell), std::max(0, (r.y - window_.y) / kCell),
+                std::min(columns_ - 1, (r.x + r.w - 1 - window_.x) / kCell),
+                std::min(rows_ - 1, (r.y + r.h - 1 - window_.y) / kCell)};
+    }
+    [[nodiscard]] std::vector<int>& cell(int row, int column) {
+        return cells_[static_cast<std::size_t>(row * columns_ + column)];
+    }
+    [[nodiscard]] const std::vector<int>& cell(int row, int column) const {
+        return cells_[static_cast<std::size_t>(row * columns_ + column)];
+    }
+
+    const std::vector<PixelRect>& discs_;
+    PixelRect window_;
+    int columns_ = 1, rows_ = 1;
+    std::vector<std::vector<int>> cells_;
+    std::vector<unsigned> seen_;
+    unsigned stamp_ = 0;
+};
+
+/// Whether `r` crosses the walled box's outline or any wall of `room`.
+bool crossesWalls(const PixelRect& r, const LabelRoom& room) {
+    if (room.box.w > 0 && overlaps(r, room.box) && !contains(room.box, r)) return true;
+    return std::any_of(room.walls.begin(), room.walls.end(),
+                       [&r](const ScreenWall& w) { return crosses(r, w); });
+}
+
+bool clearOf(const PixelRect& r, const std::vector<PixelRect>& boxes) {
+    return std::none_of(boxes.begin(), boxes.end(),
+                        [&r](const PixelRect& o) { return overlaps(r, o); });
+}
 
 /// placeLabels with the labels taken in `order` (indices into `asks`).
 std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
-                                     const std::vector<std::size_t>& order, const PixelRect& window,
-                                     const PixelRect& walls,
-                                     const std::vector<PixelRect>& keepOut) {
+                                     const std::vector<std::size_t>& order, const LabelRoom& room,
+                                     const DiscIndex& discs) {
     std::vector<LabelPlace> out(asks.size());
     std::vector<PixelRect> placed;
     placed.reserve(asks.size());
     const bool rings = asks.size() <= kMaxLeaderLabels;
-    const auto crossesWalls = [&walls](const PixelRect& r) {
-        return walls.w > 0 && overlaps(r, walls) && !contains(walls, r);
-    };
-    const auto onDiscs = [&asks](const PixelRect& r) {
-        return std::any_of(asks.begin(), asks.end(),
-                           [&r](const LabelAsk& a) { return overlaps(r, a.disc); });
-    };
-    const auto clearOfOthers = [&](const PixelRect& r) {
-        if (!contains(window, r)) return false;
-        for (const PixelRect& o : placed)
-            if (overlaps(r, o)) return false;
-        for (const PixelRect& o : keepOut)
-            if (overlaps(r, o)) return false;
-        return true;
+    const PixelRect& window = room.window;
+    const auto free = [&](const PixelRect& r) {
+        return contains(window, r) && clearOf(r, placed) && clearOf(r, room.keepOut) &&
+               !discs.any(r) && !crossesWalls(r, room);
     };
 
     for (const std::size_t i : order) {
         const LabelAsk& a = asks[i];
-        const PixelRect& d = a.disc;
-        const int bw = a.size.x, bh = a.size.y;
-        if (bw <= 0 || bh <= 0) continue;
-        PixelRect room = window;
-        const bool inBox = a.inBox && walls.w > 0;
+        if (a.size.x <= 0 || a.size.y <= 0) continue;
+        PixelRect inside = window;
+        const bool inBox = a.inBox && room.box.w > 0;
         if (inBox) {
-            const int x0 = std::max(window.x, walls.x), y0 = std::max(window.y, walls.y);
-            const int x1 = std::min(window.x + window.w, walls.x + walls.w);
-            const int y1 = std::min(window.y + window.h, walls.y + walls.h);
-            room = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
+            const PixelRect& box = room.box;
+            const int x0 = std::max(window.x, box.x), y0 = std::max(window.y, box.y);
+            const int x1 = std::min(window.x + window.w, box.x + box.w);
+            const int y1 = std::min(window.y + window.h, box.y + box.h);
+            inside = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
         }
-        const int cx = d.x + d.w / 2, cy = d.y + d.h / 2;
-        // Above, below, right and left, centred on the disc and then slid a quarter of the
-        // label at a time along that side (a neighbour's label may leave room only at one end),
-        // each kept in the room; then the corners.
-        std::vector<PixelRect> beside;
-        beside.reserve(24);
-        for (const int t : {0, -1, 1, -2, 2}) {
-            const int across = along(cx - bw / 2 + t * bw / 4, bw, room.x, room.x + room.w);
-            const int down = along(cy - bh / 2 + t * bh / 4, bh, room.y, room.y + room.h);
-            beside.push_back({across, d.y - bh, bw, bh});
-            beside.push_back({across, d.y + d.h, bw, bh});
-            beside.push_back({d.x + d.w, down, bw, bh});
-            beside.push_back({d.x - bw, down, bw, bh});
-        }
-        for (const PixelRect& r :
-             {PixelRect{d.x + d.w, d.y - bh, bw, bh}, PixelRect{d.x - bw, d.y - bh, bw, bh},
-              PixelRect{d.x + d.w, d.y + d.h, bw, bh}, PixelRect{d.x - bw, d.y + d.h, bw, bh}}) {
-            beside.push_back(r);
-        }
+        const std::vector<PixelRect> beside = placesBeside(a.disc, a.size, inside);
         LabelPlace& p = out[i];
         const auto take = [&](const PixelRect& r) {
             p.at = r;
-            p.acrossWall = crossesWalls(r);
             placed.push_back(r);
         };
-        const auto firstBeside = [&](bool inRoom, bool overDiscs, bool acrossWalls) {
+        const auto firstBeside = [&](bool inRoom) {
             for (const PixelRect& r : beside) {
-                if (inRoom && !contains(room, r)) continue;
-                if (!acrossWalls && crossesWalls(r)) continue;
-                if (!overDiscs && onDiscs(r)) continue;
-                if (clearOfOthers(r)) {
+                if (inRoom && !contains(inside, r)) continue;
+                if (free(r)) {
                     take(r);
                     return true;
                 }
             }
             return false;
         };
-        // Rings round the disc, each a gap further out: the label's centre on a circle through
-        // which it clears the disc by that gap in every direction.
-        const auto firstOnRings = [&](bool acrossWalls) {
+        const auto firstOnRings = [&] {
             if (!rings) return false;
-            const double gap = std::max(4.0, bh / 6.0);
-            const double reach = 0.5 * d.w + 0.5 * std::hypot(bw, bh);
-            for (int k = 1; k <= kRings; ++k) {
-                const double distance = reach + k * gap;
-                for (int j = 0; j < kRingDirections; ++j) {
-                    // 0, +1, -1, +2, -2, ... steps from straight up.
-                    const int step = (j + 1) / 2 * (j % 2 == 1 ? 1 : -1);
-                    const double angle =
-                        -std::numbers::pi / 2.0 + step * (2.0 * std::numbers::pi / kRingDirections);
-                    const PixelRect r{
-                        static_cast<int>(std::lround(cx + distance * std::cos(angle))) - bw / 2,
-                        static_cast<int>(std::lround(cy + distance * std::sin(angle))) - bh / 2, bw,
-                        bh};
-                    if ((!acrossWalls && crossesWalls(r)) || onDiscs(r) || !clearOfOthers(r))
-                        continue;
-                    take(r);
-                    p.leader = true;
-                    return true;
-                }
+            for (const PixelRect& r : placesOnRings(a.disc, a.size, kLabelRings)) {
+                if (!free(r)) continue;
+                take(r);
+                p.leader = true;
+                return true;
             }
             return false;
         };
-        // Over a wall rather than over a ball: a box too small for a label anywhere inside
-        // (the lesson's 4 m box at 200 %) still shows every ball.
-        if (firstBeside(inBox, false, false) || firstBeside(false, false, false) ||
-            firstOnRings(false) || firstBeside(false, false, true) || firstOnRings(true)) {
-            continue;
-        }
-        if (firstBeside(false, true, true)) {
-            p.overDiscs = onDiscs(p.at);
-            continue;
-        }
+        if (firstBeside(inBox) || firstBeside(false) || firstOnRings()) continue;
         p.offWindow = std::none_of(beside.begin(), beside.begin() + 4,
                                    [&window](const PixelRect& r) { return contains(window, r); });
     }
     return out;
 }
 
-/// How bad a placing is: labels left out, then labels over discs, then across a wall.
-std::tuple<std::size_t, std::size_t, std::size_t> cost(const std::vector<LabelPlace>& places) {
-    std::size_t out = 0, over = 0, across = 0;
-    for (const LabelPlace& p : places) {
-        out += p.at.w == 0;
-        over += p.overDiscs;
-        across += p.acrossWall;
-    }
-    return {out, over, across};
-}
-
-bool isClean(const std::vector<LabelPlace>& places) {
-    return cost(places) == std::tuple<std::size_t, std::size_t, std::size_t>{0, 0, 0};
+std::size_t leftOut(const std::vector<LabelPlace>& places) {
+    return static_cast<std::size_t>(std::count_if(places.begin(), places.end(),
+                                                  [](const LabelPlace& p) { return p.at.w == 0; }));
 }
 
 /// placeLabels in the sizes `asks` give: in order, then, in a small scene, a few times with the
-/// labels that fared worst first, keeping the best placing.
-std::vector<LabelPlace> placeBest(const std::vector<LabelAsk>& asks, const PixelRect& window,
-                                  const PixelRect& walls, const std::vector<PixelRect>& keepOut) {
+/// labels left out first, keeping the placing that leaves fewest out.
+std::vector<LabelPlace> placeBest(const std::vector<LabelAsk>& asks, const LabelRoom& room,
+                                  const DiscIndex& discs) {
     std::vector<std::size_t> order(asks.size());
     for (std::size_t i = 0; i < order.size(); ++i)
         order[i] = i;
-    std::vector<LabelPlace> best = placeInOrder(asks, order, window, walls, keepOut);
+    std::vector<LabelPlace> best = placeInOrder(asks, order, room, discs);
     // In a small scene a label placed first can take the one place another had: the labels
-    // that fared worst go first, a few times, and the best placing is kept.
-    for (int attempt = 0; attempt < 4 && asks.size() <= kMaxLeaderLabels && !isClean(best);
+    // left out go first, a few times, and the best placing is kept.
+    for (int attempt = 0; attempt < 4 && asks.size() <= kMaxLeaderLabels && leftOut(best) > 0;
          ++attempt) {
-        std::stable_partition(order.begin(), order.end(), [&best](std::size_t i) {
-            return best[i].at.w == 0 || best[i].overDiscs || best[i].acrossWall;
-        });
-        std::vector<LabelPlace> again = placeInOrder(asks, order, window, walls, keepOut);
-        if (cost(again) < cost(best)) best = std::move(again);
+        std::stable_partition(order.begin(), order.end(),
+                              [&best](std::size_t i) { return best[i].at.w == 0; });
+        std::vector<LabelPlace> again = placeInOrder(asks, order, room, discs);
+        if (leftOut(again) < leftOut(best)) best = std::move(again);
     }
     return best;
 }
 
 }  // namespace
 
-std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const PixelRect& window,
-                                    const PixelRect& walls, const std::vector<PixelRect>& keepOut) {
-    std::vector<LabelPlace> best = placeBest(asks, window, walls, keepOut);
+bool crosses(const PixelRect& r, const ScreenWall& w) {
+    if (r.w <= 0 || r.h <= 0) return false;
+    const double x0 = r.x, y0 = r.y, x1 = r.x + r.w, y1 = r.y + r.h;
+    if (segmentMeetsRect(w.ax, w.ay, w.bx, w.by, x0, y0, x1, y1)) return true;
+    const double reach = w.halfWidth * w.halfWidth;
+    if (squaredDistanceToRect(w.ax, w.ay, x0, y0, x1, y1) < reach) return true;
+    if (squaredDistanceToRect(w.bx, w.by, x0, y0, x1, y1) < reach) return true;
+    for (const auto& [cx, cy] : {std::pair{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}) {
+        if (squaredDistanceToSegment(cx, cy, w.ax, w.ay, w.bx, w.by) < reach) return true;
+    }
+    return false;
+}
+
+std::vector<PixelRect> placesBeside(const PixelRect& d, PixelPoint size, const PixelRect& within) {
+    const int bw = size.x, bh = size.y;
+    const int cx = d.x + d.w / 2, cy = d.y + d.h / 2;
+    std::vector<PixelRect> beside;
+    beside.reserve(24);
+    for (const int t : {0, -1, 1, -2, 2}) {
+        const int across = along(cx - bw / 2 + t * bw / 4, bw, within.x, within.x + within.w);
+        const int down = along(cy - bh / 2 + t * bh / 4, bh, within.y, within.y + within.h);
+        beside.push_back({across, d.y - bh, bw, bh});
+        beside.push_back({across, d.y + d.h, bw, bh});
+        beside.push_back({d.x + d.w, down, bw, bh});
+        beside.push_back({d.x - bw, down, bw, bh});
+    }
+    for (const PixelRect& r :
+         {PixelRect{d.x + d.w, d.y - bh, bw, bh}, PixelRect{d.x - bw, d.y - bh, bw, bh},
+          PixelRect{d.x + d.w, d.y + d.h, bw, bh}, PixelRect{d.x - bw, d.y + d.h, bw, bh}}) {
+        beside.push_back(r);
+    }
+    return beside;
+}
+
+std::vector<PixelRect> placesOnRings(const PixelRect& d, PixelPoint size, int rings) {
+    const int bw = size.x, bh = size.y;
+    const int cx = d.x + d.w / 2, cy = d.y + d.h / 2;
+    const double gap = std::max(4.0, bh / 6.0);
+    const double reach = 0.5 * d.w + 0.5 * std::hypot(bw, bh);
+    std::vector<PixelRect> out;
+    out.reserve(static_cast<std::size_t>(std::max(0, rings)) * kRingDirections);
+    for (int k = 1; k <= rings; ++k) {
+        const double distance = reach + k * gap;
+        for (int j = 0; j < kRingDirections; ++j) {
+            // 0, +1, -1, +2, -2, ... steps from straight up.
+            const int step = (j + 1) / 2 * (j % 2 == 1 ? 1 : -1);
+            const double angle =
+                -std::numbers::pi / 2.0 + step * (2.0 * std::numbers::pi / kRingDirections);
+            out.push_back({static_cast<int>(std::lround(cx + distance * std::cos(angle))) - bw / 2,
+                           static_cast<int>(std::lround(cy + distance * std::sin(angle))) - bh / 2,
+                           bw, bh});
+        }
+    }
+    return out;
+}
+
+std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const LabelRoom& room) {
+    std::vector<PixelRect> discRects(asks.size());
+    for (std::size_t i = 0; i < asks.size(); ++i)
+        discRects[i] = asks[i].disc;
+    const DiscIndex discs(discRects, room.window);
+    std::vector<LabelPlace> best = placeBest(asks, room, discs);
     const bool shortForms =
         !asks.empty() && std::all_of(asks.begin(), asks.end(), [](const LabelAsk& a) {
             return a.shortSize.x > 0 && a.shortSize.y > 0;
         });
-    if (isClean(best) || !shortForms) return best;
+    if (leftOut(best) == 0 || !shortForms) return best;
     std::vector<LabelAsk> shorter = asks;
     for (LabelAsk& a : shorter)
         a.size = a.shortSize;
-    std::vector<LabelPlace> brief = placeBest(shorter, window, walls, keepOut);
-    if (!(cost(brief) < cost(best))) return best;
+    std::vector<LabelPlace> brief = placeBest(shorter, room, discs);
+    if (leftOut(brief) >= leftOut(best)) return best;
     for (LabelPlace& p : brief)
         p.shortForm = true;
     return brief;
+}
+
+ReadingPlace firstClearPlace(const std::vector<std::vector<PixelRect>>& places,
+                             const std::vector<PixelRect>& discRects, const LabelRoom& room) {
+    DiscIndex discs(discRects, room.window);
+    const auto allowed = [&room](const PixelRect& r) {
+        return contains(room.window, r) && clearOf(r, room.keepOut);
+    };
+    // A clear place: any disc rules one out, quickly found in a crowd.
+    for (std::size_t form = 0; form < places.size(); ++form) {
+        for (const PixelRect& r : places[form]) {
+            if (allowed(r) && !discs.any(r) && !crossesWalls(r, room)) return {r, form, 0, false};
+        }
+    }
+    // None: the least covered of each form's first few allowed (counting costs in a gas).
+    ReadingPlace best;
+    for (std::size_t form = 0; form < places.size(); ++form) {
+        std::size_t tried = 0;
+        for (const PixelRect& r : places[form]) {
+            if (!allowed(r)) continue;
+            const ReadingPlace here{r, form, discs.count(r), crossesWalls(r, room)};
+            if (best.at.w == 0 ||
+                std::pair{here.discs, here.acrossWall} < std::pair{best.discs, best.acrossWall}) {
+                best = here;
+            }
+            if (++tried == kReadingFallbacks) break;
+        }
+    }
+    return best;
+}
+
+LabelRoom labelRoom(const World& world, const Camera& camera, const PixelRect& window,
+                    std::vector<PixelRect> keepOut) {
+    LabelRoom room;
+    room.window = window;
+    if (world.def().walls) {
+        // The box's outline on screen: a label is inside it or outside, never across a wall.
+        const Camera::ScreenBox sb = camera.boxOnScreen(world.def().width, world.def().height);
+        room.box = {static_cast<int>(std::floor(sb.topLeft.x())),
+                    static_cast<int>(std::floor(sb.topLeft.y())),
+                    static_cast<int>(std::ceil(sb.size.x())) + 1,
+                    static_cast<int>(std::ceil(sb.size.y())) + 1};
+    }
+    room.keepOut = std::move(keepOut);
+    // The scene's walls at any angle are walls too (the funnel's sides).
+    for (const Obstacle& o : world.obstacles()) {
+        if (o.isPeg()) continue;
+        const Vec2 a = camera.worldToScreen(o.a), b = camera.worldToScreen(o.b);
+        room.walls.push_back({a.x(), a.y(), b.x(), b.y(), camera.toScreen(o.radius) + 1.0});
+    }
+    return room;
+}
+
+std::vector<PixelRect> pegsOnScreen(const World& world, const Camera& camera) {
+    std::vector<PixelRect> out;
+    for (const Obstacle& o : world.obstacles()) {
+        if (!o.isPeg()) continue;
+        const Vec2 c = camera.worldToScreen(o.a);
+        const double r = camera.toScreen(o.radius) + 1.0;
+        const int side = static_cast<int>(std::ceil(2.0 * r)) + 1;
+        out.push_back({static_cast<int>(std::floor(c.x() - r)),
+                       static_cast<int>(std::floor(c.y() - r)), side, side});
+    }
+    return out;
+}
+
+std::vector<PixelRect> discsOnScreen(const World& world, const Camera& camera,
+                                     const PixelRect& window) {
+    std::vector<PixelRect> out;
+    const ParticleArrays& p = world.particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+        const int cx = static_cast<int>(std::lround(c.x()));
+        const int cy = static_cast<int>(std::lround(c.y()));
+        const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
+        const PixelRect d{cx - r, cy - r, 2 * r, 2 * r};
+        if (overlaps(d, window)) out.push_back(d);
+    }
+    return out;
 }
 
 }  // namespace psb::app

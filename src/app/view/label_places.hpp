@@ -5,27 +5,57 @@
 // place that is free, trying in turn:
 //
 //   1. beside its disc (above, below, right, left, then the four corners; each slid along that
-//      side to stay in the window), clear of every disc, inside the box with a disc in it;
-//   2. the same, anywhere but across a wall;
-//   3. further out, on rings of places around its disc, clear of every disc and not across a
-//      wall, joined to its disc by a leader line (a small box has no room beside its balls;
-//      the window round it has);
-//   4. beside its disc, then on the rings, across a wall but clear of every disc (a box too
-//      low for a label anywhere in it, with no room round it);
-//   5. beside its disc over other discs (drawn without its background, which would darken
-//      them);
+//      side to stay in the window), inside the box with a disc in it;
+//   2. the same, anywhere;
+//   3. further out, on rings of places around its disc, joined to its disc by a leader line (a
+//      small box has no room beside its balls; the window round it has);
 //
-// and is left out when none is free. Free: inside the window, clear of the labels already
-// placed and of the panels. Where that leaves a label out, over discs or across a wall and the
-// labels have a short form (LabelAsk::shortSize), every label takes its short form if that
-// places them better (a small box at 200 %: two lines beside each ball rather than five over
-// the walls).
+// and is left out when none is free. Free: inside the window, clear of every disc, of the labels
+// already placed and of what the room keeps out (the panels, pegs, the ruler's reading), and
+// across no wall (the box's outline, a wall at any angle). A label never covers a ball nor
+// crosses a wall: in a crowd (the funnel's 400 balls) most are left out, and the HUD says how
+// many. Where that leaves a label out and the labels have a short form (LabelAsk::shortSize),
+// every label takes its short form if that leaves fewer out (a small box at 200 %: two lines
+// beside each ball rather than none).
+//
+// The ruler's reading is placed among the same places (firstClearPlace): clear of the discs
+// where a place is, over the fewest where none is.
 
+#include <cstddef>
 #include <vector>
 
+#include <particle_sandbox/world.hpp>
+
+#include "session/camera.hpp"
 #include "view/pixel_rect.hpp"
 
 namespace psb::app {
+
+/// A wall at any angle on screen, pixels: from (ax, ay) to (bx, by), `halfWidth` either side
+/// of that line, its ends rounded.
+struct ScreenWall {
+    double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0;
+    double halfWidth = 0.0;
+};
+
+/// Whether `r` touches `wall`.
+[[nodiscard]] bool crosses(const PixelRect& r, const ScreenWall& wall);
+
+/// Where labels may go: inside `window`, across neither the walled box's outline `box` (w == 0:
+/// no walls) nor any of `walls`, over none of `keepOut`.
+struct LabelRoom {
+    PixelRect window;
+    PixelRect box;
+    std::vector<ScreenWall> walls;
+    std::vector<PixelRect> keepOut;
+};
+
+/// What the particles' labels keep clear of besides the discs and the scene's walls: the
+/// panels and the ruler's reading (`rects`), the ruler itself (`walls`).
+struct LabelKeepOut {
+    std::vector<PixelRect> rects;
+    std::vector<ScreenWall> walls;
+};
 
 /// One label to place.
 struct LabelAsk {
@@ -38,12 +68,8 @@ struct LabelAsk {
 /// Where one label goes.
 struct LabelPlace {
     PixelRect at;  ///< w == 0: left out
-    /// It lies over other discs (the third rule): drawn without a background.
-    bool overDiscs = false;
     /// Away from its disc (the ring rule): a line joins its nearest edge to the disc.
     bool leader = false;
-    /// Across a wall (the fourth rule).
-    bool acrossWall = false;
     /// In its short form (every label is, or none).
     bool shortForm = false;
     /// Left out with no side of its disc inside the window at all (a disc nearly the window's
@@ -54,11 +80,62 @@ struct LabelPlace {
 /// Ring places are tried for at most this many labels (a small scene: each may cost a few
 /// thousand trial rectangles).
 inline constexpr std::size_t kMaxLeaderLabels = 24;
+/// Rings of places round a disc.
+inline constexpr int kLabelRings = 48;
 
-/// The places of `asks`, one each, in the same order, in a `window` of pixels with the walled
-/// box at `walls` (w == 0: no walls) and the panels at `keepOut`.
+/// The places of `asks`, one each, in the same order, in `room`.
 [[nodiscard]] std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks,
-                                                  const PixelRect& window, const PixelRect& walls,
-                                                  const std::vector<PixelRect>& keepOut);
+                                                  const LabelRoom& room);
+
+/// Places for a box of `size` beside `anchor`, in the order tried: above, below, right and left
+/// of it, centred on it and then slid a quarter of the box at a time along that side (kept
+/// within `within` along it); then the four corners.
+[[nodiscard]] std::vector<PixelRect> placesBeside(const PixelRect& anchor, PixelPoint size,
+                                                  const PixelRect& within);
+
+/// Places for a box of `size` on `rings` rings round `anchor`, each a gap further out, from
+/// straight up round both ways: on each ring the box clears the anchor's inscribed circle by
+/// that gap in every direction.
+[[nodiscard]] std::vector<PixelRect> placesOnRings(const PixelRect& anchor, PixelPoint size,
+                                                   int rings);
+
+/// The room for labels over `world` seen through `camera` in `window`: its walled box's outline,
+/// its walls at an angle, and `keepOut`.
+[[nodiscard]] LabelRoom labelRoom(const World& world, const Camera& camera, const PixelRect& window,
+                                  std::vector<PixelRect> keepOut);
+
+/// The pegs of `world` seen through `camera`, each one's bounding square and a pixel round it:
+/// as solid as the discs to a label.
+[[nodiscard]] std::vector<PixelRect> pegsOnScreen(const World& world, const Camera& camera);
+
+/// The discs of `world` seen through `camera` that meet `window`, as labels keep clear of them:
+/// each one's bounding square with a gap of kLabelGap pixels round it.
+[[nodiscard]] std::vector<PixelRect> discsOnScreen(const World& world, const Camera& camera,
+                                                   const PixelRect& window);
+
+/// Pixels a label keeps from its disc's rim.
+inline constexpr int kLabelGap = 2;
+
+/// A place for a box that must be read whole (firstClearPlace), and what it covers.
+struct ReadingPlace {
+    PixelRect at;             ///< w == 0: none inside the window and clear of keepOut
+    std::size_t form = 0;     ///< which of the forms' places it is
+    std::size_t discs = 0;    ///< discs it covers
+    bool acrossWall = false;  ///< it crosses a wall
+    [[nodiscard]] bool clear() const { return at.w > 0 && discs == 0 && !acrossWall; }
+};
+
+/// Places counted for the discs they cover when none is clear (firstClearPlace).
+inline constexpr std::size_t kReadingFallbacks = 24;
+
+/// For a box that can take several forms (the ruler's reading in one, two or three lines),
+/// `places` for each form in order of preference: the first place inside the room's window,
+/// clear of its keepOut, of every one of `discs` and across no wall, trying the first form's
+/// places, then the second's...; where none is, of the first kReadingFallbacks of each form's
+/// places inside the window and clear of keepOut, the one that covers the fewest discs, then
+/// crosses no wall (the first of equals).
+[[nodiscard]] ReadingPlace firstClearPlace(const std::vector<std::vector<PixelRect>>& places,
+                                           const std::vector<PixelRect>& discs,
+                                           const LabelRoom& room);
 
 }  // namespace psb::app

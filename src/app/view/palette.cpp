@@ -22,7 +22,6 @@ constexpr Palette kDark{
     .tickText = {200, 200, 200},
     .labelBox = {0, 0, 0, 150},
     .labelText = {255, 255, 255},
-    .labelOutline = {0, 0, 0},
     .highlight = {255, 230, 0},
     .warning = {255, 110, 100},
     .obstacle = {190, 195, 205},
@@ -60,7 +59,6 @@ constexpr Palette kLight{
     .tickText = {40, 40, 40},
     .labelBox = {255, 255, 255, 200},
     .labelText = {0, 0, 0},
-    .labelOutline = {255, 255, 255},
     .highlight = {0, 0, 0},
     .warning = {170, 51, 0},  // a dark vermillion: 6:1 on white, where the bright one is 3.8:1
     .obstacle = {100, 100, 110},

@@ -35,7 +35,6 @@ struct Palette {
     Rgba tickText;       ///< the charts' numbers
     Rgba labelBox;       ///< behind a particle's label
     Rgba labelText;      ///< a particle's label
-    Rgba labelOutline;   ///< round a label's letters over discs
     Rgba highlight;      ///< the selection, the selected obstacle, a dropper, the box marker
     Rgba warning;        ///< the recording mark, notes in red
     Rgba obstacle;       ///< pegs and walls drawn in the box

@@ -300,7 +300,7 @@ TEST_F(RenderTest, LabelsOfNeighboursDoNotOverlapAndKeepClearOfThePanels) {
     o.arrows = false;
     o.labels = true;
     // Nothing may be drawn above y = 200 (a panel there).
-    const RenderAvoid avoid{SDL_Rect{0, 0, kSize, 200}};
+    const LabelKeepOut avoid{{PixelRect{0, 0, kSize, 200}}, {}};
     const DrawStats s = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, &avoid);
     SDL_RenderPresent(sdl_);
     EXPECT_EQ(brightPixels(0, 0, kSize, 200), 0);
@@ -373,10 +373,10 @@ TEST_F(RenderTest, ALabelWithNoRoomInTheWindowIsCountedAsSuch) {
     EXPECT_EQ(s.labelsOffWindow, 1u);
 }
 
-TEST_F(RenderTest, ALabelOverOtherDiscsDoesNotDarkenThem) {
-    // A disc hemmed in by four big ones leaves its label no place clear of discs: the label is
-    // drawn over them without a background, so a big disc's pixels away from the glyphs keep
-    // their colour.
+TEST_F(RenderTest, ALabelWithNoPlaceClearOfOtherDiscsIsLeftOutNotDrawnOverThem) {
+    // A disc hemmed in by four big ones leaves its label no place clear of discs: it used to be
+    // drawn over them (outlined, without its background); a label never covers a ball, so it
+    // is left out and counted, and not one pixel of the big discs' green is changed.
     WorldDef def;
     def.width = def.height = kSize;
     World w(def);
@@ -391,29 +391,33 @@ TEST_F(RenderTest, ALabelOverOtherDiscsDoesNotDarkenThem) {
         d.color = {0, 200, 0};
         w.add(d);
     }
-    // Pixels of a big disc's green made darker: the discs' antialiased rims, plus with labels
-    // on the dark outline of the glyphs (about 3000 here), not a whole translucent background
-    // (about 16000: four 150 x 60 px labels' boxes, as before the fix).
-    const auto darkGreens = [&](bool labels) {
+    const auto greens = [&](bool labels, DrawStats* stats) {
         ViewOptions o;
         o.arrows = false;
         o.labels = labels;
-        const DrawStats s = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, nullptr);
+        *stats = renderer_->draw(w, kFrame, camera_, o, nullptr, kNullParticle, nullptr);
         SDL_RenderPresent(sdl_);
-        if (labels) {
-            EXPECT_GE(s.labelled, 1u);
-        }
-        int n = 0;
+        std::vector<Uint32> out;
         for (int y = 0; y < kSize; ++y) {
             for (int x = 0; x < kSize; ++x) {
                 const SDL_Color c = pixel(x, y);
-                n += c.r == 0 && c.b == 0 && c.g > 0 && c.g < 200;
+                out.push_back(static_cast<Uint32>(c.r) << 16 | static_cast<Uint32>(c.g) << 8 | c.b);
             }
         }
-        return n;
+        return out;
     };
-    const int rims = darkGreens(false);
-    EXPECT_LT(darkGreens(true) - rims, 5000);
+    DrawStats without, with;
+    const std::vector<Uint32> bare = greens(false, &without);
+    const std::vector<Uint32> labelled = greens(true, &with);
+    // The small disc's label is among those left out (no place beside it is clear).
+    EXPECT_GE(with.labelsCrowded, 1u);
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < bare.size(); ++i) {
+        const Uint32 c = bare[i];
+        const bool green = (c >> 16) == 0 && (c & 0xff) == 0 && ((c >> 8) & 0xff) == 200;
+        changed += green && labelled[i] != c;
+    }
+    EXPECT_EQ(changed, 0u) << "pixels of the big discs changed by a label";
 }
 
 TEST_F(RenderTest, LabelsKeepTheirPixelSizeAtAnyZoom) {

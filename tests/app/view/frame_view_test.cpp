@@ -180,6 +180,96 @@ TEST(ValuesTable, InAShortWindowItDocksWhereTheBoxComesOutLargest) {
               big.layout().area(big.controlsShown(), big.columnAsked()).valuesBand);
 }
 
+/// A 7 m box with two rows of balls just below and just above its middle, where the ruler
+/// lies, at 200 % in a 1600 x 1000 window, the ruler on.
+Session rulerAmongBalls() {
+    const test::FixedMeasure font(2.0);
+    const ControlsWidth controls{620.0, 88.0, 2.0};
+    WorldDef def;
+    def.width = def.height = 7.0;
+    World w(def);
+    for (int k = 0; k < 7; ++k) {
+        for (const double y : {3.15, 3.85})
+            w.add({.position = Vec2(0.5 + k, y), .mass = 1.0, .radius = 0.25});
+    }
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 1600;
+    o.viewportHeight = 1000;
+    o.layout = windowLayout(font, 1600, 1000, controls);
+    Session s(std::move(w), SceneMeta{"rows"}, o);
+    s.apply(cmd::SetShow{ShowOption::Ruler, true});
+    return s;
+}
+
+TEST(RulerReading, ItCoversNoBallWhereTheWindowHasAFreePlace) {
+    // The ruler across a small box's middle at 200 %: its reading went below the ruler's
+    // middle over the balls there (and the particles' labels over it), though the box had room
+    // a little further down.
+    const test::FixedMeasure font(2.0);
+    const ControlsWidth controls{620.0, 88.0, 2.0};
+    const Session s = rulerAmongBalls();
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
+    ASSERT_TRUE(f.ruler.has_value());
+    const PixelRect r = labelRect(f.ruler->label, font, kReadingPad);
+    EXPECT_GE(r.x, f.controlsInset) << "whole, right of the control panel";
+    EXPECT_LE(r.x + r.w, 1600);
+    EXPECT_GE(r.y, 0);
+    EXPECT_LE(r.y + r.h, 1000);
+    for (const PixelRect& panel : panelRects(f.layout))
+        EXPECT_FALSE(overlaps(r, panel)) << "under a panel";
+    const ParticleArrays& p = s.world().particles();
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec2 c = s.camera().worldToScreen(Vec2(p.x[i], p.y[i]));
+        const double radius = s.camera().toScreen(p.radius[i]);
+        const PixelRect disc{static_cast<int>(c.x() - radius), static_cast<int>(c.y() - radius),
+                             static_cast<int>(2.0 * radius), static_cast<int>(2.0 * radius)};
+        EXPECT_FALSE(overlaps(r, disc)) << "over ball " << i + 1;
+    }
+}
+
+TEST(RulerReading, ItIsReadWholeBesideTheOpenPanelAt200Percent) {
+    // 1280 x 800 at 200 % with the control panel open: 660 pixels right of it, and the reading
+    // in one line is 760 (8 pixels a character at 200 %): it was cut at the panel. In two
+    // lines it fits.
+    const test::FixedMeasure font(2.0);
+    const ControlsWidth controls{620.0, 88.0, 2.0};
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 1280;
+    o.viewportHeight = 800;
+    o.layout = windowLayout(font, 1280, 800, controls);
+    ASSERT_TRUE(o.layout.controlsFit);
+    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    s.apply(cmd::SetShow{ShowOption::Ruler, true});
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
+    ASSERT_EQ(f.controlsInset, 620);
+    const PixelRect r = labelRect(f.ruler->label, font, kReadingPad);
+    EXPECT_GE(r.x, 620) << "cut at the panel";
+    EXPECT_LE(r.x + r.w, 1280);
+    EXPECT_GE(r.y, 0);
+    EXPECT_LE(r.y + r.h, 800);
+    for (const PixelRect& panel : panelRects(f.layout))
+        EXPECT_FALSE(overlaps(r, panel)) << "under a panel";
+}
+
+TEST(RulerReading, TheParticlesLabelsGoRoundIt) {
+    const test::FixedMeasure font(2.0);
+    const Session s = rulerAmongBalls();
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, {620.0, 88.0, 2.0});
+    const LabelKeepOut keep = labelKeepOut(f, font);
+    const auto has = [&keep](const PixelRect& r) {
+        return std::find(keep.rects.begin(), keep.rects.end(), r) != keep.rects.end();
+    };
+    EXPECT_TRUE(has(labelRect(f.ruler->label, font, kReadingPad))) << "the reading";
+    for (const PixelRect& panel : panelRects(f.layout))
+        EXPECT_TRUE(has(panel)) << "a panel";
+    ASSERT_EQ(keep.walls.size(), 1u) << "the ruler";
+    const PixelRect onTheEdge{static_cast<int>(f.ruler->a.x() + 20.0),
+                              static_cast<int>(f.ruler->a.y()) - 2, 10, 4};
+    EXPECT_TRUE(crosses(onTheEdge, keep.walls[0]));
+}
+
 TEST(LabelsLeftOut, TheHudSaysWhatKeptThemOut) {
     // Labels left out because others were in the way, and because no side of the disc was in
     // the window: two reasons, two different lines (a label only running off the window's
