@@ -1,5 +1,5 @@
 // The exact mode's discs that turn on a floor or a segment's face: slipping under kinetic
-// friction, the slip-to-roll instant, rolling, against their closed forms (rolling.cpp).
+// friction, the slip-to-roll instant, rolling, against their closed forms (rolls.cpp).
 
 #include <gtest/gtest.h>
 
@@ -313,7 +313,7 @@ Along blockOnTheFloor(SolverSettings solver, double dt, double seconds) {
 TEST(ExactRolling, ABlockSlidingOnTheFloorSlowsAtMuGAndStopsAsleep) {
     // A disc that does not turn has nothing to roll with: it slides at v = v0 − μ g t until it
     // stops, at t = v0 / (μ g) = 1.529 s, after v0² / (2 μ g) = 2.294 m; on the box's floor as
-    // on a floor segment (sliding.cpp's block).
+    // on a floor segment (slides.cpp's block).
     const double v0 = 3.0, mu = 0.2, tStop = v0 / (mu * kG), sStop = v0 * v0 / (2.0 * mu * kG);
     for (const bool onSegment : {false, true}) {
         SCOPED_TRACE(onSegment ? "segment" : "box floor");
