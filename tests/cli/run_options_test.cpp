@@ -97,7 +97,10 @@ TEST(RunOptions, AnUnknownOptionIsNamedWithTheNearestKnownOne) {
     EXPECT_EQ(usageError({"s", "-d", "1", "--timeseries-evry=5"}),
               "unknown option '--timeseries-evry' (did you mean '--timeseries-every'?)");
     // Nothing near: the option alone (the runner points to --help after it).
-    EXPECT_EQ(usageError({"s", "-d", "1", "--seed", "3"}), "unknown option '--seed'");
+    EXPECT_EQ(usageError({"s", "-d", "1", "--gr-bins", "3"}), "unknown option '--gr-bins'");
+    // A new option is near its misspelling too.
+    EXPECT_EQ(usageError({"s", "-d", "1", "--seeed", "3"}),
+              "unknown option '--seeed' (did you mean '--seed'?)");
 }
 
 TEST(RunOptions, AStrayArgumentIsNamedWithTheSceneAlreadyGiven) {
