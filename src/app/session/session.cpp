@@ -9,18 +9,6 @@
 
 namespace psb::app {
 
-const char* logPrefix(Notice::Level level) {
-    switch (level) {
-        case Notice::Level::Warning:
-            return "[W] ";
-        case Notice::Level::Error:
-            return "[E] ";
-        case Notice::Level::Info:
-            break;
-    }
-    return "[I] ";
-}
-
 Session::Session(World world, SceneMeta meta, SessionOptions options)
     : options_(std::move(options)),
       doc_(std::move(world), std::move(meta),
@@ -39,11 +27,12 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
     if (options_.sceneFile) {
         doc_.rememberFile(*options_.sceneFile);
         if (clock_.paused) {
-            say("Opened " + options_.sceneFile->filename().string() + ": " + doc_.meta.name +
-                ", paused: Space starts it");
+            notices_.say("Opened " + options_.sceneFile->filename().string() + ": " +
+                         doc_.meta.name + ", paused: Space starts it");
         }
     }
-    if (!showControls_) say("The control panel is folded in this narrow window: C or >> opens it");
+    if (!showControls_)
+        notices_.say("The control panel is folded in this narrow window: C or >> opens it");
 }
 
 void Session::setWorld(World world, SceneMeta meta, SceneFile file) {
@@ -54,9 +43,9 @@ void Session::setWorld(World world, SceneMeta meta, SceneFile file) {
     doc_.replace(std::move(world), std::move(meta), std::move(file));
     sceneOpened();
     if (unsaved) {
-        say("The unsaved changes to " + (was.empty() ? std::string("the scene") : was) +
-                " were replaced: Ctrl+Z brings them back",
-            Notice::Level::Warning);
+        notices_.say("The unsaved changes to " + (was.empty() ? std::string("the scene") : was) +
+                         " were replaced: Ctrl+Z brings them back",
+                     Notice::Level::Warning);
     }
 }
 
@@ -90,9 +79,7 @@ void Session::startOver(bool newScene, bool keepRecorded) {
 }
 
 std::vector<Notice> Session::takeNotices() {
-    std::vector<Notice> out;
-    out.swap(notices_);
-    return out;
+    return notices_.take();
 }
 
 bool Session::takeScreenshotRequest() {
@@ -105,14 +92,6 @@ std::optional<std::string> Session::takeClipboardText() {
     std::optional<std::string> text;
     text.swap(clipboard_);
     return text;
-}
-
-void Session::say(std::string text, Notice::Level level) {
-    notices_.push_back({level, std::move(text), true, true});
-}
-
-void Session::log(std::string text, Notice::Level level) {
-    notices_.push_back({level, std::move(text), false, true});
 }
 
 LaunchSettings Session::launchSettings() const {

@@ -58,6 +58,7 @@
 #include "session/lab_stopwatch.hpp"
 #include "session/last_collision.hpp"
 #include "session/monitor.hpp"
+#include "session/notices.hpp"
 #include "session/scene_io.hpp"
 #include "session/sim_clock.hpp"
 #include "session/tools.hpp"
@@ -65,21 +66,6 @@
 #include "session/view_options.hpp"
 
 namespace psb::app {
-
-/// Something the session says: shown on screen (`show`) and/or written to the log (`log`).
-struct Notice {
-    enum class Level { Info, Warning, Error };
-    Level level = Level::Info;
-    std::string text;
-    bool show = true;
-    bool log = true;
-    /// Non-empty: a newer notice of the same topic replaces this one on screen while it is the
-    /// last shown (a slider being dragged says each value without filling the message box).
-    std::string topic = {};
-};
-
-/// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
-[[nodiscard]] const char* logPrefix(Notice::Level level);
 
 struct SessionOptions {
     /// The file the first world came from (none: built in), for Save and Revert.
@@ -469,8 +455,6 @@ class Session {
     /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.
     void show(std::int64_t frame);
 
-    void say(std::string text, Notice::Level level = Notice::Level::Info);
-    void log(std::string text, Notice::Level level = Notice::Level::Info);
     [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(tools_.pointer); }
 
     SessionOptions options_;
@@ -507,7 +491,7 @@ class Session {
     std::optional<VideoSettings> videoToggle_;
     std::optional<std::filesystem::path> lastExport_;
     std::string exportError_;
-    std::vector<Notice> notices_;
+    Notices notices_;
 };
 
 }  // namespace psb::app

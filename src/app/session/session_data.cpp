@@ -81,7 +81,7 @@ void Session::handle(const cmd::ExportTable& c) {
         if (c.table == cmd::DataTable::Trajectories || c.table == cmd::DataTable::Collisions) {
             exportError_ += ": record some first (Record, or X)";
         }
-        say(exportError_, Notice::Level::Warning);
+        notices_.say(exportError_, Notice::Level::Warning);
         return;
     }
     std::string why;
@@ -89,7 +89,7 @@ void Session::handle(const cmd::ExportTable& c) {
     const std::optional<std::filesystem::path> named = saveFileName(typed, why, ".csv");
     if (!named) {
         exportError_ = "Export: " + why;
-        say(exportError_, Notice::Level::Warning);
+        notices_.say(exportError_, Notice::Level::Warning);
         return;
     }
     const std::filesystem::path path =
@@ -99,25 +99,26 @@ void Session::handle(const cmd::ExportTable& c) {
         writeFileAtomically(path, text);
     } catch (const std::exception& e) {  // SaveError: nothing was written, no file replaced
         exportError_ = std::string("Export failed: ") + e.what();
-        say(exportError_, Notice::Level::Error);
+        notices_.say(exportError_, Notice::Level::Error);
         return;
     }
     exportError_.clear();
     lastExport_ = path;
-    say(fmt("Exported %zu row%s of %s %s %s", rows, rows == 1 ? "" : "s", tableName(c.table),
-            options_.inPage ? "as" : "to",
-            (options_.inPage ? path.filename() : path).string().c_str()));
+    notices_.say(fmt("Exported %zu row%s of %s %s %s", rows, rows == 1 ? "" : "s",
+                     tableName(c.table), options_.inPage ? "as" : "to",
+                     (options_.inPage ? path.filename() : path).string().c_str()));
 }
 
 void Session::handle(const cmd::CopyTable& c) {
     std::string text = tableText(c.table, csv::Separator::Tab);
     const std::size_t rows = rowsOf(text);
     if (rows == 0) {
-        say(fmt("Copy: no %s yet", tableName(c.table)), Notice::Level::Warning);
+        notices_.say(fmt("Copy: no %s yet", tableName(c.table)), Notice::Level::Warning);
         return;
     }
     clipboard_ = std::move(text);
-    say(fmt("Copied %zu row%s of %s to the clipboard (tab-separated: paste into a spreadsheet)",
+    notices_.say(
+        fmt("Copied %zu row%s of %s to the clipboard (tab-separated: paste into a spreadsheet)",
             rows, rows == 1 ? "" : "s", tableName(c.table)));
 }
 
@@ -142,7 +143,8 @@ void Session::handle(const cmd::SetRecording& c) {
         data_.stop();
         listenForCollisions();
         const std::size_t hits = data_.collisions().size();
-        say(fmt("Recording stopped: %zu samples, %zu collision%s (Data section: Export or Copy)",
+        notices_.say(
+            fmt("Recording stopped: %zu samples, %zu collision%s (Data section: Export or Copy)",
                 data_.trajectory().samples().size(), hits, hits == 1 ? "" : "s"));
         return;
     }
@@ -151,10 +153,10 @@ void Session::handle(const cmd::SetRecording& c) {
     if (const auto id = tools_.selection.id(); id && doc_.world.contains(*id)) {
         ids.push_back(*id);
     } else if (doc_.world.size() > DataRecorder::kMaxAllParticles) {
-        say(fmt("Not recording: select a particle first (recording all %zu particles is "
-                "limited to %zu)",
-                doc_.world.size(), DataRecorder::kMaxAllParticles),
-            Notice::Level::Warning);
+        notices_.say(fmt("Not recording: select a particle first (recording all %zu particles is "
+                         "limited to %zu)",
+                         doc_.world.size(), DataRecorder::kMaxAllParticles),
+                     Notice::Level::Warning);
         return;
     } else {
         ids = doc_.world.ids();
@@ -162,7 +164,7 @@ void Session::handle(const cmd::SetRecording& c) {
                   [](ParticleId a, ParticleId b) { return a.slot < b.slot; });
     }
     if (ids.empty()) {
-        say("Not recording: the box is empty", Notice::Level::Warning);
+        notices_.say("Not recording: the box is empty", Notice::Level::Warning);
         return;
     }
     data_.start(doc_.world, ids, c.every > 0 ? c.every : data_.every());
@@ -171,8 +173,8 @@ void Session::handle(const cmd::SetRecording& c) {
         ids.size() == 1
             ? fmt("particle %llu", static_cast<unsigned long long>(particleNumber(ids[0])))
             : fmt("all %zu particles", ids.size());
-    say(fmt("Recording %s every %d step%s (X stops)", who.c_str(), data_.every(),
-            data_.every() == 1 ? "" : "s"));
+    notices_.say(fmt("Recording %s every %d step%s (X stops)", who.c_str(), data_.every(),
+                     data_.every() == 1 ? "" : "s"));
 }
 
 }  // namespace psb::app

@@ -22,11 +22,11 @@ void Session::handle(const cmd::Select& c) {
 void Session::handle(const cmd::OpenEdit&) {
     const auto id = tools_.selection.id();
     if (!id) {
-        say("Click a particle to select it, then Enter edits it");
+        notices_.say("Click a particle to select it, then Enter edits it");
         return;
     }
     tools_.prompt.open(doc_.world.get(*id), axes());
-    log("Editing particle " + std::to_string(particleNumber(*id)));
+    notices_.log("Editing particle " + std::to_string(particleNumber(*id)));
 }
 
 void Session::handle(const cmd::EditType& c) {
@@ -50,12 +50,12 @@ void Session::handle(const cmd::EditApply&) {
     const EditResult r = applyEdit(doc_.world, prompt.target(), prompt.texts(), axes());
     if (r.applied) {
         tools_.closePrompt();
-        say(r.message);
+        notices_.say(r.message);
         userAction("edit particle");
     } else {
         // The prompt stays open with its text, so the value can be corrected.
         prompt.setError(r.message);
-        say("Edit refused: " + r.message, Notice::Level::Warning);
+        notices_.say("Edit refused: " + r.message, Notice::Level::Warning);
     }
 }
 
@@ -64,11 +64,11 @@ void Session::handle(const cmd::EditParticle& c) {
     const EditResult r = editParticleValue(doc_.world, c.id, c.field, c.text, axes());
     if (!r.applied) {
         tools_.editRefusal = r.message;
-        say("Edit refused: " + r.message, Notice::Level::Warning);
+        notices_.say("Edit refused: " + r.message, Notice::Level::Warning);
         return;
     }
     tools_.editRefusal.clear();
-    say(r.message);
+    notices_.say(r.message);
     userAction("edit particle");
 }
 

@@ -18,14 +18,14 @@ namespace psb::app {
 void Session::handle(const cmd::OpenPreset& c) {
     const auto& presets = options_.presets;
     if (presets.empty()) {
-        say("No preset scenes found (assets/scenes)");
+        notices_.say("No preset scenes found (assets/scenes)");
         return;
     }
     std::size_t k = nextPreset_ % presets.size();
     if (c.index >= 0) {
         if (static_cast<std::size_t>(c.index) >= presets.size()) {
-            say("No preset " + std::to_string(c.index + 1) + " (there are " +
-                std::to_string(presets.size()) + ")");
+            notices_.say("No preset " + std::to_string(c.index + 1) + " (there are " +
+                         std::to_string(presets.size()) + ")");
             return;
         }
         k = static_cast<std::size_t>(c.index);
@@ -39,8 +39,9 @@ void Session::handle(const cmd::OpenPreset& c) {
     clock_.paused = true;
     clock_.restart();
     const std::string key = cmd::presetKey(static_cast<int>(k));
-    say("Preset " + std::to_string(k + 1) + " of " + std::to_string(presets.size()) +
-        (key.empty() ? std::string() : " (key " + key + ")") + ", paused: Space starts it");
+    notices_.say("Preset " + std::to_string(k + 1) + " of " + std::to_string(presets.size()) +
+                 (key.empty() ? std::string() : " (key " + key + ")") +
+                 ", paused: Space starts it");
 }
 
 void Session::handle(const cmd::OpenFile& c) {
@@ -63,14 +64,15 @@ bool Session::openFile(const std::optional<std::filesystem::path>& file, const c
         }
         showSceneTrails(doc_.meta.trails);
         if (file) doc_.rememberFile(*file);
-        say(std::string(verb) + " " +
-            (file ? file->filename().string() : std::string("the built-in scene")) + ": " +
-            doc_.meta.name + " (" + std::to_string(doc_.world.size()) + " particles)" + speedReset);
+        notices_.say(std::string(verb) + " " +
+                     (file ? file->filename().string() : std::string("the built-in scene")) + ": " +
+                     doc_.meta.name + " (" + std::to_string(doc_.world.size()) + " particles)" +
+                     speedReset);
         doc_.fileError.clear();
         return true;
     } catch (const std::exception& e) {  // SceneError, or a scene the world refuses
         doc_.fileError = std::string("Cannot open scene: ") + e.what();
-        say(doc_.fileError, Notice::Level::Error);
+        notices_.say(doc_.fileError, Notice::Level::Error);
         return false;
     }
 }
@@ -101,7 +103,7 @@ void Session::handle(const cmd::AskNewScene&) {
 void Session::handle(const cmd::NewScene& c) {
     const auto refuse = [this](const std::string& why) {
         dialog_.error = why;
-        say("New scene: " + why, Notice::Level::Warning);
+        notices_.say("New scene: " + why, Notice::Level::Warning);
     };
     const auto sizeOk = [](double v) {
         return std::isfinite(v) && v >= kMinBoxSide && v <= kMaxBoxSide;
@@ -131,7 +133,8 @@ void Session::handle(const cmd::NewScene& c) {
     remember("new scene");
     clock_.paused = true;
     clock_.restart();
-    say(fmt("New scene: an empty box %s x %s", quantity(c.width, "m").c_str(),
+    notices_.say(
+        fmt("New scene: an empty box %s x %s", quantity(c.width, "m").c_str(),
             quantity(c.height, "m").c_str()) +
         (c.gravity > 0.0 ? fmt(", gravity %g m/s\u00b2", c.gravity) : std::string(", no gravity")) +
         ", paused: fling or launch particles into it, then Space");
@@ -155,12 +158,13 @@ void Session::handle(const cmd::Restart&) {
     if (doc_.asOnDisk()) doc_.dirty = false;
     remember("restart");
     const bool loaded = setup == doc_.loaded;
-    say(std::string("Restarted: back to ") +
-        (loaded ? "the scene as it opened" : "the set-up as Play last started it") + " (" +
-        std::to_string(doc_.world.size()) + " particles, t = " + quantity(doc_.world.time(), "s") +
-        ")");
+    notices_.say(std::string("Restarted: back to ") +
+                 (loaded ? "the scene as it opened" : "the set-up as Play last started it") + " (" +
+                 std::to_string(doc_.world.size()) +
+                 " particles, t = " + quantity(doc_.world.time(), "s") + ")");
     if (wasRecording) {
-        say("Recording stopped: what it recorded stays in the Data section to export until X "
+        notices_.say(
+            "Recording stopped: what it recorded stays in the Data section to export until X "
             "records again");
     }
 }
@@ -179,7 +183,7 @@ void Session::handle(const cmd::Revert&) {
     ++doc_.generation;
     startOver(true);
     remember("revert");
-    say("Reverted to " + doc_.meta.name + " as it was made (it has no file)");
+    notices_.say("Reverted to " + doc_.meta.name + " as it was made (it has no file)");
 }
 
 void Session::handle(const cmd::SetSceneText& c) {
@@ -187,8 +191,8 @@ void Session::handle(const cmd::SetSceneText& c) {
     const bool renamed = c.name != doc_.meta.name;
     doc_.meta.name = c.name;
     doc_.meta.description = c.description;
-    say(renamed ? "Title: " + (c.name.empty() ? std::string("(none)") : c.name)
-                : std::string("Description changed"));
+    notices_.say(renamed ? "Title: " + (c.name.empty() ? std::string("(none)") : c.name)
+                         : std::string("Description changed"));
     userAction(renamed ? "rename scene" : "describe scene");
 }
 
@@ -218,10 +222,10 @@ void Session::handle(const cmd::AskSaveAs&) {
     dialog_.proposal = saveProposal();
     dialog_.quitAfterSave = quitAfter;
     dialog_.download = options_.inPage;
-    say("Save as: type a file name, Enter saves, Esc cancels (" +
-        (dialog_.download ? std::string("the browser downloads it")
-                          : "folder " + dialog_.proposal.parent_path().string()) +
-        ")");
+    notices_.say("Save as: type a file name, Enter saves, Esc cancels (" +
+                 (dialog_.download ? std::string("the browser downloads it")
+                                   : "folder " + dialog_.proposal.parent_path().string()) +
+                 ")");
 }
 
 void Session::handle(const cmd::SaveAs& c) {
@@ -230,13 +234,13 @@ void Session::handle(const cmd::SaveAs& c) {
         c.path.empty() ? std::nullopt : saveFileName(c.path, why);
     if (c.path.empty()) {
         dialog_.error = "Save: type a file name first";
-        say(dialog_.error, Notice::Level::Warning);
+        notices_.say(dialog_.error, Notice::Level::Warning);
         return;
     }
     if (!named) {
         // The dialog and the panel's status line say so too, not the save before it.
         dialog_.error = doc_.fileError = "Save: " + why;
-        say(doc_.fileError, Notice::Level::Warning);
+        notices_.say(doc_.fileError, Notice::Level::Warning);
         return;
     }
     std::filesystem::path path = *named;
@@ -253,8 +257,8 @@ void Session::handle(const cmd::SaveAs& c) {
         dialog_.kind = Dialog::Kind::SaveAs;
         dialog_.quitAfterSave = quitAfter;
         dialog_.replace = std::filesystem::absolute(path, ec).lexically_normal();
-        say(path.filename().string() + " exists: Replace it, or choose another name",
-            Notice::Level::Warning);
+        notices_.say(path.filename().string() + " exists: Replace it, or choose another name",
+                     Notice::Level::Warning);
         return;
     }
     if (!saveTo(path)) {
@@ -269,13 +273,13 @@ void Session::handle(const cmd::SaveAs& c) {
 bool Session::saveTo(const std::filesystem::path& path) {
     try {
         const std::string saved = doc_.save(path);
-        say(options_.inPage ? fmt("Saved %zu particles as %s", doc_.world.size(),
-                                  path.filename().string().c_str())
-                            : saved);
+        notices_.say(options_.inPage ? fmt("Saved %zu particles as %s", doc_.world.size(),
+                                           path.filename().string().c_str())
+                                     : saved);
         return true;
     } catch (const std::exception& e) {  // SaveError; the old file is intact
         doc_.fileError = std::string("Save failed: ") + e.what();
-        say(doc_.fileError, Notice::Level::Error);
+        notices_.say(doc_.fileError, Notice::Level::Error);
         return false;
     }
 }
@@ -291,7 +295,7 @@ void Session::handle(const cmd::CloseDialog&) {
     if (!dialog_.open()) return;
     const bool quitting = dialog_.kind == Dialog::Kind::Quit || dialog_.quitAfterSave;
     closeDialog();
-    say(quitting ? "Quit cancelled" : "Cancelled");
+    notices_.say(quitting ? "Quit cancelled" : "Cancelled");
 }
 
 void Session::handle(const cmd::Back&) {
@@ -301,9 +305,9 @@ void Session::handle(const cmd::Back&) {
         showHelp_ = false;
     } else if (tools_.prompt.active()) {
         tools_.closePrompt();
-        say("Edit cancelled");
+        notices_.say("Edit cancelled");
     } else if (options_.inPage) {
-        say("Esc closes a dialog, the help or the edit prompt; nothing is open");
+        notices_.say("Esc closes a dialog, the help or the edit prompt; nothing is open");
     } else {
         quit();
     }
@@ -322,8 +326,8 @@ void Session::quit() {
     }
     tools_.closePrompt();
     dialog_.kind = Dialog::Kind::Quit;
-    say("Unsaved changes to " + doc_.meta.name + ": Save, Discard or Cancel",
-        Notice::Level::Warning);
+    notices_.say("Unsaved changes to " + doc_.meta.name + ": Save, Discard or Cancel",
+                 Notice::Level::Warning);
 }
 
 void Session::handle(const cmd::AnswerQuit& c) {
@@ -339,7 +343,7 @@ void Session::handle(const cmd::AnswerQuit& c) {
             return;
         case cmd::AnswerQuit::Choice::Discard:
             closeDialog();
-            log("Quit without saving");
+            notices_.log("Quit without saving");
             running_ = false;
             return;
         case cmd::AnswerQuit::Choice::Cancel:

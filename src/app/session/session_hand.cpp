@@ -41,7 +41,7 @@ void Session::handle(const cmd::PointerDown& c) {
     if (grabbed) {
         world.setKinematic(*grabbed, true);  // the hand moves it, not the steps
         const Particle p = world.get(*grabbed);
-        log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
+        notices_.log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
         // The energy is measured from the grab; a click that only selects changes nothing.
         monitor_.resetEnergy(world);
     }
@@ -67,10 +67,10 @@ void Session::handle(const cmd::PointerMove& c) {
     if (clock_.paused && !tools_.pausedFlingTold &&
         tools_.hand.mode() == Interaction::Mode::Holding && tools_.hand.dragged(launchSettings())) {
         tools_.pausedFlingTold = true;
-        notices_.push_back({Notice::Level::Info,
-                            "Paused: let go and the particle keeps its speed (its arrow) until "
-                            "Space sets time running",
-                            true, false});
+        notices_.add({Notice::Level::Info,
+                      "Paused: let go and the particle keeps its speed (its arrow) until "
+                      "Space sets time running",
+                      true, false});
     }
 }
 
@@ -80,8 +80,8 @@ void Session::handle(const cmd::PointerUp& c) {
     if (ruler_.held()) {
         ruler_.moveTo(pointerWorld());
         ruler_.letGo();
-        log(fmt("Ruler: %s, %.1f degrees from the horizontal",
-                quantity(ruler_.length(), "m").c_str(), ruler_.slopeDegrees()));
+        notices_.log(fmt("Ruler: %s, %.1f degrees from the horizontal",
+                         quantity(ruler_.length(), "m").c_str(), ruler_.slopeDegrees()));
         return;
     }
     if (tools_.tool == cmd::Tool::Pan) {
@@ -112,18 +112,19 @@ void Session::handle(const cmd::PointerUp& c) {
     if (r.kind == K::Launched) r.id = world.add(r.launch);
     const std::string at = fmt("at [%.2f, %.2f]", r.position.x(), r.position.y());
     const std::string v = fmt("with velocity [%.2f, %.2f] m/s", r.velocity.x(), r.velocity.y());
-    if (r.kind == K::Flung) log("Released particle " + at + " " + v);
+    if (r.kind == K::Flung) notices_.log("Released particle " + at + " " + v);
     if (r.kind == K::Flung && clock_.paused) {
-        say(r.velocity.norm() > 0.0 ? fmt("Flung at %s while paused: Space sets it moving",
-                                          quantity(r.velocity.norm(), "m/s").c_str())
-                                    : std::string("Let go at rest (the hand had stopped)"));
+        notices_.say(r.velocity.norm() > 0.0
+                         ? fmt("Flung at %s while paused: Space sets it moving",
+                               quantity(r.velocity.norm(), "m/s").c_str())
+                         : std::string("Let go at rest (the hand had stopped)"));
     }
-    if (r.kind == K::Launched) log("Launched particle " + at + " " + v);
+    if (r.kind == K::Launched) notices_.log("Launched particle " + at + " " + v);
     if ((r.kind == K::Flung || r.kind == K::Launched) && r.capped) {
-        say(fmt("Speed capped at %.3g m/s (%g box widths per second)", r.velocity.norm(),
-                kMaxLaunchBoxesPerSecond));
+        notices_.say(fmt("Speed capped at %.3g m/s (%g box widths per second)", r.velocity.norm(),
+                         kMaxLaunchBoxesPerSecond));
     }
-    if (r.kind == K::Refused) say(r.message);
+    if (r.kind == K::Refused) notices_.say(r.message);
     if (r.kind == K::Clicked) click(r);
     if (r.kind == K::Flung) userAction("fling particle");
     if (r.kind == K::Launched) userAction("launch particle");
@@ -136,7 +137,7 @@ void Session::click(const ReleaseResult& r) {
         t.selectedObstacle.reset();
         t.selection.select(r.id);
         std::string line = selectionLogLine(doc_.world.get(r.id));
-        log(line.substr(4));  // without its "[I] "
+        notices_.log(line.substr(4));  // without its "[I] "
     } else if (selectObstacleAt()) {
         t.selection.clear();
         t.closePrompt();
@@ -144,7 +145,7 @@ void Session::click(const ReleaseResult& r) {
         t.selection.clear();
         t.selectedObstacle.reset();
         t.closePrompt();
-        say("Selection cleared");
+        notices_.say("Selection cleared");
     }
 }
 
@@ -167,8 +168,8 @@ void Session::handle(const cmd::DeleteParticle& c) {
     }
     const Particle p = doc_.world.get(c.id);
     doc_.world.remove(c.id);
-    log(deletionLogLine(p).substr(4));
-    notices_.push_back({Notice::Level::Info, "Deleted a particle", true, false});
+    notices_.log(deletionLogLine(p).substr(4));
+    notices_.add({Notice::Level::Info, "Deleted a particle", true, false});
     userAction("delete particle");
     checkSelection();
 }
@@ -184,7 +185,7 @@ void Session::holdParticle(double now) {
 void Session::checkSelection() {
     if (tools_.selection.forgetIfGone(doc_.world)) {
         tools_.closePrompt();
-        say("Selection cleared: the particle was deleted");
+        notices_.say("Selection cleared: the particle was deleted");
     }
 }
 
@@ -199,7 +200,7 @@ void Session::handle(const cmd::SetTool& c) {
                                          "Left mouse: move the view",
                                          "Left mouse: a click places a peg",
                                          "Left mouse: a drag draws a wall"};
-    say(kTools[static_cast<int>(t.tool)]);
+    notices_.say(kTools[static_cast<int>(t.tool)]);
 }
 
 void Session::handle(const cmd::SpawnRandom&) {
@@ -220,7 +221,7 @@ void Session::handle(const cmd::SpawnRandom&) {
     const Vec2 want(x(rng), y(rng));
     const auto spot = findFreeSpot(doc_.world, want, radius);
     if (!spot) {
-        say("No room for a new particle");
+        notices_.say("No room for a new particle");
         return;
     }
     ParticleDef def;
@@ -233,7 +234,8 @@ void Session::handle(const cmd::SpawnRandom&) {
     def.fixedRotation = !spawn.turn;
     doc_.world.add(def);
     userAction("spawn particle");
-    log(fmt("Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass %.3g kg",
+    notices_.log(
+        fmt("Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass %.3g kg",
             spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass));
 }
 
@@ -242,34 +244,34 @@ void Session::handle(const cmd::ChangeSpawnMass& c) {
     const double before = spawn.mass();
     spawn.changeSize(c.direction < 0 ? -1 : 1);
     if (spawn.mass() != before) remember("set new particle size");
-    notices_.push_back({Notice::Level::Info,
-                        fmt("New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
-                            spawn.mass(), spawn.radius(), spawn.size),
-                        true, false});
+    notices_.add({Notice::Level::Info,
+                  fmt("New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
+                      spawn.mass(), spawn.radius(), spawn.size),
+                  true, false});
 }
 
 void Session::handle(const cmd::SetDiscsTurn& c) {
     if (tools_.spawn.turn == c.on) return;
     tools_.spawn.turn = c.on;
     remember(c.on ? "let new particles turn" : "give new particles fixed rotation");
-    say(c.on ? "New particles turn: friction spins them, and they roll"
-             : "New particles have fixed rotation: they slide without turning");
+    notices_.say(c.on ? "New particles turn: friction spins them, and they roll"
+                      : "New particles have fixed rotation: they slide without turning");
 }
 
 void Session::handle(const cmd::SetLaunchBody& c) {
     const WorldDef& d = doc_.world.def();
     SpawnSettings& spawn = tools_.spawn;
     if (!(c.mass >= kMinLaunchMass && c.mass <= kMaxLaunchMass)) {
-        say(fmt("Launch mass must be between %g and %g kg, got %g", kMinLaunchMass, kMaxLaunchMass,
-                c.mass),
-            Notice::Level::Warning);
+        notices_.say(fmt("Launch mass must be between %g and %g kg, got %g", kMinLaunchMass,
+                         kMaxLaunchMass, c.mass),
+                     Notice::Level::Warning);
         return;
     }
     const double maxRadius = 0.5 * std::min(d.width, d.height);
     if (!(c.radius >= 0.0 && c.radius <= maxRadius)) {
-        say(fmt("Launch radius must be above 0 and at most half the box (%.3g m), got %g",
-                maxRadius, c.radius),
-            Notice::Level::Warning);
+        notices_.say(fmt("Launch radius must be above 0 and at most half the box (%.3g m), got %g",
+                         maxRadius, c.radius),
+                     Notice::Level::Warning);
         return;
     }
     const SpawnSettings before = spawn;
@@ -282,8 +284,8 @@ void Session::handle(const cmd::SetLaunchBody& c) {
         spawn.color() != before.color()) {
         remember("set new particles");
     }
-    log(fmt("New particles: %g kg, radius %g m%s", spawn.mass(), spawn.radius(),
-            spawn.fixedRadius ? "" : " (from the mass)"));
+    notices_.log(fmt("New particles: %g kg, radius %g m%s", spawn.mass(), spawn.radius(),
+                     spawn.fixedRadius ? "" : " (from the mass)"));
 }
 
 }  // namespace psb::app

@@ -89,7 +89,7 @@ void Session::undoOrRedo(bool redo) {
     const std::string shownBefore = quantity(timeBefore, "s");
     if (history_.viewing) show(history_.timeline.lastFrame());  // the present comes back after
     if (!(redo ? history_.undo.canRedo() : history_.undo.canUndo())) {
-        say(redo ? "Nothing to redo" : "Nothing to undo");
+        notices_.say(redo ? "Nothing to redo" : "Nothing to undo");
         return;
     }
     // The world now goes to the other side as it is (moved, not copied): restore() replaces it.
@@ -102,7 +102,7 @@ void Session::undoOrRedo(bool redo) {
         message +=
             (doc_.world.time() < timeBefore ? " (back to " : " (forward to ") + shownAfter + ")";
     }
-    say(message);
+    notices_.say(message);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -148,7 +148,7 @@ void Session::handle(const cmd::StepForward&) {
         if (clock_.paused) {
             clock_.stepRequested = true;  // the present: one new step
         } else {
-            say("Pause (Space) to step through time");
+            notices_.say("Pause (Space) to step through time");
         }
         return;
     }
@@ -166,16 +166,16 @@ void Session::handle(const cmd::SeekBy& c) {
 void Session::seek(double seconds, bool oneFrameBack) {
     Timeline& t = history_.timeline;
     if (tools_.hand.mode() != Interaction::Mode::Idle) {
-        say("Release the mouse button to step through time");
+        notices_.say("Release the mouse button to step through time");
         return;
     }
     if (!std::isfinite(seconds)) {
-        say("Cannot go to that time: it is not a number", Notice::Level::Warning);
+        notices_.say("Cannot go to that time: it is not a number", Notice::Level::Warning);
         return;
     }
     if (!clock_.paused) {
         clock_.paused = true;
-        say("Paused");
+        notices_.say("Paused");
     }
     if (!history_.viewing) t.record(doc_.world);  // the present, with any edit since the frame
     if (t.empty()) return;
@@ -183,8 +183,8 @@ void Session::seek(double seconds, bool oneFrameBack) {
     std::int64_t target = t.frameAt(seconds);
     if (oneFrameBack) target = at - 1;
     if (target < t.firstFrame()) {
-        say(fmt("The recorded past starts at %.2f s (%.1f s kept)", t.timeOf(t.firstFrame()),
-                t.coveredSeconds()));
+        notices_.say(fmt("The recorded past starts at %.2f s (%.1f s kept)",
+                         t.timeOf(t.firstFrame()), t.coveredSeconds()));
         return;
     }
     if (target != at) show(target);

@@ -70,22 +70,23 @@ void Session::obstacleRelease() {
     const ObstaclePlacement p = tools_.obstacle.release(
         pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
     if (!p.obstacle) {
-        if (!p.refusal.empty()) say(p.refusal, Notice::Level::Warning);
+        if (!p.refusal.empty()) notices_.say(p.refusal, Notice::Level::Warning);
         return;
     }
     if (const std::string why = overlapRefusal(doc_.world, *p.obstacle, "Not placed");
         !why.empty()) {
-        say(why, Notice::Level::Warning);
+        notices_.say(why, Notice::Level::Warning);
         return;
     }
     try {
         const std::size_t index = doc_.world.addObstacle(*p.obstacle);
         tools_.selectedObstacle.reset();
-        log("Added obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
-        say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") + " (Ctrl+Z undoes it)");
+        notices_.log("Added obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
+        notices_.say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") +
+                     " (Ctrl+Z undoes it)");
         userAction(p.obstacle->isPeg() ? "place peg" : "draw wall");
     } catch (const std::exception& e) {  // InvalidArgument: what the world refuses
-        say(std::string("Obstacle refused: ") + e.what(), Notice::Level::Warning);
+        notices_.say(std::string("Obstacle refused: ") + e.what(), Notice::Level::Warning);
     }
 }
 
@@ -105,13 +106,13 @@ bool Session::obstacleMoveRelease() {
         pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
     if (!p.obstacle) {
         if (p.refusal.empty()) return false;  // a click
-        say(p.refusal, Notice::Level::Warning);
+        notices_.say(p.refusal, Notice::Level::Warning);
         return true;
     }
     if (index >= doc_.world.obstacles().size()) return true;
     if (const std::string why = overlapRefusal(doc_.world, *p.obstacle, "Not moved");
         !why.empty()) {
-        say(why, Notice::Level::Warning);
+        notices_.say(why, Notice::Level::Warning);
         return true;
     }
     Obstacles moved = doc_.world.obstacles();
@@ -119,14 +120,14 @@ bool Session::obstacleMoveRelease() {
     try {
         doc_.world.setObstacles(std::move(moved));
     } catch (const std::exception& e) {  // InvalidArgument: what the world refuses
-        say(std::string("Not moved: ") + e.what(), Notice::Level::Warning);
+        notices_.say(std::string("Not moved: ") + e.what(), Notice::Level::Warning);
         return true;
     }
     tools_.selectedObstacle = index;
     tools_.selection.clear();
     tools_.closePrompt();
-    log("Moved obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
-    say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
+    notices_.log("Moved obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
+    notices_.say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
     userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
     return true;
 }
@@ -137,16 +138,16 @@ bool Session::selectObstacleAt() {
     if (!index) return false;
     tools_.selectedObstacle = index;
     const Obstacle& o = doc_.world.obstacles()[*index];
-    log("Selected obstacle " + std::to_string(*index) + ": " + describe(o));
-    say(std::string("Selected a ") + obstacleNoun(o) + ": Delete or Backspace removes it");
+    notices_.log("Selected obstacle " + std::to_string(*index) + ": " + describe(o));
+    notices_.say(std::string("Selected a ") + obstacleNoun(o) + ": Delete or Backspace removes it");
     return true;
 }
 
 void Session::removeObstacle(std::size_t index) {
     if (index >= doc_.world.obstacles().size()) {
-        say("No obstacle " + std::to_string(index) + " to remove (there are " +
-                std::to_string(doc_.world.obstacles().size()) + ")",
-            Notice::Level::Warning);
+        notices_.say("No obstacle " + std::to_string(index) + " to remove (there are " +
+                         std::to_string(doc_.world.obstacles().size()) + ")",
+                     Notice::Level::Warning);
         return;
     }
     const Obstacle o = doc_.world.obstacles()[index];
@@ -156,8 +157,8 @@ void Session::removeObstacle(std::size_t index) {
     } else if (tools_.selectedObstacle && *tools_.selectedObstacle > index) {
         --*tools_.selectedObstacle;
     }
-    log("Removed obstacle " + std::to_string(index) + ": " + describe(o));
-    say(std::string("Removed the ") + obstacleNoun(o) + " (Ctrl+Z brings it back)");
+    notices_.log("Removed obstacle " + std::to_string(index) + ": " + describe(o));
+    notices_.say(std::string("Removed the ") + obstacleNoun(o) + " (Ctrl+Z brings it back)");
     userAction(o.isPeg() ? "remove peg" : "remove wall");
 }
 
@@ -168,7 +169,7 @@ void Session::handle(const cmd::RemoveObstacle& c) {
 void Session::handle(const cmd::SetObstacleSizes& c) {
     const ObstacleSizes sizes{c.pegRadius, c.wallThickness};
     if (const std::string why = obstacleSizesRefusal(sizes, doc_.world.def()); !why.empty()) {
-        say(why, Notice::Level::Warning);
+        notices_.say(why, Notice::Level::Warning);
         return;
     }
     tools_.obstacleSizes = sizes;

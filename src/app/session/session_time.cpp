@@ -16,12 +16,12 @@ void Session::handle(const cmd::TogglePause&) {
     if (clock_.paused && history_.viewing) {
         const double t = doc_.world.time();
         leavePast();
-        say(fmt("Resumed from %.2f s: the later frames are forgotten", t));
+        notices_.say(fmt("Resumed from %.2f s: the later frames are forgotten", t));
     } else if (!clock_.paused) {
-        say("Paused");
+        notices_.say("Paused");
     } else {
         // Play after an edit: the world as it is becomes the set-up Restart returns to.
-        say(doc_.play() ? "Resumed; R restarts from this set-up" : "Resumed");
+        notices_.say(doc_.play() ? "Resumed; R restarts from this set-up" : "Resumed");
     }
     clock_.paused = !clock_.paused;
     clock_.restart();
@@ -38,7 +38,7 @@ void Session::handle(const cmd::SingleStep&) {
 void Session::handle(const cmd::SetTimeScale& c) {
     const double before = clock_.scale();
     if (!clock_.setScale(c.value)) return;
-    say("Time speed " + speedText(clock_.scale()));
+    notices_.say("Time speed " + speedText(clock_.scale()));
     if (clock_.scale() != before) remember("set time speed");
 }
 
@@ -51,23 +51,25 @@ void Session::handle(const cmd::Stopwatch& c) {
         case A::StartStop:
             if (stopwatch_.running()) {
                 stopwatch_.stop(t);
-                say(fmt("Stopwatch stopped at %.3f s", stopwatch_.reading(t)));
+                notices_.say(fmt("Stopwatch stopped at %.3f s", stopwatch_.reading(t)));
             } else {
                 stopwatch_.start(t);
-                say(clock_.paused ? "Stopwatch started: it runs with simulated time (Space)"
-                                  : "Stopwatch started");
+                notices_.say(clock_.paused
+                                 ? "Stopwatch started: it runs with simulated time (Space)"
+                                 : "Stopwatch started");
             }
             break;
         case A::Lap:
             if (!stopwatch_.running()) return;
             stopwatch_.lap(t);
-            say(fmt("Lap %zu: %.3f s", stopwatch_.laps().size(), stopwatch_.laps().back()));
+            notices_.say(
+                fmt("Lap %zu: %.3f s", stopwatch_.laps().size(), stopwatch_.laps().back()));
             break;
         case A::Reset:
         case A::LapOrReset:
             if (!stopwatch_.used()) return;
             stopwatch_.reset();
-            say("Stopwatch reset");
+            notices_.say("Stopwatch reset");
             break;
     }
 }
@@ -116,7 +118,7 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     if (monitor_.frameDone(doc_.world, !history_.viewing)) data_.sample(monitor_.series().back());
     if (!history_.viewing) history_.timeline.record(doc_.world);
     if (const std::string why = data_.takeStopReason(); !why.empty()) {
-        say("Recording stopped: " + why, Notice::Level::Warning);
+        notices_.say("Recording stopped: " + why, Notice::Level::Warning);
     }
     clock_.frameDone(t0);
 }

@@ -20,45 +20,45 @@ namespace psb::app {
 
 void Session::handle(const cmd::SetRestitution& c) {
     if (!(c.value >= 0.0 && c.value <= 1.0)) {
-        say(fmt("Restitution must be between 0 and 1, got %g", c.value), Notice::Level::Warning);
+        notices_.say(fmt("Restitution must be between 0 and 1, got %g", c.value),
+                     Notice::Level::Warning);
         return;
     }
     if (doc_.world.def().restitution == c.value) return;
     doc_.world.setRestitution(c.value);
-    notices_.push_back(
-        {Notice::Level::Info, fmt("Restitution %.2f", c.value), true, !c.continues, "e"});
+    notices_.add({Notice::Level::Info, fmt("Restitution %.2f", c.value), true, !c.continues, "e"});
     userAction("set restitution", c.continues);
 }
 
 void Session::handle(const cmd::SetFriction& c) {
     if (!(c.value >= 0.0 && std::isfinite(c.value))) {
-        say(fmt("Friction must be a number >= 0, got %g", c.value), Notice::Level::Warning);
+        notices_.say(fmt("Friction must be a number >= 0, got %g", c.value),
+                     Notice::Level::Warning);
         return;
     }
     if (doc_.world.def().friction == c.value) return;
     doc_.world.setFriction(c.value);
-    notices_.push_back(
-        {Notice::Level::Info, fmt("Friction %.2f", c.value), true, !c.continues, "mu"});
+    notices_.add({Notice::Level::Info, fmt("Friction %.2f", c.value), true, !c.continues, "mu"});
     userAction("set friction", c.continues);
 }
 
 void Session::handle(const cmd::SetTangentialRestitution& c) {
     if (!(c.value >= -1.0 && c.value <= 1.0)) {
-        say(fmt("Tangential restitution must be between -1 and 1, got %g", c.value),
-            Notice::Level::Warning);
+        notices_.say(fmt("Tangential restitution must be between -1 and 1, got %g", c.value),
+                     Notice::Level::Warning);
         return;
     }
     if (doc_.world.def().tangentialRestitution == c.value) return;
     doc_.world.setTangentialRestitution(c.value);
-    notices_.push_back({Notice::Level::Info, fmt("Tangential restitution %.2f", c.value), true,
-                        !c.continues, "beta"});
+    notices_.add({Notice::Level::Info, fmt("Tangential restitution %.2f", c.value), true,
+                  !c.continues, "beta"});
     userAction("set tangential restitution", c.continues);
 }
 
 void Session::handle(const cmd::ScaleSpeeds& c) {
     if (!(c.factor > 0.0 && c.factor <= 10.0)) {
-        say(fmt("Speeds can be scaled by more than 0 and at most 10, got %g", c.factor),
-            Notice::Level::Warning);
+        notices_.say(fmt("Speeds can be scaled by more than 0 and at most 10, got %g", c.factor),
+                     Notice::Level::Warning);
         return;
     }
     World& w = doc_.world;
@@ -71,22 +71,24 @@ void Session::handle(const cmd::ScaleSpeeds& c) {
         fastest = std::max(fastest, std::hypot(p.vx[i], p.vy[i]));
     }
     if (free.empty() || fastest == 0.0) {
-        say("Nothing moves: heating scales speeds, and every speed is zero (launch or fling "
+        notices_.say(
+            "Nothing moves: heating scales speeds, and every speed is zero (launch or fling "
             "some first)",
             Notice::Level::Warning);
         return;
     }
     const double limit = kMaxEditSpeedBoxes * std::max(w.def().width, w.def().height);
     if (fastest * c.factor > limit) {
-        say(fmt("Not heated: the fastest particle would move at %s, over %g box sizes a second",
+        notices_.say(
+            fmt("Not heated: the fastest particle would move at %s, over %g box sizes a second",
                 quantity(fastest * c.factor, "m/s").c_str(), kMaxEditSpeedBoxes),
             Notice::Level::Warning);
         return;
     }
     for (const ParticleId id : free)
         w.setVelocity(id, c.factor * w.get(id).velocity);
-    say(fmt("%s: every speed x%.3g, the temperature (mean kinetic energy) x%.3g",
-            c.factor >= 1.0 ? "Heated" : "Cooled", c.factor, c.factor * c.factor));
+    notices_.say(fmt("%s: every speed x%.3g, the temperature (mean kinetic energy) x%.3g",
+                     c.factor >= 1.0 ? "Heated" : "Cooled", c.factor, c.factor * c.factor));
     userAction(c.factor >= 1.0 ? "heat" : "cool");
 }
 
@@ -95,13 +97,14 @@ void Session::handle(const cmd::ResizeBox& c) {
     const double width = w.def().width, height = w.def().height;
     if (!(c.width >= kMinBoxSide && c.width <= kMaxBoxSide && c.height >= kMinBoxSide &&
           c.height <= kMaxBoxSide)) {
-        say(fmt("The box must be %g m to %g m each way, got %g m x %g m", kMinBoxSide, kMaxBoxSide,
-                c.width, c.height),
-            Notice::Level::Warning);
+        notices_.say(fmt("The box must be %g m to %g m each way, got %g m x %g m", kMinBoxSide,
+                         kMaxBoxSide, c.width, c.height),
+                     Notice::Level::Warning);
         return;
     }
     if (!w.obstacles().empty() || !w.droppers().empty()) {
-        say("Not resized: this scene's walls, pegs and spouts are fixed in the box; a box "
+        notices_.say(
+            "Not resized: this scene's walls, pegs and spouts are fixed in the box; a box "
             "without them (the gas) can be squeezed",
             Notice::Level::Warning);
         return;
@@ -109,26 +112,27 @@ void Session::handle(const cmd::ResizeBox& c) {
     if (c.width == width && c.height == height) return;
     auto resized = resizedBox(w, c.width, c.height);
     if (const auto* why = std::get_if<std::string>(&resized)) {
-        say("Not resized: " + *why, Notice::Level::Warning);
+        notices_.say("Not resized: " + *why, Notice::Level::Warning);
         return;
     }
     doc_.world = std::move(std::get<World>(resized));
-    say(fmt("Box %s x %s: the area x%.3g, the particles moved with it, their speeds kept",
-            quantity(c.width, "m").c_str(), quantity(c.height, "m").c_str(),
-            (c.width * c.height) / (width * height)));
+    notices_.say(fmt("Box %s x %s: the area x%.3g, the particles moved with it, their speeds kept",
+                     quantity(c.width, "m").c_str(), quantity(c.height, "m").c_str(),
+                     (c.width * c.height) / (width * height)));
     // The view stays as it was, so that the walls are seen to move in or out.
     userAction(c.width * c.height < width * height ? "squeeze the box" : "expand the box");
 }
 
 void Session::handle(const cmd::SetGravity& c) {
     if (c.on && !(c.g > 0.0 && c.g <= kMaxPanelGravity)) {
-        say(fmt("Gravity must be above 0 and at most %g m/s\u00b2, got %g", kMaxPanelGravity, c.g),
+        notices_.say(
+            fmt("Gravity must be above 0 and at most %g m/s\u00b2, got %g", kMaxPanelGravity, c.g),
             Notice::Level::Warning);
         return;
     }
     if (c.on && !(std::isfinite(c.direction.x()) && std::isfinite(c.direction.y()) &&
                   c.direction != Vec2::Zero())) {
-        say("Gravity needs a direction", Notice::Level::Warning);
+        notices_.say("Gravity needs a direction", Notice::Level::Warning);
         return;
     }
     const Vec2 g = gravityOf(c);
@@ -137,11 +141,10 @@ void Session::handle(const cmd::SetGravity& c) {
     try {
         doc_.world.setGravity(g);
     } catch (const InvalidArgument& e) {
-        say(std::string("Gravity refused: ") + e.what(), Notice::Level::Warning);
+        notices_.say(std::string("Gravity refused: ") + e.what(), Notice::Level::Warning);
         return;
     }
-    notices_.push_back(
-        {Notice::Level::Info, "Gravity " + gravityText(g), true, !c.continues, "gravity"});
+    notices_.add({Notice::Level::Info, "Gravity " + gravityText(g), true, !c.continues, "gravity"});
     // Turning it on or off is a switch, an entry of its own; a new strength is a setting, and
     // a burst of them is one (undo_history.hpp, "Coalescing").
     const bool switched = (before == Vec2::Zero()) != (g == Vec2::Zero());
@@ -151,7 +154,7 @@ void Session::handle(const cmd::SetGravity& c) {
 void Session::handle(const cmd::SetWalls& c) {
     if (doc_.world.def().walls == c.on) return;
     doc_.world.setWalls(c.on);
-    say(c.on ? "Walls on" : "Walls off: particles leave the box");
+    notices_.say(c.on ? "Walls on" : "Walls off: particles leave the box");
     userAction("set walls");
 }
 
@@ -163,11 +166,11 @@ void Session::handle(const cmd::SetMode& c) {
     try {
         doc_.world.setSolver(s);
     } catch (const InvalidArgument& e) {
-        say(std::string("Mode refused: ") + e.what(), Notice::Level::Warning);
+        notices_.say(std::string("Mode refused: ") + e.what(), Notice::Level::Warning);
         return;
     }
     clock_.restart();
-    say("Mode: " + modeName(doc_.world.solver()));
+    notices_.say("Mode: " + modeName(doc_.world.solver()));
     userAction("change mode");
 }
 

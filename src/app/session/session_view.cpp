@@ -65,8 +65,8 @@ void Session::fit() {
     valuesDock_ = view_.values ? docks[chosen] : ValuesDock{};
     fitWith(docks[chosen]);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
-    log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(), topLeft.x(),
-            topLeft.y()));
+    notices_.log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(),
+                     topLeft.x(), topLeft.y()));
     fitted_ = true;
 }
 
@@ -79,7 +79,8 @@ void Session::handle(const cmd::Resize& c) {
     layout_ = c.layout;
     if (fold) {
         showControls_ = false;
-        say("The control panel folded: the window leaves the box no room beside it (C or >> "
+        notices_.say(
+            "The control panel folded: the window leaves the box no room beside it (C or >> "
             "opens it over the box)");
     }
     // A fitted view stays fitted; a view the user moved keeps its centre where it was.
@@ -108,7 +109,8 @@ void Session::handle(const cmd::Pan& c) {
 
 void Session::handle(const cmd::Zoom& c) {
     camera_.zoomAbout(c.screen, c.factor);
-    log(fmt("Zoom %.4f px/m about [%.0f, %.0f]", camera_.zoom(), c.screen.x(), c.screen.y()));
+    notices_.log(
+        fmt("Zoom %.4f px/m about [%.0f, %.0f]", camera_.zoom(), c.screen.x(), c.screen.y()));
     afterCameraMove();
 }
 
@@ -134,7 +136,7 @@ void Session::handle(const cmd::SetShow& c) {
     bool& flag = view_.flag(c.option);
     if (flag == c.on) return;
     flag = c.on;
-    say(showMessage(c.option, c.on));
+    notices_.say(showMessage(c.option, c.on));
     if (c.option == cmd::ShowOption::Ruler && !c.on) ruler_.letGo();
     if (c.option == cmd::ShowOption::Collision) {
         // Hidden in a large scene, it stops listening, and a card kept would go stale.
@@ -152,23 +154,23 @@ void Session::handle(const cmd::SetShow& c) {
 
 void Session::handle(const cmd::SetArrowScale& c) {
     if (!(c.seconds >= kMinArrowSeconds && c.seconds <= kMaxArrowSeconds)) {
-        say(fmt("The arrow scale must be %g s to %g s of motion, got %g", kMinArrowSeconds,
-                kMaxArrowSeconds, c.seconds),
-            Notice::Level::Warning);
+        notices_.say(fmt("The arrow scale must be %g s to %g s of motion, got %g", kMinArrowSeconds,
+                         kMaxArrowSeconds, c.seconds),
+                     Notice::Level::Warning);
         return;
     }
     view_.arrowSeconds = c.seconds;
     view_.arrowScaleSet = true;
-    notices_.push_back({Notice::Level::Info,
-                        fmt("Arrows: %.3g s of motion, kept until a scene opens", c.seconds), true,
-                        !c.continues, "arrow scale"});
+    notices_.add({Notice::Level::Info,
+                  fmt("Arrows: %.3g s of motion, kept until a scene opens", c.seconds), true,
+                  !c.continues, "arrow scale"});
 }
 
 void Session::handle(const cmd::SetUiScale& c) {
     if (!(c.scale >= kMinUiScale && c.scale <= kMaxUiScale)) {
-        say(fmt("The UI scale must be %.0f %% to %.0f %%, got %g %%", 100.0 * kMinUiScale,
-                100.0 * kMaxUiScale, 100.0 * c.scale),
-            Notice::Level::Warning);
+        notices_.say(fmt("The UI scale must be %.0f %% to %.0f %%, got %g %%", 100.0 * kMinUiScale,
+                         100.0 * kMaxUiScale, 100.0 * c.scale),
+                     Notice::Level::Warning);
         return;
     }
     if (c.scale == view_.uiScale && c.automatic == view_.uiScaleAutomatic) return;
@@ -177,15 +179,14 @@ void Session::handle(const cmd::SetUiScale& c) {
     view_.uiScaleAutomatic = c.automatic;
     // The automatic scale follows the window by itself: a resize says nothing.
     if (said) {
-        notices_.push_back(
-            {Notice::Level::Info,
-             fmt("UI scale %.0f %%%s", 100.0 * c.scale,
-                 c.automatic       ? (options_.inPage ? " (automatic: by the page's height)"
-                                                      : " (automatic: by the window's "
-                                                        "height; Ctrl+0)")
-                 : options_.inPage ? " (Show: Auto makes it automatic)"
-                                   : " (Ctrl+0: automatic)"),
-             true, true, "ui scale"});
+        notices_.add({Notice::Level::Info,
+                      fmt("UI scale %.0f %%%s", 100.0 * c.scale,
+                          c.automatic ? (options_.inPage ? " (automatic: by the page's height)"
+                                                         : " (automatic: by the window's "
+                                                           "height; Ctrl+0)")
+                          : options_.inPage ? " (Show: Auto makes it automatic)"
+                                            : " (Ctrl+0: automatic)"),
+                      true, true, "ui scale"});
     }
 }
 
@@ -194,21 +195,22 @@ void Session::handle(const cmd::SetTheme& c) {
     view_.theme = c.theme;
     // The browser keeps Ctrl+T for a new tab.
     const char* key = options_.inPage ? "" : "; Ctrl+T";
-    say(c.theme == Theme::Light ? fmt("Theme: light (high contrast, for projectors%s)", key)
-                                : fmt("Theme: dark%s", options_.inPage ? "" : " (Ctrl+T)"));
+    notices_.say(c.theme == Theme::Light
+                     ? fmt("Theme: light (high contrast, for projectors%s)", key)
+                     : fmt("Theme: dark%s", options_.inPage ? "" : " (Ctrl+T)"));
 }
 
 void Session::handle(const cmd::SetTrails& c) {
     const auto mode = static_cast<TrailMode>(std::clamp(c.mode, 0, 2));
     if (mode == view_.trails) return;
     view_.trails = mode;
-    say(std::string("Trails: ") + toString(view_.trails));
+    notices_.say(std::string("Trails: ") + toString(view_.trails));
 }
 
 void Session::handle(const cmd::ToggleControls&) {
     showControls_ = !showControls_;
     if (showControls_ && !layout_.controlsFit) {
-        say("The control panel covers the box in this narrow window: C or << folds it");
+        notices_.say("The control panel covers the box in this narrow window: C or << folds it");
     }
     if (fitted_) fit();
 }
