@@ -138,36 +138,51 @@ bool mayEdit(const T& c) {
 
 }  // namespace
 
+template <class C>
+void Session::route(const C& c) {
+    if constexpr (requires(SimClock::Context & x) { clock_.handle(c, x); }) {
+        SimClock::Context x{doc_, history_, monitor_, notices_, edit_};
+        clock_.handle(c, x);
+    } else if constexpr (requires(History::Context & x) { history_.handle(c, x); }) {
+        History::Context x{doc_, clock_, monitor_, tools_, notices_};
+        history_.handle(c, x);
+    } else {
+        handle(c);
+    }
+}
+
 void Session::apply(const Command& command) {
     std::visit(
         [this](const auto& c) {
-            using T = std::decay_t<decltype(c)>;
+            constexpr cmd::Traits traits = std::decay_t<decltype(c)>::traits;
             // A dialog holds everything but its answers until it closes.
-            if (dialog_.open() && !T::traits.whileDialog) return;
+            if (dialog_.open() && !traits.whileDialog) return;
             // While the edit prompt is open it takes the keyboard.
-            if (tools_.prompt.active() && !T::traits.whilePrompt) return;
+            if (tools_.prompt.active() && !traits.whilePrompt) return;
             // The state before an edit, for the undo history. A press keeps the state before
             // it until its release or the deletion of what it holds: the gesture (grab, drag,
             // fling or delete) is one edit.
             const bool edits = mayEdit(c);
+            const bool holding = tools_.hand.mode() == Interaction::Mode::Holding;
             history_.before.reset();
-            if (std::is_same_v<T, cmd::PointerUp> ||
-                (std::is_same_v<T, cmd::DeleteHeld> &&
-                 tools_.hand.mode() == Interaction::Mode::Holding)) {
+            if (traits.gesture == cmd::Gesture::Release ||
+                (traits.gesture == cmd::Gesture::EndsHold && holding)) {
                 history_.before = std::move(history_.pressBefore);
                 history_.pressBefore.reset();
             } else if (edits) {
                 history_.before = snapshot(doc_.world);
             }
-            handle(c);
-            if (std::is_same_v<T, cmd::PointerDown> &&
+            edit_ = EditReport{};
+            route(c);
+            file(edit_);
+            if (traits.gesture == cmd::Gesture::Press &&
                 (tools_.hand.mode() != Interaction::Mode::Idle || tools_.obstacle.active())) {
                 history_.pressBefore = std::move(history_.before);
             }
             history_.before.reset();
             // Whatever changed the world other than the timeline's setters makes its frame a
             // keyframe (a press and a release set a particle kinematic and free).
-            if (edits || std::is_same_v<T, cmd::PointerUp>) history_.timeline.edited();
+            if (edits || traits.gesture == cmd::Gesture::Release) history_.timeline.edited();
         },
         command);
 }

@@ -53,6 +53,7 @@
 #include "session/data_recorder.hpp"
 #include "session/dialog.hpp"
 #include "session/document.hpp"
+#include "session/edit_report.hpp"
 #include "session/history.hpp"
 #include "session/lab_ruler.hpp"
 #include "session/lab_stopwatch.hpp"
@@ -94,24 +95,6 @@ struct SessionOptions {
     WindowLayout layout;
     TimelineSettings timeline;
     UndoSettings undo;
-};
-
-/// The recorded past, for a time scrubber: simulated seconds.
-struct TimelineView {
-    double earliest = 0.0;  ///< the oldest recorded frame
-    double latest = 0.0;    ///< the newest (the present)
-    double current = 0.0;   ///< the frame shown
-    bool viewingPast = false;
-    /// latest - current: how far back the frame shown is.
-    [[nodiscard]] double secondsBack() const { return latest - current; }
-    /// Whether there is a past to go back to.
-    [[nodiscard]] bool recorded() const { return latest > earliest; }
-    /// The Replay slider's ends, seconds: the recorded span; with nothing recorded (a new
-    /// scene, just after an undo) the second before the frame shown, so that the present is at
-    /// the right end whatever was recorded, and the handle agrees with the time it is labelled.
-    [[nodiscard]] std::pair<double, double> sliderRange() const {
-        return recorded() ? std::pair{earliest, latest} : std::pair{current - 1.0, current};
-    }
 };
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
@@ -299,7 +282,7 @@ class Session {
     [[nodiscard]] std::string redoLabel() const { return history_.undo.redoLabel(); }
     [[nodiscard]] const UndoHistory& undoHistory() const { return history_.undo; }
     /// The recorded past and the frame shown.
-    [[nodiscard]] TimelineView timeline() const;
+    [[nodiscard]] TimelineView timeline() const { return history_.view(doc_.world); }
     [[nodiscard]] const Timeline& timelineRecord() const { return history_.timeline; }
 
     // Dialogs and leaving.
@@ -312,6 +295,10 @@ class Session {
     void setWorld(World world, SceneMeta meta, SceneFile file = {});
 
   private:
+    /// Hands `c` to the part that owns what it changes (its handle() for the command's type),
+    /// with what that part reaches beyond itself.
+    template <class C>
+    void route(const C& c);
     // One handler per command, in the file of its concept; apply() dispatches by type.
     // The hand (session_hand.cpp).
     void handle(const cmd::PointerDown& c);
@@ -343,13 +330,6 @@ class Session {
     void handle(const cmd::SetWalls& c);
     void handle(const cmd::SetMode& c);
     // The clock and the recorded past (session_time.cpp).
-    void handle(const cmd::TogglePause& c);
-    void handle(const cmd::SingleStep& c);
-    void handle(const cmd::SetTimeScale& c);
-    void handle(const cmd::StepBack& c);
-    void handle(const cmd::StepForward& c);
-    void handle(const cmd::Seek& c);
-    void handle(const cmd::SeekBy& c);
     void handle(const cmd::Undo& c);
     void handle(const cmd::Redo& c);
     // The document and leaving (session_files.cpp).
@@ -428,18 +408,12 @@ class Session {
     // The clock and the history (session_time.cpp, session_history.cpp).
     /// One frame's step; returns the seconds simulated (less than the frame: behind).
     double stepOnce(double now);
-    /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.
-    void seek(double seconds, bool oneFrameBack = false);
     void undoOrRedo(bool redo);
-    /// The user made the edit `what` ("delete particle", "set restitution"): it becomes an
-    /// undo entry (the state apply() kept before the command), the energy drift is measured
-    /// from here on, and there are unsaved changes. A command that continues the previous one
-    /// (a slider still being dragged) passes `continues`: it is part of that action (and of its
-    /// undo entry), not a new one.
-    void userAction(const char* what, bool continues = false);
-    /// Files the state kept before the command under `what` in the undo history (userAction
-    /// without the unsaved flag: an opened scene or a reset is what is on disk).
-    void remember(const char* what);
+    /// Files what the command's handler reported (edit_report.hpp) in the undo history: the
+    /// state apply() kept before the command, under the edit's label. A user action also ends
+    /// the viewing of a past frame, counts, measures the energy drift from here and leaves
+    /// unsaved changes.
+    void file(const EditReport& edit);
     /// The session's state with `world` (the world, or the world moved out) as its world.
     [[nodiscard]] UndoState snapshot(World world) const;
     /// Puts `state` back (undo / redo).
@@ -450,11 +424,6 @@ class Session {
     /// the recorded past, the clock and the monitor start over from it. A Restart
     /// (`keepRecorded`) keeps what the Data section recorded, to export.
     void startOver(bool newScene, bool keepRecorded = false);
-    /// Viewing a past frame and about to change the world: carry on from that frame.
-    void leavePast();
-    /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.
-    void show(std::int64_t frame);
-
     [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(tools_.pointer); }
 
     SessionOptions options_;
@@ -477,6 +446,8 @@ class Session {
     History history_;
     Monitor monitor_;
 
+    /// What the handler of the command being applied reported, for file().
+    EditReport edit_;
     std::uint64_t userActions_ = 0;
     std::string lastAction_;
     bool running_ = true;

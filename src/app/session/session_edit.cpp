@@ -51,7 +51,7 @@ void Session::handle(const cmd::EditApply&) {
     if (r.applied) {
         tools_.closePrompt();
         notices_.say(r.message);
-        userAction("edit particle");
+        edit_.userAction("edit particle");
     } else {
         // The prompt stays open with its text, so the value can be corrected.
         prompt.setError(r.message);
@@ -69,7 +69,7 @@ void Session::handle(const cmd::EditParticle& c) {
     }
     tools_.editRefusal.clear();
     notices_.say(r.message);
-    userAction("edit particle");
+    edit_.userAction("edit particle");
 }
 
 }  // namespace psb::app

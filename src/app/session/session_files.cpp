@@ -54,7 +54,7 @@ bool Session::openFile(const std::optional<std::filesystem::path>& file, const c
         World world = makeWorld(scene);
         setWorld(std::move(world), sceneMeta(scene, file),
                  psb::app::sceneFile(file, options_.presets));
-        remember("open scene");
+        edit_.remember("open scene");
         // A new scene starts at its own pace: a time speed asked for the last one would make
         // this one look wrong without saying why.
         std::string speedReset;
@@ -130,7 +130,7 @@ void Session::handle(const cmd::NewScene& c) {
     meta.dt = doc_.meta.dt;
     closeDialog();
     setWorld(std::move(world), std::move(meta), SceneFile{});
-    remember("new scene");
+    edit_.remember("new scene");
     clock_.paused = true;
     clock_.restart();
     notices_.say(
@@ -156,7 +156,7 @@ void Session::handle(const cmd::Restart&) {
     // Back to the scene exactly as its file has it: nothing is unsaved. Any other set-up keeps
     // the changes that made it.
     if (doc_.asOnDisk()) doc_.dirty = false;
-    remember("restart");
+    edit_.remember("restart");
     const bool loaded = setup == doc_.loaded;
     notices_.say(std::string("Restarted: back to ") +
                  (loaded ? "the scene as it opened" : "the set-up as Play last started it") + " (" +
@@ -182,7 +182,7 @@ void Session::handle(const cmd::Revert&) {
     doc_.dirty = false;
     ++doc_.generation;
     startOver(true);
-    remember("revert");
+    edit_.remember("revert");
     notices_.say("Reverted to " + doc_.meta.name + " as it was made (it has no file)");
 }
 
@@ -193,7 +193,7 @@ void Session::handle(const cmd::SetSceneText& c) {
     doc_.meta.description = c.description;
     notices_.say(renamed ? "Title: " + (c.name.empty() ? std::string("(none)") : c.name)
                          : std::string("Description changed"));
-    userAction(renamed ? "rename scene" : "describe scene");
+    edit_.userAction(renamed ? "rename scene" : "describe scene");
 }
 
 // ---------------------------------------------------------------------------------------------

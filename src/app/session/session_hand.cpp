@@ -126,8 +126,8 @@ void Session::handle(const cmd::PointerUp& c) {
     }
     if (r.kind == K::Refused) notices_.say(r.message);
     if (r.kind == K::Clicked) click(r);
-    if (r.kind == K::Flung) userAction("fling particle");
-    if (r.kind == K::Launched) userAction("launch particle");
+    if (r.kind == K::Flung) edit_.userAction("fling particle");
+    if (r.kind == K::Launched) edit_.userAction("launch particle");
 }
 
 void Session::click(const ReleaseResult& r) {
@@ -170,7 +170,7 @@ void Session::handle(const cmd::DeleteParticle& c) {
     doc_.world.remove(c.id);
     notices_.log(deletionLogLine(p).substr(4));
     notices_.add({Notice::Level::Info, "Deleted a particle", true, false});
-    userAction("delete particle");
+    edit_.userAction("delete particle");
     checkSelection();
 }
 
@@ -233,7 +233,7 @@ void Session::handle(const cmd::SpawnRandom&) {
                  static_cast<std::uint8_t>(channel(rng))};
     def.fixedRotation = !spawn.turn;
     doc_.world.add(def);
-    userAction("spawn particle");
+    edit_.userAction("spawn particle");
     notices_.log(
         fmt("Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass %.3g kg",
             spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass));
@@ -243,7 +243,7 @@ void Session::handle(const cmd::ChangeSpawnMass& c) {
     SpawnSettings& spawn = tools_.spawn;
     const double before = spawn.mass();
     spawn.changeSize(c.direction < 0 ? -1 : 1);
-    if (spawn.mass() != before) remember("set new particle size");
+    if (spawn.mass() != before) edit_.remember("set new particle size");
     notices_.add({Notice::Level::Info,
                   fmt("New particles: %.3g kg, radius %.3g m (%.1f x the scene's typical)",
                       spawn.mass(), spawn.radius(), spawn.size),
@@ -253,7 +253,7 @@ void Session::handle(const cmd::ChangeSpawnMass& c) {
 void Session::handle(const cmd::SetDiscsTurn& c) {
     if (tools_.spawn.turn == c.on) return;
     tools_.spawn.turn = c.on;
-    remember(c.on ? "let new particles turn" : "give new particles fixed rotation");
+    edit_.remember(c.on ? "let new particles turn" : "give new particles fixed rotation");
     notices_.say(c.on ? "New particles turn: friction spins them, and they roll"
                       : "New particles have fixed rotation: they slide without turning");
 }
@@ -282,7 +282,7 @@ void Session::handle(const cmd::SetLaunchBody& c) {
     spawn.fixedColor = c.color;
     if (spawn.mass() != before.mass() || spawn.radius() != before.radius() ||
         spawn.color() != before.color()) {
-        remember("set new particles");
+        edit_.remember("set new particles");
     }
     notices_.log(fmt("New particles: %g kg, radius %g m%s", spawn.mass(), spawn.radius(),
                      spawn.fixedRadius ? "" : " (from the mass)"));

@@ -12,22 +12,25 @@ namespace psb::app {
 // ---------------------------------------------------------------------------------------------
 // Undo and redo.
 
-void Session::userAction(const char* what, bool continues) {
-    leavePast();
-    if (!continues || lastAction_ != what) {
-        ++userActions_;
-        lastAction_ = what;
+void Session::file(const EditReport& edit) {
+    const bool acted = !edit.action().empty();
+    if (acted) {
+        history_.leavePast();
+        if (!edit.continues() || lastAction_ != edit.action()) {
+            ++userActions_;
+            lastAction_ = edit.action();
+        }
     }
-    remember(what);
-    monitor_.edited(doc_.world);
-    doc_.edited();
-    history_.timeline.edited();
-}
-
-void Session::remember(const char* what) {
-    if (!history_.before) return;  // already filed (one command, one entry)
-    history_.undo.record(what, clock_.lastNow(), std::move(*history_.before));
-    history_.before.reset();
+    // The state kept before the command, once (one command, one entry).
+    if (!edit.label().empty() && history_.before) {
+        history_.undo.record(edit.label(), clock_.lastNow(), std::move(*history_.before));
+        history_.before.reset();
+    }
+    if (acted) {
+        monitor_.edited(doc_.world);
+        doc_.edited();
+        history_.timeline.edited();
+    }
 }
 
 UndoState Session::snapshot(World world) const {
@@ -87,7 +90,9 @@ void Session::undoOrRedo(bool redo) {
     // the time with it, and the message says so whenever that number changes.
     const double timeBefore = doc_.world.time();
     const std::string shownBefore = quantity(timeBefore, "s");
-    if (history_.viewing) show(history_.timeline.lastFrame());  // the present comes back after
+    if (history_.viewing)
+        history_.show(history_.timeline.lastFrame(), doc_, clock_,
+                      monitor_);  // the present comes back after
     if (!(redo ? history_.undo.canRedo() : history_.undo.canUndo())) {
         notices_.say(redo ? "Nothing to redo" : "Nothing to undo");
         return;
@@ -103,91 +108,6 @@ void Session::undoOrRedo(bool redo) {
             (doc_.world.time() < timeBefore ? " (back to " : " (forward to ") + shownAfter + ")";
     }
     notices_.say(message);
-}
-
-// ---------------------------------------------------------------------------------------------
-// Step back in time.
-
-TimelineView Session::timeline() const {
-    const Timeline& t = history_.timeline;
-    TimelineView v;
-    v.current = v.earliest = v.latest = doc_.world.time();
-    if (t.empty()) return v;
-    v.earliest = t.timeOf(t.firstFrame());
-    v.latest = std::max(doc_.world.time(), t.timeOf(t.lastFrame()));
-    if (history_.viewing) {
-        v.latest = t.timeOf(t.lastFrame());
-        v.current = t.timeOf(*history_.viewing);
-        v.viewingPast = true;
-    }
-    return v;
-}
-
-void Session::show(std::int64_t frame) {
-    doc_.world = history_.timeline.seek(frame);
-    history_.viewing.reset();
-    if (frame < history_.timeline.lastFrame()) history_.viewing = frame;
-    clock_.restart();
-    monitor_.showFrame(doc_.world);
-}
-
-void Session::leavePast() {
-    if (!history_.viewing) return;
-    // The world is the rebuilt frame (and what was done to it since): it carries on from there.
-    history_.timeline.discardAfter(*history_.viewing);
-    history_.viewing.reset();
-    history_.timeline.edited();
-}
-
-void Session::handle(const cmd::StepBack&) {
-    seek(doc_.world.time(), true);
-}
-
-void Session::handle(const cmd::StepForward&) {
-    if (!history_.viewing) {
-        if (clock_.paused) {
-            clock_.stepRequested = true;  // the present: one new step
-        } else {
-            notices_.say("Pause (Space) to step through time");
-        }
-        return;
-    }
-    show(*history_.viewing + 1);
-}
-
-void Session::handle(const cmd::Seek& c) {
-    seek(c.seconds);
-}
-
-void Session::handle(const cmd::SeekBy& c) {
-    seek(timeline().current + c.seconds);
-}
-
-void Session::seek(double seconds, bool oneFrameBack) {
-    Timeline& t = history_.timeline;
-    if (tools_.hand.mode() != Interaction::Mode::Idle) {
-        notices_.say("Release the mouse button to step through time");
-        return;
-    }
-    if (!std::isfinite(seconds)) {
-        notices_.say("Cannot go to that time: it is not a number", Notice::Level::Warning);
-        return;
-    }
-    if (!clock_.paused) {
-        clock_.paused = true;
-        notices_.say("Paused");
-    }
-    if (!history_.viewing) t.record(doc_.world);  // the present, with any edit since the frame
-    if (t.empty()) return;
-    const std::int64_t at = history_.viewing.value_or(t.lastFrame());
-    std::int64_t target = t.frameAt(seconds);
-    if (oneFrameBack) target = at - 1;
-    if (target < t.firstFrame()) {
-        notices_.say(fmt("The recorded past starts at %.2f s (%.1f s kept)",
-                         t.timeOf(t.firstFrame()), t.coveredSeconds()));
-        return;
-    }
-    if (target != at) show(target);
 }
 
 }  // namespace psb::app

@@ -84,7 +84,7 @@ void Session::obstacleRelease() {
         notices_.log("Added obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
         notices_.say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") +
                      " (Ctrl+Z undoes it)");
-        userAction(p.obstacle->isPeg() ? "place peg" : "draw wall");
+        edit_.userAction(p.obstacle->isPeg() ? "place peg" : "draw wall");
     } catch (const std::exception& e) {  // InvalidArgument: what the world refuses
         notices_.say(std::string("Obstacle refused: ") + e.what(), Notice::Level::Warning);
     }
@@ -128,7 +128,7 @@ bool Session::obstacleMoveRelease() {
     tools_.closePrompt();
     notices_.log("Moved obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
     notices_.say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
-    userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
+    edit_.userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
     return true;
 }
 
@@ -159,7 +159,7 @@ void Session::removeObstacle(std::size_t index) {
     }
     notices_.log("Removed obstacle " + std::to_string(index) + ": " + describe(o));
     notices_.say(std::string("Removed the ") + obstacleNoun(o) + " (Ctrl+Z brings it back)");
-    userAction(o.isPeg() ? "remove peg" : "remove wall");
+    edit_.userAction(o.isPeg() ? "remove peg" : "remove wall");
 }
 
 void Session::handle(const cmd::RemoveObstacle& c) {

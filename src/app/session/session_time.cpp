@@ -12,36 +12,6 @@
 
 namespace psb::app {
 
-void Session::handle(const cmd::TogglePause&) {
-    if (clock_.paused && history_.viewing) {
-        const double t = doc_.world.time();
-        leavePast();
-        notices_.say(fmt("Resumed from %.2f s: the later frames are forgotten", t));
-    } else if (!clock_.paused) {
-        notices_.say("Paused");
-    } else {
-        // Play after an edit: the world as it is becomes the set-up Restart returns to.
-        notices_.say(doc_.play() ? "Resumed; R restarts from this set-up" : "Resumed");
-    }
-    clock_.paused = !clock_.paused;
-    clock_.restart();
-}
-
-void Session::handle(const cmd::SingleStep&) {
-    if (history_.viewing) {
-        handle(cmd::StepForward{});
-    } else if (clock_.paused) {
-        clock_.stepRequested = true;
-    }
-}
-
-void Session::handle(const cmd::SetTimeScale& c) {
-    const double before = clock_.scale();
-    if (!clock_.setScale(c.value)) return;
-    notices_.say("Time speed " + speedText(clock_.scale()));
-    if (clock_.scale() != before) remember("set time speed");
-}
-
 void Session::handle(const cmd::Stopwatch& c) {
     using A = cmd::Stopwatch::Action;
     const double t = doc_.world.time();

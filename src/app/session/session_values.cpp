@@ -27,7 +27,7 @@ void Session::handle(const cmd::SetRestitution& c) {
     if (doc_.world.def().restitution == c.value) return;
     doc_.world.setRestitution(c.value);
     notices_.add({Notice::Level::Info, fmt("Restitution %.2f", c.value), true, !c.continues, "e"});
-    userAction("set restitution", c.continues);
+    edit_.userAction("set restitution", c.continues);
 }
 
 void Session::handle(const cmd::SetFriction& c) {
@@ -39,7 +39,7 @@ void Session::handle(const cmd::SetFriction& c) {
     if (doc_.world.def().friction == c.value) return;
     doc_.world.setFriction(c.value);
     notices_.add({Notice::Level::Info, fmt("Friction %.2f", c.value), true, !c.continues, "mu"});
-    userAction("set friction", c.continues);
+    edit_.userAction("set friction", c.continues);
 }
 
 void Session::handle(const cmd::SetTangentialRestitution& c) {
@@ -52,7 +52,7 @@ void Session::handle(const cmd::SetTangentialRestitution& c) {
     doc_.world.setTangentialRestitution(c.value);
     notices_.add({Notice::Level::Info, fmt("Tangential restitution %.2f", c.value), true,
                   !c.continues, "beta"});
-    userAction("set tangential restitution", c.continues);
+    edit_.userAction("set tangential restitution", c.continues);
 }
 
 void Session::handle(const cmd::ScaleSpeeds& c) {
@@ -89,7 +89,7 @@ void Session::handle(const cmd::ScaleSpeeds& c) {
         w.setVelocity(id, c.factor * w.get(id).velocity);
     notices_.say(fmt("%s: every speed x%.3g, the temperature (mean kinetic energy) x%.3g",
                      c.factor >= 1.0 ? "Heated" : "Cooled", c.factor, c.factor * c.factor));
-    userAction(c.factor >= 1.0 ? "heat" : "cool");
+    edit_.userAction(c.factor >= 1.0 ? "heat" : "cool");
 }
 
 void Session::handle(const cmd::ResizeBox& c) {
@@ -120,7 +120,7 @@ void Session::handle(const cmd::ResizeBox& c) {
                      quantity(c.width, "m").c_str(), quantity(c.height, "m").c_str(),
                      (c.width * c.height) / (width * height)));
     // The view stays as it was, so that the walls are seen to move in or out.
-    userAction(c.width * c.height < width * height ? "squeeze the box" : "expand the box");
+    edit_.userAction(c.width * c.height < width * height ? "squeeze the box" : "expand the box");
 }
 
 void Session::handle(const cmd::SetGravity& c) {
@@ -148,14 +148,14 @@ void Session::handle(const cmd::SetGravity& c) {
     // Turning it on or off is a switch, an entry of its own; a new strength is a setting, and
     // a burst of them is one (undo_history.hpp, "Coalescing").
     const bool switched = (before == Vec2::Zero()) != (g == Vec2::Zero());
-    userAction(switched ? "switch gravity" : "set gravity", c.continues);
+    edit_.userAction(switched ? "switch gravity" : "set gravity", c.continues);
 }
 
 void Session::handle(const cmd::SetWalls& c) {
     if (doc_.world.def().walls == c.on) return;
     doc_.world.setWalls(c.on);
     notices_.say(c.on ? "Walls on" : "Walls off: particles leave the box");
-    userAction("set walls");
+    edit_.userAction("set walls");
 }
 
 void Session::handle(const cmd::SetMode& c) {
@@ -171,7 +171,7 @@ void Session::handle(const cmd::SetMode& c) {
     }
     clock_.restart();
     notices_.say("Mode: " + modeName(doc_.world.solver()));
-    userAction("change mode");
+    edit_.userAction("change mode");
 }
 
 }  // namespace psb::app
