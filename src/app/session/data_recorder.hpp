@@ -42,7 +42,7 @@ class DataRecorder {
 
     /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state
     /// now as the first sample; what an earlier recording held is dropped.
-    void start(World& world, std::vector<ParticleId> ids, int every);
+    void start(const World& world, std::vector<ParticleId> ids, int every);
     void stop();
     [[nodiscard]] bool recording() const { return recording_; }
     /// Why recording stopped by itself (a limit reached), once; empty otherwise.
@@ -56,7 +56,7 @@ class DataRecorder {
     /// collision records, perhaps of more particles than the recording's) joins the log, and
     /// the trajectory is sampled every `every` steps.
     void beforeStep(const World& world);
-    void afterStep(World& world, const std::vector<Collision>& heard);
+    void afterStep(const World& world, const std::vector<Collision>& heard);
 
     [[nodiscard]] const std::vector<ObservablesSample>& run() const { return run_; }
     [[nodiscard]] const Trajectory& trajectory() const { return trajectory_; }

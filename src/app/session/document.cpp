@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <system_error>
 
+#include "session/collision_feed.hpp"
 #include "session/scene_io.hpp"
 
 namespace psb::app {
@@ -91,6 +92,14 @@ std::string Document::save(const std::filesystem::path& path) {
     dirty = false;
     fileError.clear();
     return said;
+}
+
+void Document::listen(const std::optional<CollisionLog>& wanted) {
+    psb::app::listen(world, wanted);
+}
+
+std::vector<Collision> Document::heard() {
+    return psb::app::heard(world);
 }
 
 }  // namespace psb::app

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <particle_sandbox/bins.hpp>
+#include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -75,6 +76,11 @@ struct Document {
     /// scene's file (writable: the user named it); returns the line for the user. Throws
     /// SaveError (the old file is intact, and nothing changes here).
     std::string save(const std::filesystem::path& path);
+    /// Has the world record `wanted` from its next step (nothing when none): what the
+    /// instruments want together (collision_feed.hpp).
+    void listen(const std::optional<CollisionLog>& wanted);
+    /// What the world recorded in the step just made (none when it records nothing).
+    [[nodiscard]] std::vector<Collision> heard();
 
     World world;
     std::shared_ptr<const World> loaded;  ///< the world as loaded, shared with undo's snapshots

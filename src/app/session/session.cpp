@@ -13,13 +13,11 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
     : options_(std::move(options)),
       doc_(std::move(world), std::move(meta),
            psb::app::sceneFile(options_.sceneFile, options_.presets)),
-      history_(options_.undo, options_.timeline) {
+      view_(options_),
+      history_(options_.undo, options_.timeline),
+      dataOut_(options_.exportDir, options_.inPage) {
     tools_.rng.seed(options_.seed);
     clock_.paused = options_.paused;
-    view_.arrows = options_.arrows;
-    showControls_ = options_.controls;
-    camera_.setViewport(options_.viewportWidth, options_.viewportHeight);
-    layout_ = options_.layout;
     for (const auto& file : options_.presets)
         presets_.push_back(describeScene(file));
     sceneOpened();
@@ -31,7 +29,7 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
                          doc_.meta.name + ", paused: Space starts it");
         }
     }
-    if (!showControls_)
+    if (!view_.controlsShown())
         notices_.say("The control panel is folded in this narrow window: C or >> opens it");
 }
 
@@ -53,7 +51,7 @@ void Session::sceneOpened() {
     startOver(true);
     followScene(tools_.spawn, doc_.world);
     tools_.obstacleSizes = obstacleSizesFor(tools_.spawn.typicalRadius);
-    fit();
+    view_.fit(doc_, notices_);
 }
 
 void Session::startOver(bool newScene, bool keepRecorded) {
@@ -62,50 +60,26 @@ void Session::startOver(bool newScene, bool keepRecorded) {
     history_.startOver();
     clock_.restart();
     monitor_.restart(doc_.world, newScene, doc_.meta.dt);
-    lastCollision_.clear();
-    stopwatch_.reset();
-    if (newScene && keepRecorded) {
-        data_.restartRun();
-    } else if (newScene) {
-        data_.restart();
-    }
-    // The run's first row: the world as it starts.
-    if (newScene) data_.sample(monitor_.series().back());
-    if (newScene) {
-        view_.arrowSeconds = arrowSecondsFor(doc_.world);
-        view_.arrowScaleSet = false;
-        ruler_.place(doc_.world.def().width, doc_.world.def().height);
-    }
+    instruments_.startOver(doc_.world, newScene, keepRecorded, monitor_.series().back());
+    if (newScene) view_.startOver(doc_.world);
 }
 
 std::vector<Notice> Session::takeNotices() {
     return notices_.take();
 }
 
-bool Session::takeScreenshotRequest() {
-    const bool r = screenshotRequested_;
-    screenshotRequested_ = false;
-    return r;
-}
-
-std::optional<std::string> Session::takeClipboardText() {
-    std::optional<std::string> text;
-    text.swap(clipboard_);
-    return text;
-}
-
 LaunchSettings Session::launchSettings() const {
     LaunchSettings s;
     s.window = 0.1;
     // A hand that moved less than 4 pixels in the last 100 ms was holding still.
-    s.minDistance = camera_.toWorld(4.0);
+    s.minDistance = view_.camera().toWorld(4.0);
     s.maxSpeed = maxLaunchSpeed(doc_.world.def());
     return s;
 }
 
 CappedVelocity Session::launchPreview() const {
     if (tools_.hand.mode() != Interaction::Mode::Launching) return {};
-    return tools_.hand.launchVelocityNow(launchSettings(), view_.arrowSeconds);
+    return tools_.hand.launchVelocityNow(launchSettings(), view_.options().arrowSeconds);
 }
 
 std::optional<Particle> Session::selected() const {
@@ -125,6 +99,12 @@ ParticleId Session::trailParticle() const {
 
 namespace {
 
+/// `Part` has a handler for command `C`: `Part::handle(const C&, Part::Context&)`.
+template <class Part, class C>
+concept Handles = requires(Part& part, const C& c, typename Part::Context& x) {
+    part.handle(c, x);
+};
+
 /// Whether `c` may edit: its type's trait, except that a command continuing a slider drag
 /// belongs to the drag's first (which kept the state before it).
 template <class T>
@@ -140,12 +120,21 @@ bool mayEdit(const T& c) {
 
 template <class C>
 void Session::route(const C& c) {
-    if constexpr (requires(SimClock::Context & x) { clock_.handle(c, x); }) {
+    if constexpr (Handles<SimClock, C>) {
         SimClock::Context x{doc_, history_, monitor_, notices_, edit_};
         clock_.handle(c, x);
-    } else if constexpr (requires(History::Context & x) { history_.handle(c, x); }) {
+    } else if constexpr (Handles<History, C>) {
         History::Context x{doc_, clock_, monitor_, tools_, notices_};
         history_.handle(c, x);
+    } else if constexpr (Handles<SceneView, C>) {
+        SceneView::Context x{doc_, tools_, instruments_, notices_};
+        view_.handle(c, x);
+    } else if constexpr (Handles<Instruments, C>) {
+        Instruments::Context x{doc_, tools_, view_, clock_, notices_};
+        instruments_.handle(c, x);
+    } else if constexpr (Handles<DataOut, C>) {
+        DataOut::Context x{doc_, instruments_, view_, notices_};
+        dataOut_.handle(c, x);
     } else {
         handle(c);
     }

@@ -50,52 +50,26 @@
 #include "session/box_area.hpp"
 #include "session/camera.hpp"
 #include "session/command.hpp"
-#include "session/data_recorder.hpp"
+#include "session/data_out.hpp"
 #include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/edit_report.hpp"
 #include "session/history.hpp"
+#include "session/instruments.hpp"
 #include "session/lab_ruler.hpp"
 #include "session/lab_stopwatch.hpp"
 #include "session/last_collision.hpp"
 #include "session/monitor.hpp"
 #include "session/notices.hpp"
 #include "session/scene_io.hpp"
+#include "session/scene_view.hpp"
+#include "session/session_options.hpp"
 #include "session/sim_clock.hpp"
 #include "session/tools.hpp"
 #include "session/video_settings.hpp"
 #include "session/view_options.hpp"
 
 namespace psb::app {
-
-struct SessionOptions {
-    /// The file the first world came from (none: built in), for Save and Revert.
-    std::optional<std::filesystem::path> sceneFile;
-    /// What Save As proposes (--save-to), when given; else a name from the scene's, in
-    /// `saveFolder`.
-    std::optional<std::filesystem::path> saveTo;
-    std::filesystem::path saveFolder = ".";
-    std::filesystem::path exportDir = ".";       ///< where ExportTable writes a relative name
-    std::vector<std::filesystem::path> presets;  ///< what OpenPreset opens (read-only)
-    std::uint32_t seed = 1;                      ///< random spawns
-    bool paused = false;
-    bool arrows = true;
-    /// The app runs in a web page: Esc with nothing open does not quit (a page has nothing
-    /// to quit to; a window's Esc quits, asking first when there are unsaved changes); files
-    /// written (scenes, tables) are handed to the browser as downloads, so messages and dialogs
-    /// name the file and the browser's downloads, not the page's folder; the help lists the
-    /// page's keys.
-    bool inPage = false;
-    /// The control panel open at the start (folded, a window too narrow for it and the box).
-    bool controls = true;
-    int viewportWidth = 800;  ///< pixels
-    int viewportHeight = 800;
-    /// Where the box may go in that window, as the view lays it out (a Resize brings the
-    /// layout of each new size).
-    WindowLayout layout;
-    TimelineSettings timeline;
-    UndoSettings undo;
-};
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
 /// fall further behind.
@@ -128,37 +102,46 @@ class Session {
     /// What the session said since the last call.
     [[nodiscard]] std::vector<Notice> takeNotices();
     /// True once after a Screenshot command: the app writes the next frame.
-    [[nodiscard]] bool takeScreenshotRequest();
+    [[nodiscard]] bool takeScreenshotRequest() { return dataOut_.takeScreenshotRequest(); }
     /// The text a CopyTable command put on the clipboard, once: the app hands it to the system.
-    [[nodiscard]] std::optional<std::string> takeClipboardText();
+    [[nodiscard]] std::optional<std::string> takeClipboardText() {
+        return dataOut_.takeClipboardText();
+    }
     /// The settings of a ToggleVideo command, once: the app starts a recording with them, or
     /// stops the one running.
-    [[nodiscard]] std::optional<VideoSettings> takeVideoToggle();
-    /// The video settings last asked for (Ctrl+R records with them).
-    [[nodiscard]] const VideoSettings& videoSettings() const { return videoSettings_; }
-
-    // Data out (data_recorder.hpp, session_data.cpp).
-    /// The run's series, the recorded trajectories and collisions.
-    [[nodiscard]] const DataRecorder& data() const { return data_; }
-    /// The stopwatch on simulated time (lab_stopwatch.hpp).
-    [[nodiscard]] const LabStopwatch& stopwatch() const { return stopwatch_; }
-    /// The ruler (lab_ruler.hpp), drawn while view().ruler.
-    [[nodiscard]] const LabRuler& ruler() const { return ruler_; }
-    [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
-        return lastCollision_.card();
+    [[nodiscard]] std::optional<VideoSettings> takeVideoToggle() {
+        return dataOut_.takeVideoToggle();
     }
+    /// The video settings last asked for (Ctrl+R records with them).
+    [[nodiscard]] const VideoSettings& videoSettings() const { return dataOut_.videoSettings(); }
+
+    // The instruments (instruments.hpp).
+    /// The run's series, the recorded trajectories and collisions.
+    [[nodiscard]] const DataRecorder& data() const { return instruments_.data; }
+    /// The stopwatch on simulated time (lab_stopwatch.hpp).
+    [[nodiscard]] const LabStopwatch& stopwatch() const { return instruments_.stopwatch; }
+    /// The ruler (lab_ruler.hpp), drawn while view().ruler.
+    [[nodiscard]] const LabRuler& ruler() const { return instruments_.ruler; }
+    [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
+        return instruments_.lastCollision.card();
+    }
+
+    // Data out (data_out.hpp).
     /// `table` as text with `separator` (what ExportTable writes and CopyTable copies).
-    [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const;
+    [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const {
+        return psb::app::tableText(table, separator, doc_.world, instruments_.data, axes(),
+                                   rateWindow());
+    }
     /// The folder ExportTable writes a relative name into (absolute).
-    [[nodiscard]] std::filesystem::path exportDir() const;
+    [[nodiscard]] std::filesystem::path exportDir() const { return dataOut_.exportDir(); }
     /// The app runs in a web page (SessionOptions::inPage).
     [[nodiscard]] bool inPage() const { return options_.inPage; }
     /// The file the last ExportTable wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastExport() const {
-        return lastExport_;
+        return dataOut_.lastExport();
     }
     /// Why the last export failed; empty once one succeeds.
-    [[nodiscard]] const std::string& exportError() const { return exportError_; }
+    [[nodiscard]] const std::string& exportError() const { return dataOut_.exportError(); }
 
     // The document (document.hpp).
     [[nodiscard]] const World& world() const { return doc_.world; }
@@ -166,7 +149,7 @@ class Session {
     /// The scene's name, description and bins.
     [[nodiscard]] const SceneMeta& meta() const { return doc_.meta; }
     /// The bins panel is drawn: the scene has bins and the view shows them.
-    [[nodiscard]] bool binsShown() const { return doc_.meta.bins.has_value() && view_.bins; }
+    [[nodiscard]] bool binsShown() const { return view_.binsShown(doc_.meta); }
     /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
     /// (trails) start over.
     [[nodiscard]] std::uint64_t sceneGeneration() const { return doc_.generation; }
@@ -193,26 +176,26 @@ class Session {
     /// Why the last open or save failed ("Save failed: ..."); empty once one succeeds.
     [[nodiscard]] const std::string& fileError() const { return doc_.fileError; }
 
-    // The view.
-    [[nodiscard]] const Camera& camera() const { return camera_; }
-    [[nodiscard]] const ViewOptions& view() const { return view_; }
+    // The view (scene_view.hpp).
+    [[nodiscard]] const Camera& camera() const { return view_.camera(); }
+    [[nodiscard]] const ViewOptions& view() const { return view_.options(); }
     /// The axes numbers are shown and typed in (the y up option, the box's height).
     [[nodiscard]] Axes axes() const { return view_.axes(world().def()); }
-    [[nodiscard]] bool helpShown() const { return showHelp_; }
+    [[nodiscard]] bool helpShown() const { return view_.helpShown(); }
     /// The page of the help shown (H turns the page, and closes it after the last).
-    [[nodiscard]] std::size_t helpPage() const { return helpPage_; }
-    [[nodiscard]] bool profileShown() const { return view_.profile; }
+    [[nodiscard]] std::size_t helpPage() const { return view_.helpPage(); }
+    [[nodiscard]] bool profileShown() const { return view_.options().profile; }
     /// The control panel is open (else folded to a strip).
-    [[nodiscard]] bool controlsShown() const { return showControls_; }
+    [[nodiscard]] bool controlsShown() const { return view_.controlsShown(); }
     /// Where the box may go in the window, as the app sent it last.
-    [[nodiscard]] const WindowLayout& layout() const { return layout_; }
+    [[nodiscard]] const WindowLayout& layout() const { return view_.layout(); }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
-    [[nodiscard]] bool columnAsked() const;
+    [[nodiscard]] bool columnAsked() const { return view_.columnAsked(doc_.meta); }
     /// Where the values table docks (I): where it left the box largest when the box was last
     /// fitted (BoxArea).
-    [[nodiscard]] const ValuesDock& valuesDock() const { return valuesDock_; }
+    [[nodiscard]] const ValuesDock& valuesDock() const { return view_.valuesDock(); }
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
-    [[nodiscard]] std::string overlayFlags() const;
+    [[nodiscard]] std::string overlayFlags() const { return view_.overlayFlags(); }
 
     // The tools (tools.hpp).
     /// What the left mouse button does.
@@ -347,28 +330,8 @@ class Session {
     void handle(const cmd::CloseDialog& c);
     void handle(const cmd::Back& c);
     void handle(const cmd::Quit& c);
-    // The view (session_view.cpp).
-    void handle(const cmd::Pan& c);
-    void handle(const cmd::Zoom& c);
-    void handle(const cmd::Fit& c);
-    void handle(const cmd::Resize& c);
-    void handle(const cmd::ToggleHelp& c);
-    void handle(const cmd::SetShow& c);
-    void handle(const cmd::SetTrails& c);
-    void handle(const cmd::Stopwatch& c);
     void handle(const cmd::ScaleSpeeds& c);
     void handle(const cmd::ResizeBox& c);
-    void handle(const cmd::SetArrowScale& c);
-    void handle(const cmd::SetUiScale& c);
-    void handle(const cmd::SetTheme& c);
-    void handle(const cmd::ToggleControls& c);
-    void handle(const cmd::Screenshot& c);
-    // Data out (session_data.cpp).
-    void handle(const cmd::ExportTable& c);
-    void handle(const cmd::CopyTable& c);
-    void handle(const cmd::SetRecording& c);
-    void handle(const cmd::ToggleVideo& c);
-    void handle(const cmd::SetVideoSettings& c);
 
     // The hand's gestures (session_hand.cpp).
     void click(const ReleaseResult& r);
@@ -376,8 +339,6 @@ class Session {
     void holdParticle(double now);
     /// The selected particle is gone: forget it (and close its edit prompt), saying so.
     void checkSelection();
-    /// Has the world record the collisions the instruments want now (collision_feed.hpp).
-    void listenForCollisions();
     // The obstacle tools (session_obstacles.cpp).
     [[nodiscard]] bool obstacleToolOn() const;
     void obstaclePress();
@@ -401,10 +362,6 @@ class Session {
     /// A scene that marks particles' trails opens with the first of them selected and its trail
     /// shown; `trails` are indices in the scene's order (the world's before any step).
     void showSceneTrails(const std::vector<std::size_t>& trails);
-    // The view (session_view.cpp).
-    void fit();
-    /// The hand did not move but the world under it did: the held particle follows the cursor.
-    void afterCameraMove();
     // The clock and the history (session_time.cpp, session_history.cpp).
     /// One frame's step; returns the seconds simulated (less than the frame: behind).
     double stepOnce(double now);
@@ -424,27 +381,20 @@ class Session {
     /// the recorded past, the clock and the monitor start over from it. A Restart
     /// (`keepRecorded`) keeps what the Data section recorded, to export.
     void startOver(bool newScene, bool keepRecorded = false);
-    [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(tools_.pointer); }
+    [[nodiscard]] Vec2 pointerWorld() const { return tools_.pointerWorld(view_.camera()); }
 
     SessionOptions options_;
     Document doc_;
     std::vector<SceneInfo> presets_;
     std::size_t nextPreset_ = 0;
 
-    Camera camera_;
-    bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
-    /// Where the box may go: the window's layout the app sent last.
-    WindowLayout layout_;
-    ValuesDock valuesDock_;
-    ViewOptions view_;
-    bool showHelp_ = false;
-    std::size_t helpPage_ = 0;
-    bool showControls_ = true;
-
+    SceneView view_;
     Tools tools_;
     SimClock clock_;
     History history_;
     Monitor monitor_;
+    Instruments instruments_;
+    DataOut dataOut_;
 
     /// What the handler of the command being applied reported, for file().
     EditReport edit_;
@@ -452,16 +402,6 @@ class Session {
     std::string lastAction_;
     bool running_ = true;
     Dialog dialog_;
-    bool screenshotRequested_ = false;
-    DataRecorder data_;
-    LastCollision lastCollision_;
-    LabStopwatch stopwatch_;
-    LabRuler ruler_;
-    std::optional<std::string> clipboard_;
-    VideoSettings videoSettings_;
-    std::optional<VideoSettings> videoToggle_;
-    std::optional<std::filesystem::path> lastExport_;
-    std::string exportError_;
     Notices notices_;
 };
 

@@ -81,7 +81,7 @@ void Session::showSceneTrails(const std::vector<std::size_t>& trails) {
     // Before any step, storage order is the scene's order.
     if (trails.empty() || trails.front() >= doc_.world.size()) return;
     tools_.selection.select(doc_.world.ids()[trails.front()]);
-    view_.trails = TrailMode::Selected;
+    view_.showTrails(TrailMode::Selected);
 }
 
 NewSceneSpec Session::newSceneDefaults() const {
@@ -147,7 +147,7 @@ void Session::handle(const cmd::Restart&) {
     // The set-up stays the one shared with the document (and the scene as loaded with undo).
     const std::shared_ptr<const World> setup = doc_.setup;
     const bool edited = doc_.editedSinceSetup;
-    const bool wasRecording = data_.recording();
+    const bool wasRecording = instruments_.data.recording();
     doc_.world = World(*setup);
     ++doc_.generation;  // views keyed to particles (trails) start over
     startOver(true, true);
@@ -301,8 +301,8 @@ void Session::handle(const cmd::CloseDialog&) {
 void Session::handle(const cmd::Back&) {
     if (dialog_.open()) {
         handle(cmd::CloseDialog{});
-    } else if (showHelp_) {
-        showHelp_ = false;
+    } else if (view_.helpShown()) {
+        view_.closeHelp();
     } else if (tools_.prompt.active()) {
         tools_.closePrompt();
         notices_.say("Edit cancelled");

@@ -16,9 +16,9 @@ void Session::handle(const cmd::PointerDown& c) {
     tools_.pointer = c.screen;
     tools_.pointerTime = c.time;
     // The ruler's ends and edge come first, whatever the tool: they are what is under the hand.
-    if (view_.ruler) {
-        if (const auto part = ruler_.partAt(c.screen, camera_)) {
-            ruler_.take(*part, pointerWorld());
+    if (view_.options().ruler) {
+        if (const auto part = instruments_.ruler.partAt(c.screen, view_.camera())) {
+            instruments_.ruler.take(*part, pointerWorld());
             return;
         }
     }
@@ -49,15 +49,13 @@ void Session::handle(const cmd::PointerDown& c) {
 
 void Session::handle(const cmd::PointerMove& c) {
     if (tools_.panFrom) {
-        camera_.panPixels(c.screen - *tools_.panFrom);
-        camera_.keepNear(doc_.world.def().width, doc_.world.def().height);
+        view_.drag(c.screen - *tools_.panFrom, doc_.world.def());
         tools_.panFrom = c.screen;
-        fitted_ = false;
     }
     tools_.pointer = c.screen;
     tools_.pointerTime = c.time;
-    if (ruler_.held()) {
-        ruler_.moveTo(pointerWorld());
+    if (instruments_.ruler.held()) {
+        instruments_.ruler.moveTo(pointerWorld());
         return;
     }
     tools_.obstacle.moveTo(pointerWorld());
@@ -77,11 +75,12 @@ void Session::handle(const cmd::PointerMove& c) {
 void Session::handle(const cmd::PointerUp& c) {
     tools_.pointer = c.screen;
     tools_.pointerTime = c.time;
-    if (ruler_.held()) {
-        ruler_.moveTo(pointerWorld());
-        ruler_.letGo();
+    if (instruments_.ruler.held()) {
+        instruments_.ruler.moveTo(pointerWorld());
+        instruments_.ruler.letGo();
         notices_.log(fmt("Ruler: %s, %.1f degrees from the horizontal",
-                         quantity(ruler_.length(), "m").c_str(), ruler_.slopeDegrees()));
+                         quantity(instruments_.ruler.length(), "m").c_str(),
+                         instruments_.ruler.slopeDegrees()));
         return;
     }
     if (tools_.tool == cmd::Tool::Pan) {
@@ -102,7 +101,7 @@ void Session::handle(const cmd::PointerUp& c) {
     }
     World& world = doc_.world;
     ReleaseResult r = tools_.hand.release(world, pointerWorld(), c.time, tools_.spawn,
-                                          launchSettings(), view_.arrowSeconds);
+                                          launchSettings(), view_.options().arrowSeconds);
     using K = ReleaseResult::Kind;
     if (r.letGo) {
         world.setPosition(r.id, r.position);

@@ -74,7 +74,7 @@ void Session::restore(UndoState state) {
     if (state.selectedObstacle && *state.selectedObstacle < doc_.world.obstacles().size()) {
         tools_.selectedObstacle = state.selectedObstacle;
     }
-    if (otherScene && fitted_) fit();
+    if (otherScene && view_.fitted()) view_.fit(doc_, notices_);
 }
 
 void Session::handle(const cmd::Undo&) {

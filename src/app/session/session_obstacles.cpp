@@ -67,8 +67,9 @@ void Session::obstaclePress() {
 
 void Session::obstacleRelease() {
     if (!tools_.obstacle.active()) return;
-    const ObstaclePlacement p = tools_.obstacle.release(
-        pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
+    const ObstaclePlacement p =
+        tools_.obstacle.release(pointerWorld(), tools_.obstacleSizes, doc_.world.def(),
+                                view_.camera().toWorld(kMinWallPixels));
     if (!p.obstacle) {
         if (!p.refusal.empty()) notices_.say(p.refusal, Notice::Level::Warning);
         return;
@@ -93,7 +94,8 @@ void Session::obstacleRelease() {
 void Session::obstaclePressToMove() {
     const Vec2 at = pointerWorld();
     if (doc_.world.pick(at)) return;  // a particle: the click selects it
-    if (const auto i = pickObstacle(doc_.world.obstacles(), at, camera_.toWorld(kPickPixels))) {
+    if (const auto i =
+            pickObstacle(doc_.world.obstacles(), at, view_.camera().toWorld(kPickPixels))) {
         tools_.obstacle.pressOn(*i, doc_.world.obstacles()[*i], at);
         tools_.selectedObstacle = i;  // highlighted while it is dragged
     }
@@ -102,8 +104,9 @@ void Session::obstaclePressToMove() {
 bool Session::obstacleMoveRelease() {
     if (!tools_.obstacle.active()) return false;
     const std::size_t index = tools_.obstacle.movedIndex();
-    const ObstaclePlacement p = tools_.obstacle.release(
-        pointerWorld(), tools_.obstacleSizes, doc_.world.def(), camera_.toWorld(kMinWallPixels));
+    const ObstaclePlacement p =
+        tools_.obstacle.release(pointerWorld(), tools_.obstacleSizes, doc_.world.def(),
+                                view_.camera().toWorld(kMinWallPixels));
     if (!p.obstacle) {
         if (p.refusal.empty()) return false;  // a click
         notices_.say(p.refusal, Notice::Level::Warning);
@@ -134,7 +137,7 @@ bool Session::obstacleMoveRelease() {
 
 bool Session::selectObstacleAt() {
     const auto index =
-        pickObstacle(doc_.world.obstacles(), pointerWorld(), camera_.toWorld(kPickPixels));
+        pickObstacle(doc_.world.obstacles(), pointerWorld(), view_.camera().toWorld(kPickPixels));
     if (!index) return false;
     tools_.selectedObstacle = index;
     const Obstacle& o = doc_.world.obstacles()[*index];

@@ -11,6 +11,7 @@
 
 #include <particle_sandbox/math.hpp>
 
+#include "session/camera.hpp"
 #include "session/command.hpp"
 #include "session/edit_prompt.hpp"
 #include "session/interaction.hpp"
@@ -29,6 +30,10 @@ struct Tools {
     }
     void closePrompt() {
         if (prompt.active()) prompt.close();
+    }
+    /// Where the pointer is in the world seen through `camera`.
+    [[nodiscard]] Vec2 pointerWorld(const Camera& camera) const {
+        return camera.screenToWorld(pointer);
     }
 
     cmd::Tool tool = cmd::Tool::Fling;  ///< what the left mouse button does
