@@ -94,6 +94,10 @@ std::string Document::save(const std::filesystem::path& path) {
     return said;
 }
 
+EditResult Document::editParticle(const CheckedEdit& edit, const Axes& axes) {
+    return writeEdit(world, edit, axes);
+}
+
 void Document::listen(const std::optional<CollisionLog>& wanted) {
     psb::app::listen(world, wanted);
 }

@@ -16,6 +16,8 @@
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "session/particle_edit.hpp"
+
 namespace psb::app {
 
 /// What a scene file says that the world does not keep: read once when the scene opens, kept
@@ -76,6 +78,8 @@ struct Document {
     /// scene's file (writable: the user named it); returns the line for the user. Throws
     /// SaveError (the old file is intact, and nothing changes here).
     std::string save(const std::filesystem::path& path);
+    /// Writes a checked edit of a particle (edit_prompt.hpp, particle_edit.hpp) into the world.
+    EditResult editParticle(const CheckedEdit& edit, const Axes& axes);
     /// Has the world record `wanted` from its next step (nothing when none): what the
     /// instruments want together (collision_feed.hpp).
     void listen(const std::optional<CollisionLog>& wanted);

@@ -105,9 +105,8 @@ void Instruments::startOver(const World& world, bool newScene, bool keepRecorded
     ruler.place(world.def().width, world.def().height);
 }
 
-void Instruments::listen(Document& doc, bool cardListens,
-                         std::optional<ParticleId> selected) const {
-    doc.listen(mergeWanted(data.collisionsWanted(), LastCollision::wanted(cardListens, selected)));
+void Instruments::listen(Document& doc, bool card, std::optional<ParticleId> selected) const {
+    doc.listen(mergeWanted(data.collisionsWanted(), LastCollision::wanted(card, selected)));
 }
 
 void Instruments::shown(ShowOption option, bool on, Document& doc,
@@ -120,15 +119,15 @@ void Instruments::shown(ShowOption option, bool on, Document& doc,
     }
 }
 
-void Instruments::beforeStep(Document& doc, bool cardListens, std::optional<ParticleId> selected) {
-    listen(doc, cardListens, selected);
+void Instruments::beforeStep(Document& doc, bool card, std::optional<ParticleId> selected) {
+    listen(doc, card, selected);
     data.beforeStep(doc.world);
 }
 
-void Instruments::afterStep(Document& doc, bool cardListens, std::optional<ParticleId> selected) {
+void Instruments::afterStep(Document& doc, bool card, std::optional<ParticleId> selected) {
     const std::vector<Collision> records = doc.heard();
     data.afterStep(doc.world, records);
-    if (cardListens) lastCollision.heard(records, doc.world, selected);
+    if (card) lastCollision.heard(records, doc.world, selected);
 }
 
 }  // namespace psb::app

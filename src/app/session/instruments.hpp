@@ -55,18 +55,18 @@ struct Instruments {
         return LastCollision::listening(cardShown, world.size());
     }
     /// Has the document's world record the collisions the instruments want now: the
-    /// recording's, and the card's while it listens (following `selected`).
-    void listen(Document& doc, bool cardListens, std::optional<ParticleId> selected) const;
+    /// recording's, and the card's while it listens (`card`, following `selected`).
+    void listen(Document& doc, bool card, std::optional<ParticleId> selected) const;
     /// A show option was switched: the ruler hidden lets go; the card hidden in a large scene
     /// stops listening, and a card kept would go stale.
     void shown(ShowOption option, bool on, Document& doc, std::optional<ParticleId> selected);
 
     /// Around one step of the document's world: before it, the world records what the
-    /// instruments want (`cardListens`, as the step's start has it) and the recording drops
-    /// what it held after the world's time; after it, the recording and the card take the
-    /// step's collisions.
-    void beforeStep(Document& doc, bool cardListens, std::optional<ParticleId> selected);
-    void afterStep(Document& doc, bool cardListens, std::optional<ParticleId> selected);
+    /// instruments want (`card`: whether the card listens, as the step's start has it) and the
+    /// recording drops what it held after the world's time; after it, the recording and the card
+    /// take the step's collisions.
+    void beforeStep(Document& doc, bool card, std::optional<ParticleId> selected);
+    void afterStep(Document& doc, bool card, std::optional<ParticleId> selected);
 
     DataRecorder data;
     LastCollision lastCollision;

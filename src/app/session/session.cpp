@@ -49,14 +49,12 @@ void Session::setWorld(World world, SceneMeta meta, SceneFile file) {
 
 void Session::sceneOpened() {
     startOver(true);
-    followScene(tools_.spawn, doc_.world);
-    tools_.obstacleSizes = obstacleSizesFor(tools_.spawn.typicalRadius);
+    tools_.followScene(doc_.world);
     view_.fit(doc_, notices_);
 }
 
 void Session::startOver(bool newScene, bool keepRecorded) {
-    tools_.letGo();
-    tools_.selection.clear();
+    tools_.startOver();
     history_.startOver();
     clock_.restart();
     monitor_.restart(doc_.world, newScene, doc_.meta.dt);
@@ -66,32 +64,6 @@ void Session::startOver(bool newScene, bool keepRecorded) {
 
 std::vector<Notice> Session::takeNotices() {
     return notices_.take();
-}
-
-LaunchSettings Session::launchSettings() const {
-    LaunchSettings s;
-    s.window = 0.1;
-    // A hand that moved less than 4 pixels in the last 100 ms was holding still.
-    s.minDistance = view_.camera().toWorld(4.0);
-    s.maxSpeed = maxLaunchSpeed(doc_.world.def());
-    return s;
-}
-
-CappedVelocity Session::launchPreview() const {
-    if (tools_.hand.mode() != Interaction::Mode::Launching) return {};
-    return tools_.hand.launchVelocityNow(launchSettings(), view_.options().arrowSeconds);
-}
-
-std::optional<Particle> Session::selected() const {
-    if (const auto id = tools_.selection.id(); id && doc_.world.contains(*id)) {
-        return doc_.world.get(*id);
-    }
-    return std::nullopt;
-}
-
-ParticleId Session::trailParticle() const {
-    if (const auto id = tools_.selection.id(); id && doc_.world.contains(*id)) return *id;
-    return tools_.hand.mode() == Interaction::Mode::Holding ? tools_.hand.held() : kNullParticle;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -126,6 +98,9 @@ void Session::route(const C& c) {
     } else if constexpr (Handles<History, C>) {
         History::Context x{doc_, clock_, monitor_, tools_, notices_};
         history_.handle(c, x);
+    } else if constexpr (Handles<Tools, C>) {
+        Tools::Context x{doc_, view_, instruments_.ruler, clock_, monitor_, notices_, edit_};
+        tools_.handle(c, x);
     } else if constexpr (Handles<SceneView, C>) {
         SceneView::Context x{doc_, tools_, instruments_, notices_};
         view_.handle(c, x);
@@ -152,10 +127,9 @@ void Session::apply(const Command& command) {
             // it until its release or the deletion of what it holds: the gesture (grab, drag,
             // fling or delete) is one edit.
             const bool edits = mayEdit(c);
-            const bool holding = tools_.hand.mode() == Interaction::Mode::Holding;
             history_.before.reset();
             if (traits.gesture == cmd::Gesture::Release ||
-                (traits.gesture == cmd::Gesture::EndsHold && holding)) {
+                (traits.gesture == cmd::Gesture::EndsHold && tools_.holding())) {
                 history_.before = std::move(history_.pressBefore);
                 history_.pressBefore.reset();
             } else if (edits) {
@@ -164,8 +138,7 @@ void Session::apply(const Command& command) {
             edit_ = EditReport{};
             route(c);
             file(edit_);
-            if (traits.gesture == cmd::Gesture::Press &&
-                (tools_.hand.mode() != Interaction::Mode::Idle || tools_.obstacle.active())) {
+            if (traits.gesture == cmd::Gesture::Press && tools_.gestureUnderWay()) {
                 history_.pressBefore = std::move(history_.before);
             }
             history_.before.reset();

@@ -78,8 +78,6 @@ inline constexpr double kStepBudgetMs = 30.0;
 // The control panel's ranges.
 inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
 inline constexpr int kMaxPanelSubsteps = 64;
-inline constexpr double kMinLaunchMass = 1e-3;  ///< kg
-inline constexpr double kMaxLaunchMass = 1e6;   ///< kg
 /// A new or resized box's sides, metres.
 inline constexpr double kMinBoxSide = 0.01;
 inline constexpr double kMaxBoxSide = 1e6;
@@ -209,7 +207,9 @@ class Session {
     }
     /// The obstacle the Peg or Wall tool would make now (a wall being dragged, a peg under the
     /// pointer), for a preview.
-    [[nodiscard]] std::optional<Obstacle> obstaclePreview() const;
+    [[nodiscard]] std::optional<Obstacle> obstaclePreview() const {
+        return tools_.obstaclePreview(view_.camera(), doc_.world.def());
+    }
     [[nodiscard]] const Interaction& interaction() const { return tools_.hand; }
     [[nodiscard]] const Selection& selection() const { return tools_.selection; }
     [[nodiscard]] const EditPrompt& prompt() const { return tools_.prompt; }
@@ -218,13 +218,17 @@ class Session {
     /// selection changed).
     [[nodiscard]] const std::string& editRefusal() const { return tools_.editRefusal; }
     /// The selected particle, while it exists.
-    [[nodiscard]] std::optional<Particle> selected() const;
+    [[nodiscard]] std::optional<Particle> selected() const { return tools_.selected(doc_.world); }
     /// The particle whose trail TrailMode::Selected shows: the selected one, else the one held.
-    [[nodiscard]] ParticleId trailParticle() const;
+    [[nodiscard]] ParticleId trailParticle() const { return tools_.trailParticle(doc_.world); }
     /// How the hand turns drags into velocities at the current zoom and scene.
-    [[nodiscard]] LaunchSettings launchSettings() const;
+    [[nodiscard]] LaunchSettings launchSettings() const {
+        return Tools::launchSettings(view_.camera(), doc_.world.def());
+    }
     /// A launch in progress: the velocity releasing now would give.
-    [[nodiscard]] CappedVelocity launchPreview() const;
+    [[nodiscard]] CappedVelocity launchPreview() const {
+        return tools_.launchPreview(view_.camera(), doc_.world.def(), view_.options().arrowSeconds);
+    }
 
     // The monitor (monitor.hpp).
     [[nodiscard]] const AccuracyMonitor& accuracy() const { return monitor_.accuracy(); }
@@ -283,32 +287,10 @@ class Session {
     template <class C>
     void route(const C& c);
     // One handler per command, in the file of its concept; apply() dispatches by type.
-    // The hand (session_hand.cpp).
-    void handle(const cmd::PointerDown& c);
-    void handle(const cmd::PointerMove& c);
-    void handle(const cmd::PointerUp& c);
-    void handle(const cmd::DeleteHeld& c);
-    void handle(const cmd::DeleteParticle& c);
-    void handle(const cmd::SetTool& c);
-    void handle(const cmd::SpawnRandom& c);
-    void handle(const cmd::ChangeSpawnMass& c);
-    void handle(const cmd::SetLaunchBody& c);
-    // The obstacle tools (session_obstacles.cpp).
-    void handle(const cmd::SetObstacleSizes& c);
-    void handle(const cmd::RemoveObstacle& c);
-    // The selection and its edit prompt (session_edit.cpp).
-    void handle(const cmd::Select& c);
-    void handle(const cmd::OpenEdit& c);
-    void handle(const cmd::EditType& c);
-    void handle(const cmd::EditField& c);
-    void handle(const cmd::EditBackspace& c);
-    void handle(const cmd::EditApply& c);
-    void handle(const cmd::EditParticle& c);
     // The world's laws and the stepping mode (session_values.cpp).
     void handle(const cmd::SetRestitution& c);
     void handle(const cmd::SetFriction& c);
     void handle(const cmd::SetTangentialRestitution& c);
-    void handle(const cmd::SetDiscsTurn& c);
     void handle(const cmd::SetGravity& c);
     void handle(const cmd::SetWalls& c);
     void handle(const cmd::SetMode& c);
@@ -333,24 +315,6 @@ class Session {
     void handle(const cmd::ScaleSpeeds& c);
     void handle(const cmd::ResizeBox& c);
 
-    // The hand's gestures (session_hand.cpp).
-    void click(const ReleaseResult& r);
-    /// The held particle to the hand, through the timeline's setters.
-    void holdParticle(double now);
-    /// The selected particle is gone: forget it (and close its edit prompt), saying so.
-    void checkSelection();
-    // The obstacle tools (session_obstacles.cpp).
-    [[nodiscard]] bool obstacleToolOn() const;
-    void obstaclePress();
-    void obstacleRelease();
-    /// The Select tool's press: on an obstacle (no particle there), starts moving it.
-    void obstaclePressToMove();
-    /// The Select tool's release: true when it moved an obstacle or refused the move, false for
-    /// a click (which then selects).
-    bool obstacleMoveRelease();
-    /// A click on empty space: selects the obstacle under the pointer; true if there was one.
-    bool selectObstacleAt();
-    void removeObstacle(std::size_t index);
     // The document (session_files.cpp).
     /// Opens `file` (none: the built-in scene), saying "VERB FILE: ..."; false when it could
     /// not (the error is said).
@@ -381,7 +345,6 @@ class Session {
     /// the recorded past, the clock and the monitor start over from it. A Restart
     /// (`keepRecorded`) keeps what the Data section recorded, to export.
     void startOver(bool newScene, bool keepRecorded = false);
-    [[nodiscard]] Vec2 pointerWorld() const { return tools_.pointerWorld(view_.camera()); }
 
     SessionOptions options_;
     Document doc_;

@@ -44,7 +44,7 @@ UndoState Session::snapshot(World world) const {
                 doc_.dirty,
                 doc_.file};
     // A particle in the hand is kinematic only while held: restored, it is free again.
-    if (tools_.hand.mode() == Interaction::Mode::Holding && s.world.contains(tools_.hand.held())) {
+    if (tools_.holding() && s.world.contains(tools_.hand.held())) {
         s.world.setKinematic(tools_.hand.held(), false);
     }
     return s;
@@ -66,14 +66,8 @@ void Session::restore(UndoState state) {
     ++doc_.generation;  // views keyed to particles (trails) start over
     // The recorded frames belong to the state undone: the record starts again from here.
     startOver(otherScene);
-    tools_.spawn = state.spawn;
+    tools_.restore(state, doc_.world);
     clock_.setScale(state.timeScale);
-    if (!state.selection.isNull() && doc_.world.contains(state.selection)) {
-        tools_.selection.select(state.selection);
-    }
-    if (state.selectedObstacle && *state.selectedObstacle < doc_.world.obstacles().size()) {
-        tools_.selectedObstacle = state.selectedObstacle;
-    }
     if (otherScene && view_.fitted()) view_.fit(doc_, notices_);
 }
 

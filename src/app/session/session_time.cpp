@@ -12,7 +12,7 @@
 namespace psb::app {
 
 double Session::stepOnce(double now) {
-    holdParticle(now);
+    tools_.hold(doc_.world, history_.timeline, now, view_.camera());
     const double dt = doc_.meta.dt;  // the scene's frame length
     // Whether the card listens is decided as the step starts, and holds for its records.
     const std::optional<ParticleId> selected = tools_.selection.id();
@@ -35,8 +35,8 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     // scattering a crowd): arrow lengths stay comparable over time. A scene opened chooses one;
     // the Show section's slider sets it.
     // Show the held particle exactly at the hand, paused or not.
-    holdParticle(now);
-    checkSelection();
+    tools_.hold(doc_.world, history_.timeline, now, view_.camera());
+    tools_.checkSelection(doc_.world, notices_);
     instruments_.lastCollision.follow(tools_.selection.id());
     instruments_.lastCollision.dropAfter(doc_.world.time());
     // A past frame shown is neither the present nor a new sample. At a sample's instant (paused
