@@ -6,7 +6,10 @@
 #include <system_error>
 
 #include "session/collision_feed.hpp"
+#include "session/notices.hpp"
 #include "session/scene_io.hpp"
+#include "session/start_over.hpp"
+#include "session/undo_history.hpp"
 
 namespace psb::app {
 
@@ -57,6 +60,35 @@ void Document::replace(World w, SceneMeta m, SceneFile f) {
     savedSinceLoad = false;
     ++generation;
     dirty = false;
+}
+
+void Document::open(World w, SceneMeta m, SceneFile f, StartOver& startOver, Notices& notices) {
+    const bool unsaved = dirty;
+    const std::string was = meta.name;
+    replace(std::move(w), std::move(m), std::move(f));
+    startOver.scene(*this);
+    if (unsaved) {
+        notices.say("The unsaved changes to " + (was.empty() ? std::string("the scene") : was) +
+                        " were replaced: Ctrl+Z brings them back",
+                    Notice::Level::Warning);
+    }
+}
+
+bool Document::restore(UndoState& state) {
+    const bool otherScene = state.loaded != loaded;
+    world = std::move(state.world);
+    loaded = std::move(state.loaded);
+    meta = std::move(state.meta);
+    dirty = state.dirty;
+    if (otherScene) {
+        file = std::move(state.file);
+        setup = loaded;
+        editedSinceSetup = false;
+    } else {
+        editedSinceSetup = true;  // the world is not the set-up's any more
+    }
+    ++generation;  // views keyed to particles (trails) start over
+    return otherScene;
 }
 
 void Document::edited() {

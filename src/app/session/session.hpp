@@ -1,86 +1,62 @@
 #pragma once
-// The sandbox without a window. It knows no SDL and is tested without one. Its parts, one
-// concept each:
-//   - the document (document.hpp): the world, the scene as loaded, its SceneMeta, the files;
-//   - the view: the camera and what is shown (view_options.hpp);
+// The sandbox without a window. It knows no SDL and is tested without one. The session is a
+// set of parts, one concept each, and the dispatch between them:
+//   - the document (document.hpp): the world and its laws, the scene as loaded, its SceneMeta,
+//     the files, the dialogs about them and leaving;
+//   - the view (scene_view.hpp): the camera, the box fitted into the window, what is shown;
 //   - the tools (tools.hpp): the hand, the obstacle tools, the selection and its edit prompt,
 //     what new particles are made of;
 //   - the clock (sim_clock.hpp): pause, time speed, real time owed;
 //   - the history (history.hpp): undo and the recorded frames;
-//   - the monitor (monitor.hpp): the accuracy indicators and the plots' time series.
+//   - the monitor (monitor.hpp): the accuracy indicators and the plots' time series;
+//   - the instruments (instruments.hpp): the recording, the collision card, the stopwatch, the
+//     ruler;
+//   - data out (data_out.hpp): exports, the clipboard, screenshots and video.
 //
 // Everything that changes it is a Command handed to apply(), the one place where a user's
 // intent becomes a change, so keys, the mouse, tests and on-screen controls share it. apply()
-// treats a command as its type's traits say (command.hpp) and hands it to the one handle()
-// for its type, in the file of its concept (session_hand.cpp, session_values.cpp, ...). Every
-// change a handler makes to the world goes through the session (the tools return what the user
-// meant; the handler applies it and files it for undo and the timeline). update() is the only
-// other mutator: it advances the world by real time.
+// treats a command as its type's traits say (command.hpp) and hands it to the part that owns
+// what it changes: the one part with a handle() for its type, given a Context of the other
+// parts it reaches. A command is behaviour where its state lives; the session itself handles
+// only Undo and Redo. update() is the only other mutator: it advances the world by real time.
 //
 // Undo (undo_history.hpp). apply() keeps the state before each command that may edit (a
-// PointerDown's lasts until its release); a handler that made an edit calls
-// userAction("label"), which files that state in the history under the label. Undo and Redo
-// restore a state whole (world, scene as loaded, name, selection, new-particle settings, time
-// speed, unsaved flag); the clock goes back with the world.
+// press's lasts until its gesture ends: command.hpp, Gesture); a handler that made a change
+// reports it with its label (edit_report.hpp), and apply() files that state in the history
+// under the label. Undo and Redo restore a state whole (world, scene as loaded, name,
+// selection, new-particle settings, time speed, unsaved flag); the clock goes back with the
+// world, and every part starts over from it (start_over.hpp).
 //
-// Step back (timeline.hpp). Every step and every move of the held particle goes through the
-// timeline, which update() ends with record(); other edits are reported with edited(). While
-// paused, StepBack / StepForward / Seek show a recorded frame: the world is then a rebuilt copy
-// of that frame, and nothing is recorded. Resuming, or any edit, from there carries on from
-// that frame and forgets the frames after it (the edit is undoable; the forgotten frames are
-// not restored by undo).
-//
-// What the session has to say (a mode refused, a file saved) comes out as Notices, which the app
-// shows for a few seconds and logs; the session itself keeps no clock of its own.
+// What the session has to say (a mode refused, a file saved) comes out as notices
+// (notices.hpp), which the app shows for a few seconds and logs.
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <memory>
 #include <optional>
-#include <random>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include <particle_sandbox/csv.hpp>
-#include <particle_sandbox/time_series.hpp>
-#include <particle_sandbox/world.hpp>
-
-#include "session/accuracy.hpp"
-#include "session/box_area.hpp"
-#include "session/camera.hpp"
 #include "session/command.hpp"
 #include "session/data_out.hpp"
-#include "session/dialog.hpp"
 #include "session/document.hpp"
 #include "session/edit_report.hpp"
 #include "session/history.hpp"
 #include "session/instruments.hpp"
-#include "session/lab_ruler.hpp"
-#include "session/lab_stopwatch.hpp"
-#include "session/last_collision.hpp"
 #include "session/monitor.hpp"
 #include "session/notices.hpp"
 #include "session/scene_io.hpp"
 #include "session/scene_view.hpp"
 #include "session/session_options.hpp"
 #include "session/sim_clock.hpp"
+#include "session/start_over.hpp"
 #include "session/tools.hpp"
-#include "session/video_settings.hpp"
-#include "session/view_options.hpp"
 
 namespace psb::app {
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
 /// fall further behind.
 inline constexpr double kStepBudgetMs = 30.0;
-
-// The control panel's ranges.
-inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
-inline constexpr int kMaxPanelSubsteps = 64;
-/// A new or resized box's sides, metres.
-inline constexpr double kMinBoxSide = 0.01;
-inline constexpr double kMaxBoxSide = 1e6;
 
 class Session {
   public:
@@ -164,9 +140,9 @@ class Session {
     /// Restart's target: the world when Play was last pressed after an edit.
     [[nodiscard]] const World& setupWorld() const { return *doc_.setup; }
     /// What Save As proposes: --save-to, else a free name after the scene's in the save folder.
-    [[nodiscard]] std::filesystem::path saveProposal() const;
+    [[nodiscard]] std::filesystem::path saveProposal() const { return doc_.saveProposal(options_); }
     /// What the New scene dialog starts from: the box of the scene shown.
-    [[nodiscard]] NewSceneSpec newSceneDefaults() const;
+    [[nodiscard]] NewSceneSpec newSceneDefaults() const { return doc_.newSceneDefaults(); }
     /// The file the last Save wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const {
         return doc_.lastSave;
@@ -274,8 +250,8 @@ class Session {
 
     // Dialogs and leaving.
     /// The dialog open (Save As, New scene, the quit question), if any.
-    [[nodiscard]] const Dialog& dialog() const { return dialog_; }
-    [[nodiscard]] bool running() const { return running_; }
+    [[nodiscard]] const Dialog& dialog() const { return doc_.dialog; }
+    [[nodiscard]] bool running() const { return doc_.running; }
 
     /// Replaces the world (a scene opened elsewhere, the benchmark); it becomes the scene as
     /// loaded, from `file`.
@@ -286,49 +262,9 @@ class Session {
     /// with what that part reaches beyond itself.
     template <class C>
     void route(const C& c);
-    // One handler per command, in the file of its concept; apply() dispatches by type.
-    // The world's laws and the stepping mode (session_values.cpp).
-    void handle(const cmd::SetRestitution& c);
-    void handle(const cmd::SetFriction& c);
-    void handle(const cmd::SetTangentialRestitution& c);
-    void handle(const cmd::SetGravity& c);
-    void handle(const cmd::SetWalls& c);
-    void handle(const cmd::SetMode& c);
-    // The clock and the recorded past (session_time.cpp).
+    /// Undo and redo are the session's own: they put back every part's state.
     void handle(const cmd::Undo& c);
     void handle(const cmd::Redo& c);
-    // The document and leaving (session_files.cpp).
-    void handle(const cmd::OpenPreset& c);
-    void handle(const cmd::OpenFile& c);
-    void handle(const cmd::AskNewScene& c);
-    void handle(const cmd::NewScene& c);
-    void handle(const cmd::Restart& c);
-    void handle(const cmd::Revert& c);
-    void handle(const cmd::SetSceneText& c);
-    void handle(const cmd::Save& c);
-    void handle(const cmd::AskSaveAs& c);
-    void handle(const cmd::SaveAs& c);
-    void handle(const cmd::AnswerQuit& c);
-    void handle(const cmd::CloseDialog& c);
-    void handle(const cmd::Back& c);
-    void handle(const cmd::Quit& c);
-    void handle(const cmd::ScaleSpeeds& c);
-    void handle(const cmd::ResizeBox& c);
-
-    // The document (session_files.cpp).
-    /// Opens `file` (none: the built-in scene), saying "VERB FILE: ..."; false when it could
-    /// not (the error is said).
-    bool openFile(const std::optional<std::filesystem::path>& file, const char* verb = "Opened");
-    /// Saves to `path`, saying so; false when it failed (the error is said).
-    bool saveTo(const std::filesystem::path& path);
-    void closeDialog();
-    void quit();
-    /// A scene that marks particles' trails opens with the first of them selected and its trail
-    /// shown; `trails` are indices in the scene's order (the world's before any step).
-    void showSceneTrails(const std::vector<std::size_t>& trails);
-    // The clock and the history (session_time.cpp, session_history.cpp).
-    /// One frame's step; returns the seconds simulated (less than the frame: behind).
-    double stepOnce(double now);
     void undoOrRedo(bool redo);
     /// Files what the command's handler reported (edit_report.hpp) in the undo history: the
     /// state apply() kept before the command, under the edit's label. A user action also ends
@@ -339,18 +275,14 @@ class Session {
     [[nodiscard]] UndoState snapshot(World world) const;
     /// Puts `state` back (undo / redo).
     void restore(UndoState state);
-    /// A scene was opened: everything starts over from it, the view fitted to its box.
-    void sceneOpened();
-    /// A world was put in place (a new scene, or an undo when `newScene` is false): the tools,
-    /// the recorded past, the clock and the monitor start over from it. A Restart
-    /// (`keepRecorded`) keeps what the Data section recorded, to export.
-    void startOver(bool newScene, bool keepRecorded = false);
+    /// The parts that start over from a world put in place.
+    [[nodiscard]] StartOver startOver();
+    /// One frame's step; returns the seconds simulated (less than the frame: behind).
+    double stepOnce(double now);
 
     SessionOptions options_;
     Document doc_;
-    std::vector<SceneInfo> presets_;
-    std::size_t nextPreset_ = 0;
-
+    std::vector<SceneInfo> presets_;  ///< the presets described, for the panel
     SceneView view_;
     Tools tools_;
     SimClock clock_;
@@ -358,14 +290,12 @@ class Session {
     Monitor monitor_;
     Instruments instruments_;
     DataOut dataOut_;
+    Notices notices_;
 
     /// What the handler of the command being applied reported, for file().
     EditReport edit_;
     std::uint64_t userActions_ = 0;
     std::string lastAction_;
-    bool running_ = true;
-    Dialog dialog_;
-    Notices notices_;
 };
 
 }  // namespace psb::app
