@@ -421,7 +421,8 @@ struct Screenshot {
     static constexpr Traits traits = kPassive;
 };  ///< the app writes the next frame's pixels
 
-// Data out (session_data.cpp): tables to take away, and recording the particles' paths.
+// Data out (data_out.hpp): tables to take away; recording the particles' paths
+// (instruments.hpp).
 /// The tables (psb::valuesTable and its neighbours in data_tables.hpp).
 enum class DataTable : std::uint8_t {
     Values,        ///< every particle's state now

@@ -49,7 +49,7 @@ class DataRecorder {
     [[nodiscard]] std::string takeStopReason();
 
     /// The collisions the world should record for the recording (none when not recording):
-    /// the chosen particles'. The session merges it with what the other instruments want.
+    /// the chosen particles'. The instruments merge it with what the collision card wants.
     [[nodiscard]] std::optional<CollisionLog> collisionsWanted() const;
     /// Around each step of the world: before it, what was recorded after the world's time is
     /// dropped (an undo or a step back took the clock back); after it, `heard` (the step's

@@ -7,6 +7,7 @@
 
 #include "session/collision_feed.hpp"
 #include "session/notices.hpp"
+#include "session/particle_edit.hpp"
 #include "session/scene_io.hpp"
 #include "session/start_over.hpp"
 #include "session/undo_history.hpp"

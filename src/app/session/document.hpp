@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/scene.hpp>
@@ -18,11 +19,12 @@
 
 #include "session/command.hpp"
 #include "session/dialog.hpp"
-#include "session/particle_edit.hpp"
 
 namespace psb::app {
 
+struct CheckedEdit;
 class EditReport;
+struct EditResult;
 struct Instruments;
 class Notices;
 class SceneView;

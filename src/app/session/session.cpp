@@ -8,6 +8,7 @@
 
 #include "session/frame_step.hpp"
 #include "session/session_text.hpp"
+#include "session/start_over.hpp"
 #include "session/units.hpp"
 
 namespace psb::app {

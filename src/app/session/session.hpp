@@ -49,10 +49,11 @@
 #include "session/scene_view.hpp"
 #include "session/session_options.hpp"
 #include "session/sim_clock.hpp"
-#include "session/start_over.hpp"
 #include "session/tools.hpp"
 
 namespace psb::app {
+
+struct StartOver;
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
 /// fall further behind.
@@ -73,6 +74,7 @@ class Session {
     /// While paused only a requested single step runs.
     void update(double realSeconds, double now, double budgetMs = kStepBudgetMs);
 
+    // What the app takes once: notices, and what the commands asked of it.
     /// What the session said since the last call.
     [[nodiscard]] std::vector<Notice> takeNotices();
     /// True once after a Screenshot command: the app writes the next frame.
@@ -88,6 +90,8 @@ class Session {
     }
     /// The video settings last asked for (Ctrl+R records with them).
     [[nodiscard]] const VideoSettings& videoSettings() const { return dataOut_.videoSettings(); }
+
+    // What the parts hold, read-only, for the view, the control panel and the tests.
 
     // The instruments (instruments.hpp).
     /// The run's series, the recorded trajectories and collisions.

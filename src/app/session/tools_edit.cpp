@@ -5,6 +5,7 @@
 #include "session/document.hpp"
 #include "session/edit_report.hpp"
 #include "session/notices.hpp"
+#include "session/particle_edit.hpp"
 #include "session/scene_view.hpp"
 #include "session/tools.hpp"
 
