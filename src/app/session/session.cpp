@@ -7,7 +7,6 @@
 #include <type_traits>
 
 #include "session/frame_step.hpp"
-#include "session/session_text.hpp"
 #include "session/start_over.hpp"
 #include "session/units.hpp"
 
