@@ -1,8 +1,9 @@
 #pragma once
 // The world keeps one collision log (collision_log.hpp); more than one instrument reads it (the
-// Data section's recording, the last collision card). Before each step the session merges what
-// they want and has the world record that; after the step each takes what it follows from the
-// same records.
+// Data section's recording, the last collision card). Before each step the instruments merge
+// what they want and have the world record that; after the step each takes what it follows
+// from the same records (instruments.hpp). In the session the document, the world's owner,
+// calls listen() and heard() (Document::listen, Document::heard).
 
 #include <optional>
 #include <vector>

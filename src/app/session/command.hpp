@@ -32,6 +32,20 @@
 
 namespace psb::app::cmd {
 
+/// A command's part in a gesture of the left button (a press, its drags, its release), which
+/// undo files as one edit: a grab, drag and fling, or a grab and delete.
+enum class Gesture : std::uint8_t {
+    None,
+    /// May begin one: when the hand or an obstacle tool takes the press, the state before it is
+    /// kept until the gesture ends.
+    Press,
+    /// Ends it: its edit is filed with the state kept at the press. A press and a release set a
+    /// particle kinematic and free, so the timeline keys the frame whether or not it edited.
+    Release,
+    /// Ends it while the hand holds a particle: the command deletes what the hand holds.
+    EndsHold,
+};
+
 /// How Session::apply treats a command.
 struct Traits {
     /// May change what undo restores: apply() keeps the state before it, for the history. (A
@@ -45,6 +59,7 @@ struct Traits {
     /// leaving, and what is not a user's choice (a pointer move, a resize). Every other command
     /// is held back until the dialog closes.
     bool whileDialog = false;
+    Gesture gesture = Gesture::None;
 };
 /// Looks, moves the view, steers time or files: never an edit; held back by the prompt.
 inline constexpr Traits kLooks{};
@@ -61,7 +76,7 @@ inline constexpr Traits kEditsPassive{.edits = true, .whilePrompt = true, .while
 
 // The left button: grab, fling, launch, select.
 struct PointerDown {
-    static constexpr Traits traits = kEditsPastPrompt;
+    static constexpr Traits traits{.edits = true, .whilePrompt = true, .gesture = Gesture::Press};
     Vec2 screen;
     double time = 0.0;
 };
@@ -71,13 +86,13 @@ struct PointerMove {
     double time = 0.0;
 };
 struct PointerUp {
-    static constexpr Traits traits = kPastPrompt;
+    static constexpr Traits traits{.whilePrompt = true, .gesture = Gesture::Release};
     Vec2 screen;
     double time = 0.0;
 };
 /// Backspace/Delete: the held particle, else the selected particle, else the selected obstacle.
 struct DeleteHeld {
-    static constexpr Traits traits = kEdits;
+    static constexpr Traits traits{.edits = true, .gesture = Gesture::EndsHold};
 };
 
 // The view.
@@ -406,7 +421,8 @@ struct Screenshot {
     static constexpr Traits traits = kPassive;
 };  ///< the app writes the next frame's pixels
 
-// Data out (session_data.cpp): tables to take away, and recording the particles' paths.
+// Data out (data_out.hpp): tables to take away; recording the particles' paths
+// (instruments.hpp).
 /// The tables (psb::valuesTable and its neighbours in data_tables.hpp).
 enum class DataTable : std::uint8_t {
     Values,        ///< every particle's state now

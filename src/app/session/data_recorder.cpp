@@ -40,7 +40,7 @@ void DataRecorder::sample(const ObservablesSample& s) {
     runStride_ *= 2;
 }
 
-void DataRecorder::start(World& world, std::vector<ParticleId> ids, int every) {
+void DataRecorder::start(const World& world, std::vector<ParticleId> ids, int every) {
     every_ = std::clamp(every, 1, kMaxEvery);
     trajectory_ = Trajectory(ids);
     collisions_.clear();
@@ -77,7 +77,7 @@ void DataRecorder::beforeStep(const World& world) {
     if (recording_) dropAfter(world.time());
 }
 
-void DataRecorder::afterStep(World& world, const std::vector<Collision>& heard) {
+void DataRecorder::afterStep(const World& world, const std::vector<Collision>& heard) {
     if (!recording_) return;
     const CollisionLog chosen(trajectory_.ids());
     for (const Collision& c : heard) {

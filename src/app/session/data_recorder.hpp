@@ -42,21 +42,21 @@ class DataRecorder {
 
     /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state
     /// now as the first sample; what an earlier recording held is dropped.
-    void start(World& world, std::vector<ParticleId> ids, int every);
+    void start(const World& world, std::vector<ParticleId> ids, int every);
     void stop();
     [[nodiscard]] bool recording() const { return recording_; }
     /// Why recording stopped by itself (a limit reached), once; empty otherwise.
     [[nodiscard]] std::string takeStopReason();
 
     /// The collisions the world should record for the recording (none when not recording):
-    /// the chosen particles'. The session merges it with what the other instruments want.
+    /// the chosen particles'. The instruments merge it with what the collision card wants.
     [[nodiscard]] std::optional<CollisionLog> collisionsWanted() const;
     /// Around each step of the world: before it, what was recorded after the world's time is
     /// dropped (an undo or a step back took the clock back); after it, `heard` (the step's
     /// collision records, perhaps of more particles than the recording's) joins the log, and
     /// the trajectory is sampled every `every` steps.
     void beforeStep(const World& world);
-    void afterStep(World& world, const std::vector<Collision>& heard);
+    void afterStep(const World& world, const std::vector<Collision>& heard);
 
     [[nodiscard]] const std::vector<ObservablesSample>& run() const { return run_; }
     [[nodiscard]] const Trajectory& trajectory() const { return trajectory_; }

@@ -5,7 +5,12 @@
 #include <algorithm>
 #include <system_error>
 
+#include "session/collision_feed.hpp"
+#include "session/notices.hpp"
+#include "session/particle_edit.hpp"
 #include "session/scene_io.hpp"
+#include "session/start_over.hpp"
+#include "session/undo_history.hpp"
 
 namespace psb::app {
 
@@ -58,6 +63,35 @@ void Document::replace(World w, SceneMeta m, SceneFile f) {
     dirty = false;
 }
 
+void Document::open(World w, SceneMeta m, SceneFile f, StartOver& startOver, Notices& notices) {
+    const bool unsaved = dirty;
+    const std::string was = meta.name;
+    replace(std::move(w), std::move(m), std::move(f));
+    startOver.scene(*this);
+    if (unsaved) {
+        notices.say("The unsaved changes to " + (was.empty() ? std::string("the scene") : was) +
+                        " were replaced: Ctrl+Z brings them back",
+                    Notice::Level::Warning);
+    }
+}
+
+bool Document::restore(UndoState& state) {
+    const bool otherScene = state.loaded != loaded;
+    world = std::move(state.world);
+    loaded = std::move(state.loaded);
+    meta = std::move(state.meta);
+    dirty = state.dirty;
+    if (otherScene) {
+        file = std::move(state.file);
+        setup = loaded;
+        editedSinceSetup = false;
+    } else {
+        editedSinceSetup = true;  // the world is not the set-up's any more
+    }
+    ++generation;  // views keyed to particles (trails) start over
+    return otherScene;
+}
+
 void Document::edited() {
     dirty = true;
     editedSinceSetup = true;
@@ -91,6 +125,18 @@ std::string Document::save(const std::filesystem::path& path) {
     dirty = false;
     fileError.clear();
     return said;
+}
+
+EditResult Document::editParticle(const CheckedEdit& edit, const Axes& axes) {
+    return writeEdit(world, edit, axes);
+}
+
+void Document::listen(const std::optional<CollisionLog>& wanted) {
+    psb::app::listen(world, wanted);
+}
+
+std::vector<Collision> Document::heard() {
+    return psb::app::heard(world);
 }
 
 }  // namespace psb::app

@@ -11,11 +11,28 @@
 #include <string>
 #include <vector>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/bins.hpp>
+#include <particle_sandbox/collision_log.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/world.hpp>
 
+#include "session/command.hpp"
+#include "session/dialog.hpp"
+
 namespace psb::app {
+
+struct CheckedEdit;
+class EditReport;
+struct EditResult;
+struct Instruments;
+class Notices;
+class SceneView;
+struct SessionOptions;
+class SimClock;
+struct StartOver;
+struct Tools;
+struct UndoState;
 
 /// What a scene file says that the world does not keep: read once when the scene opens, kept
 /// with the world, written back when it is saved.
@@ -52,15 +69,72 @@ struct SceneFile {
 [[nodiscard]] SceneFile sceneFile(const std::optional<std::filesystem::path>& file,
                                   const std::vector<std::filesystem::path>& readOnly = {});
 
+/// The control panel's ranges for the world's laws and box.
+inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
+inline constexpr int kMaxPanelSubsteps = 64;
+/// A new or resized box's sides, metres.
+inline constexpr double kMinBoxSide = 0.01;
+inline constexpr double kMaxBoxSide = 1e6;
+
 struct Document {
     /// Files opened or saved lately, newest first (at most this many).
     static constexpr std::size_t kRecentFiles = 5;
 
     Document(World world, SceneMeta meta, SceneFile file);
 
+    /// What the document's commands reach beyond it: where files go and which are presets
+    /// (the options), every part that starts over from a world put in place, the tools (the
+    /// edit prompt closed, the particle whose trail a scene shows selected), the view (that
+    /// trail shown, the help Esc closes), the clock (a scene opens paused, at its own pace; a
+    /// new mode owes no time) and the recording a restart stops.
+    struct Context {
+        const SessionOptions& options;
+        StartOver& startOver;
+        Tools& tools;
+        SceneView& view;
+        SimClock& clock;
+        const Instruments& instruments;
+        Notices& notices;
+        EditReport& edit;
+    };
+    // Files, the scene's text, dialogs and leaving (document_files.cpp).
+    void handle(const cmd::OpenPreset& c, Context& x);
+    void handle(const cmd::OpenFile& c, Context& x);
+    void handle(const cmd::AskNewScene& c, Context& x);
+    void handle(const cmd::NewScene& c, Context& x);
+    void handle(const cmd::Restart& c, Context& x);
+    void handle(const cmd::Revert& c, Context& x);
+    void handle(const cmd::SetSceneText& c, Context& x);
+    void handle(const cmd::Save& c, Context& x);
+    void handle(const cmd::AskSaveAs& c, Context& x);
+    void handle(const cmd::SaveAs& c, Context& x);
+    void handle(const cmd::AnswerQuit& c, Context& x);
+    void handle(const cmd::CloseDialog& c, Context& x);
+    void handle(const cmd::Back& c, Context& x);
+    void handle(const cmd::Quit& c, Context& x);
+    // The world's laws, its stepping mode, its speeds and its box (document_laws.cpp).
+    void handle(const cmd::SetRestitution& c, Context& x);
+    void handle(const cmd::SetFriction& c, Context& x);
+    void handle(const cmd::SetTangentialRestitution& c, Context& x);
+    void handle(const cmd::SetGravity& c, Context& x);
+    void handle(const cmd::SetWalls& c, Context& x);
+    void handle(const cmd::SetMode& c, Context& x);
+    void handle(const cmd::ScaleSpeeds& c, Context& x);
+    void handle(const cmd::ResizeBox& c, Context& x);
+
     /// A new scene from `file`: `world` becomes the world, the scene as loaded and the set-up;
     /// nothing is unsaved.
     void replace(World world, SceneMeta meta, SceneFile file);
+    /// replace(), and every part starts over from the new scene (`startOver`). Replacing unsaved
+    /// changes is undoable, as every change is; it is said, so that a scene opened by a stray
+    /// key (a digit opens a preset) is not taken for lost.
+    void open(World world, SceneMeta meta, SceneFile file, StartOver& startOver, Notices& notices);
+    /// A scene that marks particles' trails opens with the first of them selected and its trail
+    /// shown (the marks are indices in the scene's order: the world's before any step).
+    void showTrails(Tools& tools, SceneView& view) const;
+    /// Puts back what undo keeps of the document (`state`'s world, scene as loaded, meta,
+    /// unsaved flag; its file with another scene); returns whether it is another scene.
+    bool restore(UndoState& state);
     /// The user edited the scene: unsaved, and the next Play makes a new set-up.
     void edited();
     /// Play was pressed: after an edit, the world as it is becomes the set-up Restart returns
@@ -75,6 +149,17 @@ struct Document {
     /// scene's file (writable: the user named it); returns the line for the user. Throws
     /// SaveError (the old file is intact, and nothing changes here).
     std::string save(const std::filesystem::path& path);
+    /// What Save As proposes: --save-to, else a free name after the scene's in the save folder.
+    [[nodiscard]] std::filesystem::path saveProposal(const SessionOptions& options) const;
+    /// What the New scene dialog starts from: the box of the scene shown.
+    [[nodiscard]] NewSceneSpec newSceneDefaults() const;
+    /// Writes a checked edit of a particle (edit_prompt.hpp, particle_edit.hpp) into the world.
+    EditResult editParticle(const CheckedEdit& edit, const Axes& axes);
+    /// Has the world record `wanted` from its next step (nothing when none): what the
+    /// instruments want together (collision_feed.hpp).
+    void listen(const std::optional<CollisionLog>& wanted);
+    /// What the world recorded in the step just made (none when it records nothing).
+    [[nodiscard]] std::vector<Collision> heard();
 
     World world;
     std::shared_ptr<const World> loaded;  ///< the world as loaded, shared with undo's snapshots
@@ -93,6 +178,21 @@ struct Document {
     std::optional<std::filesystem::path> lastSave;  ///< the file the last save wrote (absolute)
     std::string fileError;  ///< why the last open or save failed; empty once one succeeds
     std::vector<std::filesystem::path> recent;
+    std::size_t nextPreset = 0;  ///< the preset OpenPreset without an index opens
+    /// The dialog open (Save As, New scene, the quit question), if any.
+    Dialog dialog;
+    bool running = true;  ///< false once the user has left
+
+  private:
+    /// Opens `path` (none: the built-in scene), saying "VERB FILE: ..."; false when it could
+    /// not (the error is said).
+    bool openFile(const std::optional<std::filesystem::path>& path, Context& x,
+                  const char* verb = "Opened");
+    /// Saves to `path`, saying so; false when it failed (the error is said).
+    bool saveTo(const std::filesystem::path& path, Context& x);
+    void closeDialog();
+    /// Leaves, asking first when there are unsaved changes.
+    void quit(Context& x);
 };
 
 }  // namespace psb::app

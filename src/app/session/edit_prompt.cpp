@@ -9,16 +9,23 @@
 #include <system_error>
 
 #include <particle_sandbox/detail/float_chars.hpp>
-#include <particle_sandbox/error.hpp>
 
 namespace psb::app {
-
-namespace {
 
 std::string formatValue(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return buf;
+}
+
+namespace {
+
+/// An edit of `id` refused, saying `why`.
+CheckedEdit refused(ParticleId id, std::string why) {
+    CheckedEdit e;
+    e.id = id;
+    e.refusal = std::move(why);
+    return e;
 }
 
 std::string_view trim(std::string_view s) {
@@ -163,15 +170,15 @@ void EditPrompt::backspace() {
     fresh_ = false;
 }
 
-EditResult applyEdit(World& world, ParticleId id, const std::array<std::string, kEditFields>& texts,
-                     const Axes& axes) {
-    if (!world.contains(id)) return {false, "the particle no longer exists"};
+CheckedEdit checkEdit(const World& world, ParticleId id,
+                      const std::array<std::string, kEditFields>& texts, const Axes& axes) {
+    if (!world.contains(id)) return refused(id, "the particle no longer exists");
     std::array<double, kEditFields> v{};
     for (int k = 0; k < kEditFields; ++k) {
         std::string why;
         const auto f = static_cast<EditField>(k);
         const auto parsed = parseNumber(fieldName(f), texts[static_cast<std::size_t>(k)], why);
-        if (!parsed) return {false, why};
+        if (!parsed) return refused(id, why);
         v[static_cast<std::size_t>(k)] = *parsed;
     }
     EditedValues e = valuesOf(world.get(id));
@@ -181,39 +188,38 @@ EditResult applyEdit(World& world, ParticleId id, const std::array<std::string, 
     e.velocity = axes.vector(Vec2(v[2], v[3]));
     e.omega = axes.spin(v[4]);
     e.inertiaFactor = v[5];
-    return setChecked(world, id, e, axes);
+    return check(world, id, e, axes);
 }
 
 EditedValues valuesOf(const Particle& p) {
     return {p.mass, p.radius, p.position, p.velocity, p.angularVelocity, p.inertiaFactor};
 }
 
-EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
-                             std::string_view text, const Axes& axes) {
-    if (!world.contains(id)) return {false, "the particle no longer exists"};
+CheckedEdit checkValue(const World& world, ParticleId id, ParticleField field,
+                       std::string_view text, const Axes& axes) {
+    if (!world.contains(id)) return refused(id, "the particle no longer exists");
     std::string why;
     const auto value = parseNumber(fieldName(field), text, why);
-    if (!value) return {false, why};
+    if (!value) return refused(id, why);
     const Particle p = world.get(id);
     EditedValues e = valuesOf(p);
     const WorldDef& def = world.def();
-    const auto inside = [&](double v, double extent) -> std::optional<EditResult> {
+    const auto inside = [&](double v, double extent) -> std::optional<CheckedEdit> {
         if (def.walls && (v < p.radius || v > extent - p.radius)) {
-            return EditResult{false, std::string(fieldName(field)) + ": " + formatValue(v) +
-                                         " m is outside the box (from " + formatValue(p.radius) +
-                                         " to " + formatValue(extent - p.radius) +
-                                         " m for this radius)"};
+            return refused(id, std::string(fieldName(field)) + ": " + formatValue(v) +
+                                   " m is outside the box (from " + formatValue(p.radius) + " to " +
+                                   formatValue(extent - p.radius) + " m for this radius)");
         }
         return std::nullopt;
     };
     switch (field) {
         case ParticleField::X:
-            if (auto refused = inside(*value, def.width)) return *refused;
+            if (auto refusal = inside(*value, def.width)) return *refusal;
             e.position.x() = *value;
             break;
         case ParticleField::Y:
             // The box's range of heights is the same counted up or down.
-            if (auto refused = inside(*value, def.height)) return *refused;
+            if (auto refusal = inside(*value, def.height)) return *refusal;
             e.position.y() = axes.y(*value);
             break;
         case ParticleField::Vx:
@@ -235,10 +241,10 @@ EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
             e.inertiaFactor = *value;
             break;
     }
-    return setChecked(world, id, e, axes);
+    return check(world, id, e, axes);
 }
 
-EditResult setChecked(World& world, ParticleId id, const EditedValues& values, const Axes& axes) {
+CheckedEdit check(const World& world, ParticleId id, const EditedValues& values, const Axes& axes) {
     const WorldDef& def = world.def();
     const double mass = values.mass, radius = values.radius;
     const Vec2& wanted = values.position;
@@ -246,43 +252,44 @@ EditResult setChecked(World& world, ParticleId id, const EditedValues& values, c
     const double omega = values.omega, k = values.inertiaFactor;
 
     if (!(mass >= std::numeric_limits<double>::min())) {
-        return {false, "mass: must be > 0 kg, got " + formatValue(mass)};
+        return refused(id, "mass: must be > 0 kg, got " + formatValue(mass));
     }
-    if (!(radius > 0.0)) return {false, "radius: must be > 0 m, got " + formatValue(radius)};
+    if (!(radius > 0.0)) return refused(id, "radius: must be > 0 m, got " + formatValue(radius));
     const double maxSpeed = kMaxEditSpeedBoxes * std::max(def.width, def.height);
     if (!(velocity.norm() <= maxSpeed)) {
-        return {false, "velocity: " + formatValue(velocity.norm()) + " m/s is faster than " +
-                           formatValue(maxSpeed) + " m/s (" + formatValue(kMaxEditSpeedBoxes) +
-                           " box sizes per second)"};
+        return refused(id, "velocity: " + formatValue(velocity.norm()) + " m/s is faster than " +
+                               formatValue(maxSpeed) + " m/s (" + formatValue(kMaxEditSpeedBoxes) +
+                               " box sizes per second)");
     }
     if (!std::isfinite(0.5 * mass * velocity.squaredNorm())) {
-        return {false, "mass and velocity: the kinetic energy would overflow"};
+        return refused(id, "mass and velocity: the kinetic energy would overflow");
     }
     if (!(k >= kMinInertiaFactor && k <= 1.0)) {
-        return {false,
-                "k: the inertia factor must be from 0.001 to 1 (1/2 a disc, 2/5 a ball, 1 a "
-                "ring), got " +
-                    formatValue(k)};
+        return refused(id,
+                       "k: the inertia factor must be from 0.001 to 1 (1/2 a disc, 2/5 a ball, "
+                       "1 a ring), got " +
+                           formatValue(k));
     }
     // The rim's speed, as a speed: a disc that turns a thousand times across the box per second
     // turns many times in one step.
     if (!(std::abs(omega) * radius <= maxSpeed)) {
-        return {false, "omega: the rim would move at " + formatValue(std::abs(omega) * radius) +
-                           " m/s, faster than " + formatValue(maxSpeed) + " m/s (" +
-                           formatValue(kMaxEditSpeedBoxes) + " box sizes per second)"};
+        return refused(id, "omega: the rim would move at " + formatValue(std::abs(omega) * radius) +
+                               " m/s, faster than " + formatValue(maxSpeed) + " m/s (" +
+                               formatValue(kMaxEditSpeedBoxes) + " box sizes per second)");
     }
     if (!std::isfinite(0.5 * k * mass * radius * radius * omega * omega)) {
-        return {false, "mass and omega: the rotational energy would overflow"};
+        return refused(id, "mass and omega: the rotational energy would overflow");
     }
     if (def.walls && (2.0 * radius > def.width || 2.0 * radius > def.height)) {
-        return {false, "radius: " + formatValue(radius) + " m does not fit in the " +
-                           formatValue(def.width) + " x " + formatValue(def.height) + " m box"};
+        return refused(id, "radius: " + formatValue(radius) + " m does not fit in the " +
+                               formatValue(def.width) + " x " + formatValue(def.height) + " m box");
     }
 
     const Particle old = world.get(id);
     if (old.fixedRotation && omega != 0.0) {
-        return {false, "omega: particle " + std::to_string(particleNumber(id)) +
-                           " has fixed rotation (it never turns), so its angular velocity stays 0"};
+        return refused(id,
+                       "omega: particle " + std::to_string(particleNumber(id)) +
+                           " has fixed rotation (it never turns), so its angular velocity stays 0");
     }
     Vec2 position = wanted;
     if (def.walls) {
@@ -303,53 +310,17 @@ EditResult setChecked(World& world, ParticleId id, const EditedValues& values, c
                                   ? "position: the new place"
                                   : ("radius: " + formatValue(radius) + " m").c_str(),
                               c.x(), axes.y(c.y()));
-                return {false, buf};
+                return refused(id, buf);
             }
         }
     }
 
-    // Everything was checked above against the setters' own rules, so none of them throws
-    // half-way; the catch keeps that promise should the rules ever drift apart.
-    try {
-        world.setMass(id, mass);
-        world.setRadius(id, radius);
-        world.setPosition(id, position);
-        world.setVelocity(id, velocity);
-        // Only when changed: a world that keeps no rotation keeps none after an edit of the
-        // rest.
-        if (k != old.inertiaFactor) world.setInertiaFactor(id, k);
-        if (omega != old.angularVelocity) world.setAngularVelocity(id, omega);
-    } catch (const InvalidArgument& e) {
-        world.setMass(id, old.mass);
-        world.setRadius(id, old.radius);
-        world.setPosition(id, old.position);
-        world.setVelocity(id, old.velocity);
-        if (k != old.inertiaFactor) world.setInertiaFactor(id, old.inertiaFactor);
-        if (omega != old.angularVelocity) world.setAngularVelocity(id, old.angularVelocity);
-        return {false, e.what()};
-    }
-    char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  "Edited particle %llu: mass %s kg, radius %s m, velocity [%s, %s] m/s",
-                  static_cast<unsigned long long>(particleNumber(id)), formatValue(mass).c_str(),
-                  formatValue(radius).c_str(), formatValue(velocity.x()).c_str(),
-                  formatValue(axes.up(velocity.y())).c_str());
-    std::string message = buf;
-    if (world.rotationInUse()) {
-        std::snprintf(buf, sizeof buf, ", omega %s rad/s, k %s",
-                      formatValue(axes.spin(omega)).c_str(), formatValue(k).c_str());
-        message += buf;
-    }
-    if (position != wanted) {
-        std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
-                      position.x(), axes.y(position.y()));
-        message += buf;
-    } else if (position != old.position) {
-        // A move says where to (an edit of x or y would otherwise read as if nothing changed).
-        message += "; now at [" + formatValue(position.x()) + ", " +
-                   formatValue(axes.y(position.y())) + "] m";
-    }
-    return {true, message};
+    CheckedEdit passed;
+    passed.id = id;
+    passed.values = values;
+    passed.values.position = position;
+    passed.wanted = wanted;
+    return passed;
 }
 
 }  // namespace psb::app

@@ -7,9 +7,10 @@
 // values when it opens. Values are shown and typed in the user's axes (Axes: with y up, vy
 // upward and omega counterclockwise-positive) and set in the world's. Tab moves to the next field;
 // the first character typed into a field just entered replaces its text (as if it were selected).
-// Enter hands the six texts to applyEdit, which applies all of them or none.
+// Enter hands the six texts to checkEdit, which checks all of them: the edit it passes is what
+// the world's owner writes (particle_edit.hpp), all of it or nothing.
 //
-// What applyEdit accepts, so that an edit can never put the world in a state it would refuse
+// What the checks accept, so that an edit can never put the world in a state it would refuse
 // from a scene file:
 // - every field a finite decimal number (NaN, inf, "12kg" and empty fields are refused);
 // - mass a positive normal double (World::setMass's rule), radius > 0;
@@ -49,6 +50,8 @@ inline constexpr double kMaxEditSpeedBoxes = 1000.0;
 [[nodiscard]] const char* fieldName(ParticleField f);
 /// "kg", "m", "m/s", "rad/s", "(I = k m r^2)".
 [[nodiscard]] const char* fieldUnit(EditField f);
+/// `v` as the prompt and its messages write a value: six significant digits ("12.5", "1e-07").
+[[nodiscard]] std::string formatValue(double v);
 
 class EditPrompt {
   public:
@@ -86,21 +89,6 @@ class EditPrompt {
     std::string error_;
 };
 
-struct EditResult {
-    bool applied = false;
-    std::string message;  ///< what changed, or why nothing did
-};
-
-/// Parses, validates (see the top of this file) and applies `texts` (mass, radius, vx, vy,
-/// omega, k) to particle `id` of `world`, all or nothing. Never throws for bad text or values.
-EditResult applyEdit(World& world, ParticleId id, const std::array<std::string, kEditFields>& texts,
-                     const Axes& axes = {});
-
-/// One field of particle `id` set from `text`, validated as applyEdit validates (a position
-/// must also lie inside the walls, and may not overlap a neighbour more than before).
-EditResult editParticleValue(World& world, ParticleId id, ParticleField field,
-                             std::string_view text, const Axes& axes = {});
-
 /// What an edit sets: a particle's mass, radius, position, velocity, angular velocity and
 /// inertia factor.
 struct EditedValues {
@@ -114,10 +102,29 @@ struct EditedValues {
 /// `p`'s values, as an edit that changes nothing would set them.
 [[nodiscard]] EditedValues valuesOf(const Particle& p);
 
-/// The checks and setters both edits share: the values of `id` (its position moved inward to
-/// stay inside the walls), all or nothing.
-/// `axes`: how its messages show the values.
-EditResult setChecked(World& world, ParticleId id, const EditedValues& wanted,
-                      const Axes& axes = {});
+/// An edit of one particle, checked (see the top of this file): what to write, or why not.
+struct CheckedEdit {
+    ParticleId id;
+    /// Why the edit is refused (which field is wrong and why); empty: it passed.
+    std::string refusal;
+    /// What to write: the values asked for, the position moved inward to stay inside the walls.
+    EditedValues values;
+    Vec2 wanted = Vec2::Zero();  ///< the position asked for
+    [[nodiscard]] bool passed() const { return refusal.empty(); }
+};
+
+/// Parses and checks `texts` (mass, radius, vx, vy, omega, k, typed in `axes`) as an edit of
+/// particle `id` of `world`. Never throws for bad text or values.
+[[nodiscard]] CheckedEdit checkEdit(const World& world, ParticleId id,
+                                    const std::array<std::string, kEditFields>& texts,
+                                    const Axes& axes = {});
+/// One field of particle `id` set from `text`, checked as checkEdit checks (a position must
+/// also lie inside the walls).
+[[nodiscard]] CheckedEdit checkValue(const World& world, ParticleId id, ParticleField field,
+                                     std::string_view text, const Axes& axes = {});
+/// The checks both edits share, of particle `id` of `world` given `wanted`; `axes`: how its
+/// messages show the values.
+[[nodiscard]] CheckedEdit check(const World& world, ParticleId id, const EditedValues& wanted,
+                                const Axes& axes = {});
 
 }  // namespace psb::app

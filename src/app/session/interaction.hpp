@@ -91,8 +91,8 @@ inline constexpr double kMaxLaunchBoxesPerSecond = 2.0;
 /// The line the original printed when a held particle was deleted, with units.
 [[nodiscard]] std::string deletionLogLine(const Particle& p);
 
-/// What a release means. The hand only reads the world: the session applies the result (it is
-/// the one writer of the world, so that every change is filed for undo and the timeline).
+/// What a release means. The hand only reads the world: the tools' handler has the document, the
+/// world's owner, apply the result, and reports it for undo (tools_hand.cpp).
 struct ReleaseResult {
     enum class Kind {
         None,      ///< nothing was held or being launched

@@ -1,145 +1,63 @@
 #pragma once
-// The sandbox without a window. It knows no SDL and is tested without one. Its parts, one
-// concept each:
-//   - the document (document.hpp): the world, the scene as loaded, its SceneMeta, the files;
-//   - the view: the camera and what is shown (view_options.hpp);
+// The sandbox without a window. It knows no SDL and is tested without one. The session is a
+// set of parts, one concept each, and the dispatch between them:
+//   - the document (document.hpp): the world and its laws, the scene as loaded, its SceneMeta,
+//     the files, the dialogs about them and leaving;
+//   - the view (scene_view.hpp): the camera, the box fitted into the window, what is shown;
 //   - the tools (tools.hpp): the hand, the obstacle tools, the selection and its edit prompt,
 //     what new particles are made of;
 //   - the clock (sim_clock.hpp): pause, time speed, real time owed;
 //   - the history (history.hpp): undo and the recorded frames;
-//   - the monitor (monitor.hpp): the accuracy indicators and the plots' time series.
+//   - the monitor (monitor.hpp): the accuracy indicators and the plots' time series;
+//   - the instruments (instruments.hpp): the recording, the collision card, the stopwatch, the
+//     ruler;
+//   - data out (data_out.hpp): exports, the clipboard, screenshots and video.
 //
 // Everything that changes it is a Command handed to apply(), the one place where a user's
 // intent becomes a change, so keys, the mouse, tests and on-screen controls share it. apply()
-// treats a command as its type's traits say (command.hpp) and hands it to the one handle()
-// for its type, in the file of its concept (session_hand.cpp, session_values.cpp, ...). Every
-// change a handler makes to the world goes through the session (the tools return what the user
-// meant; the handler applies it and files it for undo and the timeline). update() is the only
-// other mutator: it advances the world by real time.
+// treats a command as its type's traits say (command.hpp) and hands it to the part that owns
+// what it changes: the one part with a handle() for its type, given a Context of the other
+// parts it reaches. A command is behaviour where its state lives; the session itself handles
+// only Undo and Redo. update() is the only other mutator: it advances the world by real time.
 //
 // Undo (undo_history.hpp). apply() keeps the state before each command that may edit (a
-// PointerDown's lasts until its release); a handler that made an edit calls
-// userAction("label"), which files that state in the history under the label. Undo and Redo
-// restore a state whole (world, scene as loaded, name, selection, new-particle settings, time
-// speed, unsaved flag); the clock goes back with the world.
+// press's lasts until its gesture ends: command.hpp, Gesture); a handler that made a change
+// reports it with its label (edit_report.hpp), and apply() files that state in the history
+// under the label. Undo and Redo restore a state whole (world, scene as loaded, name,
+// selection, new-particle settings, time speed, unsaved flag); the clock goes back with the
+// world, and every part starts over from it (start_over.hpp).
 //
-// Step back (timeline.hpp). Every step and every move of the held particle goes through the
-// timeline, which update() ends with record(); other edits are reported with edited(). While
-// paused, StepBack / StepForward / Seek show a recorded frame: the world is then a rebuilt copy
-// of that frame, and nothing is recorded. Resuming, or any edit, from there carries on from
-// that frame and forgets the frames after it (the edit is undoable; the forgotten frames are
-// not restored by undo).
-//
-// What the session has to say (a mode refused, a file saved) comes out as Notices, which the app
-// shows for a few seconds and logs; the session itself keeps no clock of its own.
+// What the session has to say (a mode refused, a file saved) comes out as notices
+// (notices.hpp), which the app shows for a few seconds and logs.
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <memory>
 #include <optional>
-#include <random>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include <particle_sandbox/csv.hpp>
-#include <particle_sandbox/time_series.hpp>
-#include <particle_sandbox/world.hpp>
-
-#include "session/accuracy.hpp"
-#include "session/box_area.hpp"
-#include "session/camera.hpp"
 #include "session/command.hpp"
-#include "session/data_recorder.hpp"
-#include "session/dialog.hpp"
+#include "session/data_out.hpp"
 #include "session/document.hpp"
+#include "session/edit_report.hpp"
 #include "session/history.hpp"
-#include "session/lab_ruler.hpp"
-#include "session/lab_stopwatch.hpp"
-#include "session/last_collision.hpp"
+#include "session/instruments.hpp"
 #include "session/monitor.hpp"
+#include "session/notices.hpp"
 #include "session/scene_io.hpp"
+#include "session/scene_view.hpp"
+#include "session/session_options.hpp"
 #include "session/sim_clock.hpp"
 #include "session/tools.hpp"
-#include "session/video_settings.hpp"
-#include "session/view_options.hpp"
 
 namespace psb::app {
 
-/// Something the session says: shown on screen (`show`) and/or written to the log (`log`).
-struct Notice {
-    enum class Level { Info, Warning, Error };
-    Level level = Level::Info;
-    std::string text;
-    bool show = true;
-    bool log = true;
-    /// Non-empty: a newer notice of the same topic replaces this one on screen while it is the
-    /// last shown (a slider being dragged says each value without filling the message box).
-    std::string topic = {};
-};
-
-/// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
-[[nodiscard]] const char* logPrefix(Notice::Level level);
-
-struct SessionOptions {
-    /// The file the first world came from (none: built in), for Save and Revert.
-    std::optional<std::filesystem::path> sceneFile;
-    /// What Save As proposes (--save-to), when given; else a name from the scene's, in
-    /// `saveFolder`.
-    std::optional<std::filesystem::path> saveTo;
-    std::filesystem::path saveFolder = ".";
-    std::filesystem::path exportDir = ".";       ///< where ExportTable writes a relative name
-    std::vector<std::filesystem::path> presets;  ///< what OpenPreset opens (read-only)
-    std::uint32_t seed = 1;                      ///< random spawns
-    bool paused = false;
-    bool arrows = true;
-    /// The app runs in a web page: Esc with nothing open does not quit (a page has nothing
-    /// to quit to; a window's Esc quits, asking first when there are unsaved changes); files
-    /// written (scenes, tables) are handed to the browser as downloads, so messages and dialogs
-    /// name the file and the browser's downloads, not the page's folder; the help lists the
-    /// page's keys.
-    bool inPage = false;
-    /// The control panel open at the start (folded, a window too narrow for it and the box).
-    bool controls = true;
-    int viewportWidth = 800;  ///< pixels
-    int viewportHeight = 800;
-    /// Where the box may go in that window, as the view lays it out (a Resize brings the
-    /// layout of each new size).
-    WindowLayout layout;
-    TimelineSettings timeline;
-    UndoSettings undo;
-};
-
-/// The recorded past, for a time scrubber: simulated seconds.
-struct TimelineView {
-    double earliest = 0.0;  ///< the oldest recorded frame
-    double latest = 0.0;    ///< the newest (the present)
-    double current = 0.0;   ///< the frame shown
-    bool viewingPast = false;
-    /// latest - current: how far back the frame shown is.
-    [[nodiscard]] double secondsBack() const { return latest - current; }
-    /// Whether there is a past to go back to.
-    [[nodiscard]] bool recorded() const { return latest > earliest; }
-    /// The Replay slider's ends, seconds: the recorded span; with nothing recorded (a new
-    /// scene, just after an undo) the second before the frame shown, so that the present is at
-    /// the right end whatever was recorded, and the handle agrees with the time it is labelled.
-    [[nodiscard]] std::pair<double, double> sliderRange() const {
-        return recorded() ? std::pair{earliest, latest} : std::pair{current - 1.0, current};
-    }
-};
+struct StartOver;
 
 /// Real time the world may spend catching up in one update, ms: more, and every frame would
 /// fall further behind.
 inline constexpr double kStepBudgetMs = 30.0;
-
-// The control panel's ranges.
-inline constexpr double kMaxPanelGravity = 1000.0;  ///< m/s²
-inline constexpr int kMaxPanelSubsteps = 64;
-inline constexpr double kMinLaunchMass = 1e-3;  ///< kg
-inline constexpr double kMaxLaunchMass = 1e6;   ///< kg
-/// A new or resized box's sides, metres.
-inline constexpr double kMinBoxSide = 0.01;
-inline constexpr double kMaxBoxSide = 1e6;
 
 class Session {
   public:
@@ -156,40 +74,52 @@ class Session {
     /// While paused only a requested single step runs.
     void update(double realSeconds, double now, double budgetMs = kStepBudgetMs);
 
+    // What the app takes once: notices, and what the commands asked of it.
     /// What the session said since the last call.
     [[nodiscard]] std::vector<Notice> takeNotices();
     /// True once after a Screenshot command: the app writes the next frame.
-    [[nodiscard]] bool takeScreenshotRequest();
+    [[nodiscard]] bool takeScreenshotRequest() { return dataOut_.takeScreenshotRequest(); }
     /// The text a CopyTable command put on the clipboard, once: the app hands it to the system.
-    [[nodiscard]] std::optional<std::string> takeClipboardText();
+    [[nodiscard]] std::optional<std::string> takeClipboardText() {
+        return dataOut_.takeClipboardText();
+    }
     /// The settings of a ToggleVideo command, once: the app starts a recording with them, or
     /// stops the one running.
-    [[nodiscard]] std::optional<VideoSettings> takeVideoToggle();
-    /// The video settings last asked for (Ctrl+R records with them).
-    [[nodiscard]] const VideoSettings& videoSettings() const { return videoSettings_; }
-
-    // Data out (data_recorder.hpp, session_data.cpp).
-    /// The run's series, the recorded trajectories and collisions.
-    [[nodiscard]] const DataRecorder& data() const { return data_; }
-    /// The stopwatch on simulated time (lab_stopwatch.hpp).
-    [[nodiscard]] const LabStopwatch& stopwatch() const { return stopwatch_; }
-    /// The ruler (lab_ruler.hpp), drawn while view().ruler.
-    [[nodiscard]] const LabRuler& ruler() const { return ruler_; }
-    [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
-        return lastCollision_.card();
+    [[nodiscard]] std::optional<VideoSettings> takeVideoToggle() {
+        return dataOut_.takeVideoToggle();
     }
+    /// The video settings last asked for (Ctrl+R records with them).
+    [[nodiscard]] const VideoSettings& videoSettings() const { return dataOut_.videoSettings(); }
+
+    // What the parts hold, read-only, for the view, the control panel and the tests.
+
+    // The instruments (instruments.hpp).
+    /// The run's series, the recorded trajectories and collisions.
+    [[nodiscard]] const DataRecorder& data() const { return instruments_.data; }
+    /// The stopwatch on simulated time (lab_stopwatch.hpp).
+    [[nodiscard]] const LabStopwatch& stopwatch() const { return instruments_.stopwatch; }
+    /// The ruler (lab_ruler.hpp), drawn while view().ruler.
+    [[nodiscard]] const LabRuler& ruler() const { return instruments_.ruler; }
+    [[nodiscard]] const std::optional<CollisionCard>& lastCollision() const {
+        return instruments_.lastCollision.card();
+    }
+
+    // Data out (data_out.hpp).
     /// `table` as text with `separator` (what ExportTable writes and CopyTable copies).
-    [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const;
+    [[nodiscard]] std::string tableText(cmd::DataTable table, csv::Separator separator) const {
+        return psb::app::tableText(table, separator, doc_.world, instruments_.data, axes(),
+                                   rateWindow());
+    }
     /// The folder ExportTable writes a relative name into (absolute).
-    [[nodiscard]] std::filesystem::path exportDir() const;
+    [[nodiscard]] std::filesystem::path exportDir() const { return dataOut_.exportDir(); }
     /// The app runs in a web page (SessionOptions::inPage).
     [[nodiscard]] bool inPage() const { return options_.inPage; }
     /// The file the last ExportTable wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastExport() const {
-        return lastExport_;
+        return dataOut_.lastExport();
     }
     /// Why the last export failed; empty once one succeeds.
-    [[nodiscard]] const std::string& exportError() const { return exportError_; }
+    [[nodiscard]] const std::string& exportError() const { return dataOut_.exportError(); }
 
     // The document (document.hpp).
     [[nodiscard]] const World& world() const { return doc_.world; }
@@ -197,7 +127,7 @@ class Session {
     /// The scene's name, description and bins.
     [[nodiscard]] const SceneMeta& meta() const { return doc_.meta; }
     /// The bins panel is drawn: the scene has bins and the view shows them.
-    [[nodiscard]] bool binsShown() const { return doc_.meta.bins.has_value() && view_.bins; }
+    [[nodiscard]] bool binsShown() const { return view_.binsShown(doc_.meta); }
     /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
     /// (trails) start over.
     [[nodiscard]] std::uint64_t sceneGeneration() const { return doc_.generation; }
@@ -214,9 +144,9 @@ class Session {
     /// Restart's target: the world when Play was last pressed after an edit.
     [[nodiscard]] const World& setupWorld() const { return *doc_.setup; }
     /// What Save As proposes: --save-to, else a free name after the scene's in the save folder.
-    [[nodiscard]] std::filesystem::path saveProposal() const;
+    [[nodiscard]] std::filesystem::path saveProposal() const { return doc_.saveProposal(options_); }
     /// What the New scene dialog starts from: the box of the scene shown.
-    [[nodiscard]] NewSceneSpec newSceneDefaults() const;
+    [[nodiscard]] NewSceneSpec newSceneDefaults() const { return doc_.newSceneDefaults(); }
     /// The file the last Save wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastSave() const {
         return doc_.lastSave;
@@ -224,26 +154,26 @@ class Session {
     /// Why the last open or save failed ("Save failed: ..."); empty once one succeeds.
     [[nodiscard]] const std::string& fileError() const { return doc_.fileError; }
 
-    // The view.
-    [[nodiscard]] const Camera& camera() const { return camera_; }
-    [[nodiscard]] const ViewOptions& view() const { return view_; }
+    // The view (scene_view.hpp).
+    [[nodiscard]] const Camera& camera() const { return view_.camera(); }
+    [[nodiscard]] const ViewOptions& view() const { return view_.options(); }
     /// The axes numbers are shown and typed in (the y up option, the box's height).
     [[nodiscard]] Axes axes() const { return view_.axes(world().def()); }
-    [[nodiscard]] bool helpShown() const { return showHelp_; }
+    [[nodiscard]] bool helpShown() const { return view_.helpShown(); }
     /// The page of the help shown (H turns the page, and closes it after the last).
-    [[nodiscard]] std::size_t helpPage() const { return helpPage_; }
-    [[nodiscard]] bool profileShown() const { return view_.profile; }
+    [[nodiscard]] std::size_t helpPage() const { return view_.helpPage(); }
+    [[nodiscard]] bool profileShown() const { return view_.options().profile; }
     /// The control panel is open (else folded to a strip).
-    [[nodiscard]] bool controlsShown() const { return showControls_; }
+    [[nodiscard]] bool controlsShown() const { return view_.controlsShown(); }
     /// Where the box may go in the window, as the app sent it last.
-    [[nodiscard]] const WindowLayout& layout() const { return layout_; }
+    [[nodiscard]] const WindowLayout& layout() const { return view_.layout(); }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
-    [[nodiscard]] bool columnAsked() const;
+    [[nodiscard]] bool columnAsked() const { return view_.columnAsked(doc_.meta); }
     /// Where the values table docks (I): where it left the box largest when the box was last
     /// fitted (BoxArea).
-    [[nodiscard]] const ValuesDock& valuesDock() const { return valuesDock_; }
+    [[nodiscard]] const ValuesDock& valuesDock() const { return view_.valuesDock(); }
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
-    [[nodiscard]] std::string overlayFlags() const;
+    [[nodiscard]] std::string overlayFlags() const { return view_.overlayFlags(); }
 
     // The tools (tools.hpp).
     /// What the left mouse button does.
@@ -257,7 +187,9 @@ class Session {
     }
     /// The obstacle the Peg or Wall tool would make now (a wall being dragged, a peg under the
     /// pointer), for a preview.
-    [[nodiscard]] std::optional<Obstacle> obstaclePreview() const;
+    [[nodiscard]] std::optional<Obstacle> obstaclePreview() const {
+        return tools_.obstaclePreview(view_.camera(), doc_.world.def());
+    }
     [[nodiscard]] const Interaction& interaction() const { return tools_.hand; }
     [[nodiscard]] const Selection& selection() const { return tools_.selection; }
     [[nodiscard]] const EditPrompt& prompt() const { return tools_.prompt; }
@@ -266,13 +198,17 @@ class Session {
     /// selection changed).
     [[nodiscard]] const std::string& editRefusal() const { return tools_.editRefusal; }
     /// The selected particle, while it exists.
-    [[nodiscard]] std::optional<Particle> selected() const;
+    [[nodiscard]] std::optional<Particle> selected() const { return tools_.selected(doc_.world); }
     /// The particle whose trail TrailMode::Selected shows: the selected one, else the one held.
-    [[nodiscard]] ParticleId trailParticle() const;
+    [[nodiscard]] ParticleId trailParticle() const { return tools_.trailParticle(doc_.world); }
     /// How the hand turns drags into velocities at the current zoom and scene.
-    [[nodiscard]] LaunchSettings launchSettings() const;
+    [[nodiscard]] LaunchSettings launchSettings() const {
+        return Tools::launchSettings(view_.camera(), doc_.world.def());
+    }
     /// A launch in progress: the velocity releasing now would give.
-    [[nodiscard]] CappedVelocity launchPreview() const;
+    [[nodiscard]] CappedVelocity launchPreview() const {
+        return tools_.launchPreview(view_.camera(), doc_.world.def(), view_.options().arrowSeconds);
+    }
 
     // The monitor (monitor.hpp).
     [[nodiscard]] const AccuracyMonitor& accuracy() const { return monitor_.accuracy(); }
@@ -313,201 +249,57 @@ class Session {
     [[nodiscard]] std::string redoLabel() const { return history_.undo.redoLabel(); }
     [[nodiscard]] const UndoHistory& undoHistory() const { return history_.undo; }
     /// The recorded past and the frame shown.
-    [[nodiscard]] TimelineView timeline() const;
+    [[nodiscard]] TimelineView timeline() const { return history_.view(doc_.world); }
     [[nodiscard]] const Timeline& timelineRecord() const { return history_.timeline; }
 
     // Dialogs and leaving.
     /// The dialog open (Save As, New scene, the quit question), if any.
-    [[nodiscard]] const Dialog& dialog() const { return dialog_; }
-    [[nodiscard]] bool running() const { return running_; }
+    [[nodiscard]] const Dialog& dialog() const { return doc_.dialog; }
+    [[nodiscard]] bool running() const { return doc_.running; }
 
     /// Replaces the world (a scene opened elsewhere, the benchmark); it becomes the scene as
     /// loaded, from `file`.
     void setWorld(World world, SceneMeta meta, SceneFile file = {});
 
   private:
-    // One handler per command, in the file of its concept; apply() dispatches by type.
-    // The hand (session_hand.cpp).
-    void handle(const cmd::PointerDown& c);
-    void handle(const cmd::PointerMove& c);
-    void handle(const cmd::PointerUp& c);
-    void handle(const cmd::DeleteHeld& c);
-    void handle(const cmd::DeleteParticle& c);
-    void handle(const cmd::SetTool& c);
-    void handle(const cmd::SpawnRandom& c);
-    void handle(const cmd::ChangeSpawnMass& c);
-    void handle(const cmd::SetLaunchBody& c);
-    // The obstacle tools (session_obstacles.cpp).
-    void handle(const cmd::SetObstacleSizes& c);
-    void handle(const cmd::RemoveObstacle& c);
-    // The selection and its edit prompt (session_edit.cpp).
-    void handle(const cmd::Select& c);
-    void handle(const cmd::OpenEdit& c);
-    void handle(const cmd::EditType& c);
-    void handle(const cmd::EditField& c);
-    void handle(const cmd::EditBackspace& c);
-    void handle(const cmd::EditApply& c);
-    void handle(const cmd::EditParticle& c);
-    // The world's laws and the stepping mode (session_values.cpp).
-    void handle(const cmd::SetRestitution& c);
-    void handle(const cmd::SetFriction& c);
-    void handle(const cmd::SetTangentialRestitution& c);
-    void handle(const cmd::SetDiscsTurn& c);
-    void handle(const cmd::SetGravity& c);
-    void handle(const cmd::SetWalls& c);
-    void handle(const cmd::SetMode& c);
-    // The clock and the recorded past (session_time.cpp).
-    void handle(const cmd::TogglePause& c);
-    void handle(const cmd::SingleStep& c);
-    void handle(const cmd::SetTimeScale& c);
-    void handle(const cmd::StepBack& c);
-    void handle(const cmd::StepForward& c);
-    void handle(const cmd::Seek& c);
-    void handle(const cmd::SeekBy& c);
+    /// Hands `c` to the part that owns what it changes (its handle() for the command's type),
+    /// with what that part reaches beyond itself.
+    template <class C>
+    void route(const C& c);
+    /// Undo and redo are the session's own: they put back every part's state.
     void handle(const cmd::Undo& c);
     void handle(const cmd::Redo& c);
-    // The document and leaving (session_files.cpp).
-    void handle(const cmd::OpenPreset& c);
-    void handle(const cmd::OpenFile& c);
-    void handle(const cmd::AskNewScene& c);
-    void handle(const cmd::NewScene& c);
-    void handle(const cmd::Restart& c);
-    void handle(const cmd::Revert& c);
-    void handle(const cmd::SetSceneText& c);
-    void handle(const cmd::Save& c);
-    void handle(const cmd::AskSaveAs& c);
-    void handle(const cmd::SaveAs& c);
-    void handle(const cmd::AnswerQuit& c);
-    void handle(const cmd::CloseDialog& c);
-    void handle(const cmd::Back& c);
-    void handle(const cmd::Quit& c);
-    // The view (session_view.cpp).
-    void handle(const cmd::Pan& c);
-    void handle(const cmd::Zoom& c);
-    void handle(const cmd::Fit& c);
-    void handle(const cmd::Resize& c);
-    void handle(const cmd::ToggleHelp& c);
-    void handle(const cmd::SetShow& c);
-    void handle(const cmd::SetTrails& c);
-    void handle(const cmd::Stopwatch& c);
-    void handle(const cmd::ScaleSpeeds& c);
-    void handle(const cmd::ResizeBox& c);
-    void handle(const cmd::SetArrowScale& c);
-    void handle(const cmd::SetUiScale& c);
-    void handle(const cmd::SetTheme& c);
-    void handle(const cmd::ToggleControls& c);
-    void handle(const cmd::Screenshot& c);
-    // Data out (session_data.cpp).
-    void handle(const cmd::ExportTable& c);
-    void handle(const cmd::CopyTable& c);
-    void handle(const cmd::SetRecording& c);
-    void handle(const cmd::ToggleVideo& c);
-    void handle(const cmd::SetVideoSettings& c);
-
-    // The hand's gestures (session_hand.cpp).
-    void click(const ReleaseResult& r);
-    /// The held particle to the hand, through the timeline's setters.
-    void holdParticle(double now);
-    /// The selected particle is gone: forget it (and close its edit prompt), saying so.
-    void checkSelection();
-    /// Has the world record the collisions the instruments want now (collision_feed.hpp).
-    void listenForCollisions();
-    // The obstacle tools (session_obstacles.cpp).
-    [[nodiscard]] bool obstacleToolOn() const;
-    void obstaclePress();
-    void obstacleRelease();
-    /// The Select tool's press: on an obstacle (no particle there), starts moving it.
-    void obstaclePressToMove();
-    /// The Select tool's release: true when it moved an obstacle or refused the move, false for
-    /// a click (which then selects).
-    bool obstacleMoveRelease();
-    /// A click on empty space: selects the obstacle under the pointer; true if there was one.
-    bool selectObstacleAt();
-    void removeObstacle(std::size_t index);
-    // The document (session_files.cpp).
-    /// Opens `file` (none: the built-in scene), saying "VERB FILE: ..."; false when it could
-    /// not (the error is said).
-    bool openFile(const std::optional<std::filesystem::path>& file, const char* verb = "Opened");
-    /// Saves to `path`, saying so; false when it failed (the error is said).
-    bool saveTo(const std::filesystem::path& path);
-    void closeDialog();
-    void quit();
-    /// A scene that marks particles' trails opens with the first of them selected and its trail
-    /// shown; `trails` are indices in the scene's order (the world's before any step).
-    void showSceneTrails(const std::vector<std::size_t>& trails);
-    // The view (session_view.cpp).
-    void fit();
-    /// The hand did not move but the world under it did: the held particle follows the cursor.
-    void afterCameraMove();
-    // The clock and the history (session_time.cpp, session_history.cpp).
-    /// One frame's step; returns the seconds simulated (less than the frame: behind).
-    double stepOnce(double now);
-    /// To the frame at or before `seconds`, or (oneFrameBack) the frame before the one shown.
-    void seek(double seconds, bool oneFrameBack = false);
     void undoOrRedo(bool redo);
-    /// The user made the edit `what` ("delete particle", "set restitution"): it becomes an
-    /// undo entry (the state apply() kept before the command), the energy drift is measured
-    /// from here on, and there are unsaved changes. A command that continues the previous one
-    /// (a slider still being dragged) passes `continues`: it is part of that action (and of its
-    /// undo entry), not a new one.
-    void userAction(const char* what, bool continues = false);
-    /// Files the state kept before the command under `what` in the undo history (userAction
-    /// without the unsaved flag: an opened scene or a reset is what is on disk).
-    void remember(const char* what);
+    /// Files what the command's handler reported (edit_report.hpp) in the undo history: the
+    /// state apply() kept before the command, under the edit's label. A user action also ends
+    /// the viewing of a past frame, counts, measures the energy drift from here and leaves
+    /// unsaved changes.
+    void file(const EditReport& edit);
     /// The session's state with `world` (the world, or the world moved out) as its world.
     [[nodiscard]] UndoState snapshot(World world) const;
     /// Puts `state` back (undo / redo).
     void restore(UndoState state);
-    /// A scene was opened: everything starts over from it, the view fitted to its box.
-    void sceneOpened();
-    /// A world was put in place (a new scene, or an undo when `newScene` is false): the tools,
-    /// the recorded past, the clock and the monitor start over from it. A Restart
-    /// (`keepRecorded`) keeps what the Data section recorded, to export.
-    void startOver(bool newScene, bool keepRecorded = false);
-    /// Viewing a past frame and about to change the world: carry on from that frame.
-    void leavePast();
-    /// Shows recorded frame `frame` (paused); the latest frame ends the viewing.
-    void show(std::int64_t frame);
-
-    void say(std::string text, Notice::Level level = Notice::Level::Info);
-    void log(std::string text, Notice::Level level = Notice::Level::Info);
-    [[nodiscard]] Vec2 pointerWorld() const { return camera_.screenToWorld(tools_.pointer); }
+    /// The parts that start over from a world put in place.
+    [[nodiscard]] StartOver startOver();
+    /// One frame's step; returns the seconds simulated (less than the frame: behind).
+    double stepOnce(double now);
 
     SessionOptions options_;
     Document doc_;
-    std::vector<SceneInfo> presets_;
-    std::size_t nextPreset_ = 0;
-
-    Camera camera_;
-    bool fitted_ = true;  ///< the view is as Fit left it (a resize fits again)
-    /// Where the box may go: the window's layout the app sent last.
-    WindowLayout layout_;
-    ValuesDock valuesDock_;
-    ViewOptions view_;
-    bool showHelp_ = false;
-    std::size_t helpPage_ = 0;
-    bool showControls_ = true;
-
+    std::vector<SceneInfo> presets_;  ///< the presets described, for the panel
+    SceneView view_;
     Tools tools_;
     SimClock clock_;
     History history_;
     Monitor monitor_;
+    Instruments instruments_;
+    DataOut dataOut_;
+    Notices notices_;
 
+    /// What the handler of the command being applied reported, for file().
+    EditReport edit_;
     std::uint64_t userActions_ = 0;
     std::string lastAction_;
-    bool running_ = true;
-    Dialog dialog_;
-    bool screenshotRequested_ = false;
-    DataRecorder data_;
-    LastCollision lastCollision_;
-    LabStopwatch stopwatch_;
-    LabRuler ruler_;
-    std::optional<std::string> clipboard_;
-    VideoSettings videoSettings_;
-    std::optional<VideoSettings> videoToggle_;
-    std::optional<std::filesystem::path> lastExport_;
-    std::string exportError_;
-    std::vector<Notice> notices_;
 };
 
 }  // namespace psb::app

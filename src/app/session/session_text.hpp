@@ -1,6 +1,6 @@
 #pragma once
-// How the session's files word numbers in their notices, shared by session.cpp and the files
-// that hold the rest of its member functions (session_*.cpp).
+// How the session's parts word numbers in their notices (notices.hpp), shared by their
+// handlers' files.
 
 #include <cstdio>
 #include <string>

@@ -9,12 +9,34 @@
 #include <chrono>
 #include <cmath>
 
+#include "session/command.hpp"
 #include "session/stopwatch.hpp"
 
 namespace psb::app {
 
+struct Document;
+class EditReport;
+struct History;
+class Monitor;
+class Notices;
+
 class SimClock {
   public:
+    /// What the clock's commands reach beyond it: Play makes the set-up (the document), a step
+    /// while a past frame is shown shows the next (the history).
+    struct Context {
+        Document& doc;
+        History& history;
+        Monitor& monitor;
+        Notices& notices;
+        EditReport& edit;
+    };
+    /// Space: pause, or run (from the past frame shown, forgetting the frames after it).
+    void handle(const cmd::TogglePause& c, Context& x);
+    /// N: one step while paused; while a past frame is shown, the next recorded frame.
+    void handle(const cmd::SingleStep& c, Context& x);
+    void handle(const cmd::SetTimeScale& c, Context& x);
+
     static constexpr double kMinScale = 1.0 / 16.0, kMaxScale = 8.0;
     /// Real seconds the first frame after a pause counts at most: one frame at 60 Hz.
     static constexpr double kResumeSeconds = 1.0 / 60.0;

@@ -6,6 +6,7 @@
 
 #include "core/test_util.hpp"
 #include "session/edit_prompt.hpp"
+#include "session/particle_edit.hpp"
 
 namespace psb::app {
 namespace {

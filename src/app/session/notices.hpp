@@ -1,0 +1,50 @@
+#pragma once
+// What the session has to say (a mode refused, a file saved): notices, which the app shows for
+// a few seconds and logs. Every part of the session says what it did through the one Notices
+// the session keeps; the app takes them once a frame. The session keeps no clock of its own.
+
+#include <string>
+#include <vector>
+
+namespace psb::app {
+
+/// Something the session says: shown on screen (`show`) and/or written to the log (`log`).
+struct Notice {
+    enum class Level { Info, Warning, Error };
+    Level level = Level::Info;
+    std::string text;
+    bool show = true;
+    bool log = true;
+    /// Non-empty: a newer notice of the same topic replaces this one on screen while it is the
+    /// last shown (a slider being dragged says each value without filling the message box).
+    std::string topic = {};
+};
+
+/// "[I] ", "[W] ", "[E] ": the log's prefix for `level`.
+[[nodiscard]] const char* logPrefix(Notice::Level level);
+
+/// The notices said since the app last took them, oldest first.
+class Notices {
+  public:
+    /// Shown and logged.
+    void say(std::string text, Notice::Level level = Notice::Level::Info) {
+        notices_.push_back({level, std::move(text), true, true});
+    }
+    /// Logged only.
+    void log(std::string text, Notice::Level level = Notice::Level::Info) {
+        notices_.push_back({level, std::move(text), false, true});
+    }
+    /// Anything else (shown only, or under a topic).
+    void add(Notice notice) { notices_.push_back(std::move(notice)); }
+    /// What was said since the last call.
+    [[nodiscard]] std::vector<Notice> take() {
+        std::vector<Notice> out;
+        out.swap(notices_);
+        return out;
+    }
+
+  private:
+    std::vector<Notice> notices_;
+};
+
+}  // namespace psb::app
