@@ -482,6 +482,8 @@ TEST_F(AppTest, CtrlRRecordsTheBoxsSideOfTheWindowAndCtrlRAgainSavesIt) {
         return false;
     };
     EXPECT_TRUE(said("Recording video (MP4, ")) << ::testing::PrintToString(app.messages());
+    // That message is for the one at the screen: drawn after the video takes the frame.
+    EXPECT_TRUE(app.lastFrame().overlays.messagesAfterCapture);
     for (int i = 0; i < 20; ++i) {
         SDL_Delay(20);  // real time: a frame every 20 ms fills about one 60 Hz slot in each
         app.frame(0.02);
@@ -489,6 +491,7 @@ TEST_F(AppTest, CtrlRRecordsTheBoxsSideOfTheWindowAndCtrlRAgainSavesIt) {
     key(app, SDLK_r, KMOD_LCTRL);
     app.frame(0.0);
     EXPECT_FALSE(app.lastFrame().recordingMark.has_value());
+    EXPECT_FALSE(app.lastFrame().overlays.messagesAfterCapture);
     EXPECT_TRUE(said("Saved video " + dir_.string())) << ::testing::PrintToString(app.messages());
     std::vector<fs::path> videos;
     for (const auto& e : fs::directory_iterator(dir_))

@@ -170,6 +170,9 @@ class ControlPanel {
     /// The values table's cell being typed in (its particle and field) and its text.
     std::optional<std::pair<ParticleId, ParticleField>> valuesEditing_;
     std::array<char, 64> valuesText_{};
+    /// The values window's size in points when its table was last laid out (its scroll starts
+    /// over when that changes).
+    std::pair<float, float> valuesLaidOut_{0.f, 0.f};
     /// The selected particle's table: each field's text while it is typed in.
     std::array<std::array<char, 40>, 8> fieldText_{};
     std::array<bool, 8> fieldActive_{};

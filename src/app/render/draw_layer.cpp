@@ -157,6 +157,11 @@ void DrawLayer::drawBoxMarker(const BoxMarkerView& m, const Palette& colours) {
 
 namespace psb::app {
 
+void DrawLayer::drawMessagesAfterCapture(const FrameView& frame) {
+    if (!frame.overlays.messagesAfterCapture) return;
+    drawMessages(sdl_, hudFont_, frame.overlays, frame.layout, palette(frame.view.theme));
+}
+
 void DrawLayer::drawRecordingMark(const RecordingMarkView& mark) {
     // A dark plate, a red dot at its left and the label in red: read over any scene.
     // Its box holds the dot and the text (frame_view.cpp sizes it; the layout places it).

@@ -5,39 +5,64 @@
 
 namespace psb::app {
 
+namespace {
+
+/// Text panels batched: every box one draw call, every line of text one more.
+class PanelBatch {
+  public:
+    PanelBatch(const Font& font, const Palette& colours) : font_(font), colours_(colours) {}
+
+    void add(const std::vector<std::string>& ls, const PixelRect& box, Uint8 alpha = 215) {
+        if (box.w <= 0 || ls.empty()) return;
+        // Dark enough that arrows and discs under a panel do not break up its text.
+        boxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
+                    static_cast<float>(box.x + box.w), static_cast<float>(box.y + box.h),
+                    sdlColor(colours_.panel, alpha));
+        const float lh = static_cast<float>(font_.lineHeight());
+        for (std::size_t k = 0; k < ls.size(); ++k) {
+            font_.layout(ls[k], static_cast<float>(box.x + 4),
+                         static_cast<float>(box.y + 2) + lh * static_cast<float>(k),
+                         sdlColor(colours_.text), text_);
+        }
+    }
+    void draw(SDL_Renderer* renderer) {
+        boxes_.draw(renderer, nullptr);
+        font_.draw(text_);
+        boxes_.clear();
+        text_.clear();
+    }
+
+  private:
+    const Font& font_;
+    const Palette& colours_;
+    GeometryBatch boxes_, text_;
+};
+
+}  // namespace
+
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours) {
-    GeometryBatch boxes, text;
-    const float lh = static_cast<float>(font.lineHeight());
-    // Dark enough that arrows and discs under a panel do not break up its text.
-    const auto panel = [&](const std::vector<std::string>& ls, const PixelRect& box,
-                           Uint8 alpha = 215) {
-        if (box.w <= 0 || ls.empty()) return;
-        boxes.quad(static_cast<float>(box.x), static_cast<float>(box.y),
-                   static_cast<float>(box.x + box.w), static_cast<float>(box.y + box.h),
-                   sdlColor(colours.panel, alpha));
-        for (std::size_t k = 0; k < ls.size(); ++k) {
-            font.layout(ls[k], static_cast<float>(box.x + 4),
-                        static_cast<float>(box.y + 2) + lh * static_cast<float>(k),
-                        sdlColor(colours.text), text);
-        }
-    };
-    panel(o.hud, layout.hud);
-    if (o.showProfile) panel(o.profile, layout.profile, 200);
-    panel(o.messages, layout.messages);
-    panel(o.inspector, layout.inspector, 200);
-    boxes.draw(renderer, nullptr);
-    font.draw(text);
+    PanelBatch panels(font, colours);
+    panels.add(o.hud, layout.hud);
+    if (o.showProfile) panels.add(o.profile, layout.profile, 200);
+    if (!o.messagesAfterCapture) panels.add(o.messages, layout.messages);
+    panels.add(o.inspector, layout.inspector, 200);
+    panels.draw(renderer);
     if (o.showHelp) {
         // The help is asked for and read, then closed: it covers the other panels meanwhile,
         // their text included (drawn after them, opaque).
-        boxes.clear();
-        text.clear();
         const PixelPoint size = textBoxSize(font, o.help);
-        panel(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y}, 245);
-        boxes.draw(renderer, nullptr);
-        font.draw(text);
+        panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y}, 245);
+        panels.draw(renderer);
     }
+}
+
+void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
+                  const PanelLayout& layout, const Palette& colours) {
+    if (o.showHelp) return;  // the help covers them
+    PanelBatch panels(font, colours);
+    panels.add(o.messages, layout.messages);
+    panels.draw(renderer);
 }
 
 }  // namespace psb::app

@@ -12,8 +12,14 @@
 namespace psb::app {
 
 /// Draws the panels of `o` onto `renderer` in the boxes of `layout` (a box with w == 0 is not
-/// drawn). The help is drawn over everything when switched on.
+/// drawn), the messages unless `o.messagesAfterCapture`. The help is drawn over everything when
+/// switched on.
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
+                  const PanelLayout& layout, const Palette& colours = palette(Theme::Dark));
+
+/// Draws only the messages' panel (what drawOverlays leaves out while a video records), under
+/// the help when that is shown.
+void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours = palette(Theme::Dark));
 
 }  // namespace psb::app

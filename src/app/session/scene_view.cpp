@@ -4,6 +4,7 @@
 #include "session/scene_view.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "session/document.hpp"
@@ -14,6 +15,14 @@
 #include "session/tools.hpp"
 
 namespace psb::app {
+
+namespace {
+
+/// The share of its size the box gives up, at most, for the values table's band to show every
+/// particle's row (SceneView::fit).
+constexpr double kValuesRowsBoxShare = 2.0 / 3.0;
+
+}  // namespace
 
 SceneView::SceneView(const SessionOptions& options)
     : inPage_(options.inPage), layout_(options.layout), controls_(options.controls) {
@@ -35,7 +44,8 @@ void SceneView::fit(const Document& doc, Notices& notices) {
     const double w = doc.world.def().width, h = doc.world.def().height, margin = 10.0;
     // The values table docks where the box comes out largest: along the bottom with its rows,
     // with fewer rows (the rest scroll), or at the right. Among places within 2 % of the
-    // largest the first is kept: a band of rows reads best.
+    // largest the first is kept: a band of rows reads best; and one that shows every
+    // particle's row is kept at some cost (kValuesRowsBoxShare).
     std::vector<ValuesDock> docks;
     if (options_.values) {
         docks.push_back({false, a.valuesBand});
@@ -70,9 +80,26 @@ void SceneView::fit(const Document& doc, Notices& notices) {
     std::vector<double> zooms;
     for (const ValuesDock& d : docks)
         zooms.push_back(fitWith(d));
-    const double best = *std::max_element(zooms.begin(), zooms.end());
+    // A band that shows every particle's row (as many as the full band holds) is kept over a
+    // shorter one unless the box would lose more than a third of its size for it: a lesson's
+    // two balls and their total behind a scroll bar, for a box 5 % larger, read worse.
+    const auto rowsOf = [&](const ValuesDock& d) {
+        return a.valuesRow > 0.0 ? std::floor((d.size - a.valuesLeast) / a.valuesRow + 1e-6) + 1.0
+                                 : 0.0;
+    };
+    const double wanted =
+        std::min(std::max(static_cast<double>(doc.world.size()), 1.0), rowsOf(docks[0]));
+    const auto showsAll = [&](const ValuesDock& d) {
+        return !options_.values || d.right || a.valuesRow <= 0.0 || rowsOf(d) >= wanted;
+    };
+    double best = *std::max_element(zooms.begin(), zooms.end());
+    double bestShowingAll = 0.0;
+    for (std::size_t k = 0; k < docks.size(); ++k)
+        if (showsAll(docks[k])) bestShowingAll = std::max(bestShowingAll, zooms[k]);
+    const bool keepRows = bestShowingAll >= kValuesRowsBoxShare * best;
+    if (keepRows) best = bestShowingAll;
     std::size_t chosen = 0;
-    while (zooms[chosen] < 0.98 * best)
+    while (zooms[chosen] < 0.98 * best || (keepRows && !showsAll(docks[chosen])))
         ++chosen;
     valuesDock_ = options_.values ? docks[chosen] : ValuesDock{};
     fitWith(docks[chosen]);

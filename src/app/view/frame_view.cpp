@@ -250,6 +250,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (o.messages.size() > kMessageLines) {
         o.messages.erase(o.messages.begin(), o.messages.end() - kMessageLines);
     }
+    o.messagesAfterCapture = stats.video.recording;
 
     LayoutRequest req;
     req.width = session.camera().viewportWidth();

@@ -22,6 +22,9 @@ struct Overlays {
     std::vector<std::string> inspector;  ///< empty: nothing selected
     bool showHelp = false;
     bool showProfile = false;
+    /// The messages speak to the one at the screen (a file written, a recording started), not
+    /// to a video's audience: while a video records they are drawn after the frame is taken.
+    bool messagesAfterCapture = false;
 };
 
 /// Lines of messages the band below the box holds.

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <imgui.h>
@@ -20,6 +21,7 @@
 #include "render/offscreen_test.hpp"
 #include "session/scene_io.hpp"
 #include "session/session.hpp"
+#include "view/values_table.hpp"
 
 namespace psb::app {
 namespace {
@@ -289,6 +291,66 @@ TEST_F(ControlPanelTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale)
             const bool under = y0 >= box.topLeft.y() + box.size.y() - 0.5;
             const bool beside = x0 >= box.topLeft.x() + box.size.x() - 0.5;
             EXPECT_TRUE(under || beside) << at << ": over the box";
+        }
+    }
+    gui_->setScale(1.f);
+}
+
+TEST_F(ControlPanelTest, TheLessonsValuesTableShowsEveryColumnAndRowWithoutScrolling) {
+    // The momentum lesson's two balls on a projector: at 200 % the table's py, KE and mass
+    // were scrolled off to the right (each field kept room for "-0.0000e-00") and the totals
+    // row was under the scroll bar (the band chosen held one row, for a box 5 % larger).
+    Scene lesson;
+    lesson.world.width = 10.0;
+    lesson.world.height = 4.0;
+    for (const auto& [x, vx, mass] : {std::tuple{2.0, 2.0, 1.0}, {7.0, -1.0, 3.0}}) {
+        ParticleDef p;
+        p.position = {x, 2.0};
+        p.velocity = {vx, 0.0};
+        p.radius = 0.3;
+        p.mass = mass;
+        lesson.particles.push_back(p);
+    }
+    struct Case {
+        int width, height;
+        float scale;
+    };
+    for (const Case& c : {Case{1600, 1000, 2.f}, Case{1600, 1000, 1.25f}, Case{1280, 800, 1.5f},
+                          Case{1024, 768, 1.f}, Case{1024, 768, 1.25f}}) {
+        const std::string at = std::to_string(c.width) + "x" + std::to_string(c.height) + " at " +
+                               std::to_string(c.scale);
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = c.width;
+        so.viewportHeight = c.height;
+        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale));
+        so.controls = so.layout.controlsFit;
+        Session s(makeWorld(lesson), SceneMeta{"lesson"}, so);
+        s.apply(cmd::SetShow{ShowOption::Values, true});
+        gui_->setScale(c.scale);
+        ControlPanel panel;
+        for (int k = 0; k < 3; ++k) {
+            gui_->beginFrame(static_cast<float>(c.width), static_cast<float>(c.height));
+            for (const Command& command :
+                 panel.build(s, FrameStats{}, static_cast<float>(c.height) / c.scale, c.scale))
+                s.apply(command);
+            EXPECT_EQ(gui_->endFrame(), 0);
+        }
+        const PanelItem* w = panel.item("values window");
+        ASSERT_NE(w, nullptr) << at;
+        // Inside the window's padding: a cell past it makes the table scroll sideways.
+        const float right = w->x1 - ImGui::GetStyle().WindowPadding.x;
+        const ValuesTable t = valuesTable(s.world(), std::nullopt, s.axes());
+        for (const ValuesColumn& column : t.columns) {
+            for (const std::string row : {"values 2 ", "values total "}) {
+                const PanelItem* cell = panel.item(row + column.name);
+                ASSERT_NE(cell, nullptr) << at << ": " << row << column.name;
+                EXPECT_LE(cell->x1, right + 0.5f)
+                    << at << ": " << row << column.name << " " << cell->x1 << " > " << right
+                    << " is right of the table's window";
+                EXPECT_LE(cell->y1, w->y1 + 0.5f)
+                    << at << ": " << row << column.name << " is below the table's window";
+            }
         }
     }
     gui_->setScale(1.f);

@@ -48,9 +48,12 @@ class RenderTest : public OffscreenTest {
         req.hud = textBoxSize(*font_, o.hud);
         if (o.showProfile) req.profile = textBoxSize(*font_, o.profile);
         req.inspector = textBoxSize(*font_, o.inspector);
-        drawOverlays(sdl_, *font_, o, layoutPanels(req));
+        req.messages = textBoxSize(*font_, o.messages);
+        layout_ = layoutPanels(req);
+        drawOverlays(sdl_, *font_, o, layout_);
         SDL_RenderPresent(sdl_);
     }
+    PanelLayout layout_;
 
     /// Pixels in [x0,x1)×[y0,y1) whose channels are all at least `min`.
     int brightPixels(int x0, int y0, int x1, int y1, int min = 200) const {
@@ -82,6 +85,25 @@ class RenderTest : public OffscreenTest {
 
 bool isColor(SDL_Color c, Uint8 r, Uint8 g, Uint8 b, int tol = 8) {
     return std::abs(c.r - r) <= tol && std::abs(c.g - g) <= tol && std::abs(c.b - b) <= tol;
+}
+
+TEST_F(RenderTest, WhileAVideoRecordsTheMessagesAreDrawnAfterTheRestOfTheFrame) {
+    // "Recording video ..." spoke to the teacher at the screen and was in the students' video:
+    // the video takes the frame between drawOverlays and drawMessages.
+    Overlays o;
+    o.messages = {"Recording video (MP4, 60 fps) to a file"};
+    drawPanels(o);
+    const PixelRect m = layout_.messages;
+    ASSERT_GT(m.w, 0);
+    const int lit = brightPixels(m.x, m.y, m.x + m.w, m.y + m.h, 150);
+    EXPECT_GT(lit, 20) << "the messages drawn with the rest when no video records";
+    o.messagesAfterCapture = true;
+    drawPanels(o);
+    EXPECT_EQ(brightPixels(m.x, m.y, m.x + m.w, m.y + m.h, 150), 0)
+        << "left out of the frame the video takes";
+    drawMessages(sdl_, *font_, o, layout_);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(brightPixels(m.x, m.y, m.x + m.w, m.y + m.h, 150), lit) << "then drawn, the same";
 }
 
 TEST_F(RenderTest, AParticleColoursThePixelsOfItsDisc) {
