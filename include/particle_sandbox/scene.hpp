@@ -15,6 +15,7 @@
 
 #include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/particle.hpp>
+#include <particle_sandbox/scene_info.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 #include <particle_sandbox/world.hpp>
 #include <particle_sandbox/world_def.hpp>
@@ -22,28 +23,17 @@
 namespace psb {
 
 /// A scene in memory: everything a scene file says, with any `generate` block already expanded
-/// into particles.
-struct Scene {
+/// into particles. What it says of itself (name, description, dt, trails, bins) is its
+/// SceneInfo (scene_info.hpp).
+struct Scene : SceneInfo {
     int version = 1;  ///< as read; written as the lowest version that has what the scene uses
-    std::string name;
-    std::string description;
     WorldDef world;
     SolverSettings solver;
-    /// The frame length, seconds, finite and > 0: how far each World::step of this scene goes,
-    /// the `dt` the app and particle-sim pass to it (`world.step(scene.dt)`). The file keeps it
-    /// in its solver block, `"solver": {"dt": ...}`; the world keeps no copy.
-    double dt = 0.01;
     std::vector<ParticleDef> particles;
     /// Accept overlapping particles when loading. A file written by hand should not overlap, so
     /// the loader refuses overlaps by default; a snapshot of a running world may hold the small
     /// overlaps a step leaves behind, so sceneFromWorld sets this when it finds any.
     bool allowOverlaps = false;
-    /// Indices into `particles` of those whose trail the app shows from the start (a particle's
-    /// "trail": true), ascending. A property of the view: the world does not keep it.
-    std::vector<std::size_t> trails;
-    /// The board's bins and what they should hold (a Galton board's), if the scene says: a
-    /// measurement the runner reports and the app draws. The world does not keep it.
-    std::optional<Bins> bins;
     /// The ball droppers and how far each has got (version 4; see World::setDroppers).
     Droppers droppers;
 };

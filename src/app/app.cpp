@@ -46,7 +46,7 @@ void logLine(const std::string& line) {
 App::App(const AppOptions& options) : options_(options) {
     // The scene first: a bad file is reported before any window opens.
     World world;
-    SceneMeta meta;
+    SceneInfo meta;
     if (options_.benchParticles > 0) {
         const Scene scene = benchmarkScene(options_.benchParticles, 1,
                                            options_.benchOverlays.find('R') != std::string::npos,
@@ -57,7 +57,7 @@ App::App(const AppOptions& options) : options_(options) {
     } else {
         const Scene scene = psb::app::openScene(options_.scene);
         world = makeWorld(scene);
-        meta = sceneMeta(scene, options_.scene);
+        meta = sceneInfo(scene, options_.scene);
     }
     SdlContextOptions so;
     so.width = options_.width;

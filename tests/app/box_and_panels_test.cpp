@@ -41,7 +41,7 @@ TEST_F(BoxAndPanels, ThePanelsSitBesideTheBoxAtEveryWindowSizeFrom800x600) {
     // the box the fitted camera shows, with the plots, the histogram and the profile on.
     SessionOptions o = options();
     o.layout = resize(o.viewportWidth, o.viewportHeight).layout;
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(keys::show(s, ShowOption::Plots));
     s.apply(keys::show(s, ShowOption::Speeds));
     s.apply(keys::show(s, ShowOption::Profile));
@@ -84,10 +84,11 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
     const ControlsWidth panel = controlsWidth(1.0);
     o.layout = resize(o.viewportWidth, o.viewportHeight, panel).layout;
     o.presets = testPresets();
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     const auto& presets = s.presets();
-    const auto galton = std::find_if(presets.begin(), presets.end(),
-                                     [](const SceneInfo& p) { return p.name == "Galton board"; });
+    const auto galton = std::find_if(presets.begin(), presets.end(), [](const SceneListing& p) {
+        return p.name == "Galton board";
+    });
     ASSERT_NE(galton, presets.end());
     s.apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
     ASSERT_TRUE(s.binsShown());
@@ -139,7 +140,7 @@ TEST_F(BoxAndPanels, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
     o.layout = resize(600, 600, controls).layout;
     const double note = o.layout.controlsOpenColumn.top;
     EXPECT_GT(note, o.layout.controlsOpen.top) << "the note's lines";
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     const double before = s.camera().boxOnScreen(7.0, 7.0).topLeft.y();
     s.apply(keys::show(s, ShowOption::Plots));
     ASSERT_TRUE(sideColumnFolded(s, controls));

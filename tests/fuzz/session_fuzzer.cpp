@@ -374,7 +374,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     o.paused = in.ConsumeBool();
     o.viewportWidth = kWindow;
     o.viewportHeight = kWindow;
-    Session session(makeWorld(scene), sceneMeta(scene, std::nullopt), o);
+    Session session(makeWorld(scene), sceneInfo(scene, std::nullopt), o);
 
     double now = 0.0;
     for (int k = 0; k < kMaxCommands && in.remaining_bytes() > 0; ++k) {

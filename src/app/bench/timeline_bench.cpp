@@ -167,7 +167,7 @@ void BM_SessionStepBack(benchmark::State& state) {
         w.step(psb::bench::kDt);  // the random placement's overlaps are separated first
     psb::app::SessionOptions options;
     options.saveTo = "/dev/null";
-    psb::app::Session s(std::move(w), psb::app::SceneMeta{.name = "gas", .dt = psb::bench::kDt},
+    psb::app::Session s(std::move(w), psb::SceneInfo{.name = "gas", .dt = psb::bench::kDt},
                         options);
     double now = 0.0;
     const double start = s.world().time();

@@ -245,7 +245,7 @@ void ControlPanel::scene(const Session& s) {
         // but is the user's file).
         const std::optional<std::filesystem::path>& from = s.sceneFile().path;
         for (std::size_t k = 0; k < presets.size(); ++k) {
-            const SceneInfo& p = presets[k];
+            const SceneListing& p = presets[k];
             ImGui::PushID(static_cast<int>(k));
             std::error_code ec;
             const bool current =

@@ -14,14 +14,10 @@
 
 namespace psb::app {
 
-SceneMeta sceneMeta(const Scene& scene, const std::optional<std::filesystem::path>& file) {
-    SceneMeta m;
-    m.name = scene.name.empty() && file ? file->stem().string() : scene.name;
-    m.description = scene.description;
-    m.trails = scene.trails;
-    m.bins = scene.bins;
-    m.dt = scene.dt;
-    return m;
+SceneInfo sceneInfo(const Scene& scene, const std::optional<std::filesystem::path>& file) {
+    SceneInfo info = scene;
+    if (info.name.empty() && file) info.name = file->stem().string();
+    return info;
 }
 
 namespace {
@@ -45,11 +41,11 @@ SceneFile sceneFile(const std::optional<std::filesystem::path>& file,
     return f;
 }
 
-Document::Document(World w, SceneMeta m, SceneFile f) {
+Document::Document(World w, SceneInfo m, SceneFile f) {
     replace(std::move(w), std::move(m), std::move(f));
 }
 
-void Document::replace(World w, SceneMeta m, SceneFile f) {
+void Document::replace(World w, SceneInfo m, SceneFile f) {
     loaded = std::make_shared<const World>(w);
     setup = loaded;
     editedSinceSetup = false;
@@ -63,7 +59,7 @@ void Document::replace(World w, SceneMeta m, SceneFile f) {
     dirty = false;
 }
 
-void Document::open(World w, SceneMeta m, SceneFile f, StartOver& startOver, Notices& notices) {
+void Document::open(World w, SceneInfo m, SceneFile f, StartOver& startOver, Notices& notices) {
     const bool unsaved = dirty;
     const std::string was = meta.name;
     replace(std::move(w), std::move(m), std::move(f));

@@ -1,6 +1,6 @@
 #pragma once
 // The scene the session shows, as a document: the world, the scene as it was loaded, the set-up
-// Restart returns to, what the scene says beyond its world (SceneMeta), and the file it belongs
+// Restart returns to, what the scene says beyond its world (SceneInfo), and the file it belongs
 // to. The session owns one; undo keeps copies of the parts an edit can change.
 
 #include <cstddef>
@@ -34,25 +34,10 @@ struct StartOver;
 struct Tools;
 struct UndoState;
 
-/// What a scene file says that the world does not keep: read once when the scene opens, kept
-/// with the world, written back when it is saved.
-struct SceneMeta {
-    // Initialised, so that SceneMeta{"name"} names only what it gives.
-    std::string name = {};
-    std::string description = {};
-    /// Indices (in the scene's order) of the particles whose trail shows from the start.
-    std::vector<std::size_t> trails = {};
-    /// The board's bins and what they should hold (a Galton board's), if the scene has them.
-    std::optional<Bins> bins = {};
-    /// The scene's frame length (Scene::dt, the file's `solver.dt`), seconds: what the session
-    /// steps the world by, and what a save writes. The world keeps no copy. The default is the
-    /// built-in scene's (the original's frame).
-    double dt = 1.0 / 60.0;
-};
-
-/// The metadata of `scene`, opened from `file` (none: the built-in scene). Its name is the
-/// scene's own, else the file's stem.
-[[nodiscard]] SceneMeta sceneMeta(const Scene& scene,
+/// What `scene`, opened from `file` (none: the built-in scene), says of itself (the document
+/// keeps it with the world, and a save writes it back). Its name is the scene's own, else the
+/// file's stem.
+[[nodiscard]] SceneInfo sceneInfo(const Scene& scene,
                                   const std::optional<std::filesystem::path>& file);
 
 /// The file a scene belongs to, as a document program sees it.
@@ -80,7 +65,7 @@ struct Document {
     /// Files opened or saved lately, newest first (at most this many).
     static constexpr std::size_t kRecentFiles = 5;
 
-    Document(World world, SceneMeta meta, SceneFile file);
+    Document(World world, SceneInfo meta, SceneFile file);
 
     /// What the document's commands reach beyond it: where files go and which are presets
     /// (the options), every part that starts over from a world put in place, the tools (the
@@ -124,11 +109,11 @@ struct Document {
 
     /// A new scene from `file`: `world` becomes the world, the scene as loaded and the set-up;
     /// nothing is unsaved.
-    void replace(World world, SceneMeta meta, SceneFile file);
+    void replace(World world, SceneInfo meta, SceneFile file);
     /// replace(), and every part starts over from the new scene (`startOver`). Replacing unsaved
     /// changes is undoable, as every change is; it is said, so that a scene opened by a stray
     /// key (a digit opens a preset) is not taken for lost.
-    void open(World world, SceneMeta meta, SceneFile file, StartOver& startOver, Notices& notices);
+    void open(World world, SceneInfo meta, SceneFile file, StartOver& startOver, Notices& notices);
     /// A scene that marks particles' trails opens with the first of them selected and its trail
     /// shown (the marks are indices in the scene's order: the world's before any step).
     void showTrails(Tools& tools, SceneView& view) const;
@@ -166,7 +151,7 @@ struct Document {
     /// Restart's target: the world when Play was last pressed after an edit (else as loaded).
     std::shared_ptr<const World> setup;
     bool editedSinceSetup = false;
-    SceneMeta meta;
+    SceneInfo meta;
     SceneFile file;
     /// The title and description as loaded, and whether a save came since (asOnDisk()).
     std::string loadedName, loadedDescription;

@@ -61,7 +61,7 @@ bool Document::openFile(const std::optional<std::filesystem::path>& path, Contex
                         const char* verb) {
     try {
         const Scene scene = psb::app::openScene(path);
-        open(makeWorld(scene), sceneMeta(scene, path), psb::app::sceneFile(path, x.options.presets),
+        open(makeWorld(scene), sceneInfo(scene, path), psb::app::sceneFile(path, x.options.presets),
              x.startOver, x.notices);
         x.edit.remember("open scene");
         // A new scene starts at its own pace: a time speed asked for the last one would make
@@ -136,7 +136,7 @@ void Document::handle(const cmd::NewScene& c, Context& x) {
     box.restitution = world.def().restitution;
     box.friction = world.def().friction;
     World empty(box, world.solver());
-    SceneMeta newMeta{"New scene"};
+    SceneInfo newMeta{"New scene"};
     newMeta.dt = meta.dt;
     closeDialog();
     open(std::move(empty), std::move(newMeta), SceneFile{}, x.startOver, x.notices);

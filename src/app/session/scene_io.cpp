@@ -12,8 +12,8 @@ Scene openScene(const std::optional<std::filesystem::path>& file) {
     return file ? loadScene(*file) : defaultScene();
 }
 
-SceneInfo describeScene(const std::filesystem::path& file) {
-    SceneInfo info;
+SceneListing describeScene(const std::filesystem::path& file) {
+    SceneListing info;
     info.file = file;
     info.name = file.stem().string();
     try {
@@ -98,9 +98,11 @@ std::filesystem::path freeSavePath(const std::filesystem::path& path) {
     }
 }
 
-std::string saveWorld(const World& world, const SceneMeta& meta,
+std::string saveWorld(const World& world, const SceneInfo& meta,
                       const std::filesystem::path& path) {
     Scene scene = sceneFromWorld(world, meta.dt, meta.name, meta.description);
+    // The trails' indices were the scene's order when it opened; edits since may have changed
+    // it, so a save does not claim them.
     scene.bins = meta.bins;
     saveScene(scene, path);
     std::error_code ec;

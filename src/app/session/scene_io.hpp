@@ -19,14 +19,14 @@ namespace psb::app {
 [[nodiscard]] Scene openScene(const std::optional<std::filesystem::path>& file);
 
 /// A scene file's name and description, for a list to choose from.
-struct SceneInfo {
+struct SceneListing {
     std::filesystem::path file;
     std::string name;         ///< the scene's own name, or the file's stem
     std::string summary;      ///< the description up to its first ':' or '.', one line
     std::string description;  ///< the whole description
 };
 /// The name and description of `file`; a file that cannot be read says so in its summary.
-[[nodiscard]] SceneInfo describeScene(const std::filesystem::path& file);
+[[nodiscard]] SceneListing describeScene(const std::filesystem::path& file);
 
 /// Where a save aimed at `path` goes without losing an earlier one: `path` itself when no file
 /// is there, else the first free of stem-2.ext, stem-3.ext, ... beside it; made absolute, so the
@@ -50,6 +50,6 @@ struct SceneInfo {
 /// Saves `world` as a scene with `meta` (its name, description, trails, bins and dt) to `path`,
 /// atomically (psb::saveScene): the old file survives any failure. Returns a line for the user
 /// naming the absolute path; throws SaveError saying why it failed.
-std::string saveWorld(const World& world, const SceneMeta& meta, const std::filesystem::path& path);
+std::string saveWorld(const World& world, const SceneInfo& meta, const std::filesystem::path& path);
 
 }  // namespace psb::app

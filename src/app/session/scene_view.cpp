@@ -30,11 +30,11 @@ SceneView::SceneView(const SessionOptions& options)
     options_.arrows = options.arrows;
 }
 
-bool SceneView::binsShown(const SceneMeta& meta) const {
+bool SceneView::binsShown(const SceneInfo& meta) const {
     return meta.bins.has_value() && options_.bins;
 }
 
-bool SceneView::columnAsked(const SceneMeta& meta) const {
+bool SceneView::columnAsked(const SceneInfo& meta) const {
     return options_.plots || options_.speeds || options_.profile || binsShown(meta);
 }
 

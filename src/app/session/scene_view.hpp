@@ -9,6 +9,7 @@
 #include <string>
 
 #include <particle_sandbox/axes.hpp>
+#include <particle_sandbox/scene_info.hpp>
 #include <particle_sandbox/world.hpp>
 
 #include "session/box_area.hpp"
@@ -21,7 +22,6 @@ namespace psb::app {
 struct Document;
 struct Instruments;
 class Notices;
-struct SceneMeta;
 struct SessionOptions;
 struct Tools;
 
@@ -67,9 +67,9 @@ class SceneView {
     /// The view is as Fit left it (a resize fits again).
     [[nodiscard]] bool fitted() const { return fitted_; }
     /// The bins panel is drawn: the scene (`meta`) has bins and the view shows them.
-    [[nodiscard]] bool binsShown(const SceneMeta& meta) const;
+    [[nodiscard]] bool binsShown(const SceneInfo& meta) const;
     /// Whether a panel of the side column (plots, histograms, profile) is on.
-    [[nodiscard]] bool columnAsked(const SceneMeta& meta) const;
+    [[nodiscard]] bool columnAsked(const SceneInfo& meta) const;
     /// The overlays that are on, for the HUD ("V L:all K D"); empty when none.
     [[nodiscard]] std::string overlayFlags() const;
 

@@ -12,7 +12,7 @@
 
 namespace psb::app {
 
-Session::Session(World world, SceneMeta meta, SessionOptions options)
+Session::Session(World world, SceneInfo meta, SessionOptions options)
     : options_(std::move(options)),
       doc_(std::move(world), std::move(meta),
            psb::app::sceneFile(options_.sceneFile, options_.presets)),
@@ -37,7 +37,7 @@ Session::Session(World world, SceneMeta meta, SessionOptions options)
         notices_.say("The control panel is folded in this narrow window: C or >> opens it");
 }
 
-void Session::setWorld(World world, SceneMeta meta, SceneFile file) {
+void Session::setWorld(World world, SceneInfo meta, SceneFile file) {
     StartOver parts = startOver();
     doc_.open(std::move(world), std::move(meta), std::move(file), parts, notices_);
 }

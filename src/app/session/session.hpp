@@ -1,7 +1,7 @@
 #pragma once
 // The sandbox without a window. It knows no SDL and is tested without one. The session is a
 // set of parts, one concept each, and the dispatch between them:
-//   - the document (document.hpp): the world and its laws, the scene as loaded, its SceneMeta,
+//   - the document (document.hpp): the world and its laws, the scene as loaded, its SceneInfo,
 //     the files, the dialogs about them and leaving;
 //   - the view (scene_view.hpp): the camera, the box fitted into the window, what is shown;
 //   - the tools (tools.hpp): the hand, the obstacle tools, the selection and its edit prompt,
@@ -64,7 +64,7 @@ class Session {
     static constexpr double kMinTimeScale = SimClock::kMinScale,
                             kMaxTimeScale = SimClock::kMaxScale;
 
-    Session(World world, SceneMeta meta, SessionOptions options);
+    Session(World world, SceneInfo meta, SessionOptions options);
 
     /// Applies one command: the only way anything but time changes the session.
     void apply(const Command& command);
@@ -125,14 +125,14 @@ class Session {
     [[nodiscard]] const World& world() const { return doc_.world; }
     [[nodiscard]] const World& loadedWorld() const { return *doc_.loaded; }
     /// The scene's name, description and bins.
-    [[nodiscard]] const SceneMeta& meta() const { return doc_.meta; }
+    [[nodiscard]] const SceneInfo& meta() const { return doc_.meta; }
     /// The bins panel is drawn: the scene has bins and the view shows them.
     [[nodiscard]] bool binsShown() const { return view_.binsShown(doc_.meta); }
     /// Changes whenever the world is replaced (open, preset, reset): views keyed to particles
     /// (trails) start over.
     [[nodiscard]] std::uint64_t sceneGeneration() const { return doc_.generation; }
     /// The presets with their names and descriptions, in OpenPreset's order.
-    [[nodiscard]] const std::vector<SceneInfo>& presets() const { return presets_; }
+    [[nodiscard]] const std::vector<SceneListing>& presets() const { return presets_; }
     /// Files opened or saved lately, newest first (at most Document::kRecentFiles).
     [[nodiscard]] const std::vector<std::filesystem::path>& recentFiles() const {
         return doc_.recent;
@@ -259,7 +259,7 @@ class Session {
 
     /// Replaces the world (a scene opened elsewhere, the benchmark); it becomes the scene as
     /// loaded, from `file`.
-    void setWorld(World world, SceneMeta meta, SceneFile file = {});
+    void setWorld(World world, SceneInfo meta, SceneFile file = {});
 
   private:
     /// Hands `c` to the part that owns what it changes (its handle() for the command's type),
@@ -286,7 +286,7 @@ class Session {
 
     SessionOptions options_;
     Document doc_;
-    std::vector<SceneInfo> presets_;  ///< the presets described, for the panel
+    std::vector<SceneListing> presets_;  ///< the presets described, for the panel
     SceneView view_;
     Tools tools_;
     SimClock clock_;

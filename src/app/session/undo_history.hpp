@@ -46,7 +46,7 @@ namespace psb::app {
 struct UndoState {
     World world;
     std::shared_ptr<const World> loaded;  ///< the scene as loaded (Reset's target)
-    SceneMeta meta;                       ///< its name, description, bins
+    SceneInfo meta;                       ///< its name, description, bins
     ParticleId selection = kNullParticle;
     std::optional<std::size_t> selectedObstacle;  ///< index into world.obstacles()
     SpawnSettings spawn;

@@ -44,7 +44,8 @@ class ControlPanelTest : public OffscreenTest {
         so.viewportHeight = kSize;
         so.layout = windowLayout(*font_, kSize, kSize, controlsWidth(1.0));
         so.presets = presetScenes();
-        session_.emplace(makeWorld(defaultScene()), SceneMeta{"default"}, so);
+        session_.emplace(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                         so);
         // ImGui settles its layout in the second frame (wrapped text takes the width the first
         // frame found).
         frame();
@@ -267,7 +268,8 @@ TEST_F(ControlPanelTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale)
             so.viewportHeight = height;
             so.layout = windowLayout(*font_, width, height, controlsWidth(scale));
             so.controls = so.layout.controlsFit;
-            Session s(makeWorld(defaultScene()), SceneMeta{"default"}, so);
+            Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                      so);
             s.apply(cmd::SetShow{ShowOption::Values, true});
             gui_->setScale(scale);
             ControlPanel panel;
@@ -325,7 +327,7 @@ TEST_F(ControlPanelTest, TheLessonsValuesTableShowsEveryColumnAndRowWithoutScrol
         so.viewportHeight = c.height;
         so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale));
         so.controls = so.layout.controlsFit;
-        Session s(makeWorld(lesson), SceneMeta{"lesson"}, so);
+        Session s(makeWorld(lesson), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, so);
         s.apply(cmd::SetShow{ShowOption::Values, true});
         gui_->setScale(c.scale);
         ControlPanel panel;
@@ -402,7 +404,7 @@ TEST_F(ControlPanelTest, ModesAreChosenInEveryScene) {
 
     World pegs(session_->world().def());
     pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
-    session_->setWorld(std::move(pegs), SceneMeta{.name = "pegs", .dt = Scene{}.dt});
+    session_->setWorld(std::move(pegs), SceneInfo{.name = "pegs", .dt = Scene{}.dt});
     frame();
     click("mode Exact");  // obstacles are in every mode
     EXPECT_EQ(session_->world().solver().mode, StepMode::Exact);
@@ -476,8 +478,9 @@ TEST_F(ControlPanelTest, EveryReadoutsNameEndsBeforeItsValueBegins) {
     // panel's width (as a narrower panel would be): the names' column is as wide as its widest
     // name, and the values wrap at spaces in the rest.
     const auto& presets = session_->presets();
-    const auto galton = std::find_if(presets.begin(), presets.end(),
-                                     [](const SceneInfo& p) { return p.name == "Galton board"; });
+    const auto galton = std::find_if(presets.begin(), presets.end(), [](const SceneListing& p) {
+        return p.name == "Galton board";
+    });
     ASSERT_NE(galton, presets.end());
     session_->apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
     for (const float pixels : {15.f, 19.f, 23.f}) {

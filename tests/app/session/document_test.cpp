@@ -24,11 +24,13 @@ class DocumentTest : public TempDirTest {
 };
 
 TEST_F(DocumentTest, ANewSceneIsTheSceneAsLoadedAndNothingIsUnsaved) {
-    Document d(makeWorld(defaultScene()), SceneMeta{"first"}, SceneFile{});
+    Document d(makeWorld(defaultScene()), SceneInfo{.name = "first", .dt = 1.0 / 60.0},
+               SceneFile{});
     const std::uint64_t g = d.generation;
     d.edited();
     World w;
-    d.replace(w, SceneMeta{"second", "described"}, SceneFile{dir_ / "x.json", true});
+    d.replace(w, SceneInfo{.name = "second", .description = "described", .dt = 1.0 / 60.0},
+              SceneFile{dir_ / "x.json", true});
     EXPECT_NE(d.generation, g);
     EXPECT_FALSE(d.dirty);
     EXPECT_EQ(d.world.size(), 0u);
@@ -41,7 +43,7 @@ TEST_F(DocumentTest, ANewSceneIsTheSceneAsLoadedAndNothingIsUnsaved) {
 }
 
 TEST_F(DocumentTest, PlayAfterAnEditMakesTheWorldTheSetUpAndPlayWithoutOneDoesNot) {
-    Document d(makeWorld(defaultScene()), SceneMeta{"s"}, SceneFile{});
+    Document d(makeWorld(defaultScene()), SceneInfo{.name = "s", .dt = 1.0 / 60.0}, SceneFile{});
     EXPECT_FALSE(d.play());  // nothing edited: the set-up is the scene as loaded
     EXPECT_EQ(d.setup, d.loaded);
     d.world.step(0.1);
@@ -78,15 +80,15 @@ TEST_F(DocumentTest, SceneMetaTakesTheFilesStemWhenTheSceneHasNoName) {
     s.name.clear();
     s.trails = {0};
     s.dt = 1.0 / 240.0;
-    const SceneMeta m = sceneMeta(s, std::filesystem::path("lessons/cradle.json"));
+    const SceneInfo m = sceneInfo(s, std::filesystem::path("lessons/cradle.json"));
     EXPECT_EQ(m.name, "cradle");
     EXPECT_EQ(m.trails, std::vector<std::size_t>{0});
     EXPECT_EQ(m.dt, 1.0 / 240.0);  // the scene's frame length, what the session steps by
-    EXPECT_EQ(sceneMeta(defaultScene(), std::nullopt).name, defaultScene().name);
+    EXPECT_EQ(sceneInfo(defaultScene(), std::nullopt).name, defaultScene().name);
 }
 
 TEST_F(DocumentTest, RecentFilesAreNewestFirstOnceEachAndAtMostFive) {
-    Document d(World{}, SceneMeta{"x"}, SceneFile{});
+    Document d(World{}, SceneInfo{.name = "x", .dt = 1.0 / 60.0}, SceneFile{});
     for (int k = 0; k < 7; ++k) {
         std::string name = std::to_string(k);
         name.insert(0, 1, 'f');
@@ -102,7 +104,7 @@ TEST_F(DocumentTest, RecentFilesAreNewestFirstOnceEachAndAtMostFive) {
 
 TEST_F(DocumentTest, ASaveWritesTheMetaAndClearsTheUnsavedMark) {
     Document d(makeWorld(defaultScene()),
-               SceneMeta{.name = "lesson", .description = "Two discs.", .dt = 1.0 / 240.0},
+               SceneInfo{.name = "lesson", .description = "Two discs.", .dt = 1.0 / 240.0},
                SceneFile{});
     d.dirty = true;
     d.fileError = "Save failed: earlier";

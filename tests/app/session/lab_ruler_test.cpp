@@ -75,7 +75,7 @@ TEST_F(SessionRuler, ItsEndsComeBeforeTheToolAndLeaveNothingToUndo) {
     WorldDef big = s.world().def();
     big.width = 700.0;
     big.height = 700.0;
-    s.setWorld(World(big), SceneMeta{.name = "big", .dt = Scene{}.dt});
+    s.setWorld(World(big), SceneInfo{.name = "big", .dt = Scene{}.dt});
     EXPECT_EQ(s.ruler().a(), Vec2(175.0, 350.0));
     EXPECT_EQ(s.ruler().b(), Vec2(525.0, 350.0));
 }

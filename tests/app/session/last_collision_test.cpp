@@ -29,7 +29,8 @@ class LastCollisionCard : public SessionFixture, public ::testing::WithParamInte
     LastCollisionCard() : SessionFixture("psb-last-collision", {}) {}
 
     [[nodiscard]] Session twoBallSession() const {
-        return Session(twoBalls(GetParam()), SceneMeta{"two balls"}, options());
+        return Session(twoBalls(GetParam()), SceneInfo{.name = "two balls", .dt = 1.0 / 60.0},
+                       options());
     }
 
     void run(Session& s, int frames) {
@@ -101,7 +102,7 @@ TEST_P(LastCollisionCard, ALargeScenesCardListensOnlyWhileShown) {
     for (std::size_t k = 0; k < LastCollision::kListensHiddenUpTo; ++k) {
         w.add({.position = Vec2(0.3 + 0.15 * static_cast<double>(k % 60), 9.7), .radius = 0.05});
     }
-    Session s(std::move(w), SceneMeta{"crowd"}, options());
+    Session s(std::move(w), SceneInfo{.name = "crowd", .dt = 1.0 / 60.0}, options());
     run(s, 60);
     s.apply(cmd::SetShow{cmd::ShowOption::Collision, true});
     EXPECT_FALSE(s.lastCollision()) << "hidden in a large scene: nothing recorded for it";

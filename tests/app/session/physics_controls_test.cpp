@@ -15,7 +15,7 @@ namespace {
 Session sessionOf(World world) {
     SessionOptions o;
     o.paused = true;
-    return Session(std::move(world), SceneMeta{.name = "test", .dt = Scene{}.dt}, o);
+    return Session(std::move(world), SceneInfo{.name = "test", .dt = Scene{}.dt}, o);
 }
 
 /// The text of the last notice `s` gave since the last call.

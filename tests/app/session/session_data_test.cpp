@@ -62,7 +62,8 @@ class SessionData : public SessionFixture {
         SessionOptions o = options();
         o.exportDir = dir_ / "out";
         std::filesystem::create_directories(o.exportDir);
-        return Session(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+        return Session(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                       o);
     }
 
     /// Runs `frames` frames of 1/60 s.
@@ -191,7 +192,7 @@ TEST_F(SessionData, NothingRecordedYetIsSaidNotWritten) {
 TEST_F(SessionData, RecordingTwoBallsGivesTheirPathsAndTheTextbookCollisionInEveryMode) {
     for (const StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         Session s = session();
-        s.setWorld(twoBalls(mode), SceneMeta{"two balls"});
+        s.setWorld(twoBalls(mode), SceneInfo{.name = "two balls", .dt = 1.0 / 60.0});
         s.apply(cmd::SetRecording{true, 1});
         EXPECT_TRUE(s.data().recording());
         EXPECT_TRUE(said(s.takeNotices(), "Recording all 2 particles every 1 step"));
@@ -253,7 +254,7 @@ TEST_F(SessionData, RecordingEverythingInACrowdNeedsASelection) {
     World crowd(WorldDef{});
     for (int k = 0; k < 150; ++k)
         crowd.add({.position = Vec2(10.0 + 4.0 * (k % 30), 10.0 + 4.0 * (k / 30)), .radius = 1.0});
-    s.setWorld(std::move(crowd), SceneMeta{"crowd"});
+    s.setWorld(std::move(crowd), SceneInfo{.name = "crowd", .dt = 1.0 / 60.0});
     s.apply(cmd::SetRecording{true, 1});
     EXPECT_FALSE(s.data().recording());
     EXPECT_TRUE(said(s.takeNotices(), "select a particle first"));

@@ -66,7 +66,7 @@ TEST_F(SessionDocument, WithoutSaveToSaveAsProposesTheScenesNameInTheSaveFolder)
     o.saveTo.reset();
     o.saveFolder = dir_ / "pictures";
     fs::create_directories(o.saveFolder);
-    Session s(makeWorld(defaultScene()), SceneMeta{"Newton's cradle"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "Newton's cradle", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::AskSaveAs{});
     EXPECT_EQ(s.dialog().proposal,
               fs::absolute(dir_ / "pictures" / "newton-s-cradle.json").lexically_normal());
@@ -153,7 +153,7 @@ TEST_F(SessionDocument, WhereEscDoesNotQuitItOnlyClosesWhatIsOpen) {
     // A web page: nothing to quit to.
     SessionOptions o = options();
     o.inPage = true;
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::ToggleHelp{});
     s.apply(cmd::Back{});
     EXPECT_FALSE(s.helpShown());
@@ -179,7 +179,7 @@ TEST_F(SessionDocument, InAPageSavingIsADownloadNamedByItsFileAlone) {
     o.inPage = true;
     o.saveTo.reset();
     o.saveFolder = dir_;
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::Save{});
     ASSERT_EQ(s.dialog().kind, Dialog::Kind::SaveAs);
     EXPECT_TRUE(s.dialog().download);
@@ -200,7 +200,7 @@ TEST_F(SessionDocument, InAPageSavingIsADownloadNamedByItsFileAlone) {
     SessionOptions w = options();
     w.saveTo.reset();
     w.saveFolder = dir_;
-    Session d(makeWorld(defaultScene()), SceneMeta{"default"}, w);
+    Session d(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, w);
     d.apply(cmd::AskSaveAs{});
     EXPECT_FALSE(d.dialog().download);
     EXPECT_TRUE(said(d.takeNotices(), fs::absolute(dir_).lexically_normal().string()));

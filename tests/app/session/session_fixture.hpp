@@ -103,7 +103,8 @@ class SessionFixture : public TempDirTest {
     /// The window's layout (at any size: the bands are fixed).
     [[nodiscard]] WindowLayout layout() const { return testLayout(window_.bands); }
     [[nodiscard]] Session session() const {
-        return Session(makeWorld(defaultScene()), SceneMeta{"default"}, options());
+        return Session(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                       options());
     }
 
     TestWindow window_;

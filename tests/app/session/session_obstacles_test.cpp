@@ -31,7 +31,7 @@ class SessionObstacles : public TempDirTest {
         w.add(p);
         SessionOptions o;
         o.paused = true;
-        return Session(std::move(w), SceneMeta{.name = "test", .dt = Scene{}.dt}, o);
+        return Session(std::move(w), SceneInfo{.name = "test", .dt = Scene{}.dt}, o);
     }
     /// Press at world point `from`, five moves, release at `to`.
     static void drag(Session& s, Vec2 from, Vec2 to, double t0 = 1.0) {

@@ -63,7 +63,7 @@ TEST_F(SessionTest, TheBrownianPresetOpensWithItsHeavyDiscsTrailShown) {
 
 TEST_F(SessionTest, TheBrownianPresetGivenAtStartUpShowsItsTrailToo) {
     const Scene scene = loadScene(testAsset("scenes/08-brownian-motion.json"));
-    Session s(makeWorld(scene), sceneMeta(scene, std::nullopt), options());
+    Session s(makeWorld(scene), sceneInfo(scene, std::nullopt), options());
     EXPECT_EQ(s.view().trails, TrailMode::Selected);
     ASSERT_TRUE(s.selection().id().has_value());
     EXPECT_EQ(s.world().get(*s.selection().id()).radius, 0.08);
@@ -121,7 +121,7 @@ TEST_F(SessionTest, HTurnsTheHelpsPagesAndClosesItAfterTheLast) {
     o.layout.helpPages = 2;  // as the view pages the help in a 600 × 600 window
     o.viewportWidth = 600;
     o.viewportHeight = 600;
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::ToggleHelp{});
     EXPECT_TRUE(s.helpShown());
     EXPECT_EQ(s.helpPage(), 0u);
@@ -224,7 +224,9 @@ TEST_F(SessionTest, ASaveKeepsTheScenesNameAndDescription) {
     // The first scene, given to the session by the app, too.
     SessionOptions o = options();
     o.saveTo = dir_ / "first.json";
-    Session first(makeWorld(defaultScene()), SceneMeta{"default", "A scene described."}, o);
+    Session first(
+        makeWorld(defaultScene()),
+        SceneInfo{.name = "default", .description = "A scene described.", .dt = 1.0 / 60.0}, o);
     saveNow(first);
     EXPECT_EQ(loadScene(dir_ / "first.json").description, "A scene described.");
 }
@@ -234,7 +236,7 @@ TEST_F(SessionTest, APresetOpensPausedAndANewSceneStartsAtTimeSpeedOne) {
     o.paused = false;
     o.presets = testPresets();
     ASSERT_GE(o.presets.size(), 13u);
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(keys::timeSpeed(s, 2.0));
     s.apply(keys::timeSpeed(s, 2.0));
     ASSERT_EQ(s.timeScale(), 4.0);
@@ -372,7 +374,7 @@ TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
     };
     const auto boxAt = [&](double inspector) {
         o.layout = layoutWith(inspector);
-        Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+        Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
         s.apply(cmd::Resize{800, 600, o.layout});
         return s.camera().boxOnScreen(7.0, 7.0);
     };
@@ -381,10 +383,10 @@ TEST_F(SessionTest, TheInspectorSitsBesideTheBoxWhenTheWindowCanSpareTheWidth) {
     EXPECT_LE(moved.topLeft.x() + moved.size.x(), 800.0 - 240.0 + 1e-9);
     // A window with no width to spare keeps the box as big as it was.
     o.layout = layoutWith(240.0);
-    Session square(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session square(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     square.apply(cmd::Resize{600, 900, o.layout});
     o.layout = layoutWith(0.0);
-    Session plain(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session plain(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     plain.apply(cmd::Resize{600, 900, o.layout});
     EXPECT_NEAR(square.camera().zoom(), plain.camera().zoom(), 1e-12);
 }
@@ -405,7 +407,7 @@ TEST_F(SessionTest, AResizeKeepsAFittedViewFitted) {
 
 TEST_F(SessionTest, MFindsRoomInTheGasPreset) {
     const Scene gas = loadScene(testAsset("scenes/04-gas-in-a-box.json"));
-    Session s(makeWorld(gas), SceneMeta{.name = "gas", .dt = gas.dt}, options());
+    Session s(makeWorld(gas), SceneInfo{.name = "gas", .dt = gas.dt}, options());
     const std::size_t n = s.world().size();
     for (int k = 0; k < 10; ++k)
         s.apply(cmd::SpawnRandom{});

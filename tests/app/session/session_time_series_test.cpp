@@ -68,7 +68,7 @@ TEST_F(SessionTimeSeries, TheRowsAreTheSameWhateverTheFramesAndTheTimeSpeed) {
     for (const Frames& f : {Frames{{1.0 / 60.0}, 1.0}, Frames{{1.0 / 30.0}, 1.0},
                             Frames{{0.013, 0.041, 0.007, 0.1}, 1.0}, Frames{{1.0 / 60.0}, 0.25}}) {
         Session s = session();
-        SceneMeta meta{"gas"};
+        SceneInfo meta{.name = "gas", .dt = 1.0 / 60.0};
         meta.dt = dt;
         s.setWorld(gas(), meta);
         runFor(s, 2.0, f.lengths, f.scale);
@@ -100,7 +100,8 @@ TEST_F(SessionTimeSeries, TheRowsAreTheSameWhateverTheFramesAndTheTimeSpeed) {
 
 TEST_F(SessionTimeSeries, OneCollisionReadsAsOnePerWindowNotOnePerFrame) {
     Session s = session();
-    s.setWorld(twoBalls(), SceneMeta{"two balls"});  // dt 1/60 s: a sample every step
+    s.setWorld(twoBalls(),
+               SceneInfo{.name = "two balls", .dt = 1.0 / 60.0});  // dt 1/60 s: a sample every step
     EXPECT_NEAR(s.rateWindow(), 0.5, 1e-12);
     runFor(s, 1.5, {1.0 / 60.0});
     const TimeSeries& series = s.series();
@@ -125,7 +126,7 @@ TEST_F(SessionTimeSeries, OneCollisionReadsAsOnePerWindowNotOnePerFrame) {
 
 TEST_F(SessionTimeSeries, AnUndoTakesTheSeriesBackAndItCarriesOnOnTheSameInstants) {
     Session s = session();
-    SceneMeta meta{"gas"};
+    SceneInfo meta{.name = "gas", .dt = 1.0 / 60.0};
     meta.dt = 0.002;
     s.setWorld(gas(), meta);
     runFor(s, 1.0, {1.0 / 60.0});

@@ -30,7 +30,8 @@ SessionOptions options(bool paused = true) {
 }
 
 Session session(bool paused = true) {
-    return Session(makeWorld(defaultScene()), SceneMeta{"default"}, options(paused));
+    return Session(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                   options(paused));
 }
 
 /// A press at `from`, ten moves to `to` over 0.1 s, a release there: a fling or a launch.
@@ -315,7 +316,7 @@ Session runningIn(StepMode mode) {
     solver.mode = mode;
     w.setSolver(solver);
     w.setThreads(1);
-    return Session(std::move(w), SceneMeta{"default"}, options(false));
+    return Session(std::move(w), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, options(false));
 }
 
 TEST_P(SessionStepBack, ShowsEachPastFrameBitForBitAndComesBackToThePresent) {

@@ -149,7 +149,7 @@ TEST_F(SessionValues, HeatAndCoolScaleEverySpeedUndoably) {
 
 TEST_F(SessionValues, SqueezeMovesTheParticlesWithTheBoxKeepsTheirSpeedsAndUndoes) {
     Session s = session();
-    s.setWorld(gasWorld(), SceneMeta{.name = "gas", .dt = Scene{}.dt});
+    s.setWorld(gasWorld(), SceneInfo{.name = "gas", .dt = Scene{}.dt});
     (void)s.takeNotices();
     const World before = s.world();
     const double side = std::sqrt(0.9);
@@ -188,7 +188,7 @@ TEST_F(SessionValues, SqueezeMovesTheParticlesWithTheBoxKeepsTheirSpeedsAndUndoe
     // A box with obstacles keeps its size.
     World pegs = gasWorld();
     pegs.addObstacle(Obstacle::peg(Vec2(650.0, 650.0), 5.0));
-    s.setWorld(std::move(pegs), SceneMeta{.name = "pegs", .dt = Scene{}.dt});
+    s.setWorld(std::move(pegs), SceneInfo{.name = "pegs", .dt = Scene{}.dt});
     (void)s.takeNotices();
     s.apply(cmd::ResizeBox{600.0, 600.0});
     EXPECT_TRUE(said(s.takeNotices(), "Not resized: this scene's walls, pegs and spouts"));
@@ -225,7 +225,7 @@ TEST_F(SessionValues, TheArrowScaleStaysWhereTheUserSetItUntilASceneOpens) {
     }
 
     // A new scene chooses its own scale again.
-    s.setWorld(World(s.world().def()), SceneMeta{.name = "empty", .dt = Scene{}.dt});
+    s.setWorld(World(s.world().def()), SceneInfo{.name = "empty", .dt = Scene{}.dt});
     EXPECT_FALSE(s.view().arrowScaleSet);
     EXPECT_DOUBLE_EQ(s.view().arrowSeconds, 1.0 / 3.0);
 }
@@ -248,7 +248,7 @@ TEST_F(SessionValues, TheUiScaleIsSetWithinItsRangeAndBadValuesAreRefused) {
     EXPECT_TRUE(s.view().uiScaleAutomatic);
     // A view setting, not an edit: nothing to undo, and a new scene keeps it.
     EXPECT_FALSE(s.canUndo());
-    s.setWorld(World(s.world().def()), SceneMeta{.name = "empty", .dt = Scene{}.dt});
+    s.setWorld(World(s.world().def()), SceneInfo{.name = "empty", .dt = Scene{}.dt});
     EXPECT_EQ(s.view().uiScale, 1.5);
 }
 
@@ -295,7 +295,7 @@ TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
 
     World pegs(s.world().def());
     pegs.addObstacle(Obstacle::peg(Vec2(3.5, 3.5), 0.2));
-    s.setWorld(std::move(pegs), SceneMeta{.name = "pegs", .dt = Scene{}.dt});
+    s.setWorld(std::move(pegs), SceneInfo{.name = "pegs", .dt = Scene{}.dt});
     (void)s.takeNotices();
     s.apply(cmd::SetMode{StepMode::Exact});
     EXPECT_EQ(s.world().solver().mode, StepMode::Exact);
@@ -570,10 +570,10 @@ TEST_F(SessionValues, AnotherSceneForgetsTheLastOnesOverlap) {
     pressed.add(a);
     a.position = {3.5, 3.0};
     pressed.add(a);
-    s.setWorld(std::move(pressed), SceneMeta{.name = "pressed", .dt = Scene{}.dt});
+    s.setWorld(std::move(pressed), SceneInfo{.name = "pressed", .dt = Scene{}.dt});
     s.update(0.0, 0.0);
     ASSERT_GT(s.accuracy().overlap(), 0.4);
-    s.setWorld(World(def), SceneMeta{.name = "empty", .dt = Scene{}.dt});
+    s.setWorld(World(def), SceneInfo{.name = "empty", .dt = Scene{}.dt});
     EXPECT_EQ(s.accuracy().overlap(), 0.0);
 }
 
@@ -581,7 +581,7 @@ TEST_F(SessionValues, EveryPresetIsListedWithANameAndAOneLineSummary) {
     Session s = session();
     ASSERT_EQ(s.presets().size(), testPresets().size());
     ASSERT_GE(s.presets().size(), 13u);
-    for (const SceneInfo& p : s.presets()) {
+    for (const SceneListing& p : s.presets()) {
         EXPECT_FALSE(p.name.empty()) << p.file;
         EXPECT_FALSE(p.summary.empty()) << p.file;
         EXPECT_EQ(p.summary.find('\n'), std::string::npos) << p.file;

@@ -40,7 +40,7 @@ class SessionWorldChanges : public TempDirTest,
         SessionOptions o;
         o.saveTo = dir_ / "save.json";
         o.paused = false;
-        return Session(makeWorld(scene), SceneMeta{.name = "ramp", .dt = scene.dt}, o);
+        return Session(makeWorld(scene), SceneInfo{.name = "ramp", .dt = scene.dt}, o);
     }
 
     /// `seconds` of real time at 60 frames a second; the pointer clock starts at `t0`.

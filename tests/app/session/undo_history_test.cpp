@@ -31,7 +31,9 @@ World crowd(int n, StepMode mode = StepMode::Discrete) {
 
 /// A state told apart by its time speed (and a world of `n` particles).
 UndoState state(double tag, int n = 3) {
-    UndoState s{crowd(n), nullptr, SceneMeta{"scene"}, kNullParticle, std::nullopt, {}, tag, false};
+    UndoState s{crowd(n),      nullptr,      SceneInfo{.name = "scene", .dt = 1.0 / 60.0},
+                kNullParticle, std::nullopt, {},
+                tag,           false};
     return s;
 }
 
@@ -76,7 +78,9 @@ TEST(UndoHistory, TheWorldIsKeptBitForBit) {
     World w = crowd(50);
     for (int k = 0; k < 7; ++k)
         w.step(0.01);
-    UndoState s{w, nullptr, SceneMeta{"scene"}, kNullParticle, std::nullopt, {}, 1.0, true};
+    UndoState s{
+        w,   nullptr, SceneInfo{.name = "scene", .dt = 1.0 / 60.0}, kNullParticle, std::nullopt, {},
+        1.0, true};
     h.record("edit particle", 0.0, s);
     const auto u = h.undo(state(0));
     ASSERT_TRUE(u);
@@ -172,9 +176,15 @@ TEST(UndoHistory, TheSceneAsLoadedIsCountedOnceAndTheExactEventStateNotAtAll) {
     ASSERT_GT(exact.stateBytes(), crowd(2000).stateBytes());  // it holds event state
     UndoHistory h;
     for (int k = 0; k < 10; ++k) {
-        h.record(
-            "spawn particle", k,
-            UndoState{exact, loaded, SceneMeta{"s"}, kNullParticle, std::nullopt, {}, 1.0, true});
+        h.record("spawn particle", k,
+                 UndoState{exact,
+                           loaded,
+                           SceneInfo{.name = "s", .dt = 1.0 / 60.0},
+                           kNullParticle,
+                           std::nullopt,
+                           {},
+                           1.0,
+                           true});
     }
     const std::size_t perEntry = crowd(2000).stateBytes();
     EXPECT_LE(h.memoryBytes(), 11 * perEntry + 10 * 1024);

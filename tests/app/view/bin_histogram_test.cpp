@@ -86,7 +86,8 @@ class SessionBinsTest : public TempDirTest {
         o.saveTo = dir_ / "save.json";
         o.paused = true;
         o.layout = windowLayout(test::FixedMeasure{}, o.viewportWidth, o.viewportHeight, {});
-        return Session(makeWorld(psb::defaultScene()), SceneMeta{"default"}, o);
+        return Session(makeWorld(psb::defaultScene()),
+                       SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     }
     void writeBoard() const {
         std::ofstream(dir_ / "board.json") << R"({"version": 3, "name": "board",

@@ -43,7 +43,7 @@ Session sessionIn(int width, int height, bool controls = true) {
     o.viewportHeight = height;
     o.controls = controls;
     o.layout = windowLayout(font, width, height, {310.0, 44.0});
-    return Session(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    return Session(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
 }
 
 FrameView frameOf(const Session& s, const std::vector<std::string>& messages) {
@@ -118,7 +118,7 @@ Session tableSession(World world, int width, int height, double scale) {
     o.viewportHeight = height;
     o.layout = windowLayout(font, width, height, controls);
     o.controls = o.layout.controlsFit;
-    Session s(std::move(world), SceneMeta{"table"}, o);
+    Session s(std::move(world), SceneInfo{.name = "table", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::SetShow{ShowOption::Plots, true});
     s.apply(cmd::SetShow{ShowOption::Values, true});
     return s;
@@ -197,7 +197,7 @@ Session rulerAmongBalls() {
     o.viewportWidth = 1600;
     o.viewportHeight = 1000;
     o.layout = windowLayout(font, 1600, 1000, controls);
-    Session s(std::move(w), SceneMeta{"rows"}, o);
+    Session s(std::move(w), SceneInfo{.name = "rows", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::SetShow{ShowOption::Ruler, true});
     return s;
 }
@@ -240,7 +240,7 @@ TEST(RulerReading, ItIsReadWholeBesideTheOpenPanelAt200Percent) {
     o.viewportHeight = 800;
     o.layout = windowLayout(font, 1280, 800, controls);
     ASSERT_TRUE(o.layout.controlsFit);
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::SetShow{ShowOption::Ruler, true});
     const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
     ASSERT_EQ(f.controlsInset, 620);
@@ -299,7 +299,7 @@ TEST(LabelsLeftOut, TheHudsNoteWrapsWithinTheWindowAtTwiceTheScale) {
     o.viewportHeight = 600;
     o.layout = windowLayout(font, 800, 600, controls);
     o.controls = false;
-    Session s(makeWorld(defaultScene()), SceneMeta{"default"}, o);
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
     s.apply(cmd::SetShow{ShowOption::Labels, true});
     FrameStats stats;
     stats.labelsCrowded = 2;
