@@ -29,7 +29,7 @@ class PlacedContacts {
     /// periodic box (grid.periodic()) pairs are measured between nearest images in `box`.
     void record(std::vector<Body>& bodies, const std::vector<Cold>& cold,
                 const std::vector<std::uint32_t>& order, const Grid& grid,
-                const periodic::Box& box);
+                const periodic::Box& box = {});
 
     /// The contact distance of the pair of storage indices a and b, whose centres are (rx, ry)
     /// apart, given `sigma` (the sum of their radii): the distance it was placed at while it is
