@@ -92,11 +92,41 @@ void PeriodicGridBroadPhase::queryCells(const ParticleArrays& p, int chunk, std:
             found += static_cast<std::size_t>(discsOverlapPeriodic(x, y, r, lo, hi, box_));
         }
     };
+    // Cells whose whole half stencil lies off the box's edge rows and columns: every particle
+    // in them is inside the box (only a centre a step outside it lands in an edge cell, by the
+    // wrap of cellOf), so two of them are less than half a box apart and the plain test is the
+    // nearest-image test, bit for bit (minimumImage returns such a separation unchanged).
+    const bool inner = nx_ >= 6 && ny_ >= 6;
+    const auto stride = static_cast<std::uint32_t>(nx_);
     for (std::size_t c = begin; c < end; ++c) {
         const std::uint32_t a0 = start[c], a1 = start[c + 1];
         if (a0 == a1) continue;
         const std::int64_t cx = static_cast<std::int64_t>(c) % nx_;
         const std::int64_t cy = static_cast<std::int64_t>(c) / nx_;
+        if (inner && cx >= 2 && cx <= nx_ - 3 && cy >= 1 && cy <= ny_ - 3) {
+            const auto cell = static_cast<std::uint32_t>(c);
+            // The east cell follows this one in `entries`; the three below are one run too.
+            const std::uint32_t own1 = start[cell + 2];
+            const std::uint32_t below0 = start[cell + stride - 1], below1 = start[cell + stride + 2];
+            ContactPair* buf =
+                chunks_.room(chunk, found + std::size_t{a1 - a0} * ((own1 - a0) + (below1 - below0)));
+            for (std::uint32_t a = a0; a < a1; ++a) {
+                const std::uint32_t i = entries[a];
+                for (std::uint32_t k = a + 1; k < own1; ++k) {
+                    const std::uint32_t j = entries[k];
+                    const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
+                    buf[found] = {lo, hi};
+                    found += static_cast<std::size_t>(discsOverlap(x, y, r, lo, hi));
+                }
+                for (std::uint32_t k = below0; k < below1; ++k) {
+                    const std::uint32_t j = entries[k];
+                    const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
+                    buf[found] = {lo, hi};
+                    found += static_cast<std::size_t>(discsOverlap(x, y, r, lo, hi));
+                }
+            }
+            continue;
+        }
         // The distinct neighbours with a higher index (fewer than eight in a box one or two
         // cells across, where they repeat).
         std::uint32_t later[8];

@@ -15,7 +15,10 @@
 // Query. Each cell is tested against itself (every later slot) and against each of its eight
 // neighbours whose index is higher, each neighbour once even where the box is only one or two
 // cells across (the neighbours then repeat): every pair of cells once, so every pair of
-// particles once. Cells are split over threads in contiguous ranges, each into its own list;
+// particles once. A cell whose half stencil stays off the edge rows and columns (most of them)
+// takes the box grid's shortcut instead: the rest of its own cell and the east cell are one run
+// of `entries`, the three cells below another, and the plain overlap test is the nearest-image
+// one there (its particles are all inside the box). Cells are split over threads in contiguous ranges, each into its own list;
 // the union is sorted into the ascending (i, j) order every broadphase gives (contact_pair.hpp),
 // so the result does not depend on the thread count.
 //

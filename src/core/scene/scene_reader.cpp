@@ -85,7 +85,7 @@ void readWorld(const ValueReader& r, const json& j, WorldDef& w, int version) {
     if (const json* v = ValueReader::find(j, "periodic")) {
         w.periodic = r.boolean(*v, "world.periodic");
         if (version < kPeriodicVersion) {
-            r.fail("world.periodic", "needs version " + std::to_string(kPeriodicVersion) +
+            r.fail("world.periodic", "need version " + std::to_string(kPeriodicVersion) +
                                          " or later (the file says version " +
                                          std::to_string(version) + ")");
         }
@@ -584,7 +584,7 @@ void checkPeriodic(const ValueReader& r, const Scene& s, const std::vector<Origi
     if (narrow || 4.0 * largest > w.height) {
         const char* field = narrow ? "world.width" : "world.height";
         const double side = narrow ? w.width : w.height;
-        r.fail(field, "of " + num(side) +
+        r.fail(field, num(side) +
                           " m is too small for a periodic box holding a particle of radius " +
                           num(largest) + " m (" + whose +
                           "): a periodic box must be at least two diameters of its largest "
