@@ -10,9 +10,9 @@ namespace psb {
 /// The box, its fixed obstacles and the material laws of a world. All values are validated by
 /// World.
 struct WorldDef {
-    double width = 700.0;         ///< box width, metres, finite and > 0
-    double height = 700.0;        ///< box height, metres, finite and > 0
-    bool walls = true;            ///< whether the four walls of the box exist
+    double width = 700.0;   ///< box width, metres, finite and > 0
+    double height = 700.0;  ///< box height, metres, finite and > 0
+    bool walls = true;      ///< whether the four walls of the box exist
     /// Whether the box's opposite edges are joined (periodic boundaries): a particle leaving
     /// by one edge comes back by the opposite one, and pairs meet across the edges (the
     /// minimum image). There are no walls then: World ignores `walls` and keeps it false.

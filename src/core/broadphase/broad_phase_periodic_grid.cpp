@@ -107,9 +107,10 @@ void PeriodicGridBroadPhase::queryCells(const ParticleArrays& p, int chunk, std:
             const auto cell = static_cast<std::uint32_t>(c);
             // The east cell follows this one in `entries`; the three below are one run too.
             const std::uint32_t own1 = start[cell + 2];
-            const std::uint32_t below0 = start[cell + stride - 1], below1 = start[cell + stride + 2];
-            ContactPair* buf =
-                chunks_.room(chunk, found + std::size_t{a1 - a0} * ((own1 - a0) + (below1 - below0)));
+            const std::uint32_t below0 = start[cell + stride - 1],
+                                below1 = start[cell + stride + 2];
+            ContactPair* buf = chunks_.room(
+                chunk, found + std::size_t{a1 - a0} * ((own1 - a0) + (below1 - below0)));
             for (std::uint32_t a = a0; a < a1; ++a) {
                 const std::uint32_t i = entries[a];
                 for (std::uint32_t k = a + 1; k < own1; ++k) {

@@ -18,9 +18,9 @@
 // particles once. A cell whose half stencil stays off the edge rows and columns (most of them)
 // takes the box grid's shortcut instead: the rest of its own cell and the east cell are one run
 // of `entries`, the three cells below another, and the plain overlap test is the nearest-image
-// one there (its particles are all inside the box). Cells are split over threads in contiguous ranges, each into its own list;
-// the union is sorted into the ascending (i, j) order every broadphase gives (contact_pair.hpp),
-// so the result does not depend on the thread count.
+// one there (its particles are all inside the box). Cells are split over threads in contiguous
+// ranges, each into its own list; the union is sorted into the ascending (i, j) order every
+// broadphase gives (contact_pair.hpp), so the result does not depend on the thread count.
 //
 // Why not the box grid with wrapping added. That grid's speed comes from its border ring of
 // empty cells and its runs of three contiguous cells, both of which an edge that wraps would

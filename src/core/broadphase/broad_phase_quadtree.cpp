@@ -230,8 +230,7 @@ void QuadtreeBroadPhase::findPairsPeriodic(const ParticleArrays& p, const period
                     const double qx0 = leaf.minX + ox - slack_, qx1 = leaf.maxX + ox + slack_;
                     const double qy0 = leaf.minY + oy - slack_, qy1 = leaf.maxY + oy + slack_;
                     // An image that reaches nothing (the leaf is far from that edge).
-                    if (root.minX > qx1 || root.maxX < qx0 || root.minY > qy1 ||
-                        root.maxY < qy0) {
+                    if (root.minX > qx1 || root.maxX < qx0 || root.minY > qy1 || root.maxY < qy0) {
                         continue;
                     }
                     int top = 0;
@@ -264,8 +263,8 @@ void QuadtreeBroadPhase::findPairsPeriodic(const ParticleArrays& p, const period
                         const std::uint32_t j = order[b];
                         const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
                         buf[found] = {lo, hi};
-                        found += static_cast<std::size_t>(
-                            discsOverlapPeriodic(x, y, r, lo, hi, box));
+                        found +=
+                            static_cast<std::size_t>(discsOverlapPeriodic(x, y, r, lo, hi, box));
                     }
                 }
             }

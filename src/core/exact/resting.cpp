@@ -76,8 +76,8 @@
 #include "exact/collision_rules.hpp"
 #include "exact/motion.hpp"
 #include "exact/parabolic_impact.hpp"
-#include "support/periodic_box.hpp"
 #include "obstacles/obstacle_geometry.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb::exact {
 

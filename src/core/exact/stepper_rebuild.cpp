@@ -19,8 +19,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     Resting::Snapshot before;
     const bool sameLaws = gravity_.on && def.gravity == def_.gravity && def.width == def_.width &&
                           def.height == def_.height && def.walls == def_.walls &&
-                          def.periodic == def_.periodic &&
-                          def.restitution == def_.restitution && def.friction == def_.friction;
+                          def.periodic == def_.periodic && def.restitution == def_.restitution &&
+                          def.friction == def_.friction;
     if (sameLaws) rest_.remember(bodies_, ids_, gravity_, slides_, clock_, before);
     def_ = def;
     clock_ = 0.0;

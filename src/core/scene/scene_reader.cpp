@@ -94,8 +94,9 @@ void readWorld(const ValueReader& r, const json& j, WorldDef& w, int version) {
         // Joined edges are not walls: a file that asks for both asks for two boxes at once.
         const json* walls = ValueReader::find(j, "walls");
         if (walls && w.walls) {
-            r.fail("world.walls", "cannot be true in a periodic world (its edges are joined, so "
-                                  "it has no walls): leave 'walls' out or set it false");
+            r.fail("world.walls",
+                   "cannot be true in a periodic world (its edges are joined, so "
+                   "it has no walls): leave 'walls' out or set it false");
         }
         w.walls = false;
     }
@@ -594,11 +595,10 @@ void checkPeriodic(const ValueReader& r, const Scene& s, const std::vector<Origi
     const double clearance = 2.0 * largest;
     for (std::size_t k = 0; k < w.obstacles.size(); ++k) {
         const Obstacle& o = w.obstacles[k];
-        const double gap =
-            std::min({std::min(o.a.x(), o.b.x()) - o.radius,
-                      w.width - (std::max(o.a.x(), o.b.x()) + o.radius),
-                      std::min(o.a.y(), o.b.y()) - o.radius,
-                      w.height - (std::max(o.a.y(), o.b.y()) + o.radius)});
+        const double gap = std::min({std::min(o.a.x(), o.b.x()) - o.radius,
+                                     w.width - (std::max(o.a.x(), o.b.x()) + o.radius),
+                                     std::min(o.a.y(), o.b.y()) - o.radius,
+                                     w.height - (std::max(o.a.y(), o.b.y()) + o.radius)});
         if (gap < clearance) {
             r.fail(element("obstacles", k),
                    "comes within " + num(std::max(gap, 0.0)) +

@@ -81,8 +81,7 @@ World::World(const WorldDef& def, const SolverSettings& solver)
     require(def, solver, "World");
     if (def_.periodic) {
         def_.walls = false;  // joined edges have no walls
-        detail::requireObstaclesClearOfEdges(def_.obstacles, 0.0, def_.width, def_.height,
-                                             "World");
+        detail::requireObstaclesClearOfEdges(def_.obstacles, 0.0, def_.width, def_.height, "World");
         matchUnwrapArrays();
     }
 }

@@ -42,7 +42,8 @@ TEST(ScenePeriodic, OlderVersionsReadAsBeforeAndRefuseTheKey) {
 }
 
 TEST(ScenePeriodic, WallsAndPeriodicTogetherAreRefused) {
-    const std::string m = messageOf(R"({"version": 6, "world": {"periodic": true, "walls": true}})");
+    const std::string m =
+        messageOf(R"({"version": 6, "world": {"periodic": true, "walls": true}})");
     EXPECT_NE(m.find("world.walls"), std::string::npos) << m;
     EXPECT_NE(m.find("periodic"), std::string::npos) << m;
     // Walls false beside periodic says the same thing twice: accepted.

@@ -84,7 +84,7 @@ TEST_P(PeriodicModes, TheUnwrappedPositionIsTheIntegratedMotionAndSurvivesACopy)
     const Vec2 start(3.0, 1.0), v(41.0, -23.0);
     const ParticleId a = w.add(disc(start, v, 0.25));
     for (int k = 0; k < 250; ++k)
-        w.step(0.004);  // about 6 widths and 4.6 heights
+        w.step(0.004);     // about 6 widths and 4.6 heights
     const World copy = w;  // in the exact mode, with the state the step still owes the arrays
     const Vec2 want = start + v * w.time();
     EXPECT_NEAR(w.unwrappedPosition(a).x(), want.x(), 1e-9);
@@ -107,8 +107,8 @@ TEST_P(PeriodicModes, MomentumIsConservedInAGasWithoutWalls) {
     };
     for (int i = 0; i < 10; ++i) {
         for (int j = 0; j < 10; ++j) {
-            w.add(disc({1.0 + 2.0 * i, 1.0 + 2.0 * j}, {4.0 * uniform() - 2.0, 4.0 * uniform() - 2.0},
-                       0.6));
+            w.add(disc({1.0 + 2.0 * i, 1.0 + 2.0 * j},
+                       {4.0 * uniform() - 2.0, 4.0 * uniform() - 2.0}, 0.6));
         }
     }
     const auto momentum = [&w] {
@@ -183,7 +183,9 @@ TEST(PeriodicWorld, RefusesAnObstacleWithinADiameterOfAnEdge) {
     w.addObstacle(Obstacle::peg({1.3, 5.0}, 0.2));
     EXPECT_EQ(w.obstacles().size(), 1u);
     // A bigger particle would need more room from that peg.
-    EXPECT_NE(refusal([&] { w.add(disc({7.0, 7.0}, {0.0, 0.0}, 0.8)); }).find("World::add"),
+    EXPECT_NE(refusal([&] {
+                  w.add(disc({7.0, 7.0}, {0.0, 0.0}, 0.8));
+              }).find("World::add"),
               std::string::npos);
 }
 
