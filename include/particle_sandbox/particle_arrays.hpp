@@ -36,6 +36,14 @@ struct ParticleArrays {
     std::vector<double> inertiaFactor;        ///< k in I = k m r², 0.001 to 1
     std::vector<std::uint8_t> fixedRotation;  ///< 1: never turns (omega stays 0)
 
+    /// Periodic boxes (WorldDef::periodic): what the wraps across the edges have taken off each
+    /// centre, metres, kept only while `periodic` is true (then each array has size() entries;
+    /// else both are empty). The unwrapped centre, the one that moved continuously since the
+    /// particle was added, is (x[i] + unwrapX[i], y[i] + unwrapY[i]); a displacement between
+    /// two instants is the difference of unwrapped centres (World::unwrappedPosition).
+    bool periodic = false;
+    std::vector<double> unwrapX, unwrapY;
+
     [[nodiscard]] std::size_t size() const { return x.size(); }
     [[nodiscard]] bool isKinematic(std::size_t i) const { return invMass[i] == 0.0; }
     /// 1/k, or 0 for a particle that never turns: the share of a tangential impulse that goes

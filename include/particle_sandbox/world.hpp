@@ -61,7 +61,17 @@ class World {
     /// with walls on, the next step's wall stage brings each centre back into [r, extent - r]
     /// (a particle wider than the box sits at its centre).
     void setBox(double width, double height);
+    /// Throws InvalidArgument for walls on in a periodic world (setPeriodic(false) first).
     void setWalls(bool enabled);
+    /// Joins the box's opposite edges (WorldDef::periodic) or parts them again. Joined, the walls
+    /// go (def().walls becomes false; parted, they stay off until setWalls(true)), particles
+    /// wrap into [0, width) × [0, height) at each step, and the world keeps each particle's
+    /// unwrapped position (unwrappedPosition). Throws InvalidArgument, changing nothing, when
+    /// a particle (or a dropper's ball) is wider than half the box's width or height, or an
+    /// obstacle comes within the largest particle's diameter of an edge; while periodic,
+    /// setBox, add, setRadius, setObstacles, addObstacle and setDroppers refuse what would break
+    /// either rule.
+    void setPeriodic(bool enabled);
     /// m/s², y down; any finite vector, in every step mode. Throws InvalidArgument otherwise.
     void setGravity(const Vec2& gravity);
     void setRestitution(double e);
@@ -148,6 +158,14 @@ class World {
     /// `point`. Until a world reaches 4096 particles storage order is insertion order.
     [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
 
+    /// The particle's centre as if the box's edges had never wrapped it: its position plus
+    /// what the wraps took off it (ParticleArrays::unwrapX, unwrapY), metres. The difference of
+    /// two readings is the particle's displacement between them, however often it crossed the
+    /// edges (for a mean-squared displacement). In a world that is not periodic, get()'s
+    /// position. setPosition moves it by as much as the position. Throws InvalidArgument for a
+    /// dead id.
+    [[nodiscard]] Vec2 unwrappedPosition(ParticleId id) const;
+
     [[nodiscard]] const ParticleArrays& particles() const {
         settle();
         return p_;
@@ -229,6 +247,10 @@ class World {
     double stepExact(double dt);
     /// Makes the rotation arrays (every particle with the defaults) if there are none yet.
     void useRotation();
+    /// Makes the unwrap arrays (every offset 0) or drops them, as def_.periodic says.
+    void matchUnwrapArrays();
+    /// The largest particle radius, dropper balls included (0 for none).
+    [[nodiscard]] double largestRadius() const;
     /// The drop stage: each dropper whose ball is due releases it (World::add) if its spot is
     /// clear.
     void releaseBalls(double dt);

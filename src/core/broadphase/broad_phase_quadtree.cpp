@@ -201,6 +201,82 @@ void QuadtreeBroadPhase::findPairs(const ParticleArrays& p, int threads,
     sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
 }
 
+void QuadtreeBroadPhase::findPairsPeriodic(const ParticleArrays& p, const periodic::Box& box,
+                                           int threads, std::vector<ContactPair>& out) {
+    const std::size_t n = p.size();
+    if (n < 2 || nodes_.empty()) return;
+    const std::size_t leafCount = leaves_.size();
+    const int chunks = parallel::chunksFor(threads, n);
+    chunks_.prepare(chunks);
+    if (touched_.size() < static_cast<std::size_t>(chunks)) touched_.resize(chunks);
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    const Node* nodes = nodes_.data();
+    const std::uint32_t* order = order_.data();
+    const std::uint32_t* leaves = leaves_.data();
+    const Node& root = nodes[0];
+    parallel::forChunks(threads, chunks, leafCount, [&](int c, std::size_t begin, std::size_t end) {
+        std::size_t found = 0;
+        std::uint32_t stack[4 * (kMaxDepth + 1) + 1];
+        std::vector<std::uint32_t>& touched = touched_[static_cast<std::size_t>(c)];
+        for (std::size_t li = begin; li < end; ++li) {
+            const std::uint32_t self = leaves[li];
+            const Node& leaf = nodes[self];
+            touched.clear();
+            for (int sy = -1; sy <= 1; ++sy) {
+                for (int sx = -1; sx <= 1; ++sx) {
+                    const double ox = sx * box.width, oy = sy * box.height;
+                    const double qx0 = leaf.minX + ox - slack_, qx1 = leaf.maxX + ox + slack_;
+                    const double qy0 = leaf.minY + oy - slack_, qy1 = leaf.maxY + oy + slack_;
+                    // An image that reaches nothing (the leaf is far from that edge).
+                    if (root.minX > qx1 || root.maxX < qx0 || root.minY > qy1 || root.maxY < qy0) {
+                        continue;
+                    }
+                    int top = 0;
+                    stack[top++] = 0;
+                    while (top > 0) {
+                        const std::uint32_t k = stack[--top];
+                        const Node& node = nodes[k];
+                        if (node.minX > qx1 || node.maxX < qx0 || node.minY > qy1 ||
+                            node.maxY < qy0) {
+                            continue;
+                        }
+                        if (node.childCount != 0) {
+                            for (std::uint32_t ch = 0; ch < node.childCount; ++ch)
+                                stack[top++] = node.firstChild + ch;
+                            continue;
+                        }
+                        if (k >= self) touched.push_back(k);
+                    }
+                }
+            }
+            std::sort(touched.begin(), touched.end());
+            touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+            for (const std::uint32_t k : touched) {
+                const Node& node = nodes[k];
+                ContactPair* buf = chunks_.room(
+                    c, found + std::size_t{leaf.end - leaf.begin} * (node.end - node.begin));
+                for (std::uint32_t a = leaf.begin; a < leaf.end; ++a) {
+                    const std::uint32_t i = order[a];
+                    for (std::uint32_t b = k == self ? a + 1 : node.begin; b < node.end; ++b) {
+                        const std::uint32_t j = order[b];
+                        const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
+                        buf[found] = {lo, hi};
+                        found +=
+                            static_cast<std::size_t>(discsOverlapPeriodic(x, y, r, lo, hi, box));
+                    }
+                }
+            }
+        }
+        chunks_.setFound(c, found);
+    });
+    const std::size_t before = out.size();
+    out.resize(before + chunks_.total());
+    chunks_.copyTo(out.data() + before);
+    sortPairs(out, before, sortScratch_, static_cast<std::uint32_t>(n));
+}
+
 std::size_t QuadtreeBroadPhase::memoryBytes() const {
     std::size_t bytes = sizeof(std::uint32_t) * (code_.capacity() + order_.capacity() +
                                                  codeTmp_.capacity() + orderTmp_.capacity());

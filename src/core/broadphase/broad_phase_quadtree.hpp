@@ -27,6 +27,11 @@
 // every particle against every particle, branch-free. A leaf holds at most kLeafSize discs, so
 // the traversal is shared by up to that many particles.
 //
+// Periodic boxes (findPairsPeriodic). A leaf near an edge also queries the tree with its
+// bounds moved by a box width or height (the images of the leaf across that edge and corner);
+// the leaves any of its images touch are gathered, each once, and tested between nearest
+// images (support/periodic_box.hpp). Each pair of leaves is still tested from the lower one.
+//
 // Order. Pairs come out leaf by leaf and are then radix-sorted into the ascending (i, j) order
 // all-pairs gives (sortPairs); leaves are split over threads in chunks (see parallel.hpp for why
 // chunking cannot change the list).
@@ -39,6 +44,7 @@
 #include "broadphase/contact_pair.hpp"
 #include "broadphase/pair_chunks.hpp"
 #include "broadphase/particle_stats.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb {
 
@@ -50,6 +56,10 @@ class QuadtreeBroadPhase {
     void build(const ParticleArrays& p, const ParticleStats& stats, int threads);
     /// Appends every overlapping pair (i < j) in ascending (i, j) order.
     void findPairs(const ParticleArrays& p, int threads, std::vector<ContactPair>& out);
+    /// The same in a periodic box: pairs across its edges too, measured between nearest
+    /// images.
+    void findPairsPeriodic(const ParticleArrays& p, const periodic::Box& box, int threads,
+                           std::vector<ContactPair>& out);
 
     [[nodiscard]] std::size_t nodeCount() const { return nodes_.size(); }
     [[nodiscard]] int depth() const { return depth_; }
@@ -73,6 +83,7 @@ class QuadtreeBroadPhase {
     std::vector<std::uint32_t> leaves_;  ///< node indices of the leaves
     std::vector<ContactPair> sortScratch_;
     PairChunks chunks_;
+    std::vector<std::vector<std::uint32_t>> touched_;  ///< periodic: per chunk, a leaf's partners
 };
 
 }  // namespace psb

@@ -41,6 +41,10 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
             p.inertiaFactor[dst] = p.inertiaFactor[src];
             p.fixedRotation[dst] = p.fixedRotation[src];
         }
+        if (p.periodic) {
+            p.unwrapX[dst] = p.unwrapX[src];
+            p.unwrapY[dst] = p.unwrapY[src];
+        }
     };
     for (std::size_t s = 0; s < n; ++s) {
         if (perm[s] & kDone) continue;
@@ -59,6 +63,8 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
         const double angle = turns ? p.angle[s] : 0.0, omega = turns ? p.omega[s] : 0.0;
         const double inertia = turns ? p.inertiaFactor[s] : 0.0;
         const std::uint8_t fixed = turns ? p.fixedRotation[s] : 0;
+        const bool wraps = p.periodic;
+        const double unwrapX = wraps ? p.unwrapX[s] : 0.0, unwrapY = wraps ? p.unwrapY[s] : 0.0;
         std::size_t k = s;
         for (;;) {
             const std::size_t src = perm[k];
@@ -78,6 +84,10 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
                     p.omega[k] = omega;
                     p.inertiaFactor[k] = inertia;
                     p.fixedRotation[k] = fixed;
+                }
+                if (wraps) {
+                    p.unwrapX[k] = unwrapX;
+                    p.unwrapY[k] = unwrapY;
                 }
                 if (withDiscs) {
                     fx[k] = discX;

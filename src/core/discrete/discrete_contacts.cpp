@@ -6,15 +6,22 @@
 #include "contact/collision_capture.hpp"
 #include "contact/contact.hpp"
 #include "discrete/discrete_step.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb::stages {
 namespace {
 
 /// Unit normal from i to j and the centre distance. Coincident centres get coincidentNormal.
+/// kPeriodic: measured between nearest images in `box` (support/periodic_box.hpp).
+template <bool kPeriodic = false>
 inline Normal contactNormal(const ParticleArrays& p, std::uint32_t i, std::uint32_t j,
-                            double& distance) {
-    const double dx = p.x[j] - p.x[i];
-    const double dy = p.y[j] - p.y[i];
+                            double& distance, const periodic::Box& box = {}) {
+    double dx = p.x[j] - p.x[i];
+    double dy = p.y[j] - p.y[i];
+    if constexpr (kPeriodic) {
+        dx = box.imageX(dx);
+        dy = box.imageY(dy);
+    }
     distance = std::sqrt(dx * dx + dy * dy);
     // A distance that is zero, or so small relative to the coordinates that dx/distance would
     // not be a unit vector, gives no usable direction.
@@ -45,8 +52,9 @@ inline void prefetchPair(const ParticleArrays& p, const std::vector<ContactPair>
 
 // kRecord: the world records collisions (ctx.collisionLog); a separate instance, so that a
 // world that records none runs exactly the loop it ran before recording existed. kRough: the
-// particles turn and there is friction (contact.hpp's Rough family), likewise separate.
-template <bool kFriction, bool kRough, bool kRecord>
+// particles turn and there is friction (contact.hpp's Rough family), likewise separate. kPeriodic:
+// a periodic box, pairs measured between nearest images.
+template <bool kFriction, bool kRough, bool kRecord, bool kPeriodic = false>
 void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
                  StepCounters& counters) {
     const double e = def.restitution;
@@ -57,7 +65,7 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
         const ContactPair& c = ctx.pairs[k];
         const std::uint32_t i = c.i, j = c.j;
         double d;
-        const Normal n = contactNormal(p, i, j, d);
+        const Normal n = contactNormal<kPeriodic>(p, i, j, d, ctx.box);
         deepest = std::max(deepest, p.radius[i] + p.radius[j] - d);
 
         [[maybe_unused]] const Vec2 iBefore(p.vx[i], p.vy[i]), jBefore(p.vx[j], p.vy[j]);
@@ -83,10 +91,52 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
     counters.maxOverlap = deepest;
 }
 
+template <bool kPeriodic>
+void separateImpl(ParticleArrays& p, const StepContext& ctx) {
+    for (std::size_t k = 0; k < ctx.pairs.size(); ++k) {
+        prefetchPair(p, ctx.pairs, k);
+        const ContactPair& c = ctx.pairs[k];
+        const std::uint32_t i = c.i, j = c.j;
+        double d;
+        const Normal n = contactNormal<kPeriodic>(p, i, j, d, ctx.box);
+        const double depth = p.radius[i] + p.radius[j] - d;
+        if (!(depth > 0.0)) continue;  // an earlier push in this pass already separated it
+        const double wi = p.invMass[i], wj = p.invMass[j];
+        const double wsum = wi + wj;
+        if (wsum == 0.0) continue;
+        // Split by inverse mass: the centre of mass stays put, the heavy one barely moves.
+        const double si = depth * (wi / wsum), sj = depth * (wj / wsum);
+        p.x[i] -= si * n.x;
+        p.y[i] -= si * n.y;
+        p.x[j] += sj * n.x;
+        p.y[j] += sj * n.y;
+    }
+}
+
+/// A periodic box's resolve: every combination of the laws, records kept or not.
+void resolvePeriodic(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
+                     StepCounters& counters) {
+    const bool record = ctx.collisionLog != nullptr;
+    if (def.friction > 0.0 && p.rotation) {
+        record ? resolveImpl<true, true, true, true>(p, def, ctx, counters)
+               : resolveImpl<true, true, false, true>(p, def, ctx, counters);
+    } else if (def.friction > 0.0) {
+        record ? resolveImpl<true, false, true, true>(p, def, ctx, counters)
+               : resolveImpl<true, false, false, true>(p, def, ctx, counters);
+    } else {
+        record ? resolveImpl<false, false, true, true>(p, def, ctx, counters)
+               : resolveImpl<false, false, false, true>(p, def, ctx, counters);
+    }
+}
+
 }  // namespace
 
 void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
              StepCounters& counters) {
+    if (ctx.periodic) {
+        resolvePeriodic(p, def, ctx, counters);
+        return;
+    }
     const bool record = ctx.collisionLog != nullptr;
     if (def.friction > 0.0 && p.rotation) {
         record ? resolveImpl<true, true, true>(p, def, ctx, counters)
@@ -101,6 +151,10 @@ void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
 }
 
 void separate(ParticleArrays& p, const StepContext& ctx) {
+    if (ctx.periodic) {
+        separateImpl<true>(p, ctx);
+        return;
+    }
     for (std::size_t k = 0; k < ctx.pairs.size(); ++k) {
         prefetchPair(p, ctx.pairs, k);
         const ContactPair& c = ctx.pairs[k];

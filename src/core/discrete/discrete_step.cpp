@@ -6,6 +6,7 @@
 #include "broadphase/broad_phase_auto.hpp"
 #include "broadphase/particle_reorder.hpp"
 #include "support/parallel.hpp"
+#include "support/periodic_box.hpp"
 #include "world/stage_timer.hpp"
 
 namespace psb::stages {
@@ -77,6 +78,23 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     const ParticleStats stats = statsFresh ? combineBlocks(ctx.statsScratch, p.size())
                                            : measureParticles(p, ctx.threads, ctx.statsScratch);
     ctx.broadPhaseUsed = chooseBroadPhase(ctx.broadPhase, p, stats);
+    if (ctx.periodic) {
+        switch (ctx.broadPhaseUsed) {
+            case BroadPhaseKind::Grid:
+                ctx.periodicGrid.build(p, ctx.box, stats.maxRadius, ctx.threads);
+                ctx.periodicGrid.findPairs(p, ctx.threads, ctx.pairs);
+                break;
+            case BroadPhaseKind::Quadtree:
+                ctx.quadtree.build(p, stats, ctx.threads);
+                ctx.quadtree.findPairsPeriodic(p, ctx.box, ctx.threads, ctx.pairs);
+                break;
+            case BroadPhaseKind::Auto:
+            case BroadPhaseKind::AllPairs:
+                findPairsAllPairs(p, ctx.box, ctx.pairs);
+                break;
+        }
+        return;
+    }
     switch (ctx.broadPhaseUsed) {
         case BroadPhaseKind::Grid:
             ctx.grid.build(p, stats, ctx.threads, cellsFresh);
@@ -93,6 +111,22 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     }
 }
 
+void wrap(ParticleArrays& p, const WorldDef& def, int threads) {
+    const std::size_t n = p.size();
+    double* x = p.x.data();
+    double* y = p.y.data();
+    double* ux = p.unwrapX.data();
+    double* uy = p.unwrapY.data();
+    const double w = def.width, h = def.height;
+    parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
+                        [=](int, std::size_t begin, std::size_t end) {
+                            for (std::size_t i = begin; i < end; ++i) {
+                                periodic::wrapInto(x[i], ux[i], w);
+                                periodic::wrapInto(y[i], uy[i], h);
+                            }
+                        });
+}
+
 void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext& ctx,
                   StepProfile& profile, StepCounters& counters) {
     StageTimer total(profile.total);
@@ -104,6 +138,8 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     double& separateMs = profile.stage("separate");
     double& obstaclesMs = profile.stage("obstacles");
     double& wallsMs = profile.stage("walls");
+    ctx.periodic = def.periodic;
+    ctx.box = {def.width, def.height};
     const bool obstaclesPresent = !def.obstacles.empty();
     if (obstaclesPresent) {
         StageTimer t(obstaclesMs);
@@ -117,7 +153,7 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
         StageTimer t(moveMs);
         // While the grid is in use, move also writes each particle's cell under the grid's last
         // plan, which findPairs keeps while it fits (broad_phase_grid.hpp, plan reuse).
-        const auto cells = ctx.broadPhaseUsed == BroadPhaseKind::Grid
+        const auto cells = ctx.broadPhaseUsed == BroadPhaseKind::Grid && !ctx.periodic
                                ? ctx.grid.cellsForMove(p.size())
                                : std::nullopt;
         move(p, dt, ctx.threads, &ctx.statsScratch, cells ? &*cells : nullptr);
@@ -145,6 +181,10 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
     if (def.walls) {
         StageTimer t(wallsMs);
         walls(p, def, ctx, counters);
+    }
+    if (def.periodic) {
+        StageTimer t(profile.stage("wrap"));
+        wrap(p, def, ctx.threads);
     }
     ++counters.steps;
 }

@@ -10,6 +10,15 @@
 //                                                pairs only     inverse mass   velocity sign
 //   (* skipped when the world has no gravity / no walls; friction math is compiled out of
 //    resolve and walls when the friction coefficient is zero.)
+//
+// Periodic boxes (WorldDef::periodic). The walls stage gives way to `wrap`, which brings every
+// centre back into [0, width) × [0, height) and adds what it took off to the particle's
+// unwrapped offset (ParticleArrays::unwrapX, unwrapY). Until then a centre may be a step's
+// travel outside the box: find pairs, resolve and separate measure every pair between nearest
+// images (support/periodic_box.hpp), which does not care, and the broadphases find pairs
+// across the edges (the grid whose cells wrap, broad_phase_periodic_grid.hpp; the quadtree's
+// images; all-pairs). Each is a separate instance or path, so a world that is not periodic
+// runs exactly the code it ran before periodic boxes existed.
 //   († only in a world that keeps rotation. With friction and rotation, resolve, obstacles
 //    and walls run the rough contacts of contact.hpp, which turn the discs: rolling is what
 //    those contact passes make of a disc pressed onto a surface, step after step.)
@@ -72,6 +81,10 @@ void separate(ParticleArrays& p, const StepContext& ctx);
 /// Clamps every particle into the box and makes outward velocity components inward (scaled by
 /// e). A particle already moving inward keeps its velocity.
 void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounters& counters);
+
+/// Periodic boxes: wraps every centre into [0, width) × [0, height), keeping what it took off
+/// in the unwrap arrays.
+void wrap(ParticleArrays& p, const WorldDef& def, int threads = 1);
 
 /// Copies the positions at the start of the step into ctx.startX/startY, where the obstacles
 /// stage's sweep begins.

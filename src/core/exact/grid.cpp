@@ -71,7 +71,10 @@ void Grid::setUp(const WorldDef& def, const std::vector<Body>& bodies, std::vect
         return *hi - a;
     };
     double bulkW = def.width, bulkH = def.height;
-    if (!def.walls) {
+    periodic_ = def.periodic;
+    // A periodic box is tiled like a walled one; its cells wrap (its edges are faces).
+    const bool tiled = def.walls || def.periodic;
+    if (!tiled) {
         bulkW = spread([](const Body& b) { return b.x; });
         bulkH = spread([](const Body& b) { return b.y; });
     }
@@ -81,7 +84,7 @@ void Grid::setUp(const WorldDef& def, const std::vector<Body>& bodies, std::vect
     // At most a few cells per particle: enough for the 3 × 3 searches to see ~1 particle each,
     // and memory stays O(N) however large the box.
     const double maxCells = 4.0 * n + 64.0;
-    if (def.walls) {
+    if (tiled) {
         const double area = def.width * def.height;
         double side = std::max(minSide, kCellSpacings * std::sqrt(area / std::max(n, 1u)));
         side = std::max(side, std::sqrt(area / maxCells));
@@ -96,7 +99,7 @@ void Grid::setUp(const WorldDef& def, const std::vector<Body>& bodies, std::vect
         };
         const std::int64_t nx = count(def.width), ny = count(def.height);
         cells_.reset(0.0, 0.0, def.width / static_cast<double>(nx),
-                     def.height / static_cast<double>(ny), nx, ny, false, n);
+                     def.height / static_cast<double>(ny), nx, ny, def.periodic, n);
     } else {
         const double w = bulkW + 2.0 * minSide;
         const double h = bulkH + 2.0 * minSide;
@@ -127,6 +130,12 @@ void Grid::setUp(const WorldDef& def, const std::vector<Body>& bodies, std::vect
     for (std::uint32_t i = 0; i < n; ++i) {
         cold[i].kx = cells_.coordX(bodies[i].x);
         cold[i].ky = cells_.coordY(bodies[i].y);
+        if (periodic_) {
+            // Centres are wrapped into the box (rebuild); rounding at its far edge can still
+            // give the count itself.
+            cold[i].kx = std::clamp<std::int64_t>(cold[i].kx, 0, cells_.nx() - 1);
+            cold[i].ky = std::clamp<std::int64_t>(cold[i].ky, 0, cells_.ny() - 1);
+        }
     }
     setUpLevels(n);
 }

@@ -38,8 +38,13 @@ class Grid {
     /// Lists particle i (its place in `c`) in its level's cell.
     void insert(std::uint32_t i, const Cold& c);
     /// A cell move: particle i crosses face `side` (-x, +x, -y, +y) of its fine cell into the
-    /// next one; `c` and the lists follow.
-    void move(std::uint32_t i, Cold& c, std::int8_t side);
+    /// next one; `c` and the lists follow. In a periodic box a move across an edge of the box
+    /// takes the particle to the first cell on the other side; returns the whole boxes its
+    /// centre must move by then along the axis crossed (-1, +1), else 0.
+    int move(std::uint32_t i, Cold& c, std::int8_t side);
+    /// Whether the cells tile a periodic box (WorldDef::periodic): fine cell coordinates stay in
+    /// [0, nx) × [0, ny) and the faces of the box are crossed like any other, without a skin.
+    [[nodiscard]] bool periodic() const { return periodic_; }
 
     /// Level 0's cells: the fine grid of every cell move.
     [[nodiscard]] const CellList& fine() const { return cells_; }
@@ -87,6 +92,7 @@ class Grid {
     [[nodiscard]] bool populousUpperLevel() const;
 
     CellList cells_;                    // level 0's members; the fine grid of every cell move
+    bool periodic_ = false;             // the cells tile a periodic box
     double skinX_ = 0.0, skinY_ = 0.0;  // how far a centre may stray out of its cell
     std::vector<Level> upper_;          // levels 1, 2, ...
     std::uint8_t levelCount_ = 1;
@@ -102,7 +108,7 @@ inline std::uint32_t Grid::memberCell(const Cold& c) const {
     return l.cells.cell(floorDiv(c.kx, l.block), floorDiv(c.ky, l.block));
 }
 
-inline void Grid::move(std::uint32_t i, Cold& c, std::int8_t side) {
+inline int Grid::move(std::uint32_t i, Cold& c, std::int8_t side) {
     const std::uint32_t oldCell = memberCell(c);
     switch (side) {
         case 0:
@@ -118,6 +124,18 @@ inline void Grid::move(std::uint32_t i, Cold& c, std::int8_t side) {
             ++c.ky;
             break;
     }
+    int boxes = 0;
+    if (periodic_) {
+        std::int64_t& k = side < 2 ? c.kx : c.ky;
+        const std::int64_t n = side < 2 ? cells_.nx() : cells_.ny();
+        if (k < 0) {
+            k += n;
+            boxes = 1;
+        } else if (k >= n) {
+            k -= n;
+            boxes = -1;
+        }
+    }
     if (c.level == 0) {
         cells_.erase(i);
         cells_.insert(i, cells_.cell(c.kx, c.ky));
@@ -126,6 +144,7 @@ inline void Grid::move(std::uint32_t i, Cold& c, std::int8_t side) {
         list.erase(i);
         list.insert(i, cell);
     }
+    return boxes;
 }
 
 template <typename F>

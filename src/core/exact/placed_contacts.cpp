@@ -6,10 +6,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "support/periodic_box.hpp"
+
 namespace psb::exact {
 
 void PlacedContacts::record(std::vector<Body>& bodies, const std::vector<Cold>& cold,
-                            const std::vector<std::uint32_t>& order, const Grid& grid) {
+                            const std::vector<std::uint32_t>& order, const Grid& grid,
+                            const periodic::Box& box) {
     // A pair that overlaps here was placed so from outside: its contact distance is the
     // distance it has now, until it is found apart (contactDistance).
     contacts_.clear();
@@ -19,7 +22,13 @@ void PlacedContacts::record(std::vector<Body>& bodies, const std::vector<Cold>& 
         grid.forEachAround(cold[i], [&](std::uint32_t q) {
             Body& b = bodies[q];
             if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) return;
-            const double rx = b.x - a.x, ry = b.y - a.y, sigma = a.r + b.r;
+            double rx = b.x - a.x, ry = b.y - a.y;
+            if (grid.periodic()) {
+                // Overlapping, so at most half a box apart (support/periodic_box.hpp).
+                rx = periodic::minimumImage(rx, box.width);
+                ry = periodic::minimumImage(ry, box.height);
+            }
+            const double sigma = a.r + b.r;
             const double d2 = rx * rx + ry * ry;
             if (!(d2 < sigma * sigma)) return;
             const double d = std::sqrt(d2);

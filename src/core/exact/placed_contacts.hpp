@@ -17,6 +17,7 @@
 
 #include "exact/body.hpp"
 #include "exact/grid.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb::exact {
 
@@ -24,9 +25,11 @@ class PlacedContacts {
   public:
     /// Forgets every pair, then records those of `bodies` that overlap now (held pairs pass
     /// through each other and are left out) and flags both of each kPlacedOverlapping.
-    /// `order` maps the stepper's indices to storage indices; `grid` lists the particles.
+    /// `order` maps the stepper's indices to storage indices; `grid` lists the particles. In a
+    /// periodic box (grid.periodic()) pairs are measured between nearest images in `box`.
     void record(std::vector<Body>& bodies, const std::vector<Cold>& cold,
-                const std::vector<std::uint32_t>& order, const Grid& grid);
+                const std::vector<std::uint32_t>& order, const Grid& grid,
+                const periodic::Box& box = {});
 
     /// The contact distance of the pair of storage indices a and b, whose centres are (rx, ry)
     /// apart, given `sigma` (the sum of their radii): the distance it was placed at while it is

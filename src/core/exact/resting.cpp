@@ -77,8 +77,21 @@
 #include "exact/motion.hpp"
 #include "exact/parabolic_impact.hpp"
 #include "obstacles/obstacle_geometry.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb::exact {
+
+namespace {
+
+// A separation between neighbours brought to their nearest images in a periodic box (the only
+// ones near enough to rest on each other); untouched otherwise.
+void nearestImage(const WorldDef& def, double& rx, double& ry) {
+    if (!def.periodic) return;
+    rx = periodic::minimumImage(rx, def.width);
+    ry = periodic::minimumImage(ry, def.height);
+}
+
+}  // namespace
 
 void Resting::remember(const std::vector<Body>& bodies, const std::vector<ParticleId>& ids,
                        const Gravity& g, const Slides& slides, double clock, Snapshot& out) const {
@@ -203,7 +216,9 @@ Resting::Sleep Resting::atRestBeside(std::uint32_t q, std::uint32_t i, double no
     double ax, ay;
     accelerationOf(q, b, s.gravity, s.slides, ax, ay);
     if (ax != 0.0 || ay != 0.0 || !mayRest(q, now)) return {};
-    const double rx = b.x - a.x, ry = b.y - a.y, reach = a.r + b.r + restGap_;
+    double rx = b.x - a.x, ry = b.y - a.y;
+    nearestImage(s.def, rx, ry);
+    const double reach = a.r + b.r + restGap_;
     if (rx * rx + ry * ry > reach * reach) return {};
     const Hold h = hold(q, kUngrounded + 1, now, s);
     if (!h.firm) return {};
@@ -239,7 +254,8 @@ Resting::Support Resting::afterWake(std::uint32_t q, std::uint32_t p, double now
     const Body& a = s.bodies[p];
     Body& b = s.bodies[q];
     if (!(b.flags & kAsleep)) return Support::Holds;
-    const double rx = b.x - a.x, ry = b.y - a.y;
+    double rx = b.x - a.x, ry = b.y - a.y;
+    nearestImage(s.def, rx, ry);
     const double reach = a.r + b.r + restGap_;
     if (rx * rx + ry * ry > reach * reach) return Support::Holds;
     const Hold h = hold(q, depth_[q], now, s);
@@ -349,7 +365,8 @@ Resting::Hold Resting::hold(std::uint32_t i, std::uint32_t below, double now,
             bx = m.x;
             by = m.y;
         }
-        const double rx = bx - a.x, ry = by - a.y;
+        double rx = bx - a.x, ry = by - a.y;
+        nearestImage(s.def, rx, ry);
         const double d = std::sqrt(rx * rx + ry * ry);
         if (!(d > 0.0 && d - (a.r + b.r) <= restGap_)) return;
         if (!still) {

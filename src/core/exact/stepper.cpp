@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "exact/motion.hpp"
+#include "support/periodic_box.hpp"
 #include "world/stage_timer.hpp"
 
 namespace psb::exact {
@@ -146,6 +147,17 @@ void ExactStepper::sync(ParticleArrays& p) {
         vy[i] = b.vy;
     }
     rolls_.sync(p, order_, t);
+    if (def_.periodic) {
+        // Centres a rounding past an edge (the box's faces are crossed at the face itself)
+        // into [0, width) × [0, height), with the offsets that go with them.
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::uint32_t i = order[k];
+            p.unwrapX[i] = unwrapX_[k];
+            p.unwrapY[i] = unwrapY_[k];
+            periodic::wrapInto(x[i], p.unwrapX[i], def_.width);
+            periodic::wrapInto(y[i], p.unwrapY[i], def_.height);
+        }
+    }
     syncOwed_ = false;
 }
 
@@ -156,6 +168,10 @@ void ExactStepper::sortByCell(bool midRun) {
     renumber(cold_, to);
     renumber(order_, to);
     renumber(ids_, to);
+    if (!unwrapX_.empty()) {
+        renumber(unwrapX_, to);
+        renumber(unwrapY_, to);
+    }
     if (gravity_.on) rest_.renumber(to);
     slides_.renumber(to);
     rolls_.renumber(to);
@@ -185,6 +201,7 @@ std::size_t ExactStepper::memoryBytes() const {
                         sizeof(ParticleId) * ids_.capacity() + grid_.memoryBytes() +
                         queue_.memoryBytes() + obstacles_.memoryBytes() + rest_.memoryBytes() +
                         slides_.memoryBytes() + rolls_.memoryBytes();
+    bytes += sizeof(double) * (unwrapX_.capacity() + unwrapY_.capacity());
     return bytes + placed_.memoryBytes();
 }
 

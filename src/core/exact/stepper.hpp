@@ -69,6 +69,19 @@
 // Walls off: no wall events, particles fly free; the cell grid folds onto itself
 // (cell_list.hpp) so space is unbounded.
 //
+// Periodic boxes (WorldDef::periodic). The cells tile the box as with walls, but its edges are
+// faces like any other: a particle leaving the last column is a cell move into the first one,
+// at which its centre moves by a box width (an exact shift of its line of flight but for one
+// rounding) and what moved it is added to its unwrapped offset. The box's own faces have no
+// skin, so every centre stays in the box but for rounding. Searches read the cells around a
+// particle as images: a range of cell coordinates past an edge is the other side's cells,
+// their members seen a box width away (scanBlock), so a pair is predicted across an edge and a
+// corner exactly as inside the box, with the two-events argument unchanged; where the box is
+// one or two cells across the same cell comes back as several images, each searched. Events
+// of a pair measure it between nearest images (the only ones that can touch: World keeps each
+// diameter at most half the box). No wall events. The world's arrays receive centres wrapped
+// into [0, width) × [0, height) and the offsets (sync).
+//
 // The event budget (World::setExactEventBudget; none unless the caller sets one, as the
 // interactive app does for its frames) ends a step that would process more events at the
 // first event left: the state is the exact one at that instant (never a pair through each
@@ -178,8 +191,16 @@ class ExactStepper {
     void scanNeighbours(std::uint32_t i, double now, double ax, double ay, Event& best);
     void scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                    std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1, Event& best);
+    // (sx, sy): where the cells' members are seen, metres from where they are (their images
+    // across the edges of a periodic box; 0 otherwise).
     void scanCells(std::uint32_t i, double now, double ax, double ay, const CellList& list,
-                   const std::uint32_t* cells, int cellCount, Event& best);
+                   const std::uint32_t* cells, int cellCount, Event& best, double sx = 0.0,
+                   double sy = 0.0);
+    // scanBlock in a periodic box: the range cut at the box's edges, each piece searched as
+    // the image it is.
+    void scanBlockPeriodic(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
+                           std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
+                           Event& best);
     [[nodiscard]] static double pairTimeUnderGravity(const Body& a, const Motion& am, const Body& b,
                                                      const Motion& bm, double sigma,
                                                      double horizon);
@@ -276,6 +297,9 @@ class ExactStepper {
     std::uint64_t events_ = 0;
     double maxOverlap_ = 0.0;
     std::vector<std::uint32_t> wakeStack_;  // the wake cascade's particles to look around
+    // Periodic boxes: what the wraps have taken off each particle's centre (in cell order), as
+    // ParticleArrays::unwrapX, unwrapY keep it; empty otherwise.
+    std::vector<double> unwrapX_, unwrapY_;
 };
 
 }  // namespace psb::exact

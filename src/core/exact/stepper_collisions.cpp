@@ -26,6 +26,7 @@
 #include "contact/contact.hpp"
 #include "exact/motion.hpp"
 #include "exact/stepper.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb::exact {
 
@@ -81,7 +82,12 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         stopSliding(j);
         ++b.count;
     }
-    const double dx = b.x - a.x, dy = b.y - a.y;
+    double dx = b.x - a.x, dy = b.y - a.y;
+    if (def_.periodic) {
+        // Touching, so at most half a box apart: the nearest images are the ones that touch.
+        dx = periodic::minimumImage(dx, def_.width);
+        dy = periodic::minimumImage(dy, def_.height);
+    }
     const double d = std::sqrt(dx * dx + dy * dy);
     maxOverlap_ = std::max(maxOverlap_, a.r + b.r - d);
     Normal n;

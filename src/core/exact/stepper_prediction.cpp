@@ -112,16 +112,23 @@ void ExactStepper::predictCell(std::uint32_t i, double now) {
     // With walls the outer faces are never crossed (the wall comes first).
     int face;
     const CellList& cells = grid_.fine();
-    const double tx = exitTime(m.x, m.vx, m.ax, cells.faceX(ac.kx) - grid_.skinX(),
-                               cells.faceX(ac.kx + 1) + grid_.skinX(), face);
+    double loX = cells.faceX(ac.kx) - grid_.skinX(), hiX = cells.faceX(ac.kx + 1) + grid_.skinX();
+    double loY = cells.faceY(ac.ky) - grid_.skinY(), hiY = cells.faceY(ac.ky + 1) + grid_.skinY();
+    if (grid_.periodic()) {
+        // The box's own faces have no skin: a centre leaves the box only to wrap at once.
+        if (ac.kx == 0) loX = 0.0;
+        if (ac.kx == cells.nx() - 1) hiX = def_.width;
+        if (ac.ky == 0) loY = 0.0;
+        if (ac.ky == cells.ny() - 1) hiY = def_.height;
+    }
+    const double tx = exitTime(m.x, m.vx, m.ax, loX, hiX, face);
     const bool outerX =
         !cells.wraps() && ((face < 0 && ac.kx == 0) || (face > 0 && ac.kx == cells.nx() - 1));
     if (face != 0 && !outerX) {
         best = tx;
         side = face < 0 ? 0 : 1;
     }
-    const double ty = exitTime(m.y, m.vy, m.ay, cells.faceY(ac.ky) - grid_.skinY(),
-                               cells.faceY(ac.ky + 1) + grid_.skinY(), face);
+    const double ty = exitTime(m.y, m.vy, m.ay, loY, hiY, face);
     const bool outerY =
         !cells.wraps() && ((face < 0 && ac.ky == 0) || (face > 0 && ac.ky == cells.ny() - 1));
     if (face != 0 && !outerY && ty < best) {
@@ -143,6 +150,10 @@ void ExactStepper::scanNeighbours(std::uint32_t i, double now, double ax, double
 void ExactStepper::scanBlock(std::uint32_t i, double now, double ax, double ay, std::uint8_t level,
                              std::int64_t x0, std::int64_t x1, std::int64_t y0, std::int64_t y1,
                              Event& best) {
+    if (grid_.periodic()) {
+        scanBlockPeriodic(i, now, ax, ay, level, x0, x1, y0, y1, best);
+        return;
+    }
     const CellList& list = grid_.listOf(level);
     constexpr int kCells = 16;
     std::uint32_t cells[kCells];
@@ -157,12 +168,47 @@ void ExactStepper::scanBlock(std::uint32_t i, double now, double ax, double ay, 
     if (count > 0) scanCells(i, now, ax, ay, list, cells, count, best);
 }
 
+void ExactStepper::scanBlockPeriodic(std::uint32_t i, double now, double ax, double ay,
+                                     std::uint8_t level, std::int64_t x0, std::int64_t x1,
+                                     std::int64_t y0, std::int64_t y1, Event& best) {
+    // Fine cell coordinates past an edge are those of the other side, m boxes over: the piece
+    // of the range in box (mx, my) is the cells [x - mx nx, ...] seen mx widths and my heights
+    // away. Each piece lies within one box, so forCells never folds it onto itself.
+    const CellList& fine = grid_.fine();
+    const std::int64_t nx = fine.nx(), ny = fine.ny();
+    const CellList& list = grid_.listOf(level);
+    constexpr int kCells = 16;
+    std::uint32_t cells[kCells];
+    for (std::int64_t my = floorDiv(y0, ny); my <= floorDiv(y1, ny); ++my) {
+        const std::int64_t ya = std::max(y0, my * ny) - my * ny;
+        const std::int64_t yb = std::min(y1, my * ny + ny - 1) - my * ny;
+        for (std::int64_t mx = floorDiv(x0, nx); mx <= floorDiv(x1, nx); ++mx) {
+            const std::int64_t xa = std::max(x0, mx * nx) - mx * nx;
+            const std::int64_t xb = std::min(x1, mx * nx + nx - 1) - mx * nx;
+            const double sx = static_cast<double>(mx) * def_.width;
+            const double sy = static_cast<double>(my) * def_.height;
+            int count = 0;
+            grid_.forCells(level, xa, xb, ya, yb, [&](std::uint32_t c) {
+                cells[count++] = c;
+                if (count == kCells) {
+                    scanCells(i, now, ax - sx, ay - sy, list, cells, count, best, sx, sy);
+                    count = 0;
+                }
+            });
+            if (count > 0) scanCells(i, now, ax - sx, ay - sy, list, cells, count, best, sx, sy);
+        }
+    }
+}
+
 void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                              const CellList& list, const std::uint32_t* cells, int cellCount,
-                             Event& best) {
+                             Event& best, double sx, double sy) {
     const Body& a = bodies_[i];
     const bool aHeld = (a.flags & kHeld) != 0, aJammed = (a.flags & kJammed) != 0;
-    const Motion am = gravity_.on ? motionAt(i, a, now) : Motion{};
+    Motion am = gravity_.on ? motionAt(i, a, now) : Motion{};
+    // Seen from the members' images: i moved the other way (x − 0 is x, bit for bit).
+    am.x -= sx;
+    am.y -= sy;
     // Gather the members first and prefetch their bodies, so that the cache misses of a whole
     // neighbourhood overlap instead of following one another.
     constexpr int kBatch = 32;
@@ -177,6 +223,7 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
                 j = list.head(cells[k++]);
                 continue;
             }
+            // In a periodic box i's own images are no partners either.
             if (j != i) {
                 members[count++] = j;
                 __builtin_prefetch(&bodies_[j]);
@@ -242,7 +289,19 @@ void ExactStepper::handleCell(std::uint32_t i, double now) {
     Cold& a = cold_[i];
     ++events_;
     const std::int8_t side = a.cellSide;  // predictCell below overwrites it
-    grid_.move(i, a, side);
+    if (const int boxes = grid_.move(i, a, side); boxes != 0) {
+        // Across an edge of a periodic box: the centre wraps to the other side.
+        Body& w = bodies_[i];
+        if (side < 2) {
+            const double shift = boxes * def_.width;
+            w.x += shift;
+            unwrapX_[i] -= shift;
+        } else {
+            const double shift = boxes * def_.height;
+            w.y += shift;
+            unwrapY_[i] -= shift;
+        }
+    }
     predictCell(i, now);
 
     // The cells that just came within reach at each level: the far column (or row) in the

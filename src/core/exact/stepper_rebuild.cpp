@@ -10,6 +10,7 @@
 #include "exact/motion.hpp"
 #include "exact/stepper.hpp"
 #include "exact/time_of_impact.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb::exact {
 
@@ -18,7 +19,8 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     Resting::Snapshot before;
     const bool sameLaws = gravity_.on && def.gravity == def_.gravity && def.width == def_.width &&
                           def.height == def_.height && def.walls == def_.walls &&
-                          def.restitution == def_.restitution && def.friction == def_.friction;
+                          def.periodic == def_.periodic && def.restitution == def_.restitution &&
+                          def.friction == def_.friction;
     if (sameLaws) rest_.remember(bodies_, ids_, gravity_, slides_, clock_, before);
     def_ = def;
     clock_ = 0.0;
@@ -36,6 +38,15 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     rolls_.reset(p, def.friction);
     // Slides on faces, and rolls on faces and walls (rolls.hpp).
     slides_.reset(gravity_.on && (!def_.obstacles.empty() || rolls_.rough()) ? n : 0);
+    // A periodic box: centres wrapped into it, what that took off added to the offsets.
+    unwrapX_.clear();
+    unwrapY_.clear();
+    if (def_.periodic) {
+        unwrapX_.assign(p.unwrapX.begin(), p.unwrapX.end());
+        unwrapY_.assign(p.unwrapY.begin(), p.unwrapY.end());
+        unwrapX_.resize(n, 0.0);
+        unwrapY_.resize(n, 0.0);
+    }
     for (std::uint32_t i = 0; i < n; ++i) {
         Body& b = bodies_[i];
         Cold& c = cold_[i];
@@ -53,6 +64,10 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
                  0,
                  p.invMass[i]};
         order_[i] = i;
+        if (def_.periodic) {
+            periodic::wrapInto(b.x, unwrapX_[i], def_.width);
+            periodic::wrapInto(b.y, unwrapY_[i], def_.height);
+        }
         if (def_.walls) {
             // Into the box, as the discrete mode's wall stage would; a particle too wide for
             // an axis sits on the centre line with no velocity across it. So does one with no
@@ -82,7 +97,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
     eventsSinceSort_ = 0;
     for (std::uint32_t i = 0; i < n; ++i)
         grid_.insert(i, cold_[i]);
-    placed_.record(bodies_, cold_, order_, grid_);
+    placed_.record(bodies_, cold_, order_, grid_, {def_.width, def_.height});
     queue_.reset(2 * n, bucketWidth());
     if (!before.empty()) keepSleepers(before);
     for (std::uint32_t i = 0; i < n; ++i) {

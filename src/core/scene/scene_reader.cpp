@@ -40,12 +40,13 @@ using detail::Keys;
 using detail::member;
 using detail::ValueReader;
 
-constexpr int kVersion = 5;
+constexpr int kVersion = 6;
 /// Version 2 added `obstacles`, version 3 `bins`, version 4 `droppers`, version 5 rotation (a
 /// particle's `angle`, `angular_velocity`, `inertia_factor`, `fixed_rotation` and the world's
-/// `tangential_restitution`); a file without them may say any version.
+/// `tangential_restitution`), version 6 the world's `periodic`; a file without them may say any
+/// version.
 constexpr int kFirstVersion = 1, kObstaclesVersion = 2, kBinsVersion = 3, kDroppersVersion = 4,
-              kRotationVersion = 5;
+              kRotationVersion = 5, kPeriodicVersion = 6;
 
 /// Numbers in messages as the exports write them: the shortest text that reads back as the same
 /// double.
@@ -76,11 +77,29 @@ void requireRotationVersion(const ValueReader& r, const std::string& path, int v
 void readWorld(const ValueReader& r, const json& j, WorldDef& w, int version) {
     const std::string path = "world";
     r.object(j, path,
-             {"width", "height", "walls", "gravity", "restitution", "friction",
+             {"width", "height", "walls", "periodic", "gravity", "restitution", "friction",
               "tangential_restitution"});
     if (const json* v = ValueReader::find(j, "width")) w.width = r.positive(*v, "world.width");
     if (const json* v = ValueReader::find(j, "height")) w.height = r.positive(*v, "world.height");
     if (const json* v = ValueReader::find(j, "walls")) w.walls = r.boolean(*v, "world.walls");
+    if (const json* v = ValueReader::find(j, "periodic")) {
+        w.periodic = r.boolean(*v, "world.periodic");
+        if (version < kPeriodicVersion) {
+            r.fail("world.periodic", "need version " + std::to_string(kPeriodicVersion) +
+                                         " or later (the file says version " +
+                                         std::to_string(version) + ")");
+        }
+    }
+    if (w.periodic) {
+        // Joined edges are not walls: a file that asks for both asks for two boxes at once.
+        const json* walls = ValueReader::find(j, "walls");
+        if (walls && w.walls) {
+            r.fail("world.walls",
+                   "cannot be true in a periodic world (its edges are joined, so "
+                   "it has no walls): leave 'walls' out or set it false");
+        }
+        w.walls = false;
+    }
     if (const json* v = ValueReader::find(j, "gravity")) w.gravity = r.vec2(*v, "world.gravity");
     if (const json* v = ValueReader::find(j, "restitution")) {
         w.restitution = r.inRange(*v, "world.restitution", 0.0, 1.0);
@@ -543,6 +562,53 @@ void readGenerate(const ValueReader& r, const json& j, const std::string& path,
     }
 }
 
+/// A periodic box must be at least two diameters of its largest particle (dropper balls
+/// included) wide and high, and every obstacle must stay that particle's diameter inside every
+/// edge (world/periodic_fit.hpp says why).
+void checkPeriodic(const ValueReader& r, const Scene& s, const std::vector<Origin>& origins) {
+    const WorldDef& w = s.world;
+    double largest = 0.0;
+    std::string whose;
+    for (std::size_t i = 0; i < s.particles.size(); ++i) {
+        if (s.particles[i].radius > largest) {
+            largest = s.particles[i].radius;
+            whose = describe(origins[i]);
+        }
+    }
+    for (std::size_t k = 0; k < s.droppers.size(); ++k) {
+        if (s.droppers[k].radius > largest) {
+            largest = s.droppers[k].radius;
+            whose = "the balls of " + element("droppers", k);
+        }
+    }
+    const bool narrow = 4.0 * largest > w.width;
+    if (narrow || 4.0 * largest > w.height) {
+        const char* field = narrow ? "world.width" : "world.height";
+        const double side = narrow ? w.width : w.height;
+        r.fail(field, num(side) +
+                          " m is too small for a periodic box holding a particle of radius " +
+                          num(largest) + " m (" + whose +
+                          "): a periodic box must be at least two diameters of its largest "
+                          "particle, " +
+                          num(4.0 * largest) + " m");
+    }
+    const double clearance = 2.0 * largest;
+    for (std::size_t k = 0; k < w.obstacles.size(); ++k) {
+        const Obstacle& o = w.obstacles[k];
+        const double gap = std::min({std::min(o.a.x(), o.b.x()) - o.radius,
+                                     w.width - (std::max(o.a.x(), o.b.x()) + o.radius),
+                                     std::min(o.a.y(), o.b.y()) - o.radius,
+                                     w.height - (std::max(o.a.y(), o.b.y()) + o.radius)});
+        if (gap < clearance) {
+            r.fail(element("obstacles", k),
+                   "comes within " + num(std::max(gap, 0.0)) +
+                       " m of an edge of the periodic box: obstacles do not act across the "
+                       "edges, so each must stay the largest particle's diameter (" +
+                       num(clearance) + " m) inside every edge");
+        }
+    }
+}
+
 void checkPlacement(const ValueReader& r, const Scene& s, const std::vector<Origin>& origins) {
     const WorldDef& w = s.world;
     if (w.walls) {
@@ -647,6 +713,7 @@ Scene parseScene(std::string_view text, std::string_view source,
         }
     }
     if (const json* v = ValueReader::find(root, "droppers")) readDroppers(r, *v, s);
+    if (s.world.periodic) checkPeriodic(r, s, origins);
     checkPlacement(r, s, origins);
     return s;
 }

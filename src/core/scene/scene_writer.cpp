@@ -130,12 +130,18 @@ std::string serializeScene(const Scene& s) {
                    p.inertiaFactor != kDefaultInertiaFactor || p.fixedRotation;
         });
     if (rotation) version = std::max(version, 5);
+    if (s.world.periodic) version = std::max(version, 6);
     out += ",\n  \"version\": " + std::to_string(version);
 
     const WorldDef& w = s.world;
     appendField(out, ",\n  \"world\": {\"width\": ", w.width, "world.width");
     appendField(out, ", \"height\": ", w.height, "world.height");
-    out += w.walls ? ", \"walls\": true" : ", \"walls\": false";
+    // A periodic box has no walls; its file says only that it is periodic (version 6).
+    if (w.periodic) {
+        out += ", \"periodic\": true";
+    } else {
+        out += w.walls ? ", \"walls\": true" : ", \"walls\": false";
+    }
     appendField(out, ", \"gravity\": [", w.gravity.x(), "world.gravity");
     appendField(out, ", ", w.gravity.y(), "world.gravity");
     appendField(out, "], \"restitution\": ", w.restitution, "world.restitution");

@@ -44,10 +44,15 @@ ParticleDef nextBall(const Dropper& d) {
                        .color = d.color};
 }
 
-bool spotClear(const ParticleArrays& p, const ParticleDef& ball) {
+bool spotClear(const ParticleArrays& p, const ParticleDef& ball, const periodic::Box* box) {
     const double x = ball.position.x(), y = ball.position.y();
     for (std::size_t i = 0; i < p.size(); ++i) {
-        const double dx = p.x[i] - x, dy = p.y[i] - y, reach = p.radius[i] + ball.radius;
+        double dx = p.x[i] - x, dy = p.y[i] - y;
+        if (box) {
+            dx = box->imageX(dx);
+            dy = box->imageY(dy);
+        }
+        const double reach = p.radius[i] + ball.radius;
         if (dx * dx + dy * dy < reach * reach) return false;
     }
     return true;

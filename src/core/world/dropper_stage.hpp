@@ -7,6 +7,8 @@
 #include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/particle_arrays.hpp>
 
+#include "support/periodic_box.hpp"
+
 namespace psb::detail {
 
 /// Whether the dropper's next ball is due in a step of `dt` seconds starting now (its time is
@@ -16,8 +18,10 @@ namespace psb::detail {
 /// The dropper's next ball, where and as it would be released.
 [[nodiscard]] ParticleDef nextBall(const Dropper& d);
 
-/// Whether no particle of `p` overlaps `ball`.
-[[nodiscard]] bool spotClear(const ParticleArrays& p, const ParticleDef& ball);
+/// Whether no particle of `p` overlaps `ball`; in a periodic box (`box` given) measured between
+/// nearest images.
+[[nodiscard]] bool spotClear(const ParticleArrays& p, const ParticleDef& ball,
+                             const periodic::Box* box = nullptr);
 
 /// Advances the dropper's clock over a step of `dt` seconds; `releasedBall` says whether it
 /// released a ball at the step's start, `waiting` whether one was due and had no room.

@@ -9,10 +9,12 @@
 #include <particle_sandbox/solver_settings.hpp>
 
 #include "broadphase/broad_phase_grid.hpp"
+#include "broadphase/broad_phase_periodic_grid.hpp"
 #include "broadphase/broad_phase_quadtree.hpp"
 #include "broadphase/contact_pair.hpp"
 #include "broadphase/particle_stats.hpp"
 #include "obstacles/obstacle_grid.hpp"
+#include "support/periodic_box.hpp"
 
 namespace psb {
 
@@ -23,6 +25,11 @@ struct StepContext {
     std::vector<ContactPair> pairs;
     GridBroadPhase grid;
     QuadtreeBroadPhase quadtree;
+    // A periodic box (WorldDef::periodic), set by the step: pairs are found and measured
+    // between nearest images, and the grid is the one whose cells wrap.
+    bool periodic = false;
+    periodic::Box box;
+    PeriodicGridBroadPhase periodicGrid;
     std::vector<ParticleStats> statsScratch;  ///< per-block bounds
     bool statsFresh = false;  ///< statsScratch describes the current positions (set by move)
     bool cellsFresh = false;  ///< move wrote the grid's cells for the current positions

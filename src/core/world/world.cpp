@@ -12,6 +12,7 @@
 #include "exact/stepper.hpp"
 #include "obstacles/obstacle_validate.hpp"
 #include "world/dropper_stage.hpp"
+#include "world/periodic_fit.hpp"
 #include "world/stage_timer.hpp"
 #include "world/step_context.hpp"
 #include "world/validate.hpp"
@@ -78,6 +79,11 @@ World::World(const WorldDef& def, const SolverSettings& solver)
       ctx_(std::make_unique<StepContext>()),
       threads_(hardwareThreads()) {
     require(def, solver, "World");
+    if (def_.periodic) {
+        def_.walls = false;  // joined edges have no walls
+        detail::requireObstaclesClearOfEdges(def_.obstacles, 0.0, def_.width, def_.height, "World");
+        matchUnwrapArrays();
+    }
 }
 
 World::~World() = default;
@@ -116,14 +122,60 @@ void World::setBox(double width, double height) {
     d.height = height;
     require(d, solver_, "World::setBox");
     detail::validateDroppers(droppers_, width, height, def_.walls, "World::setBox");
+    if (def_.periodic) {
+        const double r = largestRadius();
+        detail::requireFitsPeriodic(r, width, height, "World::setBox", "largest radius");
+        detail::requireObstaclesClearOfEdges(def_.obstacles, r, width, height, "World::setBox");
+    }
     changed();
     def_ = d;
 }
 
 void World::setWalls(bool enabled) {
+    if (enabled && def_.periodic) {
+        detail::fail("World::setWalls", "walls",
+                     "cannot be on in a periodic world: its edges are joined (setPeriodic(false) "
+                     "first)");
+    }
     detail::validateDroppers(droppers_, def_.width, def_.height, enabled, "World::setWalls");
     changed();
     def_.walls = enabled;
+}
+
+void World::setPeriodic(bool enabled) {
+    if (enabled == def_.periodic) return;
+    if (enabled) {
+        const double r = largestRadius();
+        detail::requireFitsPeriodic(r, def_.width, def_.height, "World::setPeriodic",
+                                    "largest radius");
+        detail::requireObstaclesClearOfEdges(def_.obstacles, r, def_.width, def_.height,
+                                             "World::setPeriodic");
+        detail::validateDroppers(droppers_, def_.width, def_.height, false, "World::setPeriodic");
+    }
+    changed();
+    def_.periodic = enabled;
+    if (enabled) def_.walls = false;
+    matchUnwrapArrays();
+}
+
+void World::matchUnwrapArrays() {
+    p_.periodic = def_.periodic;
+    if (def_.periodic) {
+        p_.unwrapX.assign(p_.size(), 0.0);
+        p_.unwrapY.assign(p_.size(), 0.0);
+    } else {
+        p_.unwrapX = {};
+        p_.unwrapY = {};
+    }
+}
+
+double World::largestRadius() const {
+    double r = 0.0;
+    for (const double ri : p_.radius)
+        r = std::max(r, ri);
+    for (const Dropper& d : droppers_)
+        r = std::max(r, d.radius);
+    return r;
 }
 
 void World::setGravity(const Vec2& gravity) {
@@ -166,6 +218,10 @@ void World::setSolver(const SolverSettings& solver) {
 
 void World::setObstacles(Obstacles obstacles) {
     detail::validateObstacles(obstacles, def_.width, def_.height, "World::setObstacles");
+    if (def_.periodic) {
+        detail::requireObstaclesClearOfEdges(obstacles, largestRadius(), def_.width, def_.height,
+                                             "World::setObstacles");
+    }
     changed();
     def_.obstacles = std::move(obstacles);
 }
@@ -173,6 +229,11 @@ void World::setObstacles(Obstacles obstacles) {
 std::size_t World::addObstacle(const Obstacle& obstacle) {
     const std::size_t index = def_.obstacles.size();
     detail::validateObstacle(obstacle, index, def_.width, def_.height, "World::addObstacle");
+    if (def_.periodic) {
+        Obstacles one{obstacle};
+        detail::requireObstaclesClearOfEdges(one, largestRadius(), def_.width, def_.height,
+                                             "World::addObstacle");
+    }
     changed();
     def_.obstacles.push_back(obstacle);
     return index;
@@ -190,11 +251,26 @@ void World::removeObstacle(std::size_t index) {
 
 void World::setDroppers(Droppers droppers) {
     detail::validateDroppers(droppers, def_.width, def_.height, def_.walls, "World::setDroppers");
+    if (def_.periodic) {
+        double r = 0.0;
+        for (const Dropper& d : droppers) {
+            detail::requireFitsPeriodic(d.radius, def_.width, def_.height, "World::setDroppers",
+                                        "dropper radius");
+            r = std::max(r, d.radius);
+        }
+        detail::requireObstaclesClearOfEdges(def_.obstacles, r, def_.width, def_.height,
+                                             "World::setDroppers");
+    }
     droppers_ = std::move(droppers);
 }
 
 ParticleId World::add(const ParticleDef& d) {
     validateParticle(d, "World::add");
+    if (def_.periodic) {
+        detail::requireFitsPeriodic(d.radius, def_.width, def_.height, "World::add", "radius");
+        detail::requireObstaclesClearOfEdges(def_.obstacles, d.radius, def_.width, def_.height,
+                                             "World::add");
+    }
     if (p_.size() >= UINT32_MAX - 1)
         detail::fail("World::add", "particle count", "is at its limit");
     changed();
@@ -216,6 +292,10 @@ ParticleId World::add(const ParticleDef& d) {
         p_.omega.push_back(d.angularVelocity);
         p_.inertiaFactor.push_back(d.inertiaFactor);
         p_.fixedRotation.push_back(d.fixedRotation ? 1 : 0);
+    }
+    if (p_.periodic) {
+        p_.unwrapX.push_back(0.0);
+        p_.unwrapY.push_back(0.0);
     }
     return id;
 }
@@ -254,6 +334,10 @@ bool World::remove(ParticleId id) {
         swapRemove(p_.inertiaFactor, i);
         swapRemove(p_.fixedRotation, i);
     }
+    if (p_.periodic) {
+        swapRemove(p_.unwrapX, i);
+        swapRemove(p_.unwrapY, i);
+    }
     return true;
 }
 
@@ -261,6 +345,7 @@ void World::clear() {
     changed();
     ids_.clear();
     p_ = ParticleArrays{};
+    matchUnwrapArrays();
     stepsUntilReorder_ = 0;
 }
 
@@ -295,6 +380,10 @@ void World::reserve(std::size_t n) {
         p_.inertiaFactor.reserve(n);
         p_.fixedRotation.reserve(n);
     }
+    if (p_.periodic) {
+        p_.unwrapX.reserve(n);
+        p_.unwrapY.reserve(n);
+    }
     ids_.reserve(n);
 }
 
@@ -304,7 +393,8 @@ std::size_t World::memoryBytes() const {
                           p_.invMass.capacity() + p_.radius.capacity() + p_.mass.capacity());
     bytes += sizeof(Color) * p_.color.capacity() + sizeof(ParticleId) * p_.id.capacity();
     bytes +=
-        sizeof(double) * (p_.angle.capacity() + p_.omega.capacity() + p_.inertiaFactor.capacity()) +
+        sizeof(double) * (p_.angle.capacity() + p_.omega.capacity() + p_.inertiaFactor.capacity() +
+                          p_.unwrapX.capacity() + p_.unwrapY.capacity()) +
         p_.fixedRotation.capacity();
     bytes += ids_.memoryBytes();
     if (ctx_) {
@@ -331,7 +421,8 @@ std::size_t World::stateBytes() const {
         sizeof(double) * (p_.x.size() + p_.y.size() + p_.vx.size() + p_.vy.size() +
                           p_.invMass.size() + p_.radius.size() + p_.mass.size()) +
         sizeof(Color) * p_.color.size() + sizeof(ParticleId) * p_.id.size() +
-        sizeof(double) * (p_.angle.size() + p_.omega.size() + p_.inertiaFactor.size()) +
+        sizeof(double) * (p_.angle.size() + p_.omega.size() + p_.inertiaFactor.size() +
+                          p_.unwrapX.size() + p_.unwrapY.size()) +
         p_.fixedRotation.size() + ids_.memoryBytes();
     if (exact_) bytes += exact_->memoryBytes();
     return bytes;
@@ -376,6 +467,13 @@ Particle World::get(ParticleId id) const {
     return out;
 }
 
+Vec2 World::unwrappedPosition(ParticleId id) const {
+    const std::size_t i = indexOrThrow(id, "World::unwrappedPosition");
+    settle();
+    if (!p_.periodic) return {p_.x[i], p_.y[i]};
+    return {p_.x[i] + p_.unwrapX[i], p_.y[i] + p_.unwrapY[i]};
+}
+
 void World::setPosition(ParticleId id, const Vec2& position) {
     requireFinite(position, "World::setPosition", "position");
     const std::size_t i = indexOrThrow(id, "World::setPosition");
@@ -404,6 +502,11 @@ void World::setMass(ParticleId id, double mass) {
 void World::setRadius(ParticleId id, double radius) {
     requirePositive(radius, "World::setRadius", "radius");
     const std::size_t i = indexOrThrow(id, "World::setRadius");
+    if (def_.periodic) {
+        detail::requireFitsPeriodic(radius, def_.width, def_.height, "World::setRadius", "radius");
+        detail::requireObstaclesClearOfEdges(def_.obstacles, radius, def_.width, def_.height,
+                                             "World::setRadius");
+    }
     changed();
     p_.radius[i] = radius;
 }
@@ -525,7 +628,8 @@ void World::releaseBalls(double dt) {
                 const ParticleDef ball = detail::nextBall(d);
                 // A new particle is a change to the world: in the exact mode the next step
                 // rebuilds its events, keeping asleep what sleeps away from the new ball.
-                released = detail::spotClear(p_, ball);
+                const periodic::Box box{def_.width, def_.height};
+                released = detail::spotClear(p_, ball, def_.periodic ? &box : nullptr);
                 waiting = !released;
                 if (released) add(ball);
             }

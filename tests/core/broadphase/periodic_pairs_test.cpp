@@ -1,0 +1,112 @@
+// In a periodic box every broadphase finds exactly the pairs a brute-force nearest-image test
+// finds, across the edges and the corners too, in the same ascending order.
+
+#include <gtest/gtest.h>
+
+#include <particle_sandbox/solver_settings.hpp>
+
+#include "broadphase/broad_phase_all_pairs.hpp"
+#include "discrete/discrete_step.hpp"
+
+namespace psb {
+namespace {
+
+struct Lcg {
+    std::uint64_t s;
+    double next() {
+        s = s * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<double>(s >> 11) * 0x1.0p-53;
+    }
+};
+
+/// n discs in a box, their centres up to `spill` outside it (as between the move and wrap
+/// stages), radii from r to 2r.
+ParticleArrays scatter(std::size_t n, double w, double h, double r, double spill,
+                       std::uint64_t seed) {
+    ParticleArrays p;
+    Lcg rng{seed};
+    for (std::size_t i = 0; i < n; ++i) {
+        p.x.push_back(-spill + (w + 2.0 * spill) * rng.next());
+        p.y.push_back(-spill + (h + 2.0 * spill) * rng.next());
+        p.radius.push_back(r * (1.0 + rng.next()));
+    }
+    return p;
+}
+
+std::vector<ContactPair> bruteForce(const ParticleArrays& p, const periodic::Box& box) {
+    std::vector<ContactPair> out;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+        for (std::uint32_t j = i + 1; j < p.size(); ++j) {
+            double dx = p.x[j] - p.x[i], dy = p.y[j] - p.y[i];
+            // Every image within one box, not only the formula's nearest one.
+            double best = INFINITY;
+            for (int sx = -2; sx <= 2; ++sx) {
+                for (int sy = -2; sy <= 2; ++sy)
+                    best = std::min(best, std::hypot(dx + sx * box.width, dy + sy * box.height));
+            }
+            if (best < p.radius[i] + p.radius[j]) out.push_back({i, j});
+        }
+    }
+    return out;
+}
+
+std::vector<ContactPair> found(BroadPhaseKind kind, const ParticleArrays& p,
+                               const periodic::Box& box, int threads) {
+    StepContext ctx;
+    ctx.periodic = true;
+    ctx.box = box;
+    ctx.broadPhase = kind;
+    ctx.threads = threads;
+    stages::findPairs(p, ctx);
+    return ctx.pairs;
+}
+
+TEST(PeriodicPairs, EveryBroadphaseFindsTheNearestImagePairs) {
+    std::size_t across = 0, total = 0;
+    for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+        const periodic::Box box{40.0 + seed, 30.0};
+        const ParticleArrays p = scatter(300 + 40 * seed, box.width, box.height, 0.7, 0.3, seed);
+        const std::vector<ContactPair> want = bruteForce(p, box);
+        total += want.size();
+        for (const ContactPair& c : want)
+            across += std::abs(p.x[c.j] - p.x[c.i]) > box.width / 2 ||
+                      std::abs(p.y[c.j] - p.y[c.i]) > box.height / 2;
+        for (const BroadPhaseKind k :
+             {BroadPhaseKind::AllPairs, BroadPhaseKind::Grid, BroadPhaseKind::Quadtree}) {
+            EXPECT_EQ(found(k, p, box, 1), want) << toString(k) << " seed " << seed;
+        }
+        EXPECT_EQ(found(BroadPhaseKind::Grid, p, box, 2), want) << "two threads, seed " << seed;
+    }
+    EXPECT_GT(total, 200u);
+    EXPECT_GT(across, 10u) << "the scenes must have pairs across the edges";
+}
+
+TEST(PeriodicPairs, ABoxOneOrTwoCellsAcrossFindsEachPairOnce) {
+    // Discs of radius 1 in boxes 4 to 7 m across: the grid's neighbours repeat.
+    for (const double side : {4.0, 5.0, 7.0}) {
+        const periodic::Box box{side, side + 1.0};
+        const ParticleArrays p = scatter(12, box.width, box.height, 0.5, 0.0, 5);
+        const std::vector<ContactPair> want = bruteForce(p, box);
+        for (const BroadPhaseKind k :
+             {BroadPhaseKind::AllPairs, BroadPhaseKind::Grid, BroadPhaseKind::Quadtree}) {
+            EXPECT_EQ(found(k, p, box, 1), want) << toString(k) << " side " << side;
+        }
+    }
+}
+
+TEST(PeriodicPairs, APairAcrossACornerIsFound) {
+    ParticleArrays p;
+    p.x = {0.2, 9.9};
+    p.y = {0.1, 9.8};
+    p.radius = {0.3, 0.3};
+    const periodic::Box box{10.0, 10.0};
+    for (const BroadPhaseKind k :
+         {BroadPhaseKind::AllPairs, BroadPhaseKind::Grid, BroadPhaseKind::Quadtree}) {
+        const std::vector<ContactPair> pairs = found(k, p, box, 1);
+        ASSERT_EQ(pairs.size(), 1u) << toString(k);
+        EXPECT_EQ(pairs[0], (ContactPair{0, 1}));
+    }
+}
+
+}  // namespace
+}  // namespace psb
