@@ -101,7 +101,7 @@ struct ObservablesSettings {
     double pairBinWidth = 0.0;
     /// MSD and VACF up to this many state samples of lag; 0 for none.
     std::uint32_t maxLag = 0;
-    /// A new time origin every this many state samples; 0: maxLag / 4 (at least 1).
+    /// A new time origin every this many state samples; 0: maxLag / 2 (at least 1).
     std::uint32_t originEvery = 0;
 };
 

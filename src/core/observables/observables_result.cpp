@@ -197,6 +197,12 @@ ObservablesResult ObservablesWindow::result() const {
                               std::to_string(r.vacf[1] / r.vacf[0]) +
                               "): D from the VACF's trapezoids is coarse; sample more often");
         }
+        if ((r.diffusionMsd.valid() && !r.diffusionMsd.hasError()) ||
+            (r.diffusionVacf.valid() && !r.diffusionVacf.hasError())) {
+            r.notes.push_back(
+                "D has no error: too few blocks span every lag (a block must be "
+                "longer than the time between origins); run longer");
+        }
         if (total.time < 5.0 * lags * dt) {
             r.notes.push_back(
                 "the window is shorter than five times the longest lag: few "

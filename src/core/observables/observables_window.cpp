@@ -87,7 +87,7 @@ void ObservablesWindow::open(World& world) {
         s->pairs.configure(range, width, def.width, def.height);
     }
     const std::uint32_t every =
-        settings_.originEvery > 0 ? settings_.originEvery : std::max(1u, settings_.maxLag / 4);
+        settings_.originEvery > 0 ? settings_.originEvery : std::max(1u, settings_.maxLag / 2);
     s->correlation.configure(s->n, settings_.maxLag, every);
     state_ = std::move(s);
     world.setMeasureVirial(true);
@@ -150,7 +150,7 @@ void ObservablesWindow::readState(const World& world) {
         observables::displacementPosition(world, p, i, s.x[at], s.y[at]);
         s.vx[at] = p.vx[i];
         s.vy[at] = p.vy[i];
-        speeds += std::hypot(p.vx[i], p.vy[i]);
+        speeds += std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);  // hypot is 5× slower
     }
     if (!same) {
         if (!s.particlesChanged) {
