@@ -64,6 +64,11 @@ struct StepCounters {
     /// unless the caller sets one). Such a step ended at its first event left: its state is
     /// exact, but at an earlier time than asked (World::time() says which).
     std::uint64_t cutShort = 0;
+    /// Σ r_ij·J_ij over the pair collisions, kg·m²/s: r_ij the centre of i minus that of j at
+    /// contact, J_ij the impulse j gave i (each pair once). Counted only while the world measures
+    /// it (World::setMeasureVirial; the observables turn it on), else 0. The pressure's collision
+    /// virial (observables.hpp).
+    double pairVirial = 0.0;
 };
 
 }  // namespace psb

@@ -232,6 +232,13 @@ class World {
     /// next exact step rebuilds the events from the arrays, as after any edit.
     void dropEventState();
 
+    /// Whether steps add each pair collision's r_ij·J_ij to StepCounters::pairVirial (the
+    /// observables window turns it on while open, observables.hpp). Off by default: then a step
+    /// does exactly what it did before the counter existed. On or off, the motion is the same.
+    /// Kept by copies.
+    void setMeasureVirial(bool on) { measureVirial_ = on; }
+    [[nodiscard]] bool measuringVirial() const { return measureVirial_; }
+
     [[nodiscard]] const StepProfile& profile() const { return profile_; }
     [[nodiscard]] const StepCounters& counters() const { return counters_; }
     void resetCounters() { counters_ = {}; }
@@ -267,6 +274,7 @@ class World {
     std::optional<BroadPhaseKind> broadPhaseUsed_;
     double time_ = 0.0;
     std::uint64_t eventBudget_ = 0;  ///< setExactEventBudget's; 0: none
+    bool measureVirial_ = false;     ///< setMeasureVirial's
     mutable StepProfile profile_;    ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
     std::optional<CollisionLog> collisionLog_;  ///< recording when set

@@ -5,6 +5,7 @@
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 
+#include "observables_csv.hpp"
 #include "output_check.hpp"
 #include "progress_bar.hpp"
 #include "report.hpp"
@@ -50,6 +51,12 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
         if (!options.track.empty()) {
             writeFileAtomically(trackPath(*options.timeseries),
                                 trajectoryTable(track, csv::Separator::Comma, report.rotation));
+        }
+        if (report.observables) {
+            if (options.gr)
+                writeFileAtomically(*options.gr, pairDistributionCsv(*report.observables));
+            if (options.msd) writeFileAtomically(*options.msd, msdCsv(*report.observables));
+            if (options.vacf) writeFileAtomically(*options.vacf, vacfCsv(*report.observables));
         }
         if (options.save) {
             // The frame length the run stepped by (--dt's, if given) goes with the state.

@@ -27,6 +27,9 @@ std::vector<Output> outputsOf(const RunOptions& o) {
         out.push_back({"--timeseries", *o.timeseries});
         if (!o.track.empty()) out.push_back({"--track", trackPath(*o.timeseries)});
     }
+    if (o.gr) out.push_back({"--gr", *o.gr});
+    if (o.msd) out.push_back({"--msd", *o.msd});
+    if (o.vacf) out.push_back({"--vacf", *o.vacf});
     return out;
 }
 

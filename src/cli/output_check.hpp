@@ -13,12 +13,12 @@ namespace psb::cli {
 
 /// A file the run will write, and the option that asked for it.
 struct Output {
-    std::string option;  ///< "--report", "--save", "--timeseries" or "--track"
+    std::string option;  ///< "--report", "--save", "--timeseries", "--track", "--gr", ...
     std::filesystem::path path;
 };
 
 /// The files `options` asks for, in the order of --help: --report (unless it is '-'), --save,
-/// --timeseries, and --track's file beside the time series (trackPath).
+/// --timeseries, --track's file beside the time series (trackPath), --gr, --msd, --vacf.
 [[nodiscard]] std::vector<Output> outputsOf(const RunOptions& options);
 
 /// An output that cannot be written; what() names the option, the path and why.

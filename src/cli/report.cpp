@@ -1,8 +1,53 @@
 #include "report.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace psb::cli {
+namespace {
+
+/// The report's `observables` object: each measured value as {value, error} (error only where
+/// the window gave one), what theory predicts beside them, and the window's notes.
+nlohmann::ordered_json observablesJson(const ObservablesResult& o) {
+    nlohmann::ordered_json j;
+    const auto put = [&j](const char* name, const Measured& m) {
+        if (!m.valid()) return;
+        nlohmann::ordered_json v;
+        v["value"] = m.value;
+        if (m.hasError()) v["error"] = m.error;
+        j[name] = v;
+    };
+    put("temperature", o.temperature);
+    put("rotational_temperature", o.rotationalTemperature);
+    put("pressure_virial", o.pressureVirial);
+    put("pressure_walls", o.pressureWalls);
+    put("compressibility_factor", o.compressibilityFactor);
+    put("contact_value", o.contactValue);
+    put("collision_rate", o.collisionRate);
+    put("mean_free_path", o.meanFreePath);
+    put("diffusion_msd", o.diffusionMsd);
+    put("diffusion_vacf", o.diffusionVacf);
+    j["packing_fraction"] = o.packingFraction;
+    j["area"] = o.area;
+    j["perimeter"] = o.perimeter;
+    j["blocks"] = o.blocks;
+    j["block_seconds"] = o.blockDuration;
+    nlohmann::ordered_json theory;
+    const auto theoryPut = [&theory](const char* name, double v) {
+        if (std::isfinite(v)) theory[name] = v;
+    };
+    theoryPut("henderson_compressibility_factor", o.hendersonZ);
+    theoryPut("henderson_contact_value", o.hendersonContact);
+    theoryPut("enskog_collision_rate", o.enskogCollisionRate);
+    theoryPut("enskog_mean_free_path", o.enskogMeanFreePath);
+    theoryPut("enskog_diffusion", o.enskogDiffusion);
+    if (!theory.empty()) j["theory"] = theory;
+    j["notes"] = o.notes;
+    return j;
+}
+
+}  // namespace
 
 std::string reportJson(const RunReport& r) {
     // nlohmann::ordered_json keeps the fields in the order a reader expects them.
@@ -16,6 +61,7 @@ std::string reportJson(const RunReport& r) {
     j["particles"] = r.particles;
     j["steps"] = r.steps;
     j["sim_time"] = r.simTime;
+    if (r.warmup > 0.0) j["warmup"] = r.warmup;
     j["wall_seconds"] = r.wallSeconds;
     j["collisions"] = r.collisions;
     j["wall_collisions"] = r.wallCollisions;
@@ -74,6 +120,7 @@ std::string reportJson(const RunReport& r) {
             droppers.push_back({{"released", d.released}, {"left", d.left}});
         j["droppers"] = droppers;
     }
+    if (r.observables) j["observables"] = observablesJson(*r.observables);
     return j.dump(2) + "\n";
 }
 

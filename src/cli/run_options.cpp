@@ -28,8 +28,11 @@ constexpr const char* kFooter =
     "potential_energy and mechanical_energy {initial, final} (height measured from the\n"
     "floor), momentum {initial, final}, angular_momentum {initial, final} (orbital + spin,\n"
     "about the top-left corner), wall_impulse, max_overlap, escaped; with bins, bins\n"
-    "{counts, ..., chi_square}; with ball droppers, droppers [{released, left}]. See\n"
-    "docs/scenes.md.\n"
+    "{counts, ..., chi_square}; with ball droppers, droppers [{released, left}]; with\n"
+    "--warmup, warmup (seconds); with --observables, observables {temperature,\n"
+    "pressure_virial, pressure_walls, compressibility_factor, collision_rate,\n"
+    "mean_free_path, diffusion_msd, diffusion_vacf: each {value, error}, ..., notes}. See\n"
+    "docs/scenes.md and docs/observables.md.\n"
     "--timeseries columns: time_s, kinetic_energy_J, momentum_x_kg_m_per_s,\n"
     "momentum_y_kg_m_per_s, com_x_m, com_y_m, collisions, collision_rate_per_s; with gravity\n"
     "also potential_energy_J, mechanical_energy_J; with discs that turn also\n"
@@ -119,7 +122,8 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                          "Print the version (and git revision) and exit");
 
     std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
-    std::string timeseries, timeseriesEvery, track, seed;
+    std::string timeseries, timeseriesEvery, track, seed, warmup, gr, msd, vacf;
+    bool observables = false;
     std::vector<std::string> sets;
     bool progress = false;
     app.add_option("SCENE", scene, "Scene file (JSON, see docs/scenes.md)")->required();
@@ -162,6 +166,25 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                    "row, to NAME-track.csv beside it (a particle's number is the app's: 1 for "
                    "the first in the scene's particle list)")
         ->type_name("ID,ID,...");
+    app.add_option("--warmup", warmup,
+                   "Run this many simulated seconds first (>= 0), then the --duration that is "
+                   "measured and reported")
+        ->type_name("SECONDS");
+    app.add_flag("--observables", observables,
+                 "Measure temperature, pressures, Z, collision rate, mean free path and "
+                 "diffusion with their errors into the report's \"observables\" object");
+    app.add_option("--gr", gr,
+                   "Write the radial distribution function as CSV (r_m,g); "
+                   "implies --observables")
+        ->type_name("PATH");
+    app.add_option("--msd", msd,
+                   "Write the mean-squared displacement against lag time as CSV "
+                   "(t_s,msd_m2); implies --observables")
+        ->type_name("PATH");
+    app.add_option("--vacf", vacf,
+                   "Write the velocity autocorrelation against lag time as CSV "
+                   "(t_s,vacf_m2_per_s2); implies --observables")
+        ->type_name("PATH");
     app.add_flag("--progress", progress,
                  "Show a progress bar on stderr (only when stderr is a terminal; long runs "
                  "show one anyway)");
@@ -241,6 +264,20 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
         o.track = parseTrackList(track);
         if (!o.timeseries) throw UsageError("--track: needs --timeseries PATH");
     }
+    if (!warmup.empty()) {
+        o.warmup = parseFiniteNumber(warmup, "--warmup");
+        if (o.warmup < 0.0) throw UsageError("--warmup: must be >= 0, got '" + warmup + "'");
+    }
+    const auto path = [&app](const std::string& option,
+                             const std::string& value) -> std::optional<std::filesystem::path> {
+        if (app.count(option) == 0) return std::nullopt;
+        if (value.empty()) throw UsageError(option + ": needs a path");
+        return std::filesystem::path(value);
+    };
+    o.gr = path("--gr", gr);
+    o.msd = path("--msd", msd);
+    o.vacf = path("--vacf", vacf);
+    o.observables = observables || o.gr || o.msd || o.vacf;
     o.progress = progress;
     return o;
 }

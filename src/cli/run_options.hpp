@@ -36,6 +36,15 @@ struct RunOptions {
     /// empty: none.
     std::vector<std::uint32_t> track;
     bool progress = false;
+    /// --warmup: simulated seconds run before the measured --duration (finite, >= 0); the
+    /// report's counts and energies cover the measured part only.
+    double warmup = 0.0;
+    /// --observables: measure the observables over the run (observables.hpp) into the report's
+    /// `observables` object; --gr, --msd and --vacf imply it.
+    bool observables = false;
+    std::optional<std::filesystem::path> gr;    ///< --gr: g(r) as CSV (r_m,g)
+    std::optional<std::filesystem::path> msd;   ///< --msd: t_s,msd_m2
+    std::optional<std::filesystem::path> vacf;  ///< --vacf: t_s,vacf_m2_per_s2
 };
 
 /// A command line that cannot be run; what() says which option and why.

@@ -77,11 +77,22 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
     world.setThreads(options.threads);
 
     RunReport r;
+    const std::uint64_t warmupSteps = stepsFor(options.warmup, s.dt);
+    const std::uint64_t measuredSteps = stepsFor(options.duration, s.dt);
+    if (warmupSteps > 0) {
+        // Run, then measure: what the report counts starts after the warm-up.
+        for (std::uint64_t k = 0; k < warmupSteps; ++k) {
+            world.step(s.dt);
+            if (progress) progress(k + 1, warmupSteps + measuredSteps);
+        }
+        world.resetCounters();
+        r.warmup = world.time();
+    }
     r.solver = s.solver;
     r.dt = s.dt;
     r.threads = options.threads;
     r.particles = world.size();
-    r.steps = stepsFor(options.duration, s.dt);
+    r.steps = measuredSteps;
     r.kineticEnergyInitial = kineticEnergy(world);
     r.gravity = !world.def().gravity.isZero();
     r.potentialEnergyInitial = potentialEnergy(world);
@@ -117,20 +128,27 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
         track->record(world);
     }
 
+    std::optional<ObservablesWindow> window;
+    if (options.observables) {
+        window.emplace(suggestedObservablesSettings(world, s.dt, true, options.gr.has_value()));
+        window->open(world);
+    }
     const auto start = std::chrono::steady_clock::now();
     for (std::uint64_t k = 0; k < r.steps; ++k) {
         world.step(s.dt);
+        if (window) window->sample(world);
         if ((k + 1) % every == 0 || k + 1 == r.steps) {
             if (series != nullptr) series->record(world);
             if (track != nullptr) track->record(world);
         }
-        if (progress) progress(k + 1, r.steps);
+        if (progress) progress(warmupSteps + k + 1, warmupSteps + r.steps);
     }
+    if (window) r.observables = window->close(world);
     r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     r.broadphaseUsed = world.broadPhaseInUse();  // after the run: what the steps used
     const StepCounters& c = world.counters();
-    r.simTime = world.time();
+    r.simTime = world.time() - r.warmup;
     r.collisions = c.collisions;
     r.wallCollisions = c.wallCollisions;
     r.obstacles = world.obstacles().size();

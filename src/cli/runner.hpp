@@ -8,6 +8,7 @@
 
 #include <particle_sandbox/bins.hpp>
 #include <particle_sandbox/math.hpp>
+#include <particle_sandbox/observables.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/time_series.hpp>
 #include <particle_sandbox/trajectory.hpp>
@@ -57,6 +58,10 @@ struct RunReport {
         std::uint64_t left = 0;
     };
     std::vector<DropperCount> droppers;
+    /// --warmup's simulated seconds, run before everything above was counted (0: none).
+    double warmup = 0.0;
+    /// --observables: what the window over the measured part found.
+    std::optional<ObservablesResult> observables;
 };
 
 /// The scene's solver settings with the command line's overrides applied. Throws UsageError
@@ -69,8 +74,10 @@ struct RunReport {
 /// Called after each step with (steps done, steps in all).
 using ProgressFn = std::function<void(std::uint64_t, std::uint64_t)>;
 
-/// Runs `scene` for stepsFor(options.duration, dt) steps of dt = effectiveDt(scene, options)
-/// and returns the report. `world`
+/// Runs `scene` for stepsFor(options.warmup, dt) steps of warm-up, then for
+/// stepsFor(options.duration, dt) measured steps of dt = effectiveDt(scene, options), and
+/// returns the report of the measured steps (with options.observables, the observables window
+/// opened after the warm-up and closed at the end, sampled after every step). `world`
 /// receives the final state (for --save). When `series` is given it is replaced by one sized
 /// for the whole run and receives the initial state, every options.timeseriesEvery-th step and
 /// the final state; a run that would need more than kMaxTimeSeriesRows samples throws

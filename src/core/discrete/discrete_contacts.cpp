@@ -50,10 +50,11 @@ inline void prefetchPair(const ParticleArrays& p, const std::vector<ContactPair>
     }
 }
 
-// kRecord: the world records collisions (ctx.collisionLog); a separate instance, so that a
-// world that records none runs exactly the loop it ran before recording existed. kRough: the
-// particles turn and there is friction (contact.hpp's Rough family), likewise separate. kPeriodic:
-// a periodic box, pairs measured between nearest images.
+// kRecord: the world records collisions (ctx.collisionLog) or measures the pair virial
+// (ctx.measureVirial); a separate instance, so that a world that does neither runs exactly the
+// loop it ran before either existed. kRough: the particles turn and there is friction
+// (contact.hpp's Rough family), likewise separate. kPeriodic: a periodic box, pairs measured
+// between nearest images.
 template <bool kFriction, bool kRough, bool kRecord, bool kPeriodic = false>
 void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
                  StepCounters& counters) {
@@ -82,9 +83,19 @@ void resolveImpl(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
         if (hit) {
             ++counters.collisions;
             if constexpr (kRecord) {
-                ctx.collisionLog->add(pairCollision(
-                    ctx.collisionTime, p.id[i], p.id[j], iBefore, Vec2(p.vx[i], p.vy[i]), jBefore,
-                    Vec2(p.vx[j], p.vy[j]), p.invMass[i], p.mass[i], p.mass[j]));
+                if (ctx.collisionLog) {
+                    ctx.collisionLog->add(pairCollision(
+                        ctx.collisionTime, p.id[i], p.id[j], iBefore, Vec2(p.vx[i], p.vy[i]),
+                        jBefore, Vec2(p.vx[j], p.vy[j]), p.invMass[i], p.mass[i], p.mass[j]));
+                }
+                if (ctx.measureVirial) {
+                    // r_ij·J_ij with r_ij = −d n (the positions the stage found, overlapping)
+                    // and J_ij = m_i Δv_i (a held i: what j received, reversed).
+                    const Vec2 impulse =
+                        p.invMass[i] > 0.0 ? Vec2(p.mass[i] * (Vec2(p.vx[i], p.vy[i]) - iBefore))
+                                           : Vec2(-p.mass[j] * (Vec2(p.vx[j], p.vy[j]) - jBefore));
+                    counters.pairVirial -= d * (n.x * impulse.x() + n.y * impulse.y());
+                }
             }
         }
     }
@@ -116,7 +127,7 @@ void separateImpl(ParticleArrays& p, const StepContext& ctx) {
 /// A periodic box's resolve: every combination of the laws, records kept or not.
 void resolvePeriodic(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
                      StepCounters& counters) {
-    const bool record = ctx.collisionLog != nullptr;
+    const bool record = ctx.collisionLog != nullptr || ctx.measureVirial;
     if (def.friction > 0.0 && p.rotation) {
         record ? resolveImpl<true, true, true, true>(p, def, ctx, counters)
                : resolveImpl<true, true, false, true>(p, def, ctx, counters);
@@ -137,7 +148,7 @@ void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
         resolvePeriodic(p, def, ctx, counters);
         return;
     }
-    const bool record = ctx.collisionLog != nullptr;
+    const bool record = ctx.collisionLog != nullptr || ctx.measureVirial;
     if (def.friction > 0.0 && p.rotation) {
         record ? resolveImpl<true, true, true>(p, def, ctx, counters)
                : resolveImpl<true, true, false>(p, def, ctx, counters);

@@ -155,6 +155,9 @@ class ExactStepper {
     /// `worldTime` is World::time() at its start, the clock the records' times are on.
     void record(CollisionLog* log, double worldTime) { recorder_.setWorldLog(log, worldTime); }
 
+    /// Whether the next steps add each pair collision's r_ij·J_ij to StepCounters::pairVirial.
+    void measureVirial(bool on) { virial_ = on; }
+
     /// Bytes held by the event state (per-particle records, every level's cells, the queue,
     /// placed overlaps): what a copy of a world in this mode carries besides its own arrays.
     /// Small bookkeeping vectors are left out.
@@ -285,6 +288,7 @@ class ExactStepper {
     Slides slides_;            // sliding contacts (gravity with obstacles or rough contacts)
     Rolls rolls_;              // rotations (a world that keeps rotation); rough contacts
     JamGuard jams_;
+    bool virial_ = false;         // measureVirial's: not state, the world sets it before each step
     CollisionRecorder recorder_;  // where resolved collisions go (setLog, record)
 
     // --- the loop's bookkeeping ----------------------------------------------------------------

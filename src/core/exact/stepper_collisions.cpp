@@ -155,6 +155,16 @@ void ExactStepper::handlePair(std::uint32_t i, const Event& ev, StepCounters& co
         if (!bStays) ++b.count;
         if (b.flags & kHeld) jams_.countHeldHit(i, a, cold_[i]);
         if (a.flags & kHeld) jams_.countHeldHit(j, b, cold_[j]);
+        if (virial_) {
+            // The impulse on a: m_a Δv_a, or, when a took less than the contact gave (held,
+            // pinned, staying put), what b received, reversed. r_ab = −(dx, dy).
+            const bool aFree = wi > 0.0 && !cold_[i].pinX && !cold_[i].pinY;
+            const double jx =
+                aFree ? cold_[i].m * (a.vx - aBefore.x()) : -cold_[j].m * (b.vx - bBefore.x());
+            const double jy =
+                aFree ? cold_[i].m * (a.vy - aBefore.y()) : -cold_[j].m * (b.vy - bBefore.y());
+            counters.pairVirial -= dx * jx + dy * jy;
+        }
         if (recorder_.on()) {
             recorder_.add({ev.time, order_[i], order_[j]}, [&](double t) {
                 // A pinned a's momentum changes by less than the contact's impulse (the walls

@@ -20,6 +20,7 @@
 #include <particle_sandbox/csv.hpp>
 #include <particle_sandbox/detail/nearest_name.hpp>
 #include <particle_sandbox/error.hpp>
+#include <particle_sandbox/hard_disc_theory.hpp>
 #include <particle_sandbox/scene.hpp>
 #include <particle_sandbox/validation.hpp>
 
@@ -444,13 +445,56 @@ void readDroppers(const ValueReader& r, const json& j, Scene& s) {
     }
 }
 
+/// A generate block's `packing_fraction`: the box (its shape kept) sized so that the block's
+/// `count` discs cover that fraction of it. Read before anything is checked against the box.
+void sizeBoxForPacking(const ValueReader& r, const json& root, WorldDef& world) {
+    const json* g = ValueReader::find(root, "generate");
+    if (g == nullptr) return;
+    const bool many = g->is_array();
+    for (std::size_t k = 0; many && k < g->size(); ++k) {
+        if ((*g)[k].is_object() && ValueReader::find((*g)[k], "packing_fraction")) {
+            r.fail(member(element("generate", k), "packing_fraction"),
+                   "sizes the box, so it needs a scene with one generate block, not an array");
+        }
+    }
+    if (many || !g->is_object()) return;
+    const json* v = ValueReader::find(*g, "packing_fraction");
+    if (v == nullptr) return;
+    const std::string path = "generate.packing_fraction";
+    const double phi = r.number(*v, path);
+    if (!(phi > 0.0) || phi >= hard_discs::kClosePacking) {
+        r.fail(path, "must be above 0 and below " + num(hard_discs::kClosePacking) +
+                         ", the close packing of equal discs (hexagonal); got " + num(phi));
+    }
+    if (phi > kMaxPackingFraction) {
+        r.fail(path, num(phi) + " is above " + num(kMaxPackingFraction) +
+                         " (π/4), the densest a generate block's square lattice places discs");
+    }
+    for (const char* other : {"packing", "region"}) {
+        if (ValueReader::find(*g, other)) {
+            r.fail(path, std::string("sizes the box: give it without '") + other + "'");
+        }
+    }
+    const json* count = ValueReader::find(*g, "count");
+    if (count == nullptr) r.fail(path, "needs 'count': the box is sized for that many discs");
+    const auto n = static_cast<double>(
+        r.integer(*count, "generate.count", 1, static_cast<std::int64_t>(kMaxSceneParticles)));
+    const double radius = r.positive(r.require(*g, "generate", "radius"), "generate.radius");
+    // Area n π r² / φ, the box's aspect ratio kept.
+    const double area = n * std::numbers::pi * radius * radius / phi;
+    const double scale = std::sqrt(area / (world.width * world.height));
+    if (!(std::isfinite(scale) && scale > 0.0)) r.fail(path, "gives a box of no finite size");
+    world.width *= scale;
+    world.height *= scale;
+}
+
 /// Reads one generate block and appends its particles.
 void readGenerate(const ValueReader& r, const json& j, const std::string& path,
                   const WorldDef& world, int version, std::vector<ParticleDef>& out,
                   std::vector<Origin>& origins) {
     r.object(j, path,
-             {"count", "packing", "radius", "mass", "region", "temperature", "speed", "color",
-              "seed", "fixed_rotation"});
+             {"count", "packing", "packing_fraction", "radius", "mass", "region", "temperature",
+              "speed", "color", "seed", "fixed_rotation"});
     detail::GenerateSpec spec;
     spec.radius = r.positive(r.require(j, path, "radius"), member(path, "radius"));
     if (const json* v = ValueReader::find(j, "mass")) spec.mass = r.mass(*v, member(path, "mass"));
@@ -676,6 +720,7 @@ Scene parseScene(std::string_view text, std::string_view source,
         s.allowOverlaps = r.boolean(*v, "allow_overlaps");
     }
     if (const json* v = ValueReader::find(root, "world")) readWorld(r, *v, s.world, s.version);
+    sizeBoxForPacking(r, root, s.world);
     if (const json* v = ValueReader::find(root, "solver")) readSolver(r, *v, s.solver, s.dt);
     if (const json* v = ValueReader::find(root, "obstacles")) {
         readObstacles(r, *v, s.version, s.world);

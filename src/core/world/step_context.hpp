@@ -52,6 +52,8 @@ struct StepContext {
     // Recording collisions (collision_log.hpp): null when the world records none, and then the
     // stages do exactly what they do without it.
     CollisionLog* collisionLog = nullptr;
+    /// Add each pair collision's r_ij·J_ij to StepCounters::pairVirial (World::setMeasureVirial).
+    bool measureVirial = false;
     double stepStart = 0.0;      ///< World::time() when the step began, seconds
     double collisionTime = 0.0;  ///< the end of the substep being run, seconds
     std::vector<std::vector<Collision>> collisionScratch;  ///< per block: walls and obstacles

@@ -105,6 +105,7 @@ World::World(const World& other)
       broadPhaseUsed_(other.broadPhaseUsed_),
       time_(other.time_),
       eventBudget_(other.eventBudget_),
+      measureVirial_(other.measureVirial_),
       profile_(other.profile_),
       counters_(other.counters_),
       collisionLog_(other.collisionLog_) {
@@ -584,6 +585,7 @@ double World::step(double dt) {
     ctx_->threads = threads_;
     ctx_->broadPhase = solver_.broadphase;
     ctx_->collisionLog = collisionLog_ ? &*collisionLog_ : nullptr;
+    ctx_->measureVirial = measureVirial_;
     ctx_->stepStart = time_;
     // Friction turns discs: from the first step with friction on, the world keeps rotation.
     if (def_.friction > 0.0 && !p_.rotation) {
@@ -661,6 +663,7 @@ double World::stepExact(double dt) {
     // rebuild at this step; otherwise it carries on from its own state.
     if (!exact_) exact_ = std::make_unique<exact::ExactStepper>();
     exact_->record(ctx_->collisionLog, time_);
+    exact_->measureVirial(measureVirial_);
     return exact_->step(p_, def_, dt, eventBudget_, profile_, counters_);
 }
 

@@ -1,0 +1,199 @@
+// The observables window (observables.hpp) on hard-disc gases: exact values where they are
+// known, agreement between two measurements of the same quantity, and theory where it holds.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include <particle_sandbox/diagnostics.hpp>
+#include <particle_sandbox/error.hpp>
+#include <particle_sandbox/hard_disc_theory.hpp>
+#include <particle_sandbox/observables.hpp>
+#include <particle_sandbox/scene.hpp>
+#include <particle_sandbox/scene_builders.hpp>
+#include <particle_sandbox/world.hpp>
+
+#include "test_util.hpp"
+
+namespace psb {
+namespace {
+
+// Discs of radius 1 m and 1 kg at kT = 1 J: thermal speeds of about 1 m/s, so a free time is
+// about a second at packing 0.3.
+World gas(std::size_t n, double packing, StepMode mode = StepMode::Exact, std::uint64_t seed = 5) {
+    Scene s = scenes::gas({.count = n, .packing = packing, .seed = seed});
+    s.solver.mode = mode;
+    s.solver.substeps = 8;
+    World w = makeWorld(s);
+    w.setThreads(1);
+    return w;
+}
+
+void run(World& w, ObservablesWindow* window, double seconds, double dt) {
+    const auto steps = static_cast<int>(std::lround(seconds / dt));
+    for (int k = 0; k < steps; ++k) {
+        w.step(dt);
+        if (window) window->sample(w);
+    }
+}
+
+TEST(Observables, AnElasticGasesTemperatureIsItsKineticEnergyPerParticleWithNoError) {
+    World w = gas(200, 0.2);
+    const double kT = kineticEnergy(w) / 200.0;
+    ObservablesWindow window;
+    window.open(w);
+    run(w, &window, 50.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    EXPECT_EQ(r.samples, 200u);
+    EXPECT_NEAR(r.temperature.value, kT, 1e-12 * kT);
+    ASSERT_TRUE(r.temperature.hasError());
+    EXPECT_LT(r.temperature.error, 1e-12 * kT);     // the energy is conserved: every block agrees
+    EXPECT_FALSE(r.rotationalTemperature.valid());  // the discs do not turn
+    EXPECT_FALSE(w.measuringVirial());              // close() turned the counter off
+}
+
+TEST(Observables, WallAndVirialPressuresAgreeWithinTheirErrorsInAWalledExactGas) {
+    // The stated convention (the centres' box) makes them the same quantity: any difference is
+    // noise. 400 discs at 0.3 over 400 s, about 2·10⁵ collisions.
+    World w = gas(400, 0.3);
+    run(w, nullptr, 20.0, 0.25);  // the lattice start melts
+    ObservablesWindow window;
+    window.open(w);
+    run(w, &window, 400.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    ASSERT_TRUE(r.pressureVirial.hasError());
+    ASSERT_TRUE(r.pressureWalls.hasError());
+    const double both = std::hypot(r.pressureVirial.error, r.pressureWalls.error);
+    EXPECT_LT(std::abs(r.pressureVirial.value - r.pressureWalls.value), 3.0 * both)
+        << "virial " << r.pressureVirial.value << " ± " << r.pressureVirial.error << ", walls "
+        << r.pressureWalls.value << " ± " << r.pressureWalls.error;
+    EXPECT_LT(r.pressureVirial.error, 0.01 * r.pressureVirial.value);
+    EXPECT_LT(r.pressureWalls.error, 0.03 * r.pressureWalls.value);
+}
+
+TEST(Observables, CompressibilityFactorMatchesHendersonAndTheContactValueOfGr) {
+    // 1000 discs at 0.3 in a box with walls: Z from the virial within 1.5 % of Henderson's at
+    // the box's packing fraction (the walls' layers shift it by O(σ / w)), and within 1.5 % of
+    // 1 + 2φ′ g(σ) γ̄(σ)/A′, φ′ the centres' packing fraction and g(σ) extrapolated from g(r).
+    // γ̄(σ)/A′ = 1 − 2σ(a + b)/(π a b): g(r) is normalised by the rectangle's pair measure (so
+    // it tends to 1 at large r), the virial counts contacts per area A′ (2.5 % apart here).
+    World w = gas(1000, 0.3);
+    run(w, nullptr, 20.0, 0.25);
+    ObservablesSettings settings;
+    settings.pairEvery = 2;
+    ObservablesWindow window(settings);
+    window.open(w);
+    run(w, &window, 200.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    ASSERT_TRUE(r.compressibilityFactor.hasError());
+    ASSERT_TRUE(r.contactValue.hasError());
+    const double z = r.compressibilityFactor.value, phi = r.packingFraction;
+    EXPECT_NEAR(z / r.hendersonZ, 1.0, 0.015) << "Z " << z << " ± " << r.compressibilityFactor.error
+                                              << ", Henderson " << r.hendersonZ << " at " << phi;
+    const double centres = r.density * std::numbers::pi * r.sigma * r.sigma / 4.0;
+    const double a = w.def().width - r.sigma, b = w.def().height - r.sigma;
+    const double edges = 1.0 - 2.0 * r.sigma * (a + b) / (std::numbers::pi * a * b);
+    const double fromContact = 1.0 + 2.0 * centres * r.contactValue.value * edges;
+    EXPECT_NEAR(z / fromContact, 1.0, 0.015)
+        << "g(σ) " << r.contactValue.value << " ± " << r.contactValue.error;
+    // g(r) reaches half the box and tends to 1 there.
+    ASSERT_FALSE(r.pairG.empty());
+    EXPECT_NEAR(r.pairR.back(), 0.5 * w.def().width, 0.1);
+    EXPECT_NEAR(r.pairG.back(), 1.0, 0.05);
+}
+
+TEST(Observables, CollisionRateAndMeanFreePathAreEnskogsWithinTwoPercent) {
+    World w = gas(1000, 0.2);
+    run(w, nullptr, 20.0, 0.25);
+    ObservablesWindow window;
+    window.open(w);
+    run(w, &window, 200.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    EXPECT_NEAR(r.collisionRate.value / r.enskogCollisionRate, 1.0, 0.02)
+        << r.collisionRate.value << " ± " << r.collisionRate.error;
+    EXPECT_NEAR(r.meanFreePath.value / r.enskogMeanFreePath, 1.0, 0.02)
+        << r.meanFreePath.value << " ± " << r.meanFreePath.error;
+}
+
+TEST(Observables, DiffusionFromTheMsdAndFromTheVacfAgreeWithinThreePercent) {
+    // 500 discs at 0.2, sampled every 0.1 s (a tenth of a free time), lags to 8 s.
+    World w = gas(500, 0.2);
+    run(w, nullptr, 20.0, 0.1);
+    ObservablesSettings settings;
+    settings.maxLag = 80;
+    settings.originEvery = 10;
+    ObservablesWindow window(settings);
+    window.open(w);
+    run(w, &window, 600.0, 0.1);
+    const ObservablesResult r = window.close(w);
+    ASSERT_TRUE(r.diffusionMsd.hasError());
+    ASSERT_TRUE(r.diffusionVacf.hasError());
+    EXPECT_NEAR(r.diffusionVacf.value / r.diffusionMsd.value, 1.0, 0.03)
+        << "MSD " << r.diffusionMsd.value << " ± " << r.diffusionMsd.error << ", VACF "
+        << r.diffusionVacf.value << " ± " << r.diffusionVacf.error << ", Enskog "
+        << r.enskogDiffusion;
+    ASSERT_EQ(r.lagTime.size(), 81u);
+    EXPECT_NEAR(r.lagTime.back(), 8.0, 1e-9);
+    EXPECT_EQ(r.msd.front(), 0.0);
+    EXPECT_NEAR(r.vacf.front(), 2.0 * r.temperature.value, 0.03 * r.temperature.value);
+}
+
+TEST(Observables, AWindowTooShortForErrorsHasNoneAndSaysSo) {
+    World w = gas(100, 0.2);
+    ObservablesWindow window;
+    window.open(w);
+    run(w, &window, 1.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    EXPECT_TRUE(r.temperature.valid());
+    EXPECT_FALSE(r.temperature.hasError());
+    EXPECT_FALSE(r.pressureVirial.hasError());
+    ASSERT_FALSE(r.notes.empty());
+    EXPECT_NE(r.notes.front().find("too short for errors"), std::string::npos) << r.notes.front();
+}
+
+TEST(Observables, MeasuringTheVirialChangesNoBitOfTheMotionInAnyMode) {
+    for (const StepMode mode : {StepMode::Exact, StepMode::Discrete, StepMode::Substep}) {
+        World off = gas(300, 0.3, mode);
+        World on = off;
+        on.setMeasureVirial(true);
+        for (int k = 0; k < 100; ++k) {
+            off.step(0.05);
+            on.step(0.05);
+        }
+        EXPECT_EQ(test::stateHash(on), test::stateHash(off)) << toString(mode);
+        EXPECT_GT(on.counters().pairVirial, 0.0) << toString(mode);
+        EXPECT_EQ(off.counters().pairVirial, 0.0) << toString(mode);
+    }
+}
+
+TEST(Observables, TheSubstepModesVirialPressureIsTheWallPressureWithinThreePercent) {
+    // Contact impulses at overlapping positions: close to the exact value when steps are short.
+    World w = gas(400, 0.3, StepMode::Substep);
+    run(w, nullptr, 10.0, 0.05);
+    ObservablesWindow window;
+    window.open(w);
+    run(w, &window, 100.0, 0.05);
+    const ObservablesResult r = window.close(w);
+    EXPECT_NEAR(r.pressureVirial.value / r.pressureWalls.value, 1.0, 0.03)
+        << r.pressureVirial.value << " vs " << r.pressureWalls.value;
+}
+
+TEST(Observables, NoPressureUnderGravityAndNoWindowOnAnEmptyWorld) {
+    World w = gas(100, 0.2);
+    w.setGravity(Vec2(0.0, 9.81));
+    ObservablesWindow window;
+    window.open(w);
+    run(w, &window, 5.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    EXPECT_FALSE(r.pressureVirial.valid());
+    EXPECT_FALSE(r.pressureWalls.valid());
+    World empty;
+    ObservablesWindow other;
+    EXPECT_THROW(other.open(empty), InvalidArgument);
+    EXPECT_THROW(other.sample(empty), InvalidArgument);
+    EXPECT_THROW(ObservablesWindow({.stateEvery = 0}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace psb
