@@ -91,10 +91,12 @@ ObservablesResult ObservablesWindow::result() const {
     r.duration = total.time;
     r.samples = s.samples;
     r.stateSamples = s.stateSamples;
-    const double a = std::max(0.0, s.width - 2.0 * s.meanRadius);
-    const double b = std::max(0.0, s.height - 2.0 * s.meanRadius);
+    // The centres' box: a radius in from each wall, or all of a periodic box (no walls).
+    const double inset = s.periodic ? 0.0 : 2.0 * s.meanRadius;
+    const double a = std::max(0.0, s.width - inset);
+    const double b = std::max(0.0, s.height - inset);
     r.area = a * b;
-    r.perimeter = 2.0 * (a + b);
+    r.perimeter = s.periodic ? 0.0 : 2.0 * (a + b);
     r.density = r.area > 0.0 ? n / r.area : kNaN;
     r.packingFraction = s.coveredArea / (s.width * s.height);
     if (s.equalDiscs) {
@@ -116,9 +118,12 @@ ObservablesResult ObservablesWindow::result() const {
     }
     const auto measured = [&](auto&& f) { return measure(total, blocks, kMinBlocks, f); };
 
-    const auto kT = [&](const Chunk& c) {
-        return c.states > 0 ? c.kinetic / (static_cast<double>(c.states) * n) : kNaN;
+    // The mean kinetic energy (in the centre of mass's frame where momentum is conserved) and
+    // kT, its share per pair of degrees of freedom.
+    const auto kinetic = [&](const Chunk& c) {
+        return c.states > 0 ? c.kinetic / static_cast<double>(c.states) : kNaN;
     };
+    const auto kT = [&](const Chunk& c) { return kinetic(c) / s.freedom; };
     r.temperature = measured(kT);
     if (s.turning > 0) {
         r.rotationalTemperature = measured([&](const Chunk& c) {
@@ -128,16 +133,19 @@ ObservablesResult ObservablesWindow::result() const {
                        : kNaN;
         });
     }
-    const double kTall = kT(total);
+    const double kTall = kT(total), kineticAll = kinetic(total);
     // A block without a state sample takes the window's temperature.
     const auto kTof = [&](const Chunk& c) { return c.states > 0 ? kT(c) : kTall; };
+    const auto kineticOf = [&](const Chunk& c) { return c.states > 0 ? kinetic(c) : kineticAll; };
     const bool pressures = !s.gravity && r.area > 0.0 && total.time > 0.0;
     if (!pressures) {
         r.notes.push_back(s.gravity ? "no pressure under gravity (the walls carry the weight too)"
                                     : "no pressure: no time measured, or no room in the box");
     } else {
+        // P A = K + Σ r·J / 2T: the kinetic part is the kinetic energy itself (N kT with walls;
+        // (N − 1) kT in a periodic box, whose centre of mass carries no pressure).
         const auto virial = [&](const Chunk& c) {
-            return c.time > 0.0 ? (n * kTof(c) + c.virial / (2.0 * c.time)) / r.area : kNaN;
+            return c.time > 0.0 ? (kineticOf(c) + c.virial / (2.0 * c.time)) / r.area : kNaN;
         };
         if (s.obstacles) {
             r.notes.push_back(

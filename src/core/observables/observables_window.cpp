@@ -68,8 +68,11 @@ void ObservablesWindow::open(World& world) {
     s->width = def.width;
     s->height = def.height;
     s->walls = def.walls;
+    s->periodic = def.periodic;
     s->gravity = !def.gravity.isZero();
     s->obstacles = !def.obstacles.empty();
+    s->freedom = static_cast<double>(s->n);
+    if (s->periodic && !s->gravity && !s->obstacles && s->n > 1) s->freedom -= 1.0;
     s->openTime = s->lastTime = s->lastStateTime = world.time();
     s->last = world.counters();
 
@@ -84,7 +87,7 @@ void ObservablesWindow::open(World& world) {
                                   std::to_string(range / width) +
                                   " bins (more than 10^6): a larger pairBinWidth");
         }
-        s->pairs.configure(range, width, def.width, def.height);
+        s->pairs.configure(range, width, def.width, def.height, def.periodic);
     }
     const std::uint32_t every =
         settings_.originEvery > 0 ? settings_.originEvery : std::max(1u, settings_.maxLag / 2);
@@ -120,6 +123,16 @@ void ObservablesWindow::readState(const World& world) {
     observables::Chunk& chunk = s.chunks.current();
     ++chunk.states;
     chunk.kinetic += kineticEnergy(world);
+    if (s.freedom < static_cast<double>(s.n)) {
+        // The centre of mass's share is no heat: measured in its frame.
+        double px = 0.0, py = 0.0, mass = 0.0;
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            px += p.mass[i] * p.vx[i];
+            py += p.mass[i] * p.vy[i];
+            mass += p.mass[i];
+        }
+        if (mass > 0.0) chunk.kinetic -= 0.5 * (px * px + py * py) / mass;
+    }
     if (p.rotation) chunk.rotational += rotationalEnergy(world);
     const std::uint64_t k = s.stateSamples++;
     const double now = world.time();

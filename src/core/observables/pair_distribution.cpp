@@ -14,13 +14,17 @@ double rectanglePairMeasure(double a, double b, double r1, double r2) {
            4.0 / 3.0 * (a + b) * (pow(r2, 3) - pow(r1, 3)) + 0.5 * (pow(r2, 4) - pow(r1, 4));
 }
 
-void PairDistribution::configure(double range, double binWidth, double width, double height) {
-    range_ = range;
+void PairDistribution::configure(double range, double binWidth, double width, double height,
+                                 bool periodic) {
+    // Beyond half the box a pair would be nearer through another image.
+    range_ = periodic ? std::min(range, 0.5 * std::min(width, height)) : range;
+    binWidth = std::min(binWidth, range_);
     binWidth_ = binWidth;
     width_ = width;
     height_ = height;
+    periodic_ = periodic;
     // Whole bins only: a last bin cut by the range would read low.
-    bins_ = static_cast<std::size_t>(std::floor(range / binWidth + 1e-9));
+    bins_ = static_cast<std::size_t>(std::floor(range_ / binWidth + 1e-9));
     range_ = static_cast<double>(bins_) * binWidth;
 }
 
@@ -31,7 +35,9 @@ void PairDistribution::count(const std::vector<double>& x, const std::vector<dou
     const auto cellsAlong = [this](double extent) {
         return static_cast<std::int64_t>(std::clamp(std::floor(extent / range_), 1.0, 4096.0));
     };
-    const std::int64_t nx = cellsAlong(width_), ny = cellsAlong(height_);
+    std::int64_t nx = cellsAlong(width_), ny = cellsAlong(height_);
+    // Wrapped, two cells along a side would be each other's neighbour on both sides.
+    if (periodic_ && (nx < 3 || ny < 3)) nx = ny = 1;
     const double cw = width_ / static_cast<double>(nx), ch = height_ / static_cast<double>(ny);
     cellOf_.resize(n);
     cellStart_.assign(static_cast<std::size_t>(nx * ny) + 1, 0);
@@ -55,7 +61,11 @@ void PairDistribution::count(const std::vector<double>& x, const std::vector<dou
             const std::uint32_t from = c == d ? s + 1 : cellStart_[d];
             for (std::uint32_t t = from; t < cellStart_[d + 1]; ++t) {
                 const std::uint32_t j = order_[t];
-                const double dx = x[j] - x[i], dy = y[j] - y[i];
+                double dx = x[j] - x[i], dy = y[j] - y[i];
+                if (periodic_) {  // both centres in the box: at most one box away
+                    if (std::abs(dx) > 0.5 * width_) dx -= std::copysign(width_, dx);
+                    if (std::abs(dy) > 0.5 * height_) dy -= std::copysign(height_, dy);
+                }
                 const double r2 = dx * dx + dy * dy;
                 if (r2 >= range2) continue;
                 const auto k = static_cast<std::size_t>(std::sqrt(r2) * inverseWidth);
@@ -70,9 +80,15 @@ void PairDistribution::count(const std::vector<double>& x, const std::vector<dou
             const auto c = static_cast<std::uint32_t>(cy * nx + cx);
             pairsBetween(c, c);
             const std::int64_t next[4][2] = {{1, 0}, {-1, 1}, {0, 1}, {1, 1}};
+            if (nx == 1 && ny == 1) continue;
             for (const auto& o : next) {
-                const std::int64_t ox = cx + o[0], oy = cy + o[1];
-                if (ox < 0 || ox >= nx || oy >= ny) continue;
+                std::int64_t ox = cx + o[0], oy = cy + o[1];
+                if (periodic_) {
+                    ox = (ox + nx) % nx;
+                    oy %= ny;
+                } else if (ox < 0 || ox >= nx || oy >= ny) {
+                    continue;
+                }
                 pairsBetween(c, static_cast<std::uint32_t>(oy * nx + ox));
             }
         }
@@ -85,11 +101,13 @@ std::vector<double> PairDistribution::g(const std::vector<double>& counts, std::
     if (snapshots == 0 || n < 2 || !(a > 0.0) || !(b > 0.0)) return g;
     const double pairs =
         0.5 * static_cast<double>(n) * static_cast<double>(n - 1) * static_cast<double>(snapshots);
-    const double reach = std::min(a, b);
+    const double reach = periodic_ ? 0.5 * std::min(a, b) : std::min(a, b);
     for (std::size_t k = 0; k < bins_ && k < counts.size(); ++k) {
         const double r1 = binWidth_ * static_cast<double>(k), r2 = r1 + binWidth_;
         if (r2 > reach) break;
-        const double expected = pairs * rectanglePairMeasure(a, b, r1, r2) / (a * a * b * b);
+        const double share = periodic_ ? std::numbers::pi * (r2 * r2 - r1 * r1) / (a * b)
+                                       : rectanglePairMeasure(a, b, r1, r2) / (a * a * b * b);
+        const double expected = pairs * share;
         if (expected > 0.0) g[k] = counts[k] / expected;
     }
     return g;

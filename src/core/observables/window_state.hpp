@@ -25,6 +25,11 @@ struct ObservablesWindow::State {
     std::size_t n = 0;
     double width = 0.0, height = 0.0, meanRadius = 0.0;
     bool walls = false, gravity = false, obstacles = false;
+    bool periodic = false;  ///< a periodic box: the centres move in all of it, and no walls
+    /// Pairs of translational degrees of freedom: N, or N − 1 where the total momentum is
+    /// conserved (a periodic box without obstacles or gravity), whose kinetic energy is then
+    /// measured in the frame of the centre of mass.
+    double freedom = 0.0;
     bool equalDiscs = false;  ///< one radius and one mass: σ and m mean something
     double sigma = 0.0, mass = 0.0;
     double coveredArea = 0.0;  ///< Σ π r², m²

@@ -103,6 +103,46 @@ TEST(Observables, CompressibilityFactorMatchesHendersonAndTheContactValueOfGr) {
     EXPECT_NEAR(r.pairG.back(), 1.0, 0.05);
 }
 
+TEST(Observables, InAPeriodicBoxZIsOnePlusTwoPhiTimesTheContactValueWithoutWallTerms) {
+    // No walls: the centres move in all of the box, g(r) is normalised by the ring's share of
+    // it (pairs through the nearest images), and Z = 1 + 2φ g(σ) holds as it stands. The
+    // momentum is conserved, so kT is the kinetic energy in the centre of mass's frame over
+    // N − 1.
+    World w = gas(1000, 0.3);
+    w.setPeriodic(true);
+    run(w, nullptr, 20.0, 0.25);
+    ObservablesSettings settings;
+    settings.pairEvery = 8;
+    ObservablesWindow window(settings);
+    window.open(w);
+    const ParticleArrays& p = w.particles();
+    double px = 0.0, py = 0.0, mass = 0.0;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        px += p.mass[i] * p.vx[i];
+        py += p.mass[i] * p.vy[i];
+        mass += p.mass[i];
+    }
+    const double internal = kineticEnergy(w) - 0.5 * (px * px + py * py) / mass;
+    run(w, &window, 200.0, 0.25);
+    const ObservablesResult r = window.close(w);
+    EXPECT_NEAR(r.temperature.value, internal / 999.0, 1e-9 * internal);
+    EXPECT_DOUBLE_EQ(r.area, w.def().width * w.def().height);
+    EXPECT_FALSE(r.pressureWalls.valid());
+    ASSERT_TRUE(r.compressibilityFactor.hasError());
+    ASSERT_TRUE(r.contactValue.hasError());
+    const double z = r.compressibilityFactor.value, phi = r.packingFraction;
+    const double fromContact = 1.0 + 2.0 * phi * r.contactValue.value;
+    EXPECT_NEAR(z / fromContact, 1.0, 0.01)
+        << "Z " << z << " ± " << r.compressibilityFactor.error << ", g(σ) " << r.contactValue.value
+        << " ± " << r.contactValue.error;
+    EXPECT_NEAR(z / r.hendersonZ, 1.0, 0.01) << "Z " << z << ", Henderson " << r.hendersonZ;
+    // The pressure is Z's: P A = Z N kT.
+    EXPECT_NEAR(r.pressureVirial.value * r.area / (1000.0 * r.temperature.value), z, 1e-9 * z);
+    ASSERT_FALSE(r.pairG.empty());
+    EXPECT_NEAR(r.pairR.back(), 0.5 * w.def().width, 0.1);
+    EXPECT_NEAR(r.pairG.back(), 1.0, 0.03);
+}
+
 TEST(Observables, CollisionRateAndMeanFreePathAreEnskogsWithinTwoPercent) {
     World w = gas(1000, 0.2);
     run(w, nullptr, 20.0, 0.25);

@@ -61,6 +61,44 @@ TEST(PairDistribution, CountsEveryPairOnceWhateverTheCells) {
     EXPECT_EQ(counted, brute);
 }
 
+TEST(PairDistribution, InAPeriodicBoxPairsAreCountedBetweenNearestImagesInWrappedCells) {
+    // A pair 0.25 m apart across the left edge is 0.25 m apart; and with cells 4 × 4 (range 2.5)
+    // or one cell (range 5, half the box) the counts are the brute force's over nearest images.
+    PairDistribution edge;
+    edge.configure(1.0, 0.1, 10.0, 10.0, true);
+    std::vector<double> counts;
+    edge.count({0.1, 9.85}, {5.0, 5.0}, counts);
+    EXPECT_EQ(counts[2], 1.0);
+    std::mt19937_64 rng(4);
+    std::uniform_real_distribution<double> u(0.0, 10.0);
+    std::vector<double> x(300), y(300);
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        x[i] = u(rng);
+        y[i] = u(rng);
+    }
+    for (const double range : {2.5, 5.0}) {
+        PairDistribution pd;
+        pd.configure(range, 0.1, 10.0, 10.0, true);
+        std::vector<double> c;
+        pd.count(x, y, c);
+        double brute = 0.0, counted = 0.0;
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            for (std::size_t j = i + 1; j < x.size(); ++j) {
+                double dx = std::abs(x[i] - x[j]), dy = std::abs(y[i] - y[j]);
+                dx = std::min(dx, 10.0 - dx);
+                dy = std::min(dy, 10.0 - dy);
+                brute += std::hypot(dx, dy) < range ? 1.0 : 0.0;
+            }
+        }
+        for (const double k : c)
+            counted += k;
+        EXPECT_EQ(counted, brute) << "range " << range;
+        // Uniform points: g near 1 out to half the box.
+        const std::vector<double> g = pd.g(c, 1, x.size(), 10.0, 10.0);
+        EXPECT_TRUE(std::isfinite(g.back())) << "range " << range;
+    }
+}
+
 TEST(PairDistribution, TheContactValueOfAQuadraticIsItsValueAtContact) {
     PairDistribution pd;
     pd.configure(4.0, 0.02, 10.0, 10.0);
