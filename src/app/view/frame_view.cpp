@@ -179,13 +179,34 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     const int left = controlsInset(session, controls);
     f.controlsInset = left;
     const int hudRoom = session.camera().viewportWidth() - left;
-    std::vector<std::string> readings = hudLines(hudData(session));
-    // The stopwatch where the eye is, and in screenshots and videos of the box.
-    if (std::string line = stopwatchLine(session.stopwatch(), session.world().time());
-        !line.empty()) {
-        readings.push_back(std::move(line));
+    const auto readings = [&](const HudData& d) {
+        std::vector<std::string> lines = hudLines(d);
+        // The stopwatch where the eye is, and in screenshots and videos of the box.
+        if (std::string line = stopwatchLine(session.stopwatch(), session.world().time());
+            !line.empty()) {
+            lines.push_back(std::move(line));
+        }
+        return wrapHudLines(hudFont, lines, hudRoom - 8);
+    };
+    const HudData hud = hudData(session);
+    o.hud = readings(hud);
+    // The room the layout keeps for the HUD: while a video records, for the lines that come
+    // and go as it does (a step into the past, an overlap, X's REC) too, so that the panels
+    // below it, the plots' rows among them, stay put through the clip.
+    PixelPoint hudMost{0, 0};  // the widest the HUD gets, and the lines it may gain
+    if (stats.video.recording) {
+        HudData video = hud;
+        video.forVideo = true;
+        o.hudRecorded = readings(video);
+        HudData mostHud = hud;
+        mostHud.past = true;
+        mostHud.secondsBack = std::max(mostHud.secondsBack, 99.99);
+        mostHud.overlap = std::max(mostHud.overlap, 0.999);
+        mostHud.recording = true;
+        const PixelPoint now = textBoxSize(hudFont, o.hud),
+                         most = textBoxSize(hudFont, readings(mostHud));
+        hudMost = {most.x, std::max(0, most.y - now.y)};
     }
-    o.hud = wrapHudLines(hudFont, readings, hudRoom - 8);
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (sideColumnFolded(session, controls)) {
         // Said where the eye is: the charts asked for are not drawn over the box.
@@ -257,6 +278,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.height = session.camera().viewportHeight();
     req.left = left;
     req.hud = textBoxSize(hudFont, o.hud);
+    req.hud = {std::max(req.hud.x, hudMost.x), req.hud.y + hudMost.y};
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {
         req.legend = textBoxSize(labelFont,

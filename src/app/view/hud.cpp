@@ -42,21 +42,30 @@ std::vector<std::string> hudLines(const HudData& d) {
     }
     std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s%s",
                   quantity(d.simTime, "s").c_str(), speed, d.particles, d.particles == 1 ? "" : "s",
-                  d.paused ? " | PAUSED" : "", d.recording ? " | REC (X stops)" : "");
+                  d.paused ? " | PAUSED" : "",
+                  d.recording && !d.forVideo ? " | REC (X stops)" : "");
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
                   quantity(d.kineticEnergy, "J").c_str(),
                   quantity(d.momentum.x(), "", false).c_str(),
                   quantity(d.momentum.y(), "", false).c_str());
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
-                  quantity(d.spawnRadius, "m").c_str());
-    std::string last = buf;
-    if (d.arrowSeconds > 0.0) {
-        std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
-        last += buf;
+    if (d.forVideo) {
+        // What the arrows mean is a reading; what a launch would make and the help are not.
+        if (d.arrowSeconds > 0.0) {
+            std::snprintf(buf, sizeof buf, "Arrows: %.3g s of motion", d.arrowSeconds);
+            lines.emplace_back(buf);
+        }
+    } else {
+        std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
+                      quantity(d.spawnRadius, "m").c_str());
+        std::string last = buf;
+        if (d.arrowSeconds > 0.0) {
+            std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
+            last += buf;
+        }
+        lines.push_back(last + " | H: help");
     }
-    lines.push_back(last + " | H: help");
     if (d.heaviestMass > d.lightestMass) {
         // The shading's key, where the discs are: without it a deeper shade reads as a team.
         std::snprintf(buf, sizeof buf, "Darker discs are heavier (%s to %s)",
@@ -71,7 +80,9 @@ std::vector<std::string> hudLines(const HudData& d) {
     }
     if (d.past) {
         std::snprintf(buf, sizeof buf,
-                      "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
+                      d.forVideo
+                          ? "Viewing %.2f s back"
+                          : "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
                       d.secondsBack);
         lines.emplace_back(buf);
     }
