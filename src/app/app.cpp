@@ -414,11 +414,11 @@ void App::render() {
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
     stats_.labelsOffWindow = drawn.labelsOffWindow;
-    // The video takes the frame as drawn; the recording mark and the messages are on the
-    // screen, not in it.
+    // The video takes the frame as drawn; the recording mark, the messages and the HUD's key
+    // hints are on the screen, not in it.
     captureVideo();
-    if (lastFrame_.recordingMark && video_) draw_->drawRecordingMark(*lastFrame_.recordingMark);
     draw_->drawMessagesAfterCapture(lastFrame_);
+    if (lastFrame_.recordingMark && video_) draw_->drawRecordingMark(*lastFrame_.recordingMark);
     if (session_->takeScreenshotRequest()) writeScreenshot(drawn);
     sdl_->setTitle(lastFrame_.title);
     sdl_->present();

@@ -190,22 +190,21 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     };
     const HudData hud = hudData(session);
     o.hud = readings(hud);
-    // The room the layout keeps for the HUD: while a video records, for the lines that come
-    // and go as it does (a step into the past, an overlap, X's REC) too, so that the panels
-    // below it, the plots' rows among them, stay put through the clip.
-    PixelPoint hudMost{0, 0};  // the widest the HUD gets, and the lines it may gain
+    // While a video records, the layout is the video's: the room it keeps for the HUD is the
+    // video's HUD with the lines that come and go as it records (a step into the past, an
+    // overlap), so that the panels beside and below it, the plots' rows among them, stay put
+    // through the clip. The screen's hints are drawn over the frame once it is taken.
+    std::optional<PixelPoint> videoHud;
     if (stats.video.recording) {
         HudData video = hud;
         video.forVideo = true;
         o.hudRecorded = readings(video);
-        HudData mostHud = hud;
-        mostHud.past = true;
-        mostHud.secondsBack = std::max(mostHud.secondsBack, 99.99);
-        mostHud.overlap = std::max(mostHud.overlap, 0.999);
-        mostHud.recording = true;
-        const PixelPoint now = textBoxSize(hudFont, o.hud),
-                         most = textBoxSize(hudFont, readings(mostHud));
-        hudMost = {most.x, std::max(0, most.y - now.y)};
+        video.past = true;
+        video.secondsBack = std::max(video.secondsBack, 99.99);
+        video.overlap = std::max(video.overlap, 0.999);
+        const PixelPoint now = textBoxSize(hudFont, o.hudRecorded),
+                         most = textBoxSize(hudFont, readings(video));
+        videoHud = PixelPoint{std::max(now.x, most.x), std::max(now.y, most.y)};
     }
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (sideColumnFolded(session, controls)) {
@@ -277,8 +276,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.width = session.camera().viewportWidth();
     req.height = session.camera().viewportHeight();
     req.left = left;
-    req.hud = textBoxSize(hudFont, o.hud);
-    req.hud = {std::max(req.hud.x, hudMost.x), req.hud.y + hudMost.y};
+    req.hud = videoHud.value_or(textBoxSize(hudFont, o.hud));
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {
         req.legend = textBoxSize(labelFont,

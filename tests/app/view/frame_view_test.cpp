@@ -355,7 +355,7 @@ TEST(Video, ItHoldsTheReadingsNotTheKeyHintsAndThePlotsKeepTheirRowsThroughTheCl
     // A teacher's clip: "H: help" and "Viewing 0.98 s back: Space continues from here,
     // Shift+Left/Right step" were in it, and the plots went from four rows to three when the
     // clip stepped into the past (the HUD's extra line pushed the side column down).
-    Session s = sessionIn(1600, 1000, true);
+    Session s = sessionIn(1000, 760, true);
     s.apply(cmd::SetShow{ShowOption::Plots, true});
     s.apply(cmd::SetShow{ShowOption::Momentum, true});
     s.apply(cmd::TogglePause{});
