@@ -40,9 +40,13 @@ std::vector<std::string> hudLines(const HudData& d) {
     } else {
         std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
     }
-    std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s%s",
-                  quantity(d.simTime, "s").c_str(), speed, d.particles, d.particles == 1 ? "" : "s",
-                  d.paused ? " | PAUSED" : "",
+    // A video says a past frame's time on its first line: a line that came and went would move
+    // what stands below the HUD mid-clip.
+    char back[48] = "";
+    if (d.forVideo && d.past) std::snprintf(back, sizeof back, " (%.2f s back)", d.secondsBack);
+    std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
+                  quantity(d.simTime, "s").c_str(), back, speed, d.particles,
+                  d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "",
                   d.recording && !d.forVideo ? " | REC (X stops)" : "");
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
@@ -78,11 +82,9 @@ std::vector<std::string> hudLines(const HudData& d) {
                       quantity(d.overlap, "m").c_str());
         lines.emplace_back(buf);
     }
-    if (d.past) {
+    if (d.past && !d.forVideo) {
         std::snprintf(buf, sizeof buf,
-                      d.forVideo
-                          ? "Viewing %.2f s back"
-                          : "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
+                      "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
                       d.secondsBack);
         lines.emplace_back(buf);
     }

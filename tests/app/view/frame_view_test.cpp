@@ -380,7 +380,7 @@ TEST(Video, ItHoldsTheReadingsNotTheKeyHintsAndThePlotsKeepTheirRowsThroughTheCl
     const std::string shown = joined(past.overlays.hud), video = joined(past.overlays.hudRecorded);
     EXPECT_NE(shown.find("H: help"), std::string::npos) << "the screen keeps its hints";
     EXPECT_NE(shown.find("Shift+Left/Right"), std::string::npos);
-    EXPECT_NE(video.find("Viewing 0.03 s back"), std::string::npos) << video;
+    EXPECT_NE(video.find("(0.03 s back) | x1"), std::string::npos) << video;
     EXPECT_NE(video.find("Kinetic energy"), std::string::npos);
     EXPECT_NE(video.find("Arrows: 0.333 s of motion"), std::string::npos) << video;
     for (const char* hint : {"H: help", "Space continues", "Shift+", "New:", "(X stops)"})
