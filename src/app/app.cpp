@@ -230,6 +230,10 @@ void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
     const bool tabToPanel = !session_->prompt().active() && !session_->dialog().open();
     if (gui_ && gui_->handleEvent(e, tabToPanel)) return;
+    act(e);
+}
+
+void App::act(const SDL_Event& e) {
     for (Command& c :
          input_.translate(e, keyState(*session_), sdl_->pixelRatio(), sdl_->outputSize())) {
         // A new window size comes with where the box may go in it.
@@ -395,6 +399,9 @@ void App::render() {
     lastFrame_ = buildFrame(*session_, stats_, sdl_->hudFont(), sdl_->labelFont(), controls_);
     const DrawStats drawn = draw_->draw(lastFrame_);
     if (gui_->endFrame() != 0) logLine("[W] The control panel was not drawn completely");
+    // A Ctrl shortcut pressed in a field: the field's text was kept in this frame, now the key.
+    for (const SDL_Event& e : gui_->takeAppKeys())
+        act(e);
     if (const auto problem = gui_->takeProblem()) {
         logLine("[E] The text could not be made at the new scale: " + *problem);
     }
@@ -407,11 +414,11 @@ void App::render() {
     stats_.labelsSuppressed = drawn.labelsSuppressed;
     stats_.labelsCrowded = drawn.labelsCrowded;
     stats_.labelsOffWindow = drawn.labelsOffWindow;
-    // The video takes the frame as drawn; the recording mark and the messages are on the
-    // screen, not in it.
+    // The video takes the frame as drawn; the recording mark, the messages and the HUD's key
+    // hints are on the screen, not in it.
     captureVideo();
-    if (lastFrame_.recordingMark && video_) draw_->drawRecordingMark(*lastFrame_.recordingMark);
     draw_->drawMessagesAfterCapture(lastFrame_);
+    if (lastFrame_.recordingMark && video_) draw_->drawRecordingMark(*lastFrame_.recordingMark);
     if (session_->takeScreenshotRequest()) writeScreenshot(drawn);
     sdl_->setTitle(lastFrame_.title);
     sdl_->present();

@@ -156,6 +156,8 @@ class App {
     };
 
     void handleEvents(bool mayWait);
+    /// What `e` does to the session, the controls having left it to the sandbox.
+    void act(const SDL_Event& e);
     void apply(const Command& c);
     void update(double realSeconds);
     void render();

@@ -4,10 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <string>
 
 #include <imgui.h>
 #include <imgui_internal.h>
@@ -103,6 +105,40 @@ class AppTest : public TempDirTest {
         const MassRange masses = massRange(app.world().particles().mass);
         if (!masses.varies()) return colour;
         return massShades(colour, theme).at(masses.place(p.mass));
+    }
+
+    /// A key pressed and let go as xdotool types it: the key, its text (for a character), the
+    /// release, no frame in between.
+    static void tap(App& app, SDL_Keycode sym, const char* text = nullptr, Uint16 mod = KMOD_NONE) {
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = sym;
+        e.key.keysym.scancode = SDL_GetScancodeFromKey(sym);
+        e.key.keysym.mod = mod;
+        app.processEvent(e);
+        if (text != nullptr) {
+            SDL_Event t{};
+            t.type = SDL_TEXTINPUT;
+            std::snprintf(t.text.text, sizeof t.text.text, "%s", text);
+            app.processEvent(t);
+        }
+        e.type = SDL_KEYUP;
+        app.processEvent(e);
+    }
+
+    /// `text` typed within one frame: each character's key, its text and its release.
+    static void typeFast(App& app, const std::string& text) {
+        for (const char c : text) {
+            const char s[2] = {c, '\0'};
+            const SDL_Keycode sym =
+                c == ' ' ? SDLK_SPACE : static_cast<SDL_Keycode>(std::tolower(c));
+            tap(app, sym, s, std::isupper(static_cast<unsigned char>(c)) ? KMOD_LSHIFT : KMOD_NONE);
+        }
+    }
+
+    static void frames(App& app, int n) {
+        for (int k = 0; k < n; ++k)
+            app.frame(0.0);
     }
 
     static ParticleId idAt(const App& app, Vec2 at) {
@@ -296,6 +332,30 @@ TEST_F(AppTest, ASceneNamedOnTheCommandLineOpensPausedAndCtrlSWritesItsFile) {
     key(app, SDLK_ESCAPE);
     EXPECT_FALSE(app.session().dialog().open());
     EXPECT_TRUE(app.session().running());
+}
+
+TEST_F(AppTest, TextAndKeysTypedWithinAFrameReachTheFieldsInTheOrderTyped) {
+    // New scene, "10", Tab, "4" typed quicker than a frame (xdotool type): the keys reached
+    // ImGui a change a frame while the characters went in at once, and the width read 104.
+    AppOptions o = options();
+    o.width = o.height = 800;
+    App app(o);
+    app.frame(0.0);
+    key(app, SDLK_n, KMOD_LCTRL);
+    frames(app, 3);
+    ASSERT_EQ(app.session().dialog().kind, Dialog::Kind::NewScene);
+    typeFast(app, "10");
+    tap(app, SDLK_TAB);
+    typeFast(app, "4");
+    tap(app, SDLK_TAB);
+    typeFast(app, "0");
+    frames(app, 12);
+    tap(app, SDLK_RETURN);
+    frames(app, 3);
+    EXPECT_FALSE(app.session().dialog().open());
+    EXPECT_DOUBLE_EQ(app.world().def().width, 10.0);
+    EXPECT_DOUBLE_EQ(app.world().def().height, 4.0);
+    EXPECT_EQ(app.world().def().gravity, Vec2::Zero());
 }
 
 TEST_F(AppTest, TabGivesThePanelTheKeysAndEscGivesThemBack) {

@@ -49,7 +49,7 @@ pass "box fitted beside the panel (top-left x = $left px)"
 click Walls
 wait_log "Walls off"
 click Gravity
-wait_log "Gravity \[0, 9.81\] m/s²"
+wait_log "Gravity \[0, -9.81\] m/s²"  # down, y counting up
 click "mode Substeps"
 wait_log "Mode: substep x4"
 pass "Walls, Gravity and Substeps clicked: $(grep -c 'Walls off\|Gravity \[0\|Mode: substep' "$LOG") effects logged"

@@ -103,7 +103,7 @@ read -r fx0 fy0 fn0 < <(centroid "$OUT/0-start.png" $FLUNG)
 drag "$(sx 5.2)" "$(sy 1.6)" 0 12 8
 wait_log "Released particle"
 line=$(grep "Released particle" "$LOG" | tail -1)
-grep -q "Grabbed particle at \[5.20, 1.60\]" "$LOG" || fail "did not grab the yellow particle"
+grep -q "Grabbed particle at \[5.20, 5.40\]" "$LOG" || fail "did not grab the yellow particle"
 vx=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1/' <<<"$line")
 vy=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\2/' <<<"$line")
 awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 1 && vy > 5 * (vx < 0 ? -vx : vx)) }' ||
@@ -116,7 +116,7 @@ drag "$(sx 2.5)" "$(sy 2.6)" 3 3 3 \
     "key --window $WID a sleep 0.1 key --window $WID a sleep 0.1 key --window $WID Delete sleep 0.2"
 wait_log "Deleted particle at \[[0-9.]+, [0-9.]+\] with x velocity [-0-9.]+ m/s, y velocity [-0-9.]+ m/s and mass 8.00 kg!"
 wait_title "5 particles - PAUSED"
-held=$(sed -n '/Grabbed particle at \[2.50, 2.60\]/,/Deleted particle/p' "$LOG")
+held=$(sed -n '/Grabbed particle at \[2.50, 4.40\]/,/Deleted particle/p' "$LOG")
 grep -q "Arrows on" <<<"$held" && grep -q "Arrows off" <<<"$held" ||
     fail "keys pressed while holding were not handled: $held"
 pass "keys while holding (A, A) handled; delete while holding: $(grep 'Deleted particle' "$LOG")"
@@ -296,7 +296,8 @@ pass "R restarts: $(grep 'Restarted: ' "$LOG" | tail -1)"
 # --- 10. select: a click on the 12 kg particle at (1.5, 1.2) m -------------------------------
 # One xdotool chain, so that the press and release are well within a click's 0.3 s.
 xdotool mousemove --sync "$(sx 1.5)" "$(sy 1.2)" sleep 0.1 click 1
-wait_log "\[I\] Selected particle [0-9]+ at \[1.50, 1.20\] m with velocity \[1.80, 1.20\] m/s, mass 12 kg, radius 0.3 m"
+# The log counts y up from the floor as the window does (7 m box: 1.2 m down is 5.8 m up).
+wait_log "\[I\] Selected particle [0-9]+ at \[1.50, 5.80\] m with velocity \[1.80, -1.20\] m/s, mass 12 kg, radius 0.3 m"
 shot 6-selected
 read -r _ _ outline < <(centroid "$OUT/6-selected.png" 255 230 0)
 ((outline > 50)) || fail "no selection outline on screen ($outline pixels)"
@@ -328,7 +329,7 @@ wait_log "\[I\] Restitution 0.95"
 key shift+e
 wait_log "\[I\] Restitution 1.00"
 key g
-wait_log "\[I\] Gravity \[0, 9.81\] m/s²"  # Earth's, not scaled by the box
+wait_log "\[I\] Gravity \[0, -9.81\] m/s²"  # Earth's, not scaled by the box
 # T with gravity on always moves on: substep, then exact (which has gravity too).
 last_mode() { grep -E '\] Mode: ' "$LOG" | tail -1; }
 key t
@@ -348,7 +349,7 @@ key t
 wait_count "\] Mode: " $((modes + 2))
 last_mode | grep -q "Mode: exact" || fail "T T did not reach exact: $(last_mode)"
 key g
-wait_count "Gravity \[0, 9.81\] m/s²" 2
+wait_count "Gravity \[0, -9.81\] m/s²" 2
 key g
 wait_count "\[I\] Gravity off" 2
 key t

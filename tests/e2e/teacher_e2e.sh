@@ -38,7 +38,7 @@ pass "window ${WIDTH}x$HEIGHT, box at ($BX, $BY), $ZOOM px/m"
 # --- 6. the selected particle's values come into view --------------------------------------------
 # The yellow disc, 18 kg at (5.2, 1.6) m: the third particle of the scene.
 xdotool mousemove --sync "$(sx 5.2)" "$(sy 1.6)" sleep 0.1 click 1
-wait_log "\[I\] Selected particle 3 at \[5.20, 1.60\]"
+wait_log "\[I\] Selected particle 3 at \[5.20, 5.40\]"  # y up, as the panel
 sleep 0.6  # the panel scrolls at the next frame; --log-controls logs the new places
 for name in "selected x" "selected mass" "selected radius" "deselect"; do
     read -r x y < <(ctl "$name")
@@ -101,9 +101,9 @@ drag "$(sx 2.0)" "$(sy 5.0)" 10 -6 6
 drag "$(sx 5.0)" "$(sy 5.0)" 10 -6 6
 wait_title "2 particles - PAUSED"
 xdotool mousemove --sync "$(sx 2.0)" "$(sy 5.0)" sleep 0.1 click 1
-wait_log "\[I\] Selected particle 1 at \[2.00, 5.00\]"
+wait_log "\[I\] Selected particle 1 at \[2.00, 2.00\]"
 xdotool mousemove --sync "$(sx 5.0)" "$(sy 5.0)" sleep 0.1 click 1
-wait_log "\[I\] Selected particle 2 at \[5.00, 5.00\]"
+wait_log "\[I\] Selected particle 2 at \[5.00, 2.00\]"
 pass "two balls launched into the emptied box are particles 1 and 2"
 # Unsaved changes: Esc asks in a dialog, D discards and quits.
 key Escape

@@ -36,6 +36,7 @@
 #include "session/command.hpp"
 #include "view/box_area.hpp"
 #include "view/frame_view.hpp"
+#include "view/soft_wrap.hpp"
 
 namespace psb::app {
 
@@ -179,6 +180,9 @@ class ControlPanel {
     /// The scene's description is being edited (else shown wrapped), and its field is to take
     /// the keyboard.
     bool descriptionEditing_ = false, focusDescription_ = false;
+    /// The description's field wraps its lines as they are typed (soft breaks); description_
+    /// holds them while the field is open.
+    SoftWrap descriptionWrap_;
     /// The particle the Selected particle fields were typed for (the selection may change
     /// before the typed text is applied).
     ParticleId fieldOwner_ = kNullParticle;

@@ -38,6 +38,32 @@ void mapKeys(ImGuiIO& io) {
         io.KeyMap[key] = scancode;
 }
 
+bool isModifier(SDL_Keycode key) {
+    return key == SDLK_LCTRL || key == SDLK_RCTRL || key == SDLK_LSHIFT || key == SDLK_RSHIFT ||
+           key == SDLK_LALT || key == SDLK_RALT || key == SDLK_LGUI || key == SDLK_RGUI;
+}
+
+// A key press that does something in ImGui beyond the character it types: Tab, Enter, Esc,
+// Backspace, Delete, the arrows, Home, End, and anything with Ctrl, Alt or the Super key.
+bool acts(const SDL_Event& e) {
+    if (e.type != SDL_KEYDOWN || isModifier(e.key.keysym.sym)) return false;
+    if ((e.key.keysym.mod & (KMOD_CTRL | KMOD_ALT | KMOD_GUI)) != 0) return true;
+    const SDL_Keycode key = e.key.keysym.sym;
+    return key < SDLK_SPACE || key >= SDLK_DELETE;
+}
+
+// The app's Ctrl shortcuts (Ctrl+S, Ctrl+N, Ctrl+Z, Ctrl+plus...; platform/input.cpp), told
+// from a field's own (Ctrl+A selects all, Ctrl+C, V, X the clipboard, Ctrl+Enter a new line,
+// Ctrl+arrows, Ctrl+Backspace): Ctrl with a printable key or the keypad's plus, minus and 0.
+bool appShortcut(const SDL_KeyboardEvent& key) {
+    const Uint16 mod = key.keysym.mod;
+    if ((mod & KMOD_CTRL) == 0 || (mod & (KMOD_ALT | KMOD_GUI)) != 0) return false;
+    const SDL_Keycode k = key.keysym.sym;
+    if (k == SDLK_a || k == SDLK_c || k == SDLK_v || k == SDLK_x) return false;
+    return (k > SDLK_SPACE && k < SDLK_DELETE) || k == SDLK_KP_PLUS || k == SDLK_KP_MINUS ||
+           k == SDLK_KP_0;
+}
+
 // Target pixels per window point: 2 on a high-DPI window, 1 elsewhere.
 float windowPixelScale(SDL_Window* window, SDL_Renderer* renderer) {
     int w = 0, h = 0, pw = 0, ph = 0;
@@ -185,6 +211,11 @@ bool GuiContext::loadFont(float pixelScale) {
 bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
     makeCurrent();
     if (event.type == SDL_KEYDOWN || event.type == SDL_KEYUP) return handleKey(event, tabToPanel);
+    if (event.type == SDL_TEXTINPUT) {
+        // Into the keys' queue, not to the backend: in the order typed (see the header).
+        forwardKey(event);
+        return ImGui::GetIO().WantTextInput;
+    }
     if (handleFinger(event)) return true;
     if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
     if (event.type == SDL_MOUSEMOTION) {
@@ -195,21 +226,25 @@ bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
         mouse_.reset();
     }
     const ImGuiIO& io = ImGui::GetIO();
+    // Whose a press is goes by where it comes down now, not by ImGui's capture flag, which
+    // describes the last frame: a click on the box right after one on a field (or on a dialog
+    // that has just closed, or with the pointer just arrived from the panel) was the panel's,
+    // and the box never saw it. An open popup (a list dropped down) takes every click: one
+    // outside closes it.
+    const bool popupOpen = !ImGui::GetCurrentContext()->OpenPopupStack.empty();
     switch (event.type) {
         case SDL_MOUSEBUTTONDOWN: {
             const ImVec2 at(static_cast<float>(event.button.x), static_cast<float>(event.button.y));
-            // A finger (SDL's mouse from touch) jumps: where the mouse was in the last frame,
-            // over the panel or not, says nothing about where it comes down.
-            const bool touch = event.button.which == SDL_TOUCH_MOUSEID;
-            const bool taken = (io.WantCaptureMouse && !touch) || overWindow(at);
+            const bool taken = popupOpen || overWindow(at);
             if (taken) takenButtons_ |= SDL_BUTTON(event.button.button);
             return taken;
         }
         case SDL_MOUSEBUTTONUP: {
+            // The release goes where its press went.
             const Uint32 bit = SDL_BUTTON(event.button.button);
             const bool taken = (takenButtons_ & bit) != 0;
             takenButtons_ &= ~bit;
-            return taken || io.WantCaptureMouse;
+            return taken;
         }
         case SDL_MOUSEWHEEL: {
 #if SDL_VERSION_ATLEAST(2, 26, 0)
@@ -218,12 +253,11 @@ bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
 #else
             const ImVec2 at = mouse_.value_or(ImVec2(-FLT_MAX, -FLT_MAX));
 #endif
-            return io.WantCaptureMouse || overWindow(at);
+            return popupOpen || overWindow(at);
         }
         case SDL_MOUSEMOTION:
             // A drag the world started goes on over a panel; ImGui's own drags are captured.
-            return io.WantCaptureMouse;
-        case SDL_TEXTINPUT:
+            return takenButtons_ != 0;
         case SDL_TEXTEDITING:
             return io.WantTextInput;
         default:
@@ -241,9 +275,7 @@ void GuiContext::releaseIfDue() {
 bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
     releaseIfDue();  // a key right after the frame that saw an Esc is the sandbox's
     const SDL_Keycode key = event.key.keysym.sym;
-    const bool modifier = key == SDLK_LCTRL || key == SDLK_RCTRL || key == SDLK_LSHIFT ||
-                          key == SDLK_RSHIFT || key == SDLK_LALT || key == SDLK_RALT ||
-                          key == SDLK_LGUI || key == SDLK_RGUI;
+    const bool modifier = isModifier(key);
     // Releases and modifiers always reach ImGui: no key stays down in it, and Ctrl+click on a
     // slider (type a value) sees Ctrl.
     if (event.type == SDL_KEYUP || modifier) {
@@ -252,6 +284,14 @@ bool GuiContext::handleKey(const SDL_Event& event, bool tabToPanel) {
         return had && !modifier;
     }
     if (key == SDLK_F12) return false;
+    // The app's Ctrl shortcuts are the app's while the panel has the keyboard (not in a dialog,
+    // whose field is all there is): at once from the panel's cursor, after the field's text is
+    // kept from a field.
+    if (tabToPanel && appShortcut(event.key) && hasKeyboard()) {
+        if (!ImGui::GetIO().WantTextInput) return false;
+        commitThenApp(event);
+        return true;
+    }
     ImGuiContext& g = *ImGui::GetCurrentContext();
     const bool plainTab = key == SDLK_TAB && (event.key.keysym.mod & (KMOD_CTRL | KMOD_ALT)) == 0;
     if (!hasKeyboard()) {
@@ -281,18 +321,55 @@ void GuiContext::forwardKey(const SDL_Event& event) {
     // two frames (a quick tap, xdotool's key) would never be seen, and three Tabs typed fast
     // would be one. The events trickle in: each frame takes them in order until a key that has
     // already changed in it, the rest wait for the next (as ImGui 1.87's input queue does).
-    keyQueue_.push_back(event);
+    // Typed text goes the same way, so that "10", Tab, "4" typed within a frame is not "104".
+    keyQueue_.push_back({event});
     if (!inFrame_) trickleKeys();  // within a frame ImGui's keys must not change (it checks)
 }
 
+void GuiContext::commitThenApp(const SDL_Event& event) {
+    // Enter keeps what a field holds (an edit applied, a title kept: the panel's commands of
+    // the frame that sees it); the shortcut acts on the scene with it, as in any editor.
+    SDL_Event enter{};
+    enter.type = SDL_KEYDOWN;
+    enter.key.timestamp = event.key.timestamp;
+    enter.key.keysym.scancode = SDL_SCANCODE_RETURN;
+    enter.key.keysym.sym = SDLK_RETURN;
+    enter.key.keysym.mod = KMOD_NONE;  // Ctrl+Enter would be a new line in the description
+    keyQueue_.push_back({enter});
+    keyQueue_.push_back({event, true});
+    enter.type = SDL_KEYUP;
+    keyQueue_.push_back({enter});
+    if (!inFrame_) trickleKeys();
+}
+
 void GuiContext::trickleKeys() {
+    ImGuiIO& io = ImGui::GetIO();
     while (!keyQueue_.empty()) {
-        const SDL_Scancode code = keyQueue_.front().key.keysym.scancode;
-        if (std::find(changedKeys_.begin(), changedKeys_.end(), code) != changedKeys_.end()) return;
-        changedKeys_.push_back(code);
-        passKey(keyQueue_.front());
+        const Queued& q = keyQueue_.front();
+        // An app's shortcut waits for the end of the frame that takes the Enter before it.
+        // After a key that acts nothing else goes in: a field reads its frame's characters
+        // before its keys, and a Tab moves to the next field only as the frame is built.
+        if (q.forApp || keyActed_) return;
+        if (q.event.type == SDL_TEXTINPUT) {
+            // A field a Tab goes to is active from the frame after the Tab's, and takes no
+            // characters in that first frame (ImGui 1.86): text waits for the one after.
+            if (textWait_ > 0) return;
+            io.AddInputCharactersUTF8(q.event.text.text);
+        } else {
+            const SDL_Scancode code = q.event.key.keysym.scancode;
+            if (std::find(changedKeys_.begin(), changedKeys_.end(), code) != changedKeys_.end())
+                return;
+            changedKeys_.push_back(code);
+            passKey(q.event);
+            keyActed_ = acts(q.event);
+            if (keyActed_) textWait_ = 2;
+        }
         keyQueue_.pop_front();
     }
+}
+
+std::vector<SDL_Event> GuiContext::takeAppKeys() {
+    return std::exchange(appKeys_, {});
 }
 
 void GuiContext::passKey(const SDL_Event& event) {
@@ -312,6 +389,8 @@ void GuiContext::passKey(const SDL_Event& event) {
 void GuiContext::keysAfterFrame() {
     // The frame has seen every change so far; the keys that wait come in before the next.
     changedKeys_.clear();
+    keyActed_ = false;
+    if (textWait_ > 0) --textWait_;
     tabOnward();
 }
 
@@ -481,6 +560,11 @@ int GuiContext::endFrame() {
     makeCurrent();
     ImGui::Render();
     inFrame_ = false;
+    // The frame that took a shortcut's Enter is built: its field's text is kept, the app acts.
+    while (!keyQueue_.empty() && keyQueue_.front().forApp) {
+        appKeys_.push_back(keyQueue_.front().event);
+        keyQueue_.pop_front();
+    }
     return renderer_->render(*ImGui::GetDrawData());
 }
 

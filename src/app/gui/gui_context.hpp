@@ -22,7 +22,18 @@
 // (docs/app.md, "Classroom"): a key goes to the panel only while the panel has the keyboard —
 // a field being typed in or a widget held (ImGui's active item), or the navigation cursor shown
 // in it (Tab gives it; Esc or a click outside the panel takes it away). Otherwise ImGui never
-// sees the key, so an arrow key pans the view rather than moving through the panel.
+// sees the key, so an arrow key pans the view rather than moving through the panel. The app's
+// Ctrl shortcuts (Ctrl+S, Ctrl+N, Ctrl+Z...) stay the app's while the panel has the keyboard:
+// typed in a field, the field's text is kept first (as Enter would keep it), then the app acts
+// (takeAppKeys); the field's own (Ctrl+A, C, V, X, Ctrl+Enter, Ctrl+arrows) stay the field's.
+//
+// Keys and typed text (SDL_TEXTINPUT) reach ImGui through one queue, in the order they were
+// typed, and only between frames: ImGui 1.86 reads which keys are down at each frame and a
+// field reads a frame's characters before its keys, so a key that acts (Tab, Enter, Backspace,
+// an arrow, a Ctrl shortcut) closes the frame's share of the queue: what follows it waits for
+// the next frame, and text for the one after (a "4" typed after a Tab goes to the field the
+// Tab went to, which ImGui activates in the next frame and fills from the one after that, not
+// to the one it left).
 //
 // No imgui.ini or log file is written: the app's layout is its own, not the working
 // directory's. ImGui keeps one "current" context per process; every member makes this one
@@ -64,13 +75,14 @@ class GuiContext {
 
     /// Passes an SDL event to ImGui; true when the controls take it (a click or wheel over a
     /// panel, typing into a field), so the app should not act on it as well. A press or a wheel
-    /// turn is the controls' by where it happens (over any window the last frame drew), not by
-    /// ImGui's capture flag alone: that flag is from the last frame, and a pointer that has
-    /// just entered a panel (a first click, a wheel turn as the hand arrives) is not in it yet.
-    /// The release of a press the controls took is theirs too. A key is theirs while the panel
-    /// has the keyboard (hasKeyboard); Tab gives it the keyboard when `tabToPanel` (not while
-    /// the sandbox's edit prompt wants Tab), and Esc takes it back (and is the panel's). F12 is
-    /// the sandbox's always (a screenshot of the panel with its cursor).
+    /// turn is the controls' by where it happens (over any window the last frame drew, or
+    /// anywhere while a popup is open), never by ImGui's capture flag: that flag is from the
+    /// last frame, so a pointer that has just entered a panel is not in it yet, and one that
+    /// has just left it (a click on a ball right after a field, or after a dialog closed) still
+    /// is. The release of a press, and the moves between, go where the press went. A key is theirs
+    /// while the panel has the keyboard (hasKeyboard); Tab gives it the keyboard when `tabToPanel`
+    /// (not while the sandbox's edit prompt wants Tab), and Esc takes it back (and is the panel's).
+    /// F12 is the sandbox's always (a screenshot of the panel with its cursor).
     bool handleEvent(const SDL_Event& event, bool tabToPanel = true);
     /// Whether window point `p` is over a window (panel, list, open popup) the last frame
     /// drew; tooltips, which take no input, do not count.
@@ -100,6 +112,10 @@ class GuiContext {
     void beginFrame(float width, float height, float dt = 1.f / 60.f, float pixelScale = 1.f);
     /// Ends the frame and draws it. Returns the number of failed SDL draw calls (0 normally).
     int endFrame();
+    /// The app's shortcuts pressed while a field was being typed in whose field has now kept
+    /// its text (the frame that saw the Enter standing for them is done): the app acts on them
+    /// now, in order (see the top of this file). Empty most of the time.
+    [[nodiscard]] std::vector<SDL_Event> takeAppKeys();
 
     /// The context's IO (input state, capture flags); valid while this object lives.
     [[nodiscard]] ImGuiIO& io();
@@ -121,9 +137,13 @@ class GuiContext {
     void releaseIfDue();
     /// handleEvent for a key press or release.
     bool handleKey(const SDL_Event& event, bool tabToPanel);
-    /// A key event to ImGui by passKey, in order, at most one change of a key per frame.
+    /// A key or text event to ImGui through the queue (see the top of this file).
     void forwardKey(const SDL_Event& event);
-    /// Passes the queued key events the next frame can still take (between frames only).
+    /// An app's Ctrl shortcut pressed in a field: an Enter into the queue to keep the field's
+    /// text, and the shortcut to go to the app once the frame that takes the Enter is done.
+    void commitThenApp(const SDL_Event& event);
+    /// Passes the queued events the next frame can still take (between frames only): in order,
+    /// until a key that has already changed in it, or anything after a key that acts.
     void trickleKeys();
     /// A key event into ImGui's io (by scancode, as the SDL2 backend maps the keys).
     void passKey(const SDL_Event& event);
@@ -157,11 +177,18 @@ class GuiContext {
     std::optional<std::string> problem_;
     PanelTouch panelTouch_;
     TooltipState tooltips_;
-    bool pointerIsFinger_ = false;           // the last pointer event came from a finger
-    int forgetMouse_ = 0;                    // frames until a lifted finger's pointer is forgotten
-    bool tabEnters_ = false;                 // this frame's Tab gave the panel the keyboard
-    std::deque<SDL_Event> keyQueue_;         // key events the frames have not taken yet
+    bool pointerIsFinger_ = false;  // the last pointer event came from a finger
+    int forgetMouse_ = 0;           // frames until a lifted finger's pointer is forgotten
+    bool tabEnters_ = false;        // this frame's Tab gave the panel the keyboard
+    struct Queued {
+        SDL_Event event;
+        bool forApp = false;  // an app's shortcut, after the field's Enter queued before it
+    };
+    std::deque<Queued> keyQueue_;            // key and text events the frames have not taken
     std::vector<SDL_Scancode> changedKeys_;  // keys changed since the last NewFrame
+    bool keyActed_ = false;                  // a key that acts was passed since the last NewFrame
+    int textWait_ = 0;                       // NewFrames before text may follow such a key
+    std::vector<SDL_Event> appKeys_;         // shortcuts for the app, their field's text kept
 };
 
 }  // namespace psb::app

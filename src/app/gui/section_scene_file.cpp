@@ -3,6 +3,8 @@
 
 #include <cstring>
 #include <string>
+#include <string_view>
+#include <utility>
 
 #include <imgui.h>
 
@@ -23,6 +25,29 @@ void copyText(std::array<char, N>& to, const std::string& from) {
     to[n] = '\0';
 }
 
+float textWidth(std::string_view text) {
+    return ImGui::CalcTextSize(text.data(), text.data() + text.size()).x;
+}
+
+// The room a line has in a multi-line field as wide as `width`: its padding and the scroll bar
+// it shows once the lines pass its height.
+float fieldRoom(float width) {
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return width - 2.f * style.FramePadding.x - style.ScrollbarSize - 1.f;
+}
+
+// ImGui 1.86's multi-line field does not wrap: after each change its lines are broken again
+// (soft_wrap.hpp), in place, so the start of the text stays in view as it is typed.
+int rewrap(ImGuiInputTextCallbackData* data) {
+    auto* wrap = static_cast<std::pair<SoftWrap*, float>*>(data->UserData);
+    std::string shown(data->Buf, static_cast<std::size_t>(data->BufTextLen));
+    if (wrap->first->edited(shown, wrap->second, textWidth)) {
+        std::memcpy(data->Buf, shown.data(), shown.size());
+        data->BufDirty = true;
+    }
+    return 0;
+}
+
 }  // namespace
 
 void ControlPanel::sceneText(const Session& s) {
@@ -36,7 +61,12 @@ void ControlPanel::sceneText(const Session& s) {
     const bool titleDone = ImGui::IsItemDeactivatedAfterEdit();
     mark("title");
     tip("The scene's title: the window's title shows it, and a save keeps it");
-    if (!descriptionActive_) copyText(description_, s.meta().description);
+    const float room = fieldRoom(ImGui::GetContentRegionAvail().x);
+    if (!descriptionActive_) {
+        copyText(description_, descriptionEditing_
+                                   ? descriptionWrap_.start(s.meta().description, room, textWidth)
+                                   : s.meta().description);
+    }
     ImGui::TextUnformatted("Description");
     bool edit = false;
     if (!descriptionEditing_) {
@@ -69,8 +99,11 @@ void ControlPanel::sceneText(const Session& s) {
         }
     } else {
         if (focusDescription_) ImGui::SetKeyboardFocusHere();
-        ImGui::InputTextMultiline("##description", description_.data(), description_.size(), size,
-                                  ImGuiInputTextFlags_CtrlEnterForNewLine);
+        std::pair<SoftWrap*, float> wrap{&descriptionWrap_, room};
+        ImGui::InputTextMultiline(
+            "##description", description_.data(), description_.size(), size,
+            ImGuiInputTextFlags_CtrlEnterForNewLine | ImGuiInputTextFlags_CallbackEdit, rewrap,
+            &wrap);
         descriptionActive_ = ImGui::IsItemActive();
         if (descriptionActive_) focusDescription_ = false;
         descriptionDone = ImGui::IsItemDeactivatedAfterEdit();
@@ -81,7 +114,11 @@ void ControlPanel::sceneText(const Session& s) {
             "elsewhere keeps what you typed (Ctrl+Enter: a new line)");
     }
     if (titleDone || descriptionDone) {
-        out_.emplace_back(cmd::SetSceneText{title_.data(), description_.data()});
+        // The description as typed: its soft breaks spaces again.
+        const std::string description = descriptionEditing_ || descriptionDone
+                                            ? descriptionWrap_.text(description_.data())
+                                            : std::string(description_.data());
+        out_.emplace_back(cmd::SetSceneText{title_.data(), description});
     }
 }
 

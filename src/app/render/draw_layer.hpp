@@ -36,7 +36,7 @@ class DrawLayer {
     /// The recording mark (a red dot and its label), drawn after the frame is captured for the
     /// video so that the video does not show it.
     void drawRecordingMark(const RecordingMarkView& mark);
-    /// The messages of a frame whose messages wait for the capture (Overlays::
+    /// The messages and the HUD's key hints of a frame that waits for the capture (Overlays::
     /// messagesAfterCapture): drawn after the video has taken the frame.
     void drawMessagesAfterCapture(const FrameView& frame);
 

@@ -43,7 +43,11 @@ class PanelBatch {
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours) {
     PanelBatch panels(font, colours);
-    panels.add(o.hud, layout.hud);
+    // The HUD's box fits its lines (the layout may keep it more room: frame_view.cpp). While a
+    // video records, the frame holds the readings only; the hints come after it is taken.
+    const std::vector<std::string>& hud = o.messagesAfterCapture ? o.hudRecorded : o.hud;
+    const PixelPoint hudSize = textBoxSize(font, hud);
+    panels.add(hud, PixelRect{layout.hud.x, layout.hud.y, hudSize.x, hudSize.y});
     if (o.showProfile) panels.add(o.profile, layout.profile, 200);
     if (!o.messagesAfterCapture) panels.add(o.messages, layout.messages);
     panels.add(o.inspector, layout.inspector, 200);
@@ -61,6 +65,9 @@ void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours) {
     if (o.showHelp) return;  // the help covers them
     PanelBatch panels(font, colours);
+    // The screen's HUD over the video's, opaque: its lines are the video's and more.
+    const PixelPoint hudSize = textBoxSize(font, o.hud);
+    panels.add(o.hud, PixelRect{layout.hud.x, layout.hud.y, hudSize.x, hudSize.y}, 255);
     panels.add(o.messages, layout.messages);
     panels.draw(renderer);
 }

@@ -12,13 +12,13 @@
 namespace psb::app {
 
 /// Draws the panels of `o` onto `renderer` in the boxes of `layout` (a box with w == 0 is not
-/// drawn), the messages unless `o.messagesAfterCapture`. The help is drawn over everything when
-/// switched on.
+/// drawn), the messages unless `o.messagesAfterCapture` (a video records: then the HUD drawn is
+/// the video's, `o.hudRecorded`). The help is drawn over everything when switched on.
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours = palette(Theme::Dark));
 
-/// Draws only the messages' panel (what drawOverlays leaves out while a video records), under
-/// the help when that is shown.
+/// Draws what drawOverlays leaves out of a video while it records: the screen's HUD (with its
+/// key hints, opaque over the video's) and the messages' panel; nothing under the help.
 void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours = palette(Theme::Dark));
 

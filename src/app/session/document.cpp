@@ -55,6 +55,8 @@ void Document::replace(World w, SceneInfo m, SceneFile f) {
     loadedName = meta.name;
     loadedDescription = meta.description;
     savedSinceLoad = false;
+    // "Saved to FILE" is said of the scene that was saved, not of the one replacing it.
+    lastSave.reset();
     ++generation;
     dirty = false;
 }

@@ -159,8 +159,9 @@ struct Document {
     /// Changes whenever the world is replaced (open, preset, reset, an undo to another scene):
     /// views keyed to particles (trails) start over.
     std::uint64_t generation = 0;
-    bool dirty = false;                             ///< changed since it was opened or last saved
-    std::optional<std::filesystem::path> lastSave;  ///< the file the last save wrote (absolute)
+    bool dirty = false;  ///< changed since it was opened or last saved
+    /// The file the last save of the scene shown wrote (absolute); none once another opens.
+    std::optional<std::filesystem::path> lastSave;
     std::string fileError;  ///< why the last open or save failed; empty once one succeeds
     std::vector<std::filesystem::path> recent;
     std::size_t nextPreset = 0;  ///< the preset OpenPreset without an index opens

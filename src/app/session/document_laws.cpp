@@ -16,6 +16,7 @@
 #include "session/edit_report.hpp"
 #include "session/notices.hpp"
 #include "session/physics_controls.hpp"
+#include "session/scene_view.hpp"
 #include "session/session_text.hpp"
 #include "session/sim_clock.hpp"
 #include "session/units.hpp"
@@ -148,8 +149,8 @@ void Document::handle(const cmd::SetGravity& c, Context& x) {
         x.notices.say(std::string("Gravity refused: ") + e.what(), Notice::Level::Warning);
         return;
     }
-    x.notices.add(
-        {Notice::Level::Info, "Gravity " + gravityText(g), true, !c.continues, "gravity"});
+    x.notices.add({Notice::Level::Info, "Gravity " + gravityText(g, x.view.axes(world.def())), true,
+                   !c.continues, "gravity"});
     // Turning it on or off is a switch, an entry of its own; a new strength is a setting, and
     // a burst of them is one (undo_history.hpp, "Coalescing").
     const bool switched = (before == Vec2::Zero()) != (g == Vec2::Zero());

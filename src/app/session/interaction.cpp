@@ -156,12 +156,13 @@ CappedVelocity capSpeed(const Vec2& v, double maxSpeed) {
     return {v, false};
 }
 
-std::string deletionLogLine(const Particle& p) {
+std::string deletionLogLine(const Particle& p, const Axes& axes) {
+    const Vec2 at = axes.point(p.position), v = axes.vector(p.velocity);
     char buf[256];
     std::snprintf(buf, sizeof buf,
                   "[I] Deleted particle at [%.2f, %.2f] with x velocity %.2f m/s, y velocity "
                   "%.2f m/s and mass %.2f kg!",
-                  p.position.x(), p.position.y(), p.velocity.x(), p.velocity.y(), p.mass);
+                  at.x(), at.y(), v.x(), v.y(), p.mass);
     return buf;
 }
 

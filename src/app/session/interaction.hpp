@@ -30,6 +30,7 @@
 #include <optional>
 #include <string>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/launch.hpp>
 #include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/world.hpp>
@@ -88,8 +89,8 @@ inline constexpr double kMaxLaunchBoxesPerSecond = 2.0;
 [[nodiscard]] std::optional<Vec2> findFreeSpot(const World& world, const Vec2& desired,
                                                double radius);
 
-/// The line the original printed when a held particle was deleted, with units.
-[[nodiscard]] std::string deletionLogLine(const Particle& p);
+/// The line the original printed when a held particle was deleted, with units, in `axes`.
+[[nodiscard]] std::string deletionLogLine(const Particle& p, const Axes& axes);
 
 /// What a release means. The hand only reads the world: the tools' handler has the document, the
 /// world's owner, apply the result, and reports it for undo (tools_hand.cpp).

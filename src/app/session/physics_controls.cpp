@@ -49,10 +49,11 @@ cmd::SetMode modeStep(const SolverSettings& solver) {
     return {nextMode(solver.mode), solver.substeps < 2 ? kAppSubsteps : solver.substeps};
 }
 
-std::string gravityText(const Vec2& g) {
+std::string gravityText(const Vec2& g, const Axes& axes) {
     if (g == Vec2::Zero()) return "off";
+    const Vec2 shown = axes.vector(g);
     char buf[64];
-    std::snprintf(buf, sizeof buf, "[%.4g, %.4g] m/s\u00b2", g.x(), g.y());
+    std::snprintf(buf, sizeof buf, "[%.4g, %.4g] m/s\u00b2", shown.x(), shown.y());
     return buf;
 }
 

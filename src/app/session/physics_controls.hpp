@@ -11,6 +11,7 @@
 
 #include <string>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/math.hpp>
 #include <particle_sandbox/solver_settings.hpp>
 
@@ -46,8 +47,8 @@ inline constexpr int kAppSubsteps = 4;
 /// (kAppSubsteps when it has fewer than two).
 [[nodiscard]] cmd::SetMode modeStep(const SolverSettings& solver);
 
-/// "off" or "[gx, gy] m/s^2", for the HUD and messages.
-[[nodiscard]] std::string gravityText(const Vec2& g);
+/// "off" or "[gx, gy] m/s^2" in `axes` (y up: Earth's is [0, -9.81]), for the messages.
+[[nodiscard]] std::string gravityText(const Vec2& g, const Axes& axes);
 /// "discrete", "substep x4", "exact".
 [[nodiscard]] std::string modeName(const SolverSettings& solver);
 

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include <particle_sandbox/axes.hpp>
 #include <particle_sandbox/particle.hpp>
 #include <particle_sandbox/world.hpp>
 
@@ -25,7 +26,8 @@ class Selection {
 };
 
 /// "[I] Selected particle 3 at [x, y] m with velocity [vx, vy] m/s, mass m kg, radius r m":
-/// the line the app logs when a click selects `p` (the number is the id's slot).
-[[nodiscard]] std::string selectionLogLine(const Particle& p);
+/// the line the app logs when a click selects `p` (the number is the id's slot), in `axes`,
+/// those the window shows.
+[[nodiscard]] std::string selectionLogLine(const Particle& p, const Axes& axes);
 
 }  // namespace psb::app

@@ -48,7 +48,8 @@ void Tools::handle(const cmd::PointerDown& c, Context& x) {
     if (grabbed) {
         world.setKinematic(*grabbed, true);  // the hand moves it, not the steps
         const Particle p = world.get(*grabbed);
-        x.notices.log(fmt("Grabbed particle at [%.2f, %.2f]", p.position.x(), p.position.y()));
+        const Vec2 at = x.view.axes(world.def()).point(p.position);
+        x.notices.log(fmt("Grabbed particle at [%.2f, %.2f]", at.x(), at.y()));
         // The energy is measured from the grab; a click that only selects changes nothing.
         x.monitor.resetEnergy(world);
     }
@@ -116,8 +117,11 @@ void Tools::handle(const cmd::PointerUp& c, Context& x) {
         world.setKinematic(r.id, false);
     }
     if (r.kind == K::Launched) r.id = world.add(r.launch);
-    const std::string at = fmt("at [%.2f, %.2f]", r.position.x(), r.position.y());
-    const std::string v = fmt("with velocity [%.2f, %.2f] m/s", r.velocity.x(), r.velocity.y());
+    // In the axes the window shows, as every number it shows.
+    const Axes axes = x.view.axes(world.def());
+    const Vec2 shownAt = axes.point(r.position), shownV = axes.vector(r.velocity);
+    const std::string at = fmt("at [%.2f, %.2f]", shownAt.x(), shownAt.y());
+    const std::string v = fmt("with velocity [%.2f, %.2f] m/s", shownV.x(), shownV.y());
     if (r.kind == K::Flung) x.notices.log("Released particle " + at + " " + v);
     if (r.kind == K::Flung && x.clock.paused) {
         x.notices.say(r.velocity.norm() > 0.0
@@ -141,7 +145,7 @@ void Tools::click(const ReleaseResult& r, Context& x) {
         if (prompt.target() != r.id) closePrompt();
         selectedObstacle.reset();
         selection.select(r.id);
-        std::string line = selectionLogLine(x.doc.world.get(r.id));
+        std::string line = selectionLogLine(x.doc.world.get(r.id), x.view.axes(x.doc.world.def()));
         x.notices.log(line.substr(4));  // without its "[I] "
     } else if (selectObstacleAt(x)) {
         selection.clear();
@@ -172,7 +176,7 @@ void Tools::handle(const cmd::DeleteParticle& c, Context& x) {
     }
     const Particle p = x.doc.world.get(c.id);
     x.doc.world.remove(c.id);
-    x.notices.log(deletionLogLine(p).substr(4));
+    x.notices.log(deletionLogLine(p, x.view.axes(x.doc.world.def())).substr(4));
     x.notices.add({Notice::Level::Info, "Deleted a particle", true, false});
     x.edit.userAction("delete particle");
     checkSelection(x.doc.world, x.notices);
@@ -220,9 +224,11 @@ void Tools::handle(const cmd::SpawnRandom&, Context& x) {
     def.fixedRotation = !spawn.turn;
     x.doc.world.add(def);
     x.edit.userAction("spawn particle");
+    const Axes axes = x.view.axes(d);
+    const Vec2 at = axes.point(*spot), velocity = axes.vector(def.velocity);
     x.notices.log(
         fmt("Spawned particle at [%.2f, %.2f] with velocity [%.2f, %.2f] m/s and mass %.3g kg",
-            spot->x(), spot->y(), def.velocity.x(), def.velocity.y(), mass));
+            at.x(), at.y(), velocity.x(), velocity.y(), mass));
 }
 
 void Tools::handle(const cmd::ChangeSpawnMass& c, Context& x) {

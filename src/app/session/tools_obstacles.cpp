@@ -19,14 +19,16 @@ namespace {
 constexpr double kMinWallPixels = 4.0;
 constexpr double kPickPixels = 4.0;
 
-std::string describe(const Obstacle& o) {
+/// `o` in `axes`, the window's.
+std::string describe(const Obstacle& o, const Axes& axes) {
+    const Vec2 a = axes.point(o.a), b = axes.point(o.b);
     char buf[160];
     if (o.isPeg()) {
-        std::snprintf(buf, sizeof buf, "peg at [%.3g, %.3g] m, radius %s", o.a.x(), o.a.y(),
+        std::snprintf(buf, sizeof buf, "peg at [%.3g, %.3g] m, radius %s", a.x(), a.y(),
                       quantity(o.radius, "m").c_str());
     } else {
-        std::snprintf(buf, sizeof buf, "wall from [%.3g, %.3g] to [%.3g, %.3g] m, %s thick",
-                      o.a.x(), o.a.y(), o.b.x(), o.b.y(), quantity(o.thickness(), "m").c_str());
+        std::snprintf(buf, sizeof buf, "wall from [%.3g, %.3g] to [%.3g, %.3g] m, %s thick", a.x(),
+                      a.y(), b.x(), b.y(), quantity(o.thickness(), "m").c_str());
     }
     return buf;
 }
@@ -79,7 +81,8 @@ void Tools::obstacleRelease(Context& x) {
     try {
         const std::size_t index = x.doc.world.addObstacle(*p.obstacle);
         selectedObstacle.reset();
-        x.notices.log("Added obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
+        x.notices.log("Added obstacle " + std::to_string(index) + ": " +
+                      describe(*p.obstacle, x.view.axes(x.doc.world.def())));
         x.notices.say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") +
                       " (Ctrl+Z undoes it)");
         x.edit.userAction(p.obstacle->isPeg() ? "place peg" : "draw wall");
@@ -126,7 +129,8 @@ bool Tools::obstacleMoveRelease(Context& x) {
     selectedObstacle = index;
     selection.clear();
     closePrompt();
-    x.notices.log("Moved obstacle " + std::to_string(index) + ": " + describe(*p.obstacle));
+    x.notices.log("Moved obstacle " + std::to_string(index) + ": " +
+                  describe(*p.obstacle, x.view.axes(x.doc.world.def())));
     x.notices.say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
     x.edit.userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
     return true;
@@ -138,7 +142,8 @@ bool Tools::selectObstacleAt(Context& x) {
     if (!index) return false;
     selectedObstacle = index;
     const Obstacle& o = x.doc.world.obstacles()[*index];
-    x.notices.log("Selected obstacle " + std::to_string(*index) + ": " + describe(o));
+    x.notices.log("Selected obstacle " + std::to_string(*index) + ": " +
+                  describe(o, x.view.axes(x.doc.world.def())));
     x.notices.say(std::string("Selected a ") + obstacleNoun(o) +
                   ": Delete or Backspace removes it");
     return true;
@@ -158,7 +163,8 @@ void Tools::removeObstacle(std::size_t index, Context& x) {
     } else if (selectedObstacle && *selectedObstacle > index) {
         --*selectedObstacle;
     }
-    x.notices.log("Removed obstacle " + std::to_string(index) + ": " + describe(o));
+    x.notices.log("Removed obstacle " + std::to_string(index) + ": " +
+                  describe(o, x.view.axes(x.doc.world.def())));
     x.notices.say(std::string("Removed the ") + obstacleNoun(o) + " (Ctrl+Z brings it back)");
     x.edit.userAction(o.isPeg() ? "remove peg" : "remove wall");
 }

@@ -179,13 +179,33 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     const int left = controlsInset(session, controls);
     f.controlsInset = left;
     const int hudRoom = session.camera().viewportWidth() - left;
-    std::vector<std::string> readings = hudLines(hudData(session));
-    // The stopwatch where the eye is, and in screenshots and videos of the box.
-    if (std::string line = stopwatchLine(session.stopwatch(), session.world().time());
-        !line.empty()) {
-        readings.push_back(std::move(line));
+    const auto readings = [&](const HudData& d) {
+        std::vector<std::string> lines = hudLines(d);
+        // The stopwatch where the eye is, and in screenshots and videos of the box.
+        if (std::string line = stopwatchLine(session.stopwatch(), session.world().time());
+            !line.empty()) {
+            lines.push_back(std::move(line));
+        }
+        return wrapHudLines(hudFont, lines, hudRoom - 8);
+    };
+    const HudData hud = hudData(session);
+    o.hud = readings(hud);
+    // While a video records, the layout is the video's: the room it keeps for the HUD is the
+    // video's HUD with the lines that come and go as it records (a step into the past, an
+    // overlap), so that the panels beside and below it, the plots' rows among them, stay put
+    // through the clip. The screen's hints are drawn over the frame once it is taken.
+    std::optional<PixelPoint> videoHud;
+    if (stats.video.recording) {
+        HudData video = hud;
+        video.forVideo = true;
+        o.hudRecorded = readings(video);
+        video.past = true;
+        video.secondsBack = std::max(video.secondsBack, 99.99);
+        video.overlap = std::max(video.overlap, 0.999);
+        const PixelPoint now = textBoxSize(hudFont, o.hudRecorded),
+                         most = textBoxSize(hudFont, readings(video));
+        videoHud = PixelPoint{std::max(now.x, most.x), std::max(now.y, most.y)};
     }
-    o.hud = wrapHudLines(hudFont, readings, hudRoom - 8);
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (sideColumnFolded(session, controls)) {
         // Said where the eye is: the charts asked for are not drawn over the box.
@@ -256,7 +276,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.width = session.camera().viewportWidth();
     req.height = session.camera().viewportHeight();
     req.left = left;
-    req.hud = textBoxSize(hudFont, o.hud);
+    req.hud = videoHud.value_or(textBoxSize(hudFont, o.hud));
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {
         req.legend = textBoxSize(labelFont,

@@ -40,23 +40,36 @@ std::vector<std::string> hudLines(const HudData& d) {
     } else {
         std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
     }
-    std::snprintf(buf, sizeof buf, "Time %s | %s | %zu particle%s%s%s",
-                  quantity(d.simTime, "s").c_str(), speed, d.particles, d.particles == 1 ? "" : "s",
-                  d.paused ? " | PAUSED" : "", d.recording ? " | REC (X stops)" : "");
+    // A video says a past frame's time on its first line: a line that came and went would move
+    // what stands below the HUD mid-clip.
+    char back[48] = "";
+    if (d.forVideo && d.past) std::snprintf(back, sizeof back, " (%.2f s back)", d.secondsBack);
+    std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
+                  quantity(d.simTime, "s").c_str(), back, speed, d.particles,
+                  d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "",
+                  d.recording && !d.forVideo ? " | REC (X stops)" : "");
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
                   quantity(d.kineticEnergy, "J").c_str(),
                   quantity(d.momentum.x(), "", false).c_str(),
                   quantity(d.momentum.y(), "", false).c_str());
     lines.emplace_back(buf);
-    std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
-                  quantity(d.spawnRadius, "m").c_str());
-    std::string last = buf;
-    if (d.arrowSeconds > 0.0) {
-        std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
-        last += buf;
+    if (d.forVideo) {
+        // What the arrows mean is a reading; what a launch would make and the help are not.
+        if (d.arrowSeconds > 0.0) {
+            std::snprintf(buf, sizeof buf, "Arrows: %.3g s of motion", d.arrowSeconds);
+            lines.emplace_back(buf);
+        }
+    } else {
+        std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
+                      quantity(d.spawnRadius, "m").c_str());
+        std::string last = buf;
+        if (d.arrowSeconds > 0.0) {
+            std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
+            last += buf;
+        }
+        lines.push_back(last + " | H: help");
     }
-    lines.push_back(last + " | H: help");
     if (d.heaviestMass > d.lightestMass) {
         // The shading's key, where the discs are: without it a deeper shade reads as a team.
         std::snprintf(buf, sizeof buf, "Darker discs are heavier (%s to %s)",
@@ -69,7 +82,7 @@ std::vector<std::string> hudLines(const HudData& d) {
                       quantity(d.overlap, "m").c_str());
         lines.emplace_back(buf);
     }
-    if (d.past) {
+    if (d.past && !d.forVideo) {
         std::snprintf(buf, sizeof buf,
                       "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
                       d.secondsBack);

@@ -37,6 +37,10 @@ struct HudData {
     /// The scene's lightest and heaviest masses, kg, while they differ (mass_shade.hpp: the
     /// discs' shades show them); 0 when every particle has one mass.
     double lightestMass = 0.0, heaviestMass = 0.0;
+    /// The lines a video holds (docs/app.md, "Video"): the readings for whoever watches it,
+    /// without what is for the user at the keys (H: help, the launch's New:, REC (X stops), the
+    /// keys that step through the past).
+    bool forVideo = false;
 };
 
 /// What the profile overlay shows.
@@ -55,7 +59,7 @@ struct ProfileData {
                                       const std::string& scene = {}, bool unsaved = false);
 
 /// The status lines, top to bottom, numbers at human scale (quantity() of units.hpp); a time
-/// speed the steps cannot keep up with shows what is reached.
+/// speed the steps cannot keep up with shows what is reached. `d.forVideo`: a video's.
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);
 /// The HUD's note while the side column's charts are folded away (sideColumnFits), with the
 /// way to get them back: fold the control panel while it is open, else widen the window.

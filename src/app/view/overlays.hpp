@@ -15,6 +15,9 @@ namespace psb::app {
 
 struct Overlays {
     std::vector<std::string> hud;
+    /// While a video records, the HUD it holds: the readings without the key hints (HudData::
+    /// forVideo); `hud`, the one at the screen's, is drawn over it after the frame is taken.
+    std::vector<std::string> hudRecorded;
     std::vector<std::string> help;  ///< the page of the help shown
     PixelPoint helpAt{0, 0};        ///< where the help's box goes (helpRoom)
     std::vector<std::string> profile;
@@ -23,7 +26,8 @@ struct Overlays {
     bool showHelp = false;
     bool showProfile = false;
     /// The messages speak to the one at the screen (a file written, a recording started), not
-    /// to a video's audience: while a video records they are drawn after the frame is taken.
+    /// to a video's audience: while a video records they (and the HUD's hints: hudRecorded)
+    /// are drawn after the frame is taken.
     bool messagesAfterCapture = false;
 };
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -579,6 +580,84 @@ TEST_F(ControlPanelTest, TheDescriptionReadsWrappedAndAClickEditsIt) {
     EXPECT_NE(session_->meta().description.find("More."), std::string::npos)
         << session_->meta().description;
     EXPECT_NE(panel_.item("description edit"), nullptr) << "back to the wrapped text";
+}
+
+TEST_F(ControlPanelTest, CtrlSInAFieldKeepsItsTextThenGoesToTheApp) {
+    // Ctrl+S right after typing the description did nothing: the field took every key. Now the
+    // field keeps its text first (as Enter would), and once that frame is built the app has
+    // the shortcut; plain letters, S among them, stay the field's.
+    if (panel_.item("description") == nullptr) click("section Scene");
+    click("description");
+    frame();
+    const auto send = [this](Uint32 type, SDL_Keycode sym, Uint16 mod, const char* text) {
+        SDL_Event e{};
+        e.type = type;
+        if (type == SDL_TEXTINPUT) {
+            std::snprintf(e.text.text, sizeof e.text.text, "%s", text);
+        } else {
+            e.key.keysym.sym = sym;
+            e.key.keysym.scancode = SDL_GetScancodeFromKey(sym);
+            e.key.keysym.mod = mod;
+        }
+        return gui_->handleEvent(e);
+    };
+    for (const char c : std::string(" same mass")) {
+        const char text[2] = {c, '\0'};
+        const SDL_Keycode sym = c == ' ' ? SDLK_SPACE : static_cast<SDL_Keycode>(c);
+        EXPECT_TRUE(send(SDL_KEYDOWN, sym, KMOD_NONE, nullptr)) << c << " is the field's";
+        EXPECT_TRUE(send(SDL_TEXTINPUT, 0, KMOD_NONE, text));
+        send(SDL_KEYUP, sym, KMOD_NONE, nullptr);
+    }
+    EXPECT_TRUE(send(SDL_KEYDOWN, SDLK_s, KMOD_LCTRL, nullptr)) << "not the app's at once";
+    send(SDL_KEYUP, SDLK_s, KMOD_LCTRL, nullptr);
+    std::vector<SDL_Event> forApp;
+    for (int k = 0; k < 30 && forApp.empty(); ++k) {
+        frame();
+        forApp = gui_->takeAppKeys();
+    }
+    ASSERT_EQ(forApp.size(), 1u) << "the app has Ctrl+S";
+    EXPECT_EQ(forApp[0].key.keysym.sym, SDLK_s);
+    EXPECT_NE(forApp[0].key.keysym.mod & KMOD_CTRL, 0);
+    EXPECT_NE(session_->meta().description.find(" same mass"), std::string::npos)
+        << "kept before the app acts: " << session_->meta().description;
+    frame();  // ImGui's flags tell of the frame before
+    frame();
+    EXPECT_FALSE(gui_->io().WantTextInput) << "the field is closed";
+    EXPECT_NE(panel_.item("description edit"), nullptr) << "the description read as text again";
+    // From the panel's cursor (no field typed in) the app has it at once.
+    EXPECT_FALSE(send(SDL_KEYDOWN, SDLK_z, KMOD_LCTRL, nullptr) && gui_->hasKeyboard());
+}
+
+TEST_F(ControlPanelTest, TheDescriptionWrapsAsItIsTyped) {
+    // The field did not wrap: typing, the start of the text went off its left edge.
+    if (panel_.item("description") == nullptr) click("section Scene");
+    click("description");
+    frame();
+    ImGuiIO& io = gui_->io();
+    const std::string typed =
+        " A long sentence typed at the end of the description goes on past the field's width.";
+    for (const char c : typed) {
+        io.AddInputCharacter(static_cast<unsigned>(c));
+        frame();
+    }
+    const PanelItem* field = panel_.item("description");
+    ASSERT_NE(field, nullptr);
+    const ImGuiInputTextState* state = ImGui::GetInputTextState(field->id);
+    ASSERT_NE(state, nullptr) << "still being typed in";
+    EXPECT_EQ(state->ScrollX, 0.f) << "the start of the lines stays in view";
+    std::string shown;
+    for (int i = 0; i < state->CurLenA; ++i)
+        shown += state->TextA[i];
+    EXPECT_GE(std::count(shown.begin(), shown.end(), '\n'), 2) << shown;
+    io.MousePos = ImVec2(kSize - 5.f, kSize / 2.f);  // a click elsewhere keeps it
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+    frame();
+    const std::string& kept = session_->meta().description;
+    EXPECT_EQ(kept.find('\n'), std::string::npos) << "the lines' breaks are not the text's";
+    EXPECT_NE(kept.find(typed), std::string::npos) << kept;
 }
 
 TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPixelWindow) {

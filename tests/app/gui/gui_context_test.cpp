@@ -81,12 +81,13 @@ TEST_F(GuiContextTest, ClicksOverAPanelAreTakenAndClicksElsewhereAreNot) {
     frame(gui);
     frame(gui);
     EXPECT_TRUE(gui.wantsMouse());
-    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 60, 60)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 60, 60)));
 
     io.MousePos = ImVec2(250, 250);  // over the box, away from the panel
     frame(gui);
     EXPECT_FALSE(gui.wantsMouse());
-    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN)));
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 250, 250)));
     SDL_Event key{};
     key.type = SDL_KEYDOWN;
     key.key.keysym.sym = SDLK_SPACE;
@@ -112,6 +113,25 @@ TEST_F(GuiContextTest, AFirstClickAfterThePointerEntersAPanelIsThePanels) {
     EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 250, 250)));
     EXPECT_FALSE(gui.handleEvent(motion(60, 60)));
     EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 60, 60)));
+}
+
+TEST_F(GuiContextTest, AClickOnTheBoxRightAfterThePanelIsTheBoxs) {
+    // The pointer was on the panel in the last frame (a field just typed in, a dialog's button)
+    // and goes to a ball and clicks before another frame is drawn: ImGui's capture flag still
+    // says the panel's, and the first click on the ball did nothing.
+    GuiContext gui(sdl_);
+    gui.io().MousePos = ImVec2(60, 60);
+    frame(gui);
+    frame(gui);
+    ASSERT_TRUE(gui.wantsMouse());
+    EXPECT_FALSE(gui.handleEvent(motion(250, 250)));
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 250, 250)));
+    EXPECT_FALSE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 250, 250)));
+    // A press on the panel, let go over the box: the release is the panel's, as its press.
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONDOWN, 60, 60)));
+    EXPECT_TRUE(gui.handleEvent(motion(250, 250)));
+    EXPECT_TRUE(gui.handleEvent(mouseButton(SDL_MOUSEBUTTONUP, 250, 250)));
+    EXPECT_FALSE(gui.handleEvent(motion(260, 260)));
 }
 
 TEST_F(GuiContextTest, AWheelTurnOverAPanelIsThePanelsEvenAsThePointerArrives) {

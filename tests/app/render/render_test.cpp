@@ -106,6 +106,32 @@ TEST_F(RenderTest, WhileAVideoRecordsTheMessagesAreDrawnAfterTheRestOfTheFrame) 
     EXPECT_EQ(brightPixels(m.x, m.y, m.x + m.w, m.y + m.h, 150), lit) << "then drawn, the same";
 }
 
+TEST_F(RenderTest, WhileAVideoRecordsTheHudsKeyHintsAreDrawnAfterTheFrameIsTaken) {
+    // "H: help" and "Space continues from here, Shift+Left/Right step" were in the students'
+    // video: the frame the video takes holds the readings, the hints are drawn over it after.
+    Overlays o;
+    o.hud = {"Time 1.58 s | x1 | PAUSED", "Viewing 0.98 s back: Space continues from here",
+             "H: help"};
+    o.hudRecorded = {"Time 1.58 s | x1 | PAUSED", "Viewing 0.98 s back"};
+    o.messagesAfterCapture = true;
+    drawPanels(o);
+    const PixelRect h = layout_.hud;
+    const int lh = font_->lineHeight();
+    ASSERT_GT(h.w, 0);
+    const int hintX = h.x + font_->measure("Viewing 0.98 s back") + 8;
+    const int readings = brightPixels(h.x, h.y, h.x + h.w, h.y + 2 * lh, 150);
+    EXPECT_GT(readings, 20) << "the readings are in the video";
+    EXPECT_EQ(brightPixels(hintX, h.y + lh, h.x + h.w, h.y + 2 * lh, 150), 0)
+        << "the keys to step through the past are not";
+    EXPECT_EQ(brightPixels(h.x, h.y + 2 * lh + 4, h.x + h.w, h.y + 3 * lh + 2, 150), 0)
+        << "nor H: help";
+    drawMessages(sdl_, *font_, o, layout_);
+    SDL_RenderPresent(sdl_);
+    EXPECT_GT(brightPixels(hintX, h.y + lh, h.x + h.w, h.y + 2 * lh, 150), 20)
+        << "the one at the screen reads them";
+    EXPECT_GT(brightPixels(h.x, h.y + 2 * lh + 4, h.x + h.w, h.y + 3 * lh + 2, 150), 10);
+}
+
 TEST_F(RenderTest, AParticleColoursThePixelsOfItsDisc) {
     const World w = worldWith({150, 200}, Vec2::Zero(), 20.0, {255, 0, 0});
     draw(w, {});

@@ -353,9 +353,13 @@ TEST(Interaction, DeletionLogLineNamesPositionVelocityAndMassWithUnits) {
     p.position = {350.0, 120.5};
     p.velocity = {12.3, -4.0};
     p.mass = 10.0;
-    EXPECT_EQ(deletionLogLine(p),
+    EXPECT_EQ(deletionLogLine(p, Axes{}),
               "[I] Deleted particle at [350.00, 120.50] with x velocity 12.30 m/s, y velocity "
               "-4.00 m/s and mass 10.00 kg!");
+    // With y up (a 400 m box), as the window shows it.
+    EXPECT_EQ(deletionLogLine(p, Axes{true, 400.0}),
+              "[I] Deleted particle at [350.00, 279.50] with x velocity 12.30 m/s, y velocity "
+              "4.00 m/s and mass 10.00 kg!");
 }
 
 TEST(FindFreeSpot, ReturnsTheDesiredPointWhenItIsFree) {

@@ -77,6 +77,11 @@ TEST(Gravity, TogglesOffAndBackToTheScenesOwnBitForBit) {
     EXPECT_EQ(s.world().def().gravity, Vec2::Zero());
     s.apply(keys::gravity(s));
     EXPECT_EQ(s.world().def().gravity, d.gravity);
+    // Said in the axes the window shows (y up by default): the scene's 2 m/s² down is -2.
+    EXPECT_EQ(lastNotice(s), "Gravity [0.3333, -2] m/s\u00b2");
+    s.apply(cmd::SetShow{ShowOption::YUp, false});
+    s.apply(keys::gravity(s));
+    s.apply(keys::gravity(s));
     EXPECT_EQ(lastNotice(s), "Gravity [0.3333, 2] m/s\u00b2");
 }
 
@@ -105,8 +110,9 @@ TEST(Gravity, TurnsOnInExactModeAndParticlesFall) {
 }
 
 TEST(GravityText, SaysOffOrTheVector) {
-    EXPECT_EQ(gravityText(Vec2::Zero()), "off");
-    EXPECT_EQ(gravityText(Vec2(0, 343.35)), "[0, 343.4] m/s\u00b2");
+    EXPECT_EQ(gravityText(Vec2::Zero(), Axes{}), "off");
+    EXPECT_EQ(gravityText(Vec2(0, 343.35), Axes{}), "[0, 343.4] m/s\u00b2");
+    EXPECT_EQ(gravityText(Vec2(0, 9.81), Axes{true, 7.0}), "[0, -9.81] m/s\u00b2") << "y up";
 }
 
 TEST(ModeKey, CyclesDiscreteSubstepExact) {

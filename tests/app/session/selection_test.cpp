@@ -43,8 +43,12 @@ TEST(Selection, LogLineNamesStateWithUnitsAndTheParticlesNumber) {
     p.velocity = {-60, 240};
     p.mass = 18;
     p.radius = 45;
-    EXPECT_EQ(selectionLogLine(p),
+    EXPECT_EQ(selectionLogLine(p, Axes{}),
               "[I] Selected particle 4 at [520.00, 160.00] m with velocity [-60.00, 240.00] m/s, "
+              "mass 18 kg, radius 45 m");
+    // y up in a 700 m box: the height from the floor and vy upward, as the panel shows them.
+    EXPECT_EQ(selectionLogLine(p, Axes{true, 700.0}),
+              "[I] Selected particle 4 at [520.00, 540.00] m with velocity [-60.00, -240.00] m/s, "
               "mass 18 kg, radius 45 m");
 }
 

@@ -92,7 +92,7 @@ TEST_F(SessionValues, GravityOnWithItsValueOffAndBadValuesRefused) {
     Session s = session();
     s.apply(cmd::SetGravity{true, 9.81});
     EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 9.81));
-    EXPECT_TRUE(said(s.takeNotices(), "Gravity [0, 9.81] m/s\u00b2"));
+    EXPECT_TRUE(said(s.takeNotices(), "Gravity [0, -9.81] m/s\u00b2")) << "down, y counting up";
     s.apply(cmd::SetGravity{true, 1.62, true});
     EXPECT_EQ(s.world().def().gravity, Vec2(0.0, 1.62));
     for (const double bad : {0.0, -9.81, 1e9, std::numeric_limits<double>::infinity()}) {
@@ -538,6 +538,25 @@ TEST_F(SessionValues, SaveAsWritesThePathAsksBeforeReplacingAFileAndRemembersIt)
     EXPECT_EQ(s.fileError().rfind("Cannot open scene: ", 0), 0u) << s.fileError();
     s.apply(cmd::SaveAs{dir_ / "again.json"});
     EXPECT_TRUE(s.fileError().empty());
+}
+
+TEST_F(SessionValues, TheSavedLineBelongsToTheSceneSavedAndGoesWhenAnotherOpens) {
+    // The Scene section says "Saved to FILE" for the scene shown: after a preset, a new scene
+    // or another file it would name a file the scene on screen was never written to.
+    Session s = session();
+    s.apply(cmd::SaveAs{dir_ / "collision"});
+    ASSERT_TRUE(s.lastSave());
+    s.apply(cmd::OpenPreset{3});
+    EXPECT_FALSE(s.lastSave()) << "the gas was never saved";
+    s.apply(cmd::SaveAs{dir_ / "gas"});
+    ASSERT_TRUE(s.lastSave());
+    s.apply(cmd::NewScene{});
+    EXPECT_FALSE(s.lastSave());
+    s.apply(cmd::SaveAs{dir_ / "empty"});
+    s.apply(cmd::OpenFile{dir_ / "collision.json"});
+    EXPECT_FALSE(s.lastSave()) << "opened, not saved";
+    EXPECT_EQ(s.sceneFile().path, fs::absolute(dir_ / "collision.json").lexically_normal());
+    EXPECT_EQ(s.recentFiles().front().filename(), "collision.json");
 }
 
 TEST_F(SessionValues, SaveAsDropsTrailingDotsAndRefusesANameWithoutAStem) {

@@ -351,6 +351,46 @@ TEST(RecordingMark, TheMomentumLegendAndTheProfileGoUnderItNotUnderIt) {
     EXPECT_EQ(mark.x + mark.w, 1280 - kPanelMargin) << "still in the top-right corner";
 }
 
+TEST(Video, ItHoldsTheReadingsNotTheKeyHintsAndThePlotsKeepTheirRowsThroughTheClip) {
+    // A teacher's clip: "H: help" and "Viewing 0.98 s back: Space continues from here,
+    // Shift+Left/Right step" were in it, and the plots went from four rows to three when the
+    // clip stepped into the past (the HUD's extra line pushed the side column down).
+    Session s = sessionIn(1000, 760, true);
+    s.apply(cmd::SetShow{ShowOption::Plots, true});
+    s.apply(cmd::SetShow{ShowOption::Momentum, true});
+    s.apply(cmd::TogglePause{});
+    for (int k = 1; k <= 60; ++k)
+        s.update(1.0 / 60.0, k / 60.0);
+    s.apply(cmd::TogglePause{});
+    const test::FixedMeasure font;
+    FrameStats stats;
+    const auto joined = [](const std::vector<std::string>& lines) {
+        std::string all;
+        for (const std::string& l : lines)
+            all += l + "\n";
+        return all;
+    };
+    const FrameView screen = buildFrame(s, stats, font, font, {310.0, 44.0});
+    EXPECT_TRUE(screen.overlays.hudRecorded.empty()) << "nothing records";
+    stats.video.recording = true;
+    const FrameView now = buildFrame(s, stats, font, font, {310.0, 44.0});
+    s.apply(cmd::StepBack{});
+    s.apply(cmd::StepBack{});
+    const FrameView past = buildFrame(s, stats, font, font, {310.0, 44.0});
+    const std::string shown = joined(past.overlays.hud), video = joined(past.overlays.hudRecorded);
+    EXPECT_NE(shown.find("H: help"), std::string::npos) << "the screen keeps its hints";
+    EXPECT_NE(shown.find("Shift+Left/Right"), std::string::npos);
+    EXPECT_NE(video.find("(0.03 s back) | x1"), std::string::npos) << video;
+    EXPECT_NE(video.find("Kinetic energy"), std::string::npos);
+    EXPECT_NE(video.find("Arrows: 0.333 s of motion"), std::string::npos) << video;
+    for (const char* hint : {"H: help", "Space continues", "Shift+", "New:", "(X stops)"})
+        EXPECT_EQ(video.find(hint), std::string::npos) << hint << " in the video: " << video;
+    ASSERT_GT(now.layout.plots.w, 0);
+    EXPECT_EQ(past.layout.plotRows, now.layout.plotRows) << "no row gone mid-clip";
+    EXPECT_EQ(past.layout.plots.y, now.layout.plots.y);
+    EXPECT_EQ(past.layout.legend.y, now.layout.legend.y);
+}
+
 TEST(RecordingMark, InANarrowWindowItGoesBelowTheHudNotOverIt) {
     const Session s = sessionIn(420, 700, false);
     const test::FixedMeasure font;
