@@ -20,6 +20,9 @@
 #   6. clicks Play/Pause twice, Step                             -> time moves; Restart: the set-up
 #   6b. Tab three times, Space, Space                            -> time starts and stops (Play)
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
+#   7b. Ctrl+N, xdotool type "10", Tab, "4", Tab, "0", Enter     -> a 10 m x 4 m box (the "4"
+#                                                                   went into the width: 104)
+#   7c. types in the description, Ctrl+S in the field, Enter     -> saved with the description
 #   8. Esc                                                       -> exits (saved: nothing unsaved)
 set -euo pipefail
 
@@ -169,6 +172,33 @@ sleep 0.3
 opened=$(box_left)
 awk -v a="$opened" 'BEGIN { exit !(a >= 310) }' || fail "opened again, the box starts at $opened"
 pass "fold and open: box left edge $before -> $folded -> $opened px"
+
+# --- 7b. text typed quicker than a frame, with Tab between, reaches the fields in order ---------
+key ctrl+n
+wait_log "Control dialog width at"
+sleep 0.3
+xdotool type --delay 12 "10"
+xdotool key Tab
+xdotool type --delay 12 "4"
+xdotool key Tab
+xdotool type --delay 12 "0"
+xdotool key Return
+wait_log "New scene: an empty box 10(\.0+)? m x 4(\.0+)? m, no gravity"
+pass "typed 10, Tab, 4, Tab, 0: $(grep -o 'New scene: an empty box [^,]*' "$LOG" | tail -1)"
+
+# --- 7c. Ctrl+S while typing the description keeps it, then saves ---------------------------
+grep -qF "[I] Control description at " "$LOG" || click "section Scene"
+click description
+xdotool type --delay 20 "Typed in e2e"
+xdotool key ctrl+s  # still in the field: the description is kept first, then Save As asks
+wait_log "Save as: type a file name"
+sleep 0.3
+xdotool key Return
+wait_log "Saved 0 particles to /.*\.json"
+saved=$(grep -o "Saved 0 particles to /.*\.json" "$LOG" | tail -1 | sed 's/Saved 0 particles to //')
+grep -q '"description": ".*Typed in e2e"' "$saved" ||
+    fail "Ctrl+S in the field did not keep the description: $(grep description "$saved")"
+pass "Ctrl+S in the description's field: kept, then saved to $saved"
 
 # --- 8. leaving -------------------------------------------------------------------------------
 xdotool mousemove $((WX + 700)) $((WY + 400))

@@ -106,7 +106,8 @@ line=$(grep "Released particle" "$LOG" | tail -1)
 grep -q "Grabbed particle at \[5.20, 5.40\]" "$LOG" || fail "did not grab the yellow particle"
 vx=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1/' <<<"$line")
 vy=$(sed -E 's/.*velocity \[([-0-9.]+), ([-0-9.]+)\].*/\2/' <<<"$line")
-awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy > 1 && vy > 5 * (vx < 0 ? -vx : vx)) }' ||
+# The log counts y up, as the window does: down is vy < 0.
+awk -v vx="$vx" -v vy="$vy" 'BEGIN { exit !(vy < -1 && -vy > 5 * (vx < 0 ? -vx : vx)) }' ||
     fail "fling velocity [$vx, $vy] does not point down: $line"
 pass "grab and fling: $line"
 
@@ -129,15 +130,16 @@ wait_log "Launched particle at"
 line=$(grep "Launched particle" "$LOG" | tail -1)
 read -r px py vx vy < <(sed -E 's/.*at \[([-0-9.]+), ([-0-9.]+)\] with velocity \[([-0-9.]+), ([-0-9.]+)\].*/\1 \2 \3 \4/' <<<"$line")
 # The press point, to within a screen pixel (under 2 cm at this zoom); the drag's 80 px up-right
-# over the arrow time (1/3 s) is several m/s.
+# over the arrow time (1/3 s) is several m/s. The log counts y up from the floor of the 7 m box:
+# 6.2 m down is 0.8 m up, and up is vy > 0.
 awk -v x="$px" -v y="$py" -v vx="$vx" -v vy="$vy" \
-    'BEGIN { exit !((x - 1.0) ^ 2 < 0.0009 && (y - 6.2) ^ 2 < 0.0009 && vx > 1 && vy < -1) }' ||
+    'BEGIN { exit !((x - 1.0) ^ 2 < 0.0009 && (y - 0.8) ^ 2 < 0.0009 && vx > 1 && vy > 1) }' ||
     fail "launch not at the press point or not up-right: $line"
 wait_title "6 particles - PAUSED"
 pass "launch: $line"
 shot 1-launched
 # A 10 kg launched particle is coloured (151, 200, 224), in the shade of its mass.
-LAUNCHED=$(fill_at "$OUT/1-launched.png" "$(sx "$px")" "$(sy "$py")")
+LAUNCHED=$(fill_at "$OUT/1-launched.png" "$(sx "$px")" "$(sy "$(awk -v y="$py" 'BEGIN { print 7 - y }')")")
 read -r fr fg fb <<<"$LAUNCHED"
 ((fb > fr && fg > fr)) || fail "the launched particle's fill ($LAUNCHED) is not a light blue"
 read -r lx0 ly0 ln0 < <(centroid "$OUT/1-launched.png" $LAUNCHED)
