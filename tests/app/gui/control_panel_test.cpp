@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -579,6 +580,95 @@ TEST_F(ControlPanelTest, TheDescriptionReadsWrappedAndAClickEditsIt) {
     EXPECT_NE(session_->meta().description.find("More."), std::string::npos)
         << session_->meta().description;
     EXPECT_NE(panel_.item("description edit"), nullptr) << "back to the wrapped text";
+}
+
+TEST_F(ControlPanelTest, TheRampsValuesTableKeepsEveryColumnAsWideAsItsNumbers) {
+    // The ramp's table (its bodies turn: omega and KE rot join the columns) at 200 %: the KE
+    // column was as narrow as "KE" at rest and its numbers ran into the next once the bodies
+    // moved, and where the table scrolled sideways nothing said so. Each column is as wide
+    // at rest as in motion and no cell runs into the next; where the window holds every
+    // column none is out of sight, and where it cannot the table says which are and how to
+    // reach them, the particles' numbers staying at the left.
+    struct Case {
+        int width, height;
+        float scale;
+    };
+    for (const Case& c : {Case{1600, 1000, 2.f}, Case{1600, 1000, 1.5f}, Case{1920, 1200, 1.5f},
+                          Case{1024, 768, 1.25f}}) {
+        const std::string at = std::to_string(c.width) + "x" + std::to_string(c.height) + " at " +
+                               std::to_string(c.scale);
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = c.width;
+        so.viewportHeight = c.height;
+        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale));
+        so.controls = so.layout.controlsFit;
+        Session s(
+            makeWorld(loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / "12-ramp.json")),
+            SceneInfo{.name = "ramp", .dt = 0.002}, so);
+        ASSERT_TRUE(s.world().rotationInUse());
+        s.apply(cmd::SetShow{ShowOption::Values, true});
+        gui_->setScale(c.scale);
+        ControlPanel panel;
+        const auto frames = [&] {
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(static_cast<float>(c.width), static_cast<float>(c.height));
+                for (const Command& command :
+                     panel.build(s, FrameStats{}, static_cast<float>(c.height) / c.scale, c.scale))
+                    s.apply(command);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+        };
+        const ValuesTable t = valuesTable(s.world(), std::nullopt, s.axes());
+        const auto starts = [&] {
+            std::vector<float> x;
+            for (const ValuesColumn& column : t.columns) {
+                const PanelItem* cell = panel.item(std::string("values 1 ") + column.name);
+                x.push_back(cell != nullptr ? cell->x0 : -1.f);
+            }
+            return x;
+        };
+        frames();
+        const std::vector<float> atRest = starts();
+        // The race a second and a half on: 3.34 m/s, KE 6.31 J, omega -29.6 rad/s.
+        for (const ParticleId id : s.world().ids()) {
+            s.apply(cmd::EditParticle{id, ParticleField::Vx, "3.339"});
+            s.apply(cmd::EditParticle{id, ParticleField::Vy, "-1.21"});
+            s.apply(cmd::EditParticle{id, ParticleField::Omega, "-29.62"});
+        }
+        frames();
+        EXPECT_EQ(starts(), atRest) << at << ": the columns moved as the numbers changed";
+        const PanelItem* w = panel.item("values window");
+        ASSERT_NE(w, nullptr) << at;
+        const float right = w->x1 - ImGui::GetStyle().WindowPadding.x;
+        const bool scrolls = panel.item("values more columns") != nullptr;
+        for (const std::string row : {"values 1 ", "values 2 ", "values 3 ", "values total "}) {
+            const PanelItem* before = nullptr;
+            for (const ValuesColumn& column : t.columns) {
+                const PanelItem* cell = panel.item(row + column.name);
+                if (cell == nullptr) continue;  // the totals of x, y, vx, vy, omega: none
+                if (before != nullptr) {
+                    EXPECT_LE(before->x1, cell->x0 + 0.5f)
+                        << at << ": " << row << "runs into " << column.name;
+                }
+                before = cell;
+                if (!scrolls) {
+                    EXPECT_LE(cell->x1, right + 0.5f)
+                        << at << ": " << row << column.name << " out of sight, unsaid";
+                }
+            }
+        }
+        const PanelItem* number = panel.item("values row 1");
+        ASSERT_NE(number, nullptr) << at;
+        EXPECT_GE(number->x0, w->x0) << at << ": the particles' numbers stay";
+        std::printf("%s: table %s, %.0f wide, scrolls %d\n", at.c_str(),
+                    s.valuesDock().right ? "at the right" : "along the bottom", w->x1 - w->x0,
+                    scrolls);
+        if (c.width == 1920) {
+            EXPECT_FALSE(scrolls) << at << ": the window holds every column";
+        }
+    }
+    gui_->setScale(1.f);
 }
 
 TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPixelWindow) {
