@@ -197,9 +197,16 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
     placed.reserve(asks.size());
     const bool rings = asks.size() <= kMaxLeaderLabels;
     const PixelRect& window = room.window;
+    // The leader lines drawn so far: a label keeps off them, as off another label.
+    std::vector<LeaderLine> leaders;
+    const auto onLine = [](const LeaderLine& l, const PixelRect& r) {
+        return segmentMeetsRect(l.ax, l.ay, l.bx, l.by, r.x, r.y, r.x + r.w, r.y + r.h);
+    };
     const auto free = [&](const PixelRect& r) {
         return contains(window, r) && clearOf(r, placed) && clearOf(r, room.keepOut) &&
-               !discs.any(r) && !crossesWalls(r, room);
+               !discs.any(r) && !crossesWalls(r, room) &&
+               std::none_of(leaders.begin(), leaders.end(),
+                            [&](const LeaderLine& l) { return onLine(l, r); });
     };
 
     for (const std::size_t i : order) {
@@ -239,10 +246,13 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
                 const LeaderLine line = leaderLine(a.disc, r);
                 if (std::any_of(room.walls.begin(), room.walls.end(),
                                 [&line](const ScreenWall& w) { return leaderCrosses(line, w); }) ||
-                    discs.anyOnLine(line.ax, line.ay, line.bx, line.by, a.disc)) {
+                    discs.anyOnLine(line.ax, line.ay, line.bx, line.by, a.disc) ||
+                    std::any_of(placed.begin(), placed.end(),
+                                [&](const PixelRect& other) { return onLine(line, other); })) {
                     continue;
                 }
                 take(r);
+                leaders.push_back(line);
                 p.leader = true;
                 return true;
             }

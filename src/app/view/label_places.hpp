@@ -14,8 +14,9 @@
 //
 // and, where no place is free for it, its name alone ("particle 3") is placed the same way;
 // it is left out when none is free for that either. Free: inside the window, clear of every disc,
-// of the labels already placed and of what the room keeps out (the panels, pegs, the ruler's
-// reading), and across no wall (the box's outline, a wall at any angle). A label never covers a
+// of the labels already placed and their leader lines (a leader line passes over no other disc
+// nor label) and of what the room keeps out (the panels, pegs, the ruler's reading), and across
+// no wall (the box's outline, a wall at any angle). A label never covers a
 // ball nor crosses a wall: in a crowd (the funnel's 400 balls) most are left out, and the HUD says
 // how many. Where that leaves a label out and the labels have a short form (LabelAsk::shortSize),
 // every label takes its short form if that leaves fewer out (a small box at 200 %: two lines
