@@ -439,9 +439,6 @@ TEST(BoxShare, OnTheProjectorTheLessonsBoxesKeepAReasonableShareOfTheWindow) {
             onTheProjector(presetWorld("12-ramp.json"), {ShowOption::Values, ShowOption::Ruler});
         const Camera::ScreenBox free = bare.camera().boxOnScreen(4.0, 3.9);
         const Camera::ScreenBox box = s.camera().boxOnScreen(4.0, 3.9);
-        std::printf("ramp: free %.0f x %.0f, box %.0f x %.0f, dock right %d size %.0f\n",
-                    free.size.x(), free.size.y(), box.size.x(), box.size.y(), s.valuesDock().right,
-                    s.valuesDock().size);
         EXPECT_GE(box.size.y(), 0.6 * free.size.y()) << "the ramp's box";
         EXPECT_GE(box.size.y(), 360.0) << "the ramp's box";
         // The table is on screen and off the box.
@@ -458,8 +455,6 @@ TEST(BoxShare, OnTheProjectorTheLessonsBoxesKeepAReasonableShareOfTheWindow) {
             lessonWorld(), {ShowOption::Plots, ShowOption::Momentum, ShowOption::Labels});
         const Camera::ScreenBox free = bare.camera().boxOnScreen(10.0, 4.0);
         const Camera::ScreenBox box = s.camera().boxOnScreen(10.0, 4.0);
-        std::printf("lesson: free %.0f x %.0f, box %.0f x %.0f\n", free.size.x(), free.size.y(),
-                    box.size.x(), box.size.y());
         EXPECT_GE(box.size.x(), 0.6 * free.size.x()) << "the lesson's box";
         EXPECT_GE(box.size.x(), 760.0) << "the lesson's box";
         const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
