@@ -57,15 +57,29 @@ void ControlPanel::card(const Session& s) {
     widgets::wrappedDisabled(card->follows != 0 ? "The selected particle's last collision"
                                                 : "The last collision between two particles "
                                                   "(select one to follow it)");
+    // The names' column as wide as their longest word and their units ("kinetic" over
+    // "energy"): the values' columns keep the room for a vector in one line, which in a gas's
+    // collision ("(-0.236, -0.306)") wrapped onto two at 200 %.
+    float names = 0.f;
+    for (const CollisionCardText::Row& r : text.rows) {
+        names = std::max(names, ImGui::CalcTextSize(r.unit.c_str()).x);
+        for (std::size_t from = 0; from < r.name.size();) {
+            const std::size_t end = std::min(r.name.find(' ', from), r.name.size());
+            names = std::max(names, ImGui::CalcTextSize(r.name.substr(from, end - from).c_str()).x);
+            from = end + 1;
+        }
+    }
     if (ImGui::BeginTable("collision", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
-        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed);
+        ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, std::ceil(names));
         ImGui::TableSetupColumn("before", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("after", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableHeadersRow();
         for (const CollisionCardText::Row& r : text.rows) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
+            ImGui::PushTextWrapPos(0.f);
             ImGui::TextUnformatted(r.name.c_str());
+            ImGui::PopTextWrapPos();
             if (!r.unit.empty()) ImGui::TextDisabled("%s", r.unit.c_str());
             widgets::tip(r.help.c_str());
             ImGui::TableNextColumn();
@@ -125,11 +139,23 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
     draw.AddLine(ImVec2(centre.x, at.y), ImVec2(centre.x, at.y + side), faint);
     const float font = ImGui::GetFontSize();
     const float head = 0.45f * font;
+    std::vector<Vec2> sizes;
     for (const MomentaDiagram::Arrow& a : arrows) {
+        const ImVec2 size = ImGui::CalcTextSize(a.label.c_str());
+        sizes.emplace_back(size.x, size.y);
+    }
+    // Each label inside the square, clear of the arrows, the axes and the other labels
+    // (view/momenta_diagram.hpp); an arrow's head is 0.45 font wide, half of it either side.
+    const std::vector<Vec2> labels = momentaLabelPlaces(d, arrows, side, sizes, 0.25 * font + 1.0);
+    for (std::size_t k = 0; k < arrows.size(); ++k) {
+        const MomentaDiagram::Arrow& a = arrows[k];
         const Vec2 from = d.fromPixels(a, side), to = d.toPixels(a, side);
         const ImVec2 p0(at.x + static_cast<float>(from.x()), at.y + static_cast<float>(from.y()));
         const ImVec2 p1(at.x + static_cast<float>(to.x()), at.y + static_cast<float>(to.y()));
         const ImU32 color = arrowColor(a.kind);
+        draw.AddText(ImVec2(at.x + static_cast<float>(labels[k].x()),
+                            at.y + static_cast<float>(labels[k].y())),
+                     readableLabel(color), a.label.c_str());
         const float thick = a.kind == MomentaDiagram::Kind::Total ? 0.16f * font : 0.11f * font;
         const Vec2 along = to - from;
         const double length = along.norm();
@@ -147,15 +173,6 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
         draw.AddTriangleFilled(
             p1, ImVec2(at.x + static_cast<float>(l.x()), at.y + static_cast<float>(l.y())),
             ImVec2(at.x + static_cast<float>(r.x()), at.y + static_cast<float>(r.y())), color);
-        // The label beside the arrow's middle, above it (left of an upright one): in a
-        // head-on collision's rows each label then sits in the gap above its own arrow.
-        const Vec2 up = n.y() < 0.0 || (n.y() == 0.0 && n.x() < 0.0) ? n : Vec2(-n);
-        const ImVec2 size = ImGui::CalcTextSize(a.label.c_str());
-        const double clear = std::abs(up.y()) * 0.5 * size.y + std::abs(up.x()) * 0.5 * size.x;
-        const Vec2 mid = 0.5 * (from + to) + (clear + 0.15 * font) * up;
-        draw.AddText(ImVec2(at.x + static_cast<float>(mid.x()) - 0.5f * size.x,
-                            at.y + static_cast<float>(mid.y()) - 0.5f * size.y),
-                     readableLabel(color), a.label.c_str());
     }
 }
 

@@ -66,18 +66,27 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
         s.world().rotationInUse()
             ? "Click a particle's number to select it; type in x, y, vx, vy, \u03c9 or mass"
             : "Click a particle's number to select it; type in x, y, vx, vy or mass");
-    ImGui::SameLine();
+    const ImGuiStyle& style = ImGui::GetStyle();
+    // The next small button on this line where it fits whole, else on the next: in a column
+    // at the right the line is narrower than the name and its three buttons.
+    const auto besideIfRoom = [&style](const char* label) {
+        const float width = ImGui::CalcTextSize(label).x + 2.f * style.FramePadding.x;
+        const float right = ImGui::GetWindowContentRegionMax().x;
+        ImGui::SameLine();
+        if (ImGui::GetCursorPosX() + width > right) ImGui::NewLine();
+    };
+    besideIfRoom("Copy");
     const ValuesTable t = valuesTable(s.world(), s.selection().id(), s.axes());
     if (ImGui::SmallButton("Copy")) out_.emplace_back(cmd::CopyTable{cmd::DataTable::Values});
     mark("values Copy");
     widgets::tip("Every particle's values as tab-separated text, to paste into a spreadsheet");
-    ImGui::SameLine();
+    besideIfRoom("Export CSV");
     if (ImGui::SmallButton("Export CSV")) {
         out_.emplace_back(cmd::ExportTable{cmd::DataTable::Values, {}});
     }
     mark("values Export");
     widgets::tip("Write every particle's values as a CSV file (values.csv)");
-    ImGui::SameLine();
+    besideIfRoom("Hide");
     if (ImGui::SmallButton("Hide")) out_.emplace_back(cmd::SetShow{cmd::ShowOption::Values, false});
     mark("values Hide");
     widgets::tip("Hide the values table (key I)");
@@ -88,7 +97,6 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     const std::vector<ValuesColumn>& columns = t.columns;
     // Each column as wide as its name, its unit and its widest number (the fields with their
     // frames), so no number is cut; the band scrolls sideways when they are wider than it.
-    const ImGuiStyle& style = ImGui::GetStyle();
     std::vector<float> widths(columns.size(), 0.f);
     const auto widen = [&widths](std::size_t k, const std::string& text, float extra) {
         widths[k] = std::max(widths[k], ImGui::CalcTextSize(text.c_str()).x + extra);
@@ -104,9 +112,31 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
                                    : valuesCell(r.values[k]),
                   frame);
         }
-        // A field at least as wide as a signed value of four figures ("-1.235", "-12.35"), so
-        // that columns do not jump while values change; a longer one typed scrolls within it.
-        if (columns[k].field) widen(k, "-0.000", frame);
+        // A field at least as wide as a signed value of four figures ("-1.235", "-12.35"), and
+        // a number as wide as one of three ("-0.123", "-1 230"), so that columns do not jump
+        // while values change (the kinetic energy's was as narrow as "KE" at rest, and its
+        // numbers ran into the next column once the bodies moved); a longer one typed scrolls
+        // within its field.
+        widen(k, "-0.000", frame);
+    }
+    // Wider than the room: say so where it is seen, and which columns are out of sight (the
+    // particles' numbers stay at the left as the table scrolls).
+    {
+        const float cell = 2.f * std::ceil(style.CellPadding.x / 2.f) + 1.f;  // and a border
+        float x = std::max(ImGui::CalcTextSize("total").x,
+                           ImGui::CalcTextSize(std::to_string(t.particles).c_str()).x) +
+                  cell;
+        const float room = ImGui::GetContentRegionAvail().x;
+        std::string hidden;
+        for (std::size_t k = 0; k < columns.size(); ++k) {
+            x += widths[k] + cell;
+            if (x > room) hidden += std::string(hidden.empty() ? "" : ", ") + columns[k].name;
+        }
+        if (!hidden.empty()) {
+            widgets::wrappedColored(widgets::caution(s.view().theme),
+                                    "Scroll sideways (the bar below the rows) for " + hidden);
+            mark("values more columns");
+        }
     }
     const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                   ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX |

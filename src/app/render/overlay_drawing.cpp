@@ -54,9 +54,10 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
     panels.draw(renderer);
     if (o.showHelp) {
         // The help is asked for and read, then closed: it covers the other panels meanwhile,
-        // their text included (drawn after them, opaque).
+        // their text included (drawn after them, opaque: at 245 the HUD's lines showed through
+        // its first ones).
         const PixelPoint size = textBoxSize(font, o.help);
-        panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y}, 245);
+        panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y}, 255);
         panels.draw(renderer);
     }
 }

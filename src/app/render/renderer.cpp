@@ -90,8 +90,7 @@ void Renderer::drawWalls(const World& world, const Camera& camera, const Palette
     const Vec2 b = camera.worldToScreen(Vec2(d.width, d.height));
     // The original's walls thicken with zoom; here 0.4 % of the box's smaller side, at least
     // two pixels, drawn outside the box so they never cover a particle touching them.
-    const double thickness = camera.toScreen(0.004 * std::min(d.width, d.height));
-    const float t = static_cast<float>(std::max(2.0, thickness));
+    const auto t = static_cast<float>(boxWallPixels(d.width, d.height, camera.zoom()));
     const float x0 = static_cast<float>(a.x()), y0 = static_cast<float>(a.y());
     const float x1 = static_cast<float>(b.x()), y1 = static_cast<float>(b.y());
     const SDL_FRect rects[4] = {{x0 - t, y0 - t, x1 - x0 + 2 * t, t},
@@ -355,6 +354,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 asks[k].disc = {cx - r, cy - r, 2 * r, 2 * r};
                 asks[k].size = {width + 4, 5 * lh + 1};
                 asks[k].shortSize = {shortWidth + 4, 2 * lh + 1};
+                asks[k].nameSize = {labelFont_->measure(lines[0].data()) + 4, lh + 1};
                 asks[k].inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
                                 p.x[i] <= world.def().width && p.y[i] <= world.def().height;
             }
@@ -369,14 +369,11 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     continue;
                 }
                 if (place.leader) {
-                    // From the disc's rim to the label's nearest point: whose label it is.
-                    const PixelRect& d = asks[k].disc;
-                    const Vec2 c(d.x + 0.5 * d.w, d.y + 0.5 * d.h);
-                    const auto x0 = static_cast<double>(box.x), y0 = static_cast<double>(box.y);
-                    const Vec2 near(std::clamp(c.x(), x0, x0 + box.w),
-                                    std::clamp(c.y(), y0, y0 + box.h));
-                    const Vec2 u = (near - c).normalized();
-                    const Vec2 from = c + u * (0.5 * d.w - 2.0);
+                    // From the disc's rim to the label's nearest point: whose label it is
+                    // (the line the places were chosen for: it crosses no wall).
+                    const LeaderLine line = leaderLine(asks[k].disc, box);
+                    const Vec2 from(line.ax, line.ay), near(line.bx, line.by);
+                    const Vec2 u = (near - from).normalized();
                     const Vec2 side = Vec2(-u.y(), u.x()) * 0.75;
                     const SDL_Color ink = sdlColor(colours.labelText);
                     const auto pt = [](const Vec2& v) {
@@ -388,7 +385,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 labelBoxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
                                  static_cast<float>(box.x + box.w),
                                  static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
-                const int lineCount = place.shortForm ? 2 : 5;
+                const int lineCount = place.nameOnly ? 1 : place.shortForm ? 2 : 5;
                 for (int line = 0; line < lineCount; ++line) {
                     const auto at = static_cast<std::size_t>(line);
                     const char* text =

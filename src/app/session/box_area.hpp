@@ -29,6 +29,9 @@ struct BoxArea {
     double valuesRow = 0.0;
     double valuesLeast = 0.0;
     double valuesColumn = 0.0;
+    /// The area's top when the side column's charts are folded away (the HUD's band then holds
+    /// the line that says so).
+    double foldedTop = 0.0;
 
     friend bool operator==(const BoxArea&, const BoxArea&) = default;
 };

@@ -18,9 +18,13 @@ namespace psb::app {
 
 namespace {
 
-/// The share of its size the box gives up, at most, for the values table's band to show every
-/// particle's row (SceneView::fit).
-constexpr double kValuesRowsBoxShare = 2.0 / 3.0;
+/// The share of its size (its zoom) the box keeps of what it has beside the control panel, the
+/// HUD and the messages alone, when the values table or the side column's charts are shown
+/// (SceneView::fit): at 200 % in 1600 x 1000 the ramp's box was 200 pixels high under the
+/// table's three rows, the momentum lesson's 205 beside the plots.
+constexpr double kBoxKeeps = 0.6;
+/// ...unless its smaller side keeps this share of the window's smaller side, which is enough.
+constexpr double kBoxEnough = 0.4;
 
 }  // namespace
 
@@ -39,24 +43,11 @@ bool SceneView::columnAsked(const SceneInfo& meta) const {
 }
 
 void SceneView::fit(const Document& doc, Notices& notices) {
-    // The area the view left the box beside the panels as they are now.
-    const BoxArea& a = layout_.area(controls_, columnAsked(doc.meta));
+    const bool asked = columnAsked(doc.meta);
     const double w = doc.world.def().width, h = doc.world.def().height, margin = 10.0;
-    // The values table docks where the box comes out largest: along the bottom with its rows,
-    // with fewer rows (the rest scroll), or at the right. Among places within 2 % of the
-    // largest the first is kept: a band of rows reads best; and one that shows every
-    // particle's row is kept at some cost (kValuesRowsBoxShare).
-    std::vector<ValuesDock> docks;
-    if (options_.values) {
-        docks.push_back({false, a.valuesBand});
-        for (double band = a.valuesBand - a.valuesRow;
-             a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0; band -= a.valuesRow) {
-            docks.push_back({false, band});
-        }
-        if (a.valuesColumn > 0.0) docks.push_back({true, a.valuesColumn});
-    }
-    if (docks.empty()) docks.push_back({});
-    const auto fitWith = [&](const ValuesDock& d) {
+    // The box fitted into `a` with the values table docked as `d` (size 0: not shown); returns
+    // the zoom the area itself allows.
+    const auto fitWith = [&](const BoxArea& a, const ValuesDock& d) {
         // The table's column takes the side column's place (its charts fold away).
         double right = d.right ? d.size : a.right;
         const double bottom = a.bottom + (d.right ? 0.0 : d.size);
@@ -77,32 +68,65 @@ void SceneView::fit(const Document& doc, Notices& notices) {
         const double usableH = camera_.viewportHeight() - a.top - bottom - 2.0 * margin;
         return std::max(0.0, std::min(usableW / w, usableH / h));
     };
-    std::vector<double> zooms;
-    for (const ValuesDock& d : docks)
-        zooms.push_back(fitWith(d));
-    // A band that shows every particle's row (as many as the full band holds) is kept over a
-    // shorter one unless the box would lose more than a third of its size for it: a lesson's
-    // two balls and their total behind a scroll bar, for a box 5 % larger, read worse.
-    const auto rowsOf = [&](const ValuesDock& d) {
-        return a.valuesRow > 0.0 ? std::floor((d.size - a.valuesLeast) / a.valuesRow + 1e-6) + 1.0
-                                 : 0.0;
+    // The share the box keeps (kBoxKeeps) is of its size beside the control panel, the HUD and
+    // the messages alone: neither the side column nor the values table.
+    const BoxArea& bare = layout_.area(controls_, false);
+    // ...or, where that share is more than a box needs (a tall window's square box beside the
+    // plots), a smaller side of kBoxEnough of the window's.
+    const double enough =
+        kBoxEnough * std::min(camera_.viewportWidth(), camera_.viewportHeight()) / std::min(w, h);
+    const double keeps = std::min(kBoxKeeps * fitWith(bare, {}), enough);
+    // The side column's charts folded away: the box's area loses the column and the HUD's band
+    // keeps the line that says so.
+    BoxArea folded = bare;
+    folded.top = std::max(bare.top, bare.foldedTop);
+    // A choice: the area, the table's dock, whether the charts fold, the zoom it gives.
+    struct Choice {
+        const BoxArea* area;
+        ValuesDock dock;
+        bool fold = false;
+        double zoom = 0.0;
     };
-    const double wanted =
-        std::min(std::max(static_cast<double>(doc.world.size()), 1.0), rowsOf(docks[0]));
-    const auto showsAll = [&](const ValuesDock& d) {
-        return !options_.values || d.right || a.valuesRow <= 0.0 || rowsOf(d) >= wanted;
+    std::vector<Choice> tried;
+    const auto tryBands = [&](const BoxArea& a, bool fold) {
+        if (!options_.values) {
+            tried.push_back({&a, {}, fold, fitWith(a, {})});
+            return;
+        }
+        // The band with its rows, then with a row fewer each time (the others scroll), down to
+        // one.
+        tried.push_back({&a, {false, a.valuesBand}, fold, fitWith(a, {false, a.valuesBand})});
+        for (double band = a.valuesBand - a.valuesRow;
+             a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0; band -= a.valuesRow) {
+            tried.push_back({&a, {false, band}, fold, fitWith(a, {false, band})});
+        }
     };
-    double best = *std::max_element(zooms.begin(), zooms.end());
-    double bestShowingAll = 0.0;
-    for (std::size_t k = 0; k < docks.size(); ++k)
-        if (showsAll(docks[k])) bestShowingAll = std::max(bestShowingAll, zooms[k]);
-    const bool keepRows = bestShowingAll >= kValuesRowsBoxShare * best;
-    if (keepRows) best = bestShowingAll;
-    std::size_t chosen = 0;
-    while (zooms[chosen] < 0.98 * best || (keepRows && !showsAll(docks[chosen])))
-        ++chosen;
-    valuesDock_ = options_.values ? docks[chosen] : ValuesDock{};
-    fitWith(docks[chosen]);
+    // What gives way, in order, until the box keeps its share: the values table's band its
+    // rows (they scroll), then the side column its charts, then the table docks at the right in
+    // the side column's place. Where nothing leaves it that share, the largest box wins.
+    const BoxArea& a = layout_.area(controls_, asked);
+    tryBands(a, false);
+    if (asked) tryBands(folded, true);
+    // At the right the table folds the charts asked for, whose note the HUD's band then holds.
+    BoxArea besideColumn = a;
+    if (asked) besideColumn.top = std::max(a.top, a.foldedTop);
+    if (options_.values && a.valuesColumn > 0.0) {
+        tried.push_back({&besideColumn,
+                         {true, a.valuesColumn},
+                         false,
+                         fitWith(besideColumn, {true, a.valuesColumn})});
+    }
+    const auto keeper = std::find_if(tried.begin(), tried.end(), [&](const Choice& c) {
+        return c.zoom >= keeps * (1.0 - 1e-9);
+    });
+    const Choice chosen =
+        keeper != tried.end()
+            ? *keeper
+            : *std::max_element(tried.begin(), tried.end(),
+                                [](const Choice& l, const Choice& r) { return l.zoom < r.zoom; });
+    valuesDock_ = chosen.dock;
+    columnFolded_ = chosen.fold;
+    fitWith(*chosen.area, chosen.dock);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     notices.log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(),
                     topLeft.x(), topLeft.y()));

@@ -64,6 +64,10 @@ class SceneView {
     /// Where the values table docks (I): where it left the box largest when the box was last
     /// fitted (BoxArea).
     [[nodiscard]] const ValuesDock& valuesDock() const { return valuesDock_; }
+    /// The side column's charts are folded away so that the box keeps its share of the window
+    /// (fit; the values table's dock at the right folds them as well: box_area.hpp's
+    /// sideColumnFolded).
+    [[nodiscard]] bool columnFolded() const { return columnFolded_; }
     /// The view is as Fit left it (a resize fits again).
     [[nodiscard]] bool fitted() const { return fitted_; }
     /// The bins panel is drawn: the scene (`meta`) has bins and the view shows them.
@@ -94,6 +98,7 @@ class SceneView {
     bool fitted_ = true;
     WindowLayout layout_;
     ValuesDock valuesDock_;
+    bool columnFolded_ = false;
     ViewOptions options_;
     bool help_ = false;
     std::size_t helpPage_ = 0;

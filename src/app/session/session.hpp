@@ -169,6 +169,8 @@ class Session {
     [[nodiscard]] const WindowLayout& layout() const { return view_.layout(); }
     /// Whether a panel of the side column (plots, histograms, profile) is on.
     [[nodiscard]] bool columnAsked() const { return view_.columnAsked(doc_.meta); }
+    /// The side column's charts are folded so that the box keeps its share (SceneView::fit).
+    [[nodiscard]] bool columnFolded() const { return view_.columnFolded(); }
     /// Where the values table docks (I): where it left the box largest when the box was last
     /// fitted (BoxArea).
     [[nodiscard]] const ValuesDock& valuesDock() const { return view_.valuesDock(); }

@@ -91,15 +91,12 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         } else {
             a.spareColumn = inspector;
         }
-        ValuesBand band = valuesBand(height, a.top, controls.pointPixels);
+        const ValuesBand band = valuesBand(height, a.top, controls.pointPixels);
         // The values table's column takes the side column's place, whose charts then fold
-        // away (the HUD says so: its band makes room for the note).
+        // away (the HUD says so: the box then stands below foldedTop).
         a.valuesColumn = valuesColumn(width, a.left, 0.0, height, a.top, a.bottom, band.least,
                                       controls.pointPixels);
-        if (a.valuesColumn > 0.0 && columnAsked && fits) {
-            a.top = std::max(top, hudBand(hudFont, room, true));
-            band = valuesBand(height, a.top, controls.pointPixels);
-        }
+        a.foldedTop = std::max(a.top, hudBand(hudFont, room, true));
         a.valuesBand = band.height + kPanelGap;
         a.valuesRow = band.row;
         a.valuesLeast = std::min(band.least, band.height) + kPanelGap;
@@ -138,8 +135,10 @@ PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls)
     const BoxArea& a = session.layout().area(session.controlsShown(), session.columnAsked());
     const ValuesDock& dock = session.valuesDock();
     if (dock.right) {
+        // Below the note that the side column's charts are folded, when they are asked for.
+        const double top = session.columnAsked() ? std::max(a.top, a.foldedTop) : a.top;
         return valuesColumnRect(camera.viewportWidth(), camera.viewportHeight(),
-                                static_cast<int>(a.top), static_cast<int>(dock.size));
+                                static_cast<int>(top), static_cast<int>(dock.size));
     }
     // A band the session has not chosen yet (no fit since the table was shown): the full one.
     const int band = static_cast<int>(dock.size > 0.0 ? dock.size : a.valuesBand) - kPanelGap;
@@ -149,6 +148,8 @@ PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls)
 
 bool sideColumnFolded(const Session& session, const ControlsWidth& controls) {
     if (session.columnAsked() && session.view().values && session.valuesDock().right) return true;
+    // Folded so that the box keeps its share of the window (SceneView::fit).
+    if (session.columnAsked() && session.columnFolded()) return true;
     return session.columnAsked() &&
            !sideColumnFits(session.camera().viewportWidth(), controlsInset(session, controls),
                            controls.pointPixels);

@@ -155,8 +155,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (session.view().values)
         f.values = valuesTable(world, session.selection().id(), session.axes());
     if (session.view().grid) {
-        f.grid = gridView(session.camera(), world.def().width, world.def().height,
-                          session.view().yUp, kGridMinPixels * controls.pointPixels);
+        f.grid =
+            gridView(session.camera(), world.def().width, world.def().height, session.view().yUp,
+                     kGridMinPixels * controls.pointPixels, labelFont.lineHeight());
     }
     if (session.view().ruler) f.ruler = rulerView(session.ruler(), session.camera());
     if (stats.video.recording) {
@@ -262,14 +263,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
                                      room);
     }
     // Long messages wrap within the room right of the control panel, beside the inspector when
-    // that leaves them room; the newest lines that fit the band below the box are shown.
+    // that leaves them room; the newest messages that fit the band below the box whole are
+    // shown.
     const int besideInspector =
         room - textBoxSize(hudFont, o.inspector).x - kPanelGap - kPanelMargin;
     const bool beside = !o.inspector.empty() && besideInspector >= kMinMessageRoom;
-    o.messages = wrapLines(hudFont, stats.messages, (beside ? besideInspector : room) - 8);
-    if (o.messages.size() > kMessageLines) {
-        o.messages.erase(o.messages.begin(), o.messages.end() - kMessageLines);
-    }
+    o.messages =
+        messageLines(hudFont, stats.messages, (beside ? besideInspector : room) - 8, kMessageLines);
     o.messagesAfterCapture = stats.video.recording;
 
     LayoutRequest req;
@@ -287,6 +287,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // The open prompt has the keyboard: it is never hidden, by a message or for want of room
     // (then without the readings), or the keys typed would go into fields nobody sees.
     req.inspectorFirst = editing;
+    req.foldColumn = session.columnFolded();
     req.plots = f.view.plots;
     req.speeds = f.view.speeds;
     req.bins = f.bins.has_value();

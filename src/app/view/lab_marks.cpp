@@ -48,11 +48,19 @@ int strongEvery(double step) {
 
 }  // namespace
 
-GridView gridView(const Camera& camera, double width, double height, bool yUp, double minPixels) {
+GridView gridView(const Camera& camera, double width, double height, bool yUp, double minPixels,
+                  double labelPixels) {
     GridView g;
     if (!(camera.zoom() > 0.0) || !(width > 0.0) || !(height > 0.0)) return g;
     g.step = roundStep(camera.toWorld(std::max(kGridMinPixels, minPixels)));
     if (!(g.step > 0.0)) return g;
+    // A box that holds no line that far apart, each way: the next finer round step (5, 2, 1,
+    // 0.5...) while its lines stay kGridLeastPixels apart; a small box kept no label at all.
+    for (double finer = roundStep(g.step / 2.5);
+         g.step >= std::min(width, height) && camera.toScreen(finer) >= kGridLeastPixels;
+         finer = roundStep(finer / 2.5)) {
+        g.step = finer;
+    }
     // The box's visible part, in metres.
     const Vec2 lo = camera.screenToWorld(Vec2(0.0, 0.0));
     const Vec2 hi = camera.screenToWorld(Vec2(camera.viewportWidth(), camera.viewportHeight()));
@@ -62,8 +70,9 @@ GridView gridView(const Camera& camera, double width, double height, bool yUp, d
     const Vec2 top0 = camera.worldToScreen(Vec2(x0, y0)),
                bottom1 = camera.worldToScreen(Vec2(x1, y1));
     const int every = strongEvery(g.step);
-    // Labels just inside the box's top and left edges, or the window's when those are off it.
-    const double labelY = top0.y() + 9.0, labelX = top0.x() + 4.0;
+    // Labels just inside the box's top and left edges, or the window's when those are off it:
+    // a line's height clear of the top wall.
+    const double labelY = top0.y() + 4.0 + 0.5 * labelPixels, labelX = top0.x() + 4.0;
     const auto first = static_cast<long long>(std::ceil(x0 / g.step - 1e-9));
     const auto last = static_cast<long long>(std::floor(x1 / g.step + 1e-9));
     for (long long k = first; k <= last; ++k) {

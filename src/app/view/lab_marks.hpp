@@ -44,9 +44,16 @@ inline constexpr double kGridMinPixels = 60.0;
 /// floor up with `yUp` (Axes), else from the top edge down. Empty (no lines) when the box is not
 /// on screen.
 /// `minPixels`: the closest lines may be, pixels (kGridMinPixels × the UI's scale, so that
-/// labels drawn larger stay apart).
+/// labels drawn larger stay apart); in a box too small for a line inside it that far from its
+/// edges, finer steps (down to kGridLeastPixels), so that a small box keeps a line and a label
+/// each way. `labelPixels`: the labels' line height, pixels: those along the top edge stand
+/// clear of the top wall below it (at 200 % they straddled it, and a ruler's reading above the
+/// box took their place).
 [[nodiscard]] GridView gridView(const Camera& camera, double width, double height, bool yUp = false,
-                                double minPixels = kGridMinPixels);
+                                double minPixels = kGridMinPixels, double labelPixels = 17.0);
+
+/// The closest grid lines get in a small box, pixels.
+inline constexpr double kGridLeastPixels = 30.0;
 
 /// The ruler: its edge, its ticks, the handles at its ends and its reading.
 struct RulerView {

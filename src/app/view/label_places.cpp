@@ -99,6 +99,31 @@ class DiscIndex {
         return false;
     }
 
+    /// Whether the line from (ax, ay) to (bx, by) passes over any disc but `own` (the discs
+    /// without the gap kept round them).
+    [[nodiscard]] bool anyOnLine(double ax, double ay, double bx, double by,
+                                 const PixelRect& own) const {
+        const auto x0 = static_cast<int>(std::floor(std::min(ax, bx)));
+        const auto y0 = static_cast<int>(std::floor(std::min(ay, by)));
+        const PixelRect around{x0, y0, static_cast<int>(std::ceil(std::max(ax, bx))) - x0 + 1,
+                               static_cast<int>(std::ceil(std::max(ay, by))) - y0 + 1};
+        const Span s = span(around);
+        for (int row = s.r0; row <= s.r1; ++row) {
+            for (int column = s.c0; column <= s.c1; ++column) {
+                for (const int i : cell(row, column)) {
+                    const PixelRect& d = discs_[static_cast<std::size_t>(i)];
+                    if (d.x == own.x && d.y == own.y && d.w == own.w && d.h == own.h) continue;
+                    const double g = kLabelGap;
+                    if (segmentMeetsRect(ax, ay, bx, by, d.x + g, d.y + g, d.x + d.w - g,
+                                         d.y + d.h - g)) {
+                        return true;
+                    }
+                }
+            }
+        }
+        return false;
+    }
+
     /// How many discs `r` overlaps.
     [[nodiscard]] std::size_t count(const PixelRect& r) {
         ++stamp_;
@@ -145,9 +170,15 @@ class DiscIndex {
     unsigned stamp_ = 0;
 };
 
-/// Whether `r` crosses the walled box's outline or any wall of `room`.
+/// Whether `r` crosses the walled box's outline (as drawn, its thickness outside the box) or
+/// any wall of `room`.
 bool crossesWalls(const PixelRect& r, const LabelRoom& room) {
-    if (room.box.w > 0 && overlaps(r, room.box) && !contains(room.box, r)) return true;
+    if (room.box.w > 0) {
+        const int t = std::max(0, room.boxWall);
+        const PixelRect outline{room.box.x - t, room.box.y - t, room.box.w + 2 * t,
+                                room.box.h + 2 * t};
+        if (overlaps(r, outline) && !contains(room.box, r)) return true;
+    }
     return std::any_of(room.walls.begin(), room.walls.end(),
                        [&r](const ScreenWall& w) { return crosses(r, w); });
 }
@@ -166,9 +197,16 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
     placed.reserve(asks.size());
     const bool rings = asks.size() <= kMaxLeaderLabels;
     const PixelRect& window = room.window;
+    // The leader lines drawn so far: a label keeps off them, as off another label.
+    std::vector<LeaderLine> leaders;
+    const auto onLine = [](const LeaderLine& l, const PixelRect& r) {
+        return segmentMeetsRect(l.ax, l.ay, l.bx, l.by, r.x, r.y, r.x + r.w, r.y + r.h);
+    };
     const auto free = [&](const PixelRect& r) {
         return contains(window, r) && clearOf(r, placed) && clearOf(r, room.keepOut) &&
-               !discs.any(r) && !crossesWalls(r, room);
+               !discs.any(r) && !crossesWalls(r, room) &&
+               std::none_of(leaders.begin(), leaders.end(),
+                            [&](const LeaderLine& l) { return onLine(l, r); });
     };
 
     for (const std::size_t i : order) {
@@ -183,33 +221,52 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
             const int y1 = std::min(window.y + window.h, box.y + box.h);
             inside = {x0, y0, std::max(0, x1 - x0), std::max(0, y1 - y0)};
         }
-        const std::vector<PixelRect> beside = placesBeside(a.disc, a.size, inside);
         LabelPlace& p = out[i];
         const auto take = [&](const PixelRect& r) {
             p.at = r;
             placed.push_back(r);
         };
-        const auto firstBeside = [&](bool inRoom) {
-            for (const PixelRect& r : beside) {
-                if (inRoom && !contains(inside, r)) continue;
-                if (free(r)) {
-                    take(r);
-                    return true;
+        // Beside its disc (in the box first), then on rings round it: a label of `size`.
+        const auto placeAs = [&](PixelPoint size) {
+            const std::vector<PixelRect> beside = placesBeside(a.disc, size, inside);
+            for (const bool inRoom : {inBox, false}) {
+                for (const PixelRect& r : beside) {
+                    if (inRoom && !contains(inside, r)) continue;
+                    if (free(r)) {
+                        take(r);
+                        return true;
+                    }
                 }
             }
-            return false;
-        };
-        const auto firstOnRings = [&] {
             if (!rings) return false;
-            for (const PixelRect& r : placesOnRings(a.disc, a.size, kLabelRings)) {
+            for (const PixelRect& r : placesOnRings(a.disc, size, kLabelRings)) {
                 if (!free(r)) continue;
+                // Its line to the disc crosses no wall at an angle (the box's own walls it
+                // may: a small box's labels stand outside it) and no other disc.
+                const LeaderLine line = leaderLine(a.disc, r);
+                if (std::any_of(room.walls.begin(), room.walls.end(),
+                                [&line](const ScreenWall& w) { return leaderCrosses(line, w); }) ||
+                    discs.anyOnLine(line.ax, line.ay, line.bx, line.by, a.disc) ||
+                    std::any_of(placed.begin(), placed.end(),
+                                [&](const PixelRect& other) { return onLine(line, other); })) {
+                    continue;
+                }
                 take(r);
+                leaders.push_back(line);
                 p.leader = true;
                 return true;
             }
             return false;
         };
-        if (firstBeside(inBox) || firstBeside(false) || firstOnRings()) continue;
+        if (placeAs(a.size)) continue;
+        // No clear place for it whole: its name alone, where that has one (between two of the
+        // ramp's ramps at 200 %, where neither form fits and a line across a ramp would put
+        // it on the wrong side).
+        if (a.nameSize.x > 0 && a.nameSize.y > 0 && placeAs(a.nameSize)) {
+            p.nameOnly = true;
+            continue;
+        }
+        const std::vector<PixelRect> beside = placesBeside(a.disc, a.size, inside);
         p.offWindow = std::none_of(beside.begin(), beside.begin() + 4,
                                    [&window](const PixelRect& r) { return contains(window, r); });
     }
@@ -242,6 +299,38 @@ std::vector<LabelPlace> placeBest(const std::vector<LabelAsk>& asks, const Label
 }
 
 }  // namespace
+
+double boxWallPixels(double width, double height, double zoom) {
+    return std::max(2.0, 0.004 * std::min(width, height) * zoom);
+}
+
+LeaderLine leaderLine(const PixelRect& d, const PixelRect& box) {
+    const double cx = d.x + 0.5 * d.w, cy = d.y + 0.5 * d.h;
+    const auto x0 = static_cast<double>(box.x), y0 = static_cast<double>(box.y);
+    const double nx = std::clamp(cx, x0, x0 + box.w), ny = std::clamp(cy, y0, y0 + box.h);
+    const double length = std::hypot(nx - cx, ny - cy);
+    if (!(length > 0.0)) return {cx, cy, nx, ny};
+    const double rim = 0.5 * d.w - 2.0;
+    return {cx + (nx - cx) / length * rim, cy + (ny - cy) / length * rim, nx, ny};
+}
+
+bool leaderCrosses(const LeaderLine& l, const ScreenWall& w) {
+    const auto side = [](double ax, double ay, double bx, double by, double px, double py) {
+        return (bx - ax) * (py - ay) - (by - ay) * (px - ax);
+    };
+    // The two lines cross...
+    const double d1 = side(w.ax, w.ay, w.bx, w.by, l.ax, l.ay);
+    const double d2 = side(w.ax, w.ay, w.bx, w.by, l.bx, l.by);
+    const double d3 = side(l.ax, l.ay, l.bx, l.by, w.ax, w.ay);
+    const double d4 = side(l.ax, l.ay, l.bx, l.by, w.bx, w.by);
+    if (((d1 > 0.0) != (d2 > 0.0)) && ((d3 > 0.0) != (d4 > 0.0))) return true;
+    // ...or the label's end, or the line past a wall's rounded end, comes within its
+    // half-width (the disc's end does, of the ramp the disc rests on, and leads away from it).
+    const double reach = w.halfWidth * w.halfWidth;
+    return squaredDistanceToSegment(l.bx, l.by, w.ax, w.ay, w.bx, w.by) < reach ||
+           squaredDistanceToSegment(w.ax, w.ay, l.ax, l.ay, l.bx, l.by) < reach ||
+           squaredDistanceToSegment(w.bx, w.by, l.ax, l.ay, l.bx, l.by) < reach;
+}
 
 bool crosses(const PixelRect& r, const ScreenWall& w) {
     if (r.w <= 0 || r.h <= 0) return false;
@@ -360,6 +449,10 @@ LabelRoom labelRoom(const World& world, const Camera& camera, const PixelRect& w
                     static_cast<int>(std::floor(sb.topLeft.y())),
                     static_cast<int>(std::ceil(sb.size.x())) + 1,
                     static_cast<int>(std::ceil(sb.size.y())) + 1};
+        // As drawn, and a pixel of air: a label touching the top wall read as crossing it.
+        room.boxWall = static_cast<int>(std::ceil(
+                           boxWallPixels(world.def().width, world.def().height, camera.zoom()))) +
+                       1;
     }
     room.keepOut = std::move(keepOut);
     // The scene's walls at any angle are walls too (the funnel's sides).

@@ -8,13 +8,17 @@
 //      side to stay in the window), inside the box with a disc in it;
 //   2. the same, anywhere;
 //   3. further out, on rings of places around its disc, joined to its disc by a leader line (a
-//      small box has no room beside its balls; the window round it has);
+//      small box has no room beside its balls; the window round it has) that crosses no wall
+//      at an angle (a ramp between a ball and its label would put the label on the wrong
+//      side of it);
 //
-// and is left out when none is free. Free: inside the window, clear of every disc, of the labels
-// already placed and of what the room keeps out (the panels, pegs, the ruler's reading), and
-// across no wall (the box's outline, a wall at any angle). A label never covers a ball nor
-// crosses a wall: in a crowd (the funnel's 400 balls) most are left out, and the HUD says how
-// many. Where that leaves a label out and the labels have a short form (LabelAsk::shortSize),
+// and, where no place is free for it, its name alone ("particle 3") is placed the same way;
+// it is left out when none is free for that either. Free: inside the window, clear of every disc,
+// of the labels already placed and their leader lines (a leader line passes over no other disc
+// nor label) and of what the room keeps out (the panels, pegs, the ruler's reading), and across
+// no wall (the box's outline, a wall at any angle). A label never covers a
+// ball nor crosses a wall: in a crowd (the funnel's 400 balls) most are left out, and the HUD says
+// how many. Where that leaves a label out and the labels have a short form (LabelAsk::shortSize),
 // every label takes its short form if that leaves fewer out (a small box at 200 %: two lines
 // beside each ball rather than none).
 //
@@ -42,13 +46,31 @@ struct ScreenWall {
 [[nodiscard]] bool crosses(const PixelRect& r, const ScreenWall& wall);
 
 /// Where labels may go: inside `window`, across neither the walled box's outline `box` (w == 0:
-/// no walls) nor any of `walls`, over none of `keepOut`.
+/// no walls) nor any of `walls`, over none of `keepOut`. The box's walls are drawn `boxWall`
+/// pixels thick outside `box`: a label outside it keeps clear of them too.
 struct LabelRoom {
     PixelRect window;
     PixelRect box;
     std::vector<ScreenWall> walls;
     std::vector<PixelRect> keepOut;
+    int boxWall = 0;
 };
+
+/// How thick the walled box's walls are drawn on screen, outside the box, pixels: 0.4 % of the
+/// box's smaller side (`width` × `height` metres) at `zoom` pixels a metre, at least two
+/// (render/renderer.cpp draws them so).
+[[nodiscard]] double boxWallPixels(double width, double height, double zoom);
+
+/// A label's leader line (LabelPlace::leader), pixels: from the rim of the disc `disc` (its
+/// bounding square with the gap kept round it) to the nearest point of the label at `label`.
+struct LeaderLine {
+    double ax = 0.0, ay = 0.0, bx = 0.0, by = 0.0;
+};
+[[nodiscard]] LeaderLine leaderLine(const PixelRect& disc, const PixelRect& label);
+
+/// Whether the line `l` crosses `wall`'s middle line, or its end at the label (or the line
+/// past the wall's ends) comes within the wall's half-width.
+[[nodiscard]] bool leaderCrosses(const LeaderLine& l, const ScreenWall& wall);
 
 /// What the particles' labels keep clear of besides the discs and the scene's walls: the
 /// panels and the ruler's reading (`rects`), the ruler itself (`walls`).
@@ -63,6 +85,9 @@ struct LabelAsk {
     PixelPoint size;     ///< the label's box, pixels
     bool inBox = false;  ///< the disc is inside the walled box: its label stays in it if it can
     PixelPoint shortSize{0, 0};  ///< its short form's box, pixels; {0, 0}: none
+    /// Its name's box alone ("particle 3"), pixels, for where neither form has a clear place;
+    /// {0, 0}: none.
+    PixelPoint nameSize{0, 0};
 };
 
 /// Where one label goes.
@@ -72,6 +97,8 @@ struct LabelPlace {
     bool leader = false;
     /// In its short form (every label is, or none).
     bool shortForm = false;
+    /// Its name alone (LabelAsk::nameSize): no place was clear for more.
+    bool nameOnly = false;
     /// Left out with no side of its disc inside the window at all (a disc nearly the window's
     /// size), rather than for want of a free place.
     bool offWindow = false;

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "session/units.hpp"
+#include "view/label_places.hpp"
+#include "view/screen_layout.hpp"
 
 namespace psb::app {
 
@@ -102,6 +104,83 @@ MomentaDiagram momentaDiagram(const CollisionCard& card) {
         }
     }
     return d;
+}
+
+std::vector<Vec2> momentaLabelPlaces(const MomentaDiagram& d,
+                                     const std::vector<MomentaDiagram::Arrow>& arrows, double side,
+                                     const std::vector<Vec2>& sizes, double arrowHalfWidth) {
+    const double half = 0.5 * side;
+    // What a label keeps clear of: the axes through the centre and every arrow.
+    std::vector<ScreenWall> lines = {{0.0, half, side, half, 1.0}, {half, 0.0, half, side, 1.0}};
+    for (const MomentaDiagram::Arrow& a : arrows) {
+        const Vec2 from = d.fromPixels(a, side), to = d.toPixels(a, side);
+        lines.push_back({from.x(), from.y(), to.x(), to.y(), arrowHalfWidth});
+    }
+    const auto box = [](const Vec2& centre, const Vec2& size) {
+        return PixelRect{static_cast<int>(std::floor(centre.x() - 0.5 * size.x())),
+                         static_cast<int>(std::floor(centre.y() - 0.5 * size.y())),
+                         static_cast<int>(std::ceil(size.x())) + 1,
+                         static_cast<int>(std::ceil(size.y())) + 1};
+    };
+    const int edge = static_cast<int>(std::floor(side)) - 1;
+    std::vector<PixelRect> placed;
+    // Lines crossed and labels covered; far more for a box out of the square.
+    const auto cost = [&](const PixelRect& r) {
+        if (r.x < 1 || r.y < 1 || r.x + r.w > edge || r.y + r.h > edge) return 1000;
+        int n = 0;
+        for (const ScreenWall& l : lines)
+            n += crosses(r, l);
+        for (const PixelRect& p : placed)
+            n += overlaps(r, p);
+        return n;
+    };
+    std::vector<Vec2> out;
+    for (std::size_t k = 0; k < arrows.size(); ++k) {
+        const Vec2 size = k < sizes.size() ? sizes[k] : Vec2::Zero();
+        const Vec2 from = d.fromPixels(arrows[k], side), to = d.toPixels(arrows[k], side);
+        const Vec2 along = to - from;
+        const double length = along.norm();
+        const Vec2 u = length > 0.5 ? Vec2(along / length) : Vec2(1.0, 0.0);
+        const Vec2 n(-u.y(), u.x());
+        // Above the arrow (left of an upright one) first: in a head-on collision's rows each
+        // label then sits in the gap above its own arrow.
+        const Vec2 up = n.y() < 0.0 || (n.y() == 0.0 && n.x() < 0.0) ? n : Vec2(-n);
+        const double clear =
+            std::abs(up.y()) * 0.5 * size.y() + std::abs(up.x()) * 0.5 * size.x() + arrowHalfWidth;
+        std::vector<Vec2> tries;
+        for (const double t : {0.5, 0.35, 0.65, 0.2, 0.8}) {
+            for (const double sign : {1.0, -1.0}) {
+                for (const double further : {0.0, 0.5, 1.0}) {
+                    tries.push_back(from + t * along +
+                                    sign * (clear + 2.0 + further * size.y()) * up);
+                }
+            }
+        }
+        // Then every place in the square, nearest the arrow's middle first.
+        const Vec2 middle = from + 0.5 * along;
+        std::vector<Vec2> grid;
+        for (double y = 0.5 * size.y() + 2.0; y <= side - 0.5 * size.y() - 2.0; y += 3.0) {
+            for (double x = 0.5 * size.x() + 2.0; x <= side - 0.5 * size.x() - 2.0; x += 3.0)
+                grid.emplace_back(x, y);
+        }
+        std::stable_sort(grid.begin(), grid.end(), [&middle](const Vec2& a, const Vec2& b) {
+            return (a - middle).squaredNorm() < (b - middle).squaredNorm();
+        });
+        tries.insert(tries.end(), grid.begin(), grid.end());
+        PixelRect best = box(tries.front(), size);
+        int bestCost = cost(best);
+        for (const Vec2& c : tries) {
+            if (bestCost == 0) break;
+            const PixelRect r = box(c, size);
+            if (const int here = cost(r); here < bestCost) {
+                best = r;
+                bestCost = here;
+            }
+        }
+        placed.push_back(best);
+        out.emplace_back(best.x + 0.5 * (best.w - size.x()), best.y + 0.5 * (best.h - size.y()));
+    }
+    return out;
 }
 
 std::string momentaDiagramScale(const MomentaDiagram& diagram) {

@@ -53,6 +53,19 @@ struct MomentaDiagram {
 
 [[nodiscard]] MomentaDiagram momentaDiagram(const CollisionCard& card);
 
+/// Where the labels of `arrows` (one half of `d`, drawn in a square of `side` pixels) go: the
+/// top-left corner of each label's box, `sizes[k]` pixels for arrows[k]. Each stays inside the
+/// square, over no other label, clear of every arrow (`arrowHalfWidth` pixels either side of
+/// its line, the head's width) and of the axes through the centre: beside its arrow's middle
+/// where it can (above it first), then beside it further along, then at the free place
+/// nearest its middle. With no free place at all it takes the one that crosses fewest. (They
+/// were centred above each arrow's middle: in a gas's collision "p 1653" lay over "total p",
+/// "p 2837" was cut at the square's edge and an axis ran through "total p".)
+[[nodiscard]] std::vector<Vec2> momentaLabelPlaces(const MomentaDiagram& d,
+                                                   const std::vector<MomentaDiagram::Arrow>& arrows,
+                                                   double side, const std::vector<Vec2>& sizes,
+                                                   double arrowHalfWidth);
+
 /// The diagram's caption under the two squares: "The square reaches 3.00 kg m/s from its
 /// centre; ...", the number the arrows are drawn to (MomentaDiagram::reach).
 [[nodiscard]] std::string momentaDiagramScale(const MomentaDiagram& diagram);

@@ -60,6 +60,36 @@ PixelPoint textBoxSize(const TextMeasure& font, const std::vector<std::string>& 
     return {w + 8, font.lineHeight() * static_cast<int>(lines.size()) + 4};
 }
 
+std::vector<std::string> messageLines(const TextMeasure& font,
+                                      const std::vector<std::string>& messages, int maxWidth,
+                                      std::size_t maxLines) {
+    std::vector<std::string> out;
+    for (auto m = messages.rbegin(); m != messages.rend(); ++m) {
+        std::vector<std::string> lines = wrapLines(font, {*m}, maxWidth);
+        if (out.size() + lines.size() <= maxLines) {
+            out.insert(out.begin(), lines.begin(), lines.end());
+            continue;
+        }
+        if (out.empty() && maxLines > 0) {  // the newest alone is longer than the band
+            lines.resize(maxLines);
+            std::string& last = lines.back();
+            const std::string ellipsis = "\u2026";
+            // Whole characters off its end until the mark fits (with the box's padding).
+            while (!last.empty() && font.measure(last + ellipsis) + 8 > maxWidth) {
+                last.pop_back();
+                while (!last.empty() && (static_cast<unsigned char>(last.back()) & 0xC0) == 0x80)
+                    last.pop_back();
+                if (!last.empty() && (static_cast<unsigned char>(last.back()) & 0x80) != 0)
+                    last.pop_back();  // the lead byte of the character cut
+            }
+            last += ellipsis;
+            out = std::move(lines);
+        }
+        break;
+    }
+    return out;
+}
+
 PixelRect helpRoom(int width, int height) {
     return {kPanelMargin, kPanelMargin, std::max(0, width - 2 * kPanelMargin),
             std::max(0, height - 2 * kPanelMargin)};

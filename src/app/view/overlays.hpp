@@ -41,6 +41,14 @@ inline constexpr std::size_t kMessageLines = 3;
                                                  const std::vector<std::string>& lines,
                                                  int maxWidth);
 
+/// The message band's lines: the newest `messages` that fit `maxLines` lines whole, each
+/// wrapped as wrapLines wraps it to `maxWidth`; older ones are dropped whole, never their first
+/// lines (a long message lost its head: "…mp4: 3.8 s" without "Saved video"). A newest message
+/// longer than the band keeps its first lines, the last ending in "…" (the log has it all).
+[[nodiscard]] std::vector<std::string> messageLines(const TextMeasure& font,
+                                                    const std::vector<std::string>& messages,
+                                                    int maxWidth, std::size_t maxLines);
+
 /// The HUD's lines ("a | b | c") broken between their " | " parts where they do not fit
 /// `maxWidth`, each continuation indented by two spaces; a part too wide alone is broken at
 /// spaces as wrapLines does. A narrow window shows every reading, not the first half of each.

@@ -30,10 +30,9 @@ ValuesBand valuesBand(int windowHeight, double top, double scale) {
     return b;
 }
 
-int valuesColumn(int width, double left, double right, int height, double top, double bottom,
-                 int band, double scale) {
-    // A band that leaves the box its height is always as good.
-    if (height - top - bottom - band - kPanelGap >= kBoxMinHeight) return 0;
+int valuesColumn(int width, double left, double right, int, double, double, int, double scale) {
+    // Offered wherever it leaves the box its room beside it: the session takes it only where a
+    // band along the bottom would leave the box too small (SceneView::fit).
     const double room = width - left - right;
     const int column = static_cast<int>(
         std::ceil(std::max(0.4 * room, kValuesColumnMinPoints * scale) + kPanelMargin));
@@ -89,8 +88,8 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
 
     const bool columnAsked = (r.profile.x > 0 && r.profile.y > 0) || r.plots || r.speeds || r.bins;
     // The values table at the right takes the column's place.
-    const bool fits =
-        sideColumnFits(r.width, r.left, r.scale) && !(r.values.w > 0 && r.valuesRight);
+    const bool fits = sideColumnFits(r.width, r.left, r.scale) &&
+                      !(r.values.w > 0 && r.valuesRight) && !r.foldColumn;
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits;
     int top = 4;

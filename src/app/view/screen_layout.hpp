@@ -80,8 +80,8 @@ struct ValuesBand {
 /// The values table's column at the right of a window `width` pixels wide of which `left`
 /// are the control panel's and `right` the side column's, at `scale` pixels per point, in a
 /// window `height` high whose box's area is `top` and `bottom` from its edges: 0 when the box
-/// would be left less than kBoxMinRoom beside it, or when a band along the bottom leaves the
-/// box kBoxMinHeight pixels (`band` high).
+/// would be left less than kBoxMinRoom beside it. The session docks the table there only where
+/// a band along the bottom (`band` high) leaves the box too small (SceneView::fit).
 [[nodiscard]] int valuesColumn(int width, double left, double right, int height, double top,
                                double bottom, int band, double scale);
 
@@ -116,6 +116,9 @@ struct LayoutRequest {
     /// The inspector holds the open edit prompt, which has the keyboard: it is placed before the
     /// messages, which are left out where they would cover it.
     bool inspectorFirst = false;
+    /// The side column's charts are folded away so that the box keeps its share of the window
+    /// (SceneView::fit).
+    bool foldColumn = false;
     bool plots = false;   ///< K
     bool speeds = false;  ///< D
     bool bins = false;    ///< a scene's bins (a Galton board's histogram)

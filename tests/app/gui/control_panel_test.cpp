@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -658,6 +659,134 @@ TEST_F(ControlPanelTest, TheDescriptionWrapsAsItIsTyped) {
     const std::string& kept = session_->meta().description;
     EXPECT_EQ(kept.find('\n'), std::string::npos) << "the lines' breaks are not the text's";
     EXPECT_NE(kept.find(typed), std::string::npos) << kept;
+}
+
+TEST_F(ControlPanelTest, TheRampsValuesTableKeepsEveryColumnAsWideAsItsNumbers) {
+    // The ramp's table (its bodies turn: omega and KE rot join the columns) at 200 %: the KE
+    // column was as narrow as "KE" at rest and its numbers ran into the next once the bodies
+    // moved, and where the table scrolled sideways nothing said so. Each column is as wide
+    // at rest as in motion and no cell runs into the next; where the window holds every
+    // column none is out of sight, and where it cannot the table says which are and how to
+    // reach them, the particles' numbers staying at the left.
+    struct Case {
+        int width, height;
+        float scale;
+    };
+    for (const Case& c : {Case{1600, 1000, 2.f}, Case{1600, 1000, 1.5f}, Case{1920, 1200, 1.5f},
+                          Case{1024, 768, 1.25f}}) {
+        const std::string at = std::to_string(c.width) + "x" + std::to_string(c.height) + " at " +
+                               std::to_string(c.scale);
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = c.width;
+        so.viewportHeight = c.height;
+        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale));
+        so.controls = so.layout.controlsFit;
+        Session s(
+            makeWorld(loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / "12-ramp.json")),
+            SceneInfo{.name = "ramp", .dt = 0.002}, so);
+        ASSERT_TRUE(s.world().rotationInUse());
+        s.apply(cmd::SetShow{ShowOption::Values, true});
+        gui_->setScale(c.scale);
+        ControlPanel panel;
+        const auto frames = [&] {
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(static_cast<float>(c.width), static_cast<float>(c.height));
+                for (const Command& command :
+                     panel.build(s, FrameStats{}, static_cast<float>(c.height) / c.scale, c.scale))
+                    s.apply(command);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+        };
+        const ValuesTable t = valuesTable(s.world(), std::nullopt, s.axes());
+        const auto starts = [&] {
+            std::vector<float> x;
+            for (const ValuesColumn& column : t.columns) {
+                const PanelItem* cell = panel.item(std::string("values 1 ") + column.name);
+                x.push_back(cell != nullptr ? cell->x0 : -1.f);
+            }
+            return x;
+        };
+        frames();
+        const std::vector<float> atRest = starts();
+        // The race a second and a half on: 3.34 m/s, KE 6.31 J, omega -29.6 rad/s.
+        for (const ParticleId id : s.world().ids()) {
+            s.apply(cmd::EditParticle{id, ParticleField::Vx, "3.339"});
+            s.apply(cmd::EditParticle{id, ParticleField::Vy, "-1.21"});
+            s.apply(cmd::EditParticle{id, ParticleField::Omega, "-29.62"});
+        }
+        frames();
+        EXPECT_EQ(starts(), atRest) << at << ": the columns moved as the numbers changed";
+        const PanelItem* w = panel.item("values window");
+        ASSERT_NE(w, nullptr) << at;
+        const float right = w->x1 - ImGui::GetStyle().WindowPadding.x;
+        const bool scrolls = panel.item("values more columns") != nullptr;
+        for (const std::string row : {"values 1 ", "values 2 ", "values 3 ", "values total "}) {
+            const PanelItem* before = nullptr;
+            for (const ValuesColumn& column : t.columns) {
+                const PanelItem* cell = panel.item(row + column.name);
+                if (cell == nullptr) continue;  // the totals of x, y, vx, vy, omega: none
+                if (before != nullptr) {
+                    EXPECT_LE(before->x1, cell->x0 + 0.5f)
+                        << at << ": " << row << "runs into " << column.name;
+                }
+                before = cell;
+                if (!scrolls) {
+                    EXPECT_LE(cell->x1, right + 0.5f)
+                        << at << ": " << row << column.name << " out of sight, unsaid";
+                }
+            }
+        }
+        const PanelItem* number = panel.item("values row 1");
+        ASSERT_NE(number, nullptr) << at;
+        EXPECT_GE(number->x0, w->x0) << at << ": the particles' numbers stay";
+        if (c.width == 1920) {
+            EXPECT_FALSE(scrolls) << at << ": the window holds every column";
+        }
+    }
+    gui_->setScale(1.f);
+}
+
+TEST_F(ControlPanelTest, TheCollisionCardsVectorsKeepOneLineAt200Percent) {
+    // A gas's collision at 200 %: "(-0.236, -0.306)" wrapped onto two lines in the card's
+    // columns, which "kinetic energy" in the names' column left too narrow. The names wrap to
+    // their longest word instead.
+    WorldDef def;
+    def.width = def.height = 4.0;
+    World w(def);
+    w.add(
+        {.position = Vec2(2.0, 2.0), .velocity = Vec2(-0.236, 0.306), .mass = 1.0, .radius = 0.1});
+    w.add({.position = Vec2(1.85, 2.2),
+           .velocity = Vec2(0.182, -0.0929),
+           .mass = 1.0,
+           .radius = 0.1});
+    SessionOptions so;
+    so.paused = true;
+    so.viewportWidth = 1600;
+    so.viewportHeight = 1000;
+    so.layout = windowLayout(*font_, 1600, 1000, controlsWidth(2.0));
+    Session s(std::move(w), SceneInfo{.name = "pair", .dt = 1.0 / 60.0}, so);
+    s.apply(cmd::SetShow{ShowOption::Collision, true});
+    s.apply(cmd::TogglePause{});
+    for (int k = 1; k <= 60 && !s.lastCollision(); ++k)
+        s.update(1.0 / 60.0, k / 60.0);
+    ASSERT_TRUE(s.lastCollision());
+    gui_->setScale(2.f);
+    ControlPanel panel;
+    for (int k = 0; k < 3; ++k) {
+        gui_->beginFrame(1600.f, 1000.f);
+        for (const Command& command : panel.build(s, FrameStats{}, 500.f, 2.f))
+            s.apply(command);
+        EXPECT_EQ(gui_->endFrame(), 0);
+    }
+    const float line = ImGui::GetTextLineHeightWithSpacing();
+    for (const char* name : {"collision v 1 before", "collision v 1 after", "collision v 2 before",
+                             "collision p 1 before", "collision total p after"}) {
+        const PanelItem* cell = panel.item(name);
+        ASSERT_NE(cell, nullptr) << name;
+        EXPECT_LT(cell->y1 - cell->y0, 1.5f * line) << name << " wrapped";
+    }
+    gui_->setScale(1.f);
 }
 
 TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPixelWindow) {

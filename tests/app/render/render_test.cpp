@@ -132,6 +132,35 @@ TEST_F(RenderTest, WhileAVideoRecordsTheHudsKeyHintsAreDrawnAfterTheFrameIsTaken
     EXPECT_GT(brightPixels(h.x, h.y + 2 * lh + 4, h.x + h.w, h.y + 3 * lh + 2, 150), 10);
 }
 
+TEST_F(RenderTest, TheHelpCoversThePanelsUnderItWhole) {
+    // The help's first lines had the HUD's text showing through them (drawn at 245 of 255):
+    // under the help every pixel is the same whatever the HUD says.
+    Overlays o;
+    o.showHelp = true;
+    o.helpAt = {0, 0};
+    o.help = std::vector<std::string>(6, std::string(50, ' '));
+    o.hud = {"WWWWWWWWWWWWWWWWWWWWWWWWW", "WWWWWWWWWWWWWWWWWWWWWWWWW"};
+    const PixelPoint help = textBoxSize(*font_, o.help);
+    const auto under = [&] {
+        std::vector<Uint8> out;
+        for (int y = 0; y < help.y; ++y) {
+            for (int x = 0; x < help.x; ++x) {
+                const SDL_Color c = pixel(x, y);
+                out.insert(out.end(), {c.r, c.g, c.b});
+            }
+        }
+        return out;
+    };
+    drawPanels(o);
+    ASSERT_GT(layout_.hud.w, 0);
+    ASSERT_LE(layout_.hud.x + layout_.hud.w, help.x) << "the help covers the HUD";
+    ASSERT_LE(layout_.hud.y + layout_.hud.h, help.y);
+    const std::vector<Uint8> withHud = under();
+    o.hud.clear();
+    drawPanels(o);
+    EXPECT_TRUE(under() == withHud) << "the HUD shows through the help";
+}
+
 TEST_F(RenderTest, AParticleColoursThePixelsOfItsDisc) {
     const World w = worldWith({150, 200}, Vec2::Zero(), 20.0, {255, 0, 0});
     draw(w, {});

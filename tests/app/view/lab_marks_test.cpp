@@ -52,6 +52,20 @@ TEST(GridView, RoundStepsOfAtLeastSixtyPixelsAcrossTheBox) {
     EXPECT_TRUE(hasLabel(small.labels, "0.3 m"));
 }
 
+TEST(GridView, ASmallBoxKeepsALineAndALabelEachWay) {
+    // The ramp's 4 m x 3.9 m box 220 pixels wide at 200 %: lines 120 pixels apart would be
+    // 5 m apart, wider than the box, and it had no line nor label at all. The next finer
+    // round step, 2 m, is 110 pixels apart.
+    const GridView g = gridView(camera(55.0), 4.0, 3.9, true, 2.0 * kGridMinPixels, 34.0);
+    EXPECT_DOUBLE_EQ(g.step, 2.0);
+    EXPECT_TRUE(std::any_of(g.labels.begin(), g.labels.end(),
+                            [](const MarkLabel& l) { return !l.left && l.text == "2 m"; }));
+    EXPECT_TRUE(std::any_of(g.labels.begin(), g.labels.end(),
+                            [](const MarkLabel& l) { return l.left && l.text == "2 m"; }));
+    // A box of 20 pixels keeps none rather than lines 4 pixels apart.
+    EXPECT_TRUE(gridView(camera(5.0), 4.0, 3.9).labels.empty());
+}
+
 TEST(GridView, WithYUpTheHeightsCountFromTheFloor) {
     // A 6.5 m high box at 80 pixels a metre: lines every metre up from the floor, so the
     // label "1 m" is on the line 5.5 m below the top edge, and a line 0.5 m below the top edge

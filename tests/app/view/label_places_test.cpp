@@ -44,6 +44,24 @@ void expectReadable(const std::vector<LabelAsk>& asks, const std::vector<LabelPl
             EXPECT_FALSE(overlaps(r, places[j].at)) << "labels " << i << " and " << j;
         for (const PixelRect& p : panels)
             EXPECT_FALSE(overlaps(r, p)) << "label " << i << " under a panel";
+        if (!places[i].leader) continue;
+        // Its line, a point a pixel, over no other label nor ball (it ran through the text of
+        // the mass-ratio preset's labels).
+        const LeaderLine l = leaderLine(asks[i].disc, r);
+        const double length = std::hypot(l.bx - l.ax, l.by - l.ay);
+        for (double t = 0.0; t <= length; t += 1.0) {
+            const double x = l.ax + (l.bx - l.ax) * t / std::max(length, 1.0);
+            const double y = l.ay + (l.by - l.ay) * t / std::max(length, 1.0);
+            const auto inside = [x, y](const PixelRect& o, int g) {
+                return x > o.x + g && x < o.x + o.w - g && y > o.y + g && y < o.y + o.h - g;
+            };
+            for (std::size_t j = 0; j < places.size(); ++j) {
+                if (j == i) continue;
+                EXPECT_FALSE(inside(places[j].at, 0))
+                    << "label " << i << "'s line over label " << j;
+                EXPECT_FALSE(inside(asks[j].disc, 2)) << "label " << i << "'s line over ball " << j;
+            }
+        }
     }
 }
 

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "view/head_on_card.hpp"
+#include "view/label_places.hpp"
 #include "view/momenta_diagram.hpp"
 
 namespace psb::app {
@@ -158,6 +160,70 @@ TEST(MomentaDiagram, ItsTextAddsTheMomentaUpToTheTotal) {
               "Momenta before: p 1 (2.00, 0) + p 2 (-3.00, 0) = total p (-1.00, 0) kg m/s");
     EXPECT_EQ(lines[1],
               "Momenta after: p 1 (-2.50, 0) + p 2 (1.50, 0) = total p (-1.00, 0) kg m/s");
+}
+
+/// A gas's collision as the card showed it at 200 %: particles 1653 and 2837 of 1 kg, their
+/// momenta small and alike, so the arrows crowd one corner of the square.
+CollisionCard gasCard() {
+    CollisionCard card;
+    Collision& c = card.collision;
+    c.with = Collision::With::Particle;
+    card.massA = card.massB = 1.0;
+    card.numberA = 1653;
+    card.numberB = 2837;
+    c.aBefore = Vec2(-0.236, 0.306);  // the box's y down: the numbers read y up
+    c.bBefore = Vec2(-0.182, 0.0929);
+    c.aAfter = Vec2(-0.110, 0.151);
+    c.bAfter = Vec2(-0.308, 0.248);
+    return card;
+}
+
+TEST(MomentaDiagram, ItsLabelsStayInTheSquareClearOfEachOtherTheArrowsAndTheAxes) {
+    // "p 1653" lay over "total p", "p 2837" was cut at the square's edge and the axis ran
+    // through "total p": each label was centred above its arrow's middle, wherever that was.
+    // Labels of DejaVu Sans at 200 % (30 pixels high, 13 a character), in the squares the
+    // panel gives at 100 % and 200 %.
+    for (const CollisionCard& card : {gasCard(), headOnCard(), headOnCard(0.5)}) {
+        const MomentaDiagram d = momentaDiagram(card);
+        for (const double side : {120.0, 200.0, 270.0}) {
+            for (const auto* half : {&d.before, &d.after}) {
+                std::vector<Vec2> sizes;
+                for (const MomentaDiagram::Arrow& a : *half)
+                    sizes.emplace_back(13.0 * static_cast<double>(a.label.size()) * side / 270.0,
+                                       30.0 * side / 270.0);
+                const double arrow = 0.25 * 30.0 * side / 270.0 + 1.0;
+                const std::vector<Vec2> at = momentaLabelPlaces(d, *half, side, sizes, arrow);
+                ASSERT_EQ(at.size(), half->size());
+                std::vector<ScreenWall> lines = {{0.0, side / 2, side, side / 2, 0.5},
+                                                 {side / 2, 0.0, side / 2, side, 0.5}};
+                for (const MomentaDiagram::Arrow& a : *half) {
+                    const Vec2 from = d.fromPixels(a, side), to = d.toPixels(a, side);
+                    lines.push_back({from.x(), from.y(), to.x(), to.y(), arrow - 1.0});
+                }
+                for (std::size_t k = 0; k < at.size(); ++k) {
+                    const std::string what = (*half)[k].label + " of " +
+                                             std::to_string(card.numberA) + " in a square of " +
+                                             std::to_string(side);
+                    const double x0 = at[k].x(), y0 = at[k].y();
+                    const double x1 = x0 + sizes[k].x(), y1 = y0 + sizes[k].y();
+                    EXPECT_GE(x0, 0.0) << what;
+                    EXPECT_GE(y0, 0.0) << what;
+                    EXPECT_LE(x1, side) << what << ": cut at the square's edge";
+                    EXPECT_LE(y1, side) << what;
+                    const PixelRect r{
+                        static_cast<int>(std::ceil(x0)), static_cast<int>(std::ceil(y0)),
+                        static_cast<int>(x1 - std::ceil(x0)), static_cast<int>(y1 - std::ceil(y0))};
+                    for (const ScreenWall& l : lines)
+                        EXPECT_FALSE(crosses(r, l)) << what << ": over a line";
+                    for (std::size_t j = k + 1; j < at.size(); ++j) {
+                        const bool apart = x1 <= at[j].x() || at[j].x() + sizes[j].x() <= x0 ||
+                                           y1 <= at[j].y() || at[j].y() + sizes[j].y() <= y0;
+                        EXPECT_TRUE(apart) << what << " over " << (*half)[j].label;
+                    }
+                }
+            }
+        }
+    }
 }
 
 }  // namespace
