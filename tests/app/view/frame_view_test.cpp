@@ -103,14 +103,14 @@ TEST(EditPromptPanel, AnOpenPromptIsShownEvenWhereTheWholePanelWouldNotFit) {
 
 TEST(MessageBand, KeepsWholeMessagesAndDropsOlderOnesWhole) {
     // The band keeps three lines. It kept the last three wrapped lines, so a long message lost
-    // its head ("/root/lessons/...mp4: 3.8 s, ..." without "Saved video") and an older one its
+    // its head ("/home/lessons/...mp4: 3.8 s, ..." without "Saved video") and an older one its
     // first line. Older messages now go whole; a message longer than the band keeps its head.
     Session s = sessionIn(800, 600);
     const std::string older =
         "Opened 12-ramp.json: Ramp (3 particles), preset 12 of 14 (key "
         "Shift+2), paused: Space starts it";
     const std::string saved =
-        "Saved video /root/lessons/particle-sandbox-20261207-031453.mp4: "
+        "Saved video /home/lessons/particle-sandbox-20261207-031453.mp4: "
         "3.8 s, 135 frames";
     FrameView f = frameOf(s, {older, saved});
     ASSERT_FALSE(f.overlays.messages.empty());
