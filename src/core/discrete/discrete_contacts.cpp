@@ -124,19 +124,20 @@ void separateImpl(ParticleArrays& p, const StepContext& ctx) {
     }
 }
 
-/// A periodic box's resolve: every combination of the laws, records kept or not.
-void resolvePeriodic(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
-                     StepCounters& counters) {
+/// Every combination of the laws, records kept or not, in a box with walls or a periodic one.
+template <bool kPeriodic>
+void resolveAny(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
+                StepCounters& counters) {
     const bool record = ctx.collisionLog != nullptr || ctx.measureVirial;
     if (def.friction > 0.0 && p.rotation) {
-        record ? resolveImpl<true, true, true, true>(p, def, ctx, counters)
-               : resolveImpl<true, true, false, true>(p, def, ctx, counters);
+        record ? resolveImpl<true, true, true, kPeriodic>(p, def, ctx, counters)
+               : resolveImpl<true, true, false, kPeriodic>(p, def, ctx, counters);
     } else if (def.friction > 0.0) {
-        record ? resolveImpl<true, false, true, true>(p, def, ctx, counters)
-               : resolveImpl<true, false, false, true>(p, def, ctx, counters);
+        record ? resolveImpl<true, false, true, kPeriodic>(p, def, ctx, counters)
+               : resolveImpl<true, false, false, kPeriodic>(p, def, ctx, counters);
     } else {
-        record ? resolveImpl<false, false, true, true>(p, def, ctx, counters)
-               : resolveImpl<false, false, false, true>(p, def, ctx, counters);
+        record ? resolveImpl<false, false, true, kPeriodic>(p, def, ctx, counters)
+               : resolveImpl<false, false, false, kPeriodic>(p, def, ctx, counters);
     }
 }
 
@@ -144,46 +145,12 @@ void resolvePeriodic(ParticleArrays& p, const WorldDef& def, const StepContext& 
 
 void resolve(ParticleArrays& p, const WorldDef& def, const StepContext& ctx,
              StepCounters& counters) {
-    if (ctx.periodic) {
-        resolvePeriodic(p, def, ctx, counters);
-        return;
-    }
-    const bool record = ctx.collisionLog != nullptr || ctx.measureVirial;
-    if (def.friction > 0.0 && p.rotation) {
-        record ? resolveImpl<true, true, true>(p, def, ctx, counters)
-               : resolveImpl<true, true, false>(p, def, ctx, counters);
-    } else if (def.friction > 0.0) {
-        record ? resolveImpl<true, false, true>(p, def, ctx, counters)
-               : resolveImpl<true, false, false>(p, def, ctx, counters);
-    } else {
-        record ? resolveImpl<false, false, true>(p, def, ctx, counters)
-               : resolveImpl<false, false, false>(p, def, ctx, counters);
-    }
+    ctx.periodic ? resolveAny<true>(p, def, ctx, counters)
+                 : resolveAny<false>(p, def, ctx, counters);
 }
 
 void separate(ParticleArrays& p, const StepContext& ctx) {
-    if (ctx.periodic) {
-        separateImpl<true>(p, ctx);
-        return;
-    }
-    for (std::size_t k = 0; k < ctx.pairs.size(); ++k) {
-        prefetchPair(p, ctx.pairs, k);
-        const ContactPair& c = ctx.pairs[k];
-        const std::uint32_t i = c.i, j = c.j;
-        double d;
-        const Normal n = contactNormal(p, i, j, d);
-        const double depth = p.radius[i] + p.radius[j] - d;
-        if (!(depth > 0.0)) continue;  // an earlier push in this pass already separated it
-        const double wi = p.invMass[i], wj = p.invMass[j];
-        const double wsum = wi + wj;
-        if (wsum == 0.0) continue;
-        // Split by inverse mass: the centre of mass stays put, the heavy one barely moves.
-        const double si = depth * (wi / wsum), sj = depth * (wj / wsum);
-        p.x[i] -= si * n.x;
-        p.y[i] -= si * n.y;
-        p.x[j] += sj * n.x;
-        p.y[j] += sj * n.y;
-    }
+    ctx.periodic ? separateImpl<true>(p, ctx) : separateImpl<false>(p, ctx);
 }
 
 }  // namespace psb::stages
