@@ -41,9 +41,8 @@ namespace {
 
 using psb::Vec2;
 
-// Bounded so that an input whose exact steps all run out the event budget (10^4 events per
-// particle; an inelastic pile collapsing in a wedge) stays well within libFuzzer's -timeout
-// under ASan (about 1 s per such step).
+// Bounded so that an input stays fast to fuzz; the exact mode's events are bounded per input
+// too (Stepper::kAllowance).
 constexpr int kMaxOps = 32;
 constexpr int kMaxStepsPerOp = 3;
 constexpr std::size_t kMaxParticles = 48;
@@ -289,23 +288,64 @@ double deepestFreeOverlap(const psb::World& w) {
 /// both, a placed pair in every step that still keeps it at its placed distance (a change that
 /// does not rebuild, such as new droppers, resets the counters too), so the counters are reset
 /// at each change.
+///
+/// The event budget is the window's (kWindowBudget events per particle a step: a step may end
+/// early, at its first event left) or the library's default, none: every step reaches its end,
+/// however many events that takes. Particles at 10⁷ m/s in a 4 m box honestly ask for 10⁶
+/// events a step, minutes of fuzzing for one input, so each input has an allowance of
+/// kAllowance events in all, given to each step as a budget of what is left; when a step runs
+/// out of it the input ends (not a finding). Without a budget, such a step must still have
+/// advanced: the next kZenoProbe events must move the clock, or the stepper meets events at
+/// one instant without end (a step of the library's default would never return).
 class Stepper {
   public:
+    static constexpr std::uint64_t kWindowBudget = 10000;
+    static constexpr std::uint64_t kAllowance = 1'000'000;
+    static constexpr std::uint64_t kZenoProbe = 100'000;
+
+    explicit Stepper(bool windowBudget) : window_(windowBudget) {}
+
     void changed(psb::World& w) { w.resetCounters(); }
 
-    /// `count` steps of `dt` (the frame length, the driver's).
-    void step(psb::World& w, double dt, int count) {
+    /// `count` steps of `dt` (the frame length, the driver's), `twin` (if any) stepped alike and
+    /// compared after them. False when the input's allowance ran out: the input ends.
+    bool step(psb::World& w, psb::World* twin, double dt, int count) {
         for (int k = 0; k < count; ++k) {
-            if (tracing()) dump(w, dt);
-            const double before = w.time();
-            const double simulated = w.step(dt);
-            checkState(w, "step");
-            if (!(simulated >= 0.0 && simulated <= dt) || w.time() != before + simulated ||
-                (simulated < dt && w.exactEventBudget() == 0)) {
-                violated("step", "simulated " + std::to_string(simulated) + " s of a " +
-                                     std::to_string(dt) + " s step");
+            const std::uint64_t worlds = twin ? 2 : 1;
+            const std::uint64_t left =
+                (kAllowance - std::min(kAllowance, spent_)) / ((w.size() + 1) * worlds);
+            if (left == 0) return false;
+            const std::uint64_t budget = window_ ? std::min(kWindowBudget, left) : left;
+            const bool cut = stepOnce(w, dt, budget);
+            if (twin) {
+                stepOnce(*twin, dt, budget);
+                checkSame(w, *twin);
             }
-            if (w.solver().mode != psb::StepMode::Exact || w.size() < 2) continue;
+            if (!cut) continue;
+            if (window_ && budget == kWindowBudget) continue;  // the window's own budget
+            if (!window_) probeForAZeno(w, dt);
+            return false;
+        }
+        return true;
+    }
+
+  private:
+    /// One step with `budget` events per particle; whether the budget cut it short.
+    bool stepOnce(psb::World& w, double dt, std::uint64_t budget) {
+        if (tracing()) dump(w, dt);
+        w.setExactEventBudget(budget);
+        const std::uint64_t events = w.counters().events, cutShort = w.counters().cutShort;
+        const double before = w.time();
+        const double simulated = w.step(dt);
+        spent_ += w.counters().events - events;
+        const bool cut = w.counters().cutShort != cutShort;
+        checkState(w, "step");
+        if (!(simulated >= 0.0 && simulated <= dt) || w.time() != before + simulated ||
+            (simulated < dt && !cut)) {
+            violated("step", "simulated " + std::to_string(simulated) + " s of a " +
+                                 std::to_string(dt) + " s step");
+        }
+        if (w.solver().mode == psb::StepMode::Exact && w.size() >= 2) {
             // A step the event budget cut short ends at its first event left, exact too.
             const double overlap = deepestFreeOverlap(w);
             const double bound = w.counters().maxOverlap;
@@ -317,7 +357,21 @@ class Stepper {
                                            std::to_string(bound) + " m)");
             }
         }
+        return cut;
     }
+
+    void probeForAZeno(psb::World& w, double dt) {
+        const std::uint64_t budget = std::max<std::uint64_t>(1, kZenoProbe / (w.size() + 1));
+        w.setExactEventBudget(budget);
+        const double before = w.time();
+        if (w.step(dt) == 0.0) {
+            violated("step", std::to_string(budget * (w.size() + 1)) + " events at t = " +
+                                 std::to_string(before) + " s without the clock moving");
+        }
+    }
+
+    bool window_;
+    std::uint64_t spent_ = 0;
 };
 
 /// A world chosen by the bytes, and in `dt` the frame length to step it by.
@@ -392,22 +446,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     FuzzedDataProvider in(data + opsFrom, size - opsFrom);
     psb::World world = made ? std::move(*made) : worldFrom(in, dt);
     world.setThreads(1);
-    // The library's default (every step reaches its end) or the window's frame budget.
-    world.setExactEventBudget(in.ConsumeBool() ? 0 : 10000);
-
-    Stepper stepper;
+    // The library's default (no budget: every step reaches its end) or the window's frame budget.
+    Stepper stepper(/*windowBudget=*/!in.ConsumeBool());
     stepper.changed(world);
     std::optional<psb::World> twin;  // a copy stepped alike, until the next change
     for (int op = 0; op < kMaxOps && in.remaining_bytes() > 0; ++op) {
         const int what = in.ConsumeIntegralInRange<int>(0, 22);
         if (what <= 3) {
             const int count = in.ConsumeIntegralInRange<int>(1, kMaxStepsPerOp);
-            stepper.step(world, dt, count);
-            if (twin) {
-                for (int k = 0; k < count; ++k)
-                    twin->step(dt);
-                checkSame(world, *twin);
-            }
+            if (!stepper.step(world, twin ? &*twin : nullptr, dt, count)) break;
             continue;
         }
         twin.reset();

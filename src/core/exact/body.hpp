@@ -27,7 +27,7 @@ struct alignas(64) Body {
     double r;             // radius
     double nextColl;      // time of its scheduled collision event (see scanCells)
     std::uint32_t count;  // bumped at every velocity change
-    std::uint32_t flags;  // kHeld, kJammed
+    std::uint32_t flags;  // kHeld, kJammed, ... (below)
 };
 inline constexpr std::uint32_t kHeld = 1;               // kinematic: infinite mass
 inline constexpr std::uint32_t kJammed = 2;             // passes through held particles (jam guard)
@@ -43,6 +43,12 @@ inline constexpr std::uint32_t kProvisional = 128;  // asleep until its recheck 
 // acceleration. Also a disc that does not turn on the wall it rests on: it slides under kinetic
 // friction until it stops (slipEnds).
 inline constexpr std::uint32_t kRolling = 256;
+// Wider than the box both ways (or with no room along either axis: kNoRoom): it sits on the
+// box's centre and takes no impulse, as fixed as a held particle. A held particle passes
+// through it as through another held one: neither can give way, so their contact would be met
+// again at the same instant without end.
+inline constexpr std::uint32_t kPinned = 512;
+inline constexpr std::uint32_t kImmovable = kHeld | kPinned;
 // A particle sliding on a segment's face (kSliding; slides.cpp): which
 // segment, and its constant acceleration along the face (gravity's share along it less the
 // kinetic friction, or none where static friction holds it). A disc that rolls (kRolling) keeps

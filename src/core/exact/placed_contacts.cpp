@@ -21,7 +21,7 @@ void PlacedContacts::record(std::vector<Body>& bodies, const std::vector<Cold>& 
         const Body& a = bodies[i];
         grid.forEachAround(cold[i], [&](std::uint32_t q) {
             Body& b = bodies[q];
-            if (q <= i || ((a.flags & kHeld) && (b.flags & kHeld))) return;
+            if (q <= i || ((a.flags & kImmovable) && (b.flags & kImmovable))) return;
             double rx = b.x - a.x, ry = b.y - a.y;
             if (grid.periodic()) {
                 // Overlapping, so at most half a box apart (support/periodic_box.hpp).

@@ -234,7 +234,8 @@ void ExactStepper::scanCells(std::uint32_t i, double now, double ax, double ay,
             const std::uint32_t q = members[m];
             const Body& b = bodies_[q];
             const bool bHeld = (b.flags & kHeld) != 0;
-            if (aHeld && bHeld) continue;  // held particles pass through each other
+            // Held particles pass through each other, and through a pinned one (kPinned).
+            if ((a.flags & kImmovable) && (b.flags & kImmovable)) continue;
             if ((aJammed && bHeld) || (aHeld && (b.flags & kJammed))) continue;
             const double h = now - b.t;
             Motion bm{};

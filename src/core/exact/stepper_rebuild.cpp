@@ -88,6 +88,7 @@ void ExactStepper::rebuild(ParticleArrays& p, const WorldDef& def) {
             // A pinned axis has no room to fall along: gravity across it is held by the walls.
             if (gravity_.on && c.pinX) b.flags |= kRestX;
             if (gravity_.on && c.pinY) b.flags |= kRestY;
+            if (c.pinX && c.pinY) b.flags |= kPinned;
         }
     }
     grid_.setUp(def_, bodies_, cold_);
