@@ -1,6 +1,6 @@
 // The exact mode on a granular scene over time: events, collisions of each kind and CPU time per
 // simulated second, and how many particles have passed a line, in frames of 1/60 s as the app
-// steps it (docs/exact.md, "Sliding and hops, measured").
+// steps it (docs/exact-gravity.md, "Sliding and hops, measured").
 //
 //   build/release/bench/exact-flow SCENE [--duration S] [--every S] [--below Y] [--mode M]
 //

@@ -1,4 +1,4 @@
-# The app's layers include only the layers below them (docs/app.md, "How it is built"). The
+# The app's layers include only the layers below them (docs/app-design.md, "How it is built"). The
 # link lines keep SDL and ImGui out of the session and the view; this keeps their headers out
 # too, header-only ones included, so that a stray include fails here before it is relied on.
 #   cmake -DAPP_DIR=src/app -P src/app/check_layers.cmake (every build runs it: psb_app_layers)

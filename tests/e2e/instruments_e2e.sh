@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end checks of the lab bench's instruments (docs/app.md, "Last collision card"): the
+# End-to-end checks of the lab bench's instruments (docs/app-instruments.md, "Last collision card"): the
 # real program in a virtual X display (Xvfb), driven with real X input (xdotool), read through
 # its log, the places --log-controls gives and the text F12 writes beside each screenshot.
 #

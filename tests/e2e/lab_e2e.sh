@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end checks of the lab bench's measuring instruments (docs/app.md, "Ruler and grid",
+# End-to-end checks of the lab bench's measuring instruments (docs/app-instruments.md, "Ruler and grid",
 # "Stopwatch", "Gas instruments"): the real program in a virtual X display (Xvfb), driven with
 # real X input (xdotool), read through its log and the text F12 writes beside each screenshot.
 #

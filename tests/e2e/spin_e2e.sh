@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# End-to-end checks of discs that turn (docs/app.md, "Discs that turn"): the ramp preset in the
+# End-to-end checks of discs that turn (docs/app-instruments.md, "Discs that turn"): the ramp preset in the
 # real program in a virtual X display (Xvfb), driven with real X input (xdotool), read through
 # its log, the places --log-controls gives, the screenshots' pixels and the text F12 writes
 # beside each screenshot.

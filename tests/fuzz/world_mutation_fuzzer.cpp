@@ -264,7 +264,7 @@ double largestRadius(const psb::World& w) {
 double deepestFreeOverlap(const psb::World& w) {
     const psb::ParticleArrays& p = w.particles();
     // A disc wider than the box sits pinned on its centre line; the exact mode does not track
-    // its overlaps (docs/exact.md, Limits), so it is left out too.
+    // its overlaps (docs/exact-gravity.md, "A disc wider than the box"), so it is left out too.
     const double fits = std::min(w.def().width, w.def().height);
     const auto tracked = [&](std::size_t i) {
         return p.invMass[i] != 0.0 && 2.0 * p.radius[i] < fits;

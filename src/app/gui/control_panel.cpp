@@ -55,7 +55,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     // The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
-    // than blended ones (docs/app.md, "Frame time").
+    // than blended ones (docs/app-design.md, "Frame time").
     ImGui::PushStyleColor(ImGuiCol_WindowBg, widgets::colour(palette(s.view().theme).controls));
     if (!open) {
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,

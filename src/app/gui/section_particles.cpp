@@ -144,8 +144,10 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         const EditableField& f = kFields[k];
         auto& text = fieldText_[k];
         // While a field is typed in it keeps the user's text; otherwise it shows the value now.
-        if (!fieldActive_[k])
-            std::snprintf(text.data(), text.size(), "%.6g", fieldValue(*p, f.field, axes));
+        if (!fieldActive_[k]) {
+            text.fill('\0');
+            plainNumber(fieldValue(*p, f.field, axes)).copy(text.data(), text.size() - 1);
+        }
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
         // Which way y counts, where the numbers are typed.

@@ -11,7 +11,6 @@
 #include <array>
 #include <cfloat>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -19,6 +18,7 @@
 #include "gui/control_panel.hpp"
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
+#include "session/units.hpp"
 #include "view/box_area.hpp"
 #include "view/values_table.hpp"
 
@@ -30,7 +30,8 @@ namespace {
 /// at 200 %).
 std::array<char, 64> fieldText(double value) {
     std::array<char, 64> text{};
-    std::snprintf(text.data(), text.size(), "%.4g", value);
+    const std::string digits = plainNumber(value, 4);
+    digits.copy(text.data(), text.size() - 1);
     return text;
 }
 

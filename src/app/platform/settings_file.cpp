@@ -1,7 +1,7 @@
 #include "platform/settings_file.hpp"
+#include "session/units.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -42,12 +42,6 @@ const char* keyOf(ShowOption option) {
     return "";
 }
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", v);
-    return buf;
-}
-
 void readUi(const nlohmann::json& ui, const ViewOptions& view, SettingsRead& out) {
     if (const auto it = ui.find("scale"); it != ui.end()) {
         if (it->is_string() && it->get<std::string>() == "auto") {
@@ -55,10 +49,10 @@ void readUi(const nlohmann::json& ui, const ViewOptions& view, SettingsRead& out
                 out.commands.emplace_back(cmd::SetUiScale{view.uiScale, true});
         } else if (!it->is_number()) {
             out.problems.push_back("ui.scale: expected \"auto\" or a number from " +
-                                   number(kMinUiScale) + " to " + number(kMaxUiScale));
+                                   plainNumber(kMinUiScale) + " to " + plainNumber(kMaxUiScale));
         } else if (const double s = it->get<double>(); !(s >= kMinUiScale && s <= kMaxUiScale)) {
-            out.problems.push_back("ui.scale: " + number(s) + " is outside " + number(kMinUiScale) +
-                                   " to " + number(kMaxUiScale));
+            out.problems.push_back("ui.scale: " + plainNumber(s) + " is outside " +
+                                   plainNumber(kMinUiScale) + " to " + plainNumber(kMaxUiScale));
         } else if (s != view.uiScale || view.uiScaleAutomatic) {
             out.commands.emplace_back(cmd::SetUiScale{s, false});
         }

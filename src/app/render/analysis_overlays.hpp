@@ -1,5 +1,5 @@
 #pragma once
-// The analysis overlays drawn over the world (see docs/app.md, "Seeing the physics"): the
+// The analysis overlays drawn over the world (see docs/app-instruments.md, "Seeing the physics"): the
 // momentum view (V), the plots panel (K), the speed histogram (D) and a scene's bins, each drawn
 // only when its ViewOptions toggle is on, in the boxes of a PanelLayout. The path traces (L) are
 // drawn by the Renderer, under the discs.

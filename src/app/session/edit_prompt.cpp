@@ -1,4 +1,5 @@
 #include "session/edit_prompt.hpp"
+#include "session/units.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -11,12 +12,6 @@
 #include <particle_sandbox/detail/float_chars.hpp>
 
 namespace psb::app {
-
-std::string formatValue(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
 
 namespace {
 
@@ -127,12 +122,12 @@ void EditPrompt::open(const Particle& p, const Axes& axes) {
     fresh_ = true;
     target_ = p.id;
     field_ = EditField::Mass;
-    texts_ = {formatValue(p.mass),
-              formatValue(p.radius),
-              formatValue(p.velocity.x()),
-              formatValue(axes.up(p.velocity.y())),
-              formatValue(axes.spin(p.angularVelocity)),
-              formatValue(p.inertiaFactor)};
+    texts_ = {plainNumber(p.mass),
+              plainNumber(p.radius),
+              plainNumber(p.velocity.x()),
+              plainNumber(axes.up(p.velocity.y())),
+              plainNumber(axes.spin(p.angularVelocity)),
+              plainNumber(p.inertiaFactor)};
     error_.clear();
 }
 
@@ -206,9 +201,9 @@ CheckedEdit checkValue(const World& world, ParticleId id, ParticleField field,
     const WorldDef& def = world.def();
     const auto inside = [&](double v, double extent) -> std::optional<CheckedEdit> {
         if (def.walls && (v < p.radius || v > extent - p.radius)) {
-            return refused(id, std::string(fieldName(field)) + ": " + formatValue(v) +
-                                   " m is outside the box (from " + formatValue(p.radius) + " to " +
-                                   formatValue(extent - p.radius) + " m for this radius)");
+            return refused(id, std::string(fieldName(field)) + ": " + plainNumber(v) +
+                                   " m is outside the box (from " + plainNumber(p.radius) + " to " +
+                                   plainNumber(extent - p.radius) + " m for this radius)");
         }
         return std::nullopt;
     };
@@ -252,13 +247,13 @@ CheckedEdit check(const World& world, ParticleId id, const EditedValues& values,
     const double omega = values.omega, k = values.inertiaFactor;
 
     if (!(mass >= std::numeric_limits<double>::min())) {
-        return refused(id, "mass: must be > 0 kg, got " + formatValue(mass));
+        return refused(id, "mass: must be > 0 kg, got " + plainNumber(mass));
     }
-    if (!(radius > 0.0)) return refused(id, "radius: must be > 0 m, got " + formatValue(radius));
+    if (!(radius > 0.0)) return refused(id, "radius: must be > 0 m, got " + plainNumber(radius));
     const double maxSpeed = kMaxEditSpeedBoxes * std::max(def.width, def.height);
     if (!(velocity.norm() <= maxSpeed)) {
-        return refused(id, "velocity: " + formatValue(velocity.norm()) + " m/s is faster than " +
-                               formatValue(maxSpeed) + " m/s (" + formatValue(kMaxEditSpeedBoxes) +
+        return refused(id, "velocity: " + plainNumber(velocity.norm()) + " m/s is faster than " +
+                               plainNumber(maxSpeed) + " m/s (" + plainNumber(kMaxEditSpeedBoxes) +
                                " box sizes per second)");
     }
     if (!std::isfinite(0.5 * mass * velocity.squaredNorm())) {
@@ -268,21 +263,21 @@ CheckedEdit check(const World& world, ParticleId id, const EditedValues& values,
         return refused(id,
                        "k: the inertia factor must be from 0.001 to 1 (1/2 a disc, 2/5 a ball, "
                        "1 a ring), got " +
-                           formatValue(k));
+                           plainNumber(k));
     }
     // The rim's speed, as a speed: a disc that turns a thousand times across the box per second
     // turns many times in one step.
     if (!(std::abs(omega) * radius <= maxSpeed)) {
-        return refused(id, "omega: the rim would move at " + formatValue(std::abs(omega) * radius) +
-                               " m/s, faster than " + formatValue(maxSpeed) + " m/s (" +
-                               formatValue(kMaxEditSpeedBoxes) + " box sizes per second)");
+        return refused(id, "omega: the rim would move at " + plainNumber(std::abs(omega) * radius) +
+                               " m/s, faster than " + plainNumber(maxSpeed) + " m/s (" +
+                               plainNumber(kMaxEditSpeedBoxes) + " box sizes per second)");
     }
     if (!std::isfinite(0.5 * k * mass * radius * radius * omega * omega)) {
         return refused(id, "mass and omega: the rotational energy would overflow");
     }
     if (def.walls && (2.0 * radius > def.width || 2.0 * radius > def.height)) {
-        return refused(id, "radius: " + formatValue(radius) + " m does not fit in the " +
-                               formatValue(def.width) + " x " + formatValue(def.height) + " m box");
+        return refused(id, "radius: " + plainNumber(radius) + " m does not fit in the " +
+                               plainNumber(def.width) + " x " + plainNumber(def.height) + " m box");
     }
 
     const Particle old = world.get(id);
@@ -308,7 +303,7 @@ CheckedEdit check(const World& world, ParticleId id, const EditedValues& values,
                 std::snprintf(buf, sizeof buf, "%s would overlap the particle at [%.2f, %.2f] m",
                               wanted != old.position
                                   ? "position: the new place"
-                                  : ("radius: " + formatValue(radius) + " m").c_str(),
+                                  : ("radius: " + plainNumber(radius) + " m").c_str(),
                               c.x(), axes.y(c.y()));
                 return refused(id, buf);
             }

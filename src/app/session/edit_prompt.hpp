@@ -50,9 +50,6 @@ inline constexpr double kMaxEditSpeedBoxes = 1000.0;
 [[nodiscard]] const char* fieldName(ParticleField f);
 /// "kg", "m", "m/s", "rad/s", "(I = k m r^2)".
 [[nodiscard]] const char* fieldUnit(EditField f);
-/// `v` as the prompt and its messages write a value: six significant digits ("12.5", "1e-07").
-[[nodiscard]] std::string formatValue(double v);
-
 class EditPrompt {
   public:
     /// Longest text a field takes, characters.

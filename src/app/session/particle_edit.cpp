@@ -1,4 +1,5 @@
 #include "session/particle_edit.hpp"
+#include "session/units.hpp"
 
 #include <cstdio>
 
@@ -38,13 +39,13 @@ EditResult writeEdit(World& world, const CheckedEdit& edit, const Axes& axes) {
     char buf[200];
     std::snprintf(buf, sizeof buf,
                   "Edited particle %llu: mass %s kg, radius %s m, velocity [%s, %s] m/s",
-                  static_cast<unsigned long long>(particleNumber(id)), formatValue(mass).c_str(),
-                  formatValue(radius).c_str(), formatValue(velocity.x()).c_str(),
-                  formatValue(axes.up(velocity.y())).c_str());
+                  static_cast<unsigned long long>(particleNumber(id)), plainNumber(mass).c_str(),
+                  plainNumber(radius).c_str(), plainNumber(velocity.x()).c_str(),
+                  plainNumber(axes.up(velocity.y())).c_str());
     std::string message = buf;
     if (world.rotationInUse()) {
         std::snprintf(buf, sizeof buf, ", omega %s rad/s, k %s",
-                      formatValue(axes.spin(omega)).c_str(), formatValue(k).c_str());
+                      plainNumber(axes.spin(omega)).c_str(), plainNumber(k).c_str());
         message += buf;
     }
     if (position != wanted) {
@@ -53,8 +54,8 @@ EditResult writeEdit(World& world, const CheckedEdit& edit, const Axes& axes) {
         message += buf;
     } else if (position != old.position) {
         // A move says where to (an edit of x or y would otherwise read as if nothing changed).
-        message += "; now at [" + formatValue(position.x()) + ", " +
-                   formatValue(axes.y(position.y())) + "] m";
+        message += "; now at [" + plainNumber(position.x()) + ", " +
+                   plainNumber(axes.y(position.y())) + "] m";
     }
     return {true, message};
 }

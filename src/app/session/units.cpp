@@ -1,5 +1,6 @@
 #include "session/units.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -60,6 +61,13 @@ std::string scientific(double v) {
 }
 
 }  // namespace
+
+std::string plainNumber(double value, int significant) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*g", std::clamp(significant, 1, 17), value);
+    const std::string text = buf;
+    return text == "-0" ? "0" : text;
+}
 
 std::string components(const Vec2& v) {
     // Built by appending: GCC 12 warns wrongly (-Wrestrict) on a chain of + from a literal.

@@ -2,7 +2,8 @@
 // Numbers for people: three significant figures with an SI prefix for a simple unit
 // ("4.04 MJ", "1.20 mm", "9.81 m/s^2"), digits grouped by thousands for a compound one
 // ("40 390 kg m/s"), and the accuracy of a conserved quantity in words
-// ("energy kept to 1 part in 10^14"). No "4.039e+06" reaches the screen.
+// ("energy kept to 1 part in 10^14"). No "4.039e+06" reaches the screen, except where a person
+// types the number back (plainNumber). Every number the app writes for people comes from here.
 
 #include <string>
 
@@ -17,6 +18,12 @@ namespace psb::app {
 /// keep three significant figures ("0.00123 kg m/s"), and from a billion up or below a
 /// millionth it is a power of ten.
 [[nodiscard]] std::string quantity(double value, const std::string& unit, bool prefix = true);
+
+/// `value` with up to `significant` figures, trailing zeros dropped, as printf's %g writes it
+/// ("0.25", "9.81", "1e+06"): for a number a person types back or reads beside one they typed
+/// (a particle's fields, a refused edit, a settings file's message, a window's length in
+/// seconds), where prefixes and grouped digits would not read back. "-0" is "0".
+[[nodiscard]] std::string plainNumber(double value, int significant = 6);
 
 /// A vector's signed components as quantity() writes them without a prefix, in brackets:
 /// "(2.00, 0)", "(-2.50, 1.00)" (the unit goes after, once).

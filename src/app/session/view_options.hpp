@@ -80,7 +80,7 @@ struct ViewOptions {
     /// The user set the arrow scale (the Show section's slider): it stays as set, no longer
     /// shortening by itself, until a scene opens.
     bool arrowScaleSet = false;
-    // Analysis overlays (see docs/app.md, "Seeing the physics").
+    // Analysis overlays (see docs/app-instruments.md, "Seeing the physics").
     bool momentum = false;              ///< V: momentum arrows, centre of mass, Σ m v
     TrailMode trails = TrailMode::Off;  ///< L: path traces
     bool plots = false;                 ///< K: energy, momentum and collision rate against time

@@ -1,17 +1,16 @@
 #include "view/bin_histogram.hpp"
+#include "session/units.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 
 namespace psb::app {
 namespace {
 
+/// Three figures, and every digit before the point from 100 up ("4.21", "1234").
 std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, v >= 100.0 ? "%.0f" : "%.3g", v);
-    return buf;
+    return v >= 100.0 ? plainNumber(std::round(v), 17) : plainNumber(v, 3);
 }
 
 std::string verdict(const std::optional<ChiSquareTest>& t) {
@@ -26,9 +25,7 @@ std::string verdict(const std::optional<ChiSquareTest>& t) {
 
 std::string probabilityText(double p) {
     if (p == 0.5) return "1/2";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", p);
-    return buf;
+    return plainNumber(p, 3);
 }
 
 double normalCount(double k, const BinomialExpectation& b, double total) {

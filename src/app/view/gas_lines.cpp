@@ -7,19 +7,9 @@
 
 namespace psb::app {
 
-namespace {
-
-std::string number(double value) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", value);
-    return buf;
-}
-
-}  // namespace
-
 std::vector<GasLine> gasLines(const GasReading& r) {
     std::vector<GasLine> lines;
-    const std::string seconds = number(r.window) + " s";
+    const std::string seconds = plainNumber(r.window, 3) + " s";
     lines.push_back({"Temperature kT", quantity(r.kT, "J"),
                      "In two dimensions each particle has, on average, kT of kinetic energy "
                      "(\u00bd kT for each of its two directions): kT is the mean \u00bd m v\u00b2. "

@@ -68,5 +68,18 @@ TEST(Units, OverlapInWords) {
     EXPECT_EQ(overlapWords(5e-12, 0.004), "Particles overlap by up to 5.00 pm");
 }
 
+TEST(Units, APlainNumberReadsBackAsTyped) {
+    // The figures asked for, trailing zeros dropped, an exponent where %g puts one: what a
+    // person types back into a field.
+    EXPECT_EQ(plainNumber(12.5), "12.5");
+    EXPECT_EQ(plainNumber(0.1 + 0.2), "0.3");
+    EXPECT_EQ(plainNumber(1e-7), "1e-07");
+    EXPECT_EQ(plainNumber(123456789.0), "1.23457e+08");
+    EXPECT_EQ(plainNumber(2.0 / 3.0, 3), "0.667");
+    EXPECT_EQ(plainNumber(1234.56, 4), "1235");
+    EXPECT_EQ(plainNumber(-0.0), "0");
+    EXPECT_EQ(plainNumber(-1e-9, 3), "-1e-09");
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -469,7 +469,7 @@ TEST(BoxShare, OnTheProjectorTheLessonsBoxesKeepAReasonableShareOfTheWindow) {
     // into 200 x 190 pixels under the table's three rows, its bodies dots under the ruler; the
     // momentum lesson with the plots (K), the momentum view (V) and labels (S) into 510 x 205
     // beside the plots, its balls 7 pixels across. Something else gives way first
-    // (docs/app.md, Values table): the box keeps at least 60 % of the size it has with neither
+    // (docs/app-instruments.md, Values table): the box keeps at least 60 % of the size it has with neither
     // the side column nor the values table beside it.
     const test::FixedMeasure font(2.0);
     const ControlsWidth controls{620.0, 88.0, 2.0};

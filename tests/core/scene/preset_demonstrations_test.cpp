@@ -394,7 +394,7 @@ TEST(PresetDemonstrations, BowlingBallRollsAfterSlidingTheBlockStopsTheDrawShotC
     // t* = k v0 / (mu g (1 + k)) at v0 / (1 + k); the block stops after v0² / (2 mu g); the ball
     // with backspin omega0 = -150 rad/s rolls back at (v0 + k r omega0) / (1 + k) from
     // t = (v0 - omega0 r) / (mu g (1 + 1/k)). The exact mode is left out: a block resting on
-    // the box's floor feels no kinetic friction there (docs/exact.md, Limits).
+    // the box's floor feels no kinetic friction there (docs/exact-gravity.md, Gravity, Limits).
     const double g = 9.81, mu = 0.2, v0 = 4.0, k = 0.4, r = 0.11, w0 = -150.0;
     const double tStar = k * v0 / (mu * g * (1 + k));
     const double rolling = v0 / (1 + k);
