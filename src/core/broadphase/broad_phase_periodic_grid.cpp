@@ -22,7 +22,8 @@ std::int64_t cellsAcross(double extent, double minCell) {
 }  // namespace
 
 void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box& box,
-                                   double maxRadius, int threads) {
+                                   const ParticleStats& stats, int threads) {
+    const double maxRadius = stats.maxRadius;
     const std::size_t n = p.size();
     box_ = box;
     const double rounding = 64.0 * std::max(box.width, box.height) * 2.220446049250313e-16;
@@ -37,6 +38,12 @@ void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box&
     }
     invCellX_ = static_cast<double>(nx_) / box.width;
     invCellY_ = static_cast<double>(ny_) / box.height;
+    images_ = nx_ >= 3 && ny_ >= 3;
+    if (images_) {
+        const double reach = 2.0 * maxRadius * (1.0 + kRelativeSlack) + rounding;
+        grid_.build(copy_, buildImages(p, stats, reach), threads);
+        return;
+    }
     const auto cells = static_cast<std::size_t>(nx_ * ny_);
     cellOf_.resize(n);
     entries_.resize(n);
@@ -59,6 +66,58 @@ void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box&
     fill.assign(cellStart_.begin(), cellStart_.end() - 1);
     for (std::size_t i = 0; i < n; ++i)
         entries_[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+ParticleStats PeriodicGridBroadPhase::buildImages(const ParticleArrays& p,
+                                                  const ParticleStats& stats, double reach) {
+    const std::size_t n = p.size();
+    const double w = box_.width, h = box_.height;
+    const double grow = 1e-12 * std::max(w, h);
+    copy_.x.assign(p.x.begin(), p.x.end());
+    copy_.y.assign(p.y.begin(), p.y.end());
+    copy_.radius.resize(n);
+    const double* r = p.radius.data();
+    double* cr = copy_.radius.data();
+    for (std::size_t i = 0; i < n; ++i)
+        cr[i] = r[i] + grow;
+    source_.clear();
+    const auto image = [&](std::size_t i, double x, double y) {
+        const double radius = copy_.radius[i];
+        source_.push_back(static_cast<std::uint32_t>(i));
+        copy_.x.push_back(x);
+        copy_.y.push_back(y);
+        copy_.radius.push_back(radius);
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        double x = copy_.x[i], y = copy_.y[i];
+        // Wrapped as the wrap stage will (a centre may be a step's travel outside the box).
+        if (!(x >= reach && x < w && y >= reach && y < h - reach)) {
+            double unwrap = 0.0;
+            periodic::wrapInto(x, unwrap, w);
+            periodic::wrapInto(y, unwrap, h);
+            copy_.x[i] = x;
+            copy_.y[i] = y;
+        } else {
+            continue;  // inside, off the edges that take images
+        }
+        const bool left = x < reach, bottom = y < reach, top = y >= h - reach;
+        if (left) image(i, x + w, y);
+        if (bottom) image(i, x, y + h);
+        if (left && bottom) image(i, x + w, y + h);
+        if (left && top) image(i, x + w, y - h);
+    }
+    // The copy's bounds follow from the box and the reach; its radii are the particles' (grown).
+    ParticleStats s = stats;
+    s.count = copy_.x.size();
+    s.minX = 0.0;
+    s.maxX = w + reach;
+    s.minY = -reach;
+    s.maxY = h + reach;
+    s.maxAbsCoordinate = std::max(w, h) + reach;
+    s.minRadius += grow;
+    s.meanRadius += grow;
+    s.maxRadius += grow;
+    return s;
 }
 
 std::uint32_t PeriodicGridBroadPhase::cellOf(double x, double y) const {
@@ -92,42 +151,11 @@ void PeriodicGridBroadPhase::queryCells(const ParticleArrays& p, int chunk, std:
             found += static_cast<std::size_t>(discsOverlapPeriodic(x, y, r, lo, hi, box_));
         }
     };
-    // Cells whose whole half stencil lies off the box's edge rows and columns: every particle
-    // in them is inside the box (only a centre a step outside it lands in an edge cell, by the
-    // wrap of cellOf), so two of them are less than half a box apart and the plain test is the
-    // nearest-image test, bit for bit (minimumImage returns such a separation unchanged).
-    const bool inner = nx_ >= 6 && ny_ >= 6;
-    const auto stride = static_cast<std::uint32_t>(nx_);
     for (std::size_t c = begin; c < end; ++c) {
         const std::uint32_t a0 = start[c], a1 = start[c + 1];
         if (a0 == a1) continue;
         const std::int64_t cx = static_cast<std::int64_t>(c) % nx_;
         const std::int64_t cy = static_cast<std::int64_t>(c) / nx_;
-        if (inner && cx >= 2 && cx <= nx_ - 3 && cy >= 1 && cy <= ny_ - 3) {
-            const auto cell = static_cast<std::uint32_t>(c);
-            // The east cell follows this one in `entries`; the three below are one run too.
-            const std::uint32_t own1 = start[cell + 2];
-            const std::uint32_t below0 = start[cell + stride - 1],
-                                below1 = start[cell + stride + 2];
-            ContactPair* buf = chunks_.room(
-                chunk, found + std::size_t{a1 - a0} * ((own1 - a0) + (below1 - below0)));
-            for (std::uint32_t a = a0; a < a1; ++a) {
-                const std::uint32_t i = entries[a];
-                for (std::uint32_t k = a + 1; k < own1; ++k) {
-                    const std::uint32_t j = entries[k];
-                    const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
-                    buf[found] = {lo, hi};
-                    found += static_cast<std::size_t>(discsOverlap(x, y, r, lo, hi));
-                }
-                for (std::uint32_t k = below0; k < below1; ++k) {
-                    const std::uint32_t j = entries[k];
-                    const std::uint32_t lo = std::min(i, j), hi = std::max(i, j);
-                    buf[found] = {lo, hi};
-                    found += static_cast<std::size_t>(discsOverlap(x, y, r, lo, hi));
-                }
-            }
-            continue;
-        }
         // The distinct neighbours with a higher index (fewer than eight in a box one or two
         // cells across, where they repeat).
         std::uint32_t later[8];
@@ -153,6 +181,34 @@ void PeriodicGridBroadPhase::queryCells(const ParticleArrays& p, int chunk, std:
 void PeriodicGridBroadPhase::findPairs(const ParticleArrays& p, int threads,
                                        std::vector<ContactPair>& out) {
     const std::size_t n = p.size();
+    if (images_) {
+        found_.clear();
+        grid_.findPairs(copy_, threads, found_);
+        // Pairs of two particles come first and ascending; those with an image, far fewer, are
+        // sorted apart and merged in.
+        const std::size_t before = out.size();
+        acrossEdges_.clear();
+        const double* x = p.x.data();
+        const double* y = p.y.data();
+        const double* r = p.radius.data();
+        for (const ContactPair& f : found_) {
+            if (f.i >= n) continue;  // two images (f.i < f.j)
+            if (f.j < n) {
+                if (discsOverlapPeriodic(x, y, r, f.i, f.j, box_)) out.push_back(f);
+                continue;
+            }
+            const std::uint32_t j = source_[f.j - n];
+            if (j == f.i) continue;  // a particle and its own image
+            const ContactPair pair{std::min(f.i, j), std::max(f.i, j)};
+            if (discsOverlapPeriodic(x, y, r, pair.i, pair.j, box_)) acrossEdges_.push_back(pair);
+        }
+        std::sort(acrossEdges_.begin(), acrossEdges_.end());
+        const std::size_t middle = out.size();
+        out.insert(out.end(), acrossEdges_.begin(), acrossEdges_.end());
+        std::inplace_merge(out.begin() + static_cast<std::ptrdiff_t>(before),
+                           out.begin() + static_cast<std::ptrdiff_t>(middle), out.end());
+        return;
+    }
     const auto cells = static_cast<std::size_t>(nx_ * ny_);
     const int chunks = parallel::chunksFor(threads, n);
     chunks_.prepare(chunks);
@@ -166,9 +222,13 @@ void PeriodicGridBroadPhase::findPairs(const ParticleArrays& p, int threads,
 }
 
 std::size_t PeriodicGridBroadPhase::memoryBytes() const {
-    return sizeof(std::uint32_t) * (cellOf_.capacity() + cellStart_.capacity() +
-                                    entries_.capacity() + sortScratchCells_.capacity()) +
-           sizeof(ContactPair) * sortScratch_.capacity() + chunks_.memoryBytes();
+    return sizeof(std::uint32_t) *
+               (cellOf_.capacity() + cellStart_.capacity() + entries_.capacity() +
+                sortScratchCells_.capacity() + source_.capacity()) +
+           sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity()) +
+           sizeof(ContactPair) *
+               (sortScratch_.capacity() + found_.capacity() + acrossEdges_.capacity()) +
+           chunks_.memoryBytes() + grid_.memoryBytes();
 }
 
 }  // namespace psb

@@ -81,7 +81,7 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     if (ctx.periodic) {
         switch (ctx.broadPhaseUsed) {
             case BroadPhaseKind::Grid:
-                ctx.periodicGrid.build(p, ctx.box, stats.maxRadius, ctx.threads);
+                ctx.periodicGrid.build(p, ctx.box, stats, ctx.threads);
                 ctx.periodicGrid.findPairs(p, ctx.threads, ctx.pairs);
                 break;
             case BroadPhaseKind::Quadtree:

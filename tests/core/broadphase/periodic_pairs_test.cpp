@@ -108,5 +108,23 @@ TEST(PeriodicPairs, APairAcrossACornerIsFound) {
     }
 }
 
+TEST(PeriodicPairs, LargeDiscsAndTheirImagesAcrossTheEdges) {
+    // The grid queries the box grid over the particles and a half shell of images; discs more
+    // than twice the mean radius stay out of its cells and are tested apart, images of them
+    // too. A few of 3 m among 400 of 0.4 to 0.8 m, some of them over an edge or a corner.
+    for (std::uint64_t seed = 11; seed <= 14; ++seed) {
+        const periodic::Box box{36.0, 28.0 + static_cast<double>(seed)};
+        ParticleArrays p = scatter(400, box.width, box.height, 0.4, 0.2, seed);
+        for (const double at : {0.5, 1.0, 2.0, 35.5}) {
+            p.x.push_back(at);
+            p.y.push_back(box.height - at * 0.5);
+            p.radius.push_back(3.0);
+        }
+        const std::vector<ContactPair> want = bruteForce(p, box);
+        EXPECT_EQ(found(BroadPhaseKind::Grid, p, box, 1), want) << "seed " << seed;
+        EXPECT_EQ(found(BroadPhaseKind::Grid, p, box, 2), want) << "two threads, seed " << seed;
+    }
+}
+
 }  // namespace
 }  // namespace psb
