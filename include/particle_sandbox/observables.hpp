@@ -140,6 +140,8 @@ struct ObservablesResult {
     /// the walls in layers), and measured, N / (w h) is the nearer: 1000 exact discs at 0.3 gave
     /// Z 0.7 % above Henderson's at the box's φ and 2.9 % below it at the centres'.
     double hendersonZ = kNaN, hendersonContact = kNaN;
+    /// Liu's simulation-based Z for the fluid (hard_disc_theory.hpp); NaN beyond φ 0.70.
+    double liuZ = kNaN;
     double enskogCollisionRate = kNaN, enskogMeanFreePath = kNaN, enskogDiffusion = kNaN;
 
     /// g(r): bin centres (m) and values; empty without snapshots.

@@ -39,6 +39,7 @@ nlohmann::ordered_json observablesJson(const ObservablesResult& o) {
     };
     theoryPut("henderson_compressibility_factor", o.hendersonZ);
     theoryPut("henderson_contact_value", o.hendersonContact);
+    theoryPut("liu_compressibility_factor", o.liuZ);
     theoryPut("enskog_collision_rate", o.enskogCollisionRate);
     theoryPut("enskog_mean_free_path", o.enskogMeanFreePath);
     theoryPut("enskog_diffusion", o.enskogDiffusion);

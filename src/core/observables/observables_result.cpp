@@ -223,6 +223,7 @@ ObservablesResult ObservablesWindow::result() const {
         const double rho = n / (s.width * s.height);
         if (phi < 1.0) {
             r.hendersonZ = hard_discs::hendersonZ(phi);
+            if (phi <= hard_discs::kLiuFluidLimit) r.liuZ = hard_discs::liuZ(phi);
             r.hendersonContact = hard_discs::hendersonContact(phi);
             r.enskogCollisionRate =
                 hard_discs::enskogCollisionRate(rho, s.sigma, r.hendersonContact, kTv, s.mass);
