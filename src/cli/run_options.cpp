@@ -122,7 +122,7 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                          "Print the version (and git revision) and exit");
 
     std::string scene, duration, mode, dt, substeps, broadphase, threads, report, save;
-    std::string timeseries, timeseriesEvery, track, seed, warmup, gr, msd, vacf;
+    std::string timeseries, timeseriesEvery, track, seed, warmup, gr, msd, vacf, maxLag;
     bool observables = false;
     std::vector<std::string> sets;
     bool progress = false;
@@ -185,6 +185,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
                    "Write the velocity autocorrelation against lag time as CSV "
                    "(t_s,vacf_m2_per_s2); implies --observables")
         ->type_name("PATH");
+    app.add_option("--max-lag", maxLag,
+                   "The MSD and VACF up to this lag time, seconds (> 0; default: 20 free times, "
+                   "or less where a disc would diffuse an eighth of the box; with it, a time "
+                   "origin every sixteenth of it); implies --observables")
+        ->type_name("SECONDS");
     app.add_flag("--progress", progress,
                  "Show a progress bar on stderr (only when stderr is a terminal; long runs "
                  "show one anyway)");
@@ -277,7 +282,11 @@ RunOptions parseRunOptions(const std::vector<std::string>& args) {
     o.gr = path("--gr", gr);
     o.msd = path("--msd", msd);
     o.vacf = path("--vacf", vacf);
-    o.observables = observables || o.gr || o.msd || o.vacf;
+    if (!maxLag.empty()) {
+        o.maxLag = parseFiniteNumber(maxLag, "--max-lag");
+        if (!(*o.maxLag > 0.0)) throw UsageError("--max-lag: must be > 0, got '" + maxLag + "'");
+    }
+    o.observables = observables || o.gr || o.msd || o.vacf || o.maxLag;
     o.progress = progress;
     return o;
 }

@@ -45,6 +45,8 @@ struct RunOptions {
     std::optional<std::filesystem::path> gr;    ///< --gr: g(r) as CSV (r_m,g)
     std::optional<std::filesystem::path> msd;   ///< --msd: t_s,msd_m2
     std::optional<std::filesystem::path> vacf;  ///< --vacf: t_s,vacf_m2_per_s2
+    /// --max-lag: the MSD's and VACF's longest lag, seconds (> 0); implies `observables`.
+    std::optional<double> maxLag;
 };
 
 /// A command line that cannot be run; what() says which option and why.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
@@ -130,7 +131,17 @@ RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
 
     std::optional<ObservablesWindow> window;
     if (options.observables) {
-        window.emplace(suggestedObservablesSettings(world, s.dt, true, options.gr.has_value()));
+        ObservablesSettings settings =
+            suggestedObservablesSettings(world, s.dt, true, options.gr.has_value());
+        if (options.maxLag) {
+            const double interval = settings.stateEvery * s.dt;
+            settings.maxLag = static_cast<std::uint32_t>(
+                std::clamp(std::round(*options.maxLag / interval), 1.0, 1e6));
+            // Long lags are where the averages are thin (the VACF's tail): a new time origin
+            // every sixteenth of the longest lag, not every half.
+            settings.originEvery = std::max(1u, settings.maxLag / 16);
+        }
+        window.emplace(settings);
         window->open(world);
     }
     const auto start = std::chrono::steady_clock::now();

@@ -166,6 +166,28 @@ TEST(Runner, ExactModeWithGravityRuns) {
     EXPECT_NEAR(r.kineticEnergyFinal + r.potentialEnergyFinal, 9.81 * 6.0, 1e-10);
 }
 
+TEST(Runner, MaxLagSetsTheLongestLagOfTheMsdAndVacf) {
+    // A periodic gas of 400 discs at 0.3: by default the lags reach 20 free times (about 17 s
+    // here); --max-lag 40 takes them to 40 s, in steps of the state interval.
+    const std::string scene = R"({"version": 6, "world": {"width": 1, "height": 1,
+        "periodic": true}, "solver": {"mode": "exact", "dt": 0.1},
+        "generate": {"count": 400, "packing_fraction": 0.3, "radius": 1, "temperature": 1,
+                     "seed": 3}})";
+    RunOptions o;
+    o.observables = true;
+    const RunReport plain = run(scene, 60.0, o);
+    ASSERT_TRUE(plain.observables.has_value());
+    ASSERT_FALSE(plain.observables->lagTime.empty());
+    EXPECT_LT(plain.observables->lagTime.back(), 30.0);
+    o.maxLag = 40.0;
+    const RunReport longer = run(scene, 60.0, o);
+    ASSERT_TRUE(longer.observables.has_value());
+    const std::vector<double>& lags = longer.observables->lagTime;
+    ASSERT_GE(lags.size(), 2u);
+    EXPECT_NEAR(lags.back(), 40.0, lags[1] - lags[0]);
+    EXPECT_EQ(longer.observables->vacf.size(), lags.size());
+}
+
 TEST(Report, ListsPotentialAndMechanicalEnergyOnlyWithGravity) {
     const RunReport r = run(R"({"version": 1, "world": {"width": 10, "height": 10,
         "gravity": [0, 2]}, "solver": {"dt": 0.25, "mode": "exact"},
