@@ -17,6 +17,13 @@ namespace psb::detail {
 [[nodiscard]] std::optional<std::pair<std::size_t, std::size_t>> findOverlap(
     const std::vector<ParticleDef>& particles);
 
+/// The same in a periodic box `width` × `height` (WorldDef::periodic): distances between
+/// nearest images, so two discs at opposite edges overlap across them. Centres anywhere (they
+/// are wrapped into the box first); a disc's diameter at most half of each side (as World
+/// keeps it).
+[[nodiscard]] std::optional<std::pair<std::size_t, std::size_t>> findOverlapPeriodic(
+    const std::vector<ParticleDef>& particles, double width, double height);
+
 /// A particle overlapping an obstacle: their indices and the distance from the particle's
 /// centre to the obstacle's core (a peg's centre, a segment's line), metres.
 struct ObstacleOverlap {

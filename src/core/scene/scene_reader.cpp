@@ -30,6 +30,7 @@
 #include "scene/json_values.hpp"
 #include "scene/scene_generate.hpp"
 #include "scene/scene_overrides.hpp"
+#include "support/periodic_box.hpp"
 #include "support/printable.hpp"
 
 namespace psb {
@@ -675,13 +676,21 @@ void checkPlacement(const ValueReader& r, const Scene& s, const std::vector<Orig
                    num(hit->distance) + " m from its " + (o.isPeg() ? "centre" : "core line") +
                    ", " + num(s.particles[hit->particle].radius + o.radius) + " m needed)");
     }
-    if (const auto pair = detail::findOverlap(s.particles)) {
+    const auto pair = w.periodic ? detail::findOverlapPeriodic(s.particles, w.width, w.height)
+                                 : detail::findOverlap(s.particles);
+    if (pair) {
         const auto [i, k] = *pair;
         const ParticleDef &a = s.particles[i], &b = s.particles[k];
-        const double distance = (b.position - a.position).norm();
+        const Vec2 direct = b.position - a.position;
+        Vec2 apart = direct;
+        if (w.periodic) {
+            apart = {periodic::minimumImage(direct.x(), w.width),
+                     periodic::minimumImage(direct.y(), w.height)};
+        }
         r.fail(describe(origins[i]), "overlaps " + describe(origins[k]) + " (centres " +
-                                         num(distance) + " m apart, radii sum to " +
-                                         num(a.radius + b.radius) + " m)");
+                                         num(apart.norm()) + " m apart" +
+                                         (apart != direct ? " across the box's edge" : "") +
+                                         ", radii sum to " + num(a.radius + b.radius) + " m)");
     }
 }
 

@@ -55,7 +55,10 @@ Scene sceneFromWorld(const World& world, double dt, std::string name, std::strin
     // A world may hold overlaps the loader refuses by default (particles placed overlapping, an
     // obstacle drawn over a particle, the discrete mode's resting contacts): the scene says so,
     // so that it loads again.
-    s.allowOverlaps = detail::findOverlap(s.particles).has_value() ||
+    const WorldDef& w = s.world;
+    s.allowOverlaps = (w.periodic ? detail::findOverlapPeriodic(s.particles, w.width, w.height)
+                                  : detail::findOverlap(s.particles))
+                          .has_value() ||
                       detail::findObstacleOverlap(s.particles, s.world.obstacles).has_value();
     return s;
 }

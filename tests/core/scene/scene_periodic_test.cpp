@@ -67,6 +67,37 @@ TEST(ScenePeriodic, ABoxSmallerThanTwoDiametersIsRefusedNamingTheSide) {
     EXPECT_NE(d.find("droppers[0]"), std::string::npos) << d;
 }
 
+TEST(ScenePeriodic, DiscsOverlappingAcrossAnEdgeOrACornerAreRefused) {
+    // 0.2 m from the left edge and 0.2 m from the right one: 0.4 m apart across the edge, with
+    // radii summing to 1 m. Without the periodic box they are 19.6 m apart and load.
+    const auto scene = [](const char* world, const char* second) {
+        return std::string(R"({"version": 6, "world": )") + world +
+               R"(, "particles": [{"x": 0.2, "y": 5, "radius": 0.5, "mass": 1},
+                                  {"x": 3, "y": 3, "radius": 0.5, "mass": 1}, )" +
+               second + "]}";
+    };
+    const char* periodic = R"({"width": 20, "height": 20, "periodic": true})";
+    const std::string m = messageOf(scene(periodic, R"({"x": 19.8, "y": 5.1, "radius": 0.5,
+                                                        "mass": 1})"));
+    EXPECT_NE(m.find("particles[0]: overlaps particles[2]"), std::string::npos) << m;
+    EXPECT_NE(m.find("across the box's edge"), std::string::npos) << m;
+    EXPECT_EQ(messageOf(scene(R"({"width": 20, "height": 20, "walls": false})",
+                              R"({"x": 19.8, "y": 5.1, "radius": 0.5, "mass": 1})")),
+              "(loaded)");
+    // Across a corner: (0.2, 5) and (19.9, 19.9) are not near; (0.3, 0.3) and (19.8, 19.8) are
+    // 0.71 m apart through the corner.
+    const std::string c = messageOf(
+        R"({"version": 6, "world": {"width": 20, "height": 20, "periodic": true},
+            "particles": [{"x": 0.3, "y": 0.3, "radius": 0.5, "mass": 1},
+                          {"x": 19.8, "y": 19.8, "radius": 0.5, "mass": 1}]})");
+    EXPECT_NE(c.find("particles[0]: overlaps particles[1]"), std::string::npos) << c;
+    // A generated gas that fills the box to its edges loads: the lattice keeps its spacing
+    // across them.
+    EXPECT_EQ(messageOf(R"({"version": 6, "world": {"width": 1, "height": 1, "periodic": true},
+        "generate": {"count": 900, "radius": 1, "packing_fraction": 0.7, "seed": 2}})"),
+              "(loaded)");
+}
+
 TEST(ScenePeriodic, AnObstacleNearAnEdgeIsRefusedNamingIt) {
     const std::string m = messageOf(
         R"({"version": 6, "world": {"width": 20, "height": 20, "periodic": true},
