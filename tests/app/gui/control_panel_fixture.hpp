@@ -1,0 +1,117 @@
+#pragma once
+// The control panel's test fixture: a session, the panel built in an offscreen ImGui frame,
+// mouse input fed through ImGui's io, and the commands it returns applied as the app applies
+// them (control_panel_test.cpp, section_values_test.cpp).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <particle_sandbox/presets.hpp>
+#include <particle_sandbox/scene.hpp>
+
+#include "gui/control_panel.hpp"
+#include "gui/gui_context.hpp"
+#include "platform/assets.hpp"
+#include "render/offscreen_test.hpp"
+#include "session/scene_io.hpp"
+#include "session/session.hpp"
+#include "view/values_table.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr int kSize = 800;
+
+class ControlPanelTest : public OffscreenTest {
+  protected:
+    ControlPanelTest() : OffscreenTest(kSize) {}
+
+    void SetUp() override {
+        OffscreenTest::SetUp();
+        GuiOptions o;
+        o.font = findAsset("fonts/DejaVuSans.ttf");
+        o.fontPixels = 15.f;
+        gui_ = std::make_unique<GuiContext>(sdl_, o);
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = kSize;
+        so.viewportHeight = kSize;
+        so.layout = windowLayout(*font_, kSize, kSize, controlsWidth(1.0));
+        so.presets = presetScenes();
+        session_.emplace(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                         so);
+        // ImGui settles its layout in the second frame (wrapped text takes the width the first
+        // frame found).
+        frame();
+        frame();
+    }
+    void TearDown() override {
+        gui_.reset();
+        OffscreenTest::TearDown();
+    }
+
+    /// One frame: the panel built and drawn, its commands applied. Returns how many there were.
+    std::size_t frame() {
+        SDL_SetRenderDrawColor(sdl_, 0, 0, 0, 255);
+        SDL_RenderClear(sdl_);
+        gui_->beginFrame(kSize, kSize);
+        const std::vector<Command> commands = panel_.build(*session_, FrameStats{}, kSize, 1.f);
+        EXPECT_EQ(gui_->endFrame(), 0);
+        SDL_RenderPresent(sdl_);
+        for (const Command& c : commands)
+            session_->apply(c);
+        return commands.size();
+    }
+    [[nodiscard]] ImVec2 centre(const std::string& name) const {
+        const PanelItem* i = panel_.item(name);
+        EXPECT_NE(i, nullptr) << name;
+        if (i == nullptr) return {-1.f, -1.f};
+        EXPECT_LT(i->y1, static_cast<float>(kSize)) << name << " is below the window";
+        return {(i->x0 + i->x1) / 2.f, (i->y0 + i->y1) / 2.f};
+    }
+    void click(const std::string& name) {
+        ImGuiIO& io = gui_->io();
+        frame();
+        io.MousePos = centre(name);
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        io.MouseDown[0] = false;
+        frame();
+        io.MousePos = ImVec2(kSize - 5.f, kSize - 5.f);  // away, so no tooltip stays
+        frame();
+    }
+    /// A drag of the named control from its centre to `to`, in `steps` frames.
+    void drag(const std::string& name, ImVec2 to, int steps = 8) {
+        ImGuiIO& io = gui_->io();
+        frame();
+        const ImVec2 from = centre(name);
+        io.MousePos = from;
+        frame();
+        io.MouseDown[0] = true;
+        frame();
+        for (int k = 1; k <= steps; ++k) {
+            const float t = static_cast<float>(k) / static_cast<float>(steps);
+            io.MousePos = ImVec2(from.x + (to.x - from.x) * t, from.y + (to.y - from.y) * t);
+            frame();
+        }
+        io.MouseDown[0] = false;
+        frame();
+    }
+
+    std::unique_ptr<GuiContext> gui_;
+    std::optional<Session> session_;
+    ControlPanel panel_;
+};
+
+}  // namespace
+}  // namespace psb::app
