@@ -37,7 +37,7 @@ GasReading gasReading(const ObservablesResult& m, const World& world, double min
 
 void GasGauges::open(World& world) {
     if (windows_.empty()) particles_ = world.size();
-    windows_.push_back({ObservablesWindow{}, world.time()});
+    windows_.push_back({ObservablesWindow{{.stateEvery = kStateEvery}}, world.time()});
     windows_.back().measure.open(world);  // turns the world's virial counter on
 }
 
