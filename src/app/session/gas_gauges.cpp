@@ -48,10 +48,8 @@ void GasGauges::sample(World& world) {
     while (!history_.empty() && history_.back().time > t)
         history_.pop_back();
     if (!gasGaugesApply(world)) {
-        if (!windows_.empty()) {
-            windows_.clear();
-            world.setMeasureVirial(false);
-        }
+        windows_.clear();
+        if (world.measuringVirial()) world.setMeasureVirial(false);  // only the gauges set it
         return;
     }
     if (windows_.empty()) {

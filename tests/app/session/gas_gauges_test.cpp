@@ -112,6 +112,19 @@ TEST(GasGauges, ParticlesAddedOrRemovedWithoutAnEditStartTheWindowOver) {
     EXPECT_EQ(g.reading(w).particles, 3999u);
 }
 
+TEST(GasGauges, TheWorldCountsItsVirialOnlyWhileTheGaugesMeasureIt) {
+    World w = gasPreset(StepMode::Discrete);
+    GasGauges g;
+    EXPECT_FALSE(w.measuringVirial());
+    run(w, g, 0.1, 0.01);
+    EXPECT_TRUE(w.measuringVirial());  // a core window is open
+    // Gravity (an edit: the gauges start over, then find they no longer apply).
+    w.setGravity(Vec2(0.0, 9.81));
+    g.restart();
+    run(w, g, 0.1, 0.01);
+    EXPECT_FALSE(w.measuringVirial());
+}
+
 TEST(GasGauges, ThePlotKeepsAPointEveryQuarterSecondThroughAHeatAndDropsThePastUndone) {
     World w = gasPreset(StepMode::Discrete);
     GasGauges g;
