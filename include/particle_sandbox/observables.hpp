@@ -59,7 +59,8 @@
 /// Displacements are taken from the positions as they are (in a box with walls a particle never
 /// wraps).
 ///
-/// **Collision rate** per particle: 2 × pair collisions / (N T). **Mean free path** the mean
+/// **Collision rate** per particle: 2 × pair collisions / (N T); the **wall collision rate** the
+/// box's wall rebounds per second (StepCounters::wallCollisions / T). **Mean free path** the mean
 /// speed ⟨|v|⟩ over the collision rate. Beside them, Enskog's with Henderson's g(σ), at the
 /// measured kT and ρ = N / A′ (equal discs and masses only).
 ///
@@ -129,6 +130,7 @@ struct ObservablesResult {
     Measured compressibilityFactor;  ///< Z = P_virial A′ / (N kT)
     Measured contactValue;           ///< g(σ) extrapolated from g(r)
     Measured collisionRate;          ///< pair collisions per particle per second
+    Measured wallCollisionRate;      ///< wall rebounds per second, the whole box's (walls)
     Measured meanFreePath;           ///< m
     Measured diffusionMsd;           ///< m²/s
     Measured diffusionVacf;          ///< m²/s

@@ -241,7 +241,14 @@ class World {
 
     [[nodiscard]] const StepProfile& profile() const { return profile_; }
     [[nodiscard]] const StepCounters& counters() const { return counters_; }
-    void resetCounters() { counters_ = {}; }
+    void resetCounters() {
+        counters_ = {};
+        ++counterResets_;
+    }
+    /// How many times resetCounters() was called (kept by copies): a reader of the counters
+    /// between resets (an observables window sampling after frames whose counters the caller
+    /// clears) tells a reset from counts that merely did not grow.
+    [[nodiscard]] std::uint64_t counterResets() const { return counterResets_; }
 
   private:
     [[nodiscard]] std::size_t indexOrThrow(ParticleId id, const char* what) const;
@@ -277,6 +284,7 @@ class World {
     bool measureVirial_ = false;     ///< setMeasureVirial's
     mutable StepProfile profile_;    ///< mutable: settle() adds the time of the owed sync
     StepCounters counters_;
+    std::uint64_t counterResets_ = 0;           ///< resetCounters() calls
     std::optional<CollisionLog> collisionLog_;  ///< recording when set
 };
 

@@ -31,8 +31,9 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     const Palette& colours = palette(frame.view.theme);
     gridLines_.clear();
     if (frame.grid) batchGridLines(*frame.grid, gridLines_, colours);
-    const DrawStats stats = renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_,
-                                           frame.trailParticle, &avoid, &gridLines_);
+    const DrawStats stats =
+        renderer_.draw(world, frame.frameLength, camera, frame.view, &trails_, frame.trailParticle,
+                       &avoid, &gridLines_, frame.periodic ? &*frame.periodic : nullptr);
     if (frame.bins) {
         binMarks_.draw(sdl_, labelFont_, camera, frame.bins->bins, world.def().height, colours);
     }

@@ -101,6 +101,26 @@ void Renderer::drawWalls(const World& world, const Camera& camera, const Palette
     SDL_RenderFillRectsF(renderer_, rects, 4);
 }
 
+void Renderer::drawDashes(const PeriodicBoxView& box, const Palette& colours) {
+    // Each dash a rectangle centred on the edge's line, as long as the dash: the discs crossing
+    // it are drawn over it.
+    std::vector<SDL_FRect> rects;
+    rects.reserve(box.dashes.size());
+    const double half = 0.5 * box.thickness;
+    for (const BoxDash& d : box.dashes) {
+        const bool horizontal = std::abs(d.to.x() - d.from.x()) >= std::abs(d.to.y() - d.from.y());
+        const double x0 = std::min(d.from.x(), d.to.x()) - (horizontal ? 0.0 : half);
+        const double x1 = std::max(d.from.x(), d.to.x()) + (horizontal ? 0.0 : half);
+        const double y0 = std::min(d.from.y(), d.to.y()) - (horizontal ? half : 0.0);
+        const double y1 = std::max(d.from.y(), d.to.y()) + (horizontal ? half : 0.0);
+        rects.push_back({static_cast<float>(x0), static_cast<float>(y0),
+                         static_cast<float>(x1 - x0), static_cast<float>(y1 - y0)});
+    }
+    setDrawColor(renderer_, colours.walls);
+    if (!rects.empty())
+        SDL_RenderFillRectsF(renderer_, rects.data(), static_cast<int>(rects.size()));
+}
+
 void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius,
                          const Palette& colours) {
     const Vec2 c = camera.worldToScreen(centre);
@@ -114,12 +134,17 @@ void Renderer::drawGhost(const Camera& camera, const Vec2& centre, double radius
 
 DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                          const ViewOptions& options, Trails* trails, ParticleId selected,
-                         const LabelKeepOut* avoid, const GeometryBatch* underlay) {
+                         const LabelKeepOut* avoid, const GeometryBatch* underlay,
+                         const PeriodicBoxView* periodic) {
     const Palette& colours = palette(options.theme);
     SDL_SetRenderDrawBlendMode(renderer_, SDL_BLENDMODE_BLEND);
     setDrawColor(renderer_, colours.background);
     SDL_RenderClear(renderer_);
-    drawWalls(world, camera, colours);
+    if (periodic != nullptr) {
+        drawDashes(*periodic, colours);
+    } else {
+        drawWalls(world, camera, colours);
+    }
     if (!world.obstacles().empty()) {
         batchObstacles(world, camera, obstacles_, colours);
         obstacles_.draw(renderer_, circle_);
@@ -196,8 +221,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
     std::vector<std::size_t> visible;
     visible.reserve(p.size());
     arrowLength_.clear();
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const Vec2 s = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+    visibleShift_.clear();
+    // The particle `i` drawn at its centre moved by `shift` metres (an image in a periodic box).
+    const auto drawDisc = [&](std::size_t i, const Vec2& shift) {
+        const Vec2 s = camera.worldToScreen(Vec2(p.x[i], p.y[i]) + shift);
         // Tiny discs stay visible as about one pixel.
         const double r = std::max(0.75, camera.toScreen(p.radius[i]));
         // Arrows can reach beyond the disc, so cull with the arrow's reach when shown.
@@ -210,16 +237,17 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                                : 0.0;
         const double reach = std::max(r, len);
         if (s.x() + reach < 0 || s.x() - reach > w || s.y() + reach < 0 || s.y() - reach > h) {
-            continue;
+            return;
         }
         visible.push_back(i);
         arrowLength_.push_back(len);
-        if (s.x() + r < 0 || s.x() - r > w || s.y() + r < 0 || s.y() - r > h) continue;
-        ++stats.drawn;
+        visibleShift_.push_back(shift);
+        if (s.x() + r < 0 || s.x() - r > w || s.y() + r < 0 || s.y() - r > h) return;
+        if (shift == Vec2::Zero()) ++stats.drawn;  // particles, not images
         if (r < kSmallDiscPixels) {
             small_.disc(static_cast<float>(s.x()), static_cast<float>(s.y()), static_cast<float>(r),
                         argb(fillOf(i)));
-            continue;
+            return;
         }
         const Color drawn = fillOf(i);
         const SDL_Color c{drawn.r, drawn.g, drawn.b, 255};
@@ -228,6 +256,15 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
         if (spin && r >= kSpinMarkPixels && p.fixedRotation[i] == 0) {
             addSpinMark(discs_, static_cast<float>(s.x()), static_cast<float>(s.y()),
                         static_cast<float>(r), p.angle[i], drawn);
+        }
+    };
+    for (std::size_t i = 0; i < p.size(); ++i)
+        drawDisc(i, Vec2::Zero());
+    // Labels are the particles' own: the images come after them in `visible`.
+    const std::size_t particlesVisible = visible.size();
+    if (periodic != nullptr) {
+        for (const PeriodicImage& image : periodic->images) {
+            if (image.index < p.size()) drawDisc(image.index, image.offset);
         }
     }
 
@@ -240,7 +277,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             const double speed = std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
             const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);
             const Vec2 n(-u.y(), u.x());
-            const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+            const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]) + visibleShift_[k]);
             const Vec2 tip = c + len * u;
             if (std::max(0.75, r) < kSmallDiscPixels) {
                 // A one-pixel shaft from the rim, and a head of two strokes when there is room.
@@ -292,6 +329,7 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
     }
 
     if (options.labels && labelFont_ != nullptr) {
+        visible.resize(particlesVisible);
         if (visible.size() > kMaxLabels) {
             stats.labelsSuppressed = true;
         } else {

@@ -29,6 +29,7 @@
 #include "view/label_places.hpp"
 #include "view/mass_shade.hpp"
 #include "view/palette.hpp"
+#include "view/periodic_box.hpp"
 
 namespace psb::app {
 
@@ -69,11 +70,14 @@ class Renderer {
     /// other label and rectangle of `avoid`, across no wall of the scene nor of `avoid`; a label
     /// with no such place is left out.
     /// `underlay` (drawn with the circle texture) goes over the walls and obstacles and under
-    /// the trails and discs: the grid's lines.
+    /// the trails and discs: the grid's lines. `periodic` (a periodic box: view/periodic_box.hpp)
+    /// draws the box's edges as its dashes instead of walls, and each of its images as its disc
+    /// again (fill, spin mark and arrow; no label) at the offset.
     DrawStats draw(const World& world, double frame, const Camera& camera,
                    const ViewOptions& options, Trails* trails = nullptr,
                    ParticleId selected = kNullParticle, const LabelKeepOut* avoid = nullptr,
-                   const GeometryBatch* underlay = nullptr);
+                   const GeometryBatch* underlay = nullptr,
+                   const PeriodicBoxView* periodic = nullptr);
 
     /// A translucent disc of `radius` metres at `centre`: where a launched particle will appear.
     void drawGhost(const Camera& camera, const Vec2& centre, double radius,
@@ -92,6 +96,8 @@ class Renderer {
         int width = 0, height = 0;
     };
     void drawWalls(const World& world, const Camera& camera, const Palette& colours);
+    /// A periodic box's edges: its dashes, in the walls' colour.
+    void drawDashes(const PeriodicBoxView& box, const Palette& colours);
     void drawImage(const TrailImage& image, ImageLayer& layer);
 
     SDL_Renderer* renderer_;
@@ -101,6 +107,7 @@ class Renderer {
     ImageLayer trailLayer_, smallLayer_;
     TrailImage small_;                 ///< discs under kSmallDiscPixels and their arrows
     std::vector<double> arrowLength_;  ///< per visible particle, pixels; 0: none
+    std::vector<Vec2> visibleShift_;   ///< per visible particle, metres: an image's offset
     GeometryBatch obstacles_;          ///< the world's pegs and segments (obstacle_drawing.hpp)
     /// Each colour's mass shades (view/mass_shade.hpp) on shadesTheme_, by 0xRRGGBB.
     std::unordered_map<std::uint32_t, MassShades> shades_;

@@ -214,6 +214,11 @@ void Trails::rasterisePath(const World& world, const Camera& camera, std::size_t
     const Camera::Transform t = camera.transform();
     const float zoom = t.scale, ox = t.originX, oy = t.originY;
     float ax = ox + zoom * xs[oldest], ay = oy + zoom * ys[oldest];
+    // In a periodic box a step across more than half the box is a wrap through an edge: no line
+    // across the box, the trail goes on from the other side.
+    const bool periodic = world.def().periodic;
+    const float wrapX = 0.5f * zoom * static_cast<float>(world.def().width);
+    const float wrapY = 0.5f * zoom * static_cast<float>(world.def().height);
     // Points 0..n-1 are the ring, oldest first; point n is the particle now.
     for (std::size_t k = 1; k <= n; ++k) {
         const std::size_t at = (oldest + k) % ringLength;
@@ -226,6 +231,11 @@ void Trails::rasterisePath(const World& world, const Camera& camera, std::size_t
         const float f =
             tailAlpha + (1.0f - tailAlpha) * static_cast<float>(k) / static_cast<float>(n);
         const std::uint32_t argb = (static_cast<std::uint32_t>(255.0f * f) << 24) | rgb;
+        if (periodic && (std::abs(dx) > wrapX || std::abs(dy) > wrapY)) {
+            ax = bx;
+            ay = by;
+            continue;
+        }
         image_.line(ax, ay, bx, by, argb);
         if (bold) {
             // The same line one pixel right and one down: two pixels wide in any direction.

@@ -82,7 +82,7 @@ bool Monitor::stepped(const World& world) {
     return true;
 }
 
-bool Monitor::frameDone(const World& world, bool record) {
+bool Monitor::frameDone(World& world, bool record) {
     // The state as drawn is measured when the steps' own detection did not see it: nothing
     // stepped (paused, or a held particle moved), the exact mode (its events meet overlaps only
     // at collisions), or the user changed the world since. Running in discrete or substep mode

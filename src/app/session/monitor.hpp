@@ -54,8 +54,9 @@ class Monitor {
     /// detection did not see it, its observables measured. When `record` (not a past frame
     /// shown) and the world stands at the last sample's instant (paused at a sample, the set-up
     /// before Play), that sample becomes the world as it is drawn, edits included: true then,
-    /// the sample series().back().
-    bool frameDone(const World& world, bool record);
+    /// the sample series().back(). The gas gauges sample it (and may turn its virial counter
+    /// on: gas_gauges.hpp).
+    bool frameDone(World& world, bool record);
     /// A past frame shown: its observables, and the energy measured from it.
     void showFrame(const World& world);
 

@@ -149,6 +149,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         f.wallAngle = wallAngleLabel(f.obstaclePreview->a, f.obstaclePreview->b, session.camera());
     }
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
+    f.periodic = periodicBoxView(world, session.camera());
     f.gas = session.gasReading();
     if (f.gas) f.pressurePlot = pressurePlotLine(session.gasHistory());
     if (session.view().collision) f.collision = session.lastCollision();

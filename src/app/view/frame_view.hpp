@@ -22,6 +22,7 @@
 #include "view/box_area.hpp"
 #include "view/lab_marks.hpp"
 #include "view/overlays.hpp"
+#include "view/periodic_box.hpp"
 #include "view/screen_layout.hpp"
 #include "view/text_measure.hpp"
 #include "view/values_table.hpp"
@@ -77,6 +78,9 @@ struct FrameView {
     std::optional<Obstacle> selectedObstacle;  ///< drawn highlighted
     std::optional<Obstacle> obstaclePreview;   ///< a peg or wall the tool would make now
     std::optional<BoxMarkerView> boxMarker;
+    /// A periodic box: its dashed edges and the discs drawn again across them
+    /// (view/periodic_box.hpp); nullopt for a box with walls or none.
+    std::optional<PeriodicBoxView> periodic;
     std::optional<RecordingMarkView> recordingMark;
     /// The gas instruments' reading, when they apply (the panel's Readouts show it).
     std::optional<GasReading> gas;

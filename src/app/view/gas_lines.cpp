@@ -16,17 +16,26 @@ std::vector<GasLine> gasLines(const GasReading& r) {
                      "In joules, since these are balls of grams to kilograms: in kelvin, kT / k, "
                      "they would read some 10\u00b2\u00b2 K."});
     if (r.pressure) {
-        lines.push_back({"Pressure, measured",
-                         // One unit for both, no prefix: "11.7 N/m \u00b1 0.151 N/m".
-                         quantity(*r.pressure, "N/m", false) + " \u00b1 " +
-                             quantity(r.pressureError, "N/m", false),
-                         "The momentum the particles give the walls each second, per metre of "
-                         "wall (a 2-D pressure is a force per length), over the last " +
-                             seconds + " of simulated time; \u00b1 one standard error."});
+        lines.push_back(
+            {"Pressure, measured",
+             // One unit for both, no prefix: "11.7 N/m \u00b1 0.151 N/m".
+             quantity(*r.pressure, "N/m", false) + " \u00b1 " +
+                 quantity(r.pressureError, "N/m", false),
+             (r.periodic
+                  ? std::string("From the collisions (a periodic box has no walls to push): "
+                                "N kT plus half of each collision's impulse times the distance "
+                                "between the two centres, summed per second, over the box's "
+                                "area (a 2-D pressure is a force per length), over the last ")
+                  : std::string("The momentum the particles give the walls each second, per "
+                                "metre of the line their centres reach, a radius inside the "
+                                "walls (a 2-D pressure is a force per length), over the last ")) +
+                 seconds + " of simulated time; \u00b1 one standard error."});
     } else {
         lines.push_back({"Pressure, measured", "measuring...",
-                         "The walls' push is averaged over at least half a second of simulated "
-                         "time: run the world."});
+                         r.periodic ? "The collisions' push is averaged over at least half a "
+                                      "second of simulated time: run the world."
+                                    : "The walls' push is averaged over at least half a second "
+                                      "of simulated time: run the world."});
     }
     lines.push_back({"  ideal gas", quantity(r.idealPressure, "N/m"),
                      "N kT / A: what point particles at this temperature would press, A the "
@@ -40,10 +49,13 @@ std::vector<GasLine> gasLines(const GasReading& r) {
     if (r.pressure) {
         lines.push_back(
             {"Collisions",
-             quantity(r.pairRate, "pair/s", false) + ", " + quantity(r.wallRate, "wall/s", false),
-             "Particle-particle collisions and wall rebounds per second of simulated "
-             "time, over the last " +
-                 seconds + "."});
+             r.periodic ? quantity(r.pairRate, "pair/s", false)
+                        : quantity(r.pairRate, "pair/s", false) + ", " +
+                              quantity(r.wallRate, "wall/s", false),
+             std::string(r.periodic ? "Particle-particle collisions per second of simulated time"
+                                    : "Particle-particle collisions and wall rebounds per second "
+                                      "of simulated time") +
+                 ", over the last " + seconds + "."});
     }
     return lines;
 }

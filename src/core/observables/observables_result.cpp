@@ -166,6 +166,11 @@ ObservablesResult ObservablesWindow::result() const {
         return c.time > 0.0 ? 2.0 * static_cast<double>(c.collisions) / (n * c.time) : kNaN;
     };
     r.collisionRate = measured(rate);
+    if (s.walls) {
+        r.wallCollisionRate = measured([&](const Chunk& c) {
+            return c.time > 0.0 ? static_cast<double>(c.wallCollisions) / c.time : kNaN;
+        });
+    }
     r.meanFreePath = measured([&](const Chunk& c) {
         return c.states > 0 && rate(c) > 0.0 ? c.speed / static_cast<double>(c.states) / rate(c)
                                              : kNaN;

@@ -75,6 +75,7 @@ void ObservablesWindow::open(World& world) {
     if (s->periodic && !s->gravity && !s->obstacles && s->n > 1) s->freedom -= 1.0;
     s->openTime = s->lastTime = s->lastStateTime = world.time();
     s->last = world.counters();
+    s->lastResets = world.counterResets();
 
     if (settings_.pairEvery > 0) {
         const double range =
@@ -104,13 +105,20 @@ void ObservablesWindow::sample(const World& world) {
     if (!(now > s.lastTime)) return;  // no step since the last sample
     StepCounters c = world.counters();
     // Counters reset since the last sample (World::resetCounters): they count from 0 again.
-    if (c.steps < s.last.steps || c.collisions < s.last.collisions) s.last = StepCounters{};
+    // (A caller that clears them before each frame's steps has as many steps each frame: the
+    // reset count tells, not the counts.)
+    if (world.counterResets() != s.lastResets || c.steps < s.last.steps ||
+        c.collisions < s.last.collisions) {
+        s.last = StepCounters{};
+    }
+    s.lastResets = world.counterResets();
     observables::Chunk& chunk = s.chunks.forNextInterval();
     ++chunk.intervals;
     chunk.time += now - s.lastTime;
     chunk.virial += c.pairVirial - s.last.pairVirial;
     chunk.wallImpulse += c.wallImpulse - s.last.wallImpulse;
     chunk.collisions += c.collisions - s.last.collisions;
+    chunk.wallCollisions += c.wallCollisions - s.last.wallCollisions;
     s.last = c;
     s.lastTime = now;
     ++s.samples;

@@ -16,14 +16,15 @@ struct Chunk {
     double virial = 0.0;          ///< Σ r_ij·J_ij of pair collisions, kg·m²/s
     double wallImpulse = 0.0;     ///< Σ |J| of wall rebounds, kg·m/s
     std::uint64_t collisions = 0;
-    std::uint64_t states = 0;       ///< state samples (the particles read)
-    double kinetic = 0.0;           ///< Σ over state samples of Σ ½ m |v|², J
-    double rotational = 0.0;        ///< Σ over state samples of Σ ½ I ω², J
-    double speed = 0.0;             ///< Σ over state samples of the mean speed, m/s
-    std::uint64_t snapshots = 0;    ///< g(r) snapshots
-    std::vector<double> pairs;      ///< unordered pairs per g(r) bin, summed over snapshots
-    std::vector<double> msd, vacf;  ///< Σ over origins and particles, per lag
-    std::vector<double> lagCount;   ///< origin-particle terms per lag
+    std::uint64_t wallCollisions = 0;  ///< wall rebounds
+    std::uint64_t states = 0;          ///< state samples (the particles read)
+    double kinetic = 0.0;              ///< Σ over state samples of Σ ½ m |v|², J
+    double rotational = 0.0;           ///< Σ over state samples of Σ ½ I ω², J
+    double speed = 0.0;                ///< Σ over state samples of the mean speed, m/s
+    std::uint64_t snapshots = 0;       ///< g(r) snapshots
+    std::vector<double> pairs;         ///< unordered pairs per g(r) bin, summed over snapshots
+    std::vector<double> msd, vacf;     ///< Σ over origins and particles, per lag
+    std::vector<double> lagCount;      ///< origin-particle terms per lag
 
     void add(const Chunk& o) {
         intervals += o.intervals;
@@ -31,6 +32,7 @@ struct Chunk {
         virial += o.virial;
         wallImpulse += o.wallImpulse;
         collisions += o.collisions;
+        wallCollisions += o.wallCollisions;
         states += o.states;
         kinetic += o.kinetic;
         rotational += o.rotational;

@@ -38,6 +38,7 @@ struct ObservablesWindow::State {
     // The last sample.
     double openTime = 0.0, lastTime = 0.0;
     StepCounters last;
+    std::uint64_t lastResets = 0;                     ///< World::counterResets() at the last sample
     std::uint64_t samples = 0;                        ///< sample intervals so far
     std::uint64_t stateSamples = 0;                   ///< state samples so far (the first at open)
     double lastStateTime = 0.0, stateInterval = 0.0;  ///< s; 0 until the second state sample

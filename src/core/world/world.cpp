@@ -108,6 +108,7 @@ World::World(const World& other)
       measureVirial_(other.measureVirial_),
       profile_(other.profile_),
       counters_(other.counters_),
+      counterResets_(other.counterResets_),
       collisionLog_(other.collisionLog_) {
     if (exact_) exact_->setLog(nullptr);  // the original's log stays the original's
 }

@@ -117,6 +117,41 @@ TEST(Trails, TheFollowedParticleKeepsALongTrailThatStartsOverForAnother) {
     EXPECT_EQ(t.followedLength(), 0u);
 }
 
+TEST(Trails, InAPeriodicBoxAWrapThroughAnEdgeIsNoLineAcrossTheBox) {
+    WorldDef def;
+    def.width = 200.0;
+    def.height = 200.0;
+    def.walls = false;
+    def.periodic = true;
+    World w(def);
+    const ParticleId id = w.add(disc({180.0, 100.0}, {0.0, 0.0}));
+    Trails t;
+    // Right across the right edge and on from the left: 180, 186, ..., 198, then 4, 10, 16.
+    for (const double x : {180.0, 186.0, 192.0, 198.0, 4.0, 10.0, 16.0}) {
+        w.setPosition(id, {x, 100.0});
+        t.sample(w);
+    }
+    Camera c;
+    c.setViewport(200, 200);
+    c.set(1.0, Vec2::Zero());
+    const TrailImage& image = t.rasterise(w, c, TrailMode::All, kNullParticle);
+    EXPECT_NE(image.at(190, 100), 0u);  // the steps before the edge
+    EXPECT_NE(image.at(8, 100), 0u);    // and after it
+    for (int x = 30; x < 170; x += 10)
+        EXPECT_EQ(image.at(x, 100), 0u) << "a line across the box at x = " << x;
+    // In a box with walls the same jump is a step (a teleport) and is drawn.
+    def.periodic = false;
+    def.walls = true;
+    World walled(def);
+    const ParticleId b = walled.add(disc({180.0, 100.0}, {0.0, 0.0}));
+    Trails u;
+    for (const double x : {180.0, 186.0, 4.0, 10.0}) {
+        walled.setPosition(b, {x, 100.0});
+        u.sample(walled);
+    }
+    EXPECT_NE(u.rasterise(walled, c, TrailMode::All, kNullParticle).at(100, 100), 0u);
+}
+
 TEST(Trails, ImageLinesAreClippedAndOnlyTheirRectangleIsCleared) {
     TrailImage img;
     img.resize(100, 50);

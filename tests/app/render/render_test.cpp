@@ -19,6 +19,7 @@
 #include "view/inspector_lines.hpp"
 #include "view/mass_shade.hpp"
 #include "view/overlays.hpp"
+#include "view/periodic_box.hpp"
 
 namespace psb::app {
 namespace {
@@ -522,6 +523,40 @@ TEST_F(RenderTest, WallsAreDrawnAroundTheBox) {
     EXPECT_TRUE(isColor(pixel(200, 49), 255, 255, 255));
     EXPECT_TRUE(isColor(pixel(350, 200), 255, 255, 255));
     EXPECT_TRUE(isColor(pixel(200, 200), 0, 0, 0));
+}
+
+TEST_F(RenderTest, APeriodicBoxHasDashedEdgesAndADiscOverAnEdgeShowsAtTheOtherToo) {
+    WorldDef def;
+    def.width = 300.0;
+    def.height = 300.0;
+    def.walls = false;
+    def.periodic = true;
+    World w(def);
+    w.add({.position = Vec2(10.0, 150.0), .radius = 20.0, .color = {255, 0, 0}});
+    // Box from (50, 50) to (350, 350) on screen; the disc over its left edge at (60, 200).
+    camera_.set(1.0, Vec2(-50, -50));
+    const std::optional<PeriodicBoxView> box = periodicBoxView(w, camera_);
+    ASSERT_TRUE(box.has_value());
+    ASSERT_EQ(box->images.size(), 1u);
+    renderer_->draw(w, kFrame, camera_, {}, nullptr, kNullParticle, nullptr, nullptr, &*box);
+    SDL_RenderPresent(sdl_);
+    EXPECT_TRUE(isColor(pixel(60, 200), 255, 0, 0));
+    // Its image: the part over the left edge shows inside the right one, and beyond it.
+    EXPECT_TRUE(isColor(pixel(345, 200), 255, 0, 0));
+    EXPECT_TRUE(isColor(pixel(365, 200), 255, 0, 0));
+    EXPECT_TRUE(isColor(pixel(300, 200), 0, 0, 0));
+    // The top edge dashed: a dash from the corner, then a gap, along the edge's line.
+    EXPECT_TRUE(isColor(pixel(55, 50), 255, 255, 255));
+    EXPECT_TRUE(isColor(pixel(63, 50), 0, 0, 0));
+    EXPECT_TRUE(isColor(pixel(70, 50), 255, 255, 255));
+    int lit = 0;
+    for (int x = 50; x < 350; ++x)
+        lit += isColor(pixel(x, 50), 255, 255, 255);
+    EXPECT_NEAR(lit, 300 * 10 / 16, 12) << "dashes, not a solid wall";
+    // Drawn without the view's box (a caller that has none): a solid frame, as before.
+    renderer_->draw(w, kFrame, camera_, {});
+    SDL_RenderPresent(sdl_);
+    EXPECT_FALSE(isColor(pixel(365, 200), 255, 0, 0));
 }
 
 /// A window wide enough for the side column beside the box (sideColumnFits).

@@ -165,8 +165,10 @@ TEST_F(SessionValues, SqueezeMovesTheParticlesWithTheBoxKeepsTheirSpeedsAndUndoe
     }
     // The same temperature in less room: the ideal gas's pressure up by the areas' ratio.
     const auto ideal = [](const World& w) {
+        World measured = w;
         GasGauges g;
-        return g.reading(w).idealPressure;
+        g.sample(measured);  // opens the core's window: kT and A′ as it measures them
+        return g.reading(measured).idealPressure;
     };
     const double reach = [](double l) { return (l - 16.0) * (l - 16.0); }(700.0);
     const double squeezed = [](double l) { return (l - 16.0) * (l - 16.0); }(700.0 * side);

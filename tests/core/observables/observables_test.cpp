@@ -201,6 +201,30 @@ TEST(Observables, DiffusionFromTheMsdAndFromTheVacfAgreeWithinThreePercent) {
     EXPECT_NEAR(r.vacf.front(), 2.0 * r.temperature.value, 0.03 * r.temperature.value);
 }
 
+TEST(Observables, CountersClearedBeforeEachFrameCountOnceAsIfNeverCleared) {
+    // The window's app gauges sample after frames whose counters the app clears before each
+    // frame's steps: frames of equal step counts must not read as counters that did not grow.
+    World kept = gas(200, 0.3), cleared = kept;
+    ObservablesWindow a, b;
+    a.open(kept);
+    b.open(cleared);
+    for (int frame = 0; frame < 400; ++frame) {
+        kept.step(0.25);
+        a.sample(kept);
+        cleared.resetCounters();
+        cleared.step(0.25);
+        b.sample(cleared);
+    }
+    const ObservablesResult x = a.close(kept), y = b.close(cleared);
+    ASSERT_TRUE(x.pressureWalls.valid());
+    EXPECT_GT(x.collisionRate.value, 0.1);
+    EXPECT_DOUBLE_EQ(y.pressureWalls.value, x.pressureWalls.value);
+    EXPECT_DOUBLE_EQ(y.pressureVirial.value, x.pressureVirial.value);
+    EXPECT_DOUBLE_EQ(y.collisionRate.value, x.collisionRate.value);
+    EXPECT_DOUBLE_EQ(y.wallCollisionRate.value, x.wallCollisionRate.value);
+    EXPECT_NEAR(y.pressureWalls.error, x.pressureWalls.error, 1e-9 * x.pressureWalls.error);
+}
+
 TEST(Observables, AWindowTooShortForErrorsHasNoneAndSaysSo) {
     World w = gas(100, 0.2);
     ObservablesWindow window;
