@@ -1,0 +1,92 @@
+"""sweep(): ensembles of runs on Dask, one row per run in a pandas DataFrame.
+
+Each run is particle-sim's (the core's runner, with --observables): the scene's JSON with the
+run's parameters applied as --set overrides and its seed as --seed, a warm-up, then the
+measured run on one thread. A run depends only on its inputs, so the table is the same
+whichever workers ran it, in whatever order.
+"""
+
+import itertools
+
+from . import _core
+
+
+def _base(scene, seeded):
+    """(text, source, overrides) every run starts from."""
+    if isinstance(scene, (str, bytes)) or hasattr(scene, "__fspath__"):
+        scene = _core._load_scene(str(scene), [])
+    if not seeded:
+        return scene.to_json(), scene.source, []
+    # A seed regenerates the particles from the file's generate block: the scene must still be
+    # the one that text gives, or the changes made since would be lost without a word.
+    if scene.file_text is None:
+        raise ValueError("sweep: seeds need a scene read from a file or text with a generate "
+                         "block (load_scene or parse_scene); this one has none")
+    again = _core._parse_scene(scene.file_text, scene.source, scene.overrides)
+    if again.to_json() != scene.to_json():
+        raise ValueError("sweep: the scene was changed after it was read, and seeds regenerate "
+                         "it from its file; give the changes as params "
+                         "(params={'world.restitution': [0.9]}) instead")
+    return scene.file_text, scene.source, list(scene.overrides)
+
+
+def _run(text, source, overrides, duration, warmup, seed, mode, dt):
+    return _core._run_scene(text, source, overrides, duration, warmup, seed, mode, dt)
+
+
+def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, dt=None,
+          client=None):
+    """Runs every combination of `seeds` and `params` and returns a pandas DataFrame.
+
+    scene: a Scene or a scene file's path. seeds: generate-block seeds (as particle-sim
+    --seed), or None for the scene as it is. params: {override path: [values]} (as --set
+    PATH=VALUE: "world.restitution", "solver.mode", "generate.packing_fraction", ...).
+    duration and warmup: simulated seconds; mode and dt: as particle-sim --mode and --dt.
+    client: a dask.distributed.Client to run on; None starts a local cluster with one
+    single-threaded worker per core for the sweep's length.
+
+    The table has one row per run, in the order of itertools.product(seeds, *params values):
+    a column per parameter (and `seed`), then each observable and its standard error
+    (`temperature`, `temperature_error`, `pressure_virial`, ...; NaN where not measured), then
+    theory's values, the step and collision counts.
+    """
+    import pandas as pd
+
+    params = dict(params or {})
+    names = list(params)
+    for name in names:
+        if isinstance(params[name], (str, bytes)) or not hasattr(params[name], "__iter__"):
+            raise ValueError(f"sweep: params[{name!r}] must be a list of values")
+    seed_list = list(seeds) if seeds is not None else [None]
+    text, source, base = _base(scene, seeds is not None)
+    combos = list(itertools.product(seed_list, *(list(params[n]) for n in names)))
+
+    from . import _override_text
+
+    def args(combo):
+        seed, values = combo[0], combo[1:]
+        overrides = base + [(n, _override_text(v)) for n, v in zip(names, values)]
+        return (text, source, overrides, float(duration), float(warmup),
+                None if seed is None else int(seed), mode, dt)
+
+    if client is None:
+        from dask.distributed import Client, LocalCluster
+        with LocalCluster(threads_per_worker=1, processes=True) as cluster, Client(cluster) as c:
+            rows = _gather(c, [args(k) for k in combos])
+    else:
+        rows = _gather(client, [args(k) for k in combos])
+
+    table = []
+    for combo, row in zip(combos, rows):
+        entry = {}
+        if seeds is not None:
+            entry["seed"] = combo[0]
+        entry.update(zip(names, combo[1:]))
+        entry.update(row)
+        table.append(entry)
+    return pd.DataFrame(table)
+
+
+def _gather(client, arg_list):
+    futures = [client.submit(_run, *a, pure=False) for a in arg_list]
+    return client.gather(futures)
