@@ -42,8 +42,10 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
     --seed), or None for the scene as it is. params: {override path: [values]} (as --set
     PATH=VALUE: "world.restitution", "solver.mode", "generate.packing_fraction", ...).
     duration and warmup: simulated seconds; mode and dt: as particle-sim --mode and --dt.
-    client: a dask.distributed.Client to run on; None starts a local cluster with one
-    single-threaded worker per core for the sweep's length.
+    client: a dask.distributed.Client to run on; None starts a local cluster in this process
+    for the sweep's length, one thread per core (each run releases the GIL, so the threads
+    run side by side; and a script needs no `if __name__ == "__main__":` guard, as worker
+    processes would).
 
     The table has one row per run, in the order of itertools.product(seeds, *params values):
     a column per parameter (and `seed`), then each observable and its standard error
@@ -70,8 +72,11 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
                 None if seed is None else int(seed), mode, dt)
 
     if client is None:
+        import os
+
         from dask.distributed import Client, LocalCluster
-        with LocalCluster(threads_per_worker=1, processes=True) as cluster, Client(cluster) as c:
+        with LocalCluster(n_workers=1, threads_per_worker=os.cpu_count() or 1, processes=False,
+                          dashboard_address=None) as cluster, Client(cluster) as c:
             rows = _gather(c, [args(k) for k in combos])
     else:
         rows = _gather(client, [args(k) for k in combos])

@@ -45,6 +45,13 @@ def test_the_table_is_the_same_whatever_ran_it(client, gas):
             assert got == value or (np.isnan(got) and np.isnan(value)), name
 
 
+def test_the_default_local_cluster_gives_the_same_table_as_worker_processes(client, gas):
+    params = {"world.restitution": [1.0, 0.8]}
+    here = ps.sweep(gas, seeds=[6], params=params, duration=0.3)
+    there = ps.sweep(gas, seeds=[6], params=params, duration=0.3, client=client)
+    assert here.equals(there)
+
+
 def test_a_run_measures_what_particle_sim_reports(tmp_path, gas):
     sim = os.environ.get("PSB_SIM")
     if not sim:
