@@ -1,8 +1,8 @@
 #pragma once
 // The Python module's parts, one per concept of the core; module.cpp calls each in turn.
 
-#include <cstdint>
 #include <bit>
+#include <cstdint>
 #include <utility>
 
 #include <vector>

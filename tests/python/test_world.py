@@ -1,6 +1,8 @@
 """World from Python: steps in the three modes, particles by id, boxes, obstacles, threads."""
 
 import math
+import os
+import signal
 import threading
 
 import numpy as np
@@ -144,3 +146,15 @@ def test_to_scene_is_a_snapshot_that_builds_the_same_world(gas):
     again = ps.World(world.to_scene())
     assert np.array_equal(again.positions, world.positions)
     assert math.isclose(again.kinetic_energy, world.kinetic_energy)
+
+
+def test_ctrl_c_stops_a_run_between_steps():
+    world = ps.World(ps.parse_scene('{"version": 1, "world": {"width": 40, "height": 40}, '
+                                    '"generate": {"count": 500, "radius": 0.1, "temperature": 1}}'))
+    timer = threading.Timer(0.2, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        world.run(1e9)  # years of stepping unless the signal stops it
+    timer.join()
+    assert 0.0 < world.time < 1e9
+    assert world.step() > 0.0  # usable again
