@@ -72,12 +72,13 @@ void PyWorld::ensureRoom(std::size_t extra, const char* what) {
 }
 
 void PyWorld::leaseOpened() {
-    if (views_ == 0) {
-        // Steps release the droppers' balls with World::add: make room now, while no view
-        // pins the storage, so that no step moves it.
-        const std::size_t need = world_.size() + pendingBalls();
-        if (need > capacity()) world_.reserve(need);
-    }
+    // Steps release the droppers' balls with World::add: make room for them now, so that no
+    // step moves the storage under this view. Only vectors below `need` move, and none a live
+    // view reads is: each had room for `need` when its view was taken, and while views live
+    // `need` grows only through ensureRoom. (Rotation arrays a step made since then, with room
+    // for the particles alone, are read by no view yet.)
+    const std::size_t need = world_.size() + pendingBalls();
+    if (need > capacity()) world_.reserve(need);
     ++views_;
 }
 

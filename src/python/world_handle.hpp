@@ -18,8 +18,8 @@ namespace psb::python {
 /// vector that grows past its capacity moves, which would leave a view pointing at freed
 /// memory, so while any view lives nothing here lets the storage move: adding past the
 /// capacity raises BufferError (as NumPy's own resize does with views about), clear() removes
-/// particle by particle, and the first view reserves room for every ball the droppers still
-/// hold, so that steps never move the storage.
+/// particle by particle, and every view reserves room for each ball the droppers still hold,
+/// so that steps never move the storage.
 ///
 /// Threads. step(), run() and measure() release the GIL; while one runs, any other call on the
 /// same world raises RuntimeError instead of racing it.

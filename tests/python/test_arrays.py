@@ -117,3 +117,18 @@ def test_angles_read_zero_until_the_world_keeps_rotation():
     world.set_spin(int(world.ids[1]), 3.0)
     assert world.rotation_in_use
     assert world.spins.tolist() == [0.0, 3.0]
+
+
+def test_a_view_of_angles_made_after_friction_began_survives_the_droppers_balls(preset):
+    world = ps.World(preset("09-galton-board.json"))
+    world.run(0.5)
+    positions = world.positions  # room reserved for every ball, in the arrays there are
+    world.friction = 0.3
+    world.run(0.1)  # the rotation arrays are made, with room for the particles alone
+    assert world.rotation_in_use
+    angles = world.angles
+    n = len(angles)
+    world.run(3.0)
+    assert len(world) > n
+    assert address(world.angles) == address(angles)
+    assert address(world.positions) == address(positions)
