@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <sstream>
 #include <string>
 
 #include <pybind11/numpy.h>
@@ -213,6 +214,15 @@ ids are read-only NumPy views of the world's storage (row i of each is the same 
           py::arg("scene"),
           "Builds the world the scene describes. Raises SceneError (a ValueError) with the "
           "scene file's message for a value out of range.");
+
+    w.def("__repr__", [](PyWorld& self) {
+        const World& world = self.view();
+        std::ostringstream s;
+        s << "World(" << world.size() << " particles, time " << world.time() << " s, "
+          << toString(world.solver().mode) << ", box " << world.def().width << " x "
+          << world.def().height << " m)";
+        return s.str();
+    });
 
     // --- time -----------------------------------------------------------------------------
     w.def(

@@ -3,13 +3,14 @@
 import math
 import os
 import signal
+import subprocess
 import threading
 
 import numpy as np
 import pytest
 
 import particle_sandbox as ps
-from conftest import two_discs
+from conftest import ASSETS, two_discs
 
 
 @pytest.mark.parametrize("mode", ["discrete", "substep", "exact"])
@@ -158,3 +159,19 @@ def test_ctrl_c_stops_a_run_between_steps():
     timer.join()
     assert 0.0 < world.time < 1e9
     assert world.step() > 0.0  # usable again
+
+
+@pytest.mark.parametrize("mode", ["discrete", "exact"])
+def test_a_run_ends_where_particle_sim_ends_bit_for_bit(tmp_path, preset, mode):
+    sim = os.environ.get("PSB_SIM")
+    if not sim:
+        pytest.skip("PSB_SIM (the particle-sim to compare with) is not set")
+    scene = ASSETS / "03-billiards-break.json"
+    saved = tmp_path / "final.json"
+    subprocess.run([sim, str(scene), "--duration", "2", "--mode", mode, "--save", str(saved)],
+                   check=True, capture_output=True)
+    world = ps.World(ps.load_scene(scene))
+    world.run(2.0, mode=mode)
+    by_number = sorted(range(len(world)), key=lambda row: world.number(int(world.ids[row])))
+    expected = np.array([p.position for p in ps.load_scene(saved).particles])
+    assert np.array_equal(world.positions[by_number], expected)
