@@ -28,8 +28,8 @@ from ._core import _load_scene, _parse_scene
 
 __all__ = [
     "Dropper", "Measured", "Obstacle", "Observables", "Particle", "ParticleDef", "Scene",
-    "SceneError", "SolverSettings", "World", "WorldDef", "load_scene", "parse_scene", "plot",
-    "sweep",
+    "SceneError", "SolverSettings", "World", "WorldDef", "animate", "load_scene", "parse_scene",
+    "plot", "sweep",
 ]
 
 
@@ -65,6 +65,15 @@ def plot(world, ax=None, **kwargs):
     """Draws the world's box, obstacles and particles with Matplotlib; returns the Axes."""
     from ._plot import plot as _plot
     return _plot(world, ax=ax, **kwargs)
+
+
+def animate(world, duration, frames=50, ax=None, **kwargs):
+    """A Matplotlib animation of `duration` seconds of the world, stepped as it plays.
+
+    In a notebook: IPython.display.HTML(particle_sandbox.animate(world, 2.0).to_jshtml()).
+    """
+    from ._plot import animate as _animate
+    return _animate(world, duration, frames=frames, ax=ax, **kwargs)
 
 
 def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, dt=None,
