@@ -168,7 +168,17 @@ for lib in libc6 libstdc++6 libsdl2-2.0-0 libsdl2-ttf-2.0-0; do
 done
 dpkg-deb -c "$deb" >"$OUT/deb-contents.txt"
 grep -q './usr/bin/particle-sandbox$' "$OUT/deb-contents.txt" || fail "no /usr/bin/particle-sandbox in $deb"
-lintian --fail-on error --allow-root "$deb" "$devdeb" >"$OUT/lintian.log" 2>&1 ||
+# The Python module's package, where the tree builds the module (PSB_BUILD_PYTHON).
+pydeb=$(ls "$OUT"/deb/python3-particle-sandbox_"$VERSION"_*.deb 2>/dev/null || true)
+if [[ -n $pydeb ]]; then
+    [[ $(dpkg-deb -f "$pydeb" Depends) == *python3-numpy* ]] ||
+        fail "$(basename "$pydeb") does not depend on python3-numpy: $(dpkg-deb -f "$pydeb" Depends)"
+    dpkg-deb -c "$pydeb" >"$OUT/pydeb-contents.txt"
+    grep -q '/usr/lib/python3/dist-packages/particle_sandbox/_core\..*\.so$' "$OUT/pydeb-contents.txt" ||
+        fail "no compiled module in $(basename "$pydeb")"
+fi
+# shellcheck disable=SC2086 # $pydeb: no word when there is no such package
+lintian --fail-on error --allow-root "$deb" "$devdeb" $pydeb >"$OUT/lintian.log" 2>&1 ||
     fail "lintian: $(grep -E '^E:' "$OUT/lintian.log" || tail "$OUT/lintian.log")"
 pass "$(basename "$deb") (Depends: $depends), lintian: $(grep -c '^E:' "$OUT/lintian.log" || true) errors, $(grep -c '^W:' "$OUT/lintian.log" || true) warnings"
 
