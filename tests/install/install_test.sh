@@ -203,13 +203,26 @@ cd /tmp
 SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy particle-sandbox --bench 200 --frames 10
 find /usr/lib -name ParticleSandboxConfig.cmake | grep -q .
 CHECK
+debs=("$deb" "$devdeb")
+if [[ -n $pydeb ]]; then
+    debs+=("$pydeb")
+    cat >>"$OUT/clean-root-check.sh" <<'CHECK'
+python3 -c "import particle_sandbox as ps; w = ps.World(ps.load_scene('/usr/share/particle-sandbox/scenes/02-newtons-cradle.json')); w.run(1.0); print('particle_sandbox ran the cradle:', w)"
+CHECK
+fi
+in_root=()
+for d in "${debs[@]}"; do in_root+=("/tmp/$(basename "$d")"); done
 mmdebstrap --variant=apt --mode=root \
-    --customize-hook="copy-in $deb $devdeb $OUT/clean-root-check.sh /tmp" \
-    --customize-hook="chroot \"\$1\" apt-get install -y --no-install-recommends /tmp/$(basename "$deb") /tmp/$(basename "$devdeb")" \
+    --customize-hook="copy-in ${debs[*]} $OUT/clean-root-check.sh /tmp" \
+    --customize-hook="chroot \"\$1\" apt-get install -y --no-install-recommends ${in_root[*]}" \
     --customize-hook="chroot \"\$1\" sh /tmp/clean-root-check.sh >$OUT/clean-root.out 2>&1" \
     "$suite" "$root" >"$OUT/mmdebstrap.log" 2>&1 ||
     fail "clean root: $(tail -5 "$OUT/mmdebstrap.log"; cat "$OUT/clean-root.out" 2>/dev/null)"
 rm -rf "$root"
 grep -q "read from /usr/share/particle-sandbox" "$OUT/clean-root.out" ||
     fail "in the clean root the sandbox does not read /usr/share/particle-sandbox: $(cat "$OUT/clean-root.out")"
-pass "installed with apt in a clean $suite root; both programs run there"
+if [[ -n $pydeb ]]; then
+    grep -q "particle_sandbox ran the cradle" "$OUT/clean-root.out" ||
+        fail "in the clean root the Python module does not run: $(cat "$OUT/clean-root.out")"
+fi
+pass "installed with apt in a clean $suite root; both programs run there${pydeb:+, and the Python module}"
