@@ -8,7 +8,7 @@
 #                                    install test man, desktop-file-validate, file (which
 #                                    CPack's dependency scan uses), lintian and mmdebstrap,
 #                                    pytest, pandas, Dask and Matplotlib for the Python module's
-#                                    tests),
+#                                    tests, nbclient and ipykernel to run its notebooks),
 #                                    and what the web build and its test need (--web)
 #   scripts/install-deps.sh --web    build dependencies and the web build's: Emscripten,
 #                                    dpkg-dev (apt-get source unpacks with it), Chromium, npm
@@ -35,6 +35,7 @@ if [[ "${1:-}" == "--test" ]]; then
   packages+=(clang libclang-rt-14-dev)
   packages+=(man-db desktop-file-utils file lintian mmdebstrap)
   packages+=(python3-pytest python3-pandas python3-dask python3-distributed python3-matplotlib)
+  packages+=(python3-nbclient python3-nbformat python3-ipykernel)
 fi
 
 missing=()
