@@ -11,23 +11,27 @@ import itertools
 from . import _core
 
 
-def _base(scene, seeded):
-    """(text, source, overrides) every run starts from."""
+def _base(scene, regenerates):
+    """(text, source, overrides) every run starts from.
+
+    The text the scene was read from when the scene is still what it gave, so that its generate
+    blocks are there for seeds and generate.* parameters; the scene as it is (its particles
+    listed) when it was changed since, which seeds and generate.* parameters cannot apply to.
+    """
     if isinstance(scene, (str, bytes)) or hasattr(scene, "__fspath__"):
         scene = _core._load_scene(str(scene), [])
-    if not seeded:
-        return scene.to_json(), scene.source, []
-    # A seed regenerates the particles from the file's generate block: the scene must still be
-    # the one that text gives, or the changes made since would be lost without a word.
-    if scene.file_text is None:
-        raise ValueError("sweep: seeds need a scene read from a file or text with a generate "
-                         "block (load_scene or parse_scene); this one has none")
-    again = _core._parse_scene(scene.file_text, scene.source, scene.overrides)
-    if again.to_json() != scene.to_json():
-        raise ValueError("sweep: the scene was changed after it was read, and seeds regenerate "
-                         "it from its file; give the changes as params "
-                         "(params={'world.restitution': [0.9]}) instead")
-    return scene.file_text, scene.source, list(scene.overrides)
+    unchanged = scene.file_text is not None and _core._parse_scene(
+        scene.file_text, scene.source, scene.overrides).to_json() == scene.to_json()
+    if unchanged:
+        return scene.file_text, scene.source, list(scene.overrides)
+    if regenerates:
+        why = ("was changed after it was read" if scene.file_text is not None
+               else "was not read from a file or text")
+        raise ValueError(f"sweep: seeds and generate.* parameters regenerate the particles from "
+                         f"the scene file's generate block, but this scene {why}; load it with "
+                         f"load_scene or parse_scene and give the changes as params "
+                         f"(params={{'world.restitution': [0.9]}})")
+    return scene.to_json(), scene.source, []
 
 
 def _run(text, source, overrides, duration, warmup, seed, mode, dt):
@@ -60,7 +64,8 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
         if isinstance(params[name], (str, bytes)) or not hasattr(params[name], "__iter__"):
             raise ValueError(f"sweep: params[{name!r}] must be a list of values")
     seed_list = list(seeds) if seeds is not None else [None]
-    text, source, base = _base(scene, seeds is not None)
+    text, source, base = _base(scene, seeds is not None or any(
+        n == "generate" or n.startswith(("generate.", "generate[")) for n in names))
     combos = list(itertools.product(seed_list, *(list(params[n]) for n in names)))
 
     from . import _override_text

@@ -72,6 +72,21 @@ def test_seeds_on_a_scene_changed_since_it_was_read_are_refused(gas):
     gas.world.restitution = 0.5
     with pytest.raises(ValueError, match="changed after it was read"):
         ps.sweep(gas, seeds=[1], duration=0.1, client=object())
+    with pytest.raises(ValueError, match="changed after it was read"):
+        ps.sweep(gas, params={"generate.count": [50]}, duration=0.1, client=object())
+
+
+def test_generate_parameters_apply_to_the_file_generate_block(client, gas):
+    table = ps.sweep(gas, params={"generate.count": [50, 80]}, duration=0.2, client=client)
+    assert list(table["particles"]) == [50, 80]
+
+
+def test_a_changed_scene_is_swept_as_it_is(client, gas):
+    gas.world.restitution = 0.5
+    table = ps.sweep(gas, params={"world.friction": [0.0]}, duration=0.5, client=client)
+    unchanged = ps.sweep(ps.parse_scene(gas.file_text, "gas.json"),
+                         params={"world.friction": [0.0]}, duration=0.5, client=client)
+    assert table["temperature"][0] < unchanged["temperature"][0]  # e = 0.5 cools it
 
 
 def test_params_must_be_lists(gas):
