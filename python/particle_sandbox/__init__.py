@@ -77,11 +77,11 @@ def animate(world, duration, frames=50, ax=None, **kwargs):
 
 
 def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, dt=None,
-          client=None):
+          client=None, observables=True):
     """Runs every combination of seeds and parameters on Dask; returns a pandas DataFrame.
 
     See particle_sandbox._sweep.sweep (docs/python.md).
     """
     from ._sweep import sweep as _sweep
     return _sweep(scene, seeds=seeds, params=params, duration=duration, warmup=warmup,
-                  mode=mode, dt=dt, client=client)
+                  mode=mode, dt=dt, client=client, observables=observables)

@@ -34,12 +34,13 @@ def _base(scene, regenerates):
     return scene.to_json(), scene.source, []
 
 
-def _run(text, source, overrides, duration, warmup, seed, mode, dt):
-    return _core._run_scene(text, source, overrides, duration, warmup, seed, mode, dt)
+def _run(text, source, overrides, duration, warmup, seed, mode, dt, observables):
+    return _core._run_scene(text, source, overrides, duration, warmup, seed, mode, dt,
+                            observables)
 
 
 def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, dt=None,
-          client=None):
+          client=None, observables=True):
     """Runs every combination of `seeds` and `params` and returns a pandas DataFrame.
 
     scene: a Scene or a scene file's path. seeds: generate-block seeds (as particle-sim
@@ -54,7 +55,10 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
     The table has one row per run, in the order of itertools.product(seeds, *params values):
     a column per parameter (and `seed`), then each observable and its standard error
     (`temperature`, `temperature_error`, `pressure_virial`, ...; NaN where not measured), then
-    theory's values, the step and collision counts.
+    theory's values, the step and collision counts; for a scene with bins (a Galton board),
+    `bins` (the counts at the end, left to right), `bins_counted`, `bins_outside` and
+    `bins_above`. observables=False leaves the observables out (as particle-sim without
+    --observables): a scene that starts empty, a Galton board's, has none to measure.
     """
     import pandas as pd
 
@@ -74,7 +78,7 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
         seed, values = combo[0], combo[1:]
         overrides = base + [(n, _override_text(v)) for n, v in zip(names, values)]
         return (text, source, overrides, float(duration), float(warmup),
-                None if seed is None else int(seed), mode, dt)
+                None if seed is None else int(seed), mode, dt, bool(observables))
 
     if client is None:
         import os

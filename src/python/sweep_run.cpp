@@ -18,7 +18,7 @@ void bindSweepRun(py::module_& m) {
         [](const std::string& text, const std::string& source,
            const std::vector<std::pair<std::string, std::string>>& overrides, double duration,
            double warmup, std::optional<std::uint64_t> seed, std::optional<std::string> mode,
-           std::optional<double> dt) {
+           std::optional<double> dt, bool observables) {
             cli::RunOptions o;
             for (const auto& [path, value] : overrides)
                 o.sets.push_back({path, value, path, true});
@@ -35,7 +35,7 @@ void bindSweepRun(py::module_& m) {
                 }
             }
             o.threads = 1;
-            o.observables = true;
+            o.observables = observables;
             cli::RunReport report;
             {
                 py::gil_scoped_release release;
@@ -43,7 +43,18 @@ void bindSweepRun(py::module_& m) {
                 World world;
                 report = cli::runScene(scene, o, world);
             }
-            py::dict row = observablesRow(*report.observables);
+            py::dict row = report.observables ? observablesRow(*report.observables) : py::dict();
+            if (report.bins) {
+                // The scene's bins at the end (a Galton board's): counts left to right, and the
+                // balls that missed them or have not come down yet.
+                const BinCounts& b = report.bins->counts;
+                row["bins"] = b.counts;
+                row["bins_counted"] = b.counted();
+                row["bins_outside"] = b.outside;
+                row["bins_above"] = b.above;
+            }
+            // Particles when the measured part began (after the warm-up), as the report's.
+            if (!report.observables) row["particles"] = report.particles;
             row["steps"] = report.steps;
             row["collisions"] = report.collisions;
             row["wall_collisions"] = report.wallCollisions;
@@ -51,8 +62,9 @@ void bindSweepRun(py::module_& m) {
         },
         py::arg("text"), py::arg("source"), py::arg("overrides"), py::arg("duration"),
         py::arg("warmup"), py::arg("seed") = py::none(), py::arg("mode") = py::none(),
-        py::arg("dt") = py::none(),
-        "One run as particle-sim --observables makes it; its observables as a flat dict.");
+        py::arg("dt") = py::none(), py::arg("observables") = true,
+        "One run as particle-sim (--observables) makes it; its observables, and the scene's bins "
+        "when it has some, as a flat dict.");
 }
 
 }  // namespace psb::python

@@ -92,3 +92,15 @@ def test_a_changed_scene_is_swept_as_it_is(client, gas):
 def test_params_must_be_lists(gas):
     with pytest.raises(ValueError, match="list of values"):
         ps.sweep(gas, params={"world.restitution": 0.9}, client=object())
+
+
+def test_a_galton_board_sweep_counts_its_bins(client, preset):
+    board = preset("09-galton-board.json")
+    table = ps.sweep(board, params={"droppers[0].balls": [12], "droppers[0].seed": [1, 2]},
+                     duration=4.0, observables=False, client=client)
+    assert "temperature" not in table.columns
+    for _, row in table.iterrows():
+        assert len(row["bins"]) == 9
+        assert row["bins_counted"] + row["bins_outside"] + row["bins_above"] == 12
+        assert sum(row["bins"]) == row["bins_counted"]
+    assert list(table["bins"][0]) != list(table["bins"][1])  # another seed, other paths
