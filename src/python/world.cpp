@@ -92,7 +92,7 @@ PyWorld::Busy::Busy(PyWorld& w) : w_(w) {
 
 namespace {
 
-std::optional<std::size_t> stepCount(double duration, double dt, const char* where) {
+std::size_t stepCount(double duration, double dt, const char* where) {
     if (!std::isfinite(duration) || duration < 0.0) {
         throw InvalidArgument(std::string(where) + ": duration must be finite and >= 0 (got " +
                               std::to_string(duration) + ")");
@@ -248,7 +248,7 @@ ids are read-only NumPy views of the world's storage (row i of each is the same 
                std::optional<double> dt, std::optional<int> substeps) {
                 if (dt) self.setDt(*dt);
                 applySolver(self.world(), mode, substeps);
-                const std::size_t steps = *stepCount(duration, self.dt(), "World.run");
+                const std::size_t steps = stepCount(duration, self.dt(), "World.run");
                 stepMany(self, steps, self.dt(), [] {});
                 return steps;
             },
