@@ -168,7 +168,17 @@ for lib in libc6 libstdc++6 libsdl2-2.0-0 libsdl2-ttf-2.0-0; do
 done
 dpkg-deb -c "$deb" >"$OUT/deb-contents.txt"
 grep -q './usr/bin/particle-sandbox$' "$OUT/deb-contents.txt" || fail "no /usr/bin/particle-sandbox in $deb"
-lintian --fail-on error --allow-root "$deb" "$devdeb" >"$OUT/lintian.log" 2>&1 ||
+# The Python module's package, where the tree builds the module (PSB_BUILD_PYTHON).
+pydeb=$(ls "$OUT"/deb/python3-particle-sandbox_"$VERSION"_*.deb 2>/dev/null || true)
+if [[ -n $pydeb ]]; then
+    [[ $(dpkg-deb -f "$pydeb" Depends) == *python3-numpy* ]] ||
+        fail "$(basename "$pydeb") does not depend on python3-numpy: $(dpkg-deb -f "$pydeb" Depends)"
+    dpkg-deb -c "$pydeb" >"$OUT/pydeb-contents.txt"
+    grep -q '/usr/lib/python3/dist-packages/particle_sandbox/_core\..*\.so$' "$OUT/pydeb-contents.txt" ||
+        fail "no compiled module in $(basename "$pydeb")"
+fi
+# shellcheck disable=SC2086 # $pydeb: no word when there is no such package
+lintian --fail-on error --allow-root "$deb" "$devdeb" $pydeb >"$OUT/lintian.log" 2>&1 ||
     fail "lintian: $(grep -E '^E:' "$OUT/lintian.log" || tail "$OUT/lintian.log")"
 pass "$(basename "$deb") (Depends: $depends), lintian: $(grep -c '^E:' "$OUT/lintian.log" || true) errors, $(grep -c '^W:' "$OUT/lintian.log" || true) warnings"
 
@@ -193,13 +203,26 @@ cd /tmp
 SDL_VIDEODRIVER=dummy SDL_AUDIODRIVER=dummy particle-sandbox --bench 200 --frames 10
 find /usr/lib -name ParticleSandboxConfig.cmake | grep -q .
 CHECK
+debs=("$deb" "$devdeb")
+if [[ -n $pydeb ]]; then
+    debs+=("$pydeb")
+    cat >>"$OUT/clean-root-check.sh" <<'CHECK'
+python3 -c "import particle_sandbox as ps; w = ps.World(ps.load_scene('/usr/share/particle-sandbox/scenes/02-newtons-cradle.json')); w.run(1.0); print('particle_sandbox ran the cradle:', w)"
+CHECK
+fi
+in_root=()
+for d in "${debs[@]}"; do in_root+=("/tmp/$(basename "$d")"); done
 mmdebstrap --variant=apt --mode=root \
-    --customize-hook="copy-in $deb $devdeb $OUT/clean-root-check.sh /tmp" \
-    --customize-hook="chroot \"\$1\" apt-get install -y --no-install-recommends /tmp/$(basename "$deb") /tmp/$(basename "$devdeb")" \
+    --customize-hook="copy-in ${debs[*]} $OUT/clean-root-check.sh /tmp" \
+    --customize-hook="chroot \"\$1\" apt-get install -y --no-install-recommends ${in_root[*]}" \
     --customize-hook="chroot \"\$1\" sh /tmp/clean-root-check.sh >$OUT/clean-root.out 2>&1" \
     "$suite" "$root" >"$OUT/mmdebstrap.log" 2>&1 ||
     fail "clean root: $(tail -5 "$OUT/mmdebstrap.log"; cat "$OUT/clean-root.out" 2>/dev/null)"
 rm -rf "$root"
 grep -q "read from /usr/share/particle-sandbox" "$OUT/clean-root.out" ||
     fail "in the clean root the sandbox does not read /usr/share/particle-sandbox: $(cat "$OUT/clean-root.out")"
-pass "installed with apt in a clean $suite root; both programs run there"
+if [[ -n $pydeb ]]; then
+    grep -q "particle_sandbox ran the cradle" "$OUT/clean-root.out" ||
+        fail "in the clean root the Python module does not run: $(cat "$OUT/clean-root.out")"
+fi
+pass "installed with apt in a clean $suite root; both programs run there${pydeb:+, and the Python module}"
