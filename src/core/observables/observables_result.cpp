@@ -153,8 +153,13 @@ ObservablesResult ObservablesWindow::result() const {
                 "counted in the virial");
         } else {
             r.pressureVirial = measured(virial);
-            r.compressibilityFactor =
-                measured([&](const Chunk& c) { return virial(c) * r.area / (n * kTof(c)); });
+            // Z = 1 + Σ r·J / (2T N kT): the ideal part 1, the excess from the collisions. With
+            // walls that is P A / (N kT); in a periodic box P A / (N kT) is 1/N less, the
+            // momentum constraint's share and not the fluid's, which the equations of state
+            // (the thermodynamic limit's) do not have.
+            r.compressibilityFactor = measured([&](const Chunk& c) {
+                return c.time > 0.0 ? 1.0 + c.virial / (2.0 * c.time * n * kTof(c)) : kNaN;
+            });
         }
         if (s.walls) {
             r.pressureWalls = measured([&](const Chunk& c) {
