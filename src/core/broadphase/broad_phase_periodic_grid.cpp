@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "broadphase/disc_overlap.hpp"
 #include "support/parallel.hpp"
@@ -41,7 +42,8 @@ void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box&
     images_ = nx_ >= 3 && ny_ >= 3;
     if (images_) {
         const double reach = 2.0 * maxRadius * (1.0 + kRelativeSlack) + rounding;
-        grid_.build(copy_, buildImages(p, stats, reach), threads);
+        const ParticleStats copyStats = buildImages(p, stats, reach);
+        grid_.build(copy_, copyStats, threads, cellsWritten_);
         return;
     }
     const auto cells = static_cast<std::size_t>(nx_ * ny_);
@@ -73,39 +75,73 @@ ParticleStats PeriodicGridBroadPhase::buildImages(const ParticleArrays& p,
     const std::size_t n = p.size();
     const double w = box_.width, h = box_.height;
     const double grow = 1e-12 * std::max(w, h);
-    copy_.x.assign(p.x.begin(), p.x.end());
-    copy_.y.assign(p.y.begin(), p.y.end());
+    copy_.x.resize(n);
+    copy_.y.resize(n);
     copy_.radius.resize(n);
-    const double* r = p.radius.data();
-    double* cr = copy_.radius.data();
-    for (std::size_t i = 0; i < n; ++i)
-        cr[i] = r[i] + grow;
     source_.clear();
+    imageX_.clear();
+    imageY_.clear();
     const auto image = [&](std::size_t i, double x, double y) {
-        const double radius = copy_.radius[i];
         source_.push_back(static_cast<std::uint32_t>(i));
-        copy_.x.push_back(x);
-        copy_.y.push_back(y);
-        copy_.radius.push_back(radius);
+        imageX_.push_back(x);
+        imageY_.push_back(y);
     };
+    // One pass over the particles writes the copy, its cells under the box grid's last plan
+    // (which the grid keeps while it fits, as it keeps the cells the box's move stage writes)
+    // and marks the centres off the interior; it has no branch, so it vectorises. A second
+    // pass over the marks wraps those centres and makes their images: the positions are read
+    // once, while in cache.
+    const std::optional<GridBroadPhase::MoveCells> cells = grid_.cellsForMove(n);
+    std::uint32_t* cellOf = cells ? cells->cellOf : nullptr;
+    const GridBroadPhase::CellMap map = cells ? cells->map : GridBroadPhase::CellMap{};
+    const double* px = p.x.data();
+    const double* py = p.y.data();
+    const double* r = p.radius.data();
+    double* cx = copy_.x.data();
+    double* cy = copy_.y.data();
+    double* cr = copy_.radius.data();
+    edge_.resize(n);
+    std::uint8_t* edge = edge_.data();
+    const double top = h - reach;
     for (std::size_t i = 0; i < n; ++i) {
-        double x = copy_.x[i], y = copy_.y[i];
+        const double x = px[i], y = py[i];
+        cx[i] = x;
+        cy[i] = y;
+        cr[i] = r[i] + grow;
+        edge[i] = static_cast<std::uint8_t>(!(x >= reach) | !(x < w) | !(y >= reach) | !(y < top));
+    }
+    if (cellOf) {
+        for (std::size_t i = 0; i < n; ++i)
+            cellOf[i] = map.cellOf(cx[i], cy[i]);
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        if (edge[i] == 0) continue;
+        double x = cx[i], y = cy[i];
         // Wrapped as the wrap stage will (a centre may be a step's travel outside the box).
-        if (!(x >= reach && x < w && y >= reach && y < h - reach)) {
-            double unwrap = 0.0;
-            periodic::wrapInto(x, unwrap, w);
-            periodic::wrapInto(y, unwrap, h);
-            copy_.x[i] = x;
-            copy_.y[i] = y;
-        } else {
-            continue;  // inside, off the edges that take images
-        }
-        const bool left = x < reach, bottom = y < reach, top = y >= h - reach;
+        double unwrap = 0.0;
+        periodic::wrapInto(x, unwrap, w);
+        periodic::wrapInto(y, unwrap, h);
+        cx[i] = x;
+        cy[i] = y;
+        if (cellOf) cellOf[i] = map.cellOf(x, y);
+        const bool left = x < reach, bottom = y < reach, high = y >= top;
         if (left) image(i, x + w, y);
         if (bottom) image(i, x, y + h);
         if (left && bottom) image(i, x + w, y + h);
-        if (left && top) image(i, x + w, y - h);
+        if (left && high) image(i, x + w, y - h);
     }
+    const std::size_t images = source_.size();
+    copy_.x.insert(copy_.x.end(), imageX_.begin(), imageX_.end());
+    copy_.y.insert(copy_.y.end(), imageY_.begin(), imageY_.end());
+    copy_.radius.resize(n + images);
+    for (std::size_t k = 0; k < images; ++k)
+        copy_.radius[n + k] = copy_.radius[source_[k]];
+    if (cells) {
+        cellOf = grid_.cellsForMove(n + images)->cellOf;  // the first n kept
+        for (std::size_t k = 0; k < images; ++k)
+            cellOf[n + k] = map.cellOf(imageX_[k], imageY_[k]);
+    }
+    cellsWritten_ = cells.has_value();
     // The copy's bounds follow from the box and the reach; its radii are the particles' (grown).
     ParticleStats s = stats;
     s.count = copy_.x.size();
@@ -225,7 +261,9 @@ std::size_t PeriodicGridBroadPhase::memoryBytes() const {
     return sizeof(std::uint32_t) *
                (cellOf_.capacity() + cellStart_.capacity() + entries_.capacity() +
                 sortScratchCells_.capacity() + source_.capacity()) +
-           sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity()) +
+           sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity() +
+                             imageX_.capacity() + imageY_.capacity()) +
+           edge_.capacity() +
            sizeof(ContactPair) *
                (sortScratch_.capacity() + found_.capacity() + acrossEdges_.capacity()) +
            chunks_.memoryBytes() + grid_.memoryBytes();

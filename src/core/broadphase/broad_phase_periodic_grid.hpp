@@ -25,7 +25,9 @@
 // images on the world's own arrays: the pairs are the nearest-image ones bit for bit, whichever
 // path found them. The box grid's speed (its border ring, runs of three cells, windows and
 // bands) is kept, for one more copy of the centres a step and the images (about one particle
-// in √N).
+// in √N). One pass over the particles writes the copy, the images and the copy's cells under
+// the box grid's last plan (kept while it fits, as for the cells the box's move stage writes),
+// so the grid does not read the positions again.
 //
 // In a box one or two cells across (a handful of particles), each cell is tested against itself
 // and against each of its eight neighbours whose index is higher, each once even where the
@@ -80,8 +82,11 @@ class PeriodicGridBroadPhase {
     PairChunks chunks_;
     // The half shell (boxes three cells across or more).
     bool images_ = false;
-    ParticleArrays copy_;                ///< x, y, radius: the centres wrapped, then the images
-    std::vector<std::uint32_t> source_;  ///< the particle each image is of
+    ParticleArrays copy_;                  ///< x, y, radius: the centres wrapped, then the images
+    std::vector<std::uint32_t> source_;    ///< the particle each image is of
+    std::vector<double> imageX_, imageY_;  ///< the images' centres, before they join the copy
+    std::vector<std::uint8_t> edge_;       ///< per particle: its centre is off the interior
+    bool cellsWritten_ = false;            ///< buildImages wrote the copy's cells (the grid's plan)
     GridBroadPhase grid_;
     std::vector<ContactPair> found_, acrossEdges_;
 };
