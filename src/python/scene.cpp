@@ -9,6 +9,7 @@
 #include <pybind11/operators.h>
 #include <pybind11/stl.h>
 
+#include <particle_sandbox/error.hpp>
 #include <particle_sandbox/scene.hpp>
 
 #include "bindings.hpp"
@@ -70,7 +71,13 @@ void vecProperty(py::class_<T>& c, const char* name, Vec2 T::*member, const char
 void checkScene(const PyScene& scene) {
     // The file's checks, with the file's messages: what a scene file can get wrong, a scene
     // changed from Python can too.
-    (void)parseScene(serializeScene(scene), scene.source);
+    std::string text;
+    try {
+        text = serializeScene(scene);
+    } catch (const InvalidArgument& e) {  // a number JSON cannot hold: "particles[3].vx is ..."
+        throw SceneError(scene.source + ": " + e.what());
+    }
+    (void)parseScene(text, scene.source);
 }
 
 void bindScene(py::module_& m) {

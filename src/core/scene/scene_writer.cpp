@@ -19,10 +19,14 @@
 namespace psb {
 namespace {
 
+/// A number that JSON cannot hold, at `path` (the scene file's JSON path); serializeScene
+/// refuses the scene with it.
+struct NotFinite {
+    std::string path;
+};
+
 void appendNumber(std::string& out, double v, const char* what) {
-    if (!std::isfinite(v)) {
-        throw InvalidArgument(std::string("serializeScene: ") + what + " is not finite");
-    }
+    if (!std::isfinite(v)) throw NotFinite{what};
     char buf[40];
     const auto r = detail::toChars(buf, buf + sizeof buf, v);
     const std::string_view text(buf, static_cast<std::size_t>(r.ptr - buf));
@@ -34,6 +38,17 @@ void appendNumber(std::string& out, double v, const char* what) {
 void appendField(std::string& out, const char* prefix, double v, const char* what) {
     out += prefix;
     appendNumber(out, v, what);
+}
+
+/// Runs `append` for item `index` of the scene's list `list`, naming the item in a refusal:
+/// field `vx` becomes `particles[3].vx`.
+template <class Append>
+void appendItem(const char* list, std::size_t index, Append&& append) {
+    try {
+        append();
+    } catch (const NotFinite& e) {
+        throw NotFinite{std::string(list) + "[" + std::to_string(index) + "]." + e.path};
+    }
 }
 
 void appendString(std::string& out, const std::string& s) {
@@ -53,17 +68,19 @@ void appendObstacles(std::string& out, const Obstacles& obstacles) {
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
         const Obstacle& o = obstacles[i];
         out += i == 0 ? "\n    " : ",\n    ";
-        if (o.isPeg()) {
-            appendField(out, "{\"type\": \"peg\", \"x\": ", o.a.x(), "obstacle x");
-            appendField(out, ", \"y\": ", o.a.y(), "obstacle y");
-            appendField(out, ", \"radius\": ", o.radius, "obstacle radius");
-        } else {
-            appendField(out, "{\"type\": \"segment\", \"from\": [", o.a.x(), "obstacle from");
-            appendField(out, ", ", o.a.y(), "obstacle from");
-            appendField(out, "], \"to\": [", o.b.x(), "obstacle to");
-            appendField(out, ", ", o.b.y(), "obstacle to");
-            appendField(out, "], \"thickness\": ", o.thickness(), "obstacle thickness");
-        }
+        appendItem("obstacles", i, [&] {
+            if (o.isPeg()) {
+                appendField(out, "{\"type\": \"peg\", \"x\": ", o.a.x(), "x");
+                appendField(out, ", \"y\": ", o.a.y(), "y");
+                appendField(out, ", \"radius\": ", o.radius, "radius");
+            } else {
+                appendField(out, "{\"type\": \"segment\", \"from\": [", o.a.x(), "from");
+                appendField(out, ", ", o.a.y(), "from");
+                appendField(out, "], \"to\": [", o.b.x(), "to");
+                appendField(out, ", ", o.b.y(), "to");
+                appendField(out, "], \"thickness\": ", o.thickness(), "thickness");
+            }
+        });
         out += '}';
     }
     out += "\n  ]";
@@ -90,29 +107,29 @@ void appendDroppers(std::string& out, const Droppers& droppers) {
     out += ",\n  \"droppers\": [";
     for (std::size_t i = 0; i < droppers.size(); ++i) {
         const Dropper& d = droppers[i];
-        appendField(out, i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ", d.position.x(),
-                    "dropper x");
-        appendField(out, ", \"y\": ", d.position.y(), "dropper y");
-        out += ", \"balls\": " + std::to_string(d.balls);
-        appendField(out, ", \"interval\": ", d.interval, "dropper interval");
-        appendField(out, ", \"radius\": ", d.radius, "dropper radius");
-        appendField(out, ", \"mass\": ", d.mass, "dropper mass");
-        out += ", \"color\": ";
-        appendColor(out, d.color);
-        appendField(out, ", \"vx\": ", d.velocity.x(), "dropper vx");
-        appendField(out, ", \"vy\": ", d.velocity.y(), "dropper vy");
-        appendField(out, ", \"spread\": ", d.spread, "dropper spread");
-        out += ", \"seed\": " + std::to_string(d.seed);
-        out += ", \"released\": " + std::to_string(d.released);
-        appendField(out, ", \"next_ball_in\": ", d.nextIn, "dropper next_ball_in");
+        appendItem("droppers", i, [&] {
+            appendField(out, i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ", d.position.x(), "x");
+            appendField(out, ", \"y\": ", d.position.y(), "y");
+            out += ", \"balls\": " + std::to_string(d.balls);
+            appendField(out, ", \"interval\": ", d.interval, "interval");
+            appendField(out, ", \"radius\": ", d.radius, "radius");
+            appendField(out, ", \"mass\": ", d.mass, "mass");
+            out += ", \"color\": ";
+            appendColor(out, d.color);
+            appendField(out, ", \"vx\": ", d.velocity.x(), "vx");
+            appendField(out, ", \"vy\": ", d.velocity.y(), "vy");
+            appendField(out, ", \"spread\": ", d.spread, "spread");
+            out += ", \"seed\": " + std::to_string(d.seed);
+            out += ", \"released\": " + std::to_string(d.released);
+            appendField(out, ", \"next_ball_in\": ", d.nextIn, "next_ball_in");
+        });
         out += '}';
     }
     out += "\n  ]";
 }
 
-}  // namespace
-
-std::string serializeScene(const Scene& s) {
+/// The scene's JSON text; throws NotFinite.
+std::string serializeFields(const Scene& s) {
     std::string out;
     out.reserve(512 + 160 * s.particles.size());
     out += "{\n  \"name\": ";
@@ -169,32 +186,43 @@ std::string serializeScene(const Scene& s) {
     out += ",\n  \"particles\": [";
     for (std::size_t i = 0; i < s.particles.size(); ++i) {
         const ParticleDef& p = s.particles[i];
-        appendField(out, i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ", p.position.x(),
-                    "particle x");
-        appendField(out, ", \"y\": ", p.position.y(), "particle y");
-        appendField(out, ", \"vx\": ", p.velocity.x(), "particle vx");
-        appendField(out, ", \"vy\": ", p.velocity.y(), "particle vy");
-        appendField(out, ", \"mass\": ", p.mass, "particle mass");
-        appendField(out, ", \"radius\": ", p.radius, "particle radius");
-        out += ", \"color\": ";
-        appendColor(out, p.color);
-        if (std::find(s.trails.begin(), s.trails.end(), i) != s.trails.end()) {
-            out += ", \"trail\": true";
-        }
-        // Rotation only where it differs from the defaults: a scene without it stays as it was.
-        if (p.angle != 0.0) appendField(out, ", \"angle\": ", p.angle, "particle angle");
-        if (p.angularVelocity != 0.0) {
-            appendField(out, ", \"angular_velocity\": ", p.angularVelocity,
-                        "particle angular_velocity");
-        }
-        if (p.inertiaFactor != kDefaultInertiaFactor) {
-            appendField(out, ", \"inertia_factor\": ", p.inertiaFactor, "particle inertia_factor");
-        }
-        if (p.fixedRotation) out += ", \"fixed_rotation\": true";
+        appendItem("particles", i, [&] {
+            appendField(out, i == 0 ? "\n    {\"x\": " : ",\n    {\"x\": ", p.position.x(), "x");
+            appendField(out, ", \"y\": ", p.position.y(), "y");
+            appendField(out, ", \"vx\": ", p.velocity.x(), "vx");
+            appendField(out, ", \"vy\": ", p.velocity.y(), "vy");
+            appendField(out, ", \"mass\": ", p.mass, "mass");
+            appendField(out, ", \"radius\": ", p.radius, "radius");
+            out += ", \"color\": ";
+            appendColor(out, p.color);
+            if (std::find(s.trails.begin(), s.trails.end(), i) != s.trails.end()) {
+                out += ", \"trail\": true";
+            }
+            // Rotation only where it differs from the defaults: a scene without it stays as
+            // it was.
+            if (p.angle != 0.0) appendField(out, ", \"angle\": ", p.angle, "angle");
+            if (p.angularVelocity != 0.0) {
+                appendField(out, ", \"angular_velocity\": ", p.angularVelocity, "angular_velocity");
+            }
+            if (p.inertiaFactor != kDefaultInertiaFactor) {
+                appendField(out, ", \"inertia_factor\": ", p.inertiaFactor, "inertia_factor");
+            }
+            if (p.fixedRotation) out += ", \"fixed_rotation\": true";
+        });
         out += '}';
     }
     out += s.particles.empty() ? "]\n}\n" : "\n  ]\n}\n";
     return out;
+}
+
+}  // namespace
+
+std::string serializeScene(const Scene& s) {
+    try {
+        return serializeFields(s);
+    } catch (const NotFinite& e) {
+        throw InvalidArgument(e.path + " is not finite");
+    }
 }
 
 void saveScene(const Scene& scene, const std::filesystem::path& path) {
