@@ -7,6 +7,16 @@ seconds, kilograms. docs/python.md describes the module.
 """
 
 import json as _json
+import math as _math
+
+try:
+    import numpy as _numpy  # noqa: F401  (the compiled module's arrays are NumPy's)
+except ImportError as _error:
+    import sys as _sys
+    raise ImportError(
+        f"particle_sandbox needs NumPy, which this Python ({_sys.executable}) cannot import: run "
+        f"it with the Python the module was built for, Debian's /usr/bin/python3 with "
+        f"python3-numpy (docs/python.md, 'Build and import')") from _error
 
 from ._core import (
     Dropper,
@@ -33,17 +43,27 @@ __all__ = [
 ]
 
 
-def _override_text(value):
-    """A Python value as the JSON text an override takes (a str is taken as it is written)."""
+def _override_text(value, path="override"):
+    """A Python value as the JSON text an override takes (a str is taken as it is written).
+    A number that is not finite (NaN, infinity), which JSON cannot hold, is refused naming
+    `path`."""
     if isinstance(value, str):
         return value
     if hasattr(value, "tolist"):  # NumPy scalars and arrays
         value = value.tolist()
-    return _json.dumps(value)
+    try:
+        return _json.dumps(value, allow_nan=False)
+    except ValueError:
+        raise ValueError(f"{path}: must be a finite number (got {value!r})") from None
 
 
 def _overrides(changes):
-    return [(str(path), _override_text(value)) for path, value in (changes or {}).items()]
+    if changes is None:
+        return []
+    if not hasattr(changes, "items"):
+        raise TypeError(f"overrides: expected a dict {{path: value}}, such as "
+                        f"{{'world.restitution': 0.9}} (got {type(changes).__name__} {changes!r})")
+    return [(str(path), _override_text(value, str(path))) for path, value in changes.items()]
 
 
 def load_scene(path, overrides=None):

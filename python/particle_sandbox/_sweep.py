@@ -7,6 +7,8 @@ whichever workers ran it, in whatever order.
 """
 
 import itertools
+import math
+import numbers
 
 from . import _core
 
@@ -68,6 +70,17 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
         if isinstance(params[name], (str, bytes)) or not hasattr(params[name], "__iter__"):
             raise ValueError(f"sweep: params[{name!r}] must be a list of values")
     seed_list = list(seeds) if seeds is not None else [None]
+    for seed in seed_list if seeds is not None else []:
+        if isinstance(seed, bool) or not isinstance(seed, numbers.Integral) or seed < 0:
+            raise ValueError(f"sweep: seeds must be whole numbers >= 0 (got {seed!r})")
+    for name, value, zero in (("duration", duration, True), ("warmup", warmup, True),
+                              ("dt", dt, False)):
+        if name == "dt" and value is None:
+            continue
+        if (isinstance(value, bool) or not isinstance(value, numbers.Real)
+                or not math.isfinite(value) or value < 0 or (not zero and value == 0)):
+            raise ValueError(f"sweep: {name} must be a finite number of seconds "
+                             f"{'>= 0' if zero else '> 0'} (got {value!r})")
     text, source, base = _base(scene, seeds is not None or any(
         n == "generate" or n.startswith(("generate.", "generate[")) for n in names))
     combos = list(itertools.product(seed_list, *(list(params[n]) for n in names)))
@@ -76,7 +89,7 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
 
     def args(combo):
         seed, values = combo[0], combo[1:]
-        overrides = base + [(n, _override_text(v)) for n, v in zip(names, values)]
+        overrides = base + [(n, _override_text(v, n)) for n, v in zip(names, values)]
         return (text, source, overrides, float(duration), float(warmup),
                 None if seed is None else int(seed), mode, dt, bool(observables))
 

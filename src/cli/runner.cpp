@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 
+#include <particle_sandbox/csv.hpp>
 #include <particle_sandbox/diagnostics.hpp>
 #include <particle_sandbox/error.hpp>
 #include <particle_sandbox/validation.hpp>
@@ -71,6 +72,19 @@ std::vector<ParticleId> trackedIds(const World& world, const std::vector<std::ui
 
 RunReport runScene(const Scene& scene, const RunOptions& options, World& world,
                    const ProgressFn& progress, TimeSeries* series, Trajectory* track) {
+    // What the options' parser checks for particle-sim, checked again for callers that build
+    // RunOptions themselves (the Python module's sweep): a negative time would be a step count
+    // past 10^19.
+    const auto check = [](double v, bool zero, const char* what) {
+        if (!std::isfinite(v) || v < 0.0 || (!zero && v == 0.0)) {
+            throw InvalidArgument(std::string(what) + ": must be finite and " +
+                                  (zero ? ">= 0" : "> 0") + " seconds (got " + csv::number(v) +
+                                  ")");
+        }
+    };
+    check(options.duration, true, "duration");
+    check(options.warmup, true, "warmup");
+    if (options.dt) check(*options.dt, false, "dt");
     Scene s = scene;
     s.solver = effectiveSolver(scene, options);
     s.dt = effectiveDt(scene, options);
