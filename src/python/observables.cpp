@@ -47,9 +47,15 @@ py::dict observablesRow(const ObservablesResult& r) {
     d["blocks"] = r.blocks;
     d["henderson_compressibility_factor"] = r.hendersonZ;
     d["henderson_contact_value"] = r.hendersonContact;
+    d["liu_compressibility_factor"] = r.liuZ;
     d["enskog_collision_rate"] = r.enskogCollisionRate;
     d["enskog_mean_free_path"] = r.enskogMeanFreePath;
     d["enskog_diffusion"] = r.enskogDiffusion;
+    // What is missing or in doubt (a NaN's reason), one string: a table's cell holds it.
+    std::string notes;
+    for (const std::string& note : r.notes)
+        notes += (notes.empty() ? "" : "; ") + note;
+    d["notes"] = notes;
     return d;
 }
 
@@ -81,6 +87,8 @@ Two dimensions: pressures are N/m, areas m^2; errors are standard errors by bloc
         .def_readonly("packing_fraction", &ObservablesResult::packingFraction)
         .def_readonly("henderson_compressibility_factor", &ObservablesResult::hendersonZ)
         .def_readonly("henderson_contact_value", &ObservablesResult::hendersonContact)
+        .def_readonly("liu_compressibility_factor", &ObservablesResult::liuZ,
+                      "Liu's simulation-based Z of the hard-disc fluid (NaN past its range)")
         .def_readonly("enskog_collision_rate", &ObservablesResult::enskogCollisionRate)
         .def_readonly("enskog_mean_free_path", &ObservablesResult::enskogMeanFreePath)
         .def_readonly("enskog_diffusion", &ObservablesResult::enskogDiffusion)
