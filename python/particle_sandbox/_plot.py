@@ -11,17 +11,42 @@ def _add_discs(world, ax, color, edgecolor):
     """
     from matplotlib.collections import EllipseCollection
 
-    diameters = 2.0 * np.array(world.radii)
+    positions, radii = _images(world, np.array(world.positions), np.array(world.radii))
+    diameters = 2.0 * radii
     return ax.add_collection(EllipseCollection(
         diameters, diameters, np.zeros_like(diameters), units="xy",
-        offsets=np.array(world.positions),
+        offsets=positions,
         offset_transform=ax.transData, facecolors=color, edgecolors=edgecolor))
+
+
+def _images(world, positions, radii):
+    """In a periodic box, the discs over an edge (or a corner) again at the opposite one, as the
+    window draws them; the axes' limits cut each at the box. Elsewhere the discs as they are."""
+    if not getattr(world, "periodic", False) or len(radii) == 0:
+        return positions, radii
+    width, height = world.box
+    shifted, sizes = [positions], [radii]
+    x, y = positions[:, 0], positions[:, 1]
+    for sx in (-width, 0.0, width):
+        for sy in (-height, 0.0, height):
+            if sx == 0.0 and sy == 0.0:
+                continue
+            near = np.ones(len(radii), dtype=bool)
+            if sx != 0.0:  # over the edge the shift moves it away from
+                near &= (x < radii) if sx > 0 else (x > width - radii)
+            if sy != 0.0:
+                near &= (y < radii) if sy > 0 else (y > height - radii)
+            if near.any():
+                shifted.append(positions[near] + (sx, sy))
+                sizes.append(radii[near])
+    return np.concatenate(shifted), np.concatenate(sizes)
 
 
 def plot(world, ax=None, color="tab:blue", edgecolor="none", box_color="0.3"):
     """Draws the box, the obstacles and the particles at their true radii; returns the Axes.
 
-    y points down in the world (gravity (0, 9.81) pulls down), so the y axis is inverted.
+    y points down in the world (gravity (0, 9.81) pulls down), so the y axis is inverted. A
+    periodic box is drawn with dashed edges, and a disc over an edge again at the opposite one.
     """
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection
@@ -30,7 +55,9 @@ def plot(world, ax=None, color="tab:blue", edgecolor="none", box_color="0.3"):
     if ax is None:
         _, ax = plt.subplots()
     width, height = world.box
-    ax.add_patch(Rectangle((0.0, 0.0), width, height, fill=False, edgecolor=box_color))
+    periodic = getattr(world, "periodic", False)
+    ax.add_patch(Rectangle((0.0, 0.0), width, height, fill=False, edgecolor=box_color,
+                           linestyle="--" if periodic else "-"))
     segments = []
     for o in world.obstacles:
         if o.kind == "peg":

@@ -23,6 +23,25 @@ def test_every_particle_and_peg_is_drawn_in_the_box(preset):
     plt.close(ax.figure)
 
 
+def test_a_periodic_box_is_dashed_and_a_disc_over_a_corner_is_drawn_in_all_four(preset):
+    import matplotlib.pyplot as plt
+    scene = ps.Scene()
+    scene.world.width, scene.world.height = 10.0, 8.0
+    scene.world.walls, scene.world.periodic = False, True
+    for x, y in ((0.2, 0.3), (5.0, 4.0), (9.9, 4.0)):  # a corner, the middle, the right edge
+        p = ps.ParticleDef()
+        p.position, p.radius = (x, y), 0.5
+        scene.particles.append(p)
+    world = ps.World(scene)
+    ax = ps.plot(world)
+    box = [p for p in ax.patches if type(p).__name__ == "Rectangle"][0]
+    assert box.get_linestyle() == "--"
+    drawn = sorted(map(tuple, ax.collections[-1].get_offsets().round(6).tolist()))
+    assert drawn == sorted([(0.2, 0.3), (10.2, 0.3), (0.2, 8.3), (10.2, 8.3),  # the corner's
+                            (5.0, 4.0), (9.9, 4.0), (-0.1, 4.0)])
+    plt.close(ax.figure)
+
+
 def test_an_animation_runs_the_world_as_it_is_drawn_and_plays_as_html(preset):
     world = ps.World(preset("09-galton-board.json"))
     animation = ps.animate(world, 0.5, frames=5)
