@@ -97,8 +97,10 @@ def sweep(scene, seeds=None, params=None, duration=1.0, warmup=0.0, mode=None, d
         import os
 
         from dask.distributed import Client, LocalCluster
+        # The dashboard on a free port: Debian's distributed serves it even when asked not to,
+        # on 8787 by default, and warns when another cluster has that port.
         with LocalCluster(n_workers=1, threads_per_worker=os.cpu_count() or 1, processes=False,
-                          dashboard_address=None) as cluster, Client(cluster) as c:
+                          dashboard_address=":0") as cluster, Client(cluster) as c:
             rows = _gather(c, [args(k) for k in combos])
     else:
         rows = _gather(client, [args(k) for k in combos])
