@@ -91,7 +91,7 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     const bool fits = sideColumnFits(r.width, r.left, r.scale) &&
                       !(r.values.w > 0 && r.valuesRight) && !r.foldColumn;
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
-    l.columnFolded = columnAsked && !fits;
+    l.columnFolded = columnAsked && !fits && r.chartsBand.w == 0;
     int top = 4;
     // The recording mark first: it is there for a while and says so; the others stand under it.
     if (r.recording.x > 0 && r.recording.y > 0 && r.recording.x <= room) {
@@ -105,6 +105,35 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         if (box.y + box.h > bottom || overlaps(box, l.messages)) continue;  // no room: left out
         *out = box;
         top = box.y + box.h + gap;
+    }
+    if (r.chartsBand.w > 0 && (r.plots || r.speeds)) {
+        // Under the box, side by side from the left: the plots, the speed histogram; left of
+        // the inspector where it stands in the band. A chart narrower than its least is left
+        // out.
+        PixelRect band = r.chartsBand;
+        if (l.inspector.w > 0 && l.inspector.y < band.y + band.h) {
+            band.w = std::min(band.w, l.inspector.x - gap - band.x);
+        }
+        if (l.messages.w > 0 && l.messages.y < band.y + band.h) {
+            band.h = l.messages.y - gap - band.y;
+        }
+        const int count = (r.plots ? 1 : 0) + (r.speeds ? 1 : 0);
+        const int each = (band.w - (count - 1) * gap) / count;
+        const int rowMin = scaled(kPlotRowMinHeight);
+        if (each < scaled(kPanelMinWidth)) return l;
+        int x = band.x;
+        if (r.plots && band.h >= rowMin + 8) {
+            const int rows = std::clamp((band.h - 8) / rowMin, 1, 4);
+            const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
+            l.plots = {x, band.y, each, rows * rowHeight + 8};
+            l.plotRows = rows;
+            l.plotRowHeight = rowHeight;
+            x += each + gap;
+        }
+        if (r.speeds && band.h >= scaled(kSpeedsMinHeight)) {
+            l.speeds = {x, band.y, each, std::min(band.h, scaled(kSpeedsMaxHeight))};
+        }
+        return l;
     }
     if (!fits || (!r.plots && !r.speeds && !r.bins)) return l;
 

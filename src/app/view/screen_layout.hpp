@@ -124,6 +124,9 @@ struct LayoutRequest {
     bool bins = false;    ///< a scene's bins (a Galton board's histogram)
     /// Pixels per point of the UI (sideColumnWidth): the charts' sizes below are × this.
     double scale = 1.0;
+    /// The side column's charts go side by side in this band under the box instead of the
+    /// column (chartsBandRect; the session chose it: SceneView::fit); w == 0: the column.
+    PixelRect chartsBand{};
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
@@ -154,6 +157,21 @@ inline constexpr int kSpeedsMaxHeight = 210;                ///< pixels
 inline constexpr int kSpeedsMinHeight = 130;                ///< pixels
 inline constexpr int kBinsMaxHeight = 280;                  ///< pixels
 inline constexpr int kBinsMinHeight = 170;                  ///< pixels
+
+/// The band the side column's charts take under the box instead of the column (BoxArea's
+/// chartsBand), pixels at `scale` pixels per point: two plots' rows at their smallest, or the
+/// speed histogram at its smallest, and the panel's padding.
+[[nodiscard]] inline int chartsBandHeight(double scale) {
+    return static_cast<int>(std::max(2 * kPlotRowMinHeight + 8, kSpeedsMinHeight) * scale);
+}
+
+/// The band's rectangle at the bottom of a window `width` × `height` pixels whose left `left`
+/// pixels are the control panel's, above the messages' band `messages` pixels high (BoxArea's
+/// bottom), for a band `band` pixels high.
+[[nodiscard]] inline PixelRect chartsBandRect(int width, int height, int left, int messages,
+                                              int band) {
+    return {left + kPanelMargin, height - messages - band, width - left - 2 * kPanelMargin, band};
+}
 
 /// Lays out the panels `r` asks for.
 [[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);
