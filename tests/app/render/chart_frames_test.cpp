@@ -71,14 +71,14 @@ TEST_F(ChartFrameTest, TheSpeedHistogramsLegendStaysInItsFrameAt200Percent) {
 }
 
 TEST_F(ChartFrameTest, ThePlotsTickLabelsAndTitlesStayInTheirFrameAt200Percent) {
-    // The lesson's momentum: px from -1.5 to 2.5 kg m/s, py negative, in two rows as short as
-    // they get at 200 %.
+    // A momentum px from -10.1 to -10.0 kg m/s (its tick labels "-10.075", seven characters),
+    // py negative, in two rows as short as they get at 200 % and in four.
     TimeSeries series(200);
     for (int k = 0; k < 200; ++k) {
         ObservablesSample s;
         s.time = 0.02 * k;
         s.kineticEnergy = 3.5 - 0.001 * k;
-        s.momentum = Vec2(-1.5 + 0.02 * k, -1.25 + 0.01 * k);
+        s.momentum = Vec2(-10.1 + 0.0005 * k, -1.25 + 0.01 * k);
         s.collisions = static_cast<std::uint64_t>(k);
         series.record(s);
     }

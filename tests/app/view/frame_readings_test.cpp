@@ -115,12 +115,14 @@ std::vector<LabelPlace> labelsOf(const Session& s, const FrameView& f,
 }
 
 TEST(LabelPlaces, NoParticleLabelCoversTheGridsDistances) {
-    // The grid (Shift+G) and labels (S) at 200 %: a ball near the box's top-left corner had
-    // its label drawn over the grid's "1 m" and "3 m" along the edges.
-    World w = lessonWorld();
-    w.add({.position = Vec2(0.6, 3.4), .mass = 1.0, .radius = 0.2});
-    w.add({.position = Vec2(3.0, 3.5), .mass = 1.0, .radius = 0.2});
-    w.add({.position = Vec2(0.5, 1.0), .mass = 1.0, .radius = 0.2});
+    // The grid (Shift+G) and labels (S) at 200 %: a ball half-way down the box had its label
+    // drawn above it, over the grid's distances along the box's top edge.
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    w.add({.position = Vec2(3.0, 2.2), .mass = 1.0, .radius = 0.2});
+    w.add({.position = Vec2(8.0, 2.2), .mass = 3.0, .radius = 0.2});
     const Session s = onTheProjector(std::move(w), {ShowOption::Grid, ShowOption::Labels});
     const test::FixedMeasure font(2.0);
     const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
