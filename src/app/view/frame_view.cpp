@@ -283,7 +283,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.height = session.camera().viewportHeight();
     req.left = left;
     req.hud = textBoxSize(hudFont, o.hud);
+    req.hudShown = req.hud;
     if (videoHud) {
+        // As drawn over the frame once it is taken (drawMessages): the video's box and more.
+        const PixelPoint video = textBoxSize(hudFont, o.hudRecorded);
+        req.hudShown = {std::max(req.hud.x, video.x), std::max(req.hud.y, video.y)};
         // The screen's HUD is drawn over the frame once it is taken, opaque (its hints and
         // notes are lines more than the video's): the mark and the panels stand clear of it
         // too, and of its line that comes and goes as the user steps into the past.
