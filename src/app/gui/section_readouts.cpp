@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include <imgui.h>
 
@@ -213,17 +214,29 @@ void ControlPanel::pressurePlot(const Session& s) {
     draw.PopClipRect();
     // The vertical scale: its top and its bottom, 0.
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_TextDisabled);
-    draw.AddText(ImVec2(at.x + 3.f, at.y + 1.f), text, quantity(plot.top, "N/m", false).c_str());
-    draw.AddText(ImVec2(at.x + 3.f, at.y + size.y - font - 1.f), text, "0 N/m");
+    const PlotScaleLabels labels = plotScaleLabels(size.y, font);
+    draw.AddText(ImVec2(at.x + labels.x, at.y + labels.top), text,
+                 quantity(plot.top, "N/m", false).c_str());
+    draw.AddText(ImVec2(at.x + labels.x, at.y + labels.bottom), text, "0 N/m");
     const std::string t0 = quantity(plot.t0, "s"), t1 = quantity(plot.t1, "s");
     ImGui::TextDisabled("%s", t0.c_str());
     ImGui::SameLine(std::max(0.f, size.x - ImGui::CalcTextSize(t1.c_str()).x));
     ImGui::TextDisabled("%s", t1.c_str());
-    ImGui::TextColored(ImColor(kMeasuredColor), "measured");
-    ImGui::SameLine();
-    ImGui::TextColored(ImColor(kHardDiskColor), "hard discs");
-    ImGui::SameLine();
-    ImGui::TextColored(ImColor(kIdealColor), "ideal gas");
+    // The key on one line where it fits, else each name on the next line: at 200 % or more in
+    // a narrow panel its last name ran past the panel's edge.
+    const float right = ImGui::GetCursorScreenPos().x + size.x;
+    bool first = true;
+    for (const auto& [colour, name] :
+         {std::pair{kMeasuredColor, "measured"}, std::pair{kHardDiskColor, "hard discs"},
+          std::pair{kIdealColor, "ideal gas"}}) {
+        if (!first) {
+            const float next = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x +
+                               ImGui::CalcTextSize(name).x;
+            if (next <= right) ImGui::SameLine();
+        }
+        first = false;
+        ImGui::TextColored(ImColor(colour), "%s", name);
+    }
 }
 
 void ControlPanel::engine(const Session& s, const FrameStats& stats) {

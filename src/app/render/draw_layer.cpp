@@ -84,23 +84,19 @@ void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch
 
 void DrawLayer::drawDropper(const Camera& camera, const DropperView& d, const Palette& colours) {
     const SDL_Color spout = sdlColor(colours.dropper);
-    // A spout: a funnel narrowing down to just above where a ball starts, as wide as the spread
-    // and a ball either side, at least a few pixels whatever the zoom; its words to the right.
-    const Vec2 at = camera.worldToScreen(d.at);
-    const double ppm = camera.worldToScreen(d.at + Vec2(1.0, 0.0)).x() - at.x();
-    const double r = std::max(d.radius * ppm, 2.0);
-    const double bottom = at.y() - 1.3 * r, top = bottom - std::max(3.5 * r, 10.0);
-    const double low = d.spread * ppm + 1.5 * r, high = low + std::max(2.0 * r, 6.0);
+    // A spout: a funnel narrowing down to just above where a ball starts; its words to the
+    // right, where the view says (the particles' labels keep off them: dropper_mark.hpp).
+    const DropperSpout s = dropperSpout(camera, d);
     const auto pt = [&spout](double x, double y) {
         return SDL_Vertex{{static_cast<float>(x), static_cast<float>(y)}, spout, {0.f, 0.f}};
     };
-    const SDL_Vertex quad[4] = {pt(at.x() - high, top), pt(at.x() + high, top),
-                                pt(at.x() + low, bottom), pt(at.x() - low, bottom)};
+    const SDL_Vertex quad[4] = {pt(s.x - s.high, s.top), pt(s.x + s.high, s.top),
+                                pt(s.x + s.low, s.bottom), pt(s.x - s.low, s.bottom)};
     const int indices[6] = {0, 1, 2, 0, 2, 3};
     SDL_RenderGeometry(sdl_, nullptr, quad, 4, indices, 6);
     text_.clear();
-    labelFont_.layout(d.label, static_cast<float>(at.x() + high + 6.0),
-                      static_cast<float>(0.5 * (top + bottom) - labelFont_.lineHeight() / 2.0),
+    const PixelRect words = dropperLabelRect(s, d.label, labelFont_);
+    labelFont_.layout(d.label, static_cast<float>(words.x), static_cast<float>(words.y),
                       sdlColor(colours.dropperText), text_);
     labelFont_.draw(text_);
 }

@@ -1,5 +1,7 @@
 #include "render/overlay_drawing.hpp"
 
+#include <algorithm>
+
 #include "render/geometry_batch.hpp"
 #include "render/sdl_color.hpp"
 
@@ -66,8 +68,11 @@ void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours) {
     if (o.showHelp) return;  // the help covers them
     PanelBatch panels(font, colours);
-    // The screen's HUD over the video's, opaque: its lines are the video's and more.
-    const PixelPoint hudSize = textBoxSize(font, o.hud);
+    // The screen's HUD over the video's, opaque: its lines are the video's and more, and its
+    // box at least as large as the video's (whose first line, with a past frame's time, is
+    // longer: its end showed beside the screen's HUD).
+    const PixelPoint screen = textBoxSize(font, o.hud), video = textBoxSize(font, o.hudRecorded);
+    const PixelPoint hudSize{std::max(screen.x, video.x), std::max(screen.y, video.y)};
     panels.add(o.hud, PixelRect{layout.hud.x, layout.hud.y, hudSize.x, hudSize.y}, 255);
     panels.add(o.messages, layout.messages);
     panels.draw(renderer);

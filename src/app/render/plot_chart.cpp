@@ -9,6 +9,7 @@
 
 #include "render/sdl_color.hpp"
 #include "render/text.hpp"
+#include "view/chart_text.hpp"
 
 namespace psb::app {
 
@@ -23,13 +24,21 @@ ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& box
     return f;
 }
 
+std::vector<std::string> yTickLabels(double lo, double hi, int maxTicks) {
+    std::vector<std::string> labels;
+    const double step = niceStep(lo, hi, maxTicks);
+    for (const double t : niceTicks(lo, hi, maxTicks))
+        labels.push_back(tickLabel(t, step));
+    return labels;
+}
+
 void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
-                  GeometryBatch& labels, const Palette& colours) {
+                  GeometryBatch& labels, const Palette& colours, int maxTicks) {
     const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
     const float lh = static_cast<float>(font.lineHeight());
-    const double step = niceStep(lo, hi, 4);
-    for (const double t : niceTicks(lo, hi, 4)) {
+    const double step = niceStep(lo, hi, maxTicks);
+    for (const double t : niceTicks(lo, hi, maxTicks)) {
         const float y = row(t);
         marks.quad(left - 4, y, left - 1, y + 1, axis);
         const std::string label = tickLabel(t, step);
@@ -77,19 +86,16 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     const double t0 = n > 0 ? series[0].time : 0.0;
     const double t1 = n > 1 ? series.back().time : t0 + 1.0;
 
-    const float left = x + 78, right = x + width - 8;      // plot area, pixels
-    std::vector<std::pair<SDL_Color, std::size_t>> lines;  // colour, end index in line_
-    line_.clear();
-    for (int k = 0; k < rows; ++k) {
+    // Each row's range first: the y axis stands as far in as the widest tick label needs (78
+    // pixels at 100 %; at 200 % a "-1.50" ran out of the frame's left edge), and a row keeps
+    // only the ticks its height has room for.
+    const float plotHeight = rowH - 2 * lh - 8;
+    const int ticks = yTickCount(plotHeight, font.lineHeight());
+    PlotRange ranges[4];
+    std::size_t firsts[4] = {n, n, n, n};
+    std::vector<std::string> labels;
+    for (int k = 0; k < rows && n >= 2; ++k) {
         const Plot& pl = plots[k];
-        const float top = y + 6 + static_cast<float>(k) * rowH + lh;
-        const float bottom = top + rowH - 2 * lh - 8;
-        font.layout(pl.title, left, top - lh - 1, sdlTextColor(pl.color, colours.panel), text_);
-        // Axes: left and bottom, grey.
-        boxes_.quad(left - 1, top, left, bottom, axis);
-        boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
-        if (n < 2) continue;
-
         // A sample without a value (the rate before a whole window has run) is left out.
         std::size_t first = 0;
         while (first < n && std::isnan(pl.value(series[first])))
@@ -100,7 +106,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
             lo = std::min(lo, v);
             hi = std::max(hi, v);
         }
-        PlotRange r;
+        PlotRange& r = ranges[k];
         if (k == 0) {
             r = plotRange(lo, hi, 0.01 * std::max(std::abs(meanEnergy), 1e-300));
         } else if (k < 3) {
@@ -108,13 +114,36 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         } else {
             r = plotRange(0.0, std::max(hi, 1.0), 1.0);  // a rate starts at 0
         }
+        firsts[k] = first;
+        for (std::string& l : yTickLabels(r.lo, r.hi, ticks))
+            labels.push_back(std::move(l));
+    }
+    // The time axis's caption stands left of its first label ("0", centred on the axis).
+    labels.push_back("t (s)  ");
+    const float left = x + static_cast<float>(yAxisRoom(font, labels, 78));
+    const float right = x + width - 8;                     // plot area, pixels
+    std::vector<std::pair<SDL_Color, std::size_t>> lines;  // colour, end index in line_
+    line_.clear();
+    for (int k = 0; k < rows; ++k) {
+        const Plot& pl = plots[k];
+        const float top = y + 6 + static_cast<float>(k) * rowH + lh;
+        const float bottom = top + plotHeight;
+        // The title from the frame's padding: from the axis, a long one ran past its right edge.
+        font.layout(pl.title, x + kChartPad, top - lh - 1, sdlTextColor(pl.color, colours.panel),
+                    text_);
+        // Axes: left and bottom, grey.
+        boxes_.quad(left - 1, top, left, bottom, axis);
+        boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+        if (n < 2) continue;
+        const PlotRange& r = ranges[k];
+        const std::size_t first = firsts[k];
         const auto sy = [&](double v) {
             return bottom - static_cast<float>((v - r.lo) / (r.hi - r.lo)) * (bottom - top);
         };
         const auto sx = [&](double t) {
             return left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
         };
-        layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_, colours);
+        layoutYTicks(font, r.lo, r.hi, left, sy, boxes_, text_, colours, ticks);
         for (std::size_t s = first; s < n; ++s)
             line_.push_back({sx(series[s].time), sy(pl.sign * pl.value(series[s]))});
         lines.emplace_back(pl.color, line_.size());

@@ -36,11 +36,13 @@ struct ChartFrame {
 [[nodiscard]] ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& boxes,
                                     GeometryBatch& text, const Palette& colours);
 
-/// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most 4) left of x = `left`:
-/// a tick mark and its label at the pixel row `row(v)` of each tick value v.
+/// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most `maxTicks`) left of
+/// x = `left`: a tick mark and its label at the pixel row `row(v)` of each tick value v.
 void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
-                  GeometryBatch& labels, const Palette& colours);
+                  GeometryBatch& labels, const Palette& colours, int maxTicks = 4);
+/// The labels layoutYTicks writes for [lo, hi] with at most `maxTicks` ticks.
+[[nodiscard]] std::vector<std::string> yTickLabels(double lo, double hi, int maxTicks = 4);
 
 class PlotChart {
   public:

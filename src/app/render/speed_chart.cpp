@@ -10,6 +10,7 @@
 #include "render/plot_chart.hpp"
 #include "render/sdl_color.hpp"
 #include "render/text.hpp"
+#include "view/chart_text.hpp"
 
 namespace psb::app {
 
@@ -21,19 +22,23 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
     const SpeedHistogram h = speedHistogram(p, kBins);
     const SDL_Color grey = sdlColor(colours.tickText), axis = sdlColor(colours.axis);
     const SDL_Color bar = sdlColor(colours.histogramBar), curve = sdlColor(colours.theoryCurve);
-    const float left = x + 62, right = x + boxW - 10;
-    const float top = y + 6 + 2 * lh, bottom = y + height - 2 * lh - 6;
-
     char buf[128];
     std::snprintf(buf, sizeof buf, "bars: speeds of %zu particles%s", h.particles,
                   h.overflow > 0 ? (", " + std::to_string(h.overflow) + " off scale").c_str() : "");
-    font.layout(buf, x + 8, y + 4, sdlTextColor(bar, colours.panel), text_);
     // The 2-D Maxwell-Boltzmann distribution at kT = the mean kinetic energy per particle.
-    font.layout("line: ideal gas (Maxwell-Boltzmann)", x + 8, y + 4 + lh,
-                sdlTextColor(curve, colours.panel), text_);
-    boxes_.quad(left - 1, top, left, bottom, axis);
-    boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
-
+    // The legend wraps within the frame (at 200 % its second line ran past the right edge).
+    const std::vector<LegendLine> legend =
+        fitLegend(font, {buf, "line: ideal gas (Maxwell-Boltzmann)"}, box.w);
+    const SDL_Color legendColour[2] = {sdlTextColor(bar, colours.panel),
+                                       sdlTextColor(curve, colours.panel)};
+    for (std::size_t k = 0; k < legend.size(); ++k) {
+        font.layout(legend[k].text, x + kChartPad, y + 4 + lh * static_cast<float>(k),
+                    legendColour[legend[k].entry], text_);
+    }
+    // The plot under the legend, with half a line for the top tick's label.
+    const float right = x + boxW - 10;
+    const float top = y + 6 + (static_cast<float>(legend.size()) + 0.5f) * lh,
+                bottom = y + height - 2 * lh - 6;
     // Densities, s/m: a bin's count / (N · width), so bars and curve share one axis.
     const double n = static_cast<double>(std::max<std::size_t>(h.particles, 1));
     const double width = h.binWidth();
@@ -44,6 +49,9 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
     for (int k = 0; k <= kCurvePoints; ++k)
         top_density = std::max(top_density, h.expectedDensity(h.vmax * k / kCurvePoints));
     const PlotRange r = plotRange(0.0, top_density > 0.0 ? top_density : 1.0, 1e-300);
+    // The y axis as far in as its widest tick label needs (62 pixels at 100 %).
+    const int ticks = yTickCount(bottom - top, font.lineHeight());
+    const float left = x + static_cast<float>(yAxisRoom(font, yTickLabels(0.0, r.hi, ticks), 62));
     const auto sy = [&](double d) {
         return bottom - static_cast<float>(d / r.hi) * (bottom - top);
     };
@@ -61,7 +69,9 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
         curve_.push_back({sx(v), sy(h.expectedDensity(v))});
     }
 
-    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_, colours);
+    boxes_.quad(left - 1, top, left, bottom, axis);
+    boxes_.quad(left - 1, bottom, right, bottom + 1, axis);
+    layoutYTicks(font, 0.0, r.hi, left, sy, boxes_, text_, colours, ticks);
     const double xstep = niceStep(0.0, h.vmax, 5);
     for (const double t : niceTicks(0.0, h.vmax, 5)) {
         const float tx = sx(t);

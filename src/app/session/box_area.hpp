@@ -32,6 +32,10 @@ struct BoxArea {
     /// The area's top when the side column's charts are folded away (the HUD's band then holds
     /// the line that says so).
     double foldedTop = 0.0;
+    /// The side column's charts may go in a band this tall under the box instead (above the
+    /// messages), where a column beside the box would leave it less than its share (a wide,
+    /// low box: the momentum lesson's 10 m by 4 m at 200 %); 0: no such band.
+    double chartsBand = 0.0;
 
     friend bool operator==(const BoxArea&, const BoxArea&) = default;
 };

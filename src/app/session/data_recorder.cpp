@@ -20,7 +20,12 @@ void DataRecorder::restartRun() {
 }
 
 void DataRecorder::sample(const ObservablesSample& s) {
-    if (!run_.empty() && s.time < run_.back().time) dropAfter(s.time);
+    if (!run_.empty() && s.time < run_.back().time) {
+        // The plots' series follows the world back; a recording does only while it goes on
+        // (a stopped one is whole, to export, until the next starts).
+        dropRunAfter(s.time);
+        if (recording_) dropAfter(s.time);
+    }
     if (!run_.empty() && s.time == run_.back().time) {
         // Nothing stepped, but the world may have changed (particles placed before Play): the
         // row for this time is the state as last seen.
@@ -60,9 +65,12 @@ std::string DataRecorder::takeStopReason() {
     return r;
 }
 
-void DataRecorder::dropAfter(double time) {
+void DataRecorder::dropRunAfter(double time) {
     while (!run_.empty() && run_.back().time > time)
         run_.pop_back();
+}
+
+void DataRecorder::dropAfter(double time) {
     trajectory_.dropAfter(time);
     while (!collisions_.empty() && collisions_.back().time > time)
         collisions_.pop_back();
@@ -74,7 +82,9 @@ std::optional<CollisionLog> DataRecorder::collisionsWanted() const {
 }
 
 void DataRecorder::beforeStep(const World& world) {
-    if (recording_) dropAfter(world.time());
+    if (!recording_) return;
+    dropRunAfter(world.time());
+    dropAfter(world.time());
 }
 
 void DataRecorder::afterStep(const World& world, const std::vector<Collision>& heard) {

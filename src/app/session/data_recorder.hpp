@@ -6,7 +6,8 @@
 //
 // Records follow the world's history: when its clock goes back (an undo, a reset, carrying on
 // from a past frame) what was recorded after the new time is dropped, so a table never holds
-// two futures.
+// two futures. A recording that has stopped is over: it stays whole, to export, whatever the
+// world's clock does after, until the next recording starts (only the run's series follows).
 
 #include <cstddef>
 #include <optional>
@@ -37,7 +38,8 @@ class DataRecorder {
     /// what was recorded stays, to export, until the next recording starts.
     void restartRun();
     /// A sample of the run (Monitor::stepped, Monitor::frameDone), appended to the run's
-    /// series; at the same time as the last sample (paused), in its place.
+    /// series; at the same time as the last sample (paused), in its place. One earlier than the
+    /// last drops the run's later samples, and those of the recording while it goes on.
     void sample(const ObservablesSample& s);
 
     /// Starts recording `ids` every `every` steps (clamped to [1, kMaxEvery]), with their state
@@ -64,6 +66,8 @@ class DataRecorder {
     [[nodiscard]] int every() const { return every_; }
 
   private:
+    void dropRunAfter(double time);
+    /// The recording's trajectory samples and collisions after `time`.
     void dropAfter(double time);
 
     std::vector<ObservablesSample> run_;

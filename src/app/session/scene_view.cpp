@@ -86,6 +86,7 @@ void SceneView::fit(const Document& doc, Notices& notices) {
         ValuesDock dock;
         bool fold = false;
         double zoom = 0.0;
+        bool below = false;  ///< the charts in a band under the box
     };
     std::vector<Choice> tried;
     const auto tryBands = [&](const BoxArea& a, bool fold) {
@@ -106,6 +107,15 @@ void SceneView::fit(const Document& doc, Notices& notices) {
     // the side column's place. Where nothing leaves it that share, the largest box wins.
     const BoxArea& a = layout_.area(controls_, asked);
     tryBands(a, false);
+    // The charts in a band under the box (a wide, low box has the height to spare that a
+    // column beside it would take from its width); the bins and the values table keep to the
+    // column.
+    BoxArea under = bare;
+    under.bottom += bare.chartsBand;
+    under.spareColumn = 0.0;
+    const bool band = (options_.plots || options_.speeds) && !options_.values &&
+                      !binsShown(doc.meta) && bare.chartsBand > 0.0;
+    if (band) tried.push_back({&under, {}, false, fitWith(under, {}), true});
     if (asked) tryBands(folded, true);
     // At the right the table folds the charts asked for, whose note the HUD's band then holds.
     BoxArea besideColumn = a;
@@ -126,6 +136,7 @@ void SceneView::fit(const Document& doc, Notices& notices) {
                                 [](const Choice& l, const Choice& r) { return l.zoom < r.zoom; });
     valuesDock_ = chosen.dock;
     columnFolded_ = chosen.fold;
+    chartsBelow_ = chosen.below;
     fitWith(*chosen.area, chosen.dock);
     const Vec2 topLeft = camera_.worldToScreen(Vec2::Zero());
     notices.log(fmt("View: zoom %.6f px/m, box top-left at [%.2f, %.2f] px", camera_.zoom(),

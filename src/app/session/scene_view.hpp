@@ -68,6 +68,9 @@ class SceneView {
     /// (fit; the values table's dock at the right folds them as well: box_area.hpp's
     /// sideColumnFolded).
     [[nodiscard]] bool columnFolded() const { return columnFolded_; }
+    /// The side column's charts go in a band under the box instead (fit: a column beside a
+    /// wide, low box would leave it less than its share; BoxArea::chartsBand).
+    [[nodiscard]] bool chartsBelow() const { return chartsBelow_; }
     /// The view is as Fit left it (a resize fits again).
     [[nodiscard]] bool fitted() const { return fitted_; }
     /// The bins panel is drawn: the scene (`meta`) has bins and the view shows them.
@@ -99,6 +102,7 @@ class SceneView {
     WindowLayout layout_;
     ValuesDock valuesDock_;
     bool columnFolded_ = false;
+    bool chartsBelow_ = false;
     ViewOptions options_;
     bool help_ = false;
     std::size_t helpPage_ = 0;

@@ -171,6 +171,8 @@ class Session {
     [[nodiscard]] bool columnAsked() const { return view_.columnAsked(doc_.meta); }
     /// The side column's charts are folded so that the box keeps its share (SceneView::fit).
     [[nodiscard]] bool columnFolded() const { return view_.columnFolded(); }
+    /// The side column's charts are in a band under the box instead (SceneView::fit).
+    [[nodiscard]] bool chartsBelow() const { return view_.chartsBelow(); }
     /// Where the values table docks (I): where it left the box largest when the box was last
     /// fitted (BoxArea).
     [[nodiscard]] const ValuesDock& valuesDock() const { return view_.valuesDock(); }

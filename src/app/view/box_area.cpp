@@ -97,6 +97,7 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         a.valuesColumn = valuesColumn(width, a.left, 0.0, height, a.top, a.bottom, band.least,
                                       controls.pointPixels);
         a.foldedTop = std::max(a.top, hudBand(hudFont, room, true));
+        a.chartsBand = chartsBandHeight(controls.pointPixels) + kPanelGap;
         a.valuesBand = band.height + kPanelGap;
         a.valuesRow = band.row;
         a.valuesLeast = std::min(band.least, band.height) + kPanelGap;
@@ -147,6 +148,7 @@ PixelRect valuesTableRect(const Session& session, const ControlsWidth& controls)
 }
 
 bool sideColumnFolded(const Session& session, const ControlsWidth& controls) {
+    if (session.chartsBelow()) return false;  // in a band under the box
     if (session.columnAsked() && session.view().values && session.valuesDock().right) return true;
     // Folded so that the box keeps its share of the window (SceneView::fit).
     if (session.columnAsked() && session.columnFolded()) return true;

@@ -78,6 +78,16 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
         out.rects.push_back(labelRect(frame.ruler->label, labelFont, kReadingPad));
         out.walls.push_back(rulerBand(*frame.ruler));
     }
+    // The grid's distances and the droppers' words are readings too: no label covers them.
+    if (frame.grid) {
+        for (const MarkLabel& l : frame.grid->labels)
+            out.rects.push_back(labelRect(l, labelFont));
+    }
+    if (frame.camera != nullptr) {
+        for (const DropperView& d : frame.droppers)
+            out.rects.push_back(
+                dropperLabelRect(dropperSpout(*frame.camera, d), d.label, labelFont));
+    }
     return out;
 }
 
@@ -87,11 +97,6 @@ std::string recordingLabel(const VideoStatus& video) {
     std::snprintf(buf, sizeof buf, "REC %ld:%02ld %s - Ctrl+R stops", whole / 60, whole % 60,
                   toString(video.format));
     return buf;
-}
-
-std::string dropperLabel(const Dropper& d) {
-    if (d.balls == 0) return "dropper: empty";
-    return "dropper: " + std::to_string(d.balls) + (d.balls == 1 ? " ball left" : " balls left");
 }
 
 std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, double height) {
@@ -277,7 +282,26 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.width = session.camera().viewportWidth();
     req.height = session.camera().viewportHeight();
     req.left = left;
-    req.hud = videoHud.value_or(textBoxSize(hudFont, o.hud));
+    req.hud = textBoxSize(hudFont, o.hud);
+    req.hudShown = req.hud;
+    if (videoHud) {
+        // As drawn over the frame once it is taken (drawMessages): the video's box and more.
+        const PixelPoint video = textBoxSize(hudFont, o.hudRecorded);
+        req.hudShown = {std::max(req.hud.x, video.x), std::max(req.hud.y, video.y)};
+        // The screen's HUD is drawn over the frame once it is taken, opaque (its hints and
+        // notes are lines more than the video's): the mark and the panels stand clear of it
+        // too, and of its line that comes and goes as the user steps into the past.
+        HudData screen = hud;
+        screen.past = true;
+        screen.secondsBack = std::max(screen.secondsBack, 99.99);
+        screen.overlap = std::max(screen.overlap, 0.999);
+        std::vector<std::string> most = readings(screen);
+        for (std::size_t k = readings(hud).size(); k < o.hud.size(); ++k)
+            most.push_back(o.hud[k]);
+        const PixelPoint shown = textBoxSize(hudFont, most);
+        req.hud = {std::max({req.hud.x, videoHud->x, shown.x}),
+                   std::max({req.hud.y, videoHud->y, shown.y})};
+    }
     if (o.showProfile) req.profile = textBoxSize(hudFont, o.profile);
     if (f.view.momentum) {
         req.legend = textBoxSize(labelFont,
@@ -295,6 +319,12 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     req.scale = controls.pointPixels;
     req.values = valuesTableRect(session, controls);
     req.valuesRight = session.valuesDock().right;
+    if (session.chartsBelow()) {
+        // Under the box, above the messages (SceneView::fit chose it; BoxArea::chartsBand).
+        const BoxArea& bare = session.layout().area(session.controlsShown(), false);
+        req.chartsBand = chartsBandRect(req.width, req.height, left, static_cast<int>(bare.bottom),
+                                        static_cast<int>(bare.chartsBand) - kPanelGap);
+    }
     if (f.recordingMark) {
         // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).
         const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});
@@ -320,9 +350,14 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
             for (const PixelRect& r : pegsOnScreen(world, session.camera()))
                 discs.push_back(r);
         }
+        // A dropper's words are a reading too: the grid's labels keep off them.
+        std::vector<PixelRect> keepOut = panelRects(f.layout);
+        for (const DropperView& d : f.droppers) {
+            keepOut.push_back(
+                dropperLabelRect(dropperSpout(session.camera(), d), d.label, labelFont));
+        }
         keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
-                            labelRoom(world, session.camera(), window, panelRects(f.layout)),
-                            discs);
+                            labelRoom(world, session.camera(), window, std::move(keepOut)), discs);
     }
     f.title =
         windowTitle(world.size(), session.paused(), session.meta().name, session.unsavedChanges());

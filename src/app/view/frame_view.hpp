@@ -20,6 +20,7 @@
 #include "session/view_options.hpp"
 #include "view/bin_histogram.hpp"
 #include "view/box_area.hpp"
+#include "view/dropper_mark.hpp"
 #include "view/lab_marks.hpp"
 #include "view/overlays.hpp"
 #include "view/periodic_box.hpp"
@@ -52,14 +53,6 @@ struct BoxMarkerView {
 struct RecordingMarkView {
     PixelRect at;       ///< the mark's box, pixels
     std::string label;  ///< "REC 0:12 MP4 - Ctrl+R stops"
-};
-
-/// A ball dropper: its spout above where a ball starts, and what it has left.
-struct DropperView {
-    Vec2 at = Vec2::Zero();  ///< where a ball starts (the middle of the spread), metres
-    double radius = 0.0;     ///< a ball's, metres
-    double spread = 0.0;     ///< metres either side of `at`
-    std::string label;       ///< "dropper: 640 balls left"
 };
 
 struct FrameView {
@@ -139,12 +132,9 @@ struct FrameStats {
                                    const ControlsWidth& controls);
 
 /// What the particles' labels keep clear of besides the discs and the scene's walls: the
-/// panels, the control panel's column, the ruler and its reading (measured in `labelFont`).
+/// panels, the control panel's column, the ruler and its reading, the grid's labels and the
+/// droppers' words (measured in `labelFont`): a label is never drawn over another reading.
 [[nodiscard]] LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont);
-
-/// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
-/// left", "dropper: empty".
-[[nodiscard]] std::string dropperLabel(const Dropper& dropper);
 
 /// The recording mark's text: "REC 0:12 MP4 - Ctrl+R stops".
 [[nodiscard]] std::string recordingLabel(const VideoStatus& video);

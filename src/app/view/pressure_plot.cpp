@@ -78,4 +78,13 @@ std::string pressurePlotLine(const std::deque<GasHistoryPoint>& history) {
     return s;
 }
 
+PlotScaleLabels plotScaleLabels(float height, float font) {
+    const float air = std::max(2.f, 0.2f * font);
+    PlotScaleLabels l;
+    l.x = air + 1.f;
+    l.top = air;
+    l.bottom = std::max(l.top + font, height - font - air);
+    return l;
+}
+
 }  // namespace psb::app

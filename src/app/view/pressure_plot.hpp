@@ -31,6 +31,17 @@ struct PressurePlot {
 [[nodiscard]] PressurePlot pressurePlot(const std::deque<GasHistoryPoint>& history,
                                         double span = 60.0);
 
+/// Where the plot's scale labels go in its frame, pixels from the frame's top-left: the top's
+/// value and the bottom's 0, each a line of text `font` pixels high, clear of the frame's
+/// lines (drawn a pixel or more thick as the UI grows) by a fifth of a line. At 200 % the "0
+/// N/m" stood on the frame's bottom line and the top's value under its top line.
+struct PlotScaleLabels {
+    float x = 0.f;       ///< both labels' left edge
+    float top = 0.f;     ///< the top label's top edge
+    float bottom = 0.f;  ///< the bottom label's top edge
+};
+[[nodiscard]] PlotScaleLabels plotScaleLabels(float height, float font);
+
 /// "Pressure plot: t = 1.00 s to 13.0 s, 49 points; now measured 12.2 ± 0.21 N/m, hard discs
 /// 11.9 N/m, ideal gas 8.36 N/m" (the latest point), or empty when there is none.
 [[nodiscard]] std::string pressurePlotLine(const std::deque<GasHistoryPoint>& history);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace psb::app {
 
@@ -39,7 +40,10 @@ int valuesColumn(int width, double left, double right, int, double, double, int,
     return room - column >= kBoxMinRoom ? column : 0;
 }
 
-PanelLayout layoutPanels(const LayoutRequest& r) {
+namespace {
+
+/// The panels but the recording mark.
+PanelLayout layoutWithoutMark(const LayoutRequest& r) {
     PanelLayout l;
     const int m = kPanelMargin, gap = kPanelGap;
     int right = r.width - m;
@@ -91,13 +95,8 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
     const bool fits = sideColumnFits(r.width, r.left, r.scale) &&
                       !(r.values.w > 0 && r.valuesRight) && !r.foldColumn;
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
-    l.columnFolded = columnAsked && !fits;
+    l.columnFolded = columnAsked && !fits && r.chartsBand.w == 0;
     int top = 4;
-    // The recording mark first: it is there for a while and says so; the others stand under it.
-    if (r.recording.x > 0 && r.recording.y > 0 && r.recording.x <= room) {
-        l.recording = place(r.recording, std::max(top, kPanelMargin));
-        top = l.recording.y + l.recording.h + gap;
-    }
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
         if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;
@@ -105,6 +104,35 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         if (box.y + box.h > bottom || overlaps(box, l.messages)) continue;  // no room: left out
         *out = box;
         top = box.y + box.h + gap;
+    }
+    if (r.chartsBand.w > 0 && (r.plots || r.speeds)) {
+        // Under the box, side by side from the left: the plots, the speed histogram; left of
+        // the inspector where it stands in the band. A chart narrower than its least is left
+        // out.
+        PixelRect band = r.chartsBand;
+        if (l.inspector.w > 0 && l.inspector.y < band.y + band.h) {
+            band.w = std::min(band.w, l.inspector.x - gap - band.x);
+        }
+        if (l.messages.w > 0 && l.messages.y < band.y + band.h) {
+            band.h = l.messages.y - gap - band.y;
+        }
+        const int count = (r.plots ? 1 : 0) + (r.speeds ? 1 : 0);
+        const int each = (band.w - (count - 1) * gap) / count;
+        const int rowMin = scaled(kPlotRowMinHeight);
+        if (each < scaled(kPanelMinWidth)) return l;
+        int x = band.x;
+        if (r.plots && band.h >= rowMin + 8) {
+            const int rows = std::clamp((band.h - 8) / rowMin, 1, 4);
+            const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
+            l.plots = {x, band.y, each, rows * rowHeight + 8};
+            l.plotRows = rows;
+            l.plotRowHeight = rowHeight;
+            x += each + gap;
+        }
+        if (r.speeds && band.h >= scaled(kSpeedsMinHeight)) {
+            l.speeds = {x, band.y, each, std::min(band.h, scaled(kSpeedsMaxHeight))};
+        }
+        return l;
     }
     if (!fits || (!r.plots && !r.speeds && !r.bins)) return l;
 
@@ -138,6 +166,38 @@ PanelLayout layoutPanels(const LayoutRequest& r) {
         l.plots = {column.x, bottom - h, width, h};
         l.plotRows = rows;
         l.plotRowHeight = rowHeight;
+    }
+    return l;
+}
+
+}  // namespace
+
+PanelLayout layoutPanels(const LayoutRequest& r) {
+    PanelLayout l = layoutWithoutMark(r);
+    if (r.recording.x <= 0 || r.recording.y <= 0) return l;
+    // The recording mark last, in the top-right corner or under whatever stands there: the HUD
+    // as the screen shows it this frame, the panels. It is not in the video, so it may move
+    // when the screen's HUD grows (a step into the past) while the panels, which are, stay put.
+    const PixelRect shown{l.hud.x, l.hud.y, r.hudShown.x > 0 ? r.hudShown.x : l.hud.w,
+                          r.hudShown.y > 0 ? r.hudShown.y : l.hud.h};
+    const int x = std::max(r.left + kPanelMargin, r.width - kPanelMargin - r.recording.x);
+    int y = kPanelMargin;
+    for (int tries = 0; tries < 16 && y + r.recording.y <= r.height - kPanelMargin; ++tries) {
+        const PixelRect box{x, y, r.recording.x, r.recording.y};
+        const PixelRect* hit = nullptr;
+        for (const PixelRect* other : std::initializer_list<const PixelRect*>{
+                 &shown, &l.profile, &l.legend, &l.messages, &l.inspector, &l.plots, &l.speeds,
+                 &l.bins, &l.values}) {
+            if (overlaps(box, *other)) {
+                hit = other;
+                break;
+            }
+        }
+        if (hit == nullptr) {
+            l.recording = box;
+            return l;
+        }
+        y = hit->y + hit->h + kPanelGap;
     }
     return l;
 }

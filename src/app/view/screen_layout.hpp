@@ -1,8 +1,8 @@
 #pragma once
 // Where the text and analysis panels go, as a pure function of the window size and what each
 // panel would need: the HUD at the top-left (right of the control panel's column), then a column at
-// the right edge holding, from the top, the recording mark, the profile and the momentum legend,
-// and from the bottom
+// the right edge holding, from the top, the profile and the momentum legend (the recording mark
+// goes last, in the top-right corner or under what stands there), and from the bottom
 // the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
 // column starts below the HUD when the window is too narrow for both side by side, panels shrink to
 // the room there is (the plots drop their least important rows first: rate, then py, then px), and
@@ -100,12 +100,17 @@ struct ValuesBand {
 
 /// What to lay out; sizes in pixels, {0, 0} for a panel that is off.
 struct LayoutRequest {
-    int width = 0;               ///< the window
-    int left = 0;                ///< pixels at the left taken by the control panel
-    int height = 0;              ///< the window
-    PixelPoint hud{0, 0};        ///< the HUD's box (text plus padding)
-    PixelPoint profile{0, 0};    ///< the profile overlay's box
-    PixelPoint recording{0, 0};  ///< the recording mark's box, at the top of the column
+    int width = 0;             ///< the window
+    int left = 0;              ///< pixels at the left taken by the control panel
+    int height = 0;            ///< the window
+    PixelPoint hud{0, 0};      ///< the HUD's box (text plus padding)
+    PixelPoint profile{0, 0};  ///< the profile overlay's box
+    /// The recording mark's box: in the top-right corner, or under what stands there (the
+    /// HUD as shown, `hudShown`, and the panels); placed last, as it is not in the video.
+    PixelPoint recording{0, 0};
+    /// The HUD's box as the screen shows it this frame, where the layout keeps `hud` more
+    /// room (a video's HUD and the lines that come and go through the clip); {0, 0}: `hud`.
+    PixelPoint hudShown{0, 0};
     PixelPoint legend{0, 0};     ///< the momentum legend's box
     PixelPoint messages{0, 0};   ///< the messages' box, at the bottom-left
     PixelPoint inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
@@ -124,6 +129,9 @@ struct LayoutRequest {
     bool bins = false;    ///< a scene's bins (a Galton board's histogram)
     /// Pixels per point of the UI (sideColumnWidth): the charts' sizes below are × this.
     double scale = 1.0;
+    /// The side column's charts go side by side in this band under the box instead of the
+    /// column (chartsBandRect; the session chose it: SceneView::fit); w == 0: the column.
+    PixelRect chartsBand{};
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
@@ -154,6 +162,21 @@ inline constexpr int kSpeedsMaxHeight = 210;                ///< pixels
 inline constexpr int kSpeedsMinHeight = 130;                ///< pixels
 inline constexpr int kBinsMaxHeight = 280;                  ///< pixels
 inline constexpr int kBinsMinHeight = 170;                  ///< pixels
+
+/// The band the side column's charts take under the box instead of the column (BoxArea's
+/// chartsBand), pixels at `scale` pixels per point: two plots' rows at their smallest, or the
+/// speed histogram at its smallest, and the panel's padding.
+[[nodiscard]] inline int chartsBandHeight(double scale) {
+    return static_cast<int>(std::max(2 * kPlotRowMinHeight + 8, kSpeedsMinHeight) * scale);
+}
+
+/// The band's rectangle at the bottom of a window `width` × `height` pixels whose left `left`
+/// pixels are the control panel's, above the messages' band `messages` pixels high (BoxArea's
+/// bottom), for a band `band` pixels high.
+[[nodiscard]] inline PixelRect chartsBandRect(int width, int height, int left, int messages,
+                                              int band) {
+    return {left + kPanelMargin, height - messages - band, width - left - 2 * kPanelMargin, band};
+}
 
 /// Lays out the panels `r` asks for.
 [[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);

@@ -76,5 +76,31 @@ TEST(DataRecorder, RecordsTheChosenParticlesCollisionsFromWhatTheWorldHeard) {
     EXPECT_EQ(d.trajectory().samples().size(), 101u);
 }
 
+TEST(DataRecorder, AStoppedRecordingStaysWholeWhenTheRunGoesBack) {
+    // The lesson: record, run, stop, step back to the impact and run on. The run's series
+    // follows the world back; the stopped recording keeps every sample it took.
+    WorldDef def;
+    def.width = def.height = 10.0;
+    World w(def);
+    w.add({.position = Vec2(5.0, 5.0), .velocity = Vec2(1.0, 0.0)});
+    DataRecorder d;
+    d.start(w, w.ids(), 1);
+    for (int k = 0; k < 100; ++k) {
+        d.beforeStep(w);
+        w.step(0.01);
+        d.afterStep(w, {});
+        d.sample(at(w.time(), 0));
+    }
+    d.stop();
+    ASSERT_EQ(d.trajectory().samples().size(), 101u);
+    ASSERT_EQ(d.run().size(), 100u);
+    d.sample(at(0.5, 0));  // a past frame carried on from
+    EXPECT_EQ(d.trajectory().samples().size(), 101u) << "the stopped recording is whole";
+    EXPECT_NEAR(d.trajectory().samples().back().time, 1.0, 1e-9);
+    EXPECT_NEAR(d.run().back().time, 0.5, 1e-9) << "the plots' series follows the world";
+    d.start(w, w.ids(), 1);  // a new recording starts anew
+    EXPECT_EQ(d.trajectory().samples().size(), 1u);
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -282,6 +282,26 @@ TEST_F(SessionData, GoingBackInTimeDropsWhatWasRecordedAfter) {
         EXPECT_LT(run[k - 1].time, run[k].time);
 }
 
+TEST_F(SessionData, AStoppedRecordingIsWholeAfterSteppingBackAndRunningOn) {
+    // The lesson: X records, Space runs, Space pauses, X stops, Shift+Left to the impact, Space
+    // runs on: the exported trajectories had lost what was recorded after the frame gone back to.
+    Session s = session();
+    s.apply(cmd::SetRecording{true, 1});
+    run(s, 60);
+    s.apply(cmd::SetRecording{false});
+    const std::string whole = s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma);
+    const std::size_t samples = s.data().trajectory().samples().size();
+    ASSERT_GT(samples, 60u);
+    for (int k = 0; k < 20; ++k)
+        s.apply(cmd::StepBack{});
+    ASSERT_LT(s.world().time(), 1.0 - 0.2);
+    run(s, 5);
+    EXPECT_EQ(s.data().trajectory().samples().size(), samples);
+    EXPECT_EQ(s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma), whole);
+    const std::vector<ObservablesSample>& series = s.data().run();
+    EXPECT_LT(series.back().time, 1.0 - 0.1) << "the plots' series follows the world back";
+}
+
 TEST_F(SessionData, RestartStopsRecordingAndKeepsWhatItRecordedToExport) {
     // A teacher's lesson: record, run, R to run again, then export: the recording was gone.
     Session s = session();

@@ -66,5 +66,18 @@ TEST(PressurePlot, ItsLineNamesTheLatestPoint) {
     EXPECT_NE(line.find("hard discs 23.8 N/m, ideal gas 16.7 N/m"), std::string::npos) << line;
 }
 
+TEST(PressurePlot, ItsScaleLabelsStayClearOfItsFrameAtEveryScale) {
+    // At 200 % the "0 N/m" stood on the frame's bottom line (1 pixel above it, whatever the
+    // scale) and the top's value under its top line.
+    for (const float font : {13.f, 26.f, 39.f}) {
+        const float height = 6.f * font;
+        const PlotScaleLabels l = plotScaleLabels(height, font);
+        EXPECT_GE(l.x, 0.2f * font) << font;
+        EXPECT_GE(l.top, 0.2f * font) << font;
+        EXPECT_LE(l.bottom + font, height - 0.2f * font) << font;
+        EXPECT_GE(l.bottom, l.top + font) << font << ": the two apart";
+    }
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -174,6 +174,31 @@ TEST(PanelLayout, AWindowTooNarrowForTheColumnBesideTheBoxFoldsItsPanelsAway) {
     EXPECT_FALSE(layoutPanels(none).columnFolded);
 }
 
+TEST(PanelLayout, InABandUnderTheBoxTheChartsStandSideBySideLeftOfTheInspector) {
+    // The momentum lesson at 200 %: a band 272 pixels high under its wide, low box, above the
+    // messages' band; the inspector (a click with the panel folded) stands at its right.
+    LayoutRequest r = everythingOn(1600, 1000);
+    r.left = 88;
+    r.scale = 2.0;
+    r.profile = {0, 0};
+    r.chartsBand = chartsBandRect(1600, 1000, 88, 114, chartsBandHeight(2.0));
+    const PanelLayout l = layoutPanels(r);
+    expectNoOverlapAndInside(r, l);
+    EXPECT_FALSE(l.columnFolded);
+    ASSERT_GT(l.plots.w, 0);
+    ASSERT_GT(l.speeds.w, 0);
+    EXPECT_EQ(l.plots.y, r.chartsBand.y);
+    EXPECT_LE(l.plots.y + l.plots.h, r.chartsBand.y + r.chartsBand.h);
+    EXPECT_EQ(l.plotRows, 2);
+    EXPECT_GE(l.plotRowHeight, 2 * kPlotRowMinHeight);
+    EXPECT_GE(l.plots.w, 2 * kPanelMinWidth);
+    EXPECT_LT(l.plots.x + l.plots.w, l.speeds.x) << "side by side";
+    EXPECT_LE(l.speeds.y + l.speeds.h, r.chartsBand.y + r.chartsBand.h);
+    if (l.inspector.w > 0 && l.inspector.y < r.chartsBand.y + r.chartsBand.h) {
+        EXPECT_LE(l.speeds.x + l.speeds.w, l.inspector.x - kPanelGap);
+    }
+}
+
 TEST(PanelLayout, PanelsThatAreOffGetNoBox) {
     LayoutRequest r;
     r.width = 800;

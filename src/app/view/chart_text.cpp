@@ -1,0 +1,37 @@
+#include "view/chart_text.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "view/overlays.hpp"
+
+namespace psb::app {
+
+std::vector<LegendLine> fitLegend(const TextMeasure& font, const std::vector<std::string>& entries,
+                                  int width) {
+    std::vector<LegendLine> out;
+    // wrapLines keeps 8 pixels of a box's padding out of the width it is given.
+    const int room = std::max(1, width - 2 * kChartPad + 8);
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        for (std::string& line : wrapLines(font, {entries[k]}, room))
+            out.push_back({std::move(line), k});
+    }
+    return out;
+}
+
+int yAxisRoom(const TextMeasure& font, const std::vector<std::string>& labels, int least) {
+    int widest = 0;
+    for (const std::string& l : labels)
+        widest = std::max(widest, font.measure(l));
+    // The padding, the labels, and 6 pixels for the tick marks and the gap before them.
+    return std::max(least, kChartPad + widest + 6);
+}
+
+int yTickCount(double pixels, int lineHeight) {
+    if (lineHeight <= 0) return 4;
+    // n ticks are n - 1 steps apart; each label wants its line and a little air.
+    const int steps = static_cast<int>(std::floor(pixels / (1.15 * lineHeight)));
+    return std::clamp(steps, 1, 4);
+}
+
+}  // namespace psb::app

@@ -1,0 +1,98 @@
+// The side column's charts drawn offscreen at 200 % (a 24 px font in a frame as narrow as the
+// column gets): their text stays inside their frames (view/chart_text.hpp). The speed
+// histogram's legend ran past the frame's right edge, the plots' tick labels past its left.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <random>
+#include <string>
+
+#include <SDL.h>
+
+#include "render/offscreen_test.hpp"
+#include "render/plot_chart.hpp"
+#include "render/speed_chart.hpp"
+#include "view/screen_layout.hpp"
+
+namespace psb::app {
+namespace {
+
+constexpr SDL_Color kOutside{255, 0, 255, 255};
+
+class ChartFrameTest : public OffscreenTest {
+  protected:
+    ChartFrameTest() : OffscreenTest(1000) {}
+    void SetUp() override {
+        OffscreenTest::SetUp();
+        big_ = std::make_unique<Font>(sdl_, findAsset("fonts/DejaVuSansMono.ttf"), 24);
+        SDL_SetRenderDrawColor(sdl_, kOutside.r, kOutside.g, kOutside.b, 255);
+        SDL_RenderClear(sdl_);
+    }
+    void TearDown() override {
+        big_.reset();
+        OffscreenTest::TearDown();
+    }
+    /// Pixels outside `box` that are not the background: what the chart drew beyond its frame.
+    [[nodiscard]] int outside(const PixelRect& box) const {
+        int n = 0;
+        for (int y = 0; y < size_; ++y) {
+            for (int x = 0; x < size_; ++x) {
+                if (x >= box.x && x < box.x + box.w && y >= box.y && y < box.y + box.h) continue;
+                const SDL_Color p = pixel(x, y);
+                n += p.r != kOutside.r || p.g != kOutside.g || p.b != kOutside.b;
+            }
+        }
+        return n;
+    }
+    std::unique_ptr<Font> big_;
+};
+
+/// The side column's narrowest frame at 200 %.
+constexpr int kWidth = 2 * kSideColumnMinWidth;
+
+TEST_F(ChartFrameTest, TheSpeedHistogramsLegendStaysInItsFrameAt200Percent) {
+    WorldDef def;
+    def.width = def.height = 100.0;
+    World w(def);
+    std::mt19937_64 rng(3);
+    std::normal_distribution<double> g(0.0, 1.0);
+    for (int k = 0; k < 400; ++k) {
+        w.add({.position = Vec2(2.0 + (k % 20) * 4.0, 2.0 + (k / 20) * 4.0),
+               .velocity = Vec2(g(rng), g(rng)),
+               .radius = 0.5});
+    }
+    const PixelRect box{300, 100, kWidth, 2 * kSpeedsMinHeight};
+    SpeedChart chart;
+    chart.draw(sdl_, *big_, w.particles(), box, palette(Theme::Light), 2.f);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(outside(box), 0) << "pixels drawn outside the histogram's frame";
+}
+
+TEST_F(ChartFrameTest, ThePlotsTickLabelsAndTitlesStayInTheirFrameAt200Percent) {
+    // A momentum px from -10.1 to -10.0 kg m/s (its tick labels "-10.075", seven characters),
+    // py negative, in two rows as short as they get at 200 % and in four.
+    TimeSeries series(200);
+    for (int k = 0; k < 200; ++k) {
+        ObservablesSample s;
+        s.time = 0.02 * k;
+        s.kineticEnergy = 3.5 - 0.001 * k;
+        s.momentum = Vec2(-10.1 + 0.0005 * k, -1.25 + 0.01 * k);
+        s.collisions = static_cast<std::uint64_t>(k);
+        series.record(s);
+    }
+    for (const int rows : {2, 4}) {
+        SDL_RenderClear(sdl_);
+        const int rowHeight = 2 * kPlotRowMinHeight;
+        const PixelRect box{300, 100, kWidth, rows * rowHeight + 8};
+        PlotChart chart;
+        chart.draw(sdl_, *big_, series, box, rows, rowHeight, 4.0, 0.5, palette(Theme::Light), true,
+                   2.f);
+        SDL_RenderPresent(sdl_);
+        EXPECT_EQ(outside(box), 0) << rows << " rows: pixels drawn outside the plots' frame";
+    }
+}
+
+}  // namespace
+}  // namespace psb::app

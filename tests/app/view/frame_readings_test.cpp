@@ -1,0 +1,180 @@
+// Nothing of the app's own covers a reading (frame_view.hpp): on the projector (200 % in a
+// 1600 x 1000 window) the recording mark and the panels stand clear of the HUD as the screen
+// shows it, and the particles' labels of the grid's distances and a dropper's words.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <initializer_list>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "session/session.hpp"
+#include "view/fixed_measure.hpp"
+#include "view/frame_view.hpp"
+#include "view/lab_marks.hpp"
+#include "view/label_places.hpp"
+#include "view/overlays.hpp"
+
+namespace psb::app {
+namespace {
+
+const ControlsWidth kProjector{620.0, 88.0, 2.0};
+
+/// Lesson 1's two balls in its 10 m x 4 m box.
+World lessonWorld() {
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(2.0, 0.0), .mass = 1.0, .radius = 0.25});
+    w.add({.position = Vec2(7.0, 2.0), .velocity = Vec2(-1.0, 0.0), .mass = 3.0, .radius = 0.35});
+    return w;
+}
+
+/// `world` at 200 % in a 1600 x 1000 window beside the open control panel, as the app lays it
+/// out, with `shown` turned on.
+Session onTheProjector(World world, std::initializer_list<ShowOption> shown) {
+    const test::FixedMeasure font(2.0);
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 1600;
+    o.viewportHeight = 1000;
+    o.layout = windowLayout(font, 1600, 1000, kProjector);
+    o.controls = o.layout.controlsFit;
+    Session s(std::move(world), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, o);
+    for (const ShowOption option : shown)
+        s.apply(cmd::SetShow{option, true});
+    return s;
+}
+
+std::string text(const PixelRect& r) {
+    return std::to_string(r.x) + "," + std::to_string(r.y) + " " + std::to_string(r.w) + "x" +
+           std::to_string(r.h);
+}
+
+TEST(RecordingMark, OnTheProjectorNeitherItNorAPanelIsUnderTheScreensHud) {
+    // Lesson 1 recorded at 200 %: the screen's HUD, drawn over the frame once the video has
+    // taken it, has lines the video's has not (its hints, the note that the charts are folded,
+    // the line of a step into the past), and the layout kept room for the video's only: the
+    // HUD's last line ran under "REC 0:02 MP4" and over the momentum legend.
+    for (const bool controls : {true, false}) {
+        Session s = onTheProjector(lessonWorld(), {ShowOption::Momentum, ShowOption::Plots,
+                                                   ShowOption::Labels, ShowOption::Collision});
+        if (!controls) s.apply(cmd::ToggleControls{});
+        const test::FixedMeasure font(2.0);
+        FrameStats stats;
+        stats.video.recording = true;
+        stats.video.seconds = 2.0;
+        s.apply(cmd::TogglePause{});
+        for (int k = 1; k <= 30; ++k)
+            s.update(1.0 / 60.0, k / 60.0);
+        s.apply(cmd::TogglePause{});
+        for (const bool past : {false, true}) {
+            if (past) s.apply(cmd::StepBack{});
+            const FrameView f = buildFrame(s, stats, font, font, kProjector);
+            ASSERT_TRUE(f.recordingMark.has_value());
+            const PixelPoint size = textBoxSize(font, f.overlays.hud);
+            const PixelRect hud{f.layout.hud.x, f.layout.hud.y, size.x, size.y};
+            const std::string at = std::string(controls ? "panel open" : "panel folded") +
+                                   (past ? ", in the past" : "") + ", HUD " + text(hud);
+            EXPECT_FALSE(overlaps(f.recordingMark->at, hud))
+                << at << ", mark " << text(f.recordingMark->at);
+            for (const PixelRect& r : panelRects(f.layout)) {
+                if (r == f.layout.hud) continue;
+                EXPECT_FALSE(overlaps(r, hud)) << at << ", a panel at " << text(r);
+            }
+        }
+    }
+}
+
+/// The labels of `s`'s particles placed as the drawing layer places them
+/// (render/renderer.cpp), in the 200 % labels' sizes.
+std::vector<LabelPlace> labelsOf(const Session& s, const FrameView& f,
+                                 const test::FixedMeasure& font) {
+    const LabelKeepOut keep = labelKeepOut(f, font);
+    const Camera& camera = s.camera();
+    LabelRoom room = labelRoom(s.world(), camera, {0, 0, 1600, 1000}, keep.rects);
+    room.walls.insert(room.walls.end(), keep.walls.begin(), keep.walls.end());
+    const ParticleArrays& p = s.world().particles();
+    const int lh = font.lineHeight();
+    std::vector<LabelAsk> asks;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+        const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
+        const int cx = static_cast<int>(std::lround(c.x())),
+                  cy = static_cast<int>(std::lround(c.y()));
+        asks.push_back({{cx - r, cy - r, 2 * r, 2 * r},
+                        {font.measure("x velocity: -1.00 m/s") + 4, 5 * lh + 1},
+                        true,
+                        {font.measure("v (-1.00, 0.00) m/s") + 4, 2 * lh + 1},
+                        {font.measure("particle 1") + 4, lh + 1}});
+    }
+    return placeLabels(asks, room);
+}
+
+TEST(LabelPlaces, NoParticleLabelCoversTheGridsDistances) {
+    // The grid (Shift+G) and labels (S) at 200 %: a ball half-way down the box had its label
+    // drawn above it, over the grid's distances along the box's top edge.
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    w.add({.position = Vec2(3.0, 2.2), .mass = 1.0, .radius = 0.2});
+    w.add({.position = Vec2(8.0, 2.2), .mass = 3.0, .radius = 0.2});
+    const Session s = onTheProjector(std::move(w), {ShowOption::Grid, ShowOption::Labels});
+    const test::FixedMeasure font(2.0);
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
+    ASSERT_TRUE(f.grid.has_value());
+    ASSERT_FALSE(f.grid->labels.empty());
+    const std::vector<LabelPlace> places = labelsOf(s, f, font);
+    std::size_t placed = 0;
+    for (const LabelPlace& place : places) {
+        if (place.at.w == 0) continue;
+        ++placed;
+        for (const MarkLabel& l : f.grid->labels) {
+            EXPECT_FALSE(overlaps(place.at, labelRect(l, font)))
+                << "a label at " << text(place.at) << " over the grid's \"" << l.text << "\"";
+        }
+    }
+    EXPECT_EQ(placed, places.size()) << "each label found a place clear of the grid's";
+}
+
+TEST(LabelPlaces, NoParticleLabelCoversADroppersWords) {
+    // A dropper's "dropper: 5 balls left" under the label of the ball just dropped.
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    def.gravity = Vec2(0.0, 9.81);
+    World w(def);
+    Dropper d;
+    d.position = Vec2(3.0, 1.0);
+    d.balls = 5;
+    d.radius = 0.2;
+    d.mass = 1.0;
+    w.setDroppers({d});
+    w.add({.position = Vec2(3.0, 1.5), .mass = 1.0, .radius = 0.2});
+    w.add({.position = Vec2(5.0, 1.6), .mass = 1.0, .radius = 0.2});
+    const Session s = onTheProjector(std::move(w), {ShowOption::Labels, ShowOption::Grid});
+    const test::FixedMeasure font(2.0);
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
+    ASSERT_EQ(f.droppers.size(), 1u);
+    const PixelRect words =
+        dropperLabelRect(dropperSpout(s.camera(), f.droppers[0]), f.droppers[0].label, font);
+    ASSERT_GT(words.w, 0);
+    // Nor does a grid's label (they straddled each other along the box's top).
+    ASSERT_TRUE(f.grid.has_value());
+    for (const MarkLabel& l : f.grid->labels) {
+        EXPECT_FALSE(overlaps(labelRect(l, font), words))
+            << "the grid's \"" << l.text << "\" over the dropper's words";
+    }
+    for (const LabelPlace& place : labelsOf(s, f, font)) {
+        ASSERT_GT(place.at.w, 0);
+        EXPECT_FALSE(overlaps(place.at, words))
+            << "a label at " << text(place.at) << " over the dropper's words at " << text(words);
+    }
+}
+
+}  // namespace
+}  // namespace psb::app
