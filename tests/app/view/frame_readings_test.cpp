@@ -16,38 +16,14 @@
 #include "view/lab_marks.hpp"
 #include "view/label_places.hpp"
 #include "view/overlays.hpp"
+#include "view/projector_fixture.hpp"
 
 namespace psb::app {
 namespace {
 
-const ControlsWidth kProjector{620.0, 88.0, 2.0};
-
-/// Lesson 1's two balls in its 10 m x 4 m box.
-World lessonWorld() {
-    WorldDef def;
-    def.width = 10.0;
-    def.height = 4.0;
-    World w(def);
-    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(2.0, 0.0), .mass = 1.0, .radius = 0.25});
-    w.add({.position = Vec2(7.0, 2.0), .velocity = Vec2(-1.0, 0.0), .mass = 3.0, .radius = 0.35});
-    return w;
-}
-
-/// `world` at 200 % in a 1600 x 1000 window beside the open control panel, as the app lays it
-/// out, with `shown` turned on.
-Session onTheProjector(World world, std::initializer_list<ShowOption> shown) {
-    const test::FixedMeasure font(2.0);
-    SessionOptions o;
-    o.paused = true;
-    o.viewportWidth = 1600;
-    o.viewportHeight = 1000;
-    o.layout = windowLayout(font, 1600, 1000, kProjector);
-    o.controls = o.layout.controlsFit;
-    Session s(std::move(world), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, o);
-    for (const ShowOption option : shown)
-        s.apply(cmd::SetShow{option, true});
-    return s;
-}
+using test::kProjector;
+using test::lessonWorld;
+using test::onTheProjector;
 
 std::string text(const PixelRect& r) {
     return std::to_string(r.x) + "," + std::to_string(r.y) + " " + std::to_string(r.w) + "x" +

@@ -21,6 +21,7 @@
 #include "view/lab_marks.hpp"
 #include "view/label_places.hpp"
 #include "view/overlays.hpp"
+#include "view/projector_fixture.hpp"
 
 namespace psb::app {
 namespace {
@@ -133,16 +134,8 @@ TEST(MessageBand, KeepsWholeMessagesAndDropsOlderOnesWhole) {
     EXPECT_LE(f.layout.messages.x + f.layout.messages.w, 800);
 }
 
-/// The momentum lesson's world: a 10 m x 4 m box, two balls of 1 and 3 kg.
-World lessonWorld() {
-    WorldDef def;
-    def.width = 10.0;
-    def.height = 4.0;
-    World w(def);
-    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(2.0, 0.0), .mass = 1.0, .radius = 0.25});
-    w.add({.position = Vec2(7.0, 2.0), .velocity = Vec2(-1.0, 0.0), .mass = 3.0, .radius = 0.35});
-    return w;
-}
+using test::lessonWorld;
+using test::onTheProjector;
 
 /// `world` in a `width` x `height` window at `scale`, laid out as the app lays it out (the
 /// control panel open where it fits), the plots and the values table on.
@@ -453,22 +446,6 @@ TEST(RecordingMark, InANarrowWindowItGoesBelowTheHudNotOverIt) {
 /// A preset scene's world, from the source tree's assets/scenes/`name`.
 World presetWorld(const char* name) {
     return makeWorld(loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / name));
-}
-
-/// `world` on a projector: 200 % in a 1600 x 1000 window beside the open control panel, as the
-/// app lays it out, with `shown` turned on (each fits the box again).
-Session onTheProjector(World world, std::initializer_list<ShowOption> shown) {
-    const test::FixedMeasure font(2.0);
-    SessionOptions o;
-    o.paused = true;
-    o.viewportWidth = 1600;
-    o.viewportHeight = 1000;
-    o.layout = windowLayout(font, 1600, 1000, {620.0, 88.0, 2.0});
-    o.controls = o.layout.controlsFit;
-    Session s(std::move(world), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, o);
-    for (const ShowOption option : shown)
-        s.apply(cmd::SetShow{option, true});
-    return s;
 }
 
 TEST(BoxShare, OnTheProjectorTheLessonsBoxesKeepAReasonableShareOfTheWindow) {

@@ -1,0 +1,45 @@
+#pragma once
+// The projector of the lessons' trials: UI scale 200 % in a 1600 x 1000 window beside the open
+// control panel, and lesson 1's world. Shared by the frame's layout and readings tests.
+
+#include <initializer_list>
+#include <utility>
+
+#include <particle_sandbox/world.hpp>
+
+#include "session/session.hpp"
+#include "view/fixed_measure.hpp"
+#include "view/frame_view.hpp"
+
+namespace psb::app::test {
+
+/// The control panel's width at 200 %, as the app measures it.
+inline const ControlsWidth kProjector{620.0, 88.0, 2.0};
+
+/// Lesson 1's world: a 10 m x 4 m box, two balls of 1 and 3 kg closing at 3 m/s.
+inline World lessonWorld() {
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    w.add({.position = Vec2(2.0, 2.0), .velocity = Vec2(2.0, 0.0), .mass = 1.0, .radius = 0.25});
+    w.add({.position = Vec2(7.0, 2.0), .velocity = Vec2(-1.0, 0.0), .mass = 3.0, .radius = 0.35});
+    return w;
+}
+
+/// `world` paused on the projector, laid out as the app lays it out, with `shown` turned on.
+inline Session onTheProjector(World world, std::initializer_list<ShowOption> shown) {
+    const FixedMeasure font(2.0);
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 1600;
+    o.viewportHeight = 1000;
+    o.layout = windowLayout(font, 1600, 1000, kProjector);
+    o.controls = o.layout.controlsFit;
+    Session s(std::move(world), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, o);
+    for (const ShowOption option : shown)
+        s.apply(cmd::SetShow{option, true});
+    return s;
+}
+
+}  // namespace psb::app::test
