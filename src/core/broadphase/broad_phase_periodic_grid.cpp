@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "broadphase/disc_overlap.hpp"
 #include "support/parallel.hpp"
@@ -23,7 +22,8 @@ std::int64_t cellsAcross(double extent, double minCell) {
 }  // namespace
 
 void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box& box,
-                                   const ParticleStats& stats, int threads) {
+                                   const ParticleStats& stats, int threads, bool cellsFromMove,
+                                   bool marksFromMove) {
     const double maxRadius = stats.maxRadius;
     const std::size_t n = p.size();
     box_ = box;
@@ -39,11 +39,39 @@ void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box&
     }
     invCellX_ = static_cast<double>(nx_) / box.width;
     invCellY_ = static_cast<double>(ny_) / box.height;
-    images_ = nx_ >= 3 && ny_ >= 3;
-    if (images_) {
-        const double reach = 2.0 * maxRadius * (1.0 + kRelativeSlack) + rounding;
-        const ParticleStats copyStats = buildImages(p, stats, reach);
-        grid_.build(copy_, copyStats, threads, cellsWritten_);
+    strips_ = nx_ >= 3 && ny_ >= 3;
+    if (strips_) {
+        reach_ = 2.0 * maxRadius * (1.0 + kRelativeSlack) + rounding;
+        const bool inBox = stats.minX >= 0.0 && stats.maxX < box.width && stats.minY >= 0.0 &&
+                           stats.maxY < box.height;
+        copied_ = !inBox;
+        if (!copied_) {
+            grid_.build(p, stats, threads, cellsFromMove);
+            // Marks made for a smaller reach would miss discs (larger ones were added).
+            if (marksFromMove && marksReach_ >= reach_ && marked_.size() == parallel::blockCount(n))
+                collectMarkedStrips(p);
+            else
+                collectStrips(p);
+            return;
+        }
+        wrapCopy(p);
+        // The copy's bounds follow from the box; its radii are the particles' grown by a hair,
+        // so rounding in the wrapped coordinates never loses a pair.
+        const double grow = 1e-12 * std::max(box.width, box.height);
+        ParticleStats s = stats;
+        s.minX = 0.0;
+        s.maxX = box.width;
+        s.minY = 0.0;
+        s.maxY = box.height;
+        s.maxAbsCoordinate = std::max(box.width, box.height);
+        s.minRadius += grow;
+        s.meanRadius += grow;
+        s.maxRadius += grow;
+        for (double& r : copy_.radius)
+            r += grow;
+        reach_ += 2.0 * grow;
+        grid_.build(copy_, s, threads);
+        collectStrips(copy_);
         return;
     }
     const auto cells = static_cast<std::size_t>(nx_ * ny_);
@@ -70,90 +98,172 @@ void PeriodicGridBroadPhase::build(const ParticleArrays& p, const periodic::Box&
         entries_[fill[cellOf[i]]++] = static_cast<std::uint32_t>(i);
 }
 
-ParticleStats PeriodicGridBroadPhase::buildImages(const ParticleArrays& p,
-                                                  const ParticleStats& stats, double reach) {
+std::optional<GridBroadPhase::MoveCells> PeriodicGridBroadPhase::cellsForMove(std::size_t n) {
+    if (!strips_) return std::nullopt;
+    return grid_.cellsForMove(n);
+}
+
+std::optional<PeriodicGridBroadPhase::EdgeMarks> PeriodicGridBroadPhase::marksForMove(
+    std::size_t n) {
+    if (!strips_) return std::nullopt;
+    marked_.resize(parallel::blockCount(n));
+    marksReach_ = reach_;
+    return EdgeMarks{marked_.data(), reach_};
+}
+
+void PeriodicGridBroadPhase::wrapCopy(const ParticleArrays& p) {
     const std::size_t n = p.size();
-    const double w = box_.width, h = box_.height;
-    const double grow = 1e-12 * std::max(w, h);
-    copy_.x.resize(n);
-    copy_.y.resize(n);
-    copy_.radius.resize(n);
-    source_.clear();
-    imageX_.clear();
-    imageY_.clear();
-    const auto image = [&](std::size_t i, double x, double y) {
-        source_.push_back(static_cast<std::uint32_t>(i));
-        imageX_.push_back(x);
-        imageY_.push_back(y);
-    };
-    // One pass over the particles writes the copy, its cells under the box grid's last plan
-    // (which the grid keeps while it fits, as it keeps the cells the box's move stage writes)
-    // and marks the centres off the interior; it has no branch, so it vectorises. A second
-    // pass over the marks wraps those centres and makes their images: the positions are read
-    // once, while in cache.
-    const std::optional<GridBroadPhase::MoveCells> cells = grid_.cellsForMove(n);
-    std::uint32_t* cellOf = cells ? cells->cellOf : nullptr;
-    const GridBroadPhase::CellMap map = cells ? cells->map : GridBroadPhase::CellMap{};
-    const double* px = p.x.data();
-    const double* py = p.y.data();
-    const double* r = p.radius.data();
-    double* cx = copy_.x.data();
-    double* cy = copy_.y.data();
-    double* cr = copy_.radius.data();
-    edge_.resize(n);
-    std::uint8_t* edge = edge_.data();
-    const double top = h - reach;
+    copy_.x.assign(p.x.begin(), p.x.end());
+    copy_.y.assign(p.y.begin(), p.y.end());
+    copy_.radius.assign(p.radius.begin(), p.radius.end());
     for (std::size_t i = 0; i < n; ++i) {
-        const double x = px[i], y = py[i];
-        cx[i] = x;
-        cy[i] = y;
-        cr[i] = r[i] + grow;
-        edge[i] = static_cast<std::uint8_t>(!(x >= reach) | !(x < w) | !(y >= reach) | !(y < top));
-    }
-    if (cellOf) {
-        for (std::size_t i = 0; i < n; ++i)
-            cellOf[i] = map.cellOf(cx[i], cy[i]);
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (edge[i] == 0) continue;
-        double x = cx[i], y = cy[i];
-        // Wrapped as the wrap stage will (a centre may be a step's travel outside the box).
         double unwrap = 0.0;
-        periodic::wrapInto(x, unwrap, w);
-        periodic::wrapInto(y, unwrap, h);
-        cx[i] = x;
-        cy[i] = y;
-        if (cellOf) cellOf[i] = map.cellOf(x, y);
-        const bool left = x < reach, bottom = y < reach, high = y >= top;
-        if (left) image(i, x + w, y);
-        if (bottom) image(i, x, y + h);
-        if (left && bottom) image(i, x + w, y + h);
-        if (left && high) image(i, x + w, y - h);
+        periodic::wrapInto(copy_.x[i], unwrap, box_.width);
+        periodic::wrapInto(copy_.y[i], unwrap, box_.height);
+        // A non-finite centre is left where it is: no pair can be found with it.
     }
-    const std::size_t images = source_.size();
-    copy_.x.insert(copy_.x.end(), imageX_.begin(), imageX_.end());
-    copy_.y.insert(copy_.y.end(), imageY_.begin(), imageY_.end());
-    copy_.radius.resize(n + images);
-    for (std::size_t k = 0; k < images; ++k)
-        copy_.radius[n + k] = copy_.radius[source_[k]];
-    if (cells) {
-        cellOf = grid_.cellsForMove(n + images)->cellOf;  // the first n kept
-        for (std::size_t k = 0; k < images; ++k)
-            cellOf[n + k] = map.cellOf(imageX_[k], imageY_[k]);
+}
+
+void PeriodicGridBroadPhase::collectStrips(const ParticleArrays& q) {
+    left_.clear();
+    right_.clear();
+    bottom_.clear();
+    top_.clear();
+    const std::size_t n = q.size();
+    const double* x = q.x.data();
+    const double* y = q.y.data();
+    const double reach = reach_, right = box_.width - reach_, top = box_.height - reach_;
+    for (std::size_t i = 0; i < n; ++i) {
+        // Nearly every centre is in the interior: one test for the four edges.
+        if (x[i] >= reach && x[i] < right && y[i] >= reach && y[i] < top) continue;
+        const auto k = static_cast<std::uint32_t>(i);
+        if (x[i] < reach) left_.push_back(k);
+        if (x[i] >= right) right_.push_back(k);
+        if (y[i] < reach) bottom_.push_back(k);
+        if (y[i] >= top) top_.push_back(k);
     }
-    cellsWritten_ = cells.has_value();
-    // The copy's bounds follow from the box and the reach; its radii are the particles' (grown).
-    ParticleStats s = stats;
-    s.count = copy_.x.size();
-    s.minX = 0.0;
-    s.maxX = w + reach;
-    s.minY = -reach;
-    s.maxY = h + reach;
-    s.maxAbsCoordinate = std::max(w, h) + reach;
-    s.minRadius += grow;
-    s.meanRadius += grow;
-    s.maxRadius += grow;
-    return s;
+}
+
+void PeriodicGridBroadPhase::collectMarkedStrips(const ParticleArrays& q) {
+    left_.clear();
+    right_.clear();
+    bottom_.clear();
+    top_.clear();
+    const std::size_t n = q.size();
+    const double* x = q.x.data();
+    const double* y = q.y.data();
+    const double reach = reach_, right = box_.width - reach_, top = box_.height - reach_;
+    std::size_t marked = 0;
+    for (std::size_t b = 0; b < parallel::blockCount(n); ++b)
+        marked += marked_[b].size();
+    // Each marked disc is written to every list and kept where it belongs: no branch on where.
+    left_.resize(marked);
+    right_.resize(marked);
+    bottom_.resize(marked);
+    top_.resize(marked);
+    std::size_t nl = 0, nr = 0, nb = 0, nt = 0;
+    for (std::size_t b = 0; b < parallel::blockCount(n); ++b) {
+        for (const std::uint32_t i : marked_[b]) {
+            left_[nl] = right_[nr] = bottom_[nb] = top_[nt] = i;
+            nl += static_cast<std::size_t>(x[i] < reach);
+            nr += static_cast<std::size_t>(x[i] >= right);
+            nb += static_cast<std::size_t>(y[i] < reach);
+            nt += static_cast<std::size_t>(y[i] >= top);
+        }
+    }
+    left_.resize(nl);
+    right_.resize(nr);
+    bottom_.resize(nb);
+    top_.resize(nt);
+}
+
+void PeriodicGridBroadPhase::stripPairs(const ParticleArrays& p,
+                                        const std::vector<std::uint32_t>& low,
+                                        const std::vector<std::uint32_t>& high, bool alongY,
+                                        bool skipAcrossX) {
+    if (low.empty() || high.empty()) return;
+    const ParticleArrays& q = copied_ ? copy_ : p;
+    // Bands along the strip, each at least one reach long: two discs that touch are in the
+    // same band or in neighbouring ones (the first and the last are neighbours), three apart.
+    const double length = alongY ? box_.height : box_.width;
+    // No more bands than discs to sort into them: each band then holds one or two.
+    const std::int64_t bands = std::max<std::int64_t>(
+        3, std::min(cellsAcross(length, reach_), static_cast<std::int64_t>(high.size())));
+    const double perMetre = static_cast<double>(bands) / length;
+    const std::vector<double>& along = alongY ? q.y : q.x;
+    const auto bandOf = [&](std::uint32_t i) {
+        const double f = std::floor(along[i] * perMetre);
+        return static_cast<std::int64_t>(std::clamp(f, 0.0, static_cast<double>(bands - 1)));
+    };
+    bandStart_.assign(static_cast<std::size_t>(bands) + 1, 0);
+    for (const std::uint32_t j : high)
+        ++bandStart_[static_cast<std::size_t>(bandOf(j)) + 1];
+    for (std::size_t b = 0; b < static_cast<std::size_t>(bands); ++b)
+        bandStart_[b + 1] += bandStart_[b];
+    sortScratchCells_.assign(bandStart_.begin(), bandStart_.end() - 1);
+    bandEntries_.resize(high.size());
+    for (const std::uint32_t j : high)
+        bandEntries_[sortScratchCells_[static_cast<std::size_t>(bandOf(j))]++] = j;
+    const double* x = p.x.data();
+    const double* y = p.y.data();
+    const double* r = p.radius.data();
+    const double width = box_.width, height = box_.height;
+    const double halfWidth = 0.5 * width, halfHeight = 0.5 * height;
+    // Centres in the box (no copy) are less than a box apart: the nearest image is the
+    // separation or one box off it, as minimumImage gives it bit for bit, without its division
+    // and rounding. A copy's pairs are measured on the caller's centres, which may be further.
+    const bool inBox = !copied_;
+    const auto image = [](double d, double extent, double half) {
+        return std::abs(d) <= half ? d : d - std::copysign(extent, d);
+    };
+    // Room for every candidate of the three bands of each disc (the fullest band thrice), so
+    // that the loop below neither grows the list nor branches on it.
+    std::uint32_t fullest = 0;
+    for (std::size_t b = 0; b < static_cast<std::size_t>(bands); ++b)
+        fullest = std::max(fullest, bandStart_[b + 1] - bandStart_[b]);
+    std::size_t found = acrossEdges_.size();
+    acrossEdges_.resize(found + low.size() * 3 * fullest);
+    ContactPair* out = acrossEdges_.data();
+    // Tests i against the discs in slots [k0, k1) of the bands, branch-free: every candidate is
+    // written and kept (found advanced) only if it touches. The test is symmetric in i and j
+    // to the last bit; the pairs kept are put in (i < j) order below.
+    const auto testRange = [&](std::uint32_t i, std::uint32_t k0, std::uint32_t k1) {
+        for (std::uint32_t k = k0; k < k1; ++k) {
+            const std::uint32_t j = bandEntries_[k];
+            bool touch = false;
+            if (inBox) {
+                const double dx = image(x[j] - x[i], width, halfWidth);
+                const double dy = image(y[j] - y[i], height, halfHeight);
+                const double rs = r[i] + r[j];
+                touch = dx * dx + dy * dy < rs * rs;
+            } else {
+                touch = discsOverlapPeriodic(x, y, r, i, j, box_);
+            }
+            // Pairs across the sides as well as the top and bottom were found in the first pass.
+            if (skipAcrossX) touch = touch & (std::abs(q.x[j] - q.x[i]) <= halfWidth);
+            out[found] = {i, j};
+            found += static_cast<std::size_t>(touch);
+        }
+    };
+    const std::uint32_t* start = bandStart_.data();
+    const auto last = static_cast<std::size_t>(bands - 1);
+    for (const std::uint32_t i : low) {
+        // The band of i and its two neighbours: one run of slots, or two where they wrap.
+        const auto b = static_cast<std::size_t>(bandOf(i));
+        if (b == 0) {
+            testRange(i, start[0], start[2]);
+            testRange(i, start[last], start[last + 1]);
+        } else if (b == last) {
+            testRange(i, start[last - 1], start[last + 1]);
+            testRange(i, start[0], start[1]);
+        } else {
+            testRange(i, start[b - 1], start[b + 2]);
+        }
+    }
+    acrossEdges_.resize(found);
+    for (ContactPair& c : acrossEdges_) {
+        if (c.i > c.j) std::swap(c.i, c.j);
+    }
 }
 
 std::uint32_t PeriodicGridBroadPhase::cellOf(double x, double y) const {
@@ -217,27 +327,22 @@ void PeriodicGridBroadPhase::queryCells(const ParticleArrays& p, int chunk, std:
 void PeriodicGridBroadPhase::findPairs(const ParticleArrays& p, int threads,
                                        std::vector<ContactPair>& out) {
     const std::size_t n = p.size();
-    if (images_) {
-        found_.clear();
-        grid_.findPairs(copy_, threads, found_);
-        // Pairs of two particles come first and ascending; those with an image, far fewer, are
-        // sorted apart and merged in.
+    if (strips_) {
         const std::size_t before = out.size();
-        acrossEdges_.clear();
-        const double* x = p.x.data();
-        const double* y = p.y.data();
-        const double* r = p.radius.data();
-        for (const ContactPair& f : found_) {
-            if (f.i >= n) continue;  // two images (f.i < f.j)
-            if (f.j < n) {
-                if (discsOverlapPeriodic(x, y, r, f.i, f.j, box_)) out.push_back(f);
-                continue;
+        if (!copied_) {
+            grid_.findPairs(p, threads, out);
+        } else {
+            found_.clear();
+            grid_.findPairs(copy_, threads, found_);
+            for (const ContactPair& f : found_) {
+                if (discsOverlapPeriodic(p.x.data(), p.y.data(), p.radius.data(), f.i, f.j, box_))
+                    out.push_back(f);
             }
-            const std::uint32_t j = source_[f.j - n];
-            if (j == f.i) continue;  // a particle and its own image
-            const ContactPair pair{std::min(f.i, j), std::max(f.i, j)};
-            if (discsOverlapPeriodic(x, y, r, pair.i, pair.j, box_)) acrossEdges_.push_back(pair);
         }
+        // The pairs across the edges, far fewer, are sorted apart and merged in.
+        acrossEdges_.clear();
+        stripPairs(p, left_, right_, /*alongY=*/true, /*skipAcrossX=*/false);
+        stripPairs(p, bottom_, top_, /*alongY=*/false, /*skipAcrossX=*/true);
         std::sort(acrossEdges_.begin(), acrossEdges_.end());
         const std::size_t middle = out.size();
         out.insert(out.end(), acrossEdges_.begin(), acrossEdges_.end());
@@ -258,12 +363,16 @@ void PeriodicGridBroadPhase::findPairs(const ParticleArrays& p, int threads,
 }
 
 std::size_t PeriodicGridBroadPhase::memoryBytes() const {
-    return sizeof(std::uint32_t) *
+    std::size_t marked = 0;
+    for (const std::vector<std::uint32_t>& m : marked_)
+        marked += sizeof(std::uint32_t) * m.capacity();
+    return marked +
+           sizeof(std::uint32_t) *
                (cellOf_.capacity() + cellStart_.capacity() + entries_.capacity() +
-                sortScratchCells_.capacity() + source_.capacity()) +
-           sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity() +
-                             imageX_.capacity() + imageY_.capacity()) +
-           edge_.capacity() +
+                sortScratchCells_.capacity() + left_.capacity() + right_.capacity() +
+                bottom_.capacity() + top_.capacity() + bandStart_.capacity() +
+                bandEntries_.capacity()) +
+           sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity()) +
            sizeof(ContactPair) *
                (sortScratch_.capacity() + found_.capacity() + acrossEdges_.capacity()) +
            chunks_.memoryBytes() + grid_.memoryBytes();

@@ -1,33 +1,24 @@
 #pragma once
-// Uniform-grid broadphase for a periodic box (WorldDef::periodic): the cells tile the box
-// exactly and wrap, so the cell east of the last column is the first column, and every pair is
-// measured between its nearest images (support/periodic_box.hpp).
+// Uniform-grid broadphase for a periodic box (WorldDef::periodic): every pair is measured
+// between its nearest images (support/periodic_box.hpp).
 //
-//   cellOf[i]     cell of particle i (its centre wrapped into the box first: between the move
-//                 and the wrap stages a centre may be a step's travel outside it)
-//   cellStart[c]  first slot of cell c in `entries`, cellStart[c + 1] its end
-//   entries[k]    particle indices sorted by cell (counting sort, ascending within a cell)
-//
-// Cells are nx × ny, each at least one largest diameter wide (with slack for rounding), so two
-// overlapping discs are in the same cell or in neighbouring ones, across an edge too. The cell
-// count is capped at kCellsPerParticle per particle, as in the box grid (broad_phase_grid.hpp).
-//
-// Query, in a box at least three cells across each way (nearly every scene): the box grid
-// (broad_phase_grid.hpp) finds the pairs among the particles and images of those near two of
-// the edges, a half shell. A copy of every centre, wrapped into the box, and for a centre
-// within the contact reach of an edge an image shifted across the box: by +width for one near
-// the left edge, +height for one near the bottom, +width +height and +width −height for one
-// near the left edge and the bottom or top. For every separation s a pair can need (one of the
-// eight shifts), exactly one of s and −s is in that set, so a pair across an edge is found once,
-// between one particle and the other's image; pairs of two images repeat pairs of particles and
-// are dropped. The copy's radii are a hair larger (10⁻¹² of the box), so rounding in the
-// shifted coordinates never loses a pair, and every pair found is tested again between nearest
-// images on the world's own arrays: the pairs are the nearest-image ones bit for bit, whichever
-// path found them. The box grid's speed (its border ring, runs of three cells, windows and
-// bands) is kept, for one more copy of the centres a step and the images (about one particle
-// in √N). One pass over the particles writes the copy, the images and the copy's cells under
-// the box grid's last plan (kept while it fits, as for the cells the box's move stage writes),
-// so the grid does not read the positions again.
+// In a box at least three cells across each way (nearly every scene), the pairs come in three
+// sets that do not meet:
+//   - pairs that touch inside the box: the box grid (broad_phase_grid.hpp) over the particles
+//     themselves, with its speed (border ring, runs of three cells, windows and bands) and the
+//     cells the move stage wrote for it (cellsForMove), exactly as in a box with walls;
+//   - pairs that touch across the left and right edges: a disc within the contact reach of the
+//     left edge against those within it of the right one, the right strip sorted into rows at
+//     least one reach high, so each left disc meets three rows;
+//   - pairs that touch across the bottom and top edges (and not across the sides as well, which
+//     the second set holds): the same with columns.
+// Two discs that touch are less than a reach apart along each axis, and the box is at least
+// three reaches across, so a pair across an edge has one disc in each of the two strips, no pair
+// inside the box does, and the grid's plain distance is the nearest image's distance bit for
+// bit. About one particle in √N is in a strip. The move stage wraps the centres into the box
+// (discrete_step.hpp); a caller whose centres lie outside it (the broadphase is also used on
+// any state the library is handed) gets a wrapped copy measured the same way, and every pair it
+// finds tested again between nearest images on the particles themselves.
 //
 // In a box one or two cells across (a handful of particles), each cell is tested against itself
 // and against each of its eight neighbours whose index is higher, each once even where the
@@ -37,6 +28,7 @@
 // depend on the thread count.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <particle_sandbox/particle_arrays.hpp>
@@ -54,12 +46,27 @@ class PeriodicGridBroadPhase {
     static constexpr double kCellsPerParticle = 2.0;
 
     /// Chooses the cells for the box and the particles' radii (`stats`, measured on `p`), and
-    /// sorts the particles into them.
+    /// sorts the particles into them. `cellsFromMove`: the move stage wrote the cells of these
+    /// positions where cellsForMove() said.
     void build(const ParticleArrays& p, const periodic::Box& box, const ParticleStats& stats,
-               int threads);
+               int threads, bool cellsFromMove = false, bool marksFromMove = false);
     /// Appends every overlapping pair (i < j), measured between nearest images, in ascending
     /// (i, j) order.
     void findPairs(const ParticleArrays& p, int threads, std::vector<ContactPair>& out);
+    /// Where the move stage may write the cells of `n` wrapped centres for the next build, as
+    /// GridBroadPhase::cellsForMove; nothing in a box one or two cells across.
+    [[nodiscard]] std::optional<GridBroadPhase::MoveCells> cellsForMove(std::size_t n);
+    /// Where the move stage may list, per block, the particles within `reach` of an edge (or
+    /// outside the box) under the last plan, so that build() finds the strips without reading
+    /// the positions again; nothing in a box one or two cells across.
+    struct EdgeMarks {
+        std::vector<std::uint32_t>* marked = nullptr;  ///< one list per block of `n` particles
+        double reach = 0.0;
+    };
+    [[nodiscard]] std::optional<EdgeMarks> marksForMove(std::size_t n);
+    /// The box grid that finds the pairs inside the box (World's reorder sorts the particles
+    /// by its cells, the order it reads them in).
+    [[nodiscard]] GridBroadPhase& boxGrid() { return grid_; }
 
     [[nodiscard]] std::int64_t nx() const { return nx_; }
     [[nodiscard]] std::int64_t ny() const { return ny_; }
@@ -69,9 +76,17 @@ class PeriodicGridBroadPhase {
   private:
     [[nodiscard]] std::uint32_t cellOf(double x, double y) const;
     void queryCells(const ParticleArrays& p, int chunk, std::size_t begin, std::size_t end);
-    /// The copy of the centres and the half shell of images, for `reach` metres; what the box
-    /// grid needs to know of them, from the particles' `stats`.
-    ParticleStats buildImages(const ParticleArrays& p, const ParticleStats& stats, double reach);
+    /// The discs within `reach_` of each edge of `q` (centres in the box).
+    void collectStrips(const ParticleArrays& q);
+    /// The same from the lists of marked particles the move stage wrote.
+    void collectMarkedStrips(const ParticleArrays& q);
+    /// Pairs of `low` (near the low edge of one axis) and `high` (near the high edge), `high`
+    /// sorted into bands of the other axis; `skipAcrossX`: leave out pairs whose x separation
+    /// also crosses the box (the first pass found them).
+    void stripPairs(const ParticleArrays& p, const std::vector<std::uint32_t>& low,
+                    const std::vector<std::uint32_t>& high, bool alongY, bool skipAcrossX);
+    /// A wrapped copy of `p`'s centres, for a caller whose centres lie outside the box.
+    void wrapCopy(const ParticleArrays& p);
 
     periodic::Box box_;
     std::int64_t nx_ = 1, ny_ = 1;
@@ -80,13 +95,15 @@ class PeriodicGridBroadPhase {
     std::vector<std::uint32_t> sortScratchCells_;  ///< the counting sort's next slot per cell
     std::vector<ContactPair> sortScratch_;
     PairChunks chunks_;
-    // The half shell (boxes three cells across or more).
-    bool images_ = false;
-    ParticleArrays copy_;                  ///< x, y, radius: the centres wrapped, then the images
-    std::vector<std::uint32_t> source_;    ///< the particle each image is of
-    std::vector<double> imageX_, imageY_;  ///< the images' centres, before they join the copy
-    std::vector<std::uint8_t> edge_;       ///< per particle: its centre is off the interior
-    bool cellsWritten_ = false;            ///< buildImages wrote the copy's cells (the grid's plan)
+    // Boxes three cells across or more.
+    bool strips_ = false;
+    bool copied_ = false;  ///< the grid holds wrapped copies of the centres (copy_)
+    double reach_ = 0.0;   ///< the largest contact distance, with slack for rounding
+    ParticleArrays copy_;  ///< x, y, radius wrapped, when the caller's centres are not
+    std::vector<std::uint32_t> left_, right_, bottom_, top_;
+    std::vector<std::vector<std::uint32_t>> marked_;  ///< per block, the marked particles
+    double marksReach_ = -1.0;                        ///< the reach the lists were handed out for
+    std::vector<std::uint32_t> bandStart_, bandEntries_;
     GridBroadPhase grid_;
     std::vector<ContactPair> found_, acrossEdges_;
 };

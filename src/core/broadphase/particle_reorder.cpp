@@ -11,8 +11,10 @@ void reorderByCell(ParticleArrays& p, detail::IdTable& ids, StepContext& ctx) {
     // The top bit of a permutation entry marks a slot already filled.
     if (n < 2 || n >= (std::size_t{1} << 31)) return;
     const ParticleStats stats = measureParticles(p, ctx.threads, ctx.statsScratch);
-    ctx.grid.build(p, stats, ctx.threads);
-    const std::span<std::uint32_t> perm = ctx.grid.order();  // slot k receives old particle perm[k]
+    // The grid that will find the pairs, so that its cells come in the order it reads them.
+    GridBroadPhase& grid = p.periodic ? ctx.periodicGrid.boxGrid() : ctx.grid;
+    grid.build(p, stats, ctx.threads);
+    const std::span<std::uint32_t> perm = grid.order();  // slot k receives old particle perm[k]
     constexpr std::uint32_t kDone = 0x80000000u;
 
     // The obstacles stage's free discs (step_context.hpp) move with their particles.

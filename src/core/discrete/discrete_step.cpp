@@ -30,7 +30,7 @@ void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads
 }
 
 void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>* bounds,
-          const GridBroadPhase::MoveCells* cells) {
+          const GridBroadPhase::MoveCells* cells, const MoveWrap* wrap) {
     const std::size_t n = p.size();
     double* x = p.x.data();
     double* y = p.y.data();
@@ -38,7 +38,9 @@ void move(ParticleArrays& p, double dt, int threads, std::vector<ParticleStats>*
     const double* vy = p.vy.data();
     if (bounds) bounds->resize(parallel::blockCount(n));
     parallel::forBlocks(threads, n, [&](std::size_t b, std::size_t begin, std::size_t end) {
-        if (cells) {
+        if (wrap) {
+            moveAndWrapBlock(p, dt, *wrap, cells, begin, end);
+        } else if (cells) {
             // The cell of each particle as it moves, under the grid's last plan.
             const GridBroadPhase::CellMap map = cells->map;
             std::uint32_t* cellOf = cells->cellOf;
@@ -70,7 +72,8 @@ void turn(ParticleArrays& p, double dt) {
 void findPairs(const ParticleArrays& p, StepContext& ctx) {
     ctx.pairs.clear();
     const bool statsFresh = ctx.statsFresh, cellsFresh = ctx.cellsFresh;
-    ctx.statsFresh = ctx.cellsFresh = false;
+    const bool marksFresh = ctx.marksFresh;
+    ctx.statsFresh = ctx.cellsFresh = ctx.marksFresh = false;
     if (p.size() < 2) {
         ctx.broadPhaseUsed = chooseBroadPhase(ctx.broadPhase, p, ParticleStats{});
         return;
@@ -81,7 +84,7 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     if (ctx.periodic) {
         switch (ctx.broadPhaseUsed) {
             case BroadPhaseKind::Grid:
-                ctx.periodicGrid.build(p, ctx.box, stats, ctx.threads);
+                ctx.periodicGrid.build(p, ctx.box, stats, ctx.threads, cellsFresh, marksFresh);
                 ctx.periodicGrid.findPairs(p, ctx.threads, ctx.pairs);
                 break;
             case BroadPhaseKind::Quadtree:
@@ -111,20 +114,112 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     }
 }
 
-void wrap(ParticleArrays& p, const WorldDef& def, int threads) {
-    const std::size_t n = p.size();
+void wrapBlock(ParticleArrays& p, const MoveWrap& wrap, std::size_t begin, std::size_t end) {
     double* x = p.x.data();
     double* y = p.y.data();
     double* ux = p.unwrapX.data();
     double* uy = p.unwrapY.data();
-    const double w = def.width, h = def.height;
-    parallel::forChunks(threads, parallel::chunksFor(threads, n), n,
-                        [=](int, std::size_t begin, std::size_t end) {
-                            for (std::size_t i = begin; i < end; ++i) {
-                                periodic::wrapInto(x[i], ux[i], w);
-                                periodic::wrapInto(y[i], uy[i], h);
-                            }
-                        });
+    for (std::size_t i = begin; i < end; ++i) {
+        const double ox = x[i], oy = y[i];
+        periodic::wrapInto(x[i], ux[i], wrap.width);
+        periodic::wrapInto(y[i], uy[i], wrap.height);
+        if (wrap.startX && (x[i] != ox || y[i] != oy)) {
+            // The sweep against the obstacles starts where the centre started, moved with it.
+            wrap.startX[i] += x[i] - ox;
+            wrap.startY[i] += y[i] - oy;
+        }
+    }
+}
+
+void moveAndWrapBlock(ParticleArrays& p, double dt, const MoveWrap& wrap,
+                      const GridBroadPhase::MoveCells* cells, std::size_t begin, std::size_t end) {
+    double* x = p.x.data();
+    double* y = p.y.data();
+    const double* vx = p.vx.data();
+    const double* vy = p.vy.data();
+    if (!wrap.marked) {
+        for (std::size_t i = begin; i < end; ++i) {
+            x[i] += vx[i] * dt;
+            y[i] += vy[i] * dt;
+        }
+        wrapBlock(p, wrap, begin, end);
+        if (cells) {
+            for (std::size_t i = begin; i < end; ++i)
+                cells->cellOf[i] = cells->map.cellOf(x[i], y[i]);
+        }
+        return;
+    }
+    // Per run of kMarkRun particles: one branch-free pass moves the centres and marks those
+    // within `reach` of an edge or outside the box (it vectorises), then the few marked are
+    // listed and wrapped. The marks are on the stack, a run's worth: they stay in cache.
+    const double reach = wrap.reach, right = wrap.width - reach, top = wrap.height - reach;
+    constexpr std::size_t kMarkRun = 256;
+    double marks[kMarkRun];
+    double* ux = p.unwrapX.data();
+    double* uy = p.unwrapY.data();
+    std::vector<std::uint32_t>& marked = wrap.marked[begin / parallel::kBlock];
+    marked.clear();
+    for (std::size_t run = begin; run < end; run += kMarkRun) {
+        const std::size_t count = std::min(kMarkRun, end - run);
+        {
+            // Distinct arrays (a store could alias a coordinate otherwise, and the loop would
+            // not vectorise).
+            double* __restrict mx = x + run;
+            double* __restrict my = y + run;
+            const double* __restrict mvx = vx + run;
+            const double* __restrict mvy = vy + run;
+            double* __restrict mark = marks;
+            for (std::size_t k = 0; k < count; ++k) {
+                const double xi = mx[k] + mvx[k] * dt;
+                const double yi = my[k] + mvy[k] * dt;
+                mx[k] = xi;
+                my[k] = yi;
+                // Doubles, not booleans: with SSE2 only a compare of doubles that gives a
+                // double vectorises. NaN is near no edge (and is not wrapped).
+                mark[k] = (xi < reach ? 1.0 : 0.0) + (xi >= right ? 1.0 : 0.0) +
+                          (yi < reach ? 1.0 : 0.0) + (yi >= top ? 1.0 : 0.0);
+            }
+        }
+        for (std::size_t k = 0; k < count; ++k) {
+            if (marks[k] == 0.0) continue;
+            const std::size_t i = run + k;
+            marked.push_back(static_cast<std::uint32_t>(i));
+            const double ox = x[i], oy = y[i];
+            periodic::wrapInto(x[i], ux[i], wrap.width);
+            periodic::wrapInto(y[i], uy[i], wrap.height);
+            if (wrap.startX && (x[i] != ox || y[i] != oy)) {
+                wrap.startX[i] += x[i] - ox;
+                wrap.startY[i] += y[i] - oy;
+            }
+        }
+    }
+    if (cells) {
+        const GridBroadPhase::CellMap map = cells->map;
+        std::uint32_t* cellOf = cells->cellOf;
+        for (std::size_t i = begin; i < end; ++i)
+            cellOf[i] = map.cellOf(x[i], y[i]);
+    }
+}
+
+void wrap(ParticleArrays& p, const WorldDef& def, int threads) {
+    const std::size_t n = p.size();
+    const MoveWrap w{def.width, def.height};
+    parallel::forChunks(
+        threads, parallel::chunksFor(threads, n), n,
+        [&](int, std::size_t begin, std::size_t end) { wrapBlock(p, w, begin, end); });
+}
+
+void wrapPairs(ParticleArrays& p, const WorldDef& def, const std::vector<ContactPair>& pairs) {
+    double* x = p.x.data();
+    double* y = p.y.data();
+    double* ux = p.unwrapX.data();
+    double* uy = p.unwrapY.data();
+    for (const ContactPair& c : pairs) {
+        for (const std::uint32_t i : {c.i, c.j}) {
+            periodic::wrapInto(x[i], ux[i], def.width);
+            periodic::wrapInto(y[i], uy[i], def.height);
+        }
+    }
 }
 
 void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext& ctx,
@@ -153,13 +248,29 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
         StageTimer t(moveMs);
         // While the grid is in use, move also writes each particle's cell under the grid's last
         // plan, which findPairs keeps while it fits (broad_phase_grid.hpp, plan reuse).
-        const auto cells = ctx.broadPhaseUsed == BroadPhaseKind::Grid && !ctx.periodic
-                               ? ctx.grid.cellsForMove(p.size())
-                               : std::nullopt;
-        move(p, dt, ctx.threads, &ctx.statsScratch, cells ? &*cells : nullptr);
+        const bool grid = ctx.broadPhaseUsed == BroadPhaseKind::Grid;
+        const auto cells = !grid          ? std::nullopt
+                           : ctx.periodic ? ctx.periodicGrid.cellsForMove(p.size())
+                                          : ctx.grid.cellsForMove(p.size());
+        // In a periodic box, move wraps each centre as it moves it, so that the broadphase finds
+        // the pairs inside the box as in a box with walls (broad_phase_periodic_grid.hpp).
+        MoveWrap wrapping{def.width, def.height};
+        if (obstaclesPresent) {
+            wrapping.startX = ctx.startX.data();
+            wrapping.startY = ctx.startY.data();
+        }
+        const auto marks =
+            def.periodic && grid ? ctx.periodicGrid.marksForMove(p.size()) : std::nullopt;
+        if (marks) {
+            wrapping.reach = marks->reach;
+            wrapping.marked = marks->marked;
+        }
+        move(p, dt, ctx.threads, &ctx.statsScratch, cells ? &*cells : nullptr,
+             def.periodic ? &wrapping : nullptr);
         turn(p, dt);
         ctx.statsFresh = p.size() > 0;
         ctx.cellsFresh = cells.has_value();
+        ctx.marksFresh = marks.has_value();
     }
     {
         StageTimer t(findPairsMs);
@@ -183,8 +294,10 @@ void discreteStep(ParticleArrays& p, const WorldDef& def, double dt, StepContext
         walls(p, def, ctx, counters);
     }
     if (def.periodic) {
+        // Only separate and obstacles move centres after move wrapped them: the pairs' discs,
+        // or with obstacles every disc.
         StageTimer t(profile.stage("wrap"));
-        wrap(p, def, ctx.threads);
+        obstaclesPresent ? wrap(p, def, ctx.threads) : wrapPairs(p, def, ctx.pairs);
     }
     ++counters.steps;
 }

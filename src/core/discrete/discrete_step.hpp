@@ -11,14 +11,14 @@
 //   (* skipped when the world has no gravity / no walls; friction math is compiled out of
 //    resolve and walls when the friction coefficient is zero.)
 //
-// Periodic boxes (WorldDef::periodic). The walls stage gives way to `wrap`, which brings every
-// centre back into [0, width) × [0, height) and adds what it took off to the particle's
-// unwrapped offset (ParticleArrays::unwrapX, unwrapY). Until then a centre may be a step's
-// travel outside the box: find pairs, resolve and separate measure every pair between nearest
-// images (support/periodic_box.hpp), which does not care, and the broadphases find pairs
-// across the edges (the grid whose cells wrap, broad_phase_periodic_grid.hpp; the quadtree's
-// images; all-pairs). Each is a separate instance or path, so a world that is not periodic
-// runs exactly the code it ran before periodic boxes existed.
+// Periodic boxes (WorldDef::periodic). Move brings every centre it moves back into
+// [0, width) × [0, height) and adds what it took off to the particle's unwrapped offset
+// (ParticleArrays::unwrapX, unwrapY); the walls stage gives way to `wrap`, which does the same
+// for the discs separate (or obstacles) pushed over an edge. Find pairs, resolve and separate
+// measure every pair between nearest images (support/periodic_box.hpp), and the broadphases
+// find pairs across the edges (the box grid inside the box and strips along the edges,
+// broad_phase_periodic_grid.hpp; the quadtree's images; all-pairs). Each is a separate instance or
+// path, so a world that is not periodic runs exactly the code it ran before periodic boxes existed.
 //   († only in a world that keeps rotation. With friction and rotation, resolve, obstacles
 //    and walls run the rough contacts of contact.hpp, which turn the discs: rolling is what
 //    those contact passes make of a disc pressed onto a surface, step after step.)
@@ -56,12 +56,28 @@ namespace psb::stages {
 // does not depend on the thread count.
 
 void applyGravity(ParticleArrays& p, const Vec2& gravity, double dt, int threads = 1);
-/// Moves every particle by v·dt. With `bounds`, also measures the moved particles per block
-/// (for combineBlocks), and with `cells`, writes each particle's grid cell: both while the
-/// particle is in cache, saving the broadphase passes over memory.
+/// A periodic box for move() to wrap the centres into as it moves them.
+struct MoveWrap {
+    double width = 0.0, height = 0.0;  ///< metres
+    /// The obstacles stage's start positions (saveStartPositions), moved with their centres
+    /// when those wrap, or null.
+    double* startX = nullptr;
+    double* startY = nullptr;
+    /// Where to list, one list per block of parallel::forBlocks, the particles whose centres
+    /// are within `reach` metres of an edge or outside the box, for the periodic grid's strips
+    /// (PeriodicGridBroadPhase::marksForMove); or null. A non-finite centre is near no edge:
+    /// it is not wrapped either.
+    std::vector<std::uint32_t>* marked = nullptr;
+    double reach = 0.0;
+};
+
+/// Moves every particle by v·dt. With `wrap`, brings each centre back into the periodic box
+/// (as wrap() does); with `bounds`, also measures the moved particles per block (for
+/// combineBlocks), and with `cells`, writes each particle's grid cell: all while the particle
+/// is in cache, saving the broadphase passes over memory.
 void move(ParticleArrays& p, double dt, int threads = 1,
           std::vector<ParticleStats>* bounds = nullptr,
-          const GridBroadPhase::MoveCells* cells = nullptr);
+          const GridBroadPhase::MoveCells* cells = nullptr, const MoveWrap* wrap = nullptr);
 /// Turns every particle by ω·dt, in a world that keeps rotation (ParticleArrays::rotation;
 /// nothing otherwise). Timed with move: a particle's angle moves as its centre does.
 void turn(ParticleArrays& p, double dt);
@@ -85,6 +101,15 @@ void walls(ParticleArrays& p, const WorldDef& def, StepContext& ctx, StepCounter
 /// Periodic boxes: wraps every centre into [0, width) × [0, height), keeping what it took off
 /// in the unwrap arrays.
 void wrap(ParticleArrays& p, const WorldDef& def, int threads = 1);
+/// Moves particles [begin, end) by v·dt and wraps them, marking and writing cells as `wrap`
+/// and `cells` ask (move's periodic path).
+void moveAndWrapBlock(ParticleArrays& p, double dt, const MoveWrap& wrap,
+                      const GridBroadPhase::MoveCells* cells, std::size_t begin, std::size_t end);
+/// wrap() for particles [begin, end), moving the start positions `wrap` names with them.
+void wrapBlock(ParticleArrays& p, const MoveWrap& wrap, std::size_t begin, std::size_t end);
+/// wrap() for the discs of `pairs` only: after move wrapped every centre, separate moves no
+/// others.
+void wrapPairs(ParticleArrays& p, const WorldDef& def, const std::vector<ContactPair>& pairs);
 
 /// Copies the positions at the start of the step into ctx.startX/startY, where the obstacles
 /// stage's sweep begins.

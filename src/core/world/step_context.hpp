@@ -33,6 +33,7 @@ struct StepContext {
     std::vector<ParticleStats> statsScratch;  ///< per-block bounds
     bool statsFresh = false;  ///< statsScratch describes the current positions (set by move)
     bool cellsFresh = false;  ///< move wrote the grid's cells for the current positions
+    bool marksFresh = false;  ///< move marked the centres near the periodic box's edges
     std::vector<double> wallImpulseScratch;
     std::vector<std::uint64_t> wallHitScratch;
     // The obstacles stage (discrete_obstacles.cpp); untouched in a world without obstacles.

@@ -126,6 +126,60 @@ TEST_P(PeriodicModes, MomentumIsConservedInAGasWithoutWalls) {
     EXPECT_NEAR(momentum().y(), before.y(), 1e-12);
 }
 
+TEST_P(PeriodicModes, DiscsAmongPegsCrossTheEdgesAndNeverEndAStepInAPeg) {
+    // A Lorentz gas of many discs: in the discrete modes the move stage wraps a centre as it
+    // moves it, and the obstacles stage's sweep must start from where the centre started,
+    // moved with it across the edge.
+    WorldDef def;
+    def.width = def.height = 8.0;
+    def.periodic = true;
+    Obstacles pegs;
+    for (int i = 0; i < 4; ++i) {
+        for (int j = 0; j < 4; ++j)
+            pegs.push_back(Obstacle::peg({1.0 + 2.0 * i, 1.0 + 2.0 * j}, 0.6));
+    }
+    def.obstacles = pegs;
+    SolverSettings solver;
+    solver.mode = GetParam();
+    solver.substeps = GetParam() == StepMode::Substep ? 4 : 1;
+    solver.broadphase = BroadPhaseKind::Grid;
+    World w(def, solver);
+    w.setThreads(1);
+    std::uint64_t seed = 7;
+    const auto uniform = [&seed] {
+        seed = seed * 6364136223846793005ull + 1442695040888963407ull;
+        return static_cast<double>(seed >> 11) * 0x1.0p-53;
+    };
+    for (int k = 0; k < 300; ++k) {
+        // On the lines between the pegs' rows and columns, clear of them.
+        const double along = 8.0 * uniform();
+        const Vec2 at = k % 2 == 0 ? Vec2(along, 2.0 * (k % 4 == 0 ? 0.0 : 1.0))
+                                   : Vec2(2.0 * ((k / 2) % 4), along);
+        w.add(disc(at, {6.0 * uniform() - 3.0, 6.0 * uniform() - 3.0}, 0.04));
+    }
+    double closest = INFINITY, travelled = 0.0;
+    for (int step = 0; step < 200; ++step) {
+        w.step(0.02);
+        const ParticleArrays& p = w.particles();
+        for (std::size_t i = 0; i < p.size(); ++i) {
+            ASSERT_GE(p.x[i], 0.0);
+            ASSERT_LT(p.x[i], def.width);
+            ASSERT_GE(p.y[i], 0.0);
+            ASSERT_LT(p.y[i], def.height);
+            for (const Obstacle& o : pegs) {
+                closest = std::min(closest, std::hypot(p.x[i] - o.a.x(), p.y[i] - o.a.y()) -
+                                                o.radius - p.radius[i]);
+            }
+        }
+    }
+    const ParticleArrays& p = w.particles();
+    for (std::size_t i = 0; i < p.size(); ++i)
+        travelled = std::max(travelled, std::hypot(p.unwrapX[i], p.unwrapY[i]));
+    EXPECT_GT(w.counters().obstacleCollisions, 300u);
+    EXPECT_GT(closest, -1e-9);
+    EXPECT_GT(travelled, 8.0) << "discs crossed the edges";
+}
+
 INSTANTIATE_TEST_SUITE_P(AllModes, PeriodicModes,
                          ::testing::Values(StepMode::Discrete, StepMode::Substep, StepMode::Exact),
                          [](const auto& p) { return std::string(toString(p.param)); });
