@@ -25,6 +25,7 @@ nlohmann::ordered_json observablesJson(const ObservablesResult& o) {
     put("compressibility_factor", o.compressibilityFactor);
     put("contact_value", o.contactValue);
     put("collision_rate", o.collisionRate);
+    put("wall_collision_rate", o.wallCollisionRate);
     put("mean_free_path", o.meanFreePath);
     put("diffusion_msd", o.diffusionMsd);
     put("diffusion_vacf", o.diffusionVacf);

@@ -205,6 +205,28 @@ TEST(Report, ListsPotentialAndMechanicalEnergyOnlyWithGravity) {
     EXPECT_FALSE(none.contains("mechanical_energy"));
 }
 
+TEST(Report, ObservablesGiveTheWallsCollisionRateAsTheWallRebounds) {
+    // One disc between two walls 10 m apart, at 2 m/s along x: a rebound every 4.5 s (it
+    // travels 9 m between the walls, its radius being 0.5 m). With --observables the report
+    // says how many rebounds a second the whole box's walls took, as the window does.
+    const std::string scene = R"({"version": 6, "world": {"width": 10, "height": 10,
+        "walls": true}, "solver": {"mode": "exact", "dt": 0.5},
+        "particles": [{"x": 5, "y": 5, "vx": 2, "vy": 0, "mass": 1, "radius": 0.5}]})";
+    RunOptions o;
+    o.observables = true;
+    const RunReport r = run(scene, 90.0, o);
+    const auto j = nlohmann::json::parse(reportJson(r));
+    ASSERT_TRUE(j.at("observables").contains("wall_collision_rate"));
+    const double rate = j.at("observables").at("wall_collision_rate").at("value");
+    EXPECT_NEAR(rate, 1.0 / 4.5, 0.03);
+    EXPECT_EQ(r.wallCollisions, 20u);
+    const auto periodic = nlohmann::json::parse(reportJson(run(R"({"version": 6, "world":
+        {"width": 10, "height": 10, "periodic": true}, "solver": {"mode": "exact", "dt": 0.5},
+        "particles": [{"x": 5, "y": 5, "vx": 2, "vy": 0, "mass": 1, "radius": 0.5}]})",
+                                                               90.0, o)));
+    EXPECT_FALSE(periodic.at("observables").contains("wall_collision_rate"));
+}
+
 TEST(Report, HasEveryFieldWithItsValue) {
     RunOptions o;
     o.threads = 3;
