@@ -29,6 +29,7 @@ const std::vector<std::pair<const char*, Measured ObservablesResult::*>>& measur
         {"compressibility_factor", &ObservablesResult::compressibilityFactor},
         {"contact_value", &ObservablesResult::contactValue},
         {"collision_rate", &ObservablesResult::collisionRate},
+        {"wall_collision_rate", &ObservablesResult::wallCollisionRate},
         {"mean_free_path", &ObservablesResult::meanFreePath},
         {"diffusion_msd", &ObservablesResult::diffusionMsd},
         {"diffusion_vacf", &ObservablesResult::diffusionVacf},

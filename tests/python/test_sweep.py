@@ -62,7 +62,7 @@ def test_a_run_measures_what_particle_sim_reports(tmp_path, gas):
         [sim, str(path), "--seed", "5", "--set", "world.restitution=0.95", "--duration", "2",
          "--warmup", "0.1", "--observables"], check=True, capture_output=True, text=True).stdout)
     row = _core._run_scene(GAS, str(path), [("world.restitution", "0.95")], 2.0, 0.1, 5)
-    for name in ("temperature", "pressure_virial", "collision_rate"):
+    for name in ("temperature", "pressure_virial", "collision_rate", "wall_collision_rate"):
         assert row[name] == report["observables"][name]["value"], name
         assert row[name + "_error"] == report["observables"][name]["error"], name
     assert row["steps"] == report["steps"]
