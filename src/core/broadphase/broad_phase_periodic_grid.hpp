@@ -8,10 +8,14 @@
 //     themselves, with its speed (border ring, runs of three cells, windows and bands) and the
 //     cells the move stage wrote for it (cellsForMove), exactly as in a box with walls;
 //   - pairs that touch across the left and right edges: a disc within the contact reach of the
-//     left edge against those within it of the right one, the right strip sorted into rows at
-//     least one reach high, so each left disc meets three rows;
+//     left edge against those within it of the right one, the right strip sorted into bands at
+//     least one reach long (no more bands than discs), so each left disc meets three bands,
+//     one run of slots (two where they wrap), tested without a branch;
 //   - pairs that touch across the bottom and top edges (and not across the sides as well, which
-//     the second set holds): the same with columns.
+//     the second set holds): the same along the other axis.
+// The discs near the edges are listed by the move stage as it wraps the centres
+// (marksForMove), so finding them reads no position again; without its lists (the first step,
+// larger discs added) build() finds them itself.
 // Two discs that touch are less than a reach apart along each axis, and the box is at least
 // three reaches across, so a pair across an edge has one disc in each of the two strips, no pair
 // inside the box does, and the grid's plain distance is the nearest image's distance bit for
