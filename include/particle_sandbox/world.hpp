@@ -155,7 +155,9 @@ class World {
     [[nodiscard]] bool isKinematic(ParticleId id) const;
 
     /// The topmost particle (the one drawn last: highest storage index) whose disc contains
-    /// `point`. Until a world reaches 4096 particles storage order is insertion order.
+    /// `point`. Until a world reaches 4096 particles storage order is insertion order. In a
+    /// periodic box, also a disc whose image across an edge contains it, where the disc crosses
+    /// that edge (where the app draws the image).
     [[nodiscard]] std::optional<ParticleId> pick(const Vec2& point) const;
 
     /// The particle's centre as if the box's edges had never wrapped it: its position plus

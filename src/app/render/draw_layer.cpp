@@ -39,7 +39,14 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
     }
     for (const DropperView& d : frame.droppers)
         drawDropper(camera, d, colours);
-    if (frame.selected) drawSelectionOutline(sdl_, camera, *frame.selected, colours);
+    if (frame.selected) {
+        drawSelectionOutline(sdl_, camera, *frame.selected, colours);
+        for (const Vec2& offset : frame.selectedImages) {
+            Particle image = *frame.selected;
+            image.position += offset;
+            drawSelectionOutline(sdl_, camera, image, colours);
+        }
+    }
     if (frame.selectedObstacle || frame.obstaclePreview) drawObstacleMarks(camera, frame);
     analysis_.draw(sdl_, labelFont_, world, frame.now, camera, *frame.series, frame.rateWindow,
                    frame.view, frame.layout, frame.bins);

@@ -155,6 +155,13 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
     f.periodic = periodicBoxView(world, session.camera());
+    if (f.periodic && f.selected) {
+        if (const std::optional<std::size_t> at = world.indexOf(f.selected->id)) {
+            for (const PeriodicImage& image : f.periodic->images) {
+                if (image.index == *at) f.selectedImages.push_back(image.offset);
+            }
+        }
+    }
     f.gas = session.gasReading();
     if (f.gas) f.pressurePlot = pressurePlotLine(session.gasHistory());
     if (session.view().collision) f.collision = session.lastCollision();

@@ -74,6 +74,9 @@ struct FrameView {
     /// A periodic box: its dashed edges and the discs drawn again across them
     /// (view/periodic_box.hpp); nullopt for a box with walls or none.
     std::optional<PeriodicBoxView> periodic;
+    /// Where the selected particle is drawn again across the periodic box's edges: metres added
+    /// to its centre (its images' offsets), each outlined as the particle is.
+    std::vector<Vec2> selectedImages;
     std::optional<RecordingMarkView> recordingMark;
     /// The gas instruments' reading, when they apply (the panel's Readouts show it).
     std::optional<GasReading> gas;

@@ -11,6 +11,7 @@
 #include "discrete/discrete_step.hpp"
 #include "exact/stepper.hpp"
 #include "obstacles/obstacle_validate.hpp"
+#include "support/periodic_box.hpp"
 #include "world/dropper_stage.hpp"
 #include "world/periodic_fit.hpp"
 #include "world/stage_timer.hpp"
@@ -571,9 +572,27 @@ std::optional<ParticleId> World::pick(const Vec2& point) const {
     if (!std::isfinite(point.x()) || !std::isfinite(point.y())) return std::nullopt;
     settle();
     // Storage order is drawing order, so the topmost particle is the last one that contains it.
+    if (!def_.periodic) {
+        for (std::size_t i = p_.size(); i-- > 0;) {
+            const double dx = point.x() - p_.x[i], dy = point.y() - p_.y[i];
+            if (dx * dx + dy * dy <= p_.radius[i] * p_.radius[i]) return p_.id[i];
+        }
+        return std::nullopt;
+    }
+    // A periodic box: the disc or the image of it that contains the point, where an image is
+    // drawn (the disc crosses the edge it is drawn across), so that a click on any part of a
+    // disc seen over an edge picks it.
+    const periodic::Box box{def_.width, def_.height};
     for (std::size_t i = p_.size(); i-- > 0;) {
-        const double dx = point.x() - p_.x[i], dy = point.y() - p_.y[i];
-        if (dx * dx + dy * dy <= p_.radius[i] * p_.radius[i]) return p_.id[i];
+        const double sx = point.x() - p_.x[i], sy = point.y() - p_.y[i];
+        const double dx = box.imageX(sx), dy = box.imageY(sy);
+        const double r = p_.radius[i];
+        if (dx * dx + dy * dy > r * r) continue;
+        const double ox = sx - dx, oy = sy - dy;  // the image's offset, whole boxes
+        const bool drawn =
+            (ox == 0.0 || (ox > 0.0 ? p_.x[i] - r < 0.0 : p_.x[i] + r > def_.width)) &&
+            (oy == 0.0 || (oy > 0.0 ? p_.y[i] - r < 0.0 : p_.y[i] + r > def_.height));
+        if (drawn) return p_.id[i];
     }
     return std::nullopt;
 }

@@ -145,5 +145,29 @@ TEST(PeriodicBox, TheFrameListsTheImagesAndTheDashesOfAPeriodicScene) {
     EXPECT_FALSE(buildFrame(walled, FrameStats{}, font, font, {310.0, 44.0}).periodic);
 }
 
+TEST(PeriodicBox, TheSelectedDiscIsOutlinedAtItsImagesToo) {
+    // The disc over the top-right corner is drawn four times; selected, each of its three
+    // images is outlined as it is. The disc in the middle has no image to outline.
+    SessionOptions o;
+    o.paused = true;
+    o.viewportWidth = 800;
+    o.viewportHeight = 800;
+    Session s(periodicWorld(), SceneInfo{.name = "periodic", .dt = 1.0 / 60.0}, o);
+    const test::FixedMeasure font;
+    s.apply(cmd::Select{s.world().ids()[3]});
+    FrameView f = buildFrame(s, FrameStats{}, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.selected.has_value());
+    ASSERT_EQ(f.selectedImages.size(), 3u);
+    for (const Vec2& offset : {Vec2(-10.0, 0.0), Vec2(0.0, 8.0), Vec2(-10.0, 8.0)}) {
+        EXPECT_TRUE(std::any_of(f.selectedImages.begin(), f.selectedImages.end(),
+                                [&](const Vec2& m) { return (m - offset).norm() < 1e-12; }))
+            << offset.transpose();
+    }
+    s.apply(cmd::Select{s.world().ids()[0]});
+    f = buildFrame(s, FrameStats{}, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.selected.has_value());
+    EXPECT_TRUE(f.selectedImages.empty());
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -193,6 +193,22 @@ std::string refusal(auto&& f) {
     return "(accepted)";
 }
 
+TEST(PeriodicWorld, APointOnADiscsImageAcrossAnEdgePicksIt) {
+    // A disc over the right edge of a 10 m box is seen again over the left edge: a point on
+    // that part, inside the box or outside it, picks the disc. A point where the image of a disc
+    // that crosses no edge would be (nothing is drawn there) picks nothing.
+    World w = periodicWorld(StepMode::Discrete, 10.0, 8.0);
+    const ParticleId over = w.add(disc({9.7, 4.0}, {0.0, 0.0}, 0.8));
+    const ParticleId inside = w.add(disc({3.0, 6.0}, {0.0, 0.0}, 0.5));
+    EXPECT_EQ(w.pick({9.7, 4.0}), over);
+    EXPECT_EQ(w.pick({0.3, 4.0}), over);   // the image's part inside the box
+    EXPECT_EQ(w.pick({-0.2, 4.0}), over);  // the image itself, outside the box
+    EXPECT_EQ(w.pick({10.3, 4.0}), over);  // the disc's own part over the edge
+    EXPECT_EQ(w.pick({3.0, 6.0}), inside);
+    EXPECT_FALSE(w.pick({13.0, 6.0}).has_value());  // inside's image would be here: not drawn
+    EXPECT_FALSE(w.pick({5.0, 2.0}).has_value());
+}
+
 TEST(PeriodicWorld, HasNoWallsAndRefusesToBeGivenThem) {
     World w = periodicWorld(StepMode::Exact);
     EXPECT_FALSE(w.def().walls);
