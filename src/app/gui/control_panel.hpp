@@ -124,7 +124,8 @@ class ControlPanel {
     void lastCollision(const Session& s);
     void card(const Session& s);
     /// The momenta diagram under the card (view/momenta_diagram.hpp).
-    void momenta(const CollisionCard& card);
+    /// `balls`: the two particles' colours as the box draws them (momentaColours).
+    void momenta(const CollisionCard& card, const std::array<Color, 2>& balls);
     /// The values table's window, while shown (section_values.cpp), docked in its band at
     /// `pointPixels` pixels per point of the UI.
     void valuesWindow(const Session& s, float pointPixels);

@@ -84,7 +84,7 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     box.clear();
     const float lx = static_cast<float>(legend.x), ly = static_cast<float>(legend.y);
     box.quad(lx, ly, lx + static_cast<float>(legend.w), ly + static_cast<float>(legend.h),
-             sdlColor(colours.panel, 190));
+             sdlColor(colours.panel));
     box.draw(renderer, nullptr);
     const std::vector<std::string> lines = momentumLegend(world, now, arrowSeconds, axes);
     const SDL_Color colors[3] = {sum, each, cm};

@@ -14,12 +14,12 @@ class PanelBatch {
   public:
     PanelBatch(const Font& font, const Palette& colours) : font_(font), colours_(colours) {}
 
-    void add(const std::vector<std::string>& ls, const PixelRect& box, Uint8 alpha = 215) {
+    void add(const std::vector<std::string>& ls, const PixelRect& box) {
         if (box.w <= 0 || ls.empty()) return;
         // Dark enough that arrows and discs under a panel do not break up its text.
         boxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
                     static_cast<float>(box.x + box.w), static_cast<float>(box.y + box.h),
-                    sdlColor(colours_.panel, alpha));
+                    sdlColor(colours_.panel));
         const float lh = static_cast<float>(font_.lineHeight());
         for (std::size_t k = 0; k < ls.size(); ++k) {
             font_.layout(ls[k], static_cast<float>(box.x + 4),
@@ -50,16 +50,16 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
     const std::vector<std::string>& hud = o.messagesAfterCapture ? o.hudRecorded : o.hud;
     const PixelPoint hudSize = textBoxSize(font, hud);
     panels.add(hud, PixelRect{layout.hud.x, layout.hud.y, hudSize.x, hudSize.y});
-    if (o.showProfile) panels.add(o.profile, layout.profile, 200);
+    if (o.showProfile) panels.add(o.profile, layout.profile);
     if (!o.messagesAfterCapture) panels.add(o.messages, layout.messages);
-    panels.add(o.inspector, layout.inspector, 200);
+    panels.add(o.inspector, layout.inspector);
     panels.draw(renderer);
     if (o.showHelp) {
         // The help is asked for and read, then closed: it covers the other panels meanwhile,
         // their text included (drawn after them, opaque: at 245 the HUD's lines showed through
         // its first ones).
         const PixelPoint size = textBoxSize(font, o.help);
-        panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y}, 255);
+        panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y});
         panels.draw(renderer);
     }
 }
@@ -73,7 +73,7 @@ void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
     // longer: its end showed beside the screen's HUD).
     const PixelPoint screen = textBoxSize(font, o.hud), video = textBoxSize(font, o.hudRecorded);
     const PixelPoint hudSize{std::max(screen.x, video.x), std::max(screen.y, video.y)};
-    panels.add(o.hud, PixelRect{layout.hud.x, layout.hud.y, hudSize.x, hudSize.y}, 255);
+    panels.add(o.hud, PixelRect{layout.hud.x, layout.hud.y, hudSize.x, hudSize.y});
     panels.add(o.messages, layout.messages);
     panels.draw(renderer);
 }

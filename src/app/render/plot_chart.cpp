@@ -20,7 +20,7 @@ ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& box
     const ChartFrame f{static_cast<float>(box.x), static_cast<float>(box.y),
                        static_cast<float>(box.w), static_cast<float>(box.h),
                        static_cast<float>(font.lineHeight())};
-    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, sdlColor(colours.panel, 190));
+    boxes.quad(f.x, f.y, f.x + f.w, f.y + f.h, sdlColor(colours.panel));
     return f;
 }
 
@@ -56,7 +56,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     const float lh = static_cast<float>(font.lineHeight());
     const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
     const float width = static_cast<float>(box.w), rowH = static_cast<float>(rowHeight);
-    boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), sdlColor(colours.panel, 190));
+    boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), sdlColor(colours.panel));
     const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
 
     const std::string rateTitle = collisionRateTitle(rateWindow);

@@ -29,6 +29,11 @@ struct BoxArea {
     double valuesRow = 0.0;
     double valuesLeast = 0.0;
     double valuesColumn = 0.0;
+    /// The values table's width with every column in sight, pixels: a column at the right
+    /// narrower than this hides some of them (they scroll).
+    double valuesWidth = 0.0;
+    /// Particles' rows the full band holds.
+    double valuesRows = 0.0;
     /// The area's top when the side column's charts are folded away (the HUD's band then holds
     /// the line that says so).
     double foldedTop = 0.0;

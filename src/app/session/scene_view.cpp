@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include "session/document.hpp"
@@ -25,6 +26,11 @@ namespace {
 constexpr double kBoxKeeps = 0.6;
 /// ...unless its smaller side keeps this share of the window's smaller side, which is enough.
 constexpr double kBoxEnough = 0.4;
+/// Before anything is hidden (the side column's charts folded away, the values table in a
+/// column at the right, narrower than its columns), the box gives up to this share of its size:
+/// at 200 % in 1600 x 1000 the momentum lesson's plots folded away and its table, at the right,
+/// showed x, y and vx only, for a box 1.1 times as large as the 512 x 205 that shows them all.
+constexpr double kBoxKeepsBeforeHiding = 0.5;
 
 }  // namespace
 
@@ -75,7 +81,7 @@ void SceneView::fit(const Document& doc, Notices& notices) {
     // plots), a smaller side of kBoxEnough of the window's.
     const double enough =
         kBoxEnough * std::min(camera_.viewportWidth(), camera_.viewportHeight()) / std::min(w, h);
-    const double keeps = std::min(kBoxKeeps * fitWith(bare, {}), enough);
+    const double share = std::min(kBoxKeeps * fitWith(bare, {}), enough);
     // The side column's charts folded away: the box's area loses the column and the HUD's band
     // keeps the line that says so.
     BoxArea folded = bare;
@@ -87,19 +93,31 @@ void SceneView::fit(const Document& doc, Notices& notices) {
         bool fold = false;
         double zoom = 0.0;
         bool below = false;  ///< the charts in a band under the box
+        /// Something asked for is not seen whole: the charts fold away, or the table's column
+        /// is narrower than its columns.
+        bool hides = false;
     };
     std::vector<Choice> tried;
     const auto tryBands = [&](const BoxArea& a, bool fold) {
         if (!options_.values) {
-            tried.push_back({&a, {}, fold, fitWith(a, {})});
+            tried.push_back({&a, {}, fold, fitWith(a, {}), false, fold});
             return;
         }
         // The band with its rows, then with a row fewer each time (the others scroll), down to
         // one.
-        tried.push_back({&a, {false, a.valuesBand}, fold, fitWith(a, {false, a.valuesBand})});
-        for (double band = a.valuesBand - a.valuesRow;
-             a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0; band -= a.valuesRow) {
-            tried.push_back({&a, {false, band}, fold, fitWith(a, {false, band})});
+        tried.push_back(
+            {&a, {false, a.valuesBand}, fold, fitWith(a, {false, a.valuesBand}), false, fold});
+        // A band that holds fewer rows than the table has hides some (they scroll).
+        const double rows = static_cast<double>(doc.world.size());
+        for (double band = a.valuesBand - a.valuesRow, fewer = 1.0;
+             a.valuesRow > 0.0 && band >= a.valuesLeast - a.valuesRow / 2.0;
+             band -= a.valuesRow, fewer += 1.0) {
+            tried.push_back({&a,
+                             {false, band},
+                             fold,
+                             fitWith(a, {false, band}),
+                             false,
+                             fold || a.valuesRows - fewer < rows});
         }
     };
     // What gives way, in order, until the box keeps its share: the values table's band its
@@ -115,7 +133,7 @@ void SceneView::fit(const Document& doc, Notices& notices) {
     under.spareColumn = 0.0;
     const bool band = (options_.plots || options_.speeds) && !options_.values &&
                       !binsShown(doc.meta) && bare.chartsBand > 0.0;
-    if (band) tried.push_back({&under, {}, false, fitWith(under, {}), true});
+    if (band) tried.push_back({&under, {}, false, fitWith(under, {}), true, false});
     if (asked) tryBands(folded, true);
     // At the right the table folds the charts asked for, whose note the HUD's band then holds.
     BoxArea besideColumn = a;
@@ -124,16 +142,29 @@ void SceneView::fit(const Document& doc, Notices& notices) {
         tried.push_back({&besideColumn,
                          {true, a.valuesColumn},
                          false,
-                         fitWith(besideColumn, {true, a.valuesColumn})});
+                         fitWith(besideColumn, {true, a.valuesColumn}),
+                         false,
+                         asked || a.valuesColumn < a.valuesWidth});
     }
-    const auto keeper = std::find_if(tried.begin(), tried.end(), [&](const Choice& c) {
-        return c.zoom >= keeps * (1.0 - 1e-9);
-    });
+    // The first choice that keeps the box its share and hides nothing; else the largest that
+    // hides nothing, where the box keeps kBoxKeepsBeforeHiding of its size; else the first that
+    // keeps the box its share; else the largest box.
+    const auto largest = [](const Choice& l, const Choice& r) { return l.zoom < r.zoom; };
+    const auto keeps = [](const Choice& c, double least) { return c.zoom >= least * (1.0 - 1e-9); };
+    std::vector<Choice> whole;
+    std::copy_if(tried.begin(), tried.end(), std::back_inserter(whole),
+                 [](const Choice& c) { return !c.hides; });
+    const double bareZoom = fitWith(bare, {});
+    const auto keeper =
+        std::find_if(whole.begin(), whole.end(), [&](const Choice& c) { return keeps(c, share); });
+    const auto best = std::max_element(whole.begin(), whole.end(), largest);
+    const auto any =
+        std::find_if(tried.begin(), tried.end(), [&](const Choice& c) { return keeps(c, share); });
     const Choice chosen =
-        keeper != tried.end()
-            ? *keeper
-            : *std::max_element(tried.begin(), tried.end(),
-                                [](const Choice& l, const Choice& r) { return l.zoom < r.zoom; });
+        keeper != whole.end()                                                   ? *keeper
+        : best != whole.end() && keeps(*best, kBoxKeepsBeforeHiding * bareZoom) ? *best
+        : any != tried.end()                                                    ? *any
+                             : *std::max_element(tried.begin(), tried.end(), largest);
     valuesDock_ = chosen.dock;
     columnFolded_ = chosen.fold;
     chartsBelow_ = chosen.below;

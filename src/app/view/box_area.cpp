@@ -96,6 +96,8 @@ WindowLayout windowLayout(const TextMeasure& hudFont, int width, int height,
         // away (the HUD says so: the box then stands below foldedTop).
         a.valuesColumn = valuesColumn(width, a.left, 0.0, height, a.top, a.bottom, band.least,
                                       controls.pointPixels);
+        a.valuesWidth = kValuesWidthPoints * controls.pointPixels;
+        a.valuesRows = kValuesBandRows;
         a.foldedTop = std::max(a.top, hudBand(hudFont, room, true));
         a.chartsBand = chartsBandHeight(controls.pointPixels) + kPanelGap;
         a.valuesBand = band.height + kPanelGap;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace psb::app {
 
@@ -70,6 +71,17 @@ MassShades massShades(Color colour, Theme theme) {
         (paleTurn ? s.light : s.heavy) = next;
     }
     return s;
+}
+
+Color discFill(const World& world, ParticleId id, Theme theme) {
+    const Palette& colours = palette(theme);
+    const std::optional<std::size_t> i = world.indexOf(id);
+    if (!i) return Color{colours.text.r, colours.text.g, colours.text.b};
+    const ParticleArrays& p = world.particles();
+    const Color c = colours.mapParticles ? lightColour(p.color[*i]) : p.color[*i];
+    const MassRange masses = massRange(p.mass);
+    if (!masses.varies()) return c;
+    return massShades(c, theme).at(masses.place(p.mass[*i]));
 }
 
 }  // namespace psb::app

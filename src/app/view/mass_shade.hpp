@@ -15,6 +15,7 @@
 #include <span>
 
 #include <particle_sandbox/color.hpp>
+#include <particle_sandbox/world.hpp>
 
 #include "view/palette.hpp"
 
@@ -47,5 +48,11 @@ struct MassShades {
 
 /// The shades of `colour` (as drawn: on the light theme, lightColour's) on `theme`'s background.
 [[nodiscard]] MassShades massShades(Color colour, Theme theme);
+
+/// The fill the box draws particle `id` of `world` in on `theme`: its colour (on the light
+/// theme, lightColour's) in the shade of its mass among the scene's (render/renderer.cpp draws
+/// the discs so), for what speaks of a particle elsewhere in its colour (the momenta diagram's
+/// arrows). The text's colour for a particle that is gone.
+[[nodiscard]] Color discFill(const World& world, ParticleId id, Theme theme);
 
 }  // namespace psb::app

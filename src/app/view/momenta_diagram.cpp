@@ -1,5 +1,7 @@
 #include "view/momenta_diagram.hpp"
 
+#include "view/mass_shade.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -191,6 +193,10 @@ std::string momentaDiagramScale(const MomentaDiagram& diagram) {
 
 std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram, const Axes& axes) {
     return {line("before", diagram.before, axes), line("after", diagram.after, axes)};
+}
+
+std::array<Color, 2> momentaColours(const CollisionCard& card, const World& world, Theme theme) {
+    return {discFill(world, card.collision.a, theme), discFill(world, card.collision.b, theme)};
 }
 
 }  // namespace psb::app

@@ -7,13 +7,17 @@
 // Arrows point as the particles move in the box (the box's x to the right, y down). The panel's
 // Last collision section draws it; the text F12 writes lists it.
 
+#include <array>
 #include <string>
 #include <vector>
 
 #include <particle_sandbox/axes.hpp>
+#include <particle_sandbox/color.hpp>
 #include <particle_sandbox/math.hpp>
+#include <particle_sandbox/world.hpp>
 
 #include "session/last_collision.hpp"
+#include "view/palette.hpp"
 
 namespace psb::app {
 
@@ -52,6 +56,13 @@ struct MomentaDiagram {
 };
 
 [[nodiscard]] MomentaDiagram momentaDiagram(const CollisionCard& card);
+
+/// The colours of the arrows of the first and the second particle of `card`: each its ball's
+/// fill as the box draws it in `world` on `theme` (view/mass_shade.hpp's discFill), so the
+/// diagram says which is which as the box does (they were a fixed orange and sky blue, while
+/// the lesson's balls were grey and black). The total is drawn in the text's colour.
+[[nodiscard]] std::array<Color, 2> momentaColours(const CollisionCard& card, const World& world,
+                                                  Theme theme);
 
 /// Where the labels of `arrows` (one half of `d`, drawn in a square of `side` pixels) go: the
 /// top-left corner of each label's box, `sizes[k]` pixels for arrows[k]. Each stays inside the

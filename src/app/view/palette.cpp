@@ -17,7 +17,7 @@ constexpr Palette kDark{
     .walls = {255, 255, 255},
     .openWalls = {70, 70, 70},
     .text = {230, 230, 230},
-    .panel = {0, 0, 0, 215},  // dark enough that arrows and discs under it do not break up text
+    .panel = {0, 0, 0, 255},  // opaque: nothing drawn under a panel shows through its text
     .axis = {150, 150, 150},
     .tickText = {200, 200, 200},
     .labelBox = {0, 0, 0, 150},
@@ -54,7 +54,7 @@ constexpr Palette kLight{
     .walls = {0, 0, 0},
     .openWalls = {160, 160, 160},
     .text = {17, 17, 17},
-    .panel = {242, 242, 242, 225},
+    .panel = {242, 242, 242, 255},
     .axis = {90, 90, 90},
     .tickText = {40, 40, 40},
     .labelBox = {255, 255, 255, 200},

@@ -26,11 +26,13 @@ struct Rgba {
 };
 
 struct Palette {
-    Rgba background;     ///< the window behind everything
-    Rgba walls;          ///< a closed box's walls
-    Rgba openWalls;      ///< an open box's outline (a hint)
-    Rgba text;           ///< the HUD, the panels' text, messages
-    Rgba panel;          ///< behind the text panels and charts (translucent)
+    Rgba background;  ///< the window behind everything
+    Rgba walls;       ///< a closed box's walls
+    Rgba openWalls;   ///< an open box's outline (a hint)
+    Rgba text;        ///< the HUD, the panels' text, messages
+    /// Behind the text panels and charts, opaque: a velocity arrow or a ball under the messages'
+    /// line showed through it (the Galton board at 200 %).
+    Rgba panel;
     Rgba axis;           ///< the charts' axes and tick marks
     Rgba tickText;       ///< the charts' numbers
     Rgba labelBox;       ///< behind a particle's label

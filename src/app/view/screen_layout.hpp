@@ -56,6 +56,10 @@ inline constexpr int kBoxMinRoom = 240;
 inline constexpr int kValuesChromePoints = 136;
 inline constexpr int kValuesRowPoints = 21;
 inline constexpr int kValuesBandRows = 3;
+/// The values table's width with its particles' numbers and every column of a world without
+/// rotation (x, y, vx, vy, px, py, KE, mass) in sight, points: the gui's columns are as wide as
+/// their numbers (section_values.cpp), 440 points, and the window's padding.
+inline constexpr int kValuesWidthPoints = 460;
 /// The values table's column, when it docks at the right (a short window, where a band along
 /// the bottom would leave the box too low), is 40 % of the room right of the control panel
 /// and at least this wide, points.

@@ -210,6 +210,31 @@ TEST(ValuesTable, InAShortWindowItDocksWhereTheBoxComesOutLargest) {
               big.layout().area(big.controlsShown(), big.columnAsked()).valuesBand);
 }
 
+TEST(ValuesTable, OnTheProjectorItShowsEveryColumnAndTheTotalsAndThePlotsStay) {
+    // The momentum lesson at 200 % in 1600 x 1000 with the plots (K) and the table (I): the
+    // plots folded away and the table, in a column at the right, showed x, y and vx; its
+    // totals were off to the side. The box gives up some of its size first: the table along
+    // the bottom with every column and row, the plots beside the box, neither over it.
+    const test::FixedMeasure font(2.0);
+    const Session s = test::onTheProjector(
+        test::lessonWorld(), {ShowOption::Plots, ShowOption::Values, ShowOption::Momentum});
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+    EXPECT_FALSE(s.valuesDock().right) << "in a column narrower than its columns";
+    EXPECT_FALSE(f.layout.columnFolded) << "the plots folded away";
+    ASSERT_GT(f.layout.plots.w, 0);
+    ASSERT_GT(f.layout.values.w, 0);
+    EXPECT_GE(f.layout.values.w, kValuesWidthPoints * 2.0) << "columns out of sight";
+    const BoxArea& a = s.layout().area(s.controlsShown(), s.columnAsked());
+    EXPECT_GE(s.valuesDock().size, a.valuesBand - a.valuesRow * (kValuesBandRows - 2) - 1e-9)
+        << "a row of the two balls or the totals out of sight";
+    const Camera::ScreenBox box = s.camera().boxOnScreen(10.0, 4.0);
+    const PixelRect onScreen{static_cast<int>(box.topLeft.x()), static_cast<int>(box.topLeft.y()),
+                             static_cast<int>(box.size.x()), static_cast<int>(box.size.y())};
+    for (const PixelRect& r : panelRects(f.layout))
+        EXPECT_FALSE(overlaps(r, onScreen)) << "a panel over the box";
+    EXPECT_GE(box.size.x(), 480.0) << "the box";
+}
+
 /// A 7 m box with two rows of balls just below and just above its middle, where the ruler
 /// lies, at 200 % in a 1600 x 1000 window, the ruler on.
 Session rulerAmongBalls() {

@@ -11,10 +11,32 @@
 
 #include "view/head_on_card.hpp"
 #include "view/label_places.hpp"
+#include "view/mass_shade.hpp"
 #include "view/momenta_diagram.hpp"
+#include "view/projector_fixture.hpp"
 
 namespace psb::app {
 namespace {
+
+TEST(MomentaDiagram, EachParticlesArrowIsDrawnInItsBallsColour) {
+    // Lesson 1 on the light theme: its balls were drawn grey (1 kg) and black (3 kg), shaded by
+    // mass, and their arrows in the diagram orange and sky blue. Each arrow now has its ball's
+    // fill, on either theme.
+    const World world = test::lessonWorld();
+    CollisionCard card = headOnCard();
+    card.collision.a = world.ids()[0];
+    card.collision.b = world.ids()[1];
+    for (const Theme theme : {Theme::Light, Theme::Dark}) {
+        const std::array<Color, 2> colours = momentaColours(card, world, theme);
+        EXPECT_EQ(colours[0], discFill(world, world.ids()[0], theme));
+        EXPECT_EQ(colours[1], discFill(world, world.ids()[1], theme));
+        EXPECT_FALSE(colours[0] == colours[1]) << "the two balls told apart";
+        // The box's fill: the particle's colour in the shade of its mass.
+        const Color own = palette(theme).mapParticles ? lightColour(world.particles().color[0])
+                                                      : world.particles().color[0];
+        EXPECT_EQ(colours[0], massShades(own, theme).light) << "the lightest ball's shade";
+    }
+}
 
 TEST(MomentaDiagram, ThePairsArrowsGoTipToTailAndTheTotalIsKept) {
     const MomentaDiagram d = momentaDiagram(headOnCard());

@@ -30,6 +30,14 @@ TEST(Palette, ContrastRatioIsWcags) {
     EXPECT_NEAR(contrastRatio({118, 118, 118}, {255, 255, 255}), 4.54, 0.01);  // WCAG's grey
 }
 
+TEST(Palette, TheTextPanelsAreOpaqueSoNothingShowsThroughThem) {
+    // The Galton board at 200 %: the balls' velocity arrows below the box ran on through the
+    // messages' line, seen through its translucent panel. A panel (the HUD, the messages, the
+    // inspector, the charts, the momentum legend) hides what is under it.
+    for (const Theme theme : {Theme::Dark, Theme::Light})
+        EXPECT_EQ(palette(theme).panel.a, 255) << toString(theme);
+}
+
 TEST(Palette, TextIsReadableOnItsBackgroundInBothThemes) {
     for (const Theme theme : {Theme::Dark, Theme::Light}) {
         const Palette& p = palette(theme);
