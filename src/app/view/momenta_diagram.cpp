@@ -1,12 +1,11 @@
 #include "view/momenta_diagram.hpp"
 
-#include "view/mass_shade.hpp"
-
 #include <algorithm>
 #include <cmath>
 
 #include "session/units.hpp"
 #include "view/label_places.hpp"
+#include "view/mass_shade.hpp"
 #include "view/screen_layout.hpp"
 
 namespace psb::app {
