@@ -141,7 +141,8 @@ void ControlPanel::time(const Session& s) {
     if (ImGui::Button("Restart")) out_.emplace_back(cmd::Restart{});
     mark("Restart");
     tip("Back to the set-up: every particle where it was when Play was last pressed after an "
-        "edit, or as the scene opened (key R). Scene: Revert goes back to the file");
+        "edit, or as the scene opened (key R). The ruler keeps its reading; the stopwatch and the "
+        "last collision card start over. Scene: Revert goes back to the file");
 
     // Undo and redo of edits; back and forward in time (while paused).
     ImGui::BeginDisabled(!s.canUndo());
