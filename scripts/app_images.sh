@@ -53,9 +53,15 @@ shoot_and_quit() {
     for ((k = 1; k < $2; ++k)); do xdotool key --window "$wid" Escape 2>/dev/null || true; sleep 0.2; done
     # The window may be gone before xdotool sends the key release.
     xdotool key --window "$wid" Escape 2>/dev/null || true
-    # Still there: it asks about unsaved changes; D discards them.
+    # Still there: it asks, Enter quits (nothing unsaved), or D discards the unsaved changes.
     sleep 0.5
-    if kill -0 "$pid" 2>/dev/null; then xdotool key --window "$wid" d 2>/dev/null || true; fi
+    if kill -0 "$pid" 2>/dev/null; then
+        if grep -q "Quit Particle Sandbox?" "$1/log"; then
+            xdotool key --window "$wid" Return 2>/dev/null || true
+        else
+            xdotool key --window "$wid" d 2>/dev/null || true
+        fi
+    fi
     wait "$pid"
 }
 

@@ -205,7 +205,10 @@ TEST_F(AppTest, TheEditPromptTakesLettersAndEscWithoutTogglingOrQuitting) {
     EXPECT_FALSE(app.editing());
     EXPECT_TRUE(app.running());
     EXPECT_DOUBLE_EQ(app.world().get(*app.selected()).mass, 18.0);  // cancelled
-    key(app, SDLK_ESCAPE);
+    key(app, SDLK_ESCAPE);  // nothing open: asks whether to quit
+    EXPECT_TRUE(app.running());
+    app.frame(0.0);
+    key(app, SDLK_RETURN);  // Quit
     EXPECT_FALSE(app.running());
 }
 

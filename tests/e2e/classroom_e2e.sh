@@ -84,8 +84,8 @@ wait_log "Arrows on"
 pass "Tab: A went to the panel; Esc: back to the sandbox, A toggles the arrows"
 
 # --- 5. the next start reads the file ------------------------------------------------------
-quit_with Escape
-kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
+quit_by_esc
+kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc, Enter"
 APP_PID=""
 mv "$LOG" "$OUT/first-run.log"
 start_app "$BIN" --renderer software --window 1200x850 --paused --seed 7 --screenshot-dir "$OUT"
@@ -95,5 +95,5 @@ screenshot
 read -r r g b <<<"$(pixel "$PNG" $((WIDTH - 4)) $((HEIGHT - 4)))"
 ((r == 255 && g == 255 && b == 255)) || fail "the second start's corner is $r $g $b, not white"
 pass "the next start read the file: light, 200 %"
-quit_with Escape
+quit_by_esc
 echo "classroom e2e: all passed ($OUT)"

@@ -178,6 +178,24 @@ quit_with() {
         done
     done
 }
+# quit_by_esc: Esc asks whether to quit (nothing unsaved: "Quit Particle Sandbox? Enter quits, Esc
+# stays") and Enter answers Quit, each again until taken (a dialog takes its keys from the frame
+# after the one it appears in), until the program has exited.
+quit_by_esc() {
+    local n
+    for _ in 1 2 3 4 5 6; do
+        kill -0 "$APP_PID" 2>/dev/null || return 0
+        n=$(grep -c "Quit Particle Sandbox?" "$LOG" || true)
+        xdotool key --window "$WID" Escape 2>/dev/null || true
+        for _ in $(seq $((30 * E2E_PATIENCE))); do
+            (($(grep -c "Quit Particle Sandbox?" "$LOG" || true) > n)) && break
+            sleep 0.1
+        done
+        (($(grep -c "Quit Particle Sandbox?" "$LOG" || true) > n)) || continue
+        quit_with Return
+        return 0
+    done
+}
 title() { xdotool getwindowname "$WID"; }
 # wait_exit: until the program under test has ended (5 s on a quiet machine, times the patience).
 wait_exit() {

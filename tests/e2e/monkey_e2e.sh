@@ -211,7 +211,7 @@ while ((SECONDS < end)); do
 done
 alive && probe
 check_stderr
-kill -0 "$APP_PID" 2>/dev/null && quit_with Escape
+kill -0 "$APP_PID" 2>/dev/null && quit_by_esc
 kill -0 "$APP_PID" 2>/dev/null && quit_with Return
 if kill -0 "$APP_PID" 2>/dev/null; then
     kill "$APP_PID"

@@ -202,11 +202,11 @@ pass "Ctrl+S in the description's field: kept, then saved to $saved"
 
 # --- 8. leaving -------------------------------------------------------------------------------
 xdotool mousemove $((WX + 700)) $((WY + 400))
-# Saved in step 5 and only run since: nothing unsaved, Esc quits at once (the window may be gone
-# before xdotool sends the key's release: quit_with expects that).
-quit_with Escape
+# Saved in step 5 and only run since: nothing unsaved, Esc asks whether to quit and Enter quits
+# (the window may be gone before xdotool sends the key's release: quit_with expects that).
+quit_by_esc
 wait_exit
-kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc"
+kill -0 "$APP_PID" 2>/dev/null && fail "still running after Esc, Enter"
 APP_PID=""
-pass "Esc quit"
+pass "Esc asked, Enter quit"
 echo "PASS: panel e2e ($OUT)"

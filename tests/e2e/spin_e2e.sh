@@ -103,6 +103,6 @@ snap hidden
 (($(count hidden "$BALL_MARK") == 0)) || fail "the ball's mark is still drawn with Spin off"
 pass "the Spin checkbox hides the spin marks"
 
-quit_with Escape  # nothing was edited: Esc quits at once
+quit_by_esc  # nothing was edited: Esc asks whether to quit, Enter quits
 if kill -0 "$APP_PID" 2>/dev/null; then fail "the program did not quit"; fi
 echo "PASS"

@@ -107,17 +107,17 @@ ffmpeg -v error -y -i "$gif" -vf "select=eq(n\,$((gframes / 2)))" -frames:v 1 "$
 pass "$(sed -E 's/^\[I\] //' <<<"$saved")"
 
 # --- 4. --record at launch; quitting completes the file ----------------------------------------
-xdotool key --window "$WID" Escape 2>/dev/null || true
+quit_by_esc
 wait_exit
-kill -0 "$APP_PID" 2>/dev/null && fail "Esc did not quit"
+kill -0 "$APP_PID" 2>/dev/null && fail "Esc, Enter did not quit"
 APP_PID=""
 LOG="$OUT/stdout-webm.log"
 start_app "$BIN" --renderer software --window 800x600 --screenshot-dir "$OUT/videos" --record webm
 wait_log "Recording video \(WebM, "
 sleep 1.5
-xdotool key --window "$WID" Escape 2>/dev/null || true
+quit_by_esc
 wait_exit
-kill -0 "$APP_PID" 2>/dev/null && fail "Esc did not quit while recording"
+kill -0 "$APP_PID" 2>/dev/null && fail "Esc, Enter did not quit while recording"
 APP_PID=""
 wait_log "Saved video $OUT/videos/.*\.webm: [0-9.]+ s, [0-9]+ frames"
 webm=$(grep "Saved video" "$LOG" | tail -1 | sed -E 's/.*Saved video (.*): [0-9.]+ s.*/\1/')

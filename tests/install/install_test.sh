@@ -123,8 +123,9 @@ WID=$(timeout 20 xdotool search --sync --onlyvisible --pid "$APP_PID" --name "Pa
 sleep 1.5  # some frames of the break
 import -window "$WID" "$OUT/installed-sandbox.png"
 xdotool windowfocus --sync "$WID" 2>/dev/null || true
-xdotool key --window "$WID" Escape 2>/dev/null || true  # the window may be gone before the key release
-for _ in $(seq 100); do kill -0 "$APP_PID" 2>/dev/null || break; sleep 0.05; done
+# Nothing unsaved: Esc asks whether to quit, Enter quits.
+LOG="$OUT/sandbox.log"
+quit_by_esc
 status=0
 wait "$APP_PID" || status=$?
 APP_PID=""

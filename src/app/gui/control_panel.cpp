@@ -91,6 +91,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             mark("fold panel");
             tip("Fold the panel away to give the box more room (key C)");
             ImGui::TextDisabled("%s", s.meta().name.c_str());
+            const std::size_t firstItem = items_.size();
             time(s);
             scene(s);
             physics(s);
@@ -103,6 +104,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             selected(s);
             allParticles(s);
             engine(s, stats);
+            keepAnchor(firstItem);
         }
     }
     ImGui::PopItemFlag();
@@ -113,6 +115,63 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     valuesWindow(s, pixelRatio);
     dialog(s);
     return std::move(out_);
+}
+
+void ControlPanel::keepAnchor(std::size_t firstItem) {
+    ImGuiWindow* w = ImGui::GetCurrentWindow();
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 mouse = io.MousePos;
+    const bool over = ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem) &&
+                      mouse.x >= w->Pos.x && mouse.x < w->Pos.x + w->Size.x;
+    // Only while the layout moves on its own: not while the user scrolls (wheel, bar, finger)
+    // or holds a control, nor when the panel itself asked for a scroll this frame.
+    const bool still = over && w->Scroll.y == anchorScroll_ && w->ScrollTarget.y == FLT_MAX &&
+                       io.MouseWheel == 0.f && !ImGui::IsAnyMouseDown() &&
+                       !ImGui::IsAnyItemActive();
+    float moved = 0.f;
+    if (still && anchor_) {
+        for (std::size_t i = firstItem; i < items_.size(); ++i) {
+            if (items_[i].name == anchor_->first) {
+                moved = items_[i].y0 - anchor_->second;
+                break;
+            }
+        }
+        if (moved != 0.f) ImGui::SetScrollY(w->Scroll.y + moved);
+    }
+    // Moved back next frame, the same control is under the pointer.
+    std::optional<std::pair<std::string, float>> kept;
+    if (moved != 0.f) kept = anchor_;
+    anchor_.reset();
+    anchorScroll_ = w->Scroll.y + moved;
+    // A panel that was not full cannot scroll by what it grew: blank room at its end, as much
+    // as the scroll needs, kept while the scroll needs it (the user scrolling up gives it back).
+    const float content = w->DC.CursorMaxPos.y - w->DC.CursorStartPos.y;
+    const float shown = w->Size.y - 2.f * ImGui::GetStyle().WindowPadding.y;
+    const float reach = std::max(0.f, content - shown);
+    slack_ = std::max(0.f, anchorScroll_ - reach);
+    if (slack_ > 0.f) ImGui::Dummy(ImVec2(1.f, slack_ + 2.f));
+    if (kept) {
+        anchor_ = std::move(kept);
+        return;
+    }
+    if (!over) return;
+    // The control under the pointer (the smallest, where one holds others), else the nearest
+    // above or below it.
+    const PanelItem* best = nullptr;
+    float distance = FLT_MAX, area = FLT_MAX;
+    for (std::size_t i = firstItem; i < items_.size(); ++i) {
+        const PanelItem& it = items_[i];
+        const float d = mouse.y < it.y0 ? it.y0 - mouse.y : mouse.y > it.y1 ? mouse.y - it.y1 : 0.f;
+        const float a = (it.x1 - it.x0) * (it.y1 - it.y0);
+        const bool inside = d == 0.f && mouse.x >= it.x0 && mouse.x < it.x1;
+        const float rank = inside ? -1.f : d;
+        if (rank < distance || (rank == distance && inside && a < area)) {
+            distance = rank;
+            area = a;
+            best = &it;
+        }
+    }
+    if (best) anchor_.emplace(best->name, best->y0 - moved);
 }
 
 void ControlPanel::aboutButton(const char* label, ImVec2 size) {
@@ -141,7 +200,8 @@ void ControlPanel::time(const Session& s) {
     if (ImGui::Button("Restart")) out_.emplace_back(cmd::Restart{});
     mark("Restart");
     tip("Back to the set-up: every particle where it was when Play was last pressed after an "
-        "edit, or as the scene opened (key R). Scene: Revert goes back to the file");
+        "edit, or as the scene opened (key R). The ruler keeps its reading; the stopwatch and the "
+        "last collision card start over. Scene: Revert goes back to the file");
 
     // Undo and redo of edits; back and forward in time (while paused).
     ImGui::BeginDisabled(!s.canUndo());

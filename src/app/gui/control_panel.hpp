@@ -167,8 +167,16 @@ class ControlPanel {
     /// The particle the Selected particle section last showed: a new selection scrolls the
     /// panel to the section once (it is below the fold of an 800-pixel window).
     ParticleId shownSelection_;
-    /// The last collision card was shown last frame: turned on, the panel scrolls to it once.
+    /// The last collision card was shown last frame (turned on, its section opens).
     bool cardShown_ = false;
+    /// What the pointer was over in the panel last frame (its name and top, window points) and
+    /// the panel's scroll then: when the layout above it moves it on its own (a collision card
+    /// that grows, a line that appears), the panel scrolls by as much, so that it stays under
+    /// the pointer (keepAnchor).
+    std::optional<std::pair<std::string, float>> anchor_;
+    float anchorScroll_ = 0.f;
+    float slack_ = 0.f;  ///< blank room at the panel's end that the anchored scroll needs
+    void keepAnchor(std::size_t firstItem);
     /// The values table's cell being typed in (its particle and field) and its text.
     std::optional<std::pair<ParticleId, ParticleField>> valuesEditing_;
     std::array<char, 64> valuesText_{};

@@ -22,17 +22,12 @@ void ControlPanel::lastCollision(const Session& s) {
     const bool turnedOn = s.view().collision && !cardShown_;
     cardShown_ = s.view().collision;
     if (!s.view().collision) return;
+    // Turned on, the section opens where it is: the panel never scrolls to it (a student
+    // reaching for a button below found the card under the pointer instead).
     if (turnedOn) ImGui::SetNextItemOpen(true);
-    const float top = ImGui::GetCursorPosY();
     const bool open = ImGui::CollapsingHeader("Last collision", ImGuiTreeNodeFlags_DefaultOpen);
     mark("section Last collision");
     if (open) card(s);
-    if (turnedOn) {  // into view, once: the user may scroll away from it after
-        const float bottom = ImGui::GetCursorPosY(), scroll = ImGui::GetScrollY();
-        const float shown = ImGui::GetWindowHeight() - ImGui::GetStyle().WindowPadding.y;
-        if (top < scroll || bottom > scroll + shown)
-            ImGui::SetScrollY(std::min(top, bottom - shown));
-    }
 }
 
 void ControlPanel::card(const Session& s) {

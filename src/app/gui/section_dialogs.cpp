@@ -1,7 +1,7 @@
 // The session's dialogs (session/dialog.hpp) as modal windows over the whole window: Save As (the
 // folder in full, the name, Replace when the file exists), New scene (the box) and the quit
-// question (Save, Discard, Cancel). A modal window takes the keyboard, so its keys are here:
-// Enter answers with the default button, Esc cancels.
+// question (Save, Discard, Cancel; with nothing unsaved, Quit and Stay). A modal window takes the
+// keyboard, so its keys are here: Enter answers with the default button, Esc cancels.
 
 #include <SDL_scancode.h>
 
@@ -26,11 +26,16 @@ const char* titleOf(Dialog::Kind kind) {
         case Dialog::Kind::NewScene:
             return "New scene";
         case Dialog::Kind::Quit:
-            return "Unsaved changes";
+            return "###quit";  // the title shown is the question's (quitTitle)
         case Dialog::Kind::None:
             break;
     }
     return "";
+}
+
+/// The quit dialog's window title: ImGui knows the window by what follows "###" (titleOf).
+const char* quitTitle(const Dialog& d) {
+    return d.unsaved ? "Unsaved changes###quit" : "Quit###quit";
 }
 
 bool pressed(ImGuiKey key) {
@@ -64,14 +69,15 @@ void ControlPanel::dialog(const Session& s) {
         newHeight_ = d.newScene.height;
         newGravity_ = d.newScene.gravity;
         newWalls_ = d.newScene.walls;
-        if (d.open()) ImGui::OpenPopup(titleOf(d.kind));
+        if (d.open()) ImGui::OpenPopup(titleOf(d.kind));  // the same id as quitTitle's
     }
     if (!d.open()) return;
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(vp->Size.x * 0.5f, vp->Size.y * 0.4f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));
     ImGui::SetNextWindowSize(ImVec2(std::min(460.f, vp->Size.x - 20.f), 0.f));
-    if (!ImGui::BeginPopupModal(titleOf(d.kind), nullptr,
+    if (!ImGui::BeginPopupModal(d.kind == Dialog::Kind::Quit ? quitTitle(d) : titleOf(d.kind),
+                                nullptr,
                                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings)) {
         // Closed by ImGui itself (Esc): the session hears it as Cancel; otherwise it is opened
         // again next frame.
@@ -162,6 +168,22 @@ void ControlPanel::dialog(const Session& s) {
             break;
         }
         case Dialog::Kind::Quit: {
+            if (!d.unsaved) {
+                // Nothing unsaved, but the run, its recordings and measurements go with the
+                // program: Esc asks before they do.
+                widgets::wrapped(
+                    "Quit Particle Sandbox? The run, its recordings and "
+                    "measurements end with it.");
+                if (button("Quit", "dialog Quit") || enter) {
+                    out_.emplace_back(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Quit});
+                }
+                ImGui::SameLine();
+                if (button("Stay", "dialog Cancel") || escape) {
+                    out_.emplace_back(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Cancel});
+                }
+                widgets::wrappedDisabled("Enter: Quit, Esc: Stay");
+                break;
+            }
             widgets::wrapped("Save the changes to \"" + s.meta().name + "\" before quitting?");
             const SceneFile& f = s.sceneFile();
             widgets::wrappedDisabled(f.writable ? "Save writes " + f.path->string()

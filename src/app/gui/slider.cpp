@@ -1,19 +1,32 @@
 #include "gui/slider.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <imgui_internal.h>
 
 namespace psb::app::widgets {
 
-SliderHandleStyle::SliderHandleStyle() {
-    // A bar in the text's colour, bold enough to find (the theme's handle is a faint one, for
-    // digits written over it).
+namespace {
+
+/// The handle's colour: a bar in the text's colour, bold enough to find (the theme's handle is
+/// a faint one, for digits written over it).
+ImVec4 handleColour(bool active) {
     ImVec4 bar = ImGui::GetStyleColorVec4(ImGuiCol_Text);
-    bar.w = 0.6f;
-    ImGui::PushStyleColor(ImGuiCol_SliderGrab, bar);
-    bar.w = 0.85f;
-    ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, bar);
+    bar.w = active ? 0.85f : 0.6f;
+    return bar;
+}
+
+/// ImGui's room either side of a slider's handle, points (imgui_widgets.cpp, SliderBehaviorT).
+constexpr float kGrabPadding = 2.f;
+
+}  // namespace
+
+SliderHandleStyle::SliderHandleStyle() {
+    // ImGui's handle is hidden: valueBesideHandle draws it, after the patch over ImGui's
+    // writing of the value. Its width still sets where ImGui takes the pointer.
+    ImGui::PushStyleColor(ImGuiCol_SliderGrab, ImVec4(0.f, 0.f, 0.f, 0.f));
+    ImGui::PushStyleColor(ImGuiCol_SliderGrabActive, ImVec4(0.f, 0.f, 0.f, 0.f));
     ImGui::PushStyleVar(ImGuiStyleVar_GrabMinSize, kSliderHandleWidth);
 }
 
@@ -22,27 +35,32 @@ SliderHandleStyle::~SliderHandleStyle() {
     ImGui::PopStyleColor(2);
 }
 
-void valueOverHandle(const char* text, float width) {
+float sliderValueX(float frame0, float frame1, float handle0, float handle1, float textWidth,
+                   float gap) {
+    const float centred = frame0 + (frame1 - frame0 - textWidth) * 0.5f;
+    if (centred + textWidth + gap <= handle0 || centred >= handle1 + gap) return centred;
+    const float leftRoom = handle0 - frame0, rightRoom = frame1 - handle1;
+    if (leftRoom >= rightRoom) {
+        // Centred in [frame0, handle0 - gap], never closer to the handle than gap.
+        const float x = frame0 + (leftRoom - gap - textWidth) * 0.5f;
+        return std::max(frame0, std::min(x, handle0 - gap - textWidth));
+    }
+    const float x = handle1 + gap + (rightRoom - gap - textWidth) * 0.5f;
+    return std::min(std::max(x, handle1 + gap), std::max(handle1 + gap, frame1 - textWidth));
+}
+
+void valueBesideHandle(const char* text, float width, float fraction) {
     const ImGuiContext& g = *ImGui::GetCurrentContext();
     const ImGuiID id = ImGui::GetItemID();
     if (ImGui::TempInputIsActive(id)) return;  // a field, being typed in
     const ImVec2 min = ImGui::GetItemRectMin();
     const ImRect frame(min, ImVec2(min.x + width, min.y + ImGui::GetFrameHeight()));
-    // Where ImGui centred it (RenderTextClipped), so that the two writings coincide.
+    // Where ImGui centred it (RenderTextClipped): hidden under a patch of the slider's colour.
     const ImVec2 size = ImGui::CalcTextSize(text);
     const ImVec2 at(std::max(frame.Min.x, frame.Min.x + (frame.GetWidth() - size.x) * 0.5f),
                     std::max(frame.Min.y, frame.Min.y + (frame.GetHeight() - size.y) * 0.5f));
-    // The patch spans the digits' height (a digit's glyph box, from the font), so the bar shows
-    // above and below them, and a little beyond each end of the text.
-    float top = at.y, bottom = at.y + size.y;
-    if (const ImFontGlyph* digit = g.Font->FindGlyphNoFallback('0')) {
-        const float scale = g.FontSize / g.Font->FontSize;
-        top = at.y + digit->Y0 * scale - 1.f;
-        bottom = at.y + digit->Y1 * scale + 1.f;
-    }
     const float border = g.Style.FrameBorderSize;
-    const float pad = 0.15f * g.FontSize;
-    ImRect patch(ImVec2(at.x - pad, top), ImVec2(at.x + size.x + pad, bottom));
+    ImRect patch(ImVec2(at.x - 1.f, at.y), ImVec2(at.x + size.x + 1.f, at.y + size.y));
     patch.ClipWith(ImRect(frame.Min.x + border, frame.Min.y + border, frame.Max.x - border,
                           frame.Max.y - border));
     // The slider's colour as ImGui filled it (faded while disabled) over the window's
@@ -57,8 +75,19 @@ void valueOverHandle(const char* text, float width) {
     const ImVec4 opaque(mix(f.x, back.x), mix(f.y, back.y), mix(f.z, back.z), 1.f);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     draw->AddRectFilled(patch.Min, patch.Max, ImGui::ColorConvertFloat4ToU32(opaque));
+    // The handle where ImGui has it: a bar of kSliderHandleWidth over the usable width.
+    const float t = std::clamp(std::isfinite(fraction) ? fraction : 0.f, 0.f, 1.f);
+    const float usable = frame.GetWidth() - 2.f * kGrabPadding - kSliderHandleWidth;
+    const float h0 = frame.Min.x + kGrabPadding + t * std::max(usable, 0.f);
+    const float h1 = h0 + kSliderHandleWidth;
+    draw->AddRectFilled(ImVec2(h0, frame.Min.y + kGrabPadding),
+                        ImVec2(h1, frame.Max.y - kGrabPadding),
+                        ImGui::GetColorU32(handleColour(g.ActiveId == id)), g.Style.GrabRounding);
+    // The value beside it, a third of a line away.
+    const float x =
+        sliderValueX(frame.Min.x + border, frame.Max.x - border, h0, h1, size.x, 0.3f * g.FontSize);
     draw->PushClipRect(frame.Min, frame.Max, true);
-    draw->AddText(at, ImGui::GetColorU32(ImGuiCol_Text), text);
+    draw->AddText(ImVec2(x, at.y), ImGui::GetColorU32(ImGuiCol_Text), text);
     draw->PopClipRect();
 }
 

@@ -5,6 +5,7 @@
 // two-column row of a readout.
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -98,7 +99,10 @@ inline bool slider(const char* label, double& value, double lo, double hi, const
     continues = !ImGui::IsItemActivated();
     std::array<char, 64> text{};
     std::snprintf(text.data(), text.size(), format, value);
-    valueOverHandle(text.data(), width);
+    const bool logarithmic = (flags & ImGuiSliderFlags_Logarithmic) != 0 && lo > 0.0;
+    const double fraction =
+        logarithmic ? std::log(value / lo) / std::log(hi / lo) : (value - lo) / (hi - lo);
+    valueBesideHandle(text.data(), width, static_cast<float>(fraction));
     return changed;
 }
 
@@ -114,7 +118,8 @@ inline bool sliderInt(const char* label, int& value, int lo, int hi, const char*
     }
     std::array<char, 64> text{};
     std::snprintf(text.data(), text.size(), format, value);
-    valueOverHandle(text.data(), width);
+    valueBesideHandle(text.data(), width,
+                      hi > lo ? static_cast<float>(value - lo) / static_cast<float>(hi - lo) : 0.f);
     return changed;
 }
 

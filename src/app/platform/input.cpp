@@ -43,7 +43,8 @@ std::vector<Command> dialogKey(const SDL_KeyboardEvent& key, const Dialog& dialo
         case SDLK_KP_ENTER:
             switch (dialog.kind) {
                 case Dialog::Kind::Quit:
-                    return {cmd::AnswerQuit{cmd::AnswerQuit::Choice::Save}};
+                    return {cmd::AnswerQuit{dialog.unsaved ? cmd::AnswerQuit::Choice::Save
+                                                           : cmd::AnswerQuit::Choice::Quit}};
                 case Dialog::Kind::SaveAs:
                     if (!dialog.replace.empty()) return {cmd::SaveAs{dialog.replace, true}};
                     return {cmd::SaveAs{dialog.proposal, false}};
@@ -56,7 +57,7 @@ std::vector<Command> dialogKey(const SDL_KeyboardEvent& key, const Dialog& dialo
             }
             return {};
         case SDLK_d:
-            if (dialog.kind == Dialog::Kind::Quit) {
+            if (dialog.kind == Dialog::Kind::Quit && dialog.unsaved) {
                 return {cmd::AnswerQuit{cmd::AnswerQuit::Choice::Discard}};
             }
             return {};

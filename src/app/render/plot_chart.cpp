@@ -89,8 +89,10 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     // Each row's range first: the y axis stands as far in as the widest tick label needs (78
     // pixels at 100 %; at 200 % a "-1.50" ran out of the frame's left edge), and a row keeps
     // only the ticks its height has room for.
-    const float plotHeight = rowH - 2 * lh - 8;
-    const int ticks = yTickCount(plotHeight, font.lineHeight());
+    // Each plot's title on its own line, clear of its top tick label (view/chart_text.hpp).
+    const PlotRowsPlace place = plotRowsPlace(y, rows, rowH, lh);
+    const PlotRowPlace& shortest = place.rows.back();
+    const int ticks = yTickCount(shortest.bottom - shortest.top, font.lineHeight());
     PlotRange ranges[4];
     std::size_t firsts[4] = {n, n, n, n};
     std::vector<std::string> labels;
@@ -126,10 +128,10 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     line_.clear();
     for (int k = 0; k < rows; ++k) {
         const Plot& pl = plots[k];
-        const float top = y + 6 + static_cast<float>(k) * rowH + lh;
-        const float bottom = top + plotHeight;
+        const PlotRowPlace& row = place.rows[static_cast<std::size_t>(k)];
+        const float top = row.top, bottom = row.bottom;
         // The title from the frame's padding: from the axis, a long one ran past its right edge.
-        font.layout(pl.title, x + kChartPad, top - lh - 1, sdlTextColor(pl.color, colours.panel),
+        font.layout(pl.title, x + kChartPad, row.title, sdlTextColor(pl.color, colours.panel),
                     text_);
         // Axes: left and bottom, grey.
         boxes_.quad(left - 1, top, left, bottom, axis);
@@ -150,16 +152,16 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     }
     // The time axis of the last plot carries the labels: simulated seconds.
     if (n >= 2) {
-        const float bottom = y + 6 + static_cast<float>(rows - 1) * rowH + lh + rowH - 2 * lh - 8;
+        const float bottom = place.rows.back().bottom;
         const double step = niceStep(t0, t1, 4);
         for (const double t : niceTicks(t0, t1, 4)) {
             const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
             boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
             const std::string label = tickLabel(t, step);
-            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4, grey,
-                        text_);
+            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, place.timeLabels,
+                        grey, text_);
         }
-        font.layout("t (s)", x + 8, bottom + 4, grey, text_);
+        font.layout("t (s)", x + 8, place.timeLabels, grey, text_);
     }
 
     boxes_.draw(renderer, nullptr);

@@ -410,7 +410,9 @@ struct SaveAs {
 /// The quit dialog's answer.
 struct AnswerQuit {
     static constexpr Traits traits = kPassive;
-    enum class Choice { Save, Discard, Cancel };
+    /// Quit: the answer of the dialog that asks with nothing unsaved (Enter); ignored while
+    /// there are unsaved changes, whose answers are Save, Discard and Cancel.
+    enum class Choice { Save, Discard, Cancel, Quit };
     Choice choice = Choice::Cancel;
 };
 /// Cancel: closes the dialog that is open, doing nothing.
@@ -461,8 +463,9 @@ struct SetVideoSettings {
     static constexpr Traits traits = kPastPrompt;
     VideoSettings settings;
 };
-/// Esc: closes what is open (a dialog, the help, the edit prompt); with nothing open, quits,
-/// asking first when there are unsaved changes.
+/// Esc: closes what is open (a dialog, the help, the edit prompt); with nothing open, asks in
+/// the quit dialog whether to quit (a run, its recordings and measurements are lost on quitting
+/// even with nothing unsaved), with Save, Discard and Cancel when there are unsaved changes.
 struct Back {
     static constexpr Traits traits = kPassive;
 };

@@ -31,6 +31,9 @@ struct Dialog {
     bool download = false;
     /// Save As was opened by the quit dialog's Save: a successful save quits.
     bool quitAfterSave = false;
+    /// Quit: there are unsaved changes (Save, Discard, Cancel); without them the dialog only
+    /// asks whether to quit (Esc with nothing unsaved: Enter quits, Esc stays).
+    bool unsaved = false;
     /// New scene: the values the dialog starts from.
     NewSceneSpec newScene;
 

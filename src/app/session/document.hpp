@@ -177,8 +177,9 @@ struct Document {
     /// Saves to `path`, saying so; false when it failed (the error is said).
     bool saveTo(const std::filesystem::path& path, Context& x);
     void closeDialog();
-    /// Leaves, asking first when there are unsaved changes.
-    void quit(Context& x);
+    /// Leaves, asking first when there are unsaved changes, or always when `ask` (Esc: a
+    /// keystroke away from losing a lesson's run).
+    void quit(Context& x, bool ask);
 };
 
 }  // namespace psb::app

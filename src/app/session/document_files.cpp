@@ -317,29 +317,41 @@ void Document::handle(const cmd::Back&, Context& x) {
     } else if (x.options.inPage) {
         x.notices.say("Esc closes a dialog, the help or the edit prompt; nothing is open");
     } else {
-        quit(x);
+        quit(x, true);
     }
 }
 
 void Document::handle(const cmd::Quit&, Context& x) {
     // While a dialog is open, closing the window again leaves the question standing.
     if (dialog.open()) return;
-    quit(x);
+    quit(x, false);
 }
 
-void Document::quit(Context& x) {
-    if (!dirty) {
+void Document::quit(Context& x, bool ask) {
+    if (!dirty && !ask) {
         running = false;
         return;
     }
     x.tools.closePrompt();
     dialog.kind = Dialog::Kind::Quit;
-    x.notices.say("Unsaved changes to " + meta.name + ": Save, Discard or Cancel",
-                  Notice::Level::Warning);
+    dialog.unsaved = dirty;
+    if (dirty) {
+        x.notices.say("Unsaved changes to " + meta.name + ": Save, Discard or Cancel",
+                      Notice::Level::Warning);
+    } else {
+        x.notices.say("Quit Particle Sandbox? Enter quits, Esc stays");
+    }
 }
 
 void Document::handle(const cmd::AnswerQuit& c, Context& x) {
     if (dialog.kind != Dialog::Kind::Quit) return;
+    // Nothing unsaved: the question is only whether to quit; with unsaved changes only Save,
+    // Discard and Cancel answer it.
+    if (!dialog.unsaved && c.choice != cmd::AnswerQuit::Choice::Cancel) {
+        closeDialog();
+        running = false;
+        return;
+    }
     switch (c.choice) {
         case cmd::AnswerQuit::Choice::Save:
             if (file.writable && file.path) {
@@ -356,6 +368,8 @@ void Document::handle(const cmd::AnswerQuit& c, Context& x) {
             return;
         case cmd::AnswerQuit::Choice::Cancel:
             handle(cmd::CloseDialog{}, x);
+            return;
+        case cmd::AnswerQuit::Choice::Quit:
             return;
     }
 }

@@ -100,9 +100,10 @@ void Instruments::startOver(const World& world, bool newScene, bool keepRecorded
     } else {
         data.restart();
     }
-    // The run's first row: the world as it starts.
+    // The run's first row: the world as it starts. The ruler's reading stays (a restart, a
+    // revert, an undo) unless the box changed size; a scene opened lays it anew (StartOver).
     data.sample(first);
-    ruler.place(world.def().width, world.def().height);
+    ruler.keepIn(world.def().width, world.def().height);
 }
 
 void Instruments::listen(Document& doc, bool card, std::optional<ParticleId> selected) const {

@@ -46,8 +46,9 @@ struct Instruments {
 
     /// A world put in place (`world`; a scene opened, an undo): the card and the stopwatch
     /// start over. A new scene (`newScene`) starts the run's series over too, with `first` as
-    /// its first row, and lays the ruler across its box; a Restart (`keepRecorded`) keeps what
-    /// was recorded, to export.
+    /// its first row, and keeps the ruler where it is unless the box changed size (a scene
+    /// opened lays it anew: StartOver::scene); a Restart (`keepRecorded`) keeps what was
+    /// recorded, to export.
     void startOver(const World& world, bool newScene, bool keepRecorded,
                    const ObservablesSample& first);
     /// Whether the card follows the collisions of `world` (shown, or a world of few particles).

@@ -11,7 +11,12 @@ namespace psb::app {
 void LabRuler::place(double width, double height) {
     a_ = Vec2(0.25 * width, 0.5 * height);
     b_ = Vec2(0.75 * width, 0.5 * height);
+    box_ = Vec2(width, height);
     held_.reset();
+}
+
+void LabRuler::keepIn(double width, double height) {
+    if (box_ != Vec2(width, height)) place(width, height);
 }
 
 std::optional<LabRuler::Part> LabRuler::partAt(const Vec2& screen, const Camera& camera) const {

@@ -4,7 +4,8 @@
 // ruler dragged by its edge. It reads its length, its run and rise (Δx, Δy) and its angle from
 // the horizontal, so it also measures a ramp's slope. It is an instrument, not part of the
 // scene: it is not saved and not undone; a scene opened puts it back across the middle of the
-// new box, at that box's scale.
+// new box, at that box's scale. A restart, a revert or an undo keeps its reading (a student
+// measures, then runs the experiment again), unless the box they bring back is of another size.
 
 #include <optional>
 
@@ -24,8 +25,11 @@ class LabRuler {
     static constexpr double kGrabPixels = 10.0;
     enum class Part { EndA, EndB, Edge };
 
-    /// Across the middle of a `width` × `height` box, half its width long.
+    /// Across the middle of a `width` × `height` box (metres), half its width long.
     void place(double width, double height);
+    /// Where it is, when the box is still the `width` × `height` one it was placed in; across
+    /// the middle of the box (place) when the box is of another size.
+    void keepIn(double width, double height);
 
     /// The part of the ruler under screen point `screen`, ends first, or none.
     [[nodiscard]] std::optional<Part> partAt(const Vec2& screen, const Camera& camera) const;
@@ -45,6 +49,7 @@ class LabRuler {
 
   private:
     Vec2 a_{0.0, 0.0}, b_{1.0, 0.0};
+    Vec2 box_{0.0, 0.0};  ///< the box it was placed in, m (none yet: zero)
     std::optional<Part> held_;
     Vec2 grabOffset_{0.0, 0.0};  ///< the held point minus the pointer (the edge: minus a_)
 };

@@ -21,6 +21,7 @@ void StartOver::world(const Document& doc, bool newScene, bool keepRecorded) {
 
 void StartOver::scene(const Document& doc) {
     world(doc, true);
+    instruments.ruler.place(doc.world.def().width, doc.world.def().height);
     tools.followScene(doc.world);
     view.fit(doc, notices);
 }

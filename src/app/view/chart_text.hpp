@@ -35,6 +35,23 @@ struct LegendLine {
 [[nodiscard]] int yAxisRoom(const TextMeasure& font, const std::vector<std::string>& labels,
                             int least = 0);
 
+/// Where one plot of the plots' frame (K) goes, pixels down the window.
+struct PlotRowPlace {
+    float title = 0.f;  ///< the top of its title's line
+    float top = 0.f;    ///< its y axis, from top to bottom
+    float bottom = 0.f;
+};
+/// The plots' frame at `y`, `rows` plots of `rowHeight` pixels in a frame rows × rowHeight + 8
+/// high, with text `lineHeight` high: each plot's title on its own line, its axis starting half
+/// a line below it (the top tick label, centred on the axis's top, clear of the title: at 200 %
+/// the title sat on the top number), and the time axis's labels and its caption "t (s)" on a
+/// line below the last plot's bottom tick label.
+struct PlotRowsPlace {
+    std::vector<PlotRowPlace> rows;
+    float timeLabels = 0.f;  ///< the top of the time axis's labels' line
+};
+[[nodiscard]] PlotRowsPlace plotRowsPlace(float y, int rows, float rowHeight, float lineHeight);
+
 /// The most ticks (niceTicks' maxTicks) a y axis `pixels` high takes with its labels one
 /// `lineHeight` high each clear of the next: 4 where there is room, at least 1.
 [[nodiscard]] int yTickCount(double pixels, int lineHeight);

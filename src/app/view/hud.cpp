@@ -194,7 +194,7 @@ const std::vector<std::pair<std::string, std::string>>& controls(bool inPage) {
         {"Ctrl+T", "theme: dark / light, for a projector (Show: Theme)"},
         {"F12", "save a PNG screenshot"},
         {"H", "show / hide this help"},
-        {"Esc", "close a dialog, help, edit; quit (asks if unsaved)"},
+        {"Esc", "close a dialog, help, edit; else ask to quit"},
     };
     static const Controls page = pageControls(list);
     return inPage ? page : list;

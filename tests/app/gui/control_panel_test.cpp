@@ -517,6 +517,37 @@ TEST_F(ControlPanelTest, ASelectedParticlesValuesComeIntoViewInAnEightHundredPix
     }
 }
 
+TEST_F(ControlPanelTest, ACollisionCardThatGrowsMovesNothingUnderThePointer) {
+    // A student reaching for the Data section clicked the collision card instead: the panel
+    // scrolled to the card when it was turned on, and the card, growing from "no collision yet"
+    // to its table at the first collision, pushed everything below it down.
+    const float scrolled = ImGui::FindWindowByName("Controls")->Scroll.y;
+    session_->apply(cmd::SetShow{ShowOption::Collision, true});
+    frame();
+    frame();
+    EXPECT_EQ(ImGui::FindWindowByName("Controls")->Scroll.y, scrolled)
+        << "turned on, the card does not scroll the panel";
+    for (const char* section : {"section Physics", "section Show"})
+        click(section);
+    ImGuiIO& io = gui_->io();
+    io.MousePos = centre("section Data");
+    frame();
+    frame();
+    const float before = panel_.item("section Data")->y0;
+    ASSERT_FALSE(session_->lastCollision());
+    session_->apply(cmd::TogglePause{});
+    for (int k = 1; k <= 1200 && !session_->lastCollision(); ++k) {
+        session_->update(1.0 / 60.0, k / 60.0);
+        frame();
+    }
+    ASSERT_TRUE(session_->lastCollision());
+    session_->apply(cmd::TogglePause{});
+    frame();
+    frame();
+    EXPECT_NEAR(panel_.item("section Data")->y0, before, 0.5f)
+        << "the card grew and moved the section under the pointer";
+}
+
 TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {
     click("fold panel");
     EXPECT_FALSE(session_->controlsShown());

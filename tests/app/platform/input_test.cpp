@@ -158,6 +158,24 @@ TEST(Input, WhileEditingOnlyThePromptsKeysMeanAnything) {
     EXPECT_TRUE(is<cmd::Screenshot>(commandsForKey(keyEvent(SDLK_F12), KeyState{.editing = true})));
 }
 
+TEST(Input, TheQuitDialogsEnterQuitsWithNothingUnsavedAndSavesOtherwise) {
+    KeyState clean;
+    clean.dialog.kind = Dialog::Kind::Quit;
+    const auto enter = commandsForKey(keyEvent(SDLK_RETURN), clean);
+    ASSERT_TRUE(is<cmd::AnswerQuit>(enter));
+    EXPECT_EQ(std::get<cmd::AnswerQuit>(enter.front()).choice, cmd::AnswerQuit::Choice::Quit);
+    EXPECT_TRUE(is<cmd::Back>(commandsForKey(keyEvent(SDLK_ESCAPE), clean)));
+    EXPECT_TRUE(commandsForKey(keyEvent(SDLK_d), clean).empty()) << "nothing to discard";
+    KeyState unsaved = clean;
+    unsaved.dialog.unsaved = true;
+    const auto save = commandsForKey(keyEvent(SDLK_RETURN), unsaved);
+    ASSERT_TRUE(is<cmd::AnswerQuit>(save));
+    EXPECT_EQ(std::get<cmd::AnswerQuit>(save.front()).choice, cmd::AnswerQuit::Choice::Save);
+    const auto discard = commandsForKey(keyEvent(SDLK_d), unsaved);
+    ASSERT_TRUE(is<cmd::AnswerQuit>(discard));
+    EXPECT_EQ(std::get<cmd::AnswerQuit>(discard.front()).choice, cmd::AnswerQuit::Choice::Discard);
+}
+
 TEST(Input, MouseCoordinatesAreScaledToDrawablePixels) {
     Input in;
     SDL_Event e{};

@@ -71,13 +71,43 @@ TEST_F(SessionRuler, ItsEndsComeBeforeTheToolAndLeaveNothingToUndo) {
     s.apply(cmd::SetShow{cmd::ShowOption::Ruler, false});
     EXPECT_FALSE(s.ruler().held());
     s.apply(cmd::PointerUp{s.camera().worldToScreen(s.ruler().b()), 2.1});
-    // A scene opened lays it across the new box.
+    // A scene opened lays it across the new box, even one of the same size.
     WorldDef big = s.world().def();
     big.width = 700.0;
     big.height = 700.0;
     s.setWorld(World(big), SceneInfo{.name = "big", .dt = Scene{}.dt});
     EXPECT_EQ(s.ruler().a(), Vec2(175.0, 350.0));
     EXPECT_EQ(s.ruler().b(), Vec2(525.0, 350.0));
+}
+
+TEST_F(SessionRuler, RestartRevertAndUndoKeepItsReading) {
+    // A student measures a distance, then runs the experiment again with R: the reading stays.
+    Session s = session();
+    s.apply(cmd::SetShow{cmd::ShowOption::Ruler, true});
+    drag(s, s.ruler().a(), Vec2(2.0, 1.0), 0.0);
+    drag(s, s.ruler().b(), Vec2(5.0, 5.0), 1.0);
+    const Vec2 a = s.ruler().a(), b = s.ruler().b();
+    ASSERT_TRUE(a.isApprox(Vec2(2.0, 1.0), 1e-9)) << a.transpose();
+    s.apply(cmd::TogglePause{});
+    for (int k = 1; k <= 30; ++k)
+        s.update(1.0 / 60.0, 2.0 + k / 60.0);
+    s.apply(cmd::Restart{});
+    EXPECT_TRUE(said(s.takeNotices(), "Restarted"));
+    EXPECT_EQ(s.ruler().a(), a);
+    EXPECT_EQ(s.ruler().b(), b);
+    s.apply(cmd::Revert{});
+    EXPECT_EQ(s.ruler().a(), a);
+    EXPECT_EQ(s.ruler().b(), b);
+    s.apply(cmd::Undo{});
+    EXPECT_EQ(s.ruler().a(), a);
+    // A box of another size brought back (the undo of a new scene) lays it across that box.
+    s.apply(cmd::NewScene{20.0, 10.0, 0.0, true});
+    EXPECT_EQ(s.ruler().a(), Vec2(5.0, 5.0));
+    s.apply(cmd::SetShow{cmd::ShowOption::Ruler, true});
+    drag(s, s.ruler().a(), Vec2(1.0, 1.0), 3.0);
+    s.apply(cmd::Undo{});
+    const WorldDef def = s.world().def();
+    EXPECT_EQ(s.ruler().a(), Vec2(0.25 * def.width, 0.5 * def.height));
 }
 
 }  // namespace

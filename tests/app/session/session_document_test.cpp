@@ -165,10 +165,11 @@ TEST_F(SessionDocument, WhereEscDoesNotQuitItOnlyClosesWhatIsOpen) {
     s.apply(cmd::Back{});  // unsaved changes: still no quit dialog
     EXPECT_TRUE(s.running());
     EXPECT_FALSE(s.dialog().open());
-    // A desktop window's Esc quits.
+    // A desktop window's Esc asks whether to quit.
     Session d = session();
     d.apply(cmd::Back{});
-    EXPECT_FALSE(d.running());
+    EXPECT_TRUE(d.running());
+    EXPECT_EQ(d.dialog().kind, Dialog::Kind::Quit);
 }
 
 // A web page hands what it saves to the browser as a download: the dialog and the messages

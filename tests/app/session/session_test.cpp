@@ -197,9 +197,42 @@ TEST_F(SessionTest, TheQuitDialogsSaveAsksForANameThenQuitsOnceSaved) {
     EXPECT_FALSE(t.dialog().open());
 }
 
-TEST_F(SessionTest, EscQuitsAtOnceWithNothingToLoseAndAfterASave) {
+TEST_F(SessionTest, EscAsksBeforeQuittingEvenWithNothingUnsaved) {
+    // A lesson's run, its recordings and measurements are not saved changes, and Esc is one
+    // keystroke: it asks in the quit dialog, whose Enter quits and whose Esc stays.
     Session s = session();
+    ASSERT_FALSE(s.unsavedChanges());
     s.apply(cmd::Back{});
+    EXPECT_TRUE(s.running());
+    ASSERT_EQ(s.dialog().kind, Dialog::Kind::Quit);
+    EXPECT_FALSE(s.dialog().unsaved);
+    EXPECT_TRUE(said(s.takeNotices(), "Quit Particle Sandbox? Enter quits, Esc stays"));
+    // The dialog holds every other command.
+    const std::size_t n = s.world().size();
+    s.apply(cmd::SpawnRandom{});
+    EXPECT_EQ(s.world().size(), n);
+    // Esc again stays.
+    s.apply(cmd::Back{});
+    EXPECT_TRUE(s.running());
+    EXPECT_FALSE(s.dialog().open());
+    EXPECT_TRUE(said(s.takeNotices(), "Quit cancelled"));
+    // Enter (the dialog's Quit) quits.
+    s.apply(cmd::Back{});
+    s.apply(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Quit});
+    EXPECT_FALSE(s.running());
+    // With unsaved changes, Quit is not one of the answers: only Save, Discard and Cancel are.
+    Session u = session();
+    u.apply(cmd::SpawnRandom{});
+    u.apply(cmd::Back{});
+    ASSERT_TRUE(u.dialog().unsaved);
+    u.apply(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Quit});
+    EXPECT_TRUE(u.running());
+    EXPECT_EQ(u.dialog().kind, Dialog::Kind::Quit);
+}
+
+TEST_F(SessionTest, ClosingTheWindowQuitsAtOnceWithNothingToLoseAndAfterASave) {
+    Session s = session();
+    s.apply(cmd::Quit{});
     EXPECT_FALSE(s.running());
     Session t = session();
     t.apply(cmd::SpawnRandom{});

@@ -1,9 +1,12 @@
-// The plots' words (plot_scale.hpp): the collision rate's title names its window.
+// The plots' words (plot_scale.hpp): the collision rate's title names its window; where the
+// plots' titles, axes and time labels go (chart_text.hpp): no title on a tick label.
 
 #include <gtest/gtest.h>
 
 #include "session/monitor.hpp"
+#include "view/chart_text.hpp"
 #include "view/plot_scale.hpp"
+#include "view/screen_layout.hpp"
 
 namespace psb::app {
 namespace {
@@ -14,6 +17,48 @@ TEST(PlotScale, TheCollisionRatesTitleNamesItsWindowOfSimulatedTime) {
     // A dt that does not divide the window: two figures of what it is (26 samples of 0.019 s).
     EXPECT_NEAR(Monitor::rateWindow(0.019), 0.494, 1e-12);
     EXPECT_EQ(collisionRateTitle(Monitor::rateWindow(0.019)), "collisions/s, last 0.49 s");
+}
+
+/// Whether the lines [a, a + h) and [b, b + h) share a pixel row.
+bool overlap(float a, float b, float h) {
+    return a < b + h && b < a + h;
+}
+
+TEST(PlotRows, NoTitleOrCaptionSitsOnATickLabel) {
+    // At 200 % (a 28-pixel line) a plot's title sat on its top tick label ("175", "100"), and the
+    // time axis's caption "t (s)" on the last plot's bottom one ("-100"). A tick label is a line
+    // high, centred on its tick; the top and bottom ticks are at the axis's ends.
+    for (const float line : {14.f, 17.f, 21.f, 28.f, 34.f}) {
+        const float scale = line / 14.f;
+        for (int rows = 1; rows <= 4; ++rows) {
+            for (const float rowHeight :
+                 {kPlotRowMaxHeight * scale, 0.8f * kPlotRowMaxHeight * scale}) {
+                const float y = 40.f;
+                const PlotRowsPlace p = plotRowsPlace(y, rows, rowHeight, line);
+                ASSERT_EQ(p.rows.size(), static_cast<std::size_t>(rows));
+                const float frameBottom = y + static_cast<float>(rows) * rowHeight + 8.f;
+                for (int k = 0; k < rows; ++k) {
+                    const PlotRowPlace& r = p.rows[static_cast<std::size_t>(k)];
+                    const std::string at = "line " + std::to_string(line) + ", plot " +
+                                           std::to_string(k + 1) + " of " + std::to_string(rows);
+                    EXPECT_LT(r.top, r.bottom) << at;
+                    EXPECT_GE(r.title, y) << at;
+                    const float topLabel = r.top - line / 2.f, bottomLabel = r.bottom - line / 2.f;
+                    EXPECT_FALSE(overlap(r.title, topLabel, line))
+                        << at << ": title on the top label";
+                    if (k + 1 < rows) {
+                        const float next = p.rows[static_cast<std::size_t>(k) + 1].title;
+                        EXPECT_FALSE(overlap(next, bottomLabel, line))
+                            << at << ": the next title on the bottom label";
+                    } else {
+                        EXPECT_FALSE(overlap(p.timeLabels, bottomLabel, line))
+                            << at << ": t (s) on the bottom label";
+                        EXPECT_LE(p.timeLabels + line, frameBottom) << at << ": below the frame";
+                    }
+                }
+            }
+        }
+    }
 }
 
 }  // namespace
