@@ -391,6 +391,11 @@ void App::render() {
     if (!session_->helpShown()) {
         // The panel's points are the UI's (gui_context.hpp): the pixel ratio × its scale.
         const double points = ratio * session_->view().uiScale;
+        // Tooltips keep off the message band (where the last frame put it).
+        const PixelRect band = lastFrame_.layout.messages;
+        const auto p = static_cast<float>(points);
+        gui_->setTooltipAvoid({static_cast<float>(band.x) / p, static_cast<float>(band.y) / p,
+                               static_cast<float>(band.w) / p, static_cast<float>(band.h) / p});
         for (const Command& c : panel_.build(*session_, stats_, static_cast<float>(out.y / points),
                                              static_cast<float>(points))) {
             apply(c);

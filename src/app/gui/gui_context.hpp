@@ -124,6 +124,8 @@ class GuiContext {
     [[nodiscard]] ImGuiRenderer& renderer() { return *renderer_; }
     /// The tooltip the last frame showed (empty: none), for --log-controls.
     [[nodiscard]] const std::string& shownTooltip() const { return tooltips_.shown; }
+    /// The message band, in the panel's points: tooltips keep off it (tooltips.hpp).
+    void setTooltipAvoid(const TipRect& band) { tooltips_.avoid = band; }
 
   private:
     void makeCurrent() const;

@@ -10,10 +10,43 @@
 // GuiContext owns the state and opens each frame with startFrame; widgets::tip reads it
 // through ImGui's io.UserData (null: every hover shows its tooltip, as ImGui does, for panels
 // built without a GuiContext). What was shown is kept for --log-controls.
+//
+// A tooltip never covers the message line (what the program just said, at the bottom right of
+// the panel): where ImGui would put it over that band, tooltipPosition moves it above the band
+// (or below, where above has no room).
 
+#include <algorithm>
 #include <string>
 
 namespace psb::app {
+
+/// A rectangle in the panel's points (ImGui's coordinates): x, y its top-left corner.
+struct TipRect {
+    float x = 0.f, y = 0.f, w = 0.f, h = 0.f;
+    [[nodiscard]] bool empty() const { return w <= 0.f || h <= 0.f; }
+    [[nodiscard]] bool overlaps(const TipRect& o) const {
+        return !empty() && !o.empty() && x < o.x + o.w && o.x < x + w && y < o.y + o.h &&
+               o.y < y + h;
+    }
+};
+
+/// Where a tooltip of `width` × `height` points goes for a pointer at (mouseX, mouseY) in a
+/// display `displayW` × `displayH`: right of and below the pointer as ImGui puts it (above it
+/// where below has no room), kept on the display, and off `avoid` (the message band): moved
+/// above the band, or below it where above has no room.
+[[nodiscard]] inline TipRect tooltipPosition(float mouseX, float mouseY, float width, float height,
+                                             float displayW, float displayH, const TipRect& avoid) {
+    constexpr float kOffsetX = 16.f, kOffsetY = 10.f;
+    TipRect r{mouseX + kOffsetX, mouseY + kOffsetY, width, height};
+    if (r.y + height > displayH) r.y = mouseY - kOffsetY - height;
+    r.x = std::clamp(r.x, 0.f, std::max(0.f, displayW - width));
+    r.y = std::clamp(r.y, 0.f, std::max(0.f, displayH - height));
+    if (r.overlaps(avoid)) {
+        const float above = avoid.y - height - 1.f;
+        r.y = above >= 0.f ? above : std::min(avoid.y + avoid.h + 1.f, displayH - height);
+    }
+    return r;
+}
 
 struct TooltipState {
     static constexpr double kDelaySeconds = 0.5;
@@ -24,6 +57,7 @@ struct TooltipState {
     double since = 0.0;
     bool hoveredThisFrame = false;
     std::string shown;  ///< the tooltip shown this frame (empty: none)
+    TipRect avoid;      ///< the message band, in the panel's points (empty: none)
 
     void startFrame(double seconds, bool pointerIsMouse) {
         if (!hoveredThisFrame) hovered.clear();

@@ -76,12 +76,22 @@ inline bool smallStateButton(const char* id, const char* words) {
 /// (tooltips.hpp): never for a finger, nor while a control is held or a field typed in.
 inline void tip(const char* text) {
     if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    const float wrapWidth = ImGui::GetFontSize() * 22.f;
     if (auto* state = static_cast<TooltipState*>(ImGui::GetIO().UserData)) {
         if (!state->show(text) || ImGui::IsAnyItemActive() || ImGui::GetIO().WantTextInput) return;
         state->shown = text;
+        if (!state->avoid.empty()) {
+            const ImGuiIO& io = ImGui::GetIO();
+            const ImVec2 pad = ImGui::GetStyle().WindowPadding;
+            const ImVec2 text_size = ImGui::CalcTextSize(text, nullptr, false, wrapWidth);
+            const TipRect at = tooltipPosition(io.MousePos.x, io.MousePos.y,
+                                               text_size.x + 2.f * pad.x, text_size.y + 2.f * pad.y,
+                                               io.DisplaySize.x, io.DisplaySize.y, state->avoid);
+            ImGui::SetNextWindowPos(ImVec2(at.x, at.y));
+        }
     }
     ImGui::BeginTooltip();
-    wrapped(text, ImGui::GetFontSize() * 22.f);
+    wrapped(text, wrapWidth);
     ImGui::EndTooltip();
 }
 
