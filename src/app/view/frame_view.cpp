@@ -83,11 +83,8 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
         for (const MarkLabel& l : frame.grid->labels)
             out.rects.push_back(labelRect(l, labelFont));
     }
-    if (frame.camera != nullptr) {
-        for (const DropperView& d : frame.droppers)
-            out.rects.push_back(
-                dropperLabelRect(dropperSpout(*frame.camera, d), d.label, labelFont));
-    }
+    for (const DropperView& d : frame.droppers)
+        out.rects.push_back(d.words.at);
     return out;
 }
 
@@ -175,7 +172,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     std::uint64_t stillToDrop = 0;
     for (const Dropper& d : world.droppers()) {
         stillToDrop += d.balls;
-        f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d)});
+        f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d), {}});
     }
     if (session.binsShown()) {
         f.bins = binHistogram(*session.meta().bins, world.particles(), stillToDrop);
@@ -340,10 +337,21 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         f.layout = layoutPanels(req);
     }
     if (f.recordingMark) f.recordingMark->at = f.layout.recording;
+    // The window right of the control panel, where the readings drawn over the box are read.
+    const PixelRect window{left, 0, req.width - left, req.height};
+    if (!f.droppers.empty()) {
+        // A dropper's words inside the box, clear of the panels and of the pegs below the
+        // spout (wrapped words ran down over the Galton board's first rows).
+        std::vector<PixelRect> keepOut = panelRects(f.layout);
+        for (const PixelRect& r : pegsOnScreen(world, session.camera()))
+            keepOut.push_back(r);
+        const LabelRoom words = labelRoom(world, session.camera(), window, std::move(keepOut));
+        for (DropperView& d : f.droppers)
+            d.words = dropperWords(dropperSpout(session.camera(), d), d.label, labelFont, words);
+    }
     if (f.grid || f.ruler) {
         // The marks' labels are read whole: in the window right of the control panel, clear of
         // every panel and of each other; the ruler's reading off the discs and pegs where it can.
-        const PixelRect window{left, 0, req.width - left, req.height};
         std::vector<PixelRect> discs;
         if (f.ruler) {
             discs = discsOnScreen(world, session.camera(), window);
@@ -352,10 +360,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         }
         // A dropper's words are a reading too: the grid's labels keep off them.
         std::vector<PixelRect> keepOut = panelRects(f.layout);
-        for (const DropperView& d : f.droppers) {
-            keepOut.push_back(
-                dropperLabelRect(dropperSpout(session.camera(), d), d.label, labelFont));
-        }
+        for (const DropperView& d : f.droppers)
+            keepOut.push_back(d.words.at);
         keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
                             labelRoom(world, session.camera(), window, std::move(keepOut)), discs);
     }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "session/session.hpp"
+#include "session/test_assets.hpp"
 #include "view/fixed_measure.hpp"
 #include "view/frame_view.hpp"
 #include "view/lab_marks.hpp"
@@ -21,6 +22,8 @@
 namespace psb::app {
 namespace {
 
+using test::inWindow;
+using test::kDesk;
 using test::kProjector;
 using test::lessonWorld;
 using test::onTheProjector;
@@ -136,8 +139,7 @@ TEST(LabelPlaces, NoParticleLabelCoversADroppersWords) {
     const test::FixedMeasure font(2.0);
     const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
     ASSERT_EQ(f.droppers.size(), 1u);
-    const PixelRect words =
-        dropperLabelRect(dropperSpout(s.camera(), f.droppers[0]), f.droppers[0].label, font);
+    const PixelRect words = f.droppers[0].words.at;
     ASSERT_GT(words.w, 0);
     // Nor does a grid's label (they straddled each other along the box's top).
     ASSERT_TRUE(f.grid.has_value());
@@ -149,6 +151,64 @@ TEST(LabelPlaces, NoParticleLabelCoversADroppersWords) {
         ASSERT_GT(place.at.w, 0);
         EXPECT_FALSE(overlaps(place.at, words))
             << "a label at " << text(place.at) << " over the dropper's words at " << text(words);
+    }
+}
+
+TEST(DropperWords, AreReadWholeInsideTheBoxClearOfThePanelsFrom100To200Percent) {
+    // The Galton board at 200 % with its plots and the values table: "dropper: 1000 balls
+    // left" ran out of the narrow box and under the bins' chart. Beside the spout where a side
+    // has room, wrapped where one line does not fit, never over the pegs.
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    for (const Window& win : {Window{1600, 1000, kProjector}, Window{800, 600, kDesk},
+                              Window{1920, 1080, kProjector}, Window{1200, 800, kDesk}}) {
+        for (const bool panel : {true, false}) {
+            for (const bool more : {true, false}) {
+                Session s = more ? inWindow(lessonWorld(),
+                                            {ShowOption::Plots, ShowOption::Values,
+                                             ShowOption::Grid, ShowOption::Speeds},
+                                            win.width, win.height, win.controls)
+                                 : inWindow(lessonWorld(), {}, win.width, win.height, win.controls);
+                s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+                if (!panel) s.apply(cmd::ToggleControls{});
+                const test::FixedMeasure font(win.controls.pointPixels);
+                const FrameView f = buildFrame(s, FrameStats{}, font, font, win.controls);
+                ASSERT_EQ(f.droppers.size(), 1u);
+                const DropperView::Words& words = f.droppers[0].words;
+                const std::string at =
+                    std::to_string(win.width) + "x" + std::to_string(win.height) + " at " +
+                    std::to_string(win.controls.pointPixels) +
+                    (panel ? ", panel open" : ", panel folded") +
+                    (more ? ", charts and table" : "") + ": words at " + text(words.at);
+                const LabelRoom room =
+                    labelRoom(s.world(), s.camera(), {0, 0, win.width, win.height}, {});
+                // Inside the box; or, where no side of the spout has room clear of the pegs,
+                // above its top wall.
+                const bool inBox = words.at.x >= room.box.x && words.at.y >= room.box.y &&
+                                   words.at.x + words.at.w <= room.box.x + room.box.w &&
+                                   words.at.y + words.at.h <= room.box.y + room.box.h;
+                const bool above = words.at.y + words.at.h <= room.box.y - room.boxWall &&
+                                   words.at.y >= 0 && words.at.x >= f.controlsInset &&
+                                   words.at.x + words.at.w <= win.width;
+                EXPECT_TRUE(inBox || above) << at << ", box " << text(room.box);
+                for (const PixelRect& r : panelRects(f.layout))
+                    EXPECT_FALSE(overlaps(words.at, r)) << at << ", a panel at " << text(r);
+                for (const PixelRect& r : pegsOnScreen(s.world(), s.camera()))
+                    EXPECT_FALSE(overlaps(words.at, r)) << at << ", a peg at " << text(r);
+                std::string said;
+                int widest = 0;
+                for (const std::string& line : words.lines) {
+                    said += (said.empty() ? "" : " ") + line;
+                    widest = std::max(widest, font.measure(line));
+                }
+                EXPECT_EQ(said, f.droppers[0].label) << at;
+                EXPECT_LE(widest, words.at.w) << at;
+                EXPECT_GE(words.at.h, static_cast<int>(words.lines.size()) * font.lineHeight())
+                    << at;
+            }
+        }
     }
 }
 
