@@ -6,6 +6,7 @@
 
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
+#include "view/bin_numbers.hpp"
 #include "view/box_area.hpp"
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
@@ -41,6 +42,13 @@ HudData hudData(const Session& session) {
         hud.heaviestMass = masses.hi;
     }
     return hud;
+}
+
+/// Pixels kept clear round a bin's number on the board by the other readings.
+constexpr int kBinNumberAir = 2;
+
+PixelRect grown(const PixelRect& r, int by) {
+    return {r.x - by, r.y - by, r.w + 2 * by, r.h + 2 * by};
 }
 
 /// Messages narrower than this beside the inspector go under it instead, pixels.
@@ -85,6 +93,12 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
     }
     for (const DropperView& d : frame.droppers)
         out.rects.push_back(d.words.at);
+    if (frame.bins && frame.camera != nullptr && frame.world != nullptr) {
+        for (const BinNumber& n :
+             binNumbers(*frame.camera, frame.bins->bins, frame.world->def().height, labelFont)) {
+            out.rects.push_back(grown(n.at, kBinNumberAir));
+        }
+    }
     return out;
 }
 
@@ -362,6 +376,14 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         std::vector<PixelRect> keepOut = panelRects(f.layout);
         for (const DropperView& d : f.droppers)
             keepOut.push_back(d.words.at);
+        // So are the bins' numbers on the board, with air round them (the Galton board's "0"
+        // touched "0.4 m").
+        if (f.bins) {
+            for (const BinNumber& n :
+                 binNumbers(session.camera(), f.bins->bins, world.def().height, labelFont)) {
+                keepOut.push_back(grown(n.at, kBinNumberAir));
+            }
+        }
         keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
                             labelRoom(world, session.camera(), window, std::move(keepOut)), discs);
     }

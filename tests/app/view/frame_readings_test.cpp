@@ -12,6 +12,7 @@
 
 #include "session/session.hpp"
 #include "session/test_assets.hpp"
+#include "view/bin_numbers.hpp"
 #include "view/fixed_measure.hpp"
 #include "view/frame_view.hpp"
 #include "view/lab_marks.hpp"
@@ -210,6 +211,47 @@ TEST(DropperWords, AreReadWholeInsideTheBoxClearOfThePanelsFrom100To200Percent) 
             }
         }
     }
+}
+
+TEST(GridLabels, KeepOffTheBinsNumbersOnTheBoard) {
+    // The Galton board with the grid (Shift+G) at 200 %: the grid's "0.4 m" along the box's
+    // left edge touched the bins' "0" just under their top line. Each keeps two pixels of air.
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    int numbered = 0;
+    for (const Window& win : {Window{1600, 1000, kProjector}, Window{800, 600, kDesk},
+                              Window{1920, 1080, kProjector}, Window{1200, 800, kDesk}}) {
+        for (const bool panel : {true, false}) {
+            for (const bool plots : {true, false}) {
+                Session s = plots ? inWindow(lessonWorld(), {ShowOption::Grid, ShowOption::Plots},
+                                             win.width, win.height, win.controls)
+                                  : inWindow(lessonWorld(), {ShowOption::Grid}, win.width,
+                                             win.height, win.controls);
+                s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+                if (!panel) s.apply(cmd::ToggleControls{});
+                const test::FixedMeasure font(win.controls.pointPixels);
+                const FrameView f = buildFrame(s, FrameStats{}, font, font, win.controls);
+                ASSERT_TRUE(f.grid.has_value());
+                ASSERT_TRUE(f.bins.has_value());
+                const std::vector<BinNumber> numbers =
+                    binNumbers(s.camera(), f.bins->bins, s.world().def().height, font);
+                numbered += !numbers.empty();  // narrow bins have none
+                for (const MarkLabel& l : f.grid->labels) {
+                    const PixelRect r = labelRect(l, font);
+                    const PixelRect air{r.x - 2, r.y - 2, r.w + 4, r.h + 4};
+                    for (const BinNumber& n : numbers) {
+                        EXPECT_FALSE(overlaps(air, n.at))
+                            << win.width << "x" << win.height << (panel ? "" : ", panel folded")
+                            << (plots ? ", plots" : "") << ": the grid's \"" << l.text << "\" at "
+                            << text(r) << " by bin " << n.text << " at " << text(n.at);
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(numbered, 4);
 }
 
 }  // namespace
