@@ -336,6 +336,18 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         req.chartsBand = chartsBandRect(req.width, req.height, left, static_cast<int>(bare.bottom),
                                         static_cast<int>(bare.chartsBand) - kPanelGap);
     }
+    {
+        // The box with its walls as drawn: the legend keeps off it.
+        const WorldDef& def = world.def();
+        const Camera::ScreenBox b = session.camera().boxOnScreen(def.width, def.height);
+        const int wall = def.walls ? static_cast<int>(std::ceil(boxWallPixels(
+                                         def.width, def.height, session.camera().zoom())))
+                                   : 0;
+        req.box = {static_cast<int>(std::floor(b.topLeft.x())) - wall,
+                   static_cast<int>(std::floor(b.topLeft.y())) - wall,
+                   static_cast<int>(std::ceil(b.size.x())) + 2 * wall + 1,
+                   static_cast<int>(std::ceil(b.size.y())) + 2 * wall + 1};
+    }
     if (f.recordingMark) {
         // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).
         const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});

@@ -254,5 +254,46 @@ TEST(GridLabels, KeepOffTheBinsNumbersOnTheBoard) {
     EXPECT_GT(numbered, 4);
 }
 
+TEST(MomentumLegend, KeepsOffTheBoxWhenTheHudGrows) {
+    // Lesson 1 with the momentum (V) at 200 %: the HUD's notes (labels left out, the charts
+    // folded) grew its lines across the legend's column, and the legend, placed below them,
+    // dropped onto the box's top-right corner, on the screen and in the video.
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    for (const Window& win : {Window{1600, 1000, kProjector}, Window{800, 600, kDesk},
+                              Window{1920, 1080, kProjector}, Window{1024, 768, kDesk}}) {
+        for (const bool panel : {true, false}) {
+            for (const bool recording : {false, true}) {
+                Session s = inWindow(lessonWorld(), {ShowOption::Momentum, ShowOption::Labels},
+                                     win.width, win.height, win.controls);
+                if (!panel) s.apply(cmd::ToggleControls{});
+                const test::FixedMeasure font(win.controls.pointPixels);
+                FrameStats stats;
+                stats.labelsCrowded = 2;
+                stats.labelsOffWindow = 1;
+                stats.video.recording = recording;
+                const FrameView f = buildFrame(s, stats, font, font, win.controls);
+                const Camera::ScreenBox b = s.camera().boxOnScreen(10.0, 4.0);
+                const PixelRect box{static_cast<int>(std::floor(b.topLeft.x())),
+                                    static_cast<int>(std::floor(b.topLeft.y())),
+                                    static_cast<int>(std::ceil(b.size.x())),
+                                    static_cast<int>(std::ceil(b.size.y()))};
+                const std::string at =
+                    std::to_string(win.width) + "x" + std::to_string(win.height) +
+                    (panel ? "" : ", panel folded") + (recording ? ", recording" : "") +
+                    ": legend at " + text(f.layout.legend) + ", box " + text(box);
+                ASSERT_GT(f.layout.legend.w, 0) << at;
+                EXPECT_FALSE(overlaps(f.layout.legend, box)) << at;
+                for (const PixelRect& r : panelRects(f.layout)) {
+                    if (r == f.layout.legend) continue;
+                    EXPECT_FALSE(overlaps(f.layout.legend, r)) << at << ", a panel at " << text(r);
+                }
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace psb::app
