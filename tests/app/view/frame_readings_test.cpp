@@ -295,5 +295,36 @@ TEST(MomentumLegend, KeepsOffTheBoxWhenTheHudGrows) {
     }
 }
 
+TEST(LabelPlaces, AtTheImpactBothLabelsKeepTheirValues) {
+    // Lesson 1 at the moment of impact on the projector, with what the lesson shows: the two
+    // balls touch, and their labels shrank to "particle 1" and "particle 2".
+    for (const bool panel : {true, false}) {
+        for (const bool table : {false, true}) {
+            World w = lessonWorld();
+            Session s =
+                table ? onTheProjector(std::move(w), {ShowOption::Labels, ShowOption::Momentum,
+                                                      ShowOption::Plots, ShowOption::Grid,
+                                                      ShowOption::Values, ShowOption::Collision})
+                      : onTheProjector(std::move(w), {ShowOption::Labels, ShowOption::Momentum,
+                                                      ShowOption::Plots, ShowOption::Grid});
+            if (!panel) s.apply(cmd::ToggleControls{});
+            s.apply(cmd::TogglePause{});
+            // They touch at t = 4.4 m / 3 m/s = 1.467 s.
+            for (int k = 1; k <= 88; ++k)
+                s.update(1.0 / 60.0, k / 60.0);
+            s.apply(cmd::TogglePause{});
+            const test::FixedMeasure font(2.0);
+            const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
+            const std::vector<LabelPlace> places = labelsOf(s, f, font);
+            ASSERT_EQ(places.size(), 2u);
+            for (const LabelPlace& p : places) {
+                EXPECT_GT(p.at.w, 0);
+                EXPECT_FALSE(p.nameOnly) << (panel ? "panel open" : "panel folded")
+                                         << (table ? ", table" : "") << ": at " << text(p.at);
+            }
+        }
+    }
+}
+
 }  // namespace
 }  // namespace psb::app
