@@ -7,6 +7,7 @@
 #include "render/bin_chart.hpp"
 #include "render/sdl_color.hpp"
 #include "render/text.hpp"
+#include "view/bin_numbers.hpp"
 
 namespace psb::app {
 
@@ -29,16 +30,10 @@ void BinMarks::draw(SDL_Renderer* renderer, const Font& font, const Camera& came
         const SDL_FRect line{x - 1.f, top, 2.f, bottom - top};
         SDL_RenderFillRectF(renderer, &line);
     }
-    // Each bin's number, where it fits between the edges, at whole pixels.
+    // Each bin's number where the view places it (the grid's distances keep off them).
     text_.clear();
-    for (std::size_t k = 0; k + 1 < bins.edges.size(); ++k) {
-        const std::string number = std::to_string(k);
-        const double left = camera.worldToScreen(Vec2(bins.edges[k], floor)).x();
-        const double right = camera.worldToScreen(Vec2(bins.edges[k + 1], floor)).x();
-        const int width = font.measure(number);
-        if (right - left < width + 4.0 || bottom - top < 2.0 * font.lineHeight()) continue;
-        font.layout(number, std::round(static_cast<float>(0.5 * (left + right)) - width / 2.f),
-                    std::round(top + 2.f), bar, text_);
+    for (const BinNumber& n : binNumbers(camera, bins, floor, font)) {
+        font.layout(n.text, static_cast<float>(n.at.x), static_cast<float>(n.at.y), bar, text_);
     }
     font.draw(text_);
 }

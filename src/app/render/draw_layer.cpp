@@ -92,7 +92,7 @@ void DrawLayer::drawLaunch(const Camera& camera, const LaunchPreviewView& launch
 void DrawLayer::drawDropper(const Camera& camera, const DropperView& d, const Palette& colours) {
     const SDL_Color spout = sdlColor(colours.dropper);
     // A spout: a funnel narrowing down to just above where a ball starts; its words to the
-    // right, where the view says (the particles' labels keep off them: dropper_mark.hpp).
+    // where the view placed them (beside it in the box: dropper_mark.hpp).
     const DropperSpout s = dropperSpout(camera, d);
     const auto pt = [&spout](double x, double y) {
         return SDL_Vertex{{static_cast<float>(x), static_cast<float>(y)}, spout, {0.f, 0.f}};
@@ -102,9 +102,12 @@ void DrawLayer::drawDropper(const Camera& camera, const DropperView& d, const Pa
     const int indices[6] = {0, 1, 2, 0, 2, 3};
     SDL_RenderGeometry(sdl_, nullptr, quad, 4, indices, 6);
     text_.clear();
-    const PixelRect words = dropperLabelRect(s, d.label, labelFont_);
-    labelFont_.layout(d.label, static_cast<float>(words.x), static_cast<float>(words.y),
-                      sdlColor(colours.dropperText), text_);
+    for (std::size_t k = 0; k < d.words.lines.size(); ++k) {
+        labelFont_.layout(
+            d.words.lines[k], static_cast<float>(d.words.at.x),
+            static_cast<float>(d.words.at.y + static_cast<int>(k) * labelFont_.lineHeight()),
+            sdlColor(colours.dropperText), text_);
+    }
     labelFont_.draw(text_);
 }
 

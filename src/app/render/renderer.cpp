@@ -393,6 +393,16 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 asks[k].size = {width + 4, 5 * lh + 1};
                 asks[k].shortSize = {shortWidth + 4, 2 * lh + 1};
                 asks[k].nameSize = {labelFont_->measure(lines[0].data()) + 4, lh + 1};
+                if (const double len = arrowLength_[k]; len > camera.toScreen(p.radius[i])) {
+                    // As drawn: from the rim to the tip, the head's half-width and a pixel.
+                    const double speed = std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
+                    const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);
+                    const double rim = camera.toScreen(p.radius[i]);
+                    const Vec2 from = c + rim * u, tip = c + len * u;
+                    const double head = std::min(12.0, len - rim);
+                    asks[k].arrow = {from.x(), from.y(), tip.x(), tip.y(),
+                                     head * std::tan(std::numbers::pi / 6.0) + 1.0};
+                }
                 asks[k].inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
                                 p.x[i] <= world.def().width && p.y[i] <= world.def().height;
             }

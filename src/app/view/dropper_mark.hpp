@@ -1,15 +1,17 @@
 #pragma once
 // A ball dropper as the frame shows it (scene.hpp's Dropper): a spout above where a ball starts
 // and its words beside it ("dropper: 640 balls left"). Where the spout and the words go, in
-// pixels, is the view's, so that the particles' labels keep off the words (frame_view.hpp's
-// labelKeepOut) and render/draw_layer.cpp draws them where this says.
+// pixels, is the view's, so that the particles' labels and the grid's keep off the words
+// (frame_view.hpp's labelKeepOut) and render/draw_layer.cpp draws them where this says.
 
 #include <string>
+#include <vector>
 
 #include <particle_sandbox/dropper.hpp>
 #include <particle_sandbox/math.hpp>
 
 #include "session/camera.hpp"
+#include "view/label_places.hpp"
 #include "view/pixel_rect.hpp"
 #include "view/text_measure.hpp"
 
@@ -21,6 +23,11 @@ struct DropperView {
     double radius = 0.0;     ///< a ball's, metres
     double spread = 0.0;     ///< metres either side of `at`
     std::string label;       ///< "dropper: 640 balls left"
+    /// Its words as placed (dropperWords): buildFrame places them once the panels are laid out.
+    struct Words {
+        PixelRect at;                    ///< the rectangle they take, pixels
+        std::vector<std::string> lines;  ///< drawn from `at`'s top-left, a line height apart
+    } words;
 };
 
 /// The spout on screen, pixels: a funnel from `top` (half `high` wide) narrowing down to
@@ -34,9 +41,16 @@ struct DropperSpout {
 
 [[nodiscard]] DropperSpout dropperSpout(const Camera& camera, const DropperView& dropper);
 
-/// Where the dropper's words go, in `font`: right of its spout, level with its middle.
-[[nodiscard]] PixelRect dropperLabelRect(const DropperSpout& spout, const std::string& label,
-                                         const TextMeasure& font);
+/// Where the dropper's words `label` go, in `font`: beside its spout, level with its middle,
+/// read whole inside the room's walled box (w == 0: a box without walls, the window counts)
+/// and its window, clear of its keepOut (the panels, the pegs). Right of the spout in
+/// one line, else left of it; else wrapped at spaces to the room on that side (the side with
+/// more room first: "dropper:" over "876 balls left"); else above the box's top wall (as drawn)
+/// over the spout, in one line, else wrapped, slid along to stay in the window. Where none of these
+/// is clear, right of the spout in one line. A small box at 200 % ran its words out of the box and
+/// under the bins' chart.
+[[nodiscard]] DropperView::Words dropperWords(const DropperSpout& spout, const std::string& label,
+                                              const TextMeasure& font, const LabelRoom& room);
 
 /// What the words beside a dropper's spout say: "dropper: 640 balls left", "dropper: 1 ball
 /// left", "dropper: empty".

@@ -6,6 +6,7 @@
 
 #include "session/physics_controls.hpp"
 #include "session/session.hpp"
+#include "view/bin_numbers.hpp"
 #include "view/box_area.hpp"
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
@@ -41,6 +42,13 @@ HudData hudData(const Session& session) {
         hud.heaviestMass = masses.hi;
     }
     return hud;
+}
+
+/// Pixels kept clear round a bin's number on the board by the other readings.
+constexpr int kBinNumberAir = 2;
+
+PixelRect grown(const PixelRect& r, int by) {
+    return {r.x - by, r.y - by, r.w + 2 * by, r.h + 2 * by};
 }
 
 /// Messages narrower than this beside the inspector go under it instead, pixels.
@@ -83,10 +91,13 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
         for (const MarkLabel& l : frame.grid->labels)
             out.rects.push_back(labelRect(l, labelFont));
     }
-    if (frame.camera != nullptr) {
-        for (const DropperView& d : frame.droppers)
-            out.rects.push_back(
-                dropperLabelRect(dropperSpout(*frame.camera, d), d.label, labelFont));
+    for (const DropperView& d : frame.droppers)
+        out.rects.push_back(d.words.at);
+    if (frame.bins && frame.camera != nullptr && frame.world != nullptr) {
+        for (const BinNumber& n :
+             binNumbers(*frame.camera, frame.bins->bins, frame.world->def().height, labelFont)) {
+            out.rects.push_back(grown(n.at, kBinNumberAir));
+        }
     }
     return out;
 }
@@ -182,7 +193,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     std::uint64_t stillToDrop = 0;
     for (const Dropper& d : world.droppers()) {
         stillToDrop += d.balls;
-        f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d)});
+        f.droppers.push_back({d.position, d.radius, d.spread, dropperLabel(d), {}});
     }
     if (session.binsShown()) {
         f.bins = binHistogram(*session.meta().bins, world.particles(), stillToDrop);
@@ -332,6 +343,18 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         req.chartsBand = chartsBandRect(req.width, req.height, left, static_cast<int>(bare.bottom),
                                         static_cast<int>(bare.chartsBand) - kPanelGap);
     }
+    {
+        // The box with its walls as drawn: the legend keeps off it.
+        const WorldDef& def = world.def();
+        const Camera::ScreenBox b = session.camera().boxOnScreen(def.width, def.height);
+        const int wall = def.walls ? static_cast<int>(std::ceil(boxWallPixels(
+                                         def.width, def.height, session.camera().zoom())))
+                                   : 0;
+        req.box = {static_cast<int>(std::floor(b.topLeft.x())) - wall,
+                   static_cast<int>(std::floor(b.topLeft.y())) - wall,
+                   static_cast<int>(std::ceil(b.size.x())) + 2 * wall + 1,
+                   static_cast<int>(std::ceil(b.size.y())) + 2 * wall + 1};
+    }
     if (f.recordingMark) {
         // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).
         const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});
@@ -347,10 +370,21 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         f.layout = layoutPanels(req);
     }
     if (f.recordingMark) f.recordingMark->at = f.layout.recording;
+    // The window right of the control panel, where the readings drawn over the box are read.
+    const PixelRect window{left, 0, req.width - left, req.height};
+    if (!f.droppers.empty()) {
+        // A dropper's words inside the box, clear of the panels and of the pegs below the
+        // spout (wrapped words ran down over the Galton board's first rows).
+        std::vector<PixelRect> keepOut = panelRects(f.layout);
+        for (const PixelRect& r : pegsOnScreen(world, session.camera()))
+            keepOut.push_back(r);
+        const LabelRoom words = labelRoom(world, session.camera(), window, std::move(keepOut));
+        for (DropperView& d : f.droppers)
+            d.words = dropperWords(dropperSpout(session.camera(), d), d.label, labelFont, words);
+    }
     if (f.grid || f.ruler) {
         // The marks' labels are read whole: in the window right of the control panel, clear of
         // every panel and of each other; the ruler's reading off the discs and pegs where it can.
-        const PixelRect window{left, 0, req.width - left, req.height};
         std::vector<PixelRect> discs;
         if (f.ruler) {
             discs = discsOnScreen(world, session.camera(), window);
@@ -359,9 +393,15 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         }
         // A dropper's words are a reading too: the grid's labels keep off them.
         std::vector<PixelRect> keepOut = panelRects(f.layout);
-        for (const DropperView& d : f.droppers) {
-            keepOut.push_back(
-                dropperLabelRect(dropperSpout(session.camera(), d), d.label, labelFont));
+        for (const DropperView& d : f.droppers)
+            keepOut.push_back(d.words.at);
+        // So are the bins' numbers on the board, with air round them (the Galton board's "0"
+        // touched "0.4 m").
+        if (f.bins) {
+            for (const BinNumber& n :
+                 binNumbers(session.camera(), f.bins->bins, world.def().height, labelFont)) {
+                keepOut.push_back(grown(n.at, kBinNumberAir));
+            }
         }
         keepMarkLabelsClear(f.grid ? &*f.grid : nullptr, f.ruler ? &*f.ruler : nullptr, labelFont,
                             labelRoom(world, session.camera(), window, std::move(keepOut)), discs);

@@ -135,8 +135,9 @@ struct FrameStats {
                                    const ControlsWidth& controls);
 
 /// What the particles' labels keep clear of besides the discs and the scene's walls: the
-/// panels, the control panel's column, the ruler and its reading, the grid's labels and the
-/// droppers' words (measured in `labelFont`): a label is never drawn over another reading.
+/// panels, the control panel's column, the ruler and its reading, the grid's labels, the
+/// droppers' words and the bins' numbers (measured in `labelFont`): a label is never drawn over
+/// another reading.
 [[nodiscard]] LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont);
 
 /// The recording mark's text: "REC 0:12 MP4 - Ctrl+R stops".

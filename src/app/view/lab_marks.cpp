@@ -208,7 +208,16 @@ void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& fo
             const PixelRect r = labelRect(sized, font, kReadingPad);
             places.push_back(readingPlaces(middle, {r.w, r.h}, window));
         }
-        const ReadingPlace chosen = firstClearPlace(places, discs, around);
+        // The grid's distances that are read (inside the window, clear of the panels) are as
+        // solid to it as the discs: one is left out only where no place is clear of them.
+        std::vector<PixelRect> solid = discs;
+        if (grid != nullptr) {
+            for (const MarkLabel& g : grid->labels) {
+                const PixelRect r = labelRect(g, font);
+                if (inside(r) && clear(r)) solid.push_back(r);
+            }
+        }
+        const ReadingPlace chosen = firstClearPlace(places, solid, around);
         if (chosen.at.w > 0) {
             l.text = ruler->forms[chosen.form];
             l.at = Vec2(chosen.at.x + 0.5 * chosen.at.w, chosen.at.y + 0.5 * chosen.at.h);

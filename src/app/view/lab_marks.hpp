@@ -84,10 +84,10 @@ inline constexpr int kReadingPad = 4;
 /// The rule every measuring mark's label obeys: it is read whole. The ruler's reading goes
 /// where all of it is inside the room's window (the window right of the control panel), clear
 /// of its keepOut (the panels) and of the ruler itself, and, where such a place is, clear of
-/// `discs` (discsOnScreen) and across no wall: beside the ruler's middle, below it first (the
-/// side its ticks point down the screen), then above, right and left, each slid along that
-/// side; then further out on rings round the middle; in one line, else in two (the length and
-/// the slope over the distances) where only those fit or read clear (firstClearPlace,
+/// `discs` (discsOnScreen) and of the grid's labels and across no wall: beside the ruler's middle,
+/// below it first (the side its ticks point down the screen), then above, right and left, each slid
+/// along that side; then further out on rings round the middle; in one line, else in two (the
+/// length and the slope over the distances) where only those fit or read clear (firstClearPlace,
 /// label_places.hpp). Where no place clear of the panels is, it goes below the middle, slid
 /// into the room as far as it can. A grid label that would cross the reading, a panel or the
 /// room's edge is left out (its line stays). Sizes are measured in `font`, the labels' font.

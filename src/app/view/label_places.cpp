@@ -226,13 +226,17 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
             p.at = r;
             placed.push_back(r);
         };
+        // Never over its own ball's arrow (at 200 % a label stood on the arrow it reads).
+        const auto clearOfArrow = [&a](const PixelRect& r) {
+            return !(a.arrow.halfWidth > 0.0) || !crosses(r, a.arrow);
+        };
         // Beside its disc (in the box first), then on rings round it: a label of `size`.
         const auto placeAs = [&](PixelPoint size) {
             const std::vector<PixelRect> beside = placesBeside(a.disc, size, inside);
             for (const bool inRoom : {inBox, false}) {
                 for (const PixelRect& r : beside) {
                     if (inRoom && !contains(inside, r)) continue;
-                    if (free(r)) {
+                    if (free(r) && clearOfArrow(r)) {
                         take(r);
                         return true;
                     }
@@ -240,15 +244,18 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
             }
             if (!rings) return false;
             for (const PixelRect& r : placesOnRings(a.disc, size, kLabelRings)) {
-                if (!free(r)) continue;
+                if (!free(r) || !clearOfArrow(r)) continue;
                 // Its line to the disc crosses no wall at an angle (the box's own walls it
-                // may: a small box's labels stand outside it) and no other disc.
+                // may: a small box's labels stand outside it), no other disc, and nothing the
+                // room keeps out (it crossed the grid's "2 m").
                 const LeaderLine line = leaderLine(a.disc, r);
                 if (std::any_of(room.walls.begin(), room.walls.end(),
                                 [&line](const ScreenWall& w) { return leaderCrosses(line, w); }) ||
                     discs.anyOnLine(line.ax, line.ay, line.bx, line.by, a.disc) ||
                     std::any_of(placed.begin(), placed.end(),
-                                [&](const PixelRect& other) { return onLine(line, other); })) {
+                                [&](const PixelRect& other) { return onLine(line, other); }) ||
+                    std::any_of(room.keepOut.begin(), room.keepOut.end(),
+                                [&](const PixelRect& k) { return onLine(line, k); })) {
                     continue;
                 }
                 take(r);
@@ -259,9 +266,16 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
             return false;
         };
         if (placeAs(a.size)) continue;
-        // No clear place for it whole: its name alone, where that has one (between two of the
-        // ramp's ramps at 200 %, where neither form fits and a line across a ramp would put
-        // it on the wrong side).
+        // No clear place for it whole: its short form, which keeps its values (two balls
+        // touching at an impact in a small box at 200 % had room for two lines each, not five).
+        if (a.shortSize.x > 0 && a.shortSize.y > 0 && a.shortSize.y < a.size.y &&
+            placeAs(a.shortSize)) {
+            p.shortForm = true;
+            continue;
+        }
+        // Nor for that: its name alone, where that has one (between two of the ramp's ramps
+        // at 200 %, where neither form fits and a line across a ramp would put it on the wrong
+        // side).
         if (a.nameSize.x > 0 && a.nameSize.y > 0 && placeAs(a.nameSize)) {
             p.nameOnly = true;
             continue;
@@ -398,14 +412,25 @@ std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const Lab
         !asks.empty() && std::all_of(asks.begin(), asks.end(), [](const LabelAsk& a) {
             return a.shortSize.x > 0 && a.shortSize.y > 0;
         });
-    if (leftOut(best) == 0 || !shortForms) return best;
+    // Labels left out, then those with their name alone: fewer is better.
+    const auto loss = [](const std::vector<LabelPlace>& places) {
+        return std::pair{leftOut(places), static_cast<std::size_t>(std::count_if(
+                                              places.begin(), places.end(),
+                                              [](const LabelPlace& p) { return p.nameOnly; }))};
+    };
+    const bool whole = std::none_of(best.begin(), best.end(), [](const LabelPlace& p) {
+        return p.at.w == 0 || p.nameOnly || p.shortForm;
+    });
+    if (whole || !shortForms) return best;
+    // Some label lost lines: every label in its short form, where that loses no more (the
+    // labels read alike, inside a small box rather than some out of it).
     std::vector<LabelAsk> shorter = asks;
     for (LabelAsk& a : shorter)
         a.size = a.shortSize;
     std::vector<LabelPlace> brief = placeBest(shorter, room, discs);
-    if (leftOut(brief) >= leftOut(best)) return best;
+    if (loss(brief) > loss(best)) return best;
     for (LabelPlace& p : brief)
-        p.shortForm = true;
+        p.shortForm = !p.nameOnly;
     return brief;
 }
 

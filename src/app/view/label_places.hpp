@@ -12,15 +12,17 @@
 //      at an angle (a ramp between a ball and its label would put the label on the wrong
 //      side of it);
 //
-// and, where no place is free for it, its name alone ("particle 3") is placed the same way;
-// it is left out when none is free for that either. Free: inside the window, clear of every disc,
-// of the labels already placed and their leader lines (a leader line passes over no other disc
-// nor label) and of what the room keeps out (the panels, pegs, the ruler's reading), and across
-// no wall (the box's outline, a wall at any angle). A label never covers a
-// ball nor crosses a wall: in a crowd (the funnel's 400 balls) most are left out, and the HUD says
-// how many. Where that leaves a label out and the labels have a short form (LabelAsk::shortSize),
-// every label takes its short form if that leaves fewer out (a small box at 200 %: two lines
-// beside each ball rather than none).
+// and, where no place is free for it, its short form (LabelAsk::shortSize: its values in two
+// lines), then its name alone ("particle 3"), placed the same way; it is left out when none is
+// free for that either. Free: inside the window, clear of every disc, of its own ball's velocity
+// arrow, of the labels already placed and their leader lines (a leader line passes over no
+// other disc nor label, nor over what the room keeps out) and of what the room keeps out (the
+// panels, pegs, the grid's distances, the ruler's reading), and across no wall (the box's
+// outline, a wall at any angle). A label never covers a ball nor crosses a wall: in a crowd (the
+// funnel's 400 balls) most are left out, and the HUD says how many. Where that leaves a label
+// out or takes lines from one and the labels have a short form, every label takes its short form
+// if that leaves no more out nor with its name alone (a small box at 200 %: two lines beside
+// each ball rather than none, all alike).
 //
 // The ruler's reading is placed among the same places (firstClearPlace): clear of the discs
 // where a place is, over the fewest where none is.
@@ -88,6 +90,9 @@ struct LabelAsk {
     /// Its name's box alone ("particle 3"), pixels, for where neither form has a clear place;
     /// {0, 0}: none.
     PixelPoint nameSize{0, 0};
+    /// Its ball's velocity arrow from the rim to the tip, its head's half-width either side;
+    /// halfWidth == 0: none. The label is never drawn over it.
+    ScreenWall arrow{};
 };
 
 /// Where one label goes.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 
 namespace psb::app {
@@ -97,10 +98,48 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits && r.chartsBand.w == 0;
     int top = 4;
+    // The highest free place for a panel of `size`, then the rightmost, in the room right of
+    // the control panel above `bottom`: clear of the box, the HUD and the panels placed so far.
+    // Its edges are tried against each of theirs (none: w == 0).
+    const auto freePlace = [&](PixelPoint size) {
+        const std::vector<PixelRect> taken = {r.box,    l.hud,     l.messages, l.inspector,
+                                              l.values, l.profile, l.legend};
+        std::vector<int> xs{right - size.x, left}, ys{top};
+        for (const PixelRect& t : taken) {
+            if (t.w <= 0) continue;
+            xs.push_back(t.x - gap - size.x);
+            xs.push_back(t.x + t.w + gap);
+            ys.push_back(t.y + t.h + gap);
+        }
+        std::sort(ys.begin(), ys.end());
+        std::sort(xs.begin(), xs.end(), std::greater<>());
+        for (const int y : ys) {
+            if (y < 4 || y + size.y > bottom) continue;
+            for (const int x : xs) {
+                if (x < left || x + size.x > right) continue;
+                const PixelRect box{x, y, size.x, size.y};
+                if (std::none_of(taken.begin(), taken.end(),
+                                 [&box](const PixelRect& t) { return overlaps(box, t); })) {
+                    return box;
+                }
+            }
+        }
+        return PixelRect{};
+    };
     for (const auto& [size, out] : {std::pair{r.profile, &l.profile}, {r.legend, &l.legend}}) {
         if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;
-        const PixelRect box = place(size, top);
+        PixelRect box = place(size, top);
+        if (overlaps(box, r.box)) {
+            // Over the box's corner: another place; the column's charts start below it where
+            // it stands over them.
+            box = freePlace(size);
+            if (box.w == 0) continue;
+            *out = box;
+            if (box.x + box.w > right - sideColumnWidth(r.width, r.left, r.scale))
+                top = std::max(top, box.y + box.h + gap);
+            continue;
+        }
         if (box.y + box.h > bottom || overlaps(box, l.messages)) continue;  // no room: left out
         *out = box;
         top = box.y + box.h + gap;

@@ -4,6 +4,10 @@
 // the right edge holding, from the top, the profile and the momentum legend (the recording mark
 // goes last, in the top-right corner or under what stands there), and from the bottom
 // the selected particle's inspector, the bins' histogram, the speed histogram and the plots. The
+// profile and the legend keep off the box (LayoutRequest::box): where the top of the column
+// would put one over it (the HUD's lines grew and pushed it down into the box's corner), it goes
+// to the highest free place, then the rightmost: beside the HUD or the box, above or below the
+// box, clear of the panels placed before it. The
 // column starts below the HUD when the window is too narrow for both side by side, panels shrink to
 // the room there is (the plots drop their least important rows first: rate, then py, then px), and
 // a panel that does not fit at its smallest is left out. The values table (I) docks in a band
@@ -136,6 +140,9 @@ struct LayoutRequest {
     /// The side column's charts go side by side in this band under the box instead of the
     /// column (chartsBandRect; the session chose it: SceneView::fit); w == 0: the column.
     PixelRect chartsBand{};
+    /// The box on screen with its walls as drawn (w == 0: none): the profile and the momentum
+    /// legend, placed at the top of the column, keep off it.
+    PixelRect box{};
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "session/session.hpp"
+#include "session/test_assets.hpp"
+#include "view/bin_numbers.hpp"
 #include "view/fixed_measure.hpp"
 #include "view/frame_view.hpp"
 #include "view/lab_marks.hpp"
@@ -21,6 +23,8 @@
 namespace psb::app {
 namespace {
 
+using test::inWindow;
+using test::kDesk;
 using test::kProjector;
 using test::lessonWorld;
 using test::onTheProjector;
@@ -136,8 +140,7 @@ TEST(LabelPlaces, NoParticleLabelCoversADroppersWords) {
     const test::FixedMeasure font(2.0);
     const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
     ASSERT_EQ(f.droppers.size(), 1u);
-    const PixelRect words =
-        dropperLabelRect(dropperSpout(s.camera(), f.droppers[0]), f.droppers[0].label, font);
+    const PixelRect words = f.droppers[0].words.at;
     ASSERT_GT(words.w, 0);
     // Nor does a grid's label (they straddled each other along the box's top).
     ASSERT_TRUE(f.grid.has_value());
@@ -149,6 +152,177 @@ TEST(LabelPlaces, NoParticleLabelCoversADroppersWords) {
         ASSERT_GT(place.at.w, 0);
         EXPECT_FALSE(overlaps(place.at, words))
             << "a label at " << text(place.at) << " over the dropper's words at " << text(words);
+    }
+}
+
+TEST(DropperWords, AreReadWholeInsideTheBoxClearOfThePanelsFrom100To200Percent) {
+    // The Galton board at 200 % with its plots and the values table: "dropper: 1000 balls
+    // left" ran out of the narrow box and under the bins' chart. Beside the spout where a side
+    // has room, wrapped where one line does not fit, never over the pegs.
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    for (const Window& win : {Window{1600, 1000, kProjector}, Window{800, 600, kDesk},
+                              Window{1920, 1080, kProjector}, Window{1200, 800, kDesk}}) {
+        for (const bool panel : {true, false}) {
+            for (const bool more : {true, false}) {
+                Session s = more ? inWindow(lessonWorld(),
+                                            {ShowOption::Plots, ShowOption::Values,
+                                             ShowOption::Grid, ShowOption::Speeds},
+                                            win.width, win.height, win.controls)
+                                 : inWindow(lessonWorld(), {}, win.width, win.height, win.controls);
+                s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+                if (!panel) s.apply(cmd::ToggleControls{});
+                const test::FixedMeasure font(win.controls.pointPixels);
+                const FrameView f = buildFrame(s, FrameStats{}, font, font, win.controls);
+                ASSERT_EQ(f.droppers.size(), 1u);
+                const DropperView::Words& words = f.droppers[0].words;
+                const std::string at =
+                    std::to_string(win.width) + "x" + std::to_string(win.height) + " at " +
+                    std::to_string(win.controls.pointPixels) +
+                    (panel ? ", panel open" : ", panel folded") +
+                    (more ? ", charts and table" : "") + ": words at " + text(words.at);
+                const LabelRoom room =
+                    labelRoom(s.world(), s.camera(), {0, 0, win.width, win.height}, {});
+                // Inside the box; or, where no side of the spout has room clear of the pegs,
+                // above its top wall.
+                const bool inBox = words.at.x >= room.box.x && words.at.y >= room.box.y &&
+                                   words.at.x + words.at.w <= room.box.x + room.box.w &&
+                                   words.at.y + words.at.h <= room.box.y + room.box.h;
+                const bool above = words.at.y + words.at.h <= room.box.y - room.boxWall &&
+                                   words.at.y >= 0 && words.at.x >= f.controlsInset &&
+                                   words.at.x + words.at.w <= win.width;
+                EXPECT_TRUE(inBox || above) << at << ", box " << text(room.box);
+                for (const PixelRect& r : panelRects(f.layout))
+                    EXPECT_FALSE(overlaps(words.at, r)) << at << ", a panel at " << text(r);
+                for (const PixelRect& r : pegsOnScreen(s.world(), s.camera()))
+                    EXPECT_FALSE(overlaps(words.at, r)) << at << ", a peg at " << text(r);
+                std::string said;
+                int widest = 0;
+                for (const std::string& line : words.lines) {
+                    said += (said.empty() ? "" : " ") + line;
+                    widest = std::max(widest, font.measure(line));
+                }
+                EXPECT_EQ(said, f.droppers[0].label) << at;
+                EXPECT_LE(widest, words.at.w) << at;
+                EXPECT_GE(words.at.h, static_cast<int>(words.lines.size()) * font.lineHeight())
+                    << at;
+            }
+        }
+    }
+}
+
+TEST(GridLabels, KeepOffTheBinsNumbersOnTheBoard) {
+    // The Galton board with the grid (Shift+G) at 200 %: the grid's "0.4 m" along the box's
+    // left edge touched the bins' "0" just under their top line. Each keeps two pixels of air.
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    int numbered = 0;
+    for (const Window& win : {Window{1600, 1000, kProjector}, Window{800, 600, kDesk},
+                              Window{1920, 1080, kProjector}, Window{1200, 800, kDesk}}) {
+        for (const bool panel : {true, false}) {
+            for (const bool plots : {true, false}) {
+                Session s = plots ? inWindow(lessonWorld(), {ShowOption::Grid, ShowOption::Plots},
+                                             win.width, win.height, win.controls)
+                                  : inWindow(lessonWorld(), {ShowOption::Grid}, win.width,
+                                             win.height, win.controls);
+                s.apply(cmd::OpenFile{testAsset("scenes/09-galton-board.json")});
+                if (!panel) s.apply(cmd::ToggleControls{});
+                const test::FixedMeasure font(win.controls.pointPixels);
+                const FrameView f = buildFrame(s, FrameStats{}, font, font, win.controls);
+                ASSERT_TRUE(f.grid.has_value());
+                ASSERT_TRUE(f.bins.has_value());
+                const std::vector<BinNumber> numbers =
+                    binNumbers(s.camera(), f.bins->bins, s.world().def().height, font);
+                numbered += !numbers.empty();  // narrow bins have none
+                for (const MarkLabel& l : f.grid->labels) {
+                    const PixelRect r = labelRect(l, font);
+                    const PixelRect air{r.x - 2, r.y - 2, r.w + 4, r.h + 4};
+                    for (const BinNumber& n : numbers) {
+                        EXPECT_FALSE(overlaps(air, n.at))
+                            << win.width << "x" << win.height << (panel ? "" : ", panel folded")
+                            << (plots ? ", plots" : "") << ": the grid's \"" << l.text << "\" at "
+                            << text(r) << " by bin " << n.text << " at " << text(n.at);
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(numbered, 4);
+}
+
+TEST(MomentumLegend, KeepsOffTheBoxWhenTheHudGrows) {
+    // Lesson 1 with the momentum (V) at 200 %: the HUD's notes (labels left out, the charts
+    // folded) grew its lines across the legend's column, and the legend, placed below them,
+    // dropped onto the box's top-right corner, on the screen and in the video.
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    for (const Window& win : {Window{1600, 1000, kProjector}, Window{800, 600, kDesk},
+                              Window{1920, 1080, kProjector}, Window{1024, 768, kDesk}}) {
+        for (const bool panel : {true, false}) {
+            for (const bool recording : {false, true}) {
+                Session s = inWindow(lessonWorld(), {ShowOption::Momentum, ShowOption::Labels},
+                                     win.width, win.height, win.controls);
+                if (!panel) s.apply(cmd::ToggleControls{});
+                const test::FixedMeasure font(win.controls.pointPixels);
+                FrameStats stats;
+                stats.labelsCrowded = 2;
+                stats.labelsOffWindow = 1;
+                stats.video.recording = recording;
+                const FrameView f = buildFrame(s, stats, font, font, win.controls);
+                const Camera::ScreenBox b = s.camera().boxOnScreen(10.0, 4.0);
+                const PixelRect box{static_cast<int>(std::floor(b.topLeft.x())),
+                                    static_cast<int>(std::floor(b.topLeft.y())),
+                                    static_cast<int>(std::ceil(b.size.x())),
+                                    static_cast<int>(std::ceil(b.size.y()))};
+                const std::string at =
+                    std::to_string(win.width) + "x" + std::to_string(win.height) +
+                    (panel ? "" : ", panel folded") + (recording ? ", recording" : "") +
+                    ": legend at " + text(f.layout.legend) + ", box " + text(box);
+                ASSERT_GT(f.layout.legend.w, 0) << at;
+                EXPECT_FALSE(overlaps(f.layout.legend, box)) << at;
+                for (const PixelRect& r : panelRects(f.layout)) {
+                    if (r == f.layout.legend) continue;
+                    EXPECT_FALSE(overlaps(f.layout.legend, r)) << at << ", a panel at " << text(r);
+                }
+            }
+        }
+    }
+}
+
+TEST(LabelPlaces, AtTheImpactBothLabelsKeepTheirValues) {
+    // Lesson 1 at the moment of impact on the projector, with what the lesson shows: the two
+    // balls touch, and their labels shrank to "particle 1" and "particle 2".
+    for (const bool panel : {true, false}) {
+        for (const bool table : {false, true}) {
+            World w = lessonWorld();
+            Session s =
+                table ? onTheProjector(std::move(w), {ShowOption::Labels, ShowOption::Momentum,
+                                                      ShowOption::Plots, ShowOption::Grid,
+                                                      ShowOption::Values, ShowOption::Collision})
+                      : onTheProjector(std::move(w), {ShowOption::Labels, ShowOption::Momentum,
+                                                      ShowOption::Plots, ShowOption::Grid});
+            if (!panel) s.apply(cmd::ToggleControls{});
+            s.apply(cmd::TogglePause{});
+            // They touch at t = 4.4 m / 3 m/s = 1.467 s.
+            for (int k = 1; k <= 88; ++k)
+                s.update(1.0 / 60.0, k / 60.0);
+            s.apply(cmd::TogglePause{});
+            const test::FixedMeasure font(2.0);
+            const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
+            const std::vector<LabelPlace> places = labelsOf(s, f, font);
+            ASSERT_EQ(places.size(), 2u);
+            for (const LabelPlace& p : places) {
+                EXPECT_GT(p.at.w, 0);
+                EXPECT_FALSE(p.nameOnly) << (panel ? "panel open" : "panel folded")
+                                         << (table ? ", table" : "") << ": at " << text(p.at);
+            }
+        }
     }
 }
 

@@ -151,6 +151,32 @@ TEST(MarkLabels, TheRulersReadingIsReadWholeBesideThePanelAndNoGridLabelCrossesI
     EXPECT_GT(grid.labels.size(), labels / 2) << "those not under the reading stay";
 }
 
+TEST(MarkLabels, TheRulersReadingGoesWhereItCoversNoGridLabel) {
+    // The ruler laid along a ramp at 200 % with the grid: the reading's first place, below the
+    // ruler's middle, lay over a grid distance, which was left out. It avoids the grid's
+    // labels as it avoids the balls, where a place is clear of them.
+    const test::FixedMeasure font(2.0);
+    const Camera c = camera(200.0, Vec2(-1.65, -0.1));  // the box's top-left at (330, 20)
+    LabRuler r;
+    r.place(4.0, 3.9);
+    r.take(LabRuler::Part::EndA, r.a());
+    r.moveTo(Vec2(1.0, 2.0));
+    r.take(LabRuler::Part::EndB, r.b());
+    r.moveTo(Vec2(2.5, 2.0));
+    RulerView ruler = rulerView(r, c);
+    GridView grid;
+    // A distance right under the ruler's middle, where the reading goes first.
+    const Vec2 middle = 0.5 * (ruler.a + ruler.b);
+    grid.labels.push_back({middle + Vec2(0.0, 40.0), "2 m"});
+    grid.labels.push_back({Vec2(middle.x() + 300.0, 60.0), "3 m"});
+    const PixelRect room{310, 0, 1290, 1000};
+    keepMarkLabelsClear(&grid, &ruler, font, {room, {}, {}, {}});
+    const PixelRect reading = labelRect(ruler.label, font, kReadingPad);
+    EXPECT_EQ(grid.labels.size(), 2u) << "every grid label kept";
+    for (const MarkLabel& l : grid.labels)
+        EXPECT_FALSE(overlaps(labelRect(l, font), reading)) << l.text;
+}
+
 TEST(WallAngleLabel, TheWallBeingDrawnReadsItsLengthAndSlopeBeyondItsEnd) {
     const Camera c = camera(100.0);
     const MarkLabel l = wallAngleLabel(Vec2(0.0, 0.45), Vec2(2.6, 1.3963), c);

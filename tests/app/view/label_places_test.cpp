@@ -255,5 +255,49 @@ TEST(LabelPlaces, WithNoFreePlaceALabelIsLeftOutAndSaysWhy) {
     EXPECT_TRUE(placeLabels(huge, {window, {}, {}, {}})[0].offWindow);
 }
 
+TEST(LabelPlaces, ALabelIsNotDrawnOverItsOwnBallsArrow) {
+    // A ball moving up: the place above it, the first tried, is on its arrow.
+    const PixelRect window{0, 0, 800, 600};
+    LabelAsk a = ball(400, 300, 10, {160, 70});
+    a.arrow = {400.0, 290.0, 400.0, 200.0, 8.0};
+    const std::vector<LabelPlace> places = placeLabels({a}, {window, {}, {}, {}});
+    ASSERT_EQ(places.size(), 1u);
+    ASSERT_GT(places[0].at.w, 0);
+    EXPECT_FALSE(crosses(places[0].at, a.arrow));
+    EXPECT_FALSE(places[0].leader) << "beside its ball, below it";
+}
+
+TEST(LabelPlaces, ALeaderLineCrossesNothingTheRoomKeepsOut) {
+    // A ball in a box too small for its label, with room only in a strip above the box
+    // (panels all round), and a grid's distance straight above the ball: the five lines fit
+    // only above the distance, on a line through it (it crossed the grid's "2 m"); the two
+    // lines of the short form fit under it.
+    const PixelRect window{0, 0, 800, 600};
+    const PixelRect box{380, 380, 40, 40};
+    const PixelRect distance{392, 300, 16, 10};
+    const std::vector<PixelRect> keepOut = {distance,
+                                            {0, 0, 340, 600},
+                                            {460, 0, 340, 600},
+                                            {340, 378, 40, 222},
+                                            {420, 378, 40, 222},
+                                            {380, 422, 40, 178}};
+    LabelAsk a = ball(400, 400, 8, {100, 60});
+    a.shortSize = {100, 30};
+    const std::vector<LabelPlace> places = placeLabels({a}, {window, box, {}, keepOut, 2});
+    ASSERT_EQ(places.size(), 1u);
+    ASSERT_GT(places[0].at.w, 0);
+    EXPECT_FALSE(overlaps(places[0].at, distance));
+    if (!places[0].leader) return;
+    const LeaderLine l = leaderLine(a.disc, places[0].at);
+    const double length = std::hypot(l.bx - l.ax, l.by - l.ay);
+    for (double t = 0.0; t <= length; t += 0.5) {
+        const double x = l.ax + (l.bx - l.ax) * t / std::max(length, 1.0);
+        const double y = l.ay + (l.by - l.ay) * t / std::max(length, 1.0);
+        EXPECT_FALSE(x >= distance.x && x <= distance.x + distance.w && y >= distance.y &&
+                     y <= distance.y + distance.h)
+            << "the line runs through the distance at " << x << ", " << y;
+    }
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -1,6 +1,7 @@
 #pragma once
 // The projector of the lessons' trials: UI scale 200 % in a 1600 x 1000 window beside the open
-// control panel, and lesson 1's world. Shared by the frame's layout and readings tests.
+// control panel, and lesson 1's world; any other window and scale for the rules that hold from
+// 100 % at 800 x 600 up. Shared by the frame's layout and readings tests.
 
 #include <initializer_list>
 #include <utility>
@@ -27,19 +28,29 @@ inline World lessonWorld() {
     return w;
 }
 
-/// `world` paused on the projector, laid out as the app lays it out, with `shown` turned on.
-inline Session onTheProjector(World world, std::initializer_list<ShowOption> shown) {
-    const FixedMeasure font(2.0);
+/// The control panel's width at 100 %.
+inline const ControlsWidth kDesk{310.0, 44.0, 1.0};
+
+/// `world` paused in a `width` × `height` window beside the control panel `controls` wide (its
+/// pointPixels the UI's scale), laid out as the app lays it out, with `shown` turned on.
+inline Session inWindow(World world, std::initializer_list<ShowOption> shown, int width, int height,
+                        const ControlsWidth& controls) {
+    const FixedMeasure font(controls.pointPixels);
     SessionOptions o;
     o.paused = true;
-    o.viewportWidth = 1600;
-    o.viewportHeight = 1000;
-    o.layout = windowLayout(font, 1600, 1000, kProjector);
+    o.viewportWidth = width;
+    o.viewportHeight = height;
+    o.layout = windowLayout(font, width, height, controls);
     o.controls = o.layout.controlsFit;
     Session s(std::move(world), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, o);
     for (const ShowOption option : shown)
         s.apply(cmd::SetShow{option, true});
     return s;
+}
+
+/// `world` paused on the projector, laid out as the app lays it out, with `shown` turned on.
+inline Session onTheProjector(World world, std::initializer_list<ShowOption> shown) {
+    return inWindow(std::move(world), shown, 1600, 1000, kProjector);
 }
 
 }  // namespace psb::app::test

@@ -213,5 +213,28 @@ TEST(PanelLayout, PanelsThatAreOffGetNoBox) {
     EXPECT_EQ(l.hud.w, 400);
 }
 
+TEST(PanelLayout, TheLegendKeepsOffTheBoxTakingTheHighestFreePlace) {
+    // A HUD across the window pushes the legend below it, where the box's top-right corner
+    // is: it goes to the highest free place, the rightmost there, clear of the box and the HUD.
+    LayoutRequest r;
+    r.width = 1200;
+    r.height = 800;
+    r.hud = {1100, 200};
+    r.legend = {300, 80};
+    r.box = {100, 230, 1000, 400};  // right of it 92 pixels, below it 170
+    const PanelLayout l = layoutPanels(r);
+    ASSERT_GT(l.legend.w, 0);
+    EXPECT_FALSE(overlaps(l.legend, r.box));
+    EXPECT_FALSE(overlaps(l.legend, l.hud));
+    // Below the box, at the right.
+    EXPECT_EQ(l.legend.y, r.box.y + r.box.h + kPanelGap);
+    EXPECT_EQ(l.legend.x + l.legend.w, r.width - kPanelMargin);
+    // Room right of the HUD: the corner, as without a box.
+    r.hud = {700, 200};
+    const PanelLayout beside = layoutPanels(r);
+    EXPECT_EQ(beside.legend.y, 4);
+    EXPECT_EQ(beside.legend.x + beside.legend.w, r.width - kPanelMargin);
+}
+
 }  // namespace
 }  // namespace psb::app
