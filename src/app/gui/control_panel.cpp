@@ -276,7 +276,7 @@ void ControlPanel::scene(const Session& s) {
     if (browser_) {
         if (ImGui::Button("Open a scene file...")) uploadAsked_ = true;
         mark("Open");
-        tip("Open a scene file (JSON) from this computer, with the browser's file chooser");
+        tip("Open a scene file (JSON) from this device, with the browser's file chooser");
         fileError(s);
         return;
     }
