@@ -33,4 +33,10 @@ struct LaunchSettings {
 [[nodiscard]] Vec2 launchVelocity(std::span<const TrajectorySample> samples,
                                   const LaunchSettings& settings = {});
 
+/// The window launchVelocity measures over for `samples`, seconds: `settings.window`, widened
+/// where the pointer reported sparsely (see launchVelocity). A pointer that has not reported for
+/// longer than this after its newest sample has been seen to stop.
+[[nodiscard]] double launchWindow(std::span<const TrajectorySample> samples,
+                                  const LaunchSettings& settings = {});
+
 }  // namespace psb
