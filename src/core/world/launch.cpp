@@ -35,10 +35,19 @@ double windowFor(std::span<const TrajectorySample> samples, std::size_t last,
     // The window widens when the pointer reported sparsely: a page whose frames take longer
     // than the window delivers one move per frame, and the release, at the last move's spot,
     // would otherwise find no earlier sample inside the window and read as a hand at rest.
-    // The spacing is the longest gap between the samples before the newest (the gap before
-    // the newest is the one a stopped hand makes, so it does not count).
+    // The spacing is the longest gap between the samples before the newest. The gap before the
+    // newest counts only when the newest moved: a release where the last move left the pointer
+    // comes after the pause a stopped hand makes, but a move is a report of motion, and a page
+    // whose frames are slow coalesces a quick fling's moves into one or two (with no earlier
+    // gap at all to measure the spacing by).
     double spacing = 0.0;
+    const TrajectorySample& newest = samples[last - 1];
     const TrajectorySample* later = nullptr;
+    for (std::size_t k = last - 1; k-- > 0;) {
+        if (!finite(samples[k])) continue;
+        if (samples[k].position != newest.position) later = &newest;
+        break;
+    }
     int gaps = 0;
     for (std::size_t k = last - 1; k-- > 0 && gaps < kSpacingGaps;) {
         if (!finite(samples[k])) continue;

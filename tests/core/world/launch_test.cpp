@@ -61,6 +61,18 @@ TEST(LaunchVelocity, SparseReportsThenAStopLongerThanTheirSpacingIsAtRest) {
     EXPECT_EQ(launchVelocity(s, {.window = 0.1}), Vec2::Zero());
 }
 
+TEST(LaunchVelocity, AFlingCoalescedIntoOneMoveKeepsItsSpeed) {
+    // A slow page delivers a quick fling's moves as one, 0.11 s after the press: that gap is a
+    // report of motion, and the window widens to take the press in.
+    const std::vector<TrajectorySample> s{{0.0, {0.0, 0.0}}, {0.11, {11.0, 0.0}}};
+    EXPECT_NEAR(launchVelocity(s, {.window = 0.1}).x(), 100.0, 1e-9);
+    EXPECT_NEAR(launchWindow(s, {.window = 0.1}), 0.165, 1e-12);
+    // Released there a moment later: that pause is no report of motion, and is not counted.
+    const std::vector<TrajectorySample> r{
+        {0.0, {0.0, 0.0}}, {0.11, {11.0, 0.0}}, {0.3, {11.0, 0.0}}};
+    EXPECT_EQ(launchVelocity(r, {.window = 0.1}), Vec2::Zero());
+}
+
 TEST(LaunchVelocity, TheWindowIsTheSettingWidenedToTheReportsSpacing) {
     // Reports every 10 ms: the setting's 0.1 s. Every 0.15 s: 1.5 spacings, 0.225 s. A second
     // apart: held to four times the setting.
