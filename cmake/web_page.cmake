@@ -8,8 +8,10 @@ target_link_options(particle-sandbox PRIVATE
   -sENVIRONMENT=web
   # main() returns once the browser runs the loop; the program lives on with the page.
   -sEXIT_RUNTIME=0
-  # The page calls psb_web_uploaded() (a scene picked with Open) and reads the file system.
-  "-sEXPORTED_FUNCTIONS=_main,_psb_web_uploaded"
+  # The page calls psb_web_uploaded() (a scene picked with Open), psb_web_type() and
+  # psb_web_backspace() (an on-screen keyboard, platform/text_input.hpp), psb_web_copied() (the
+  # browser's answer to a copy, platform/clipboard.hpp), and reads the file system.
+  "-sEXPORTED_FUNCTIONS=_main,_psb_web_uploaded,_psb_web_type,_psb_web_backspace,_psb_web_copied"
   "-sEXPORTED_RUNTIME_METHODS=FS,ccall"
   # The settings live in IndexedDB (platform/browser_settings.hpp).
   -lidbfs.js

@@ -12,6 +12,7 @@
 #include "platform/assets.hpp"
 #include "platform/clipboard.hpp"
 #include "platform/clock.hpp"
+#include "platform/text_input.hpp"
 #include "render/screen_text.hpp"
 #include "render/screenshot.hpp"
 #include "session/benchmark_scene.hpp"
@@ -81,6 +82,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.paused = options_.startPaused || (options_.scene && options_.benchParticles == 0);
     s.arrows = options_.arrows;
     s.inPage = options_.inPage;
+    s.touch = options_.touch;
     const SDL_Point out = sdl_->outputSize();
     s.viewportWidth = out.x;
     s.viewportHeight = out.y;
@@ -171,11 +173,7 @@ void App::updateTextInput() {
     // Text input only while the edit prompt or a field of the panel wants characters.
     const bool editing = session_->prompt().active() || (gui_ && gui_->io().WantTextInput);
     if (editing != textInput_) {
-        if (editing) {
-            SDL_StartTextInput();
-        } else {
-            SDL_StopTextInput();
-        }
+        setTextInput(editing);
         textInput_ = editing;
     }
 }
@@ -200,11 +198,9 @@ void App::apply(const Command& c) {
         toggleVideo(*video);
     }
     if (const std::optional<std::string> text = session_->takeClipboardText()) {
-        if (const auto why = putOnClipboard(*text)) {
-            const std::string problem = "Could not put the table on the clipboard: " + *why;
-            logLine("[E] " + problem);
-            messages_.push_back({problem, now() + kMessageSeconds, {}});
-        }
+        // A page's answer comes later, as an event (processEvent).
+        if (const std::optional<cmd::ClipboardResult> r = putOnClipboard(*text))
+            session_->apply(*r);
     }
     flushNotices();
 }
@@ -228,6 +224,12 @@ void App::show(const std::string& text) {
 
 void App::processEvent(const SDL_Event& e) {
     // The controls first: what they take (a click on the panel, typing in its fields) is theirs.
+    if (const std::optional<cmd::ClipboardResult> r = clipboardResult(e)) {
+        apply(*r);
+        return;
+    }
+    // A finger on the screen: hints name the panel's buttons from now on.
+    if (e.type == SDL_FINGERDOWN && !session_->touch()) apply(cmd::SetTouch{true});
     const bool tabToPanel = !session_->prompt().active() && !session_->dialog().open();
     if (gui_ && gui_->handleEvent(e, tabToPanel)) return;
     act(e);

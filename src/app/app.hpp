@@ -68,6 +68,8 @@ struct AppOptions {
     /// The app runs in a web page (SessionOptions::inPage): Esc does not quit, files are
     /// downloads, the help lists the page's keys.
     bool inPage = false;
+    /// A touch screen is the user's hands (SessionOptions::touch); a finger seen turns it on.
+    bool touch = false;
     std::string renderDriver;        ///< SDL render driver name ("software", ...); chosen if empty
     std::size_t benchParticles = 0;  ///< > 0: run the frame-time benchmark with this many particles
     int benchFrames = 300;

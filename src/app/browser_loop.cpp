@@ -8,6 +8,7 @@
 #include <emscripten.h>
 
 #include "platform/browser_files.hpp"
+#include "platform/browser_input.hpp"
 #include "platform/browser_settings.hpp"
 
 // The page's functions (web/index.html), called if it has them.
@@ -89,6 +90,7 @@ void pass(void* arg) {
 
 void runInBrowser(std::unique_ptr<App> app, const std::filesystem::path& folder, bool benchmark) {
     app->controlPanel().setBrowser(true);
+    stampPointerEventsWithBrowserTimes();
     if (!benchmark) app->greet();
     auto* loop = new BrowserLoop{
         std::move(app), DownloadFolder(folder), BrowserSettings("/settings"), benchmark, 0, {}};

@@ -67,6 +67,10 @@ int main(int argc, char** argv) {
     cli.add_option("--renderer", options.renderDriver,
                    "SDL render driver (software, opengl, opengles2, ...); SDL picks if omitted");
     cli.add_flag("--paused", options.startPaused, "Start paused (Space resumes)");
+#ifdef __EMSCRIPTEN__
+    // The page's own: a device whose pointer is a finger (web/index.html asks the browser).
+    cli.add_flag("--touch", options.touch, "A touch screen: hints name buttons, not keys");
+#endif
     bool noArrows = false;
     cli.add_flag("--no-arrows", noArrows, "Start with the velocity arrows hidden (A shows them)");
     bool noVsync = false;

@@ -116,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 62)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 64)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -332,6 +332,10 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
         }
         case 61:
             return cmd::SetTheme{in.ConsumeBool() ? Theme::Light : Theme::Dark};
+        case 62:
+            return cmd::ClipboardResult{in.ConsumeBool(), text(in)};
+        case 63:
+            return cmd::SetTouch{in.ConsumeBool()};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }

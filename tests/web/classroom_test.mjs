@@ -13,7 +13,11 @@
 //   5. a phone (390x844): the panel opens over the box as a sheet at the phone's full width, the
 //      readouts above the box are whole lines, and the box is a usable size;
 //   6. after Save and Export the panel names the file and says it is a download, never the
-//      page's own folder.
+//      page's own folder, in words a phone's owner reads too (your downloads);
+//   7. a second trial (the tablet's fingers, then the phone's): the on-screen keyboard's text
+//      reaches a field, Copy reaches the browser's clipboard, a finger's fling launches as a
+//      mouse's, a tap or a scroll that starts on a slider leaves it, the UI scale keeps the panel
+//      open, hints name buttons, two fingers on the phone's sheet act on nothing under it.
 // Screenshots are written to PSB_WEB_SHOTS (classroom-*.png) for a person to look at.
 import fs from "fs";
 import path from "path";
@@ -42,7 +46,7 @@ async function open(viewport, options = {}) {
   page.on("pageerror", (e) => errors.push(e.message));
   const cdp = await context.newCDPSession(page);
   const p = {
-    page, context,
+    page, context, cdp,
     log: () => page.evaluate(() => window.psbLog.slice()),
     title: () => page.title(),
     async shot(name) {
@@ -288,7 +292,8 @@ async function started(p, query) {
   await p.page.waitForTimeout(300);
   await p.shot("9-saved");
   check(name && file === `File: ${name}`, `the Scene section names the file: ${file}`);
-  check(name && saved && saved.startsWith(`Saved as ${name}`) && /Downloads/.test(saved) &&
+  check(name && saved && saved.startsWith(`Saved as ${name}`) && /your downloads/.test(saved) &&
+        !/this computer|Downloads folder/.test(saved) &&
         !/\/files/.test(saved), `it says where the file went: ${saved}`);
   // The Scene section closed and the panel wheeled down: the Data section in view.
   const sceneHeader = await p.control("section Scene");
@@ -312,7 +317,8 @@ async function started(p, query) {
   }
   await p.waitFor("the exported line", async () => (await p.says("exported")) !== null, 5);
   const exported = await p.says("exported");
-  check(exported && /^Exported values\.csv/.test(exported) && /Downloads/.test(exported) &&
+  check(exported && /^Exported values\.csv/.test(exported) && /your downloads/.test(exported) &&
+        !/this computer|Downloads folder/.test(exported) &&
         !/\/files/.test(exported), `Export says where the table went: ${exported}`);
 
   // 4. About is the panel's, and opens the page's notes.
@@ -363,6 +369,224 @@ async function started(p, query) {
   if (fold) await p.tap(await p.control("fold panel"));
   await p.page.waitForTimeout(500);
   await p.shot("14-phone-folded");
+  await p.context.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The class's second trial, on a tablet's fingers (1024x768, paused): typing with the on-screen
+// keyboard, Copy, a fling, a tap and a scroll on a slider, the UI scale, the hints.
+{
+  const p = await open({ width: 1024, height: 768 });
+  await p.context.grantPermissions(["clipboard-read", "clipboard-write"], { origin: url });
+  check(await started(p, "?log-controls&seed=7&paused"), "the page starts on a tablet (again)");
+  await p.page.waitForTimeout(500);
+  const lines = async (re) => (await p.log()).filter((l) => re.test(l));
+  const count = async (re) => (await lines(re)).length;
+  /// The panel's control `name`, scrolled into reach by a finger dragged along the panel.
+  const reach = async (name) => {
+    for (let k = 0; k < 6; k++) {
+      const c = await p.control(name);
+      if (!c || (c.y >= 40 && c.y <= 720)) return c;
+      const by = Math.max(-300, Math.min(300, c.y - 380));
+      await p.drag({ x: 150, y: 400 + by / 2 }, { x: 150, y: 400 - by / 2 }, 10);
+      await p.page.waitForTimeout(1000);
+    }
+    return p.control(name);
+  };
+
+  const scene = await p.control("section Scene");
+  await p.tap(scene);
+  await p.waitFor("the Scene section", async () => (await p.control("title")) !== null, 3);
+
+  // 1. A field that takes text brings the on-screen keyboard up (the page's typing field has
+  //    the focus) and what that keyboard types (the browser's insertText, as a touch
+  //    keyboard's, no key events) reaches it; its Enter keeps it.
+  const title = await p.control("title");
+  if (title) await p.tap(title);
+  await p.waitFor("the typing field", async () =>
+    (await p.page.evaluate(() => document.activeElement && document.activeElement.id)) === "typing", 3);
+  const focused = await p.page.evaluate(() => document.activeElement && document.activeElement.id);
+  check(focused === "typing",
+        `a tap on the title field focuses the page's typing field (the keyboard comes up): ${focused}`);
+  await p.shot("15-typing-tablet");
+  await p.page.keyboard.insertText("Momentum lesson");
+  await p.page.waitForTimeout(300);
+  await p.page.keyboard.press("Enter");
+  await p.waitFor("the title", async () => /Momentum lesson/.test(await p.title()), 3);
+  check(/Momentum lesson/.test(await p.title()),
+        `what the on-screen keyboard typed reaches the field: the title reads "${await p.title()}"`);
+  await p.page.waitForTimeout(300);
+  const after = await p.page.evaluate(() => document.activeElement && document.activeElement.id);
+  check(after !== "typing", `the keyboard goes away once the field is done: focus on ${after}`);
+
+  // 4. A tap on a slider leaves its value; a finger that starts on it and goes up scrolls the
+  //    panel and leaves it too; a drag along it changes it.
+  await p.tap(scene);  // the Scene section folded again
+  await p.page.waitForTimeout(300);
+  const speed = await p.control("Speed");
+  const speeds0 = await count(/Time speed/);
+  if (speed) await p.tap({ x: speed.x + 70, y: speed.y });
+  await p.page.waitForTimeout(500);
+  check((await count(/Time speed/)) === speeds0,
+        "a tap on a slider does not set its value: " + ((await lines(/Time speed/)).pop() || "unchanged"));
+  const probe0 = await p.control("section Data");
+  if (speed) {
+    await p.touch("touchStart", [[speed.x + 70, speed.y]]);
+    await p.page.waitForTimeout(500);  // a finger that rests before it moves
+    for (let k = 1; k <= 12; k++) {
+      await p.touch("touchMove", [[speed.x + 70 + k, speed.y - 25 * k]]);
+      await p.page.waitForTimeout(16);
+    }
+    await p.touch("touchEnd", []);
+  }
+  await p.page.waitForTimeout(1000);
+  const probe1 = await p.control("section Data");
+  check((await count(/Time speed/)) === speeds0,
+        "a finger that starts on a slider and goes up leaves its value: " +
+        ((await lines(/Time speed/)).pop() || "unchanged"));
+  check(probe0 && probe1 && probe0.y - probe1.y > 100,
+        `... and scrolls the panel: the Data section ${probe0 && probe0.y} -> ${probe1 && probe1.y}`);
+  await p.shot("16-slider-scrolled");
+
+  // 2. Copy: the browser's clipboard holds the table, and the panel says so only then.
+  const data = await reach("section Data");
+  if (data) await p.tap(data);
+  await p.waitFor("the Data section", async () => (await p.control("Copy values")) !== null, 3);
+  const copy = await p.control("Copy values");
+  if (copy) await p.tap(copy);
+  await p.waitFor("the copy", async () => (await count(/Copied|Could not copy/)) > 0, 5);
+  const clip = await p.page.evaluate(() => navigator.clipboard.readText().catch((e) => "error: " + e));
+  const copied = (await lines(/Copied|Could not copy/)).pop() || "nothing said";
+  check(/^x_m\t|\tx_m\t/.test(clip.split("\n")[0]) && clip.split("\n").length > 3,
+        `Copy puts the values on the browser's clipboard, tab-separated: ${JSON.stringify(clip.slice(0, 60))}`);
+  check(/Copied \d+ rows of values/.test(copied), `and says so: ${copied}`);
+  await p.shot("17-copied");
+
+  // 3. A finger's quick fling launches as the mouse's fling of the same path. A particle at
+  //    rest first (a finger held still on empty space), then the fling from it. Both hands'
+  //    events carry the times of one schedule (the browser's own input times, CDP's
+  //    `timestamp`): a move every 16 ms, the lift 60 ms after the last. Each is handed over in
+  //    a frame of its own (no two moves merged into one); how late the page's handlers run
+  //    after those times (this machine's load, the frames) is left to the browser.
+  const at = { x: 760, y: 360 };
+  const frame = () => p.page.evaluate(() => new Promise((r) => requestAnimationFrame(() => r())));
+  const fling = async (hand, path, pause) => {
+    const t0 = Date.now() / 1000;
+    await hand.down(path[0], t0);
+    await p.page.waitForTimeout(pause);
+    let t = t0 + pause / 1000;
+    for (const q of path.slice(1)) {
+      await hand.move(q, t);
+      await frame();
+      t += 0.016;
+    }
+    await hand.up(path[path.length - 1], t - 0.016 + 0.06);
+    await p.page.waitForTimeout(400);
+  };
+  const touchAt = (type, q, timestamp) => p.cdp.send("Input.dispatchTouchEvent", {
+    type, timestamp, touchPoints: q ? [{ x: q.x, y: q.y, id: 0 }] : [] });
+  const finger = {
+    down: (q, t) => touchAt("touchStart", q, t),
+    move: (q, t) => touchAt("touchMove", q, t),
+    up: (q, t) => touchAt("touchEnd", null, t),
+  };
+  const mouseAt = (type, q, buttons, timestamp) => p.cdp.send("Input.dispatchMouseEvent", {
+    type, x: q.x, y: q.y, button: "left", buttons, timestamp,
+    clickCount: type === "mouseMoved" ? 0 : 1 });
+  const mouse = {
+    down: (q, t) => mouseAt("mouseMoved", q, 0, t).then(() => mouseAt("mousePressed", q, 1, t)),
+    move: (q, t) => mouseAt("mouseMoved", q, 1, t),
+    up: (q, t) => mouseAt("mouseReleased", q, 0, t),
+  };
+  const released = async (before) => {
+    const l = (await lines(/Released particle|Launched particle/)).slice(before);
+    return l.length ? l[l.length - 1] : "nothing";
+  };
+  const speedOf = (line) => {
+    const m = line.match(/velocity \[(-?[\d.]+), (-?[\d.]+)\]/);
+    return m ? Math.hypot(+m[1], +m[2]) : 0;
+  };
+  const path = (o) => Array.from({ length: 7 }, (_, k) => ({ x: o.x + 14 * k, y: o.y - 6 * k }));
+  const results = {};
+  for (const [name, hand, spot] of [["finger", finger, at], ["mouse", mouse, { x: at.x, y: at.y + 150 }]]) {
+    let n = await count(/Released particle|Launched particle/);
+    await fling(hand, [spot, spot], 700);  // launched at rest
+    const launched = await released(n);
+    n = await count(/Released particle|Launched particle/);
+    await fling(hand, path(spot), 30);
+    results[name] = { launched, flung: await released(n) };
+  }
+  const vf = speedOf(results.finger.flung), vm = speedOf(results.mouse.flung);
+  check(/Launched particle .* velocity \[0\.00, 0\.00\]/.test(results.finger.launched) &&
+        /Released particle/.test(results.finger.flung) && vf > 0 && vm > 0 &&
+        Math.abs(vf - vm) <= 0.3 * vm,
+        `a finger's fling launches as the mouse's of the same path: finger ${vf.toFixed(2)} m/s, ` +
+        `mouse ${vm.toFixed(2)} m/s (${results.finger.flung}; ${results.mouse.flung})`);
+  await p.shot("18-flung");
+  // 7. Once a finger has touched, the hints name the panel's buttons, not keys.
+  const paused = (await lines(/while paused: .* sets it moving/)).pop() || "nothing said";
+  check(/Play sets it moving/.test(paused), `a hint after a finger names the button: ${paused}`);
+
+  // 6. The UI scale dragged by a finger: the panel stays open, where it was.
+  const scale = await reach("UI scale");
+  const scaleSaid = /^\[I\] UI scale \d+ %/;
+  const scales0 = await count(scaleSaid);
+  if (scale) await p.drag({ x: scale.x - 30, y: scale.y }, { x: scale.x + 90, y: scale.y + 2 }, 12);
+  await p.waitFor("the scale", async () => (await count(scaleSaid)) > scales0, 3);
+  await p.page.waitForTimeout(800);
+  await p.shot("19-scaled");
+  const scaled = (await lines(scaleSaid)).pop() || "nothing said";
+  check((await count(scaleSaid)) > scales0, `a finger changes the UI scale: ${scaled}`);
+  const panelSaid = (await lines(/control panel (folded|covers)/)).pop() || "nothing said";
+  const scale1 = await p.control("UI scale");
+  check(!/folded/.test(panelSaid) && !(await p.control("open panel")) && scale && scale1 &&
+        Math.abs(scale1.y - scale.y) < 80,
+        `... and the panel stays open, its slider where the finger left it: ` +
+        `${JSON.stringify(scale)} -> ${JSON.stringify(scale1)}; ${panelSaid}`);
+  await p.context.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The class's second trial on a phone (390x844, fingers only, paused): the hints name buttons,
+// two fingers on the panel's sheet act on nothing under them, nothing covers a reading.
+{
+  const p = await open({ width: 390, height: 844 }, { deviceScaleFactor: 3, isMobile: true });
+  check(await started(p, "?log-controls&seed=7&paused"), "the page starts on a phone (again)");
+  await p.page.waitForTimeout(800);
+  const lines = async (re) => (await p.log()).filter((l) => re.test(l));
+  const count = async (re) => (await lines(re)).length;
+  const boxShot = await p.shot("20-phone-readouts");
+
+  // 7. A phone's first words name its buttons: the folded panel opens with >>, not C.
+  const folded = (await lines(/control panel is folded/)).pop() || "nothing said";
+  check(/: >> opens it/.test(folded), `on a phone the hints name the button, not the key: ${folded}`);
+
+  // 5. Two fingers on the sheet, one of them on a slider: neither the slider nor the box
+  //    behind the sheet moves.
+  await p.tap(await p.control("open panel"));
+  await p.waitFor("the panel", async () => (await p.control("fold panel")) !== null, 3);
+  await p.page.waitForTimeout(500);
+  const values = /Restitution|Friction|Roughness|Time speed|Gravity|Arrow scale|UI scale/;
+  const values0 = await count(values);
+  const slider = await p.control("Restitution");
+  const a = slider || { x: 100, y: 400 }, b = { x: a.x + 60, y: a.y + 150 };
+  await p.touch("touchStart", [[a.x, a.y]]);
+  await p.page.waitForTimeout(60);
+  await p.touch("touchStart", [[a.x, a.y], [b.x, b.y]]);
+  for (let k = 1; k <= 10; k++) {
+    await p.touch("touchMove", [[a.x + 8 * k, a.y + 3 * k], [b.x + 8 * k, b.y + 12 * k]]);
+    await p.page.waitForTimeout(16);
+  }
+  await p.touch("touchEnd", []);
+  await p.page.waitForTimeout(800);
+  await p.shot("21-phone-two-fingers");
+  check((await count(values)) === values0,
+        "two fingers on the sheet change no slider: " + ((await lines(values)).pop() || "none changed"));
+  await p.tap(await p.control("fold panel"));
+  await p.page.waitForTimeout(800);
+  const boxAfter = await p.shot("22-phone-folded-again");
+  const moved = await p.changed(boxShot, boxAfter, { x0: 0, y0: 120, x1: 390, y1: 700 });
+  check(moved < 50, `... nor the box behind it (pan, zoom): ${moved} pixels of the box changed`);
   await p.context.close();
 }
 

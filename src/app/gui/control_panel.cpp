@@ -336,7 +336,7 @@ void ControlPanel::scene(const Session& s) {
     if (browser_) {
         if (ImGui::Button("Open a scene file...")) uploadAsked_ = true;
         mark("Open");
-        tip("Open a scene file (JSON) from this computer, with the browser's file chooser");
+        tip("Open a scene file (JSON) from this device, with the browser's file chooser");
         fileError(s);
         return;
     }
@@ -501,8 +501,19 @@ void ControlPanel::look(const Session& s) {
         scaleDraft_ = percent;
     }
     scaleHeld_ = ImGui::IsItemActive();
+    // The panel grows or shrinks about the slider: at the new scale it is scrolled so that the
+    // slider stays under the finger (or pointer) that set it, not pushed off the screen.
+    const float at = ImGui::GetItemRectMin().y;
+    if (keepScaleAt_ && keepScaleAt_->second != v.uiScale) {
+        const float target = keepScaleAt_->first / static_cast<float>(v.uiScale);
+        ImGui::SetScrollY(ImGui::GetScrollY() + (at - target));
+        keepScaleAt_.reset();
+    }
     if (ImGui::IsItemDeactivatedAfterEdit()) {
         out_.emplace_back(cmd::SetUiScale{scaleDraft_ / 100.0, false});
+        if (scaleDraft_ / 100.0 != v.uiScale) {
+            keepScaleAt_ = std::pair{at * static_cast<float>(v.uiScale), v.uiScale};
+        }
     }
     mark("UI scale");
     tip(browser_ ? "The panel, the HUD, the labels and the charts together, 75 % to 300 %, the "

@@ -161,6 +161,9 @@ class ControlPanel {
     /// The UI scale slider while it is held (percent): applied when let go.
     int scaleDraft_ = 100;
     bool scaleHeld_ = false;
+    /// Where the UI scale's slider was when a new scale was set, window points from the top,
+    /// and the scale it was drawn at: the panel scrolls to keep it there at the new scale.
+    std::optional<std::pair<float, double>> keepScaleAt_;
     /// The Data section: the file name typed for Export, steps between trajectory samples.
     std::array<char, 512> exportName_{};
     int recordEvery_ = 0;

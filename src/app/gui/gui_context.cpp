@@ -216,6 +216,10 @@ bool GuiContext::handleEvent(const SDL_Event& event, bool tabToPanel) {
         forwardKey(event);
         return ImGui::GetIO().WantTextInput;
     }
+    if (event.type == SDL_FINGERDOWN || event.type == SDL_FINGERMOTION ||
+        event.type == SDL_FINGERUP) {
+        return handleTouch(event.tfinger);
+    }
     if (handleFinger(event)) return true;
     if (platform_) ImGui_ImplSDL2_ProcessEvent(&event);
     if (event.type == SDL_MOUSEMOTION) {
@@ -442,6 +446,21 @@ bool GuiContext::handleFinger(const SDL_Event& e) {
     return true;
 }
 
+bool GuiContext::handleTouch(const SDL_TouchFingerEvent& f) {
+    if (f.type == SDL_FINGERMOTION) return panelFingers_.count(f.fingerId) > 0;
+    if (f.type == SDL_FINGERUP) return panelFingers_.erase(f.fingerId) > 0;
+    // SDL sends the first finger's mouse press before its finger event: a finger that pressed
+    // the panel is down in the gesture already.
+    int w = 0, h = 0;
+    if (window_ != nullptr) SDL_GetWindowSize(window_, &w, &h);
+    const ImVec2 at(f.x * static_cast<float>(w), f.y * static_cast<float>(h));
+    if (panelFingers_.empty() && !panelTouch_.fingerDown() && !overWindow(at)) return false;
+    // Two fingers on the panel mean nothing: the first one's gesture ends without a press.
+    if (!panelFingers_.empty()) panelTouch_.cancel();
+    panelFingers_.insert(f.fingerId);
+    return true;
+}
+
 void GuiContext::fingerFrame() {
     ImGuiIO& io = ImGui::GetIO();
     if (forgetMouse_ > 0 && --forgetMouse_ == 0) {
@@ -449,6 +468,7 @@ void GuiContext::fingerFrame() {
         if (!ImGui::IsAnyMouseDown()) io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
     }
     const double now = static_cast<double>(SDL_GetTicks64()) / 1000.0;
+    panelTouch_.sliderUnder(tooltips_.sliderHovered);  // the last frame's, under the finger
     if (const std::optional<PanelTouch::Pointer> p = panelTouch_.frame(now)) {
         io.MousePos = p->at.value_or(ImVec2(-FLT_MAX, -FLT_MAX));
         io.MouseDown[0] = p->down;

@@ -43,6 +43,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -158,6 +159,10 @@ class GuiContext {
     /// handleEvent for the mouse SDL makes of a finger (panel_touch.hpp): true when the panel's
     /// touch gesture takes it.
     bool handleFinger(const SDL_Event& event);
+    /// handleEvent for a finger's own events: true for the fingers that came down on a panel
+    /// (or while one is on it), which never pan or pinch the box behind it (platform/touch.hpp);
+    /// a second finger there ends the first one's gesture (PanelTouch::cancel).
+    bool handleTouch(const SDL_TouchFingerEvent& f);
     /// The finger's part of a new frame: the gesture's pointer, the pointer of a finger lifted
     /// off the world forgotten, whether tooltips may show.
     void fingerFrame();
@@ -178,6 +183,7 @@ class GuiContext {
     std::optional<Theme> pendingTheme_;
     std::optional<std::string> problem_;
     PanelTouch panelTouch_;
+    std::set<SDL_FingerID> panelFingers_;  // fingers down that came down on a panel
     TooltipState tooltips_;
     bool pointerIsFinger_ = false;  // the last pointer event came from a finger
     int forgetMouse_ = 0;           // frames until a lifted finger's pointer is forgotten

@@ -52,6 +52,9 @@ void PanelTouch::up(ImVec2 at, double seconds) {
             last_ = origin_;
             phase_ = Phase::Releasing;
             break;
+        case Phase::Cancelled:
+            phase_ = Phase::Lifted;
+            break;
         case Phase::Pressing:
             if (at.x != last_.x || at.y != last_.y) move(at, seconds);
             phase_ = Phase::Releasing;
@@ -67,17 +70,34 @@ void PanelTouch::up(ImVec2 at, double seconds) {
     }
 }
 
+void PanelTouch::cancel() {
+    if (phase_ == Phase::Waiting || phase_ == Phase::Pressing || phase_ == Phase::Scrolling) {
+        phase_ = Phase::Cancelled;
+    }
+    pendingScroll_ = 0.f;
+    velocity_ = 0.f;
+}
+
+void PanelTouch::sliderUnder(bool slider) {
+    const bool unpressed = phase_ == Phase::Waiting || (phase_ == Phase::Releasing && !pressShown_);
+    if (unpressed && hoverFrames_ > 0) overSlider_ = slider;
+}
+
 std::optional<PanelTouch::Pointer> PanelTouch::frame(double seconds) {
     const double dt = std::max(0.0, seconds - frameAt_);
     frameAt_ = seconds;
     Pointer p;
     p.scrollFrom = origin_;
-    if (phase_ == Phase::Waiting && seconds - downAt_ >= kHoldSeconds) phase_ = Phase::Pressing;
+    // A finger held still on a slider presses nothing: it may be about to scroll.
+    if (phase_ == Phase::Waiting && seconds - downAt_ >= kHoldSeconds && !overSlider_) {
+        phase_ = Phase::Pressing;
+    }
     switch (phase_) {
         case Phase::None:
             return std::nullopt;
         case Phase::Waiting:  // hovered, so the control under the finger lights up
             p.at = origin_;
+            ++hoverFrames_;
             return p;
         case Phase::Pressing:
             // The press lands where the finger came down, then follows it.
@@ -89,6 +109,15 @@ std::optional<PanelTouch::Pointer> PanelTouch::frame(double seconds) {
             p.scroll = std::exchange(pendingScroll_, 0.f);
             return p;
         case Phase::Releasing:
+            if (!pressShown_ && hoverFrames_ == 0) {  // what is under the tap, first
+                p.at = origin_;
+                ++hoverFrames_;
+                return p;
+            }
+            if (!pressShown_ && overSlider_) {  // a tap on a slider: its value stays
+                phase_ = Phase::None;
+                return p;
+            }
             if (!pressShown_) {  // lifted before any frame saw the press: one frame down first
                 p.at = origin_;
                 p.down = true;
@@ -102,6 +131,8 @@ std::optional<PanelTouch::Pointer> PanelTouch::frame(double seconds) {
             p.scroll = std::exchange(pendingScroll_, 0.f) + velocity_ * static_cast<float>(dt);
             velocity_ *= static_cast<float>(std::exp(-dt / kCoastSeconds));
             if (std::abs(velocity_) < kCoastStop) phase_ = Phase::Lifted;
+            return p;
+        case Phase::Cancelled:  // no pointer: nothing hovered, pressed or scrolled
             return p;
         case Phase::Lifted:  // one frame with no pointer, so that ImGui lets go of the hover
             phase_ = Phase::None;

@@ -12,6 +12,14 @@
 //   lifted before either                              ─► a tap: pressed and released where it
 //                                                       came down
 //
+// A slider under the finger (the frames that show the finger's hover say so: sliderUnder) is
+// pressed only by a drag across it: a tap or a finger held still on it presses nothing (ImGui
+// would set the value to where it came down), so a finger that rests on a slider before it
+// scrolls the panel changes nothing. A tap lifted before any frame showed its hover is shown
+// hovered for one frame first, to learn what is under it. A second finger on the panel ends
+// the gesture (cancel): nothing is pressed or scrolled by it, and the first finger's events
+// stay the gesture's, doing nothing, until it lifts.
+//
 // After the lift ImGui sees no pointer at all: no hover, tooltip or highlight stays where the
 // finger was. The gesture is plain state over positions (window points) and times (seconds);
 // GuiContext feeds it the mouse events SDL makes of a finger and gives ImGui what frame() says.
@@ -43,21 +51,29 @@ class PanelTouch {
     void down(ImVec2 at, double seconds);
     void move(ImVec2 at, double seconds);
     void up(ImVec2 at, double seconds);
+    /// A second finger came down: the gesture does nothing more (see the top of this file).
+    void cancel();
+    /// What the last frame showed under the finger's hover: a slider or not. Call before
+    /// frame(); read while the finger has not pressed.
+    void sliderUnder(bool slider);
     /// A finger on the panel is down now: its mouse events are the gesture's.
     [[nodiscard]] bool fingerDown() const {
-        return phase_ == Phase::Waiting || phase_ == Phase::Pressing || phase_ == Phase::Scrolling;
+        return phase_ == Phase::Waiting || phase_ == Phase::Pressing ||
+               phase_ == Phase::Scrolling || phase_ == Phase::Cancelled;
     }
     /// What ImGui sees in the frame that starts at `seconds`, or nothing when no finger is on
     /// the panel (the mouse is ImGui's as usual).
     [[nodiscard]] std::optional<Pointer> frame(double seconds);
 
   private:
-    enum class Phase { None, Waiting, Pressing, Scrolling, Releasing, Coasting, Lifted };
+    enum class Phase { None, Waiting, Pressing, Scrolling, Releasing, Coasting, Cancelled, Lifted };
 
     Phase phase_ = Phase::None;
     ImVec2 origin_, last_;
     double downAt_ = 0.0, lastAt_ = 0.0, frameAt_ = 0.0;
     bool pressShown_ = false;  ///< ImGui has seen the button down in a frame
+    int hoverFrames_ = 0;      ///< frames that showed the finger's hover where it came down
+    bool overSlider_ = false;  ///< a slider is under the finger (from those frames)
     float pendingScroll_ = 0.f;
     float velocity_ = 0.f;  ///< the scroll's, window points a second
 };

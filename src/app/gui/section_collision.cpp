@@ -34,16 +34,16 @@ void ControlPanel::card(const Session& s) {
     const std::optional<CollisionCard>& card = s.lastCollision();
     const std::optional<Particle> selected = s.selected();
     if (!card) {
+        const std::string run = s.touch() ? ": run time (Play)" : ": run time (Space)";
         // A small scene's card listens all along; a large one's only while it is shown.
         const bool allAlong = LastCollision::listening(false, s.world().size());
         const std::string since = allAlong ? " yet" : " since the card was shown";
         widgets::wrappedDisabled(
             selected
                 ? "Particle " + std::to_string(particleNumber(selected->id)) + " has not collided" +
-                      (allAlong ? std::string(" since it was selected") : since) +
-                      ": run time (Space)"
-                : "No collision between two particles" + since +
-                      ": run time (Space), or select a particle to follow its collisions");
+                      (allAlong ? std::string(" since it was selected") : since) + run
+                : "No collision between two particles" + since + run +
+                      ", or select a particle to follow its collisions");
         return;
     }
     const CollisionCardText text = collisionCardText(*card, s.axes());

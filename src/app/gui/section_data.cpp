@@ -106,8 +106,7 @@ void ControlPanel::data(const Session& s) {
         // In a page the path is in the page's own memory: the download is what the user has.
         const std::string exported =
             s.inPage() ? "Exported " + s.lastExport()->filename().string() +
-                             ", a download: in this computer's Downloads folder (or where the "
-                             "browser asked)"
+                             ", a download: in your downloads (or where the browser asked)"
                        : "Exported to " + s.lastExport()->string();
         widgets::wrapped(exported);
         mark("exported", exported);

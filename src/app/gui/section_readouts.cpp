@@ -186,7 +186,8 @@ void ControlPanel::pressurePlot(const Session& s) {
         "of simulated time. Heat or cool the gas and watch all three follow");
     mark("pressure plot");
     if (plot.empty()) {
-        widgets::wrappedDisabled("Run time (Space): a point every 0.25 s");
+        widgets::wrappedDisabled(s.touch() ? "Run time (Play): a point every 0.25 s"
+                                           : "Run time (Space): a point every 0.25 s");
         return;
     }
     const float font = ImGui::GetFontSize();

@@ -160,9 +160,8 @@ void ControlPanel::sceneFile(const Session& s) {
                : "Back to the scene as it was made (undo brings the changes back)");
     if (s.fileError().empty() && s.lastSave()) {
         const std::string saved = browser_ ? "Saved as " + s.lastSave()->filename().string() +
-                                                 ", a download: in this computer's Downloads "
-                                                 "folder (or where the browser asked). Open "
-                                                 "reads it back"
+                                                 ", a download: in your downloads (or where "
+                                                 "the browser asked). Open reads it back"
                                            : "Saved to " + s.lastSave()->string();
         widgets::wrappedDisabled(saved);
         mark("saved", saved);

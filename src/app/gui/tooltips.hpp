@@ -9,7 +9,9 @@
 //
 // GuiContext owns the state and opens each frame with startFrame; widgets::tip reads it
 // through ImGui's io.UserData (null: every hover shows its tooltip, as ImGui does, for panels
-// built without a GuiContext). What was shown is kept for --log-controls.
+// built without a GuiContext). What was shown is kept for --log-controls. The same state carries
+// the one other thing a widget tells GuiContext about the pointer: a slider is under it (a
+// finger on the panel presses a slider only by a drag across it, panel_touch.hpp).
 //
 // A tooltip never covers the message line (what the program just said, at the bottom right of
 // the panel): where ImGui would put it over that band, tooltipPosition moves it above the band
@@ -56,10 +58,12 @@ struct TooltipState {
     std::string hovered;  ///< the tip of the control hovered, and since when
     double since = 0.0;
     bool hoveredThisFrame = false;
-    std::string shown;  ///< the tooltip shown this frame (empty: none)
-    TipRect avoid;      ///< the message band, in the panel's points (empty: none)
+    std::string shown;           ///< the tooltip shown this frame (empty: none)
+    TipRect avoid;               ///< the message band, in the panel's points (empty: none)
+    bool sliderHovered = false;  ///< a slider was hovered in the frame (widgets::slider)
 
     void startFrame(double seconds, bool pointerIsMouse) {
+        sliderHovered = false;
         if (!hoveredThisFrame) hovered.clear();
         hoveredThisFrame = false;
         shown.clear();

@@ -95,6 +95,14 @@ inline void tip(const char* text) {
     ImGui::EndTooltip();
 }
 
+/// Tells GuiContext that the pointer is over the slider just drawn (panel_touch.hpp).
+inline void markSliderHovered() {
+    if (!ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) return;
+    if (auto* state = static_cast<TooltipState*>(ImGui::GetIO().UserData)) {
+        state->sliderHovered = true;
+    }
+}
+
 /// A slider of `value` in [lo, hi]; true when the user changed it, with `continues` set when
 /// the change is part of a drag that started in an earlier frame (one user action per drag).
 /// Its value reads wherever its handle is (slider.hpp).
@@ -106,6 +114,7 @@ inline bool slider(const char* label, double& value, double lo, double hi, const
         const SliderHandleStyle narrow;
         changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &lo, &hi, format, flags);
     }
+    markSliderHovered();
     continues = !ImGui::IsItemActivated();
     std::array<char, 64> text{};
     std::snprintf(text.data(), text.size(), format, value);
@@ -126,6 +135,7 @@ inline bool sliderInt(const char* label, int& value, int lo, int hi, const char*
         const SliderHandleStyle narrow;
         changed = ImGui::SliderInt(label, &value, lo, hi, format, flags);
     }
+    markSliderHovered();
     std::array<char, 64> text{};
     std::snprintf(text.data(), text.size(), format, value);
     valueBesideHandle(text.data(), width,

@@ -385,6 +385,12 @@ struct SetTrails {
     static constexpr Traits traits = kPastPrompt;
     int mode = 0;  ///< TrailMode as int: off, selected, all
 };
+/// The user's hands are on a touch screen (`on`): messages and hints name the panel's buttons
+/// instead of keys (SessionOptions::touch). The app sends it when a finger first touches.
+struct SetTouch {
+    static constexpr Traits traits = kPassive;
+    bool on = true;
+};
 /// The control panel shown or folded to a narrow strip (key C).
 struct ToggleControls {
     static constexpr Traits traits = kPastPrompt;
@@ -440,10 +446,18 @@ struct ExportTable {
     DataTable table = DataTable::Values;
     std::filesystem::path path;
 };
-/// Puts `table` on the clipboard as tab-separated text (the app hands it to the system).
+/// Puts `table` on the clipboard as tab-separated text (the app hands it to the system, then
+/// says what became of it with ClipboardResult).
 struct CopyTable {
     static constexpr Traits traits = kPastPrompt;
     DataTable table = DataTable::Values;
+};
+/// What became of the text the last CopyTable gave the app: on the system's clipboard
+/// (`copied`), or not, and why (a page's browser may refuse, and answers later).
+struct ClipboardResult {
+    static constexpr Traits traits = kPassive;
+    bool copied = false;
+    std::string why;
 };
 /// Starts recording the selected particle (with none selected: every particle, up to
 /// DataRecorder's limit) every `every` steps, or stops; `every` 0 keeps the last choice.
@@ -490,8 +504,9 @@ using Command = std::variant<
     cmd::DeleteParticle, cmd::Select, cmd::SetShow, cmd::SetTrails, cmd::ToggleControls,
     cmd::SaveAs, cmd::SetObstacleSizes, cmd::RemoveObstacle, cmd::Revert, cmd::AskNewScene,
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
-    cmd::ExportTable, cmd::CopyTable, cmd::SetRecording, cmd::ToggleVideo, cmd::SetVideoSettings,
-    cmd::Stopwatch, cmd::ScaleSpeeds, cmd::ResizeBox, cmd::SetArrowScale,
-    cmd::SetTangentialRestitution, cmd::SetDiscsTurn, cmd::SetUiScale, cmd::SetTheme>;
+    cmd::ExportTable, cmd::CopyTable, cmd::ClipboardResult, cmd::SetRecording, cmd::ToggleVideo,
+    cmd::SetVideoSettings, cmd::Stopwatch, cmd::ScaleSpeeds, cmd::ResizeBox, cmd::SetArrowScale,
+    cmd::SetTangentialRestitution, cmd::SetDiscsTurn, cmd::SetUiScale, cmd::SetTheme,
+    cmd::SetTouch>;
 
 }  // namespace psb::app

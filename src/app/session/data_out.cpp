@@ -4,6 +4,7 @@
 #include "session/data_out.hpp"
 
 #include <algorithm>
+#include <utility>
 
 #include <particle_sandbox/atomic_file.hpp>
 #include <particle_sandbox/data_tables.hpp>
@@ -133,9 +134,26 @@ void DataOut::handle(const cmd::CopyTable& c, Context& x) {
         return;
     }
     clipboard_ = std::move(text);
-    x.notices.say(
-        fmt("Copied %zu row%s of %s to the clipboard (tab-separated: paste into a spreadsheet)",
-            rows, rows == 1 ? "" : "s", tableName(c.table)));
+    // "Copied" only once the app says the text is on the clipboard: a page's browser may refuse
+    // (no permission, no user gesture), and says so later.
+    copying_ = PendingCopy{rows, c.table};
+}
+
+void DataOut::handle(const cmd::ClipboardResult& c, Context& x) {
+    const std::optional<PendingCopy> copy = std::exchange(copying_, std::nullopt);
+    if (!copy) return;
+    const char* plural = copy->rows == 1 ? "" : "s";
+    if (c.copied) {
+        x.notices.say(
+            fmt("Copied %zu row%s of %s to the clipboard (tab-separated: paste into a spreadsheet)",
+                copy->rows, plural, tableName(copy->table)));
+        return;
+    }
+    const std::string why = c.why.empty() ? std::string() : " (" + c.why + ")";
+    x.notices.say(fmt("Could not copy the %s to the clipboard%s: Export gives the table as a CSV "
+                      "file%s instead",
+                      tableName(copy->table), why.c_str(), inPage_ ? " (a download)" : ""),
+                  Notice::Level::Warning);
 }
 
 void DataOut::handle(const cmd::ToggleVideo& c, Context&) {

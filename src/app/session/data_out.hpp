@@ -47,6 +47,7 @@ class DataOut {
     };
     void handle(const cmd::ExportTable& c, Context& x);
     void handle(const cmd::CopyTable& c, Context& x);
+    void handle(const cmd::ClipboardResult& c, Context& x);
     void handle(const cmd::ToggleVideo& c, Context& x);
     void handle(const cmd::SetVideoSettings& c, Context& x);
     void handle(const cmd::Screenshot& c, Context& x);
@@ -76,6 +77,12 @@ class DataOut {
     std::optional<std::filesystem::path> lastExport_;
     std::string exportError_;
     std::optional<std::string> clipboard_;
+    /// What the last copy handed to the app holds, said once the app reports the result.
+    struct PendingCopy {
+        std::size_t rows = 0;
+        cmd::DataTable table = cmd::DataTable::Values;
+    };
+    std::optional<PendingCopy> copying_;
     bool screenshotRequested_ = false;
     VideoSettings videoSettings_;
     std::optional<VideoSettings> videoToggle_;

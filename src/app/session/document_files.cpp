@@ -49,8 +49,8 @@ void Document::handle(const cmd::OpenPreset& c, Context& x) {
     x.clock.restart();
     const std::string key = cmd::presetKey(static_cast<int>(k));
     x.notices.say("Preset " + std::to_string(k + 1) + " of " + std::to_string(presets.size()) +
-                  (key.empty() ? std::string() : " (key " + key + ")") +
-                  ", paused: Space starts it");
+                  (key.empty() || x.notices.touch ? std::string() : " (key " + key + ")") +
+                  ", paused: " + x.notices.key("Space", "Play") + " starts it");
 }
 
 void Document::handle(const cmd::OpenFile& c, Context& x) {
@@ -147,7 +147,7 @@ void Document::handle(const cmd::NewScene& c, Context& x) {
         fmt("New scene: an empty box %s x %s", quantity(c.width, "m").c_str(),
             quantity(c.height, "m").c_str()) +
         (c.gravity > 0.0 ? fmt(", gravity %g m/s\u00b2", c.gravity) : std::string(", no gravity")) +
-        ", paused: fling or launch particles into it, then Space");
+        ", paused: fling or launch particles into it, then " + x.notices.key("Space", "Play"));
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -54,7 +54,8 @@ void History::handle(const cmd::StepForward&, Context& x) {
         if (x.clock.paused) {
             x.clock.stepRequested = true;  // the present: one new step
         } else {
-            x.notices.say("Pause (Space) to step through time");
+            x.notices.say(x.notices.touch ? "Pause to step through time"
+                                          : "Pause (Space) to step through time");
         }
         return;
     }

@@ -29,8 +29,10 @@ void Instruments::handle(const cmd::Stopwatch& c, Context& x) {
             } else {
                 stopwatch.start(t);
                 x.notices.say(x.clock.paused
-                                  ? "Stopwatch started: it runs with simulated time (Space)"
-                                  : "Stopwatch started");
+                                  ? std::string("Stopwatch started: it runs with simulated "
+                                                "time (") +
+                                        x.notices.key("Space", "Play") + ")"
+                                  : std::string("Stopwatch started"));
             }
             break;
         case A::Lap:

@@ -233,10 +233,26 @@ ReleaseResult Interaction::release(const World& world, const Vec2& point, double
                                    double launchSeconds) {
     ReleaseResult result;
     if (mode_ == Mode::Idle) return result;
-    record(point, time);
     LaunchSettings uncapped = launch;
     uncapped.maxSpeed = 0.0;
-    const CappedVelocity hand = capSpeed(handVelocity(time, uncapped), launch.maxSpeed);
+    // A release where the last move left the pointer is no sample of the hand's speed. A page
+    // drawing slow frames delivers one move a frame and the release a frame or more after the
+    // last (a finger's lift is not rAF-aligned, and SDL keeps no position of its own for it):
+    // measured up to the release, the window would hold the last move alone, and a quick fling
+    // read as a hand at rest. Let go within the time the pointer takes to report (the launch
+    // window, widened by its spacing), the hand had the speed of its last moves; a hand that
+    // stayed still longer than that was seen to stop, and lets go at rest.
+    Vec2 velocity = Vec2::Zero();
+    if (!samples_.empty() && point == samples_.back().position) {
+        const std::vector<TrajectorySample> moves(samples_.begin(), samples_.end());
+        const bool stopped = time - moves.back().time > launchWindow(moves, uncapped);
+        velocity = stopped ? Vec2::Zero() : launchVelocity(moves, uncapped);
+        record(point, time);
+    } else {
+        record(point, time);
+        velocity = handVelocity(time, uncapped);
+    }
+    const CappedVelocity hand = capSpeed(velocity, launch.maxSpeed);
     const bool click = travel_ < launch.minDistance && time - pressTime_ <= kClickSeconds;
     const std::optional<Hold> held = hold(world, time, launch);
     if (click) {

@@ -11,7 +11,10 @@
 // - The held particle is kinematic: collisions cannot push it, it pushes others with the
 //   velocity of the hand, and the world keeps it inside the box.
 // - A held particle is flung with the hand's velocity: psb::launchVelocity over the last ~100 ms
-//   of samples, so a particle dropped after the hand stopped is released at rest.
+//   of samples, so a particle dropped after the hand stopped is released at rest. A release where
+//   the last move left the pointer (a finger's lift, reported late by a slow page) flings with the
+//   speed of the moves before it unless it came longer than the pointer's reporting takes after
+//   them (psb::launchWindow): a finger and a mouse on the same path fling alike.
 // - A new particle is launched like the original's launch vector: its velocity is the drag from
 //   the press point to the release point divided by a launch time (the app passes the arrow
 //   scale, so the preview line from the ghost disc to the pointer is exactly the velocity arrow

@@ -36,6 +36,13 @@ class Notices {
     }
     /// Anything else (shown only, or under a topic).
     void add(Notice notice) { notices_.push_back(std::move(notice)); }
+    /// Messages name the panel's button, not the key: the user's hands are on a touch screen
+    /// (a page on a phone or a tablet, SessionOptions::touch, cmd::SetTouch).
+    bool touch = false;
+    /// `key` where there are keys, `button` (the panel's control for it) on a touch screen.
+    [[nodiscard]] const char* key(const char* key, const char* button) const {
+        return touch ? button : key;
+    }
     /// What was said since the last call.
     [[nodiscard]] std::vector<Notice> take() {
         std::vector<Notice> out;

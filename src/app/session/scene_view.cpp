@@ -179,14 +179,19 @@ void SceneView::handle(const cmd::Resize& c, Context& x) {
     const bool sized = c.width != camera_.viewportWidth() || c.height != camera_.viewportHeight();
     if (!sized && c.layout == layout_) return;
     // A window made too narrow for the box beside the open control panel folds it (C opens it
-    // again, over the box).
-    const bool fold = controls_ && layout_.controlsFit && !c.layout.controlsFit;
+    // again, over the box). A bigger UI scale in the same window (the panel's own slider, a
+    // finger still on it) keeps it open where it is, over the box: folding it would take the
+    // control away from under the hand that set it.
+    const bool crowded = controls_ && layout_.controlsFit && !c.layout.controlsFit;
     layout_ = c.layout;
-    if (fold) {
+    if (crowded && sized) {
         controls_ = false;
-        x.notices.say(
-            "The control panel folded: the window leaves the box no room beside it (C or >> "
-            "opens it over the box)");
+        x.notices.say(std::string("The control panel folded: the window leaves the box no room "
+                                  "beside it (") +
+                      x.notices.key("C or >>", ">>") + " opens it over the box)");
+    } else if (crowded) {
+        x.notices.say(std::string("The control panel covers the box at this scale: ") +
+                      x.notices.key("C or <<", "<<") + " folds it");
     }
     // A fitted view stays fitted; a view the user moved keeps its centre where it was.
     const Vec2 centre =
@@ -321,7 +326,8 @@ void SceneView::handle(const cmd::SetTrails& c, Context& x) {
 void SceneView::handle(const cmd::ToggleControls&, Context& x) {
     controls_ = !controls_;
     if (controls_ && !layout_.controlsFit) {
-        x.notices.say("The control panel covers the box in this narrow window: C or << folds it");
+        x.notices.say(std::string("The control panel covers the box in this narrow window: ") +
+                      x.notices.key("C or <<", "<<") + " folds it");
     }
     if (fitted_) fit(x.doc, x.notices);
 }

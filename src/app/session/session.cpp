@@ -23,6 +23,7 @@ Session::Session(World world, SceneInfo meta, SessionOptions options)
     clock_.paused = options_.paused;
     for (const auto& file : options_.presets)
         presets_.push_back(describeScene(file));
+    notices_.touch = options_.touch;
     StartOver parts = startOver();
     parts.scene(doc_);
     doc_.showTrails(tools_, view_);
@@ -30,11 +31,13 @@ Session::Session(World world, SceneInfo meta, SessionOptions options)
         doc_.rememberFile(*options_.sceneFile);
         if (clock_.paused) {
             notices_.say("Opened " + options_.sceneFile->filename().string() + ": " +
-                         doc_.meta.name + ", paused: Space starts it");
+                         doc_.meta.name + ", paused: " + notices_.key("Space", "Play") +
+                         " starts it");
         }
     }
     if (!view_.controlsShown())
-        notices_.say("The control panel is folded in this narrow window: C or >> opens it");
+        notices_.say(std::string("The control panel is folded in this narrow window: ") +
+                     notices_.key("C or >>", ">>") + " opens it");
 }
 
 void Session::setWorld(World world, SceneInfo meta, SceneFile file) {
@@ -201,6 +204,11 @@ void Session::handle(const cmd::Undo&) {
 
 void Session::handle(const cmd::Redo&) {
     undoOrRedo(true);
+}
+
+void Session::handle(const cmd::SetTouch& c) {
+    options_.touch = c.on;
+    notices_.touch = c.on;
 }
 
 void Session::undoOrRedo(bool redo) {

@@ -114,6 +114,8 @@ class Session {
     [[nodiscard]] std::filesystem::path exportDir() const { return dataOut_.exportDir(); }
     /// The app runs in a web page (SessionOptions::inPage).
     [[nodiscard]] bool inPage() const { return options_.inPage; }
+    /// A touch screen is the user's hands (SessionOptions::touch): hints name buttons.
+    [[nodiscard]] bool touch() const { return options_.touch; }
     /// The file the last ExportTable wrote (absolute).
     [[nodiscard]] const std::optional<std::filesystem::path>& lastExport() const {
         return dataOut_.lastExport();
@@ -273,6 +275,7 @@ class Session {
     /// Undo and redo are the session's own: they put back every part's state.
     void handle(const cmd::Undo& c);
     void handle(const cmd::Redo& c);
+    void handle(const cmd::SetTouch& c);
     void undoOrRedo(bool redo);
     /// Files what the command's handler reported (edit_report.hpp) in the undo history: the
     /// state apply() kept before the command, under the edit's label. A user action also ends

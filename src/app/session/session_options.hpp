@@ -30,6 +30,9 @@ struct SessionOptions {
     /// name the file and the browser's downloads, not the page's folder; the help lists the
     /// page's keys.
     bool inPage = false;
+    /// A touch screen is the user's hands (a page on a phone or a tablet; a finger seen since,
+    /// cmd::SetTouch): messages and hints name the panel's buttons, not keys.
+    bool touch = false;
     /// The control panel open at the start (folded, a window too narrow for it and the box).
     bool controls = true;
     int viewportWidth = 800;  ///< pixels

@@ -74,8 +74,9 @@ void Tools::handle(const cmd::PointerMove& c, Context& x) {
         hand.dragged(launchSettings(x.view.camera(), x.doc.world.def()))) {
         pausedFlingTold = true;
         x.notices.add({Notice::Level::Info,
-                       "Paused: let go and the particle keeps its speed (its arrow) until "
-                       "Space sets time running",
+                       std::string("Paused: let go and the particle keeps its speed (its arrow) "
+                                   "until ") +
+                           x.notices.key("Space", "Play") + " sets time running",
                        true, false});
     }
 }
@@ -125,8 +126,9 @@ void Tools::handle(const cmd::PointerUp& c, Context& x) {
     if (r.kind == K::Flung) x.notices.log("Released particle " + at + " " + v);
     if (r.kind == K::Flung && x.clock.paused) {
         x.notices.say(r.velocity.norm() > 0.0
-                          ? fmt("Flung at %s while paused: Space sets it moving",
-                                quantity(r.velocity.norm(), "m/s").c_str())
+                          ? fmt("Flung at %s while paused: %s sets it moving",
+                                quantity(r.velocity.norm(), "m/s").c_str(),
+                                x.notices.key("Space", "Play"))
                           : std::string("Let go at rest (the hand had stopped)"));
     }
     if (r.kind == K::Launched) x.notices.log("Launched particle " + at + " " + v);

@@ -31,6 +31,7 @@ HudData hudData(const Session& session) {
     hud.spawnRadius = session.spawn().radius();
     hud.arrowSeconds = session.view().arrows ? session.view().arrowSeconds : 0.0;
     hud.paused = session.paused();
+    hud.touch = session.touch();
     const double overlap = session.accuracy().overlap();
     if (overlap > 0.05 * session.spawn().typicalRadius) hud.overlap = overlap;
     const TimelineView past = session.timeline();

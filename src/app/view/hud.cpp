@@ -68,7 +68,7 @@ std::vector<std::string> hudLines(const HudData& d) {
             std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);
             last += buf;
         }
-        lines.push_back(last + " | H: help");
+        lines.push_back(last + (d.touch ? " | help: the panel's Keys" : " | H: help"));
     }
     if (d.heaviestMass > d.lightestMass) {
         // The shading's key, where the discs are: without it a deeper shade reads as a team.
@@ -84,7 +84,9 @@ std::vector<std::string> hudLines(const HudData& d) {
     }
     if (d.past && !d.forVideo) {
         std::snprintf(buf, sizeof buf,
-                      "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
+                      d.touch
+                          ? "Viewing %.2f s back: Play continues from here, < Back and Fwd > step"
+                          : "Viewing %.2f s back: Space continues from here, Shift+Left/Right step",
                       d.secondsBack);
         lines.emplace_back(buf);
     }

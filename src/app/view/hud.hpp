@@ -37,10 +37,12 @@ struct HudData {
     /// The scene's lightest and heaviest masses, kg, while they differ (mass_shade.hpp: the
     /// discs' shades show them); 0 when every particle has one mass.
     double lightestMass = 0.0, heaviestMass = 0.0;
-    /// The lines a video holds (docs/app-instruments.md, "Video"): the readings for whoever watches it,
-    /// without what is for the user at the keys (H: help, the launch's New:, REC (X stops), the
+    /// The lines a video holds (docs/app-instruments.md, "Video"): the readings for whoever watches
+    /// it, without what is for the user at the keys (H: help, the launch's New:, REC (X stops), the
     /// keys that step through the past).
     bool forVideo = false;
+    /// A touch screen is the user's hands (Session::touch): the lines name buttons, not keys.
+    bool touch = false;
 };
 
 /// What the profile overlay shows.

@@ -19,6 +19,12 @@ TEST(PanelTouch, ATapPressesAndReleasesWhereItCameDownThenLeavesNoPointer) {
     t.down(ImVec2(100.f, 200.f), 1.0);
     t.move(ImVec2(103.f, 202.f), 1.02);  // a resting finger wobbles
     t.up(ImVec2(103.f, 202.f), 1.05);
+    // Lifted before any frame: one frame hovers where it came down, to learn what is there.
+    const auto hover = t.frame(1.06 - kFrame);
+    ASSERT_TRUE(hover && hover->at);
+    EXPECT_FALSE(hover->down);
+    EXPECT_FLOAT_EQ(hover->at->x, 100.f);
+    t.sliderUnder(false);  // a button
     const auto press = t.frame(1.06);
     ASSERT_TRUE(press && press->at);
     EXPECT_TRUE(press->down);
@@ -131,6 +137,76 @@ TEST(PanelTouch, ATouchStopsACoastingScroll) {
     ASSERT_TRUE(stopped);
     EXPECT_FLOAT_EQ(stopped->scroll, 0.f);
     EXPECT_FALSE(stopped->down);
+}
+
+TEST(PanelTouch, ATapOnASliderPressesNothing) {
+    PanelTouch t;
+    t.down(ImVec2(100.f, 300.f), 0.0);
+    const auto hover = t.frame(kFrame);
+    ASSERT_TRUE(hover && hover->at);
+    EXPECT_FALSE(hover->down);
+    t.sliderUnder(true);  // that frame drew a slider under the finger
+    t.up(ImVec2(101.f, 300.f), 0.08);
+    for (int k = 2; k < 6; ++k) {
+        const auto p = t.frame(k * kFrame);
+        if (!p) break;
+        EXPECT_FALSE(p->down) << "frame " << k << ": ImGui would set the value where it came down";
+        EXPECT_FALSE(p->at.has_value()) << "frame " << k;
+    }
+    EXPECT_FALSE(t.frame(6 * kFrame).has_value());
+}
+
+TEST(PanelTouch, AFingerRestingOnASliderThenMovingUpScrollsAndPressesNothing) {
+    PanelTouch t;
+    t.down(ImVec2(100.f, 300.f), 0.0);
+    (void)t.frame(kFrame);
+    t.sliderUnder(true);
+    // Held longer than a long press: over a slider that presses nothing.
+    const auto held = t.frame(PanelTouch::kHoldSeconds + 0.1);
+    ASSERT_TRUE(held);
+    EXPECT_FALSE(held->down);
+    float scrolled = 0.f;
+    for (int k = 1; k <= 8; ++k) {
+        const double now = PanelTouch::kHoldSeconds + 0.1 + k * kFrame;
+        t.move(ImVec2(102.f, 300.f - 25.f * k), now);
+        const auto p = t.frame(now);
+        ASSERT_TRUE(p);
+        EXPECT_FALSE(p->down);
+        scrolled += p->scroll;
+    }
+    EXPECT_FLOAT_EQ(scrolled, 200.f);
+}
+
+TEST(PanelTouch, ADragAcrossASliderStillPressesIt) {
+    PanelTouch t;
+    t.down(ImVec2(100.f, 300.f), 0.0);
+    (void)t.frame(kFrame);
+    t.sliderUnder(true);
+    t.move(ImVec2(130.f, 301.f), 2 * kFrame);
+    const auto p = t.frame(2 * kFrame);
+    ASSERT_TRUE(p && p->at);
+    EXPECT_TRUE(p->down);
+}
+
+TEST(PanelTouch, ASecondFingerEndsTheGestureWithoutAPress) {
+    PanelTouch t;
+    t.down(ImVec2(100.f, 300.f), 0.0);
+    (void)t.frame(kFrame);
+    t.sliderUnder(false);
+    t.cancel();  // a second finger came down
+    EXPECT_TRUE(t.fingerDown()) << "the first finger's events stay the gesture's";
+    t.move(ImVec2(160.f, 240.f), 2 * kFrame);  // across and up: neither a drag nor a scroll
+    const auto p = t.frame(2 * kFrame);
+    ASSERT_TRUE(p);
+    EXPECT_FALSE(p->down);
+    EXPECT_FALSE(p->at.has_value());
+    EXPECT_FLOAT_EQ(p->scroll, 0.f);
+    t.up(ImVec2(160.f, 240.f), 3 * kFrame);
+    EXPECT_FALSE(t.fingerDown());
+    const auto lifted = t.frame(3 * kFrame);
+    ASSERT_TRUE(lifted);
+    EXPECT_FALSE(lifted->down);
+    EXPECT_FALSE(t.frame(4 * kFrame).has_value());
 }
 
 }  // namespace

@@ -129,6 +129,40 @@ TEST(Interaction, AHandThatStoppedReleasesAtRest) {
     EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
 }
 
+TEST(Interaction, AReleaseReportedAFrameAfterSparseMovesFlingsWithTheirSpeed) {
+    // A slow page: one move every 50 ms at 300 m/s, and the lift (a finger's, where the last
+    // move left it) 80 ms after the last move. Measured up to the lift, the window (1.5 x 50 ms)
+    // held only the last move: the fling read as a hand at rest.
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    press(in, w, Vec2(100, 100), 0.0);
+    double t = 0.0;
+    for (int k = 1; k <= 4; ++k) {
+        t = 0.05 * k;
+        in.moveTo(Vec2(100.0 + 300.0 * t, 100.0), t);
+    }
+    const ReleaseResult r = release(in, w, in.pointer(), t + 0.08, {}, launch(), 1.0);
+    ASSERT_EQ(r.kind, ReleaseResult::Kind::Flung);
+    EXPECT_NEAR(r.velocity.x(), 300.0, 1e-6);
+    EXPECT_NEAR(w.get(id).velocity.x(), 300.0, 1e-6);
+}
+
+TEST(Interaction, SparseMovesThenARestLongerThanTheirSpacingReleaseAtRest) {
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {100, 100});
+    Interaction in;
+    press(in, w, Vec2(100, 100), 0.0);
+    double t = 0.0;
+    for (int k = 1; k <= 4; ++k) {
+        t = 0.05 * k;
+        in.moveTo(Vec2(100.0 + 300.0 * t, 100.0), t);
+    }
+    // 1.5 x 50 ms is 75 ms, under the 100 ms window: still 100 ms, then let go.
+    release(in, w, in.pointer(), t + 0.11, {}, launch(), 1.0);
+    EXPECT_EQ(w.get(id).velocity, Vec2::Zero());
+}
+
 TEST(Interaction, AMoveBelowTheMinimumDistanceReleasesAtRest) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {100, 100});

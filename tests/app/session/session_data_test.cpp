@@ -156,8 +156,39 @@ TEST_F(SessionData, CopyPutsTabSeparatedTextOnTheClipboardOnce) {
     ASSERT_EQ(rows.size(), 7u);
     EXPECT_EQ(rows[0][1], "x_m");
     EXPECT_EQ(text->find(','), std::string::npos);
+    s.apply(cmd::ClipboardResult{true, {}});
     EXPECT_TRUE(said(s.takeNotices(), "Copied 6 rows of values to the clipboard"));
     EXPECT_FALSE(s.takeClipboardText()) << "taken once";
+}
+
+TEST_F(SessionData, CopiedIsSaidOnlyOnceTheClipboardHasTheText) {
+    Session s = session();
+    s.apply(cmd::CopyTable{cmd::DataTable::Values});
+    ASSERT_TRUE(s.takeClipboardText());
+    // A page's browser answers later: until it does, nothing claims the text was copied.
+    for (const Notice& n : s.takeNotices())
+        EXPECT_EQ(n.text.find("Copied"), std::string::npos) << n.text;
+    s.apply(cmd::ClipboardResult{true, {}});
+    EXPECT_TRUE(said(s.takeNotices(), "Copied 6 rows of values to the clipboard"));
+    s.apply(cmd::ClipboardResult{true, {}});
+    EXPECT_TRUE(s.takeNotices().empty()) << "one answer per copy";
+}
+
+TEST_F(SessionData, ARefusedCopySaysSoAndPointsToExport) {
+    Session s = session();
+    s.apply(cmd::CopyTable{cmd::DataTable::Values});
+    ASSERT_TRUE(s.takeClipboardText());
+    (void)s.takeNotices();
+    s.apply(cmd::ClipboardResult{false, "Write permission denied."});
+    const std::vector<Notice> notices = s.takeNotices();
+    ASSERT_EQ(notices.size(), 1u);
+    EXPECT_EQ(notices[0].level, Notice::Level::Warning);
+    EXPECT_EQ(notices[0].text.find("Copied"), std::string::npos) << notices[0].text;
+    EXPECT_NE(notices[0].text.find("Could not copy the values to the clipboard (Write permission "
+                                   "denied.)"),
+              std::string::npos)
+        << notices[0].text;
+    EXPECT_NE(notices[0].text.find("Export"), std::string::npos) << notices[0].text;
 }
 
 TEST_F(SessionData, TheTimeSeriesRunsFromTheStartWithCleanTimes) {

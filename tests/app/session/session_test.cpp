@@ -530,5 +530,23 @@ TEST_F(SessionTest, RestartWithoutAPlayRestoresTheSceneAsLoaded) {
     EXPECT_TRUE(s.unsavedChanges());
 }
 
+TEST_F(SessionTest, OnATouchScreenMessagesNameTheButtonsNotTheKeys) {
+    SessionOptions o = options();
+    o.presets = testPresets();
+    Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
+    (void)s.takeNotices();
+    s.apply(cmd::SetTouch{true});
+    EXPECT_TRUE(s.touch());
+    s.apply(cmd::OpenPreset{11});
+    const auto n = s.takeNotices();
+    EXPECT_TRUE(said(n, "Preset 12 of 14, paused: Play starts it"));
+    for (const Notice& notice : n) {
+        EXPECT_EQ(notice.text.find("Space"), std::string::npos) << notice.text;
+        EXPECT_EQ(notice.text.find("(key "), std::string::npos) << notice.text;
+    }
+    s.apply(cmd::Stopwatch{cmd::Stopwatch::Action::StartStop});
+    EXPECT_TRUE(said(s.takeNotices(), "Stopwatch started: it runs with simulated time (Play)"));
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -509,6 +509,21 @@ TEST_F(SessionValues, AWindowTooNarrowForTheBoxBesideTheOpenPanelFoldsItAndSaysS
     EXPECT_TRUE(s.controlsShown());
 }
 
+TEST_F(SessionValues, ABiggerUiScaleInTheSameWindowKeepsThePanelOpenOverTheBox) {
+    // The scale's slider is on the panel: the layout the new scale gives (the panel wider than
+    // the box leaves room for) comes with the window's own size, and the panel stays open.
+    Session s = session();
+    ASSERT_TRUE(s.controlsShown());
+    (void)s.takeNotices();
+    WindowLayout wide = layout();
+    wide.controlsFit = false;
+    s.apply(cmd::Resize{s.camera().viewportWidth(), s.camera().viewportHeight(), wide});
+    EXPECT_TRUE(s.controlsShown()) << "the panel folded under the finger that scaled it";
+    EXPECT_TRUE(said(s.takeNotices(), "covers the box at this scale"));
+    s.apply(cmd::ToggleControls{});
+    EXPECT_FALSE(s.controlsShown()) << "<< folds it";
+}
+
 TEST_F(SessionValues, SaveAsWritesThePathAsksBeforeReplacingAFileAndRemembersIt) {
     Session s = session();
     s.apply(cmd::SaveAs{dir_ / "lesson"});

@@ -61,6 +61,33 @@ TEST(LaunchVelocity, SparseReportsThenAStopLongerThanTheirSpacingIsAtRest) {
     EXPECT_EQ(launchVelocity(s, {.window = 0.1}), Vec2::Zero());
 }
 
+TEST(LaunchVelocity, AFlingCoalescedIntoOneMoveKeepsItsSpeed) {
+    // A slow page delivers a quick fling's moves as one, 0.11 s after the press: that gap is a
+    // report of motion, and the window widens to take the press in.
+    const std::vector<TrajectorySample> s{{0.0, {0.0, 0.0}}, {0.11, {11.0, 0.0}}};
+    EXPECT_NEAR(launchVelocity(s, {.window = 0.1}).x(), 100.0, 1e-9);
+    EXPECT_NEAR(launchWindow(s, {.window = 0.1}), 0.165, 1e-12);
+    // Released there a moment later: that pause is no report of motion, and is not counted.
+    const std::vector<TrajectorySample> r{
+        {0.0, {0.0, 0.0}}, {0.11, {11.0, 0.0}}, {0.3, {11.0, 0.0}}};
+    EXPECT_EQ(launchVelocity(r, {.window = 0.1}), Vec2::Zero());
+}
+
+TEST(LaunchVelocity, TheWindowIsTheSettingWidenedToTheReportsSpacing) {
+    // Reports every 10 ms: the setting's 0.1 s. Every 0.15 s: 1.5 spacings, 0.225 s. A second
+    // apart: held to four times the setting.
+    std::vector<TrajectorySample> dense, sparse, rare;
+    for (int k = 0; k <= 4; ++k) {
+        dense.push_back({k * 0.01, Vec2(k, 0.0)});
+        sparse.push_back({k * 0.15, Vec2(k, 0.0)});
+        rare.push_back({k * 1.0, Vec2(k, 0.0)});
+    }
+    EXPECT_DOUBLE_EQ(launchWindow(dense, {.window = 0.1}), 0.1);
+    EXPECT_NEAR(launchWindow(sparse, {.window = 0.1}), 0.225, 1e-12);
+    EXPECT_DOUBLE_EQ(launchWindow(rare, {.window = 0.1}), 0.4);
+    EXPECT_DOUBLE_EQ(launchWindow({}, {.window = 0.1}), 0.1);
+}
+
 TEST(LaunchVelocity, TheWidenedWindowStopsAtFourTimesTheSetting) {
     // Reports a second apart: the window would be 1.5 s, but stays at 0.4 s, so a release
     // 0.5 s after the last move is a hand at rest.
