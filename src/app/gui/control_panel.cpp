@@ -148,7 +148,11 @@ void ControlPanel::keepAnchor(std::size_t firstItem) {
     const float content = w->DC.CursorMaxPos.y - w->DC.CursorStartPos.y;
     const float shown = w->Size.y - 2.f * ImGui::GetStyle().WindowPadding.y;
     const float reach = std::max(0.f, content - shown);
-    slack_ = std::max(0.f, anchorScroll_ - reach);
+    // Only an anchor's move makes room: content that went away under a scroll nobody anchored
+    // (the card gone at a restart) lets the scroll come back within what is left, or the panel
+    // shows blank room where it was.
+    const float needed = std::max(0.f, anchorScroll_ - reach);
+    slack_ = moved > 0.f ? needed : std::min(slack_, needed);
     if (slack_ > 0.f) ImGui::Dummy(ImVec2(1.f, slack_ + 2.f));
     if (kept) {
         anchor_ = std::move(kept);

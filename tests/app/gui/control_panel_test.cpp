@@ -548,6 +548,42 @@ TEST_F(ControlPanelTest, ACollisionCardThatGrowsMovesNothingUnderThePointer) {
         << "the card grew and moved the section under the pointer";
 }
 
+TEST_F(ControlPanelTest, ACardThatGoesAwayLeavesNoBlankPanel) {
+    // A trial at 200 %: after a collision, R took the card away and the panel stayed scrolled
+    // past its end, blank, until the wheel brought it back. What the pointer was over went with
+    // the card; the panel's scroll comes back within its content.
+    session_->apply(cmd::SetShow{ShowOption::Collision, true});
+    for (const char* section : {"section Physics", "section Show"})
+        click(section);
+    session_->apply(cmd::TogglePause{});
+    for (int k = 1; k <= 1200 && !session_->lastCollision(); ++k) {
+        session_->update(1.0 / 60.0, k / 60.0);
+        frame();
+    }
+    ASSERT_TRUE(session_->lastCollision());
+    session_->apply(cmd::TogglePause{});
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    // Scrolled down to the card's diagram, the pointer on it.
+    frame();
+    const PanelItem* diagram = panel_.item("momenta diagram");
+    ASSERT_NE(diagram, nullptr);
+    ImGui::SetScrollY(w, std::min(w->ScrollMax.y, w->Scroll.y + diagram->y0 - w->Pos.y - 20.f));
+    frame();
+    frame();
+    ImGuiIO& io = gui_->io();
+    io.MousePos = centre("momenta diagram");
+    frame();
+    frame();
+    session_->apply(cmd::Restart{});
+    for (int k = 0; k < 4; ++k)
+        frame();
+    w = ImGui::FindWindowByName("Controls");
+    EXPECT_LE(w->Scroll.y, w->ScrollMax.y + 0.5f);
+    const PanelItem* data = panel_.item("section Data");
+    ASSERT_NE(data, nullptr);
+    EXPECT_LT(data->y0, w->Pos.y + w->Size.y) << "the panel shows nothing: scrolled past its end";
+}
+
 TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {
     click("fold panel");
     EXPECT_FALSE(session_->controlsShown());
