@@ -125,45 +125,39 @@ void PeriodicGridBroadPhase::wrapCopy(const ParticleArrays& p) {
 }
 
 void PeriodicGridBroadPhase::collectStrips(const ParticleArrays& q) {
-    left_.clear();
-    right_.clear();
-    bottom_.clear();
-    top_.clear();
     const std::size_t n = q.size();
     const double* x = q.x.data();
     const double* y = q.y.data();
     const double reach = reach_, right = box_.width - reach_, top = box_.height - reach_;
+    candidates_.clear();
     for (std::size_t i = 0; i < n; ++i) {
         // Nearly every centre is in the interior: one test for the four edges.
         if (x[i] >= reach && x[i] < right && y[i] >= reach && y[i] < top) continue;
-        const auto k = static_cast<std::uint32_t>(i);
-        if (x[i] < reach) left_.push_back(k);
-        if (x[i] >= right) right_.push_back(k);
-        if (y[i] < reach) bottom_.push_back(k);
-        if (y[i] >= top) top_.push_back(k);
+        candidates_.push_back(static_cast<std::uint32_t>(i));
     }
+    sortIntoStrips(q, {&candidates_, 1});
 }
 
 void PeriodicGridBroadPhase::collectMarkedStrips(const ParticleArrays& q) {
-    left_.clear();
-    right_.clear();
-    bottom_.clear();
-    top_.clear();
-    const std::size_t n = q.size();
+    sortIntoStrips(q, {marked_.data(), parallel::blockCount(q.size())});
+}
+
+void PeriodicGridBroadPhase::sortIntoStrips(const ParticleArrays& q,
+                                            std::span<const std::vector<std::uint32_t>> lists) {
     const double* x = q.x.data();
     const double* y = q.y.data();
     const double reach = reach_, right = box_.width - reach_, top = box_.height - reach_;
-    std::size_t marked = 0;
-    for (std::size_t b = 0; b < parallel::blockCount(n); ++b)
-        marked += marked_[b].size();
-    // Each marked disc is written to every list and kept where it belongs: no branch on where.
-    left_.resize(marked);
-    right_.resize(marked);
-    bottom_.resize(marked);
-    top_.resize(marked);
+    std::size_t count = 0;
+    for (const std::vector<std::uint32_t>& list : lists)
+        count += list.size();
+    // Each disc is written to every list and kept where it belongs: no branch on where.
+    left_.resize(count);
+    right_.resize(count);
+    bottom_.resize(count);
+    top_.resize(count);
     std::size_t nl = 0, nr = 0, nb = 0, nt = 0;
-    for (std::size_t b = 0; b < parallel::blockCount(n); ++b) {
-        for (const std::uint32_t i : marked_[b]) {
+    for (const std::vector<std::uint32_t>& list : lists) {
+        for (const std::uint32_t i : list) {
             left_[nl] = right_[nr] = bottom_[nb] = top_[nt] = i;
             nl += static_cast<std::size_t>(x[i] < reach);
             nr += static_cast<std::size_t>(x[i] >= right);
@@ -370,8 +364,8 @@ std::size_t PeriodicGridBroadPhase::memoryBytes() const {
            sizeof(std::uint32_t) *
                (cellOf_.capacity() + cellStart_.capacity() + entries_.capacity() +
                 sortScratchCells_.capacity() + left_.capacity() + right_.capacity() +
-                bottom_.capacity() + top_.capacity() + bandStart_.capacity() +
-                bandEntries_.capacity()) +
+                bottom_.capacity() + top_.capacity() + candidates_.capacity() +
+                bandStart_.capacity() + bandEntries_.capacity()) +
            sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity()) +
            sizeof(ContactPair) *
                (sortScratch_.capacity() + found_.capacity() + acrossEdges_.capacity()) +

@@ -33,6 +33,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include <particle_sandbox/particle_arrays.hpp>
@@ -84,6 +85,8 @@ class PeriodicGridBroadPhase {
     void collectStrips(const ParticleArrays& q);
     /// The same from the lists of marked particles the move stage wrote.
     void collectMarkedStrips(const ParticleArrays& q);
+    /// The discs of `lists` (those near an edge) into the four strips they belong to.
+    void sortIntoStrips(const ParticleArrays& q, std::span<const std::vector<std::uint32_t>> lists);
     /// Pairs of `low` (near the low edge of one axis) and `high` (near the high edge), `high`
     /// sorted into bands of the other axis; `skipAcrossX`: leave out pairs whose x separation
     /// also crosses the box (the first pass found them).
@@ -105,6 +108,7 @@ class PeriodicGridBroadPhase {
     double reach_ = 0.0;   ///< the largest contact distance, with slack for rounding
     ParticleArrays copy_;  ///< x, y, radius wrapped, when the caller's centres are not
     std::vector<std::uint32_t> left_, right_, bottom_, top_;
+    std::vector<std::uint32_t> candidates_;           ///< collectStrips' discs near an edge
     std::vector<std::vector<std::uint32_t>> marked_;  ///< per block, the marked particles
     double marksReach_ = -1.0;                        ///< the reach the lists were handed out for
     std::vector<std::uint32_t> bandStart_, bandEntries_;

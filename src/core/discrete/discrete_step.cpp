@@ -114,21 +114,28 @@ void findPairs(const ParticleArrays& p, StepContext& ctx) {
     }
 }
 
-void wrapBlock(ParticleArrays& p, const MoveWrap& wrap, std::size_t begin, std::size_t end) {
-    double* x = p.x.data();
-    double* y = p.y.data();
-    double* ux = p.unwrapX.data();
-    double* uy = p.unwrapY.data();
-    for (std::size_t i = begin; i < end; ++i) {
-        const double ox = x[i], oy = y[i];
-        periodic::wrapInto(x[i], ux[i], wrap.width);
-        periodic::wrapInto(y[i], uy[i], wrap.height);
-        if (wrap.startX && (x[i] != ox || y[i] != oy)) {
-            // The sweep against the obstacles starts where the centre started, moved with it.
-            wrap.startX[i] += x[i] - ox;
-            wrap.startY[i] += y[i] - oy;
-        }
+namespace {
+
+/// Wraps particle i's centre into the box, keeping what it took off in the unwrap arrays and
+/// moving the obstacles stage's start position with it.
+inline void wrapOne(ParticleArrays& p, const MoveWrap& wrap, std::size_t i) {
+    double& x = p.x[i];
+    double& y = p.y[i];
+    const double ox = x, oy = y;
+    periodic::wrapInto(x, p.unwrapX[i], wrap.width);
+    periodic::wrapInto(y, p.unwrapY[i], wrap.height);
+    if (wrap.startX && (x != ox || y != oy)) {
+        // The sweep against the obstacles starts where the centre started, moved with it.
+        wrap.startX[i] += x - ox;
+        wrap.startY[i] += y - oy;
     }
+}
+
+}  // namespace
+
+void wrapBlock(ParticleArrays& p, const MoveWrap& wrap, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+        wrapOne(p, wrap, i);
 }
 
 void moveAndWrapBlock(ParticleArrays& p, double dt, const MoveWrap& wrap,
@@ -155,8 +162,6 @@ void moveAndWrapBlock(ParticleArrays& p, double dt, const MoveWrap& wrap,
     const double reach = wrap.reach, right = wrap.width - reach, top = wrap.height - reach;
     constexpr std::size_t kMarkRun = 256;
     double marks[kMarkRun];
-    double* ux = p.unwrapX.data();
-    double* uy = p.unwrapY.data();
     std::vector<std::uint32_t>& marked = wrap.marked[begin / parallel::kBlock];
     marked.clear();
     for (std::size_t run = begin; run < end; run += kMarkRun) {
@@ -184,13 +189,7 @@ void moveAndWrapBlock(ParticleArrays& p, double dt, const MoveWrap& wrap,
             if (marks[k] == 0.0) continue;
             const std::size_t i = run + k;
             marked.push_back(static_cast<std::uint32_t>(i));
-            const double ox = x[i], oy = y[i];
-            periodic::wrapInto(x[i], ux[i], wrap.width);
-            periodic::wrapInto(y[i], uy[i], wrap.height);
-            if (wrap.startX && (x[i] != ox || y[i] != oy)) {
-                wrap.startX[i] += x[i] - ox;
-                wrap.startY[i] += y[i] - oy;
-            }
+            wrapOne(p, wrap, i);
         }
     }
     if (cells) {
@@ -210,15 +209,10 @@ void wrap(ParticleArrays& p, const WorldDef& def, int threads) {
 }
 
 void wrapPairs(ParticleArrays& p, const WorldDef& def, const std::vector<ContactPair>& pairs) {
-    double* x = p.x.data();
-    double* y = p.y.data();
-    double* ux = p.unwrapX.data();
-    double* uy = p.unwrapY.data();
+    const MoveWrap wrap{def.width, def.height};
     for (const ContactPair& c : pairs) {
-        for (const std::uint32_t i : {c.i, c.j}) {
-            periodic::wrapInto(x[i], ux[i], def.width);
-            periodic::wrapInto(y[i], uy[i], def.height);
-        }
+        wrapOne(p, wrap, c.i);
+        wrapOne(p, wrap, c.j);
     }
 }
 
