@@ -338,10 +338,16 @@ void PeriodicGridBroadPhase::findPairs(const ParticleArrays& p, int threads,
         stripPairs(p, left_, right_, /*alongY=*/true, /*skipAcrossX=*/false);
         stripPairs(p, bottom_, top_, /*alongY=*/false, /*skipAcrossX=*/true);
         std::sort(acrossEdges_.begin(), acrossEdges_.end());
-        const std::size_t middle = out.size();
-        out.insert(out.end(), acrossEdges_.begin(), acrossEdges_.end());
-        std::inplace_merge(out.begin() + static_cast<std::ptrdiff_t>(before),
-                           out.begin() + static_cast<std::ptrdiff_t>(middle), out.end());
+        // Merged from the back, in place: only the pairs after the first one across an edge
+        // move, and no buffer is allocated (std::inplace_merge takes one at every call).
+        std::size_t a = out.size();
+        std::size_t b = acrossEdges_.size();
+        out.resize(a + b);
+        std::size_t w = out.size();
+        while (b > 0) {
+            out[--w] =
+                a > before && acrossEdges_[b - 1] < out[a - 1] ? out[--a] : acrossEdges_[--b];
+        }
         return;
     }
     const auto cells = static_cast<std::size_t>(nx_ * ny_);
