@@ -22,8 +22,9 @@ struct ContactPair {
 };
 
 /// Sorts pairs[from..] into ascending (i, j) order; every index is below `indexLimit`. Pairs
-/// must be distinct (then any correct sort gives the same list). LSD radix sort on 11-bit
-/// digits of j, then of i, using `scratch`; short lists use insertion into std::sort.
+/// must be distinct (then any correct sort gives the same list). A list nearly in order (as the
+/// grids give it) is insertion-sorted; others go to an LSD radix sort on 11-bit digits of j,
+/// then of i, using `scratch` (short lists to std::sort).
 void sortPairs(std::vector<ContactPair>& pairs, std::size_t from, std::vector<ContactPair>& scratch,
                std::uint32_t indexLimit);
 
