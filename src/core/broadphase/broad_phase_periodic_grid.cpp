@@ -201,6 +201,20 @@ void PeriodicGridBroadPhase::stripPairs(const ParticleArrays& p,
     const double* x = p.x.data();
     const double* y = p.y.data();
     const double* r = p.radius.data();
+    // The banded discs' centres and radii in slot order: the tests below read them in a run
+    // (the discs of a strip lie all over the particle arrays, a row of the box apart).
+    bandX_.resize(high.size());
+    bandY_.resize(high.size());
+    bandR_.resize(high.size());
+    for (std::size_t k = 0; k < high.size(); ++k) {
+        const std::uint32_t j = bandEntries_[k];
+        bandX_[k] = x[j];
+        bandY_[k] = y[j];
+        bandR_[k] = r[j];
+    }
+    const double* bx = bandX_.data();
+    const double* by = bandY_.data();
+    const double* br = bandR_.data();
     const double width = box_.width, height = box_.height;
     const double halfWidth = 0.5 * width, halfHeight = 0.5 * height;
     // Centres in the box (no copy) are less than a box apart: the nearest image is the
@@ -222,18 +236,24 @@ void PeriodicGridBroadPhase::stripPairs(const ParticleArrays& p,
     // written and kept (found advanced) only if it touches. The test is symmetric in i and j
     // to the last bit; the pairs kept are put in (i < j) order below.
     const auto testRange = [&](std::uint32_t i, std::uint32_t k0, std::uint32_t k1) {
+        if (inBox) {
+            const double xi = x[i], yi = y[i], ri = r[i];
+            for (std::uint32_t k = k0; k < k1; ++k) {
+                const double dx = image(bx[k] - xi, width, halfWidth);
+                const double dy = image(by[k] - yi, height, halfHeight);
+                const double rs = ri + br[k];
+                bool touch = dx * dx + dy * dy < rs * rs;
+                // Pairs across the sides as well as the top and bottom were found in the first
+                // pass.
+                if (skipAcrossX) touch = touch & (std::abs(bx[k] - xi) <= halfWidth);
+                out[found] = {i, bandEntries_[k]};
+                found += static_cast<std::size_t>(touch);
+            }
+            return;
+        }
         for (std::uint32_t k = k0; k < k1; ++k) {
             const std::uint32_t j = bandEntries_[k];
-            bool touch = false;
-            if (inBox) {
-                const double dx = image(x[j] - x[i], width, halfWidth);
-                const double dy = image(y[j] - y[i], height, halfHeight);
-                const double rs = r[i] + r[j];
-                touch = dx * dx + dy * dy < rs * rs;
-            } else {
-                touch = discsOverlapPeriodic(x, y, r, i, j, box_);
-            }
-            // Pairs across the sides as well as the top and bottom were found in the first pass.
+            bool touch = discsOverlapPeriodic(x, y, r, i, j, box_);
             if (skipAcrossX) touch = touch & (std::abs(q.x[j] - q.x[i]) <= halfWidth);
             out[found] = {i, j};
             found += static_cast<std::size_t>(touch);
@@ -372,6 +392,7 @@ std::size_t PeriodicGridBroadPhase::memoryBytes() const {
                 sortScratchCells_.capacity() + left_.capacity() + right_.capacity() +
                 bottom_.capacity() + top_.capacity() + candidates_.capacity() +
                 bandStart_.capacity() + bandEntries_.capacity()) +
+           sizeof(double) * (bandX_.capacity() + bandY_.capacity() + bandR_.capacity()) +
            sizeof(double) * (copy_.x.capacity() + copy_.y.capacity() + copy_.radius.capacity()) +
            sizeof(ContactPair) *
                (sortScratch_.capacity() + found_.capacity() + acrossEdges_.capacity()) +

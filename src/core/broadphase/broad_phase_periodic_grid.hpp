@@ -112,6 +112,7 @@ class PeriodicGridBroadPhase {
     std::vector<std::vector<std::uint32_t>> marked_;  ///< per block, the marked particles
     double marksReach_ = -1.0;                        ///< the reach the lists were handed out for
     std::vector<std::uint32_t> bandStart_, bandEntries_;
+    std::vector<double> bandX_, bandY_, bandR_;  ///< bandEntries_' centres and radii
     GridBroadPhase grid_;
     std::vector<ContactPair> found_, acrossEdges_;
 };
