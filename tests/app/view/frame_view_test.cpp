@@ -137,6 +137,38 @@ TEST(MessageBand, KeepsWholeMessagesAndDropsOlderOnesWhole) {
 using test::lessonWorld;
 using test::onTheProjector;
 
+TEST(MessageBand, AMessageTooLongForTheBandDropsItsAsidesAndEndsWithAWholeWord) {
+    // The lesson on the projector (200 %, 1600 x 1000): the video's message was cut mid-word
+    // and ended in a '?' ("... of 60: the windo?"). Its aside in brackets goes instead, and
+    // what was saved, where, and how long it is stay whole.
+    const Session s = onTheProjector(lessonWorld(), {ShowOption::Momentum});
+    const std::string head =
+        "Saved video /home/teacher/lessons/particle-sandbox-20261207-182400.mp4: 3.4 s, 84 "
+        "frames, 980x1000";
+    const std::string saved = head + " (25 frames a second of 60: the window drew no faster)";
+    const test::FixedMeasure font(2.0);
+    FrameStats stats;
+    stats.messages = {"Paused", saved};
+    const FrameView f = buildFrame(s, stats, font, font, test::kProjector);
+    ASSERT_LE(f.overlays.messages.size(), kMessageLines);
+    std::string shown;
+    for (const std::string& line : f.overlays.messages) {
+        if (!shown.empty()) shown += ' ';
+        shown += line;
+        EXPECT_LE(font.measure(line) + 8, f.layout.messages.w) << line;
+    }
+    // The path may break after a '/': read back without the breaks' spaces.
+    std::string joined;
+    for (const std::string& line : f.overlays.messages)
+        joined += line;
+    std::string want = head;
+    want.erase(std::remove(want.begin(), want.end(), ' '), want.end());
+    joined.erase(std::remove(joined.begin(), joined.end(), ' '), joined.end());
+    EXPECT_EQ(joined, want) << shown;
+    EXPECT_EQ(shown.find('?'), std::string::npos) << shown;
+    EXPECT_EQ(shown.find("\u2026"), std::string::npos) << shown;
+}
+
 /// `world` in a `width` x `height` window at `scale`, laid out as the app lays it out (the
 /// control panel open where it fits), the plots and the values table on.
 Session tableSession(World world, int width, int height, double scale) {
