@@ -267,6 +267,48 @@ TEST(ValuesTable, OnTheProjectorItShowsEveryColumnAndTheTotalsAndThePlotsStay) {
     EXPECT_GE(box.size.x(), 480.0) << "the box";
 }
 
+TEST(MomentumLegend, StaysWhileSteppingBackAndInAVideoOfTheBox) {
+    // Lesson 1 on the projector with the momenta (V) and the plots (K), the plots in their band
+    // under the box: a step back in time grew the HUD by its "Viewing ... back" lines, the
+    // legend moved below the box under the plots' band and was drawn over by it; a video keeps
+    // the room for those lines all along, and had no legend at all.
+    const test::FixedMeasure font(2.0);
+    Session s =
+        test::onTheProjector(test::lessonWorld(), {ShowOption::Momentum, ShowOption::Plots});
+    s.apply(cmd::TogglePause{});
+    for (int k = 1; k <= 60; ++k)
+        s.update(1.0 / 60.0, k / 60.0);
+    s.apply(cmd::TogglePause{});
+    const auto check = [&](const FrameView& f, const char* when) {
+        ASSERT_GT(f.layout.legend.w, 0) << when << ": no legend";
+        const Camera::ScreenBox box = s.camera().boxOnScreen(10.0, 4.0);
+        const PixelRect onScreen{static_cast<int>(box.topLeft.x()),
+                                 static_cast<int>(box.topLeft.y()), static_cast<int>(box.size.x()),
+                                 static_cast<int>(box.size.y())};
+        EXPECT_FALSE(overlaps(f.layout.legend, onScreen)) << when << ": over the box";
+        EXPECT_GE(f.layout.legend.x, f.controlsInset) << when;
+        EXPECT_LE(f.layout.legend.x + f.layout.legend.w, 1600) << when;
+        EXPECT_LE(f.layout.legend.y + f.layout.legend.h, 1000) << when;
+        const std::vector<PixelRect> all = panelRects(f.layout);
+        for (const PixelRect& r : all) {
+            if (r.x == f.layout.legend.x && r.y == f.layout.legend.y) continue;
+            EXPECT_FALSE(overlaps(r, f.layout.legend))
+                << when << ": a panel at " << r.x << ", " << r.y << " over the legend";
+        }
+        // The plots are still there.
+        EXPECT_GT(f.layout.plots.w, 0) << when;
+    };
+    check(buildFrame(s, FrameStats{}, font, font, test::kProjector), "now");
+    s.apply(cmd::StepBack{});
+    ASSERT_TRUE(s.timeline().viewingPast);
+    check(buildFrame(s, FrameStats{}, font, font, test::kProjector), "a step back");
+    FrameStats recording;
+    recording.video.recording = true;
+    check(buildFrame(s, recording, font, font, test::kProjector), "a step back, recording");
+    s.apply(cmd::StepForward{});
+    check(buildFrame(s, recording, font, font, test::kProjector), "recording");
+}
+
 /// A 7 m box with two rows of balls just below and just above its middle, where the ruler
 /// lies, at 200 % in a 1600 x 1000 window, the ruler on.
 Session rulerAmongBalls() {
