@@ -169,14 +169,20 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
         const int count = (r.plots ? 1 : 0) + (r.speeds ? 1 : 0);
         const int each = (band.w - (count - 1) * gap) / count;
         const int rowMin = scaled(kPlotRowMinHeight);
-        if (each < scaled(kPanelMinWidth)) return l;
+        const int least = scaled(kPanelMinWidth);
+        if (each < least) return l;
         int x = band.x;
         if (r.plots && band.h >= rowMin + 8) {
             const int rows = std::clamp((band.h - 8) / rowMin, 1, 4);
             const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
+            // Too low for the plots one above the other: side by side, as many as keep each at
+            // its least width (the lesson's energy and px in a band one row high).
+            const int columns =
+                std::clamp(std::min((4 + rows - 1) / rows, (each + gap) / (least + gap)), 1, 4);
             l.plots = {x, band.y, each, rows * rowHeight + 8};
             l.plotRows = rows;
             l.plotRowHeight = rowHeight;
+            l.plotColumns = columns;
             x += each + gap;
         }
         if (r.speeds && band.h >= scaled(kSpeedsMinHeight)) {

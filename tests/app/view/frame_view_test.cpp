@@ -16,6 +16,7 @@
 #include "session/camera.hpp"
 #include "session/session.hpp"
 #include "view/box_area.hpp"
+#include "view/chart_text.hpp"
 #include "view/fixed_measure.hpp"
 #include "view/frame_view.hpp"
 #include "view/lab_marks.hpp"
@@ -265,6 +266,33 @@ TEST(ValuesTable, OnTheProjectorItShowsEveryColumnAndTheTotalsAndThePlotsStay) {
     for (const PixelRect& r : panelRects(f.layout))
         EXPECT_FALSE(overlaps(r, onScreen)) << "a panel over the box";
     EXPECT_GE(box.size.x(), 480.0) << "the box";
+}
+
+TEST(Plots, OnTheProjectorEachPlotHasRoomForThreeLabelledTicks) {
+    // Lesson 1 at 200 % with the plots (K): two rows about 50 pixels of axis each, one tick
+    // ("3.50", "-1.0"). Each row shown has room for three tick labels; the energy and px are
+    // both there, and with the values table (which has the momenta) at least the energy.
+    const test::FixedMeasure font(2.0);
+    for (const bool table : {false, true}) {
+        Session s = table ? test::onTheProjector(
+                                test::lessonWorld(),
+                                {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values})
+                          : test::onTheProjector(test::lessonWorld(),
+                                                 {ShowOption::Momentum, ShowOption::Plots});
+        const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+        const char* at = table ? "with the table" : "without the table";
+        ASSERT_GT(f.layout.plots.w, 0) << at;
+        // Beside the table's band there is room for fewer: the table has the momenta.
+        EXPECT_GE(f.layout.plotRows * f.layout.plotColumns, table ? 1 : 2)
+            << at << ": energy and px";
+        const PlotRowsPlace p = plotRowsPlace(
+            static_cast<float>(f.layout.plots.y), f.layout.plotRows,
+            static_cast<float>(f.layout.plotRowHeight), static_cast<float>(font.lineHeight()));
+        for (const PlotRowPlace& r : p.rows) {
+            EXPECT_GE(yTickCount(r.bottom - r.top, font.lineHeight()), kPlotTicksLeast)
+                << at << ": a plot " << r.bottom - r.top << " pixels high";
+        }
+    }
 }
 
 TEST(MomentumLegend, StaysWhileSteppingBackAndInAVideoOfTheBox) {
@@ -583,11 +611,12 @@ TEST(BoxShare, OnTheProjectorTheLessonsBoxesKeepAReasonableShareOfTheWindow) {
         EXPECT_GE(box.size.x(), 760.0) << "the lesson's box";
         const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
         // The plots neither fold away nor squeeze the box: a column beside this wide, low box
-        // would leave it less than its share, so they go in a band under it, two rows or more.
+        // would leave it less than its share, so they go in a band under it, two plots or more
+        // (side by side in a band one row high).
         EXPECT_FALSE(f.layout.columnFolded) << "the lesson's plots folded away";
         EXPECT_TRUE(s.chartsBelow());
         ASSERT_GT(f.layout.plots.w, 0);
-        EXPECT_GE(f.layout.plotRows, 2);
+        EXPECT_GE(f.layout.plotRows * f.layout.plotColumns, 2);
         EXPECT_GE(f.layout.plotRowHeight, 2 * kPlotRowMinHeight);
         EXPECT_GE(f.layout.plots.w, 2 * kPanelMinWidth);
         const PixelRect onScreen{static_cast<int>(box.topLeft.x()),
