@@ -102,10 +102,13 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     const auto widen = [&widths](std::size_t k, const std::string& text, float extra) {
         widths[k] = std::max(widths[k], ImGui::CalcTextSize(text.c_str()).x + extra);
     };
+    // A column's name and unit with two spaces' air: the units row draws no border between
+    // its cells, and "kg m/s" beside "kg m/s" read as one at 200 %.
+    const float air = 2.f * ImGui::CalcTextSize(" ").x;
     for (std::size_t k = 0; k < columns.size(); ++k) {
         const float frame = columns[k].field ? 2.f * style.FramePadding.x : 0.f;
-        widen(k, columns[k].name, 0.f);
-        widen(k, columns[k].unit, 0.f);
+        widen(k, columns[k].name, air);
+        widen(k, columns[k].unit, air);
         widen(k, valuesCell(t.totals[k]), 0.f);
         for (const ValuesRow& r : t.rows) {
             widen(k,
@@ -173,6 +176,7 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     for (const ValuesColumn& c : columns) {
         ImGui::TableNextColumn();
         ImGui::TextDisabled("%s", c.unit);
+        mark(std::string("values unit ") + c.name);
     }
     const auto selectedId = s.selection().id();
     bool editingSeen = false;

@@ -1,5 +1,7 @@
 #include "render/analysis_overlays.hpp"
 
+#include <algorithm>
+
 #include "render/polyline.hpp"
 
 namespace psb::app {
@@ -17,8 +19,13 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
         double mass = 0.0;
         for (const double m : world.particles().mass)
             mass += m;
-        plots_.draw(renderer, font, series, layout.plots, layout.plotRows, layout.plotRowHeight,
-                    mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScale));
+        // Side by side in a band under the box, each column the next plots.
+        for (int k = 0; k < layout.plotColumns && k * layout.plotRows < 4; ++k) {
+            plots_.draw(renderer, font, series, plotColumn(layout, k),
+                        std::min(layout.plotRows, 4 - k * layout.plotRows), layout.plotRowHeight,
+                        mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScale),
+                        k * layout.plotRows);
+        }
     }
     if (view.speeds && layout.speeds.w > 0) {
         speeds_.draw(renderer, font, world.particles(), layout.speeds, colours,

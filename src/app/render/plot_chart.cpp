@@ -26,9 +26,9 @@ ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& box
 
 std::vector<std::string> yTickLabels(double lo, double hi, int maxTicks) {
     std::vector<std::string> labels;
-    const double step = niceStep(lo, hi, maxTicks);
-    for (const double t : niceTicks(lo, hi, maxTicks))
-        labels.push_back(tickLabel(t, step));
+    const AxisTicks ticks = axisTicks(lo, hi, maxTicks);
+    for (const double t : ticks.values)
+        labels.push_back(tickLabel(t, ticks.step));
     return labels;
 }
 
@@ -37,11 +37,11 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
                   GeometryBatch& labels, const Palette& colours, int maxTicks) {
     const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
     const float lh = static_cast<float>(font.lineHeight());
-    const double step = niceStep(lo, hi, maxTicks);
-    for (const double t : niceTicks(lo, hi, maxTicks)) {
+    const AxisTicks ticks = axisTicks(lo, hi, maxTicks);
+    for (const double t : ticks.values) {
         const float y = row(t);
         marks.quad(left - 4, y, left - 1, y + 1, axis);
-        const std::string label = tickLabel(t, step);
+        const std::string label = tickLabel(t, ticks.step);
         font.layout(label, left - 6 - static_cast<float>(font.measure(label)), y - lh / 2, grey,
                     labels);
     }
@@ -49,10 +49,12 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 
 void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
                      const PixelRect& box, int rows, int rowHeight, double totalMass,
-                     double rateWindow, const Palette& colours, bool yUp, float lineWidth) {
+                     double rateWindow, const Palette& colours, bool yUp, float lineWidth,
+                     int firstPlot) {
     boxes_.clear();
     text_.clear();
-    rows = std::clamp(rows, 1, 4);
+    firstPlot = std::clamp(firstPlot, 0, 3);
+    rows = std::clamp(rows, 1, 4 - firstPlot);
     const float lh = static_cast<float>(font.lineHeight());
     const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
     const float width = static_cast<float>(box.w), rowH = static_cast<float>(rowHeight);
@@ -66,7 +68,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
         SDL_Color color;
         double sign = 1.0;  ///< -1: py with y up (the world's y points down)
     };
-    const Plot plots[4] = {
+    const Plot all[4] = {
         {"kinetic energy (J)", [](const ObservablesSample& s) { return s.kineticEnergy; },
          sdlColor(colours.energyPlot)},
         {"momentum px (kg m/s)", [](const ObservablesSample& s) { return s.momentum.x(); },
@@ -77,6 +79,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
          sdlColor(colours.ratePlot)},
     };
 
+    const Plot* const plots = all + firstPlot;
     const std::size_t n = series.size();
     double meanEnergy = 0.0;
     for (std::size_t k = 0; k < n; ++k)
@@ -109,9 +112,9 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
             hi = std::max(hi, v);
         }
         PlotRange& r = ranges[k];
-        if (k == 0) {
+        if (firstPlot + k == 0) {
             r = plotRange(lo, hi, 0.01 * std::max(std::abs(meanEnergy), 1e-300));
-        } else if (k < 3) {
+        } else if (firstPlot + k < 3) {
             r = plotRange(lo, hi, 0.01 * std::max(momentumScale, 1e-300));
         } else {
             r = plotRange(0.0, std::max(hi, 1.0), 1.0);  // a rate starts at 0

@@ -36,7 +36,7 @@ struct ChartFrame {
 [[nodiscard]] ChartFrame beginChart(const Font& font, const PixelRect& box, GeometryBatch& boxes,
                                     GeometryBatch& text, const Palette& colours);
 
-/// The ticks and labels of a y axis over [lo, hi] (niceTicks, at most `maxTicks`) left of
+/// The ticks and labels of a y axis over [lo, hi] (axisTicks, at most `maxTicks`) left of
 /// x = `left`: a tick mark and its label at the pixel row `row(v)` of each tick value v.
 void layoutYTicks(const Font& font, double lo, double hi, float left,
                   const std::function<float(double)>& row, GeometryBatch& marks,
@@ -46,15 +46,15 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 
 class PlotChart {
   public:
-    /// Draws the first `rows` (1-4) of the plots energy, px, py, rate, each `rowHeight` pixels
-    /// (title and axis included), in `box` (pixels, see PanelLayout); `totalMass` (kg) sets the
-    /// momentum plots' floor; `rateWindow` (s) names the rate's window in its title; `yUp`: py
-    /// upward (the y up option); `lineWidth` pixels (chartLineWidth). Nothing but the frame
-    /// when `series` has fewer than 2 samples.
+    /// Draws `rows` (1-4) of the plots energy, px, py, rate from the `firstPlot` (0: energy), each
+    /// `rowHeight` pixels (title and axis included), in `box` (pixels, see PanelLayout);
+    /// `totalMass` (kg) sets the momentum plots' floor; `rateWindow` (s) names the rate's
+    /// window in its title; `yUp`: py upward (the y up option); `lineWidth` pixels
+    /// (chartLineWidth). Nothing but the frame when `series` has fewer than 2 samples.
     void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
               const PixelRect& box, int rows, int rowHeight, double totalMass, double rateWindow,
               const Palette& colours = palette(Theme::Dark), bool yUp = false,
-              float lineWidth = 1.f);
+              float lineWidth = 1.f, int firstPlot = 0);
 
   private:
     GeometryBatch boxes_, text_, thick_;  // thick_: the curves wider than a pixel

@@ -18,6 +18,20 @@ constexpr bool printable(int code) {
 
 }  // namespace
 
+std::size_t Font::slot(char32_t code) {
+    if (code >= kFirst && code <= kLast) {
+        return printable(static_cast<int>(code)) ? code - kFirst : std::string_view::npos;
+    }
+    for (std::size_t k = 0; k < kExtras.size(); ++k) {
+        if (kExtras[k] == code) return kLast - kFirst + 1 + k;
+    }
+    return std::string_view::npos;
+}
+
+bool Font::drawable(char32_t code) {
+    return slot(code) != std::string_view::npos;
+}
+
 Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelSize)
     : renderer_(renderer) {
     // TTF_Init is reference counted, so each Font holds one reference.
@@ -34,29 +48,34 @@ Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelS
     // texel's edge u = x / width is then exact in a float, and so is u × width. With any other
     // width SDL's software renderer, which truncates u × width to a texel, took some glyphs'
     // left edges one texel early and dropped a column ("(" in "energy (J)" lost its stroke).
-    std::array<SDL_Surface*, kLast - kFirst + 1> images{};
+    std::array<SDL_Surface*, kGlyphs> images{};
     int atlasWidth = 512;
-    for (int c = kFirst; c <= kLast; ++c) {
-        if (!printable(c)) continue;
+    const auto codeOf = [](std::size_t k) {
+        return k < static_cast<std::size_t>(kLast - kFirst + 1) ? static_cast<char32_t>(kFirst + k)
+                                                                : kExtras[k - (kLast - kFirst + 1)];
+    };
+    for (std::size_t k = 0; k < kGlyphs; ++k) {
+        const char32_t c = codeOf(k);
+        if (slot(c) != k) continue;
         SDL_Surface* s =
             TTF_RenderGlyph32_Blended(font_, static_cast<Uint32>(c), SDL_Color{255, 255, 255, 255});
-        images[c - kFirst] = s;
+        images[k] = s;
         int minx = 0, maxx = 0, miny = 0, maxy = 0, advance = 0;
         TTF_GlyphMetrics32(font_, static_cast<Uint32>(c), &minx, &maxx, &miny, &maxy, &advance);
-        glyphs_[c - kFirst].advance = advance;
+        glyphs_[k].advance = advance;
         while (s != nullptr && s->w > atlasWidth)
             atlasWidth *= 2;
     }
     int x = 0, y = 0, rowHeight = 0;
-    for (int c = kFirst; c <= kLast; ++c) {
-        const SDL_Surface* s = images[c - kFirst];
+    for (std::size_t k = 0; k < kGlyphs; ++k) {
+        const SDL_Surface* s = images[k];
         if (s == nullptr) continue;
         if (x + s->w > atlasWidth) {  // a new row, one transparent texel below the last
             x = 0;
             y += rowHeight + 1;
             rowHeight = 0;
         }
-        glyphs_[c - kFirst].atlas = {x, y, s->w, s->h};
+        glyphs_[k].atlas = {x, y, s->w, s->h};
         x += s->w + 1;
         rowHeight = std::max(rowHeight, s->h);
     }
@@ -67,11 +86,11 @@ Font::Font(SDL_Renderer* renderer, const std::filesystem::path& path, int pixelS
         SDL_CreateRGBSurfaceWithFormat(0, atlasWidth, height, 32, SDL_PIXELFORMAT_ARGB8888);
     if (atlas == nullptr) throw std::runtime_error(std::string("glyph atlas: ") + SDL_GetError());
     SDL_FillRect(atlas, nullptr, SDL_MapRGBA(atlas->format, 255, 255, 255, 0));
-    for (int c = kFirst; c <= kLast; ++c) {
-        SDL_Surface* s = images[c - kFirst];
+    for (std::size_t k = 0; k < kGlyphs; ++k) {
+        SDL_Surface* s = images[k];
         if (s == nullptr) continue;
         SDL_SetSurfaceBlendMode(s, SDL_BLENDMODE_NONE);
-        SDL_Rect dst = glyphs_[c - kFirst].atlas;
+        SDL_Rect dst = glyphs_[k].atlas;
         SDL_BlitSurface(s, nullptr, atlas, &dst);
         SDL_FreeSurface(s);
     }
@@ -105,23 +124,24 @@ Font::~Font() {
 
 const Font::Glyph& Font::next(std::string_view text, std::size_t& i) const {
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[k]); };
-    int code = byte(i++);
+    char32_t code = byte(i++);
     if (code >= 0x80) {
-        // UTF-8: a two-byte sequence C2/C3 xx is U+0080–U+00FF; anything longer is beyond the
-        // atlas, and a stray continuation byte is malformed. Either shows one '?'.
-        const bool twoBytes =
-            (code == 0xC2 || code == 0xC3) && i < text.size() && (byte(i) & 0xC0) == 0x80;
-        if (twoBytes) {
-            code = ((code & 0x1F) << 6) | (byte(i++) & 0x3F);
-        } else {
-            if (code >= 0xC0) {
-                while (i < text.size() && (byte(i) & 0xC0) == 0x80)
-                    ++i;
+        // UTF-8: a lead byte and its continuation bytes; a character the atlas does not hold,
+        // a stray continuation byte or a sequence cut short shows one '?'.
+        const int more = code >= 0xF0 ? 3 : code >= 0xE0 ? 2 : code >= 0xC0 ? 1 : -1;
+        bool whole = more > 0;
+        code &= more == 3 ? 0x07u : more == 2 ? 0x0Fu : 0x1Fu;
+        for (int k = 0; k < more; ++k) {
+            if (i >= text.size() || (byte(i) & 0xC0) != 0x80) {
+                whole = false;
+                break;
             }
-            code = '?';
+            code = (code << 6) | (byte(i++) & 0x3Fu);
         }
+        if (!whole) code = '?';
     }
-    return glyphs_[(code >= kFirst && code <= kLast && printable(code) ? code : '?') - kFirst];
+    const std::size_t k = slot(code);
+    return glyphs_[k != std::string_view::npos ? k : '?' - kFirst];
 }
 
 int Font::measure(std::string_view text) const {

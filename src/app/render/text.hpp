@@ -1,9 +1,10 @@
 #pragma once
 // Text with SDL2_ttf, drawn from a glyph atlas. Labels and the HUD change every frame (numbers),
 // so caching rendered strings would miss; instead every printable Latin-1 glyph (ASCII and
-// U+00A0–U+00FF: µ, ², °, ±, ×, é ...) is rendered once into one texture, and a string (UTF-8)
-// becomes textured quads in a GeometryBatch: all the text of a frame costs one draw call per
-// font.
+// U+00A0–U+00FF: µ, ², °, ±, ×, é ...) and the few others the app writes (Font::kExtras: the
+// ellipsis, dashes, the minus sign, an arrow, Greek letters) is rendered once into one texture,
+// and a string (UTF-8) becomes textured quads in a GeometryBatch: all the text of a frame costs
+// one draw call per font.
 
 #include <array>
 #include <filesystem>
@@ -35,12 +36,21 @@ class Font final : public TextMeasure {
     /// Width of `text` in pixels.
     [[nodiscard]] int measure(std::string_view text) const override;
     /// Appends the quads of `text` with its top-left corner at (x, y), pixels, rounded to whole
-    /// pixels. `text` is UTF-8; a character outside printable Latin-1 (or a malformed byte)
-    /// shows as '?'.
+    /// pixels. `text` is UTF-8; a character outside printable Latin-1 and kExtras (or a
+    /// malformed byte) shows as '?'.
     void layout(std::string_view text, float x, float y, SDL_Color color,
                 GeometryBatch& batch) const;
     /// Draws a batch built with layout() (one SDL_RenderGeometry call).
     void draw(const GeometryBatch& batch) const;
+
+    /// The characters beyond Latin-1 the atlas holds: what the app's messages, labels and
+    /// readings write (a message shortened to its band ended in a '?' where its "…" was).
+    static constexpr std::array<char32_t, 31> kExtras = {
+        0x2026, 0x2013, 0x2014, 0x2212, 0x2192, 0x0394, 0x03B1, 0x03B2, 0x03B3, 0x03B4, 0x03B5,
+        0x03B6, 0x03B7, 0x03B8, 0x03B9, 0x03BA, 0x03BB, 0x03BC, 0x03BD, 0x03BE, 0x03BF, 0x03C0,
+        0x03C1, 0x03C2, 0x03C3, 0x03C4, 0x03C5, 0x03C6, 0x03C7, 0x03C8, 0x03C9};
+    /// Whether the atlas has a glyph of `code` (a Unicode code point).
+    [[nodiscard]] static bool drawable(char32_t code);
 
   private:
     struct Glyph {
@@ -48,6 +58,9 @@ class Font final : public TextMeasure {
         int advance = 0;
     };
     static constexpr int kFirst = 32, kLast = 255;
+    static constexpr std::size_t kGlyphs = kLast - kFirst + 1 + kExtras.size();
+    /// The glyph's place in glyphs_, or npos for a character the atlas does not hold.
+    [[nodiscard]] static std::size_t slot(char32_t code);
     /// The glyph of the character that starts at text[i]; advances i past it.
     [[nodiscard]] const Glyph& next(std::string_view text, std::size_t& i) const;
 
@@ -56,7 +69,7 @@ class Font final : public TextMeasure {
     SDL_Texture* atlas_ = nullptr;
     int atlasW_ = 1, atlasH_ = 1;
     int lineHeight_ = 0;
-    std::array<Glyph, kLast - kFirst + 1> glyphs_{};
+    std::array<Glyph, kGlyphs> glyphs_{};
 };
 
 }  // namespace psb::app

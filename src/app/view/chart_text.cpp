@@ -53,9 +53,10 @@ PlotRowsPlace plotRowsPlace(float y, int rows, float rowHeight, float lineHeight
 
 int yTickCount(double pixels, int lineHeight) {
     if (lineHeight <= 0) return 4;
-    // n ticks are n - 1 steps apart; each label wants its line and a little air.
+    // n ticks are n - 1 steps apart; each label wants its line and a little air (the top and
+    // bottom labels stand half a line past the axis's ends, where plotRowsPlace keeps room).
     const int steps = static_cast<int>(std::floor(pixels / (1.15 * lineHeight)));
-    return std::clamp(steps, 1, 4);
+    return std::clamp(steps + 1, 1, 5);
 }
 
 }  // namespace psb::app

@@ -53,7 +53,12 @@ struct PlotRowsPlace {
 [[nodiscard]] PlotRowsPlace plotRowsPlace(float y, int rows, float rowHeight, float lineHeight);
 
 /// The most ticks (niceTicks' maxTicks) a y axis `pixels` high takes with its labels one
-/// `lineHeight` high each clear of the next: 4 where there is room, at least 1.
+/// `lineHeight` high each clear of the next (centred on their ticks, the top and bottom ones
+/// at the axis's ends): 5 where there is room, at least 1.
 [[nodiscard]] int yTickCount(double pixels, int lineHeight);
+
+/// Labelled ticks a plot's y axis keeps at least: its plots' rows are never shorter than
+/// their room (kPlotRowMinHeight), where there are fewer plots instead.
+inline constexpr int kPlotTicksLeast = 3;
 
 }  // namespace psb::app

@@ -60,6 +60,30 @@ PixelPoint textBoxSize(const TextMeasure& font, const std::vector<std::string>& 
     return {w + 8, font.lineHeight() * static_cast<int>(lines.size()) + 4};
 }
 
+namespace {
+
+/// `text` without its last aside in brackets ("... 980x1000 (25 frames a second of 60: the
+/// window drew no faster)" without the brackets' words), and the space and the comma, colon or
+/// semicolon before it; `text` itself where it does not end in one.
+std::string withoutLastAside(const std::string& text) {
+    if (text.empty() || text.back() != ')') return text;
+    int depth = 0;
+    for (std::size_t k = text.size(); k-- > 0;) {
+        if (text[k] == ')') ++depth;
+        if (text[k] == '(' && --depth == 0) {
+            std::string head = text.substr(0, k);
+            while (!head.empty() && (head.back() == ' ' || head.back() == ',' ||
+                                     head.back() == ';' || head.back() == ':')) {
+                head.pop_back();
+            }
+            return head.empty() ? text : head;
+        }
+    }
+    return text;
+}
+
+}  // namespace
+
 std::vector<std::string> messageLines(const TextMeasure& font,
                                       const std::vector<std::string>& messages, int maxWidth,
                                       std::size_t maxLines) {
@@ -71,18 +95,34 @@ std::vector<std::string> messageLines(const TextMeasure& font,
             continue;
         }
         if (out.empty() && maxLines > 0) {  // the newest alone is longer than the band
-            lines.resize(maxLines);
-            std::string& last = lines.back();
-            const std::string ellipsis = "\u2026";
-            // Whole characters off its end until the mark fits (with the box's padding).
-            while (!last.empty() && font.measure(last + ellipsis) + 8 > maxWidth) {
-                last.pop_back();
-                while (!last.empty() && (static_cast<unsigned char>(last.back()) & 0xC0) == 0x80)
-                    last.pop_back();
-                if (!last.empty() && (static_cast<unsigned char>(last.back()) & 0x80) != 0)
-                    last.pop_back();  // the lead byte of the character cut
+            // Its asides in brackets go first, from the last: what it did and where stays
+            // whole, and the band ends where the sentence does (the log has the whole).
+            for (std::string text = *m, shorter = withoutLastAside(text);
+                 lines.size() > maxLines && shorter != text;
+                 text = shorter, shorter = withoutLastAside(text)) {
+                lines = wrapLines(font, {shorter}, maxWidth);
             }
-            last += ellipsis;
+            if (lines.size() > maxLines) {
+                // Still too long: its first lines, the last cut at a space where "…" fits.
+                lines.resize(maxLines);
+                std::string& last = lines.back();
+                const std::string ellipsis = "\u2026";
+                while (!last.empty() && font.measure(last + ellipsis) + 8 > maxWidth) {
+                    const std::size_t space = last.find_last_of(' ');
+                    if (space == std::string::npos || space == 0) {
+                        // One word: whole characters off its end.
+                        last.pop_back();
+                        while (!last.empty() &&
+                               (static_cast<unsigned char>(last.back()) & 0xC0) == 0x80)
+                            last.pop_back();
+                        if (!last.empty() && (static_cast<unsigned char>(last.back()) & 0x80) != 0)
+                            last.pop_back();  // the lead byte of the character cut
+                    } else {
+                        last.resize(space);
+                    }
+                }
+                last += ellipsis;
+            }
             out = std::move(lines);
         }
         break;

@@ -44,7 +44,10 @@ inline constexpr std::size_t kMessageLines = 3;
 /// The message band's lines: the newest `messages` that fit `maxLines` lines whole, each
 /// wrapped as wrapLines wraps it to `maxWidth`; older ones are dropped whole, never their first
 /// lines (a long message lost its head: "…mp4: 3.8 s" without "Saved video"). A newest message
-/// longer than the band keeps its first lines, the last ending in "…" (the log has it all).
+/// longer than the band drops its asides in brackets, the last first, until it fits whole (at
+/// 200 % "Saved video PATH: 3.4 s, 84 frames, 980x1000 (25 frames a second of 60: the window
+/// drew no faster)" was cut mid-word); one that is still too long keeps its first lines, the
+/// last cut at a space and ending in "…" (the log has it all).
 [[nodiscard]] std::vector<std::string> messageLines(const TextMeasure& font,
                                                     const std::vector<std::string>& messages,
                                                     int maxWidth, std::size_t maxLines);

@@ -27,6 +27,23 @@ std::vector<double> niceTicks(double lo, double hi, int maxTicks) {
     return ticks;
 }
 
+AxisTicks axisTicks(double lo, double hi, int most) {
+    most = std::max(1, most);
+    AxisTicks t{niceTicks(lo, hi, most), niceStep(lo, hi, most)};
+    const std::size_t least = static_cast<std::size_t>(std::min(3, most));
+    if (t.values.size() >= least || !(hi > lo) || !std::isfinite(hi - lo)) return t;
+    // Finer round steps, as long as their labels still have room.
+    for (int finer = most + 1; finer <= most + 6; ++finer) {
+        std::vector<double> values = niceTicks(lo, hi, finer);
+        if (values.size() > static_cast<std::size_t>(most)) break;
+        if (values.size() >= least) return {std::move(values), niceStep(lo, hi, finer)};
+    }
+    // No round step fits (a range of 4 steps of 1 offset by one: 2 and 4 at a step of 2, five
+    // ticks at 1): the ends and the middle.
+    const double step = (hi - lo) / 2.0;
+    return {{lo, lo + step, hi}, step};
+}
+
 PlotRange plotRange(double dataMin, double dataMax, double minSpan) {
     if (!std::isfinite(dataMin) || !std::isfinite(dataMax)) return {};
     if (!(minSpan > 0.0) || !std::isfinite(minSpan)) minSpan = 1.0;

@@ -23,6 +23,17 @@ struct PlotRange {
 /// The step niceTicks uses.
 [[nodiscard]] double niceStep(double lo, double hi, int maxTicks);
 
+/// A y axis's labelled ticks and the step their labels are written to (tickLabel).
+struct AxisTicks {
+    std::vector<double> values;
+    double step = 1.0;
+};
+/// The ticks of a y axis over [lo, hi] that has room for `most` labels: niceTicks' (at most
+/// `most`), and never fewer than 3 where there is room for 3 (a row of the plots read one
+/// number, "3.50", at 200 %): round steps that give 3 to `most`, else [lo, hi]'s ends and
+/// middle.
+[[nodiscard]] AxisTicks axisTicks(double lo, double hi, int most);
+
 /// `v` with as many significant digits as a tick `step` needs, with an SI prefix outside
 /// [1e-3, 1e5): 4038789 with step 20000 -> "4.04M"; 0.5 -> "0.5"; 2e-5 -> "20u".
 [[nodiscard]] std::string tickLabel(double v, double step);

@@ -98,12 +98,16 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
     const auto scaled = [&r](int pixels) { return static_cast<int>(pixels * r.scale); };
     l.columnFolded = columnAsked && !fits && r.chartsBand.w == 0;
     int top = 4;
+    // The charts' band under the box, where the session chose it: the legend and the profile
+    // keep off it (below the box, the legend was drawn over by the plots).
+    const PixelRect chartsBand =
+        r.chartsBand.w > 0 && (r.plots || r.speeds) ? r.chartsBand : PixelRect{};
     // The highest free place for a panel of `size`, then the rightmost, in the room right of
-    // the control panel above `bottom`: clear of the box, the HUD and the panels placed so far.
-    // Its edges are tried against each of theirs (none: w == 0).
+    // the control panel above `bottom`: clear of the box, the HUD, the charts' band and the
+    // panels placed so far. Its edges are tried against each of theirs (none: w == 0).
     const auto freePlace = [&](PixelPoint size) {
         const std::vector<PixelRect> taken = {r.box,    l.hud,     l.messages, l.inspector,
-                                              l.values, l.profile, l.legend};
+                                              l.values, l.profile, l.legend,   chartsBand};
         std::vector<int> xs{right - size.x, left}, ys{top};
         for (const PixelRect& t : taken) {
             if (t.w <= 0) continue;
@@ -130,10 +134,16 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
         if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;
         PixelRect box = place(size, top);
-        if (overlaps(box, r.box)) {
+        if (overlaps(box, r.box) || overlaps(box, chartsBand)) {
             // Over the box's corner: another place; the column's charts start below it where
             // it stands over them.
             box = freePlace(size);
+            if (box.w == 0 && out == &l.legend && chartsBand.w > 0 && size.x <= chartsBand.w / 2 &&
+                size.y <= chartsBand.h) {
+                // Nowhere else (a HUD grown by a step back, or a video's room for it, down to
+                // the box's top): at the right end of the charts' band, the charts beside it.
+                box = {chartsBand.x + chartsBand.w - size.x, chartsBand.y, size.x, size.y};
+            }
             if (box.w == 0) continue;
             *out = box;
             if (box.x + box.w > right - sideColumnWidth(r.width, r.left, r.scale))
@@ -152,20 +162,27 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
         if (l.inspector.w > 0 && l.inspector.y < band.y + band.h) {
             band.w = std::min(band.w, l.inspector.x - gap - band.x);
         }
+        if (overlaps(l.legend, band)) band.w = std::min(band.w, l.legend.x - gap - band.x);
         if (l.messages.w > 0 && l.messages.y < band.y + band.h) {
             band.h = l.messages.y - gap - band.y;
         }
         const int count = (r.plots ? 1 : 0) + (r.speeds ? 1 : 0);
         const int each = (band.w - (count - 1) * gap) / count;
         const int rowMin = scaled(kPlotRowMinHeight);
-        if (each < scaled(kPanelMinWidth)) return l;
+        const int least = scaled(kPanelMinWidth);
+        if (each < least) return l;
         int x = band.x;
         if (r.plots && band.h >= rowMin + 8) {
             const int rows = std::clamp((band.h - 8) / rowMin, 1, 4);
             const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
+            // Too low for the plots one above the other: side by side, as many as keep each at
+            // its least width (the lesson's energy and px in a band one row high).
+            const int columns =
+                std::clamp(std::min((4 + rows - 1) / rows, (each + gap) / (least + gap)), 1, 4);
             l.plots = {x, band.y, each, rows * rowHeight + 8};
             l.plotRows = rows;
             l.plotRowHeight = rowHeight;
+            l.plotColumns = columns;
             x += each + gap;
         }
         if (r.speeds && band.h >= scaled(kSpeedsMinHeight)) {

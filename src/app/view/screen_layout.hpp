@@ -159,6 +159,9 @@ struct PanelLayout {
     PixelRect values{};     ///< the values table (valuesBandRect or valuesColumnRect)
     int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
     int plotRowHeight = 0;  ///< pixels per plot
+    /// The plots side by side in `plots` (a band under the box too low for them one above the
+    /// other): each of these columns (plotColumn) shows plotRows of them, the next ones.
+    int plotColumns = 1;
     /// The profile, plots or histograms were asked for but folded away: the window leaves the
     /// side column no room beside the box (sideColumnFits).
     bool columnFolded = false;
@@ -168,17 +171,30 @@ inline constexpr int kPanelGap = 6;                         ///< between panels,
 inline constexpr int kPanelMaxWidth = kSideColumnMaxWidth;  ///< plots and histogram, pixels
 inline constexpr int kPanelMinWidth = kSideColumnMinWidth;  ///< plots and histogram, pixels
 inline constexpr int kPlotRowMaxHeight = 100;               ///< pixels
-inline constexpr int kPlotRowMinHeight = 64;                ///< pixels
-inline constexpr int kSpeedsMaxHeight = 210;                ///< pixels
-inline constexpr int kSpeedsMinHeight = 130;                ///< pixels
-inline constexpr int kBinsMaxHeight = 280;                  ///< pixels
-inline constexpr int kBinsMinHeight = 170;                  ///< pixels
+/// Pixels: a plot's row holds its title, the time axis's labels and a y axis with room for
+/// kPlotTicksLeast labels (plotRowsPlace, yTickCount) in the charts' font, a line of up to
+/// 17 pixels at 100 % (64 left one tick, "3.50", at 200 %); where the room holds fewer rows,
+/// fewer plots are shown, or in a band under the box they stand side by side.
+inline constexpr int kPlotRowMinHeight = 96;
+inline constexpr int kSpeedsMaxHeight = 210;  ///< pixels
+inline constexpr int kSpeedsMinHeight = 130;  ///< pixels
+inline constexpr int kBinsMaxHeight = 280;    ///< pixels
+inline constexpr int kBinsMinHeight = 170;    ///< pixels
 
 /// The band the side column's charts take under the box instead of the column (BoxArea's
-/// chartsBand), pixels at `scale` pixels per point: two plots' rows at their smallest, or the
-/// speed histogram at its smallest, and the panel's padding.
+/// chartsBand), pixels at `scale` pixels per point: a plots' row at its smallest and the
+/// panel's padding (the plots stand side by side in it: PanelLayout::plotColumns), or the speed
+/// histogram at its smallest.
 [[nodiscard]] inline int chartsBandHeight(double scale) {
-    return static_cast<int>(std::max(2 * kPlotRowMinHeight + 8, kSpeedsMinHeight) * scale);
+    return static_cast<int>(std::max(kPlotRowMinHeight + 8, kSpeedsMinHeight) * scale);
+}
+
+/// The `k`th (from 0) of the plots' columns in `layout` (PanelLayout::plotColumns): its box,
+/// pixels; it shows the plots from k × plotRows on.
+[[nodiscard]] inline PixelRect plotColumn(const PanelLayout& layout, int k) {
+    const int columns = std::max(1, layout.plotColumns);
+    const int each = (layout.plots.w - (columns - 1) * kPanelGap) / columns;
+    return {layout.plots.x + k * (each + kPanelGap), layout.plots.y, each, layout.plots.h};
 }
 
 /// The band's rectangle at the bottom of a window `width` × `height` pixels whose left `left`

@@ -19,10 +19,16 @@ std::vector<std::string> wrapAtSpaces(std::string_view text, float room, const M
                 const std::size_t space = line.find(' ', at + 1);
                 const std::size_t end = space == std::string_view::npos ? line.size() : space;
                 const std::string_view word = line.substr(at, end - at);  // with its leading space
-                // A path wider than the room starts on this line and goes on after a separator
-                // (its folders a line each): it has no space to break at.
+                // A path starts on this line and goes on after a separator (its folders a line
+                // each): it has no space to break at, and a path put whole on a line of its own
+                // left its line before half empty (a message then needed a line more than its
+                // band had). A path: two separators ("/home/x", not "m/s"), or one word wider
+                // than the room.
+                const std::size_t separator = word.find_first_of("/\\");
                 const bool path =
-                    word.find_first_of("/\\") != std::string_view::npos && measure(word) > room;
+                    separator != std::string_view::npos &&
+                    (word.find_first_of("/\\", separator + 1) != std::string_view::npos ||
+                     measure(word) > room);
                 if (!current.empty() && !path &&
                     measure(std::string(current).append(word)) > room) {
                     out.push_back(current);

@@ -14,8 +14,10 @@ namespace psb::app {
 using MeasureText = std::function<float(std::string_view)>;
 
 /// `text` in lines no wider than `room` by `measure`, broken only at spaces (and at '\n'); a
-/// word wider than the room is broken after a '/' or '\\' where one leaves a piece that fits
-/// (a file's path, a folder a line), else stands alone on its line, unbroken. Lines after the first
+/// file's path (a word with two separators '/' or '\\') that does not fit after the words
+/// before it, or any word wider than the room, is broken after a separator where one leaves a
+/// piece that fits (the path goes on on the next line), else stands alone on its line,
+/// unbroken. Lines after the first
 /// of a paragraph start with `indent` in place of the spaces they were broken at.
 [[nodiscard]] std::vector<std::string> wrapAtSpaces(std::string_view text, float room,
                                                     const MeasureText& measure,

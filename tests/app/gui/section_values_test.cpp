@@ -111,6 +111,60 @@ TEST_F(SectionValuesTest, TheLessonsValuesTableShowsEveryColumnAndRowWithoutScro
     gui_->setScale(1.f);
 }
 
+TEST_F(SectionValuesTest, UnitsUnderTheHeadersNeverRunIntoEachOther) {
+    // At 200 % the momentum columns' units read as one: "kg m/skg m/s", the border between
+    // them hidden under the letters. Between two columns' units there is at least the width of
+    // two spaces, in the lesson's table and in the ramp's (its omega, rad/s), at every scale.
+    Scene lesson;
+    lesson.world.width = 10.0;
+    lesson.world.height = 4.0;
+    for (const auto& [x, vx, mass] : {std::tuple{2.0, 2.0, 1.0}, {7.0, -1.0, 3.0}}) {
+        ParticleDef p;
+        p.position = {x, 2.0};
+        p.velocity = {vx, 0.0};
+        p.radius = 0.3;
+        p.mass = mass;
+        lesson.particles.push_back(p);
+    }
+    const Scene ramp = loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / "12-ramp.json");
+    for (const Scene* scene : std::initializer_list<const Scene*>{&lesson, &ramp}) {
+        for (const float scale : {1.f, 1.5f, 2.f}) {
+            const std::string at =
+                std::string(scene == &lesson ? "lesson" : "ramp") + " at " + std::to_string(scale);
+            SessionOptions so;
+            so.paused = true;
+            so.viewportWidth = 1600;
+            so.viewportHeight = 1000;
+            so.layout = windowLayout(*font_, 1600, 1000, controlsWidth(scale));
+            so.controls = so.layout.controlsFit;
+            Session s(makeWorld(*scene), SceneInfo{.name = "table", .dt = 1.0 / 60.0}, so);
+            s.apply(cmd::SetShow{ShowOption::Values, true});
+            gui_->setScale(scale);
+            ControlPanel panel;
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(1600.f, 1000.f);
+                for (const Command& command : panel.build(s, FrameStats{}, 1000.f / scale, scale))
+                    s.apply(command);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+            const float air = 2.f * ImGui::CalcTextSize(" ").x;
+            const ValuesTable t = valuesTable(s.world(), std::nullopt, s.axes());
+            const PanelItem* before = nullptr;
+            for (const ValuesColumn& column : t.columns) {
+                const PanelItem* unit = panel.item(std::string("values unit ") + column.name);
+                ASSERT_NE(unit, nullptr) << at << ": " << column.name;
+                if (before != nullptr) {
+                    EXPECT_GE(unit->x0 - before->x1, air - 0.5f)
+                        << at << ": " << column.unit << " of " << column.name
+                        << " against the one before";
+                }
+                before = unit;
+            }
+        }
+    }
+    gui_->setScale(1.f);
+}
+
 TEST_F(SectionValuesTest, TheRampsValuesTableKeepsEveryColumnAsWideAsItsNumbers) {
     // The ramp's table (its bodies turn: omega and KE rot join the columns) at 200 %: the KE
     // column was as narrow as "KE" at rest and its numbers ran into the next once the bodies

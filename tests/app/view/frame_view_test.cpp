@@ -16,6 +16,7 @@
 #include "session/camera.hpp"
 #include "session/session.hpp"
 #include "view/box_area.hpp"
+#include "view/chart_text.hpp"
 #include "view/fixed_measure.hpp"
 #include "view/frame_view.hpp"
 #include "view/lab_marks.hpp"
@@ -137,6 +138,38 @@ TEST(MessageBand, KeepsWholeMessagesAndDropsOlderOnesWhole) {
 using test::lessonWorld;
 using test::onTheProjector;
 
+TEST(MessageBand, AMessageTooLongForTheBandDropsItsAsidesAndEndsWithAWholeWord) {
+    // The lesson on the projector (200 %, 1600 x 1000): the video's message was cut mid-word
+    // and ended in a '?' ("... of 60: the windo?"). Its aside in brackets goes instead, and
+    // what was saved, where, and how long it is stay whole.
+    const Session s = onTheProjector(lessonWorld(), {ShowOption::Momentum});
+    const std::string head =
+        "Saved video /home/teacher/lessons/particle-sandbox-20261207-182400.mp4: 3.4 s, 84 "
+        "frames, 980x1000";
+    const std::string saved = head + " (25 frames a second of 60: the window drew no faster)";
+    const test::FixedMeasure font(2.0);
+    FrameStats stats;
+    stats.messages = {"Paused", saved};
+    const FrameView f = buildFrame(s, stats, font, font, test::kProjector);
+    ASSERT_LE(f.overlays.messages.size(), kMessageLines);
+    std::string shown;
+    for (const std::string& line : f.overlays.messages) {
+        if (!shown.empty()) shown += ' ';
+        shown += line;
+        EXPECT_LE(font.measure(line) + 8, f.layout.messages.w) << line;
+    }
+    // The path may break after a '/': read back without the breaks' spaces.
+    std::string joined;
+    for (const std::string& line : f.overlays.messages)
+        joined += line;
+    std::string want = head;
+    want.erase(std::remove(want.begin(), want.end(), ' '), want.end());
+    joined.erase(std::remove(joined.begin(), joined.end(), ' '), joined.end());
+    EXPECT_EQ(joined, want) << shown;
+    EXPECT_EQ(shown.find('?'), std::string::npos) << shown;
+    EXPECT_EQ(shown.find("\u2026"), std::string::npos) << shown;
+}
+
 /// `world` in a `width` x `height` window at `scale`, laid out as the app lays it out (the
 /// control panel open where it fits), the plots and the values table on.
 Session tableSession(World world, int width, int height, double scale) {
@@ -233,6 +266,75 @@ TEST(ValuesTable, OnTheProjectorItShowsEveryColumnAndTheTotalsAndThePlotsStay) {
     for (const PixelRect& r : panelRects(f.layout))
         EXPECT_FALSE(overlaps(r, onScreen)) << "a panel over the box";
     EXPECT_GE(box.size.x(), 480.0) << "the box";
+}
+
+TEST(Plots, OnTheProjectorEachPlotHasRoomForThreeLabelledTicks) {
+    // Lesson 1 at 200 % with the plots (K): two rows about 50 pixels of axis each, one tick
+    // ("3.50", "-1.0"). Each row shown has room for three tick labels; the energy and px are
+    // both there, and with the values table (which has the momenta) at least the energy.
+    const test::FixedMeasure font(2.0);
+    for (const bool table : {false, true}) {
+        Session s = table ? test::onTheProjector(
+                                test::lessonWorld(),
+                                {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values})
+                          : test::onTheProjector(test::lessonWorld(),
+                                                 {ShowOption::Momentum, ShowOption::Plots});
+        const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+        const char* at = table ? "with the table" : "without the table";
+        ASSERT_GT(f.layout.plots.w, 0) << at;
+        // Beside the table's band there is room for fewer: the table has the momenta.
+        EXPECT_GE(f.layout.plotRows * f.layout.plotColumns, table ? 1 : 2)
+            << at << ": energy and px";
+        const PlotRowsPlace p = plotRowsPlace(
+            static_cast<float>(f.layout.plots.y), f.layout.plotRows,
+            static_cast<float>(f.layout.plotRowHeight), static_cast<float>(font.lineHeight()));
+        for (const PlotRowPlace& r : p.rows) {
+            EXPECT_GE(yTickCount(r.bottom - r.top, font.lineHeight()), kPlotTicksLeast)
+                << at << ": a plot " << r.bottom - r.top << " pixels high";
+        }
+    }
+}
+
+TEST(MomentumLegend, StaysWhileSteppingBackAndInAVideoOfTheBox) {
+    // Lesson 1 on the projector with the momenta (V) and the plots (K), the plots in their band
+    // under the box: a step back in time grew the HUD by its "Viewing ... back" lines, the
+    // legend moved below the box under the plots' band and was drawn over by it; a video keeps
+    // the room for those lines all along, and had no legend at all.
+    const test::FixedMeasure font(2.0);
+    Session s =
+        test::onTheProjector(test::lessonWorld(), {ShowOption::Momentum, ShowOption::Plots});
+    s.apply(cmd::TogglePause{});
+    for (int k = 1; k <= 60; ++k)
+        s.update(1.0 / 60.0, k / 60.0);
+    s.apply(cmd::TogglePause{});
+    const auto check = [&](const FrameView& f, const char* when) {
+        ASSERT_GT(f.layout.legend.w, 0) << when << ": no legend";
+        const Camera::ScreenBox box = s.camera().boxOnScreen(10.0, 4.0);
+        const PixelRect onScreen{static_cast<int>(box.topLeft.x()),
+                                 static_cast<int>(box.topLeft.y()), static_cast<int>(box.size.x()),
+                                 static_cast<int>(box.size.y())};
+        EXPECT_FALSE(overlaps(f.layout.legend, onScreen)) << when << ": over the box";
+        EXPECT_GE(f.layout.legend.x, f.controlsInset) << when;
+        EXPECT_LE(f.layout.legend.x + f.layout.legend.w, 1600) << when;
+        EXPECT_LE(f.layout.legend.y + f.layout.legend.h, 1000) << when;
+        const std::vector<PixelRect> all = panelRects(f.layout);
+        for (const PixelRect& r : all) {
+            if (r.x == f.layout.legend.x && r.y == f.layout.legend.y) continue;
+            EXPECT_FALSE(overlaps(r, f.layout.legend))
+                << when << ": a panel at " << r.x << ", " << r.y << " over the legend";
+        }
+        // The plots are still there.
+        EXPECT_GT(f.layout.plots.w, 0) << when;
+    };
+    check(buildFrame(s, FrameStats{}, font, font, test::kProjector), "now");
+    s.apply(cmd::StepBack{});
+    ASSERT_TRUE(s.timeline().viewingPast);
+    check(buildFrame(s, FrameStats{}, font, font, test::kProjector), "a step back");
+    FrameStats recording;
+    recording.video.recording = true;
+    check(buildFrame(s, recording, font, font, test::kProjector), "a step back, recording");
+    s.apply(cmd::StepForward{});
+    check(buildFrame(s, recording, font, font, test::kProjector), "recording");
 }
 
 /// A 7 m box with two rows of balls just below and just above its middle, where the ruler
@@ -509,11 +611,12 @@ TEST(BoxShare, OnTheProjectorTheLessonsBoxesKeepAReasonableShareOfTheWindow) {
         EXPECT_GE(box.size.x(), 760.0) << "the lesson's box";
         const FrameView f = buildFrame(s, FrameStats{}, font, font, controls);
         // The plots neither fold away nor squeeze the box: a column beside this wide, low box
-        // would leave it less than its share, so they go in a band under it, two rows or more.
+        // would leave it less than its share, so they go in a band under it, two plots or more
+        // (side by side in a band one row high).
         EXPECT_FALSE(f.layout.columnFolded) << "the lesson's plots folded away";
         EXPECT_TRUE(s.chartsBelow());
         ASSERT_GT(f.layout.plots.w, 0);
-        EXPECT_GE(f.layout.plotRows, 2);
+        EXPECT_GE(f.layout.plotRows * f.layout.plotColumns, 2);
         EXPECT_GE(f.layout.plotRowHeight, 2 * kPlotRowMinHeight);
         EXPECT_GE(f.layout.plots.w, 2 * kPanelMinWidth);
         const PixelRect onScreen{static_cast<int>(box.topLeft.x()),

@@ -1,5 +1,6 @@
-// The plots' words (plot_scale.hpp): the collision rate's title names its window; where the
-// plots' titles, axes and time labels go (chart_text.hpp): no title on a tick label.
+// The plots' words (plot_scale.hpp): the collision rate's title names its window, a y axis
+// keeps three labelled ticks; where the plots' titles, axes and time labels go (chart_text.hpp):
+// no title on a tick label, and a row at its least height has room for three labels.
 
 #include <gtest/gtest.h>
 
@@ -56,6 +57,51 @@ TEST(PlotRows, NoTitleOrCaptionSitsOnATickLabel) {
                         EXPECT_LE(p.timeLabels + line, frameBottom) << at << ": below the frame";
                     }
                 }
+            }
+        }
+    }
+}
+
+TEST(PlotScale, AnAxisWithRoomForThreeLabelsHasThreeLabelledTicks) {
+    // The lesson's plots at 200 % read one number each ("3.50", "-1.0"): a flat energy, a
+    // momentum that steps from -1 to 4 at the wall.
+    struct Case {
+        double lo, hi;
+    };
+    for (const Case c : {Case{3.48, 3.52}, Case{-1.5, 4.5}, Case{1.0, 5.0}, Case{-1.02, -0.98},
+                         Case{0.0, 6.0}, Case{0.0, 1.0}, Case{-10.1, -10.0}}) {
+        for (int most = 3; most <= 5; ++most) {
+            const AxisTicks t = axisTicks(c.lo, c.hi, most);
+            std::string at = std::to_string(c.lo);
+            at += " to ";
+            at += std::to_string(c.hi);
+            at += " with room for ";
+            at += std::to_string(most);
+            EXPECT_GE(t.values.size(), 3u) << at;
+            EXPECT_LE(t.values.size(), static_cast<std::size_t>(most)) << at;
+            for (std::size_t k = 0; k < t.values.size(); ++k) {
+                EXPECT_GE(t.values[k], c.lo - 1e-9 * (c.hi - c.lo)) << at;
+                EXPECT_LE(t.values[k], c.hi + 1e-9 * (c.hi - c.lo)) << at;
+                // Each its own label: no two read the same.
+                if (k > 0) {
+                    EXPECT_NE(tickLabel(t.values[k], t.step), tickLabel(t.values[k - 1], t.step))
+                        << at;
+                }
+            }
+        }
+    }
+}
+
+TEST(PlotRows, ARowAtItsLeastHeightHasRoomForThreeTickLabels) {
+    // At 200 % a plot's row was 128 pixels of which its axis had one line: one tick.
+    for (const double scale : {0.75, 1.0, 1.5, 2.0, 3.0}) {
+        const float line = static_cast<float>(17.0 * scale);  // the charts' line, at most
+        const float rowHeight = static_cast<float>(kPlotRowMinHeight * scale);
+        for (int rows = 1; rows <= 4; ++rows) {
+            const PlotRowsPlace p = plotRowsPlace(40.f, rows, rowHeight, line);
+            for (const PlotRowPlace& r : p.rows) {
+                EXPECT_GE(yTickCount(r.bottom - r.top, static_cast<int>(line)), kPlotTicksLeast)
+                    << "at " << scale << ", " << rows << " rows";
             }
         }
     }

@@ -50,6 +50,18 @@ TEST(WordWrap, APathWiderThanTheLineGoesOnAfterASeparator) {
     EXPECT_EQ(wrapAtSpaces("a 0123456789", 5, characters).back(), "0123456789");
 }
 
+TEST(WordWrap, APathThatDoesNotFitAfterTheWordsBeforeItFillsTheirLine) {
+    // A path narrower than the line but not beside the words before it went whole to a line of
+    // its own, and the message needed a line more than its band holds.
+    const std::string text = "Saved video /home/teacher/lessons/video-1.mp4: 3.4 s, 84 frames";
+    const auto lines = wrapAtSpaces(text, 36, characters);
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0], "Saved video /home/teacher/lessons/");
+    EXPECT_EQ(lines[1], "video-1.mp4: 3.4 s, 84 frames");
+    // A unit with one '/' is a word: it moves whole.
+    EXPECT_EQ(wrapAtSpaces("speed 9.81 m/s", 12, characters).back(), "m/s");
+}
+
 TEST(WordWrap, KeepsLineBreaksAndIndentsContinuations) {
     const auto lines = wrapAtSpaces("one two three\nfour", 8, characters, "  ");
     ASSERT_EQ(lines.size(), 3u);
