@@ -49,6 +49,11 @@ void ControlPanel::card(const Session& s) {
     const CollisionCardText text = collisionCardText(*card, s.axes());
     widgets::wrapped(text.title);
     mark("collision title");
+    // Stepped back before it through the recorded frames: the card stays, and says so.
+    if (const std::string ahead = cardAhead(*card, s.world().time()); !ahead.empty()) {
+        widgets::wrappedDisabled(ahead);
+        mark("collision ahead");
+    }
     widgets::wrappedDisabled(card->follows != 0 ? "The selected particle's last collision"
                                                 : "The last collision between two particles "
                                                   "(select one to follow it)");
