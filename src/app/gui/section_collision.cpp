@@ -49,6 +49,11 @@ void ControlPanel::card(const Session& s) {
     const CollisionCardText text = collisionCardText(*card, s.axes());
     widgets::wrapped(text.title);
     mark("collision title");
+    // Stepped back before it through the recorded frames: the card stays, and says so.
+    if (const std::string ahead = cardAhead(*card, s.world().time()); !ahead.empty()) {
+        widgets::wrappedDisabled(ahead);
+        mark("collision ahead");
+    }
     widgets::wrappedDisabled(card->follows != 0 ? "The selected particle's last collision"
                                                 : "The last collision between two particles "
                                                   "(select one to follow it)");
@@ -130,9 +135,15 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
     const ImU32 faint = ImGui::GetColorU32(ImGuiCol_Border);
     draw.AddRect(at, ImVec2(at.x + side, at.y + side), faint);
     const ImVec2 centre(at.x + 0.5f * side, at.y + 0.5f * side);
-    draw.AddLine(ImVec2(at.x, centre.y), ImVec2(at.x + side, centre.y), faint);
-    draw.AddLine(ImVec2(centre.x, at.y), ImVec2(centre.x, at.y + side), faint);
     const float font = ImGui::GetFontSize();
+    // The axes dashed, under the arrows: an arrow along one (a total along x in an oblique
+    // collision) is drawn whole over the dashes and reads as an arrow, not as the axis.
+    const float dash = 0.3f * font;
+    for (float t = 0.f; t < side; t += 2.f * dash) {
+        const float end = std::min(side, t + dash);
+        draw.AddLine(ImVec2(at.x + t, centre.y), ImVec2(at.x + end, centre.y), faint);
+        draw.AddLine(ImVec2(centre.x, at.y + t), ImVec2(centre.x, at.y + end), faint);
+    }
     const float head = 0.45f * font;
     std::vector<Vec2> sizes;
     for (const MomentaDiagram::Arrow& a : arrows) {

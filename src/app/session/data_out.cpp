@@ -67,11 +67,16 @@ std::string tableText(cmd::DataTable table, csv::Separator separator, const Worl
             return timeSeriesTable(data.run(), !world.def().gravity.isZero(), separator,
                                    world.rotationInUse(), axes, rateWindow);
         case cmd::DataTable::Trajectories:
-            return trajectoryTable(data.trajectory(), separator, world.rotationInUse(), axes);
         case cmd::DataTable::Collisions:
             break;
     }
-    return collisionTable(data.collisions(), separator, axes);
+    // In the box they were recorded in: a scene opened since keeps them (y up counts from
+    // their floor, not the new box's).
+    const Axes recorded{axes.yUp, data.recordedHeight()};
+    if (table == cmd::DataTable::Trajectories) {
+        return trajectoryTable(data.trajectory(), separator, data.recordedRotation(), recorded);
+    }
+    return collisionTable(data.collisions(), separator, recorded);
 }
 
 namespace {

@@ -3,15 +3,6 @@
 #include <algorithm>
 
 namespace psb::app {
-void DataRecorder::restart() {
-    run_.clear();
-    runStride_ = 1;
-    runSkipped_ = 0;
-    stop();
-    trajectory_ = Trajectory();
-    collisions_.clear();
-}
-
 void DataRecorder::restartRun() {
     run_.clear();
     runStride_ = 1;
@@ -50,6 +41,8 @@ void DataRecorder::start(const World& world, std::vector<ParticleId> ids, int ev
     trajectory_ = Trajectory(ids);
     collisions_.clear();
     stopReason_.clear();
+    recordedHeight_ = world.def().height;
+    recordedRotation_ = world.rotationInUse();
     recording_ = true;
     stepsToSample_ = every_;
     trajectory_.record(world);

@@ -7,7 +7,9 @@
 // Records follow the world's history: when its clock goes back (an undo, a reset, carrying on
 // from a past frame) what was recorded after the new time is dropped, so a table never holds
 // two futures. A recording that has stopped is over: it stays whole, to export, whatever the
-// world's clock does after, until the next recording starts (only the run's series follows).
+// world's clock does after, until the next recording starts (only the run's series follows);
+// a scene opened stops it and keeps it too, with the box it was recorded in (its heights count
+// from that box's floor).
 
 #include <cstddef>
 #include <optional>
@@ -32,10 +34,9 @@ class DataRecorder {
     /// Steps between trajectory samples: 1 (every step) to this.
     static constexpr int kMaxEvery = 1000;
 
-    /// A new scene: the run's series starts over and recording stops.
-    void restart();
-    /// The same scene run again (Restart): the run's series starts over and recording stops;
-    /// what was recorded stays, to export, until the next recording starts.
+    /// A world put in place (a scene opened, Restart, an undo to another scene): the run's
+    /// series starts over and recording stops; what was recorded stays, to export, until the
+    /// next recording starts (a preset's key dropped it without a word).
     void restartRun();
     /// A sample of the run (Monitor::stepped, Monitor::frameDone), appended to the run's
     /// series; at the same time as the last sample (paused), in its place. One earlier than the
@@ -64,6 +65,10 @@ class DataRecorder {
     [[nodiscard]] const Trajectory& trajectory() const { return trajectory_; }
     [[nodiscard]] const std::vector<Collision>& collisions() const { return collisions_; }
     [[nodiscard]] int every() const { return every_; }
+    /// The box the recording was made in: its height, metres (y up counts from its floor), and
+    /// whether its discs turned (the trajectories' ω column). A scene opened since keeps them.
+    [[nodiscard]] double recordedHeight() const { return recordedHeight_; }
+    [[nodiscard]] bool recordedRotation() const { return recordedRotation_; }
 
   private:
     void dropRunAfter(double time);
@@ -78,6 +83,8 @@ class DataRecorder {
     int stepsToSample_ = 0;
     Trajectory trajectory_;
     std::vector<Collision> collisions_;
+    double recordedHeight_ = 0.0;
+    bool recordedRotation_ = false;
     std::string stopReason_;
 };
 

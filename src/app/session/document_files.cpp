@@ -157,10 +157,9 @@ void Document::handle(const cmd::Restart&, Context& x) {
     // The set-up stays the one shared with the document (and the scene as loaded with undo).
     const std::shared_ptr<const World> target = setup;
     const bool wasEdited = editedSinceSetup;
-    const bool wasRecording = x.instruments.data.recording();
     world = World(*target);
     ++generation;  // views keyed to particles (trails) start over
-    x.startOver.world(*this, true, true);
+    x.startOver.world(*this, true);
     setup = target;
     editedSinceSetup = wasEdited;
     // Back to the scene exactly as its file has it: nothing is unsaved. Any other set-up keeps
@@ -172,11 +171,6 @@ void Document::handle(const cmd::Restart&, Context& x) {
                   (asLoaded ? "the scene as it opened" : "the set-up as Play last started it") +
                   " (" + std::to_string(world.size()) +
                   " particles, t = " + quantity(world.time(), "s") + ")");
-    if (wasRecording) {
-        x.notices.say(
-            "Recording stopped: what it recorded stays in the Data section to export until X "
-            "records again");
-    }
 }
 
 void Document::handle(const cmd::Revert&, Context& x) {

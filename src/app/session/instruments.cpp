@@ -92,16 +92,11 @@ void Instruments::handle(const cmd::SetRecording& c, Context& x) {
                       data.every() == 1 ? "" : "s"));
 }
 
-void Instruments::startOver(const World& world, bool newScene, bool keepRecorded,
-                            const ObservablesSample& first) {
+void Instruments::startOver(const World& world, bool newScene, const ObservablesSample& first) {
     lastCollision.clear();
     stopwatch.reset();
     if (!newScene) return;
-    if (keepRecorded) {
-        data.restartRun();
-    } else {
-        data.restart();
-    }
+    data.restartRun();
     // The run's first row: the world as it starts. The ruler's reading stays (a restart, a
     // revert, an undo) unless the box changed size; a scene opened lays it anew (StartOver).
     data.sample(first);

@@ -45,12 +45,11 @@ struct Instruments {
     void handle(const cmd::SetRecording& c, Context& x);
 
     /// A world put in place (`world`; a scene opened, an undo): the card and the stopwatch
-    /// start over. A new scene (`newScene`) starts the run's series over too, with `first` as
-    /// its first row, and keeps the ruler where it is unless the box changed size (a scene
-    /// opened lays it anew: StartOver::scene); a Restart (`keepRecorded`) keeps what was
-    /// recorded, to export.
-    void startOver(const World& world, bool newScene, bool keepRecorded,
-                   const ObservablesSample& first);
+    /// start over. A new scene (`newScene`: opened, restarted, reverted) starts the run's
+    /// series over too, with `first` as its first row, stops a recording and keeps what it
+    /// recorded, to export, and keeps the ruler where it is unless the box changed size (a
+    /// scene opened lays it anew: StartOver::scene).
+    void startOver(const World& world, bool newScene, const ObservablesSample& first);
     /// Whether the card follows the collisions of `world` (shown, or a world of few particles).
     [[nodiscard]] static bool cardListens(bool cardShown, const World& world) {
         return LastCollision::listening(cardShown, world.size());

@@ -85,8 +85,8 @@ void LastCollision::follow(std::optional<ParticleId> selected) {
     card_->follows = selected ? particleNumber(*selected) : 0;
 }
 
-void LastCollision::dropAfter(double time) {
-    if (card_ && card_->collision.time > time) {
+void LastCollision::dropAfter(double time, bool viewing) {
+    if (card_ && card_->collision.time > time && !viewing) {
         ahead_ = std::move(card_);
         card_.reset();
     } else if (!card_ && ahead_ && ahead_->collision.time <= time) {

@@ -59,11 +59,14 @@ class LastCollision {
     /// The selection changed to `selected`: a card of another particle's collision (or, with
     /// none selected, of a wall's) is cleared; the selected particle is put first.
     void follow(std::optional<ParticleId> selected);
-    /// The world's clock is at `time`. Gone back before the card's collision (an undo, a step
-    /// back, a restart), the card never happened yet: it is put aside, and comes back when the
-    /// clock passes it again through the same history (stepping forward through the recorded
-    /// frames). A step of the world (heard) makes a new history and forgets it.
-    void dropAfter(double time);
+    /// The world's clock is at `time`, a recorded frame shown when `viewing`. Stepping back
+    /// through the recorded frames (viewing) keeps the card: its collision is still in the
+    /// history shown, a step or two after the frame (the lesson steps to the moment of impact;
+    /// the card went, and the panel's layout jumped under the pointer). Gone back before it
+    /// otherwise (an undo, carrying on from a past frame), the card never happened yet: it is
+    /// put aside, and comes back when the clock passes it again through the same history. A
+    /// step of the world (heard) makes a new history and forgets it.
+    void dropAfter(double time, bool viewing = false);
     void clear() {
         card_.reset();
         ahead_.reset();

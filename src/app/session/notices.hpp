@@ -36,6 +36,12 @@ class Notices {
     }
     /// Anything else (shown only, or under a topic).
     void add(Notice notice) { notices_.push_back(std::move(notice)); }
+    /// Shown and logged after all else said until the app takes them: the message line shows
+    /// the last two, and what a command did by the way must not be pushed off it by what it
+    /// says of itself (a preset's two lines hid "Recording stopped").
+    void sayLast(std::string text, Notice::Level level = Notice::Level::Info) {
+        last_.push_back({level, std::move(text), true, true});
+    }
     /// Messages name the panel's button, not the key: the user's hands are on a touch screen
     /// (a page on a phone or a tablet, SessionOptions::touch, cmd::SetTouch).
     bool touch = false;
@@ -47,11 +53,15 @@ class Notices {
     [[nodiscard]] std::vector<Notice> take() {
         std::vector<Notice> out;
         out.swap(notices_);
+        for (Notice& n : last_)
+            out.push_back(std::move(n));
+        last_.clear();
         return out;
     }
 
   private:
     std::vector<Notice> notices_;
+    std::vector<Notice> last_;  ///< sayLast's
 };
 
 }  // namespace psb::app

@@ -265,7 +265,7 @@ void Session::update(double realSeconds, double now, double budgetMs) {
     tools_.hold(doc_.world, history_.timeline, now, view_.camera());
     tools_.checkSelection(doc_.world, notices_);
     instruments_.lastCollision.follow(tools_.selection.id());
-    instruments_.lastCollision.dropAfter(doc_.world.time());
+    instruments_.lastCollision.dropAfter(doc_.world.time(), history_.viewing.has_value());
     // A past frame shown is neither the present nor a new sample. At a sample's instant (paused
     // there) the sample is the world as drawn, edits before Play included.
     if (monitor_.frameDone(doc_.world, !history_.viewing)) {

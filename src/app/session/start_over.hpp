@@ -25,8 +25,9 @@ struct StartOver {
 
     /// `doc`'s world was put in place (a new scene, or an undo within the scene when `newScene`
     /// is false): the tools, the recorded past, the clock, the monitor and the instruments start
-    /// over from it. A Restart (`keepRecorded`) keeps what the Data section recorded, to export.
-    void world(const Document& doc, bool newScene, bool keepRecorded = false);
+    /// over from it. A new scene stops a recording and keeps what it recorded, to export, and
+    /// says so.
+    void world(const Document& doc, bool newScene);
     /// `doc` holds a scene just opened: everything starts over from it, new particles and
     /// obstacles follow its scale, and the view fits its box.
     void scene(const Document& doc);

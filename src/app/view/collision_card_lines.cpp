@@ -102,4 +102,12 @@ std::vector<std::string> collisionCardLines(const CollisionCardText& text) {
     return lines;
 }
 
+std::string cardAhead(const CollisionCard& card, double shownTime) {
+    const double ahead = card.collision.time - shownTime;
+    // Closer than the clock's rounding is the collision's own frame (the exact mode's instant
+    // falls inside one).
+    if (!(ahead > 1e-9)) return {};
+    return "The frame shown is " + quantity(ahead, "s") + " before it";
+}
+
 }  // namespace psb::app

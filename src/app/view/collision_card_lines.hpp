@@ -31,6 +31,11 @@ struct CollisionCardText {
 /// In `axes` (the y up option).
 [[nodiscard]] CollisionCardText collisionCardText(const CollisionCard& card, const Axes& axes = {});
 
+/// Where the frame shown (the world's clock at `shownTime`, s) is before the card's collision
+/// (stepped back through the recorded frames to read the moment of impact, where the card
+/// stays): "The frame shown is 0.10 s before it"; empty at or after it.
+[[nodiscard]] std::string cardAhead(const CollisionCard& card, double shownTime);
+
 /// The card as lines of text ("v 1: (2.00, 0) m/s -> (-2.50, 0) m/s"), for the screenshot's
 /// text file.
 [[nodiscard]] std::vector<std::string> collisionCardLines(const CollisionCardText& text);

@@ -97,7 +97,12 @@ MomentaDiagram momentaDiagram(const CollisionCard& card) {
     if (alongX != alongY) {
         constexpr double kRow = 0.16;  // sides of the square between rows
         for (auto* half : {&d.before, &d.after}) {
-            const double first = -0.5 * kRow * static_cast<double>(half->size() - 1);
+            // Centred on the axis, but never on it: an arrow along the axis's line was lost in
+            // it (the lesson's "p 2" before, three rows with the middle one on the axis), so
+            // an odd number of rows is moved half a row down.
+            const double rows = static_cast<double>(half->size());
+            const double first =
+                -0.5 * kRow * (rows - 1.0) + (half->size() % 2 == 1 ? 0.5 * kRow : 0.0);
             for (std::size_t k = 0; k < half->size(); ++k) {
                 const double row = first + kRow * static_cast<double>(k);
                 (*half)[k].offset = alongX ? Vec2(0.0, row) : Vec2(row, 0.0);

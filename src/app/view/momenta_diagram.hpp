@@ -30,7 +30,8 @@ struct MomentaDiagram {
         std::string label;  ///< "p 1", "p 2", "total p"
         /// Added to both ends on screen, in sides of the square: when every momentum lies on
         /// one axis (a head-on collision), the arrows would lie on top of each other, so each
-        /// gets a row of its own across that axis, as in PhET's one-dimensional diagram.
+        /// gets a row of its own across that axis, as in PhET's one-dimensional diagram; no
+        /// row is the axis itself, where the axis's line would hide the arrow.
         Vec2 offset = Vec2::Zero();
     };
     std::vector<Arrow> before, after;

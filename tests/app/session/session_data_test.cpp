@@ -344,21 +344,60 @@ TEST_F(SessionData, RestartStopsRecordingAndKeepsWhatItRecordedToExport) {
     s.apply(cmd::Restart{});
     EXPECT_FALSE(s.data().recording());
     EXPECT_EQ(s.data().trajectory().samples().size(), samples);
-    EXPECT_TRUE(said(s.takeNotices(), "Recording stopped: what it recorded stays"));
+    EXPECT_TRUE(said(s.takeNotices(), "Recording stopped: its "));
     EXPECT_LE(s.data().run().size(), 1u);  // the plots' run starts over
     run(s, 5);
     EXPECT_EQ(s.data().trajectory().samples().size(), samples);  // not recording, not dropped
     EXPECT_NE(s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma), "");
 }
 
-TEST_F(SessionData, ANewSceneStopsRecordingAndClearsIt) {
-    Session s = session();
-    s.apply(cmd::SetRecording{true, 1});
-    run(s, 10);
-    s.apply(cmd::NewScene{10.0, 4.0, 0.0, true});
-    EXPECT_FALSE(s.data().recording());
-    EXPECT_TRUE(s.data().trajectory().samples().empty());
-    EXPECT_LE(s.data().run().size(), 1u);
+TEST_F(SessionData, APresetsKeyWhileRecordingSaysSoAndKeepsWhatWasRecorded) {
+    // A trial at 200 %: a preset's number key while the Data section recorded stopped the
+    // recording and dropped what it held, without a word. A scene opened (a preset, a new
+    // scene) stops it, says so in the message line, and keeps it to export as it was recorded:
+    // its heights counted from the floor of the box it was recorded in, not the new one's.
+    for (const bool preset : {true, false}) {
+        SessionOptions o = options();
+        o.presets = testPresets();
+        Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
+        s.apply(cmd::SetRecording{true, 1});
+        run(s, 10);
+        const std::size_t samples = s.data().trajectory().samples().size();
+        const std::size_t hits = s.data().collisions().size();
+        ASSERT_GT(samples, 10u);
+        const std::string trajectories =
+            s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma);
+        const std::string collisions =
+            s.tableText(cmd::DataTable::Collisions, csv::Separator::Comma);
+        const double height = s.world().def().height;
+        (void)s.takeNotices();
+        if (preset) {
+            s.apply(cmd::OpenPreset{cmd::presetForDigit(2, true)});  // Shift+2: the ramp
+        } else {
+            s.apply(cmd::NewScene{10.0, 4.0, 0.0, true});
+        }
+        SCOPED_TRACE(preset ? "the ramp's key" : "a new scene");
+        ASSERT_NE(s.world().def().height, height) << "the case: a box of another height";
+        EXPECT_FALSE(s.data().recording());
+        EXPECT_EQ(s.data().trajectory().samples().size(), samples);
+        EXPECT_EQ(s.data().collisions().size(), hits);
+        // Said last: the message line shows the last two lines, and a preset says two of its
+        // own ("Opened ...", "Preset 12 of 14 ...") that pushed it off.
+        const std::vector<Notice> notices = s.takeNotices();
+        ASSERT_FALSE(notices.empty());
+        EXPECT_EQ(notices.back().text.rfind(
+                      "Recording stopped: its " + std::to_string(samples) + " samples", 0),
+                  0u)
+            << notices.back().text;
+        EXPECT_EQ(s.tableText(cmd::DataTable::Trajectories, csv::Separator::Comma), trajectories);
+        EXPECT_EQ(s.tableText(cmd::DataTable::Collisions, csv::Separator::Comma), collisions);
+        EXPECT_LE(s.data().run().size(), 1u) << "the plots' run starts over";
+        // Not recording, nothing said: a scene opened says nothing of a recording.
+        s.apply(cmd::OpenPreset{0});
+        for (const Notice& n : s.takeNotices())
+            EXPECT_EQ(n.text.find("Recording"), std::string::npos) << n.text;
+        EXPECT_EQ(s.data().trajectory().samples().size(), samples) << "still there to export";
+    }
 }
 
 TEST_F(SessionData, TheTimeSeriesFirstRowIsTheSetUpAsPlayStartsIt) {

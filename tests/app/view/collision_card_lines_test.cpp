@@ -54,5 +54,12 @@ TEST(CollisionCardLines, AWallNamesItsSideAndShowsOneParticle) {
     EXPECT_FALSE(has(lines, "Total momentum"));
 }
 
+TEST(CollisionCardText, AFrameShownBeforeTheCollisionSaysHowLongBefore) {
+    const CollisionCard card = headOnCard();  // at t = 2/3 s
+    EXPECT_EQ(cardAhead(card, 0.5), "The frame shown is 167 ms before it");
+    EXPECT_EQ(cardAhead(card, 2.0 / 3.0), "") << "its own frame";
+    EXPECT_EQ(cardAhead(card, 0.9), "") << "after it";
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -132,12 +132,13 @@ TEST(MomentaDiagram, TheScaleIsRoundAndEveryTipKeepsItsMargin) {
 
 TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
     const MomentaDiagram d = momentaDiagram(headOnCard());
-    // Three rows across x, the first above the middle, the last below, the same after.
+    // Three rows across x, in order down the square, the first above the axis, the same after.
     EXPECT_LT(d.before[0].offset.y(), 0.0);
-    EXPECT_EQ(d.before[1].offset, Vec2(0, 0));
-    EXPECT_GT(d.before[2].offset.y(), 0.0);
+    EXPECT_LT(d.before[0].offset.y(), d.before[1].offset.y());
+    EXPECT_LT(d.before[1].offset.y(), d.before[2].offset.y());
     EXPECT_EQ(d.after[2].offset, d.before[2].offset);
-    EXPECT_EQ(d.fromPixels(d.before[1], 200.0), d.toPixels(d.before[0].to, 200.0));
+    // Tip to tail along x: the second starts straight below the first's tip.
+    EXPECT_EQ(d.fromPixels(d.before[1], 200.0).x(), d.toPixels(d.before[0], 200.0).x());
     // Along y (a vertical collision): the rows are across y.
     CollisionCard vertical = headOnCard();
     Collision& c = vertical.collision;
@@ -150,6 +151,39 @@ TEST(MomentaDiagram, AHeadOnCollisionsArrowsGetARowEachAnOblique2DOneNone) {
     c.aBefore = Vec2(1.0, 1.0);
     for (const MomentaDiagram::Arrow& a : momentaDiagram(vertical).before)
         EXPECT_EQ(a.offset, Vec2(0, 0));
+}
+
+TEST(MomentaDiagram, NoArrowOfAHeadOnCollisionLiesOnTheAxis) {
+    // Lesson 1's card at 200 %: "p 2" before, in the middle of three rows, lay on the square's
+    // horizontal axis, its line drawn over it and lost in it. Every row keeps a tenth of a
+    // head-on diagram's row spacing (0.16 of the side) clear of the axis, for the pair (three
+    // rows) and for a wall (two), along x and along y.
+    for (const bool wall : {false, true}) {
+        for (const bool vertical : {false, true}) {
+            CollisionCard card = headOnCard();
+            Collision& c = card.collision;
+            if (wall) {
+                c.with = Collision::With::Wall;
+                card.massB = 0.0;
+                card.numberB = 0;
+                c.bBefore = c.bAfter = Vec2::Zero();
+                c.aAfter = -c.aBefore;
+            }
+            if (vertical) {
+                for (Vec2* v : {&c.aBefore, &c.bBefore, &c.aAfter, &c.bAfter})
+                    *v = Vec2(0.0, v->x());
+            }
+            const MomentaDiagram d = momentaDiagram(card);
+            for (const auto* half : {&d.before, &d.after}) {
+                for (const MomentaDiagram::Arrow& a : *half) {
+                    const double across = vertical ? a.offset.x() : a.offset.y();
+                    EXPECT_GE(std::abs(across), 0.016)
+                        << a.label << (wall ? ", wall" : ", pair")
+                        << (vertical ? ", along y" : ", along x") << ": on the axis";
+                }
+            }
+        }
+    }
 }
 
 TEST(MomentaDiagram, AWallChangesTheOneParticlesMomentum) {
