@@ -12,6 +12,7 @@
 #include "app.hpp"
 #include "render/screenshot.hpp"
 #include "view/box_area.hpp"
+#include "view/frame_view.hpp"
 
 namespace psb::app {
 
@@ -68,7 +69,7 @@ void App::startVideo(const VideoSettings& settings, VideoRecorder::Pacing pacing
     videoStart_ = now();
     tell(std::string("Recording video (") + toString(settings.format) + ", " +
          sizeText(area.w, area.h) + ", " + std::to_string(fps) + " frames/s) to " +
-         video_->file().string() + ": Ctrl+R stops");
+         video_->file().string() + ": " + videoStopHint(session_->touch()));
     updateVideoStatus();
 }
 
@@ -112,9 +113,10 @@ void App::captureVideo() {
     }
     const SDL_Rect area = videoArea(videoSettings_);
     if (area.w != videoArea_.w || area.h != videoArea_.h) {
-        stopVideo("Recording stopped: the recorded area changed size from " +
-                  sizeText(videoArea_.w, videoArea_.h) + " to " + sizeText(area.w, area.h) +
-                  " (Ctrl+R records anew)");
+        stopVideo(
+            "Recording stopped: the recorded area changed size from " +
+            sizeText(videoArea_.w, videoArea_.h) + " to " + sizeText(area.w, area.h) +
+            (session_->touch() ? " (Video: Record video records anew)" : " (Ctrl+R records anew)"));
         return;
     }
     videoArea_ = area;

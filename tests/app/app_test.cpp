@@ -566,6 +566,33 @@ TEST_F(AppTest, CtrlRRecordsTheBoxsSideOfTheWindowAndCtrlRAgainSavesIt) {
     EXPECT_FALSE(app.lastFrame().recordingMark.has_value());
 }
 
+TEST_F(AppTest, AfterAFingerTheVideosMessageAndMarkNameThePanelsButtonNotCtrlR) {
+    // A laptop's touch screen: the panel's Record video starts it (here Ctrl+R, the same
+    // command), and what is said names the button that stops it.
+    if (const auto why = videoFormatProblem(VideoFormat::Mp4)) GTEST_SKIP() << *why;
+    App app(options());
+    SDL_Event finger{};
+    finger.type = SDL_FINGERDOWN;
+    finger.tfinger.x = finger.tfinger.y = 0.9f;
+    app.processEvent(finger);
+    finger.type = SDL_FINGERUP;
+    app.processEvent(finger);
+    app.frame(0.0);
+    ASSERT_TRUE(app.session().touch());
+    key(app, SDLK_r, KMOD_LCTRL);
+    app.frame(0.0);
+    ASSERT_TRUE(app.lastFrame().recordingMark.has_value());
+    EXPECT_EQ(app.lastFrame().recordingMark->label, "REC 0:00 MP4 - Video: Stop video");
+    const std::vector<std::string> said = app.messages();
+    EXPECT_TRUE(std::any_of(said.begin(), said.end(), [](const std::string& m) {
+        return m.starts_with("Recording video (MP4, ") && m.ends_with(": Video: Stop video");
+    })) << ::testing::PrintToString(said);
+    for (const std::string& m : said)
+        EXPECT_EQ(m.find("Ctrl+R"), std::string::npos) << m;
+    key(app, SDLK_r, KMOD_LCTRL);
+    app.frame(0.0);
+}
+
 TEST_F(AppTest, AVideoStillRecordingIsCompletedWhenTheAppCloses) {
     if (const auto why = videoFormatProblem(VideoFormat::Gif)) GTEST_SKIP() << *why;
     AppOptions o = options();

@@ -108,6 +108,8 @@ class ControlPanel {
     void fileError(const Session& s);
     /// The dialog the session has open, as a modal window (section_dialogs.cpp).
     void dialog(const Session& s);
+    /// A dialog's line of `keys` (Enter, Esc), marked "dialog keys"; none on a touch screen.
+    void keysLine(const Session& s, const char* keys);
     void physics(const Session& s);
     /// The stopwatch's row in the Time section.
     void stopwatch(const Session& s);

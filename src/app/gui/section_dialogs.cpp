@@ -49,6 +49,13 @@ void errorLine(const std::string& error, Theme theme) {
 
 }  // namespace
 
+void ControlPanel::keysLine(const Session& s, const char* keys) {
+    // A touch screen has the dialog's buttons only.
+    if (s.touch()) return;
+    widgets::wrappedDisabled(keys);
+    mark("dialog keys", keys);
+}
+
 void ControlPanel::dialog(const Session& s) {
     const Dialog& d = s.dialog();
     const int kind = static_cast<int>(d.kind);
@@ -181,7 +188,7 @@ void ControlPanel::dialog(const Session& s) {
                 if (button("Stay", "dialog Cancel") || escape) {
                     out_.emplace_back(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Cancel});
                 }
-                widgets::wrappedDisabled("Enter: Quit, Esc: Stay");
+                keysLine(s, "Enter: Quit, Esc: Stay");
                 break;
             }
             widgets::wrapped("Save the changes to \"" + s.meta().name + "\" before quitting?");
@@ -200,7 +207,7 @@ void ControlPanel::dialog(const Session& s) {
             if (button("Cancel", "dialog Cancel") || escape) {
                 out_.emplace_back(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Cancel});
             }
-            widgets::wrappedDisabled("Enter: Save, D: Discard, Esc: Cancel");
+            keysLine(s, "Enter: Save, D: Discard, Esc: Cancel");
             break;
         }
         case Dialog::Kind::None:

@@ -68,7 +68,7 @@ void Document::open(World w, SceneInfo m, SceneFile f, StartOver& startOver, Not
     startOver.scene(*this);
     if (unsaved) {
         notices.say("The unsaved changes to " + (was.empty() ? std::string("the scene") : was) +
-                        " were replaced: Ctrl+Z brings them back",
+                        " were replaced: " + notices.undoKey() + " brings them back",
                     Notice::Level::Warning);
     }
 }

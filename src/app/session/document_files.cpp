@@ -224,7 +224,8 @@ void Document::handle(const cmd::AskSaveAs&, Context& x) {
     dialog.proposal = saveProposal(x.options);
     dialog.quitAfterSave = quitAfter;
     dialog.download = x.options.inPage;
-    x.notices.say("Save as: type a file name, Enter saves, Esc cancels (" +
+    x.notices.say(std::string("Save as: type a file name, ") +
+                  x.notices.key("Enter saves, Esc cancels", "then Save or Cancel") + " (" +
                   (dialog.download ? std::string("the browser downloads it")
                                    : "folder " + dialog.proposal.parent_path().string()) +
                   ")");
@@ -333,7 +334,8 @@ void Document::quit(Context& x, bool ask) {
         x.notices.say("Unsaved changes to " + meta.name + ": Save, Discard or Cancel",
                       Notice::Level::Warning);
     } else {
-        x.notices.say("Quit Particle Sandbox? Enter quits, Esc stays");
+        x.notices.say(std::string("Quit Particle Sandbox? ") +
+                      x.notices.key("Enter quits, Esc stays", "Quit or Stay"));
     }
 }
 

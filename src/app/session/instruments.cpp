@@ -88,8 +88,9 @@ void Instruments::handle(const cmd::SetRecording& c, Context& x) {
         ids.size() == 1
             ? fmt("particle %llu", static_cast<unsigned long long>(particleNumber(ids[0])))
             : fmt("all %zu particles", ids.size());
-    x.notices.say(fmt("Recording %s every %d step%s (X stops)", who.c_str(), data.every(),
-                      data.every() == 1 ? "" : "s"));
+    x.notices.say(fmt("Recording %s every %d step%s (%s)", who.c_str(), data.every(),
+                      data.every() == 1 ? "" : "s",
+                      x.notices.key("X stops", "Data: Stop recording")));
 }
 
 void Instruments::startOver(const World& world, bool newScene, const ObservablesSample& first) {

@@ -35,13 +35,12 @@ double LabStopwatch::reading(double now) const {
     return (stoppedAt_ ? *stoppedAt_ : now) - *start_;
 }
 
-std::string stopwatchLine(const LabStopwatch& watch, double now) {
+std::string stopwatchLine(const LabStopwatch& watch, double now, bool touch) {
     if (!watch.used()) return {};
     char buf[160];
     if (watch.beforeStart(now)) {
-        std::snprintf(buf, sizeof buf,
-                      "Stopwatch: time went back %.3f s before its start (Shift+U resets)",
-                      -watch.reading(now));
+        std::snprintf(buf, sizeof buf, "Stopwatch: time went back %.3f s before its start (%s)",
+                      -watch.reading(now), touch ? "Time: stopwatch Reset" : "Shift+U resets");
         return buf;
     }
     std::snprintf(buf, sizeof buf, "Stopwatch %.3f s%s", watch.reading(now),

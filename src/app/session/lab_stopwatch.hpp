@@ -42,7 +42,8 @@ class LabStopwatch {
 };
 
 /// The stopwatch as the HUD shows it: "Stopwatch 1.234 s", then "(stopped)" or the last lap;
-/// empty when not used.
-[[nodiscard]] std::string stopwatchLine(const LabStopwatch& watch, double now);
+/// empty when not used. Time gone back before its start names what resets it: Shift+U, or on a
+/// touch screen (`touch`: Session::touch) the panel's Reset.
+[[nodiscard]] std::string stopwatchLine(const LabStopwatch& watch, double now, bool touch = false);
 
 }  // namespace psb::app

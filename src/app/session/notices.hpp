@@ -49,6 +49,8 @@ class Notices {
     [[nodiscard]] const char* key(const char* key, const char* button) const {
         return touch ? button : key;
     }
+    /// Undo's key, or the panel's Undo (in Time) on a touch screen.
+    [[nodiscard]] const char* undoKey() const { return key("Ctrl+Z", "Time: Undo"); }
     /// What was said since the last call.
     [[nodiscard]] std::vector<Notice> take() {
         std::vector<Notice> out;

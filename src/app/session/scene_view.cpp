@@ -293,15 +293,18 @@ void SceneView::handle(const cmd::SetUiScale& c, Context& x) {
     const bool said = c.scale != options_.uiScale || !c.automatic;
     options_.uiScale = c.scale;
     options_.uiScaleAutomatic = c.automatic;
-    // The automatic scale follows the window by itself: a resize says nothing.
+    // The automatic scale follows the window by itself: a resize says nothing. The page's
+    // browser keeps Ctrl+0 for its zoom; a touch screen has no keys: the panel's Auto.
+    const bool keys = !inPage_ && !x.notices.touch;
     if (said) {
         x.notices.add({Notice::Level::Info,
                        fmt("UI scale %.0f %%%s", 100.0 * c.scale,
                            c.automatic ? (inPage_ ? " (automatic: by the page's height)"
-                                                  : " (automatic: by the window's "
-                                                    "height; Ctrl+0)")
-                           : inPage_   ? " (Show: Auto makes it automatic)"
-                                       : " (Ctrl+0: automatic)"),
+                                          : keys  ? " (automatic: by the window's "
+                                                    "height; Ctrl+0)"
+                                                  : " (automatic: by the window's height)")
+                           : keys      ? " (Ctrl+0: automatic)"
+                                       : " (Show: Auto makes it automatic)"),
                        true, true, "ui scale"});
     }
 }
@@ -309,11 +312,11 @@ void SceneView::handle(const cmd::SetUiScale& c, Context& x) {
 void SceneView::handle(const cmd::SetTheme& c, Context& x) {
     if (c.theme == options_.theme) return;
     options_.theme = c.theme;
-    // The browser keeps Ctrl+T for a new tab.
-    const char* key = inPage_ ? "" : "; Ctrl+T";
-    x.notices.say(c.theme == Theme::Light
-                      ? fmt("Theme: light (high contrast, for projectors%s)", key)
-                      : fmt("Theme: dark%s", inPage_ ? "" : " (Ctrl+T)"));
+    // The browser keeps Ctrl+T for a new tab; a touch screen has no keys.
+    const bool keys = !inPage_ && !x.notices.touch;
+    x.notices.say(c.theme == Theme::Light ? fmt("Theme: light (high contrast, for projectors%s)",
+                                                keys ? "; Ctrl+T" : "")
+                                          : fmt("Theme: dark%s", keys ? " (Ctrl+T)" : ""));
 }
 
 void SceneView::handle(const cmd::SetTrails& c, Context& x) {

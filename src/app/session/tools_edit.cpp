@@ -27,7 +27,9 @@ void Tools::handle(const cmd::Select& c, Context& x) {
 void Tools::handle(const cmd::OpenEdit&, Context& x) {
     const auto id = selection.id();
     if (!id) {
-        x.notices.say("Click a particle to select it, then Enter edits it");
+        x.notices.say(x.notices.key("Click a particle to select it, then Enter edits it",
+                                    "Tap a particle to select it, then edit it in the panel's "
+                                    "Selected particle"));
         return;
     }
     prompt.open(x.doc.world.get(*id), x.view.axes(x.doc.world.def()));

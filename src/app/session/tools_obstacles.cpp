@@ -83,8 +83,8 @@ void Tools::obstacleRelease(Context& x) {
         selectedObstacle.reset();
         x.notices.log("Added obstacle " + std::to_string(index) + ": " +
                       describe(*p.obstacle, x.view.axes(x.doc.world.def())));
-        x.notices.say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") +
-                      " (Ctrl+Z undoes it)");
+        x.notices.say(std::string(p.obstacle->isPeg() ? "Peg placed" : "Wall drawn") + " (" +
+                      x.notices.undoKey() + " undoes it)");
         x.edit.userAction(p.obstacle->isPeg() ? "place peg" : "draw wall");
     } catch (const std::exception& e) {  // InvalidArgument: what the world refuses
         x.notices.say(std::string("Obstacle refused: ") + e.what(), Notice::Level::Warning);
@@ -131,7 +131,8 @@ bool Tools::obstacleMoveRelease(Context& x) {
     closePrompt();
     x.notices.log("Moved obstacle " + std::to_string(index) + ": " +
                   describe(*p.obstacle, x.view.axes(x.doc.world.def())));
-    x.notices.say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (Ctrl+Z puts it back)");
+    x.notices.say(std::string("Moved the ") + obstacleNoun(*p.obstacle) + " (" +
+                  x.notices.undoKey() + " puts it back)");
     x.edit.userAction(p.obstacle->isPeg() ? "move peg" : "move wall");
     return true;
 }
@@ -144,8 +145,10 @@ bool Tools::selectObstacleAt(Context& x) {
     const Obstacle& o = x.doc.world.obstacles()[*index];
     x.notices.log("Selected obstacle " + std::to_string(*index) + ": " +
                   describe(o, x.view.axes(x.doc.world.def())));
-    x.notices.say(std::string("Selected a ") + obstacleNoun(o) +
-                  ": Delete or Backspace removes it");
+    x.notices.say(std::string("Selected a ") + obstacleNoun(o) + ": " +
+                  x.notices.key("Delete or Backspace",
+                                o.isPeg() ? "Tools: Delete peg" : "Tools: Delete wall") +
+                  " removes it");
     return true;
 }
 
@@ -165,7 +168,8 @@ void Tools::removeObstacle(std::size_t index, Context& x) {
     }
     x.notices.log("Removed obstacle " + std::to_string(index) + ": " +
                   describe(o, x.view.axes(x.doc.world.def())));
-    x.notices.say(std::string("Removed the ") + obstacleNoun(o) + " (Ctrl+Z brings it back)");
+    x.notices.say(std::string("Removed the ") + obstacleNoun(o) + " (" + x.notices.undoKey() +
+                  " brings it back)");
     x.edit.userAction(o.isPeg() ? "remove peg" : "remove wall");
 }
 

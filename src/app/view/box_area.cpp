@@ -57,9 +57,13 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
     std::size_t lines = 0;
     for (const std::size_t n : most)
         lines += n;
-    if (folded) {  // the longer of the two notes
-        lines += std::max(wrapLines(font, {foldedChartsNote(true)}, width).size(),
-                          wrapLines(font, {foldedChartsNote(false)}, width).size());
+    if (folded) {  // the longest of the notes
+        std::size_t note = 0;
+        for (const bool open : {true, false})
+            for (const bool touch : {false, true})
+                note =
+                    std::max(note, wrapLines(font, {foldedChartsNote(open, touch)}, width).size());
+        lines += note;
     }
     lines += std::max(wrapLines(font, {labelsLeftOutNote(99, false)}, width).size(),
                       wrapLines(font, {labelsLeftOutNote(99, true)}, width).size());

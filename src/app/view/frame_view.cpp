@@ -103,15 +103,20 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
     return out;
 }
 
-std::string recordingLabel(const VideoStatus& video) {
+const char* videoStopHint(bool touch) {
+    return touch ? "Video: Stop video" : "Ctrl+R stops";
+}
+
+std::string recordingLabel(const VideoStatus& video, bool touch) {
     const auto whole = static_cast<long>(video.seconds);
     char buf[96];
-    std::snprintf(buf, sizeof buf, "REC %ld:%02ld %s - Ctrl+R stops", whole / 60, whole % 60,
-                  toString(video.format));
+    std::snprintf(buf, sizeof buf, "REC %ld:%02ld %s - %s", whole / 60, whole % 60,
+                  toString(video.format), videoStopHint(touch));
     return buf;
 }
 
-std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, double height) {
+std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, double height,
+                                       bool touch) {
     const Camera::ScreenBox b = camera.boxOnScreen(width, height);
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
     const bool visible = b.topLeft.x() + b.size.x() >= 0.0 && b.topLeft.x() <= w &&
@@ -130,7 +135,7 @@ std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width, doubl
     BoxMarkerView m;
     m.at = centre + std::min(tx, ty) * u;
     m.direction = u;
-    m.label = "box this way (F fits)";
+    m.label = touch ? "box this way (Show: Fit view)" : "box this way (F fits)";
     return m;
 }
 
@@ -165,7 +170,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (f.obstaclePreview && !f.obstaclePreview->isPeg()) {
         f.wallAngle = wallAngleLabel(f.obstaclePreview->a, f.obstaclePreview->b, session.camera());
     }
-    f.boxMarker = boxMarker(session.camera(), world.def().width, world.def().height);
+    f.boxMarker =
+        boxMarker(session.camera(), world.def().width, world.def().height, session.touch());
     f.periodic = periodicBoxView(world, session.camera());
     if (f.periodic && f.selected) {
         if (const std::optional<std::size_t> at = world.indexOf(f.selected->id)) {
@@ -188,7 +194,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (stats.video.recording) {
         // At the top of the side column (layoutPanels places it).
         RecordingMarkView mark;
-        mark.label = recordingLabel(stats.video);
+        mark.label = recordingLabel(stats.video, session.touch());
         f.recordingMark = mark;
     }
     std::uint64_t stillToDrop = 0;
@@ -208,7 +214,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     const auto readings = [&](const HudData& d) {
         std::vector<std::string> lines = hudLines(d);
         // The stopwatch where the eye is, and in screenshots and videos of the box.
-        if (std::string line = stopwatchLine(session.stopwatch(), session.world().time());
+        if (std::string line =
+                stopwatchLine(session.stopwatch(), session.world().time(), session.touch());
             !line.empty()) {
             lines.push_back(std::move(line));
         }
@@ -236,7 +243,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (sideColumnFolded(session, controls)) {
         // Said where the eye is: the charts asked for are not drawn over the box.
         for (std::string& line :
-             wrapLines(hudFont, {foldedChartsNote(session.controlsShown())}, hudRoom - 8)) {
+             wrapLines(hudFont, {foldedChartsNote(session.controlsShown(), session.touch())},
+                       hudRoom - 8)) {
             o.hud.push_back(std::move(line));
         }
     }
@@ -282,10 +290,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
                           : 0);
     const bool editing = session.prompt().active();
     if (f.selected && (!session.controlsShown() || editing)) {
-        o.inspector = inspectorPanel(hudFont,
-                                     inspectorLines(*f.selected, session.prompt(), true,
-                                                    world.rotationInUse(), session.axes()),
-                                     room);
+        o.inspector =
+            inspectorPanel(hudFont,
+                           inspectorLines(*f.selected, session.prompt(), true,
+                                          world.rotationInUse(), session.axes(), session.touch()),
+                           room);
     }
     // Long messages wrap within the room right of the control panel, beside the inspector when
     // that leaves them room; the newest messages that fit the band below the box whole are
@@ -363,10 +372,11 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
-        o.inspector = inspectorPanel(hudFont,
-                                     inspectorLines(*f.selected, session.prompt(), false,
-                                                    world.rotationInUse(), session.axes()),
-                                     room);
+        o.inspector =
+            inspectorPanel(hudFont,
+                           inspectorLines(*f.selected, session.prompt(), false,
+                                          world.rotationInUse(), session.axes(), session.touch()),
+                           room);
         req.inspector = textBoxSize(hudFont, o.inspector);
         f.layout = layoutPanels(req);
     }

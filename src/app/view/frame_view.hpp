@@ -140,11 +140,15 @@ struct FrameStats {
 /// another reading.
 [[nodiscard]] LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont);
 
-/// The recording mark's text: "REC 0:12 MP4 - Ctrl+R stops".
-[[nodiscard]] std::string recordingLabel(const VideoStatus& video);
+/// How a video being recorded is stopped: "Ctrl+R stops", or on a touch screen (`touch`:
+/// Session::touch) the panel's button, "Video: Stop video".
+[[nodiscard]] const char* videoStopHint(bool touch);
+/// The recording mark's text: "REC 0:12 MP4 - Ctrl+R stops" (videoStopHint).
+[[nodiscard]] std::string recordingLabel(const VideoStatus& video, bool touch = false);
 
-/// Where the box marker goes, or nullopt while any of the box [0, w] × [0, h] is on screen.
+/// Where the box marker goes, or nullopt while any of the box [0, w] × [0, h] is on screen. Its
+/// label names what fits the box back: the key F, or on a touch screen (`touch`) the panel's.
 [[nodiscard]] std::optional<BoxMarkerView> boxMarker(const Camera& camera, double width,
-                                                     double height);
+                                                     double height, bool touch = false);
 
 }  // namespace psb::app

@@ -18,9 +18,10 @@ std::string windowTitle(std::size_t particles, bool paused, const std::string& s
     return t;
 }
 
-std::string foldedChartsNote(bool controlsOpen) {
-    return controlsOpen ? "Charts folded away: no room beside the box (C folds the controls)"
-                        : "Charts folded away: no room beside the box (widen the window)";
+std::string foldedChartsNote(bool controlsOpen, bool touch) {
+    if (!controlsOpen) return "Charts folded away: no room beside the box (widen the window)";
+    return touch ? "Charts folded away: no room beside the box (<< folds the controls)"
+                 : "Charts folded away: no room beside the box (C folds the controls)";
 }
 
 std::string labelsLeftOutNote(std::size_t count, bool offWindow) {
@@ -47,7 +48,9 @@ std::vector<std::string> hudLines(const HudData& d) {
     std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
                   quantity(d.simTime, "s").c_str(), back, speed, d.particles,
                   d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "",
-                  d.recording && !d.forVideo ? " | REC (X stops)" : "");
+                  !d.recording || d.forVideo ? ""
+                  : d.touch                  ? " | REC (Data: Stop recording)"
+                                             : " | REC (X stops)");
     lines.emplace_back(buf);
     std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
                   quantity(d.kineticEnergy, "J").c_str(),

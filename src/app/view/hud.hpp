@@ -64,8 +64,9 @@ struct ProfileData {
 /// speed the steps cannot keep up with shows what is reached. `d.forVideo`: a video's.
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);
 /// The HUD's note while the side column's charts are folded away (sideColumnFits), with the
-/// way to get them back: fold the control panel while it is open, else widen the window.
-[[nodiscard]] std::string foldedChartsNote(bool controlsOpen);
+/// way to get them back: fold the control panel while it is open (its key, or on a touch
+/// screen its button), else widen the window.
+[[nodiscard]] std::string foldedChartsNote(bool controlsOpen, bool touch = false);
 /// The HUD's note while `count` labels (S) are left out: where others were in the way, or with
 /// no side of their disc in the window (`offWindow`), with what to do about it.
 [[nodiscard]] std::string labelsLeftOutNote(std::size_t count, bool offWindow);

@@ -25,6 +25,13 @@ void editLines(std::vector<std::string>& lines, const EditPrompt& prompt) {
     if (!prompt.error().empty()) lines.push_back("Refused: " + prompt.error());
 }
 
+/// How the prompt's fields are edited: its keys, or on a touch screen (whose keyboard has no Tab
+/// nor Esc) its Enter and a tap that leaves it.
+const char* editHint(bool touch) {
+    return touch ? "Edit  Enter: apply  tap empty space: cancel"
+                 : "Edit  Tab: next  Enter: apply  Esc: cancel";
+}
+
 }  // namespace
 
 SpinReading spinReading(const Particle& p, const Axes& axes) {
@@ -35,7 +42,7 @@ SpinReading spinReading(const Particle& p, const Axes& axes) {
 }
 
 std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt, bool readings,
-                                        bool rotation, const Axes& axes) {
+                                        bool rotation, const Axes& axes, bool touch) {
     char buf[160];
     std::vector<std::string> lines;
     const auto line = [&](const char* format, auto... values) {
@@ -50,7 +57,7 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
     line("Particle %llu", static_cast<unsigned long long>(particleNumber(p.id)));
     const bool editing = prompt.active() && prompt.target() == p.id;
     if (editing && !readings) {
-        lines.emplace_back("Edit  Tab: next  Enter: apply  Esc: cancel");
+        lines.emplace_back(editHint(touch));
         editLines(lines, prompt);
         return lines;
     }
@@ -79,11 +86,12 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
         line("inertia factor  k = %.3g (I = k m r\u00b2)", p.inertiaFactor);
     }
     if (!editing) {
-        lines.emplace_back("Enter: edit");
+        // No Enter on a touch screen: the panel's fields edit the particle.
+        lines.emplace_back(touch ? "Edit: the panel's Selected particle" : "Enter: edit");
         return lines;
     }
     lines.emplace_back("");
-    lines.emplace_back("Edit  Tab: next  Enter: apply  Esc: cancel");
+    lines.emplace_back(editHint(touch));
     editLines(lines, prompt);
     return lines;
 }

@@ -28,9 +28,10 @@ struct SpinReading {
 /// the kinetic energy of translation and of rotation, and the inertia factor k. While `prompt`
 /// is active on p, its fields (the active one marked) and the last refusal instead of the key
 /// hint. `readings` false: the prompt without the readings, for a window too small for both.
-/// In `axes` (the y up option).
+/// In `axes` (the y up option). On a touch screen (`touch`: Session::touch) the hints name no
+/// key the screen lacks: the panel's Selected particle edits.
 [[nodiscard]] std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& prompt,
                                                       bool readings = true, bool rotation = false,
-                                                      const Axes& axes = {});
+                                                      const Axes& axes = {}, bool touch = false);
 
 }  // namespace psb::app

@@ -638,6 +638,35 @@ TEST_F(ControlPanelTest, UndoRedoAndStepBackButtonsGoThroughTheSession) {
     EXPECT_NEAR(session_->world().time(), 3.0 * dt, 1e-12);
 }
 
+TEST_F(ControlPanelTest, OnATouchScreenTheQuitDialogsShowTheirButtonsAndNoKeys) {
+    // The dialog opens in one frame and is drawn in the next; what its keys line says.
+    const auto keys = [&]() -> std::string {
+        frame();
+        frame();
+        for (const auto& [name, text] : panel_.statusLines())
+            if (name == "dialog keys") return text;
+        return "none";
+    };
+    session_->apply(cmd::Back{});  // Esc: the quit question, nothing unsaved
+    ASSERT_EQ(session_->dialog().kind, Dialog::Kind::Quit);
+    EXPECT_EQ(keys(), "Enter: Quit, Esc: Stay");
+    EXPECT_NE(panel_.item("dialog Quit"), nullptr);
+    session_->apply(cmd::SetTouch{true});
+    EXPECT_EQ(keys(), "none");
+    EXPECT_NE(panel_.item("dialog Quit"), nullptr);
+    EXPECT_NE(panel_.item("dialog Cancel"), nullptr);  // Stay
+    session_->apply(cmd::AnswerQuit{cmd::AnswerQuit::Choice::Cancel});
+    frame();
+
+    session_->apply(cmd::SpawnRandom{});
+    session_->apply(cmd::Back{});  // with unsaved changes: Save, Discard or Cancel
+    ASSERT_TRUE(session_->dialog().unsaved);
+    EXPECT_EQ(keys(), "none");
+    EXPECT_NE(panel_.item("dialog Discard"), nullptr);
+    session_->apply(cmd::SetTouch{false});
+    EXPECT_EQ(keys(), "Enter: Save, D: Discard, Esc: Cancel");
+}
+
 TEST_F(ControlPanelTest, DeleteAddAndViewButtonsNeedNoKey) {
     click("Keys");
     EXPECT_TRUE(session_->helpShown());

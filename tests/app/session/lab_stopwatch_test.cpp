@@ -35,6 +35,15 @@ TEST(LabStopwatch, StartStopLapResetOnSimulatedTime) {
     EXPECT_TRUE(w.laps().empty());
 }
 
+TEST(LabStopwatch, TimeGoneBackBeforeItsStartNamesShiftUOrOnATouchScreenThePanelsReset) {
+    LabStopwatch w;
+    w.start(3.0);
+    EXPECT_EQ(stopwatchLine(w, 2.5),
+              "Stopwatch: time went back 0.500 s before its start (Shift+U resets)");
+    EXPECT_EQ(stopwatchLine(w, 2.5, true),
+              "Stopwatch: time went back 0.500 s before its start (Time: stopwatch Reset)");
+}
+
 class SessionStopwatch : public SessionFixture {
   protected:
     SessionStopwatch() : SessionFixture("psb-session-stopwatch", {}) {}

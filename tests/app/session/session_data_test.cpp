@@ -220,6 +220,18 @@ TEST_F(SessionData, NothingRecordedYetIsSaidNotWritten) {
     EXPECT_TRUE(std::filesystem::is_empty(dir_ / "out"));
 }
 
+TEST_F(SessionData, OnATouchScreenARecordingSaysThePanelsButtonStopsIt) {
+    Session s = session();
+    s.setWorld(twoBalls(StepMode::Discrete), SceneInfo{.name = "two balls", .dt = 1.0 / 60.0});
+    s.apply(cmd::SetRecording{true, 1});
+    EXPECT_TRUE(said(s.takeNotices(), "Recording all 2 particles every 1 step (X stops)"));
+    s.apply(cmd::SetRecording{false});
+    s.apply(cmd::SetTouch{true});
+    s.apply(cmd::SetRecording{true, 1});
+    EXPECT_TRUE(
+        said(s.takeNotices(), "Recording all 2 particles every 1 step (Data: Stop recording)"));
+}
+
 TEST_F(SessionData, RecordingTwoBallsGivesTheirPathsAndTheTextbookCollisionInEveryMode) {
     for (const StepMode mode : {StepMode::Discrete, StepMode::Substep, StepMode::Exact}) {
         Session s = session();

@@ -149,6 +149,18 @@ TEST_F(SessionDocument, ReplacingUnsavedChangesSaysCtrlZBringsThemBack) {
     EXPECT_TRUE(said(s.takeNotices(), "were replaced: Ctrl+Z brings them back"));
 }
 
+TEST_F(SessionDocument, ReplacingUnsavedChangesOnATouchScreenNamesThePanelsUndo) {
+    Session s = session();
+    s.apply(cmd::SetTouch{true});
+    s.apply(cmd::SpawnRandom{});
+    ASSERT_TRUE(s.unsavedChanges());
+    (void)s.takeNotices();
+    s.apply(cmd::OpenPreset{0});
+    const std::vector<Notice> n = s.takeNotices();
+    EXPECT_TRUE(said(n, "were replaced: Time: Undo brings them back"));
+    EXPECT_FALSE(said(n, "Ctrl+Z"));
+}
+
 TEST_F(SessionDocument, WhereEscDoesNotQuitItOnlyClosesWhatIsOpen) {
     // A web page: nothing to quit to.
     SessionOptions o = options();

@@ -260,6 +260,37 @@ TEST_F(SessionObstacles, TheSelectToolDragsAnObstacleToMoveItUndoably) {
     EXPECT_EQ(s.undoHistory().undoCount(), entries);
 }
 
+TEST_F(SessionObstacles, OnATouchScreenTheMessagesNameThePanelsUndoAndDeleteNotKeys) {
+    Session s = session();
+    s.apply(cmd::SetTool{cmd::Tool::Peg});
+    click(s, Vec2(2.0, 2.0));
+    EXPECT_TRUE(said(s.takeNotices(), "Peg placed (Ctrl+Z undoes it)"));
+    s.apply(cmd::Undo{});
+
+    // A finger: the same gestures, the panel's controls named.
+    s.apply(cmd::SetTouch{true});
+    click(s, Vec2(2.0, 2.0));
+    std::vector<Notice> n = s.takeNotices();
+    EXPECT_TRUE(said(n, "Peg placed (Time: Undo undoes it)"));
+    s.apply(cmd::SetTool{cmd::Tool::Select});
+    drag(s, Vec2(2.0, 2.0), Vec2(3.0, 2.0));
+    const std::vector<Notice> moved = s.takeNotices();
+    EXPECT_TRUE(said(moved, "Moved the peg (Time: Undo puts it back)"));
+    n.insert(n.end(), moved.begin(), moved.end());
+    click(s, Vec2(3.0, 2.0));
+    const std::vector<Notice> selected = s.takeNotices();
+    EXPECT_TRUE(said(selected, "Selected a peg: Tools: Delete peg removes it"));
+    n.insert(n.end(), selected.begin(), selected.end());
+    s.apply(cmd::RemoveObstacle{0});
+    const std::vector<Notice> removed = s.takeNotices();
+    EXPECT_TRUE(said(removed, "Removed the peg (Time: Undo brings it back)"));
+    n.insert(n.end(), removed.begin(), removed.end());
+    for (const Notice& notice : n) {
+        for (const char* key : {"Ctrl+", "Delete or", "Backspace"})
+            EXPECT_EQ(notice.text.find(key), std::string::npos) << notice.text;
+    }
+}
+
 TEST_F(SessionObstacles, ObstaclesDrawnInTheExactModeAreHitAndUndoneWhileItRuns) {
     Session s = session();
     s.apply(cmd::SetMode{StepMode::Exact});

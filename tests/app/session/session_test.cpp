@@ -548,5 +548,31 @@ TEST_F(SessionTest, OnATouchScreenMessagesNameTheButtonsNotTheKeys) {
     EXPECT_TRUE(said(s.takeNotices(), "Stopwatch started: it runs with simulated time (Play)"));
 }
 
+TEST_F(SessionTest, OnATouchScreenTheDialogsAndTheEditHintNameTheirButtonsNotKeys) {
+    Session s = session();
+    s.apply(cmd::SetTouch{true});
+    (void)s.takeNotices();
+    std::vector<Notice> n;
+    const auto take = [&] {
+        std::vector<Notice> t = s.takeNotices();
+        n.insert(n.end(), t.begin(), t.end());
+        return t;
+    };
+    // Enter edits the selected particle where there is a keyboard; a finger has the panel.
+    s.apply(cmd::OpenEdit{});
+    EXPECT_TRUE(
+        said(take(), "Tap a particle to select it, then edit it in the panel's Selected particle"));
+    s.apply(cmd::AskSaveAs{});
+    EXPECT_TRUE(said(take(), "Save as: type a file name, then Save or Cancel ("));
+    s.apply(cmd::CloseDialog{});
+    s.apply(cmd::Back{});  // the quit question, nothing unsaved
+    ASSERT_EQ(s.dialog().kind, Dialog::Kind::Quit);
+    EXPECT_TRUE(said(take(), "Quit Particle Sandbox? Quit or Stay"));
+    for (const Notice& notice : n) {
+        for (const char* key : {"Enter", "Esc", "Click"})
+            EXPECT_EQ(notice.text.find(key), std::string::npos) << notice.text;
+    }
+}
+
 }  // namespace
 }  // namespace psb::app

@@ -267,6 +267,25 @@ TEST_F(SessionValues, TheThemeSwitchesAndIsNoEdit) {
     EXPECT_EQ(s.view().theme, Theme::Dark);
 }
 
+TEST_F(SessionValues, OnATouchScreenTheScaleAndThemeMessagesNameNoKey) {
+    // A laptop's touch screen: the panel's slider, Auto and Light, not Ctrl+0 and Ctrl+T.
+    Session s = session();
+    s.apply(cmd::SetTouch{true});
+    (void)s.takeNotices();
+    s.apply(cmd::SetUiScale{2.0, false});
+    EXPECT_TRUE(said(s.takeNotices(), "UI scale 200 % (Show: Auto makes it automatic)"));
+    s.apply(cmd::SetUiScale{1.5, true});
+    std::vector<Notice> n = s.takeNotices();
+    EXPECT_TRUE(said(n, "UI scale 150 % (automatic: by the window's height)"));
+    s.apply(cmd::SetTheme{Theme::Light});
+    s.apply(cmd::SetTheme{Theme::Dark});
+    const std::vector<Notice> themes = s.takeNotices();
+    EXPECT_TRUE(said(themes, "Theme: light (high contrast, for projectors)"));
+    n.insert(n.end(), themes.begin(), themes.end());
+    for (const Notice& notice : n)
+        EXPECT_EQ(notice.text.find("Ctrl+"), std::string::npos) << notice.text;
+}
+
 TEST(UiScale, StepsThroughTheListAndTheAutomaticRuleFollowsTheHeight) {
     EXPECT_EQ(steppedUiScale(1.0, +1), 1.1);
     EXPECT_EQ(steppedUiScale(1.0, -1), 0.9);

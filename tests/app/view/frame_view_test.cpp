@@ -39,6 +39,8 @@ TEST(BoxMarker, ShownOnlyWhenTheBoxIsOffScreenAndPointsToIt) {
     EXPECT_GE(m->at.x(), 0.0);
     EXPECT_LT(m->at.x(), 50.0);  // at the left edge
     EXPECT_NE(m->label.find("F"), std::string::npos);
+    // A touch screen has no F: the panel's button that fits the box.
+    EXPECT_EQ(boxMarker(c, 7.0, 7.0, true)->label, "box this way (Show: Fit view)");
 }
 
 /// The default scene in a `width` x `height` window, laid out as the app lays it out beside a
@@ -486,6 +488,28 @@ TEST(RecordingMark, ShownOnlyWhileRecordingInTheTopRightCornerWithTheTime) {
     EXPECT_GT(r.x, 800);  // the right half, away from the HUD at the left
     EXPECT_GE(r.y, 0);
     EXPECT_LT(r.y, 40);
+}
+
+TEST(RecordingMark, OnATouchScreenTheFramesHintsNameThePanelsControls) {
+    // A laptop's touch screen: the mark, the HUD and the inspector name the panel's buttons.
+    Session s = sessionIn(1600, 800, false);
+    s.apply(cmd::SetTouch{true});
+    s.apply(cmd::Select{s.world().ids()[0]});
+    s.apply(cmd::SetRecording{true, 1});
+    const test::FixedMeasure font;
+    FrameStats stats;
+    stats.video.recording = true;
+    stats.video.format = VideoFormat::WebM;
+    stats.video.seconds = 65.7;
+    const FrameView f = buildFrame(s, stats, font, font, {310.0, 44.0});
+    ASSERT_TRUE(f.recordingMark.has_value());
+    EXPECT_EQ(f.recordingMark->label, "REC 1:05 WebM - Video: Stop video");
+    std::string hud;
+    for (const std::string& l : f.overlays.hud)
+        hud += l + "\n";
+    EXPECT_NE(hud.find("REC (Data: Stop recording)"), std::string::npos) << hud;
+    ASSERT_FALSE(f.overlays.inspector.empty());
+    EXPECT_EQ(f.overlays.inspector.back(), "Edit: the panel's Selected particle");
 }
 
 TEST(RecordingMark, TheMomentumLegendAndTheProfileGoUnderItNotUnderIt) {

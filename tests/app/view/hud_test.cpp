@@ -45,6 +45,21 @@ TEST(Hud, LinesShowTimeCountEnergyAndMomentumInHumanUnits) {
     }
 }
 
+TEST(Hud, OnATouchScreenTheRecordingAndTheFoldedChartsNameThePanelsButtons) {
+    HudData d;
+    d.recording = true;
+    EXPECT_NE(hudLines(d)[0].find("| REC (X stops)"), std::string::npos) << hudLines(d)[0];
+    d.touch = true;
+    EXPECT_NE(hudLines(d)[0].find("| REC (Data: Stop recording)"), std::string::npos)
+        << hudLines(d)[0];
+    EXPECT_EQ(foldedChartsNote(true, true),
+              "Charts folded away: no room beside the box (<< folds the controls)");
+    EXPECT_EQ(foldedChartsNote(true),
+              "Charts folded away: no room beside the box (C folds the "
+              "controls)");
+    EXPECT_EQ(foldedChartsNote(false, true), foldedChartsNote(false));
+}
+
 TEST(Hud, ATimeSpeedTheStepsCannotReachShowsTheSpeedReached) {
     HudData d;
     d.timeScale = 8.0;

@@ -92,6 +92,26 @@ TEST(InspectorPanel, AParticleWithFixedRotationSaysSo) {
               0);
 }
 
+TEST(InspectorPanel, OnATouchScreenItNamesThePanelsFieldsAndNoKeyTheScreenLacks) {
+    // A tablet has no Enter to open the prompt: the panel's Selected particle edits.
+    const auto shown = inspectorLines(sample(), EditPrompt{}, true, false, {}, true);
+    EXPECT_EQ(shown.back(), "Edit: the panel's Selected particle");
+    // A prompt opened all the same (a keyboard beside the screen): its on-screen keyboard has
+    // Enter, neither Tab nor Esc; a tap on empty space closes it.
+    EditPrompt prompt;
+    prompt.open(sample());
+    for (const bool readings : {true, false}) {
+        const auto lines = inspectorLines(sample(), prompt, readings, false, {}, true);
+        EXPECT_NE(
+            std::find(lines.begin(), lines.end(), "Edit  Enter: apply  tap empty space: cancel"),
+            lines.end());
+        for (const std::string& l : lines) {
+            EXPECT_EQ(l.find("Tab"), std::string::npos) << l;
+            EXPECT_EQ(l.find("Esc"), std::string::npos) << l;
+        }
+    }
+}
+
 TEST(InspectorPanel, APromptOnAnotherParticleIsNotShown) {
     EditPrompt prompt;
     Particle other = sample();
