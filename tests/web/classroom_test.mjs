@@ -17,7 +17,8 @@
 //   7. a second trial (the tablet's fingers, then the phone's): the on-screen keyboard's text
 //      reaches a field, Copy reaches the browser's clipboard, a finger's fling launches as a
 //      mouse's, a tap or a scroll that starts on a slider leaves it, the UI scale keeps the panel
-//      open, hints name buttons, two fingers on the phone's sheet act on nothing under it.
+//      open, hints name buttons (a peg a finger placed, moved or deleted: the panel's Undo,
+//      which brings it back), two fingers on the phone's sheet act on nothing under it.
 // Screenshots are written to PSB_WEB_SHOTS (classroom-*.png) for a person to look at.
 import fs from "fs";
 import path from "path";
@@ -526,6 +527,59 @@ async function started(p, query) {
   // 7. Once a finger has touched, the hints name the panel's buttons, not keys.
   const paused = (await lines(/while paused: .* sets it moving/)).pop() || "nothing said";
   check(/Play sets it moving/.test(paused), `a hint after a finger names the button: ${paused}`);
+
+  // 7. A finger's edit of the box says how to take it back with the panel's Undo (in Time),
+  //    not Ctrl+Z: a peg placed, moved, selected and deleted, then the Undo named brings it
+  //    back.
+  const tools = await reach("section Tools");
+  if (tools) await p.tap(tools);
+  await p.waitFor("the Tools section", async () => (await p.control("tool Peg")) !== null, 3);
+  const pegTool = await reach("tool Peg");
+  if (pegTool) await p.tap(pegTool);
+  const pegSaid = /Peg placed|Not placed|Obstacle refused/;
+  let peg = null;
+  for (const spot of [{ x: 640, y: 250 }, { x: 900, y: 250 }, { x: 640, y: 620 },
+                      { x: 900, y: 620 }]) {
+    const n = await count(pegSaid);
+    await p.tap(spot);
+    await p.waitFor("the peg", async () => (await count(pegSaid)) > n, 3);
+    if (/Peg placed/.test((await lines(pegSaid)).pop() || "")) {
+      peg = spot;
+      break;
+    }
+  }
+  const placed = (await lines(/Peg placed/)).pop() || "nothing said";
+  check(peg && /Peg placed \(Time: Undo undoes it\)$/.test(placed),
+        `a peg placed by a finger names the panel's Undo: ${placed}`);
+  const selectTool = await reach("tool Select");
+  if (selectTool) await p.tap(selectTool);
+  const to = peg && { x: peg.x + 40, y: peg.y };
+  if (peg) await p.drag(peg, to, 10);
+  await p.waitFor("the move", async () => (await count(/Moved the peg/)) > 0, 3);
+  const movedSaid = (await lines(/Moved the peg|Not moved/)).pop() || "nothing said";
+  check(/Moved the peg \(Time: Undo puts it back\)$/.test(movedSaid),
+        `a peg a finger moved names the panel's Undo: ${movedSaid}`);
+  if (to) await p.tap(to);
+  await p.waitFor("the selection", async () => (await count(/Selected a peg/)) > 0, 3);
+  const selectedSaid = (await lines(/Selected a peg/)).pop() || "nothing said";
+  check(/Selected a peg: Tools: Delete peg removes it$/.test(selectedSaid),
+        `a peg a finger selected names the panel's Delete peg: ${selectedSaid}`);
+  const del = await reach("delete obstacle");
+  if (del) await p.tap(del);
+  await p.waitFor("the removal", async () => (await count(/Removed the peg/)) > 0, 3);
+  const removedSaid = (await lines(/Removed the peg/)).pop() || "nothing said";
+  check(/Removed the peg \(Time: Undo brings it back\)$/.test(removedSaid),
+        `a peg a finger deleted names the panel's Undo: ${removedSaid}`);
+  const keysSaid = (await lines(/Peg placed|Moved the peg|Selected a peg|Removed the peg/))
+    .filter((l) => /Ctrl\+|Backspace|Delete or/.test(l));
+  check(keysSaid.length === 0, `... and no key: ${keysSaid.join("; ") || "none named"}`);
+  const undo = await reach("Undo");
+  if (undo) await p.tap(undo);
+  await p.waitFor("the undo", async () => (await count(/Undone: remove peg/)) > 0, 3);
+  check((await count(/Undone: remove peg/)) > 0,
+        "the Undo it names is the panel's, and a tap on it brings the peg back: " +
+        ((await lines(/Undone|Nothing to undo/)).pop() || "nothing said"));
+  await p.shot("18b-peg-undone");
 
   // 6. The UI scale dragged by a finger: the panel stays open, where it was.
   const scale = await reach("UI scale");

@@ -56,7 +56,10 @@ void ControlPanel::physics(const Session& s) {
         mark(std::string("mode ") + label);
         tip(modeSentence(m));
     };
-    ImGui::TextUnformatted("Mode (key T):");
+    // A touch screen has no T: the buttons alone.
+    const char* modeLine = s.touch() ? "Mode:" : "Mode (key T):";
+    ImGui::TextUnformatted(modeLine);
+    mark("mode line", modeLine);
     modeButton("Discrete", StepMode::Discrete);
     ImGui::SameLine();
     modeButton("Substeps", StepMode::Substep);

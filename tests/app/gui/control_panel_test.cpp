@@ -667,6 +667,18 @@ TEST_F(ControlPanelTest, OnATouchScreenTheQuitDialogsShowTheirButtonsAndNoKeys) 
     EXPECT_EQ(keys(), "Enter: Save, D: Discard, Esc: Cancel");
 }
 
+TEST_F(ControlPanelTest, OnATouchScreenThePhysicsModesNameNoKey) {
+    const auto said = [&]() -> std::string {
+        frame();
+        for (const auto& [name, text] : panel_.statusLines())
+            if (name == "mode line") return text;
+        return "none";
+    };
+    EXPECT_EQ(said(), "Mode (key T):");
+    session_->apply(cmd::SetTouch{true});
+    EXPECT_EQ(said(), "Mode:");
+}
+
 TEST_F(ControlPanelTest, DeleteAddAndViewButtonsNeedNoKey) {
     click("Keys");
     EXPECT_TRUE(session_->helpShown());
