@@ -43,7 +43,8 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
         return;
     }
     // The band in pixels, the window in the UI's points.
-    const PixelRect band = valuesTableRect(s, controlsWidth(pointPixels));
+    const PixelRect band =
+        valuesTableRect(s, controlsWidth(pointPixels, ImGui::GetIO().DisplaySize.x * pointPixels));
     ImGui::SetNextWindowPos(
         ImVec2(static_cast<float>(band.x) / pointPixels, static_cast<float>(band.y) / pointPixels));
     ImGui::SetNextWindowSize(
