@@ -88,7 +88,7 @@ App::App(const AppOptions& options) : options_(options) {
     s.viewportHeight = out.y;
     // Where the box goes: clear of the HUD's lines above it, the messages below it, the
     // control panel and (while they are on) the panels beside it (view/box_area.hpp).
-    controls_ = controlsWidth(sdl_->pixelRatio());
+    controls_ = controlsWidth(sdl_->pixelRatio(), out.x);
     s.layout = windowLayout(sdl_->hudFont(), out.x, out.y, controls_, options_.inPage);
     // A window less than twice the panel's width would leave the box less room than the
     // panel: it opens folded (C or >> opens it).
@@ -245,6 +245,8 @@ void App::act(const SDL_Event& e) {
                 session_->apply(cmd::SetUiScale{automaticScale(), true});
                 syncLook();
             }
+            // The open panel's width is a share of the window's.
+            controls_ = controlsWidth(controls_.pointPixels, r->width);
             r->layout =
                 windowLayout(sdl_->hudFont(), r->width, r->height, controls_, options_.inPage);
         }
@@ -271,8 +273,8 @@ void App::syncLook() {
     } catch (const std::exception& e) {  // a font file gone since the start
         logLine(std::string("[E] The text could not be made at the new scale: ") + e.what());
     }
-    controls_ = controlsWidth(points);
     const SDL_Point out = sdl_->outputSize();
+    controls_ = controlsWidth(points, out.x);
     session_->apply(cmd::Resize{
         out.x, out.y, windowLayout(sdl_->hudFont(), out.x, out.y, controls_, options_.inPage)});
 }

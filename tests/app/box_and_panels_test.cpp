@@ -81,7 +81,7 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
     // fitted camera shows, from 500 px wide up; where the column does not fit beside the box the
     // charts fold away and the session says so.
     SessionOptions o = options();
-    const ControlsWidth panel = controlsWidth(1.0);
+    ControlsWidth panel = controlsWidth(1.0, o.viewportWidth);
     o.layout = resize(o.viewportWidth, o.viewportHeight, panel).layout;
     o.presets = testPresets();
     Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0}, o);
@@ -98,6 +98,7 @@ TEST_F(BoxAndPanels, NoChartCoversTheBoxAtAnyWindowSizeWithTheControlsOpenOrFold
     for (const bool controls : {true, false}) {
         for (int w = 500; w <= 1400; w += 50) {
             for (const int h : {500, 600, 800}) {
+                panel = controlsWidth(1.0, w);  // a share of the window
                 s.apply(resize(w, h, panel));
                 // A window too narrow for the box beside the panel folds it: opened again.
                 if (s.controlsShown() != controls) s.apply(cmd::ToggleControls{});
@@ -136,7 +137,7 @@ TEST_F(BoxAndPanels, TheBandAboveTheBoxHoldsTheFoldedChartsNote) {
     // The HUD says the charts are folded; the fitted box starts below that note too.
     SessionOptions o = options();
     o.viewportWidth = o.viewportHeight = 600;
-    const ControlsWidth controls = controlsWidth(1.0);
+    const ControlsWidth controls = controlsWidth(1.0, 600);
     o.layout = resize(600, 600, controls).layout;
     const double note = o.layout.controlsOpenColumn.top;
     EXPECT_GT(note, o.layout.controlsOpen.top) << "the note's lines";

@@ -48,10 +48,11 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     const bool open = s.controlsShown();
     // Opened in a window too narrow for the box beside it (a phone), the panel lies over the box
     // as a sheet across the whole width: the rest of the box beside a column would be a sliver.
+    const float display = ImGui::GetIO().DisplaySize.x;
     const float width = !open ? kControlsFoldedWidth
                         : s.layout().controlsFit
-                            ? kControlsWidth
-                            : std::max(kControlsWidth, ImGui::GetIO().DisplaySize.x);
+                            ? controlsOpenPoints(display * pixelRatio, pixelRatio)
+                            : std::max(kControlsWidth, display);
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     // The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
@@ -393,7 +394,23 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     const ViewOptions& v = s.view();
     const auto box = [this](const char* label, bool on, cmd::ShowOption option, const char* help) {
         bool value = on;
-        if (ImGui::Checkbox(label, &value)) out_.emplace_back(cmd::SetShow{option, value});
+        // A label that would run past where the panel clips its content goes on two lines,
+        // broken at its middle space.
+        std::string shown = label;
+        const float clip = ImGui::GetWindowContentRegionMax().x +
+                           ImGui::GetStyle().WindowPadding.x / 2.f - ImGui::GetCursorPosX();
+        if (widgets::checkWidth(label) > clip) {
+            const std::size_t middle = shown.size() / 2;
+            const std::size_t before = shown.rfind(' ', middle), after = shown.find(' ', middle);
+            const std::size_t at = before == std::string::npos         ? after
+                                   : after == std::string::npos        ? before
+                                   : middle - before <= after - middle ? before
+                                                                       : after;
+            if (at != std::string::npos) shown[at] = '\n';
+        }
+        shown += "###";
+        shown += label;
+        if (ImGui::Checkbox(shown.c_str(), &value)) out_.emplace_back(cmd::SetShow{option, value});
         mark(label);
         tip(help);
     };
@@ -422,7 +439,13 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         "Momentum arrows m v, the total momentum and the centre of mass with its path (key V)");
     box("Plots", v.plots, cmd::ShowOption::Plots,
         "Energy, momentum and the collision rate against time, beside the box (key K)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    // Beside Plots where the panel is wide enough for both (into the window's padding, as
+    // at its full width).
+    if (const float at = ImGui::GetContentRegionAvail().x * 0.55f;
+        at + widgets::checkWidth("Speed histogram") <=
+        ImGui::GetWindowContentRegionMax().x + ImGui::GetStyle().WindowPadding.x) {
+        ImGui::SameLine(at);
+    }
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
@@ -455,7 +478,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
             "normal curve the board should give, and whether the difference is more than "
             "chance");
     }
-    if (sideColumnFolded(s, controlsWidth(pixelRatio))) {
+    if (sideColumnFolded(s, controlsWidth(pixelRatio, ImGui::GetIO().DisplaySize.x * pixelRatio))) {
         widgets::wrappedColored(widgets::caution(s.view().theme),
                                 "Folded away: the window leaves the charts no room beside the "
                                 "box (fold this panel with C, or widen the window)");
@@ -467,7 +490,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     }
     mark("Trails");
     tip("Draw the path each particle has taken (key L cycles)");
-    ImGui::SameLine(0.f, 2.f * ImGui::GetStyle().ItemSpacing.x);
+    widgets::sameLineIfRoom(widgets::checkWidth("Light"), 2.f * ImGui::GetStyle().ItemSpacing.x);
     bool light = v.theme == Theme::Light;
     if (ImGui::Checkbox("Light", &light)) {
         out_.emplace_back(cmd::SetTheme{light ? Theme::Light : Theme::Dark});
@@ -574,20 +597,20 @@ void ControlPanel::tools(const Session& s, float) {
     float colour[3] = {c.r / 255.f, c.g / 255.f, c.b / 255.f};
     bool autoColour = !sp.fixedColor.has_value();
     bool changed = false;
-    ImGui::SetNextItemWidth(120.f);
+    ImGui::SetNextItemWidth(widgets::fieldWidth(120.f, "mass (kg)"));
     changed |=
         ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.3g", ImGuiInputTextFlags_AutoSelectAll);
     mark("launch mass");
     tip("The mass of launched particles ([ and ] make them a tenth of the scene's typical particle "
         "smaller or bigger)");
     ImGui::BeginDisabled(autoRadius);
-    ImGui::SetNextItemWidth(120.f);
+    ImGui::SetNextItemWidth(widgets::fieldWidth(120.f, "radius (m)"));
     changed |= ImGui::InputDouble("radius (m)", &radius, 0.0, 0.0, "%.3g",
                                   ImGuiInputTextFlags_AutoSelectAll);
     mark("launch radius");
     ImGui::EndDisabled();
     tip("The radius of launched particles; untick 'auto' to choose it");
-    ImGui::SameLine();
+    widgets::sameLineIfRoom(widgets::checkWidth("auto"));
     changed |= ImGui::Checkbox("auto", &autoRadius);
     mark("auto radius");
     tip("Auto: the radius grows with the mass, at the scene's scale");

@@ -25,6 +25,7 @@
 // engine), section_data.cpp (recording, exports) and section_particles.cpp (selected, all
 // particles); widgets.hpp holds the small widgets they share.
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -43,17 +44,38 @@ namespace psb::app {
 class Session;
 struct CollisionCard;
 
-/// The panel's width open and folded, window points (pixels at a pixel ratio of 1).
+/// The panel's width open and folded, window points (pixels at a pixel ratio of 1); open, the
+/// most (controlsOpenPoints).
 inline constexpr float kControlsWidth = 310.f;
+/// The least the open panel narrows to, points: its rows of buttons and its sliders with their
+/// names still fit; its sentences wrap.
+inline constexpr float kControlsMinWidth = 240.f;
+/// The most of the window's width the open panel takes as the UI grows: at 200 % in a
+/// 1600-pixel window the full panel took 39 % of it, and beside the plots the box kept 510
+/// pixels.
+inline constexpr float kControlsMaxShare = 0.3f;
 /// Folded, the strip holds the ">>" button at its label's width (15 px DejaVu Sans: 30
 /// points with the frame padding) inside kControlsFoldedPadding either side.
 inline constexpr float kControlsFoldedWidth = 44.f;
 inline constexpr float kControlsFoldedPadding = 6.f;
 
-/// The panel's width open and folded, pixels, at `pixelRatio` pixels per point: what the view
-/// keeps free for it at the window's left.
-[[nodiscard]] inline ControlsWidth controlsWidth(double pixelRatio) {
-    return {kControlsWidth * pixelRatio, kControlsFoldedWidth * pixelRatio, pixelRatio};
+/// The open panel's width, points, in a window `windowPixels` wide at `pixelRatio` pixels per
+/// point (the UI's scale): kControlsWidth at 100 %; as the scale grows, no more than
+/// kControlsMaxShare of the window, but never narrower on screen than at 100 % (310 pixels)
+/// nor than kControlsMinWidth points. At 200 % in 1600 pixels: 240 points, 480 pixels.
+[[nodiscard]] inline float controlsOpenPoints(double windowPixels, double pixelRatio) {
+    const double ratio = pixelRatio > 0.0 ? pixelRatio : 1.0;
+    const double least = std::max<double>(kControlsMinWidth, kControlsWidth / ratio);
+    return static_cast<float>(std::clamp(kControlsMaxShare * windowPixels / ratio,
+                                         std::min<double>(least, kControlsWidth),
+                                         static_cast<double>(kControlsWidth)));
+}
+
+/// The panel's width open and folded, pixels, at `pixelRatio` pixels per point in a window
+/// `windowPixels` wide: what the view keeps free for it at the window's left.
+[[nodiscard]] inline ControlsWidth controlsWidth(double pixelRatio, double windowPixels) {
+    return {controlsOpenPoints(windowPixels, pixelRatio) * pixelRatio,
+            kControlsFoldedWidth * pixelRatio, pixelRatio};
 }
 
 /// Scenes with more particles than this get no all-particles table.

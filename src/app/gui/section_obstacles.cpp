@@ -19,12 +19,12 @@ void ControlPanel::obstacleTools(const Session& s) {
     double peg = now.pegRadius, wall = now.wallThickness;
     bool changed = false;
     ImGui::TextUnformatted("New obstacles:");
-    ImGui::SetNextItemWidth(120.f);
+    ImGui::SetNextItemWidth(widgets::fieldWidth(120.f, "peg radius (m)"));
     changed |= ImGui::InputDouble("peg radius (m)", &peg, 0.0, 0.0, "%.3g",
                                   ImGuiInputTextFlags_AutoSelectAll);
     mark("peg radius");
     tip("The radius of the pegs the Peg tool places (at first the scene's typical particle's)");
-    ImGui::SetNextItemWidth(120.f);
+    ImGui::SetNextItemWidth(widgets::fieldWidth(120.f, "wall thickness (m)"));
     changed |= ImGui::InputDouble("wall thickness (m)", &wall, 0.0, 0.0, "%.3g",
                                   ImGuiInputTextFlags_AutoSelectAll);
     mark("wall thickness");

@@ -146,7 +146,7 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         // While a field is typed in it keeps the user's text; otherwise it shows the value now.
         if (!fieldActive_[k]) {
             text.fill('\0');
-            plainNumber(fieldValue(*p, f.field, axes)).copy(text.data(), text.size() - 1);
+            fieldNumber(fieldValue(*p, f.field, axes)).copy(text.data(), text.size() - 1);
         }
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
@@ -173,7 +173,7 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
         ImGui::PopID();
     }
     const double speed = p->velocity.norm();
-    row("speed", quantity(speed, "m/s"), "How fast it moves, whatever the direction");
+    row("speed", quantity(speed, "m/s", false), "How fast it moves, whatever the direction");
     row("momentum", quantity(p->mass * speed, "kg m/s", false), "m v: mass times speed");
     const SpinReading spin = spinReading(*p, axes);
     if (s.world().rotationInUse()) {
@@ -234,14 +234,16 @@ void ControlPanel::allParticles(const Session& s) {
         }
         mark("row " + std::string(label));
         ImGui::TableNextColumn();
+        // Each quantity as every other readout of it writes it (units.hpp): three figures.
         const Vec2 at = s.axes().point(p.position);
-        ImGui::Text("%.2f, %.2f", at.x(), at.y());
+        ImGui::TextUnformatted(
+            (quantity(at.x(), "", false) + ", " + quantity(at.y(), "", false)).c_str());
         ImGui::TableNextColumn();
-        ImGui::TextUnformatted(quantity(p.velocity.norm(), "m/s").c_str());
+        ImGui::TextUnformatted(quantity(p.velocity.norm(), "m/s", false).c_str());
         ImGui::TableNextColumn();
-        ImGui::Text("%.3g", p.mass);
+        ImGui::TextUnformatted(quantity(p.mass, "", false).c_str());
         ImGui::TableNextColumn();
-        ImGui::Text("%.3g", p.radius);
+        ImGui::TextUnformatted(quantity(p.radius, "", false).c_str());
     }
     ImGui::EndTable();
 }

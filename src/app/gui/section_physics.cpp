@@ -61,9 +61,9 @@ void ControlPanel::physics(const Session& s) {
     ImGui::TextUnformatted(modeLine);
     mark("mode line", modeLine);
     modeButton("Discrete", StepMode::Discrete);
-    ImGui::SameLine();
+    widgets::sameLineIfRoom(widgets::checkWidth("Substeps"));
     modeButton("Substeps", StepMode::Substep);
-    ImGui::SameLine();
+    widgets::sameLineIfRoom(widgets::checkWidth("Exact"));
     modeButton("Exact", StepMode::Exact);
     if (solver.mode == StepMode::Substep) {
         ImGui::SetNextItemWidth(150.f);
@@ -142,7 +142,7 @@ void ControlPanel::physics(const Session& s) {
     // The volume: the box squeezed or expanded with the particles in it.
     const double width = w.def().width, height = w.def().height;
     const bool fixedBox = !w.obstacles().empty() || !w.droppers().empty();
-    ImGui::SameLine();
+    widgets::sameLineIfRoom(widgets::buttonWidth("Squeeze"));
     ImGui::BeginDisabled(fixedBox);
     const double side = std::sqrt(kSqueezeArea);
     if (ImGui::Button("Squeeze")) out_.emplace_back(cmd::ResizeBox{width * side, height * side});
@@ -159,7 +159,7 @@ void ControlPanel::physics(const Session& s) {
                                     "and their speeds kept: at the same temperature the gas's "
                                     "pressure goes up (Boyle). Ctrl+Z undoes it"))
                      .c_str());
-    ImGui::SameLine();
+    widgets::sameLineIfRoom(widgets::buttonWidth("Expand"));
     if (ImGui::Button("Expand")) out_.emplace_back(cmd::ResizeBox{width / side, height / side});
     mark("Expand");
     widgets::tip((box + ". Expand: 10 % more area (divided by 0.9), the particles moved out with "

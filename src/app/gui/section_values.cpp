@@ -26,11 +26,11 @@ namespace psb::app {
 
 namespace {
 
-/// An editable cell's text: four figures, as the read-only cells show three (six were cut off
-/// at 200 %).
+/// An editable cell's text: as the read-only cells and every readout write the quantity
+/// (fieldNumber: -2.5 m/s is "-2.50" here as on the card), more figures where it has them.
 std::array<char, 64> fieldText(double value) {
     std::array<char, 64> text{};
-    const std::string digits = plainNumber(value, 4);
+    const std::string digits = fieldNumber(value);
     digits.copy(text.data(), text.size() - 1);
     return text;
 }
@@ -43,7 +43,8 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
         return;
     }
     // The band in pixels, the window in the UI's points.
-    const PixelRect band = valuesTableRect(s, controlsWidth(pointPixels));
+    const PixelRect band =
+        valuesTableRect(s, controlsWidth(pointPixels, ImGui::GetIO().DisplaySize.x * pointPixels));
     ImGui::SetNextWindowPos(
         ImVec2(static_cast<float>(band.x) / pointPixels, static_cast<float>(band.y) / pointPixels));
     ImGui::SetNextWindowSize(

@@ -36,7 +36,7 @@ void ControlPanel::video(const Session& s, const VideoStatus& status) {
     mark("video format");
     tip("MP4 (H.264) plays in slides and everywhere; WebM (VP8) for web pages; GIF for slides, "
         "25 frames a second, at most 640 pixels wide");
-    ImGui::SameLine();
+    widgets::sameLineIfRoom(widgets::checkWidth("with the panel"));
     bool withPanel = settings.withPanel;
     if (ImGui::Checkbox("with the panel", &withPanel)) {
         settings.withPanel = withPanel;

@@ -4,6 +4,7 @@
 // change continues a drag), and a
 // two-column row of a readout.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +20,34 @@
 #include "view/word_wrap.hpp"
 
 namespace psb::app::widgets {
+
+/// The width of a checkbox or radio button labelled `label`, points.
+[[nodiscard]] inline float checkWidth(const char* label) {
+    return ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+           ImGui::CalcTextSize(label, nullptr, true).x;
+}
+
+/// The width of a button labelled `label`, points.
+[[nodiscard]] inline float buttonWidth(const char* label) {
+    return ImGui::CalcTextSize(label, nullptr, true).x + 2.f * ImGui::GetStyle().FramePadding.x;
+}
+
+/// ImGui::SameLine(0, `spacing`) where the next item, `width` points wide, fits whole before
+/// the panel's edge; else the item starts the next line (the panel narrows with the window:
+/// kControlsMinWidth).
+inline void sameLineIfRoom(float width, float spacing = -1.f) {
+    const float right = ImGui::GetWindowContentRegionMax().x;
+    ImGui::SameLine(0.f, spacing);
+    if (ImGui::GetCursorPosX() + width > right) ImGui::NewLine();
+}
+
+/// A field's width: `most` points, less where its label `label` beside it would run past the
+/// panel's edge.
+[[nodiscard]] inline float fieldWidth(float most, const char* label) {
+    const float room = ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemInnerSpacing.x -
+                       ImGui::CalcTextSize(label, nullptr, true).x;
+    return std::max(40.f, std::min(most, room));
+}
 
 /// `text` wrapped at spaces (never inside "9.81") to `width` points, or to the room left in
 /// the window when `width` is 0, in the current text colour; one item (for a tooltip) however
@@ -106,8 +135,19 @@ inline void markSliderHovered() {
 /// A slider of `value` in [lo, hi]; true when the user changed it, with `continues` set when
 /// the change is part of a drag that started in an earlier frame (one user action per drag).
 /// Its value reads wherever its handle is (slider.hpp).
+/// Narrows the next item, a slider or field labelled `label`, where its label beside it would
+/// run past the panel's edge (a panel narrowed to its share of the window cut "Restitution").
+inline void keepLabelInside(const char* label) {
+    const float text = ImGui::CalcTextSize(label, nullptr, true).x;
+    if (!(text > 0.f)) return;
+    const float room =
+        ImGui::GetContentRegionAvail().x - ImGui::GetStyle().ItemInnerSpacing.x - text;
+    if (ImGui::CalcItemWidth() > room) ImGui::SetNextItemWidth(std::max(40.f, room));
+}
+
 inline bool slider(const char* label, double& value, double lo, double hi, const char* format,
                    bool& continues, ImGuiSliderFlags flags = 0) {
+    keepLabelInside(label);
     const float width = ImGui::CalcItemWidth();
     bool changed = false;
     {
@@ -129,6 +169,7 @@ inline bool slider(const char* label, double& value, double lo, double hi, const
 /// wherever its handle is (slider.hpp).
 inline bool sliderInt(const char* label, int& value, int lo, int hi, const char* format = "%d",
                       ImGuiSliderFlags flags = 0) {
+    keepLabelInside(label);
     const float width = ImGui::CalcItemWidth();
     bool changed = false;
     {

@@ -69,6 +69,16 @@ std::string plainNumber(double value, int significant) {
     return text == "-0" ? "0" : text;
 }
 
+std::string fieldNumber(double value) {
+    const double a = std::abs(value);
+    if (!std::isfinite(value) || a < std::numeric_limits<double>::min()) {
+        return plainNumber(value, 3);
+    }
+    // Where the readouts write a power of ten: the same three figures as a field reads them.
+    if (a < 1e-6 || a >= 1e9) return plainNumber(value, 3);
+    return threeFigures(value);
+}
+
 std::string components(const Vec2& v) {
     // Built by appending: GCC 12 warns wrongly (-Wrestrict) on a chain of + from a literal.
     std::string s = "(";

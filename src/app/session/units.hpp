@@ -25,6 +25,14 @@ namespace psb::app {
 /// seconds), where prefixes and grouped digits would not read back. "-0" is "0".
 [[nodiscard]] std::string plainNumber(double value, int significant = 6);
 
+/// A number in a field a person types into (the values table's cells, the Selected particle
+/// section's fields): as the readouts write the same quantity without a prefix, three
+/// significant figures with their trailing zeros (2.5 m/s is "-2.50" in the field as on the
+/// card, the labels and the momentum's column; 1 kg is "1.00" as the total's "4.00"), but
+/// never grouped by thousands ("1230") nor a power of ten in words ("1.23e-07"), so that it
+/// reads back as typed. A field being typed in keeps what is typed.
+[[nodiscard]] std::string fieldNumber(double value);
+
 /// A vector's signed components as quantity() writes them without a prefix, in brackets:
 /// "(2.00, 0)", "(-2.50, 1.00)" (the unit goes after, once).
 [[nodiscard]] std::string components(const Vec2& v);

@@ -65,7 +65,7 @@ std::vector<std::string> hudLines(const HudData& d) {
         }
     } else {
         std::snprintf(buf, sizeof buf, "New: %s, %s", quantity(d.spawnMass, "kg", false).c_str(),
-                      quantity(d.spawnRadius, "m").c_str());
+                      quantity(d.spawnRadius, "m", false).c_str());
         std::string last = buf;
         if (d.arrowSeconds > 0.0) {
             std::snprintf(buf, sizeof buf, " | arrow: %.3g s of motion", d.arrowSeconds);

@@ -81,7 +81,7 @@ std::vector<std::string> inspectorLines(const Particle& p, const EditPrompt& pro
         lines.push_back("kinetic energy  " + quantity(spin.translational, "J"));
     }
     lines.push_back("mass            " + quantity(p.mass, "kg", false));
-    lines.push_back("radius          " + quantity(p.radius, "m"));
+    lines.push_back("radius          " + quantity(p.radius, "m", false));
     if (rotation) {
         line("inertia factor  k = %.3g (I = k m r\u00b2)", p.inertiaFactor);
     }

@@ -177,8 +177,9 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
             const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
             // Too low for the plots one above the other: side by side, as many as keep each at
             // its least width (the lesson's energy and px in a band one row high).
+            const int narrowest = scaled(kPlotColumnMinWidth);
             const int columns =
-                std::clamp(std::min((4 + rows - 1) / rows, (each + gap) / (least + gap)), 1, 4);
+                std::clamp(std::min((4 + rows - 1) / rows, (each + gap) / (narrowest + gap)), 1, 4);
             l.plots = {x, band.y, each, rows * rowHeight + 8};
             l.plotRows = rows;
             l.plotRowHeight = rowHeight;

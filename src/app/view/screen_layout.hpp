@@ -170,7 +170,10 @@ struct PanelLayout {
 inline constexpr int kPanelGap = 6;                         ///< between panels, pixels
 inline constexpr int kPanelMaxWidth = kSideColumnMaxWidth;  ///< plots and histogram, pixels
 inline constexpr int kPanelMinWidth = kSideColumnMinWidth;  ///< plots and histogram, pixels
-inline constexpr int kPlotRowMaxHeight = 100;               ///< pixels
+/// The least width of a plot side by side with another in the band under the box, pixels: its
+/// title ("momentum px (kg m/s)") and its tick labels, with some curve.
+inline constexpr int kPlotColumnMinWidth = 160;
+inline constexpr int kPlotRowMaxHeight = 100;  ///< pixels
 /// Pixels: a plot's row holds its title, the time axis's labels and a y axis with room for
 /// kPlotTicksLeast labels (plotRowsPlace, yTickCount) in the charts' font, a line of up to
 /// 17 pixels at 100 % (64 left one tick, "3.50", at 200 %); where the room holds fewer rows,

@@ -45,7 +45,7 @@ class ControlPanelTest : public OffscreenTest {
         so.paused = true;
         so.viewportWidth = kSize;
         so.viewportHeight = kSize;
-        so.layout = windowLayout(*font_, kSize, kSize, controlsWidth(1.0));
+        so.layout = windowLayout(*font_, kSize, kSize, controlsWidth(1.0, kSize));
         so.presets = presetScenes();
         session_.emplace(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
                          so);

@@ -57,6 +57,73 @@ TEST_F(ControlPanelTest, EverySectionAndItsMainControlsAreThere) {
     }
 }
 
+TEST_F(ControlPanelTest, TheOpenPanelTakesAShareOfTheWindowAndEveryControlFitsInIt) {
+    // At 200 % in a 1600-pixel window the panel took 620 pixels, 39 % of it, and beside the
+    // plots the box kept 510. Open it takes at most 30 % of the window, within 240 to 310
+    // points; at its narrowest every section open, a particle selected, nothing runs past its
+    // edge.
+    EXPECT_FLOAT_EQ(controlsOpenPoints(1600.0, 2.0), 240.f) << "1600 pixels at 200 %";
+    EXPECT_LE(controlsWidth(2.0, 1600).open, 0.3 * 1600 + 0.5);
+    EXPECT_FLOAT_EQ(controlsOpenPoints(1280.0, 2.0), kControlsMinWidth) << "1280 at 200 %";
+    EXPECT_FLOAT_EQ(controlsOpenPoints(1920.0, 2.0), 288.f) << "1920 at 200 %";
+    // At 100 % the panel is as it was designed, whatever the window; a little bigger, never
+    // narrower on screen.
+    for (const double window : {600.0, 800.0, 1600.0})
+        EXPECT_FLOAT_EQ(controlsOpenPoints(window, 1.0), kControlsWidth) << window;
+    EXPECT_GE(controlsWidth(1.25, 800).open, 310.0 - 0.5);
+
+    session_->apply(cmd::Select{session_->world().ids()[0]});
+    // At 200 % in a window 1600 pixels wide and tall enough for every section open at once.
+    constexpr float kScale = 2.f, kTall = 6000.f;
+    gui_->setScale(kScale);
+    ImGuiIO& io = gui_->io();
+    const auto tallFrame = [&] {
+        gui_->beginFrame(1600.f, kTall * kScale);
+        for (const Command& c : panel_.build(*session_, FrameStats{}, kTall, kScale))
+            session_->apply(c);
+        EXPECT_EQ(gui_->endFrame(), 0);
+    };
+    tallFrame();
+    tallFrame();
+    for (const char* name : {"section Scene", "section Tools", "section Data", "section Video",
+                             "section All particles", "section Engine", "section Readouts",
+                             "section Selected particle", "section Last collision"}) {
+        const PanelItem* header = panel_.item(name);
+        if (header == nullptr) continue;
+        io.MousePos = ImVec2(header->x0 + 20.f, (header->y0 + header->y1) / 2.f);
+        tallFrame();
+        io.MouseDown[0] = true;
+        tallFrame();
+        io.MouseDown[0] = false;
+        tallFrame();
+    }
+    io.MousePos = ImVec2(795.f, kTall - 5.f);
+    tallFrame();
+    // The sections stay open in a window as high as the projector's (500 points): the panel
+    // scrolls, its scroll bar at its right.
+    for (int k = 0; k < 3; ++k) {
+        gui_->beginFrame(1600.f, 1000.f);
+        for (const Command& c : panel_.build(*session_, FrameStats{}, 500.f, kScale))
+            session_->apply(c);
+        EXPECT_EQ(gui_->endFrame(), 0);
+    }
+    const PanelItem* fold = panel_.item("fold panel");
+    ASSERT_NE(fold, nullptr);
+    EXPECT_LE(fold->x1, kControlsMinWidth + 0.5f) << "the panel's width";
+    EXPECT_GT(fold->x1, kControlsMinWidth - 40.f) << "the panel's width";
+    // Where ImGui clips the panel's content: half its padding left of the scroll bar (a
+    // section's header reaches into the rest, as ImGui draws it).
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float edge = kControlsMinWidth - style.ScrollbarSize - style.WindowPadding.x / 2.f;
+    for (const PanelItem& i : panel_.items()) {
+        if (i.name.rfind("values", 0) == 0) continue;  // the values table's own window
+        const bool header = i.name.rfind("section ", 0) == 0;
+        EXPECT_LE(i.x1, edge + (header ? style.WindowPadding.x / 2.f : 0.f) + 0.5f)
+            << i.name << " runs past the panel's edge";
+    }
+    gui_->setScale(1.f);
+}
+
 TEST_F(ControlPanelTest, PlayPauseAndStepAreTheSessionsCommands) {
     ASSERT_TRUE(session_->paused());
     const double t0 = session_->world().time();
@@ -456,7 +523,9 @@ TEST_F(ControlPanelTest, TheDescriptionWrapsAsItIsTyped) {
 TEST_F(ControlPanelTest, TheCollisionCardsVectorsKeepOneLineAt200Percent) {
     // A gas's collision at 200 %: "(-0.236, -0.306)" wrapped onto two lines in the card's
     // columns, which "kinetic energy" in the names' column left too narrow. The names wrap to
-    // their longest word instead.
+    // their longest word instead. In a window wide enough for the whole panel (2400 pixels) a
+    // vector keeps one line; in 1600 pixels, where the panel takes 30 % of the window, two at
+    // most, broken after the comma (the only space in it), never inside a number.
     WorldDef def;
     def.width = def.height = 4.0;
     World w(def);
@@ -466,31 +535,35 @@ TEST_F(ControlPanelTest, TheCollisionCardsVectorsKeepOneLineAt200Percent) {
            .velocity = Vec2(0.182, -0.0929),
            .mass = 1.0,
            .radius = 0.1});
-    SessionOptions so;
-    so.paused = true;
-    so.viewportWidth = 1600;
-    so.viewportHeight = 1000;
-    so.layout = windowLayout(*font_, 1600, 1000, controlsWidth(2.0));
-    Session s(std::move(w), SceneInfo{.name = "pair", .dt = 1.0 / 60.0}, so);
-    s.apply(cmd::SetShow{ShowOption::Collision, true});
-    s.apply(cmd::TogglePause{});
-    for (int k = 1; k <= 60 && !s.lastCollision(); ++k)
-        s.update(1.0 / 60.0, k / 60.0);
-    ASSERT_TRUE(s.lastCollision());
-    gui_->setScale(2.f);
-    ControlPanel panel;
-    for (int k = 0; k < 3; ++k) {
-        gui_->beginFrame(1600.f, 1000.f);
-        for (const Command& command : panel.build(s, FrameStats{}, 500.f, 2.f))
-            s.apply(command);
-        EXPECT_EQ(gui_->endFrame(), 0);
-    }
-    const float line = ImGui::GetTextLineHeightWithSpacing();
-    for (const char* name : {"collision v 1 before", "collision v 1 after", "collision v 2 before",
-                             "collision p 1 before", "collision total p after"}) {
-        const PanelItem* cell = panel.item(name);
-        ASSERT_NE(cell, nullptr) << name;
-        EXPECT_LT(cell->y1 - cell->y0, 1.5f * line) << name << " wrapped";
+    for (const int width : {2400, 1600}) {
+        SessionOptions so;
+        so.paused = true;
+        so.viewportWidth = width;
+        so.viewportHeight = 1000;
+        so.layout = windowLayout(*font_, width, 1000, controlsWidth(2.0, width));
+        Session s(World(w), SceneInfo{.name = "pair", .dt = 1.0 / 60.0}, so);
+        s.apply(cmd::SetShow{ShowOption::Collision, true});
+        s.apply(cmd::TogglePause{});
+        for (int k = 1; k <= 60 && !s.lastCollision(); ++k)
+            s.update(1.0 / 60.0, k / 60.0);
+        ASSERT_TRUE(s.lastCollision());
+        gui_->setScale(2.f);
+        ControlPanel panel;
+        for (int k = 0; k < 3; ++k) {
+            gui_->beginFrame(static_cast<float>(width), 1000.f);
+            for (const Command& command : panel.build(s, FrameStats{}, 500.f, 2.f))
+                s.apply(command);
+            EXPECT_EQ(gui_->endFrame(), 0);
+        }
+        const float line = ImGui::GetTextLineHeightWithSpacing();
+        for (const char* name :
+             {"collision v 1 before", "collision v 1 after", "collision v 2 before",
+              "collision p 1 before", "collision total p after"}) {
+            const PanelItem* cell = panel.item(name);
+            ASSERT_NE(cell, nullptr) << name;
+            EXPECT_LT(cell->y1 - cell->y0, (width == 2400 ? 1.5f : 2.5f) * line)
+                << name << " wrapped in " << width;
+        }
     }
     gui_->setScale(1.f);
 }

@@ -19,7 +19,7 @@ TEST_F(SectionValuesTest, TheValuesTableStaysInTheWindowAndOffTheBoxAtEveryScale
             so.paused = true;
             so.viewportWidth = width;
             so.viewportHeight = height;
-            so.layout = windowLayout(*font_, width, height, controlsWidth(scale));
+            so.layout = windowLayout(*font_, width, height, controlsWidth(scale, width));
             so.controls = so.layout.controlsFit;
             Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
                       so);
@@ -78,7 +78,7 @@ TEST_F(SectionValuesTest, TheLessonsValuesTableShowsEveryColumnAndRowWithoutScro
         so.paused = true;
         so.viewportWidth = c.width;
         so.viewportHeight = c.height;
-        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale));
+        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale, c.width));
         so.controls = so.layout.controlsFit;
         Session s(makeWorld(lesson), SceneInfo{.name = "lesson", .dt = 1.0 / 60.0}, so);
         s.apply(cmd::SetShow{ShowOption::Values, true});
@@ -135,7 +135,7 @@ TEST_F(SectionValuesTest, UnitsUnderTheHeadersNeverRunIntoEachOther) {
             so.paused = true;
             so.viewportWidth = 1600;
             so.viewportHeight = 1000;
-            so.layout = windowLayout(*font_, 1600, 1000, controlsWidth(scale));
+            so.layout = windowLayout(*font_, 1600, 1000, controlsWidth(scale, 1600));
             so.controls = so.layout.controlsFit;
             Session s(makeWorld(*scene), SceneInfo{.name = "table", .dt = 1.0 / 60.0}, so);
             s.apply(cmd::SetShow{ShowOption::Values, true});
@@ -184,7 +184,7 @@ TEST_F(SectionValuesTest, TheRampsValuesTableKeepsEveryColumnAsWideAsItsNumbers)
         so.paused = true;
         so.viewportWidth = c.width;
         so.viewportHeight = c.height;
-        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale));
+        so.layout = windowLayout(*font_, c.width, c.height, controlsWidth(c.scale, c.width));
         so.controls = so.layout.controlsFit;
         Session s(
             makeWorld(loadScene(std::filesystem::path(PSB_ASSETS_DIR) / "scenes" / "12-ramp.json")),

@@ -19,6 +19,23 @@ TEST(Units, SimpleUnitsTakeAnSiPrefixAndThreeFigures) {
     EXPECT_EQ(quantity(0.0, "J"), "0 J");
 }
 
+TEST(Units, AFieldReadsAsEveryReadoutOfItsQuantity) {
+    // Lesson 1 at 200 %: vx read "-2.5" in the values table's field and the Selected
+    // particle's, "-2.50" on the collision card, the labels and the px column; a mass "1" in
+    // its field, "4.00" in the total; the table's fields kept four figures ("3.325") where the
+    // panel's kept six. One rule: the readouts' three figures.
+    for (const double v : {-2.5, 1.0, 4.0, 0.5, 0.375, -1.0, 3.325, 2.0 / 3.0, 12.5, 987.6})
+        EXPECT_EQ(fieldNumber(v), quantity(v, "", false)) << v;
+    EXPECT_EQ(fieldNumber(-2.5), "-2.50");
+    EXPECT_EQ(fieldNumber(1.0), "1.00");
+    EXPECT_EQ(fieldNumber(0.0), "0");
+    EXPECT_EQ(fieldNumber(-0.0), "0");
+    // Read back as typed: no thousands' spaces, no "× 10^".
+    EXPECT_EQ(fieldNumber(1234.0), "1230");
+    EXPECT_EQ(fieldNumber(2.5e-7), "2.5e-07");
+    EXPECT_EQ(fieldNumber(3e9), "3e+09");
+}
+
 TEST(Units, CompoundUnitsGroupDigitsInstead) {
     EXPECT_EQ(quantity(40390.0, "kg m/s", false), "40 400 kg m/s");
     EXPECT_EQ(quantity(-1234567.0, "kg m/s", false), "-1 230 000 kg m/s");

@@ -37,7 +37,7 @@ TEST(Hud, LinesShowTimeCountEnergyAndMomentumInHumanUnits) {
     EXPECT_TRUE(has("42 particles"));
     EXPECT_TRUE(has("Kinetic energy 4.04 MJ"));
     EXPECT_TRUE(has("momentum (3.00, -40 400) kg m/s"));
-    EXPECT_TRUE(has("New: 10.0 kg, 300 mm"));
+    EXPECT_TRUE(has("New: 10.0 kg, 0.300 m"));
     EXPECT_TRUE(has("H: help"));
     // No engine jargon and no exponent notation on the box.
     for (const char* jargon : {"FPS", "thread", "all-pairs", "Overlap max", "drift", "e+", "e-0"}) {

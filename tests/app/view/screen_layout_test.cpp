@@ -195,7 +195,7 @@ TEST(PanelLayout, InABandUnderTheBoxTheChartsStandSideBySideLeftOfTheInspector) 
     EXPECT_GE(l.plotRowHeight, 2 * kPlotRowMinHeight);
     EXPECT_GE(l.plots.w, 2 * kPanelMinWidth);
     for (int k = 0; k < l.plotColumns; ++k)
-        EXPECT_GE(plotColumn(l, k).w, 2 * kPanelMinWidth);
+        EXPECT_GE(plotColumn(l, k).w, 2 * kPlotColumnMinWidth);
     EXPECT_LT(l.plots.x + l.plots.w, l.speeds.x) << "side by side";
     EXPECT_LE(l.speeds.y + l.speeds.h, r.chartsBand.y + r.chartsBand.h);
     if (l.inspector.w > 0 && l.inspector.y < r.chartsBand.y + r.chartsBand.h) {
