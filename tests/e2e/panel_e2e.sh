@@ -18,7 +18,8 @@
 #                                                                   gravity 9.81, e = 0, substep
 #   5b. turns the wheel over the preset list, past its end      -> no zoom of the view
 #   6. clicks Play/Pause twice, Step                             -> time moves; Restart: the set-up
-#   6b. Tab three times, Space, Space                            -> time starts and stops (Play)
+#   6b. Tab three times, Space, Space                            -> time starts and stops (Play),
+#                                                                  no tooltip (the pointer still)
 #   7. folds the panel (<<) and opens it again (>>)              -> the box refits each time
 #   7b. Ctrl+N, xdotool type "10", Tab, "4", Tab, "0", Enter     -> a 10 m x 4 m box (the "4"
 #                                                                   went into the width: 104)
@@ -146,15 +147,24 @@ pass "Play, Pause, Step and Restart"
 # Tab gives the panel the keys; three Tabs (fold button, the Time section, Play) reach Play, each
 # a quick tap (xdotool presses and releases between two frames). Space starts time; the cursor
 # stays on the button, now Pause, and a second Space stops it; Esc gives the keys back.
+# The pointer rests in the box meanwhile: a tooltip shows only under a real hover, never because
+# the keyboard is on a control (Play's tooltip stood at the pointer, over the values table).
+xdotool mousemove --sync $((WX + WIDTH - 60)) $((WY + HEIGHT / 2))
+sleep 0.3
+lines=$(wc -l <"$LOG")
 resumed=$(grep -c "Resumed" "$LOG")
 paused=$(grep -c "\] Paused" "$LOG")
 key Tab Tab Tab
+sleep 0.8  # past the tooltips' half-second delay, on Play
 key space
 wait_count "Resumed" $((resumed + 1))
-sleep 0.3
+sleep 0.8
 key space
 wait_count "\] Paused" $((paused + 1))
+sleep 0.8
 shot 6b-keyboard-pause
+keyed=$(tail -n +$((lines + 1)) "$LOG" | grep "^\[I\] Tooltip " | grep -v "Tooltip none$" || true)
+[[ -z "$keyed" ]] || fail "a tooltip with the pointer still, from the keyboard alone: $keyed"
 key Escape
 sleep 0.3
 kill -0 "$APP_PID" 2>/dev/null || fail "Esc with the panel's cursor shown quit the program"

@@ -477,7 +477,7 @@ void GuiContext::fingerFrame() {
         io.MouseDown[0] = p->down;
         if (p->scroll != 0.f) scrollWindowAt(p->scrollFrom, p->scroll, scale_);
     }
-    tooltips_.startFrame(now, !pointerIsFinger_);
+    tooltips_.startFrame(now, !pointerIsFinger_, io.MousePos.x, io.MousePos.y);
 }
 
 bool GuiContext::hasKeyboard() const {

@@ -5,6 +5,10 @@
 // particle's fields while a value was typed in. A tooltip here waits for a real hover:
 //
 //   - a mouse (never a finger) resting on the same control for kDelaySeconds;
+//   - the pointer moved since that control came under it: a control that comes under a still
+//     pointer (a key moved the panel's layout or its keyboard cursor: ImGui counts the control
+//     the keyboard is on as hovered) waits for the pointer to move (after Space on the panel,
+//     Play's tooltip stood at the pointer, over the values table's totals);
 //   - nothing held or typed in: no control active, no field taking text.
 //
 // GuiContext owns the state and opens each frame with startFrame; widgets::tip reads it
@@ -57,18 +61,28 @@ struct TooltipState {
     double now = 0.0;     ///< seconds
     std::string hovered;  ///< the tip of the control hovered, and since when
     double since = 0.0;
+    /// The pointer moved since `hovered` came under it: a real hover, not a control brought
+    /// under a still pointer.
+    bool reached = false;
     bool hoveredThisFrame = false;
-    std::string shown;           ///< the tooltip shown this frame (empty: none)
+    float pointerX = 0.f, pointerY = 0.f;  ///< where the pointer was last frame
+    bool moved = false;                    ///< it moved since the last frame
+    std::string shown;                     ///< the tooltip shown this frame (empty: none)
     TipRect avoid;               ///< the message band, in the panel's points (empty: none)
     bool sliderHovered = false;  ///< a slider was hovered in the frame (widgets::slider)
 
-    void startFrame(double seconds, bool pointerIsMouse) {
+    /// A frame at `seconds` with the pointer at (x, y), the panel's points (no pointer: far
+    /// off, as ImGui has it).
+    void startFrame(double seconds, bool pointerIsMouse, float x, float y) {
         sliderHovered = false;
         if (!hoveredThisFrame) hovered.clear();
         hoveredThisFrame = false;
         shown.clear();
         now = seconds;
         allowed = pointerIsMouse;
+        moved = x != pointerX || y != pointerY;
+        pointerX = x;
+        pointerY = y;
     }
     /// Whether the control with tip `text`, hovered now, shows it.
     [[nodiscard]] bool show(const char* text) {
@@ -76,8 +90,13 @@ struct TooltipState {
         if (hovered != text) {
             hovered = text;
             since = now;
+            reached = moved;
+        } else if (!reached && moved) {
+            // The pointer moves on it: from now on a real hover.
+            reached = true;
+            since = now;
         }
-        return allowed && now - since >= kDelaySeconds;
+        return allowed && reached && now - since >= kDelaySeconds;
     }
 };
 

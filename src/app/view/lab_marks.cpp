@@ -16,9 +16,12 @@ namespace {
 /// How far the reading's centre is from the ruler's middle, pixels.
 constexpr double kReadingOffset = 22.0;
 /// The reading's places are tried beside the ruler's middle and this many steps further out,
-/// kReadingStep pixels each.
+/// kReadingStep pixels each; then kReadingFarStep pixels a step, out to the window's far side
+/// (on the ramp at 200 % the room near the ruler was all balls, ramps and grid labels, and the
+/// reading took the place over ball 3 that covered fewest; above the box was clear).
 constexpr int kReadingSteps = 24;
 constexpr int kReadingStep = 8;
+constexpr int kReadingFarStep = 24;
 
 /// The smallest of 1, 2 or 5 × 10^k at least `least`.
 double roundStep(double least) {
@@ -164,11 +167,19 @@ namespace {
 
 /// The reading's places round the ruler's middle: beside it, below first (the ticks' side, down
 /// the screen), then above, right and left, each slid along its side; then the same a step
-/// further out, kReadingSteps times.
+/// further out, kReadingSteps times, then in larger steps until the window is behind them.
 std::vector<PixelRect> readingPlaces(const Vec2& middle, PixelPoint size, const PixelRect& room) {
     std::vector<PixelRect> places;
-    for (int k = 0; k <= kReadingSteps; ++k) {
-        const int half = static_cast<int>(kReadingOffset) - 4 + k * kReadingStep;
+    const int near = static_cast<int>(kReadingOffset) - 4 + kReadingSteps * kReadingStep;
+    // Far enough that every side's place is outside the window.
+    const int reach = static_cast<int>(std::ceil(
+        std::max({std::abs(middle.x() - room.x), std::abs(room.x + room.w - middle.x()),
+                  std::abs(middle.y() - room.y), std::abs(room.y + room.h - middle.y())})));
+    for (int k = 0;; ++k) {
+        const int half = k <= kReadingSteps
+                             ? static_cast<int>(kReadingOffset) - 4 + k * kReadingStep
+                             : near + (k - kReadingSteps) * kReadingFarStep;
+        if (k > kReadingSteps && half > reach) break;
         const PixelRect around{static_cast<int>(std::lround(middle.x())) - half,
                                static_cast<int>(std::lround(middle.y())) - half, 2 * half,
                                2 * half};
@@ -208,16 +219,17 @@ void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& fo
             const PixelRect r = labelRect(sized, font, kReadingPad);
             places.push_back(readingPlaces(middle, {r.w, r.h}, window));
         }
-        // The grid's distances that are read (inside the window, clear of the panels) are as
-        // solid to it as the discs: one is left out only where no place is clear of them.
-        std::vector<PixelRect> solid = discs;
+        // The grid's distances that are read (inside the window, clear of the panels): one is
+        // left out only where no place is clear of them; a ball is never covered where a place
+        // is clear of the balls (firstClearPlace).
+        std::vector<PixelRect> marks;
         if (grid != nullptr) {
             for (const MarkLabel& g : grid->labels) {
                 const PixelRect r = labelRect(g, font);
-                if (inside(r) && clear(r)) solid.push_back(r);
+                if (inside(r) && clear(r)) marks.push_back(r);
             }
         }
-        const ReadingPlace chosen = firstClearPlace(places, solid, around);
+        const ReadingPlace chosen = firstClearPlace(places, discs, around, marks);
         if (chosen.at.w > 0) {
             l.text = ruler->forms[chosen.form];
             l.at = Vec2(chosen.at.x + 0.5 * chosen.at.w, chosen.at.y + 0.5 * chosen.at.h);

@@ -86,11 +86,12 @@ inline constexpr int kReadingPad = 4;
 /// of its keepOut (the panels) and of the ruler itself, and, where such a place is, clear of
 /// `discs` (discsOnScreen) and of the grid's labels and across no wall: beside the ruler's middle,
 /// below it first (the side its ticks point down the screen), then above, right and left, each slid
-/// along that side; then further out on rings round the middle; in one line, else in two (the
-/// length and the slope over the distances) where only those fit or read clear (firstClearPlace,
-/// label_places.hpp). Where no place clear of the panels is, it goes below the middle, slid
-/// into the room as far as it can. A grid label that would cross the reading, a panel or the
-/// room's edge is left out (its line stays). Sizes are measured in `font`, the labels' font.
+/// along that side; then further out on rings round the middle, out to the window's edges; in one
+/// line, else in two (the length and the slope over the distances) where only those fit or read
+/// clear; where no place is clear of all that, over a grid label (left out) rather than a ball
+/// (firstClearPlace, label_places.hpp). Where no place clear of the panels is, it goes below the
+/// middle, slid into the room as far as it can. A grid label that would cross the reading, a panel
+/// or the room's edge is left out (its line stays). Sizes are measured in `font`, the labels' font.
 void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& font,
                          const LabelRoom& room, const std::vector<PixelRect>& discs = {});
 

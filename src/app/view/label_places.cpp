@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 #include <utility>
 
 #include "view/screen_layout.hpp"
@@ -435,28 +436,38 @@ std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const Lab
 }
 
 ReadingPlace firstClearPlace(const std::vector<std::vector<PixelRect>>& places,
-                             const std::vector<PixelRect>& discRects, const LabelRoom& room) {
+                             const std::vector<PixelRect>& discRects, const LabelRoom& room,
+                             const std::vector<PixelRect>& marks) {
     DiscIndex discs(discRects, room.window);
     const auto allowed = [&room](const PixelRect& r) {
         return contains(room.window, r) && clearOf(r, room.keepOut);
     };
-    // A clear place: any disc rules one out, quickly found in a crowd.
-    for (std::size_t form = 0; form < places.size(); ++form) {
-        for (const PixelRect& r : places[form]) {
-            if (allowed(r) && !discs.any(r) && !crossesWalls(r, room)) return {r, form, 0, false};
+    const auto marksUnder = [&marks](const PixelRect& r) {
+        return static_cast<std::size_t>(std::count_if(
+            marks.begin(), marks.end(), [&r](const PixelRect& m) { return overlaps(r, m); }));
+    };
+    // A clear place: any disc rules one out, quickly found in a crowd. Then one clear of the
+    // discs and the walls over a mark, which gives way to it (a grid label left out).
+    for (const bool overMarks : {false, true}) {
+        for (std::size_t form = 0; form < places.size(); ++form) {
+            for (const PixelRect& r : places[form]) {
+                if (!allowed(r) || discs.any(r) || crossesWalls(r, room)) continue;
+                const std::size_t under = marksUnder(r);
+                if (under == 0 || overMarks) return {r, form, 0, false, under};
+            }
         }
     }
     // None: the least covered of each form's first few allowed (counting costs in a gas).
     ReadingPlace best;
+    const auto key = [](const ReadingPlace& p) {
+        return std::tuple{p.discs, p.acrossWall, p.marks};
+    };
     for (std::size_t form = 0; form < places.size(); ++form) {
         std::size_t tried = 0;
         for (const PixelRect& r : places[form]) {
             if (!allowed(r)) continue;
-            const ReadingPlace here{r, form, discs.count(r), crossesWalls(r, room)};
-            if (best.at.w == 0 ||
-                std::pair{here.discs, here.acrossWall} < std::pair{best.discs, best.acrossWall}) {
-                best = here;
-            }
+            const ReadingPlace here{r, form, discs.count(r), crossesWalls(r, room), marksUnder(r)};
+            if (best.at.w == 0 || key(here) < key(best)) best = here;
             if (++tried == kReadingFallbacks) break;
         }
     }

@@ -25,7 +25,8 @@
 // each ball rather than none, all alike).
 //
 // The ruler's reading is placed among the same places (firstClearPlace): clear of the discs
-// where a place is, over the fewest where none is.
+// where a place is, over the fewest where none is; over the grid's labels only where that
+// keeps it off the discs.
 
 #include <cstddef>
 #include <vector>
@@ -154,7 +155,8 @@ struct ReadingPlace {
     std::size_t form = 0;     ///< which of the forms' places it is
     std::size_t discs = 0;    ///< discs it covers
     bool acrossWall = false;  ///< it crosses a wall
-    [[nodiscard]] bool clear() const { return at.w > 0 && discs == 0 && !acrossWall; }
+    std::size_t marks = 0;    ///< other readings it covers (the grid's labels, left out)
+    [[nodiscard]] bool clear() const { return at.w > 0 && discs == 0 && !acrossWall && marks == 0; }
 };
 
 /// Places counted for the discs they cover when none is clear (firstClearPlace).
@@ -162,12 +164,15 @@ inline constexpr std::size_t kReadingFallbacks = 24;
 
 /// For a box that can take several forms (the ruler's reading in one, two or three lines),
 /// `places` for each form in order of preference: the first place inside the room's window,
-/// clear of its keepOut, of every one of `discs` and across no wall, trying the first form's
-/// places, then the second's...; where none is, of the first kReadingFallbacks of each form's
-/// places inside the window and clear of keepOut, the one that covers the fewest discs, then
-/// crosses no wall (the first of equals).
+/// clear of its keepOut, of every one of `discs`, of every one of `marks` (readings that give
+/// way: the grid's labels) and across no wall, trying the first form's places, then the
+/// second's...; where none is, the first of them clear of the discs and the walls, over
+/// marks; where none is, of the first kReadingFallbacks of each form's places inside the window
+/// and clear of keepOut, the one that covers the fewest discs, then crosses no wall, then
+/// covers the fewest marks (the first of equals).
 [[nodiscard]] ReadingPlace firstClearPlace(const std::vector<std::vector<PixelRect>>& places,
                                            const std::vector<PixelRect>& discs,
-                                           const LabelRoom& room);
+                                           const LabelRoom& room,
+                                           const std::vector<PixelRect>& marks = {});
 
 }  // namespace psb::app

@@ -46,5 +46,59 @@ TEST(TooltipPosition, ATooltipTallerThanTheRoomAboveTheBandGoesBelowIt) {
     EXPECT_GE(r.y, band.y + band.h);
 }
 
+TEST(TooltipState, AControlBroughtUnderAStillPointerByAKeyShowsNoTooltip) {
+    // A trial at 200 %: the keyboard on the panel, Space (Play) brought the Play button's
+    // tooltip up at the pointer, which rested over the values table's totals (ImGui counts the
+    // control the keyboard is on as hovered). A tooltip waits for a real hover: the pointer
+    // moved onto the control and resting there kDelaySeconds.
+    TooltipState t;
+    double now = 0.0;
+    const auto frame = [&](float x, float y) {
+        now += 0.1;
+        t.startFrame(now, true, x, y);
+    };
+    // The pointer comes to rest on the values table: no tooltip there.
+    frame(500.f, 450.f);
+    frame(520.f, 460.f);
+    for (int k = 0; k < 10; ++k)
+        frame(520.f, 460.f);
+    // A key: the keyboard on Play, which ImGui now calls hovered, the pointer still.
+    for (int k = 0; k < 20; ++k) {
+        frame(520.f, 460.f);
+        EXPECT_FALSE(t.show("Start or stop the clock (key Space)")) << "after " << now << " s";
+    }
+    // The pointer moves (onto Play, say): after the delay, its tooltip.
+    frame(60.f, 80.f);
+    EXPECT_FALSE(t.show("Start or stop the clock (key Space)")) << "not at once";
+    bool shown = false;
+    for (int k = 0; k < 10 && !shown; ++k) {
+        frame(60.f, 80.f);
+        shown = t.show("Start or stop the clock (key Space)");
+    }
+    EXPECT_TRUE(shown) << "a real hover";
+    EXPECT_GE(now, 0.1 * 21 + TooltipState::kDelaySeconds);
+    // Resting there, a key moves the layout: another control under the still pointer waits.
+    frame(60.f, 80.f);
+    EXPECT_FALSE(t.show("Step one frame"));
+    for (int k = 0; k < 10; ++k) {
+        frame(60.f, 80.f);
+        EXPECT_FALSE(t.show("Step one frame"));
+    }
+}
+
+TEST(TooltipState, AMouseRestingOnAControlItMovedOntoShowsItsTooltipAfterTheDelay) {
+    TooltipState t;
+    t.startFrame(0.0, true, 10.f, 10.f);
+    t.startFrame(0.1, true, 60.f, 80.f);
+    EXPECT_FALSE(t.show("Play"));
+    t.startFrame(0.4, true, 60.f, 80.f);
+    EXPECT_FALSE(t.show("Play"));
+    t.startFrame(0.7, true, 60.f, 80.f);
+    EXPECT_TRUE(t.show("Play"));
+    // Never for a finger.
+    t.startFrame(0.8, false, 61.f, 80.f);
+    EXPECT_FALSE(t.show("Play"));
+}
+
 }  // namespace
 }  // namespace psb::app

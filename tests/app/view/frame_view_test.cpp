@@ -750,6 +750,39 @@ TEST(LabelPlaces, OnTheRampNoLabelNorItsLineCrossesARampNorTouchesTheBoxsWalls) 
     }
 }
 
+TEST(MarkLabels, OnTheRampTheRulersReadingNeverCoversABallAsTheyRoll) {
+    // The ramp lesson at 200 % with the grid and the plots (what lesson 1 left shown): as the
+    // bodies rolled, the room beside the ruler left no place clear of the balls, the ramps and
+    // the grid's distances, and the reading was drawn over the bottom body. With the labels
+    // (S) and the values table (I) too. Each frame of 2.5 s, the reading covers no ball.
+    const test::FixedMeasure font(2.0);
+    for (const bool more : {false, true}) {
+        Session s = test::onTheProjector(presetWorld("12-ramp.json"),
+                                         {ShowOption::Ruler, ShowOption::Grid, ShowOption::Plots});
+        if (more) {
+            s.apply(cmd::SetShow{ShowOption::Labels, true});
+            s.apply(cmd::SetShow{ShowOption::Values, true});
+        }
+        s.apply(cmd::TogglePause{});
+        for (int k = 0; k <= 150; ++k) {
+            if (k > 0) s.update(1.0 / 60.0, k / 60.0);
+            const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+            ASSERT_TRUE(f.ruler.has_value());
+            const PixelRect reading = labelRect(f.ruler->label, font, kReadingPad);
+            const std::vector<PixelRect> balls =
+                discsOnScreen(s.world(), s.camera(), {0, 0, 1600, 1000});
+            for (std::size_t i = 0; i < balls.size(); ++i) {
+                ASSERT_FALSE(overlaps(reading, balls[i]))
+                    << (more ? "with labels and the table, " : "") << "at " << s.world().time()
+                    << " s the reading at " << reading.x << "," << reading.y << " " << reading.w
+                    << "x" << reading.h << " covers body " << i + 1;
+            }
+            for (const PixelRect& panel : panelRects(f.layout))
+                ASSERT_FALSE(overlaps(reading, panel)) << "under a panel at " << s.world().time();
+        }
+    }
+}
+
 TEST(GridView, OnTheProjectorItsLabelsStandInsideTheBoxClearOfItsTopWall) {
     // The grid (Shift+G) on the ramp at 200 %: its labels along the top straddled the top
     // wall, and a ruler's reading placed above the box took their place (the 1, 2, 3 m went

@@ -177,6 +177,51 @@ TEST(MarkLabels, TheRulersReadingGoesWhereItCoversNoGridLabel) {
         EXPECT_FALSE(overlaps(labelRect(l, font), reading)) << l.text;
 }
 
+TEST(MarkLabels, TheRulersReadingCoversNoBallWhereAPlaceFartherOutIsClear) {
+    // The ramp at 200 % as its bodies rolled: every place within 200 pixels of the ruler's
+    // middle covered a ball, and the reading took the one that covered fewest (one ball) while
+    // the room above the box was clear. It goes there; and where a place is clear of the balls
+    // only over a grid label, it covers the label (left out), not a ball.
+    const test::FixedMeasure font(2.0);
+    const Camera c = camera(200.0, Vec2(-1.65, -1.0));  // the box's top-left at (330, 200)
+    LabRuler r;
+    r.place(4.0, 3.9);
+    r.take(LabRuler::Part::EndA, r.a());
+    r.moveTo(Vec2(1.0, 2.0));
+    r.take(LabRuler::Part::EndB, r.b());
+    r.moveTo(Vec2(2.5, 2.0));
+    const RulerView fresh = rulerView(r, c);
+    const Vec2 middle = 0.5 * (fresh.a + fresh.b);
+    // Balls 30 pixels across, 40 apart, over the 520 pixels square round the middle.
+    std::vector<PixelRect> balls;
+    for (int y = -260; y <= 260; y += 40) {
+        for (int x = -260; x <= 260; x += 40) {
+            balls.push_back({static_cast<int>(middle.x()) + x - 15,
+                             static_cast<int>(middle.y()) + y - 15, 30, 30});
+        }
+    }
+    const PixelRect room{310, 0, 1290, 1000};
+    RulerView ruler = fresh;
+    keepMarkLabelsClear(nullptr, &ruler, font, {room, {}, {}, {}}, balls);
+    PixelRect reading = labelRect(ruler.label, font, kReadingPad);
+    for (const PixelRect& b : balls)
+        ASSERT_FALSE(overlaps(reading, b)) << "at " << reading.x << "," << reading.y;
+    EXPECT_GE(reading.x, room.x);
+    EXPECT_LE(reading.y + reading.h, room.y + room.h);
+    // Now the room ends where the balls do, but for a row below them 90 pixels high (the two-line
+    // reading's 72 fit, the three-line's 106 do not), with a grid label in its middle.
+    const PixelRect tight{static_cast<int>(middle.x()) - 275, static_cast<int>(middle.y()) - 275,
+                          560, 640};
+    GridView grid;
+    grid.labels.push_back({Vec2(middle.x(), middle.y() + 320.0), "2 m"});
+    ruler = fresh;
+    keepMarkLabelsClear(&grid, &ruler, font, {tight, {}, {}, {}}, balls);
+    reading = labelRect(ruler.label, font, kReadingPad);
+    for (const PixelRect& b : balls)
+        EXPECT_FALSE(overlaps(reading, b)) << "at " << reading.x << "," << reading.y;
+    EXPECT_TRUE(grid.labels.empty()) << "the label under it is left out";
+}
+
 TEST(WallAngleLabel, TheWallBeingDrawnReadsItsLengthAndSlopeBeyondItsEnd) {
     const Camera c = camera(100.0);
     const MarkLabel l = wallAngleLabel(Vec2(0.0, 0.45), Vec2(2.6, 1.3963), c);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 #include <cmath>
@@ -68,6 +69,28 @@ TEST(Presets, EachStartsWithItsNameAndDescription) {
         EXPECT_FALSE(s.name.empty());
         EXPECT_GT(s.description.size(), 60u);
     }
+}
+
+TEST(Presets, ABodyThatCannotTurnIsNamedAsTheDiscItIsDrawn) {
+    // The ramp lesson at 200 %: its description and the README called the third body "a block
+    // that cannot turn", and the box drew a round ball. Every particle is a disc and is drawn as
+    // one: a preset of a few bodies, each named in its description, names one that cannot turn
+    // a disc that cannot turn (sliding as a block would), never a block.
+    std::size_t named = 0;
+    for (const auto& file : sceneFiles(kScenes)) {
+        SCOPED_TRACE(file.filename().string());
+        const Scene s = loadScene(file);
+        if (s.particles.empty() || s.particles.size() > 10) continue;
+        const bool oneCannotTurn =
+            std::any_of(s.particles.begin(), s.particles.end(),
+                        [](const ParticleDef& p) { return p.fixedRotation; });
+        if (!oneCannotTurn) continue;
+        ++named;
+        EXPECT_NE(s.description.find("a disc that cannot turn"), std::string::npos)
+            << s.description;
+        EXPECT_EQ(s.description.find("block that cannot turn"), std::string::npos) << s.description;
+    }
+    EXPECT_GE(named, 2u) << "the ramp and bowling";
 }
 
 TEST(Presets, AllLoadAndRunKeepingEveryParticleInTheBox) {
