@@ -103,9 +103,9 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     const auto widen = [&widths](std::size_t k, const std::string& text, float extra) {
         widths[k] = std::max(widths[k], ImGui::CalcTextSize(text.c_str()).x + extra);
     };
-    // A column's name and unit with two spaces' air: the units row draws no border between
-    // its cells, and "kg m/s" beside "kg m/s" read as one at 200 %.
-    const float air = 2.f * ImGui::CalcTextSize(" ").x;
+    // A column's name and unit with a space's air, on top of the cells' padding: the units row
+    // draws no border between its cells, and "kg m/s" beside "kg m/s" read as one at 200 %.
+    const float air = ImGui::CalcTextSize(" ").x;
     for (std::size_t k = 0; k < columns.size(); ++k) {
         const float frame = columns[k].field ? 2.f * style.FramePadding.x : 0.f;
         widen(k, columns[k].name, air);

@@ -113,8 +113,9 @@ TEST_F(SectionValuesTest, TheLessonsValuesTableShowsEveryColumnAndRowWithoutScro
 
 TEST_F(SectionValuesTest, UnitsUnderTheHeadersNeverRunIntoEachOther) {
     // At 200 % the momentum columns' units read as one: "kg m/skg m/s", the border between
-    // them hidden under the letters. Between two columns' units there is at least the width of
-    // two spaces, in the lesson's table and in the ramp's (its omega, rad/s), at every scale.
+    // them hidden under the letters (5 points apart, a space's width). Between two columns'
+    // units there is at least the width of two spaces, in the lesson's table and in the ramp's
+    // (its omega, rad/s), at every scale.
     Scene lesson;
     lesson.world.width = 10.0;
     lesson.world.height = 4.0;
