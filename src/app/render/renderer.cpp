@@ -15,6 +15,7 @@
 #include "session/units.hpp"
 #include "view/label_places.hpp"
 #include "view/mass_shade.hpp"
+#include "view/particle_labels.hpp"
 
 namespace psb::app {
 
@@ -345,54 +346,26 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             if (avoid != nullptr) {
                 room.walls.insert(room.walls.end(), avoid->walls.begin(), avoid->walls.end());
             }
-            using Lines = std::array<std::array<char, 64>, 5>;
-            std::vector<Lines> texts(visible.size());
-            // The short form, where the full labels find no clear place (label_places.hpp): whose
-            // ball, its mass and its velocity.
-            std::vector<std::array<std::array<char, 64>, 2>> shortTexts(visible.size());
+            // One compact form for every label (view/particle_labels.hpp): whose ball, its mass
+            // and its velocity, or its name alone.
+            std::vector<ParticleLabelText> texts(visible.size());
             std::vector<LabelAsk> asks(visible.size());
             const Axes axes = options.axes(world.def());  // vy up or down, as the user reads it
             for (std::size_t k = 0; k < visible.size(); ++k) {
                 const std::size_t i = visible[k];
-                Lines& lines = texts[k];
-                const double vx = p.vx[i], vy = axes.up(p.vy[i]), m = p.mass[i];
                 // The number the panel and the log name it by (particleNumber).
-                std::snprintf(lines[0].data(), lines[0].size(), "particle %llu",
-                              static_cast<unsigned long long>(particleNumber(p.id[i])));
-                // Two decimals; what rounds to zero reads "0.00", never "-0.00".
-                const auto twoDecimals = [](double v) { return std::abs(v) < 0.005 ? 0.0 : v; };
-                std::snprintf(lines[1].data(), lines[1].size(), "x velocity: %.2f m/s",
-                              twoDecimals(vx));
-                std::snprintf(lines[2].data(), lines[2].size(), "y velocity: %.2f m/s",
-                              twoDecimals(vy));
-                // Signed components, as the velocity's: a ball moving left has px < 0.
-                std::snprintf(lines[3].data(), lines[3].size(), "p: (%s, %s) kg m/s",
-                              quantity(m * vx, "", false).c_str(),
-                              quantity(m * vy, "", false).c_str());
-                std::snprintf(lines[4].data(), lines[4].size(), "mass: %s",
-                              quantity(m, "kg", false).c_str());
-                auto& brief = shortTexts[k];
-                std::snprintf(brief[0].data(), brief[0].size(), "particle %llu, %s",
-                              static_cast<unsigned long long>(particleNumber(p.id[i])),
-                              quantity(m, "kg", false).c_str());
-                std::snprintf(brief[1].data(), brief[1].size(), "v (%.2f, %.2f) m/s",
-                              twoDecimals(vx), twoDecimals(vy));
-                int width = 0;
-                for (const auto& l : lines)
-                    width = std::max(width, labelFont_->measure(l.data()));
-                int shortWidth = 0;
-                for (const auto& l : brief)
-                    shortWidth = std::max(shortWidth, labelFont_->measure(l.data()));
+                texts[k] = particleLabelText(particleNumber(p.id[i]), p.mass[i], p.vx[i],
+                                             axes.up(p.vy[i]));
                 // A box of fixed pixel size at every zoom, at whole pixels, 2 px clear of the
                 // disc (view/label_places.hpp chooses where).
                 const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
                 const int cx = static_cast<int>(std::lround(c.x()));
                 const int cy = static_cast<int>(std::lround(c.y()));
                 const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
-                asks[k].disc = {cx - r, cy - r, 2 * r, 2 * r};
-                asks[k].size = {width + 4, 5 * lh + 1};
-                asks[k].shortSize = {shortWidth + 4, 2 * lh + 1};
-                asks[k].nameSize = {labelFont_->measure(lines[0].data()) + 4, lh + 1};
+                const bool inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
+                                   p.x[i] <= world.def().width && p.y[i] <= world.def().height;
+                asks[k] =
+                    particleLabelAsk(texts[k], {cx - r, cy - r, 2 * r, 2 * r}, *labelFont_, inBox);
                 if (const double len = arrowLength_[k]; len > camera.toScreen(p.radius[i])) {
                     // As drawn: from the rim to the tip, the head's half-width and a pixel.
                     const double speed = std::sqrt(p.vx[i] * p.vx[i] + p.vy[i] * p.vy[i]);
@@ -403,8 +376,6 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                     asks[k].arrow = {from.x(), from.y(), tip.x(), tip.y(),
                                      head * std::tan(std::numbers::pi / 6.0) + 1.0};
                 }
-                asks[k].inBox = world.def().walls && p.x[i] >= 0.0 && p.y[i] >= 0.0 &&
-                                p.x[i] <= world.def().width && p.y[i] <= world.def().height;
             }
             const std::vector<LabelPlace> places = placeLabels(asks, room);
             for (std::size_t k = 0; k < places.size(); ++k) {
@@ -433,11 +404,11 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 labelBoxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
                                  static_cast<float>(box.x + box.w),
                                  static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
-                const int lineCount = place.nameOnly ? 1 : place.shortForm ? 2 : 5;
+                const int lineCount = place.nameOnly ? 1 : 2;
                 for (int line = 0; line < lineCount; ++line) {
-                    const auto at = static_cast<std::size_t>(line);
                     const char* text =
-                        place.shortForm ? shortTexts[k][at].data() : texts[k][at].data();
+                        place.nameOnly ? texts[k].name.c_str()
+                                       : texts[k].values[static_cast<std::size_t>(line)].c_str();
                     const float x = static_cast<float>(box.x + 2);
                     const float y = static_cast<float>(box.y + 1 + line * lh);
                     labelFont_->layout(text, x, y, sdlColor(colours.labelText), labelText_);

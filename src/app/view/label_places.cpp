@@ -86,6 +86,8 @@ class DiscIndex {
                     cell(row, column).push_back(static_cast<int>(i));
         }
         seen_.assign(discs.size(), 0);
+        for (const PixelRect& d : discs)
+            largest_ = std::max(largest_, d.w);
     }
 
     /// Whether `r` overlaps any disc.
@@ -119,6 +121,53 @@ class DiscIndex {
                                          d.y + d.h - g)) {
                         return true;
                     }
+                }
+            }
+        }
+        return false;
+    }
+
+    /// Whether a disc other than `own` (an index into the discs) has its rim as near to
+    /// (px, py) as `own`'s, or nearer: the discs as circles in their squares.
+    [[nodiscard]] bool otherAsNear(double px, double py, std::size_t own) const {
+        const auto rim = [&](const PixelRect& d) {
+            const double r = 0.5 * d.w;
+            return std::hypot(d.x + r - px, d.y + r - py) - r;
+        };
+        const double mine = rim(discs_[own]);
+        // Any disc as near has its square within `mine` plus the largest square of (px, py).
+        const int reach = static_cast<int>(std::ceil(std::max(0.0, mine))) + largest_ + 1;
+        const PixelRect around{static_cast<int>(std::floor(px)) - reach,
+                               static_cast<int>(std::floor(py)) - reach, 2 * reach + 1,
+                               2 * reach + 1};
+        const Span s = span(around);
+        for (int row = s.r0; row <= s.r1; ++row) {
+            for (int column = s.c0; column <= s.c1; ++column) {
+                for (const int i : cell(row, column)) {
+                    const auto k = static_cast<std::size_t>(i);
+                    if (k != own && rim(discs_[k]) <= mine) return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /// Whether a disc other than `own` has its rim within `clearance` pixels of `r`.
+    [[nodiscard]] bool otherWithin(const PixelRect& r, int clearance, std::size_t own) const {
+        const PixelRect around{r.x - clearance, r.y - clearance, r.w + 2 * clearance,
+                               r.h + 2 * clearance};
+        const Span s = span(around);
+        for (int row = s.r0; row <= s.r1; ++row) {
+            for (int column = s.c0; column <= s.c1; ++column) {
+                for (const int i : cell(row, column)) {
+                    const auto k = static_cast<std::size_t>(i);
+                    if (k == own) continue;
+                    const PixelRect& d = discs_[k];
+                    const double half = 0.5 * d.w;
+                    const double cx = d.x + half, cy = d.y + half;
+                    const double ex = std::max({r.x - cx, 0.0, cx - (r.x + r.w)});
+                    const double ey = std::max({r.y - cy, 0.0, cy - (r.y + r.h)});
+                    if (std::hypot(ex, ey) - half < clearance) return true;
                 }
             }
         }
@@ -169,6 +218,7 @@ class DiscIndex {
     std::vector<std::vector<int>> cells_;
     std::vector<unsigned> seen_;
     unsigned stamp_ = 0;
+    int largest_ = 0;  ///< the largest disc's square, pixels
 };
 
 /// Whether `r` crosses the walled box's outline (as drawn, its thickness outside the box) or
@@ -231,21 +281,29 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
         const auto clearOfArrow = [&a](const PixelRect& r) {
             return !(a.arrow.halfWidth > 0.0) || !crosses(r, a.arrow);
         };
+        // Without a line to its disc, a label is read as the nearest ball's.
+        const auto nearestIsOwn = [&](const PixelRect& r) {
+            return !discs.otherAsNear(r.x + 0.5 * r.w, r.y + 0.5 * r.h, i);
+        };
         // Beside its disc (in the box first), then on rings round it: a label of `size`.
         const auto placeAs = [&](PixelPoint size) {
             const std::vector<PixelRect> beside = placesBeside(a.disc, size, inside);
             for (const bool inRoom : {inBox, false}) {
                 for (const PixelRect& r : beside) {
                     if (inRoom && !contains(inside, r)) continue;
-                    if (free(r) && clearOfArrow(r)) {
+                    if (free(r) && clearOfArrow(r) && nearestIsOwn(r)) {
                         take(r);
                         return true;
                     }
                 }
             }
             if (!rings) return false;
+            // Away from its ball, a label keeps half its height clear of every other ball: one
+            // touching another ball read as that one's, its short line to its own unseen (the
+            // original's particle 5 at 100 %, under particle 3's rim).
+            const int clearance = std::max(2 * kLabelGap, size.y / 2);
             for (const PixelRect& r : placesOnRings(a.disc, size, kLabelRings)) {
-                if (!free(r) || !clearOfArrow(r)) continue;
+                if (!free(r) || !clearOfArrow(r) || discs.otherWithin(r, clearance, i)) continue;
                 // Its line to the disc crosses no wall at an angle (the box's own walls it
                 // may: a small box's labels stand outside it), no other disc, and nothing the
                 // room keeps out (it crossed the grid's "2 m").
@@ -267,20 +325,6 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
             return false;
         };
         if (placeAs(a.size)) continue;
-        // No clear place for it whole: its short form, which keeps its values (two balls
-        // touching at an impact in a small box at 200 % had room for two lines each, not five).
-        if (a.shortSize.x > 0 && a.shortSize.y > 0 && a.shortSize.y < a.size.y &&
-            placeAs(a.shortSize)) {
-            p.shortForm = true;
-            continue;
-        }
-        // Nor for that: its name alone, where that has one (between two of the ramp's ramps
-        // at 200 %, where neither form fits and a line across a ramp would put it on the wrong
-        // side).
-        if (a.nameSize.x > 0 && a.nameSize.y > 0 && placeAs(a.nameSize)) {
-            p.nameOnly = true;
-            continue;
-        }
         const std::vector<PixelRect> beside = placesBeside(a.disc, a.size, inside);
         p.offWindow = std::none_of(beside.begin(), beside.begin() + 4,
                                    [&window](const PixelRect& r) { return contains(window, r); });
@@ -409,29 +453,20 @@ std::vector<LabelPlace> placeLabels(const std::vector<LabelAsk>& asks, const Lab
         discRects[i] = asks[i].disc;
     const DiscIndex discs(discRects, room.window);
     std::vector<LabelPlace> best = placeBest(asks, room, discs);
-    const bool shortForms =
+    const bool names =
         !asks.empty() && std::all_of(asks.begin(), asks.end(), [](const LabelAsk& a) {
-            return a.shortSize.x > 0 && a.shortSize.y > 0;
+            return a.nameSize.x > 0 && a.nameSize.y > 0;
         });
-    // Labels left out, then those with their name alone: fewer is better.
-    const auto loss = [](const std::vector<LabelPlace>& places) {
-        return std::pair{leftOut(places), static_cast<std::size_t>(std::count_if(
-                                              places.begin(), places.end(),
-                                              [](const LabelPlace& p) { return p.nameOnly; }))};
-    };
-    const bool whole = std::none_of(best.begin(), best.end(), [](const LabelPlace& p) {
-        return p.at.w == 0 || p.nameOnly || p.shortForm;
-    });
-    if (whole || !shortForms) return best;
-    // Some label lost lines: every label in its short form, where that loses no more (the
-    // labels read alike, inside a small box rather than some out of it).
-    std::vector<LabelAsk> shorter = asks;
-    for (LabelAsk& a : shorter)
-        a.size = a.shortSize;
-    std::vector<LabelPlace> brief = placeBest(shorter, room, discs);
-    if (loss(brief) > loss(best)) return best;
+    if (leftOut(best) == 0 || !names) return best;
+    // Some label found no place for its values: every label its name alone, where that leaves
+    // fewer out (between two of the ramp's ramps at 200 % only a name fits). One form for all.
+    std::vector<LabelAsk> named = asks;
+    for (LabelAsk& a : named)
+        a.size = a.nameSize;
+    std::vector<LabelPlace> brief = placeBest(named, room, discs);
+    if (leftOut(brief) >= leftOut(best)) return best;
     for (LabelPlace& p : brief)
-        p.shortForm = !p.nameOnly;
+        p.nameOnly = true;
     return brief;
 }
 

@@ -10,19 +10,23 @@
 //   3. further out, on rings of places around its disc, joined to its disc by a leader line (a
 //      small box has no room beside its balls; the window round it has) that crosses no wall
 //      at an angle (a ramp between a ball and its label would put the label on the wrong
-//      side of it);
+//      side of it), the label half its height clear of every other ball (one touching another
+//      ball reads as that one's);
 //
-// and, where no place is free for it, its short form (LabelAsk::shortSize: its values in two
-// lines), then its name alone ("particle 3"), placed the same way; it is left out when none is
-// free for that either. Free: inside the window, clear of every disc, of its own ball's velocity
-// arrow, of the labels already placed and their leader lines (a leader line passes over no
-// other disc nor label, nor over what the room keeps out) and of what the room keeps out (the
-// panels, pegs, the grid's distances, the ruler's reading), and across no wall (the box's
-// outline, a wall at any angle). A label never covers a ball nor crosses a wall: in a crowd (the
-// funnel's 400 balls) most are left out, and the HUD says how many. Where that leaves a label
-// out or takes lines from one and the labels have a short form, every label takes its short form
-// if that leaves no more out nor with its name alone (a small box at 200 %: two lines beside
-// each ball rather than none, all alike).
+// and it is left out when no place is free. Free: inside the window, clear of every disc, of
+// its own ball's velocity arrow, of the labels already placed and their leader lines (a leader
+// line passes over no other disc nor label, nor over what the room keeps out) and of what the
+// room keeps out (the panels, pegs, the grid's distances, the ruler's reading), and across no
+// wall (the box's outline, a wall at any angle); and a label without a leader line is nearer
+// its own disc than any other (from the label's middle to each disc's rim): a reader ties a
+// label to the ball nearest it (in the original's six balls at 200 % one stood beside its
+// ball's rim but nearer its neighbour, and read as the neighbour's). A label never covers a
+// ball nor crosses a wall: in a crowd (the funnel's 400 balls) most are left out, and the HUD
+// says how many.
+//
+// Every label has one form: its values (LabelAsk::size), or, where that leaves labels out that
+// their names alone (LabelAsk::nameSize, "particle 3") would not, every label its name alone.
+// Never a mix (labels of one line beside labels of five read as different things).
 //
 // The ruler's reading is placed among the same places (firstClearPlace): clear of the discs
 // where a place is, over the fewest where none is; over the grid's labels only where that
@@ -87,9 +91,8 @@ struct LabelAsk {
     PixelRect disc;      ///< the disc's bounding square, pixels, with the gap kept round it
     PixelPoint size;     ///< the label's box, pixels
     bool inBox = false;  ///< the disc is inside the walled box: its label stays in it if it can
-    PixelPoint shortSize{0, 0};  ///< its short form's box, pixels; {0, 0}: none
-    /// Its name's box alone ("particle 3"), pixels, for where neither form has a clear place;
-    /// {0, 0}: none.
+    /// Its name's box alone ("particle 3"), pixels: every label's form where the values leave
+    /// labels out that the names would not; {0, 0}: none.
     PixelPoint nameSize{0, 0};
     /// Its ball's velocity arrow from the rim to the tip, its head's half-width either side;
     /// halfWidth == 0: none. The label is never drawn over it.
@@ -101,9 +104,7 @@ struct LabelPlace {
     PixelRect at;  ///< w == 0: left out
     /// Away from its disc (the ring rule): a line joins its nearest edge to the disc.
     bool leader = false;
-    /// In its short form (every label is, or none).
-    bool shortForm = false;
-    /// Its name alone (LabelAsk::nameSize): no place was clear for more.
+    /// Its name alone (LabelAsk::nameSize), as every label is, or none.
     bool nameOnly = false;
     /// Left out with no side of its disc inside the window at all (a disc nearly the window's
     /// size), rather than for want of a free place.

@@ -4,11 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <initializer_list>
 #include <string>
 #include <utility>
 #include <vector>
+
+#include <particle_sandbox/scene.hpp>
 
 #include "session/session.hpp"
 #include "session/test_assets.hpp"
@@ -18,6 +22,7 @@
 #include "view/lab_marks.hpp"
 #include "view/label_places.hpp"
 #include "view/overlays.hpp"
+#include "view/particle_labels.hpp"
 #include "view/projector_fixture.hpp"
 
 namespace psb::app {
@@ -69,6 +74,25 @@ TEST(RecordingMark, OnTheProjectorNeitherItNorAPanelIsUnderTheScreensHud) {
     }
 }
 
+/// The labels of `s`'s particles as the drawing layer asks for them (render/renderer.cpp,
+/// without the arrows), in `font`.
+std::vector<LabelAsk> labelAsksOf(const Session& s, const TextMeasure& font) {
+    const Camera& camera = s.camera();
+    const ParticleArrays& p = s.world().particles();
+    const Axes axes = s.axes();
+    std::vector<LabelAsk> asks;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+        const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
+        const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
+        const int cx = static_cast<int>(std::lround(c.x())),
+                  cy = static_cast<int>(std::lround(c.y()));
+        const ParticleLabelText text =
+            particleLabelText(particleNumber(p.id[i]), p.mass[i], p.vx[i], axes.up(p.vy[i]));
+        asks.push_back(particleLabelAsk(text, {cx - r, cy - r, 2 * r, 2 * r}, font, true));
+    }
+    return asks;
+}
+
 /// The labels of `s`'s particles placed as the drawing layer places them
 /// (render/renderer.cpp), in the 200 % labels' sizes.
 std::vector<LabelPlace> labelsOf(const Session& s, const FrameView& f,
@@ -77,21 +101,7 @@ std::vector<LabelPlace> labelsOf(const Session& s, const FrameView& f,
     const Camera& camera = s.camera();
     LabelRoom room = labelRoom(s.world(), camera, {0, 0, 1600, 1000}, keep.rects);
     room.walls.insert(room.walls.end(), keep.walls.begin(), keep.walls.end());
-    const ParticleArrays& p = s.world().particles();
-    const int lh = font.lineHeight();
-    std::vector<LabelAsk> asks;
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
-        const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
-        const int cx = static_cast<int>(std::lround(c.x())),
-                  cy = static_cast<int>(std::lround(c.y()));
-        asks.push_back({{cx - r, cy - r, 2 * r, 2 * r},
-                        {font.measure("x velocity: -1.00 m/s") + 4, 5 * lh + 1},
-                        true,
-                        {font.measure("v (-1.00, 0.00) m/s") + 4, 2 * lh + 1},
-                        {font.measure("particle 1") + 4, lh + 1}});
-    }
-    return placeLabels(asks, room);
+    return placeLabels(labelAsksOf(s, font), room);
 }
 
 TEST(LabelPlaces, NoParticleLabelCoversTheGridsDistances) {
@@ -289,6 +299,65 @@ TEST(MomentumLegend, KeepsOffTheBoxWhenTheHudGrows) {
                 for (const PixelRect& r : panelRects(f.layout)) {
                     if (r == f.layout.legend) continue;
                     EXPECT_FALSE(overlaps(f.layout.legend, r)) << at << ", a panel at " << text(r);
+                }
+            }
+        }
+    }
+}
+
+TEST(LabelPlaces, InTheOriginalsSixBallsEveryLabelIsTiedToItsOwnBallInOneForm) {
+    // The original's six balls (preset 1) at 200 % with labels (S): labels slid along their
+    // ball's side stood nearer a neighbour (particle 3's between balls 1 and 3 read as 1's),
+    // and some had five lines while others had one. Each label is nearest its own ball or
+    // joined to it by a line, never over a ball, all in one form of at most two lines, and,
+    // paused or as they move, none is left out.
+    for (const bool panel : {true, false}) {
+        Session s = onTheProjector(makeWorld(loadScene(std::filesystem::path(PSB_ASSETS_DIR) /
+                                                       "scenes" / "01-original.json")),
+                                   {ShowOption::Labels});
+        if (!panel) s.apply(cmd::ToggleControls{});
+        const test::FixedMeasure font(2.0);
+        for (int k = 0; k <= 120; k += 10) {
+            if (k > 0) {
+                s.apply(cmd::TogglePause{});
+                for (int j = 1; j <= 10; ++j)
+                    s.update(1.0 / 60.0, (k - 10 + j) / 60.0);
+                s.apply(cmd::TogglePause{});
+            }
+            const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
+            const std::vector<LabelAsk> asks = labelAsksOf(s, font);
+            const std::vector<LabelPlace> places = labelsOf(s, f, font);
+            ASSERT_EQ(places.size(), 6u);
+            const std::string at = std::string(panel ? "panel open" : "panel folded") +
+                                   ", t = " + std::to_string(s.world().time());
+            for (std::size_t i = 0; i < places.size(); ++i) {
+                const PixelRect& r = places[i].at;
+                ASSERT_GT(r.w, 0) << at << ": label " << i + 1 << " left out";
+                EXPECT_EQ(places[i].nameOnly, places[0].nameOnly) << at << ": two forms";
+                EXPECT_LE(r.h, 2 * font.lineHeight() + 1) << at << ": more than two lines";
+                for (std::size_t j = 0; j < asks.size(); ++j)
+                    EXPECT_FALSE(overlaps(r, asks[j].disc)) << at << ": label over a ball";
+                const double px = r.x + 0.5 * r.w, py = r.y + 0.5 * r.h;
+                const auto rim = [&](const PixelRect& d) {
+                    return std::hypot(d.x + 0.5 * d.w - px, d.y + 0.5 * d.h - py) - 0.5 * d.w;
+                };
+                for (std::size_t j = 0; j < asks.size(); ++j) {
+                    if (j == i) continue;
+                    if (!places[i].leader) {
+                        EXPECT_GT(rim(asks[j].disc), rim(asks[i].disc))
+                            << at << ": label " << i + 1 << " at " << text(r) << " nearer ball "
+                            << j + 1 << " than its own, with no line to it";
+                        continue;
+                    }
+                    // Joined by a line, away from its ball: clear of the others by half its
+                    // height (one touching another ball read as that one's).
+                    const PixelRect& d = asks[j].disc;
+                    const double half = 0.5 * d.w, cx = d.x + half, cy = d.y + half;
+                    const double ex = std::max({r.x - cx, 0.0, cx - (r.x + r.w)});
+                    const double ey = std::max({r.y - cy, 0.0, cy - (r.y + r.h)});
+                    EXPECT_GE(std::hypot(ex, ey) - half, r.h / 2)
+                        << at << ": label " << i + 1 << " at " << text(r) << " touches ball "
+                        << j + 1;
                 }
             }
         }

@@ -22,6 +22,7 @@
 #include "view/lab_marks.hpp"
 #include "view/label_places.hpp"
 #include "view/overlays.hpp"
+#include "view/particle_labels.hpp"
 #include "view/projector_fixture.hpp"
 
 namespace psb::app {
@@ -702,9 +703,8 @@ TEST(LabelPlaces, OnTheRampNoLabelNorItsLineCrossesARampNorTouchesTheBoxsWalls) 
     // The ramp at 200 % with labels (S): the top body's label stood on the box's top wall, and
     // the middle one's was joined to its body by a line across the top ramp (its label on the
     // wrong side of the ramp), though docs/app.md says a label never crosses a wall. Labels
-    // are placed as the drawing layer places them (render/renderer.cpp; the sizes of the
-    // labels' 22 px font: five lines of 27 pixels, the short form two, the name one): the
-    // middle body's is its name alone, between the two ramps, where neither form fits.
+    // are placed as the drawing layer places them (render/renderer.cpp, view/particle_labels.hpp):
+    // between the two ramps only a name fits, so every body's label is its name alone.
     const test::FixedMeasure font(2.0);
     const Session s = onTheProjector(presetWorld("12-ramp.json"), {ShowOption::Labels});
     const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
@@ -719,7 +719,9 @@ TEST(LabelPlaces, OnTheRampNoLabelNorItsLineCrossesARampNorTouchesTheBoxsWalls) 
         const int r = static_cast<int>(std::ceil(camera.toScreen(p.radius[i]))) + kLabelGap;
         const int cx = static_cast<int>(std::lround(c.x())),
                   cy = static_cast<int>(std::lround(c.y()));
-        asks.push_back({{cx - r, cy - r, 2 * r, 2 * r}, {292, 139}, true, {280, 57}, {148, 29}});
+        const ParticleLabelText text =
+            particleLabelText(particleNumber(p.id[i]), p.mass[i], p.vx[i], p.vy[i]);
+        asks.push_back(particleLabelAsk(text, {cx - r, cy - r, 2 * r, 2 * r}, font, true));
     }
     const std::vector<LabelPlace> places = placeLabels(asks, room);
     const Camera::ScreenBox b = camera.boxOnScreen(4.0, 3.9);

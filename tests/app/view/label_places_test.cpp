@@ -28,6 +28,19 @@ std::vector<LabelAsk> ballsIn(const PixelRect& box, int n, int radius, PixelPoin
     return asks;
 }
 
+/// Whether the middle of `label` (ball `i`'s) is nearer its own disc's rim than any other's:
+/// a label without a leader line is read as the nearest ball's.
+bool nearestIsOwn(const std::vector<LabelAsk>& asks, const PixelRect& label, std::size_t i) {
+    const double px = label.x + 0.5 * label.w, py = label.y + 0.5 * label.h;
+    const auto rim = [&](const PixelRect& d) {
+        return std::hypot(d.x + 0.5 * d.w - px, d.y + 0.5 * d.h - py) - 0.5 * d.w;
+    };
+    for (std::size_t j = 0; j < asks.size(); ++j) {
+        if (j != i && rim(asks[j].disc) <= rim(asks[i].disc)) return false;
+    }
+    return true;
+}
+
 void expectReadable(const std::vector<LabelAsk>& asks, const std::vector<LabelPlace>& places,
                     const PixelRect& window, const std::vector<PixelRect>& panels) {
     ASSERT_EQ(places.size(), asks.size());
@@ -44,7 +57,20 @@ void expectReadable(const std::vector<LabelAsk>& asks, const std::vector<LabelPl
             EXPECT_FALSE(overlaps(r, places[j].at)) << "labels " << i << " and " << j;
         for (const PixelRect& p : panels)
             EXPECT_FALSE(overlaps(r, p)) << "label " << i << " under a panel";
-        if (!places[i].leader) continue;
+        if (!places[i].leader) {
+            EXPECT_TRUE(nearestIsOwn(asks, r, i)) << "label " << i << " nearer another ball";
+            continue;
+        }
+        // Away from its ball, half its height clear of every other ball.
+        for (std::size_t j = 0; j < asks.size(); ++j) {
+            if (j == i) continue;
+            const PixelRect& d = asks[j].disc;
+            const double half = 0.5 * d.w, cx = d.x + half, cy = d.y + half;
+            const double ex = std::max({r.x - cx, 0.0, cx - (r.x + r.w)});
+            const double ey = std::max({r.y - cy, 0.0, cy - (r.y + r.h)});
+            EXPECT_GE(std::hypot(ex, ey) - half, std::max(4, r.h / 2))
+                << "label " << i << ", away from its ball, touches ball " << j;
+        }
         // Its line, a point a pixel, over no other label nor ball (it ran through the text of
         // the mass-ratio preset's labels).
         const LeaderLine l = leaderLine(asks[i].disc, r);
@@ -71,27 +97,20 @@ LabelAsk ball(int x, int y, int radius, PixelPoint size) {
     return {{x - r, y - r, 2 * r, 2 * r}, size, true};
 }
 
-/// `a` with the short form the renderer gives a 350 x 131 label at 200 %.
-LabelAsk withShortForm(LabelAsk a) {
-    a.shortSize = {300, 53};
-    return a;
-}
-
 TEST(LabelPlaces, EveryBallOfASmallSceneInASmallBoxKeepsALabelOverNoOtherBall) {
     // Balls in a box too small for their labels beside them: they used to be left out
     // ("Labels: 1 left out") or drawn over other balls. Beside them where there is room, else
     // around them with a line to their ball, they fit: the collision lesson's two balls (at 2
-    // and 7 m of its 10 m x 4 m box) at 200 % in 1600 x 1000 (labels 350 x 131 pixels), the
-    // ramp's three bodies in a small box at 200 % in 1024 x 768 (in their two-line short
-    // form, 300 x 53: the window leaves the third full label no place clear of the walls), and
-    // ten balls in a box 300 pixels square at 100 % (labels 175 x 66).
+    // and 7 m of its 10 m x 4 m box) at 200 % in 1600 x 1000 (labels of two lines, 300 x 53
+    // pixels), the ramp's three bodies in a small box at 200 % in 1024 x 768, and ten balls in
+    // a box 300 pixels square at 100 % (labels 175 x 66).
     struct Case {
         std::string name;
         PixelRect window, box;
         int panel, hud;
         std::vector<LabelAsk> balls;
     };
-    const PixelPoint big{350, 131}, small{175, 66};
+    const PixelPoint big{300, 53}, small{175, 66};
     std::vector<Case> cases = {
         {"lesson",
          {0, 0, 1600, 1000},
@@ -104,8 +123,7 @@ TEST(LabelPlaces, EveryBallOfASmallSceneInASmallBoxKeepsALabelOverNoOtherBall) {
          {330, 230, 400, 250},
          320,
          140,
-         {withShortForm(ball(380, 280, 20, big)), withShortForm(ball(480, 350, 20, big)),
-          withShortForm(ball(580, 420, 20, big))}},
+         {ball(380, 280, 20, big), ball(480, 350, 20, big), ball(580, 420, 20, big)}},
         {"ten",
          {0, 0, 1024, 768},
          {330, 230, 300, 300},
@@ -136,10 +154,11 @@ TEST(LabelPlaces, ALabelThatFitsBesideItsBallStaysThereWithoutALeader) {
     }
 }
 
-TEST(LabelPlaces, LabelsWithNoClearPlaceTakeTheirShortFormRatherThanCrossAWall) {
+TEST(LabelPlaces, WhereTheValuesLeaveALabelOutEveryLabelTakesItsNameAlone) {
     // The original program's six balls at 800 x 600 (a box 405 pixels square between the
-    // panel, the HUD and the messages): their five-line labels (170 x 71) fit only across the
-    // walls. Their two-line forms (150 x 29) fit inside the box, clear of every ball.
+    // panel, the HUD and the messages), with labels of 170 x 71: some find no place. Their
+    // names alone (90 x 18) fit, every one of them: all six take their names (labels of one
+    // line beside labels of five read as different things, and were).
     const PixelRect window{0, 0, 800, 600};
     const PixelRect box{353, 122, 405, 405};
     const std::vector<PixelRect> panels = {
@@ -148,28 +167,49 @@ TEST(LabelPlaces, LabelsWithNoClearPlaceTakeTheirShortFormRatherThanCrossAWall) 
                                   ball(652, 213, 25, {170, 71}), ball(496, 271, 11, {170, 71}),
                                   ball(600, 295, 5, {170, 71}),  ball(698, 313, 21, {170, 71})};
     const LabelRoom room{window, box, {}, panels};
-    const std::vector<LabelPlace> full = placeLabels(asks, room);
-    const bool fullIsClean =
-        std::none_of(full.begin(), full.end(), [](const LabelPlace& p) { return p.at.w == 0; });
-    ASSERT_FALSE(fullIsClean) << "the case no longer needs the short form";
-    EXPECT_FALSE(full[0].shortForm) << "no short form asked: the full labels stay";
+    const std::vector<LabelPlace> values = placeLabels(asks, room);
+    const bool valuesFit =
+        std::none_of(values.begin(), values.end(), [](const LabelPlace& p) { return p.at.w == 0; });
+    ASSERT_FALSE(valuesFit) << "the case no longer needs the names";
+    EXPECT_FALSE(values[0].nameOnly) << "no name asked: the values stay";
     for (LabelAsk& a : asks)
-        a.shortSize = {150, 29};
+        a.nameSize = {90, 18};
     const std::vector<LabelPlace> places = placeLabels(asks, room);
     expectReadable(asks, places, window, panels);
     for (const LabelPlace& p : places) {
-        EXPECT_TRUE(p.shortForm);
-        EXPECT_EQ(p.at.h, 29);
-        EXPECT_GE(p.at.x, box.x);
-        EXPECT_GE(p.at.y, box.y);
-        EXPECT_LE(p.at.x + p.at.w, box.x + box.w);
-        EXPECT_LE(p.at.y + p.at.h, box.y + box.h);
+        EXPECT_TRUE(p.nameOnly);
+        EXPECT_EQ(p.at.h, 18);
     }
-    // Where the full labels fit, they are kept.
-    const std::vector<LabelAsk> two = {{{240, 290, 20, 20}, {140, 86}, true, {100, 29}},
-                                       {{540, 290, 20, 20}, {140, 86}, true, {100, 29}}};
-    for (const LabelPlace& p : placeLabels(two, {window, {100, 100, 600, 400}, {}, {}}))
-        EXPECT_FALSE(p.shortForm);
+    // Where the values fit, every label keeps them.
+    const std::vector<LabelAsk> two = {{{240, 290, 20, 20}, {140, 53}, true, {100, 29}},
+                                       {{540, 290, 20, 20}, {140, 53}, true, {100, 29}}};
+    for (const LabelPlace& p : placeLabels(two, {window, {100, 100, 600, 400}, {}, {}})) {
+        EXPECT_GT(p.at.w, 0);
+        EXPECT_FALSE(p.nameOnly);
+    }
+}
+
+TEST(LabelPlaces, ALabelWithoutALineIsNeverNearerAnotherBallThanItsOwn) {
+    // The original's six balls at 200 %: a label slid along its ball's side stood nearer the
+    // neighbour than its own ball, and read as the neighbour's. Here the first free place
+    // beside ball A (slid left above it) has its middle 46 pixels from ball B's rim and 67 from
+    // A's; A's label goes where it is nearest A, or joined to A by a line.
+    const PixelRect window{0, 0, 1000, 600};
+    const std::vector<PixelRect> keepOut = {{600, 228, 40, 10},   // above A, right of its middle
+                                            {300, 326, 400, 10},  // below A
+                                            {526, 290, 10, 30},   // right of A
+                                            {464, 290, 10, 30}};  // left of A
+    const std::vector<LabelAsk> asks = {{{478, 278, 44, 44}, {300, 53}, false},   // A at (500, 300)
+                                        {{358, 178, 44, 44}, {120, 20}, false}};  // B at (380, 200)
+    const std::vector<LabelPlace> places = placeLabels(asks, {window, {}, {}, keepOut});
+    ASSERT_GT(places[0].at.w, 0);
+    EXPECT_TRUE(places[0].leader || nearestIsOwn(asks, places[0].at, 0))
+        << "A's label at " << places[0].at.x << "," << places[0].at.y << " nearer B";
+    for (std::size_t i = 0; i < places.size(); ++i) {
+        if (places[i].at.w > 0 && !places[i].leader) {
+            EXPECT_TRUE(nearestIsOwn(asks, places[i].at, i)) << i;
+        }
+    }
 }
 
 /// The funnel preset at 200 % in 1600 x 1000: its 400 balls of 4 mm (3 pixels) packed in rows
@@ -192,8 +232,8 @@ struct Funnel {
                 const int cx =
                     static_cast<int>(std::lround(x(0.02 + 0.028 * column + 0.014 * (row % 2))));
                 const int cy = static_cast<int>(std::lround(y(0.01 + 0.012 * row)));
-                LabelAsk a = ball(cx, cy, 3, {350, 131});
-                a.shortSize = {300, 53};
+                LabelAsk a = ball(cx, cy, 3, {300, 53});
+                a.nameSize = {148, 29};
                 balls.push_back(a);
             }
         }
@@ -269,9 +309,9 @@ TEST(LabelPlaces, ALabelIsNotDrawnOverItsOwnBallsArrow) {
 
 TEST(LabelPlaces, ALeaderLineCrossesNothingTheRoomKeepsOut) {
     // A ball in a box too small for its label, with room only in a strip above the box
-    // (panels all round), and a grid's distance straight above the ball: the five lines fit
-    // only above the distance, on a line through it (it crossed the grid's "2 m"); the two
-    // lines of the short form fit under it.
+    // (panels all round), and a grid's distance straight above the ball: its values fit only
+    // above the distance, on a line through it (it crossed the grid's "2 m"); its name fits
+    // under it.
     const PixelRect window{0, 0, 800, 600};
     const PixelRect box{380, 380, 40, 40};
     const PixelRect distance{392, 300, 16, 10};
@@ -282,7 +322,7 @@ TEST(LabelPlaces, ALeaderLineCrossesNothingTheRoomKeepsOut) {
                                             {420, 378, 40, 222},
                                             {380, 422, 40, 178}};
     LabelAsk a = ball(400, 400, 8, {100, 60});
-    a.shortSize = {100, 30};
+    a.nameSize = {100, 30};
     const std::vector<LabelPlace> places = placeLabels({a}, {window, box, {}, keepOut, 2});
     ASSERT_EQ(places.size(), 1u);
     ASSERT_GT(places[0].at.w, 0);
