@@ -148,8 +148,8 @@ class ControlPanel {
     void lastCollision(const Session& s);
     void card(const Session& s);
     /// The momenta diagram under the card (view/momenta_diagram.hpp).
-    /// `balls`: the two particles' colours as the box draws them (momentaColours).
-    void momenta(const CollisionCard& card, const std::array<Color, 2>& balls);
+    /// `colours`: particle 1's, particle 2's and the total's arrows' (momentaColours).
+    void momenta(const CollisionCard& card, const std::array<Color, 3>& colours);
     /// The values table's window, while shown (section_values.cpp), docked in its band at
     /// `pointPixels` pixels per point of the UI.
     void valuesWindow(const Session& s, float pointPixels);

@@ -93,23 +93,17 @@ void ControlPanel::card(const Session& s) {
     }
     for (const std::string& note : text.notes)
         widgets::wrapped(note);
-    momenta(*card, momentaColours(*card, s.world(), s.view().theme));
+    momenta(*card, momentaColours(s.view().theme));
 }
 
 namespace {
 
-/// The diagram's colours: each particle's arrow in its ball's colour as the box draws it
-/// (momentaColours); the total in the text's colour, so it reads on any background.
-ImU32 arrowColor(MomentaDiagram::Kind kind, const std::array<Color, 2>& balls) {
-    switch (kind) {
-        case MomentaDiagram::Kind::First:
-            return IM_COL32(balls[0].r, balls[0].g, balls[0].b, 255);
-        case MomentaDiagram::Kind::Second:
-            return IM_COL32(balls[1].r, balls[1].g, balls[1].b, 255);
-        case MomentaDiagram::Kind::Total:
-            break;
-    }
-    return ImGui::GetColorU32(ImGuiCol_Text);
+/// The diagram's colours (momentaColours): particle 1's, particle 2's, the total's.
+ImU32 arrowColor(MomentaDiagram::Kind kind, const std::array<Color, 3>& colours) {
+    const std::size_t k = kind == MomentaDiagram::Kind::First    ? 0
+                          : kind == MomentaDiagram::Kind::Second ? 1
+                                                                 : 2;
+    return IM_COL32(colours[k].r, colours[k].g, colours[k].b, 255);
 }
 
 /// `color` as a label on the panel: darkened (or lightened) to read (view/palette.hpp's
@@ -128,7 +122,7 @@ ImU32 readableLabel(ImU32 color) {
 
 /// One half of the diagram in a square canvas `side` pixels wide at the cursor.
 void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>& arrows,
-              const char* id, float side, const std::array<Color, 2>& balls) {
+              const char* id, float side, const std::array<Color, 3>& colours) {
     const ImVec2 at = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton(id, ImVec2(side, side));
     ImDrawList& draw = *ImGui::GetWindowDrawList();
@@ -158,7 +152,7 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
         const Vec2 from = d.fromPixels(a, side), to = d.toPixels(a, side);
         const ImVec2 p0(at.x + static_cast<float>(from.x()), at.y + static_cast<float>(from.y()));
         const ImVec2 p1(at.x + static_cast<float>(to.x()), at.y + static_cast<float>(to.y()));
-        const ImU32 color = arrowColor(a.kind, balls);
+        const ImU32 color = arrowColor(a.kind, colours);
         draw.AddText(ImVec2(at.x + static_cast<float>(labels[k].x()),
                             at.y + static_cast<float>(labels[k].y())),
                      readableLabel(color), a.label.c_str());
@@ -184,7 +178,7 @@ void drawHalf(const MomentaDiagram& d, const std::vector<MomentaDiagram::Arrow>&
 
 }  // namespace
 
-void ControlPanel::momenta(const CollisionCard& card, const std::array<Color, 2>& balls) {
+void ControlPanel::momenta(const CollisionCard& card, const std::array<Color, 3>& colours) {
     const MomentaDiagram d = momentaDiagram(card);
     ImGui::Spacing();
     ImGui::TextUnformatted("Momenta, tip to tail");
@@ -201,12 +195,12 @@ void ControlPanel::momenta(const CollisionCard& card, const std::array<Color, 2>
                                   4.0f * ImGui::GetFontSize(), 14.0f * ImGui::GetFontSize());
     ImGui::BeginGroup();
     ImGui::TextDisabled("before");
-    drawHalf(d, d.before, "##momenta before", side, balls);
+    drawHalf(d, d.before, "##momenta before", side, colours);
     ImGui::EndGroup();
     ImGui::SameLine();
     ImGui::BeginGroup();
     ImGui::TextDisabled("after");
-    drawHalf(d, d.after, "##momenta after", side, balls);
+    drawHalf(d, d.after, "##momenta after", side, colours);
     ImGui::EndGroup();
     widgets::wrappedDisabled(momentaDiagramScale(d));
 }

@@ -5,7 +5,6 @@
 
 #include "session/units.hpp"
 #include "view/label_places.hpp"
-#include "view/mass_shade.hpp"
 #include "view/screen_layout.hpp"
 
 namespace psb::app {
@@ -199,8 +198,11 @@ std::vector<std::string> momentaDiagramLines(const MomentaDiagram& diagram, cons
     return {line("before", diagram.before, axes), line("after", diagram.after, axes)};
 }
 
-std::array<Color, 2> momentaColours(const CollisionCard& card, const World& world, Theme theme) {
-    return {discFill(world, card.collision.a, theme), discFill(world, card.collision.b, theme)};
+std::array<Color, 3> momentaColours(Theme theme) {
+    const Rgba text = palette(theme).text;
+    const Color total{text.r, text.g, text.b};
+    if (theme == Theme::Light) return {Color{213, 94, 0}, Color{0, 114, 178}, total};
+    return {Color{230, 159, 0}, Color{86, 180, 233}, total};
 }
 
 }  // namespace psb::app

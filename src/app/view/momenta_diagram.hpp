@@ -58,12 +58,12 @@ struct MomentaDiagram {
 
 [[nodiscard]] MomentaDiagram momentaDiagram(const CollisionCard& card);
 
-/// The colours of the arrows of the first and the second particle of `card`: each its ball's
-/// fill as the box draws it in `world` on `theme` (view/mass_shade.hpp's discFill), so the
-/// diagram says which is which as the box does (they were a fixed orange and sky blue, while
-/// the lesson's balls were grey and black). The total is drawn in the text's colour.
-[[nodiscard]] std::array<Color, 2> momentaColours(const CollisionCard& card, const World& world,
-                                                  Theme theme);
+/// The colours of the diagram's arrows on `theme`: particle 1's, particle 2's and the total's.
+/// Fixed, so that no two are ever alike: Okabe and Ito's orange and sky blue on the dark theme,
+/// their vermillion and blue on the light one (sky blue on white hardly shows), and the total
+/// in the theme's text colour, white or black. (Each particle's arrow took its ball's colour
+/// for a while: a black ball's arrow was the black of the total's.)
+[[nodiscard]] std::array<Color, 3> momentaColours(Theme theme);
 
 /// Where the labels of `arrows` (one half of `d`, drawn in a square of `side` pixels) go: the
 /// top-left corner of each label's box, `sizes[k]` pixels for arrows[k]. Each stays inside the

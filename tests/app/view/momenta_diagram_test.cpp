@@ -18,24 +18,28 @@
 namespace psb::app {
 namespace {
 
-TEST(MomentaDiagram, EachParticlesArrowIsDrawnInItsBallsColour) {
-    // Lesson 1 on the light theme: its balls were drawn grey (1 kg) and black (3 kg), shaded by
-    // mass, and their arrows in the diagram orange and sky blue. Each arrow now has its ball's
-    // fill, on either theme.
-    const World world = test::lessonWorld();
-    CollisionCard card = headOnCard();
-    card.collision.a = world.ids()[0];
-    card.collision.b = world.ids()[1];
+TEST(MomentaDiagram, TheArrowsHaveFixedColoursNoTwoAlike) {
+    // The arrows took their balls' colours: in lesson 1 on the light theme the 3 kg ball is
+    // drawn black, and so was its arrow, like the total's. Now particle 1 is orange, particle
+    // 2 blue and the total the text's colour, on either theme, whatever the balls look like.
     for (const Theme theme : {Theme::Light, Theme::Dark}) {
-        const std::array<Color, 2> colours = momentaColours(card, world, theme);
-        EXPECT_EQ(colours[0], discFill(world, world.ids()[0], theme));
-        EXPECT_EQ(colours[1], discFill(world, world.ids()[1], theme));
-        EXPECT_FALSE(colours[0] == colours[1]) << "the two balls told apart";
-        // The box's fill: the particle's colour in the shade of its mass.
-        const Color own = palette(theme).mapParticles ? lightColour(world.particles().color[0])
-                                                      : world.particles().color[0];
-        EXPECT_EQ(colours[0], massShades(own, theme).light) << "the lightest ball's shade";
+        const std::array<Color, 3> c = momentaColours(theme);
+        EXPECT_FALSE(c[0] == c[1]);
+        EXPECT_FALSE(c[0] == c[2]);
+        EXPECT_FALSE(c[1] == c[2]);
+        const Rgba text = palette(theme).text;
+        EXPECT_EQ(c[2], (Color{text.r, text.g, text.b})) << "the total in the text's colour";
+        const Rgba background = palette(theme).controls;
+        for (int k = 0; k < 2; ++k) {
+            // Each particle's arrow stands out from the panel it is drawn on.
+            EXPECT_GE(contrastRatio(Rgba{c[k].r, c[k].g, c[k].b}, background), 2.0) << k;
+            // Orange (red the most) for 1, blue (blue the most) for 2.
+        }
+        EXPECT_GT(c[0].r, c[0].b);
+        EXPECT_GT(c[1].b, c[1].r);
     }
+    EXPECT_EQ(momentaColours(Theme::Dark)[0], (Color{230, 159, 0})) << "Okabe-Ito orange";
+    EXPECT_EQ(momentaColours(Theme::Dark)[1], (Color{86, 180, 233})) << "Okabe-Ito sky blue";
 }
 
 TEST(MomentaDiagram, ThePairsArrowsGoTipToTailAndTheTotalIsKept) {
