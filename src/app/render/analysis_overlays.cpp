@@ -3,6 +3,9 @@
 #include <algorithm>
 
 #include "render/polyline.hpp"
+#include "render/sdl_color.hpp"
+#include "render/text.hpp"
+#include "view/chart_text.hpp"
 
 namespace psb::app {
 
@@ -25,6 +28,15 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
                         std::min(layout.plotRows, 4 - k * layout.plotRows), layout.plotRowHeight,
                         mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScale),
                         k * layout.plotRows);
+        }
+        if (layout.plotsNote > 0) {
+            // Under the rows, in the panel's frame: which plots are left out.
+            const PixelRect& p = layout.plots;
+            note_.clear();
+            font.layout(plotsLeftOutNote(plotsShown(layout)), static_cast<float>(p.x + kChartPad),
+                        static_cast<float>(p.y + p.h - layout.plotsNote),
+                        sdlTextColor(colours.text, colours.panel), note_);
+            font.draw(note_);
         }
     }
     if (view.speeds && layout.speeds.w > 0) {

@@ -1,8 +1,8 @@
 #pragma once
-// The analysis overlays drawn over the world (see docs/app-instruments.md, "Seeing the physics"): the
-// momentum view (V), the plots panel (K), the speed histogram (D) and a scene's bins, each drawn
-// only when its ViewOptions toggle is on, in the boxes of a PanelLayout. The path traces (L) are
-// drawn by the Renderer, under the discs.
+// The analysis overlays drawn over the world (see docs/app-instruments.md, "Seeing the physics"):
+// the momentum view (V), the plots panel (K), the speed histogram (D) and a scene's bins, each
+// drawn only when its ViewOptions toggle is on, in the boxes of a PanelLayout. The path traces (L)
+// are drawn by the Renderer, under the discs.
 
 #include <optional>
 
@@ -12,6 +12,7 @@
 #include <particle_sandbox/world.hpp>
 
 #include "render/bin_chart.hpp"
+#include "render/geometry_batch.hpp"
 #include "render/momentum_drawing.hpp"
 #include "render/plot_chart.hpp"
 #include "render/renderer.hpp"
@@ -39,6 +40,7 @@ class AnalysisOverlays {
     PlotChart plots_;
     SpeedChart speeds_;
     BinChart bins_;
+    GeometryBatch note_;  ///< the line naming the plots left out
 };
 
 }  // namespace psb::app

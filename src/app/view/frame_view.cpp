@@ -296,20 +296,37 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
                                           world.rotationInUse(), session.axes(), session.touch()),
                            room);
     }
-    // Long messages wrap within the room right of the control panel, beside the inspector when
-    // that leaves them room; the newest messages that fit the band below the box whole are
-    // shown.
-    const int besideInspector =
-        room - textBoxSize(hudFont, o.inspector).x - kPanelGap - kPanelMargin;
-    const bool beside = !o.inspector.empty() && besideInspector >= kMinMessageRoom;
-    o.messages =
-        messageLines(hudFont, stats.messages, (beside ? besideInspector : room) - 8, kMessageLines);
-    o.messagesAfterCapture = stats.video.recording;
-
     LayoutRequest req;
     req.width = session.camera().viewportWidth();
     req.height = session.camera().viewportHeight();
     req.left = left;
+    req.foldColumn = session.columnFolded();
+    req.plots = f.view.plots;
+    req.speeds = f.view.speeds;
+    req.bins = f.bins.has_value();
+    req.scale = controls.pointPixels;
+    req.values = valuesTableRect(session, controls);
+    req.valuesRight = session.valuesDock().right;
+    if (session.chartsBelow()) {
+        // Under the box, above the messages (SceneView::fit chose it; BoxArea::chartsBand).
+        const BoxArea& bare = session.layout().area(session.controlsShown(), false);
+        req.chartsBand = chartsBandRect(req.width, req.height, left, static_cast<int>(bare.bottom),
+                                        static_cast<int>(bare.chartsBand) - kPanelGap);
+    }
+    // Under the plots, the names of those left out for want of room.
+    req.plotsNote = labelFont.lineHeight() + 4;
+    // Long messages wrap within the room right of the control panel and left of the side
+    // column's charts (a message of three lines under the column took a row of plots away
+    // while it showed), beside the inspector when that leaves them room; the newest messages
+    // that fit the band below the box whole are shown.
+    const int messageRoom = std::min(room, sideColumnLeft(req) - kPanelGap - left);
+    const int besideInspector =
+        messageRoom - textBoxSize(hudFont, o.inspector).x - kPanelGap - kPanelMargin;
+    const bool beside = !o.inspector.empty() && besideInspector >= kMinMessageRoom;
+    o.messages = messageLines(hudFont, stats.messages, (beside ? besideInspector : messageRoom) - 8,
+                              kMessageLines);
+    o.messagesAfterCapture = stats.video.recording;
+
     req.hud = textBoxSize(hudFont, o.hud);
     req.hudShown = req.hud;
     if (videoHud) {
@@ -340,19 +357,6 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     // The open prompt has the keyboard: it is never hidden, by a message or for want of room
     // (then without the readings), or the keys typed would go into fields nobody sees.
     req.inspectorFirst = editing;
-    req.foldColumn = session.columnFolded();
-    req.plots = f.view.plots;
-    req.speeds = f.view.speeds;
-    req.bins = f.bins.has_value();
-    req.scale = controls.pointPixels;
-    req.values = valuesTableRect(session, controls);
-    req.valuesRight = session.valuesDock().right;
-    if (session.chartsBelow()) {
-        // Under the box, above the messages (SceneView::fit chose it; BoxArea::chartsBand).
-        const BoxArea& bare = session.layout().area(session.controlsShown(), false);
-        req.chartsBand = chartsBandRect(req.width, req.height, left, static_cast<int>(bare.bottom),
-                                        static_cast<int>(bare.chartsBand) - kPanelGap);
-    }
     {
         // The box with its walls as drawn: the legend keeps off it.
         const WorldDef& def = world.def();

@@ -7,6 +7,14 @@
 
 namespace psb::app {
 
+std::string plotsLeftOutNote(int shown) {
+    static const char* const names[4] = {"energy", "px", "py", "rate"};
+    std::string out;
+    for (int k = std::clamp(shown, 0, 4); k < 4; ++k)
+        out += std::string(out.empty() ? "" : ", ") + names[k];
+    return out.empty() ? out : "No room for " + out;
+}
+
 bool overlaps(const PixelRect& a, const PixelRect& b) {
     if (a.w <= 0 || a.h <= 0 || b.w <= 0 || b.h <= 0) return false;
     return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
@@ -39,6 +47,28 @@ int valuesColumn(int width, double left, double right, int, double, double, int,
     const int column = static_cast<int>(
         std::ceil(std::max(0.4 * room, kValuesColumnMinPoints * scale) + kPanelMargin));
     return room - column >= kBoxMinRoom ? column : 0;
+}
+
+namespace {
+
+/// Whether the side column at the right holds charts in `r`, and its width, pixels (0: none).
+int sideColumnWidthIn(const LayoutRequest& r) {
+    if (!r.plots && !r.speeds && !r.bins) return 0;
+    if (r.chartsBand.w > 0 && (r.plots || r.speeds)) return 0;
+    if (!sideColumnFits(r.width, r.left, r.scale) || (r.values.w > 0 && r.valuesRight) ||
+        r.foldColumn) {
+        return 0;
+    }
+    const int room = r.width - r.left - 2 * kPanelMargin;
+    const int width = std::min(room, sideColumnWidth(r.width, r.left, r.scale));
+    return width < static_cast<int>(kPanelMinWidth * r.scale) ? 0 : width;
+}
+
+}  // namespace
+
+int sideColumnLeft(const LayoutRequest& r) {
+    const int width = sideColumnWidthIn(r);
+    return width > 0 ? r.width - kPanelMargin - width : r.width;
 }
 
 namespace {
@@ -184,6 +214,11 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
             l.plotRows = rows;
             l.plotRowHeight = rowHeight;
             l.plotColumns = columns;
+            // The note naming the plots left out, under them where the band has the room.
+            if (rows * columns < 4 && r.plotsNote > 0 && l.plots.h + r.plotsNote <= band.h) {
+                l.plotsNote = r.plotsNote;
+                l.plots.h += r.plotsNote;
+            }
             x += each + gap;
         }
         if (r.speeds && band.h >= scaled(kSpeedsMinHeight)) {
@@ -217,12 +252,19 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
     stack(r.bins, scaled(kBinsMaxHeight), scaled(kBinsMinHeight), l.bins);
     stack(r.speeds, scaled(kSpeedsMaxHeight), scaled(kSpeedsMinHeight), l.speeds);
     if (r.plots && height >= plotsMin) {
-        const int rows = std::clamp((height - 8) / rowMin, 1, 4);
-        const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (height - 8) / rows);
-        const int h = rows * rowHeight + 8;
+        int rows = std::clamp((height - 8) / rowMin, 1, 4);
+        // Fewer than four: a line under them names the others, where a row still fits above it.
+        int note = 0;
+        if (rows < 4 && r.plotsNote > 0 && height - 8 - r.plotsNote >= rowMin) {
+            note = r.plotsNote;
+            rows = std::clamp((height - 8 - note) / rowMin, 1, 4);
+        }
+        const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (height - 8 - note) / rows);
+        const int h = rows * rowHeight + 8 + note;
         l.plots = {column.x, bottom - h, width, h};
         l.plotRows = rows;
         l.plotRowHeight = rowHeight;
+        l.plotsNote = note;
     }
     return l;
 }

@@ -19,6 +19,7 @@
 // overlap.
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 #include "view/pixel_rect.hpp"
@@ -143,6 +144,9 @@ struct LayoutRequest {
     /// The box on screen with its walls as drawn (w == 0: none): the profile and the momentum
     /// legend, placed at the top of the column, keep off it.
     PixelRect box{};
+    /// The height of the line under the plots that names those left out for want of room
+    /// (PanelLayout::plotsNote), pixels; 0: no such line.
+    int plotsNote = 0;
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
@@ -165,7 +169,15 @@ struct PanelLayout {
     /// The profile, plots or histograms were asked for but folded away: the window leaves the
     /// side column no room beside the box (sideColumnFits).
     bool columnFolded = false;
+    /// Fewer than the four plots fit: the last `plotsNote` pixels of `plots`, under their rows,
+    /// are a line naming the others (plotsLeftOutNote). 0: all four shown, or no room for it.
+    int plotsNote = 0;
 };
+
+/// The line under the plots when `shown` (1-3) of the four fit: "No room for px, py, rate" (a
+/// teacher saw the momentum lesson's px and py charts gone without a word); "" when
+/// all four fit.
+[[nodiscard]] std::string plotsLeftOutNote(int shown);
 
 inline constexpr int kPanelGap = 6;                         ///< between panels, pixels
 inline constexpr int kPanelMaxWidth = kSideColumnMaxWidth;  ///< plots and histogram, pixels
@@ -210,6 +222,18 @@ inline constexpr int kBinsMinHeight = 170;    ///< pixels
 
 /// Lays out the panels `r` asks for.
 [[nodiscard]] PanelLayout layoutPanels(const LayoutRequest& r);
+
+/// The left edge of the side column `r` would place at the window's right (its charts: plots,
+/// histograms), pixels; `r.width` when there is none (off, folded, in the band under the box).
+/// The messages wrap left of it (frame_view.cpp): a message of three lines reached under the
+/// column and the plots lost a row to it, mid-video, and came back when it went.
+[[nodiscard]] int sideColumnLeft(const LayoutRequest& r);
+
+/// How many of the four plots (energy, px, py, rate) `layout` shows: 0 when they are off.
+[[nodiscard]] inline int plotsShown(const PanelLayout& layout) {
+    if (layout.plots.w <= 0 || layout.plotRows <= 0) return 0;
+    return std::min(4, layout.plotRows * std::max(1, layout.plotColumns));
+}
 
 /// Every panel `layout` places (those that are off or left out are not listed).
 [[nodiscard]] std::vector<PixelRect> panelRects(const PanelLayout& layout);

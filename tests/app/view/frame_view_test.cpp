@@ -331,6 +331,55 @@ TEST(Plots, OnTheProjectorEachPlotHasRoomForThreeLabelledTicks) {
     }
 }
 
+TEST(Plots, OnTheProjectorAThreeLineMessageMovesNoPlotNorTheLegend) {
+    // Lesson 1 at 200 %: a message of three lines reached under the side column, a row of
+    // plots went (py) and the momentum legend took its place, mid-video, until it went. The
+    // messages wrap left of the column now: the charts are laid out alike with or without.
+    const test::FixedMeasure font(2.0);
+    const std::string lengthy =
+        "Saved video /home/teacher/lessons/particle-sandbox-20261207-182400.mp4: 3.4 s, 84 "
+        "frames, 980x1000, every frame of the clip as the window drew it at the time";
+    for (const bool table : {false, true}) {
+        const Session s = table ? test::onTheProjector(
+                                      test::lessonWorld(),
+                                      {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values})
+                                : test::onTheProjector(test::lessonWorld(),
+                                                       {ShowOption::Momentum, ShowOption::Plots});
+        FrameStats quiet, loud;
+        loud.messages = {lengthy};
+        const FrameView a = buildFrame(s, quiet, font, font, test::kProjector);
+        const FrameView b = buildFrame(s, loud, font, font, test::kProjector);
+        const char* at = table ? "with the table" : "without it";
+        ASSERT_GT(a.layout.plots.w, 0) << at;
+        ASSERT_GE(b.overlays.messages.size(), 2u) << at << ": the case, a long message";
+        EXPECT_EQ(b.layout.plots, a.layout.plots) << at;
+        EXPECT_EQ(b.layout.plotRows, a.layout.plotRows) << at;
+        EXPECT_EQ(b.layout.plotColumns, a.layout.plotColumns) << at;
+        EXPECT_EQ(b.layout.legend, a.layout.legend) << at;
+        EXPECT_GT(b.layout.messages.w, 0) << at << ": the message is shown";
+        EXPECT_FALSE(overlaps(b.layout.messages, b.layout.plots)) << at;
+    }
+}
+
+TEST(Plots, OnTheProjectorThePlotsLeftOutForWantOfRoomAreNamed) {
+    // Lesson 1 at 200 % with the values table and the plots: only the energy's chart showed,
+    // px, py and the rate were gone without a word (the gas says when its charts fold away).
+    const test::FixedMeasure font(2.0);
+    const Session s = test::onTheProjector(
+        test::lessonWorld(), {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values});
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+    ASSERT_GT(f.layout.plots.w, 0);
+    const int shown = plotsShown(f.layout);
+    ASSERT_LT(shown, 4) << "the case: not all four fit";
+    EXPECT_GT(f.layout.plotsNote, 0) << "a line under the plots names the others";
+    const std::string note = plotsLeftOutNote(shown);
+    EXPECT_NE(note.find("rate"), std::string::npos) << note;
+    EXPECT_LE(font.measure(note) + 2 * kChartPad, f.layout.plots.w) << note << ": cut";
+    // The rows and the note within the panel's box.
+    EXPECT_LE(f.layout.plotRows * f.layout.plotRowHeight + 8 + f.layout.plotsNote,
+              f.layout.plots.h);
+}
+
 TEST(MomentumLegend, StaysWhileSteppingBackAndInAVideoOfTheBox) {
     // Lesson 1 on the projector with the momenta (V) and the plots (K), the plots in their band
     // under the box: a step back in time grew the HUD by its "Viewing ... back" lines, the

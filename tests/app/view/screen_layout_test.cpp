@@ -242,3 +242,46 @@ TEST(PanelLayout, TheLegendKeepsOffTheBoxTakingTheHighestFreePlace) {
 
 }  // namespace
 }  // namespace psb::app
+
+namespace psb::app {
+namespace {
+
+TEST(PanelLayout, APlotsColumnTooShortForAllFourNamesTheOthersUnderThem) {
+    LayoutRequest r;
+    r.width = 1280;
+    r.height = 300;
+    r.left = 310;
+    r.plots = true;
+    r.plotsNote = 20;
+    const PanelLayout l = layoutPanels(r);
+    ASSERT_GT(l.plots.w, 0);
+    ASSERT_LT(plotsShown(l), 4) << "the case: a short window";
+    EXPECT_EQ(l.plotsNote, 20);
+    EXPECT_GE(l.plots.h, l.plotRows * l.plotRowHeight + 8 + l.plotsNote);
+    EXPECT_EQ(plotsLeftOutNote(plotsShown(l)).rfind("No room for ", 0), 0u);
+    // Tall enough for the four: no note.
+    r.height = 1000;
+    const PanelLayout tall = layoutPanels(r);
+    EXPECT_EQ(plotsShown(tall), 4);
+    EXPECT_EQ(tall.plotsNote, 0);
+    EXPECT_EQ(plotsLeftOutNote(4), "");
+    EXPECT_EQ(plotsLeftOutNote(1), "No room for px, py, rate");
+    EXPECT_EQ(plotsLeftOutNote(3), "No room for rate");
+}
+
+TEST(PanelLayout, TheSideColumnsLeftEdgeIsWhereItsChartsStand) {
+    LayoutRequest r;
+    r.width = 1280;
+    r.height = 800;
+    r.left = 310;
+    EXPECT_EQ(sideColumnLeft(r), r.width) << "no charts asked for";
+    r.plots = true;
+    const PanelLayout l = layoutPanels(r);
+    ASSERT_GT(l.plots.w, 0);
+    EXPECT_EQ(sideColumnLeft(r), l.plots.x);
+    r.foldColumn = true;
+    EXPECT_EQ(sideColumnLeft(r), r.width) << "folded away";
+}
+
+}  // namespace
+}  // namespace psb::app
