@@ -34,8 +34,8 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
             const PixelRect& p = layout.plots;
             note_.clear();
             font.layout(plotsLeftOutNote(plotsShown(layout)), static_cast<float>(p.x + kChartPad),
-                        static_cast<float>(p.y + p.h - layout.plotsNote),
-                        sdlTextColor(colours.text, colours.panel), note_);
+                        static_cast<float>(p.y + p.h - layout.plotsNote), sdlColor(colours.text),
+                        note_);
             font.draw(note_);
         }
     }
