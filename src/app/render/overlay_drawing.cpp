@@ -40,6 +40,23 @@ class PanelBatch {
     GeometryBatch boxes_, text_;
 };
 
+/// The help (H): over the whole window, opaque, every panel, chart and legend under it hidden
+/// (its box was as wide as its lines, and the charts and legend showed in a strip at its
+/// right), its text from `o.helpAt`.
+void drawHelp(SDL_Renderer* renderer, const Font& font, const Overlays& o, const Palette& colours) {
+    int w = 0, h = 0;
+    if (SDL_GetRendererOutputSize(renderer, &w, &h) != 0) return;
+    const SDL_Color bg = sdlColor(colours.panel);
+    SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
+    SDL_SetRenderDrawColor(renderer, bg.r, bg.g, bg.b, 255);
+    const SDL_Rect all{0, 0, w, h};
+    SDL_RenderFillRect(renderer, &all);
+    PanelBatch panels(font, colours);
+    const PixelPoint size = textBoxSize(font, o.help);
+    panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y});
+    panels.draw(renderer);
+}
+
 }  // namespace
 
 void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
@@ -54,19 +71,19 @@ void drawOverlays(SDL_Renderer* renderer, const Font& font, const Overlays& o,
     if (!o.messagesAfterCapture) panels.add(o.messages, layout.messages);
     panels.add(o.inspector, layout.inspector);
     panels.draw(renderer);
-    if (o.showHelp) {
-        // The help is asked for and read, then closed: it covers the other panels meanwhile,
-        // their text included (drawn after them, opaque: at 245 the HUD's lines showed through
-        // its first ones).
-        const PixelPoint size = textBoxSize(font, o.help);
-        panels.add(o.help, PixelRect{o.helpAt.x, o.helpAt.y, size.x, size.y});
-        panels.draw(renderer);
-    }
+    // The help is asked for and read, then closed: it covers the other panels meanwhile,
+    // their text included (drawn after them, opaque: at 245 the HUD's lines showed through
+    // its first ones). While a video records it is drawn once the frame is taken: a video
+    // holds no key hints.
+    if (o.showHelp && !o.messagesAfterCapture) drawHelp(renderer, font, o, colours);
 }
 
 void drawMessages(SDL_Renderer* renderer, const Font& font, const Overlays& o,
                   const PanelLayout& layout, const Palette& colours) {
-    if (o.showHelp) return;  // the help covers them
+    if (o.showHelp) {  // the help covers them; not in the video
+        drawHelp(renderer, font, o, colours);
+        return;
+    }
     PanelBatch panels(font, colours);
     // The screen's HUD over the video's, opaque: its lines are the video's and more, and its
     // box at least as large as the video's (whose first line, with a past frame's time, is

@@ -385,6 +385,21 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         f.layout = layoutPanels(req);
     }
     if (f.recordingMark) f.recordingMark->at = f.layout.recording;
+    if (f.recordingMark && o.showHelp) {
+        // The help covers the panels the mark would keep off: the mark goes to a corner
+        // clear of the help's lines, the top-right one first (the help's title is short),
+        // else the bottom-right one (it was drawn over the help's text).
+        const PixelRect& r = f.layout.recording;
+        const PixelRect top{req.width - kPanelMargin - req.recording.x, kPanelMargin,
+                            req.recording.x, req.recording.y};
+        const PixelRect low{top.x, req.height - kPanelMargin - req.recording.y, top.w, top.h};
+        const auto clear = [&](const PixelRect& at) {
+            const std::vector<PixelRect> lines = helpLineRects(hudFont, o.help, o.helpAt);
+            return std::none_of(lines.begin(), lines.end(),
+                                [&at](const PixelRect& l) { return overlaps(l, at); });
+        };
+        f.recordingMark->at = clear(top) ? top : clear(low) ? low : r;
+    }
     // The window right of the control panel, where the readings drawn over the box are read.
     const PixelRect window{left, 0, req.width - left, req.height};
     if (!f.droppers.empty()) {

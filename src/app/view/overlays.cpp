@@ -135,6 +135,17 @@ PixelRect helpRoom(int width, int height) {
             std::max(0, height - 2 * kPanelMargin)};
 }
 
+std::vector<PixelRect> helpLineRects(const TextMeasure& font, const std::vector<std::string>& lines,
+                                     PixelPoint at) {
+    std::vector<PixelRect> out;
+    const int lh = font.lineHeight();
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        const int w = font.measure(lines[k]);
+        if (w > 0) out.push_back({at.x + 4, at.y + 2 + lh * static_cast<int>(k), w, lh});
+    }
+    return out;
+}
+
 std::vector<std::vector<std::string>> helpPages(const TextMeasure& font,
                                                 const std::vector<std::string>& lines,
                                                 PixelPoint room) {

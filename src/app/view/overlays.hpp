@@ -68,6 +68,12 @@ inline constexpr std::size_t kMessageLines = 3;
 /// covered).
 [[nodiscard]] PixelRect helpRoom(int width, int height);
 
+/// Where each of the help's `lines` is drawn in `font` from `at` (the help's box's corner), as
+/// drawOverlays draws a panel's lines, pixels: what the recording mark keeps off.
+[[nodiscard]] std::vector<PixelRect> helpLineRects(const TextMeasure& font,
+                                                   const std::vector<std::string>& lines,
+                                                   PixelPoint at);
+
 /// The help's `lines` (a title, a blank line, one line per control) in pages that fit `room`
 /// (each line wrapped to its width, a control never split between pages); each page starts
 /// with the title, saying "page k of n" and what H does when there is more than one.

@@ -53,5 +53,40 @@ TEST_F(RecordedHudTest, TheScreensHudCoversTheVideosWhole) {
     EXPECT_EQ(seen.size(), 1u) << "the video's first line shows beside the screen's HUD";
 }
 
+TEST_F(RecordedHudTest, TheHelpCoversTheWholeWindowAndStaysOutOfTheVideo) {
+    // The help (H) was as wide as its lines: the charts and the legend showed in a strip at its
+    // right. And it went into the video, which holds no key hints.
+    Overlays o;
+    o.showHelp = true;
+    o.help = {"Controls", "", "Space   pause / play"};
+    o.helpAt = {8, 8};
+    PanelLayout layout;
+    const Palette& colours = palette(Theme::Light);
+    const auto frame = [&](bool recording) {
+        o.messagesAfterCapture = recording;
+        SDL_SetRenderDrawColor(sdl_, 255, 0, 0, 255);  // the charts and legend, in red
+        SDL_RenderClear(sdl_);
+        drawOverlays(sdl_, *font_, o, layout, colours);
+    };
+    const auto redLeft = [&] {
+        int red = 0;
+        for (int y = 0; y < 800; y += 7)
+            for (int x = 0; x < 800; x += 7) {
+                const SDL_Color c = pixel(x, y);
+                red += c.r == 255 && c.g == 0 && c.b == 0 ? 1 : 0;
+            }
+        return red;
+    };
+    frame(false);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(redLeft(), 0) << "something under the help shows";
+    frame(true);  // the video's frame: no help in it
+    SDL_RenderPresent(sdl_);
+    EXPECT_GT(redLeft(), 10000) << "the help is in the video's frame";
+    drawMessages(sdl_, *font_, o, layout, colours);  // once the frame is taken
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(redLeft(), 0) << "the help on the screen";
+}
+
 }  // namespace
 }  // namespace psb::app

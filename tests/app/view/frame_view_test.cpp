@@ -380,6 +380,27 @@ TEST(Plots, OnTheProjectorThePlotsLeftOutForWantOfRoomAreNamed) {
               f.layout.plots.h);
 }
 
+TEST(Help, WhileAVideoRecordsTheRecordingMarkStandsClearOfTheHelpsLines) {
+    // Lesson 1 on the projector with the plots and the legend, recording, the help open: the
+    // mark went under the legend and the plots, as it does without the help, and was drawn
+    // over the help's text there.
+    const test::FixedMeasure font(2.0);
+    Session s =
+        test::onTheProjector(test::lessonWorld(), {ShowOption::Momentum, ShowOption::Plots});
+    s.apply(cmd::ToggleHelp{});
+    ASSERT_TRUE(s.helpShown());
+    FrameStats stats;
+    stats.video.recording = true;
+    const FrameView f = buildFrame(s, stats, font, font, test::kProjector);
+    ASSERT_TRUE(f.recordingMark.has_value());
+    const PixelRect mark = f.recordingMark->at;
+    ASSERT_GT(mark.w, 0);
+    EXPECT_LE(mark.x + mark.w, 1600);
+    EXPECT_LE(mark.y + mark.h, 1000);
+    for (const PixelRect& line : helpLineRects(font, f.overlays.help, f.overlays.helpAt))
+        EXPECT_FALSE(overlaps(line, mark)) << "the mark over a line of the help";
+}
+
 TEST(MomentumLegend, StaysWhileSteppingBackAndInAVideoOfTheBox) {
     // Lesson 1 on the projector with the momenta (V) and the plots (K), the plots in their band
     // under the box: a step back in time grew the HUD by its "Viewing ... back" lines, the
