@@ -89,6 +89,33 @@ TEST(Hud, HelpListsEveryControl) {
     }
 }
 
+TEST(Hud, TheHelpNamesEachControlByItsSectionAndItsOwnWords) {
+    // The help said Ctrl+R was under "(Data: Video)", but Video is a section of its own, and
+    // Ctrl+T under "(Show: Theme)", where the box reads "Light".
+    const std::vector<std::string> sections = {
+        "Time",          "Scene",    "Physics", "Show",  "Last collision",
+        "Tools",         "Readouts", "Data",    "Video", "Selected particle",
+        "All particles", "Engine"};
+    for (const auto& [keys, what] : controls()) {
+        const std::size_t open = what.rfind('('), colon = what.find(':', open);
+        if (open == std::string::npos || colon == std::string::npos || keys == "Enter") continue;
+        const std::string section = what.substr(open + 1, colon - open - 1);
+        // Not a section: "(panel: Tools)", the edit prompt's "(Tab: next field...)", "(Delete
+        // removes it; Select tool: drag)".
+        if (section == "Tab" || section == "panel" || section.find(';') != std::string::npos)
+            continue;
+        EXPECT_NE(std::find(sections.begin(), sections.end(), section), sections.end())
+            << keys << ": " << what;
+    }
+    const auto line = [](const std::string& keys) {
+        for (const auto& [k, what] : controls())
+            if (k == keys) return what;
+        return std::string();
+    };
+    EXPECT_NE(line("Ctrl+R").find("(Video: Record video)"), std::string::npos) << line("Ctrl+R");
+    EXPECT_NE(line("Ctrl+T").find("(Show: Light)"), std::string::npos) << line("Ctrl+T");
+}
+
 bool anyContains(const std::vector<std::string>& lines, const std::string& s) {
     return std::any_of(lines.begin(), lines.end(),
                        [&](const std::string& l) { return l.find(s) != std::string::npos; });
