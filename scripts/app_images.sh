@@ -35,7 +35,7 @@ start() {
     local size=$1 dir=$2
     shift 2
     [[ $# -gt 0 ]] || set -- --paused
-    "$BIN" --renderer software --window "$size" --screenshot-dir "$dir" "$@" >"$dir/log" &
+    "$BIN" --no-settings --renderer software --window "$size" --screenshot-dir "$dir" "$@" >"$dir/log" &
     pid=$!
     wid=$(timeout 20 xdotool search --sync --onlyvisible --pid "$pid" --name "Particle Sandbox" | head -1)
     eval "$(xdotool getwindowgeometry --shell "$wid")"

@@ -6,11 +6,12 @@
 #
 #   tests/e2e/spin_e2e.sh PATH/TO/particle-sandbox [OUTPUT_DIR]
 #
-#   1000x800, the ramp (a ball, a disc and a block), run for about 0.7 s:
+#   1000x800, the ramp (a ball, a disc and a disc that cannot turn), run for about 0.7 s:
 #   the screenshot               -> the ball and the disc show their spin marks (a dark quarter),
-#                                   the block none; the Readouts list the rotational energy
+#                                   the disc that cannot turn none; the Readouts list the rotational energy
 #   I, a click on ball 1's row   -> the values table's text lists omega: the ball and the disc
-#                                   roll (omega r = their speed), the block's omega is 0
+#                                   roll (omega r = their speed), the disc that cannot turn has
+#                                   omega 0
 #   C (the panel folded)         -> the inspector reads the ball's angular velocity in rad/s and
 #                                   rev/min, and its rotational kinetic energy
 #   C, the Show section's Spin   -> the spin marks are gone
@@ -32,10 +33,10 @@ pass "window ${WIDTH}x$HEIGHT, box at ($BX, $BY), $ZOOM px/m"
 # Pixels of a colour in a screenshot (exact, as the renderer draws an opaque mark).
 count() { convert "$OUT/$1.png" -depth 8 txt:- | grep -c "#$2" || true; }
 # The marks' colours (render/spin_mark.cpp: a light disc's hue at a third): the ball's, the
-# disc's and the block's would-be mark.
+# disc's and the would-be mark of the disc that cannot turn.
 BALL_MARK=1E354D
 DISC_MARK=4D1E17
-BLOCK_MARK=493F1E
+FIXED_MARK=493F1E
 
 key space
 wait_log "\[I\] Resumed"
@@ -45,11 +46,11 @@ xdotool mousemove --sync $((WX + WIDTH - 5)) $((WY + HEIGHT - 5))  # no launch p
 snap run
 ball=$(count run "$BALL_MARK")
 disc=$(count run "$DISC_MARK")
-block=$(count run "$BLOCK_MARK")
+fixed=$(count run "$FIXED_MARK")
 ((ball > 20)) || fail "the ball shows no spin mark ($ball pixels of #$BALL_MARK)"
 ((disc > 20)) || fail "the disc shows no spin mark ($disc pixels of #$DISC_MARK)"
-((block == 0)) || fail "the block, which cannot turn, shows a mark ($block pixels)"
-pass "spin marks: the ball $ball pixels, the disc $disc, the block none"
+((fixed == 0)) || fail "the disc that cannot turn shows a mark ($fixed pixels)"
+pass "spin marks: the ball $ball pixels, the disc $disc, the disc that cannot turn none"
 grep -q "\[I\] Control readout Rotational energy at" "$LOG" ||
     fail "the Readouts do not list the rotational energy"
 grep -q "\[I\] Control readout Angular momentum at" "$LOG" ||
@@ -75,8 +76,8 @@ for n in 1 2; do
         fail "particle $n does not roll: $row"
 done
 row=$(grep -P "^3\t" <<<"$values")
-[[ "$(cut -f6 <<<"$row")" == "0" ]] || fail "the block turns: $row"
-pass "values: the ball and the disc roll (omega r = v), the block's omega is 0"
+[[ "$(cut -f6 <<<"$row")" == "0" ]] || fail "the disc that cannot turn turns: $row"
+pass "values: the ball and the disc roll (omega r = v), the disc that cannot turn has omega 0"
 
 # --- the inspector, the panel folded --------------------------------------------------------------
 key c
