@@ -125,24 +125,31 @@ void ControlPanel::keepAnchor(std::size_t firstItem) {
     const bool over = ImGui::IsWindowHovered(ImGuiHoveredFlags_AllowWhenBlockedByActiveItem) &&
                       mouse.x >= w->Pos.x && mouse.x < w->Pos.x + w->Size.x;
     // Only while the layout moves on its own: not while the user scrolls (wheel, bar, finger)
-    // or holds a control, nor when the panel itself asked for a scroll this frame.
-    const bool still = over && w->Scroll.y == anchorScroll_ && w->ScrollTarget.y == FLT_MAX &&
-                       io.MouseWheel == 0.f && !ImGui::IsAnyMouseDown() &&
-                       !ImGui::IsAnyItemActive();
+    // or holds a control, nor when the panel itself asked for a scroll this frame. With the
+    // pointer elsewhere (in the box), when the collision card changes: after R and the next
+    // collision the card, shrinking and growing again, scrolled a panel left at the Data
+    // section to the card.
+    const bool still =
+        w->Scroll.y == anchorScroll_ && w->ScrollTarget.y == FLT_MAX && io.MouseWheel == 0.f &&
+        (over ? !ImGui::IsAnyMouseDown() && !ImGui::IsAnyItemActive() : cardChanged_);
     float moved = 0.f;
-    if (still && anchor_) {
-        for (std::size_t i = firstItem; i < items_.size(); ++i) {
-            if (items_[i].name == anchor_->first) {
-                moved = items_[i].y0 - anchor_->second;
-                break;
+    if (still) {
+        bool found = false;
+        for (const auto& [name, y] : anchors_) {
+            for (std::size_t i = firstItem; i < items_.size() && !found; ++i) {
+                if (items_[i].name == name) {
+                    moved = items_[i].y0 - y;
+                    found = true;
+                }
             }
+            if (found) break;
         }
         if (moved != 0.f) ImGui::SetScrollY(w->Scroll.y + moved);
     }
     // Moved back next frame, the same control is under the pointer.
-    std::optional<std::pair<std::string, float>> kept;
-    if (moved != 0.f) kept = anchor_;
-    anchor_.reset();
+    std::optional<std::vector<std::pair<std::string, float>>> kept;
+    if (moved != 0.f) kept = anchors_;
+    anchors_.clear();
     anchorScroll_ = w->Scroll.y + moved;
     // A panel that was not full cannot scroll by what it grew: blank room at its end, as much
     // as the scroll needs, kept while the scroll needs it (the user scrolling up gives it back).
@@ -156,10 +163,19 @@ void ControlPanel::keepAnchor(std::size_t firstItem) {
     slack_ = moved > 0.f ? needed : std::min(slack_, needed);
     if (slack_ > 0.f) ImGui::Dummy(ImVec2(1.f, slack_ + 2.f));
     if (kept) {
-        anchor_ = std::move(kept);
+        anchors_ = std::move(*kept);
         return;
     }
-    if (!over) return;
+    if (!over) {
+        // The pointer elsewhere: the first control below the card shown whole stays put when
+        // the card changes, or the next one where it went.
+        const float top = w->InnerRect.Min.y, bottom = w->InnerRect.Max.y;
+        for (std::size_t i = std::max(firstItem, afterCard_); i < items_.size(); ++i) {
+            if (items_[i].y0 >= top && items_[i].y1 <= bottom)
+                anchors_.emplace_back(items_[i].name, items_[i].y0);
+        }
+        return;
+    }
     // The control under the pointer (the smallest, where one holds others), else the nearest
     // above or below it.
     const PanelItem* best = nullptr;
@@ -176,7 +192,7 @@ void ControlPanel::keepAnchor(std::size_t firstItem) {
             best = &it;
         }
     }
-    if (best) anchor_.emplace(best->name, best->y0 - moved);
+    if (best) anchors_.emplace_back(best->name, best->y0 - moved);
 }
 
 void ControlPanel::aboutButton(const char* label, ImVec2 size) {
@@ -414,12 +430,18 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         mark(label);
         tip(help);
     };
+    // Each row's boxes at fixed fractions of the panel where they fit there, else wrapped
+    // (widgets::besideIfRoom): at 200 % the panel is narrower in points than at 100 %.
+    const float row = ImGui::GetContentRegionAvail().x;
+    const auto next = [row](float fraction, const char* label) {
+        widgets::besideIfRoom(row * fraction, widgets::checkWidth(label));
+    };
     box("Velocity arrows", v.arrows, cmd::ShowOption::Arrows,
         "An arrow from each moving particle to where it will be a moment later (key A)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    next(0.55f, "Labels");
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.8f);
+    next(0.8f, "y up");
     box("y up", v.yUp, cmd::ShowOption::YUp,
         "Numbers count y upward from the box's floor, vy and momentum up and turning "
         "counterclockwise positive, as in school physics; unticked, y counts down from the "
@@ -439,28 +461,22 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         "Momentum arrows m v, the total momentum and the centre of mass with its path (key V)");
     box("Plots", v.plots, cmd::ShowOption::Plots,
         "Energy, momentum and the collision rate against time, beside the box (key K)");
-    // Beside Plots where the panel is wide enough for both (into the window's padding, as
-    // at its full width).
-    if (const float at = ImGui::GetContentRegionAvail().x * 0.55f;
-        at + widgets::checkWidth("Speed histogram") <=
-        ImGui::GetWindowContentRegionMax().x + ImGui::GetStyle().WindowPadding.x) {
-        ImGui::SameLine(at);
-    }
+    // Beside Plots where the panel is wide enough for both.
+    next(0.55f, "Speed histogram");
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
         "(key D)");
-    // Three to a row, two on the next: the Show section stays short enough that Tools is in an
-    // 800-pixel window's first screen.
-    const float row = ImGui::GetContentRegionAvail().x;
+    // Three to a row, two on the next (where the panel is wide enough): the Show section stays
+    // short enough that Tools is in an 800-pixel window's first screen.
     box("Values table", v.values, cmd::ShowOption::Values,
         "Every particle's signed position, velocity, momentum and energy, with the totals, in a "
         "window; position, velocity and mass can be typed in (key I)");
-    ImGui::SameLine(row * 0.47f);
+    next(0.47f, "Spin");
     box("Spin", v.spin, cmd::ShowOption::Spin,
         "A contrasting quarter of each disc that turns, turning with it: a rolling ball's goes "
         "round, a sliding one's does not. Particles with fixed "
         "rotation have none, and nothing turns without friction or a spin given by hand");
-    ImGui::SameLine(row * 0.74f);
+    next(0.74f, "Grid");
     box("Grid", v.grid, cmd::ShowOption::Grid,
         "Lines across the box at a round number of metres, labelled along its top and left "
         "edges (Shift+G)");
@@ -468,7 +484,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         "The selected particle's last collision (with none selected, the last between two "
         "particles): velocities, momenta and energy just before and just after, and the momenta "
         "diagram (key J)");
-    ImGui::SameLine(row * 0.64f);
+    next(0.64f, "Ruler");
     box("Ruler", v.ruler, cmd::ShowOption::Ruler,
         "A ruler over the box: drag its ends (or its edge to move it) to measure a distance in "
         "metres and a slope in degrees (key Q)");

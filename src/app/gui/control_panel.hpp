@@ -196,11 +196,21 @@ class ControlPanel {
     ParticleId shownSelection_;
     /// The last collision card was shown last frame (turned on, its section opens).
     bool cardShown_ = false;
+    /// The shown card's collision's time last frame (none: no collision on it), whether the
+    /// card changed this frame (a collision, or R clearing it) and where its section's items
+    /// end in items_: with the pointer elsewhere, the controls below the card stay put as it
+    /// changes (keepAnchor).
+    std::optional<double> cardSeen_;
+    bool cardChanged_ = false;
+    int cardSettling_ = 0;
+    std::size_t afterCard_ = 0;
     /// What the pointer was over in the panel last frame (its name and top, window points) and
     /// the panel's scroll then: when the layout above it moves it on its own (a collision card
     /// that grows, a line that appears), the panel scrolls by as much, so that it stays under
-    /// the pointer (keepAnchor).
-    std::optional<std::pair<std::string, float>> anchor_;
+    /// the pointer (keepAnchor). With the pointer elsewhere, the controls below the collision
+    /// card shown whole, from the top down: the first of them still there stays put when the
+    /// card changes.
+    std::vector<std::pair<std::string, float>> anchors_;
     float anchorScroll_ = 0.f;
     float slack_ = 0.f;  ///< blank room at the panel's end that the anchored scroll needs
     void keepAnchor(std::size_t firstItem);

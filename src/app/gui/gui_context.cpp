@@ -32,6 +32,7 @@ void mapKeys(ImGuiIO& io) {
         {ImGuiKey_Backspace, SDL_SCANCODE_BACKSPACE},
         {ImGuiKey_Space, SDL_SCANCODE_SPACE},
         {ImGuiKey_Enter, SDL_SCANCODE_RETURN},
+        {ImGuiKey_KeyPadEnter, SDL_SCANCODE_KP_ENTER},
         {ImGuiKey_Escape, SDL_SCANCODE_ESCAPE},
     };
     for (const auto& [key, scancode] : keys)
@@ -399,6 +400,30 @@ void GuiContext::keysAfterFrame() {
     keyActed_ = false;
     if (textWait_ > 0) --textWait_;
     tabOnward();
+    enterActivates();
+}
+
+void GuiContext::enterActivates() {
+    // ImGui 1.86 maps Space to "activate" and Enter to "input": Enter starts typing in a field
+    // or a slider, and on a button, a check box or a section's header did nothing. Here either
+    // Enter also activates the item under the cursor, as ImGui's programmatic activation does
+    // (the item is pressed once, and let go the next frame); a field still starts typing. Not in
+    // a dialog, where Enter is the default button's (section_dialogs.cpp).
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    const ImGuiIO& io = g.IO;
+    const auto pressed = [&io](ImGuiKey key) {
+        const int code = io.KeyMap[key];
+        return code >= 0 && code < IM_ARRAYSIZE(io.KeysDown) && io.KeysDown[code] &&
+               io.KeysDownDuration[code] == 0.f;
+    };
+    if (!pressed(ImGuiKey_Enter) && !pressed(ImGuiKey_KeyPadEnter)) return;
+    if (g.NavId == 0 || g.NavDisableHighlight || g.NavWindow == nullptr || g.ActiveId != 0 ||
+        g.NavActivateId != 0 || (g.NavWindow->Flags & ImGuiWindowFlags_NoNavInputs) != 0 ||
+        (g.NavWindow->RootWindow->Flags & ImGuiWindowFlags_Modal) != 0)
+        return;
+    g.NavActivateId = g.NavActivateDownId = g.NavActivatePressedId = g.NavId;
+    g.NavActivateInputId = g.NavId;
+    g.NavActivateFlags = ImGuiActivateFlags_PreferInput;
 }
 
 void GuiContext::tabOnward() {

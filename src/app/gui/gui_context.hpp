@@ -154,6 +154,9 @@ class GuiContext {
     void keysAfterFrame();
     /// After NewFrame: a Tab within the panel goes to the item after the cursor's.
     void tabOnward();
+    /// Enter or the keypad's Enter on the control under the keyboard's cursor presses it, as
+    /// Space does (ImGui 1.86 lets Enter only start typing in a field).
+    void enterActivates();
     /// Makes the scale and theme asked for within the last frame (before NewFrame).
     void applyPending();
     /// handleEvent for the mouse SDL makes of a finger (panel_touch.hpp): true when the panel's

@@ -21,6 +21,20 @@ namespace psb::app {
 void ControlPanel::lastCollision(const Session& s) {
     const bool turnedOn = s.view().collision && !cardShown_;
     cardShown_ = s.view().collision;
+    // A new collision on the card, or R clearing it, while it was shown: the controls below it
+    // stay where they are (keepAnchor), the user may be working there.
+    const std::optional<double> seen =
+        s.lastCollision() ? std::optional<double>(s.lastCollision()->collision.time) : std::nullopt;
+    // For the frames its text takes to settle too (wrapped text takes the width the frame before
+    // found).
+    if (s.view().collision && !turnedOn && seen != cardSeen_) {
+        cardSettling_ = 3;
+    } else if (cardSettling_ > 0) {
+        --cardSettling_;
+    }
+    cardChanged_ = s.view().collision && cardSettling_ > 0;
+    cardSeen_ = seen;
+    afterCard_ = items_.size();
     if (!s.view().collision) return;
     // Turned on, the section opens where it is: the panel never scrolls to it (a student
     // reaching for a button below found the card under the pointer instead).
@@ -28,6 +42,7 @@ void ControlPanel::lastCollision(const Session& s) {
     const bool open = ImGui::CollapsingHeader("Last collision", ImGuiTreeNodeFlags_DefaultOpen);
     mark("section Last collision");
     if (open) card(s);
+    afterCard_ = items_.size();
 }
 
 void ControlPanel::card(const Session& s) {

@@ -41,6 +41,24 @@ inline void sameLineIfRoom(float width, float spacing = -1.f) {
     if (ImGui::GetCursorPosX() + width > right) ImGui::NewLine();
 }
 
+/// Puts the next item, `width` points wide, on the line of the item before, at `column` (points
+/// from the window's left, as ImGui::SameLine's) where it fits there whole, clear of the item
+/// before and of the panel's edge (where the panel clips, half its padding right of the
+/// content); else just after the item before, where it fits; else at the start of the next
+/// line. A row of check boxes at fixed fractions of the panel drew the next box over the end
+/// of a long label at 200 % ("Velocity arro", "Labe"); now the row wraps.
+inline void besideIfRoom(float column, float width) {
+    const float right =
+        ImGui::GetWindowContentRegionMax().x + ImGui::GetStyle().WindowPadding.x / 2.f;
+    ImGui::SameLine();
+    const float after = ImGui::GetCursorPosX();
+    if (column >= after && column + width <= right) {
+        ImGui::SameLine(column);
+    } else if (after + width > right) {
+        ImGui::NewLine();
+    }
+}
+
 /// A field's width: `most` points, less where its label `label` beside it would run past the
 /// panel's edge.
 [[nodiscard]] inline float fieldWidth(float most, const char* label) {

@@ -108,6 +108,40 @@ class ControlPanelTest : public OffscreenTest {
         frame();
     }
 
+    /// Plays, a frame at a time, until the session hears a collision (at most 20 s), and
+    /// pauses again: whether it heard one.
+    bool runToACollision() {
+        session_->apply(cmd::TogglePause{});
+        for (int k = 1; k <= 1200 && !session_->lastCollision(); ++k) {
+            session_->update(1.0 / 60.0, k / 60.0);
+            frame();
+        }
+        session_->apply(cmd::TogglePause{});
+        return session_->lastCollision().has_value();
+    }
+
+    /// Expects no two of the panel's `items` to share a point, each named in a failure: the
+    /// values table's window and the presets' list (a child window that scrolls and clips its
+    /// own lines) aside.
+    static void expectNoOverlap(const std::vector<PanelItem>& items) {
+        const auto aside = [](const PanelItem& i) {
+            return i.name.rfind("values", 0) == 0 || i.name.rfind("preset ", 0) == 0;
+        };
+        for (std::size_t a = 0; a < items.size(); ++a) {
+            const PanelItem& i = items[a];
+            if (aside(i)) continue;
+            for (std::size_t b = a + 1; b < items.size(); ++b) {
+                const PanelItem& j = items[b];
+                if (aside(j)) continue;
+                const bool apart = i.x1 <= j.x0 + 0.5f || j.x1 <= i.x0 + 0.5f ||
+                                   i.y1 <= j.y0 + 0.5f || j.y1 <= i.y0 + 0.5f;
+                EXPECT_TRUE(apart) << i.name << " [" << i.x0 << ", " << i.x1 << "] x [" << i.y0
+                                   << ", " << i.y1 << "] overlaps " << j.name << " [" << j.x0
+                                   << ", " << j.x1 << "] x [" << j.y0 << ", " << j.y1 << "]";
+            }
+        }
+    }
+
     std::unique_ptr<GuiContext> gui_;
     std::optional<Session> session_;
     ControlPanel panel_;

@@ -121,6 +121,48 @@ TEST_F(ControlPanelTest, TheOpenPanelTakesAShareOfTheWindowAndEveryControlFitsIn
         EXPECT_LE(i.x1, edge + (header ? style.WindowPadding.x / 2.f : 0.f) + 0.5f)
             << i.name << " runs past the panel's edge";
     }
+    // No control is drawn over another: a row of three check boxes drew the next one over the
+    // end of the label before it ("Velocity arro", "Labe", "Values tab").
+    expectNoOverlap(panel_.items());
+    gui_->setScale(1.f);
+}
+
+TEST_F(ControlPanelTest, NoControlOverlapsAnotherNorRunsPastTheEdgeAtAnyScaleOrWindow) {
+    // The rows of the Show section at fixed fractions of the panel's width drew a check box
+    // over the end of the label before it at 200 %; every row wraps now, at 100 to 250 % in a
+    // window from 800 x 600 up, every section open and a particle selected.
+    session_->apply(cmd::Select{session_->world().ids()[0]});
+    session_->apply(cmd::SetShow{ShowOption::Collision, true});
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_NE(w, nullptr);
+    for (const char* section : {"Scene", "Tools", "Video", "Data", "All particles", "Engine",
+                                "Readouts", "Selected particle", "Last collision"})
+        w->StateStorage.SetInt(ImHashStr(section, 0, w->ID), 1);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    for (const float scale : {1.f, 1.25f, 1.5f, 2.f, 2.5f}) {
+        for (const auto& [width, height] :
+             {std::pair{800.f, 600.f}, std::pair{1024.f, 768.f}, std::pair{1600.f, 1000.f}}) {
+            gui_->setScale(scale);
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(width, height);
+                for (const Command& c :
+                     panel_.build(*session_, FrameStats{}, height / scale, scale))
+                    session_->apply(c);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+            w = ImGui::FindWindowByName("Controls");
+            const float edge = w->Pos.x + w->Size.x - (w->ScrollbarY ? style.ScrollbarSize : 0.f) -
+                               style.WindowPadding.x / 2.f;
+            SCOPED_TRACE(::testing::Message() << width << " x " << height << " at " << scale);
+            for (const PanelItem& i : panel_.items()) {
+                if (i.name.rfind("values", 0) == 0) continue;
+                const bool header = i.name.rfind("section ", 0) == 0;
+                EXPECT_LE(i.x1, edge + (header ? style.WindowPadding.x / 2.f : 0.f) + 0.5f)
+                    << i.name << " runs past the panel's edge";
+            }
+            expectNoOverlap(panel_.items());
+        }
+    }
     gui_->setScale(1.f);
 }
 
@@ -211,12 +253,46 @@ TEST_F(ControlPanelTest, TabWalksThroughButtonsToPlayAndSpaceStartsAndStopsTime)
     EXPECT_EQ(navId(), panel_.item("Restart")->id);
     EXPECT_TRUE(key(SDLK_TAB, KMOD_LSHIFT));
     EXPECT_EQ(navId(), panel_.item("Step")->id);
-    // Enter on Step: one step, the cursor still there.
+    // Space on Step: one step, the cursor still there.
     const double t0 = session_->world().time();
     EXPECT_TRUE(key(SDLK_SPACE));
     session_->update(0.0, 0.0);
     EXPECT_GT(session_->world().time(), t0);
     EXPECT_EQ(navId(), panel_.item("Step")->id);
+}
+
+TEST_F(ControlPanelTest, EnterAndTheKeypadsEnterPressTheFocusedButtonAsSpaceDoes) {
+    // ImGui 1.86 gives Enter to fields only: on a focused button it did nothing.
+    const auto navId = [this] {
+        (void)gui_->io();
+        return static_cast<unsigned>(ImGui::GetCurrentContext()->NavId);
+    };
+    const auto key = [this](SDL_Keycode k, SDL_Scancode code) {
+        SDL_Event e{};
+        e.type = SDL_KEYDOWN;
+        e.key.keysym.sym = k;
+        e.key.keysym.scancode = code;
+        const bool taken = gui_->handleEvent(e);
+        e.type = SDL_KEYUP;
+        gui_->handleEvent(e);
+        frame();
+        frame();
+        return taken;
+    };
+    const PanelItem* play = panel_.item("Play/Pause");
+    ASSERT_NE(play, nullptr);
+    for (int tabs = 0; navId() != play->id && tabs < 8; ++tabs)
+        key(SDLK_TAB, SDL_SCANCODE_TAB);
+    ASSERT_EQ(navId(), play->id);
+    ASSERT_TRUE(session_->paused());
+    EXPECT_TRUE(key(SDLK_RETURN, SDL_SCANCODE_RETURN));
+    EXPECT_FALSE(session_->paused()) << "Enter pressed Play";
+    EXPECT_EQ(navId(), play->id);
+    EXPECT_TRUE(key(SDLK_KP_ENTER, SDL_SCANCODE_KP_ENTER));
+    EXPECT_TRUE(session_->paused()) << "the keypad's Enter pressed Pause";
+    EXPECT_TRUE(key(SDLK_RETURN, SDL_SCANCODE_RETURN));
+    EXPECT_FALSE(session_->paused()) << "once per press, not held";
+    EXPECT_FALSE(gui_->io().WantTextInput) << "a button starts no typing";
 }
 
 TEST_F(ControlPanelTest, NoLineOfThePanelRunsPastItsRightEdge) {
@@ -608,13 +684,7 @@ TEST_F(ControlPanelTest, ACollisionCardThatGrowsMovesNothingUnderThePointer) {
     frame();
     const float before = panel_.item("section Data")->y0;
     ASSERT_FALSE(session_->lastCollision());
-    session_->apply(cmd::TogglePause{});
-    for (int k = 1; k <= 1200 && !session_->lastCollision(); ++k) {
-        session_->update(1.0 / 60.0, k / 60.0);
-        frame();
-    }
-    ASSERT_TRUE(session_->lastCollision());
-    session_->apply(cmd::TogglePause{});
+    ASSERT_TRUE(runToACollision());
     frame();
     frame();
     EXPECT_NEAR(panel_.item("section Data")->y0, before, 0.5f)
@@ -628,13 +698,7 @@ TEST_F(ControlPanelTest, ACardThatGoesAwayLeavesNoBlankPanel) {
     session_->apply(cmd::SetShow{ShowOption::Collision, true});
     for (const char* section : {"section Physics", "section Show"})
         click(section);
-    session_->apply(cmd::TogglePause{});
-    for (int k = 1; k <= 1200 && !session_->lastCollision(); ++k) {
-        session_->update(1.0 / 60.0, k / 60.0);
-        frame();
-    }
-    ASSERT_TRUE(session_->lastCollision());
-    session_->apply(cmd::TogglePause{});
+    ASSERT_TRUE(runToACollision());
     ImGuiWindow* w = ImGui::FindWindowByName("Controls");
     // Scrolled down to the card's diagram, the pointer on it.
     frame();
@@ -655,6 +719,41 @@ TEST_F(ControlPanelTest, ACardThatGoesAwayLeavesNoBlankPanel) {
     const PanelItem* data = panel_.item("section Data");
     ASSERT_NE(data, nullptr);
     EXPECT_LT(data->y0, w->Pos.y + w->Size.y) << "the panel shows nothing: scrolled past its end";
+}
+
+TEST_F(ControlPanelTest, AfterARestartTheNextCollisionLeavesThePanelWhereTheUserLeftIt) {
+    // A trial at 200 %: the panel scrolled down to the Data section, the teacher pressed R and
+    // worked in the box; at the next collision the panel had scrolled away from Data to the
+    // card. Only J's own card may move the panel, and J opens it where it is.
+    session_->apply(cmd::SetShow{ShowOption::Collision, true});
+    for (const char* section : {"section Physics", "section Show"})
+        click(section);
+    ASSERT_TRUE(runToACollision());
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    frame();
+    const PanelItem* data = panel_.item("section Data");
+    ASSERT_NE(data, nullptr);
+    ImGui::SetScrollY(w, std::min(w->ScrollMax.y, w->Scroll.y + data->y0 - w->Pos.y - 40.f));
+    frame();
+    frame();
+    const float before = panel_.item("section Data")->y0;
+    ASSERT_LT(before, static_cast<float>(kSize)) << "the case: Data in sight";
+    ASSERT_GT(w->Scroll.y, 0.f) << "the case: the panel scrolled";
+    // The pointer in the box, away from the panel.
+    gui_->io().MousePos = ImVec2(kSize - 100.f, kSize / 2.f);
+    frame();
+    session_->apply(cmd::Restart{});
+    for (int k = 0; k < 4; ++k)
+        frame();
+    // The card cleared, the panel's content nearly fits the window: Data as near as the scroll
+    // can keep it.
+    const float afterRestart = panel_.item("section Data")->y0;
+    EXPECT_NEAR(afterRestart, before, 10.f) << "R moved the Data section";
+    ASSERT_TRUE(runToACollision());
+    frame();
+    frame();
+    EXPECT_NEAR(panel_.item("section Data")->y0, afterRestart, 0.5f)
+        << "the next collision scrolled the Data section away";
 }
 
 TEST_F(ControlPanelTest, FoldedThePanelIsANarrowStripThatOpensAgain) {
