@@ -37,25 +37,24 @@ EditResult writeEdit(World& world, const CheckedEdit& edit, const Axes& axes) {
         return {false, e.what()};
     }
     char buf[200];
-    std::snprintf(buf, sizeof buf,
-                  "Edited particle %llu: mass %s kg, radius %s m, velocity [%s, %s] m/s",
-                  static_cast<unsigned long long>(particleNumber(id)), plainNumber(mass).c_str(),
-                  plainNumber(radius).c_str(), plainNumber(velocity.x()).c_str(),
-                  plainNumber(axes.up(velocity.y())).c_str());
+    // At most three figures, as a person reads them ("radius 0.142857 m" before), and a
+    // vector's parts joined by a space no line breaks at ("[-1, / 0]" wrapped over two lines).
+    std::snprintf(buf, sizeof buf, "Edited particle %llu: mass %s kg, radius %s m, velocity %s m/s",
+                  static_cast<unsigned long long>(particleNumber(id)), plainNumber(mass, 3).c_str(),
+                  plainNumber(radius, 3).c_str(),
+                  pair(velocity.x(), axes.up(velocity.y())).c_str());
     std::string message = buf;
     if (world.rotationInUse()) {
         std::snprintf(buf, sizeof buf, ", omega %s rad/s, k %s",
-                      plainNumber(axes.spin(omega)).c_str(), plainNumber(k).c_str());
+                      plainNumber(axes.spin(omega), 3).c_str(), plainNumber(k, 3).c_str());
         message += buf;
     }
     if (position != wanted) {
-        std::snprintf(buf, sizeof buf, "; moved to [%.2f, %.2f] m to stay inside the walls",
-                      position.x(), axes.y(position.y()));
-        message += buf;
+        message += "; moved to " + pair(position.x(), axes.y(position.y()), 2) +
+                   " m to stay inside the walls";
     } else if (position != old.position) {
         // A move says where to (an edit of x or y would otherwise read as if nothing changed).
-        message += "; now at [" + plainNumber(position.x()) + ", " +
-                   plainNumber(axes.y(position.y())) + "] m";
+        message += "; now at " + pair(position.x(), axes.y(position.y())) + " m";
     }
     return {true, message};
 }

@@ -79,6 +79,21 @@ std::string fieldNumber(double value) {
     return threeFigures(value);
 }
 
+std::string pair(double x, double y, int decimals) {
+    const auto one = [decimals](double v) {
+        if (decimals < 0) return plainNumber(v, 3);
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+        return std::string(buf);
+    };
+    std::string s = "[";  // appended: GCC 12 warns wrongly (-Wrestrict) on a chain of +
+    s += one(x);
+    s += ",\u00a0";
+    s += one(y);
+    s += "]";
+    return s;
+}
+
 std::string components(const Vec2& v) {
     // Built by appending: GCC 12 warns wrongly (-Wrestrict) on a chain of + from a literal.
     std::string s = "(";

@@ -37,6 +37,11 @@ namespace psb::app {
 /// "(2.00, 0)", "(-2.50, 1.00)" (the unit goes after, once).
 [[nodiscard]] std::string components(const Vec2& v);
 
+/// "[x, y]" for a message: each at most three figures (plainNumber), or with `decimals` >= 0
+/// that many decimals ("[670.00, 350.00]"), the space after the comma a no-break space, so
+/// that a message wrapped at its spaces never breaks a vector ("[-1, / 0]").
+[[nodiscard]] std::string pair(double x, double y, int decimals = -1);
+
 /// A relative change (|change| / reference) in words: "kept to 1 part in 10^14" (the power
 /// rounded down), "kept exactly" below 10^-15 (rounding of the sums), "changed by 2.3 %" at a
 /// tenth of a percent or more; "not measured" for NaN.

@@ -147,6 +147,16 @@ INSTANTIATE_TEST_SUITE_P(
         Refusal{{"2", "10", "0", "0", "0", "x"}, "k: 'x' is not a number"},
         Refusal{{"1e300", "10", "1e5", "0", "0", "0.5"}, "kinetic energy would overflow"}));
 
+TEST(ApplyEdit, ItsMessageHasThreeFiguresAndVectorsNoLineBreaksIn) {
+    // "radius 0.142857 m", and "[-1, 0]" wrapped as "[-1," over "0]" in the message band.
+    World w = boxWorld();
+    const ParticleId id = addAt(w, {300, 300}, 10.0, 2.0);
+    const EditResult r = applyEdit(w, id, {"1", "0.142857142857", "-1", "0", "0", "0.5"});
+    ASSERT_TRUE(r.applied) << r.message;
+    EXPECT_NE(r.message.find("radius 0.143 m"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("velocity [-1,\u00a00] m/s"), std::string::npos) << r.message;
+}
+
 TEST(ApplyEdit, ARadiusThatReachesPastAWallMovesTheCentreInward) {
     World w = boxWorld();
     const ParticleId id = addAt(w, {690, 350}, 10.0);  // touching the right wall
@@ -154,7 +164,7 @@ TEST(ApplyEdit, ARadiusThatReachesPastAWallMovesTheCentreInward) {
     ASSERT_TRUE(r.applied) << r.message;
     EXPECT_NEAR(w.get(id).position.x(), 670.0, 1e-12);
     EXPECT_NEAR(w.get(id).position.y(), 350.0, 1e-12);
-    EXPECT_NE(r.message.find("moved to [670.00, 350.00] m"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("moved to [670.00,\u00a0350.00] m"), std::string::npos) << r.message;
 }
 
 TEST(ApplyEdit, AMoveInwardThatWouldOverlapIsRefused) {
