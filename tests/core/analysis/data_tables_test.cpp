@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -98,6 +99,19 @@ TEST(TimeSeriesTable, CleanTimesAndTheGravityColumns) {
     const Rows windowed = parse(
         timeSeriesTable(samplesOf(series), false, csv::Separator::Comma, false, Axes{}, 0.5), ',');
     EXPECT_EQ(windowed[0].back(), "collision_rate_per_s_last_0.5_s");
+}
+
+TEST(TimeSeriesTable, ARateReadsToTheTwelveDigitsOfItsWindowsTime) {
+    // A count divided by a window of added steps came out as 2.000000000000007 in the app's
+    // export: the rate keeps the 12 digits its time has.
+    std::vector<ObservablesSample> samples(2);
+    samples[0].collisionRate = std::nan("");
+    samples[1].time = 0.5;
+    samples[1].collisionRate = 2.000000000000007;
+    const Rows rows = parse(timeSeriesTable(samples, false, csv::Separator::Comma), ',');
+    ASSERT_EQ(rows.size(), 3u);
+    EXPECT_EQ(rows[1].back(), "") << "no rate before a whole window";
+    EXPECT_EQ(rows[2].back(), "2");
 }
 
 TEST(TrajectoryTable, RowsPerParticlePerInstant) {
