@@ -43,7 +43,11 @@ std::vector<std::string> wrapAtSpaces(std::string_view text, float room, const M
                     std::size_t cut = std::string::npos;
                     for (std::size_t k = current.find_first_of("/\\", start);
                          k != std::string::npos; k = current.find_first_of("/\\", k + 1)) {
-                        if (k + 1 < current.size() && measure(current.substr(0, k + 1)) <= room)
+                        // Never after the path's own first separator: "(folder /" left the
+                        // line with a lone "/" ("(folder / / tmp/...").
+                        const bool first = k == 0 || current[k - 1] == ' ' || current[k - 1] == '(';
+                        if (!first && k + 1 < current.size() &&
+                            measure(current.substr(0, k + 1)) <= room)
                             cut = k + 1;
                     }
                     std::size_t skip = 0;

@@ -36,6 +36,20 @@ TEST(WordWrap, BreaksOnlyAtSpacesAtEveryWidth) {
     }
 }
 
+TEST(WordWrap, APathIsNeverBrokenAfterItsFirstSeparator) {
+    // "Saved (folder /tmp/...)" broke after the path's leading "/": a line ending "(folder /"
+    // and the next starting "tmp/", read as "(folder / / tmp/...)".
+    const std::string text = "Saved 3 files (folder /tmp/psb-output/lesson-1/values)";
+    for (int room = 16; room <= 40; ++room) {
+        const std::vector<std::string> lines = wrapAtSpaces(text, room, characters);
+        for (const std::string& line : lines) {
+            const bool lone = line.size() >= 2 && line.back() == '/' &&
+                              (line[line.size() - 2] == ' ' || line[line.size() - 2] == '(');
+            EXPECT_FALSE(lone) << "room " << room << ": '" << line << "'";
+        }
+    }
+}
+
 TEST(WordWrap, APathWiderThanTheLineGoesOnAfterASeparator) {
     // A saved file's path has no space: it ran past the panel's edge, cut.
     const std::string text = "Saved to /home/teacher/lessons/momentum/collision-2.json";
