@@ -115,7 +115,7 @@ for _ in $(seq 60); do
 done
 gas=$(section gas Gas)
 measured=$(grep "^Pressure, measured:" <<<"$gas") || fail "no measured pressure at t = $t s: $gas"
-read -r p dp < <(sed -E 's/^Pressure, measured: ([0-9.]+) N\/m ± ([0-9.]+).*/\1 \2/' <<<"$measured")
+read -r p dp < <(sed -E 's/^Pressure, measured: ([0-9.]+) ± ([0-9.]+) N\/m.*/\1 \2/' <<<"$measured")
 read -r hd < <(grep "hard discs:" <<<"$gas" | sed -E 's/.*hard discs: ([0-9.]+) N\/m.*/\1/')
 read -r ideal < <(grep "ideal gas:" <<<"$gas" | sed -E 's/.*ideal gas: ([0-9.]+) N\/m.*/\1/')
 awk -v p="$p" -v dp="$dp" -v h="$hd" -v i="$ideal" 'BEGIN {

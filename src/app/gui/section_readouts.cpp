@@ -57,15 +57,15 @@ void ControlPanel::readouts(const Session& s) {
     const World& w = s.world();
     const ObservablesSample& o = s.observables();
     const bool gravity = w.def().gravity != Vec2::Zero();
-    if (widgets::beginRows("readouts")) {
-        // Each readout's name and value are marked, for the tests that check they never meet.
-        const auto readout = [this](const char* name, const std::string& value,
-                                    const char* help = nullptr) {
-            const widgets::RowRects r = row(name, value, help);
-            items_.push_back(
-                {std::string("readout ") + name, r.name0.x, r.name0.y, r.name1.x, r.name1.y});
-            items_.push_back({std::string("readout ") + name + " value", r.value0.x, r.value0.y,
-                              r.value1.x, r.value1.y});
+    // The rows first, then the table: its names' column leaves the values their room.
+    struct Readout {
+        std::string name, value, help;
+    };
+    std::vector<Readout> rows;
+    {
+        const auto readout = [&rows](const char* name, const std::string& value,
+                                     const char* help = nullptr) {
+            rows.push_back({name, value, help != nullptr ? help : ""});
         };
         readout("Time", quantity(w.time(), "s") + (s.paused() ? ", paused" : ""),
                 "Simulated time since the scene started");
@@ -109,6 +109,19 @@ void ControlPanel::readouts(const Session& s) {
         if (const std::optional<GasReading> gas = s.gasReading()) {
             for (const GasLine& line : gasLines(*gas))
                 readout(line.name.c_str(), line.value, line.help.c_str());
+        }
+    }
+    std::vector<std::string> names;
+    for (const Readout& r : rows)
+        names.push_back(r.name);
+    if (widgets::beginRows("readouts", widgets::rowNames(names))) {
+        // Each readout's name and value are marked, for the tests that check they never meet.
+        for (const Readout& row : rows) {
+            const widgets::RowRects r = widgets::row(
+                row.name.c_str(), row.value, row.help.empty() ? nullptr : row.help.c_str(), true);
+            items_.push_back({"readout " + row.name, r.name0.x, r.name0.y, r.name1.x, r.name1.y});
+            items_.push_back(
+                {"readout " + row.name + " value", r.value0.x, r.value0.y, r.value1.x, r.value1.y});
         }
         ImGui::EndTable();
     }

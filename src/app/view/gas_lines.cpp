@@ -18,8 +18,9 @@ std::vector<GasLine> gasLines(const GasReading& r) {
     if (r.pressure) {
         lines.push_back(
             {"Pressure, measured",
-             // One unit for both, no prefix: "11.7 N/m \u00b1 0.151 N/m".
-             quantity(*r.pressure, "N/m", false) + " \u00b1 " +
+             // One unit for both, once, no prefix: "11.7 \u00b1 0.151 N/m" (with the unit twice
+             // the value wrapped over three lines at 200 %).
+             quantity(*r.pressure, "", false) + " \u00b1 " +
                  quantity(r.pressureError, "N/m", false),
              (r.periodic
                   ? std::string("From the collisions (a periodic box has no walls to push): "

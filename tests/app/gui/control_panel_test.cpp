@@ -442,6 +442,36 @@ TEST_F(ControlPanelTest, EveryReadoutsNameEndsBeforeItsValueBegins) {
     }
 }
 
+TEST_F(ControlPanelTest, AReadoutsValueKeepsMoreThanHalfTheRow) {
+    // The gas at 200 %: the names' column, as wide as "Pressure, measured", left the value
+    // "12.2 N/m \u00b1 0.362 N/m" a third of the panel, over three lines. The names take at
+    // most 45 % now, a longer one wrapping in it; with the large text of a narrow panel too.
+    const auto& presets = session_->presets();
+    const auto galton = std::find_if(presets.begin(), presets.end(), [](const SceneListing& p) {
+        return p.name == "Galton board";
+    });
+    ASSERT_NE(galton, presets.end());
+    session_->apply(cmd::OpenPreset{static_cast<int>(galton - presets.begin())});
+    GuiOptions o;
+    o.font = findAsset("fonts/DejaVuSans.ttf");
+    o.fontPixels = 23.f;
+    gui_ = std::make_unique<GuiContext>(sdl_, o);
+    frame();
+    frame();
+    const ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_NE(w, nullptr);
+    const float room = w->ContentRegionRect.GetWidth();
+    for (const char* name : {"Time", "Kinetic energy", "Mechanical energy", "Momentum"}) {
+        const PanelItem* label = panel_.item(std::string("readout ") + name);
+        const PanelItem* value = panel_.item(std::string("readout ") + name + " value");
+        ASSERT_NE(label, nullptr) << name;
+        ASSERT_NE(value, nullptr) << name;
+        EXPECT_LE(value->x0 - label->x0, 0.45f * room + 2.f * ImGui::GetStyle().CellPadding.x + 1.f)
+            << name << ": the names' column leaves its value less than half the row";
+        EXPECT_LT(label->x1, value->x0) << name << ": its name runs into its value";
+    }
+}
+
 TEST_F(ControlPanelTest, TheSelectedParticleTableAppearsWithEditableFields) {
     EXPECT_EQ(panel_.item("selected mass"), nullptr);
     session_->apply(cmd::Select{session_->world().ids().front()});
