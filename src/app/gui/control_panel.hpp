@@ -43,6 +43,7 @@ namespace psb::app {
 
 class Session;
 struct CollisionCard;
+struct CollisionCardText;
 
 /// The panel's width open and folded, window points (pixels at a pixel ratio of 1); open, the
 /// most (controlsOpenPoints).
@@ -147,6 +148,9 @@ class ControlPanel {
     /// The last collision card, while it is shown (section_collision.cpp).
     void lastCollision(const Session& s);
     void card(const Session& s);
+    /// The card's rows one above the other, where before and after do not fit side by side:
+    /// each quantity's name, then its value before and after, each on a line.
+    void stackedCard(const CollisionCardText& text);
     /// The momenta diagram under the card (view/momenta_diagram.hpp).
     /// `colours`: particle 1's, particle 2's and the total's arrows' (momentaColours).
     void momenta(const CollisionCard& card, const std::array<Color, 3>& colours);

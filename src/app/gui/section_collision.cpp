@@ -84,7 +84,19 @@ void ControlPanel::card(const Session& s) {
             from = end + 1;
         }
     }
-    if (ImGui::BeginTable("collision", 3, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
+    // Before and after side by side where two vectors fit beside the names; else each quantity's
+    // name on a line of its own and its values under it, one a line: in the panel's 240 points
+    // at 200 % a gas's vector ("(0.694, -0.0908)") broke over two lines beside the other.
+    float widest = 0.f;
+    for (const CollisionCardText::Row& r : text.rows) {
+        widest = std::max({widest, ImGui::CalcTextSize(r.before.c_str()).x,
+                           ImGui::CalcTextSize(r.after.c_str()).x});
+    }
+    const float pad = ImGui::GetStyle().CellPadding.x;
+    if (std::ceil(names) + 2.f * widest + 6.f * pad > ImGui::GetContentRegionAvail().x) {
+        stackedCard(text);
+    } else if (ImGui::BeginTable("collision", 3,
+                                 ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_RowBg)) {
         ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, std::ceil(names));
         ImGui::TableSetupColumn("before", ImGuiTableColumnFlags_WidthStretch);
         ImGui::TableSetupColumn("after", ImGuiTableColumnFlags_WidthStretch);
@@ -109,6 +121,30 @@ void ControlPanel::card(const Session& s) {
     for (const std::string& note : text.notes)
         widgets::wrapped(note);
     momenta(*card, momentaColours(s.view().theme));
+}
+
+void ControlPanel::stackedCard(const CollisionCardText& text) {
+    const float tag = std::max(ImGui::CalcTextSize("before").x, ImGui::CalcTextSize("after").x);
+    for (const CollisionCardText::Row& r : text.rows) {
+        ImGui::PushID(r.name.c_str());
+        widgets::wrapped(r.unit.empty() ? r.name : r.name + " (" + r.unit + ")");
+        widgets::tip(r.help.c_str());
+        if (ImGui::BeginTable("values", 2, ImGuiTableFlags_SizingFixedFit)) {
+            ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthFixed, std::ceil(tag));
+            ImGui::TableSetupColumn("", ImGuiTableColumnFlags_WidthStretch);
+            for (const auto& [when, value] :
+                 {std::pair{"before", &r.before}, {"after", &r.after}}) {
+                ImGui::TableNextRow();
+                ImGui::TableNextColumn();
+                ImGui::TextDisabled("%s", when);
+                ImGui::TableNextColumn();
+                widgets::wrapped(*value);
+                mark("collision " + r.name + " " + when);
+            }
+            ImGui::EndTable();
+        }
+        ImGui::PopID();
+    }
 }
 
 namespace {
