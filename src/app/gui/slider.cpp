@@ -40,13 +40,18 @@ float sliderValueX(float frame0, float frame1, float handle0, float handle1, flo
     const float centred = frame0 + (frame1 - frame0 - textWidth) * 0.5f;
     if (centred + textWidth + gap <= handle0 || centred >= handle1 + gap) return centred;
     const float leftRoom = handle0 - frame0, rightRoom = frame1 - handle1;
+    const float edge = 0.5f * gap;
     if (leftRoom >= rightRoom) {
-        // Centred in [frame0, handle0 - gap], never closer to the handle than gap.
+        // Centred in [frame0, handle0 - gap], never closer to the handle than gap, nor to the
+        // frame's edge than half of it where there is the room.
         const float x = frame0 + (leftRoom - gap - textWidth) * 0.5f;
-        return std::max(frame0, std::min(x, handle0 - gap - textWidth));
+        const float least = std::min(frame0 + edge, handle0 - gap - textWidth);
+        return std::max({frame0, least, std::min(x, handle0 - gap - textWidth)});
     }
     const float x = handle1 + gap + (rightRoom - gap - textWidth) * 0.5f;
-    return std::min(std::max(x, handle1 + gap), std::max(handle1 + gap, frame1 - textWidth));
+    const float most = std::max(handle1 + gap, frame1 - edge - textWidth);
+    return std::min(
+        {std::max(x, handle1 + gap), most, std::max(handle1 + gap, frame1 - textWidth)});
 }
 
 void valueBesideHandle(const char* text, float width, float fraction) {

@@ -25,7 +25,8 @@ class SliderHandleStyle {
 
 /// The left edge of a value `textWidth` wide in a slider's frame [frame0, frame1] whose handle
 /// spans [handle0, handle1] (points): centred when it keeps `gap` from the handle, else centred
-/// in the wider part beside the handle, kept `gap` from it and inside the frame.
+/// in the wider part beside the handle, kept `gap` from it and inside the frame, half a `gap`
+/// from the frame's edge where the part has the room ("200 %" touched the UI scale's frame).
 [[nodiscard]] float sliderValueX(float frame0, float frame1, float handle0, float handle1,
                                  float textWidth, float gap);
 

@@ -161,8 +161,9 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
             const float tx = left + static_cast<float>((t - t0) / (t1 - t0)) * (right - left);
             boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
             const std::string label = tickLabel(t, step);
-            font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, place.timeLabels,
-                        grey, text_);
+            font.layout(label,
+                        timeLabelLeft(tx, static_cast<float>(font.measure(label)), x + width),
+                        place.timeLabels, grey, text_);
         }
         font.layout("t (s)", x + 8, place.timeLabels, grey, text_);
     }

@@ -7,6 +7,7 @@
 // fixed pixel offsets cut the histogram's legend at the frame's right edge, the plots' tick
 // labels at its left, and stacked four tick labels into a plot two lines high.
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -56,6 +57,13 @@ struct PlotRowsPlace {
 /// `lineHeight` high each clear of the next (centred on their ticks, the top and bottom ones
 /// at the axis's ends): 5 where there is room, at least 1.
 [[nodiscard]] int yTickCount(double pixels, int lineHeight);
+
+/// The left edge of a time axis's label `width` pixels wide for the tick at `tick`: centred on
+/// it, but never past `frameRight` less half the frame's padding (the last tick, "1.0", stands
+/// at the axis's right end, and its label reached the frame's edge).
+[[nodiscard]] inline float timeLabelLeft(float tick, float width, float frameRight) {
+    return std::min(tick - width / 2.f, frameRight - kChartPad / 2.f - width);
+}
 
 /// Labelled ticks a plot's y axis keeps at least: its plots' rows are never shorter than
 /// their room (kPlotRowMinHeight), where there are fewer plots instead.

@@ -111,6 +111,18 @@ TEST(SliderValue, IsCentredWhenClearOfTheHandleAndBesideItOtherwise) {
     }
 }
 
+TEST(SliderValue, KeepsHalfAGapFromTheFramesEdgeWhereThereIsRoom) {
+    // The UI scale at 200 % in a narrow panel: "200 %" beside the handle touched the frame's
+    // left edge. A 94-point frame, a 42-point value, the handle at 50, a 4.5-point gap.
+    const float x = sliderValueX(0.f, 94.f, 50.f, 54.f, 42.f, 4.5f);
+    EXPECT_GE(x, 2.25f - 1e-4f) << "touches the frame's left edge";
+    EXPECT_LE(x + 42.f + 4.5f, 50.f + 1e-4f) << "crosses the handle";
+    // The handle at the left, the value right of it, clear of the frame's right edge.
+    const float right = sliderValueX(0.f, 94.f, 40.f, 44.f, 42.f, 4.5f);
+    EXPECT_LE(right + 42.f, 94.f - 2.25f + 1e-4f) << "touches the frame's right edge";
+    EXPECT_GE(right, 44.f + 4.5f - 1e-4f);
+}
+
 TEST_F(SliderTest, ItsHandleNeverCrossesItsDigits) {
     // Roughness 0 in -1..1 put the handle on the middle digit: "0.▮00", then "0.0|0" with a bar
     // showing above and below the digits, on a projector. With the handle anywhere, its column
