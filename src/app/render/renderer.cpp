@@ -404,6 +404,18 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 labelBoxes_.quad(static_cast<float>(box.x), static_cast<float>(box.y),
                                  static_cast<float>(box.x + box.w),
                                  static_cast<float>(box.y + box.h), sdlColor(colours.labelBox));
+                {
+                    // A thin frame in the text's ink, faint: on the light theme the box is
+                    // white on white, and two labels side by side read as one line.
+                    const SDL_Color edge = sdlColor(colours.labelText, 110);
+                    const auto x0 = static_cast<float>(box.x), y0 = static_cast<float>(box.y);
+                    const auto x1 = static_cast<float>(box.x + box.w);
+                    const auto y1 = static_cast<float>(box.y + box.h);
+                    labelBoxes_.quad(x0, y0, x1, y0 + 1.f, edge);
+                    labelBoxes_.quad(x0, y1 - 1.f, x1, y1, edge);
+                    labelBoxes_.quad(x0, y0 + 1.f, x0 + 1.f, y1 - 1.f, edge);
+                    labelBoxes_.quad(x1 - 1.f, y0 + 1.f, x1, y1 - 1.f, edge);
+                }
                 const int lineCount = place.nameOnly ? 1 : 2;
                 for (int line = 0; line < lineCount; ++line) {
                     const char* text =

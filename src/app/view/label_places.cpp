@@ -229,6 +229,11 @@ bool crossesWalls(const PixelRect& r, const LabelRoom& room) {
         const PixelRect outline{room.box.x - t, room.box.y - t, room.box.w + 2 * t,
                                 room.box.h + 2 * t};
         if (overlaps(r, outline) && !contains(room.box, r)) return true;
+        // Inside, a little air from the walls (at 200 % a label touched the left wall).
+        const int air = std::max(4, r.h / 8);
+        const PixelRect inner{room.box.x + air, room.box.y + air, room.box.w - 2 * air,
+                              room.box.h - 2 * air};
+        if (contains(room.box, r) && !contains(inner, r)) return true;
     }
     return std::any_of(room.walls.begin(), room.walls.end(),
                        [&r](const ScreenWall& w) { return crosses(r, w); });
@@ -254,7 +259,12 @@ std::vector<LabelPlace> placeInOrder(const std::vector<LabelAsk>& asks,
         return segmentMeetsRect(l.ax, l.ay, l.bx, l.by, r.x, r.y, r.x + r.w, r.y + r.h);
     };
     const auto free = [&](const PixelRect& r) {
-        return contains(window, r) && clearOf(r, placed) && clearOf(r, room.keepOut) &&
+        // Side by side, two labels keep about a line apart (half a two-line label's height, up
+        // to 24 pixels), and each is framed (render/renderer.cpp): 20 pixels apart at 200 %
+        // they read as one line ("particle 1, 1.00 kg particle 2, 3.00 kg").
+        const int apart = std::max(kLabelGap, std::min(r.h / 2, kLabelsApart));
+        const PixelRect wide{r.x - apart, r.y, r.w + 2 * apart, r.h};
+        return contains(window, r) && clearOf(wide, placed) && clearOf(r, room.keepOut) &&
                !discs.any(r) && !crossesWalls(r, room) &&
                std::none_of(leaders.begin(), leaders.end(),
                             [&](const LeaderLine& l) { return onLine(l, r); });

@@ -149,6 +149,8 @@ inline constexpr int kLabelRings = 48;
 
 /// Pixels a label keeps from its disc's rim.
 inline constexpr int kLabelGap = 2;
+/// The most two labels side by side keep apart, pixels (half a label's height where less).
+inline constexpr int kLabelsApart = 24;
 
 /// A place for a box that must be read whole (firstClearPlace), and what it covers.
 struct ReadingPlace {

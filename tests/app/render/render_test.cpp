@@ -412,8 +412,8 @@ TEST_F(RenderTest, ALabelStaysOnOneSideOfTheWalls) {
 TEST_F(RenderTest, ALabelThatWouldRunOffTheWindowGoesAlongItsEdgeInstead) {
     // A disc in the box's top-right corner, the box filling the window: above it and right of
     // it are off the window, left of it and centred below it run off the top and right edges.
-    // Nothing else is there to overlap: the label goes below, shifted left to fit (it used to
-    // be left out, counted as "where they would overlap").
+    // Nothing else is there to overlap: the label goes beside it, shifted to fit a few pixels
+    // clear of the walls (it used to be left out, counted as "where they would overlap").
     WorldDef def;
     def.width = def.height = kSize;
     World w(def);
@@ -428,7 +428,9 @@ TEST_F(RenderTest, ALabelThatWouldRunOffTheWindowGoesAlongItsEdgeInstead) {
     EXPECT_EQ(s.labelled, 1u);
     EXPECT_EQ(s.labelsCrowded, 0u);
     EXPECT_EQ(s.labelsOffWindow, 0u);
-    EXPECT_GT(brightPixels(kSize / 2, 30, kSize - 2, 120), 100);  // below the disc, in the box
+    // Beside the disc, in the box, clear of the walls (left of it, below its corner: a label
+    // below it would touch the right wall), not over the disc (x 375 to 395).
+    EXPECT_GT(brightPixels(kSize / 2, 2, kSize - 26, 120), 100);
 }
 
 TEST_F(RenderTest, ALabelWithNoRoomInTheWindowIsCountedAsSuch) {

@@ -141,6 +141,35 @@ TEST(LabelPlaces, EveryBallOfASmallSceneInASmallBoxKeepsALabelOverNoOtherBall) {
     }
 }
 
+TEST(LabelPlaces, LabelsSideBySideStandApartAndInsideTheBoxClearOfItsWalls) {
+    // Lesson 1 after the collision at 200 %: the balls close together near the box's left wall;
+    // the two labels stood some 20 pixels apart on one line and read as one ("particle 1,
+    // 1.00 kg particle 2, 3.00 kg"), and label 1 touched the left wall.
+    const PixelRect window{0, 0, 1600, 1000};
+    const PixelRect box{640, 300, 940, 376};
+    const PixelPoint size{300, 53};
+    // Centres 320 pixels apart: above each, labels 300 wide stood 20 pixels apart.
+    const std::vector<LabelAsk> asks = {ball(700, 500, 22, size), ball(1020, 500, 30, size)};
+    const std::vector<LabelPlace> places = placeLabels(asks, {window, box, {}, {}});
+    expectReadable(asks, places, window, {});
+    const PixelRect& a = places[0].at;
+    const PixelRect& b = places[1].at;
+    const bool sameRows = a.y < b.y + b.h && b.y < a.y + a.h;
+    if (sameRows) {
+        const int gap = std::max(b.x - (a.x + a.w), a.x - (b.x + b.w));
+        EXPECT_GE(gap, std::min(size.y / 2, kLabelsApart)) << "side by side, they read as one";
+    }
+    for (const PixelRect& r : {a, b}) {
+        const bool inside = r.x >= box.x && r.y >= box.y && r.x + r.w <= box.x + box.w &&
+                            r.y + r.h <= box.y + box.h;
+        if (!inside) continue;
+        EXPECT_GE(r.x - box.x, 4) << "touches the left wall";
+        EXPECT_GE(r.y - box.y, 4) << "touches the top wall";
+        EXPECT_GE(box.x + box.w - (r.x + r.w), 4) << "touches the right wall";
+        EXPECT_GE(box.y + box.h - (r.y + r.h), 4) << "touches the bottom wall";
+    }
+}
+
 TEST(LabelPlaces, ALabelThatFitsBesideItsBallStaysThereWithoutALeader) {
     const PixelRect window{0, 0, 800, 600};
     const PixelRect box{100, 100, 600, 400};
