@@ -94,6 +94,16 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
     }
     for (const DropperView& d : frame.droppers)
         out.rects.push_back(d.words.at);
+    // The momentum view's total arrow from the centre of mass, its head and the centre's mark:
+    // after the lesson's collision ball 2's label stood on it, read as the arrow's.
+    if (frame.view.momentum && frame.world != nullptr && frame.camera != nullptr &&
+        frame.world->size() > 0) {
+        const TotalMomentumArrow total =
+            totalMomentumArrow(*frame.world, frame.now, frame.view.arrowSeconds);
+        const Vec2 a = frame.camera->worldToScreen(total.from),
+                   b = frame.camera->worldToScreen(total.to);
+        out.walls.push_back({a.x(), a.y(), b.x(), b.y(), 0.6 * labelFont.lineHeight()});
+    }
     if (frame.bins && frame.camera != nullptr && frame.world != nullptr) {
         for (const BinNumber& n :
              binNumbers(*frame.camera, frame.bins->bins, frame.world->def().height, labelFont)) {

@@ -80,7 +80,8 @@ struct LeaderLine {
 [[nodiscard]] bool leaderCrosses(const LeaderLine& l, const ScreenWall& wall);
 
 /// What the particles' labels keep clear of besides the discs and the scene's walls: the
-/// panels and the ruler's reading (`rects`), the ruler itself (`walls`).
+/// panels and the ruler's reading (`rects`), the ruler itself and the total momentum's arrow
+/// from the centre of mass (`walls`).
 struct LabelKeepOut {
     std::vector<PixelRect> rects;
     std::vector<ScreenWall> walls;

@@ -401,6 +401,21 @@ TEST(Help, WhileAVideoRecordsTheRecordingMarkStandsClearOfTheHelpsLines) {
         EXPECT_FALSE(overlaps(line, mark)) << "the mark over a line of the help";
 }
 
+TEST(LabelKeepOut, NoLabelStandsOnTheTotalMomentumsArrow) {
+    // Lesson 1 after its collision with the momenta (V) and labels (S): ball 2's label stood
+    // centred over the centre of mass's arrow, and read as the arrow's.
+    const test::FixedMeasure font(2.0);
+    Session s =
+        test::onTheProjector(test::lessonWorld(), {ShowOption::Momentum, ShowOption::Labels});
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+    const LabelKeepOut out = labelKeepOut(f, font);
+    const Vec2 centre = s.camera().worldToScreen(s.observables().centreOfMass);
+    const PixelRect onIt{static_cast<int>(centre.x()) - 1, static_cast<int>(centre.y()) - 1, 3, 3};
+    EXPECT_TRUE(std::any_of(out.walls.begin(), out.walls.end(), [&](const ScreenWall& w) {
+        return crosses(onIt, w);
+    })) << "a label may stand on the centre of mass and its arrow";
+}
+
 TEST(MomentumLegend, StaysWhileSteppingBackAndInAVideoOfTheBox) {
     // Lesson 1 on the projector with the momenta (V) and the plots (K), the plots in their band
     // under the box: a step back in time grew the HUD by its "Viewing ... back" lines, the
