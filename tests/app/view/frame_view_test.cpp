@@ -363,21 +363,30 @@ TEST(Plots, OnTheProjectorAThreeLineMessageMovesNoPlotNorTheLegend) {
 
 TEST(Plots, OnTheProjectorThePlotsLeftOutForWantOfRoomAreNamed) {
     // Lesson 1 at 200 % with the values table and the plots: only the energy's chart showed,
-    // px, py and the rate were gone without a word (the gas says when its charts fold away).
+    // px, py and the rate were gone without a word (the gas says when its charts fold away);
+    // without the table, in the band under the box, the rate never showed and nothing said so.
     const test::FixedMeasure font(2.0);
-    const Session s = test::onTheProjector(
-        test::lessonWorld(), {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values});
-    const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
-    ASSERT_GT(f.layout.plots.w, 0);
-    const int shown = plotsShown(f.layout);
-    ASSERT_LT(shown, 4) << "the case: not all four fit";
-    EXPECT_GT(f.layout.plotsNote, 0) << "a line under the plots names the others";
-    const std::string note = plotsLeftOutNote(shown);
-    EXPECT_NE(note.find("rate"), std::string::npos) << note;
-    EXPECT_LE(font.measure(note) + 2 * kChartPad, f.layout.plots.w) << note << ": cut";
-    // The rows and the note within the panel's box.
-    EXPECT_LE(f.layout.plotRows * f.layout.plotRowHeight + 8 + f.layout.plotsNote,
-              f.layout.plots.h);
+    for (const bool table : {true, false}) {
+        const Session s = table ? test::onTheProjector(
+                                      test::lessonWorld(),
+                                      {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values})
+                                : test::onTheProjector(test::lessonWorld(),
+                                                       {ShowOption::Momentum, ShowOption::Plots});
+        const FrameView f = buildFrame(s, FrameStats{}, font, font, test::kProjector);
+        const char* at = table ? "with the table" : "without it";
+        ASSERT_GT(f.layout.plots.w, 0) << at;
+        const int shown = plotsShown(f.layout);
+        ASSERT_LT(shown, 4) << at << ": the case, not all four fit";
+        EXPECT_GT(f.layout.plotsNote, 0) << at << ": a line under the plots names the others";
+        const std::string note = plotsLeftOutNote(shown);
+        EXPECT_NE(note.find("rate"), std::string::npos) << note;
+        EXPECT_LE(font.measure(note) + 2 * kChartPad, f.layout.plots.w)
+            << at << ": " << note << ": cut";
+        // The rows and the note within the panel's box.
+        EXPECT_LE(f.layout.plotRows * f.layout.plotRowHeight + 8 + f.layout.plotsNote,
+                  f.layout.plots.h)
+            << at;
+    }
 }
 
 TEST(Help, WhileAVideoRecordsTheRecordingMarkStandsClearOfTheHelpsLines) {
