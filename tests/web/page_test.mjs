@@ -188,8 +188,8 @@ for (let attempt = 0; attempt < 3 && !/Flung at/.test(flung); attempt++) {
   }
   await page.mouse.up();
   await waitFor("the fling", async () =>
-    (await log()).slice(seen).some((l) => /Flung at|Let go at rest/.test(l)));
-  flung = (await log()).slice(seen).filter((l) => /Flung at|Let go at rest/.test(l)).pop() || "nothing";
+    (await log()).slice(seen).some((l) => /Flung at|Moved while paused/.test(l)));
+  flung = (await log()).slice(seen).filter((l) => /Flung at|Moved while paused/.test(l)).pop() || "nothing";
   from = { x: from.x - 40, y: from.y + 24 };
 }
 check(/Flung at .* while paused/.test(flung), `a paused fling keeps its speed: ${flung}`);

@@ -95,10 +95,15 @@ inline bool stateButton(const char* id, const char* words, const ImVec2& size = 
     const std::string label = std::string(words) + "###" + id;
     return ImGui::Button(label.c_str(), size);
 }
+/// A small button (no frame padding above and below its words), except on a touch screen
+/// (`touch`), where it is a finger's target as tall as any other button.
+inline bool smallButton(const char* label, bool touch = false) {
+    return touch ? ImGui::Button(label) : ImGui::SmallButton(label);
+}
 /// stateButton() as a small button.
-inline bool smallStateButton(const char* id, const char* words) {
+inline bool smallStateButton(const char* id, const char* words, bool touch = false) {
     const std::string label = std::string(words) + "###" + id;
-    return ImGui::SmallButton(label.c_str());
+    return smallButton(label.c_str(), touch);
 }
 
 /// A tooltip for the item just drawn (also while it is disabled), after a real hover
