@@ -70,6 +70,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     // kTouchTargetPoints high (window points, CSS pixels in a page), by its frame's padding.
     touch_ = s.touch();
     const float scale = static_cast<float>(s.view().uiScaleInUse());
+    touchWidth_ = touch_ ? kTouchTargetPoints / scale : 0.f;
     if (touch_) {
         const ImVec2 pad = ImGui::GetStyle().FramePadding;
         ImGui::PushStyleVar(
@@ -296,20 +297,20 @@ void ControlPanel::stopwatch(const Session& s) {
     const double now = s.world().time();
     ImGui::TextUnformatted("Stopwatch");
     ImGui::SameLine();
-    if (widgets::smallStateButton("Stopwatch start", w.running() ? "Stop" : "Start", touch_)) {
+    if (widgets::smallStateButton("Stopwatch start", w.running() ? "Stop" : "Start", touchWidth_)) {
         out_.emplace_back(cmd::Stopwatch{A::StartStop});
     }
     mark("Stopwatch start");
     tip("Times simulated time: it stops while paused and reads the same at any speed (key U)");
     ImGui::SameLine();
     ImGui::BeginDisabled(!w.running());
-    if (widgets::smallButton("Lap", touch_)) out_.emplace_back(cmd::Stopwatch{A::Lap});
+    if (widgets::smallButton("Lap", touchWidth_)) out_.emplace_back(cmd::Stopwatch{A::Lap});
     mark("Stopwatch lap");
     ImGui::EndDisabled();
     tip("A split time, while it runs (Shift+U)");
     ImGui::SameLine();
     ImGui::BeginDisabled(!w.used());
-    if (widgets::smallButton("Reset", touch_)) out_.emplace_back(cmd::Stopwatch{A::Reset});
+    if (widgets::smallButton("Reset", touchWidth_)) out_.emplace_back(cmd::Stopwatch{A::Reset});
     mark("Stopwatch reset");
     ImGui::EndDisabled();
     tip("Back to zero (Shift+U while stopped)");

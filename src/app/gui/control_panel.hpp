@@ -181,6 +181,7 @@ class ControlPanel {
     bool pathFilled_ = false;
     bool browser_ = false;
     bool touch_ = false;       ///< the session's hands are on a touch screen (this build)
+    float touchWidth_ = 0.f;   ///< on a touch screen, a small button's least width, points
     bool fingerHeld_ = false;  ///< holdLayout
     /// The card's height (points) while the layout is held, from the frame the hold began.
     std::optional<float> heldCardHeight_;
