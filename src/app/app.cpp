@@ -486,6 +486,10 @@ void App::logControls() {
         std::snprintf(buf, sizeof buf, "[I] Control %s at %.0f %.0f", i.name.c_str(),
                       scale * (i.x0 + i.x1) / 2.f, scale * (i.y0 + i.y1) / 2.f);
         logLine(buf);
+        // Its extent too (a finger's target is measured, tests/web/phone_test.mjs).
+        std::snprintf(buf, sizeof buf, "[I] Control %s spans %.0f %.0f %.0f %.0f", i.name.c_str(),
+                      scale * i.x0, scale * i.y0, scale * i.x1, scale * i.y1);
+        logLine(buf);
     }
 }
 

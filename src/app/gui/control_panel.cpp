@@ -443,10 +443,10 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     };
     box("Velocity arrows", v.arrows, cmd::ShowOption::Arrows,
         "An arrow from each moving particle to where it will be a moment later (key A)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    widgets::sameLineAt(ImGui::GetContentRegionAvail().x * 0.55f);
     box("Labels", v.labels, cmd::ShowOption::Labels,
         "Velocity, momentum and mass written beside each particle (key S)");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.8f);
+    widgets::sameLineAt(ImGui::GetContentRegionAvail().x * 0.8f);
     box("y up", v.yUp, cmd::ShowOption::YUp,
         "Numbers count y upward from the box's floor, vy and momentum up and turning "
         "counterclockwise positive, as in school physics; unticked, y counts down from the "
@@ -471,7 +471,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     if (const float at = ImGui::GetContentRegionAvail().x * 0.55f;
         at + widgets::checkWidth("Speed histogram") <=
         ImGui::GetWindowContentRegionMax().x + ImGui::GetStyle().WindowPadding.x) {
-        ImGui::SameLine(at);
+        widgets::sameLineAt(at);
     }
     box("Speed histogram", v.speeds, cmd::ShowOption::Speeds,
         "How many particles move at each speed, against the Maxwell-Boltzmann curve of a gas "
@@ -482,12 +482,12 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
     box("Values table", v.values, cmd::ShowOption::Values,
         "Every particle's signed position, velocity, momentum and energy, with the totals, in a "
         "window; position, velocity and mass can be typed in (key I)");
-    ImGui::SameLine(row * 0.47f);
+    widgets::sameLineAt(row * 0.47f);
     box("Spin", v.spin, cmd::ShowOption::Spin,
         "A contrasting quarter of each disc that turns, turning with it: a rolling ball's goes "
         "round, a sliding one's does not. Particles with fixed "
         "rotation have none, and nothing turns without friction or a spin given by hand");
-    ImGui::SameLine(row * 0.74f);
+    widgets::sameLineAt(row * 0.74f);
     box("Grid", v.grid, cmd::ShowOption::Grid,
         "Lines across the box at a round number of metres, labelled along its top and left "
         "edges (Shift+G)");
@@ -495,7 +495,7 @@ void ControlPanel::show(const Session& s, float pixelRatio) {
         "The selected particle's last collision (with none selected, the last between two "
         "particles): velocities, momenta and energy just before and just after, and the momenta "
         "diagram (key J)");
-    ImGui::SameLine(row * 0.64f);
+    widgets::sameLineAt(row * 0.64f);
     box("Ruler", v.ruler, cmd::ShowOption::Ruler,
         "A ruler over the box: drag its ends (or its edge to move it) to measure a distance in "
         "metres and a slope in degrees (key Q)");

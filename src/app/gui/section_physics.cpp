@@ -124,7 +124,7 @@ void ControlPanel::physics(const Session& s) {
     if (ImGui::Checkbox("Walls", &walls)) out_.emplace_back(cmd::SetWalls{walls});
     mark("Walls");
     tip("The four walls of the box; without them particles fly away");
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x * 0.55f);
+    widgets::sameLineAt(ImGui::GetContentRegionAvail().x * 0.55f);
     bool turn = s.spawn().turn;
     if (ImGui::Checkbox("Discs turn", &turn)) out_.emplace_back(cmd::SetDiscsTurn{turn});
     mark("Discs turn");

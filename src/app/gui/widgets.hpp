@@ -41,6 +41,14 @@ inline void sameLineIfRoom(float width, float spacing = -1.f) {
     if (ImGui::GetCursorPosX() + width > right) ImGui::NewLine();
 }
 
+/// SameLine(x) (`x` from the window's left edge, as SameLine's) where the item drawn last ends
+/// before it, else the next line: two boxes of a row never overlap, whatever the size of the
+/// text or of a finger's box.
+inline void sameLineAt(float x) {
+    const float end = ImGui::GetItemRectMax().x - ImGui::GetWindowPos().x + ImGui::GetScrollX();
+    if (x >= end) ImGui::SameLine(x);
+}
+
 /// A field's width: `most` points, less where its label `label` beside it would run past the
 /// panel's edge.
 [[nodiscard]] inline float fieldWidth(float most, const char* label) {

@@ -690,7 +690,7 @@ TEST_F(ControlPanelTest, OnATouchScreenEveryButtonAndBoxIsAFingersTarget) {
     ASSERT_NE(mouseStep, nullptr);
     EXPECT_LT(mouseStep->y1 - mouseStep->y0, 30.f) << "with a mouse, as it was";
     session_->apply(cmd::SetTouch{true});
-    for (const float scale : {1.f, 1.5f}) {
+    for (const float scale : {1.f, 1.5f, 2.f}) {
         sizes(scale);
         for (const char* name : targets) {
             const std::string n = std::string(name) == "Auto" ? "UI scale auto" : name;
@@ -699,6 +699,29 @@ TEST_F(ControlPanelTest, OnATouchScreenEveryButtonAndBoxIsAFingersTarget) {
             EXPECT_GE((i->y1 - i->y0) * scale, kTouchTargetPoints - 0.5f) << n << " at " << scale;
             EXPECT_GE((i->x1 - i->x0) * scale, kTouchTargetPoints - 0.5f) << n << " at " << scale;
         }
+        // Bigger boxes take a row's room: a box that no longer fits beside another goes below
+        // it (the Labels box lay over "Velocity arrows", Spin's over "Values table").
+        const char* boxes[] = {"Velocity arrows",
+                               "Labels",
+                               "y up",
+                               "Momentum and centre of mass",
+                               "Plots",
+                               "Speed histogram",
+                               "Values table",
+                               "Spin",
+                               "Grid",
+                               "Last collision card",
+                               "Ruler",
+                               "Walls",
+                               "Discs turn"};
+        for (const char* a : boxes)
+            for (const char* b : boxes) {
+                const PanelItem *p = panel_.item(a), *q = panel_.item(b);
+                if (p == nullptr || q == nullptr || p == q) continue;
+                const bool overlap =
+                    p->x0 < q->x1 && q->x0 < p->x1 && p->y0 < q->y1 && q->y0 < p->y1;
+                EXPECT_FALSE(overlap) << a << " and " << b << " at " << scale;
+            }
     }
     gui_->setScale(1.f);
 }
