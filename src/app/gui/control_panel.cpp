@@ -68,7 +68,9 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     }
     // On a touch screen every button, box and section header is a finger's target: at least
     // kTouchTargetPoints high (window points, CSS pixels in a page), by its frame's padding.
-    touch_ = s.touch();
+    // Not while a finger is on the panel: the first finger a laptop's touch screen feels would
+    // otherwise grow the panel between its coming down and the tap it makes as it lifts.
+    if (!fingerHeld_) touch_ = s.touch();
     const float scale = static_cast<float>(s.view().uiScaleInUse());
     touchWidth_ = touch_ ? kTouchTargetPoints / scale : 0.f;
     if (touch_) {
