@@ -198,7 +198,7 @@ check(/Flung at .* while paused/.test(flung), `a paused fling keeps its speed: $
 await click("section Scene");
 await waitFor("the presets", async () =>
   (await log()).some((l) => l.startsWith("[I] Control preset ")));
-const presets = (await log()).filter((l) => l.startsWith("[I] Control preset "))
+const presets = (await log()).filter((l) => /^\[I\] Control preset .* at -?\d+ -?\d+$/.test(l))
   .map((l) => l.match(/^\[I\] Control preset (.*) at /)[1]);
 check(!(await log()).some((l) => l.startsWith("[I] Control section Video")),
       "the panel has no Video section (recording is desktop-only)");
