@@ -65,7 +65,15 @@ async function control(name) {
   return { x: +m[1], y: +m[2] };
 }
 async function click(name) {
-  const c = await control(name);
+  // Wheeled into view first: after a finger has touched the page its panel's targets are a
+  // finger's size, and the Scene section's buttons are below an 800-pixel window's fold.
+  let c = await control(name);
+  for (let k = 0; k < 20 && (c.y < 40 || c.y > 760); k++) {
+    await page.mouse.move(301, 400);  // over the panel's scroll bar, not a list in it
+    await page.mouse.wheel(0, c.y > 760 ? 200 : -200);
+    await page.waitForTimeout(250);
+    c = await control(name);
+  }
   await page.mouse.click(c.x, c.y);
   await page.waitForTimeout(300);
 }
