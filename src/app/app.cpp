@@ -116,6 +116,7 @@ App::App(const AppOptions& options) : options_(options) {
     gui_ = std::make_unique<GuiContext>(sdl_->window(), sdl_->renderer(), gui);
     ImGui::GetIO().ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
     // The UI's scale for the window's height, then what the settings file keeps over it.
+    session_->apply(cmd::FitUiScale{mostUiScale(sdl_->windowSize().x)});
     session_->apply(cmd::SetUiScale{automaticScale(), true});
     (void)session_->takeNotices();  // the starting scale is no news
     if (options_.settingsFile && options_.benchParticles == 0) {
@@ -176,6 +177,33 @@ void App::updateTextInput() {
         setTextInput(editing);
         textInput_ = editing;
     }
+}
+
+void App::placeTyping() {
+    if (!textInput_) return;
+    const double ratio = sdl_->pixelRatio();
+    const auto scale = static_cast<float>(session_->view().uiScaleInUse());
+    TipRect at;
+    if (const std::optional<GuiContext::Typing> t = gui_->typing()) {
+        at = t->caret;
+        for (const PanelItem& i : panel_.items()) {
+            if (i.id == t->id) {  // the whole field the panel drew
+                at = {i.x0 * scale, i.y0 * scale, (i.x1 - i.x0) * scale, (i.y1 - i.y0) * scale};
+                break;
+            }
+        }
+    } else if (session_->prompt().active()) {  // the edit prompt is in the message band
+        const PixelRect& band = lastFrame_.layout.messages;
+        const auto r = static_cast<float>(ratio > 0.0 ? ratio : 1.0);
+        at = {static_cast<float>(band.x) / r, static_cast<float>(band.y) / r,
+              static_cast<float>(band.w) / r, static_cast<float>(band.h) / r};
+    }
+    if (at.empty() || (at.x == typingAt_.x && at.y == typingAt_.y && at.w == typingAt_.w &&
+                       at.h == typingAt_.h)) {
+        return;
+    }
+    typingAt_ = at;
+    placeTextInput(at.x, at.y, at.w, at.h);
 }
 
 std::vector<std::string> App::messages() const {
@@ -240,11 +268,13 @@ void App::act(const SDL_Event& e) {
          input_.translate(e, keyState(*session_), sdl_->pixelRatio(), sdl_->outputSize())) {
         // A new window size comes with where the box may go in it.
         if (auto* r = std::get_if<cmd::Resize>(&c)) {
-            // An automatic scale follows the window's height: the fonts first, for the layout.
+            // An automatic scale follows the window's height, and no scale may be more than its
+            // width allows: the fonts first, for the layout.
+            session_->apply(cmd::FitUiScale{mostUiScale(sdl_->windowSize().x)});
             if (session_->view().uiScaleAutomatic) {
                 session_->apply(cmd::SetUiScale{automaticScale(), true});
-                syncLook();
             }
+            syncLook();
             // The open panel's width is a share of the window's.
             controls_ = controlsWidth(controls_.pointPixels, r->width);
             r->layout =
@@ -264,12 +294,12 @@ void App::syncLook() {
         gui_->setTheme(view.theme);
         theme_ = view.theme;
     }
-    const double points = sdl_->pixelRatio() * view.uiScale;
+    const double points = sdl_->pixelRatio() * view.uiScaleInUse();
     if (points == lookPoints_) return;
     lookPoints_ = points;
     try {
         sdl_->setTextScale(points);
-        gui_->setScale(static_cast<float>(view.uiScale));
+        gui_->setScale(static_cast<float>(view.uiScaleInUse()));
     } catch (const std::exception& e) {  // a font file gone since the start
         logLine(std::string("[E] The text could not be made at the new scale: ") + e.what());
     }
@@ -389,12 +419,13 @@ void App::render() {
     updateVideoStatus();
     stats_.messages = messages();
     gui_->beginFrame();
+    panel_.holdLayout(gui_->fingerOnPanel());
     const double ratio = sdl_->pixelRatio();
     const SDL_Point out = sdl_->outputSize();
     // The help is read, then closed: meanwhile it takes the window's width, the panel's too.
     if (!session_->helpShown()) {
         // The panel's points are the UI's (gui_context.hpp): the pixel ratio × its scale.
-        const double points = ratio * session_->view().uiScale;
+        const double points = ratio * session_->view().uiScaleInUse();
         // Tooltips keep off the message band (where the last frame put it).
         const PixelRect band = lastFrame_.layout.messages;
         const auto p = static_cast<float>(points);
@@ -415,6 +446,7 @@ void App::render() {
         logLine("[E] The text could not be made at the new scale: " + *problem);
     }
     updateTextInput();
+    placeTyping();
     // A panel whose controls moved (a section opened) settles in the next frame: draw it even
     // when nothing else happens.
     panelSettling_ = !samePlaces(panel_.items(), lastItems_);
@@ -453,6 +485,10 @@ void App::logControls() {
     for (const PanelItem& i : items) {
         std::snprintf(buf, sizeof buf, "[I] Control %s at %.0f %.0f", i.name.c_str(),
                       scale * (i.x0 + i.x1) / 2.f, scale * (i.y0 + i.y1) / 2.f);
+        logLine(buf);
+        // Its extent too (a finger's target is measured, tests/web/phone_test.mjs).
+        std::snprintf(buf, sizeof buf, "[I] Control %s spans %.0f %.0f %.0f %.0f", i.name.c_str(),
+                      scale * i.x0, scale * i.y0, scale * i.x1, scale * i.y1);
         logLine(buf);
     }
 }

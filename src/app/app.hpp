@@ -171,6 +171,9 @@ class App {
     void writeScreenshot(const DrawStats& drawn);
     /// SDL's text input on while the edit prompt or a panel field wants characters.
     void updateTextInput();
+    /// Where the text being typed is (the panel's field, else its text cursor, else the edit
+    /// prompt's message band), for the page's typing field (platform/text_input.hpp).
+    void placeTyping();
     void logControls();
     [[nodiscard]] double now() const;
     /// Logs `text` and shows it as a message; `level` as the session's notices.
@@ -211,6 +214,7 @@ class App {
     std::unique_ptr<DrawLayer> draw_;
     Input input_;
     bool textInput_ = false;
+    TipRect typingAt_;  ///< where placeTyping last put the typing field, window points
     std::optional<SettingsStore> settings_;
     Theme theme_ = Theme::Dark;  ///< ImGui's colours now
     double lookPoints_ = 0.0;    ///< pixels per UI point the fonts were made for (0: not yet)

@@ -165,7 +165,7 @@ act() {
         # A control of the panel by name, from its latest place in the log: a click, or a
         # short drag (a slider).
         local line name cx cy controls=()
-        mapfile -t controls < <(grep -F "[I] Control " "$LOG" | tail -n 200)
+        mapfile -t controls < <(grep -E "\[I\] Control .* at [0-9-]+ [0-9-]+$" "$LOG" | tail -n 200)
         ((${#controls[@]} > 0)) || return 0
         line=${controls[RANDOM % ${#controls[@]}]}
         name=$(sed -E 's/.*\[I\] Control (.*) at [0-9-]+ [0-9-]+$/\1/' <<<"$line")

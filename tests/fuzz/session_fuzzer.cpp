@@ -116,7 +116,7 @@ ParticleId someParticle(FuzzedDataProvider& in, const Session& s) {
 
 Command command(FuzzedDataProvider& in, const Session& s, double now,
                 const std::vector<fs::path>& presets) {
-    switch (in.ConsumeIntegralInRange<int>(0, 64)) {
+    switch (in.ConsumeIntegralInRange<int>(0, 66)) {
         case 0:
         case 1:
             return cmd::PointerDown{screenPoint(in), now};
@@ -336,6 +336,10 @@ Command command(FuzzedDataProvider& in, const Session& s, double now,
             return cmd::ClipboardResult{in.ConsumeBool(), text(in)};
         case 63:
             return cmd::SetTouch{in.ConsumeBool()};
+        case 65:
+            return cmd::FitUiScale{in.ConsumeBool() ? value(in, 0.0, 4.0) : 1.6};
+        case 66:
+            return cmd::PointerLeave{};
         default:
             return cmd::OpenFile{saveDir() / (in.ConsumeBool() ? "save.json" : text(in))};
     }

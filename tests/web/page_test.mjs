@@ -65,7 +65,15 @@ async function control(name) {
   return { x: +m[1], y: +m[2] };
 }
 async function click(name) {
-  const c = await control(name);
+  // Wheeled into view first: after a finger has touched the page its panel's targets are a
+  // finger's size, and the Scene section's buttons are below an 800-pixel window's fold.
+  let c = await control(name);
+  for (let k = 0; k < 20 && (c.y < 40 || c.y > 760); k++) {
+    await page.mouse.move(301, 400);  // over the panel's scroll bar, not a list in it
+    await page.mouse.wheel(0, c.y > 760 ? 200 : -200);
+    await page.waitForTimeout(250);
+    c = await control(name);
+  }
   await page.mouse.click(c.x, c.y);
   await page.waitForTimeout(300);
 }
@@ -188,8 +196,8 @@ for (let attempt = 0; attempt < 3 && !/Flung at/.test(flung); attempt++) {
   }
   await page.mouse.up();
   await waitFor("the fling", async () =>
-    (await log()).slice(seen).some((l) => /Flung at|Let go at rest/.test(l)));
-  flung = (await log()).slice(seen).filter((l) => /Flung at|Let go at rest/.test(l)).pop() || "nothing";
+    (await log()).slice(seen).some((l) => /Flung at|Moved while paused/.test(l)));
+  flung = (await log()).slice(seen).filter((l) => /Flung at|Moved while paused/.test(l)).pop() || "nothing";
   from = { x: from.x - 40, y: from.y + 24 };
 }
 check(/Flung at .* while paused/.test(flung), `a paused fling keeps its speed: ${flung}`);
@@ -198,7 +206,7 @@ check(/Flung at .* while paused/.test(flung), `a paused fling keeps its speed: $
 await click("section Scene");
 await waitFor("the presets", async () =>
   (await log()).some((l) => l.startsWith("[I] Control preset ")));
-const presets = (await log()).filter((l) => l.startsWith("[I] Control preset "))
+const presets = (await log()).filter((l) => /^\[I\] Control preset .* at -?\d+ -?\d+$/.test(l))
   .map((l) => l.match(/^\[I\] Control preset (.*) at /)[1]);
 check(!(await log()).some((l) => l.startsWith("[I] Control section Video")),
       "the panel has no Video section (recording is desktop-only)");

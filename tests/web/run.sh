@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The web build's end-to-end tests (tests/web/page_test.mjs, then classroom_test.mjs: touch,
-# tooltips, the browser's keys, a phone) or its benchmark (bench.mjs) in headless
+# tooltips, the browser's keys, a phone; then phone_test.mjs: a phone's UI scale, its pinned
+# close button, finger-sized targets, the typing field) or its benchmark (bench.mjs) in headless
 # Chromium, against build/web/ served on localhost. playwright-core comes from the npm registry,
 # at the version package-lock.json pins, installed into build/web-test/.
 #   tests/web/run.sh                 the tests; screenshots in build/web-test/shots/
+#   tests/web/run.sh FILE.mjs        one of them
 #   tests/web/run.sh bench N...      the page's ?bench=N for each N
 # scripts/web.sh test and bench build the page first.
 set -euo pipefail
@@ -33,10 +35,14 @@ export PSB_WEB_URL=$url PSB_WEB_SHOTS=$work/shots PSB_ROOT=$root
 if [[ ${1:-} == bench ]]; then
   shift
   node tests/web/bench.mjs "$@"
+elif [[ -n ${1:-} ]]; then
+  # One test file alone: tests/web/run.sh tests/web/phone_test.mjs
+  node "$1"
 else
-  # Both, whatever the first one found.
+  # All of them, whatever the first ones found.
   status=0
   node tests/web/page_test.mjs || status=1
   node tests/web/classroom_test.mjs || status=1
+  node tests/web/phone_test.mjs || status=1
   exit $status
 fi

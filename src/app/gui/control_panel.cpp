@@ -10,6 +10,7 @@
 
 #include "gui/widgets.hpp"
 #include "session/session.hpp"
+#include "session/session_text.hpp"
 #include "session/units.hpp"
 
 namespace psb::app {
@@ -48,24 +49,44 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     const bool open = s.controlsShown();
     // Opened in a window too narrow for the box beside it (a phone), the panel lies over the box
     // as a sheet across the whole width: the rest of the box beside a column would be a sliver.
+    // As wide as the window and no wider: the UI's scale in use leaves it at least
+    // kControlsMinWidth points (mostUiScale), so its close button is on screen.
     const float display = ImGui::GetIO().DisplaySize.x;
     const float width = !open ? kControlsFoldedWidth
                         : s.layout().controlsFit
                             ? controlsOpenPoints(display * pixelRatio, pixelRatio)
-                            : std::max(kControlsWidth, display);
+                            : display;
     ImGui::SetNextWindowPos(ImVec2(0.f, 0.f));
     ImGui::SetNextWindowSize(ImVec2(width, height));
     // The panel is opaque: SDL's software renderer fills opaque rectangles several times faster
     // than blended ones (docs/app-design.md, "Frame time").
     ImGui::PushStyleColor(ImGuiCol_WindowBg, widgets::colour(palette(s.view().theme).controls));
+    ImGui::PushStyleColor(ImGuiCol_MenuBarBg, widgets::colour(palette(s.view().theme).controls));
     if (!open) {
         ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
                             ImVec2(kControlsFoldedPadding, ImGui::GetStyle().WindowPadding.y));
     }
-    const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                                   ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar |
-                                   ImGuiWindowFlags_NoSavedSettings |
-                                   ImGuiWindowFlags_NoBringToFrontOnFocus;
+    // On a touch screen every button, box and section header is a finger's target: at least
+    // kTouchTargetPoints high (window points, CSS pixels in a page), by its frame's padding.
+    // Not while a finger is on the panel: the first finger a laptop's touch screen feels would
+    // otherwise grow the panel between its coming down and the tap it makes as it lifts.
+    if (!fingerHeld_) touch_ = s.touch();
+    const float scale = static_cast<float>(s.view().uiScaleInUse());
+    touchWidth_ = touch_ ? kTouchTargetPoints / scale : 0.f;
+    if (touch_) {
+        const ImVec2 pad = ImGui::GetStyle().FramePadding;
+        ImGui::PushStyleVar(
+            ImGuiStyleVar_FramePadding,
+            ImVec2(std::max(pad.x, 6.f),
+                   std::max(pad.y,
+                            std::ceil(kTouchTargetPoints / scale - ImGui::GetFontSize()) / 2.f)));
+    }
+    // Open, its top line (About, <<) is a menu bar: it stays put while the rest scrolls, so the
+    // panel folds from anywhere in it (a phone's sheet took six swipes back to its top).
+    const ImGuiWindowFlags flags =
+        ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+        ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
+        ImGuiWindowFlags_NoBringToFrontOnFocus | (open ? ImGuiWindowFlags_MenuBar : 0);
     const bool shown = ImGui::Begin("Controls", nullptr, flags);
     // Every control a tab stop: Tab walks through buttons, boxes and sections too, not only
     // the fields ImGui 1.86 tabs through (GuiContext::tabOnward goes on from the cursor).
@@ -77,20 +98,27 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
             tip("Open the control panel (key C)");
             if (browser_) aboutButton("?", ImVec2(-1.f, 0.f));
         } else {
-            ImGui::TextUnformatted("Controls");
-            const float fold = ImGui::GetFrameHeight() * 1.4f;
-            if (browser_) {
-                // The page's About is here, not floating over the canvas, where it covered
-                // readings (the momentum legend, a phone's Time).
-                ImGui::SameLine(
-                    ImGui::GetWindowContentRegionMax().x - fold - ImGui::CalcTextSize("About").x -
-                    2.f * ImGui::GetStyle().FramePadding.x - ImGui::GetStyle().ItemSpacing.x);
-                aboutButton("About", ImVec2(0.f, 0.f));
+            if (ImGui::BeginMenuBar()) {
+                ImGui::TextUnformatted("Controls");
+                const float fold = ImGui::GetFrameHeight() * 1.4f;
+                const float right = ImGui::GetWindowContentRegionMax().x;
+                if (browser_) {
+                    // The page's About is here, not floating over the canvas, where it covered
+                    // readings (the momentum legend, a phone's Time).
+                    ImGui::SetCursorPosX(right - fold - ImGui::CalcTextSize("About").x -
+                                         2.f * ImGui::GetStyle().FramePadding.x -
+                                         ImGui::GetStyle().ItemSpacing.x);
+                    aboutButton("About", ImVec2(0.f, 0.f));
+                }
+                ImGui::SetCursorPosX(right - fold);
+                if (ImGui::Button("<<", ImVec2(fold, 0.f))) {
+                    out_.emplace_back(cmd::ToggleControls{});
+                }
+                mark("fold panel");
+                tip(touch_ ? "Fold the panel away to give the box more room"
+                           : "Fold the panel away to give the box more room (key C)");
+                ImGui::EndMenuBar();
             }
-            ImGui::SameLine(ImGui::GetWindowContentRegionMax().x - fold);
-            if (ImGui::Button("<<")) out_.emplace_back(cmd::ToggleControls{});
-            mark("fold panel");
-            tip("Fold the panel away to give the box more room (key C)");
             ImGui::TextDisabled("%s", s.meta().name.c_str());
             const std::size_t firstItem = items_.size();
             time(s);
@@ -110,8 +138,9 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     }
     ImGui::PopItemFlag();
     ImGui::End();
+    if (touch_) ImGui::PopStyleVar();
     if (!open) ImGui::PopStyleVar();
-    ImGui::PopStyleColor();
+    ImGui::PopStyleColor(2);
     launchPreview(s, pixelRatio);
     valuesWindow(s, pixelRatio);
     dialog(s);
@@ -286,20 +315,20 @@ void ControlPanel::stopwatch(const Session& s) {
     const double now = s.world().time();
     ImGui::TextUnformatted("Stopwatch");
     ImGui::SameLine();
-    if (widgets::smallStateButton("Stopwatch start", w.running() ? "Stop" : "Start")) {
+    if (widgets::smallStateButton("Stopwatch start", w.running() ? "Stop" : "Start", touchWidth_)) {
         out_.emplace_back(cmd::Stopwatch{A::StartStop});
     }
     mark("Stopwatch start");
     tip("Times simulated time: it stops while paused and reads the same at any speed (key U)");
     ImGui::SameLine();
     ImGui::BeginDisabled(!w.running());
-    if (ImGui::SmallButton("Lap")) out_.emplace_back(cmd::Stopwatch{A::Lap});
+    if (widgets::smallButton("Lap", touchWidth_)) out_.emplace_back(cmd::Stopwatch{A::Lap});
     mark("Stopwatch lap");
     ImGui::EndDisabled();
     tip("A split time, while it runs (Shift+U)");
     ImGui::SameLine();
     ImGui::BeginDisabled(!w.used());
-    if (ImGui::SmallButton("Reset")) out_.emplace_back(cmd::Stopwatch{A::Reset});
+    if (widgets::smallButton("Reset", touchWidth_)) out_.emplace_back(cmd::Stopwatch{A::Reset});
     mark("Stopwatch reset");
     ImGui::EndDisabled();
     tip("Back to zero (Shift+U while stopped)");
@@ -547,22 +576,31 @@ void ControlPanel::look(const Session& s) {
     // The panel grows or shrinks about the slider: at the new scale it is scrolled so that the
     // slider stays under the finger (or pointer) that set it, not pushed off the screen.
     const float at = ImGui::GetItemRectMin().y;
-    if (keepScaleAt_ && keepScaleAt_->second != v.uiScale) {
-        const float target = keepScaleAt_->first / static_cast<float>(v.uiScale);
+    // The panel's points are the scale in use (no more than the window allows).
+    const double inUse = v.uiScaleInUse();
+    if (keepScaleAt_ && keepScaleAt_->second != inUse) {
+        const float target = keepScaleAt_->first / static_cast<float>(inUse);
         ImGui::SetScrollY(ImGui::GetScrollY() + (at - target));
         keepScaleAt_.reset();
     }
     if (ImGui::IsItemDeactivatedAfterEdit()) {
         out_.emplace_back(cmd::SetUiScale{scaleDraft_ / 100.0, false});
-        if (scaleDraft_ / 100.0 != v.uiScale) {
-            keepScaleAt_ = std::pair{at * static_cast<float>(v.uiScale), v.uiScale};
+        if (std::min(scaleDraft_ / 100.0, v.uiScaleMost) != inUse) {
+            keepScaleAt_ = std::pair{at * static_cast<float>(inUse), inUse};
         }
     }
     mark("UI scale");
-    tip(browser_ ? "The panel, the HUD, the labels and the charts together, 75 % to 300 %, the "
-                   "text drawn at its size. Kept between visits"
-                 : "The panel, the HUD, the labels and the charts together, 75 % to 300 %, the "
-                   "text drawn at its size (Ctrl+plus, Ctrl+minus). Kept between runs");
+    const std::string most =
+        fmt(". This %s's width allows at most %.0f %%: the panel and its close button stay on "
+            "screen",
+            browser_ ? "page" : "window", 100.0 * v.uiScaleMost);
+    tip(((browser_ ? std::string("The panel, the HUD, the labels and the charts together, 75 % to "
+                                 "300 %, the text drawn at its size. Kept between visits")
+                   : std::string("The panel, the HUD, the labels and the charts together, 75 % to "
+                                 "300 %, the text drawn at its size (Ctrl+plus, Ctrl+minus). Kept "
+                                 "between runs")) +
+         most)
+            .c_str());
     ImGui::SameLine();
     ImGui::BeginDisabled(v.uiScaleAutomatic);
     if (ImGui::Button("Auto")) out_.emplace_back(cmd::SetUiScale{v.uiScale, true});
@@ -573,6 +611,16 @@ void ControlPanel::look(const Session& s) {
         : browser_         ? "Back to the automatic scale, which follows the window's height"
                            : "Back to the automatic scale, which follows the window's height "
                              "(Ctrl+0)");
+    // A scale chosen above what the window allows (a phone held upright): said where it is
+    // chosen, and kept for a wider window.
+    if (v.uiScale > v.uiScaleMost) {
+        widgets::wrappedColored(
+            widgets::caution(v.theme),
+            fmt("Shown at %.0f %%, the most this %s's width allows (%.0f %% is kept for a wider "
+                "one)",
+                100.0 * v.uiScaleMost, browser_ ? "page" : "window", 100.0 * v.uiScale));
+        mark("UI scale most");
+    }
 }
 
 void ControlPanel::tools(const Session& s, float) {
@@ -582,7 +630,9 @@ void ControlPanel::tools(const Session& s, float) {
     if (ImGui::Button("Add a random particle")) out_.emplace_back(cmd::SpawnRandom{});
     mark("Add a random particle");
     tip("A particle of random size, colour and velocity somewhere free in the upper half (key M)");
-    ImGui::TextUnformatted("Left mouse button:");
+    // A tablet has no mouse: what a finger in the box does (the words elsewhere are a touch
+    // screen's too, Notices::key).
+    ImGui::TextUnformatted(s.touch() ? "A finger in the box:" : "Left mouse button:");
     const auto radio = [&](const char* label, cmd::Tool t, const char* help) {
         if (ImGui::RadioButton(label, s.tool() == t)) out_.emplace_back(cmd::SetTool{t});
         mark(std::string("tool ") + label);
@@ -656,7 +706,8 @@ void ControlPanel::tools(const Session& s, float) {
     }
     if (s.interaction().mode() == Interaction::Mode::Launching) {
         const CappedVelocity v = s.launchPreview();
-        ImGui::Text("Launching at %s%s", quantity(v.velocity.norm(), "m/s").c_str(),
+        // In m/s, as the particle's vx and vy are: one unit for one quantity.
+        ImGui::Text("Launching at %s%s", quantity(v.velocity.norm(), "m/s", false).c_str(),
                     v.capped ? " (the most allowed)" : "");
     }
 }

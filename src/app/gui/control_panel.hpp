@@ -49,8 +49,12 @@ struct CollisionCardText;
 /// most (controlsOpenPoints).
 inline constexpr float kControlsWidth = 310.f;
 /// The least the open panel narrows to, points: its rows of buttons and its sliders with their
-/// names still fit; its sentences wrap.
-inline constexpr float kControlsMinWidth = 240.f;
+/// names still fit; its sentences wrap. No UI scale makes a window narrower than this
+/// (session/view_options.hpp, mostUiScale).
+inline constexpr float kControlsMinWidth = static_cast<float>(kPanelLeastPoints);
+/// On a touch screen the least height of a button, a check box or a section header, window
+/// points (CSS pixels in a page): a finger's target (about 7 mm on a phone or a tablet).
+inline constexpr float kTouchTargetPoints = 40.f;
 /// The most of the window's width the open panel takes as the UI grows: at 200 % in a
 /// 1600-pixel window the full panel took 39 % of it, and beside the plots the box kept 510
 /// pixels.
@@ -115,6 +119,12 @@ class ControlPanel {
     [[nodiscard]] bool takeUploadRequest() { return std::exchange(uploadAsked_, false); }
     /// Whether the page's About was pressed (browser mode) since the last call.
     [[nodiscard]] bool takeAboutRequest() { return std::exchange(aboutAsked_, false); }
+    /// A finger is on the panel (GuiContext::fingerOnPanel), its tap or press not yet done:
+    /// nothing above what it came down on may change height until it lifts (the collision card
+    /// growing a line moved "Add a random particle" under a tap meant for the panel). The card
+    /// keeps the height it had when the finger came down (taller content is clipped, shorter
+    /// is padded) until then. A mouse button held over the panel holds it too.
+    void holdLayout(bool held) { fingerHeld_ = held; }
 
   private:
     /// Records the item just drawn as `name`; a status line with what it says.
@@ -174,6 +184,11 @@ class ControlPanel {
     std::array<char, 512> path_{};
     bool pathFilled_ = false;
     bool browser_ = false;
+    bool touch_ = false;       ///< the session's hands are on a touch screen (this build)
+    float touchWidth_ = 0.f;   ///< on a touch screen, a small button's least width, points
+    bool fingerHeld_ = false;  ///< holdLayout
+    /// The card's height (points) while the layout is held, from the frame the hold began.
+    std::optional<float> heldCardHeight_;
     bool uploadAsked_ = false;
     bool aboutAsked_ = false;
     /// The title and description while they are typed in (else the scene's).

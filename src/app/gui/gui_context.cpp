@@ -505,6 +505,19 @@ void GuiContext::fingerFrame() {
     tooltips_.startFrame(now, !pointerIsFinger_, io.MousePos.x, io.MousePos.y);
 }
 
+std::optional<GuiContext::Typing> GuiContext::typing() const {
+    makeCurrent();
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (!g.IO.WantTextInput || g.ActiveId == 0) return std::nullopt;
+    Typing t;
+    t.id = g.ActiveId;
+    // ImGui puts the input method's spot at the text cursor each frame the field draws one
+    // (its top-left, (1, 1) when none was drawn).
+    const ImVec2 p = g.PlatformImePos;
+    if (p.x > 1.f || p.y > 1.f) t.caret = {p.x * scale_, p.y * scale_, scale_, g.FontSize * scale_};
+    return t;
+}
+
 bool GuiContext::hasKeyboard() const {
     makeCurrent();
     const ImGuiContext& g = *ImGui::GetCurrentContext();

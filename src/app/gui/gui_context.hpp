@@ -127,6 +127,16 @@ class GuiContext {
     [[nodiscard]] const std::string& shownTooltip() const { return tooltips_.shown; }
     /// The message band, in the panel's points: tooltips keep off it (tooltips.hpp).
     void setTooltipAvoid(const TipRect& band) { tooltips_.avoid = band; }
+    /// A finger on a panel whose tap, press or scroll is not done (panel_touch.hpp): the panel
+    /// holds its layout still under it (ControlPanel::holdLayout).
+    [[nodiscard]] bool fingerOnPanel() const { return panelTouch_.held(); }
+    /// The field being typed in as the last frame drew it, window points: ImGui's id of it and
+    /// its text cursor (a line high); nullopt when no field takes text.
+    struct Typing {
+        unsigned id = 0;
+        TipRect caret;
+    };
+    [[nodiscard]] std::optional<Typing> typing() const;
 
   private:
     void makeCurrent() const;

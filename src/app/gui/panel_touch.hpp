@@ -61,6 +61,11 @@ class PanelTouch {
         return phase_ == Phase::Waiting || phase_ == Phase::Pressing ||
                phase_ == Phase::Scrolling || phase_ == Phase::Cancelled;
     }
+    /// A finger on the panel whose gesture is not done: down, or lifted from a tap or a press
+    /// whose release ImGui has not seen yet (read after frame(): the frame of the release too).
+    [[nodiscard]] bool held() const {
+        return fingerDown() || phase_ == Phase::Releasing || phase_ == Phase::Lifted;
+    }
     /// What ImGui sees in the frame that starts at `seconds`, or nothing when no finger is on
     /// the panel (the mouse is ImGui's as usual).
     [[nodiscard]] std::optional<Pointer> frame(double seconds);

@@ -8,6 +8,7 @@
 #include <cstdint>
 
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include "gui/control_panel.hpp"
 #include "gui/widgets.hpp"
@@ -35,13 +36,33 @@ void ControlPanel::lastCollision(const Session& s) {
     cardChanged_ = s.view().collision && cardSettling_ > 0;
     cardSeen_ = seen;
     afterCard_ = items_.size();
-    if (!s.view().collision) return;
-    // Turned on, the section opens where it is: the panel never scrolls to it (a student
-    // reaching for a button below found the card under the pointer instead).
-    if (turnedOn) ImGui::SetNextItemOpen(true);
-    const bool open = ImGui::CollapsingHeader("Last collision", ImGuiTreeNodeFlags_DefaultOpen);
-    mark("section Last collision");
-    if (open) card(s);
+    // Held (a finger or a button down on the panel, holdLayout): the card keeps the height it
+    // had when the hold began, so that nothing below it moves under the finger.
+    const bool held = fingerHeld_ || (ImGui::IsAnyMouseDown() &&
+                                      ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows));
+    if (!held) heldCardHeight_.reset();
+    if (!s.view().collision && !heldCardHeight_) return;
+    const float top = ImGui::GetCursorPosY();
+    const ImVec2 topLeft = ImGui::GetCursorScreenPos();
+    if (heldCardHeight_) {
+        ImGuiWindow* w = ImGui::GetCurrentWindow();
+        ImGui::PushClipRect(ImVec2(w->Pos.x, topLeft.y),
+                            ImVec2(w->Pos.x + w->Size.x, topLeft.y + *heldCardHeight_), true);
+    }
+    if (s.view().collision) {
+        // Turned on, the section opens where it is: the panel never scrolls to it (a student
+        // reaching for a button below found the card under the pointer instead).
+        if (turnedOn) ImGui::SetNextItemOpen(true);
+        const bool open = ImGui::CollapsingHeader("Last collision", ImGuiTreeNodeFlags_DefaultOpen);
+        mark("section Last collision");
+        if (open) card(s);
+    }
+    if (heldCardHeight_) {
+        ImGui::PopClipRect();
+        ImGui::SetCursorPosY(top + *heldCardHeight_);
+    } else if (held) {
+        heldCardHeight_ = ImGui::GetCursorPosY() - top;
+    }
     afterCard_ = items_.size();
 }
 

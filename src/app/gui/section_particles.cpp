@@ -130,11 +130,12 @@ void ControlPanel::selectedValues(const Session& s, const std::optional<Particle
     }
     ImGui::Text("Particle %llu", static_cast<unsigned long long>(particleNumber(p->id)));
     ImGui::SameLine();
-    if (ImGui::SmallButton("deselect")) out_.emplace_back(cmd::Select{kNullParticle});
+    if (widgets::smallButton("deselect", touchWidth_))
+        out_.emplace_back(cmd::Select{kNullParticle});
     mark("deselect");
     tip("Forget the selection (or click empty space)");
     ImGui::SameLine();
-    if (ImGui::SmallButton("delete")) out_.emplace_back(cmd::DeleteParticle{p->id});
+    if (widgets::smallButton("delete", touchWidth_)) out_.emplace_back(cmd::DeleteParticle{p->id});
     mark("delete particle");
     tip("Remove this particle from the world (Ctrl+Z brings it back; Backspace or Delete "
         "removes a particle you hold)");

@@ -71,7 +71,7 @@ void ControlPanel::sceneText(const Session& s) {
     bool edit = false;
     if (!descriptionEditing_) {
         ImGui::SameLine();
-        edit = ImGui::SmallButton("Edit");
+        edit = widgets::smallButton("Edit", touchWidth_);
         mark("description edit");
         tip("Write what the scene shows (Enter or a click elsewhere keeps it)");
     }

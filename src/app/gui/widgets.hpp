@@ -113,10 +113,19 @@ inline bool stateButton(const char* id, const char* words, const ImVec2& size = 
     const std::string label = std::string(words) + "###" + id;
     return ImGui::Button(label.c_str(), size);
 }
+/// A small button (no frame padding above and below its words), except on a touch screen
+/// (`touchWidth` > 0), where it is a finger's target: as tall as any other button and at least
+/// `touchWidth` points wide.
+inline bool smallButton(const char* label, float touchWidth = 0.f) {
+    if (!(touchWidth > 0.f)) return ImGui::SmallButton(label);
+    const float words = ImGui::CalcTextSize(label, nullptr, true).x;
+    return ImGui::Button(
+        label, ImVec2(std::max(touchWidth, words + 2.f * ImGui::GetStyle().FramePadding.x), 0.f));
+}
 /// stateButton() as a small button.
-inline bool smallStateButton(const char* id, const char* words) {
+inline bool smallStateButton(const char* id, const char* words, float touchWidth = 0.f) {
     const std::string label = std::string(words) + "###" + id;
-    return ImGui::SmallButton(label.c_str());
+    return smallButton(label.c_str(), touchWidth);
 }
 
 /// A tooltip for the item just drawn (also while it is disabled), after a real hover

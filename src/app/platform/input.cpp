@@ -245,6 +245,7 @@ std::vector<Command> Input::translate(const SDL_Event& e, const KeyState& state,
             if (e.window.event == SDL_WINDOWEVENT_SIZE_CHANGED) {
                 return {cmd::Resize{output.x, output.y}};
             }
+            if (e.window.event == SDL_WINDOWEVENT_LEAVE) return {cmd::PointerLeave{}};
             return {};
         case SDL_KEYDOWN:
             return commandsForKey(e.key, state);
@@ -271,7 +272,10 @@ std::vector<Command> Input::translate(const SDL_Event& e, const KeyState& state,
         case SDL_MOUSEBUTTONUP:
             mouse_ = at(e.button.x, e.button.y);
             if (e.button.button == SDL_BUTTON_LEFT) {
-                return {cmd::PointerUp{mouse_, ticksToSeconds(e.button.timestamp)}};
+                const cmd::PointerUp up{mouse_, ticksToSeconds(e.button.timestamp)};
+                // A finger lifted is a pointer gone: nothing hovers where it was.
+                if (e.button.which == SDL_TOUCH_MOUSEID) return {up, cmd::PointerLeave{}};
+                return {up};
             }
             if (e.button.button == SDL_BUTTON_RIGHT || e.button.button == SDL_BUTTON_MIDDLE) {
                 panning_ = false;

@@ -14,6 +14,9 @@
 EM_JS(void, psb_js_typing, (int on), {
     if (typeof psbTyping === "function") psbTyping(!!on);
 });
+EM_JS(void, psb_js_typing_at, (float x, float y, float w, float h), {
+    if (typeof psbTypingAt === "function") psbTypingAt(x, y, w, h);
+});
 // clang-format on
 #endif
 
@@ -27,6 +30,13 @@ void setTextInput(bool on) {
     }
 #ifdef __EMSCRIPTEN__
     psb_js_typing(on ? 1 : 0);
+#endif
+}
+
+void placeTextInput([[maybe_unused]] float x, [[maybe_unused]] float y, [[maybe_unused]] float w,
+                    [[maybe_unused]] float h) {
+#ifdef __EMSCRIPTEN__
+    psb_js_typing_at(x, y, w, h);
 #endif
 }
 

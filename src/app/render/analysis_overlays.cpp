@@ -26,7 +26,7 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
         for (int k = 0; k < layout.plotColumns && k * layout.plotRows < 4; ++k) {
             plots_.draw(renderer, font, series, plotColumn(layout, k),
                         std::min(layout.plotRows, 4 - k * layout.plotRows), layout.plotRowHeight,
-                        mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScale),
+                        mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScaleInUse()),
                         k * layout.plotRows);
         }
         if (layout.plotsNote > 0) {
@@ -41,10 +41,11 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
     }
     if (view.speeds && layout.speeds.w > 0) {
         speeds_.draw(renderer, font, world.particles(), layout.speeds, colours,
-                     chartLineWidth(view.uiScale));
+                     chartLineWidth(view.uiScaleInUse()));
     }
     if (bins && layout.bins.w > 0) {
-        bins_.draw(renderer, font, *bins, layout.bins, colours, chartLineWidth(view.uiScale));
+        bins_.draw(renderer, font, *bins, layout.bins, colours,
+                   chartLineWidth(view.uiScaleInUse()));
     }
 }
 

@@ -90,6 +90,11 @@ struct PointerUp {
     Vec2 screen;
     double time = 0.0;
 };
+/// The pointer is gone from the box: a finger lifted, or the mouse left the window. Nothing stays
+/// drawn where it was (the Peg tool's shade of the peg a press would place).
+struct PointerLeave {
+    static constexpr Traits traits = kPassive;
+};
 /// Backspace/Delete: the held particle, else the selected particle, else the selected obstacle.
 struct DeleteHeld {
     static constexpr Traits traits{.edits = true, .gesture = Gesture::EndsHold};
@@ -368,6 +373,12 @@ struct SetUiScale {
     double scale = 1.0;
     bool automatic = false;
 };
+/// The most UI scale the window's width allows (mostUiScale; the app sends it: only it knows the
+/// window's size in points). A scale set above it is kept, and used at this.
+struct FitUiScale {
+    static constexpr Traits traits = kPassive;
+    double most = kMaxUiScale;
+};
 /// The window's colours (Ctrl+T, the Show section).
 struct SetTheme {
     static constexpr Traits traits = kPastPrompt;
@@ -494,9 +505,9 @@ struct Quit {
 namespace psb::app {
 
 using Command = std::variant<
-    cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::DeleteHeld, cmd::Pan, cmd::Zoom,
-    cmd::Fit, cmd::Resize, cmd::ToggleHelp, cmd::TogglePause, cmd::SingleStep, cmd::StepBack,
-    cmd::StepForward, cmd::Seek, cmd::SeekBy, cmd::Undo, cmd::Redo, cmd::SpawnRandom,
+    cmd::PointerDown, cmd::PointerMove, cmd::PointerUp, cmd::PointerLeave, cmd::DeleteHeld,
+    cmd::Pan, cmd::Zoom, cmd::Fit, cmd::Resize, cmd::ToggleHelp, cmd::TogglePause, cmd::SingleStep,
+    cmd::StepBack, cmd::StepForward, cmd::Seek, cmd::SeekBy, cmd::Undo, cmd::Redo, cmd::SpawnRandom,
     cmd::ChangeSpawnMass, cmd::Restart, cmd::OpenPreset, cmd::OpenFile, cmd::OpenEdit,
     cmd::EditType, cmd::EditField, cmd::EditBackspace, cmd::EditApply, cmd::Save, cmd::Screenshot,
     cmd::Back, cmd::Quit, cmd::SetRestitution, cmd::SetFriction, cmd::SetGravity, cmd::SetWalls,
@@ -506,7 +517,7 @@ using Command = std::variant<
     cmd::NewScene, cmd::SetSceneText, cmd::AskSaveAs, cmd::AnswerQuit, cmd::CloseDialog,
     cmd::ExportTable, cmd::CopyTable, cmd::ClipboardResult, cmd::SetRecording, cmd::ToggleVideo,
     cmd::SetVideoSettings, cmd::Stopwatch, cmd::ScaleSpeeds, cmd::ResizeBox, cmd::SetArrowScale,
-    cmd::SetTangentialRestitution, cmd::SetDiscsTurn, cmd::SetUiScale, cmd::SetTheme,
-    cmd::SetTouch>;
+    cmd::SetTangentialRestitution, cmd::SetDiscsTurn, cmd::SetUiScale, cmd::FitUiScale,
+    cmd::SetTheme, cmd::SetTouch>;
 
 }  // namespace psb::app

@@ -243,9 +243,10 @@ ReleaseResult Interaction::release(const World& world, const Vec2& point, double
     // window, widened by its spacing), the hand had the speed of its last moves; a hand that
     // stayed still longer than that was seen to stop, and lets go at rest.
     Vec2 velocity = Vec2::Zero();
+    bool stopped = false;
     if (!samples_.empty() && point == samples_.back().position) {
         const std::vector<TrajectorySample> moves(samples_.begin(), samples_.end());
-        const bool stopped = time - moves.back().time > launchWindow(moves, uncapped);
+        stopped = time - moves.back().time > launchWindow(moves, uncapped);
         velocity = stopped ? Vec2::Zero() : launchVelocity(moves, uncapped);
         record(point, time);
     } else {
@@ -271,6 +272,8 @@ ReleaseResult Interaction::release(const World& world, const Vec2& point, double
         result.position = held->position;
         result.velocity = hand.velocity;
         result.capped = hand.capped;
+        result.handStopped = stopped || hand.velocity.isZero();
+        result.velocityBefore = velocityAtPress_;
     } else if (mode_ == Mode::Launching) {
         if (const auto spot = findFreeSpot(world, pressPoint_, spawn.radius())) {
             const CappedVelocity launched = launchVelocityNow(launch, launchSeconds);

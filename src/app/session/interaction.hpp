@@ -116,6 +116,10 @@ struct ReleaseResult {
     /// The particle `id` was held (Flung, or Clicked with the Fling tool): it is let go at
     /// `position` with `velocity` and is free again.
     bool letGo = false;
+    /// Flung: the hand had stopped (`velocity` is zero: it was put down, not thrown).
+    bool handStopped = false;
+    /// The held particle's velocity when the hand took it, m/s.
+    Vec2 velocityBefore = Vec2::Zero();
 };
 
 /// `v` cut to `maxSpeed` (m/s) when longer and maxSpeed > 0; `capped` says whether it was.

@@ -297,8 +297,14 @@ void SceneView::handle(const cmd::SetUiScale& c, Context& x) {
     // browser keeps Ctrl+0 for its zoom; a touch screen has no keys: the panel's Auto.
     const bool keys = !inPage_ && !x.notices.touch;
     if (said) {
+        // A window too narrow for the panel at the scale chosen: said where it is chosen.
+        const std::string narrow =
+            c.scale > options_.uiScaleMost
+                ? fmt(", shown at %.0f %%, the most this %s's width allows",
+                      100.0 * options_.uiScaleMost, inPage_ ? "page" : "window")
+                : std::string();
         x.notices.add({Notice::Level::Info,
-                       fmt("UI scale %.0f %%%s", 100.0 * c.scale,
+                       fmt("UI scale %.0f %%%s%s", 100.0 * c.scale, narrow.c_str(),
                            c.automatic ? (inPage_ ? " (automatic: by the page's height)"
                                           : keys  ? " (automatic: by the window's "
                                                     "height; Ctrl+0)"
@@ -307,6 +313,11 @@ void SceneView::handle(const cmd::SetUiScale& c, Context& x) {
                                        : " (Show: Auto makes it automatic)"),
                        true, true, "ui scale"});
     }
+}
+
+void SceneView::handle(const cmd::FitUiScale& c, Context&) {
+    // A resize says nothing: the panel says it beside the slider while the scale is held down.
+    if (c.most >= kMinUiScale && c.most <= kMaxUiScale) options_.uiScaleMost = c.most;
 }
 
 void SceneView::handle(const cmd::SetTheme& c, Context& x) {

@@ -47,6 +47,7 @@ class SceneView {
     void handle(const cmd::SetTrails& c, Context& x);
     void handle(const cmd::SetArrowScale& c, Context& x);
     void handle(const cmd::SetUiScale& c, Context& x);
+    void handle(const cmd::FitUiScale& c, Context& x);
     void handle(const cmd::SetTheme& c, Context& x);
     void handle(const cmd::ToggleControls& c, Context& x);
 

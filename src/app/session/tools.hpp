@@ -58,6 +58,7 @@ struct Tools {
     void handle(const cmd::PointerDown& c, Context& x);
     void handle(const cmd::PointerMove& c, Context& x);
     void handle(const cmd::PointerUp& c, Context& x);
+    void handle(const cmd::PointerLeave& c, Context& x);
     void handle(const cmd::DeleteHeld& c, Context& x);
     void handle(const cmd::DeleteParticle& c, Context& x);
     void handle(const cmd::SetTool& c, Context& x);
@@ -141,6 +142,8 @@ struct Tools {
     std::mt19937 rng;             ///< random spawns
     Vec2 pointer = Vec2::Zero();  ///< screen pixels
     double pointerTime = 0.0;     ///< seconds, of the last pointer command
+    /// The pointer is over the window: moved or pressed since it last left (cmd::PointerLeave).
+    bool pointerIn = false;
 
   private:
     /// A click that selects what is under it (a particle, else an obstacle), or clears.

@@ -22,6 +22,7 @@ namespace psb::app {
 void Tools::handle(const cmd::PointerDown& c, Context& x) {
     pointer = c.screen;
     pointerTime = c.time;
+    pointerIn = true;
     // The ruler's ends and edge come first, whatever the tool: they are what is under the hand.
     if (x.view.options().ruler) {
         if (const auto part = x.ruler.partAt(c.screen, x.view.camera())) {
@@ -62,6 +63,7 @@ void Tools::handle(const cmd::PointerMove& c, Context& x) {
     }
     pointer = c.screen;
     pointerTime = c.time;
+    pointerIn = true;
     if (x.ruler.held()) {
         x.ruler.moveTo(pointerWorld(x.view.camera()));
         return;
@@ -74,11 +76,16 @@ void Tools::handle(const cmd::PointerMove& c, Context& x) {
         hand.dragged(launchSettings(x.view.camera(), x.doc.world.def()))) {
         pausedFlingTold = true;
         x.notices.add({Notice::Level::Info,
-                       std::string("Paused: let go and the particle keeps its speed (its arrow) "
-                                   "until ") +
+                       std::string("Paused: let go moving and the particle takes the hand's "
+                                   "speed (its arrow), let go still and it keeps its own, until ") +
                            x.notices.key("Space", "Play") + " sets time running",
                        true, false});
     }
+}
+
+void Tools::handle(const cmd::PointerLeave&, Context&) {
+    // Where a lifted finger was means nothing: no shade of a peg stays there.
+    pointerIn = false;
 }
 
 void Tools::handle(const cmd::PointerUp& c, Context& x) {
@@ -112,6 +119,11 @@ void Tools::handle(const cmd::PointerUp& c, Context& x) {
                                    launchSettings(x.view.camera(), x.doc.world.def()),
                                    x.view.options().arrowSeconds);
     using K = ReleaseResult::Kind;
+    // Paused, a particle moved and put down (the hand stopped) keeps the velocity it had: the
+    // student moved it, and a fling (let go moving) is how to give it another. Running, a hand
+    // that stopped holds it still, as a hand catching a ball does.
+    const bool putDown = r.kind == K::Flung && x.clock.paused && r.handStopped;
+    if (putDown) r.velocity = r.velocityBefore;
     if (r.letGo) {
         world.setPosition(r.id, r.position);
         world.setVelocity(r.id, r.velocity);
@@ -124,12 +136,18 @@ void Tools::handle(const cmd::PointerUp& c, Context& x) {
     const std::string at = fmt("at [%.2f, %.2f]", shownAt.x(), shownAt.y());
     const std::string v = fmt("with velocity [%.2f, %.2f] m/s", shownV.x(), shownV.y());
     if (r.kind == K::Flung) x.notices.log("Released particle " + at + " " + v);
-    if (r.kind == K::Flung && x.clock.paused) {
+    // Speeds in m/s, as the panel's vx and vy beside it: one unit for one quantity.
+    if (putDown) {
         x.notices.say(r.velocity.norm() > 0.0
-                          ? fmt("Flung at %s while paused: %s sets it moving",
-                                quantity(r.velocity.norm(), "m/s").c_str(),
-                                x.notices.key("Space", "Play"))
-                          : std::string("Let go at rest (the hand had stopped)"));
+                          ? fmt("Moved while paused: it keeps its speed, %s (let go moving to "
+                                "fling it)",
+                                quantity(r.velocity.norm(), "m/s", false).c_str())
+                          : std::string("Moved while paused: still at rest (let go moving to "
+                                        "fling it)"));
+    } else if (r.kind == K::Flung && x.clock.paused) {
+        x.notices.say(fmt("Flung at %s while paused: %s sets it moving",
+                          quantity(r.velocity.norm(), "m/s", false).c_str(),
+                          x.notices.key("Space", "Play")));
     }
     if (r.kind == K::Launched) x.notices.log("Launched particle " + at + " " + v);
     if ((r.kind == K::Flung || r.kind == K::Launched) && r.capped) {

@@ -51,7 +51,7 @@ std::string overlapRefusal(const World& world, const Obstacle& o, const char* do
 
 std::optional<Obstacle> Tools::obstaclePreview(const Camera& camera, const WorldDef& d) const {
     if (obstacle.active()) return obstacle.preview(obstacleSizes, d);
-    if (tool != cmd::Tool::Peg) return std::nullopt;
+    if (tool != cmd::Tool::Peg || !pointerIn) return std::nullopt;
     const Vec2 at = pointerWorld(camera);
     if (!(at.x() >= 0.0 && at.x() <= d.width && at.y() >= 0.0 && at.y() <= d.height)) {
         return std::nullopt;

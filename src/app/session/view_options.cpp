@@ -39,6 +39,12 @@ double automaticUiScale(double heightPoints) {
     return std::min(kMaxUiScale, std::floor(heightPoints / 720.0 * 4.0) / 4.0);
 }
 
+double mostUiScale(double widthPoints) {
+    if (!(widthPoints > 0.0)) return kMaxUiScale;  // no window yet (NaN too)
+    const double most = std::floor(widthPoints / kPanelLeastPoints * 20.0 + 1e-9) / 20.0;
+    return std::clamp(most, kMinUiScale, kMaxUiScale);
+}
+
 double steppedUiScale(double scale, int steps) {
     for (; steps > 0; --steps) {
         const auto* up =

@@ -46,6 +46,16 @@ inline constexpr double kMaxUiScale = 3.0;
 /// The scales Ctrl+plus and Ctrl+minus step through (a browser's zoom steps).
 inline constexpr double kUiScaleSteps[] = {0.75, 0.9, 1.0, 1.1, 1.25, 1.5, 1.75, 2.0, 2.5, 3.0};
 
+/// The least width, points at the UI's scale, the open panel takes: its rows of buttons and its
+/// sliders with their names still fit (its sentences wrap). A window narrower than this many
+/// points at the scale chosen gets a smaller scale (mostUiScale).
+inline constexpr double kPanelLeastPoints = 240.0;
+/// The most UI scale a window `widthPoints` wide (window points: CSS pixels in a page) allows: the
+/// open panel, kPanelLeastPoints at that scale, across the whole window and no wider, in steps of
+/// 5 % (160 % on a phone 390 points wide, 130 % at 320); never below kMinUiScale nor above
+/// kMaxUiScale. Its close button and its rows then stay on screen at any scale chosen.
+[[nodiscard]] double mostUiScale(double widthPoints);
+
 /// The scale the UI takes by itself in a window `heightPoints` high (window points): 100 % up to
 /// 899 points, then a quarter step per 180 points (125 % at 900, 150 % at 1080, 200 % at 1440,
 /// 300 % at 2160 and above). The layout was drawn for the 800-point window the program opens;
@@ -105,12 +115,20 @@ struct ViewOptions {
     /// a student's vy should not change sign between two presets, and school problems put y up
     /// whether or not something falls. The files keep the world's y down.
     bool yUp = true;
-    /// The UI's scale in use (kMinUiScale to kMaxUiScale), and whether it follows the window's
-    /// height (automaticUiScale) rather than being set (Ctrl+plus, Ctrl+minus, the slider).
+    /// The UI's scale chosen (kMinUiScale to kMaxUiScale), and whether it follows the window's
+    /// height (automaticUiScale) rather than being set (Ctrl+plus, Ctrl+minus, the slider). The
+    /// settings keep it; it is used up to what the window allows (uiScaleInUse).
     double uiScale = 1.0;
     bool uiScaleAutomatic = true;
+    /// The most the window's width allows (mostUiScale, cmd::FitUiScale).
+    double uiScaleMost = kMaxUiScale;
     Theme theme = Theme::Dark;  ///< Ctrl+T
 
+    /// The scale the panel, the HUD, the labels and the charts are drawn at: the one chosen, no
+    /// more than the window allows.
+    [[nodiscard]] double uiScaleInUse() const {
+        return uiScale < uiScaleMost ? uiScale : uiScaleMost;
+    }
     /// The flag of `option`.
     [[nodiscard]] bool& flag(ShowOption option);
     /// The axes numbers are shown in, for a box of `def`'s size.

@@ -721,6 +721,169 @@ TEST_F(ControlPanelTest, ACollisionCardThatGrowsMovesNothingUnderThePointer) {
         << "the card grew and moved the section under the pointer";
 }
 
+TEST_F(ControlPanelTest, ACardThatGrowsUnderAFingerMovesNothingBelowItUntilTheFingerLifts) {
+    // A tablet: a tap meant for the panel hit "Add a random particle" instead. The card grew a
+    // line between the finger coming down and the press it makes at the lift, in a frame where
+    // the pointer already counted as pressed: everything below moved under it. While a finger
+    // is on the panel (GuiContext::fingerOnPanel: holdLayout), or a button is held over it,
+    // nothing below the card moves.
+    session_->apply(cmd::SetShow{ShowOption::Collision, true});
+    for (const char* section : {"section Physics", "section Show", "section Tools"})
+        click(section);
+    ImGuiIO& io = gui_->io();
+    const ImVec2 finger = centre("Add a random particle");
+    const float before = panel_.item("Add a random particle")->y0;
+    ASSERT_FALSE(session_->lastCollision());
+    session_->apply(cmd::TogglePause{});
+    io.MousePos = finger;
+    panel_.holdLayout(true);  // the finger came down
+    int moved = 0;
+    for (int k = 1; k <= 1200 && !session_->lastCollision(); ++k) {
+        session_->update(1.0 / 60.0, k / 60.0);
+        // Half the frames with the button down, as the press of a tap is.
+        io.MouseDown[0] = k % 2 == 0;
+        frame();
+        if (std::abs(panel_.item("Add a random particle")->y0 - before) > 0.5f) ++moved;
+    }
+    ASSERT_TRUE(session_->lastCollision());
+    session_->apply(cmd::TogglePause{});
+    for (int k = 0; k < 4; ++k) {
+        io.MouseDown[0] = k % 2 == 0;
+        frame();
+        if (std::abs(panel_.item("Add a random particle")->y0 - before) > 0.5f) ++moved;
+    }
+    EXPECT_EQ(moved, 0) << "frames in which the button under the finger moved";
+    // Lifted: the card shows whole again.
+    io.MouseDown[0] = false;
+    panel_.holdLayout(false);
+    io.MousePos = ImVec2(kSize - 5.f, kSize - 5.f);
+    frame();
+    frame();
+    EXPECT_NE(panel_.item("collision title"), nullptr);
+    EXPECT_GT(panel_.item("Add a random particle")->y0, before + 40.f) << "the card below";
+}
+
+TEST_F(ControlPanelTest, OnATouchScreenEveryButtonAndBoxIsAFingersTarget) {
+    // A tablet at the automatic scale: Step, Lap, Reset and the Show section's boxes were about
+    // 20 pixels tall. On a touch screen each is at least kTouchTargetPoints (40) high and
+    // wide, at any UI scale; with a mouse the panel is as it was.
+    const auto sizes = [this](float scale) {
+        session_->apply(cmd::SetUiScale{scale, false});
+        gui_->setScale(scale);
+        for (int k = 0; k < 3; ++k) {  // tall enough for every control
+            gui_->beginFrame(kSize, 4000.f);
+            for (const Command& c : panel_.build(*session_, FrameStats{}, 4000.f / scale, scale))
+                session_->apply(c);
+            EXPECT_EQ(gui_->endFrame(), 0);
+        }
+    };
+    const char* targets[] = {"fold panel",    "Play/Pause",
+                             "Step",          "Restart",
+                             "Undo",          "Stopwatch start",
+                             "Stopwatch lap", "Stopwatch reset",
+                             "section Show",  "Velocity arrows",
+                             "Labels",        "y up",
+                             "Spin",          "Grid",
+                             "Ruler",         "Auto"};
+    sizes(1.f);  // the Show section is open from the start
+    const PanelItem* mouseStep = panel_.item("Step");
+    ASSERT_NE(mouseStep, nullptr);
+    EXPECT_LT(mouseStep->y1 - mouseStep->y0, 30.f) << "with a mouse, as it was";
+    session_->apply(cmd::SetTouch{true});
+    for (const float scale : {1.f, 1.5f, 2.f}) {
+        sizes(scale);
+        for (const char* name : targets) {
+            const std::string n = std::string(name) == "Auto" ? "UI scale auto" : name;
+            const PanelItem* i = panel_.item(n);
+            ASSERT_NE(i, nullptr) << n;
+            EXPECT_GE((i->y1 - i->y0) * scale, kTouchTargetPoints - 0.5f) << n << " at " << scale;
+            EXPECT_GE((i->x1 - i->x0) * scale, kTouchTargetPoints - 0.5f) << n << " at " << scale;
+        }
+        // Bigger boxes take a row's room: a box that no longer fits beside another goes below
+        // it (the Labels box lay over "Velocity arrows", Spin's over "Values table").
+        const char* boxes[] = {"Velocity arrows",
+                               "Labels",
+                               "y up",
+                               "Momentum and centre of mass",
+                               "Plots",
+                               "Speed histogram",
+                               "Values table",
+                               "Spin",
+                               "Grid",
+                               "Last collision card",
+                               "Ruler",
+                               "Walls",
+                               "Discs turn"};
+        for (const char* a : boxes)
+            for (const char* b : boxes) {
+                const PanelItem *p = panel_.item(a), *q = panel_.item(b);
+                if (p == nullptr || q == nullptr || p == q) continue;
+                const bool overlap =
+                    p->x0 < q->x1 && q->x0 < p->x1 && p->y0 < q->y1 && q->y0 < p->y1;
+                EXPECT_FALSE(overlap) << a << " and " << b << " at " << scale;
+            }
+    }
+    gui_->setScale(1.f);
+}
+
+TEST_F(ControlPanelTest, OnAPhoneAtAnyScaleThePanelAndItsCloseButtonStayOnScreen) {
+    // A phone held upright at 150 %: the sheet ran off the right edge and its << was a 2-pixel
+    // sliver a tap missed. The sheet is as wide as the window, and the scale in use is no more
+    // than the window allows (mostUiScale): << is whole, at the right edge, at any scale
+    // chosen, from 320 pixels wide up.
+    for (const float window : {320.f, 390.f, 600.f}) {
+        for (const double chosen : {1.0, 1.5, 2.0, 3.0}) {
+            SessionOptions so;
+            so.paused = true;
+            so.touch = true;
+            so.viewportWidth = static_cast<int>(window);
+            so.viewportHeight = 844;
+            Session s(makeWorld(defaultScene()), SceneInfo{.name = "default", .dt = 1.0 / 60.0},
+                      so);
+            s.apply(cmd::FitUiScale{mostUiScale(window)});
+            s.apply(cmd::SetUiScale{chosen, false});
+            const auto scale = static_cast<float>(s.view().uiScaleInUse());
+            s.apply(cmd::Resize{
+                static_cast<int>(window), 844,
+                windowLayout(*font_, static_cast<int>(window), 844, controlsWidth(scale, window))});
+            if (!s.controlsShown()) s.apply(cmd::ToggleControls{});
+            ASSERT_TRUE(s.controlsShown());
+            gui_->setScale(scale);
+            for (int k = 0; k < 3; ++k) {
+                gui_->beginFrame(window, 844.f);
+                (void)panel_.build(s, FrameStats{}, 844.f / scale, scale);
+                EXPECT_EQ(gui_->endFrame(), 0);
+            }
+            const PanelItem* fold = panel_.item("fold panel");
+            ASSERT_NE(fold, nullptr);
+            EXPECT_LE(fold->x1 * scale, window + 0.5f) << window << " at " << chosen;
+            EXPECT_GE((fold->x1 - fold->x0) * scale, kTouchTargetPoints - 0.5f)
+                << window << " at " << chosen << ": a sliver";
+            EXPECT_LE(ImGui::FindWindowByName("Controls")->Size.x * scale, window + 0.5f);
+        }
+    }
+    gui_->setScale(1.f);
+}
+
+TEST_F(ControlPanelTest, TheCloseButtonStaysInReachWhenThePanelIsScrolled) {
+    // A phone: after scrolling the sheet down, << had scrolled away with it (six swipes back to
+    // close it). The panel's top line stays put.
+    for (const char* section : {"section Scene", "section Physics", "section Show"})
+        click(section);
+    const PanelItem* top = panel_.item("fold panel");
+    ASSERT_NE(top, nullptr);
+    const float y = top->y0;
+    ImGuiWindow* w = ImGui::FindWindowByName("Controls");
+    ASSERT_GT(w->ScrollMax.y, 300.f);
+    ImGui::SetScrollY(w, w->ScrollMax.y);
+    frame();
+    frame();
+    ASSERT_GT(ImGui::FindWindowByName("Controls")->Scroll.y, 300.f);
+    EXPECT_EQ(panel_.item("fold panel")->y0, y);
+    click("fold panel");
+    EXPECT_FALSE(session_->controlsShown());
+}
+
 TEST_F(ControlPanelTest, ACardThatGoesAwayLeavesNoBlankPanel) {
     // A trial at 200 %: after a collision, R took the card away and the panel stayed scrolled
     // past its end, blank, until the wheel brought it back. What the pointer was over went with

@@ -41,6 +41,24 @@ TEST(PanelTouch, ATapPressesAndReleasesWhereItCameDownThenLeavesNoPointer) {
     EXPECT_FALSE(t.frame(1.06 + 3 * kFrame).has_value());
 }
 
+TEST(PanelTouch, ATapHoldsThePanelStillFromTheFingersDownToItsRelease) {
+    // The panel holds its layout while held() (ControlPanel::holdLayout): from the finger's
+    // coming down to the frame of the release its tap makes, read after each frame().
+    PanelTouch t;
+    EXPECT_FALSE(t.held());
+    t.down(ImVec2(100.f, 200.f), 1.0);
+    EXPECT_TRUE(t.held());
+    (void)t.frame(1.0 + kFrame);  // hovered
+    EXPECT_TRUE(t.held());
+    t.up(ImVec2(100.f, 200.f), 1.05);
+    (void)t.frame(1.06);  // pressed
+    EXPECT_TRUE(t.held()) << "the press";
+    (void)t.frame(1.06 + kFrame);  // released
+    EXPECT_TRUE(t.held()) << "the release";
+    (void)t.frame(1.06 + 2 * kFrame);  // no pointer
+    EXPECT_FALSE(t.held()) << "lifted and done";
+}
+
 TEST(PanelTouch, AFingerDraggedUpScrollsByItsPathAndPressesNothing) {
     PanelTouch t;
     t.down(ImVec2(150.f, 600.f), 0.0);

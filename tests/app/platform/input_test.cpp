@@ -190,6 +190,31 @@ TEST(Input, MouseCoordinatesAreScaledToDrawablePixels) {
     EXPECT_DOUBLE_EQ(std::get<cmd::PointerDown>(c.front()).time, 2.0);
 }
 
+TEST(Input, AFingerLiftedOrAMouseThatLeftIsAPointerGone) {
+    // The Peg tool's shade stayed where a finger lifted: a lift is the pointer's leaving too.
+    Input in;
+    SDL_Event up{};
+    up.type = SDL_MOUSEBUTTONUP;
+    up.button.button = SDL_BUTTON_LEFT;
+    up.button.which = SDL_TOUCH_MOUSEID;
+    up.button.x = 100;
+    up.button.y = 50;
+    const auto lifted = in.translate(up, KeyState{}, 1.0, SDL_Point{800, 800});
+    ASSERT_EQ(lifted.size(), 2u);
+    EXPECT_TRUE(std::holds_alternative<cmd::PointerUp>(lifted[0]));
+    EXPECT_TRUE(std::holds_alternative<cmd::PointerLeave>(lifted[1]));
+    up.button.which = 0;  // a mouse's release: it is still there
+    const auto released = in.translate(up, KeyState{}, 1.0, SDL_Point{800, 800});
+    ASSERT_EQ(released.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<cmd::PointerUp>(released[0]));
+    SDL_Event left{};
+    left.type = SDL_WINDOWEVENT;
+    left.window.event = SDL_WINDOWEVENT_LEAVE;
+    const auto gone = in.translate(left, KeyState{}, 1.0, SDL_Point{800, 800});
+    ASSERT_EQ(gone.size(), 1u);
+    EXPECT_TRUE(std::holds_alternative<cmd::PointerLeave>(gone[0]));
+}
+
 TEST(Input, ARightDragPans) {
     Input in;
     SDL_Event e{};

@@ -58,6 +58,27 @@ TEST_F(SessionObstacles, SizesFollowTheScenesTypicalParticle) {
     EXPECT_FALSE(s.canUndo());
 }
 
+TEST_F(SessionObstacles, NoPegShadeStaysWhereTheFingerLifted) {
+    // A tablet: the Peg tool's shade of the peg a tap would place stayed where the finger
+    // lifted (a hover with no pointer). A lifted finger, or a mouse that left the window, is a
+    // pointer gone.
+    Session s = session();
+    s.apply(cmd::SetTool{cmd::Tool::Peg});
+    const Vec2 at = s.camera().worldToScreen(Vec2(2.0, 3.0));
+    s.apply(cmd::PointerMove{at, 0.5});
+    ASSERT_TRUE(s.obstaclePreview()) << "a mouse over the box shows where the peg would go";
+    s.apply(cmd::PointerLeave{});
+    EXPECT_FALSE(s.obstaclePreview()) << "the mouse left the window";
+    s.apply(cmd::PointerDown{at, 1.0});
+    s.apply(cmd::PointerUp{at, 1.05});
+    s.apply(cmd::PointerLeave{});  // the finger lifted (platform/input.cpp sends both)
+    ASSERT_EQ(s.world().obstacles().size(), 1u);
+    EXPECT_FALSE(s.obstaclePreview()) << "a shade stayed where the finger lifted";
+    EXPECT_EQ(s.userActions(), 1u) << "leaving is no edit";
+    s.apply(cmd::PointerMove{at, 1.5});
+    EXPECT_TRUE(s.obstaclePreview()) << "back with the pointer";
+}
+
 TEST_F(SessionObstacles, APegToolClickPlacesAPegUndoneAndRedone) {
     Session s = session();
     s.apply(cmd::SetObstacleSizes{0.3, 0.1});

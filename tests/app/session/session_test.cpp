@@ -18,6 +18,7 @@
 #include "session/session.hpp"
 #include "session/session_fixture.hpp"
 #include "session/test_assets.hpp"
+#include "session/units.hpp"
 
 namespace psb::app {
 namespace {
@@ -482,7 +483,7 @@ TEST_F(SessionTest, AParticleFlungWhilePausedKeepsItsSpeedForWhenTimeRunsAndSays
         s.update(0.0, 1.0 + 0.01 * k);
     }
     const auto dragging = s.takeNotices();
-    EXPECT_TRUE(said(dragging, "Paused: let go and the particle keeps its speed"))
+    EXPECT_TRUE(said(dragging, "Paused: let go moving and the particle takes the hand's speed"))
         << (dragging.empty() ? "" : dragging.back().text);
     s.apply(cmd::PointerUp{c.worldToScreen(Vec2(4.2, 1.6)), 1.1});
     const Particle flung = s.world().get(yellow);
@@ -494,6 +495,47 @@ TEST_F(SessionTest, AParticleFlungWhilePausedKeepsItsSpeedForWhenTimeRunsAndSays
     s.update(0.1, 1.2);  // the first frame after a pause owes one frame's time
     s.update(0.1, 1.3);
     EXPECT_LT(s.world().get(yellow).position.x(), flung.position.x() - 0.3);
+}
+
+TEST_F(SessionTest, AParticleMovedWhilePausedKeepsItsVelocityUnlessFlung) {
+    // A student setting up a lesson moved a paused ball and found it at rest ("Let go at
+    // rest"). Paused, a particle put down (the hand stopped before letting go) keeps the
+    // velocity it had; only a fling (let go moving) gives it the hand's. The mouse and a
+    // finger are the same commands, so the desktop and the page agree.
+    Session s = session();
+    ASSERT_TRUE(s.paused());
+    const ParticleId yellow = s.world().pick(Vec2(5.2, 1.6)).value();
+    s.apply(cmd::EditParticle{yellow, ParticleField::Vx, "1.5"});
+    const Vec2 before = s.world().get(yellow).velocity;
+    ASSERT_GT(before.norm(), 1.0);
+    (void)s.takeNotices();
+    const Camera& c = s.camera();
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(5.2, 1.6)), 1.0});
+    for (int k = 1; k <= 10; ++k)
+        s.apply(cmd::PointerMove{c.worldToScreen(Vec2(5.2 - 0.1 * k, 1.6)), 1.0 + 0.01 * k});
+    // Held still half a second, then let go where it stood.
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(4.2, 1.6)), 1.6});
+    const Particle moved = s.world().get(yellow);
+    EXPECT_NEAR(moved.position.x(), 4.2, 1e-9);
+    EXPECT_NEAR((moved.velocity - before).norm(), 0.0, 1e-12) << "the velocity it had is kept";
+    const auto said1 = s.takeNotices();
+    EXPECT_TRUE(said(
+        said1, "Moved while paused: it keeps its speed, " + quantity(before.norm(), "m/s", false)))
+        << (said1.empty() ? "" : said1.back().text);
+    // Let go moving: a fling, the hand's velocity.
+    s.apply(cmd::PointerDown{c.worldToScreen(Vec2(4.2, 1.6)), 2.0});
+    for (int k = 1; k <= 10; ++k)
+        s.apply(cmd::PointerMove{c.worldToScreen(Vec2(4.2 + 0.1 * k, 1.6)), 2.0 + 0.01 * k});
+    s.apply(cmd::PointerUp{c.worldToScreen(Vec2(5.2, 1.6)), 2.1});
+    EXPECT_GT(s.world().get(yellow).velocity.x(), 5.0);
+    const auto said2 = s.takeNotices();
+    EXPECT_TRUE(said(said2, "Flung at")) << (said2.empty() ? "" : said2.back().text);
+    EXPECT_FALSE(said(said2, "mm/s")) << "speeds in m/s, as vx and vy beside them";
+    // Running, a hand that stopped holds the ball still: it is caught, not moved.
+    s.apply(cmd::TogglePause{});
+    s.apply(cmd::PointerDown{c.worldToScreen(s.world().get(yellow).position), 3.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(s.world().get(yellow).position), 3.6});
+    EXPECT_EQ(s.world().get(yellow).velocity.norm(), 0.0);
 }
 
 TEST_F(SessionTest, TheEditPromptTakesTheKeyboard) {

@@ -304,6 +304,48 @@ TEST(UiScale, StepsThroughTheListAndTheAutomaticRuleFollowsTheHeight) {
     EXPECT_EQ(automaticUiScale(std::nan("")), 1.0);
 }
 
+TEST(UiScale, AWindowAllowsNoScaleThatPutsThePanelPastItsEdge) {
+    // A phone held upright (390 CSS pixels) at 150 %: the panel's sheet, 310 points wide, ran
+    // 465 pixels off its right edge with its close button. No scale may leave the window less
+    // than the panel's least width (kPanelLeastPoints), at any width from 320 up.
+    EXPECT_EQ(mostUiScale(390.0), 1.6);
+    EXPECT_EQ(mostUiScale(320.0), 1.3);
+    EXPECT_EQ(mostUiScale(1024.0), 3.0) << "a tablet allows every scale";
+    EXPECT_EQ(mostUiScale(100.0), kMinUiScale) << "never below the least scale";
+    EXPECT_EQ(mostUiScale(std::nan("")), kMaxUiScale) << "no window yet";
+    for (double width = 320.0; width <= 2000.0; width += 1.0)
+        for (const double chosen : kUiScaleSteps) {
+            ViewOptions v;
+            v.uiScale = chosen;
+            v.uiScaleMost = mostUiScale(width);
+            EXPECT_GE(width / v.uiScaleInUse(), kPanelLeastPoints - 1e-9)
+                << width << " points at " << chosen;
+        }
+}
+
+TEST_F(SessionValues, AScaleAboveWhatTheWindowAllowsIsKeptAndUsedAtTheMostItAllows) {
+    // The scale is remembered (settings) as chosen; a narrow window uses less, and says so
+    // where it is chosen.
+    Session s = session();
+    (void)s.takeNotices();
+    s.apply(cmd::FitUiScale{mostUiScale(390.0)});
+    EXPECT_TRUE(s.takeNotices().empty()) << "a window's size is no news";
+    s.apply(cmd::SetUiScale{1.5, false});
+    EXPECT_EQ(s.view().uiScaleInUse(), 1.5) << "150 % fits 390 pixels: 260 points";
+    s.apply(cmd::SetUiScale{2.0, false});
+    EXPECT_TRUE(said(s.takeNotices(),
+                     "UI scale 200 %, shown at 160 %, the most this window's "
+                     "width allows"));
+    EXPECT_EQ(s.view().uiScale, 2.0) << "the choice is kept";
+    EXPECT_EQ(s.view().uiScaleInUse(), 1.6);
+    s.apply(cmd::FitUiScale{mostUiScale(1024.0)});  // turned sideways, or a wider window
+    EXPECT_EQ(s.view().uiScaleInUse(), 2.0);
+    for (const double bad : {0.0, 3.5, std::nan("")}) {
+        s.apply(cmd::FitUiScale{bad});
+        EXPECT_EQ(s.view().uiScaleInUse(), 2.0) << bad;
+    }
+}
+
 TEST_F(SessionValues, ModeWithSubstepsAndExactAlsoWhereThereAreObstacles) {
     Session s = session();
     s.apply(cmd::SetMode{StepMode::Substep, 8});

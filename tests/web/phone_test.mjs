@@ -1,0 +1,253 @@
+// A new user's trial of the page on a phone and a tablet (tests/web/run.sh runs it after
+// classroom_test.mjs), with the browser's own touch events (CDP Input.dispatchTouchEvent in a
+// context with touch). It checks, as that user met it:
+//   1. a phone (390x844) at a UI scale chosen too large for it (the slider dragged to its end):
+//      the panel's sheet and its << stay wholly on screen and a tap on << folds it, after a
+//      reload too (the scale is kept in the settings);
+//   2. the page's typing field lies over the program's field being typed in, and follows it to
+//      another field, so that the browser keeps that spot in view above the on-screen keyboard;
+//   3. a phone: with the sheet scrolled down, << is where it was, and one tap folds it;
+//   4. on a touch screen (a tablet at the automatic scale) the buttons, check boxes and section
+//      headers are at least 40 CSS pixels tall and wide (measured from --log-controls).
+// Screenshots are written to PSB_WEB_SHOTS (phone-*.png) for a person to look at.
+import fs from "fs";
+import path from "path";
+
+import { chromium, launchOptions } from "./chromium.mjs";
+
+const url = process.env.PSB_WEB_URL;
+const shots = process.env.PSB_WEB_SHOTS;
+fs.mkdirSync(shots, { recursive: true });
+
+let failures = 0;
+function check(ok, what) {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+}
+
+const browser = await chromium.launch(launchOptions());
+const errors = [];
+
+/// A page of the program in a fresh context: `viewport`, fingers only.
+async function open(viewport, options = {}) {
+  const context = await browser.newContext({ viewport, hasTouch: true, ...options });
+  const page = await context.newPage();
+  page.on("pageerror", (e) => errors.push(e.message));
+  const cdp = await context.newCDPSession(page);
+  const p = {
+    page, context, cdp,
+    log: () => page.evaluate(() => window.psbLog.slice()),
+    title: () => page.title(),
+    shot: (name) => page.screenshot({ path: path.join(shots, `phone-${name}.png`) }),
+    async waitFor(what, test, seconds = 10) {
+      for (let t = 0; t < seconds * 10; t++) {
+        if (await test()) return true;
+        await page.waitForTimeout(100);
+      }
+      console.log(`  (timed out waiting for ${what})`);
+      return false;
+    },
+    async lines(re) {
+      return (await p.log()).filter((l) => re.test(l));
+    },
+    /// The panel's control `name` from --log-controls: its centre, CSS pixels.
+    async control(name) {
+      const l = await p.lines(new RegExp(`^\\[I\\] Control ${escape(name)} at `));
+      if (l.length === 0) return null;
+      const m = l[l.length - 1].match(/ at (-?\d+) (-?\d+)$/);
+      return { x: +m[1], y: +m[2] };
+    },
+    /// Its extent, CSS pixels: { x0, y0, x1, y1 }.
+    async extent(name) {
+      const l = await p.lines(new RegExp(`^\\[I\\] Control ${escape(name)} spans `));
+      if (l.length === 0) return null;
+      const m = l[l.length - 1].match(/ spans (-?\d+) (-?\d+) (-?\d+) (-?\d+)$/);
+      return { x0: +m[1], y0: +m[2], x1: +m[3], y1: +m[4] };
+    },
+    touch: (type, points) => cdp.send("Input.dispatchTouchEvent", {
+      type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) }),
+    async tap(at) {
+      await p.touch("touchStart", [[at.x, at.y]]);
+      await page.waitForTimeout(80);
+      await p.touch("touchEnd", []);
+      await page.waitForTimeout(300);
+    },
+    async drag(from, to, steps = 12) {
+      await p.touch("touchStart", [[from.x, from.y]]);
+      for (let k = 1; k <= steps; k++) {
+        await p.touch("touchMove", [[from.x + (to.x - from.x) * k / steps,
+                                     from.y + (to.y - from.y) * k / steps]]);
+        await page.waitForTimeout(16);
+      }
+      await p.touch("touchEnd", []);
+    },
+    /// The panel's control `name`, scrolled into reach by a finger dragged along the panel.
+    async reach(name, height, x = 150) {
+      for (let k = 0; k < 8; k++) {
+        const c = await p.control(name);
+        if (!c || (c.y >= 100 && c.y <= height - 80)) return c;
+        const by = Math.max(-300, Math.min(300, c.y - height / 2));
+        await p.drag({ x, y: height / 2 + by / 2 }, { x, y: height / 2 - by / 2 }, 10);
+        await page.waitForTimeout(1000);
+      }
+      return p.control(name);
+    },
+  };
+  return p;
+}
+
+function escape(s) {
+  return s.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
+}
+
+async function started(p, query) {
+  await p.page.goto(url + query);
+  return p.waitFor("the program", async () => /particles/.test(await p.title()), 60);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1 and 3. A phone, fingers only: the UI scale dragged to its end, the sheet scrolled.
+{
+  const W = 390, H = 844;
+  const p = await open({ width: W, height: H }, { deviceScaleFactor: 3, isMobile: true });
+  check(await started(p, "?log-controls&seed=7&paused"), "the page starts on a phone");
+  await p.page.waitForTimeout(800);
+  await p.tap(await p.control("open panel"));
+  await p.waitFor("the panel", async () => (await p.control("fold panel")) !== null, 3);
+  await p.page.waitForTimeout(500);
+
+  // 1. The scale slider dragged to its right end by a finger.
+  const scale = await p.reach("UI scale", H, 200);
+  const scaleSaid = /^\[I\] UI scale \d+ %/;
+  const n0 = (await p.lines(scaleSaid)).length;
+  if (scale) await p.drag({ x: scale.x - 20, y: scale.y }, { x: W - 5, y: scale.y + 2 }, 14);
+  await p.waitFor("the scale", async () => (await p.lines(scaleSaid)).length > n0, 3);
+  await p.page.waitForTimeout(1200);
+  await p.shot("1-scale-dragged");
+  const said = (await p.lines(scaleSaid)).pop() || "nothing said";
+  check(/^\[I\] UI scale [23]\d\d %, shown at 1[56]\d %, the most this page's width allows/
+          .test(said), `a scale too large for a phone is used at the most it allows: ${said}`);
+  const onScreen = async (what) => {
+    const fold = await p.extent("fold panel");
+    const sheet = await p.extent("UI scale");
+    const whole = fold && fold.x0 >= 0 && fold.x1 <= W && fold.x1 - fold.x0 >= 40 &&
+                  fold.y1 - fold.y0 >= 40 && fold.y0 >= 0;
+    check(whole, `${what}: << wholly on screen and a finger wide: ${JSON.stringify(fold)}`);
+    check(sheet && sheet.x1 <= W, `${what}: the sheet's rows end on screen: ${JSON.stringify(sheet)}`);
+    return fold;
+  };
+  // Folded, the strip's >> is drawn again (logged anew).
+  const strips = async () => (await p.lines(/^\[I\] Control open panel at /)).length;
+  let fold = await onScreen("at the scale chosen");
+  const most = await p.control("UI scale most");
+  check(most !== null, "the Show section says the scale is the most the page allows");
+  let strips0 = await strips();
+  if (fold) await p.tap({ x: (fold.x0 + fold.x1) / 2, y: (fold.y0 + fold.y1) / 2 });
+  await p.waitFor("the fold", async () => (await strips()) > strips0, 3);
+  check((await strips()) > strips0, "a tap on << folds the sheet");
+  await p.shot("2-folded");
+
+  // ... and after a reload (the scale is kept in the browser's settings).
+  await p.page.waitForTimeout(1500);  // the settings written
+  check(await started(p, "?log-controls&seed=7&paused"), "the page starts again");
+  await p.page.waitForTimeout(800);
+  const kept = (await p.lines(/^\[I\] UI scale/)).pop();
+  await p.tap(await p.control("open panel"));
+  await p.waitFor("the panel", async () => (await p.control("fold panel")) !== null, 3);
+  await p.page.waitForTimeout(500);
+  await p.shot("3-reloaded");
+  fold = await onScreen(`after a reload (${kept || "no settings line"})`);
+
+  // 3. Scrolled down, the sheet keeps << where it was, and one tap folds it.
+  const top = await p.extent("fold panel");
+  const readouts0 = await p.control("section Readouts");
+  for (let k = 0; k < 3; k++) {
+    await p.drag({ x: 200, y: 700 }, { x: 200, y: 250 }, 14);
+    await p.page.waitForTimeout(900);
+  }
+  const readouts1 = await p.control("section Readouts");
+  const after = await p.extent("fold panel");
+  await p.shot("4-scrolled");
+  check(readouts0 && readouts1 && readouts0.y - readouts1.y > 300,
+        `the sheet scrolled: the Readouts ${readouts0 && readouts0.y} -> ${readouts1 && readouts1.y}`);
+  check(top && after && after.y0 === top.y0 && after.x0 === top.x0,
+        `<< stays where it was: ${JSON.stringify(top)} -> ${JSON.stringify(after)}`);
+  strips0 = await strips();
+  if (after) await p.tap({ x: (after.x0 + after.x1) / 2, y: (after.y0 + after.y1) / 2 });
+  await p.waitFor("the fold", async () => (await strips()) > strips0, 3);
+  check((await strips()) > strips0, "one tap on << folds the scrolled sheet");
+  await p.shot("5-folded-from-below");
+  await p.context.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2 and 4. A tablet, fingers only, at the automatic scale.
+{
+  const W = 1024, H = 768;
+  const p = await open({ width: W, height: H });
+  check(await started(p, "?log-controls&seed=7&paused"), "the page starts on a tablet");
+  await p.page.waitForTimeout(500);
+  // A first tap on the box: the page knows a finger is its pointer.
+  await p.tap({ x: 900, y: 700 });
+  await p.page.waitForTimeout(500);
+
+  // 4. Finger-sized targets.
+  const names = ["Play/Pause", "Step", "Restart", "Undo", "Stopwatch start", "Stopwatch lap",
+                 "Stopwatch reset", "section Show", "Velocity arrows", "Labels", "y up", "Spin",
+                 "Grid", "UI scale auto", "fold panel"];
+  const small = [];
+  for (const name of names) {
+    const e = await p.extent(name);
+    if (!e || e.y1 - e.y0 < 40 || e.x1 - e.x0 < 40) small.push(`${name} ${JSON.stringify(e)}`);
+  }
+  const step = await p.extent("Step");
+  check(small.length === 0, `every button and box is at least 40 px tall and wide (Step ` +
+        `${step && step.x1 - step.x0}x${step && step.y1 - step.y0}): ` +
+        (small.join("; ") || "none smaller"));
+  await p.shot("6-tablet-targets");
+
+  // 2. The typing field over the field typed in, and following it.
+  const typingRect = () => p.page.evaluate(() => {
+    const r = document.getElementById("typing").getBoundingClientRect();
+    return { x0: r.left, y0: r.top, x1: r.right, y1: r.bottom,
+             focused: document.activeElement && document.activeElement.id === "typing" };
+  });
+  const over = (r, c) => r && c && r.x0 <= c.x && c.x <= r.x1 && r.y0 <= c.y && c.y <= r.y1;
+  const scene = await p.reach("section Scene", H);
+  if (scene) await p.tap(scene);
+  await p.waitFor("the Scene section", async () => (await p.control("title")) !== null, 3);
+  const title = await p.reach("title", H);
+  if (title) await p.tap(title);
+  await p.waitFor("the typing field", async () => (await typingRect()).focused, 3);
+  await p.page.waitForTimeout(300);
+  const atTitle = await typingRect();
+  const titleNow = await p.control("title");
+  check(atTitle.focused && over(atTitle, titleNow) && atTitle.y0 > 20,
+        `the typing field lies over the title field: ${JSON.stringify(atTitle)}, the field at ` +
+        JSON.stringify(titleNow));
+  await p.page.keyboard.press("Enter");
+  await p.page.waitForTimeout(400);
+  await p.tap(await p.control("section Scene"));  // folded again
+  await p.page.waitForTimeout(300);
+  const tools = await p.reach("section Tools", H);
+  if (tools) await p.tap(tools);
+  await p.waitFor("the Tools section", async () => (await p.control("launch mass")) !== null, 3);
+  const mass = await p.reach("launch mass", H);
+  if (mass) await p.tap(mass);
+  await p.waitFor("the typing field", async () => (await typingRect()).focused, 3);
+  await p.page.waitForTimeout(300);
+  const atMass = await typingRect();
+  const massNow = await p.control("launch mass");
+  await p.shot("7-typing-mass");
+  check(atMass.focused && over(atMass, massNow) && Math.abs(atMass.y0 - atTitle.y0) > 5,
+        `... and follows the field typed in to the launch mass: ${JSON.stringify(atMass)}, the ` +
+        `field at ${JSON.stringify(massNow)}`);
+  await p.page.keyboard.press("Escape");
+  await p.page.waitForTimeout(300);
+  await p.context.close();
+}
+
+check(errors.length === 0, "no script errors" + (errors.length ? ": " + errors.join("; ") : ""));
+await browser.close();
+console.log(failures === 0 ? "phone: all checks passed" : `phone: ${failures} check(s) failed`);
+process.exit(failures === 0 ? 0 : 1);
