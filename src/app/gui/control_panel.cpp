@@ -183,7 +183,8 @@ void ControlPanel::keepAnchor(std::size_t firstItem) {
     // A panel that was not full cannot scroll by what it grew: blank room at its end, as much
     // as the scroll needs, kept while the scroll needs it (the user scrolling up gives it back).
     const float content = w->DC.CursorMaxPos.y - w->DC.CursorStartPos.y;
-    const float shown = w->Size.y - 2.f * ImGui::GetStyle().WindowPadding.y;
+    // (The inner rectangle: the pinned top line takes its height off what the panel shows.)
+    const float shown = w->InnerRect.GetHeight() - 2.f * ImGui::GetStyle().WindowPadding.y;
     const float reach = std::max(0.f, content - shown);
     // Only an anchor's move makes room: content that went away under a scroll nobody anchored
     // (the card gone at a restart) lets the scroll come back within what is left, or the panel
