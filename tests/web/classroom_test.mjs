@@ -475,7 +475,7 @@ async function started(p, query) {
   const data = await reach("section Data");
   if (data) await p.tap(data);
   await p.waitFor("the Data section", async () => (await p.control("Copy values")) !== null, 3);
-  const copy = await p.control("Copy values");
+  const copy = await reach("Copy values");
   if (copy) await p.tap(copy);
   await p.waitFor("the copy", async () => (await count(/Copied|Could not copy/)) > 0, 5);
   const clip = await p.page.evaluate(() => navigator.clipboard.readText().catch((e) => "error: " + e));
