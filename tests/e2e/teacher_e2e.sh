@@ -80,8 +80,8 @@ SNAPS=$((SNAPS + 1))
 png=$(grep "Saved screenshot" "$LOG" | tail -1 | sed -E 's/.*Saved screenshot (.*)$/\1/')
 mv "$png" "$OUT/7-dragging.png"
 mv "${png%.png}.txt" "$OUT/7-dragging.txt"
-section 7-dragging Messages | grep -q "Paused: let go and the particle keeps its speed" ||
-    fail "while dragging paused nothing says the speed is kept: $(section 7-dragging Messages)"
+section 7-dragging Messages | grep -q "Paused: let go moving and the particle takes the hand.s" ||
+    fail "while dragging paused nothing says what the let-go does: $(section 7-dragging Messages)"
 released=$(grep "\[I\] Released particle" "$LOG" | tail -1)
 grep -q "velocity \[0.00, 0.00\]" <<<"$released" && fail "let go at rest: $released"
 wait_log "Flung at .* while paused: Space sets it moving"
