@@ -24,6 +24,7 @@ import fs from "fs";
 import path from "path";
 
 import { chromium, launchOptions } from "./chromium.mjs";
+import { fingerPage } from "./fingers.mjs";
 
 const url = process.env.PSB_WEB_URL;
 const shots = process.env.PSB_WEB_SHOTS;
@@ -40,35 +41,11 @@ const errors = [];
 
 /// A page of the program in a fresh context: `viewport`, touch or not.
 async function open(viewport, options = {}) {
-  const context = await browser.newContext({
-    viewport, hasTouch: true, acceptDownloads: true, ...options,
+  const p = await fingerPage(browser, {
+    viewport, options: { acceptDownloads: true, ...options }, shots, prefix: "classroom", errors,
   });
-  const page = await context.newPage();
-  page.on("pageerror", (e) => errors.push(e.message));
-  const cdp = await context.newCDPSession(page);
-  const p = {
-    page, context, cdp,
-    log: () => page.evaluate(() => window.psbLog.slice()),
-    title: () => page.title(),
-    async shot(name) {
-      return (await page.screenshot({ path: path.join(shots, `classroom-${name}.png`) }))
-        .toString("base64");
-    },
-    async waitFor(what, test, seconds = 10) {
-      for (let t = 0; t < seconds * 10; t++) {
-        if (await test()) return true;
-        await page.waitForTimeout(100);
-      }
-      console.log(`  (timed out waiting for ${what})`);
-      return false;
-    },
-    /// The panel's control `name` from --log-controls: its centre, CSS pixels.
-    async control(name) {
-      const lines = (await p.log()).filter((l) => l.startsWith(`[I] Control ${name} at `));
-      if (lines.length === 0) return null;
-      const m = lines[lines.length - 1].match(/ at (-?\d+) (-?\d+)$/);
-      return { x: +m[1], y: +m[2] };
-    },
+  const page = p.page;
+  Object.assign(p, {
     /// What the status line `name` says, from --log-controls.
     async says(name) {
       const lines = (await p.log()).filter((l) => l.startsWith(`[I] Control ${name} says `));
@@ -77,23 +54,6 @@ async function open(viewport, options = {}) {
     async lastTooltip() {
       const lines = (await p.log()).filter((l) => l.startsWith("[I] Tooltip "));
       return lines.length ? lines[lines.length - 1].slice("[I] Tooltip ".length) : null;
-    },
-    touch: (type, points) => cdp.send("Input.dispatchTouchEvent", {
-      type, touchPoints: points.map(([x, y], id) => ({ x, y, id })) }),
-    async tap(at) {
-      await p.touch("touchStart", [[at.x, at.y]]);
-      await page.waitForTimeout(80);
-      await p.touch("touchEnd", []);
-      await page.waitForTimeout(300);
-    },
-    async drag(from, to, steps = 12) {
-      await p.touch("touchStart", [[from.x, from.y]]);
-      for (let k = 1; k <= steps; k++) {
-        await p.touch("touchMove", [[from.x + (to.x - from.x) * k / steps,
-                                     from.y + (to.y - from.y) * k / steps]]);
-        await page.waitForTimeout(16);
-      }
-      await p.touch("touchEnd", []);
     },
     /// Pixels of rect that differ between two screenshots (base64 PNGs).
     changed: (a, b, rect) => page.evaluate(async ([a, b, rect]) => {
@@ -127,7 +87,7 @@ async function open(viewport, options = {}) {
         return s.display !== "none" && s.visibility !== "hidden" && r.width > 0 && r.height > 0;
       })
       .map((e) => e.id || e.tagName)),
-  };
+  });
   return p;
 }
 
