@@ -23,11 +23,15 @@ void AnalysisOverlays::draw(SDL_Renderer* renderer, const Font& font, const Worl
         for (const double m : world.particles().mass)
             mass += m;
         // Side by side in a band under the box, each column the next plots.
-        for (int k = 0; k < layout.plotColumns && k * layout.plotRows < 4; ++k) {
-            plots_.draw(renderer, font, series, plotColumn(layout, k),
-                        std::min(layout.plotRows, 4 - k * layout.plotRows), layout.plotRowHeight,
-                        mass, rateWindow, colours, view.yUp, chartLineWidth(view.uiScaleInUse()),
-                        k * layout.plotRows);
+        // The plots that fit (plotsChosen): the momentum's first.
+        const std::vector<int> chosen = plotsChosen(plotsShown(layout));
+        const auto count = static_cast<int>(chosen.size());
+        for (int k = 0; k < layout.plotColumns && k * layout.plotRows < count; ++k) {
+            const auto from = chosen.begin() + k * layout.plotRows;
+            const std::vector<int> which(
+                from, from + std::min(layout.plotRows, count - k * layout.plotRows));
+            plots_.draw(renderer, font, series, plotColumn(layout, k), layout.plotRowHeight, mass,
+                        rateWindow, colours, view.yUp, chartLineWidth(view.uiScaleInUse()), which);
         }
         if (layout.plotsNote > 0) {
             // Under the rows, in the panel's frame: which plots are left out.

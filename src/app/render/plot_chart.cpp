@@ -48,38 +48,49 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 }
 
 void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
-                     const PixelRect& box, int rows, int rowHeight, double totalMass,
-                     double rateWindow, const Palette& colours, bool yUp, float lineWidth,
-                     int firstPlot) {
+                     const PixelRect& box, int rowHeight, double totalMass, double rateWindow,
+                     const Palette& colours, bool yUp, float lineWidth,
+                     const std::vector<int>& which) {
     boxes_.clear();
     text_.clear();
-    firstPlot = std::clamp(firstPlot, 0, 3);
-    rows = std::clamp(rows, 1, 4 - firstPlot);
+    std::vector<int> chosen;
+    for (const int k : which)
+        if (k >= 0 && k < kPlotCount) chosen.push_back(k);
+    if (which.empty()) chosen = {0, 1, 2, 3};
+    if (chosen.empty()) return;
+    const int rows = static_cast<int>(chosen.size());
     const float lh = static_cast<float>(font.lineHeight());
     const float x = static_cast<float>(box.x), y = static_cast<float>(box.y);
     const float width = static_cast<float>(box.w), rowH = static_cast<float>(rowHeight);
     boxes_.quad(x, y, x + width, y + static_cast<float>(box.h), sdlColor(colours.panel));
     const SDL_Color axis = sdlColor(colours.axis), grey = sdlColor(colours.tickText);
 
-    const std::string rateTitle = collisionRateTitle(rateWindow);
     struct Plot {
-        const char* title;
+        std::string title;
         double (*value)(const ObservablesSample&);
         SDL_Color color;
         double sign = 1.0;  ///< -1: py with y up (the world's y points down)
     };
     const Plot all[4] = {
-        {"kinetic energy (J)", [](const ObservablesSample& s) { return s.kineticEnergy; },
+        {"", [](const ObservablesSample& s) { return s.kineticEnergy; },
          sdlColor(colours.energyPlot)},
-        {"momentum px (kg m/s)", [](const ObservablesSample& s) { return s.momentum.x(); },
-         sdlColor(colours.pxPlot)},
-        {"momentum py (kg m/s)", [](const ObservablesSample& s) { return s.momentum.y(); },
-         sdlColor(colours.pyPlot), yUp ? -1.0 : 1.0},
-        {rateTitle.c_str(), [](const ObservablesSample& s) { return s.collisionRate; },
+        {"", [](const ObservablesSample& s) { return s.momentum.x(); }, sdlColor(colours.pxPlot)},
+        {"", [](const ObservablesSample& s) { return s.momentum.y(); }, sdlColor(colours.pyPlot),
+         yUp ? -1.0 : 1.0},
+        {"", [](const ObservablesSample& s) { return s.collisionRate; },
          sdlColor(colours.ratePlot)},
     };
-
-    const Plot* const plots = all + firstPlot;
+    std::vector<Plot> plots;
+    std::vector<int> kinds;
+    for (const int k : chosen) {
+        Plot p = all[k];
+        // The brief title where the full one would run past the frame (four side by side).
+        p.title = plotTitle(k, rateWindow);
+        if (static_cast<float>(font.measure(p.title) + 2 * kChartPad) > width)
+            p.title = plotTitle(k, rateWindow, true);
+        plots.push_back(std::move(p));
+        kinds.push_back(k);
+    }
     const std::size_t n = series.size();
     double meanEnergy = 0.0;
     for (std::size_t k = 0; k < n; ++k)
@@ -100,7 +111,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     std::size_t firsts[4] = {n, n, n, n};
     std::vector<std::string> labels;
     for (int k = 0; k < rows && n >= 2; ++k) {
-        const Plot& pl = plots[k];
+        const Plot& pl = plots[static_cast<std::size_t>(k)];
         // A sample without a value (the rate before a whole window has run) is left out.
         std::size_t first = 0;
         while (first < n && std::isnan(pl.value(series[first])))
@@ -112,9 +123,9 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
             hi = std::max(hi, v);
         }
         PlotRange& r = ranges[k];
-        if (firstPlot + k == 0) {
+        if (kinds[static_cast<std::size_t>(k)] == 0) {
             r = plotRange(lo, hi, 0.01 * std::max(std::abs(meanEnergy), 1e-300));
-        } else if (firstPlot + k < 3) {
+        } else if (kinds[static_cast<std::size_t>(k)] < 3) {
             r = plotRange(lo, hi, 0.01 * std::max(momentumScale, 1e-300));
         } else {
             r = plotRange(0.0, std::max(hi, 1.0), 1.0);  // a rate starts at 0
@@ -130,7 +141,7 @@ void PlotChart::draw(SDL_Renderer* renderer, const Font& font, const TimeSeries&
     std::vector<std::pair<SDL_Color, std::size_t>> lines;  // colour, end index in line_
     line_.clear();
     for (int k = 0; k < rows; ++k) {
-        const Plot& pl = plots[k];
+        const Plot& pl = plots[static_cast<std::size_t>(k)];
         const PlotRowPlace& row = place.rows[static_cast<std::size_t>(k)];
         const float top = row.top, bottom = row.bottom;
         // The title from the frame's padding: from the axis, a long one ran past its right edge.

@@ -46,15 +46,16 @@ void layoutYTicks(const Font& font, double lo, double hi, float left,
 
 class PlotChart {
   public:
-    /// Draws `rows` (1-4) of the plots energy, px, py, rate from the `firstPlot` (0: energy), each
-    /// `rowHeight` pixels (title and axis included), in `box` (pixels, see PanelLayout);
-    /// `totalMass` (kg) sets the momentum plots' floor; `rateWindow` (s) names the rate's
-    /// window in its title; `yUp`: py upward (the y up option); `lineWidth` pixels
+    /// Draws the plots `which` (0 energy, 1 px, 2 py, 3 rate: plotsChosen; empty: all four),
+    /// one a row, each `rowHeight` pixels (title and axis included), in `box` (pixels, see
+    /// PanelLayout); `totalMass` (kg) sets the momentum plots' floor; `rateWindow` (s) names
+    /// the rate's window in its title (the brief title, plotTitle, where the full one is wider
+    /// than the frame); `yUp`: py upward (the y up option); `lineWidth` pixels
     /// (chartLineWidth). Nothing but the frame when `series` has fewer than 2 samples.
     void draw(SDL_Renderer* renderer, const Font& font, const TimeSeries& series,
-              const PixelRect& box, int rows, int rowHeight, double totalMass, double rateWindow,
+              const PixelRect& box, int rowHeight, double totalMass, double rateWindow,
               const Palette& colours = palette(Theme::Dark), bool yUp = false,
-              float lineWidth = 1.f, int firstPlot = 0);
+              float lineWidth = 1.f, const std::vector<int>& which = {});
 
   private:
     GeometryBatch boxes_, text_, thick_;  // thick_: the curves wider than a pixel

@@ -8,10 +8,12 @@
 #include "session/session.hpp"
 #include "view/bin_numbers.hpp"
 #include "view/box_area.hpp"
+#include "view/chart_text.hpp"
 #include "view/hud.hpp"
 #include "view/inspector_lines.hpp"
 #include "view/mass_shade.hpp"
 #include "view/momentum_view.hpp"
+#include "view/plot_scale.hpp"
 #include "view/pressure_plot.hpp"
 
 namespace psb::app {
@@ -325,6 +327,16 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     }
     // Under the plots, the names of those left out for want of room.
     req.plotsNote = labelFont.lineHeight() + 4;
+    {
+        // Side by side under the box, a plot is as narrow as its brief title, or its y axis's
+        // labels and three lines' worth of curve, allow: the lesson's four at 200 %.
+        int least =
+            yAxisRoom(labelFont, {"t (s)  ", "-10.00"}, 78) + 8 + 3 * labelFont.lineHeight();
+        for (int k = 0; k < kPlotCount; ++k)
+            least = std::max(
+                least, labelFont.measure(plotTitle(k, session.rateWindow(), true)) + 2 * kChartPad);
+        req.plotColumnLeast = least;
+    }
     // Long messages wrap within the room right of the control panel and left of the side
     // column's charts (a message of three lines under the column took a row of plots away
     // while it showed), beside the inspector when that leaves them room; the newest messages
@@ -333,8 +345,8 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     const int besideInspector =
         messageRoom - textBoxSize(hudFont, o.inspector).x - kPanelGap - kPanelMargin;
     const bool beside = !o.inspector.empty() && besideInspector >= kMinMessageRoom;
-    o.messages = messageLines(hudFont, stats.messages, (beside ? besideInspector : messageRoom) - 8,
-                              kMessageLines);
+    const int messageWidth = beside ? besideInspector : messageRoom;
+    o.messages = messageLines(hudFont, stats.messages, messageWidth - 8, kMessageLines);
     o.messagesAfterCapture = stats.video.recording;
 
     req.hud = textBoxSize(hudFont, o.hud);
@@ -378,6 +390,24 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
                    static_cast<int>(std::floor(b.topLeft.y())) - wall,
                    static_cast<int>(std::ceil(b.size.x())) + 2 * wall + 1,
                    static_cast<int>(std::ceil(b.size.y())) + 2 * wall + 1};
+    }
+    if (req.legend.x > 0 && !o.messages.empty()) {
+        // The legend stands where it would with no message: where that is in the messages'
+        // band (right of them, under the plots' band), they wrap left of it. A message as wide
+        // as the band sent the legend into the plots' band, which lost a plot to it for as long
+        // as the message showed, in the video too.
+        LayoutRequest quiet = req;
+        quiet.messages = {0, 0};
+        quiet.recording = {0, 0};
+        const PixelRect legend = layoutPanels(quiet).legend;
+        const int bandTop = req.height - kPanelMargin -
+                            textBoxSize(hudFont, std::vector<std::string>(kMessageLines, "0")).y;
+        const int besideLegend = legend.x - kPanelGap - left;
+        if (legend.w > 0 && legend.y + legend.h > bandTop && besideLegend < messageWidth &&
+            besideLegend >= kMinMessageRoom) {
+            o.messages = messageLines(hudFont, stats.messages, besideLegend - 8, kMessageLines);
+            req.messages = textBoxSize(hudFont, o.messages);
+        }
     }
     if (f.recordingMark) {
         // Its red dot and the plate's margin left of the text (DrawLayer::drawRecordingMark).

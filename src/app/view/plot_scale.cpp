@@ -81,4 +81,21 @@ std::string collisionRateTitle(double windowSeconds) {
     return buf;
 }
 
+std::string plotTitle(int plot, double windowSeconds, bool brief) {
+    switch (plot) {
+        case 0:
+            return brief ? "energy (J)" : "kinetic energy (J)";
+        case 1:
+            return brief ? "px (kg m/s)" : "momentum px (kg m/s)";
+        case 2:
+            return brief ? "py (kg m/s)" : "momentum py (kg m/s)";
+        default: {
+            if (!brief) return collisionRateTitle(windowSeconds);
+            char buf[64];
+            std::snprintf(buf, sizeof buf, "coll./s, %.2g s", windowSeconds);
+            return buf;
+        }
+    }
+}
+
 }  // namespace psb::app

@@ -42,4 +42,11 @@ struct AxisTicks {
 /// (Monitor::rateWindow): "collisions/s, last 0.5 s".
 [[nodiscard]] std::string collisionRateTitle(double windowSeconds);
 
+/// The plots (K), in their order on screen: kinetic energy, momentum px and py, collision rate.
+inline constexpr int kPlotCount = 4;
+/// The title of plot `plot` (0-3, as kPlotCount orders them) for a rate counted over
+/// `windowSeconds`: "momentum px (kg m/s)"; `brief`, the form for a plot in a narrow column
+/// (four side by side under the box at 200 %): "px (kg m/s)", "coll./s, 0.5 s".
+[[nodiscard]] std::string plotTitle(int plot, double windowSeconds, bool brief = false);
+
 }  // namespace psb::app

@@ -7,12 +7,23 @@
 
 namespace psb::app {
 
+std::vector<int> plotsChosen(int shown) {
+    // What a lesson reads first: the momentum (px, then py), then the energy, then the rate.
+    static const int priority[4] = {1, 2, 0, 3};
+    std::vector<int> out(priority, priority + std::clamp(shown, 0, 4));
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 std::string plotsLeftOutNote(int shown) {
     static const char* const names[4] = {"energy", "px", "py", "rate"};
+    const std::vector<int> chosen = plotsChosen(shown);
     std::string out;
-    for (int k = std::clamp(shown, 0, 4); k < 4; ++k)
+    for (int k = 0; k < 4; ++k) {
+        if (std::find(chosen.begin(), chosen.end(), k) != chosen.end()) continue;
         out += std::string(out.empty() ? "" : ", ") + names[k];
-    return out.empty() ? out : "No room for " + out;
+    }
+    return out.empty() ? out : "No room: " + out;
 }
 
 bool overlaps(const PixelRect& a, const PixelRect& b) {
@@ -132,12 +143,24 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
     // keep off it (below the box, the legend was drawn over by the plots).
     const PixelRect chartsBand =
         r.chartsBand.w > 0 && (r.plots || r.speeds) ? r.chartsBand : PixelRect{};
+    // What of the band the plots alone take: their rows at their least (a row, or as many as
+    // the band holds), the rest of its height free for the legend below them, so that it does
+    // not take the plots' width (the lesson's four at 200 % stand side by side in the band).
+    PixelRect bandTaken = chartsBand;
+    if (chartsBand.w > 0 && r.plots && !r.speeds) {
+        const int rowMin = scaled(kPlotRowMinHeight);
+        if (chartsBand.h >= rowMin + 8) {
+            const int rows = std::clamp((chartsBand.h - 8) / rowMin, 1, 4);
+            const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (chartsBand.h - 8) / rows);
+            bandTaken.h = std::min(chartsBand.h, rows * rowHeight + 8);
+        }
+    }
     // The highest free place for a panel of `size`, then the rightmost, in the room right of
     // the control panel above `bottom`: clear of the box, the HUD, the charts' band and the
     // panels placed so far. Its edges are tried against each of theirs (none: w == 0).
     const auto freePlace = [&](PixelPoint size) {
         const std::vector<PixelRect> taken = {r.box,    l.hud,     l.messages, l.inspector,
-                                              l.values, l.profile, l.legend,   chartsBand};
+                                              l.values, l.profile, l.legend,   bandTaken};
         std::vector<int> xs{right - size.x, left}, ys{top};
         for (const PixelRect& t : taken) {
             if (t.w <= 0) continue;
@@ -164,7 +187,7 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
         if (out == &l.profile && !fits) continue;
         if (size.x <= 0 || size.y <= 0 || size.x > room) continue;
         PixelRect box = place(size, top);
-        if (overlaps(box, r.box) || overlaps(box, chartsBand)) {
+        if (overlaps(box, r.box) || overlaps(box, bandTaken)) {
             // Over the box's corner: another place; the column's charts start below it where
             // it stands over them.
             box = freePlace(size);
@@ -192,7 +215,14 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
         if (l.inspector.w > 0 && l.inspector.y < band.y + band.h) {
             band.w = std::min(band.w, l.inspector.x - gap - band.x);
         }
-        if (overlaps(l.legend, band)) band.w = std::min(band.w, l.legend.x - gap - band.x);
+        if (overlaps(l.legend, band)) {
+            // Below the plots' rows (bandTaken): the band ends above it; else beside them.
+            if (l.legend.y >= bandTaken.y + bandTaken.h) {
+                band.h = std::min(band.h, l.legend.y - gap - band.y);
+            } else {
+                band.w = std::min(band.w, l.legend.x - gap - band.x);
+            }
+        }
         if (l.messages.w > 0 && l.messages.y < band.y + band.h) {
             band.h = l.messages.y - gap - band.y;
         }
@@ -207,7 +237,8 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
             const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
             // Too low for the plots one above the other: side by side, as many as keep each at
             // its least width (the lesson's energy and px in a band one row high).
-            const int narrowest = scaled(kPlotColumnMinWidth);
+            const int narrowest =
+                r.plotColumnLeast > 0 ? r.plotColumnLeast : scaled(kPlotColumnMinWidth);
             const int columns =
                 std::clamp(std::min((4 + rows - 1) / rows, (each + gap) / (narrowest + gap)), 1, 4);
             l.plots = {x, band.y, each, rows * rowHeight + 8};

@@ -9,13 +9,13 @@
 // to the highest free place, then the rightmost: beside the HUD or the box, above or below the
 // box, clear of the panels placed before it. The
 // column starts below the HUD when the window is too narrow for both side by side, panels shrink to
-// the room there is (the plots drop their least important rows first: rate, then py, then px), and
-// a panel that does not fit at its smallest is left out. The values table (I) docks in a band
-// along the window's bottom, right of the control panel and under everything else (valuesBand):
-// the messages, the inspector and the column sit above it; or, in a window too short for that,
-// in a column at the right below the HUD (valuesColumn), left of which the other panels go. A
-// window too narrow for the column beside the box (sideColumnFits) folds the column's panels away,
-// and says so (columnFolded), instead of laying them over the box. No two rectangles returned
+// the room there is (the plots drop their least important first: rate, then energy, then py;
+// plotsChosen), and a panel that does not fit at its smallest is left out. The values table (I)
+// docks in a band along the window's bottom, right of the control panel and under everything else
+// (valuesBand): the messages, the inspector and the column sit above it; or, in a window too short
+// for that, in a column at the right below the HUD (valuesColumn), left of which the other panels
+// go. A window too narrow for the column beside the box (sideColumnFits) folds the column's panels
+// away, and says so (columnFolded), instead of laying them over the box. No two rectangles returned
 // overlap.
 
 #include <algorithm>
@@ -147,6 +147,10 @@ struct LayoutRequest {
     /// The height of the line under the plots that names those left out for want of room
     /// (PanelLayout::plotsNote), pixels; 0: no such line.
     int plotsNote = 0;
+    /// The least width of a plot side by side with others in the band under the box, pixels:
+    /// its brief title (plotTitle) and its y axis's labels with some curve, as measured in the
+    /// charts' font; 0: kPlotColumnMinWidth × scale.
+    int plotColumnLeast = 0;
 };
 
 /// Panel rectangles in window pixels; w == 0 for a panel that is off or did not fit.
@@ -161,7 +165,7 @@ struct PanelLayout {
     PixelRect speeds{};
     PixelRect bins{};
     PixelRect values{};     ///< the values table (valuesBandRect or valuesColumnRect)
-    int plotRows = 0;       ///< plots shown, 1-4, from the top: energy, px, py, rate
+    int plotRows = 0;       ///< rows of plots shown, 1-4, of those plotsChosen picks
     int plotRowHeight = 0;  ///< pixels per plot
     /// The plots side by side in `plots` (a band under the box too low for them one above the
     /// other): each of these columns (plotColumn) shows plotRows of them, the next ones.
@@ -174,7 +178,12 @@ struct PanelLayout {
     int plotsNote = 0;
 };
 
-/// The line under the plots when `shown` (1-3) of the four fit: "No room for px, py, rate" (a
+/// Which of the four plots (0 energy, 1 px, 2 py, 3 rate: kPlotCount) are shown when `shown`
+/// (0-4) fit, in their order on screen: the momentum's first (a collision's lesson reads px),
+/// then the energy, then the rate; px alone, px and py, energy, px and py, all four.
+[[nodiscard]] std::vector<int> plotsChosen(int shown);
+
+/// The line under the plots when `shown` (1-3) of the four fit: "No room: energy, rate" (a
 /// teacher saw the momentum lesson's px and py charts gone without a word); "" when
 /// all four fit.
 [[nodiscard]] std::string plotsLeftOutNote(int shown);

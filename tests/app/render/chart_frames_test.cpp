@@ -8,6 +8,7 @@
 #include <memory>
 #include <random>
 #include <string>
+#include <vector>
 
 #include <SDL.h>
 
@@ -82,15 +83,41 @@ TEST_F(ChartFrameTest, ThePlotsTickLabelsAndTitlesStayInTheirFrameAt200Percent) 
         s.collisions = static_cast<std::uint64_t>(k);
         series.record(s);
     }
-    for (const int rows : {2, 4}) {
+    for (const std::vector<int>& which : {std::vector<int>{1, 2}, std::vector<int>{0, 1, 2, 3}}) {
+        const int rows = static_cast<int>(which.size());
         SDL_RenderClear(sdl_);
         const int rowHeight = 2 * kPlotRowMinHeight;
         const PixelRect box{300, 100, kWidth, rows * rowHeight + 8};
         PlotChart chart;
-        chart.draw(sdl_, *big_, series, box, rows, rowHeight, 4.0, 0.5, palette(Theme::Light), true,
-                   2.f);
+        chart.draw(sdl_, *big_, series, box, rowHeight, 4.0, 0.5, palette(Theme::Light), true, 2.f,
+                   which);
         SDL_RenderPresent(sdl_);
         EXPECT_EQ(outside(box), 0) << rows << " rows: pixels drawn outside the plots' frame";
+    }
+}
+
+TEST_F(ChartFrameTest, FourPlotsSideBySideUnderTheBoxKeepTheirTitlesInTheirFrames) {
+    // Lesson 1 at 200 % in 1600 x 1000: the four plots stand side by side in the band under
+    // the box, each 271 pixels wide; "momentum px (kg m/s)" and "collisions/s, last 0.5 s"
+    // would run past a frame that narrow: the brief titles ("px (kg m/s)") stay in it.
+    TimeSeries series(120);
+    for (int k = 0; k < 120; ++k) {
+        ObservablesSample s;
+        s.time = k / 60.0;
+        s.kineticEnergy = 3.5;
+        s.momentum = Vec2(-1.0, 0.0);
+        s.collisions = static_cast<std::uint64_t>(k / 30);
+        series.record(s);
+    }
+    const int each = (1104 - 3 * kPanelGap) / 4;
+    for (int plot = 0; plot < kPlotCount; ++plot) {
+        SDL_RenderClear(sdl_);
+        const PixelRect box{300, 100, each, 2 * kPlotRowMinHeight + 8};
+        PlotChart chart;
+        chart.draw(sdl_, *big_, series, box, 2 * kPlotRowMinHeight, 4.0, 0.5, palette(Theme::Light),
+                   true, 2.f, {plot});
+        SDL_RenderPresent(sdl_);
+        EXPECT_EQ(outside(box), 0) << "plot " << plot << ": pixels outside its frame";
     }
 }
 

@@ -23,6 +23,7 @@
 #include "view/label_places.hpp"
 #include "view/overlays.hpp"
 #include "view/particle_labels.hpp"
+#include "view/plot_scale.hpp"
 #include "view/projector_fixture.hpp"
 
 namespace psb::app {
@@ -361,12 +362,56 @@ TEST(Plots, OnTheProjectorAThreeLineMessageMovesNoPlotNorTheLegend) {
     }
 }
 
+TEST(Plots, OnTheProjectorLessonOneShowsAllFourAndAThreeLineMessageMovesNone) {
+    // Lesson 1 at 200 % in 1600 x 1000 with the momenta (V) and the plots (K), recording a
+    // video: Ctrl+R's message of three lines took the momentum legend's place below the box,
+    // the legend went into the plots' band, and py went with the rate ("No room for py,
+    // rate"), on the screen and in the video, for as long as the message showed. The rate
+    // never fitted at all. All four stand side by side under the box now, the legend below
+    // them, and the message wraps left of it.
+    const test::FixedMeasure font(2.0);
+    const Session s =
+        test::onTheProjector(test::lessonWorld(), {ShowOption::Momentum, ShowOption::Plots});
+    FrameStats quiet, loud;
+    quiet.video.recording = loud.video.recording = true;
+    loud.messages = {
+        "Recording video (MP4, 1120x1000, 60 frames/s) to "
+        "/home/teacher/lessons/particle-sandbox-20261207-182400.mp4: Ctrl+R stops "
+        "(the panel's Video section has the format and the panel's part in it)"};
+    const FrameView a = buildFrame(s, quiet, font, font, test::kProjector);
+    const FrameView b = buildFrame(s, loud, font, font, test::kProjector);
+    ASSERT_EQ(b.overlays.messages.size(), kMessageLines) << "the case, a message of three lines";
+    for (const FrameView* f : {&a, &b}) {
+        const char* when = f == &a ? "without the message" : "with it";
+        EXPECT_EQ(plotsShown(f->layout), 4)
+            << when << ": " << plotsLeftOutNote(plotsShown(f->layout));
+        EXPECT_EQ(f->layout.plotsNote, 0) << when;
+        PanelLayout shown = f->layout;
+        shown.recording = {};  // not in the video: it keeps clear of the HUD as the screen shows it
+        const std::vector<PixelRect> all = panelRects(shown);
+        for (std::size_t i = 0; i < all.size(); ++i)
+            for (std::size_t j = i + 1; j < all.size(); ++j)
+                EXPECT_FALSE(overlaps(all[i], all[j])) << when << ": panels " << i << ", " << j;
+        // Each plot's brief title, at least, within its frame.
+        for (int k = 0; k < f->layout.plotColumns; ++k) {
+            const PixelRect c = plotColumn(f->layout, k);
+            EXPECT_LE(font.measure(plotTitle(k, s.rateWindow(), true)) + 2 * kChartPad, c.w)
+                << when << ": plot " << k;
+        }
+    }
+    EXPECT_EQ(b.layout.plots, a.layout.plots);
+    EXPECT_EQ(b.layout.plotRows, a.layout.plotRows);
+    EXPECT_EQ(b.layout.plotColumns, a.layout.plotColumns);
+    EXPECT_EQ(b.layout.legend, a.layout.legend);
+    EXPECT_GT(b.layout.messages.w, 0) << "the message is shown";
+}
+
 TEST(Plots, OnTheProjectorThePlotsLeftOutForWantOfRoomAreNamed) {
     // Lesson 1 at 200 % with the values table and the plots: only the energy's chart showed,
-    // px, py and the rate were gone without a word (the gas says when its charts fold away);
-    // without the table, in the band under the box, the rate never showed and nothing said so.
+    // px, py and the rate were gone without a word (the gas says when its charts fold away).
+    // The one that fits is px, the lesson's (plotsChosen).
     const test::FixedMeasure font(2.0);
-    for (const bool table : {true, false}) {
+    for (const bool table : {true}) {
         const Session s = table ? test::onTheProjector(
                                       test::lessonWorld(),
                                       {ShowOption::Momentum, ShowOption::Plots, ShowOption::Values})
@@ -380,6 +425,7 @@ TEST(Plots, OnTheProjectorThePlotsLeftOutForWantOfRoomAreNamed) {
         EXPECT_GT(f.layout.plotsNote, 0) << at << ": a line under the plots names the others";
         const std::string note = plotsLeftOutNote(shown);
         EXPECT_NE(note.find("rate"), std::string::npos) << note;
+        EXPECT_EQ(plotsChosen(shown).front(), 1) << at << ": px first";
         EXPECT_LE(font.measure(note) + 2 * kChartPad, f.layout.plots.w)
             << at << ": " << note << ": cut";
         // The rows and the note within the panel's box.

@@ -258,15 +258,27 @@ TEST(PanelLayout, APlotsColumnTooShortForAllFourNamesTheOthersUnderThem) {
     ASSERT_LT(plotsShown(l), 4) << "the case: a short window";
     EXPECT_EQ(l.plotsNote, 20);
     EXPECT_GE(l.plots.h, l.plotRows * l.plotRowHeight + 8 + l.plotsNote);
-    EXPECT_EQ(plotsLeftOutNote(plotsShown(l)).rfind("No room for ", 0), 0u);
+    EXPECT_EQ(plotsLeftOutNote(plotsShown(l)).rfind("No room: ", 0), 0u);
     // Tall enough for the four: no note.
     r.height = 1000;
     const PanelLayout tall = layoutPanels(r);
     EXPECT_EQ(plotsShown(tall), 4);
     EXPECT_EQ(tall.plotsNote, 0);
     EXPECT_EQ(plotsLeftOutNote(4), "");
-    EXPECT_EQ(plotsLeftOutNote(1), "No room for px, py, rate");
-    EXPECT_EQ(plotsLeftOutNote(3), "No room for rate");
+    EXPECT_EQ(plotsLeftOutNote(1), "No room: energy, py, rate");
+    EXPECT_EQ(plotsLeftOutNote(2), "No room: energy, rate");
+    EXPECT_EQ(plotsLeftOutNote(3), "No room: rate");
+}
+
+TEST(PanelLayout, TheMomentumPlotsAreTheLastLeftOut) {
+    // Lesson 1 at 200 % with the values table: only the energy's chart fitted, and the lesson
+    // is about the momentum. Fewer plots keep px, then py, then the energy, in their order on
+    // screen.
+    EXPECT_EQ(plotsChosen(1), (std::vector<int>{1}));
+    EXPECT_EQ(plotsChosen(2), (std::vector<int>{1, 2}));
+    EXPECT_EQ(plotsChosen(3), (std::vector<int>{0, 1, 2}));
+    EXPECT_EQ(plotsChosen(4), (std::vector<int>{0, 1, 2, 3}));
+    EXPECT_TRUE(plotsChosen(0).empty());
 }
 
 TEST(PanelLayout, TheSideColumnsLeftEdgeIsWhereItsChartsStand) {
