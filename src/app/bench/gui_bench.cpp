@@ -73,7 +73,7 @@ void controlPanel() {
                                  {"Particles", "10000"},
                                  {"Kinetic energy", "1234.5 J"},
                                  {"Momentum", "(1.2, -0.4) kg m/s"},
-                                 {"Energy kept", "to 1 part in 10^14"},
+                                 {"Energy kept", "to 1 part in 10\u00b9\u2074"},
                                  {"Deepest overlap", "0 mm"}};
         for (const auto& row : rows) {
             ImGui::TableNextRow();

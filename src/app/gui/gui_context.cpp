@@ -201,8 +201,9 @@ bool GuiContext::loadFont(float pixelScale) {
     ImFontConfig config;
     config.OversampleH = 1;
     config.PixelSnapH = true;
-    // Latin-1 (ImGui's default) and Greek, for the physics' letters (omega, beta, mu, theta).
-    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0};
+    // Latin-1 (ImGui's default) and Greek, for the physics' letters (omega, beta, mu, theta),
+    // and the superscripts and subscripts, for powers of ten ("1 part in 10¹⁴").
+    static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2070, 0x209F, 0};
     if (io.Fonts->AddFontFromFileTTF(options.font.string().c_str(), options.fontPixels * pixelScale,
                                      &config, kRanges) == nullptr) {
         throw std::runtime_error("GuiContext: cannot load font " + options.font.string());

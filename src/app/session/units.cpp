@@ -48,7 +48,31 @@ std::string grouped(double v) {
     return (v < 0.0 ? "-" : "") + out;
 }
 
-/// `v` as three significant figures times a power of ten: "1.03 × 10^24".
+/// The digits of `n` raised, as a power is written: 14 -> "¹⁴", -7 -> "⁻⁷" (the panel's font
+/// and the HUD's have them: the gui loads U+2070 to U+209F).
+std::string superscript(int n) {
+    static const char* const digits[10] = {"\u2070", "\u00b9", "\u00b2", "\u00b3", "\u2074",
+                                           "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+    std::string out = n < 0 ? "\u207b" : "";
+    for (const char c : std::to_string(n < 0 ? -static_cast<long long>(n) : n))
+        out += digits[c - '0'];
+    return out;
+}
+
+/// The digits of a whole number's text grouped by thousands with spaces: "12190" -> "12 190".
+std::string groupDigits(const std::string& whole) {
+    const bool minus = !whole.empty() && whole[0] == '-';
+    const std::string s = minus ? whole.substr(1) : whole;
+    std::string out;
+    const int n = static_cast<int>(s.size());
+    for (int k = 0; k < n; ++k) {
+        if (k > 0 && (n - k) % 3 == 0) out += ' ';
+        out += s[static_cast<std::size_t>(k)];
+    }
+    return (minus ? "-" : "") + out;
+}
+
+/// `v` as three significant figures times a power of ten: "1.03 × 10²⁴".
 std::string scientific(double v) {
     int power = static_cast<int>(std::floor(std::log10(std::abs(v))));
     // In two factors: 10^-323 alone is below the smallest double.
@@ -57,7 +81,7 @@ std::string scientific(double v) {
         ++power;
         mantissa /= 10.0;
     }
-    return threeFigures(mantissa) + " \u00d7 10^" + std::to_string(power);
+    return threeFigures(mantissa) + " \u00d7 10" + superscript(power);
 }
 
 }  // namespace
@@ -109,7 +133,7 @@ std::string quantity(double value, const std::string& unit, bool prefix) {
     if (std::isinf(value)) return std::string(value < 0.0 ? "-" : "") + "infinite";
     const std::string u = unit.empty() ? "" : " " + unit;
     // Below the smallest normal double is underflow, never a measured value (a velocity decayed
-    // to 10^-323 m/s is at rest): "0", not "-3.46 × 10^-323".
+    // to 10^-323 m/s is at rest): "0", not "-3.46 × 10⁻³²³".
     if (std::abs(value) < std::numeric_limits<double>::min()) return "0" + u;
     const double a = std::abs(value);
     if (!prefix) {
@@ -134,6 +158,35 @@ std::string quantity(double value, const std::string& unit, bool prefix) {
     return threeFigures(scaled) + " " + p + unit;
 }
 
+std::string withError(double value, double error, const std::string& unit) {
+    const std::string u = unit.empty() ? "" : " " + unit;
+    if (!(error > 0.0) || !std::isfinite(error) || !std::isfinite(value))
+        return quantity(value, "", false) + " \u00b1 " + quantity(error, unit, false);
+    // Two significant figures of the error, the value to the same decimal place.
+    int decimals = 1 - static_cast<int>(std::floor(std::log10(error)));
+    if (std::round(error * std::pow(10.0, decimals)) >= 100.0) --decimals;  // 0.996 -> 1.0
+    if (decimals > 12 || decimals < -15) {
+        return quantity(value, "", false) + " \u00b1 " + quantity(error, unit, false);
+    }
+    const auto text = [decimals](double v) {
+        char buf[64];
+        if (decimals >= 0) {
+            std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+            const std::string t = buf;
+            const std::size_t point = t.find('.');
+            // Whole digits grouped as the readouts group them ("12 190.5").
+            return groupDigits(t.substr(0, point)) +
+                   (point == std::string::npos ? "" : t.substr(point));
+        }
+        const double step = std::pow(10.0, -decimals);
+        std::snprintf(buf, sizeof buf, "%.0f", std::round(v / step) * step);
+        return groupDigits(buf);
+    };
+    std::string v = text(value);
+    if (v.find_first_not_of("-0. ") == std::string::npos) v = text(0.0);  // never "-0.00"
+    return v + " \u00b1 " + text(error) + u;
+}
+
 std::string keptWords(double relativeChange) {
     if (std::isnan(relativeChange)) return "not measured";
     const double a = std::abs(relativeChange);
@@ -145,7 +198,7 @@ std::string keptWords(double relativeChange) {
         return buf;
     }
     const int power = static_cast<int>(std::floor(-std::log10(a)));
-    return "kept to 1 part in 10^" + std::to_string(power);
+    return "kept to 1 part in 10" + superscript(power);
 }
 
 std::string overlapWords(double overlap, double typicalRadius) {

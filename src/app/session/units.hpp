@@ -2,7 +2,7 @@
 // Numbers for people: three significant figures with an SI prefix for a simple unit
 // ("4.04 MJ", "1.20 mm", "9.81 m/s^2"), digits grouped by thousands for a compound one
 // ("40 390 kg m/s"), and the accuracy of a conserved quantity in words
-// ("energy kept to 1 part in 10^14"). No "4.039e+06" reaches the screen, except where a person
+// ("energy kept to 1 part in 10¹⁴"). No "4.039e+06" reaches the screen, except where a person
 // types the number back (plainNumber). Every number the app writes for people comes from here.
 
 #include <string>
@@ -13,7 +13,7 @@ namespace psb::app {
 
 /// `value` in `unit` with an SI prefix (k, M, G, T, P, E; m, µ, n, p, f, a) chosen so the
 /// number is in [1, 1000), three significant figures; zero is "0 unit"; beyond the prefixes a
-/// power of ten ("1.03 × 10^24 J"). For units a prefix would garble ("kg m/s", "m/s^2") pass
+/// power of ten ("1.03 × 10²⁴ J"). For units a prefix would garble ("kg m/s", "m/s^2") pass
 /// `prefix` false: the digits are then grouped by thousands ("12 300 kg m/s"), small values
 /// keep three significant figures ("0.00123 kg m/s"), and from a billion up or below a
 /// millionth it is a power of ten.
@@ -42,7 +42,12 @@ namespace psb::app {
 /// that a message wrapped at its spaces never breaks a vector ("[-1, / 0]").
 [[nodiscard]] std::string pair(double x, double y, int decimals = -1);
 
-/// A relative change (|change| / reference) in words: "kept to 1 part in 10^14" (the power
+/// A measured `value` and its uncertainty `error` in `unit` (no prefix, digits grouped): the
+/// error to two significant figures, the value to the same decimal place, "12.40 ± 0.26 N/m"
+/// (not "12.4 ± 0.257 N/m", an error written to more digits than the value), "12 190 ± 350".
+[[nodiscard]] std::string withError(double value, double error, const std::string& unit);
+
+/// A relative change (|change| / reference) in words: "kept to 1 part in 10¹⁴" (the power
 /// rounded down), "kept exactly" below 10^-15 (rounding of the sums), "changed by 2.3 %" at a
 /// tenth of a percent or more; "not measured" for NaN.
 [[nodiscard]] std::string keptWords(double relativeChange);

@@ -18,10 +18,9 @@ std::vector<GasLine> gasLines(const GasReading& r) {
     if (r.pressure) {
         lines.push_back(
             {"Pressure, measured",
-             // One unit for both, once, no prefix: "11.7 \u00b1 0.151 N/m" (with the unit twice
+             // One unit for both, once, no prefix: "11.70 \u00b1 0.15 N/m" (with the unit twice
              // the value wrapped over three lines at 200 %).
-             quantity(*r.pressure, "", false) + " \u00b1 " +
-                 quantity(r.pressureError, "N/m", false),
+             withError(*r.pressure, r.pressureError, "N/m"),
              (r.periodic
                   ? std::string("From the collisions (a periodic box has no walls to push): "
                                 "N kT plus half of each collision's impulse times the distance "
@@ -57,6 +56,13 @@ std::vector<GasLine> gasLines(const GasReading& r) {
                                     : "Particle-particle collisions and wall rebounds per second "
                                       "of simulated time") +
                  ", over the last " + seconds + "."});
+        // The window the rates are counted over, as the plot's title says its own ("last
+        // 0.5 s"): the rates read as if they were the plot's.
+        lines.push_back({"  over the last", plainNumber(r.window, 2) + " s",
+                         "The stretch of simulated time the pressure and the collision rates "
+                         "above are averaged over: the last 3.75 to 5 s (all of it in the first "
+                         "five seconds). The rate plot (K) counts over its own, shorter window, "
+                         "as its title says."});
     }
     return lines;
 }

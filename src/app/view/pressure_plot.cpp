@@ -65,9 +65,7 @@ std::string pressurePlotLine(const std::deque<GasHistoryPoint>& history) {
     s += std::to_string(history.size());
     s += " points; now measured ";
     if (now.pressure) {
-        s += quantity(*now.pressure, "", false);
-        s += " \u00b1 ";
-        s += quantity(now.pressureError, "N/m", false);
+        s += withError(*now.pressure, now.pressureError, "N/m");
     } else {
         s += "(window too short)";
     }

@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
             }
             const ImVec2 s0 = ImGui::GetItemRectMin();
             ImGui::Text("Pressed %d times", pressed);
-            ImGui::TextWrapped("Energy kept to 1 part in 10^14");
+            ImGui::TextWrapped("Energy kept to 1 part in 10\u00b9\u2074");
             ImGui::End();
             if (!reported) {
                 log("button " + std::to_string(static_cast<int>((b0.x + b1.x) / 2)) + " " +

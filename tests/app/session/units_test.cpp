@@ -54,27 +54,48 @@ TEST(Units, NoExponentNotationAndNonFiniteValuesInWords) {
 
 TEST(Units, PastThePrefixesAPowerOfTenNotARowOfDigits) {
     // A teacher saw "1030000000000 EJ" and a 31-digit momentum.
-    EXPECT_EQ(quantity(1.03e30, "J"), "1.03 \u00d7 10^30 J");
-    EXPECT_EQ(quantity(999.9e18, "J"), "1.00 \u00d7 10^21 J");
+    EXPECT_EQ(quantity(1.03e30, "J"), "1.03 \u00d7 10\u00b3\u2070 J");
+    EXPECT_EQ(quantity(999.9e18, "J"), "1.00 \u00d7 10\u00b2\u00b9 J");
     EXPECT_EQ(quantity(998e18, "J"), "998 EJ");
-    EXPECT_EQ(quantity(1.2e-20, "m"), "1.20 \u00d7 10^-20 m");
-    EXPECT_EQ(quantity(-1.234e31, "kg m/s", false), "-1.23 \u00d7 10^31 kg m/s");
-    EXPECT_EQ(quantity(9.996e30, "kg m/s", false), "1.00 \u00d7 10^31 kg m/s");
+    EXPECT_EQ(quantity(1.2e-20, "m"), "1.20 \u00d7 10\u207b\u00b2\u2070 m");
+    EXPECT_EQ(quantity(-1.234e31, "kg m/s", false), "-1.23 \u00d7 10\u00b3\u00b9 kg m/s");
+    EXPECT_EQ(quantity(9.996e30, "kg m/s", false), "1.00 \u00d7 10\u00b3\u00b9 kg m/s");
     EXPECT_EQ(quantity(999e6, "kg m/s", false), "999 000 000 kg m/s");
-    EXPECT_EQ(quantity(2.5e-7, "kg m/s", false), "2.50 \u00d7 10^-7 kg m/s");
-    EXPECT_EQ(quantity(2.3e-308, "J"), "2.30 \u00d7 10^-308 J");  // just above underflow
+    EXPECT_EQ(quantity(2.5e-7, "kg m/s", false), "2.50 \u00d7 10\u207b\u2077 kg m/s");
+    EXPECT_EQ(quantity(2.3e-308, "J"),
+              "2.30 \u00d7 10\u207b\u00b3\u2070\u2078 J");  // just above underflow
     // Underflow is not a value: a momentum of -3.46e-323 (a velocity decayed to nothing) is 0.
     EXPECT_EQ(quantity(5e-324, "J"), "0 J");  // the smallest double
     EXPECT_EQ(quantity(-3.46e-323, "kg m/s", false), "0 kg m/s");
-    EXPECT_EQ(quantity(-1.7976931348623157e308, "kg m/s", false), "-1.80 \u00d7 10^308 kg m/s");
+    EXPECT_EQ(quantity(-1.7976931348623157e308, "kg m/s", false),
+              "-1.80 \u00d7 10\u00b3\u2070\u2078 kg m/s");
 }
 
 TEST(Units, AccuracyInWords) {
-    EXPECT_EQ(keptWords(3e-14), "kept to 1 part in 10^13");
-    EXPECT_EQ(keptWords(-2.5e-4), "kept to 1 part in 10^3");
+    EXPECT_EQ(keptWords(3e-14), "kept to 1 part in 10\u00b9\u00b3");
+    EXPECT_EQ(keptWords(-2.5e-4), "kept to 1 part in 10\u00b3");
     EXPECT_EQ(keptWords(0.0), "kept exactly (to rounding)");
     EXPECT_EQ(keptWords(0.023), "changed by 2.30 %");
     EXPECT_EQ(keptWords(std::numeric_limits<double>::quiet_NaN()), "not measured");
+}
+
+TEST(Units, AnErrorHasTwoFiguresAndTheValueItsDecimalPlace) {
+    // The gas's pressure read "12.4 \u00b1 0.257 N/m": an error written to more digits than the
+    // value.
+    EXPECT_EQ(withError(12.4, 0.257, "N/m"), "12.40 \u00b1 0.26 N/m");
+    EXPECT_EQ(withError(12.21, 0.208, "N/m"), "12.21 \u00b1 0.21 N/m");
+    EXPECT_EQ(withError(3.0, 0.05, "N/m"), "3.000 \u00b1 0.050 N/m");
+    EXPECT_EQ(withError(2.5, 0.996, "N/m"), "2.5 \u00b1 1.0 N/m") << "0.996 rounds to 1.0";
+    EXPECT_EQ(withError(12194.0, 345.0, ""), "12 190 \u00b1 350");
+    EXPECT_EQ(withError(1234.56, 1.2, "m"), "1 234.6 \u00b1 1.2 m");
+    EXPECT_EQ(withError(-0.001, 0.25, "N/m"), "0.00 \u00b1 0.25 N/m") << "never -0.00";
+    EXPECT_EQ(withError(3.0, 0.0, "N/m"), "3.00 \u00b1 0 N/m");
+}
+
+TEST(Units, APowerOfTenIsWrittenRaised) {
+    // "10^14" was written with a caret.
+    EXPECT_EQ(keptWords(1.5e-15 * 1.5), "kept to 1 part in 10\u00b9\u2074");
+    EXPECT_EQ(quantity(2.5e-7, "kg m/s", false).find('^'), std::string::npos);
 }
 
 TEST(Units, OverlapInWords) {

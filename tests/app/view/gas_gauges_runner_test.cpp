@@ -75,8 +75,7 @@ TEST_F(GasGaugesRunner, TheGasPresetReadsInTheWindowWhatTheRunnerReportsOverTheS
     const std::vector<GasLine> lines = gasLines(*gas);
     ASSERT_GE(lines.size(), 2u);
     EXPECT_EQ(lines[0].value, quantity(m.temperature.value, "J"));
-    EXPECT_EQ(lines[1].value, quantity(m.pressureWalls.value, "", false) + " \u00b1 " +
-                                  quantity(m.pressureWalls.error, "N/m", false));
+    EXPECT_EQ(lines[1].value, withError(m.pressureWalls.value, m.pressureWalls.error, "N/m"));
 }
 
 TEST_F(GasGaugesRunner, APeriodicExactGasReadsTheRunnersVirialPressureAfterItsWarmUp) {

@@ -21,17 +21,38 @@ TEST(GasLines, ReadAsAPersonReadsThem) {
     r.pairRate = 12194;
     r.wallRate = 420;
     const auto lines = gasLines(r);
-    ASSERT_EQ(lines.size(), 5u);
+    ASSERT_EQ(lines.size(), 6u);
     EXPECT_EQ(lines[0].name, "Temperature kT");
     EXPECT_EQ(lines[0].value, "101 mJ");
     EXPECT_EQ(lines[1].name, "Pressure, measured");
-    EXPECT_EQ(lines[1].value, "12.2 \u00b1 0.208 N/m");
+    EXPECT_EQ(lines[1].value, "12.21 \u00b1 0.21 N/m") << "the error to two figures";
     EXPECT_NE(lines[1].help.find("over the last 5 s"), std::string::npos);
     EXPECT_NE(lines[1].help.find("the line their centres reach"), std::string::npos);
     EXPECT_EQ(lines[2].value, "8.36 N/m");
     EXPECT_EQ(lines[3].value, "11.9 N/m");
     EXPECT_NE(lines[3].help.find("covering 16 %"), std::string::npos);
     EXPECT_EQ(lines[4].value, "12 200 pair/s, 420 wall/s") << "never 1.22e+04";
+    // The rates say their window, as the rate plot's title says its own.
+    EXPECT_EQ(lines[5].name, "  over the last");
+    EXPECT_EQ(lines[5].value, "5 s");
+}
+
+TEST(GasLines, TheCollisionRatesSayTheWindowTheyAreCountedOver) {
+    // "Collisions 12 200 pair/s, 424 wall/s" did not say over how long; the plot and the CSV
+    // say "last 0.5 s" of theirs.
+    GasReading r;
+    r.kT = 0.1;
+    r.window = 4.61;
+    r.pressure = 12.4;
+    r.pressureError = 0.257;
+    r.pairRate = 12200;
+    r.wallRate = 424;
+    const auto lines = gasLines(r);
+    ASSERT_EQ(lines.size(), 6u);
+    EXPECT_EQ(lines[4].name, "Collisions");
+    EXPECT_EQ(lines[5].name, "  over the last");
+    EXPECT_EQ(lines[5].value, "4.6 s");
+    EXPECT_EQ(lines[1].value, "12.40 \u00b1 0.26 N/m");
 }
 
 TEST(GasLines, BeforeHalfASecondThePressureSaysItIsMeasuring) {
@@ -51,8 +72,8 @@ TEST(GasLines, APeriodicBoxsPressureIsTheCollisionsAndItHasNoWallRebounds) {
     r.pressureError = 0.05;
     r.pairRate = 5000;
     const auto lines = gasLines(r);
-    ASSERT_EQ(lines.size(), 5u);
-    EXPECT_EQ(lines[1].value, "3.00 \u00b1 0.0500 N/m");
+    ASSERT_EQ(lines.size(), 6u);
+    EXPECT_EQ(lines[1].value, "3.000 \u00b1 0.050 N/m");
     EXPECT_NE(lines[1].help.find("no walls"), std::string::npos) << lines[1].help;
     EXPECT_EQ(lines[4].value, "5 000 pair/s");
     EXPECT_EQ(lines[4].help.find("wall"), std::string::npos) << lines[4].help;

@@ -62,7 +62,7 @@ TEST(PressurePlot, ItsLineNamesTheLatestPoint) {
     EXPECT_EQ(pressurePlotLine({}), "");
     const std::string line = pressurePlotLine(history());
     EXPECT_NE(line.find("Pressure plot: t = 0 s to 5.00 s, 21 points"), std::string::npos) << line;
-    EXPECT_NE(line.find("now measured 12.2 \u00b1 0.200 N/m"), std::string::npos) << line;
+    EXPECT_NE(line.find("now measured 12.20 \u00b1 0.20 N/m"), std::string::npos) << line;
     EXPECT_NE(line.find("hard discs 23.8 N/m, ideal gas 16.7 N/m"), std::string::npos) << line;
 }
 
