@@ -6,6 +6,7 @@
 
 #include "render/sdl_color.hpp"
 #include "render/text.hpp"
+#include "view/arrow_clip.hpp"
 
 namespace psb::app {
 namespace {
@@ -17,11 +18,21 @@ SDL_FPoint pt(const Vec2& v) {
 /// A filled arrow from `a` to `b` (pixels): a shaft `halfWidth` px either side and a head of at
 /// most `head` px with ±30° flanks.
 void appendArrow(GeometryBatch& batch, const Vec2& a, const Vec2& b, double head, double halfWidth,
-                 SDL_Color c) {
+                 SDL_Color c, bool cut = false) {
     const Vec2 d = b - a;
     const double len = d.norm();
     if (!(len > 1.0)) return;
     const Vec2 u = d / len, n(-u.y(), u.x());
+    if (cut) {
+        // Cut at a wall (view/arrow_clip.hpp): up to it, and a bar across its end, no head.
+        const double bar = cutBarHalf(head, halfWidth);
+        const double thick = std::max(2.0, 2.0 * halfWidth);
+        batch.polygon4(pt(a + halfWidth * n), pt(b + halfWidth * n), pt(b - halfWidth * n),
+                       pt(a - halfWidth * n), c);
+        batch.polygon4(pt(b + bar * n), pt(b + bar * n - thick * u), pt(b - bar * n - thick * u),
+                       pt(b - bar * n), c);
+        return;
+    }
     const double h = std::min(head, len);
     const double hw = h * 0.57735;  // tan 30°
     const Vec2 base = b - h * u;
@@ -44,6 +55,9 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     text_.clear();
     const double scale = arrowSeconds / meanMass(p);  // metres per kg·m/s
     const double w = camera.viewportWidth(), h = camera.viewportHeight();
+    // In a walled box an arrow reaching past a wall ends there, cut (view/arrow_clip.hpp).
+    const bool walled = world.def().walls;
+    const Camera::ScreenBox inside = camera.boxOnScreen(world.def().width, world.def().height);
     for (std::size_t i = 0; i < p.size(); ++i) {
         const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]));
         const Vec2 tip = camera.worldToScreen(
@@ -52,7 +66,8 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
             std::max(c.y(), tip.y()) < 0 || std::min(c.y(), tip.y()) > h) {
             continue;
         }
-        appendArrow(arrows_, c, tip, 9.0, 0.75, each);
+        const ClippedArrow kept = walled ? clipArrow(c, tip, inside) : ClippedArrow{tip, false};
+        appendArrow(arrows_, c, kept.tip, 9.0, 0.75, each, kept.cut);
     }
 
     // The centre of mass's path, one polyline.
@@ -68,7 +83,9 @@ void MomentumDrawing::draw(SDL_Renderer* renderer, const Font& font, const World
     const float x = static_cast<float>(com.x()), y = static_cast<float>(com.y());
     arrows_.quad(x - 7, y - 1, x + 7, y + 1, cm);
     arrows_.quad(x - 1, y - 7, x + 1, y + 7, cm);
-    appendArrow(arrows_, com, camera.worldToScreen(total.to), 16.0, 2.0, sum);
+    const ClippedArrow kept = walled ? clipArrow(com, camera.worldToScreen(total.to), inside)
+                                     : ClippedArrow{camera.worldToScreen(total.to), false};
+    appendArrow(arrows_, com, kept.tip, 16.0, 2.0, sum, kept.cut);
 
     SDL_SetRenderDrawBlendMode(renderer, SDL_BLENDMODE_NONE);
     arrows_.draw(renderer, nullptr);

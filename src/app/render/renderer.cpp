@@ -13,6 +13,7 @@
 #include "render/spin_mark.hpp"
 #include "render/text.hpp"
 #include "session/units.hpp"
+#include "view/arrow_clip.hpp"
 #include "view/label_places.hpp"
 #include "view/mass_shade.hpp"
 #include "view/particle_labels.hpp"
@@ -270,6 +271,10 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
     }
 
     if (options.arrows) {
+        // Arrows stay in a walled box: one that reaches past a wall ends there, cut
+        // (view/arrow_clip.hpp); a periodic box's arrows run on across its edges.
+        const bool walled = world.def().walls && periodic == nullptr;
+        const Camera::ScreenBox inside = camera.boxOnScreen(world.def().width, world.def().height);
         for (std::size_t k = 0; k < visible.size(); ++k) {
             const std::size_t i = visible[k];
             const double r = camera.toScreen(p.radius[i]);
@@ -279,9 +284,13 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             const Vec2 u(p.vx[i] / speed, p.vy[i] / speed);
             const Vec2 n(-u.y(), u.x());
             const Vec2 c = camera.worldToScreen(Vec2(p.x[i], p.y[i]) + visibleShift_[k]);
-            const Vec2 tip = c + len * u;
+            const ClippedArrow clipped =
+                walled ? clipArrow(c, c + len * u, inside) : ClippedArrow{c + len * u, false};
+            const Vec2 tip = clipped.tip;
+            if (clipped.cut && (tip - c).dot(u) <= r + 1.0) continue;  // no room past the rim
             if (std::max(0.75, r) < kSmallDiscPixels) {
-                // A one-pixel shaft from the rim, and a head of two strokes when there is room.
+                // A one-pixel shaft from the rim, and a head of two strokes when there is room;
+                // cut at a wall, a bar across its end instead.
                 const Vec2 start = c + r * u;
                 const std::uint32_t col = argb(fillOf(i));
                 const auto line = [&](const Vec2& a, const Vec2& b) {
@@ -290,7 +299,9 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
                 };
                 line(start, tip);
                 const double head = std::min(5.0, 0.5 * (len - r));
-                if (head >= 2.0) {
+                if (clipped.cut) {
+                    line(tip + 3.0 * n, tip - 3.0 * n);
+                } else if (head >= 2.0) {
                     line(tip, tip - head * u + 0.6 * head * n);
                     line(tip, tip - head * u - 0.6 * head * n);
                 }
@@ -300,14 +311,23 @@ DrawStats Renderer::draw(const World& world, double frame, const Camera& camera,
             // the arrow outside the disc; the shaft starts at the rim, never inside the disc.
             const double head = std::min(12.0, len - r);
             const double halfWidth = head * std::tan(std::numbers::pi / 6.0);
-            const Vec2 base = tip - head * u;
             const auto pt = [](const Vec2& v) {
                 return SDL_FPoint{static_cast<float>(v.x()), static_cast<float>(v.y())};
             };
             const Color drawn = fillOf(i);
             const SDL_Color col{drawn.r, drawn.g, drawn.b, 255};
-            arrows_.triangle(pt(tip), pt(base + halfWidth * n), pt(base - halfWidth * n), col);
             const Vec2 start = c + r * u;
+            if (clipped.cut) {
+                // Up to the wall, and a bar across its end where the head would be.
+                const double hw = 1.0, bar = cutBarHalf(head, hw);
+                arrows_.polygon4(pt(start + hw * n), pt(tip + hw * n), pt(tip - hw * n),
+                                 pt(start - hw * n), col);
+                arrows_.polygon4(pt(tip + bar * n), pt(tip + bar * n - 2.0 * u),
+                                 pt(tip - bar * n - 2.0 * u), pt(tip - bar * n), col);
+                continue;
+            }
+            const Vec2 base = tip - head * u;
+            arrows_.triangle(pt(tip), pt(base + halfWidth * n), pt(base - halfWidth * n), col);
             if ((base - start).dot(u) > 0.0) {
                 const double hw = 1.0;  // shaft half-thickness, pixels
                 arrows_.polygon4(pt(start + hw * n), pt(base + hw * n), pt(base - hw * n),
