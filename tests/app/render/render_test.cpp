@@ -251,6 +251,28 @@ TEST_F(RenderTest, AnArrowPointsAlongTheVelocity) {
     EXPECT_TRUE(isColor(pixel(200, 200 - 50), 0, 0, 0));
 }
 
+TEST_F(RenderTest, AnArrowPastAWallEndsOnItInABarWithoutAHead) {
+    // A box 300 m wide: 300 m/s for 1/3 s from x = 250 would reach x = 350, 50 px past the
+    // right wall (lesson 1's ball ran 30 px past the left one). It stops at the wall, cut.
+    WorldDef def;
+    def.width = 300.0;
+    def.height = 400.0;
+    World w(def);
+    w.add({.position = Vec2(250.0, 200.0),
+           .velocity = Vec2(300.0, 0.0),
+           .mass = 2.0,
+           .radius = 10.0,
+           .color = {255, 255, 255}});
+    draw(w, {});
+    EXPECT_TRUE(isColor(pixel(280, 200), 255, 255, 255)) << "the shaft up to the wall";
+    EXPECT_FALSE(isColor(pixel(310, 200), 255, 255, 255)) << "past the wall";
+    EXPECT_FALSE(isColor(pixel(330, 200), 255, 255, 255)) << "past the wall";
+    // The bar across its end, wider than the shaft, and no head's flanks behind it.
+    EXPECT_TRUE(isColor(pixel(298, 200 + 3), 255, 255, 255)) << "the bar";
+    EXPECT_TRUE(isColor(pixel(298, 200 - 3), 255, 255, 255)) << "the bar";
+    EXPECT_TRUE(isColor(pixel(292, 200 + 3), 0, 0, 0)) << "a head's flank";
+}
+
 TEST_F(RenderTest, AnArrowHeadIsFilledAndWiderThanTheShaft) {
     const World w = worldWith({100, 200}, {600, 0}, 10.0, {255, 255, 255});
     draw(w, {});
