@@ -58,6 +58,16 @@ DrawStats DrawLayer::draw(const FrameView& frame) {
 }
 
 void DrawLayer::drawLabMarks(const FrameView& frame, const Palette& colours) {
+    if (frame.grid && !frame.grid->labels.empty()) {
+        // A plate behind each of the grid's numbers, so that they read over the discs.
+        rulerMarks_.clear();
+        for (const PixelRect& r : gridLabelPlates(*frame.grid, labelFont_)) {
+            rulerMarks_.quad(static_cast<float>(r.x), static_cast<float>(r.y),
+                             static_cast<float>(r.x + r.w), static_cast<float>(r.y + r.h),
+                             sdlColor(colours.labelBox), 0.5f, 0.5f, 0.5f, 0.5f);
+        }
+        renderer_.drawBatch(rulerMarks_);
+    }
     if (frame.ruler) {
         rulerMarks_.clear();
         batchRuler(*frame.ruler, rulerMarks_, colours);

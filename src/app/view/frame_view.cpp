@@ -91,8 +91,8 @@ LabelKeepOut labelKeepOut(const FrameView& frame, const TextMeasure& labelFont) 
     }
     // The grid's distances and the droppers' words are readings too: no label covers them.
     if (frame.grid) {
-        for (const MarkLabel& l : frame.grid->labels)
-            out.rects.push_back(labelRect(l, labelFont));
+        for (const PixelRect& plate : gridLabelPlates(*frame.grid, labelFont))
+            out.rects.push_back(plate);
     }
     for (const DropperView& d : frame.droppers)
         out.rects.push_back(d.words.at);

@@ -151,6 +151,14 @@ PixelRect labelRect(const MarkLabel& label, const TextMeasure& font, int pad) {
     return {x - pad, y - pad / 2, w + 2 * pad, h + pad};
 }
 
+std::vector<PixelRect> gridLabelPlates(const GridView& grid, const TextMeasure& font) {
+    std::vector<PixelRect> out;
+    out.reserve(grid.labels.size());
+    for (const MarkLabel& l : grid.labels)
+        out.push_back(labelRect(l, font, kGridLabelPad));
+    return out;
+}
+
 ScreenWall rulerBand(const RulerView& ruler) {
     const Vec2 d = ruler.b - ruler.a;
     const double length = d.norm();
@@ -225,7 +233,7 @@ void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& fo
         std::vector<PixelRect> marks;
         if (grid != nullptr) {
             for (const MarkLabel& g : grid->labels) {
-                const PixelRect r = labelRect(g, font);
+                const PixelRect r = labelRect(g, font, kGridLabelPad);
                 if (inside(r) && clear(r)) marks.push_back(r);
             }
         }
@@ -252,7 +260,8 @@ void keepMarkLabelsClear(GridView* grid, RulerView* ruler, const TextMeasure& fo
         std::vector<MarkLabel>& labels = grid->labels;
         labels.erase(std::remove_if(labels.begin(), labels.end(),
                                     [&](const MarkLabel& g) {
-                                        const PixelRect r = labelRect(g, font);
+                                        // Its plate whole, clear of the rest.
+                                        const PixelRect r = labelRect(g, font, kGridLabelPad);
                                         return !inside(r) || !clear(r) || overlaps(r, reading);
                                     }),
                      labels.end());

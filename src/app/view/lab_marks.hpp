@@ -80,6 +80,13 @@ inline constexpr double kRulerTickPixels = 8.0;
 
 /// The ruler's reading's background beyond its text, pixels each side (the drawing layer's).
 inline constexpr int kReadingPad = 4;
+/// A grid label's plate beyond its text, pixels each side: the labels' box colour behind the
+/// number, so that it reads over the particles of a crowded box (it stood on them bare).
+inline constexpr int kGridLabelPad = 3;
+
+/// The plates behind the grid's labels (labelRect with kGridLabelPad), in `font`, the labels'
+/// font: what the drawing layer fills and what the particles' labels keep off.
+[[nodiscard]] std::vector<PixelRect> gridLabelPlates(const GridView& grid, const TextMeasure& font);
 
 /// The rule every measuring mark's label obeys: it is read whole. The ruler's reading goes
 /// where all of it is inside the room's window (the window right of the control panel), clear

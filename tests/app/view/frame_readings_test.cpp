@@ -131,6 +131,49 @@ TEST(LabelPlaces, NoParticleLabelCoversTheGridsDistances) {
     EXPECT_EQ(placed, places.size()) << "each label found a place clear of the grid's";
 }
 
+TEST(GridLabels, EachStandsWholeOnAPlateInsideTheWindowThatNoParticleLabelCovers) {
+    // A crowded box with the grid (Shift+G) at 200 %: the grid's numbers stood bare on the
+    // particles. Each has a plate now (the labels' box colour, drawn by the drawing layer): its
+    // text within it, all of it inside the window and off the panels, and the particles'
+    // labels keep off it.
+    WorldDef def;
+    def.width = 10.0;
+    def.height = 4.0;
+    World w(def);
+    for (int i = 0; i < 9; ++i)
+        for (int j = 0; j < 3; ++j)
+            w.add({.position = Vec2(0.6 + 1.1 * i, 0.5 + 1.4 * j), .mass = 1.0, .radius = 0.3});
+    const Session s = onTheProjector(std::move(w), {ShowOption::Grid, ShowOption::Labels});
+    const test::FixedMeasure font(2.0);
+    const FrameView f = buildFrame(s, FrameStats{}, font, font, kProjector);
+    ASSERT_TRUE(f.grid.has_value());
+    ASSERT_FALSE(f.grid->labels.empty());
+    const std::vector<PixelRect> plates = gridLabelPlates(*f.grid, font);
+    ASSERT_EQ(plates.size(), f.grid->labels.size());
+    const LabelKeepOut keepOut = labelKeepOut(f, font);
+    for (std::size_t k = 0; k < plates.size(); ++k) {
+        const PixelRect text = labelRect(f.grid->labels[k], font);
+        const PixelRect& p = plates[k];
+        EXPECT_LE(p.x + kGridLabelPad, text.x);
+        EXPECT_GE(p.x + p.w - kGridLabelPad, text.x + text.w);
+        EXPECT_LT(p.y, text.y);
+        EXPECT_GT(p.y + p.h, text.y + text.h);
+        EXPECT_GE(p.x, f.controlsInset);
+        EXPECT_LE(p.x + p.w, 1600);
+        EXPECT_GE(p.y, 0);
+        EXPECT_LE(p.y + p.h, 1000);
+        for (const PixelRect& panel : panelRects(f.layout))
+            EXPECT_FALSE(overlaps(p, panel)) << "\"" << f.grid->labels[k].text << "\"'s plate";
+        EXPECT_NE(std::find(keepOut.rects.begin(), keepOut.rects.end(), p), keepOut.rects.end())
+            << "the particles' labels keep off \"" << f.grid->labels[k].text << "\"'s plate";
+    }
+    for (const LabelPlace& place : labelsOf(s, f, font)) {
+        if (place.at.w == 0) continue;
+        for (const PixelRect& p : plates)
+            EXPECT_FALSE(overlaps(place.at, p)) << "a label at " << text(place.at);
+    }
+}
+
 TEST(LabelPlaces, NoParticleLabelCoversADroppersWords) {
     // A dropper's "dropper: 5 balls left" under the label of the ball just dropped.
     WorldDef def;
