@@ -172,8 +172,20 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     for (std::size_t k = 0; k < columns.size(); ++k)
         ImGui::TableSetupColumn(columns[k].name, ImGuiTableColumnFlags_WidthFixed, widths[k]);
     ImGui::TableHeadersRow();
+    // The frozen "#" column is opaque: scrolled sideways, the numbers slid under it and showed
+    // through. Its cells take the row's stripe over the window's background, at full alpha.
+    int row = 0;
+    const auto frozenCell = [&row, &style] {
+        const ImVec4 stripe =
+            style.Colors[row % 2 == 1 ? ImGuiCol_TableRowBgAlt : ImGuiCol_TableRowBg];
+        ImGui::TableSetBgColor(
+            ImGuiTableBgTarget_CellBg,
+            ImGui::GetColorU32(widgets::opaqueOver(style.Colors[ImGuiCol_WindowBg], stripe)));
+        ++row;
+    };
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
+    frozenCell();
     for (const ValuesColumn& c : columns) {
         ImGui::TableNextColumn();
         ImGui::TextDisabled("%s", c.unit);
@@ -184,6 +196,7 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     for (const ValuesRow& r : t.rows) {
         ImGui::TableNextRow();
         ImGui::TableNextColumn();
+        frozenCell();
         const std::string number = std::to_string(r.number);
         if (ImGui::Selectable(number.c_str(), selectedId && *selectedId == r.id)) {
             out_.emplace_back(cmd::Select{r.id});
@@ -224,6 +237,7 @@ void ControlPanel::valuesWindow(const Session& s, float pointPixels) {
     if (!editingSeen) valuesEditing_.reset();
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
+    frozenCell();
     ImGui::TextUnformatted("total");
     widgets::tip(
         "The sums over every particle: the total momentum (a vector), kinetic energy (and, "

@@ -86,6 +86,13 @@ inline void wrapped(std::string_view text, float width = 0.f) {
     return {c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f};
 }
 /// The theme's amber for notes and red for problems, as ImGui's colours.
+/// `over` laid over `under` (each with its alpha), opaque: a frozen column's cells in a table
+/// that scrolls sideways, which the scrolled cells' numbers must not show through.
+[[nodiscard]] inline ImVec4 opaqueOver(const ImVec4& under, const ImVec4& over) {
+    const auto mix = [&](float a, float b) { return a * (1.f - over.w) + b * over.w; };
+    return {mix(under.x, over.x), mix(under.y, over.y), mix(under.z, over.z), 1.f};
+}
+
 [[nodiscard]] inline ImVec4 caution(Theme theme) {
     return colour(palette(theme).caution);
 }

@@ -2,6 +2,7 @@
 // scale, and that the lessons' and the ramp's columns and rows show their numbers whole.
 
 #include "control_panel_fixture.hpp"
+#include "gui/widgets.hpp"
 
 namespace psb::app {
 namespace {
@@ -250,6 +251,24 @@ TEST_F(SectionValuesTest, TheRampsValuesTableKeepsEveryColumnAsWideAsItsNumbers)
         }
     }
     gui_->setScale(1.f);
+}
+
+}  // namespace
+}  // namespace psb::app
+
+namespace psb::app {
+namespace {
+
+TEST(ValuesTableFrozenColumn, ItsCellsAreOpaqueTheRowsStripeOverTheWindow) {
+    // Scrolled sideways, the table's numbers slid under the frozen "#" column and showed
+    // through its translucent stripe (section_values.cpp fills its cells with this).
+    const ImVec4 window{0.94f, 0.94f, 0.94f, 0.98f}, stripe{0.30f, 0.30f, 0.30f, 0.09f};
+    const ImVec4 cell = widgets::opaqueOver(window, stripe);
+    EXPECT_FLOAT_EQ(cell.w, 1.f) << "opaque";
+    EXPECT_NEAR(cell.x, 0.94f * 0.91f + 0.30f * 0.09f, 1e-6f) << "the stripe over the window";
+    const ImVec4 none = widgets::opaqueOver(window, ImVec4{0.f, 0.f, 0.f, 0.f});
+    EXPECT_FLOAT_EQ(none.x, 0.94f);
+    EXPECT_FLOAT_EQ(none.w, 1.f);
 }
 
 }  // namespace
