@@ -77,8 +77,10 @@ void SpeedChart::draw(SDL_Renderer* renderer, const Font& font, const ParticleAr
         const float tx = sx(t);
         boxes_.quad(tx, bottom + 1, tx + 1, bottom + 4, axis);
         const std::string label = tickLabel(t, xstep);
-        font.layout(label, tx - static_cast<float>(font.measure(label)) / 2, bottom + 4, grey,
-                    text_);
+        // Centred on its tick, but the last one (at the axis's right end) kept inside the
+        // frame, as the plots' time labels are: it reached the window's edge.
+        font.layout(label, timeLabelLeft(tx, static_cast<float>(font.measure(label)), x + boxW),
+                    bottom + 4, grey, text_);
     }
     font.layout("speed (m/s)", right - static_cast<float>(font.measure("speed (m/s)")),
                 bottom + 4 + lh, grey, text_);

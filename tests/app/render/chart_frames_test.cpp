@@ -71,6 +71,26 @@ TEST_F(ChartFrameTest, TheSpeedHistogramsLegendStaysInItsFrameAt200Percent) {
     EXPECT_EQ(outside(box), 0) << "pixels drawn outside the histogram's frame";
 }
 
+TEST_F(ChartFrameTest, TheSpeedHistogramsLastTickLabelStaysInsideItsFrame) {
+    // Every particle at 2 m/s: the speed axis ends at 2, a tick there, its label "2.0" centred
+    // on the axis's right end ran past the frame's edge (at the window's edge, at 200 %).
+    WorldDef def;
+    def.width = 100.0;
+    def.height = 100.0;
+    World w(def);
+    for (int k = 0; k < 100; ++k) {
+        const double a = 0.0628 * k;
+        w.add({.position = Vec2(5.0 + (k % 10) * 9.0, 5.0 + (k / 10) * 9.0),
+               .velocity = Vec2(2.0 * std::cos(a), 2.0 * std::sin(a)),
+               .radius = 0.5});
+    }
+    const PixelRect box{300, 100, kWidth, 2 * kSpeedsMinHeight};
+    SpeedChart chart;
+    chart.draw(sdl_, *big_, w.particles(), box, palette(Theme::Light), 2.f);
+    SDL_RenderPresent(sdl_);
+    EXPECT_EQ(outside(box), 0) << "pixels drawn outside the histogram's frame";
+}
+
 TEST_F(ChartFrameTest, ThePlotsTickLabelsAndTitlesStayInTheirFrameAt200Percent) {
     // A momentum px from -10.1 to -10.0 kg m/s (its tick labels "-10.075", seven characters),
     // py negative, in two rows as short as they get at 200 % and in four.
