@@ -171,6 +171,10 @@ void GuiContext::setTheme(Theme theme) {
         ImGui::StyleColorsDark(&style);
         style.FrameBorderSize = 0.f;
     }
+    // Lines (a window's title-bar border, the dialogs') as geometry, not as ImGui's textured
+    // lines, which want a bilinear-filtered atlas: through this renderer's nearest sampling the
+    // line under a dialog's title stopped halfway across it.
+    style.AntiAliasedLinesUseTex = false;
     // A slider's value is written over its handle: a faint handle keeps the digits under it
     // legible ("0.▮0" read as nothing on a projector), its frame's border still shows it.
     const ImVec4 text = style.Colors[ImGuiCol_Text];
