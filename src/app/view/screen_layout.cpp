@@ -8,8 +8,9 @@
 namespace psb::app {
 
 std::vector<int> plotsChosen(int shown) {
-    // What a lesson reads first: the momentum (px, then py), then the energy, then the rate.
-    static const int priority[4] = {1, 2, 0, 3};
+    // What a lesson reads first: the momentum px (a collision's lesson), then the energy (kept
+    // or not), then py, then the rate.
+    static const int priority[4] = {1, 0, 2, 3};
     std::vector<int> out(priority, priority + std::clamp(shown, 0, 4));
     std::sort(out.begin(), out.end());
     return out;

@@ -9,7 +9,7 @@
 // to the highest free place, then the rightmost: beside the HUD or the box, above or below the
 // box, clear of the panels placed before it. The
 // column starts below the HUD when the window is too narrow for both side by side, panels shrink to
-// the room there is (the plots drop their least important first: rate, then energy, then py;
+// the room there is (the plots drop their least important first: rate, then py, then energy;
 // plotsChosen), and a panel that does not fit at its smallest is left out. The values table (I)
 // docks in a band along the window's bottom, right of the control panel and under everything else
 // (valuesBand): the messages, the inspector and the column sit above it; or, in a window too short
@@ -179,8 +179,8 @@ struct PanelLayout {
 };
 
 /// Which of the four plots (0 energy, 1 px, 2 py, 3 rate: kPlotCount) are shown when `shown`
-/// (0-4) fit, in their order on screen: the momentum's first (a collision's lesson reads px),
-/// then the energy, then the rate; px alone, px and py, energy, px and py, all four.
+/// (0-4) fit, in their order on screen: px first (a collision's lesson reads it), then the
+/// energy, then py, then the rate; px alone, energy and px, energy, px and py, all four.
 [[nodiscard]] std::vector<int> plotsChosen(int shown);
 
 /// The line under the plots when `shown` (1-3) of the four fit: "No room: energy, rate" (a

@@ -266,16 +266,16 @@ TEST(PanelLayout, APlotsColumnTooShortForAllFourNamesTheOthersUnderThem) {
     EXPECT_EQ(tall.plotsNote, 0);
     EXPECT_EQ(plotsLeftOutNote(4), "");
     EXPECT_EQ(plotsLeftOutNote(1), "No room: energy, py, rate");
-    EXPECT_EQ(plotsLeftOutNote(2), "No room: energy, rate");
+    EXPECT_EQ(plotsLeftOutNote(2), "No room: py, rate");
     EXPECT_EQ(plotsLeftOutNote(3), "No room: rate");
 }
 
 TEST(PanelLayout, TheMomentumPlotsAreTheLastLeftOut) {
     // Lesson 1 at 200 % with the values table: only the energy's chart fitted, and the lesson
-    // is about the momentum. Fewer plots keep px, then py, then the energy, in their order on
-    // screen.
+    // is about the momentum px (py is 0 there). Fewer plots keep px, then the energy, then
+    // py, in their order on screen.
     EXPECT_EQ(plotsChosen(1), (std::vector<int>{1}));
-    EXPECT_EQ(plotsChosen(2), (std::vector<int>{1, 2}));
+    EXPECT_EQ(plotsChosen(2), (std::vector<int>{0, 1}));
     EXPECT_EQ(plotsChosen(3), (std::vector<int>{0, 1, 2}));
     EXPECT_EQ(plotsChosen(4), (std::vector<int>{0, 1, 2, 3}));
     EXPECT_TRUE(plotsChosen(0).empty());
