@@ -237,7 +237,7 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
             const int rows = std::clamp((band.h - 8) / rowMin, 1, 4);
             const int rowHeight = std::min(scaled(kPlotRowMaxHeight), (band.h - 8) / rows);
             // Too low for the plots one above the other: side by side, as many as keep each at
-            // its least width (the lesson's energy and px in a band one row high).
+            // its least width (the lesson's four in a band one row high at 200 %).
             const int narrowest =
                 r.plotColumnLeast > 0 ? r.plotColumnLeast : scaled(kPlotColumnMinWidth);
             const int columns =
