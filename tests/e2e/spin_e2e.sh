@@ -91,7 +91,9 @@ line=$(grep "^angular velocity" <<<"$inspector") ||
 read -r w rpm < <(sed -E 's/^angular velocity (-?[0-9.]+) rad\/s = (-?[0-9.]+) rev\/min$/\1 \2/' <<<"$line")
 awk -v w="$w" -v r="$rpm" 'BEGIN { exit !(r < 0 && w < 0 && (r - w * 60 / 6.2831853) ^ 2 < (0.01 * r) ^ 2) }' ||
     fail "rev/min is not rad/s x 60 / 2 pi: $line"
-grep -q " J rotation$" <<<"$inspector" || fail "no rotational energy in the inspector: $inspector"
+# In joules with the prefix its size takes (below 1 J it reads "994 mJ rotation").
+grep -Eq " [0-9.]+ (m|k)?J rotation$" <<<"$inspector" ||
+    fail "no rotational energy in the inspector: $inspector"
 grep -q "inertia factor  k = 0.4" <<<"$inspector" || fail "the ball's k is not 0.4: $inspector"
 pass "inspector: $line"
 
