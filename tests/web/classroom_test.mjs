@@ -384,7 +384,8 @@ async function started(p, query) {
   // 1. A field that takes text brings the on-screen keyboard up (the page's typing field has
   //    the focus) and what that keyboard types (the browser's insertText, as a touch
   //    keyboard's, no key events) reaches it; its Enter keeps it.
-  const title = await p.control("title");
+  // (Below the presets, rows of the panel on a touch screen: scrolled to by a finger.)
+  const title = await reach("title");
   if (title) await p.tap(title);
   await p.waitFor("the typing field", async () =>
     (await p.page.evaluate(() => document.activeElement && document.activeElement.id)) === "typing", 3);

@@ -8,7 +8,16 @@
 //      another field, so that the browser keeps that spot in view above the on-screen keyboard;
 //   3. a phone: with the sheet scrolled down, << is where it was, and one tap folds it;
 //   4. on a touch screen (a tablet at the automatic scale) the buttons, check boxes and section
-//      headers are at least 40 CSS pixels tall and wide (measured from --log-controls).
+//      headers are at least 40 CSS pixels tall and wide (measured from --log-controls);
+//   5. the phone's folded strip: its >> and ? are a finger wide;
+//   6. the phone at the largest UI scale its width allows: the HUD stays short, the box keeps
+//      most of the screen;
+//   7. the tablet's presets are finger-sized rows of the panel, which a finger scrolls;
+//   8. a pinch on the box with a particle selected clears nothing (it is no click);
+//   9. the Speed slider held by a finger: the "Reaching only" line below it does not move the
+//      stopwatch under the finger as it comes;
+//  10. the New scene and Save As dialogs: fields, box and buttons at least 40 px tall; a tap into
+//      the width field already being typed in, then typing, replaces its number.
 // Screenshots are written to PSB_WEB_SHOTS (phone-*.png) for a person to look at.
 import fs from "fs";
 import path from "path";
@@ -36,7 +45,7 @@ async function open(viewport, options = {}) {
   Object.assign(p, {
     /// The panel's control `name`, scrolled into reach by a finger dragged along the panel.
     async reach(name, height, x = 150) {
-      for (let k = 0; k < 8; k++) {
+      for (let k = 0; k < 12; k++) {
         const c = await p.control(name);
         if (!c || (c.y >= 100 && c.y <= height - 80)) return c;
         const by = Math.max(-300, Math.min(300, c.y - height / 2));
@@ -61,6 +70,12 @@ async function started(p, query) {
   const p = await open({ width: W, height: H }, { deviceScaleFactor: 3, isMobile: true });
   check(await started(p, "?log-controls&seed=7&paused"), "the page starts on a phone");
   await p.page.waitForTimeout(800);
+  // 5. The folded strip's buttons are a finger wide (at 6 points' padding either side, 31 px).
+  for (const [name, shown] of [["open panel", ">>"], ["About", "?"]]) {
+    const e = await p.extent(name);
+    check(e && e.x1 - e.x0 >= 40 && e.y1 - e.y0 >= 40,
+          `the strip's ${shown} is at least 40x40 px: ${JSON.stringify(e)}`);
+  }
   await p.tap(await p.control("open panel"));
   await p.waitFor("the panel", async () => (await p.control("fold panel")) !== null, 3);
   await p.page.waitForTimeout(500);
@@ -95,6 +110,18 @@ async function started(p, query) {
   await p.waitFor("the fold", async () => (await strips()) > strips0, 3);
   check((await strips()) > strips0, "a tap on << folds the sheet");
   await p.shot("2-folded");
+  // 6. At the largest scale the width allows the HUD keeps to a few short lines: the box (the
+  // default scene's, 7 m square) stands high on the screen and takes the width beside the strip
+  // (the full lines wrapped to 12 and left it 260 px, its top at 500 px: its foot at 760).
+  await p.page.waitForTimeout(500);
+  const fitted = (await p.lines(/^\[I\] View: zoom /)).pop() || "";
+  const fit = fitted.match(/zoom ([\d.]+) px\/m, box top-left at \[([\d.-]+), ([\d.-]+)\]/);
+  const dpr = await p.page.evaluate(() => devicePixelRatio);  // the view's pixels are the device's
+  const side = fit ? 7 * +fit[1] / dpr : 0, boxTop = fit ? +fit[3] / dpr : H;
+  const strip = await p.extent("open panel");
+  check(fit && side >= 0.9 * (W - (strip ? strip.x1 : 0)) && boxTop + side <= 0.85 * H,
+        `at ${said.match(/shown at \d+ %/)} the box keeps the width and the upper part of the ` +
+        `screen: ${Math.round(side)} px square, its top at ${Math.round(boxTop)} px (${fitted})`);
 
   // ... and after a reload (the scale is kept in the browser's settings).
   await p.page.waitForTimeout(1500);  // the settings written
@@ -193,6 +220,160 @@ async function started(p, query) {
         `field at ${JSON.stringify(massNow)}`);
   await p.page.keyboard.press("Escape");
   await p.page.waitForTimeout(300);
+
+  // 10. The dialogs: finger-sized, and a tap into the width field (already being typed in, its
+  // text selected) then typing replaces the width, as what it shows says (it read 710).
+  // Whether the Scene section is open now: in the last list of the panel's controls (the log
+  // has every list), its header is followed by its presets.
+  const sceneIsOpen = async () => {
+    const l = await p.lines(/^\[I\] Control /);
+    const at = l.map((x) => /^\[I\] Control section Scene spans /.test(x)).lastIndexOf(true);
+    return at >= 0 && at + 1 < l.length && /^\[I\] Control preset /.test(l[at + 1]);
+  };
+  if (!(await sceneIsOpen())) {
+    const sceneHeader = await p.reach("section Scene", H);
+    if (sceneHeader) await p.tap(sceneHeader);
+    await p.waitFor("the Scene section", sceneIsOpen, 3);
+  }
+  const newScene = await p.reach("New scene", H);
+  if (newScene) await p.tap(newScene);
+  await p.waitFor("the New scene dialog", async () => (await p.control("dialog width")) !== null, 3);
+  await p.page.waitForTimeout(300);
+  const measure = async (names) => {
+    const small = [];
+    for (const name of names) {
+      const e = await p.extent(name);
+      if (!e || e.y1 - e.y0 < 40 || e.x1 - e.x0 < 40) small.push(`${name} ${JSON.stringify(e)}`);
+    }
+    return small;
+  };
+  const smallNew = await measure(["dialog width", "dialog height", "dialog gravity",
+                                  "dialog walls", "dialog Create", "dialog Cancel"]);
+  check(smallNew.length === 0, `the New scene dialog's fields, box and buttons are at least ` +
+        `40 px: ${smallNew.join("; ") || "none smaller"}`);
+  await p.shot("9-new-scene");
+  await p.tap(await p.control("dialog width"));
+  await p.page.waitForTimeout(300);
+  await p.page.keyboard.type("10");
+  await p.page.waitForTimeout(300);
+  await p.tap(await p.control("dialog height"));
+  await p.page.waitForTimeout(300);
+  await p.page.keyboard.type("5");
+  await p.page.waitForTimeout(300);
+  await p.shot("10-new-scene-typed");
+  await p.tap(await p.control("dialog Create"));
+  await p.waitFor("the new scene", async () => (await p.lines(/New scene: an empty box/)).length > 0, 3);
+  const made = (await p.lines(/New scene: an empty box/)).pop() || "no new scene";
+  check(/an empty box 10(\.0)? m x 5(\.00)? m/.test(made),
+        `a tap into the width field, then 10; into the height, then 5: ${made}`);
+  const saveAs = await p.reach("Save As", H);
+  if (saveAs) await p.tap(saveAs);
+  await p.waitFor("the Save As dialog", async () => (await p.control("dialog file name")) !== null, 3);
+  await p.page.waitForTimeout(300);
+  const smallSave = await measure(["dialog file name", "dialog Save", "dialog Cancel"]);
+  check(smallSave.length === 0, `the Save As dialog's field and buttons are at least 40 px: ` +
+        (smallSave.join("; ") || "none smaller"));
+  await p.shot("11-save-as");
+  const cancel = await p.control("dialog Cancel");
+  if (cancel) await p.tap(cancel);
+  await p.page.waitForTimeout(300);
+  // 7. The presets: rows of the panel a finger's height, and a finger dragged up from one
+  // scrolls the panel (a list of their own, 19 px rows, took the finger's scroll).
+  await p.waitFor("the presets", async () => (await p.control("preset Newton's cradle")) !== null, 3);
+  const cradle = await p.reach("preset Newton's cradle", H);
+  const cradleRow = await p.extent("preset Newton's cradle");
+  check(cradleRow && cradleRow.y1 - cradleRow.y0 >= 40,
+        `a preset's row is at least 40 px tall: ${JSON.stringify(cradleRow)}`);
+  const newScene0 = await p.control("New scene");
+  if (cradle) {
+    // Slowly, a frame or more a step (a drag whose moves all came within one slow frame was
+    // not seen as one).
+    await p.touch("touchStart", [[cradle.x, cradle.y]]);
+    for (let k = 1; k <= 15; k++) {
+      await p.touch("touchMove", [[cradle.x, cradle.y - 10 * k]]);
+      await p.page.waitForTimeout(50);
+    }
+    await p.touch("touchEnd", []);
+  }
+  await p.page.waitForTimeout(1000);
+  const newScene1 = await p.control("New scene");
+  check(newScene0 && newScene1 && newScene0.y - newScene1.y >= 90,
+        `a finger dragged up from a preset scrolls the panel: New scene ${newScene0 && newScene0.y}` +
+        ` -> ${newScene1 && newScene1.y}`);
+
+  // 8. A particle tapped is selected; then two fingers pinch right of the box: the first
+  // finger's press ends as the pinch begins, not as a click ("Selection cleared").
+  const original = await p.reach("preset The original's default", H);
+  if (original) await p.tap(original);
+  await p.waitFor("the original", async () => /original/.test(await p.title()), 5);
+  await p.page.waitForTimeout(800);
+  const picked0 = (await p.lines(/^\[I\] Selected particle/)).length;
+  await p.tap({ x: 877, y: 382 });  // the original's orange disc at the automatic scale
+  await p.waitFor("the selection", async () => (await p.lines(/^\[I\] Selected particle/)).length > picked0, 3);
+  check((await p.lines(/^\[I\] Selected particle/)).length > picked0, "a tap selects a particle");
+  const cleared0 = (await p.lines(/Selection cleared/)).length;
+  await p.touch("touchStart", [[990, 330]]);
+  await p.page.waitForTimeout(60);
+  await p.touch("touchStart", [[990, 330], [1000, 470]]);
+  for (let k = 1; k <= 8; k++) {
+    await p.touch("touchMove", [[990, 330 - 8 * k], [1000, 470 + 8 * k]]);
+    await p.page.waitForTimeout(16);
+  }
+  await p.touch("touchEnd", []);
+  await p.page.waitForTimeout(600);
+  const cleared = await p.lines(/Selection cleared/);
+  check(cleared.length === cleared0,
+        `a pinch clears no selection: ${cleared.slice(cleared0).join("; ") || "nothing said"}`);
+
+  await p.context.close();
+}
+
+// ---------------------------------------------------------------------------------------------
+// 9. A tablet, Brownian motion (1501 particles, key 8), running at x8, more than this machine
+// computes.
+{
+  const W = 1024, H = 768;
+  const p = await open({ width: W, height: H });
+  check(await started(p, "?log-controls&seed=7&paused"), "the page starts on a tablet again");
+  await p.page.waitForTimeout(500);
+  await p.tap({ x: 1000, y: 740 });  // a finger: the page is a touch screen's
+  await p.page.keyboard.press("8");
+  await p.waitFor("Brownian motion", async () => /Brownian/.test(await p.title()), 5);
+  await p.page.waitForTimeout(1500);
+  // Running, the Speed slider dragged to its end and held there by a finger: the line that
+  // says the speed is not reached keeps off the stopwatch below until the finger lifts.
+  await p.page.keyboard.press("Space");
+  check(await p.waitFor("the run", async () => !/PAUSED/.test(await p.title()), 5),
+        `Space runs Brownian motion: ${await p.title()}`);
+  await p.page.waitForTimeout(800);
+  const speed = await p.reach("Speed", H);
+  const speedRow = await p.extent("Speed");
+  const behind0 = (await p.control("Speed reached")) !== null;
+  let watch0 = null;
+  if (speed && speedRow) {
+    const from = { x: speedRow.x0 + 10, y: speed.y };
+    await p.touch("touchStart", [[from.x, from.y]]);
+    // Where the stopwatch is once the finger is down (under load the line may come and go at
+    // x1 before it).
+    await p.page.waitForTimeout(300);
+    watch0 = await p.extent("Stopwatch start");
+    for (let k = 1; k <= 12; k++) {
+      await p.touch("touchMove", [[from.x + (speedRow.x1 + 40 - from.x) * k / 12, from.y]]);
+      await p.page.waitForTimeout(16);
+    }
+    await p.page.waitForTimeout(3000);  // x8: too much to compute
+  }
+  const watchHeld = await p.extent("Stopwatch start");
+  await p.touch("touchEnd", []);
+  await p.page.waitForTimeout(1500);
+  const behind = (await p.control("Speed reached")) !== null;
+  await p.shot("8-speed-let-go");
+  check(watch0 && watchHeld && watch0.y0 === watchHeld.y0,
+        `the stopwatch stays put under a finger holding the Speed slider: ` +
+        `${JSON.stringify(watch0)} -> ${JSON.stringify(watchHeld)}` +
+        (behind0 ? " (the line was there before)" : behind ? " (the line came at the lift)" : " (no line came)"));
+  check(behind, "at x8 the panel says the speed is not reached (after the lift)");
+
   await p.context.close();
 }
 

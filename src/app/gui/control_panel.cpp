@@ -73,14 +73,7 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     if (!fingerHeld_) touch_ = s.touch();
     const float scale = static_cast<float>(s.view().uiScaleInUse());
     touchWidth_ = touch_ ? kTouchTargetPoints / scale : 0.f;
-    if (touch_) {
-        const ImVec2 pad = ImGui::GetStyle().FramePadding;
-        ImGui::PushStyleVar(
-            ImGuiStyleVar_FramePadding,
-            ImVec2(std::max(pad.x, 6.f),
-                   std::max(pad.y,
-                            std::ceil(kTouchTargetPoints / scale - ImGui::GetFontSize()) / 2.f)));
-    }
+    if (touch_) ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, touchPadding(scale));
     // Open, its top line (About, <<) is a menu bar: it stays put while the rest scrolls, so the
     // panel folds from anywhere in it (a phone's sheet took six swipes back to its top).
     const ImGuiWindowFlags flags =
@@ -145,6 +138,18 @@ std::vector<Command> ControlPanel::build(const Session& s, const FrameStats& sta
     valuesWindow(s, pixelRatio);
     dialog(s);
     return std::move(out_);
+}
+
+bool ControlPanel::layoutHeld() const {
+    return fingerHeld_ ||
+           (ImGui::IsAnyMouseDown() && ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows));
+}
+
+ImVec2 ControlPanel::touchPadding(float scale) {
+    const ImVec2 pad = ImGui::GetStyle().FramePadding;
+    return ImVec2(
+        std::max(pad.x, 6.f),
+        std::max(pad.y, std::ceil(kTouchTargetPoints / scale - ImGui::GetFontSize()) / 2.f));
 }
 
 void ControlPanel::keepAnchor(std::size_t firstItem) {
@@ -303,9 +308,24 @@ void ControlPanel::time(const Session& s) {
     }
     mark("Speed");
     tip("Simulated seconds per real second: x1 is real time, x0.25 slow motion (keys , and .)");
-    if (!s.paused() && s.reachedTimeScale() < 0.95 * s.timeScale()) {
-        ImGui::TextColored(widgets::caution(s.view().theme),
-                           "Reaching only x%.2g: too much to compute", s.reachedTimeScale());
+    // Held (a finger or a button down on the panel, as the collision card): the line keeps the
+    // room it had when the hold began, so that a finger dragging the Speed slider or reaching
+    // for the stopwatch has nothing below it move as the line comes and goes. One that comes
+    // during the hold is shown at the lift; one that goes leaves its room blank until then.
+    const bool slow = !s.paused() && s.reachedTimeScale() < 0.95 * s.timeScale();
+    if (!layoutHeld()) {
+        slowLineHeld_.reset();
+    } else if (!slowLineHeld_) {
+        slowLineHeld_ = slow;
+    }
+    if (slowLineHeld_.value_or(slow)) {
+        if (slow) {
+            ImGui::TextColored(widgets::caution(s.view().theme),
+                               "Reaching only x%.2g: too much to compute", s.reachedTimeScale());
+        } else {
+            ImGui::TextUnformatted(" ");
+        }
+        mark("Speed reached");
     }
     stopwatch(s);
 }
@@ -350,7 +370,12 @@ void ControlPanel::scene(const Session& s) {
     if (!open) return;
     ImGui::TextUnformatted("Presets");
     const float listHeight = ImGui::GetTextLineHeightWithSpacing() * 9.f;
-    if (ImGui::BeginChild("presets", ImVec2(0.f, listHeight), true)) {
+    // With a mouse the presets are a list of their own, scrolled by the wheel. On a touch screen
+    // they are rows of the panel, each a finger's target: a list within the panel took the
+    // finger's scroll for itself, and its rows were a line high.
+    const float rowHeight = touch_ ? touchWidth_ : 0.f;
+    if (touch_) ImGui::PushStyleVar(ImGuiStyleVar_SelectableTextAlign, ImVec2(0.f, 0.5f));
+    if (touch_ || ImGui::BeginChild("presets", ImVec2(0.f, listHeight), true)) {
         const auto& presets = s.presets();
         // The preset the scene came from, by its file (a saved copy keeps the preset's name
         // but is the user's file).
@@ -361,7 +386,7 @@ void ControlPanel::scene(const Session& s) {
             std::error_code ec;
             const bool current =
                 from && *from == std::filesystem::absolute(p.file, ec).lexically_normal();
-            if (ImGui::Selectable(p.name.c_str(), current)) {
+            if (ImGui::Selectable(p.name.c_str(), current, 0, ImVec2(0.f, rowHeight))) {
                 out_.emplace_back(cmd::OpenPreset{static_cast<int>(k)});
             }
             mark("preset " + p.name);
@@ -373,7 +398,11 @@ void ControlPanel::scene(const Session& s) {
             ImGui::PopID();
         }
     }
-    ImGui::EndChild();
+    if (touch_) {
+        ImGui::PopStyleVar();
+    } else {
+        ImGui::EndChild();
+    }
 
     if (ImGui::Button("New scene...")) out_.emplace_back(cmd::AskNewScene{});
     mark("New scene");

@@ -59,10 +59,11 @@ inline constexpr float kTouchTargetPoints = 40.f;
 /// 1600-pixel window the full panel took 39 % of it, and beside the plots the box kept 510
 /// pixels.
 inline constexpr float kControlsMaxShare = 0.3f;
-/// Folded, the strip holds the ">>" button at its label's width (15 px DejaVu Sans: 30
-/// points with the frame padding) inside kControlsFoldedPadding either side.
-inline constexpr float kControlsFoldedWidth = 44.f;
-inline constexpr float kControlsFoldedPadding = 6.f;
+/// Folded, the strip holds the ">>" button (and a page's "?") inside kControlsFoldedPadding
+/// either side: over 40 points wide, a finger's target on a touch screen (kTouchTargetPoints;
+/// 44 points with 6 either side made a phone's 31 CSS pixels wide).
+inline constexpr float kControlsFoldedWidth = 46.f;
+inline constexpr float kControlsFoldedPadding = 2.f;
 
 /// The open panel's width, points, in a window `windowPixels` wide at `pixelRatio` pixels per
 /// point (the UI's scale): kControlsWidth at 100 %; as the scale grows, no more than
@@ -127,6 +128,13 @@ class ControlPanel {
     void holdLayout(bool held) { fingerHeld_ = held; }
 
   private:
+    /// A finger or a mouse button is down on the panel (holdLayout, or within the panel's
+    /// window): what comes and goes above the controls keeps its room until the lift.
+    [[nodiscard]] bool layoutHeld() const;
+    /// On a touch screen the frame padding that makes a button, a check box, a field or a
+    /// section header kTouchTargetPoints high at the UI's scale `scale` (the panel's and the
+    /// dialogs' controls alike).
+    [[nodiscard]] static ImVec2 touchPadding(float scale);
     /// Records the item just drawn as `name`; a status line with what it says.
     void mark(const std::string& name, std::string text = {});
     /// The page's About button (browser mode), `size` as ImGui::Button's.
@@ -141,6 +149,8 @@ class ControlPanel {
     void fileError(const Session& s);
     /// The dialog the session has open, as a modal window (section_dialogs.cpp).
     void dialog(const Session& s);
+    /// The open dialog's modal window (dialog() has its fields' first values).
+    void modal(const Session& s);
     /// A dialog's line of `keys` (Enter, Esc), marked "dialog keys"; none on a touch screen.
     void keysLine(const Session& s, const char* keys);
     void physics(const Session& s);
@@ -189,6 +199,8 @@ class ControlPanel {
     bool fingerHeld_ = false;  ///< holdLayout
     /// The card's height (points) while the layout is held, from the frame the hold began.
     std::optional<float> heldCardHeight_;
+    /// Whether the Speed slider's "Reaching only" line had its room when the hold began.
+    std::optional<bool> slowLineHeld_;
     bool uploadAsked_ = false;
     bool aboutAsked_ = false;
     /// The title and description while they are typed in (else the scene's).

@@ -622,8 +622,25 @@ void GuiContext::beginFrame(float width, float height, float dt, float pixelScal
     inFrame_ = true;
 }
 
+void GuiContext::selectNumberOnTap() {
+    ImGuiContext& g = *ImGui::GetCurrentContext();
+    if (!pointerIsFinger_ || !g.IO.MouseClicked[0] || g.ActiveId == 0) return;
+    ImGuiInputTextState& field = g.InputTextState;
+    // (ImGui keeps the field's flags only while it is drawn: what it holds says it is a number's.)
+    if (field.ID != g.ActiveId || field.CurLenW == 0 || !field.Stb.single_line) return;
+    for (int k = 0; k < field.CurLenW; ++k) {
+        const ImWchar c = field.TextW[k];
+        if (!((c >= '0' && c <= '9') || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E'))
+            return;
+    }
+    field.SelectAll();
+    // Until the finger's release: no drag selects from the cursor.
+    field.SelectedAllMouseLock = true;
+}
+
 int GuiContext::endFrame() {
     makeCurrent();
+    selectNumberOnTap();
     ImGui::Render();
     inFrame_ = false;
     // The frame that took a shortcut's Enter is built: its field's text is kept, the app acts.

@@ -38,8 +38,7 @@ void ControlPanel::lastCollision(const Session& s) {
     afterCard_ = items_.size();
     // Held (a finger or a button down on the panel, holdLayout): the card keeps the height it
     // had when the hold began, so that nothing below it moves under the finger.
-    const bool held = fingerHeld_ || (ImGui::IsAnyMouseDown() &&
-                                      ImGui::IsWindowHovered(ImGuiHoveredFlags_ChildWindows));
+    const bool held = layoutHeld();
     if (!held) heldCardHeight_.reset();
     if (!s.view().collision && !heldCardHeight_) return;
     const float top = ImGui::GetCursorPosY();

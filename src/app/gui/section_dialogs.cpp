@@ -79,6 +79,17 @@ void ControlPanel::dialog(const Session& s) {
         if (d.open()) ImGui::OpenPopup(titleOf(d.kind));  // the same id as quitTitle's
     }
     if (!d.open()) return;
+    // On a touch screen its fields, box and buttons are a finger's targets, as the panel's.
+    if (touch_) {
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding,
+                            touchPadding(static_cast<float>(s.view().uiScaleInUse())));
+    }
+    modal(s);
+    if (touch_) ImGui::PopStyleVar();
+}
+
+void ControlPanel::modal(const Session& s) {
+    const Dialog& d = s.dialog();
     const ImGuiViewport* vp = ImGui::GetMainViewport();
     ImGui::SetNextWindowPos(ImVec2(vp->Size.x * 0.5f, vp->Size.y * 0.4f), ImGuiCond_Always,
                             ImVec2(0.5f, 0.5f));

@@ -33,7 +33,7 @@ std::vector<Command> TouchGestures::translate(const SDL_TouchFingerEvent& e, SDL
             fingers_[e.fingerId] = at;
             if (fingers_.size() == 2 && !pinching_) {
                 pinching_ = true;
-                out.emplace_back(cmd::PointerUp{mouse, ticksToSeconds(e.timestamp)});
+                out.emplace_back(cmd::PointerUp{mouse, ticksToSeconds(e.timestamp), true});
             }
             break;
         case SDL_FINGERMOTION: {

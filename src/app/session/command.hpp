@@ -89,6 +89,10 @@ struct PointerUp {
     static constexpr Traits traits{.whilePrompt = true, .gesture = Gesture::Release};
     Vec2 screen;
     double time = 0.0;
+    /// A second finger came down (platform/touch.hpp): the press ends as a pinch begins, not
+    /// as a click or a launch (a pinch on empty space said "Selection cleared"). A particle
+    /// held is let go as it was.
+    bool pinch = false;
 };
 /// The pointer is gone from the box: a finger lifted, or the mouse left the window. Nothing stays
 /// drawn where it was (the Peg tool's shade of the peg a press would place).

@@ -104,6 +104,7 @@ void Tools::handle(const cmd::PointerUp& c, Context& x) {
     }
     if (tool == cmd::Tool::Select) {
         if (obstacleMoveRelease(x)) return;  // moved, or the move refused; else a click
+        if (c.pinch) return;                 // a pinch begins: no click
         ReleaseResult r;
         r.kind = ReleaseResult::Kind::Clicked;
         if (const auto id = x.doc.world.pick(pointerWorld(x.view.camera()))) r.id = *id;
@@ -119,6 +120,16 @@ void Tools::handle(const cmd::PointerUp& c, Context& x) {
                                    launchSettings(x.view.camera(), x.doc.world.def()),
                                    x.view.options().arrowSeconds);
     using K = ReleaseResult::Kind;
+    if (c.pinch && (r.kind == K::Clicked || r.kind == K::Launched || r.kind == K::Refused)) {
+        // A pinch begins: no click selects or clears, nothing is launched; a particle the first
+        // finger held goes back to moving as it did.
+        if (r.letGo) {
+            world.setPosition(r.id, r.position);
+            world.setVelocity(r.id, r.velocity);
+            world.setKinematic(r.id, false);
+        }
+        return;
+    }
     // Paused, a particle moved and put down (the hand stopped) keeps the velocity it had: the
     // student moved it, and a fling (let go moving) is how to give it another. Running, a hand
     // that stopped holds it still, as a hand catching a ball does.

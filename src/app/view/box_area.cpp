@@ -47,8 +47,10 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
     HudData noArrows = zero;
     noArrows.arrowSeconds = 0.0;
     const int width = room - 8;
+    const bool narrow = hudIsNarrow(font, room);
     std::vector<std::size_t> most;
-    for (const HudData& d : {wide, lesson, zero, noArrows}) {
+    for (HudData d : {wide, lesson, zero, noArrows}) {
+        d.narrow = narrow;
         const std::vector<std::string> lines = hudLines(d);
         most.resize(std::max(most.size(), lines.size()));
         for (std::size_t k = 0; k < lines.size(); ++k)
@@ -61,12 +63,12 @@ double hudBand(const TextMeasure& font, int room, bool folded) {
         std::size_t note = 0;
         for (const bool open : {true, false})
             for (const bool touch : {false, true})
-                note =
-                    std::max(note, wrapLines(font, {foldedChartsNote(open, touch)}, width).size());
+                note = std::max(
+                    note, wrapLines(font, {foldedChartsNote(open, touch, narrow)}, width).size());
         lines += note;
     }
-    lines += std::max(wrapLines(font, {labelsLeftOutNote(99, false)}, width).size(),
-                      wrapLines(font, {labelsLeftOutNote(99, true)}, width).size());
+    lines += std::max(wrapLines(font, {labelsLeftOutNote(99, false, narrow)}, width).size(),
+                      wrapLines(font, {labelsLeftOutNote(99, true, narrow)}, width).size());
     return static_cast<double>(lines) * font.lineHeight() + 10.0;
 }
 

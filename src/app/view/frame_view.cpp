@@ -233,7 +233,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         }
         return wrapHudLines(hudFont, lines, hudRoom - 8);
     };
-    const HudData hud = hudData(session);
+    const bool narrow = hudIsNarrow(hudFont, hudRoom);
+    HudData hud = hudData(session);
+    hud.narrow = narrow;
     o.hud = readings(hud);
     // While a video records, the layout is the video's: the room it keeps for the HUD is the
     // video's HUD with the lines that come and go as it records (a step into the past, an
@@ -254,9 +256,9 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
     if (stats.labelsSuppressed) o.hud.emplace_back("Labels hidden: too many on screen");
     if (sideColumnFolded(session, controls)) {
         // Said where the eye is: the charts asked for are not drawn over the box.
-        for (std::string& line :
-             wrapLines(hudFont, {foldedChartsNote(session.controlsShown(), session.touch())},
-                       hudRoom - 8)) {
+        for (std::string& line : wrapLines(
+                 hudFont, {foldedChartsNote(session.controlsShown(), session.touch(), narrow)},
+                 hudRoom - 8)) {
             o.hud.push_back(std::move(line));
         }
     }
@@ -269,7 +271,7 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
              {std::pair{stats.labelsCrowded, false}, std::pair{stats.labelsOffWindow, true}}) {
             if (count == 0) continue;
             for (std::string& line :
-                 wrapLines(hudFont, {labelsLeftOutNote(count, offWindow)}, hudRoom - 8)) {
+                 wrapLines(hudFont, {labelsLeftOutNote(count, offWindow, narrow)}, hudRoom - 8)) {
                 o.hud.push_back(std::move(line));
             }
         }

@@ -18,19 +18,73 @@ std::string windowTitle(std::size_t particles, bool paused, const std::string& s
     return t;
 }
 
-std::string foldedChartsNote(bool controlsOpen, bool touch) {
+std::string foldedChartsNote(bool controlsOpen, bool touch, bool narrow) {
+    if (narrow) {
+        if (!controlsOpen) return "Charts: no room (widen the window)";
+        return touch ? "Charts: no room (<< folds the controls)"
+                     : "Charts: no room (C folds the controls)";
+    }
     if (!controlsOpen) return "Charts folded away: no room beside the box (widen the window)";
     return touch ? "Charts folded away: no room beside the box (<< folds the controls)"
                  : "Charts folded away: no room beside the box (C folds the controls)";
 }
 
-std::string labelsLeftOutNote(std::size_t count, bool offWindow) {
+std::string labelsLeftOutNote(std::size_t count, bool offWindow, bool narrow) {
+    if (narrow) {
+        return "Labels: " + std::to_string(count) +
+               (offWindow ? " left out (zoom out)" : " left out (zoom in)");
+    }
     return "Labels: " + std::to_string(count) +
            (offWindow ? " left out: no room beside the disc in the window (zoom out)"
                       : " left out where they would overlap (zoom in)");
 }
 
+namespace {
+
+/// hudLines in a narrow window: the readings in short words; nothing of a launch or the help.
+std::vector<std::string> narrowHudLines(const HudData& d) {
+    char buf[200];
+    std::vector<std::string> lines;
+    char speed[64];
+    if (!d.paused && d.reachedTimeScale < 0.95 * d.timeScale) {
+        std::snprintf(speed, sizeof speed, "x%.2g of x%g", d.reachedTimeScale, d.timeScale);
+    } else {
+        std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
+    }
+    char back[48] = "";
+    if (d.forVideo && d.past) std::snprintf(back, sizeof back, " (%.2f s back)", d.secondsBack);
+    std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
+                  quantity(d.simTime, "s").c_str(), back, speed, d.particles,
+                  d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "",
+                  d.recording && !d.forVideo ? " | REC" : "");
+    lines.emplace_back(buf);
+    std::snprintf(
+        buf, sizeof buf, "KE %s | p (%s, %s) kg m/s", quantity(d.kineticEnergy, "J").c_str(),
+        quantity(d.momentum.x(), "", false).c_str(), quantity(d.momentum.y(), "", false).c_str());
+    lines.emplace_back(buf);
+    if (d.heaviestMass > d.lightestMass) {
+        std::snprintf(buf, sizeof buf, "Darker: heavier (%s to %s)",
+                      quantity(d.lightestMass, "", false).c_str(),
+                      quantity(d.heaviestMass, "kg", false).c_str());
+        lines.emplace_back(buf);
+    }
+    if (d.overlap > 0.0) {
+        std::snprintf(buf, sizeof buf, "Overlap: up to %s", quantity(d.overlap, "m").c_str());
+        lines.emplace_back(buf);
+    }
+    if (d.past && !d.forVideo) {
+        std::snprintf(buf, sizeof buf,
+                      d.touch ? "%.2f s back: Play continues" : "%.2f s back: Space continues",
+                      d.secondsBack);
+        lines.emplace_back(buf);
+    }
+    return lines;
+}
+
+}  // namespace
+
 std::vector<std::string> hudLines(const HudData& d) {
+    if (d.narrow) return narrowHudLines(d);
     char buf[200];
     std::vector<std::string> lines;
     // Below 95 % of the speed asked for, the reached speed is what the user sees.

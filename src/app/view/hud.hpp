@@ -43,6 +43,10 @@ struct HudData {
     bool forVideo = false;
     /// A touch screen is the user's hands (Session::touch): the lines name buttons, not keys.
     bool touch = false;
+    /// A narrow window (a phone held upright, hudIsNarrow): the readings in short words, without
+    /// what a launch would make and the way to the help, so that the box keeps the screen (at
+    /// 160 % on a 390-pixel phone the full lines wrapped to 12 and left the box 260 pixels).
+    bool narrow = false;
 };
 
 /// What the profile overlay shows.
@@ -65,11 +69,13 @@ struct ProfileData {
 [[nodiscard]] std::vector<std::string> hudLines(const HudData& d);
 /// The HUD's note while the side column's charts are folded away (sideColumnFits), with the
 /// way to get them back: fold the control panel while it is open (its key, or on a touch
-/// screen its button), else widen the window.
-[[nodiscard]] std::string foldedChartsNote(bool controlsOpen, bool touch = false);
+/// screen its button), else widen the window; in short words in a `narrow` window.
+[[nodiscard]] std::string foldedChartsNote(bool controlsOpen, bool touch = false,
+                                           bool narrow = false);
 /// The HUD's note while `count` labels (S) are left out: where others were in the way, or with
-/// no side of their disc in the window (`offWindow`), with what to do about it.
-[[nodiscard]] std::string labelsLeftOutNote(std::size_t count, bool offWindow);
+/// no side of their disc in the window (`offWindow`), with what to do about it; in short words
+/// in a `narrow` window.
+[[nodiscard]] std::string labelsLeftOutNote(std::size_t count, bool offWindow, bool narrow = false);
 
 /// The profile overlay, one line per stage then the frame's step and draw times.
 [[nodiscard]] std::vector<std::string> profileLines(const ProfileData& d);

@@ -20,6 +20,11 @@ std::vector<std::string> wrapLines(const TextMeasure& font, const std::vector<st
     return out;
 }
 
+bool hudIsNarrow(const TextMeasure& font, int room) {
+    // wrapHudLines' room: the frame's, less the padding.
+    return font.measure("Kinetic energy 123 J | momentum (-0.123, -0.123) kg m/s") > room - 16;
+}
+
 std::vector<std::string> wrapHudLines(const TextMeasure& font,
                                       const std::vector<std::string>& lines, int maxWidth) {
     const int room = maxWidth - 8;  // textBoxSize's padding

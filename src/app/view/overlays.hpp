@@ -59,6 +59,10 @@ inline constexpr std::size_t kMessageLines = 3;
                                                     const std::vector<std::string>& lines,
                                                     int maxWidth);
 
+/// Whether the HUD is narrow in a window that leaves it `room` pixels right of the control panel
+/// (HudData::narrow): the full readings' second line would not fit on one line in `font`.
+[[nodiscard]] bool hudIsNarrow(const TextMeasure& font, int room);
+
 /// The box (pixels) that `lines` need in `font`, padding included: what a LayoutRequest asks.
 [[nodiscard]] PixelPoint textBoxSize(const TextMeasure& font,
                                      const std::vector<std::string>& lines);

@@ -34,6 +34,8 @@ TEST(TouchGestures, ASecondFingerEndsTheDragThenPansAndZooms) {
     ASSERT_EQ(second.size(), 1u);
     ASSERT_TRUE(std::holds_alternative<cmd::PointerUp>(second[0]));
     EXPECT_EQ(std::get<cmd::PointerUp>(second[0]).screen, Vec2(400, 200));
+    // ... as a pinch's, not a click (tools_hand.cpp: no "Selection cleared", no launch).
+    EXPECT_TRUE(std::get<cmd::PointerUp>(second[0]).pinch);
     EXPECT_TRUE(t.pinching());
 
     // The second finger moves 100 px right: the midpoint moves 50 px, the spread grows 200 -> 300.

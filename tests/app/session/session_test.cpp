@@ -62,6 +62,38 @@ TEST_F(SessionTest, TheBrownianPresetOpensWithItsHeavyDiscsTrailShown) {
     EXPECT_EQ(s.world().get(*s.selection().id()).radius, largest);
 }
 
+TEST_F(SessionTest, ASecondFingerEndsThePressWithoutAClickOrALaunch) {
+    // A pinch begins where the first finger came down on empty space: its press ends
+    // (platform/touch.hpp) without clearing the selection or launching a particle.
+    Session s = session();
+    s.apply(cmd::OpenFile{testAsset("scenes/08-brownian-motion.json")});
+    ASSERT_TRUE(s.selection().id().has_value());
+    const std::size_t n = s.world().size();
+    (void)s.takeNotices();
+    const Camera& c = s.camera();
+    std::optional<Vec2> empty;
+    for (double x = 0.05; x < s.world().def().width && !empty; x += 0.01) {
+        for (double y = 0.05; y < s.world().def().height && !empty; y += 0.01) {
+            if (!s.world().pick(Vec2(x, y))) empty = Vec2(x, y);
+        }
+    }
+    ASSERT_TRUE(empty.has_value());
+    s.apply(cmd::PointerDown{c.worldToScreen(*empty), 1.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(*empty), 1.05, true});
+    EXPECT_TRUE(s.selection().id().has_value());
+    EXPECT_FALSE(said(s.takeNotices(), "Selection cleared"));
+    // The first finger moved as far as a launch before the second came: nothing is launched.
+    s.apply(cmd::PointerDown{c.worldToScreen(*empty), 2.0});
+    s.apply(cmd::PointerMove{c.worldToScreen(*empty) + Vec2(60.0, 0.0), 2.1});
+    s.apply(cmd::PointerUp{c.worldToScreen(*empty) + Vec2(60.0, 0.0), 2.15, true});
+    EXPECT_EQ(s.world().size(), n);
+    EXPECT_TRUE(s.selection().id().has_value());
+    // Without a second finger the same click clears the selection, as before.
+    s.apply(cmd::PointerDown{c.worldToScreen(*empty), 3.0});
+    s.apply(cmd::PointerUp{c.worldToScreen(*empty), 3.05});
+    EXPECT_FALSE(s.selection().id().has_value());
+}
+
 TEST_F(SessionTest, TheBrownianPresetGivenAtStartUpShowsItsTrailToo) {
     const Scene scene = loadScene(testAsset("scenes/08-brownian-motion.json"));
     Session s(makeWorld(scene), sceneInfo(scene, std::nullopt), options());

@@ -93,7 +93,8 @@ TEST(WindowLayout, ThePanelFitsBesideTheBoxByPointsNotPixels) {
 
 TEST(WindowLayout, TheHudsBandGrowsWhenItsLinesWrap) {
     const WindowLayout wide = windowLayout(kFont, 1600, 1000, kControls);
-    const WindowLayout narrow = windowLayout(kFont, 700, 1000, kControls);
+    // (Not so narrow that the HUD takes its short lines: hudIsNarrow.)
+    const WindowLayout narrow = windowLayout(kFont, 800, 1000, kControls);
     EXPECT_GT(narrow.controlsOpen.top, wide.controlsOpen.top);
     // Beside the folded strip the HUD has more room than beside the open panel.
     EXPECT_LE(narrow.controlsFolded.top, narrow.controlsOpen.top);
@@ -127,10 +128,13 @@ TEST(WindowLayout, TheHudsBandHoldsItsWrappedLinesAndTheLabelsNoteAtEveryScale) 
             const WindowLayout l = windowLayout(font, width, height, controls);
             for (const BoxArea& a : {l.controlsOpen, l.controlsFolded}) {
                 const int room = width - static_cast<int>(a.left);
-                for (const HudData& d : {ramp, lesson, running}) {
+                // In a narrow window the HUD's short lines (hudIsNarrow), as frame_view.cpp.
+                const bool narrow = hudIsNarrow(font, room);
+                for (HudData d : {ramp, lesson, running}) {
+                    d.narrow = narrow;
                     std::vector<std::string> hud = wrapHudLines(font, hudLines(d), room - 8);
                     for (const std::string& line :
-                         wrapLines(font, {labelsLeftOutNote(2, false)}, room - 8)) {
+                         wrapLines(font, {labelsLeftOutNote(2, false, narrow)}, room - 8)) {
                         hud.push_back(line);
                     }
                     const PixelPoint box = textBoxSize(font, hud);
