@@ -416,6 +416,67 @@ FrameView buildFrame(const Session& session, const FrameStats& stats, const Text
         const PixelPoint text = textBoxSize(hudFont, {f.recordingMark->label});
         req.recording = {text.x + hudFont.lineHeight() / 2 + 6, text.y};
     }
+    if (!stats.messages.empty() && !o.messages.empty()) {
+        // The newest message is read whole: where the band cuts it (an aside dropped, "…"), it
+        // takes the lines it needs, in the band at the bottom (left of the legend there, or
+        // the width of the room) or else over the box's lower part, above the charts' band
+        // under it, at the room's width, its background opaque as ever. Each place is taken
+        // only where the panels stand as they do with no message and it covers none of them
+        // (the plots and the legend are in the video); nowhere: the band's three lines, cut,
+        // and the log has it whole.
+        const std::string& newest = stats.messages.back();
+        const auto needs = [&](int width) {
+            return wrapLines(hudFont, {newest}, width - 8).size();
+        };
+        const int shownWidth = req.messages.x;
+        if (needs(shownWidth) > kMessageLines) {
+            LayoutRequest quietReq = req;
+            quietReq.messages = {0, 0};
+            const PanelLayout quiet = layoutPanels(quietReq);
+            const auto stays = [&quiet](const PanelLayout& l) {
+                const auto same = [](const PixelRect& a, const PixelRect& b) {
+                    return a.x == b.x && a.y == b.y && a.w == b.w && a.h == b.h;
+                };
+                if (l.messages.w == 0) return false;
+                for (const PixelRect& r : panelRects(l))
+                    if (!same(r, l.messages) && overlaps(r, l.messages)) return false;
+                return same(l.plots, quiet.plots) && l.plotRows == quiet.plotRows &&
+                       l.plotColumns == quiet.plotColumns && l.plotsNote == quiet.plotsNote &&
+                       same(l.legend, quiet.legend) && same(l.speeds, quiet.speeds) &&
+                       same(l.bins, quiet.bins) && same(l.profile, quiet.profile) &&
+                       same(l.hud, quiet.hud) && same(l.inspector, quiet.inspector) &&
+                       same(l.values, quiet.values) && l.columnFolded == quiet.columnFolded;
+            };
+            struct Place {
+                int width;
+                int bottom;  // LayoutRequest::messagesBottom
+            };
+            std::vector<Place> places{{shownWidth, 0}};
+            if (messageWidth != shownWidth) places.push_back({messageWidth, 0});
+            const int boxBottom = req.box.y + req.box.h;
+            if (req.box.w > 0) {
+                // Over the box's lower part: above the charts' band, or at the box's bottom.
+                if (req.chartsBand.w > 0) places.push_back({messageRoom, req.chartsBand.y});
+                places.push_back({messageRoom, boxBottom});
+            }
+            for (const Place& p : places) {
+                if (p.width < kMinMessageRoom) continue;
+                const std::size_t lines = std::max(kMessageLines, needs(p.width));
+                LayoutRequest tried = req;
+                tried.messages =
+                    textBoxSize(hudFont, messageLines(hudFont, stats.messages, p.width - 8, lines));
+                tried.messagesBottom = p.bottom > 0 ? p.bottom - kPanelGap : 0;
+                const PanelLayout l = layoutPanels(tried);
+                // Over the box's lower part at most, no higher than its middle.
+                if (req.box.w > 0 && l.messages.y < req.box.y + req.box.h / 2) continue;
+                if (l.messages.y < 0 || l.messages.x + l.messages.w > req.width || !stays(l))
+                    continue;
+                o.messages = messageLines(hudFont, stats.messages, p.width - 8, lines);
+                req = tried;
+                break;
+            }
+        }
+    }
     f.layout = layoutPanels(req);
     if (editing && f.selected && f.layout.inspector.w == 0) {
         o.inspector =

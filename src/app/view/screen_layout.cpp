@@ -116,8 +116,9 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
         }
     }
     const auto placeMessages = [&] {
-        if (r.messages.x <= 0 || r.messages.y <= 0 || bottom - r.messages.y <= hudBottom) return;
-        const PixelRect box{r.left + 4, bottom - r.messages.y, r.messages.x, r.messages.y};
+        const int end = r.messagesBottom > 0 ? std::min(r.messagesBottom, bottom) : bottom;
+        if (r.messages.x <= 0 || r.messages.y <= 0 || end - r.messages.y <= hudBottom) return;
+        const PixelRect box{r.left + 4, end - r.messages.y, r.messages.x, r.messages.y};
         if (!overlaps(box, l.inspector)) l.messages = box;
     };
     if (!r.inspectorFirst) placeMessages();
@@ -224,7 +225,9 @@ PanelLayout layoutWithoutMark(const LayoutRequest& r) {
                 band.w = std::min(band.w, l.legend.x - gap - band.x);
             }
         }
-        if (l.messages.w > 0 && l.messages.y < band.y + band.h) {
+        // (Messages above the band, over the box, leave it whole.)
+        if (l.messages.w > 0 && l.messages.y < band.y + band.h &&
+            l.messages.y + l.messages.h > band.y) {
             band.h = l.messages.y - gap - band.y;
         }
         const int count = (r.plots ? 1 : 0) + (r.speeds ? 1 : 0);

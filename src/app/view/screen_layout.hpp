@@ -120,8 +120,12 @@ struct LayoutRequest {
     /// The HUD's box as the screen shows it this frame, where the layout keeps `hud` more
     /// room (a video's HUD and the lines that come and go through the clip); {0, 0}: `hud`.
     PixelPoint hudShown{0, 0};
-    PixelPoint legend{0, 0};     ///< the momentum legend's box
-    PixelPoint messages{0, 0};   ///< the messages' box, at the bottom-left
+    PixelPoint legend{0, 0};    ///< the momentum legend's box
+    PixelPoint messages{0, 0};  ///< the messages' box, at the bottom-left
+    /// Where the messages' box ends (its bottom edge), where the band at the window's bottom
+    /// has no room for them whole: over the box's lower part, above the charts' band under it.
+    /// 0: at the bottom.
+    int messagesBottom = 0;
     PixelPoint inspector{0, 0};  ///< the selected particle's panel, at the bottom of the column
     /// The values table (valuesTableRect): along the bottom, or at the right (`valuesRight`);
     /// w == 0: not shown.

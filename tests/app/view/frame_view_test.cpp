@@ -111,7 +111,8 @@ TEST(EditPromptPanel, AnOpenPromptIsShownEvenWhereTheWholePanelWouldNotFit) {
 TEST(MessageBand, KeepsWholeMessagesAndDropsOlderOnesWhole) {
     // The band keeps three lines. It kept the last three wrapped lines, so a long message lost
     // its head ("/home/lessons/...mp4: 3.8 s, ..." without "Saved video") and an older one its
-    // first line. Older messages now go whole; a message longer than the band keeps its head.
+    // first line. Older messages now go whole; a message longer than the band takes the lines
+    // it needs where the window has them, and one longer than that keeps its head.
     Session s = sessionIn(800, 600);
     const std::string older =
         "Opened 12-ramp.json: Ramp (3 particles), preset 12 of 14 (key "
@@ -131,7 +132,24 @@ TEST(MessageBand, KeepsWholeMessagesAndDropsOlderOnesWhole) {
                                 ", 980x1000 (36 frames a second of 60: the window drew no "
                                 "faster, so the video is as smooth as the window was); every "
                                 "frame is in it";
+    // A message longer than the band's three lines takes the lines it needs where the window
+    // has them, whole (issue 36).
     f = frameOf(s, {"Paused", longest});
+    EXPECT_GT(f.overlays.messages.size(), kMessageLines);
+    EXPECT_EQ(f.overlays.messages.front().rfind("Saved video", 0), 0u)
+        << f.overlays.messages.front();
+    shown.clear();
+    for (const std::string& line : f.overlays.messages)
+        shown += line;
+    EXPECT_EQ(shown.find("\u2026"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("every frame is in it"), std::string::npos) << shown;
+    EXPECT_LE(f.layout.messages.x + f.layout.messages.w, 800);
+    // Only one longer than the window holds keeps the band's three lines, its head, and is
+    // cut (the log has it whole).
+    std::string endless = "Saved video";
+    for (int k = 0; k < 40; ++k)
+        endless += " (an aside) and more words";
+    f = frameOf(s, {"Paused", endless});
     ASSERT_EQ(f.overlays.messages.size(), kMessageLines);
     EXPECT_EQ(f.overlays.messages.front().rfind("Saved video", 0), 0u)
         << f.overlays.messages.front();
@@ -404,6 +422,86 @@ TEST(Plots, OnTheProjectorLessonOneShowsAllFourAndAThreeLineMessageMovesNone) {
     EXPECT_EQ(b.layout.plotColumns, a.layout.plotColumns);
     EXPECT_EQ(b.layout.legend, a.layout.legend);
     EXPECT_GT(b.layout.messages.w, 0) << "the message is shown";
+}
+
+TEST(MessageBand, InLessonOneEveryVideoMessageShowsWholeAndMovesNoChart) {
+    // Lesson 1 at 200 % in 1600 x 1000 (and at 100 % in 800 x 600) with the momenta (V), with
+    // and without the plots (K): wrapped left of the momentum legend, Ctrl+R's message lost
+    // "Ctrl+R stops" and ended in "…", and the saved video's message with two asides kept the
+    // first and was cut. Each shows whole now; the plots and the legend stand where they stand
+    // without it, and the message covers none of them.
+    const std::string path = "/home/teacher/lessons/particle-sandbox-20261207-182400.mp4";
+    const std::string recording =
+        "Recording video (MP4, 1120x1000, 60 frames/s) to " + path + ": " + videoStopHint(false);
+    const std::string saved = "Saved video " + path +
+                              ": 3.4 s, 84 frames, 1120x1000 (25 frames a second of 60: the "
+                              "window drew no faster), 3 frames left out (the encoder fell "
+                              "behind; each held the one before)";
+    const auto squeezed = [](std::string t) {
+        t.erase(std::remove(t.begin(), t.end(), ' '), t.end());
+        return t;
+    };
+    struct Window {
+        int width, height;
+        ControlsWidth controls;
+    };
+    for (const Window& w : {Window{1600, 1000, test::kProjector}, Window{800, 600, test::kDesk}}) {
+        const test::FixedMeasure font(w.controls.pointPixels);
+        for (const bool plots : {true, false}) {
+            const Session s = plots ? test::inWindow(test::lessonWorld(),
+                                                     {ShowOption::Momentum, ShowOption::Plots},
+                                                     w.width, w.height, w.controls)
+                                    : test::inWindow(test::lessonWorld(), {ShowOption::Momentum},
+                                                     w.width, w.height, w.controls);
+            for (const std::string& message : {recording, saved}) {
+                const std::string at = std::to_string(w.width) + "x" + std::to_string(w.height) +
+                                       (plots ? ", the plots" : ", no plots") + ": " +
+                                       message.substr(0, 14);
+                FrameStats quiet, loud;
+                quiet.video.recording = loud.video.recording = message == recording;
+                loud.messages = {"Paused", message};
+                const FrameView a = buildFrame(s, quiet, font, font, w.controls);
+                const FrameView b = buildFrame(s, loud, font, font, w.controls);
+                ASSERT_GT(b.layout.messages.w, 0) << at << ": the message is shown";
+                std::string shown;
+                for (const std::string& line : b.overlays.messages) {
+                    shown += line + '|';
+                    EXPECT_LE(font.measure(line) + 8, b.layout.messages.w) << at << ": " << line;
+                }
+                EXPECT_EQ(shown.find("\u2026"), std::string::npos) << at << ": " << shown;
+                if (message == recording) {
+                    EXPECT_NE(shown.find("Ctrl+R stops"), std::string::npos) << at << ": " << shown;
+                }
+                // The newest message whole (a path may break after a '/'): the older may go.
+                std::string joined;
+                for (const std::string& line : b.overlays.messages)
+                    joined += line;
+                const std::string whole = squeezed(message), got = squeezed(joined);
+                EXPECT_TRUE(got.size() >= whole.size() &&
+                            got.compare(got.size() - whole.size(), whole.size(), whole) == 0)
+                    << at << ": " << shown;
+                // Inside the window, right of the control panel.
+                EXPECT_GE(b.layout.messages.x, 0) << at;
+                EXPECT_LE(b.layout.messages.x + b.layout.messages.w, w.width) << at;
+                EXPECT_GE(b.layout.messages.y, 0) << at;
+                EXPECT_LE(b.layout.messages.y + b.layout.messages.h, w.height) << at;
+                // Nothing moves, nothing is covered.
+                EXPECT_EQ(b.layout.plots, a.layout.plots) << at;
+                EXPECT_EQ(b.layout.plotRows, a.layout.plotRows) << at;
+                EXPECT_EQ(b.layout.plotColumns, a.layout.plotColumns) << at;
+                EXPECT_EQ(b.layout.plotsNote, a.layout.plotsNote) << at;
+                EXPECT_EQ(b.layout.legend, a.layout.legend) << at;
+                EXPECT_EQ(b.layout.hud, a.layout.hud) << at;
+                EXPECT_FALSE(overlaps(b.layout.messages, b.layout.plots)) << at;
+                EXPECT_FALSE(overlaps(b.layout.messages, b.layout.legend)) << at;
+                EXPECT_FALSE(overlaps(b.layout.messages, b.layout.hud)) << at;
+                if (plots) {
+                    EXPECT_GT(b.layout.plots.w, 0) << at;
+                }
+                EXPECT_GT(b.layout.legend.w, 0) << at;
+            }
+        }
+    }
 }
 
 TEST(Plots, OnTheProjectorThePlotsLeftOutForWantOfRoomAreNamed) {
