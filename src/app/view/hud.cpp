@@ -41,6 +41,19 @@ std::string labelsLeftOutNote(std::size_t count, bool offWindow, bool narrow) {
 
 namespace {
 
+/// The HUD's first line: the time, the speed (`speed`), the particles, paused, and `rec`. A video
+/// says a past frame's time on it: a line that came and went would move what stands below the
+/// HUD mid-clip.
+std::string timeLine(const HudData& d, const char* speed, const char* rec) {
+    char back[48] = "";
+    if (d.forVideo && d.past) std::snprintf(back, sizeof back, " (%.2f s back)", d.secondsBack);
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
+                  quantity(d.simTime, "s").c_str(), back, speed, d.particles,
+                  d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "", rec);
+    return buf;
+}
+
 /// hudLines in a narrow window: the readings in short words; nothing of a launch or the help.
 std::vector<std::string> narrowHudLines(const HudData& d) {
     char buf[200];
@@ -51,13 +64,7 @@ std::vector<std::string> narrowHudLines(const HudData& d) {
     } else {
         std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
     }
-    char back[48] = "";
-    if (d.forVideo && d.past) std::snprintf(back, sizeof back, " (%.2f s back)", d.secondsBack);
-    std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
-                  quantity(d.simTime, "s").c_str(), back, speed, d.particles,
-                  d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "",
-                  d.recording && !d.forVideo ? " | REC" : "");
-    lines.emplace_back(buf);
+    lines.push_back(timeLine(d, speed, d.recording && !d.forVideo ? " | REC" : ""));
     std::snprintf(
         buf, sizeof buf, "KE %s | p (%s, %s) kg m/s", quantity(d.kineticEnergy, "J").c_str(),
         quantity(d.momentum.x(), "", false).c_str(), quantity(d.momentum.y(), "", false).c_str());
@@ -95,17 +102,10 @@ std::vector<std::string> hudLines(const HudData& d) {
     } else {
         std::snprintf(speed, sizeof speed, "x%g", d.timeScale);
     }
-    // A video says a past frame's time on its first line: a line that came and went would move
-    // what stands below the HUD mid-clip.
-    char back[48] = "";
-    if (d.forVideo && d.past) std::snprintf(back, sizeof back, " (%.2f s back)", d.secondsBack);
-    std::snprintf(buf, sizeof buf, "Time %s%s | %s | %zu particle%s%s%s",
-                  quantity(d.simTime, "s").c_str(), back, speed, d.particles,
-                  d.particles == 1 ? "" : "s", d.paused ? " | PAUSED" : "",
-                  !d.recording || d.forVideo ? ""
-                  : d.touch                  ? " | REC (Data: Stop recording)"
-                                             : " | REC (X stops)");
-    lines.emplace_back(buf);
+    lines.push_back(timeLine(d, speed,
+                             !d.recording || d.forVideo ? ""
+                             : d.touch                  ? " | REC (Data: Stop recording)"
+                                                        : " | REC (X stops)"));
     std::snprintf(buf, sizeof buf, "Kinetic energy %s | momentum (%s, %s) kg m/s",
                   quantity(d.kineticEnergy, "J").c_str(),
                   quantity(d.momentum.x(), "", false).c_str(),
