@@ -405,9 +405,11 @@ async function started(p, query) {
 
   // 4. A tap on a slider leaves its value; a finger that starts on it and goes up scrolls the
   //    panel and leaves it too; a drag along it changes it.
-  await p.tap(scene);  // the Scene section folded again
+  // The Scene section folded again: its header reached first (the title's scroll moved it).
+  const sceneAgain = await reach("section Scene");
+  if (sceneAgain) await p.tap(sceneAgain);
   await p.page.waitForTimeout(300);
-  const speed = await p.control("Speed");
+  const speed = await reach("Speed");
   const speeds0 = await count(/Time speed/);
   if (speed) await p.tap({ x: speed.x + 70, y: speed.y });
   await p.page.waitForTimeout(500);
