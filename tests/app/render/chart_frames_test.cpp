@@ -21,6 +21,8 @@ namespace psb::app {
 namespace {
 
 constexpr SDL_Color kOutside{255, 0, 255, 255};
+/// The side column's narrowest frame at 200 %.
+constexpr int kWidth = 2 * kSideColumnMinWidth;
 
 class ChartFrameTest : public OffscreenTest {
   protected:
@@ -47,11 +49,17 @@ class ChartFrameTest : public OffscreenTest {
         }
         return n;
     }
+    /// The speed histogram of w's particles drawn at 200 % in a frame of the plots' width and
+    /// twice its least height: the pixels it drew outside that frame.
+    [[nodiscard]] int speedsDrawnOutsideTheirFrame(const World& w) {
+        const PixelRect box{300, 100, kWidth, 2 * kSpeedsMinHeight};
+        SpeedChart chart;
+        chart.draw(sdl_, *big_, w.particles(), box, palette(Theme::Light), 2.f);
+        SDL_RenderPresent(sdl_);
+        return outside(box);
+    }
     std::unique_ptr<Font> big_;
 };
-
-/// The side column's narrowest frame at 200 %.
-constexpr int kWidth = 2 * kSideColumnMinWidth;
 
 TEST_F(ChartFrameTest, TheSpeedHistogramsLegendStaysInItsFrameAt200Percent) {
     WorldDef def;
@@ -64,11 +72,7 @@ TEST_F(ChartFrameTest, TheSpeedHistogramsLegendStaysInItsFrameAt200Percent) {
                .velocity = Vec2(g(rng), g(rng)),
                .radius = 0.5});
     }
-    const PixelRect box{300, 100, kWidth, 2 * kSpeedsMinHeight};
-    SpeedChart chart;
-    chart.draw(sdl_, *big_, w.particles(), box, palette(Theme::Light), 2.f);
-    SDL_RenderPresent(sdl_);
-    EXPECT_EQ(outside(box), 0) << "pixels drawn outside the histogram's frame";
+    EXPECT_EQ(speedsDrawnOutsideTheirFrame(w), 0) << "pixels drawn outside the histogram's frame";
 }
 
 TEST_F(ChartFrameTest, TheSpeedHistogramsLastTickLabelStaysInsideItsFrame) {
@@ -84,11 +88,7 @@ TEST_F(ChartFrameTest, TheSpeedHistogramsLastTickLabelStaysInsideItsFrame) {
                .velocity = Vec2(2.0 * std::cos(a), 2.0 * std::sin(a)),
                .radius = 0.5});
     }
-    const PixelRect box{300, 100, kWidth, 2 * kSpeedsMinHeight};
-    SpeedChart chart;
-    chart.draw(sdl_, *big_, w.particles(), box, palette(Theme::Light), 2.f);
-    SDL_RenderPresent(sdl_);
-    EXPECT_EQ(outside(box), 0) << "pixels drawn outside the histogram's frame";
+    EXPECT_EQ(speedsDrawnOutsideTheirFrame(w), 0) << "pixels drawn outside the histogram's frame";
 }
 
 TEST_F(ChartFrameTest, ThePlotsTickLabelsAndTitlesStayInTheirFrameAt200Percent) {
